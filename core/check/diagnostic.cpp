@@ -1,0 +1,19 @@
+// Formatting diagnostics the way `taiwa check` prints them.
+#include "check/diagnostic.h"
+
+#include <algorithm>
+
+namespace taiwa {
+
+std::string format(const std::string& job, const Diagnostic& d)
+{
+    std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
+    return job + ": " + where + " " + d.field + ": " + d.message;
+}
+
+bool hasErrors(const Diagnostics& ds)
+{
+    return std::any_of(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+}  // namespace taiwa

@@ -1,0 +1,52 @@
+// Step kinds by name, and the label a step shows in lists and on the sheet.
+#include "model/step.h"
+
+#include <array>
+
+namespace taiwa {
+
+const char* toString(StepKind k)
+{
+    switch (k) {
+    case StepKind::PilotHole: return "pilot hole";
+    case StepKind::Roughing: return "roughing";
+    case StepKind::FloorFinishing: return "floor finishing";
+    case StepKind::WallFinishing: return "wall finishing";
+    case StepKind::InclinedFaceFinishing: return "inclined-face finishing";
+    }
+    return "";
+}
+
+const char* toKey(StepKind k)
+{
+    switch (k) {
+    case StepKind::PilotHole: return "pilot";
+    case StepKind::Roughing: return "roughing";
+    case StepKind::FloorFinishing: return "floor";
+    case StepKind::WallFinishing: return "wall";
+    case StepKind::InclinedFaceFinishing: return "inclined";
+    }
+    return "";
+}
+
+namespace {
+std::string roman(int n)
+{
+    static constexpr std::array<std::pair<int, const char*>, 13> table{{{1000, "M"}, {900, "CM"}, {500, "D"},
+        {400, "CD"}, {100, "C"}, {90, "XC"}, {50, "L"}, {40, "XL"}, {10, "X"}, {9, "IX"}, {5, "V"}, {4, "IV"}, {1, "I"}}};
+    std::string out;
+    for (const auto& [value, letters] : table)
+        for (; n >= value; n -= value) out += letters;
+    return out;
+}
+}  // namespace
+
+std::string Step::label() const
+{
+    std::string s = toString(kind);
+    s[0] = static_cast<char>(s[0] - 'a' + 'A');
+    if (kind == StepKind::PilotHole) return s;
+    return s + " " + roman(number);
+}
+
+}  // namespace taiwa

@@ -1,0 +1,77 @@
+// A process step: one machining operation of one unit, as the decomposition
+// makes it (kind, number, outline, depths, allowances), later given its tool,
+// its tool path and its time by the tool-choice and CL stages.
+#pragma once
+
+#include "model/geometry.h"
+#include "model/tool.h"
+#include "model/toolpath.h"
+
+#include <optional>
+#include <string>
+
+namespace taiwa {
+
+enum class StepKind {
+    PilotHole,
+    Roughing,
+    FloorFinishing,
+    WallFinishing,
+    InclinedFaceFinishing,
+};
+const char* toString(StepKind k);  // "roughing"
+const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined")
+
+// Machining-type code attached to every step for the post-processor
+// (seed: "attached with a predetermined machining type code"):
+// 10 pilot hole, 20 roughing, 30 floor finishing, 40 wall finishing,
+// 41 wall semi-finish, 42 taper-wall middle pass, 50 inclined-face finishing.
+enum class MachiningType : int {
+    PilotHole = 10,
+    Roughing = 20,
+    FloorFinishing = 30,
+    WallFinishing = 40,
+    WallSemiFinishing = 41,
+    WallMiddlePass = 42,
+    InclinedFaceFinishing = 50,
+};
+
+// An inclined face of module M2D: a plane strip between its edge at the top
+// surface and its edge at the floor.
+struct InclinedFace {
+    std::array<Point2, 2> topEdge{};    // at depth 0
+    std::array<Point2, 2> floorEdge{};  // at depth T
+    double angle = 0.0;                 // from the vertical [deg]
+    friend bool operator==(const InclinedFace&, const InclinedFace&) = default;
+};
+
+struct Step {
+    int unit = 0;                 // index of the unit in the job (0-based)
+    std::string module;           // "M4", "M2D"
+    StepKind kind = StepKind::Roughing;
+    int number = 1;               // 1-based within the unit and kind: roughing I, II, ...
+    MachiningType machiningType = MachiningType::Roughing;
+
+    // Geometry. Depths are positive, measured down from the top surface.
+    std::optional<Quad> outline;  // boundary the tool edge reaches at cutDepth (with its corner radius)
+    Point2 position{};            // pilot hole centre; otherwise the outline's centroid
+    double holeDiameter = 0.0;    // pilot hole only: the smallest diameter it must have (0 = not yet known)
+    double startDepth = 0.0;      // above this depth everything is air (rapid)
+    double cutDepth = 0.0;        // deepest point the step cuts
+    double wallTaper = 0.0;       // degrees per side of the wall this step cuts
+    double wallAllowance = 0.0;   // left on the walls after this step
+    double floorAllowance = 0.0;  // left on the floor after this step
+    bool multiIncision = false;   // wall cut in several Z incisions (F = 2)
+    std::optional<InclinedFace> face;  // inclined-face finishing only
+    double scallop = 0.0;              // inclined-face finishing only
+
+    // Filled by the later stages; absent until then, never faked.
+    std::optional<ToolChoice> tool;
+    std::optional<ToolPath> path;
+    std::optional<double> minutes;  // estimated machining time
+
+    std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)
+    friend bool operator==(const Step&, const Step&) = default;
+};
+
+}  // namespace taiwa

@@ -1,0 +1,54 @@
+// Technology data ("external file data" of the spec): the allowances and the
+// depth-of-cut coefficient registered per material, overridable per job.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct TechnologyData {
+    double alpha1 = 1.0;  // pilot hole stops alpha1 above the pocket floor [mm]
+    double alpha2 = 0.3;  // wall allowance left by roughing [mm]
+    double alpha3 = 0.1;  // wall allowance left by the semi-finish pass (F = 3) [mm]
+    double beta2 = 0.2;   // floor allowance left by roughing [mm]
+    double gamma = 0.5;   // roughing layer depth = gamma x tool diameter [-]
+    friend bool operator==(const TechnologyData&, const TechnologyData&) = default;
+};
+
+// The per-job overrides: only the values the job sets, in the job's units.
+struct TechnologyOverrides {
+    std::optional<double> alpha1, alpha2, alpha3, beta2, gamma;
+    bool empty() const { return !alpha1 && !alpha2 && !alpha3 && !beta2 && !gamma; }
+    friend bool operator==(const TechnologyOverrides&, const TechnologyOverrides&) = default;
+};
+
+// One material of the shipped table (resources/technology/materials.json).
+struct MaterialTechnology {
+    std::string id;           // e.g. "aluminium-6061"
+    std::string description;  // e.g. "Aluminium alloy 6061-T6"
+    TechnologyData data;      // in mm
+    friend bool operator==(const MaterialTechnology&, const MaterialTechnology&) = default;
+};
+
+class TechnologyTable {
+public:
+    // The table shipped with the program (compiled in from resources/).
+    static const TechnologyTable& builtIn();
+    // Parse a table in the format of resources/technology/materials.json.
+    // Throws std::runtime_error naming the material and field on bad input.
+    static TechnologyTable fromJson(const std::string& text);
+
+    const MaterialTechnology* find(const std::string& id) const;
+    const std::vector<MaterialTechnology>& materials() const { return materials_; }
+
+private:
+    std::vector<MaterialTechnology> materials_;
+};
+
+// Table value with the job's overrides applied (both in mm).
+TechnologyData effective(const TechnologyData& base, const TechnologyOverrides& mmOverrides);
+
+}  // namespace taiwa

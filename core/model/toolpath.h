@@ -1,0 +1,50 @@
+// Cutter-location (CL) data: the tool-tip path of one step as a list of
+// moves. Arcs stay arcs. Z is measured in the work coordinate system, the top
+// of the stock being Z = 0 (so a depth T is Z = -T). All lengths in mm.
+#pragma once
+
+#include "model/geometry.h"
+
+#include <vector>
+
+namespace taiwa {
+
+struct Point3 {
+    double x = 0.0, y = 0.0, z = 0.0;
+    friend bool operator==(const Point3&, const Point3&) = default;
+};
+
+enum class MoveKind {
+    Rapid,      // G0 to `end`
+    Feed,       // G1 to `end` at the feed of `feed`
+    ArcCW,      // G2 in XY around `centre` (z of the end may differ: helix)
+    ArcCCW,     // G3
+    DrillCycle, // canned drilling at end.xy from `retractZ` down to end.z, peck `peck` (0 = none)
+};
+
+enum class FeedKind { Cut, Plunge, Ramp };
+
+struct Move {
+    MoveKind kind = MoveKind::Rapid;
+    Point3 end{};
+    Point2 centre{};       // arcs only
+    FeedKind feed = FeedKind::Cut;
+    double retractZ = 0.0; // drill cycles: R plane
+    double peck = 0.0;     // drill cycles: peck depth, 0 = straight drilling
+    friend bool operator==(const Move&, const Move&) = default;
+};
+
+struct ToolPath {
+    Point3 start{};            // where the tool is before the first move (at safe height)
+    std::vector<Move> moves;
+    friend bool operator==(const ToolPath&, const ToolPath&) = default;
+};
+
+// Length of the path, split into cutting and rapid travel.
+struct PathLength {
+    double feed = 0.0;
+    double rapid = 0.0;
+};
+PathLength pathLength(const ToolPath& p);
+
+}  // namespace taiwa

@@ -1,0 +1,46 @@
+// Shared test helpers: source paths, running the command line, file I/O.
+#include "support/support.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+
+#include <stdexcept>
+
+namespace taiwa::test {
+
+QString sourcePath(const QString& relative) { return QDir(QStringLiteral(TAIWA_SOURCE_DIR)).filePath(relative); }
+QString dataPath(const QString& relative) { return QDir(QStringLiteral(TAIWA_TEST_DATA)).filePath(relative); }
+
+RunResult runTaiwa(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(TAIWA_BINARY), args);
+    RunResult r;
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        r.err = QStringLiteral("taiwa did not finish in 120 s");
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+std::string readFile(const QString& path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) throw std::runtime_error("cannot read " + path.toStdString());
+    const QByteArray b = f.readAll();
+    return std::string(b.constData(), static_cast<std::size_t>(b.size()));
+}
+
+void writeFile(const QString& path, const std::string& text)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) throw std::runtime_error("cannot write " + path.toStdString());
+    f.write(text.data(), static_cast<qint64>(text.size()));
+}
+
+}  // namespace taiwa::test

@@ -1,0 +1,5 @@
+// Placeholder of the viz layer until the scene code lands.
+#pragma once
+namespace taiwa::viz {
+const char* backendName();
+}
