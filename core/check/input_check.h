@@ -1,0 +1,30 @@
+// Input processing (pipeline stage 1): every check of the spec's refusal
+// list, the interference check between the figures of one job, and the order
+// in which units are machined. Pure functions; they never throw.
+#pragma once
+
+#include "check/diagnostic.h"
+#include "model/job.h"
+#include "model/technology.h"
+#include "model/tool.h"
+
+#include <vector>
+
+namespace taiwa {
+
+// All diagnostics of the job (every unit checked, not only the first error).
+// `job` is as the operator typed it (any length unit); messages quote values
+// in the job's unit. `library` is the shop's tool library: pinned tool ids
+// must exist in it, and r1 - alpha2 / r1 - alpha3 must leave room for a tool
+// of it (the message names a tool that would fit, or says none does).
+Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library);
+
+// The technology data in force for the job, in mm (material table value with
+// the job's overrides); nullopt when the material is unknown.
+std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTable& table);
+
+// Machining order of the units (0-based indices into job.units): see
+// docs/decisions.md ("Unit order").
+std::vector<int> machiningOrder(const Job& job);
+
+}  // namespace taiwa

@@ -1,0 +1,34 @@
+// CL creation (pipeline stage 4): the tool path of every step, computed from
+// the step's geometry and its tool. Offsets through Clipper; arcs stay arcs.
+#pragma once
+
+#include "model/step.h"
+#include "model/technology.h"
+#include "model/tool.h"
+#include "model/toolpath.h"
+#include "tools/cutting.h"
+
+namespace taiwa {
+
+struct PathParameters {
+    double stepOver = 0.45;        // radial step-over as a fraction of the tool diameter
+    double safeZ = 5.0;            // rapid height above the stock top [mm]
+    double clearance = 1.0;        // feed starts this far above the material [mm]
+    double peckWhenDeeperThan = 3.0;  // drilling pecks when depth > this x drill diameter
+    double peckDepth = 1.0;        // peck as a fraction of the drill diameter
+    double rampAngle = 3.0;        // helical ramp-in angle without a pilot hole [deg]
+    bool climb = true;             // climb milling (conventional when false)
+    double leadRadius = 0.0;       // lead-in/out arc radius, 0 = derived from the tool
+    friend bool operator==(const PathParameters&, const PathParameters&) = default;
+};
+
+// The tool path of one step. Z layers of at most gamma x D for roughing.
+// Throws std::logic_error only for a step the checks should have refused.
+ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+
+// Estimated time of a path: feed moves at their feed (plunge/ramp feed where
+// marked), rapids at `rapidRate` mm/min, plus `toolChangeSeconds` is NOT
+// included (the sheet adds tool changes). Minutes.
+double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapidRate = 15000.0);
+
+}  // namespace taiwa

@@ -1,0 +1,46 @@
+// Post-processors (pipeline stage 5): CL data to NC data for one controller
+// dialect, and the tape image list. A dialect is data plus a small class
+// (interfaces.md "Dialects"); the writer owns all number formatting.
+#pragma once
+
+#include "model/job.h"
+#include "model/step.h"
+#include "model/tool.h"
+
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct PostOptions {
+    std::string dialect = "linuxcnc";  // "fanuc" or "linuxcnc"
+    LengthUnit units = LengthUnit::Millimetre;
+    int programNumber = 1000;          // O-number (fanuc)
+    std::string programName;           // job name for the header comment
+    std::string material;              // for speeds and feeds
+    bool coolant = true;
+    double safeZ = 5.0;                // [mm] above the stock top
+};
+
+// Where an NC block came from: the step (index into the ordered steps) and
+// the move within its path; -1 for blocks of the program frame.
+struct BlockSource {
+    int step = -1;
+    int move = -1;
+};
+
+struct PostedProgram {
+    std::string nc;                    // the tape
+    std::vector<BlockSource> lines;    // one per line of `nc`
+    std::string tapeImage;             // printable listing: sequence numbers, block count, tape length
+};
+
+std::vector<std::string> dialectNames();
+bool isDialect(const std::string& name);
+
+// Steps in machining order, each with tool and path. Throws
+// std::invalid_argument for an unknown dialect, or a step without tool/path.
+PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
+                          const PostOptions& options);
+
+}  // namespace taiwa

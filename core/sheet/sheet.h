@@ -1,0 +1,30 @@
+// The machining instruction sheet (pipeline stage 4): job header, material
+// and stock, work offset and setup, the step table (tool, T/H numbers, speed,
+// feed, depths, estimated time), the tool list with stick-out and life, total
+// time, and the tool-life notes. HTML for the screen, PDF through Qt's
+// QPdfWriter.
+#pragma once
+
+#include "pipeline/pipeline.h"
+
+#include <optional>
+#include <string>
+
+namespace taiwa {
+
+struct SheetOptions {
+    LengthUnit units = LengthUnit::Millimetre;  // lengths shown in this unit
+    std::string dialect = "linuxcnc";
+    std::string jobFile;                        // file name shown in the header
+    std::string date;                           // printed date; empty = none (tests)
+};
+
+// A self-contained HTML document (inline CSS, no external resources).
+std::string sheetHtml(const Plan& plan, const SheetOptions& options);
+
+// Writes the sheet as an A4 landscape PDF. Needs a QGuiApplication (the
+// command line runs one on the offscreen platform). Returns an error message
+// or nothing on success.
+std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
+
+}  // namespace taiwa

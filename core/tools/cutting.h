@@ -1,0 +1,24 @@
+// Spindle speed and feed of a tool in a material, from its cutting data.
+#pragma once
+
+#include "model/tool.h"
+
+#include <optional>
+#include <string>
+
+namespace taiwa {
+
+struct SpeedsFeeds {
+    double rpm = 0.0;         // S
+    double feed = 0.0;        // mm/min for contouring (drills: mm/min of the feed into the hole)
+    double plungeFeed = 0.0;  // mm/min for plunges and ramps
+    friend bool operator==(const SpeedsFeeds&, const SpeedsFeeds&) = default;
+};
+
+// n = 1000 vc / (pi D), rounded to whole rpm; feed = n * fz * flutes (drills:
+// n * f). Clamped to the machine limits. nullopt when the tool has no cutting
+// data for the material.
+std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& material, double maxRpm = 12000.0,
+                                       double maxFeed = 10000.0);
+
+}  // namespace taiwa

@@ -1,0 +1,51 @@
+// The shop's tool library in SQLite, shared by all jobs (interfaces.md "Tool
+// library"). Created with the default library on first use. Every failure
+// (corrupt file, locked database, read-only folder) is an error value with a
+// clear message; nothing here ever touches a job.
+#pragma once
+
+#include "model/tool.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+// The realistic default library: centre drills, twist drills 3-20 mm, flat
+// end mills 2-25 mm, ball end mills, taper end mills 1-10 deg per side, a face
+// mill; with cutting data for every material of the built-in technology table.
+std::vector<Tool> defaultToolLibrary();
+
+// Where the library lives unless configured: $TAIWA_TOOL_DB, else
+// $XDG_DATA_HOME/taiwa/tools.sqlite, else ~/.local/share/taiwa/tools.sqlite.
+std::string defaultToolLibraryPath();
+
+class ToolLibrary {
+public:
+    // Opens (creating with the default library when the file does not exist).
+    // On failure returns nullptr and sets `error` to a sentence naming the
+    // file and what is wrong.
+    static std::unique_ptr<ToolLibrary> open(const std::string& path, std::string& error);
+    ~ToolLibrary();
+    ToolLibrary(const ToolLibrary&) = delete;
+    ToolLibrary& operator=(const ToolLibrary&) = delete;
+
+    const std::string& path() const { return path_; }
+    // All tools ordered by id; nullopt + error on a database failure.
+    std::optional<std::vector<Tool>> tools(std::string& error) const;
+    // Insert (id 0 = assign a new id) or replace; returns the id or nullopt.
+    std::optional<int> save(const Tool& tool, std::string& error);
+    bool remove(int id, std::string& error);
+    // Adds cutting minutes to a tool's used life.
+    bool addUsage(int id, double minutes, std::string& error);
+
+private:
+    explicit ToolLibrary(std::string path);
+    struct Db;
+    std::unique_ptr<Db> db_;
+    std::string path_;
+};
+
+}  // namespace taiwa
