@@ -1,0 +1,35 @@
+// Export of a planned job: the files of interfaces.md ("export writes into
+// DIR"), each written atomically. Shared by `taiwa export` and the window's
+// export dialog.
+#pragma once
+
+#include "pipeline/pipeline.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct ExportOptions {
+    std::string dialect = "linuxcnc";
+    std::optional<LengthUnit> units;  // default: the job's own unit
+    std::string jobFile;              // shown on the sheet
+    int programNumber = 1000;
+};
+
+struct ExportResult {
+    std::vector<std::string> files;  // paths written, in order
+    std::optional<std::string> error;
+};
+
+// STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in
+// outDir (created if missing). Refuses a plan with input errors. The PDF needs
+// a QGuiApplication.
+ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
+                        const ExportOptions& options);
+
+// The machine-readable step list (STEM.steps.json).
+std::string stepsJson(const Plan& plan);
+
+}  // namespace taiwa
