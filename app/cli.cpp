@@ -1,11 +1,181 @@
-// Placeholder command line until the pipeline lands.
+// The command line of interfaces.md: `taiwa [JOB]`, `taiwa check JOB`,
+// `taiwa export JOB --out DIR ...`, `taiwa render JOB --out PNG ...`,
+// `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 1 internal failure.
 #include "app/cli.h"
+
+#include "app/options.h"
+#include "check/input_check.h"
+#include "io/job_io.h"
+#include "pipeline/export.h"
+#include "pipeline/pipeline.h"
+#include "tools/tool_library.h"
+
+#ifdef TAIWA_WITH_UI
+#include "ui/ui.h"
+#include "viz/render.h"
+#endif
+
+#include <QGuiApplication>
+
 #include <cstdio>
-#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+
 namespace taiwa::app {
+
+namespace {
+
+constexpr int kOk = 0, kInternal = 1, kInputErrors = 2;
+
+const char* const kHelp = R"(taiwa - conversational NC programming station
+
+Usage:
+  taiwa [JOB]                      open the station window (with JOB loaded)
+  taiwa check JOB                  input processing only; one line per error:
+                                   JOB: unit N (MODULE) field: message
+  taiwa export JOB --out DIR [--dialect fanuc|linuxcnc] [--units mm|inch]
+                                   the whole pipeline; writes STEM.nc,
+                                   STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf
+                                   and STEM.steps.json into DIR
+  taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
+               [--view iso|top|front]
+                                   the 3-D preview of step K (1-based, in
+                                   machining order) or all steps, to a PNG
+  taiwa --version | --help
+
+Common options:
+  --tools DB    the tool library (SQLite); default $TAIWA_TOOL_DB or
+                ~/.local/share/taiwa/tools.sqlite, created on first use
+
+Exit status: 0 ok, 2 input errors (nothing written), 1 internal failure.
+)";
+
+int printDiagnostics(const std::string& jobName, const Diagnostics& ds)
+{
+    for (const auto& d : ds) std::cerr << format(jobName, d) << '\n';
+    return hasErrors(ds) ? kInputErrors : kOk;
+}
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+// Reads the job and the tool library and plans it. Returns an exit code when
+// the pipeline cannot go on (errors already printed), or nothing.
+struct Loaded {
+    Plan plan;
+    int exit = kOk;
+};
+
+Loaded load(const Options& o, bool withToolPaths)
+{
+    Loaded l;
+    const std::string name = fileName(o.job);
+    const JobReadResult read = readJobFile(o.job);
+    if (!read.job) {
+        l.exit = printDiagnostics(name, read.diagnostics) == kOk ? kInternal : kInputErrors;
+        return l;
+    }
+    std::string error;
+    const std::string dbPath = o.tools.empty() ? defaultToolLibraryPath() : o.tools;
+    const auto library = ToolLibrary::open(dbPath, error);
+    std::optional<std::vector<Tool>> tools;
+    if (library) tools = library->tools(error);
+    if (!tools) {
+        std::cerr << "taiwa: tool library: " << error << '\n';
+        l.exit = kInternal;
+        return l;
+    }
+    PlanOptions options;
+    options.withToolPaths = withToolPaths;
+    l.plan = planJob(*read.job, TechnologyTable::builtIn(), *tools, options);
+    l.exit = printDiagnostics(name, l.plan.diagnostics);
+    return l;
+}
+
+int check(const Options& o)
+{
+    // Input processing only: no tool paths.
+    return load(o, false).exit;
+}
+
+int exportJob(const Options& o, int& argc, char** argv)
+{
+    const Loaded l = load(o, true);
+    if (l.exit != kOk) return l.exit;
+    // The PDF writer needs a QGuiApplication; no window is ever shown.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    QGuiApplication qapp(argc, argv);
+    ExportOptions e;
+    e.dialect = o.dialect;
+    e.units = o.units;
+    e.jobFile = fileName(o.job);
+    const ExportResult r = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
+    if (r.error) {
+        std::cerr << "taiwa: export: " << *r.error << '\n';
+        return kInternal;
+    }
+    std::cout << "taiwa: wrote " << r.files.size() << " files to " << o.out << '\n';
+    for (const auto& f : r.files) std::cout << "  " << f << '\n';
+    return kOk;
+}
+
+int render(const Options& o)
+{
+#ifdef TAIWA_WITH_UI
+    const Loaded l = load(o, true);
+    if (l.exit != kOk) return l.exit;
+    viz::RenderOptions r;
+    r.step = o.step ? *o.step - 1 : -1;
+    if (o.step && (*o.step < 1 || *o.step > static_cast<int>(l.plan.steps.size()))) {
+        std::cerr << "taiwa: render: --step " << *o.step << " is out of range: the job has "
+                  << l.plan.steps.size() << " steps\n";
+        return kInputErrors;
+    }
+    r.showStock = o.stock;
+    r.width = o.width;
+    r.height = o.height;
+    r.view = o.view == "top" ? viz::ViewPreset::Top : o.view == "front" ? viz::ViewPreset::Front : viz::ViewPreset::Iso;
+    if (auto err = viz::renderToPng(l.plan, r, o.out)) {
+        std::cerr << "taiwa: render: " << *err << '\n';
+        return kInternal;
+    }
+    std::cout << "taiwa: wrote " << o.out << '\n';
+    return kOk;
+#else
+    (void)o;
+    std::cerr << "taiwa: render: this build has no 3-D view (built without TAIWA_BUILD_UI)\n";
+    return kInternal;
+#endif
+}
+
+}  // namespace
+
 int run(int argc, char** argv)
 {
-    if (argc > 1 && std::strcmp(argv[1], "--version") == 0) { std::puts("taiwa " TAIWA_VERSION); return 0; }
-    return 1;
+    try {
+        Options o;
+        if (auto err = parseOptions(argc, argv, o)) {
+            std::cerr << "taiwa: " << *err << "\nTry 'taiwa --help'.\n";
+            return kInputErrors;
+        }
+        switch (o.command) {
+        case Command::Help: std::cout << kHelp; return kOk;
+        case Command::Version: std::cout << "taiwa " << TAIWA_VERSION << '\n'; return kOk;
+        case Command::Check: return check(o);
+        case Command::Export: return exportJob(o, argc, argv);
+        case Command::Render: return render(o);
+        case Command::Station:
+#ifdef TAIWA_WITH_UI
+            return ui::runStation(argc, argv, QString::fromStdString(o.job));
+#else
+            std::cerr << "taiwa: this build has no station window (built without TAIWA_BUILD_UI)\n";
+            return kInternal;
+#endif
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "taiwa: internal failure: " << e.what() << '\n';
+    }
+    return kInternal;
 }
-}
+
+}  // namespace taiwa::app

@@ -7,8 +7,9 @@ namespace taiwa {
 
 std::string format(const std::string& job, const Diagnostic& d)
 {
-    std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
-    return job + ": " + where + " " + d.field + ": " + d.message;
+    if (!d.unit && d.field.empty()) return job + ": " + d.message;  // the file itself (unreadable, not JSON)
+    const std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
+    return job + ": " + where + " " + (d.field.empty() ? std::string("unit") : d.field) + ": " + d.message;
 }
 
 bool hasErrors(const Diagnostics& ds)

@@ -4,6 +4,8 @@
 #include <QDir>
 #include <QFile>
 #include <QProcess>
+#include <QProcessEnvironment>
+#include <QTemporaryDir>
 
 #include <stdexcept>
 
@@ -12,9 +14,22 @@ namespace taiwa::test {
 QString sourcePath(const QString& relative) { return QDir(QStringLiteral(TAIWA_SOURCE_DIR)).filePath(relative); }
 QString dataPath(const QString& relative) { return QDir(QStringLiteral(TAIWA_TEST_DATA)).filePath(relative); }
 
-RunResult runTaiwa(const QStringList& args)
+QString testToolDb()
+{
+    static QTemporaryDir dir;
+    return dir.filePath(QStringLiteral("tools.sqlite"));
+}
+
+RunResult runTaiwa(const QStringList& args, const QStringList& env)
 {
     QProcess p;
+    QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+    e.insert(QStringLiteral("TAIWA_TOOL_DB"), testToolDb());
+    for (const auto& kv : env) {
+        const auto eq = kv.indexOf(QLatin1Char('='));
+        e.insert(kv.left(eq), kv.mid(eq + 1));
+    }
+    p.setProcessEnvironment(e);
     p.start(QStringLiteral(TAIWA_BINARY), args);
     RunResult r;
     if (!p.waitForFinished(120000)) {

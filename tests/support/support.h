@@ -19,8 +19,13 @@ struct RunResult {
     QString out;
     QString err;
 };
-// Runs the built `taiwa` executable with the arguments; 120 s at most.
-RunResult runTaiwa(const QStringList& args);
+// Runs the built `taiwa` executable with the arguments; 120 s at most. Unless
+// `env` sets it, TAIWA_TOOL_DB points at a fresh library in a temporary folder
+// shared by the test process, so tests never touch the user's library.
+RunResult runTaiwa(const QStringList& args, const QStringList& env = {});
+
+// The path of that per-test-process tool library (created on first use by taiwa).
+QString testToolDb();
 
 std::string readFile(const QString& path);
 void writeFile(const QString& path, const std::string& text);

@@ -1,0 +1,102 @@
+// Parsing of the command line of interfaces.md into Options.
+#include "app/options.h"
+
+#include "post/post.h"
+
+#include <charconv>
+#include <string_view>
+#include <vector>
+
+namespace taiwa::app {
+
+namespace {
+
+std::optional<int> toInt(std::string_view s)
+{
+    int v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return v;
+}
+
+std::optional<std::string> parseSize(std::string_view s, Options& o)
+{
+    const auto x = s.find('x');
+    const auto w = toInt(s.substr(0, x)), h = x == std::string_view::npos ? std::nullopt : toInt(s.substr(x + 1));
+    if (!w || !h || *w < 16 || *h < 16 || *w > 8192 || *h > 8192)
+        return "--size wants WIDTHxHEIGHT in pixels, 16 to 8192, e.g. 800x600; got '" + std::string(s) + "'";
+    o.width = *w;
+    o.height = *h;
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
+{
+    std::vector<std::string_view> args(argv + 1, argv + argc);
+    std::size_t i = 0;
+    if (!args.empty()) {
+        const auto first = args[0];
+        if (first == "--help" || first == "-h") { o.command = Command::Help; return std::nullopt; }
+        if (first == "--version") { o.command = Command::Version; return std::nullopt; }
+        if (first == "check") o.command = Command::Check, i = 1;
+        else if (first == "export") o.command = Command::Export, i = 1;
+        else if (first == "render") o.command = Command::Render, i = 1;
+    }
+    auto value = [&]() -> std::optional<std::string_view> {
+        if (i + 1 >= args.size()) return std::nullopt;
+        return args[++i];
+    };
+    for (; i < args.size(); ++i) {
+        const auto a = args[i];
+        if (a.empty()) return std::string("an empty argument");
+        if (a[0] != '-' || a == "-") {
+            if (!o.job.empty()) return "more than one job file given: '" + o.job + "' and '" + std::string(a) + "'";
+            o.job = a;
+            continue;
+        }
+        const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
+                                a == "--size" || a == "--view";
+        if (a == "--stock") {
+            if (o.command != Command::Render) return std::string("option --stock does not go with this command");
+            o.stock = true;
+            continue;
+        }
+        if (!takesValue) return "unknown option '" + std::string(a) + "'";
+        const auto v = value();
+        if (!v) return "option " + std::string(a) + " needs a value";
+        const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render;
+        if (a == "--tools") o.tools = *v;
+        else if (a == "--out" && (forExport || forRender)) o.out = *v;
+        else if (a == "--dialect" && forExport) {
+            if (!isDialect(std::string(*v))) {
+                std::string names;
+                for (const auto& n : dialectNames()) names += (names.empty() ? "" : ", ") + n;
+                return "unknown dialect '" + std::string(*v) + "'; known: " + names;
+            }
+            o.dialect = *v;
+        } else if (a == "--units" && forExport) {
+            if (*v == "mm") o.units = LengthUnit::Millimetre;
+            else if (*v == "inch") o.units = LengthUnit::Inch;
+            else return "--units is mm or inch, not '" + std::string(*v) + "'";
+        } else if (a == "--step" && forRender) {
+            if (*v == "all") o.step.reset();
+            else if (const auto k = toInt(*v)) o.step = *k;
+            else return "--step wants a step number or 'all', not '" + std::string(*v) + "'";
+        } else if (a == "--size" && forRender) {
+            if (auto err = parseSize(*v, o)) return err;
+        } else if (a == "--view" && forRender) {
+            if (*v != "iso" && *v != "top" && *v != "front") return "--view is iso, top or front, not '" + std::string(*v) + "'";
+            o.view = *v;
+        } else {
+            return "option " + std::string(a) + " does not go with this command";
+        }
+    }
+    if (o.command != Command::Station && o.job.empty()) return std::string("no job file given");
+    if ((o.command == Command::Export || o.command == Command::Render) && o.out.empty())
+        return std::string("--out is required");
+    return std::nullopt;
+}
+
+}  // namespace taiwa::app

@@ -1,0 +1,29 @@
+// Parsing of the command line into an Options value (no side effects).
+#pragma once
+
+#include "model/job.h"
+
+#include <optional>
+#include <string>
+
+namespace taiwa::app {
+
+enum class Command { Station, Check, Export, Render, Help, Version };
+
+struct Options {
+    Command command = Command::Station;
+    std::string job;                  // JOB argument
+    std::string out;                  // --out
+    std::string dialect = "linuxcnc"; // --dialect
+    std::optional<LengthUnit> units;  // --units
+    std::string tools;                // --tools
+    std::optional<int> step;          // --step K (1-based); empty = all
+    bool stock = false;               // --stock
+    int width = 800, height = 600;    // --size WxH
+    std::string view = "iso";         // --view
+};
+
+// Fills `o`; returns a message naming the bad argument, or nothing.
+std::optional<std::string> parseOptions(int argc, char** argv, Options& o);
+
+}  // namespace taiwa::app

@@ -1,0 +1,151 @@
+// Export of a planned job into its files (interfaces.md), and the
+// machine-readable step list STEM.steps.json.
+#include "pipeline/export.h"
+
+#include "io/job_io.h"
+#include "post/post.h"
+#include "sheet/sheet.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <system_error>
+
+namespace taiwa {
+
+namespace {
+
+nlohmann::ordered_json point(Point2 p, LengthUnit u) { return nlohmann::ordered_json::array({fromMm(p.x, u), fromMm(p.y, u)}); }
+
+nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
+{
+    nlohmann::ordered_json j;
+    j["unit"] = s.unit + 1;
+    j["module"] = s.module;
+    j["kind"] = toKey(s.kind);
+    j["number"] = s.number;
+    j["label"] = s.label();
+    j["machiningType"] = static_cast<int>(s.machiningType);
+    if (s.tool) {
+        nlohmann::ordered_json t;
+        t["id"] = s.tool->toolId;
+        if (const Tool* tool = plan.tool(s.tool->toolId)) {
+            t["name"] = tool->name;
+            t["type"] = toKey(tool->type);
+            t["diameter"] = fromMm(tool->diameter, u);
+        }
+        t["reason"] = s.tool->reason;
+        j["tool"] = t;
+    }
+    j["startDepth"] = fromMm(s.startDepth, u);
+    j["cutDepth"] = fromMm(s.cutDepth, u);
+    if (s.kind == StepKind::PilotHole) {
+        j["position"] = point(s.position, u);
+    }
+    if (s.outline) {
+        nlohmann::ordered_json o;
+        o["corners"] = nlohmann::ordered_json::array();
+        for (const auto& c : s.outline->corners) o["corners"].push_back(point(c, u));
+        o["cornerRadius"] = fromMm(s.outline->cornerRadius, u);
+        j["outline"] = o;
+    }
+    if (s.face) {
+        nlohmann::ordered_json f;
+        f["topEdge"] = {point(s.face->topEdge[0], u), point(s.face->topEdge[1], u)};
+        f["floorEdge"] = {point(s.face->floorEdge[0], u), point(s.face->floorEdge[1], u)};
+        f["angle"] = s.face->angle;
+        f["scallop"] = fromMm(s.scallop, u);
+        j["face"] = f;
+    }
+    j["wallTaper"] = s.wallTaper;
+    j["wallAllowance"] = fromMm(s.wallAllowance, u);
+    j["floorAllowance"] = fromMm(s.floorAllowance, u);
+    if (s.multiIncision) j["multiIncision"] = true;
+    if (s.path) {
+        const PathLength len = pathLength(*s.path);
+        j["pathLength"] = {{"feed", fromMm(len.feed, u)}, {"rapid", fromMm(len.rapid, u)}};
+        j["moves"] = s.path->moves.size();
+    }
+    if (s.minutes) j["minutes"] = *s.minutes;
+    return j;
+}
+
+}  // namespace
+
+std::string stepsJson(const Plan& plan)
+{
+    const LengthUnit u = plan.job.lengthUnit;
+    nlohmann::ordered_json doc;
+    doc["format"] = "taiwa-steps";
+    doc["version"] = 1;
+    doc["job"] = plan.job.name;
+    doc["lengthUnit"] = u == LengthUnit::Inch ? "inch" : "mm";
+    doc["material"] = plan.job.material;
+    doc["totalMinutes"] = plan.totalMinutes;
+    doc["toolChanges"] = plan.toolChanges;
+    doc["steps"] = nlohmann::ordered_json::array();
+    for (const auto& s : plan.steps) doc["steps"].push_back(stepJson(plan, s, u));
+    return doc.dump(2) + "\n";
+}
+
+ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
+                        const ExportOptions& options)
+{
+    ExportResult result;
+    if (!plan.ok()) {
+        result.error = "the job did not pass input processing; nothing was written";
+        return result;
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(outDir, ec);
+    if (ec) {
+        result.error = "cannot create folder " + outDir + ": " + ec.message();
+        return result;
+    }
+    const LengthUnit units = options.units.value_or(plan.job.lengthUnit);
+    const auto path = [&](const char* suffix) { return (std::filesystem::path(outDir) / (stem + suffix)).string(); };
+
+    PostOptions post;
+    post.dialect = options.dialect;
+    post.units = units;
+    post.programNumber = options.programNumber;
+    post.programName = plan.job.name.empty() ? stem : plan.job.name;
+    post.material = plan.mmJob.material;
+    const PostedProgram program = postProcess(plan.steps, plan.tools, post);
+
+    SheetOptions sheet;
+    sheet.units = units;
+    sheet.dialect = options.dialect;
+    sheet.jobFile = options.jobFile;
+
+    const std::pair<std::string, std::string> texts[] = {
+        {path(".nc"), program.nc},
+        {path(".tape.txt"), program.tapeImage},
+        {path(".sheet.html"), sheetHtml(plan, sheet)},
+        {path(".steps.json"), stepsJson(plan)},
+    };
+    for (const auto& [file, text] : texts) {
+        if (auto err = writeFileAtomically(file, text)) {
+            result.error = *err;
+            return result;
+        }
+        result.files.push_back(file);
+    }
+    // The PDF writer cannot write atomically itself: write beside, then rename.
+    const std::string pdf = path(".sheet.pdf");
+    const std::string partial = pdf + ".partial";
+    if (auto err = writeSheetPdf(plan, sheet, partial)) {
+        std::filesystem::remove(partial, ec);
+        result.error = *err;
+        return result;
+    }
+    std::filesystem::rename(partial, pdf, ec);
+    if (ec) {
+        result.error = "cannot write " + pdf + ": " + ec.message();
+        return result;
+    }
+    result.files.push_back(pdf);
+    return result;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds Taiwa, exports the bundled sample job and
+# opens the station window on it (README, first command).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash packaging/install-deps.sh
+cmake --preset default >/dev/null
+cmake --build --preset default
+sample=resources/samples/plate.taiwa
+./build/app/taiwa export "$sample" --out out/plate
+if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then
+  exec ./build/app/taiwa "$sample"
+else
+  echo "run.sh: no display; open the station with: xvfb-run -a ./build/app/taiwa $sample (or on a desktop: ./build/app/taiwa $sample)"
+fi

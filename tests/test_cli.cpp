@@ -1,0 +1,219 @@
+// The command line of interfaces.md, run as a real process: exit codes,
+// one stderr line per input error naming unit, module and field, nothing
+// written on refusal, the five export files, --help and --version.
+#include "support/support.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <nlohmann/json.hpp>
+
+using namespace taiwa::test;
+using nlohmann::json;
+
+namespace {
+
+QStringList samples()
+{
+    QStringList out;
+    for (const auto& f : QDir(sourcePath("resources/samples")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name))
+        out << f.absoluteFilePath();
+    return out;
+}
+
+// A valid one-unit M4 job to break one field at a time.
+json baseJob()
+{
+    return json::parse(R"({
+      "format": "taiwa-job", "version": 1, "name": "cli", "lengthUnit": "mm",
+      "material": "aluminium-6061", "machine": "vmc", "workOffset": "G54",
+      "stock": {"shape": "block", "x": 0, "y": 0, "width": 200, "length": 150, "height": 40},
+      "units": [{"module": "M4", "name": "A", "corners": [[20,20],[120,20],[120,80],[20,80]],
+                 "cornerRadius": 8, "depth": 12, "taper": 0, "U": 1, "F": 1, "H": 0}]})");
+}
+
+}  // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void versionAndHelp()
+    {
+        const auto v = runTaiwa({"--version"});
+        QCOMPARE(v.exitCode, 0);
+        QVERIFY(v.out.startsWith("taiwa "));
+        const auto h = runTaiwa({"--help"});
+        QCOMPARE(h.exitCode, 0);
+        for (const char* word : {"check JOB", "export JOB", "render JOB", "--dialect", "--units"})
+            QVERIFY2(h.out.contains(QLatin1String(word)), word);
+    }
+
+    void badArgumentsAreInputErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no job") << QStringList{"check"} << "no job file given";
+        QTest::newRow("unknown option") << QStringList{"check", "a.taiwa", "--frobnicate"} << "unknown option '--frobnicate'";
+        QTest::newRow("export without out") << QStringList{"export", "a.taiwa"} << "--out is required";
+        QTest::newRow("bad dialect") << QStringList{"export", "a.taiwa", "--out", "x", "--dialect", "heidenhain-klartext"}
+                                     << "unknown dialect 'heidenhain-klartext'";
+        QTest::newRow("bad units") << QStringList{"export", "a.taiwa", "--out", "x", "--units", "cubits"} << "--units is mm or inch";
+        QTest::newRow("bad size") << QStringList{"render", "a.taiwa", "--out", "x.png", "--size", "big"} << "--size wants";
+    }
+    void badArgumentsAreInputErrors()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const auto r = runTaiwa(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+    }
+
+    void everySamplePassesCheck()
+    {
+        const QStringList files = samples();
+        QVERIFY2(files.size() >= 10, "the samples are missing");
+        for (const auto& f : files) {
+            const auto r = runTaiwa({"check", f});
+            QVERIFY2(r.exitCode == 0 && r.err.isEmpty(), qPrintable(f + ": " + r.err));
+        }
+    }
+
+    // Each refusal of the spec: exit code 2 and the field named in the line
+    // "JOB: unit N (MODULE) field: message".
+    void refusalsNameTheField_data()
+    {
+        QTest::addColumn<QString>("pointer");  // JSON pointer into the base job
+        QTest::addColumn<QString>("value");    // JSON text to put there
+        QTest::addColumn<QString>("prefix");   // expected start of the stderr line
+        const QString u = "bad.taiwa: unit 1 (M4) ";
+        QTest::newRow("depth zero") << "/units/0/depth" << "0" << u + "depth:";
+        QTest::newRow("depth negative") << "/units/0/depth" << "-3" << u + "depth:";
+        QTest::newRow("three corners") << "/units/0/corners" << "[[20,20],[120,20],[120,80]]" << u + "corners";
+        QTest::newRow("duplicate corner") << "/units/0/corners" << "[[20,20],[120,20],[120,20],[20,80]]" << u + "corners";
+        QTest::newRow("self-intersecting") << "/units/0/corners" << "[[20,20],[120,80],[120,20],[20,80]]" << u + "corners";
+        QTest::newRow("non-convex") << "/units/0/corners" << "[[20,20],[120,20],[60,40],[20,80]]" << u + "corners";
+        QTest::newRow("r1 over half side") << "/units/0/cornerRadius" << "31" << u + "cornerRadius:";
+        QTest::newRow("taper over 30") << "/units/0/taper" << "31" << u + "taper:";
+        QTest::newRow("U undefined") << "/units/0/U" << "3" << u + "U:";
+        QTest::newRow("F undefined") << "/units/0/F" << "4" << u + "F:";
+        QTest::newRow("H undefined") << "/units/0/H" << "1" << u + "H:";
+        QTest::newRow("missing tool") << "/units/0/tools" << R"({"roughing": 9999})" << u + "tools.roughing:";
+        QTest::newRow("alpha1 >= T") << "/technology" << R"({"alpha1": 12})" << "bad.taiwa: job technology.alpha1:";
+        QTest::newRow("beta2 >= T") << "/technology" << R"({"beta2": 12})" << "bad.taiwa: job technology.beta2:";
+        QTest::newRow("wrong type") << "/units/0/depth" << R"("deep")" << u + "depth:";
+        QTest::newRow("unknown material") << "/material" << R"("unobtainium")" << "bad.taiwa: job material:";
+    }
+    void refusalsNameTheField()
+    {
+        QFETCH(QString, pointer);
+        QFETCH(QString, value);
+        QFETCH(QString, prefix);
+        json job = baseJob();
+        job[json::json_pointer(pointer.toStdString())] = json::parse(value.toStdString());
+        QTemporaryDir dir;
+        const QString file = dir.filePath("bad.taiwa");
+        writeFile(file, job.dump(2));
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith(prefix), qPrintable(r.err));
+        // export refuses the same job and writes nothing
+        const QString out = dir.filePath("out");
+        const auto e = runTaiwa({"export", file, "--out", out});
+        QCOMPARE(e.exitCode, 2);
+        QVERIFY(!QFileInfo::exists(out) || QDir(out).isEmpty());
+    }
+
+    void overlappingFiguresAreRefusedTouchingAreNot()
+    {
+        json job = baseJob();
+        json second = job["units"][0];
+        second["corners"] = json::parse("[[120,20],[180,20],[180,80],[120,80]]");  // shares the edge x = 120
+        job["units"].push_back(second);
+        QTemporaryDir dir;
+        const QString file = dir.filePath("two.taiwa");
+        writeFile(file, job.dump());
+        QCOMPARE(runTaiwa({"check", file}).exitCode, 0);
+        job["units"][1]["corners"] = json::parse("[[110,20],[180,20],[180,80],[110,80]]");
+        writeFile(file, job.dump());
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("unit 2 (M4)") || r.err.contains("unit 1 (M4)"), qPrintable(r.err));
+    }
+
+    void corruptFilesAreRefusedCleanly_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::newRow("empty") << QByteArray();
+        QTest::newRow("truncated") << QByteArray(R"({"format": "taiwa-job", "version": 1, "units": [{"mod)");
+        QTest::newRow("not json") << QByteArray("G0 X10 Y10\nM30\n");
+        QTest::newRow("binary") << QByteArray("\x00\xff\xfe\x13\x37", 5);
+        QTest::newRow("future version") << QByteArray(R"({"format": "taiwa-job", "version": 99, "units": []})");
+    }
+    void corruptFilesAreRefusedCleanly()
+    {
+        QFETCH(QByteArray, content);
+        QTemporaryDir dir;
+        const QString file = dir.filePath("corrupt.taiwa");
+        writeFile(file, content.toStdString());
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("corrupt.taiwa: "), qPrintable(r.err));
+    }
+
+    void hugeFileIsRefusedBySize()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("huge.taiwa");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QVERIFY(f.resize(100LL * 1024 * 1024));  // 100 MB, sparse
+        f.close();
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("huge.taiwa: "), qPrintable(r.err));
+    }
+
+    void missingFileIsAnInputError()
+    {
+        const auto r = runTaiwa({"check", "/nonexistent/nothing.taiwa"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("nothing.taiwa: "), qPrintable(r.err));
+    }
+
+    void exportWritesTheFiveFiles()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("out");
+        const auto r = runTaiwa({"export", sourcePath("resources/samples/m4-standard.taiwa"), "--out", out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList expected{"m4-standard.nc", "m4-standard.sheet.html", "m4-standard.sheet.pdf",
+                                   "m4-standard.steps.json", "m4-standard.tape.txt"};
+        QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name), expected);  // no temporary files left
+        for (const auto& f : expected) QVERIFY2(QFileInfo(QDir(out).filePath(f)).size() > 100, qPrintable(f));
+        QVERIFY(r.out.contains(out));
+        const json steps = json::parse(readFile(QDir(out).filePath("m4-standard.steps.json")));
+        QVERIFY(steps["steps"].size() >= 3);
+        for (const auto& s : steps["steps"]) {
+            QVERIFY(s.contains("tool"));
+            QVERIFY(s["pathLength"]["feed"].get<double>() > 0);
+            QVERIFY(s["minutes"].get<double>() > 0);
+        }
+    }
+
+    void toolLibraryThatCannotBeOpenedIsReported()
+    {
+        QTemporaryDir dir;
+        const QString db = dir.filePath("tools.sqlite");
+        writeFile(db, std::string(4096, 'x'));
+        const auto r = runTaiwa({"check", sourcePath("resources/samples/m4-standard.taiwa")}, {"TAIWA_TOOL_DB=" + db});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("tool library") && r.err.contains(db), qPrintable(r.err));
+        QCOMPARE(readFile(db), std::string(4096, 'x'));  // the operator's file is not overwritten
+    }
+};
+
+QTEST_APPLESS_MAIN(TestCli)
+#include "test_cli.moc"
