@@ -24,7 +24,7 @@ Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::ve
 std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTable& table);
 
 // Machining order of the units (0-based indices into job.units): see
-// docs/decisions.md ("Unit order").
+// docs/input-checks.md ("Unit order").
 std::vector<int> machiningOrder(const Job& job);
 
 }  // namespace taiwa

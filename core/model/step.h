@@ -53,7 +53,10 @@ struct Step {
     MachiningType machiningType = MachiningType::Roughing;
 
     // Geometry. Depths are positive, measured down from the top surface.
-    std::optional<Quad> outline;  // boundary the tool edge reaches at cutDepth (with its corner radius)
+    // Boundary the tool edge reaches (with its corner radius): at cutDepth for
+    // vertical walls; for tapered wall steps (wallTaper > 0) the outline at the
+    // top surface, the wall leaning inward by depth x tan(wallTaper) below it.
+    std::optional<Quad> outline;
     Point2 position{};            // pilot hole centre; otherwise the outline's centroid
     double holeDiameter = 0.0;    // pilot hole only: the smallest diameter it must have (0 = not yet known)
     double startDepth = 0.0;      // above this depth everything is air (rapid)

@@ -1,0 +1,125 @@
+// Input processing and decomposition of a 1,000-unit job (M4 with every code
+// mix and taper, M2D every fifth unit, on a grid of touching and separate
+// figures): checkJob, machiningOrder and the decomposition of all units,
+// each reported as time per unit.
+#include "check/input_check.h"
+#include "decompose/decompose.h"
+
+#include <benchmark/benchmark.h>
+
+using namespace taiwa;
+
+namespace {
+
+constexpr int kUnits = 1000;
+
+Job bigJob()
+{
+    Job job;
+    job.name = "bench-decompose";
+    job.stock = {0, 0, 40 * 30.0, 25 * 30.0, 40};
+    const int codes[][3] = {{1, 1, 0}, {1, 2, 9}, {1, 3, 0}, {6, 1, 0}, {7, 3, 9}, {8, 2, 9}, {9, 1, 0}};
+    for (int i = 0; i < kUnits; ++i) {
+        // Pitch 30 mm along X with 30 mm wide figures: neighbours in a row touch.
+        const double x = (i % 40) * 30.0, y = 5 + (i / 40) * 30.0;
+        if (i % 5 == 4) {
+            M2DPocket m;
+            m.corner = {x, y};
+            m.lengthX = 30;
+            m.lengthY = 20;
+            m.depth = 6;
+            m.theta1 = 10;
+            m.theta2 = 20;
+            m.cornerRadius = 4;
+            job.units.push_back({"", m});
+            continue;
+        }
+        const auto* c = codes[i % 7];
+        M4Pocket m;
+        m.corners = {{{x, y}, {x + 30, y}, {x + 30, y + 20}, {x, y + 20}}};
+        m.cornerRadius = 5;
+        m.depth = 8;
+        m.taper = (i % 3 == 0) ? 3.0 : 0.0;
+        m.toolUse = c[0];
+        m.wallFinish = c[1];
+        m.pilotHole = c[2];
+        job.units.push_back({"", m});
+    }
+    return job;
+}
+
+std::vector<Tool> library()
+{
+    std::vector<Tool> tools;
+    int id = 0;
+    for (const double d : {2.0, 4.0, 6.0, 8.0}) {
+        Tool t;
+        t.id = ++id;
+        t.type = ToolType::FlatEndMill;
+        t.diameter = d;
+        tools.push_back(t);
+    }
+    Tool taper;
+    taper.id = ++id;
+    taper.type = ToolType::TaperEndMill;
+    taper.diameter = 2;
+    taper.taperAngle = 3;
+    tools.push_back(taper);
+    return tools;
+}
+
+void perUnit(benchmark::State& state)
+{
+    // Seconds per unit, printed with its SI prefix ("29.3us").
+    state.counters["time_per_unit"] =
+        benchmark::Counter(kUnits, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void BM_CheckJob(benchmark::State& state)
+{
+    const Job job = bigJob();
+    const auto tools = library();
+    for (auto _ : state) {
+        const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), tools);
+        if (!ds.empty()) state.SkipWithError(format(job.name, ds.front()).c_str());
+        benchmark::DoNotOptimize(ds.data());
+    }
+    perUnit(state);
+}
+BENCHMARK(BM_CheckJob)->Unit(benchmark::kMillisecond);
+
+void BM_MachiningOrder(benchmark::State& state)
+{
+    const Job job = bigJob();
+    for (auto _ : state) {
+        const auto order = machiningOrder(job);
+        benchmark::DoNotOptimize(order.data());
+    }
+    perUnit(state);
+}
+BENCHMARK(BM_MachiningOrder)->Unit(benchmark::kMillisecond);
+
+void BM_DecomposeAll(benchmark::State& state)
+{
+    const Job job = bigJob();
+    const TechnologyData tech = *jobTechnology(job, TechnologyTable::builtIn());
+    std::size_t steps = 0;
+    for (auto _ : state) {
+        steps = 0;
+        for (int u = 0; u < kUnits; ++u) {
+            const auto& module = job.units[static_cast<std::size_t>(u)].module;
+            const auto unitSteps = std::holds_alternative<M4Pocket>(module)
+                                       ? decomposeM4(std::get<M4Pocket>(module), tech, u)
+                                       : decomposeM2D(std::get<M2DPocket>(module), tech, 6.0, u);
+            steps += unitSteps.size();
+            benchmark::DoNotOptimize(unitSteps.data());
+        }
+    }
+    state.counters["steps"] = static_cast<double>(steps);
+    perUnit(state);
+}
+BENCHMARK(BM_DecomposeAll)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

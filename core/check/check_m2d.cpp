@@ -1,0 +1,168 @@
+// Input checks of one M2D unit (geometric 3-D pocket): numbers, codes, the
+// opening and its inclined walls, the floor they leave, depth against stock
+// and technology data, and tool room.
+#include "check/messages.h"
+#include "check/unit_checks.h"
+#include "model/codes.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace taiwa::check {
+
+namespace {
+
+constexpr double kTolerance = 1e-9;  // mm
+
+double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+
+struct Reporter {
+    int unitNo;
+    const Context& ctx;
+    Diagnostics& out;
+    void unit(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, unitNo, "M2D", std::move(field), std::move(message)});
+    }
+    void job(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, std::nullopt, "", std::move(field), std::move(message)});
+    }
+    msg::Len len(double mm) const { return {mm, ctx.shownUnit}; }
+};
+
+bool allFinite(const M2DPocket& p, Reporter& r)
+{
+    bool ok = true;
+    auto need = [&](const char* field, double v, const std::string& what) {
+        if (std::isfinite(v)) return;
+        r.unit(field, msg::notFinite(what));
+        ok = false;
+    };
+    need("corner", p.corner.x, "X1 of the reference corner");
+    need("corner", p.corner.y, "Y1 of the reference corner");
+    need("L1", p.lengthX, "L1");
+    need("L2", p.lengthY, "L2");
+    need("depth", p.depth, "the depth");
+    need("theta1", p.theta1, "θ1");
+    if (p.theta2) need("theta2", *p.theta2, "θ2");
+    need("cornerRadius", p.cornerRadius, "the corner radius");
+    need("scallop", p.scallop, "the scallop height");
+    return ok;
+}
+
+bool codesDefined(const M2DPocket& p, Reporter& r)
+{
+    bool ok = true;
+    if (p.toolUse != 1 && p.toolUse != 9) {
+        const bool reserved = p.toolUse >= 2 && p.toolUse <= 5;
+        r.unit("U", reserved                    ? msg::toolUseUndefined(p.toolUse)
+                    : toolUseFromCode(p.toolUse) ? msg::toolUseNotForM2D(p.toolUse)
+                                                 : msg::toolUseUnknown(p.toolUse));
+        ok = false;
+    }
+    if (!pilotHoleFromCode(p.pilotHole)) {
+        r.unit("H", msg::pilotHoleUnknown(p.pilotHole));
+        ok = false;
+    }
+    return ok;
+}
+
+bool anglesValid(const M2DPocket& p, Reporter& r)
+{
+    bool ok = true;
+    auto angle = [&](const char* field, const char* name, double v) {
+        if (v >= 0.0 && v < 60.0) return;
+        r.unit(field, msg::thetaOutOfRange(name, v));
+        ok = false;
+    };
+    angle("theta1", "θ1", p.theta1);
+    if (p.theta2) angle("theta2", "θ2", *p.theta2);
+    return ok;
+}
+
+// Opening and floor: lengths positive, r1 fits L2 and the floor the inclined walls leave.
+bool figureValid(const M2DPocket& p, bool depthOk, bool anglesOk, Reporter& r)
+{
+    bool ok = true;
+    if (p.lengthX <= 0.0) r.unit("L1", msg::lengthNotPositive("L1", r.len(p.lengthX))), ok = false;
+    if (p.lengthY <= 0.0) r.unit("L2", msg::lengthNotPositive("L2", r.len(p.lengthY))), ok = false;
+    if (p.cornerRadius < 0.0) r.unit("cornerRadius", msg::radiusNegative(r.len(p.cornerRadius))), ok = false;
+    if (!ok) return false;
+    if (p.cornerRadius > p.lengthY / 2.0 + kTolerance) {
+        r.unit("cornerRadius", msg::radiusOverHalfL2(r.len(p.cornerRadius), r.len(p.lengthY)));
+        return false;
+    }
+    if (!depthOk || !anglesOk) return true;  // the opening alone is still a valid figure
+    const double floorWidth = p.lengthX - p.depth * (tanDeg(p.theta1) + tanDeg(p.rightAngle()));
+    const double needed = 2.0 * p.cornerRadius;
+    if (floorWidth <= needed) {
+        const bool blameTheta2 = p.theta2 && *p.theta2 > p.theta1;
+        r.unit(blameTheta2 ? "theta2" : "theta1",
+               msg::floorVanishes(r.len(floorWidth), r.len(needed), r.len(needed - floorWidth)));
+    }
+    return true;
+}
+
+bool insideStock(const M2DPocket& p, const Stock& s)
+{
+    return p.corner.x >= s.x - kTolerance && p.corner.y >= s.y - kTolerance &&
+           p.corner.x + p.lengthX <= s.x + s.width + kTolerance && p.corner.y + p.lengthY <= s.y + s.length + kTolerance;
+}
+
+void checkToolRoom(const M2DPocket& p, const TechnologyData& tech, Reporter& r)
+{
+    RoomQuery rough;
+    rough.stepKeys = {"roughing"};
+    if (p.toolUse == 1) rough.stepKeys.push_back("floor");
+    rough.label = "r1 − α2";
+    rough.available = p.cornerRadius - tech.alpha2;
+    rough.cornerRadius = p.cornerRadius;
+    checkRoom(rough, p.tools, r.unitNo, "M2D", r.ctx, r.out);
+    if (p.toolUse != 1) return;
+    RoomQuery wall;
+    wall.stepKeys = {"wall"};
+    wall.label = "r1";
+    wall.available = p.cornerRadius;
+    wall.cornerRadius = p.cornerRadius;
+    checkRoom(wall, p.tools, r.unitNo, "M2D", r.ctx, r.out);
+}
+
+}  // namespace
+
+UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
+{
+    UnitReport report;
+    Reporter r{unitNo, ctx, report.diagnostics};
+    checkPins(p.tools, unitNo, "M2D", ctx, report.diagnostics);
+    const bool codes = codesDefined(p, r);
+    if (!allFinite(p, r)) return report;
+
+    const bool depthOk = p.depth > 0.0;
+    if (!depthOk) r.unit("depth", msg::depthNotPositive(r.len(p.depth)));
+    else if (ctx.stock && p.depth > ctx.stock->height + kTolerance)
+        r.unit("depth", msg::deeperThanStock(r.len(p.depth), r.len(ctx.stock->height)));
+    if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
+
+    const bool anglesOk = anglesValid(p, r);
+    const std::size_t before = report.diagnostics.size();
+    report.figureValid = figureValid(p, depthOk, anglesOk, r);
+    const bool floorOk = report.diagnostics.size() == before;
+    if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock)) r.unit("corner", msg::outsideStock("pocket opening"));
+
+    if (!ctx.tech || !codes || !depthOk) return report;
+    const TechnologyData& tech = *ctx.tech;
+    bool depthsOk = true;
+    if (p.pilotHole == 0 && tech.alpha1 >= p.depth) {
+        r.job("technology.alpha1", msg::alpha1NotBelowDepth(unitNo, r.len(tech.alpha1), r.len(p.depth)));
+        depthsOk = false;
+    }
+    if (tech.beta2 >= p.depth) {
+        r.job("technology.beta2", msg::beta2NotBelowDepth(unitNo, r.len(tech.beta2), r.len(p.depth)));
+        depthsOk = false;
+    }
+    if (report.figureValid && floorOk && anglesOk && depthsOk) checkToolRoom(p, tech, r);
+    return report;
+}
+
+}  // namespace taiwa::check

@@ -1,0 +1,195 @@
+// Input checks of one M4 unit (2.5-D pocket): numbers, codes, the outline's
+// geometry, depth against stock and technology data, and tool room.
+#include "check/messages.h"
+#include "check/unit_checks.h"
+#include "model/codes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace taiwa::check {
+
+namespace {
+
+constexpr double kSamePoint = 1e-6;  // mm: closer corners are the same point
+constexpr double kTolerance = 1e-9;  // mm
+
+double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+
+struct Reporter {
+    int unitNo;
+    const Context& ctx;
+    Diagnostics& out;
+    void unit(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, unitNo, "M4", std::move(field), std::move(message)});
+    }
+    void job(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, std::nullopt, "", std::move(field), std::move(message)});
+    }
+    msg::Len len(double mm) const { return {mm, ctx.shownUnit}; }
+};
+
+bool allFinite(const M4Pocket& p, Reporter& r)
+{
+    bool ok = true;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (!std::isfinite(p.corners[i].x) || !std::isfinite(p.corners[i].y)) {
+            r.unit("corners[" + std::to_string(i) + "]", msg::notFinite("a coordinate of P" + std::to_string(i + 1)));
+            ok = false;
+        }
+    const std::pair<const char*, double> numbers[] = {
+        {"cornerRadius", p.cornerRadius}, {"depth", p.depth}, {"taper", p.taper}};
+    for (const auto& [field, v] : numbers)
+        if (!std::isfinite(v)) {
+            r.unit(field, msg::notFinite(std::string("the ") + field));
+            ok = false;
+        }
+    return ok;
+}
+
+bool codesDefined(const M4Pocket& p, Reporter& r)
+{
+    bool ok = true;
+    if (!toolUseFromCode(p.toolUse)) {
+        r.unit("U", p.toolUse >= 2 && p.toolUse <= 5 ? msg::toolUseUndefined(p.toolUse) : msg::toolUseUnknown(p.toolUse));
+        ok = false;
+    }
+    if (!wallFinishFromCode(p.wallFinish)) {
+        r.unit("F", msg::wallFinishUnknown(p.wallFinish));
+        ok = false;
+    }
+    if (!pilotHoleFromCode(p.pilotHole)) {
+        r.unit("H", msg::pilotHoleUnknown(p.pilotHole));
+        ok = false;
+    }
+    return ok;
+}
+
+// Four distinct corners forming a convex outline whose corner radius fits.
+bool outlineValid(const M4Pocket& p, Reporter& r)
+{
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = i + 1; j < 4; ++j)
+            if (distance(p.corners[i], p.corners[j]) < kSamePoint) {
+                r.unit("corners[" + std::to_string(j) + "]",
+                       msg::duplicateCorner(static_cast<int>(i + 1), static_cast<int>(j + 1), r.len(p.corners[j].x),
+                                            r.len(p.corners[j].y)));
+                return false;
+            }
+    if (isSelfIntersecting(p.corners)) {
+        r.unit("corners", msg::selfIntersecting());
+        return false;
+    }
+    if (!isStrictlyConvex(p.corners)) {
+        r.unit("corners", msg::notConvex());
+        return false;
+    }
+    if (p.cornerRadius < 0.0) {
+        r.unit("cornerRadius", msg::radiusNegative(r.len(p.cornerRadius)));
+        return false;
+    }
+    const double side = shortestSide(p.corners);
+    if (p.cornerRadius > side / 2.0 + kTolerance) {
+        r.unit("cornerRadius", msg::radiusOverHalfSide(r.len(p.cornerRadius), r.len(side)));
+        return false;
+    }
+    const double inscribed = inscribedRadius(p.corners);
+    if (p.cornerRadius > inscribed + 1e-6) {
+        r.unit("cornerRadius", msg::radiusOverInscribed(r.len(p.cornerRadius), r.len(inscribed)));
+        return false;
+    }
+    return true;
+}
+
+bool insideStock(const std::array<Point2, 4>& corners, const Stock& s)
+{
+    for (const auto& c : corners)
+        if (c.x < s.x - kTolerance || c.x > s.x + s.width + kTolerance || c.y < s.y - kTolerance ||
+            c.y > s.y + s.length + kTolerance)
+            return false;
+    return true;
+}
+
+// Tool room of every step that the codes ask for.
+void checkToolRoom(const M4Pocket& p, const TechnologyData& tech, Reporter& r)
+{
+    const ToolUse use = *toolUseFromCode(p.toolUse);
+    const double t = tanDeg(p.taper);
+    const double r1 = p.cornerRadius;
+    if (hasRoughing(use) || hasFloorFinishing(use)) {
+        RoomQuery q;
+        if (hasRoughing(use)) q.stepKeys.push_back("roughing");
+        if (hasFloorFinishing(use)) q.stepKeys.push_back("floor");
+        q.label = p.taper > 0.0 ? "the roughing corner radius (r1 less the taper down to the roughing depth, less α2)"
+                                : "r1 − α2";
+        q.available = std::max(r1 - (p.depth - tech.beta2) * t, 0.0) - tech.alpha2;
+        q.cornerRadius = r1;
+        checkRoom(q, p.tools, r.unitNo, "M4", r.ctx, r.out);
+    }
+    if (!hasWallFinishing(use)) return;
+    const bool twoStage = *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
+    RoomQuery q;
+    q.stepKeys = {"wall"};
+    q.cornerRadius = r1;
+    if (p.taper > 0.0) {
+        q.type = ToolType::TaperEndMill;
+        q.taper = p.taper;
+        q.label = twoStage ? "the semi-finish corner radius at the floor (r1 − T·tan S − α3)"
+                           : "the corner radius at the floor (r1 − T·tan S)";
+        q.available = r1 - p.depth * t - (twoStage ? tech.alpha3 : 0.0);
+    } else {
+        q.label = twoStage ? "r1 − α3" : "r1";
+        q.available = r1 - (twoStage ? tech.alpha3 : 0.0);
+    }
+    checkRoom(q, p.tools, r.unitNo, "M4", r.ctx, r.out);
+}
+
+}  // namespace
+
+UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
+{
+    UnitReport report;
+    Reporter r{unitNo, ctx, report.diagnostics};
+    checkPins(p.tools, unitNo, "M4", ctx, report.diagnostics);
+    const bool codes = codesDefined(p, r);
+    if (!allFinite(p, r)) return report;
+
+    const bool depthOk = p.depth > 0.0;
+    if (!depthOk) r.unit("depth", msg::depthNotPositive(r.len(p.depth)));
+    else if (ctx.stock && p.depth > ctx.stock->height + kTolerance)
+        r.unit("depth", msg::deeperThanStock(r.len(p.depth), r.len(ctx.stock->height)));
+
+    const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
+    if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));
+
+    const bool outlineOk = outlineValid(p, r);
+    report.figureValid = outlineOk;
+    if (outlineOk && ctx.stock && !insideStock(p.corners, *ctx.stock)) r.unit("corners", msg::outsideStock("pocket"));
+
+    bool taperFits = true;
+    if (outlineOk && depthOk && taperOk && p.taper > 0.0) {
+        const double meet = inscribedRadius(p.corners) / tanDeg(p.taper);
+        taperFits = meet > p.depth;
+        if (!taperFits) r.unit("taper", msg::taperClosesPocket(p.taper, r.len(meet)));
+    }
+
+    if (!ctx.tech || !codes || !depthOk) return report;
+    const TechnologyData& tech = *ctx.tech;
+    const ToolUse use = *toolUseFromCode(p.toolUse);
+    bool depthsOk = true;
+    if (*pilotHoleFromCode(p.pilotHole) == PilotHole::Drill && tech.alpha1 >= p.depth) {
+        r.job("technology.alpha1", msg::alpha1NotBelowDepth(unitNo, r.len(tech.alpha1), r.len(p.depth)));
+        depthsOk = false;
+    }
+    if ((hasRoughing(use) || hasFloorFinishing(use)) && tech.beta2 >= p.depth) {
+        r.job("technology.beta2", msg::beta2NotBelowDepth(unitNo, r.len(tech.beta2), r.len(p.depth)));
+        depthsOk = false;
+    }
+    if (outlineOk && taperOk && taperFits && depthsOk) checkToolRoom(p, tech, r);
+    return report;
+}
+
+}  // namespace taiwa::check

@@ -1,0 +1,137 @@
+// Interference check of input processing: the top outlines of two figures
+// of one job must not overlap (touching is allowed). Rounded corners are
+// flattened to 1 µm, outlines scaled to integers for Clipper, and a pair
+// whose common area exceeds a sliver tolerance is refused.
+#include "check/messages.h"
+#include "check/unit_checks.h"
+#include "decompose/decompose.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace taiwa::check {
+
+namespace {
+
+constexpr double kScale = 1e6;          // integer units per mm
+constexpr double kChordTolerance = 1e-3;  // mm between an arc and its chords
+// Rounding to the integer grid can make two touching edges overlap by half a
+// grid cell along their length: allow that sliver, plus 1e-6 mm^2.
+constexpr double kAreaTolerance = 1e-6;  // mm^2
+constexpr double kSliverWidth = 1e-6;    // mm
+
+ClipperLib::IntPoint scaled(Point2 p)
+{
+    return {static_cast<ClipperLib::cInt>(std::llround(p.x * kScale)),
+            static_cast<ClipperLib::cInt>(std::llround(p.y * kScale))};
+}
+
+// The rounded outline as a polygon: straight sides exact, each corner arc
+// replaced by chords within kChordTolerance (chord ends on the arc).
+ClipperLib::Path flatten(const Quad& q)
+{
+    const double r = std::max(q.cornerRadius, 0.0);
+    const Quad core = offsetInward(Quad{q.corners, r}, r);  // the arc centres
+    const auto p = counterClockwise(q.corners);
+    ClipperLib::Path path;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 inDir = p[i] - p[(i + 3) % 4];
+        const Point2 outDir = p[(i + 1) % 4] - p[i];
+        // Outward normals (right of a counter-clockwise side).
+        const double a0 = std::atan2(-inDir.x, inDir.y);
+        double a1 = std::atan2(-outDir.x, outDir.y);
+        while (a1 < a0) a1 += 2.0 * std::numbers::pi;
+        int n = 1;
+        if (r > kChordTolerance) {
+            const double step = 2.0 * std::acos(1.0 - kChordTolerance / r);
+            n = std::max(1, static_cast<int>(std::ceil((a1 - a0) / step)));
+        }
+        for (int k = 0; k <= n; ++k) {
+            const double a = a0 + (a1 - a0) * k / n;
+            path.push_back(scaled(core.corners[i] + r * Point2{std::cos(a), std::sin(a)}));
+            if (r == 0.0) break;
+        }
+    }
+    return path;
+}
+
+struct Figure {
+    int unit;  // 0-based
+    ClipperLib::Path path;
+    double perimeter;
+    double minX, maxX, minY, maxY;
+};
+
+Figure figure(const ModuleInput& m, int unit)
+{
+    const Quad q = topOutline(m);
+    Figure f{unit, flatten(q), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y, q.corners[0].y};
+    for (std::size_t i = 0; i < 4; ++i) {
+        f.perimeter += distance(q.corners[i], q.corners[(i + 1) % 4]);
+        f.minX = std::min(f.minX, q.corners[i].x);
+        f.maxX = std::max(f.maxX, q.corners[i].x);
+        f.minY = std::min(f.minY, q.corners[i].y);
+        f.maxY = std::max(f.maxY, q.corners[i].y);
+    }
+    return f;
+}
+
+double commonArea(const Figure& a, const Figure& b)
+{
+    ClipperLib::Clipper clipper;
+    clipper.AddPath(a.path, ClipperLib::ptSubject, true);
+    clipper.AddPath(b.path, ClipperLib::ptClip, true);
+    ClipperLib::Paths out;
+    clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    double area = 0.0;
+    for (const auto& p : out) area += std::abs(ClipperLib::Area(p));
+    return area / (kScale * kScale);
+}
+
+}  // namespace
+
+Quad topOutline(const ModuleInput& m)
+{
+    if (const auto* m4 = std::get_if<M4Pocket>(&m)) return Quad{counterClockwise(m4->corners), m4->cornerRadius};
+    return m2dCrossSection(std::get<M2DPocket>(m), 0.0);
+}
+
+Diagnostics interferences(const Job& mmJob, const std::vector<bool>& valid, LengthUnit shownUnit)
+{
+    std::vector<Figure> figures;
+    for (std::size_t u = 0; u < mmJob.units.size(); ++u)
+        if (valid[u]) figures.push_back(figure(mmJob.units[u].module, static_cast<int>(u)));
+    // Sweep along X: only figures whose boxes meet can overlap.
+    std::sort(figures.begin(), figures.end(), [](const Figure& a, const Figure& b) { return a.minX < b.minX; });
+    std::vector<std::pair<int, int>> pairs;  // (earlier unit, later unit), 0-based
+    std::vector<double> areas;
+    for (std::size_t i = 0; i < figures.size(); ++i) {
+        const Figure& a = figures[i];
+        for (std::size_t j = i + 1; j < figures.size() && figures[j].minX <= a.maxX; ++j) {
+            const Figure& b = figures[j];
+            if (b.minY > a.maxY || b.maxY < a.minY) continue;
+            const double area = commonArea(a, b);
+            const double tolerance = kAreaTolerance + kSliverWidth * std::min(a.perimeter, b.perimeter);
+            if (area <= tolerance) continue;
+            pairs.emplace_back(std::min(a.unit, b.unit), std::max(a.unit, b.unit));
+            areas.push_back(area);
+        }
+    }
+    std::vector<std::size_t> order(pairs.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return pairs[x] < pairs[y]; });
+    Diagnostics out;
+    for (const std::size_t k : order) {
+        const auto [first, second] = pairs[k];
+        const auto& unit = mmJob.units[static_cast<std::size_t>(second)];
+        out.push_back({Severity::Error, second + 1, moduleName(unit.module),
+                       std::holds_alternative<M4Pocket>(unit.module) ? "corners" : "corner",
+                       msg::overlap(second + 1, first + 1, areas[k], shownUnit)});
+    }
+    return out;
+}
+
+}  // namespace taiwa::check

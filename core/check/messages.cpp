@@ -1,0 +1,226 @@
+// The wording of every input-processing message (see messages.h).
+#include "check/messages.h"
+
+#include <fmt/format.h>
+
+namespace taiwa::msg {
+
+namespace {
+// Fixed decimals with trailing zeros trimmed and no "-0".
+std::string trimmed(double v, int decimals)
+{
+    std::string s = fmt::format("{:.{}f}", v, decimals);
+    if (s.find('.') != std::string::npos) {
+        while (s.back() == '0') s.pop_back();
+        if (s.back() == '.') s.pop_back();
+    }
+    return s == "-0" ? "0" : s;
+}
+}  // namespace
+
+std::string quote(Len v)
+{
+    return trimmed(fromMm(v.mm, v.unit), v.unit == LengthUnit::Inch ? 4 : 3) + " " + unitSymbol(v.unit);
+}
+
+std::string quoteDeg(double deg) { return trimmed(deg, 3) + "°"; }
+
+std::string toolName(const Tool& t)
+{
+    std::string s = fmt::format("T{} ({} Ø{} mm", t.id, toString(t.type), trimmed(t.diameter, 3));
+    if (t.type == ToolType::TaperEndMill) s += ", " + quoteDeg(t.taperAngle) + " per side";
+    return s + ")";
+}
+
+std::string notFinite(const std::string& what) { return what + " is not a finite number; type a number"; }
+
+std::string unknownMaterial(const std::string& id, const std::vector<std::string>& known)
+{
+    return fmt::format("material \"{}\" is not in the technology table; known materials: {}", id, fmt::join(known, ", "));
+}
+
+std::string stockNotPositive(const std::string& what, Len v)
+{
+    return fmt::format("the stock {} is {}; it must be greater than zero", what, quote(v));
+}
+
+std::string technologyNotPositive(const std::string& name, double shownValue, const std::string& unitText)
+{
+    return fmt::format("{} = {}{} must be greater than zero", name, trimmed(shownValue, 4), unitText);
+}
+
+std::string alpha3NotBelowAlpha2(Len a3, Len a2)
+{
+    return fmt::format("the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}",
+                       quote(a3), quote(a2));
+}
+
+std::string alpha1NotBelowDepth(int unitNo, Len a1, Len depth)
+{
+    return fmt::format("the pilot-hole remainder α1 = {} is not smaller than the depth {} of unit {}: "
+                       "the pilot hole would have no depth; use H = 9 or a smaller α1",
+                       quote(a1), quote(depth), unitNo);
+}
+
+std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth)
+{
+    return fmt::format("the floor allowance β2 = {} is not smaller than the depth {} of unit {}: "
+                       "roughing would not cut at all",
+                       quote(b2), quote(depth), unitNo);
+}
+
+std::string tooManyErrors(std::size_t notShown)
+{
+    return fmt::format("{} more errors not listed; correct the ones above first", notShown);
+}
+
+std::string depthNotPositive(Len depth)
+{
+    return fmt::format("the depth is {}; it must be greater than zero (measured down from the top face)", quote(depth));
+}
+
+std::string deeperThanStock(Len depth, Len stockHeight)
+{
+    return fmt::format("the depth {} is deeper than the stock, which is {} high", quote(depth), quote(stockHeight));
+}
+
+std::string lengthNotPositive(const std::string& name, Len v)
+{
+    return fmt::format("{} is {}; it must be greater than zero", name, quote(v));
+}
+
+std::string radiusNegative(Len r1) { return fmt::format("the corner radius is {}; it cannot be negative", quote(r1)); }
+
+std::string outsideStock(const std::string& figure)
+{
+    return fmt::format("the {} reaches outside the stock; move it or enlarge the stock", figure);
+}
+
+std::string duplicateCorner(int first, int second, Len x, Len y)
+{
+    return fmt::format("P{} and P{} are the same point ({}, {}); the outline needs four distinct corners", first, second,
+                       quote(x), quote(y));
+}
+
+std::string selfIntersecting()
+{
+    return "the outline crosses itself; enter the corners P1..P4 in order around the pocket";
+}
+
+std::string notConvex() { return "the outline is not convex (a corner points inward or three corners are in line)"; }
+
+std::string radiusOverHalfSide(Len r1, Len shortestSide)
+{
+    return fmt::format("the corner radius {} is larger than half the shortest side ({} long)", quote(r1),
+                       quote(shortestSide));
+}
+
+std::string radiusOverInscribed(Len r1, Len inscribed)
+{
+    return fmt::format("the corner radius {} does not fit: the largest circle inside the outline has radius {}",
+                       quote(r1), quote(inscribed));
+}
+
+std::string radiusOverHalfL2(Len r1, Len l2)
+{
+    return fmt::format("the corner radius {} is larger than half of L2 = {}", quote(r1), quote(l2));
+}
+
+std::string taperOutOfRange(double taper)
+{
+    return fmt::format("the taper {} per side is outside 0° to 30°", quoteDeg(taper));
+}
+
+std::string taperClosesPocket(double taper, Len meetDepth)
+{
+    return fmt::format("with a taper of {} per side the walls meet at depth {}, above the floor", quoteDeg(taper),
+                       quote(meetDepth));
+}
+
+std::string thetaOutOfRange(const std::string& name, double theta)
+{
+    return fmt::format("{} = {} is outside 0° to under 60° (measured from the vertical)", name, quoteDeg(theta));
+}
+
+std::string floorVanishes(Len floorWidth, Len needed, Len shortBy)
+{
+    return fmt::format("the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} "
+                       "(short by {}): reduce the angles or the depth, or lengthen L1",
+                       quote(floorWidth), quote(needed), quote(shortBy));
+}
+
+std::string scallopNotPositive(Len scallop)
+{
+    return fmt::format("the scallop height is {}; it must be greater than zero (usual 0.01 mm)", quote(scallop));
+}
+
+std::string toolUseUndefined(int code)
+{
+    return fmt::format("tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9", code);
+}
+
+std::string toolUseUnknown(int code)
+{
+    return fmt::format("tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9", code);
+}
+
+std::string toolUseNotForM2D(int code)
+{
+    return fmt::format("tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)", code);
+}
+
+std::string wallFinishUnknown(int code)
+{
+    return fmt::format("finishing code F = {} does not exist; use 1, 2 or 3", code);
+}
+
+std::string pilotHoleUnknown(int code)
+{
+    return fmt::format("pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)", code);
+}
+
+std::string unknownPinKey(const std::string& key)
+{
+    return fmt::format("\"{}\" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined", key);
+}
+
+std::string toolNotInLibrary(int id) { return fmt::format("tool T{} is not in the tool library", id); }
+
+std::string noToolOfType(const std::string& typeName)
+{
+    return fmt::format("the tool library has no {}; add one to machine this pocket", typeName);
+}
+
+std::string noTaperTool(double taper, const std::vector<double>& anglesInLibrary)
+{
+    std::vector<std::string> shown;
+    for (const double a : anglesInLibrary) shown.push_back(quoteDeg(a));
+    if (shown.empty()) return fmt::format("no taper end mill of {} per side in the tool library (it has none)", quoteDeg(taper));
+    return fmt::format("no taper end mill of {} per side in the tool library (it has {})", quoteDeg(taper),
+                       fmt::join(shown, ", "));
+}
+
+std::string noRoomForTool(const std::string& label, Len available, const Tool& smallest, Len neededR1)
+{
+    return fmt::format("{} = {} is smaller than the radius of the smallest suitable tool, {}; "
+                       "no tool of the library fits: a corner radius of at least {} would let it fit",
+                       label, quote(available), toolName(smallest), quote(neededR1));
+}
+
+std::string pinnedToolTooBig(const std::string& step, const Tool& pinned, const std::string& label, Len available,
+                             const Tool* fitting)
+{
+    const std::string hint = fitting ? fmt::format("{} would fit", toolName(*fitting))
+                                     : std::string("no tool of that kind in the library fits");
+    return fmt::format("the {} tool {} is too big for {} = {}; {}", step, toolName(pinned), label, quote(available), hint);
+}
+
+std::string overlap(int unitNo, int otherUnitNo, double areaMm2, LengthUnit unit)
+{
+    const double shown = unit == LengthUnit::Inch ? areaMm2 / (kMillimetresPerInch * kMillimetresPerInch) : areaMm2;
+    return fmt::format("the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may "
+                       "touch but not overlap",
+                       unitNo, otherUnitNo, trimmed(shown, unit == LengthUnit::Inch ? 6 : 4), unitSymbol(unit));
+}
+
+}  // namespace taiwa::msg

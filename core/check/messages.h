@@ -1,0 +1,69 @@
+// Every message of input processing, in one place (so that the wording is
+// consistent and can be translated): one function per refusal, each a
+// sentence a machinist understands, quoting values in the job's length unit.
+#pragma once
+
+#include "model/job.h"
+#include "model/tool.h"
+
+#include <string>
+#include <vector>
+
+namespace taiwa::msg {
+
+// A length to quote: the value in mm, shown in the job's unit ("12.5 mm", "0.4921 in").
+struct Len {
+    double mm;
+    LengthUnit unit;
+};
+std::string quote(Len v);
+std::string quoteDeg(double deg);  // "5°"
+std::string toolName(const Tool& t);  // "T12 (flat end mill Ø6 mm)", always in mm like the library
+
+// Job level.
+std::string notFinite(const std::string& what);
+std::string unknownMaterial(const std::string& id, const std::vector<std::string>& known);
+std::string stockNotPositive(const std::string& what, Len v);
+std::string technologyNotPositive(const std::string& name, double shownValue, const std::string& unitText);
+std::string alpha3NotBelowAlpha2(Len a3, Len a2);
+std::string alpha1NotBelowDepth(int unitNo, Len a1, Len depth);
+std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth);
+std::string tooManyErrors(std::size_t notShown);
+
+// Dimensions and codes of a unit.
+std::string depthNotPositive(Len depth);
+std::string deeperThanStock(Len depth, Len stockHeight);
+std::string lengthNotPositive(const std::string& name, Len v);
+std::string radiusNegative(Len r1);
+std::string outsideStock(const std::string& figure);
+std::string duplicateCorner(int first, int second, Len x, Len y);
+std::string selfIntersecting();
+std::string notConvex();
+std::string radiusOverHalfSide(Len r1, Len shortestSide);
+std::string radiusOverInscribed(Len r1, Len inscribed);
+std::string radiusOverHalfL2(Len r1, Len l2);
+std::string taperOutOfRange(double taper);
+std::string taperClosesPocket(double taper, Len meetDepth);
+std::string thetaOutOfRange(const std::string& name, double theta);
+std::string floorVanishes(Len floorWidth, Len needed, Len shortBy);
+std::string scallopNotPositive(Len scallop);
+std::string toolUseUndefined(int code);
+std::string toolUseUnknown(int code);
+std::string toolUseNotForM2D(int code);
+std::string wallFinishUnknown(int code);
+std::string pilotHoleUnknown(int code);
+
+// Tools.
+std::string unknownPinKey(const std::string& key);
+std::string toolNotInLibrary(int id);
+std::string noToolOfType(const std::string& typeName);
+std::string noTaperTool(double taper, const std::vector<double>& anglesInLibrary);
+// `label` names the radius ("r1 - α2"); `neededR1` is the r1 the smallest tool would need.
+std::string noRoomForTool(const std::string& label, Len available, const Tool& smallest, Len neededR1);
+std::string pinnedToolTooBig(const std::string& step, const Tool& pinned, const std::string& label, Len available,
+                             const Tool* fitting);
+
+// Interference of two figures.
+std::string overlap(int unitNo, int otherUnitNo, double areaMm2, LengthUnit unit);
+
+}  // namespace taiwa::msg

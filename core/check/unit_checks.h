@@ -1,0 +1,56 @@
+// Internal to input processing: the checks of one unit per module, the tool
+// fit checks they share, and the interference check between figures. The
+// public entry point is check/input_check.h.
+#pragma once
+
+#include "check/diagnostic.h"
+#include "model/job.h"
+#include "model/technology.h"
+#include "model/tool.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa::check {
+
+// What every unit check needs besides the unit: all lengths in mm.
+struct Context {
+    LengthUnit shownUnit = LengthUnit::Millimetre;  // the job's unit, for quoting values
+    std::optional<TechnologyData> tech;             // absent when the material is unknown
+    const Stock* stock = nullptr;                   // nullptr when the stock itself is refused
+    const std::vector<Tool>* library = nullptr;
+};
+
+// Collects the diagnostics of one unit (1-based unitNo). Job-level findings
+// about the unit (alpha1 or beta2 against its depth) go in with no unit.
+struct UnitReport {
+    Diagnostics diagnostics;
+    bool figureValid = false;  // its top outline is well-formed: take part in the interference check
+};
+UnitReport checkM4(const M4Pocket& mm, int unitNo, const Context& ctx);
+UnitReport checkM2D(const M2DPocket& mm, int unitNo, const Context& ctx);
+
+// One corner radius that a step's tool must fit into.
+struct RoomQuery {
+    std::vector<std::string> stepKeys;  // pin keys of the steps using this radius ("roughing", "floor")
+    std::string label;                  // how the message names the radius ("r1 - α2")
+    double available = 0.0;             // the radius [mm]
+    double cornerRadius = 0.0;          // r1 [mm], to say which r1 would let the smallest tool fit
+    ToolType type = ToolType::FlatEndMill;
+    double taper = 0.0;                 // taper end mills: the angle they must have
+};
+// Pinned tools too big for the radius are refused naming one that fits;
+// unpinned steps need the smallest suitable library tool to fit.
+void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx,
+               Diagnostics& out);
+// Pins with an unknown step kind or a tool id not in the library.
+void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out);
+
+// The figure at the top surface, for the interference check.
+Quad topOutline(const ModuleInput& mmModule);
+// One diagnostic per overlapping pair (on the later unit, naming both);
+// only figures marked valid are compared.
+Diagnostics interferences(const Job& mmJob, const std::vector<bool>& valid, LengthUnit shownUnit);
+
+}  // namespace taiwa::check

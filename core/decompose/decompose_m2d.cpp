@@ -1,0 +1,118 @@
+// Process decomposition of module M2D (geometric 3-D pocket with two inclined
+// walls): pilot hole in the floor, roughing in layers that follow the wall
+// slope, floor finishing of the flat part, the vertical walls, and the two
+// inclined faces (see docs/decomposition.md).
+#include "decompose/decompose.h"
+
+#include "model/codes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace taiwa {
+
+namespace {
+
+double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+
+Step makeStep(int unit, StepKind kind, int number, MachiningType type)
+{
+    Step s;
+    s.unit = unit;
+    s.module = "M2D";
+    s.kind = kind;
+    s.number = number;
+    s.machiningType = type;
+    return s;
+}
+
+// round-half-up of a positive ratio, robust to the ratio landing a few ulps
+// below an exact .5 (2.5 computed as 2.4999999999999996 still gives 3).
+int roundHalfUp(double x) { return static_cast<int>(std::floor(x + 0.5 + 1e-9)); }
+
+// The inclined face at x = xTop on the top surface, reaching x = xFloor at the floor.
+InclinedFace face(const M2DPocket& p, double xTop, double xFloor, double angle)
+{
+    const double y0 = p.corner.y, y1 = p.corner.y + p.lengthY;
+    return {{{{xTop, y0}, {xTop, y1}}}, {{{xFloor, y0}, {xFloor, y1}}}, angle};
+}
+
+}  // namespace
+
+Quad m2dCrossSection(const M2DPocket& p, double depth)
+{
+    const double left = p.corner.x + depth * tanDeg(p.theta1);
+    const double right = p.corner.x + p.lengthX - depth * tanDeg(p.rightAngle());
+    const double y0 = p.corner.y, y1 = p.corner.y + p.lengthY;
+    return Quad{{{{left, y0}, {right, y0}, {right, y1}, {left, y1}}}, p.cornerRadius};
+}
+
+std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, double roughingToolDiameter, int unit)
+{
+    const ToolUse use = toolUseFromCode(p.toolUse).value();
+    const PilotHole pilot = pilotHoleFromCode(p.pilotHole).value();
+    const double T = p.depth;
+    const Quad floor = m2dCrossSection(p, T);
+    std::vector<Step> steps;
+
+    if (pilot == PilotHole::Drill) {
+        Step s = makeStep(unit, StepKind::PilotHole, 1, MachiningType::PilotHole);
+        s.position = centroid(floor.corners);
+        s.cutDepth = T - tech.alpha1;
+        s.floorAllowance = tech.alpha1;
+        steps.push_back(s);
+    }
+
+    // Roughing in n equal layers; each layer's outline is the section at its
+    // bottom less alpha2, so the stairs follow the inclined walls.
+    const double roughDepth = T - tech.beta2;
+    const int n = std::max(1, roundHalfUp(roughDepth / (tech.gamma * roughingToolDiameter)));
+    const double layer = roughDepth / n;
+    for (int k = 1; k <= n; ++k) {
+        Step s = makeStep(unit, StepKind::Roughing, k, MachiningType::Roughing);
+        s.startDepth = (k - 1) * layer;
+        s.cutDepth = k == n ? roughDepth : k * layer;
+        s.outline = offsetInward(m2dCrossSection(p, s.cutDepth), tech.alpha2);
+        s.position = centroid(s.outline->corners);
+        s.wallAllowance = tech.alpha2;
+        s.floorAllowance = T - s.cutDepth;
+        steps.push_back(s);
+    }
+    if (use != ToolUse::Standard) return steps;
+
+    Step floorStep = makeStep(unit, StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
+    floorStep.outline = offsetInward(floor, tech.alpha2);
+    floorStep.position = centroid(floorStep.outline->corners);
+    floorStep.startDepth = roughDepth;
+    floorStep.cutDepth = T;
+    floorStep.wallAllowance = tech.alpha2;
+    steps.push_back(floorStep);
+
+    // The vertical walls are finished full depth on the floor's outline: at
+    // every depth that outline lies inside the pocket, so the pass is safe.
+    Step wall = makeStep(unit, StepKind::WallFinishing, 1, MachiningType::WallFinishing);
+    wall.outline = floor;
+    wall.position = centroid(floor.corners);
+    wall.cutDepth = T;
+    steps.push_back(wall);
+
+    // A face at 0 degrees is vertical: the wall step above already runs on it.
+    const double x0 = p.corner.x, x1 = p.corner.x + p.lengthX;
+    const InclinedFace faces[] = {face(p, x0, floor.corners[0].x, p.theta1),
+                                  face(p, x1, floor.corners[1].x, p.rightAngle())};
+    int number = 0;
+    for (const InclinedFace& f : faces) {
+        if (f.angle <= 0.0) continue;
+        Step s = makeStep(unit, StepKind::InclinedFaceFinishing, ++number, MachiningType::InclinedFaceFinishing);
+        s.face = f;
+        s.scallop = p.scallop;
+        s.position = 0.25 * (f.topEdge[0] + f.topEdge[1] + f.floorEdge[0] + f.floorEdge[1]);
+        s.cutDepth = T;
+        s.wallTaper = f.angle;
+        steps.push_back(s);
+    }
+    return steps;
+}
+
+}  // namespace taiwa

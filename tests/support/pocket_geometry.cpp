@@ -1,0 +1,94 @@
+// Geometry oracle for the tests: finished pocket solids and tool gouge depth.
+#include "support/pocket_geometry.h"
+
+#include "decompose/decompose.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace taiwa::test {
+
+namespace {
+double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+
+// Signed distance to a sharp convex polygon (counter-clockwise).
+double signedDistanceSharp(const std::array<Point2, 4>& pIn, Point2 c)
+{
+    const auto p = counterClockwise(pIn);
+    bool inside = true;
+    double inner = std::numeric_limits<double>::infinity(), outer = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 a = p[i], b = p[(i + 1) % 4];
+        const Point2 ab = b - a;
+        const double len = length(ab);
+        const double side = cross(ab, c - a) / len;  // > 0 left = inside
+        if (side < 0) inside = false;
+        inner = std::min(inner, side);
+        const double t = std::clamp(dot(c - a, ab) / (len * len), 0.0, 1.0);
+        outer = std::min(outer, distance(c, a + t * ab));
+    }
+    return inside ? -inner : outer;
+}
+}  // namespace
+
+Quad pocketSection(const ModuleInput& m, double depth)
+{
+    if (const auto* m4 = std::get_if<M4Pocket>(&m)) {
+        const Quad top{counterClockwise(m4->corners), m4->cornerRadius};
+        if (m4->taper == 0.0) return top;
+        // The wall leans inward: the section shrinks by depth * tan(S); the
+        // rounded corners shrink with it, no smaller than zero.
+        Quad q = offsetInward(top, depth * tanDeg(m4->taper));
+        q.cornerRadius = std::max(q.cornerRadius, 0.0);
+        return q;
+    }
+    return m2dCrossSection(std::get<M2DPocket>(m), depth);
+}
+
+double pocketDepth(const ModuleInput& m)
+{
+    return std::visit([](const auto& p) { return p.depth; }, m);
+}
+
+double toolRadiusAt(const Tool& tool, double h)
+{
+    const double r = tool.radius();
+    switch (tool.type) {
+    case ToolType::BallEndMill: return h >= r ? r : std::sqrt(std::max(0.0, r * r - (r - h) * (r - h)));
+    case ToolType::TaperEndMill: return r + h * tanDeg(tool.taperAngle);
+    case ToolType::Drill:
+    case ToolType::CentreDrill: return std::min(r, h * tanDeg(90.0 - tool.pointAngle / 2.0));
+    default: return r;
+    }
+}
+
+double signedDistance(const Quad& q, Point2 p)
+{
+    // A rounded convex outline is its sharp core (sides moved in by the
+    // radius) grown by the radius.
+    const double rho = std::max(q.cornerRadius, 0.0);
+    const Quad core = offsetInward(Quad{q.corners, rho}, rho);
+    return signedDistanceSharp(core.corners, p) - rho;
+}
+
+double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
+{
+    if (tip.z >= 0.0) return -std::numeric_limits<double>::infinity();
+    const double tipDepth = -tip.z;
+    double worst = tipDepth - pocketDepth(m);  // below the floor
+    // The tool solid is discs of radius toolRadiusAt(h) at depth tipDepth - h;
+    // each must lie inside the pocket section at its depth. Fine steps near
+    // the tip, where ball and taper profiles change fastest.
+    const int n = 800;
+    for (int i = 0; i <= n; ++i) {
+        const double h = tipDepth * std::pow(static_cast<double>(i) / n, 2.0);
+        const double r = toolRadiusAt(tool, h);
+        const Quad section = pocketSection(m, tipDepth - h);
+        worst = std::max(worst, signedDistance(section, {tip.x, tip.y}) + r);
+    }
+    return worst;
+}
+
+}  // namespace taiwa::test

@@ -1,0 +1,51 @@
+// Golden NC files: every sample exported through the real command line in
+// both dialects, compared byte for byte with tests/golden/STEM.DIALECT.nc
+// (reviewed by hand once). A mismatch writes STEM.DIALECT.nc.actual beside
+// the golden file; TAIWA_UPDATE_GOLDEN=1 rewrites the golden files instead.
+#include "support/support.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace taiwa::test;
+
+class TestGolden : public QObject {
+    Q_OBJECT
+private slots:
+    void tapeMatchesGolden_data()
+    {
+        QTest::addColumn<QString>("job");
+        QTest::addColumn<QString>("dialect");
+        const auto files = QDir(sourcePath("resources/samples")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name);
+        QVERIFY(!files.isEmpty());
+        for (const auto& f : files)
+            for (const char* dialect : {"fanuc", "linuxcnc"})
+                QTest::newRow(qPrintable(f.completeBaseName() + "/" + dialect)) << f.absoluteFilePath() << dialect;
+    }
+    void tapeMatchesGolden()
+    {
+        QFETCH(QString, job);
+        QFETCH(QString, dialect);
+        QTemporaryDir out;
+        const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString stem = QFileInfo(job).completeBaseName();
+        const std::string actual = readFile(QDir(out.path()).filePath(stem + ".nc"));
+        const QString golden = sourcePath("tests/golden/" + stem + "." + dialect + ".nc");
+        if (qEnvironmentVariableIsSet("TAIWA_UPDATE_GOLDEN")) {
+            writeFile(golden, actual);
+            return;
+        }
+        QVERIFY2(QFileInfo::exists(golden), qPrintable("no golden file " + golden + " (TAIWA_UPDATE_GOLDEN=1 writes it)"));
+        const std::string expected = readFile(golden);
+        if (actual != expected) {
+            writeFile(golden + ".actual", actual);
+            QFAIL(qPrintable("tape differs from " + golden + "; see " + golden + ".actual"));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGolden)
+#include "test_golden.moc"

@@ -1,0 +1,402 @@
+// Input processing: one test per refusal of the spec (field, unit and message
+// checked), overlapping versus touching figures, several errors collected at
+// once, inch jobs quoting inches, the technology data in force and the unit
+// order. The tool library is made by hand here.
+#include "check/input_check.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+using namespace taiwa;
+
+namespace {
+
+Tool tool(int id, ToolType type, double diameter, double taper = 0.0)
+{
+    Tool t;
+    t.id = id;
+    t.name = "tool " + std::to_string(id);
+    t.type = type;
+    t.diameter = diameter;
+    t.taperAngle = taper;
+    return t;
+}
+
+const std::vector<Tool> kLibrary{
+    tool(1, ToolType::Drill, 5),          tool(2, ToolType::FlatEndMill, 2),  tool(3, ToolType::FlatEndMill, 6),
+    tool(4, ToolType::FlatEndMill, 10),   tool(5, ToolType::FlatEndMill, 16), tool(6, ToolType::TaperEndMill, 2, 3),
+    tool(7, ToolType::BallEndMill, 4),
+};
+
+M4Pocket m4(double x0 = 20, double y0 = 20, double w = 100, double h = 60)
+{
+    M4Pocket p;
+    p.corners = {{{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}};
+    p.cornerRadius = 8;
+    p.depth = 12;
+    return p;
+}
+
+M2DPocket m2d()
+{
+    M2DPocket p;
+    p.corner = {130, 20};
+    p.lengthX = 60;
+    p.lengthY = 50;
+    p.depth = 10;
+    p.theta1 = 20;
+    p.cornerRadius = 5;
+    return p;
+}
+
+Job job(std::vector<ModuleInput> modules)
+{
+    Job j;
+    j.name = "test";
+    j.stock = {0, 0, 200, 150, 40};
+    for (auto& m : modules) j.units.push_back({"", std::move(m)});
+    return j;
+}
+
+Diagnostics check(const Job& j, const std::vector<Tool>& library = kLibrary)
+{
+    return checkJob(j, TechnologyTable::builtIn(), library);
+}
+
+QByteArray dump(const Diagnostics& ds)
+{
+    QByteArray out;
+    for (const auto& d : ds) out += QByteArray::fromStdString(format("job", d)) + "\n";
+    return out;
+}
+
+// Exactly one diagnostic, on `unit` (0 = job level) and `field`, whose message contains `text`.
+bool only(const Diagnostics& ds, int unit, const std::string& field, const std::string& text)
+{
+    if (ds.size() != 1) return false;
+    const Diagnostic& d = ds[0];
+    const bool unitOk = unit == 0 ? !d.unit.has_value() && d.module.empty() : d.unit == unit;
+    return d.severity == Severity::Error && unitOk && d.field == field && d.message.find(text) != std::string::npos;
+}
+
+#define EXPECT_ONLY(ds, unit, field, text)                                                                             \
+    do {                                                                                                               \
+        const Diagnostics found_ = (ds);                                                                               \
+        QVERIFY2(only(found_, unit, field, text), dump(found_).constData());                                           \
+    } while (0)
+
+}  // namespace
+
+class TestInputCheck : public QObject {
+    Q_OBJECT
+private slots:
+    void validJobPasses() { QVERIFY2(check(job({m4(), m2d()})).empty(), dump(check(job({m4(), m2d()})))); }
+
+    void duplicateCorner()
+    {
+        M4Pocket p = m4();
+        p.corners[2] = p.corners[1];
+        EXPECT_ONLY(check(job({p})), 1, "corners[2]", "P2 and P3 are the same point (120 mm, 20 mm)");
+        QCOMPARE(check(job({p}))[0].module, std::string("M4"));
+    }
+    void selfIntersecting()
+    {
+        M4Pocket p = m4();
+        std::swap(p.corners[1], p.corners[2]);
+        EXPECT_ONLY(check(job({p})), 1, "corners", "crosses itself");
+    }
+    void nonConvex()
+    {
+        M4Pocket p = m4();
+        p.corners[2] = {60, 40};
+        p.cornerRadius = 2;
+        EXPECT_ONLY(check(job({p})), 1, "corners", "not convex");
+    }
+    void radiusOverHalfShorterSide()
+    {
+        M4Pocket p = m4();
+        p.cornerRadius = 31;
+        EXPECT_ONLY(check(job({p})), 1, "cornerRadius", "corner radius 31 mm is larger than half the shortest side (60 mm long)");
+    }
+    void roughingRadiusBelowSmallestTool()
+    {
+        M4Pocket p = m4();
+        p.cornerRadius = 1.2;  // r1 - alpha2 = 0.9 < 1 (T2, the smallest flat end mill)
+        EXPECT_ONLY(check(job({p})), 1, "cornerRadius", "r1 − α2 = 0.9 mm is smaller than the radius of the smallest suitable tool, T2");
+        QVERIFY(check(job({p}))[0].message.find("at least 1.3 mm") != std::string::npos);
+    }
+    void semiFinishRadiusBelowSmallestTool()
+    {
+        M4Pocket p = m4();
+        p.toolUse = 8;  // walls only: only r1 - alpha3 matters
+        p.wallFinish = 3;
+        p.cornerRadius = 1.05;
+        EXPECT_ONLY(check(job({p})), 1, "cornerRadius", "r1 − α3 = 0.95 mm");
+    }
+    void noEndMillAtAll()
+    {
+        const std::vector<Tool> drillsOnly{tool(1, ToolType::Drill, 5)};
+        const auto ds = check(job({m4()}), drillsOnly);
+        QCOMPARE(ds.size(), std::size_t(2));  // roughing and wall finishing both need one
+        QCOMPARE(ds[0].field, std::string("tools.roughing"));
+        QVERIFY(ds[0].message.find("has no flat end mill") != std::string::npos);
+    }
+    void pinnedToolTooBigNamesOneThatFits()
+    {
+        M4Pocket p = m4();
+        p.tools = {{"roughing", 5}};  // Ø16 in r1 - alpha2 = 7.7
+        EXPECT_ONLY(check(job({p})), 1, "tools.roughing", "T5 (flat end mill Ø16 mm) is too big for r1 − α2 = 7.7 mm; T4 (flat end mill Ø10 mm) would fit");
+    }
+    void pinnedToolNotInLibrary()
+    {
+        M4Pocket p = m4();
+        p.tools = {{"roughing", 99}};
+        EXPECT_ONLY(check(job({p})), 1, "tools.roughing", "tool T99 is not in the tool library");
+        p.tools = {{"chamfer", 3}};
+        EXPECT_ONLY(check(job({p})), 1, "tools.chamfer", "not a step kind");
+    }
+    void depthNotPositive()
+    {
+        M4Pocket p = m4();
+        p.depth = 0;
+        EXPECT_ONLY(check(job({p})), 1, "depth", "the depth is 0 mm; it must be greater than zero");
+        M2DPocket q = m2d();
+        q.depth = -3;
+        EXPECT_ONLY(check(job({q})), 1, "depth", "the depth is -3 mm");
+    }
+    void alpha1NotBelowDepth()
+    {
+        Job j = job({m4()});
+        j.technology.alpha1 = 12;
+        EXPECT_ONLY(check(j), 0, "technology.alpha1", "α1 = 12 mm is not smaller than the depth 12 mm of unit 1");
+        j.units[0].module = [] { M4Pocket p = m4(); p.pilotHole = 9; return p; }();
+        QVERIFY(check(j).empty());  // no pilot hole, alpha1 is not used
+    }
+    void beta2NotBelowDepth()
+    {
+        Job j = job({m4(), m2d()});
+        j.technology.beta2 = 10;
+        EXPECT_ONLY(check(j), 0, "technology.beta2", "β2 = 10 mm is not smaller than the depth 10 mm of unit 2");
+    }
+    void taperOutOfRange_data()
+    {
+        QTest::addColumn<double>("taper");
+        QTest::newRow("31") << 31.0;
+        QTest::newRow("-1") << -1.0;
+    }
+    void taperOutOfRange()
+    {
+        QFETCH(double, taper);
+        M4Pocket p = m4();
+        p.taper = taper;
+        EXPECT_ONLY(check(job({p})), 1, "taper", "is outside 0° to 30°");
+    }
+    void noTaperEndMillOfThatAngle()
+    {
+        M4Pocket p = m4();
+        p.taper = 5;
+        EXPECT_ONLY(check(job({p})), 1, "taper", "no taper end mill of 5° per side in the tool library (it has 3°)");
+        p.taper = 3;
+        QVERIFY2(check(job({p})).empty(), dump(check(job({p}))));
+    }
+    void thetaOutOfRange()
+    {
+        M2DPocket q = m2d();
+        q.theta1 = 60;
+        EXPECT_ONLY(check(job({q})), 1, "theta1", "θ1 = 60° is outside 0° to under 60°");
+        q.theta1 = 20;
+        q.theta2 = -1;
+        EXPECT_ONLY(check(job({q})), 1, "theta2", "θ2 = -1°");
+    }
+    void thetaMakesFloorVanish()
+    {
+        M2DPocket q = m2d();
+        q.depth = 20;
+        q.theta1 = 55;  // floor 60 - 40 tan 55° = 2.874 mm, needs > 10 mm
+        const double floor = 60 - 40 * std::tan(55 * std::numbers::pi / 180);
+        const auto ds = check(job({q}));
+        EXPECT_ONLY(ds, 1, "theta1", "leave a floor " + QString::number(floor, 'f', 3).toStdString() + " mm wide");
+        QVERIFY(ds[0].message.find("short by " + QString::number(10 - floor, 'f', 3).toStdString() + " mm") != std::string::npos);
+        QCOMPARE(ds[0].module, std::string("M2D"));
+    }
+    void undefinedCodes()
+    {
+        M4Pocket p = m4();
+        p.toolUse = 3;
+        EXPECT_ONLY(check(job({p})), 1, "U", "U = 3 is not defined");
+        p.toolUse = 0;
+        EXPECT_ONLY(check(job({p})), 1, "U", "U = 0 does not exist");
+        p = m4();
+        p.wallFinish = 4;
+        EXPECT_ONLY(check(job({p})), 1, "F", "F = 4 does not exist");
+        p = m4();
+        p.pilotHole = 1;
+        EXPECT_ONLY(check(job({p})), 1, "H", "H = 1 does not exist");
+        M2DPocket q = m2d();
+        q.toolUse = 6;
+        EXPECT_ONLY(check(job({q})), 1, "U", "U = 6 is not allowed for M2D");
+        q.toolUse = 4;
+        EXPECT_ONLY(check(job({q})), 1, "U", "U = 4 is not defined");
+    }
+    void nonFiniteNumbers()
+    {
+        M4Pocket p = m4();
+        p.depth = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_ONLY(check(job({p})), 1, "depth", "not a finite number");
+        p = m4();
+        p.corners[1].x = std::numeric_limits<double>::infinity();
+        EXPECT_ONLY(check(job({p})), 1, "corners[1]", "a coordinate of P2 is not a finite number");
+        M2DPocket q = m2d();
+        q.scallop = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_ONLY(check(job({q})), 1, "scallop", "not a finite number");
+    }
+    void unknownMaterial()
+    {
+        Job j = job({m4()});
+        j.material = "unobtainium";
+        EXPECT_ONLY(check(j), 0, "material", "material \"unobtainium\" is not in the technology table; known materials: aluminium-6061");
+    }
+    void stockNotPositive()
+    {
+        Job j = job({m4()});
+        j.stock.height = 0;
+        EXPECT_ONLY(check(j), 0, "stock.height", "the stock height is 0 mm");
+    }
+    void pocketOutsideStock()
+    {
+        EXPECT_ONLY(check(job({m4(150, 20)})), 1, "corners", "reaches outside the stock");
+        M2DPocket q = m2d();
+        q.lengthY = 140;
+        EXPECT_ONLY(check(job({q})), 1, "corner", "reaches outside the stock");
+    }
+    void deeperThanStock()
+    {
+        M4Pocket p = m4();
+        p.depth = 45;
+        EXPECT_ONLY(check(job({p})), 1, "depth", "the depth 45 mm is deeper than the stock, which is 40 mm high");
+        p.depth = 40;  // a through pocket is allowed
+        QVERIFY(check(job({p})).empty());
+    }
+    void scallopNotPositive()
+    {
+        M2DPocket q = m2d();
+        q.scallop = 0;
+        EXPECT_ONLY(check(job({q})), 1, "scallop", "scallop height is 0 mm");
+    }
+    void m2dLengthNotPositive()
+    {
+        M2DPocket q = m2d();
+        q.lengthX = 0;
+        EXPECT_ONLY(check(job({q})), 1, "L1", "L1 is 0 mm");
+    }
+    void technologyOverrides()
+    {
+        Job j = job({m4()});
+        j.technology.gamma = 0;
+        EXPECT_ONLY(check(j), 0, "technology.gamma", "γ = 0 must be greater than zero");
+        j.technology = {};
+        j.technology.alpha3 = 0.5;  // not below alpha2 = 0.3
+        EXPECT_ONLY(check(j), 0, "technology.alpha3", "α3 = 0.5 mm must be smaller than the roughing wall allowance α2 = 0.3 mm");
+    }
+
+    void touchingFiguresPassOverlappingAreRefused()
+    {
+        // Shared straight edge x = 120, and a shared slanted edge.
+        QVERIFY(check(job({m4(20, 20), m4(120, 20, 60, 60)})).empty());
+        M4Pocket a = m4(), b = m4();
+        a.corners = {{{20, 20}, {80, 20}, {100, 80}, {20, 80}}};
+        b.corners = {{{80, 20}, {180, 20}, {180, 80}, {100, 80}}};
+        QVERIFY2(check(job({a, b})).empty(), dump(check(job({a, b}))));
+        // 10 mm of overlap along x: refused, on the later unit, naming both.
+        EXPECT_ONLY(check(job({m4(20, 20), m4(110, 20, 60, 60)})), 2, "corners", "the figure of unit 2 overlaps the figure of unit 1");
+        // An overlap of 0.01 mm along a 60 mm edge is still an overlap.
+        QCOMPARE(check(job({m4(20, 20), m4(119.99, 20, 60, 60)})).size(), std::size_t(1));
+        // M4 against M2D.
+        M2DPocket q = m2d();
+        q.corner = {115, 20};
+        EXPECT_ONLY(check(job({m4(), q})), 2, "corner", "overlaps the figure of unit 1");
+    }
+    void roundedCornersKeepDiagonalNeighboursApart()
+    {
+        // The sharp corners overlap by 1 x 1 mm: with r1 = 8 the rounded outlines
+        // stay apart, with r1 = 0.4 they overlap.
+        QVERIFY(check(job({m4(20, 20, 50, 50), m4(69, 69, 50, 50)})).empty());
+        M4Pocket a = m4(20, 20, 50, 50), b = m4(69, 69, 50, 50);
+        a.cornerRadius = b.cornerRadius = 0.4;  // r1 - alpha2 = 0.1 leaves room for a 0.1 mm end mill
+        const auto ds = checkJob(job({a, b}), TechnologyTable::builtIn(), {tool(2, ToolType::FlatEndMill, 0.1)});
+        EXPECT_ONLY(ds, 2, "corners", "overlaps the figure of unit 1");
+    }
+
+    void severalErrorsCollectedAtOnce()
+    {
+        M4Pocket bad = m4();
+        bad.depth = 0;
+        M2DPocket worse = m2d();
+        worse.toolUse = 3;
+        Job j = job({bad, worse});
+        j.material = "unobtainium";
+        const auto ds = check(j);
+        QCOMPARE(ds.size(), std::size_t(3));
+        QCOMPARE(ds[0].field, std::string("material"));
+        QVERIFY(ds[1].unit == 1 && ds[1].field == "depth");
+        QVERIFY(ds[2].unit == 2 && ds[2].field == "U" && ds[2].module == "M2D");
+    }
+    void errorsAreCapped()
+    {
+        std::vector<ModuleInput> units;
+        for (int i = 0; i < 150; ++i) {
+            M4Pocket p = m4();
+            p.toolUse = 2;
+            units.push_back(p);
+        }
+        const auto ds = check(job(units));
+        QCOMPARE(ds.size(), std::size_t(100));
+        QVERIFY(ds.back().message.find("more errors not listed") != std::string::npos);
+    }
+
+    void inchJobQuotesInches()
+    {
+        Job j = job({m4(1, 1, 4, 2)});
+        j.lengthUnit = LengthUnit::Inch;
+        j.stock = {0, 0, 8, 6, 2};
+        auto& p = std::get<M4Pocket>(j.units[0].module);
+        p.cornerRadius = 0.3;
+        p.depth = 0.5;
+        QVERIFY2(check(j).empty(), dump(check(j)));
+        p.cornerRadius = 1.25;
+        EXPECT_ONLY(check(j), 1, "cornerRadius", "corner radius 1.25 in is larger than half the shortest side (2 in long)");
+        p.cornerRadius = 0.3;
+        p.depth = -0.5;
+        EXPECT_ONLY(check(j), 1, "depth", "the depth is -0.5 in");
+        p.depth = 0.5;
+        p.tools = {{"roughing", 5}};
+        EXPECT_ONLY(check(j), 1, "tools.roughing", "r1 − α2 = 0.2882 in");  // 7.62 mm - 0.3 mm
+    }
+
+    void technologyInForce()
+    {
+        Job j = job({m4()});
+        j.technology.alpha2 = 0.5;
+        const auto t = jobTechnology(j, TechnologyTable::builtIn());
+        QVERIFY(t && t->alpha2 == 0.5 && t->alpha1 == 1.0 && t->gamma == 0.5);
+        j.material = "steel-s45c";
+        QCOMPARE(jobTechnology(j, TechnologyTable::builtIn())->beta2, 0.25);
+        j.material = "unobtainium";
+        QVERIFY(!jobTechnology(j, TechnologyTable::builtIn()));
+    }
+
+    void unitOrderIsNearestNeighbourFromTheFirst()
+    {
+        const Job j = job({m4(0, 0, 20, 20), m4(100, 0, 20, 20), m4(20, 0, 20, 20), m4(60, 0, 20, 20)});
+        QCOMPARE(machiningOrder(j), (std::vector<int>{0, 2, 3, 1}));
+        const Job tie = job({m4(40, 0, 20, 20), m4(80, 0, 20, 20), m4(0, 0, 20, 20)});
+        QCOMPARE(machiningOrder(tie), (std::vector<int>{0, 1, 2}));  // equal distance: the earlier unit first
+        QVERIFY(machiningOrder(job({})).empty());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestInputCheck)
+#include "test_input_check.moc"
