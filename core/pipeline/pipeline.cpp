@@ -61,6 +61,11 @@ std::vector<Step> planUnit(const Job& mmJob, int u, const TechnologyData& tech, 
     }
     for (const auto& problem : chooseTools(steps, *pins, library, mmJob.material))
         diagnostics.push_back(unitError(mmJob, u, "tools", problem));
+    // The inclined-face passes must stop short of the vertical end walls'
+    // corner rounding: give those steps the floor section (radius r1).
+    if (const auto* m2d = std::get_if<M2DPocket>(&unit.module))
+        for (auto& s : steps)
+            if (s.kind == StepKind::InclinedFaceFinishing) s.outline = m2dCrossSection(*m2d, m2d->depth);
 
     // The roughing tool plunges into the pilot hole: tell the CL stage where
     // the hole is and how wide it was drilled.

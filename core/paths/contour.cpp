@@ -1,0 +1,97 @@
+// Rounded-quadrilateral contours with exact corner arcs.
+#include "paths/contour.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa::paths {
+
+namespace {
+
+constexpr double kSharp = 1e-9;
+
+struct Geometry {
+    std::array<Point2, 4> core;  // arc centres (sharp corners when rho = 0)
+    std::array<Point2, 4> dir;   // unit direction of side i (core[i] -> core[i+1])
+    std::array<Point2, 4> out;   // outward (right) normal of side i
+    double rho = 0.0;
+};
+
+Geometry geometryOf(const Quad& q)
+{
+    Geometry g;
+    g.rho = q.cornerRadius > kSharp ? q.cornerRadius : 0.0;
+    const Quad core = offsetInward(Quad{counterClockwise(q.corners), g.rho}, g.rho);
+    g.core = core.corners;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 t = g.core[(i + 1) % 4] - g.core[i];
+        const double len = length(t);
+        g.dir[i] = len > 0 ? (1.0 / len) * t : Point2{1, 0};
+        g.out[i] = {g.dir[i].y, -g.dir[i].x};
+    }
+    return g;
+}
+
+Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
+
+}  // namespace
+
+ContourStart contourStart(const Quad& centre, bool ccw)
+{
+    const Geometry g = geometryOf(centre);
+    const Point2 mid = 0.5 * (g.core[0] + g.core[1]) + g.rho * g.out[0];
+    return {mid, ccw ? g.dir[0] : -1.0 * g.dir[0]};
+}
+
+void appendContour(PathBuilder& b, const Quad& centre, double z, bool ccw)
+{
+    const Geometry g = geometryOf(centre);
+    const Point2 mid = 0.5 * (g.core[0] + g.core[1]) + g.rho * g.out[0];
+    // Counter-clockwise: along side i to its end, round corner i+1, next side.
+    if (ccw) {
+        for (std::size_t k = 0; k < 4; ++k) {
+            const std::size_t i = k, j = (k + 1) % 4;
+            b.feed(at(g.core[j] + g.rho * g.out[i], z));
+            if (g.rho > 0) b.arc(true, at(g.core[j] + g.rho * g.out[j], z), g.core[j]);
+        }
+    } else {
+        for (std::size_t k = 0; k < 4; ++k) {
+            const std::size_t i = (4 - k) % 4;  // sides 0, 3, 2, 1 walked backwards
+            b.feed(at(g.core[i] + g.rho * g.out[i], z));
+            const std::size_t prev = (i + 3) % 4;
+            if (g.rho > 0) b.arc(false, at(g.core[i] + g.rho * g.out[prev], z), g.core[i]);
+        }
+    }
+    b.feed(at(mid, z));
+}
+
+bool offsetExists(const Quad& outline, double d)
+{
+    const auto p = counterClockwise(outline.corners);
+    const Quad o = offsetInward(Quad{p, 0.0}, d);
+    if (!(signedArea(o.corners) > 0.0)) return false;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (dot(p[(i + 1) % 4] - p[i], o.corners[(i + 1) % 4] - o.corners[i]) <= 0.0) return false;
+    return true;
+}
+
+double maxOffset(const Quad& outline)
+{
+    double lo = 0.0, hi = 0.0;
+    const auto& p = outline.corners;
+    for (std::size_t i = 0; i < 4; ++i) hi = std::max(hi, distance(p[i], p[(i + 2) % 4]));
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (offsetExists(outline, mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+Quad centreQuad(const Quad& outline, double d)
+{
+    Quad q = offsetInward(Quad{counterClockwise(outline.corners), outline.cornerRadius}, d);
+    q.cornerRadius = std::max(q.cornerRadius, 0.0);
+    return q;
+}
+
+}  // namespace taiwa::paths
