@@ -65,14 +65,14 @@ std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
 
 ClipperLib::Paths leftover(const Quad& region, const ToolPath& path, double radius)
 {
-    ClipperLib::ClipperOffset sweep(2.0, 0.02 * kScale);
+    ClipperLib::ClipperOffset sweep(2.0, 0.0002 * kScale);  // 0.2 µm arc tolerance
     for (const auto& line : feedPolylines(path)) sweep.AddPath(toPath(line), ClipperLib::jtRound, ClipperLib::etOpenRound);
     ClipperLib::Paths swept;
-    // A hair less than the radius, so that touching counts as covered only
-    // when it truly overlaps.
-    sweep.Execute(swept, (radius - 1e-4) * kScale);
+    sweep.Execute(swept, radius * kScale);
+    // The region shrunk by 1 µm: a tool that reaches the outline within the
+    // tolerance of the geometry tests counts as reaching it.
     ClipperLib::Clipper c;
-    c.AddPath(toPath(flatten(region, 0.002)), ClipperLib::ptSubject, true);
+    c.AddPath(toPath(flatten(offsetInward(region, 0.001), 0.0002)), ClipperLib::ptSubject, true);
     c.AddPaths(swept, ClipperLib::ptClip, true);
     ClipperLib::Paths left;
     c.Execute(ClipperLib::ctDifference, left, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
