@@ -10,9 +10,12 @@
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 
+#if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
+#define TAIWA_WITH_RENDER 1
+#include "viz/render.h"
+#endif
 #ifdef TAIWA_WITH_UI
 #include "ui/ui.h"
-#include "viz/render.h"
 #endif
 
 #include <QGuiApplication>
@@ -121,7 +124,7 @@ int exportJob(const Options& o, int& argc, char** argv)
 
 int render(const Options& o)
 {
-#ifdef TAIWA_WITH_UI
+#ifdef TAIWA_WITH_RENDER
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
     viz::RenderOptions r;
@@ -166,7 +169,7 @@ int run(int argc, char** argv)
         case Command::Render: return render(o);
         case Command::Station:
 #ifdef TAIWA_WITH_UI
-            return ui::runStation(argc, argv, QString::fromStdString(o.job));
+            return ui::runStation(argc, argv);
 #else
             std::cerr << "taiwa: this build has no station window (built without TAIWA_BUILD_UI)\n";
             return kInternal;

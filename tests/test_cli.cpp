@@ -26,12 +26,15 @@ QStringList samples()
 // A valid one-unit M4 job to break one field at a time.
 json baseJob()
 {
-    return json::parse(R"({
-      "format": "taiwa-job", "version": 1, "name": "cli", "lengthUnit": "mm",
-      "material": "aluminium-6061", "machine": "vmc", "workOffset": "G54",
-      "stock": {"shape": "block", "x": 0, "y": 0, "width": 200, "length": 150, "height": 40},
-      "units": [{"module": "M4", "name": "A", "corners": [[20,20],[120,20],[120,80],[20,80]],
-                 "cornerRadius": 8, "depth": 12, "taper": 0, "U": 1, "F": 1, "H": 0}]})");
+    json unit = {{"module", "M4"}, {"name", "A"}, {"cornerRadius", 8}, {"depth", 12}, {"taper", 0},
+                 {"U", 1}, {"F", 1}, {"H", 0}};
+    unit["corners"] = json::array({json::array({20, 20}), json::array({120, 20}), json::array({120, 80}),
+                                   json::array({20, 80})});
+    json job = {{"format", "taiwa-job"}, {"version", 1}, {"name", "cli"}, {"lengthUnit", "mm"},
+                {"material", "aluminium-6061"}, {"machine", "vmc"}, {"workOffset", "G54"}};
+    job["stock"] = {{"shape", "block"}, {"x", 0}, {"y", 0}, {"width", 200}, {"length", 150}, {"height", 40}};
+    job["units"] = json::array({unit});
+    return job;
 }
 
 }  // namespace
@@ -100,11 +103,11 @@ private slots:
         QTest::newRow("U undefined") << "/units/0/U" << "3" << u + "U:";
         QTest::newRow("F undefined") << "/units/0/F" << "4" << u + "F:";
         QTest::newRow("H undefined") << "/units/0/H" << "1" << u + "H:";
-        QTest::newRow("missing tool") << "/units/0/tools" << R"({"roughing": 9999})" << u + "tools.roughing:";
-        QTest::newRow("alpha1 >= T") << "/technology" << R"({"alpha1": 12})" << "bad.taiwa: job technology.alpha1:";
-        QTest::newRow("beta2 >= T") << "/technology" << R"({"beta2": 12})" << "bad.taiwa: job technology.beta2:";
-        QTest::newRow("wrong type") << "/units/0/depth" << R"("deep")" << u + "depth:";
-        QTest::newRow("unknown material") << "/material" << R"("unobtainium")" << "bad.taiwa: job material:";
+        QTest::newRow("missing tool") << "/units/0/tools" << "{\"roughing\": 9999}" << u + "tools.roughing:";
+        QTest::newRow("alpha1 >= T") << "/technology" << "{\"alpha1\": 12}" << "bad.taiwa: job technology.alpha1:";
+        QTest::newRow("beta2 >= T") << "/technology" << "{\"beta2\": 12}" << "bad.taiwa: job technology.beta2:";
+        QTest::newRow("wrong type") << "/units/0/depth" << "\"deep\"" << u + "depth:";
+        QTest::newRow("unknown material") << "/material" << "\"unobtainium\"" << "bad.taiwa: job material:";
     }
     void refusalsNameTheField()
     {
@@ -147,10 +150,10 @@ private slots:
     {
         QTest::addColumn<QByteArray>("content");
         QTest::newRow("empty") << QByteArray();
-        QTest::newRow("truncated") << QByteArray(R"({"format": "taiwa-job", "version": 1, "units": [{"mod)");
+        QTest::newRow("truncated") << QByteArray("{\"format\": \"taiwa-job\", \"version\": 1, \"units\": [{\"mod");
         QTest::newRow("not json") << QByteArray("G0 X10 Y10\nM30\n");
         QTest::newRow("binary") << QByteArray("\x00\xff\xfe\x13\x37", 5);
-        QTest::newRow("future version") << QByteArray(R"({"format": "taiwa-job", "version": 99, "units": []})");
+        QTest::newRow("future version") << QByteArray("{\"format\": \"taiwa-job\", \"version\": 99, \"units\": []}");
     }
     void corruptFilesAreRefusedCleanly()
     {

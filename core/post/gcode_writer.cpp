@@ -72,6 +72,7 @@ void GCodeWriter::forgetPosition()
 {
     pos_.reset();
     motion_.clear();
+    feed_.reset();  // a new tool states its feed again
 }
 
 std::string GCodeWriter::axes(const Point3& to, bool forceXY)

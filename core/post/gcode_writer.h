@@ -37,7 +37,7 @@ public:
     void drill(const Move& cycle, double feedRate);
     void cancelCycle();
 
-    // Forget modal state (after a tool change or a retract block).
+    // Forget modal position, motion and feed (after a tool change).
     void forgetPosition();
     void setPosition(const Point3& p) { pos_ = p; }
 

@@ -1,0 +1,244 @@
+// Reading a job document (readJob of job_io.h): the JSON tree from
+// json_document, then every field checked for presence and kind, collecting
+// all problems as diagnostics. Values are kept as typed: whether they make
+// sense (a code in its table, a pocket inside the stock) is input processing.
+#include "io/job_io.h"
+
+#include "io/job_messages.h"
+#include "io/json_document.h"
+#include "io/json_fields.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace taiwa {
+
+namespace {
+
+using nlohmann::json;
+using io::ObjectFields;
+using io::Place;
+
+const std::vector<std::string> kModules{"M4", "M2D"};
+const std::vector<std::string> kJobKeys{"format", "version",  "name",  "lengthUnit", "material",
+                                        "machine", "workOffset", "stock", "technology", "units"};
+const std::vector<std::string> kStockShapes{"block"};
+const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
+const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma"};
+const std::vector<std::string> kM4Keys{"module", "name", "corners", "cornerRadius", "depth",
+                                       "taper",  "U",    "F",       "H",            "tools"};
+const std::vector<std::string> kM2DKeys{"module",       "name", "corner", "L1",      "L2",    "depth", "theta1",
+                                        "theta2", "cornerRadius", "U",      "H",       "scallop", "tools"};
+
+bool isBlank(std::string_view text)
+{
+    return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+}
+
+Diagnostic fileProblem(std::string message) { return {Severity::Error, std::nullopt, "", "", std::move(message)}; }
+
+// The module a unit names, when it is one this program knows.
+std::string knownModule(const json& unit)
+{
+    if (!unit.is_object()) return {};
+    const auto it = unit.find("module");
+    if (it == unit.end() || !it->is_string()) return {};
+    const auto& name = it->get_ref<const std::string&>();
+    return std::find(kModules.begin(), kModules.end(), name) != kModules.end() ? name : std::string();
+}
+
+M4Pocket readM4(const ObjectFields& f)
+{
+    M4Pocket m;
+    f.rejectUnknown("module M4", kM4Keys);
+    if (const json* corners = f.find("corners")) {
+        if (!corners->is_array()) f.error("corners", msg::io::wrongType("an array of 4 points [x, y]", *corners));
+        else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
+        else
+            for (std::size_t i = 0; i < 4; ++i)
+                m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
+    } else {
+        f.error("corners", msg::io::missing("an array of 4 points [x, y]"));
+    }
+    m.cornerRadius = f.number("cornerRadius").value_or(0.0);
+    m.depth = f.number("depth").value_or(0.0);
+    m.taper = f.number("taper", 0.0);
+    m.toolUse = f.whole("U").value_or(0);
+    m.wallFinish = f.whole("F", 1);
+    m.pilotHole = f.whole("H", 0);
+    m.tools = f.wholeMap("tools");
+    return m;
+}
+
+M2DPocket readM2D(const ObjectFields& f)
+{
+    M2DPocket m;
+    f.rejectUnknown("module M2D", kM2DKeys);
+    m.corner = f.point("corner").value_or(Point2{});
+    m.lengthX = f.number("L1").value_or(0.0);
+    m.lengthY = f.number("L2").value_or(0.0);
+    m.depth = f.number("depth").value_or(0.0);
+    m.theta1 = f.number("theta1").value_or(0.0);
+    m.theta2 = f.optionalNumber("theta2");
+    m.cornerRadius = f.number("cornerRadius").value_or(0.0);
+    m.toolUse = f.whole("U").value_or(0);
+    m.pilotHole = f.whole("H", 0);
+    m.scallop = f.number("scallop", 0.01);
+    m.tools = f.wholeMap("tools");
+    return m;
+}
+
+std::optional<MachiningUnit> readUnit(const json& unit, int number, io::DiagnosticSink& sink)
+{
+    const std::string module = knownModule(unit);
+    static const json kNoFields = json::object();
+    const ObjectFields f(unit.is_object() ? unit : kNoFields, Place{number, module.empty() ? "?" : module, ""},
+                         sink);
+    if (!unit.is_object()) {
+        f.error("", msg::io::wrongType("an object", unit));
+        return std::nullopt;
+    }
+    if (module.empty()) {
+        const json* name = f.find("module");
+        if (!name) f.error("module", msg::io::missing(msg::io::oneOf(kModules)));
+        else if (!name->is_string()) f.error("module", msg::io::wrongType("a string", *name));
+        else f.error("module", msg::io::unknownModule(name->get<std::string>(), kModules));
+        return std::nullopt;
+    }
+    MachiningUnit out;
+    out.name = f.string("name", "");
+    if (module == "M4") out.module = readM4(f);
+    else out.module = readM2D(f);
+    return out;
+}
+
+Stock readStock(const ObjectFields& job)
+{
+    Stock s;
+    const json* v = job.find("stock");
+    if (!v || !v->is_object()) {
+        job.error("stock", v ? msg::io::wrongType("an object", *v) : msg::io::missing("an object"));
+        return s;
+    }
+    const ObjectFields f(*v, Place{std::nullopt, "", "stock."}, job.sink());
+    const auto shape = f.find("shape");
+    if (shape && shape->is_string()
+        && std::find(kStockShapes.begin(), kStockShapes.end(), shape->get<std::string>()) == kStockShapes.end()) {
+        f.error("shape", msg::io::unknownStockShape(shape->get<std::string>(), kStockShapes));
+        return s;
+    }
+    f.choice("shape", kStockShapes);
+    f.rejectUnknown("a block stock", kBlockKeys);
+    s.x = f.number("x", 0.0);
+    s.y = f.number("y", 0.0);
+    s.width = f.number("width").value_or(0.0);
+    s.length = f.number("length").value_or(0.0);
+    s.height = f.number("height").value_or(0.0);
+    return s;
+}
+
+TechnologyOverrides readTechnology(const ObjectFields& job)
+{
+    TechnologyOverrides t;
+    const json* v = job.find("technology");
+    if (!v) return t;
+    if (!v->is_object()) {
+        job.error("technology", msg::io::wrongType("an object", *v));
+        return t;
+    }
+    const ObjectFields f(*v, Place{std::nullopt, "", "technology."}, job.sink());
+    f.rejectUnknown("the technology overrides", kTechnologyKeys);
+    t.alpha1 = f.optionalNumber("alpha1");
+    t.alpha2 = f.optionalNumber("alpha2");
+    t.alpha3 = f.optionalNumber("alpha3");
+    t.beta2 = f.optionalNumber("beta2");
+    t.gamma = f.optionalNumber("gamma");
+    return t;
+}
+
+// A key given twice, reported where it is: in a unit or at job level.
+void reportRepeated(const io::JsonPath& path, const json& root, io::DiagnosticSink& sink)
+{
+    Diagnostic d{Severity::Error, std::nullopt, "", io::joinPath(path.begin(), path.end()),
+                 msg::io::duplicateKey()};
+    const json* units = root.contains("units") ? &root["units"] : nullptr;
+    if (path.size() >= 3 && path[0] == "units" && path[1].starts_with("[") && units && units->is_array()) {
+        const std::size_t index = std::stoul(path[1].substr(1));
+        const std::string module = index < units->size() ? knownModule((*units)[index]) : std::string();
+        d.unit = static_cast<int>(index + 1);
+        d.module = module.empty() ? "?" : module;
+        d.field = io::joinPath(path.begin() + 2, path.end());
+    }
+    sink.add(std::move(d));
+}
+
+// Format and version come first: anything else of a file that is not a job,
+// or of a newer format, is not read at all.
+std::optional<Diagnostic> refuseFormat(const json& root)
+{
+    const auto format = root.find("format");
+    if (format == root.end()) return fileProblem(msg::io::formatMissing());
+    if (*format != "taiwa-job") return fileProblem(msg::io::formatWrong(*format));
+    const auto version = root.find("version");
+    if (version == root.end()) return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::missing("a whole number")};
+    if (version->is_number_float())
+        return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::notWhole(*version)};
+    if (!version->is_number_integer() && !version->is_number_unsigned())
+        return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::wrongType("a whole number", *version)};
+    if (version->is_number_unsigned() && version->get<std::uint64_t>() > std::uint64_t{INT64_MAX})
+        return fileProblem(msg::io::versionNewer(INT64_MAX, Job::kFormatVersion));
+    const auto n = version->get<std::int64_t>();
+    if (n > Job::kFormatVersion) return fileProblem(msg::io::versionNewer(n, Job::kFormatVersion));
+    if (n < Job::kFormatVersion) return fileProblem(msg::io::versionUnknown(n, Job::kFormatVersion));
+    return std::nullopt;
+}
+
+}  // namespace
+
+JobReadResult readJob(std::string_view text)
+{
+    JobReadResult result;
+    if (isBlank(text)) {
+        result.diagnostics.push_back(fileProblem(msg::io::fileEmpty()));
+        return result;
+    }
+    io::ParsedDocument doc = io::parseDocument(text);
+    if (!doc.root) {
+        result.diagnostics.push_back(fileProblem(doc.error));
+        return result;
+    }
+    const json& root = *doc.root;
+    if (!root.is_object()) {
+        result.diagnostics.push_back(fileProblem(msg::io::notAnObject(root)));
+        return result;
+    }
+    if (auto refused = refuseFormat(root)) {
+        result.diagnostics.push_back(std::move(*refused));
+        return result;
+    }
+
+    io::DiagnosticSink sink;
+    for (const auto& path : doc.repeatedKeys) reportRepeated(path, root, sink);
+    const ObjectFields f(root, Place{}, sink);
+    f.rejectUnknown("a job", kJobKeys);
+    Job job;
+    job.name = f.string("name", "");
+    job.lengthUnit = f.choice("lengthUnit", {"mm", "inch"}).value_or(0) == 1 ? LengthUnit::Inch : LengthUnit::Millimetre;
+    job.material = f.string("material").value_or("");
+    job.machine = f.string("machine", job.machine);
+    job.workOffset = f.string("workOffset", job.workOffset);
+    job.stock = readStock(f);
+    job.technology = readTechnology(f);
+    const json* units = f.find("units");
+    if (!units) f.error("units", msg::io::missing("an array of machining units"));
+    else if (!units->is_array()) f.error("units", msg::io::wrongType("an array of machining units", *units));
+    else
+        for (std::size_t i = 0; i < units->size(); ++i)
+            if (auto unit = readUnit((*units)[i], static_cast<int>(i + 1), sink)) job.units.push_back(std::move(*unit));
+
+    if (sink.empty()) result.job = std::move(job);
+    result.diagnostics = std::move(sink).finish();
+    return result;
+}
+
+}  // namespace taiwa

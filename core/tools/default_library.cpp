@@ -1,0 +1,117 @@
+// The default tool library: what a typical job shop's machining centre
+// carries, with cutting data for every material of the shipped technology
+// table. Ids are stable: they are the T numbers on the tape.
+#include "tools/tool_library.h"
+
+#include <cstdlib>
+#include <fmt/format.h>
+
+namespace taiwa {
+
+namespace {
+
+// Surface speed [m/min] and feed per tooth (drills: per revolution) [mm] per
+// material, as a carbide-tool maker's starting values, scaled by tool kind.
+struct MaterialData {
+    const char* id;
+    double vcMill, fzMill;    // end mills, per mm of diameter for fz
+    double vcDrill, fDrill;   // drills, per mm of diameter for f
+};
+constexpr MaterialData kMaterials[] = {
+    {"aluminium-6061", 300, 0.008, 120, 0.020},
+    {"steel-s45c", 120, 0.005, 80, 0.015},
+    {"stainless-304", 80, 0.004, 50, 0.012},
+    {"cast-iron-fc250", 110, 0.006, 70, 0.018},
+    {"brass-c3604", 200, 0.007, 100, 0.020},
+    {"pom", 250, 0.010, 100, 0.025},
+};
+
+std::vector<CuttingData> cuttingFor(ToolType type, double diameter)
+{
+    std::vector<CuttingData> data;
+    for (const auto& m : kMaterials) {
+        const bool drill = type == ToolType::Drill || type == ToolType::CentreDrill;
+        const double scale = type == ToolType::FaceMill ? 1.2 : type == ToolType::TaperEndMill ? 0.6 : 1.0;
+        const double fz = drill ? m.fDrill * diameter : m.fzMill * std::max(diameter, 2.0);
+        data.push_back({m.id, (drill ? m.vcDrill : m.vcMill) * scale, fz, drill ? 1.0 : 0.4});
+    }
+    return data;
+}
+
+Tool make(int id, ToolType type, double d, std::string name, double flute, double stickout, std::string holder,
+          int flutes, double life)
+{
+    Tool t;
+    t.id = id;
+    t.type = type;
+    t.diameter = d;
+    t.name = std::move(name);
+    t.fluteLength = flute;
+    t.stickout = stickout;
+    t.holder = std::move(holder);
+    t.flutes = flutes;
+    t.lifeMinutes = life;
+    t.cutting = cuttingFor(type, d);
+    return t;
+}
+
+}  // namespace
+
+std::vector<Tool> defaultToolLibrary()
+{
+    std::vector<Tool> tools;
+    // T1-T2: centre drills.
+    tools.push_back(make(1, ToolType::CentreDrill, 3.15, "Centre drill A3.15 HSS", 4, 30, "ER16 collet chuck", 2, 240));
+    tools.back().pointAngle = 90;
+    tools.push_back(make(2, ToolType::CentreDrill, 6.3, "Centre drill A6.3 HSS", 7, 40, "ER16 collet chuck", 2, 240));
+    tools.back().pointAngle = 90;
+    // T3-T16: twist drills, solid carbide up to 12 mm, HSS-Co above.
+    const double drills[] = {3, 4, 5, 6, 6.8, 8, 8.5, 10, 10.2, 12, 14, 16, 18, 20};
+    int id = 3;
+    for (const double d : drills) {
+        const bool carbide = d <= 12;
+        tools.push_back(make(id++, ToolType::Drill, d,
+                             fmt::format("Twist drill {} mm {}", d, carbide ? "carbide 5xD" : "HSS-Co"),
+                             carbide ? 5 * d + 5 : 6 * d, carbide ? 5 * d + 20 : 6 * d + 30,
+                             carbide ? "ER32 collet chuck" : "Weldon side lock", 2, carbide ? 120 : 90));
+    }
+    // T21-T31: flat end mills (centre cutting).
+    const double flats[] = {2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 25};
+    id = 21;
+    for (const double d : flats) {
+        tools.push_back(make(id++, ToolType::FlatEndMill, d, fmt::format("Flat end mill {} mm carbide", d),
+                             d <= 4 ? 3 * d : 2.5 * d, 3 * d + 15, d <= 12 ? "HSK63 shrink-fit" : "HSK63 Weldon",
+                             d <= 5 ? 2 : d <= 16 ? 3 : 4, 120));
+    }
+    // T41-T47: ball end mills.
+    const double balls[] = {2, 3, 4, 6, 8, 10, 12};
+    id = 41;
+    for (const double d : balls) {
+        Tool t = make(id++, ToolType::BallEndMill, d, fmt::format("Ball end mill R{} carbide", d / 2), 2 * d, 3 * d + 15,
+                      "HSK63 shrink-fit", 2, 150);
+        t.cornerRadius = d / 2;
+        tools.push_back(t);
+    }
+    // T51-T56: taper end mills, the diameter is the tip's.
+    const std::pair<double, double> tapers[] = {{1, 3}, {2, 3}, {3, 4}, {5, 4}, {7, 4}, {10, 6}};
+    id = 51;
+    for (const auto& [angle, tip] : tapers) {
+        Tool t = make(id++, ToolType::TaperEndMill, tip, fmt::format("Taper end mill {} deg/side, tip {} mm", angle, tip), 30,
+                      45, "HSK63 shrink-fit", 3, 90);
+        t.taperAngle = angle;
+        tools.push_back(t);
+    }
+    // T60: face mill.
+    tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 300));
+    return tools;
+}
+
+std::string defaultToolLibraryPath()
+{
+    if (const char* env = std::getenv("TAIWA_TOOL_DB"); env && *env) return env;
+    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg) return std::string(xdg) + "/taiwa/tools.sqlite";
+    const char* home = std::getenv("HOME");
+    return std::string(home && *home ? home : ".") + "/.local/share/taiwa/tools.sqlite";
+}
+
+}  // namespace taiwa

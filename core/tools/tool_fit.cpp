@@ -1,0 +1,61 @@
+// Matching library tools to what a step asks of them.
+#include "tools/tool_fit.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace taiwa::tools {
+
+std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
+{
+    if (t.type != f.type) return fmt::format("it is a {}, the step needs a {}", toString(t.type), toString(f.type));
+    if (!t.cuttingFor(material)) return "it has no cutting data for " + material;
+    if (f.type == ToolType::TaperEndMill && std::abs(t.taperAngle - f.taperAngle) > 1e-9)
+        return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
+    if (f.cornerRadius > 0 && t.radius() > f.cornerRadius + 1e-9)
+        return fmt::format("its radius {:g} mm is larger than the corner radius {:g} mm", t.radius(), f.cornerRadius);
+    if (t.diameter > f.maxDiameter + 1e-9) return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
+    if (t.diameter < f.minDiameter - 1e-9)
+        return fmt::format("its diameter {:g} mm is smaller than the {:g} mm needed", t.diameter, f.minDiameter);
+    if (t.fluteLength > 0 && t.fluteLength + 1e-9 < f.depth && f.type != ToolType::TaperEndMill)
+        return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
+    return {};
+}
+
+bool fits(const Tool& t, const Fit& f, const std::string& material) { return whyNot(t, f, material).empty(); }
+
+const Tool* largestFitting(const std::vector<Tool>& library, const Fit& f, const std::string& material)
+{
+    const Tool* best = nullptr;
+    for (const auto& t : library)
+        if (fits(t, f, material) && (!best || t.diameter > best->diameter)) best = &t;
+    return best;
+}
+
+const Tool* smallestFitting(const std::vector<Tool>& library, const Fit& f, const std::string& material)
+{
+    const Tool* best = nullptr;
+    for (const auto& t : library)
+        if (fits(t, f, material) && (!best || t.diameter < best->diameter)) best = &t;
+    return best;
+}
+
+std::string noFitMessage(const std::vector<Tool>& library, const Fit& f, const std::string& material,
+                         const std::string& what)
+{
+    const Tool* smallest = nullptr;
+    for (const auto& t : library)
+        if (t.type == f.type && (f.type != ToolType::TaperEndMill || std::abs(t.taperAngle - f.taperAngle) < 1e-9) &&
+            (!smallest || t.diameter < smallest->diameter))
+            smallest = &t;
+    if (!smallest) {
+        if (f.type == ToolType::TaperEndMill)
+            return fmt::format("no taper end mill of {:g} deg per side in the tool library for the {}", f.taperAngle, what);
+        return fmt::format("no {} in the tool library for the {}", toString(f.type), what);
+    }
+    return fmt::format("no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}", toString(f.type), what,
+                       smallest->id, smallest->name, whyNot(*smallest, f, material));
+}
+
+}  // namespace taiwa::tools

@@ -1,0 +1,252 @@
+// The tool library in SQLite: schema, first-use creation with the default
+// library, reading and editing. Every failure is a message naming the file.
+#include "tools/tool_library.h"
+
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <system_error>
+
+namespace taiwa {
+
+namespace {
+
+constexpr int kSchemaVersion = 1;
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE tools (
+  id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT NULL, diameter REAL NOT NULL,
+  corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
+  flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
+  flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0);
+CREATE TABLE cutting_data (
+  tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
+  surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
+  PRIMARY KEY (tool_id, material));
+PRAGMA user_version = 1;
+)sql";
+
+// A prepared statement that finalizes itself.
+class Statement {
+public:
+    Statement(sqlite3* db, const char* sql) { ok_ = sqlite3_prepare_v2(db, sql, -1, &s_, nullptr) == SQLITE_OK; }
+    ~Statement() { sqlite3_finalize(s_); }
+    Statement(const Statement&) = delete;
+    Statement& operator=(const Statement&) = delete;
+    bool ok() const { return ok_; }
+    sqlite3_stmt* get() const { return s_; }
+    void bind(int i, double v) { sqlite3_bind_double(s_, i, v); }
+    void bind(int i, int v) { sqlite3_bind_int(s_, i, v); }
+    void bind(int i, const std::string& v) { sqlite3_bind_text(s_, i, v.c_str(), -1, SQLITE_TRANSIENT); }
+    int step() { return sqlite3_step(s_); }
+    double real(int c) const { return sqlite3_column_double(s_, c); }
+    int integer(int c) const { return sqlite3_column_int(s_, c); }
+    std::string text(int c) const
+    {
+        const auto* t = sqlite3_column_text(s_, c);
+        return t ? reinterpret_cast<const char*>(t) : "";
+    }
+
+private:
+    sqlite3_stmt* s_ = nullptr;
+    bool ok_ = false;
+};
+
+std::string describe(sqlite3* db, const std::string& path)
+{
+    const int code = sqlite3_extended_errcode(db) & 0xff;
+    if (code == SQLITE_NOTADB) return path + " is not a tool library (the file is not an SQLite database)";
+    if (code == SQLITE_BUSY || code == SQLITE_LOCKED) return path + " is locked by another program; close it and try again";
+    if (code == SQLITE_READONLY || code == SQLITE_CANTOPEN || code == SQLITE_PERM)
+        return path + " cannot be opened for writing (" + sqlite3_errmsg(db) + ")";
+    if (code == SQLITE_CORRUPT) return path + " is damaged (" + std::string(sqlite3_errmsg(db)) + "); restore it from a backup";
+    return path + ": " + sqlite3_errmsg(db);
+}
+
+bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
+
+bool insert(sqlite3* db, const Tool& t)
+{
+    Statement s(db, "INSERT OR REPLACE INTO tools VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    if (!s.ok()) return false;
+    s.bind(1, t.id);
+    s.bind(2, t.name);
+    s.bind(3, std::string(toKey(t.type)));
+    s.bind(4, t.diameter);
+    s.bind(5, t.cornerRadius);
+    s.bind(6, t.taperAngle);
+    s.bind(7, t.pointAngle);
+    s.bind(8, t.fluteLength);
+    s.bind(9, t.stickout);
+    s.bind(10, t.holder);
+    s.bind(11, t.flutes);
+    s.bind(12, t.lifeMinutes);
+    s.bind(13, t.usedMinutes);
+    if (s.step() != SQLITE_DONE) return false;
+    Statement del(db, "DELETE FROM cutting_data WHERE tool_id = ?");
+    del.bind(1, t.id);
+    if (!del.ok() || del.step() != SQLITE_DONE) return false;
+    for (const auto& c : t.cutting) {
+        Statement cd(db, "INSERT INTO cutting_data VALUES (?,?,?,?,?)");
+        cd.bind(1, t.id);
+        cd.bind(2, c.material);
+        cd.bind(3, c.surfaceSpeed);
+        cd.bind(4, c.feedPerTooth);
+        cd.bind(5, c.plungeFactor);
+        if (!cd.ok() || cd.step() != SQLITE_DONE) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+struct ToolLibrary::Db {
+    sqlite3* handle = nullptr;
+    ~Db() { sqlite3_close(handle); }
+};
+
+ToolLibrary::ToolLibrary(std::string path) : db_(std::make_unique<Db>()), path_(std::move(path)) {}
+ToolLibrary::~ToolLibrary() = default;
+
+std::unique_ptr<ToolLibrary> ToolLibrary::open(const std::string& path, std::string& error)
+{
+    std::unique_ptr<ToolLibrary> lib(new ToolLibrary(path));
+    std::error_code ec;
+    const bool fresh = !std::filesystem::exists(path, ec);
+    if (fresh && std::filesystem::path(path).has_parent_path()) {
+        std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+        if (ec) {
+            error = "cannot create the folder of the tool library " + path + ": " + ec.message();
+            return nullptr;
+        }
+    }
+    if (sqlite3_open_v2(path.c_str(), &lib->db_->handle, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+        error = describe(lib->db_->handle, path);
+        return nullptr;
+    }
+    sqlite3* db = lib->db_->handle;
+    sqlite3_busy_timeout(db, 1500);
+    exec(db, "PRAGMA foreign_keys = ON");
+    Statement version(db, "PRAGMA user_version");
+    if (!version.ok() || version.step() != SQLITE_ROW) {
+        error = describe(db, path);
+        return nullptr;
+    }
+    const int v = version.integer(0);
+    if (v > kSchemaVersion) {
+        error = path + " was written by a newer Taiwa (tool library version " + std::to_string(v) +
+                "); this program reads version " + std::to_string(kSchemaVersion);
+        return nullptr;
+    }
+    if (v == 0) {
+        // A new file: create the schema and the default library in one transaction.
+        Statement tables(db, "SELECT count(*) FROM sqlite_master");
+        if (!tables.ok() || tables.step() != SQLITE_ROW || tables.integer(0) != 0) {
+            error = path + " is an SQLite database but not a tool library";
+            return nullptr;
+        }
+        bool ok = exec(db, "BEGIN IMMEDIATE") && exec(db, kSchema);
+        for (const auto& t : defaultToolLibrary()) ok = ok && insert(db, t);
+        if (!ok || !exec(db, "COMMIT")) {
+            error = describe(db, path);
+            exec(db, "ROLLBACK");
+            return nullptr;
+        }
+    }
+    return lib;
+}
+
+std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
+{
+    sqlite3* db = db_->handle;
+    Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
+                    "holder, flutes, life_minutes, used_minutes FROM tools ORDER BY id");
+    if (!s.ok()) {
+        error = describe(db, path_);
+        return std::nullopt;
+    }
+    std::vector<Tool> out;
+    int rc;
+    while ((rc = s.step()) == SQLITE_ROW) {
+        Tool t;
+        t.id = s.integer(0);
+        t.name = s.text(1);
+        const auto type = toolTypeFromKey(s.text(2));
+        if (!type) {
+            error = path_ + ": tool " + std::to_string(t.id) + " has an unknown type '" + s.text(2) + "'";
+            return std::nullopt;
+        }
+        t.type = *type;
+        t.diameter = s.real(3);
+        t.cornerRadius = s.real(4);
+        t.taperAngle = s.real(5);
+        t.pointAngle = s.real(6);
+        t.fluteLength = s.real(7);
+        t.stickout = s.real(8);
+        t.holder = s.text(9);
+        t.flutes = s.integer(10);
+        t.lifeMinutes = s.real(11);
+        t.usedMinutes = s.real(12);
+        out.push_back(std::move(t));
+    }
+    if (rc != SQLITE_DONE) {
+        error = describe(db, path_);
+        return std::nullopt;
+    }
+    Statement c(db, "SELECT tool_id, material, surface_speed, feed_per_tooth, plunge_factor FROM cutting_data ORDER BY tool_id, material");
+    while (c.ok() && (rc = c.step()) == SQLITE_ROW) {
+        const int id = c.integer(0);
+        for (auto& t : out)
+            if (t.id == id) t.cutting.push_back({c.text(1), c.real(2), c.real(3), c.real(4)});
+    }
+    if (!c.ok() || rc != SQLITE_DONE) {
+        error = describe(db, path_);
+        return std::nullopt;
+    }
+    return out;
+}
+
+std::optional<int> ToolLibrary::save(const Tool& tool, std::string& error)
+{
+    sqlite3* db = db_->handle;
+    Tool t = tool;
+    if (t.id == 0) {
+        Statement s(db, "SELECT coalesce(max(id), 0) + 1 FROM tools");
+        if (!s.ok() || s.step() != SQLITE_ROW) {
+            error = describe(db, path_);
+            return std::nullopt;
+        }
+        t.id = s.integer(0);
+    }
+    if (!exec(db, "BEGIN IMMEDIATE") || !insert(db, t) || !exec(db, "COMMIT")) {
+        error = describe(db, path_);
+        exec(db, "ROLLBACK");
+        return std::nullopt;
+    }
+    return t.id;
+}
+
+bool ToolLibrary::remove(int id, std::string& error)
+{
+    Statement s(db_->handle, "DELETE FROM tools WHERE id = ?");
+    s.bind(1, id);
+    if (!s.ok() || s.step() != SQLITE_DONE) {
+        error = describe(db_->handle, path_);
+        return false;
+    }
+    return true;
+}
+
+bool ToolLibrary::addUsage(int id, double minutes, std::string& error)
+{
+    Statement s(db_->handle, "UPDATE tools SET used_minutes = used_minutes + ? WHERE id = ?");
+    s.bind(1, minutes);
+    s.bind(2, id);
+    if (!s.ok() || s.step() != SQLITE_DONE) {
+        error = describe(db_->handle, path_);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,296 @@
+// Job files (interfaces.md "Job files"), the files that are jobs: every
+// sample reads, passes input processing, validates against the shipped JSON
+// Schema (which refuses every bad job) and writes back byte for byte;
+// hand-built jobs survive writeJob/readJob; canonical text and defaults.
+// Refusals are in test_job_refusals.cpp. TAIWA_REGENERATE=1 rewrites the
+// samples canonically (review the diff before committing).
+#include "check/input_check.h"
+#include "io/job_io.h"
+#include "support/support.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QProcess>
+#include <QtTest>
+
+#include <set>
+
+
+using namespace taiwa;
+using namespace taiwa::test;
+
+namespace {
+
+bool regenerate() { return qEnvironmentVariableIntValue("TAIWA_REGENERATE") == 1; }
+
+QStringList filesIn(const QString& dir, const QString& pattern)
+{
+    QStringList out;
+    for (const auto& f : QDir(dir).entryInfoList({pattern}, QDir::Files, QDir::Name)) out << f.absoluteFilePath();
+    return out;
+}
+
+QStringList samples() { return filesIn(sourcePath("resources/samples"), "*.taiwa"); }
+
+Tool tool(int id, ToolType type, double diameter, double taper = 0.0)
+{
+    Tool t;
+    t.id = id;
+    t.name = "tool " + std::to_string(id);
+    t.type = type;
+    t.diameter = diameter;
+    t.taperAngle = taper;
+    t.fluteLength = 3 * diameter + 20;
+    return t;
+}
+
+// A small shop: drills, flat end mills 2-20 mm, taper end mills 3 and 5 degrees.
+const std::vector<Tool> kShop{
+    tool(1, ToolType::Drill, 8),          tool(2, ToolType::Drill, 12),        tool(3, ToolType::Drill, 16),
+    tool(10, ToolType::FlatEndMill, 2),   tool(11, ToolType::FlatEndMill, 6),  tool(12, ToolType::FlatEndMill, 10),
+    tool(13, ToolType::FlatEndMill, 16),  tool(14, ToolType::FlatEndMill, 20), tool(20, ToolType::TaperEndMill, 4, 3),
+    tool(21, ToolType::TaperEndMill, 4, 5), tool(30, ToolType::BallEndMill, 6),
+};
+
+std::string diagnosticLines(const QString& fileName, const Diagnostics& ds)
+{
+    std::string out;
+    for (const auto& d : ds) out += format(fileName.toStdString(), d) + "\n";
+    return out;
+}
+
+M4Pocket pocket()
+{
+    M4Pocket p;
+    p.corners = {{{20, 20}, {120.5, 20}, {120.5, 80.25}, {20, 80.25}}};
+    p.cornerRadius = 8;
+    p.depth = 12.7;
+    return p;
+}
+
+Job handBuilt()
+{
+    Job j;
+    j.name = "Hand built \"quoted\" ジョブ";
+    j.material = "steel-s45c";
+    j.machine = "vmc-2";
+    j.workOffset = "G55";
+    j.stock = {-10.5, 0.1, 200, 150.125, 40};
+    M4Pocket a = pocket();
+    a.taper = 2.5;
+    a.toolUse = 7;
+    a.wallFinish = 3;
+    a.pilotHole = 9;
+    a.tools = {{"wall", 21}, {"floor", 12}};
+    M2DPocket b;
+    b.corner = {1.0 / 3.0, 1e-7};
+    b.lengthX = 123456.789;
+    b.lengthY = 60;
+    b.depth = 20;
+    b.theta1 = 10;
+    b.cornerRadius = 6;
+    b.scallop = 0.002;
+    M2DPocket c = b;
+    c.theta2 = 0.0;  // given, even though equal to the default angle of 0
+    c.toolUse = 9;
+    j.units = {{"A", a}, {"", b}, {"C", c}};
+    return j;
+}
+
+// Runs python3 with jsonschema: validates `files` against the shipped
+// schema, prints one line "OK name", "BAD name" or "UNJUDGED name" per file.
+std::optional<QString> validate(const QStringList& files)
+{
+    const char* script = R"(
+import json, sys
+import jsonschema
+schema = json.load(open(sys.argv[1]))
+cls = jsonschema.validators.validator_for(schema)
+cls.check_schema(schema)
+v = cls(schema)
+for f in sys.argv[2:]:
+    def no_repeats(pairs):
+        keys = [k for k, _ in pairs]
+        if len(keys) != len(set(keys)): raise ValueError('repeated key')
+        return dict(pairs)
+    try:
+        doc = json.load(open(f, encoding='utf-8'), object_pairs_hook=no_repeats)
+    except Exception:
+        print('UNJUDGED', f); continue  # not JSON, or what a schema cannot see (repeated keys)
+    errors = list(v.iter_errors(doc))
+    print(('BAD ' if errors else 'OK ') + f)
+    for e in errors[:3]: print('   ', list(e.absolute_path), e.message[:200])
+)";
+    QProcess p;
+    p.start("/usr/bin/python3", QStringList{"-c", script, sourcePath("resources/schema/taiwa-job.schema.json")} + files);
+    if (!p.waitForFinished(60000)) return std::nullopt;
+    const QString err = QString::fromUtf8(p.readAllStandardError());
+    if (err.contains("No module named")) return std::nullopt;
+    return QString::fromUtf8(p.readAllStandardOutput()) + err;
+}
+
+}  // namespace
+
+class TestJobIo : public QObject {
+    Q_OBJECT
+private slots:
+    void everySampleReadsAndWritesBackByteForByte()
+    {
+        const QStringList files = samples();
+        QVERIFY2(files.size() >= 15, "the samples are missing");
+        for (const auto& f : files) {
+            const std::string text = readFile(f);
+            const JobReadResult r = readJob(text);
+            QVERIFY2(r.job && r.diagnostics.empty(), qPrintable(f + ": " + QString::fromStdString(diagnosticLines(f, r.diagnostics))));
+            if (regenerate()) {
+                writeFile(f, writeJob(*r.job));
+                continue;
+            }
+            QCOMPARE(writeJob(*r.job), text);
+            QVERIFY(readJobFile(f.toStdString()).job == r.job);
+        }
+    }
+
+    void everySamplePassesInputProcessing()
+    {
+        for (const auto& f : samples()) {
+            const JobReadResult r = readJobFile(f.toStdString());
+            QVERIFY(r.job);
+            const Diagnostics ds = checkJob(*r.job, TechnologyTable::builtIn(), kShop);
+            QVERIFY2(ds.empty(), qPrintable(QString::fromStdString(diagnosticLines(QFileInfo(f).fileName(), ds))));
+            QVERIFY2(TechnologyTable::builtIn().find(r.job->material), qPrintable(f));
+        }
+    }
+
+    void samplesCoverEveryCode()
+    {
+        std::set<std::string> seen;  // "M4 U1 F2 H9 taper", "M2D U9 H9", ...
+        bool inch = false;
+        for (const auto& f : samples()) {
+            const Job job = *readJobFile(f.toStdString()).job;
+            inch = inch || job.lengthUnit == LengthUnit::Inch;
+            for (const auto& u : job.units) {
+                if (const auto* m = std::get_if<M4Pocket>(&u.module)) {
+                    seen.insert("M4 U" + std::to_string(m->toolUse));
+                    seen.insert("M4 F" + std::to_string(m->wallFinish));
+                    seen.insert("M4 H" + std::to_string(m->pilotHole));
+                    if (m->taper > 0) seen.insert("M4 taper F" + std::to_string(m->wallFinish));
+                } else {
+                    const auto& d = std::get<M2DPocket>(u.module);
+                    seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
+                    if (d.theta2) seen.insert("M2D theta2");
+                }
+            }
+        }
+        QVERIFY(inch);
+        for (const char* want : {"M4 U1", "M4 U6", "M4 U7", "M4 U8", "M4 U9", "M4 F1", "M4 F2", "M4 F3", "M4 H0", "M4 H9",
+                                 "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2"})
+            QVERIFY2(seen.count(want), want);
+    }
+
+    void handBuiltJobsRoundTrip()
+    {
+        Job inch = handBuilt();
+        inch.lengthUnit = LengthUnit::Inch;
+        inch.technology.alpha2 = 0.012;
+        inch.technology.gamma = 0.45;
+        inch.technology.alpha1 = 0.04;
+        Job empty;
+        empty.name = "";
+        Job overrides = handBuilt();
+        overrides.technology = {0.5, 0.25, 0.05, 0.1, 1.25};
+        for (const Job& j : {handBuilt(), inch, empty, overrides}) {
+            const std::string text = writeJob(j);
+            const JobReadResult r = readJob(text);
+            QVERIFY2(r.job, qPrintable(QString::fromStdString(diagnosticLines("job", r.diagnostics))));
+            QVERIFY(*r.job == j);
+            QCOMPARE(writeJob(*r.job), text);
+        }
+    }
+
+    void canonicalTextIsFixed()
+    {
+        Job j;
+        j.name = "x";
+        M2DPocket d;
+        d.corner = {0.1, 2};
+        d.lengthX = 1e21;
+        d.theta2 = 30;
+        j.units = {{"", d}};
+        const std::string text = writeJob(j);
+        // Key order of the format, whole numbers without ".0", points on one line.
+        QVERIFY(text.starts_with("{\n  \"format\": \"taiwa-job\",\n  \"version\": 1,\n  \"name\": \"x\",\n  \"lengthUnit\": \"mm\","));
+        QVERIFY(text.find("\"stock\": {\n    \"shape\": \"block\",\n    \"x\": 0,\n") != std::string::npos);
+        QVERIFY(text.find("\"corner\": [0.1, 2],\n      \"L1\": 1e+21,\n      \"L2\": 0,") != std::string::npos);
+        QVERIFY(text.find("\"theta1\": 0,\n      \"theta2\": 30,\n      \"cornerRadius\": 0,") != std::string::npos);
+        QVERIFY(text.find("technology") == std::string::npos);  // no overrides: not written
+        QVERIFY(text.find("tools") == std::string::npos);       // no pins: not written
+        QVERIFY(text.ends_with("}\n"));
+    }
+
+    void optionalFieldsTakeTheirDefaults()
+    {
+        const JobReadResult r = readJob(R"({"format": "taiwa-job", "version": 1, "lengthUnit": "mm",
+            "material": "pom", "stock": {"shape": "block", "width": 100, "length": 80, "height": 20},
+            "units": [{"module": "M4", "corners": [[10,10],[60,10],[60,50],[10,50]], "cornerRadius": 5, "depth": 5, "U": 1},
+                      {"module": "M2D", "corner": [70,10], "L1": 25, "L2": 60, "depth": 4, "theta1": 10,
+                       "cornerRadius": 4, "U": 9}]})");
+        QVERIFY(r.job);
+        const Job& j = *r.job;
+        QCOMPARE(j.name, std::string());
+        QCOMPARE(j.machine, std::string("vmc"));
+        QCOMPARE(j.workOffset, std::string("G54"));
+        QCOMPARE(j.stock.x, 0.0);
+        QVERIFY(j.technology.empty());
+        const auto& m = std::get<M4Pocket>(j.units[0].module);
+        QCOMPARE(m.taper, 0.0);
+        QCOMPARE(m.wallFinish, 1);
+        QCOMPARE(m.pilotHole, 0);
+        QVERIFY(m.tools.empty());
+        const auto& d = std::get<M2DPocket>(j.units[1].module);
+        QVERIFY(!d.theta2);
+        QCOMPARE(d.scallop, 0.01);
+        QCOMPARE(d.pilotHole, 0);
+    }
+
+    void codesAreKeptAsTyped()
+    {
+        // Out-of-table codes are input processing's business: the reader keeps them.
+        std::string text = writeJob(handBuilt());
+        text.replace(text.find("\"U\": 7"), 6, "\"U\": 4");
+        text.replace(text.find("\"F\": 3"), 6, "\"F\": 7.0");
+        const JobReadResult r = readJob(text);
+        QVERIFY(r.job);
+        QCOMPARE(std::get<M4Pocket>(r.job->units[0].module).toolUse, 4);
+        QCOMPARE(std::get<M4Pocket>(r.job->units[0].module).wallFinish, 7);
+    }
+
+    void hugeNumbersAreKeptOrRefusedNeverCrash()
+    {
+        std::string text = writeJob(handBuilt());
+        text.replace(text.find("\"depth\": 12.7"), 13, "\"depth\": 1.7976931348623157e308");
+        const JobReadResult big = readJob(text);
+        QVERIFY(big.job);
+        QCOMPARE(std::get<M4Pocket>(big.job->units[0].module).depth, 1.7976931348623157e308);
+        QCOMPARE(readJob(writeJob(*big.job)).job, big.job);
+        text.replace(text.find("1.7976931348623157e308"), 22, "-1e999");
+        const JobReadResult over = readJob(text);
+        QVERIFY(!over.job);
+        QCOMPARE(diagnosticLines("j", over.diagnostics),
+                 std::string("j: not a job file: the number \"-1e999\" is too large for any dimension\n"));
+    }
+
+    void schemaAcceptsSamplesRefusesBadJobs()
+    {
+        const auto out = validate(samples() + filesIn(dataPath("bad-jobs"), "*.taiwa"));
+        if (!out) QSKIP("python3 with jsonschema is not installed");
+        for (const auto& f : samples()) QVERIFY2(out->contains("OK " + f + "\n"), qPrintable(*out));
+        for (const auto& f : filesIn(dataPath("bad-jobs"), "*.taiwa")) {
+            const bool judged = !out->contains("UNJUDGED " + f + "\n");
+            QVERIFY2(!judged || out->contains("BAD " + f + "\n"), qPrintable(f + " passes the schema:\n" + *out));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestJobIo)
+#include "test_job_io.moc"
