@@ -7,6 +7,7 @@
 #include "check/input_check.h"
 #include "io/job_io.h"
 #include "support/support.h"
+#include "tools/tool_library.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -31,26 +32,6 @@ QStringList filesIn(const QString& dir, const QString& pattern)
 }
 
 QStringList samples() { return filesIn(sourcePath("resources/samples"), "*.taiwa"); }
-
-Tool tool(int id, ToolType type, double diameter, double taper = 0.0)
-{
-    Tool t;
-    t.id = id;
-    t.name = "tool " + std::to_string(id);
-    t.type = type;
-    t.diameter = diameter;
-    t.taperAngle = taper;
-    t.fluteLength = 3 * diameter + 20;
-    return t;
-}
-
-// A small shop: drills, flat end mills 2-20 mm, taper end mills 3 and 5 degrees.
-const std::vector<Tool> kShop{
-    tool(1, ToolType::Drill, 8),          tool(2, ToolType::Drill, 12),        tool(3, ToolType::Drill, 16),
-    tool(10, ToolType::FlatEndMill, 2),   tool(11, ToolType::FlatEndMill, 6),  tool(12, ToolType::FlatEndMill, 10),
-    tool(13, ToolType::FlatEndMill, 16),  tool(14, ToolType::FlatEndMill, 20), tool(20, ToolType::TaperEndMill, 4, 3),
-    tool(21, ToolType::TaperEndMill, 4, 5), tool(30, ToolType::BallEndMill, 6),
-};
 
 std::string diagnosticLines(const QString& fileName, const Diagnostics& ds)
 {
@@ -156,7 +137,7 @@ private slots:
         for (const auto& f : samples()) {
             const JobReadResult r = readJobFile(f.toStdString());
             QVERIFY(r.job);
-            const Diagnostics ds = checkJob(*r.job, TechnologyTable::builtIn(), kShop);
+            const Diagnostics ds = checkJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary());
             QVERIFY2(ds.empty(), qPrintable(QString::fromStdString(diagnosticLines(QFileInfo(f).fileName(), ds))));
             QVERIFY2(TechnologyTable::builtIn().find(r.job->material), qPrintable(f));
         }

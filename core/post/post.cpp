@@ -50,7 +50,7 @@ public:
             const Tool& t = toolOf(s, library);
             if (std::find(listed.begin(), listed.end(), t.id) != listed.end()) continue;
             listed.push_back(t.id);
-            w_.comment(fmt::format("T{} D{} {} {}", t.id, w_.length(t.diameter), toString(t.type), t.name));
+            w_.comment(fmt::format("T{} D{} {}", t.id, w_.length(t.diameter), t.name));
         }
         for (const auto& b : d_.preamble) {
             std::string block = b;

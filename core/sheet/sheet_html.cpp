@@ -59,7 +59,7 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& o)
                      job.stock.x == 0 && job.stock.y == 0 ? "" : fmt::format(" (stock corner at X{} Y{})", len(job.stock.x), len(job.stock.y)));
     h += fmt::format("<tr><td><b>Steps</b></td><td>{}</td><td><b>Tool changes</b></td><td>{}</td><td><b>Total time</b></td><td>{:.1f} min</td></tr>",
                      plan.steps.size(), plan.toolChanges, plan.totalMinutes);
-    h += "</table>\n<h2>Process steps</h2>\n<table><tr><th>No.</th><th>Unit</th><th>Step</th><th>T</th><th>H</th><th>Tool</th>"
+    h += "</table>\n<h2>Process steps</h2>\n<table cellspacing=\"0\" cellpadding=\"3\" border=\"1\"><tr><th>No.</th><th>Unit</th><th>Module</th><th>Step</th><th>T</th><th>H</th><th>Tool</th>"
          "<th>S rpm</th><th>F " + std::string(us) + "/min</th><th>Start " + us + "</th><th>Depth " + us +
          "</th><th>Wall left</th><th>Floor left</th><th>Path " + us + "</th><th>Min</th></tr>\n";
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
@@ -67,7 +67,7 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& o)
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
         const auto sf = t ? speedsFeeds(*t, job.material) : std::nullopt;
         const PathLength pl = s.path ? pathLength(*s.path) : PathLength{};
-        h += fmt::format("<tr><td class=n>{}</td><td>{} {}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
+        h += fmt::format("<tr><td class=n>{}</td><td class=n>{}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
                          "<td class=n>{}</td><td class=n>{}</td><td class=n>{}</td><td class=n>{}</td><td class=n>{}</td>"
                          "<td class=n>{}</td><td class=n>{}</td><td class=n>{}</td></tr>\n",
                          i + 1, s.unit + 1, s.module, escape(s.label()), t ? std::to_string(t->id) : "–",
@@ -76,7 +76,7 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& o)
                          len(s.floorAllowance), s.path ? len(pl.feed + pl.rapid) : "–",
                          s.minutes ? fmt::format("{:.2f}", *s.minutes) : "–");
     }
-    h += "</table>\n<h2>Tools</h2>\n<table><tr><th>T</th><th>Tool</th><th>Type</th><th>Diameter " + std::string(us) +
+    h += "</table>\n<h2>Tools</h2>\n<table cellspacing=\"0\" cellpadding=\"3\" border=\"1\"><tr><th>T</th><th>Tool</th><th>Type</th><th>Diameter " + std::string(us) +
          "</th><th>Stick-out " + us + "</th><th>Holder</th><th>Life min</th><th>Used min</th><th>Left min</th></tr>\n";
     for (const auto& t : plan.tools)
         h += fmt::format("<tr><td class=n>{}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"

@@ -23,7 +23,6 @@ std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& o
     pdf.setCreator(QStringLiteral("Taiwa " TAIWA_VERSION));
     QTextDocument doc;
     doc.setHtml(QString::fromStdString(sheetHtml(plan, options)));
-    doc.setPageSize(pdf.pageLayout().paintRectPixels(pdf.resolution()).size());
     QFont font(QStringLiteral("DejaVu Sans"));
     font.setPointSizeF(9);
     doc.setDefaultFont(font);

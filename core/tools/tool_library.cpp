@@ -193,7 +193,7 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
         error = describe(db, path_);
         return std::nullopt;
     }
-    Statement c(db, "SELECT tool_id, material, surface_speed, feed_per_tooth, plunge_factor FROM cutting_data ORDER BY tool_id, material");
+    Statement c(db, "SELECT tool_id, material, surface_speed, feed_per_tooth, plunge_factor FROM cutting_data ORDER BY tool_id, rowid");
     while (c.ok() && (rc = c.step()) == SQLITE_ROW) {
         const int id = c.integer(0);
         for (auto& t : out)
