@@ -73,6 +73,18 @@ void BM_PlanJob(benchmark::State& state)
 }
 BENCHMARK(BM_PlanJob)->Unit(benchmark::kMillisecond);
 
+// Input processing, decomposition, tool choice and ordering only: what the
+// window recomputes on every keystroke before the paths.
+void BM_PlanStepsOnly(benchmark::State& state)
+{
+    const Job job = bigJob();
+    PlanOptions options;
+    options.withToolPaths = false;
+    for (auto _ : state) benchmark::DoNotOptimize(planJob(job, TechnologyTable::builtIn(), library(), options).steps.data());
+    state.counters["units/s"] = benchmark::Counter(1000.0, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_PlanStepsOnly)->Unit(benchmark::kMillisecond);
+
 void BM_PostGCode(benchmark::State& state)
 {
     const Plan plan = planJob(bigJob(), TechnologyTable::builtIn(), library());

@@ -4,6 +4,7 @@
 // tape image list.
 #include "post/gcode_writer.h"
 #include "post/post.h"
+#include "support/rs274.h"
 
 #include <QtTest>
 
@@ -160,6 +161,24 @@ private slots:
         QVERIFY2(tape.contains(QString("blocks %1 ").arg(blocks)), qPrintable(tape.right(200)));
         QVERIFY(tape.contains(QString("characters %1 ").arg(p.nc.size())));
         QVERIFY(tape.contains("     1  %"));
+    }
+
+    // Every linuxcnc program this test writes must satisfy LinuxCNC's own
+    // interpreter, and what it reads back is our path.
+    void linuxcncOutputPassesRs274()
+    {
+        for (const auto units : {LengthUnit::Millimetre, LengthUnit::Inch}) {
+            const PostedProgram p = postProcess(steps(), library(), options("linuxcnc", units));
+            const auto r = test::runRs274(p.nc);
+            QVERIFY2(r.ok, qPrintable(r.errors));
+            const double k = units == LengthUnit::Inch ? 25.4 : 1.0;
+            const auto& last = r.moves.back();
+            const auto arc = std::find_if(r.moves.begin(), r.moves.end(), [](const test::CanonMove& m) { return m.kind == test::CanonMove::Arc; });
+            QVERIFY(arc != r.moves.end());
+            QVERIFY(std::abs(arc->end.x * k - 20) < 2e-3 && std::abs(arc->end.y * k - 50) < 2e-3 && arc->rotation == 1);
+            QVERIFY(std::abs(arc->centre.x * k - 20) < 2e-3 && std::abs(arc->centre.y * k - 40) < 2e-3);
+            QVERIFY(last.kind == test::CanonMove::Traverse);
+        }
     }
 
     void unknownDialectAndMissingToolAreRefused()

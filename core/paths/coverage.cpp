@@ -50,7 +50,9 @@ std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
             if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
             if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
             const double r = length(a);
-            const int n = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) * r / 0.05)));
+            // Chords within 1 µm of the arc.
+            const double stepAngle = 2 * std::acos(std::max(0.0, 1 - 0.001 / std::max(r, 0.001)));
+            const int n = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) / std::max(stepAngle, 1e-3))));
             const double a0 = std::atan2(a.y, a.x);
             for (int i = 1; i <= n; ++i) {
                 const double ang = a0 + sweep * i / n;
@@ -63,16 +65,17 @@ std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
     return lines;
 }
 
-ClipperLib::Paths leftover(const Quad& region, const ToolPath& path, double radius)
+// What the tool leaves inside the region, the region shrunk by `band` first
+// (so that reaching the outline within `band` counts as reaching it) and
+// arcs approximated within half of it.
+ClipperLib::Paths leftover(const Quad& region, const ToolPath& path, double radius, double band)
 {
-    ClipperLib::ClipperOffset sweep(2.0, 0.0002 * kScale);  // 0.2 µm arc tolerance
+    ClipperLib::ClipperOffset sweep(2.0, 0.5 * band * kScale);
     for (const auto& line : feedPolylines(path)) sweep.AddPath(toPath(line), ClipperLib::jtRound, ClipperLib::etOpenRound);
     ClipperLib::Paths swept;
     sweep.Execute(swept, radius * kScale);
-    // The region shrunk by 1 µm: a tool that reaches the outline within the
-    // tolerance of the geometry tests counts as reaching it.
     ClipperLib::Clipper c;
-    c.AddPath(toPath(flatten(offsetInward(region, 0.001), 0.0002)), ClipperLib::ptSubject, true);
+    c.AddPath(toPath(flatten(offsetInward(region, band), 0.5 * band)), ClipperLib::ptSubject, true);
     c.AddPaths(swept, ClipperLib::ptClip, true);
     ClipperLib::Paths left;
     c.Execute(ClipperLib::ctDifference, left, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
@@ -130,10 +133,10 @@ std::vector<Point2> flatten(const Quad& qIn, double tolerance)
     return pts;
 }
 
-double uncutArea(const Quad& region, const ToolPath& path, double radius)
+double uncutArea(const Quad& region, const ToolPath& path, double radius, double band)
 {
     double a = 0;
-    for (const auto& p : leftover(region, path, radius)) a += areaMm2(p);
+    for (const auto& p : leftover(region, path, radius, band)) a += areaMm2(p);
     return a;
 }
 
@@ -141,7 +144,7 @@ std::vector<Point2> cleanupPoints(const Quad& region, const Quad& allowedCentres
                                   double tolerance)
 {
     std::vector<Point2> points;
-    for (const auto& piece : leftover(region, path, radius)) {
+    for (const auto& piece : leftover(region, path, radius, 0.005)) {
         if (areaMm2(piece) < tolerance) continue;
         // Visit the piece's centre of area, kept where the tool may go.
         double cx = 0, cy = 0, a = 0;

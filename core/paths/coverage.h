@@ -15,12 +15,15 @@ namespace taiwa::paths {
 std::vector<Point2> flatten(const Quad& q, double tolerance);
 
 // Uncut area (mm^2) left inside `region` by a tool of radius R whose centre
-// runs along the XY projection of the path's feed moves.
-double uncutArea(const Quad& region, const ToolPath& path, double radius);
+// runs along the XY projection of the path's feed moves; the region is
+// shrunk by `band` mm first (what the tool reaches within `band` of the
+// outline counts as reached).
+double uncutArea(const Quad& region, const ToolPath& path, double radius, double band = 0.001);
 
 // Centre points that clear what the path leaves uncut, each inside
 // `allowedCentres` (the tool centre's no-gouge region). Empty when the area
-// left is below `tolerance` mm^2.
+// left is below `tolerance` mm^2. Judged within a 5 µm band of the outline:
+// fast enough for planning; the tests prove coverage within 1 µm.
 std::vector<Point2> cleanupPoints(const Quad& region, const Quad& allowedCentres, const ToolPath& path, double radius,
                                   double tolerance = 1e-3);
 

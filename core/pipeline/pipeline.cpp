@@ -10,7 +10,9 @@
 #include "tools/tool_choice.h"
 
 #include <algorithm>
+#include <future>
 #include <string>
+#include <thread>
 
 namespace taiwa {
 
@@ -103,27 +105,36 @@ Plan planJob(const Job& job, const TechnologyTable& table, const std::vector<Too
     for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
 
     int currentTool = 0;
-    for (auto& step : plan.steps) {
+    for (const auto& step : plan.steps) {
         const Tool& tool = *findTool(library, step.tool->toolId);
         if (!plan.tool(tool.id)) plan.tools.push_back(tool);
         if (tool.id != currentTool) ++plan.toolChanges;
         currentTool = tool.id;
-        if (!options.withToolPaths) continue;
-        step.path = makeToolPath(step, tool, plan.technology, options.path);
-        const auto sf = speedsFeeds(tool, plan.mmJob.material);
-        if (!sf) {
+        if (options.withToolPaths && !speedsFeeds(tool, plan.mmJob.material))
             plan.diagnostics.push_back(unitError(plan.mmJob, step.unit, "tools." + std::string(toKey(step.kind)),
                 "tool T" + std::to_string(tool.id) + " (" + tool.name + ") has no cutting data for material " +
                     plan.mmJob.material + "; add it in the tool library"));
-            continue;
-        }
-        step.minutes = estimateMinutes(*step.path, *sf);
-        plan.totalMinutes += *step.minutes;
     }
-    if (!plan.ok()) return plan;
+    if (!plan.ok() || !options.withToolPaths) return plan;
+
+    // The paths of the steps are independent of each other: compute them on
+    // every core.
+    const auto work = [&](std::size_t first, std::size_t stride) {
+        for (std::size_t i = first; i < plan.steps.size(); i += stride) {
+            Step& step = plan.steps[i];
+            const Tool& tool = *findTool(library, step.tool->toolId);
+            step.path = makeToolPath(step, tool, plan.technology, options.path);
+            step.minutes = estimateMinutes(*step.path, *speedsFeeds(tool, plan.mmJob.material));
+        }
+    };
+    const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+    std::vector<std::future<void>> running;
+    for (std::size_t t = 1; t < threads; ++t) running.push_back(std::async(std::launch::async, work, t, threads));
+    work(0, threads);
+    for (auto& r : running) r.get();  // rethrows a worker's exception here
+    for (const auto& step : plan.steps) plan.totalMinutes += *step.minutes;
     plan.totalMinutes += plan.toolChanges * options.toolChangeSeconds / 60.0;
-    if (options.withToolPaths)
-        for (const auto& note : planToolLife(plan.steps, library)) plan.notes.push_back(note.message);
+    for (const auto& note : planToolLife(plan.steps, library)) plan.notes.push_back(note.message);
     return plan;
 }
 

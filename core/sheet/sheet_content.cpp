@@ -1,0 +1,64 @@
+// What the instruction sheet says, from a plan: formatted in the sheet's
+// length unit, one row per step in machining order and one per tool.
+#include "sheet/sheet_content.h"
+
+#include "tools/cutting.h"
+
+#include <fmt/format.h>
+
+namespace taiwa::sheet {
+
+Content content(const Plan& plan, const SheetOptions& o)
+{
+    const LengthUnit u = o.units;
+    const std::string us = unitSymbol(u);
+    const auto len = [&](double mm) { return fmt::format("{:.{}f}", fromMm(mm, u), u == LengthUnit::Inch ? 4 : 3); };
+    const auto feed = [&](double mmPerMin) { return fmt::format("{:.{}f}", fromMm(mmPerMin, u), u == LengthUnit::Inch ? 1 : 0); };
+    const Job& job = plan.mmJob;
+    Content c;
+    c.title = "Machining instruction sheet";
+    c.fields = {
+        {"Job", plan.job.name},
+        {"File", o.jobFile},
+        {"Dialect", o.dialect},
+        {"Material", job.material},
+        {"Machine", job.machine},
+        {"Date", o.date},
+        {"Stock", fmt::format("{} x {} x {} {}", len(job.stock.width), len(job.stock.length), len(job.stock.height), us)},
+        {"Work offset", job.workOffset},
+        {"Setup", "X0 Y0 front-left corner" +
+                      (job.stock.x == 0 && job.stock.y == 0 ? std::string()
+                                                            : fmt::format(" (stock corner at X{} Y{})", len(job.stock.x), len(job.stock.y))) +
+                      ", Z0 top face"},
+        {"Steps", std::to_string(plan.steps.size())},
+        {"Tool changes", std::to_string(plan.toolChanges)},
+        {"Total time", fmt::format("{:.1f} min", plan.totalMinutes)},
+    };
+    c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
+                       "Depth " + us, "Wall left", "Floor left", "Path " + us, "Min"};
+    c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};
+    c.steps.widths = {3, 3, 4, 13, 3, 3, 17, 5, 6, 6, 6, 6, 6, 7, 4};
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const Step& s = plan.steps[i];
+        const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
+        const auto sf = t ? speedsFeeds(*t, job.material) : std::nullopt;
+        const PathLength pl = s.path ? pathLength(*s.path) : PathLength{};
+        c.steps.rows.push_back({std::to_string(i + 1), std::to_string(s.unit + 1), s.module, s.label(),
+                                t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
+                                sf ? fmt::format("{:.0f}", sf->rpm) : "-", sf ? feed(sf->feed) : "-", len(s.startDepth),
+                                len(s.cutDepth), len(s.wallAllowance), len(s.floorAllowance),
+                                s.path ? len(pl.feed + pl.rapid) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
+    }
+    c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
+    c.tools.numeric = {true, false, false, true, true, false, true, true, true};
+    c.tools.widths = {3, 22, 9, 7, 7, 14, 5, 5, 5};
+    for (const auto& t : plan.tools)
+        c.tools.rows.push_back({std::to_string(t.id), t.name, toString(t.type), len(t.diameter), len(t.stickout), t.holder,
+                                fmt::format("{:.0f}", t.lifeMinutes), fmt::format("{:.1f}", t.usedMinutes),
+                                fmt::format("{:.1f}", t.remainingLife())});
+    c.notes = plan.notes;
+    c.total = fmt::format("{:.1f} min including {} tool changes", plan.totalMinutes, plan.toolChanges);
+    return c;
+}
+
+}  // namespace taiwa::sheet

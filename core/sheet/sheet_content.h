@@ -1,0 +1,32 @@
+// The content of the machining instruction sheet as plain values (header
+// fields, the step table, the tool table, notes), computed once from a plan
+// and laid out by both the HTML and the PDF writer.
+#pragma once
+
+#include "sheet/sheet.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace taiwa::sheet {
+
+struct Table {
+    std::vector<std::string> headers;
+    std::vector<bool> numeric;                   // right-aligned columns
+    std::vector<double> widths;                  // relative column widths
+    std::vector<std::vector<std::string>> rows;
+};
+
+struct Content {
+    std::string title;
+    std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
+    Table steps;
+    Table tools;
+    std::vector<std::string> notes;
+    std::string total;
+};
+
+Content content(const Plan& plan, const SheetOptions& options);
+
+}  // namespace taiwa::sheet
