@@ -17,7 +17,6 @@ namespace {
 
 constexpr double kTol = 1e-6;  // mm
 
-double tanDeg(double d) { return std::tan(d * std::numbers::pi / 180.0); }
 
 M2DPocket pocket(double depth, double theta1, std::optional<double> theta2 = std::nullopt)
 {

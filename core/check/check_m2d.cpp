@@ -14,22 +14,7 @@ namespace {
 
 constexpr double kTolerance = 1e-9;  // mm
 
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
 
-struct Reporter {
-    int unitNo;
-    const Context& ctx;
-    Diagnostics& out;
-    void unit(std::string field, std::string message)
-    {
-        out.push_back({Severity::Error, unitNo, "M2D", std::move(field), std::move(message)});
-    }
-    void job(std::string field, std::string message)
-    {
-        out.push_back({Severity::Error, std::nullopt, "", std::move(field), std::move(message)});
-    }
-    msg::Len len(double mm) const { return {mm, ctx.shownUnit}; }
-};
 
 bool allFinite(const M2DPocket& p, Reporter& r)
 {
@@ -133,7 +118,7 @@ void checkToolRoom(const M2DPocket& p, const TechnologyData& tech, Reporter& r)
 UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 {
     UnitReport report;
-    Reporter r{unitNo, ctx, report.diagnostics};
+    Reporter r{unitNo, "M2D", ctx, report.diagnostics};
     checkPins(p.tools, unitNo, "M2D", ctx, report.diagnostics);
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;

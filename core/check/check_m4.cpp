@@ -15,22 +15,7 @@ namespace {
 constexpr double kSamePoint = 1e-6;  // mm: closer corners are the same point
 constexpr double kTolerance = 1e-9;  // mm
 
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
 
-struct Reporter {
-    int unitNo;
-    const Context& ctx;
-    Diagnostics& out;
-    void unit(std::string field, std::string message)
-    {
-        out.push_back({Severity::Error, unitNo, "M4", std::move(field), std::move(message)});
-    }
-    void job(std::string field, std::string message)
-    {
-        out.push_back({Severity::Error, std::nullopt, "", std::move(field), std::move(message)});
-    }
-    msg::Len len(double mm) const { return {mm, ctx.shownUnit}; }
-};
 
 bool allFinite(const M4Pocket& p, Reporter& r)
 {
@@ -152,7 +137,7 @@ void checkToolRoom(const M4Pocket& p, const TechnologyData& tech, Reporter& r)
 UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
 {
     UnitReport report;
-    Reporter r{unitNo, ctx, report.diagnostics};
+    Reporter r{unitNo, "M4", ctx, report.diagnostics};
     checkPins(p.tools, unitNo, "M4", ctx, report.diagnostics);
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "check/diagnostic.h"
+#include "check/messages.h"
 #include "model/job.h"
 #include "model/technology.h"
 #include "model/tool.h"
@@ -20,6 +21,24 @@ struct Context {
     std::optional<TechnologyData> tech;             // absent when the material is unknown
     const Stock* stock = nullptr;                   // nullptr when the stock itself is refused
     const std::vector<Tool>* library = nullptr;
+};
+
+// Adds diagnostics of one unit (1-based unitNo, module "M4"/"M2D"), or of
+// the job, quoting lengths in the job's unit.
+struct Reporter {
+    int unitNo;
+    const char* module;
+    const Context& ctx;
+    Diagnostics& out;
+    void unit(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, unitNo, module, std::move(field), std::move(message)});
+    }
+    void job(std::string field, std::string message)
+    {
+        out.push_back({Severity::Error, std::nullopt, "", std::move(field), std::move(message)});
+    }
+    msg::Len len(double mm) const { return {mm, ctx.shownUnit}; }
 };
 
 // Collects the diagnostics of one unit (1-based unitNo). Job-level findings

@@ -3,6 +3,7 @@
 // slope, floor finishing of the flat part, the vertical walls, and the two
 // inclined faces (see docs/decomposition.md).
 #include "decompose/decompose.h"
+#include "decompose/make_step.h"
 
 #include "model/codes.h"
 
@@ -14,18 +15,9 @@ namespace taiwa {
 
 namespace {
 
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+using decompose::makeStep;
 
-Step makeStep(int unit, StepKind kind, int number, MachiningType type)
-{
-    Step s;
-    s.unit = unit;
-    s.module = "M2D";
-    s.kind = kind;
-    s.number = number;
-    s.machiningType = type;
-    return s;
-}
+
 
 // round-half-up of a positive ratio, robust to the ratio landing a few ulps
 // below an exact .5 (2.5 computed as 2.4999999999999996 still gives 3).
@@ -57,7 +49,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     std::vector<Step> steps;
 
     if (pilot == PilotHole::Drill) {
-        Step s = makeStep(unit, StepKind::PilotHole, 1, MachiningType::PilotHole);
+        Step s = makeStep(unit, "M2D", StepKind::PilotHole, 1, MachiningType::PilotHole);
         s.position = centroid(floor.corners);
         s.cutDepth = T - tech.alpha1;
         s.floorAllowance = tech.alpha1;
@@ -70,7 +62,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     const int n = std::max(1, roundHalfUp(roughDepth / (tech.gamma * roughingToolDiameter)));
     const double layer = roughDepth / n;
     for (int k = 1; k <= n; ++k) {
-        Step s = makeStep(unit, StepKind::Roughing, k, MachiningType::Roughing);
+        Step s = makeStep(unit, "M2D", StepKind::Roughing, k, MachiningType::Roughing);
         s.startDepth = (k - 1) * layer;
         s.cutDepth = k == n ? roughDepth : k * layer;
         s.outline = offsetInward(m2dCrossSection(p, s.cutDepth), tech.alpha2);
@@ -81,7 +73,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     }
     if (use != ToolUse::Standard) return steps;
 
-    Step floorStep = makeStep(unit, StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
+    Step floorStep = makeStep(unit, "M2D", StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
     floorStep.outline = offsetInward(floor, tech.alpha2);
     floorStep.position = centroid(floorStep.outline->corners);
     floorStep.startDepth = roughDepth;
@@ -91,7 +83,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
 
     // The vertical walls are finished full depth on the floor's outline: at
     // every depth that outline lies inside the pocket, so the pass is safe.
-    Step wall = makeStep(unit, StepKind::WallFinishing, 1, MachiningType::WallFinishing);
+    Step wall = makeStep(unit, "M2D", StepKind::WallFinishing, 1, MachiningType::WallFinishing);
     wall.outline = floor;
     wall.position = centroid(floor.corners);
     wall.cutDepth = T;
@@ -104,7 +96,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     int number = 0;
     for (const InclinedFace& f : faces) {
         if (f.angle <= 0.0) continue;
-        Step s = makeStep(unit, StepKind::InclinedFaceFinishing, ++number, MachiningType::InclinedFaceFinishing);
+        Step s = makeStep(unit, "M2D", StepKind::InclinedFaceFinishing, ++number, MachiningType::InclinedFaceFinishing);
         s.face = f;
         s.scallop = p.scallop;
         s.position = 0.25 * (f.topEdge[0] + f.topEdge[1] + f.floorEdge[0] + f.floorEdge[1]);

@@ -3,6 +3,7 @@
 // finishing steps of code F, as spec/milling-modules.md and
 // docs/decomposition.md describe them.
 #include "decompose/decompose.h"
+#include "decompose/make_step.h"
 
 #include "model/codes.h"
 
@@ -14,18 +15,9 @@ namespace taiwa {
 
 namespace {
 
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
+using decompose::makeStep;
 
-Step makeStep(int unit, StepKind kind, int number, MachiningType type)
-{
-    Step s;
-    s.unit = unit;
-    s.module = "M4";
-    s.kind = kind;
-    s.number = number;
-    s.machiningType = type;
-    return s;
-}
+
 
 // The outline moved inward by d; the final outline itself when d is zero, so
 // that the last wall pass runs exactly on the typed corners.
@@ -69,7 +61,7 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
     std::vector<Step> steps;
 
     if (pilot == PilotHole::Drill) {
-        Step s = makeStep(unit, StepKind::PilotHole, 1, MachiningType::PilotHole);
+        Step s = makeStep(unit, "M4", StepKind::PilotHole, 1, MachiningType::PilotHole);
         s.position = centroid(pocket.corners);
         s.startDepth = 0.0;
         s.cutDepth = T - tech.alpha1;
@@ -83,7 +75,7 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
     const double roughDepth = T - tech.beta2;
     const Quad roughOutline = offsetInward(section(top, pocket.taper, roughDepth), tech.alpha2);
     if (hasRoughing(use)) {
-        Step s = makeStep(unit, StepKind::Roughing, 1, MachiningType::Roughing);
+        Step s = makeStep(unit, "M4", StepKind::Roughing, 1, MachiningType::Roughing);
         s.outline = roughOutline;
         s.position = centroid(roughOutline.corners);
         s.startDepth = 0.0;
@@ -93,7 +85,7 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
         steps.push_back(s);
     }
     if (hasFloorFinishing(use)) {
-        Step s = makeStep(unit, StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
+        Step s = makeStep(unit, "M4", StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
         s.outline = roughOutline;
         s.position = centroid(roughOutline.corners);
         s.startDepth = roughDepth;
@@ -108,7 +100,7 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
     if (hasWallFinishing(use)) {
         int number = 0;
         for (const WallPass& pass : wallPasses(finish, tapered, tech)) {
-            Step s = makeStep(unit, StepKind::WallFinishing, ++number, pass.type);
+            Step s = makeStep(unit, "M4", StepKind::WallFinishing, ++number, pass.type);
             s.outline = inset(top, pass.leaves);
             s.position = centroid(s.outline->corners);
             s.startDepth = 0.0;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace taiwa {
 
@@ -20,6 +21,8 @@ inline double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 inline double length(Point2 a) { return std::hypot(a.x, a.y); }
 inline double distance(Point2 a, Point2 b) { return length(a - b); }
+// Tangent of an angle given in degrees (tapers, wall angles).
+inline double tanDeg(double degrees) { return std::tan(degrees * std::numbers::pi / 180.0); }
 
 // A closed four-sided outline with every corner rounded to the same radius.
 // Corners are stored counter-clockwise (positive area); the sharp corners are

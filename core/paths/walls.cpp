@@ -13,7 +13,6 @@ namespace taiwa::paths {
 
 namespace {
 
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
 Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
 Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
 

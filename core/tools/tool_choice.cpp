@@ -58,7 +58,7 @@ ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, c
                                const std::string& material)
 {
     const double bottom = p.depth - tech.beta2;
-    const double tanL = std::tan(p.theta1 * std::numbers::pi / 180), tanR = std::tan(p.rightAngle() * std::numbers::pi / 180);
+    const double tanL = tanDeg(p.theta1), tanR = tanDeg(p.rightAngle());
     const double width = p.lengthX - bottom * (tanL + tanR) - 2 * tech.alpha2;
     Fit f;
     f.cornerRadius = p.cornerRadius - tech.alpha2;

@@ -11,7 +11,6 @@
 namespace taiwa::test {
 
 namespace {
-double tanDeg(double deg) { return std::tan(deg * std::numbers::pi / 180.0); }
 
 // Signed distance to a sharp convex polygon (counter-clockwise).
 double signedDistanceSharp(const std::array<Point2, 4>& pIn, Point2 c)
