@@ -70,10 +70,22 @@ std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
 // arcs approximated within half of it.
 ClipperLib::Paths leftover(const Quad& region, const ToolPath& path, double radius, double band)
 {
-    ClipperLib::ClipperOffset sweep(2.0, 0.5 * band * kScale);
-    for (const auto& line : feedPolylines(path)) sweep.AddPath(toPath(line), ClipperLib::jtRound, ClipperLib::etOpenRound);
+    // The swept area piece by piece (a short run of the path each): offsetting
+    // one long self-overlapping path makes Clipper resolve every overlap at
+    // once; the difference below unites the pieces anyway (non-zero fill).
     ClipperLib::Paths swept;
-    sweep.Execute(swept, radius * kScale);
+    constexpr std::size_t kPiece = 16;
+    for (const auto& line : feedPolylines(path)) {
+        for (std::size_t from = 0; from + 1 < line.size(); from += kPiece) {
+            const std::size_t to = std::min(line.size(), from + kPiece + 1);
+            ClipperLib::ClipperOffset sweep(2.0, 0.5 * band * kScale);
+            sweep.AddPath(toPath({line.begin() + static_cast<std::ptrdiff_t>(from), line.begin() + static_cast<std::ptrdiff_t>(to)}),
+                          ClipperLib::jtRound, ClipperLib::etOpenRound);
+            ClipperLib::Paths piece;
+            sweep.Execute(piece, radius * kScale);
+            swept.insert(swept.end(), piece.begin(), piece.end());
+        }
+    }
     ClipperLib::Clipper c;
     c.AddPath(toPath(flatten(offsetInward(region, band), 0.5 * band)), ClipperLib::ptSubject, true);
     c.AddPaths(swept, ClipperLib::ptClip, true);
