@@ -1,6 +1,7 @@
 // End-to-end export of a 1,000-unit job: planning (checks, decomposition,
 // tool choice, tool paths), posting G-code, and the whole export with sheet
 // and PDF. Prints G-code bytes and blocks per second and the export time.
+#include "bench_job.h"
 #include "pipeline/export.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
@@ -17,39 +18,7 @@ using namespace taiwa;
 
 namespace {
 
-// 1,000 pockets on a 40 x 25 grid: M4 rectangles with every code mix, and an
-// M2D every fifth unit.
-Job bigJob()
-{
-    Job job;
-    job.name = "bench-1000";
-    job.stock = {0, 0, 40 * 30.0 + 10, 25 * 30.0 + 10, 40};
-    const int codes[][3] = {{1, 1, 0}, {1, 2, 9}, {1, 3, 0}, {6, 1, 0}, {7, 1, 9}, {8, 2, 9}, {9, 1, 0}};
-    for (int i = 0; i < 1000; ++i) {
-        const double x = 10 + (i % 40) * 30.0, y = 10 + (i / 40) * 30.0;
-        if (i % 5 == 4) {
-            M2DPocket m;
-            m.corner = {x, y};
-            m.lengthX = 24;
-            m.lengthY = 20;
-            m.depth = 6;
-            m.theta1 = 10;
-            m.cornerRadius = 4;
-            job.units.push_back({"", m});
-            continue;
-        }
-        const auto* c = codes[i % 7];
-        M4Pocket m;
-        m.corners = {{{x, y}, {x + 24, y}, {x + 24, y + 20}, {x, y + 20}}};
-        m.cornerRadius = 5;
-        m.depth = 8;
-        m.toolUse = c[0];
-        m.wallFinish = c[1];
-        m.pilotHole = c[2];
-        job.units.push_back({"", m});
-    }
-    return job;
-}
+using bench::bigJob;
 
 const std::vector<Tool>& library()
 {
