@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -15,7 +16,10 @@ namespace taiwa {
 
 namespace {
 
-nlohmann::ordered_json point(Point2 p, LengthUnit u) { return nlohmann::ordered_json::array({fromMm(p.x, u), fromMm(p.y, u)}); }
+// Lengths in the file's unit, rounded to 1 nm (no 15.299999999999997).
+double out(double mm, LengthUnit u) { return std::round(fromMm(mm, u) * 1e6) / 1e6; }
+
+nlohmann::ordered_json point(Point2 p, LengthUnit u) { return nlohmann::ordered_json::array({out(p.x, u), out(p.y, u)}); }
 
 nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
 {
@@ -32,13 +36,13 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         if (const Tool* tool = plan.tool(s.tool->toolId)) {
             t["name"] = tool->name;
             t["type"] = toKey(tool->type);
-            t["diameter"] = fromMm(tool->diameter, u);
+            t["diameter"] = out(tool->diameter, u);
         }
         t["reason"] = s.tool->reason;
         j["tool"] = t;
     }
-    j["startDepth"] = fromMm(s.startDepth, u);
-    j["cutDepth"] = fromMm(s.cutDepth, u);
+    j["startDepth"] = out(s.startDepth, u);
+    j["cutDepth"] = out(s.cutDepth, u);
     if (s.kind == StepKind::PilotHole) {
         j["position"] = point(s.position, u);
     }
@@ -46,7 +50,7 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         nlohmann::ordered_json o;
         o["corners"] = nlohmann::ordered_json::array();
         for (const auto& c : s.outline->corners) o["corners"].push_back(point(c, u));
-        o["cornerRadius"] = fromMm(s.outline->cornerRadius, u);
+        o["cornerRadius"] = out(s.outline->cornerRadius, u);
         j["outline"] = o;
     }
     if (s.face) {
@@ -54,16 +58,16 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         f["topEdge"] = {point(s.face->topEdge[0], u), point(s.face->topEdge[1], u)};
         f["floorEdge"] = {point(s.face->floorEdge[0], u), point(s.face->floorEdge[1], u)};
         f["angle"] = s.face->angle;
-        f["scallop"] = fromMm(s.scallop, u);
+        f["scallop"] = out(s.scallop, u);
         j["face"] = f;
     }
     j["wallTaper"] = s.wallTaper;
-    j["wallAllowance"] = fromMm(s.wallAllowance, u);
-    j["floorAllowance"] = fromMm(s.floorAllowance, u);
+    j["wallAllowance"] = out(s.wallAllowance, u);
+    j["floorAllowance"] = out(s.floorAllowance, u);
     if (s.multiIncision) j["multiIncision"] = true;
     if (s.path) {
         const PathLength len = pathLength(*s.path);
-        j["pathLength"] = {{"feed", fromMm(len.feed, u)}, {"rapid", fromMm(len.rapid, u)}};
+        j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};
         j["moves"] = s.path->moves.size();
     }
     if (s.minutes) j["minutes"] = *s.minutes;
