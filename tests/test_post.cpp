@@ -1,20 +1,24 @@
-// Post-processors on hand-made steps: number formatting, modal words,
-// framing of both dialects, inch conversion of coordinates and feeds, arcs,
-// drilling cycles, tool changes, step comments, the block-to-move map, the
-// tape image list.
+// Post-processors on hand-made steps (no path generator involved): number
+// formatting, modal words, the framing of both dialects, inch conversion of
+// coordinates and feeds, arcs, drilling cycles, tool changes, comments, line
+// limits, sequence numbers, the block-to-move map and the tape image list.
+#include "post/dialect.h"
 #include "post/gcode_writer.h"
+#include "post/number_format.h"
 #include "post/post.h"
-#include "support/rs274.h"
+#include "post/tape_image.h"
 
 #include <QtTest>
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 using namespace taiwa;
 
 namespace {
 
+// Cutting data giving n = 1000 rpm at 10 mm and feed = 1000 x 0.05 x 2 = 100 mm/min (drills 50).
 Tool tool(int id, ToolType type, double d)
 {
     Tool t;
@@ -23,11 +27,11 @@ Tool tool(int id, ToolType type, double d)
     t.type = type;
     t.diameter = d;
     t.flutes = 2;
-    t.cutting.push_back({"aluminium-6061", 10.0 * std::numbers::pi, 0.05, 0.5});  // n = 10000 / D: 1000 rpm at 10 mm
+    t.cutting.push_back({"aluminium-6061", 10.0 * std::numbers::pi, 0.05, 0.5});
     return t;
 }
 
-// A pilot hole with T5 (10 mm drill) and a roughing pass with T12 (10 mm end mill).
+// Two pecked holes with T5 (10 mm drill), then a roughing pass with T12 (10 mm end mill).
 std::vector<Step> steps()
 {
     Step drill;
@@ -38,6 +42,8 @@ std::vector<Step> steps()
     Move cycle{MoveKind::DrillCycle, {10, 20, -11}};
     cycle.retractZ = 1;
     cycle.peck = 2;
+    drill.path->moves.push_back(cycle);
+    cycle.end = {30, 20, -11};
     drill.path->moves.push_back(cycle);
 
     Step rough;
@@ -71,6 +77,13 @@ PostOptions options(const std::string& dialect, LengthUnit u = LengthUnit::Milli
 
 QStringList lines(const std::string& nc) { return QString::fromStdString(nc).split('\n', Qt::SkipEmptyParts); }
 
+// The lines strictly between two lines of a tape.
+QStringList between(const QStringList& l, const QString& from, const QString& to)
+{
+    const auto a = l.indexOf(from), b = l.indexOf(to, a + 1);
+    return a < 0 || b < 0 ? QStringList{} : l.mid(a + 1, b - a - 1);
+}
+
 }  // namespace
 
 class TestPost : public QObject {
@@ -79,66 +92,160 @@ private slots:
     void numbersAreFormattedByTheWriter()
     {
         using post::formatNumber;
-        QCOMPARE(formatNumber(12.5, 3, false), std::string("12.5"));
+        QCOMPARE(formatNumber(12.5, 3, false), std::string("12.5"));     // trailing zeros trimmed
         QCOMPARE(formatNumber(10.0, 3, false), std::string("10"));
-        QCOMPARE(formatNumber(10.0, 3, true), std::string("10."));
-        QCOMPARE(formatNumber(-0.0001, 3, false), std::string("0"));
+        QCOMPARE(formatNumber(10.0, 3, true), std::string("10."));       // FANUC: point always
+        QCOMPARE(formatNumber(0.0, 3, true), std::string("0."));
+        QCOMPARE(formatNumber(-0.0001, 3, false), std::string("0"));     // never -0
         QCOMPARE(formatNumber(-0.0004, 3, true), std::string("0."));
-        QCOMPARE(formatNumber(-1.23456, 4, false), std::string("-1.2346"));
+        QCOMPARE(formatNumber(-0.0, 4, false), std::string("0"));
+        QCOMPARE(formatNumber(1.23456, 3, false), std::string("1.235"));  // mm: 3 decimals
+        QCOMPARE(formatNumber(-1.23456, 4, false), std::string("-1.2346")); // inch: 4
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, formatNumber(std::nan(""), 3, false));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, formatNumber(std::numeric_limits<double>::infinity(), 3, false));
+        QCOMPARE(post::formatInteger(3819.6), std::string("3820"));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, post::formatInteger(std::nan("")));
     }
 
+    void aNonNumberNeverReachesTheTape()
+    {
+        auto s = steps();
+        s[1].path->moves[2].end.y = std::nan("");
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(s, library(), options("linuxcnc")));
+    }
+
+    // The whole linuxcnc tape of the hand-made job, reviewed line by line.
     void linuxcncProgram()
     {
         const PostedProgram p = postProcess(steps(), library(), options("linuxcnc"));
-        const QStringList l = lines(p.nc);
-        QVERIFY(l.contains("G17 G21 G40 G49 G80 G90 G94 G64 P0.01"));
-        QVERIFY(l.contains("T5 M6"));
-        QVERIFY(l.contains("G43 H5"));
-        QVERIFY(l.contains("G54 G0 X10 Y20 S1000 M3"));
-        QVERIFY(l.contains("G98 G83 X10 Y20 Z-11 R1 Q2 F50"));  // drill: n x f = 1000 x 0.05
-        QVERIFY(l.contains("G80"));
-        QVERIFY(l.contains("(STEP 2: UNIT 1 M4 ROUGHING I T12)"));
-        QVERIFY(l.contains("G1 Z-3 F50"));      // plunge at half the feed
-        QVERIFY(l.contains("X30 F100"));        // modal G1, only what changes
-        QVERIFY(l.contains("Y40"));
-        QVERIFY(l.contains("G3 X20 Y50 I-10 J0"));
-        QCOMPARE(l.last(), QString("M30"));
-        QVERIFY(!p.nc.starts_with("%"));
-        QVERIFY(p.nc.find("-0 ") == std::string::npos && p.nc.find("-0\n") == std::string::npos);
+        const QStringList expected{
+            "(Program demo)",
+            "(Generated by Taiwa " TAIWA_VERSION "; material aluminium-6061; units mm)",
+            "(T5 D10 tool 5)",
+            "(T12 D10 tool 12)",
+            "G17 G21 G40 G49 G54 G80 G90 G94 G64 P0.01",
+            "(STEP 1: UNIT 1 M4 PILOT HOLE T5)",
+            "G53 G0 Z0",
+            "T5 M6",
+            "G43 H5",
+            "S1000 M3",
+            "G0 G54 X10 Y20",
+            "Z5",
+            "M8",
+            "G98 G83 X10 Y20 Z-11 R1 Q2 F50",  // drill: n x f = 1000 x 0.05
+            "X30 Y20",                         // the same cycle, one more hole
+            "G80",
+            "(STEP 2: UNIT 1 M4 ROUGHING I T12)",
+            "M9",
+            "M5",
+            "G53 G0 Z0",
+            "T12 M6",
+            "G43 H12",
+            "S1000 M3",
+            "G0 G54 X10 Y20",
+            "Z5",
+            "M8",
+            "Z1",
+            "G1 Z-3 F50",          // plunge at half the feed
+            "X30 F100",            // modal G1 and Z, only what changes
+            "Y40",
+            "G3 X20 Y50 I-10 J0",  // I, J from the start point
+            "G0 Z5",
+            "M9",
+            "M5",
+            "G53 G0 Z0",
+            "M30",
+        };
+        QCOMPARE(lines(p.nc), expected);
+        QVERIFY(p.nc.ends_with("M30\n"));
     }
 
     void fanucProgram()
     {
-        const PostedProgram p = postProcess(steps(), library(), options("fanuc"));
+        auto o = options("fanuc");
+        o.programName = "demo (v2) für";
+        const PostedProgram p = postProcess(steps(), library(), o);
         const QStringList l = lines(p.nc);
         QCOMPARE(l.first(), QString("%"));
         QCOMPARE(l.last(), QString("%"));
-        QVERIFY(l[1].startsWith("O1000 (DEMO)"));
+        QCOMPARE(l[1], QString("O1000 (DEMO  V2  F?R)"));  // upper case, no nested parentheses, ASCII
+        QCOMPARE(l[2], QString("(GENERATED BY TAIWA " TAIWA_VERSION "; MATERIAL ALUMINIUM-6061; UNITS MM)"));
         QVERIFY(l.contains("N10 G17 G21 G40 G49 G80 G90"));
-        QVERIFY(p.nc.find(" T5 M6\n") != std::string::npos);
-        QVERIFY(p.nc.find(" G43 H12 Z5. M8\n") != std::string::npos);
-        QVERIFY(p.nc.find(" G91 G28 Z0.\n") != std::string::npos);
-        QVERIFY(p.nc.find(" G98 G83 X10. Y20. Z-11. R1. Q2. F50.\n") != std::string::npos);
-        QVERIFY(p.nc.find("(STEP 1: UNIT 1 M4 PILOT HOLE T5)") != std::string::npos);
-        // Sequence numbers rise by 10 on every block.
+        QVERIFY(l.contains("(STEP 1: UNIT 1 M4 PILOT HOLE T5)"));
+        QCOMPARE(l[l.size() - 2], QString("N310 M30"));
+        // Sequence numbers rise by 10 on every block, and only blocks carry one.
         int last = 0;
         for (const auto& line : l) {
-            if (!line.startsWith('N')) continue;
+            if (line == "%" || line.startsWith('(') || line.startsWith('O')) continue;
+            QVERIFY2(line.startsWith('N'), qPrintable(line));
             const int n = line.mid(1, line.indexOf(' ') - 1).toInt();
             QCOMPARE(n, last + 10);
             last = n;
         }
+        QVERIFY(l.contains("N90 G98 G83 X10. Y20. Z-11. R1. Q2. F50."));
+        QVERIFY(l.contains("N250 G3 X20. Y50. I-10. J0."));
+    }
+
+    void toolChangeSequences()
+    {
+        const QStringList fanuc = lines(postProcess(steps(), library(), options("fanuc")).nc);
+        QCOMPARE(between(fanuc, "(STEP 2: UNIT 1 M4 ROUGHING I T12)", "N210 Z1."),
+                 (QStringList{"N120 M9", "N130 M5", "N140 G91 G28 Z0.", "N150 G90", "N160 T12 M6", "N170 S1000 M3",
+                              "N180 G0 G54 X10. Y20.", "N190 G43 H12 Z5.", "N200 M8"}));
+        const QStringList linuxcnc = lines(postProcess(steps(), library(), options("linuxcnc")).nc);
+        QCOMPARE(between(linuxcnc, "(STEP 2: UNIT 1 M4 ROUGHING I T12)", "Z1"),
+                 (QStringList{"M9", "M5", "G53 G0 Z0", "T12 M6", "G43 H12", "S1000 M3", "G0 G54 X10 Y20", "Z5", "M8"}));
+    }
+
+    void sameToolNextStepRetractsWithoutChange()
+    {
+        auto s = steps();
+        Step again = s[1];
+        again.number = 2;
+        again.path->start = {50, 50, 5};
+        s.push_back(again);
+        const QStringList l = lines(postProcess(s, library(), options("linuxcnc")).nc);
+        QCOMPARE(l.filter("M6").size(), 2);
+        QCOMPARE(between(l, "(STEP 3: UNIT 1 M4 ROUGHING II T12)", "X10 Y20 Z1"), (QStringList{"X50"}));
     }
 
     void inchOutputConvertsLengthsAndFeeds()
     {
-        const PostedProgram p = postProcess(steps(), library(), options("linuxcnc", LengthUnit::Inch));
-        const QStringList l = lines(p.nc);
-        QVERIFY(l.contains("G17 G20 G40 G49 G80 G90 G94 G64 P0.01"));
-        QVERIFY(l.contains("G54 G0 X0.3937 Y0.7874 S1000 M3"));
-        QVERIFY(l.contains("G1 Z-0.1181 F1.97"));  // 50 mm/min
+        const QStringList l = lines(postProcess(steps(), library(), options("linuxcnc", LengthUnit::Inch)).nc);
+        QVERIFY(l.contains("G17 G20 G40 G49 G54 G80 G90 G94 G64 P0.01"));
+        QVERIFY(l.contains("(T5 D0.3937 tool 5)"));
+        QVERIFY(l.contains("G0 G54 X0.3937 Y0.7874"));
+        QVERIFY(l.contains("G98 G83 X0.3937 Y0.7874 Z-0.4331 R0.0394 Q0.0787 F1.97"));  // 50 mm/min
+        QVERIFY(l.contains("G1 Z-0.1181 F1.97"));
+        QVERIFY(l.contains("X1.1811 F3.94"));  // 100 mm/min
+        QVERIFY(l.contains("G3 X0.7874 Y1.9685 I-0.3937 J0"));
+        QVERIFY(l.contains("S1000 M3"));  // a speed is not a length
+    }
+
+    void arcsFullPartialAndHelical()
+    {
+        auto s = steps();
+        auto& m = s[1].path->moves;
+        m.insert(m.end() - 1, {MoveKind::ArcCW, {20, 50, -3}, {20, 45}});    // full circle: end = start
+        m.insert(m.end() - 1, {MoveKind::ArcCCW, {25, 45, -4}, {20, 45}});   // quarter helix down 1 mm
+        const QStringList l = lines(postProcess(s, library(), options("linuxcnc")).nc);
+        const auto i = l.indexOf("G3 X20 Y50 I-10 J0");
+        QVERIFY(i > 0);
+        QCOMPARE(l[i + 1], QString("G2 X20 Y50 I0 J-5"));        // X, Y stated even when unchanged
+        QCOMPARE(l[i + 2], QString("G3 X25 Y45 Z-4 I0 J-5"));    // Z only when it changes
+    }
+
+    void drillingWithAndWithoutPeck()
+    {
+        auto s = steps();
+        auto& m = s[0].path->moves;
+        m[1].peck = 0;  // second hole straight: a different cycle, stated in full
+        Move third = m[1];
+        third.end = {50, 20, -11};
+        m.push_back(third);
+        const QStringList l = lines(postProcess(s, library(), options("linuxcnc")).nc);
+        QCOMPARE(between(l, "M8", "(STEP 2: UNIT 1 M4 ROUGHING I T12)"),
+                 (QStringList{"G98 G83 X10 Y20 Z-11 R1 Q2 F50", "G81 X30 Y20 Z-11 R1", "X50 Y20", "G80"}));
     }
 
     void everyLineKnowsItsSource()
@@ -146,45 +253,96 @@ private slots:
         const PostedProgram p = postProcess(steps(), library(), options("linuxcnc"));
         const QStringList l = lines(p.nc);
         QCOMPARE(p.lines.size(), static_cast<std::size_t>(l.size()));
-        const int arc = static_cast<int>(l.indexOf("G3 X20 Y50 I-10 J0"));
-        QCOMPARE(p.lines[static_cast<std::size_t>(arc)].step, 1);
-        QCOMPARE(p.lines[static_cast<std::size_t>(arc)].move, 4);
-        QCOMPARE(p.lines[0].step, -1);
+        const auto at = [&](const char* block) { return p.lines.at(static_cast<std::size_t>(l.indexOf(block))); };
+        QCOMPARE(at("G3 X20 Y50 I-10 J0").step, 1);
+        QCOMPARE(at("G3 X20 Y50 I-10 J0").move, 4);
+        QCOMPARE(at("X30 F100").move, 2);
+        QCOMPARE(at("X30 Y20").step, 0);  // the second hole
+        QCOMPARE(at("X30 Y20").move, 1);
+        QCOMPARE(at("T12 M6").step, 1);   // frame of step 2
+        QCOMPARE(at("T12 M6").move, -1);
+        QCOMPARE(p.lines.front().step, -1);  // program header
+        QCOMPARE(p.lines.back().step, -1);   // M30
     }
 
     void tapeImageCountsBlocksAndTape()
     {
         const PostedProgram p = postProcess(steps(), library(), options("fanuc"));
         const QString tape = QString::fromStdString(p.tapeImage);
-        // Blocks: every line but comments and the '%' framing (the O-number line is a block).
-        const int blocks = static_cast<int>(lines(p.nc).filter(QRegularExpression("^[^(%]")).size());
-        QVERIFY2(tape.contains(QString("blocks %1 ").arg(blocks)), qPrintable(tape.right(200)));
-        QVERIFY(tape.contains(QString("characters %1 ").arg(p.nc.size())));
-        QVERIFY(tape.contains("     1  %"));
+        // 39 lines: '%', O-number, 3 header comments, 2 step comments, 31 numbered blocks, '%'.
+        // Blocks are the lines that are neither comments nor '%': the O line and N10..N310.
+        const auto t = post::measureTape(p.nc);
+        QCOMPARE(t.lines, std::size_t(39));
+        QCOMPARE(t.blocks, std::size_t(32));
+        QCOMPARE(t.characters, p.nc.size());  // LF is the end-of-block character
+        QVERIFY(std::abs(t.metres() - static_cast<double>(p.nc.size()) * 0.00254) < 1e-12);
+        QVERIFY2(tape.contains(QString("blocks 32   lines 39   characters %1 (EOB included)   tape length %2 m")
+                                   .arg(p.nc.size())
+                                   .arg(static_cast<double>(p.nc.size()) * 0.00254, 0, 'f', 2)),
+                 qPrintable(tape.right(200)));
+        QVERIFY(tape.contains("\n     10      40  T5 M6\n"));  // listing line 10 is block N40
+        QVERIFY(tape.contains("\n      1          %\n"));
     }
 
-    // Every linuxcnc program this test writes must satisfy LinuxCNC's own
-    // interpreter, and what it reads back is our path.
-    void linuxcncOutputPassesRs274()
+    void sequenceNumbersWrapAfterN99999()
     {
-        for (const auto units : {LengthUnit::Millimetre, LengthUnit::Inch}) {
-            const PostedProgram p = postProcess(steps(), library(), options("linuxcnc", units));
-            const auto r = test::runRs274(p.nc);
-            QVERIFY2(r.ok, qPrintable(r.errors));
-            const double k = units == LengthUnit::Inch ? 25.4 : 1.0;
-            const auto& last = r.moves.back();
-            const auto arc = std::find_if(r.moves.begin(), r.moves.end(), [](const test::CanonMove& m) { return m.kind == test::CanonMove::Arc; });
-            QVERIFY(arc != r.moves.end());
-            QVERIFY(std::abs(arc->end.x * k - 20) < 2e-3 && std::abs(arc->end.y * k - 50) < 2e-3 && arc->rotation == 1);
-            QVERIFY(std::abs(arc->centre.x * k - 20) < 2e-3 && std::abs(arc->centre.y * k - 40) < 2e-3);
-            QVERIFY(last.kind == test::CanonMove::Traverse);
-        }
+        auto s = steps();
+        auto& m = s[1].path->moves;
+        for (int i = 0; i < 10000; ++i) m.insert(m.end() - 1, {MoveKind::Feed, {20.0 + (i % 2), 50, -3}});
+        const QStringList l = lines(postProcess(s, library(), options("fanuc")).nc);
+        QVERIFY(l.contains(QRegularExpression("N99990 .*")));
+        const auto wrap = l.indexOf(QRegularExpression("N99990 .*"));
+        QVERIFY(l[wrap + 1].startsWith("N10 "));
     }
 
-    void unknownDialectAndMissingToolAreRefused()
+    void commentsKeepWithinTheLine()
+    {
+        auto o = options("fanuc");
+        o.programName = std::string(300, 'x');
+        const PostedProgram p = postProcess(steps(), library(), o);
+        for (const auto& line : lines(p.nc)) QVERIFY2(line.size() <= 128, qPrintable(line));
+        QVERIFY(lines(p.nc)[1].startsWith("O1000 (XXXXXXXX"));
+    }
+
+    void writerDwellAndOrder()
+    {
+        post::GCodeWriter fanuc(post::fanucDialect(), LengthUnit::Millimetre);
+        fanuc.toolChange(3);
+        fanuc.dwell(1.5);
+        QVERIFY(fanuc.text().ends_with("G4 X1.5\n"));
+        post::GCodeWriter lcnc(post::linuxcncDialect(), LengthUnit::Millimetre);
+        lcnc.toolChange(3);
+        lcnc.dwell(1.5);
+        QVERIFY(lcnc.text().ends_with("G4 P1.5\n"));
+        // A cut from an unknown position is a bug of the caller, refused.
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, lcnc.feed({1, 2, 3}, 100));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, lcnc.arc({1, 2, 3}, {0, 0}, true, 100));
+    }
+
+    // LinuxCNC's G98 returns to the higher of the initial level and R: the
+    // writer's idea of Z after a cycle started below R is R.
+    void cycleStartedBelowRLeavesToolAtR()
+    {
+        post::GCodeWriter w(post::linuxcncDialect(), LengthUnit::Millimetre);
+        w.toolChange(1);
+        w.rapid({0, 0, 0.5});
+        w.drillCycle({{5, 5, -3}, 1, 0, 100});
+        w.rapid({5, 5, 1});  // already there
+        w.rapid({6, 5, 1});
+        QVERIFY2(w.text().ends_with("G98 G81 X5 Y5 Z-3 R1 F100\nG80\nG0 X6\n"), w.text().c_str());
+    }
+
+    void refusals()
     {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), library(), options("heidenhain")));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), {library()[0]}, options("fanuc")));
+        auto o = options("fanuc");
+        o.material = "titanium";  // no cutting data
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), library(), o));
+        auto s = steps();
+        s[0].path.reset();
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(s, library(), options("fanuc")));
+        QCOMPARE(dialectNames(), (std::vector<std::string>{"fanuc", "linuxcnc"}));
         QVERIFY(isDialect("fanuc") && isDialect("linuxcnc") && !isDialect("mazatrol"));
     }
 };

@@ -47,7 +47,68 @@ private slots:
             QVERIFY2(html.contains(row), qPrintable(row));
         }
         for (const auto& t : plan.tools) QVERIFY(html.contains(QString::fromStdString(t.holder)));
-        QVERIFY(html.contains(QString::fromStdString(fmt::format("{:.1f} min including {} tool changes", plan.totalMinutes, plan.toolChanges))));
+        double cutting = 0;
+        for (const auto& s : plan.steps) cutting += *s.minutes;
+        QVERIFY(html.contains(QString::fromStdString(fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all",
+                                                                 cutting, plan.toolChanges, plan.totalMinutes))));
+    }
+
+    void handBuiltPlanShowsEveryFieldEscaped()
+    {
+        Plan plan;
+        plan.job.name = "Jig <rev B> & spare";
+        plan.mmJob = plan.job;
+        plan.mmJob.material = "steel-s45c";
+        plan.mmJob.stock.width = 120;
+        plan.mmJob.stock.length = 80;
+        plan.mmJob.stock.height = 25;
+        const auto library = defaultToolLibrary();
+        Tool t = *std::find_if(library.begin(), library.end(), [](const Tool& x) { return x.id == 27; });  // 10 mm, 3 flutes
+        t.name = "End mill <10> & co";
+        t.holder = "ER32 \"short\"";
+        t.usedMinutes = 30;
+        plan.tools = {t};
+        Step s;
+        s.unit = 2;
+        s.module = "M4";
+        s.kind = StepKind::Roughing;
+        s.number = 2;
+        s.startDepth = 4;
+        s.cutDepth = 7.5;
+        s.wallAllowance = 0.3;
+        s.floorAllowance = 0.2;
+        s.tool = ToolChoice{27, "why"};
+        ToolPath path;
+        path.start = {0, 0, 5};
+        path.moves = {{MoveKind::Feed, {0, 0, -2}}, {MoveKind::Feed, {30, 0, -2}}, {MoveKind::Rapid, {30, 0, 5}}};
+        s.path = path;
+        s.minutes = 12.5;
+        plan.steps = {s};
+        plan.notes = {"T27 <worn> & chipped"};
+        plan.toolChanges = 1;
+        plan.totalMinutes = 12.63;
+        SheetOptions o;
+        o.jobFile = "jig&fixture.taiwa";
+        o.date = "2026-11-23";
+        o.programNumber = 1234;
+        o.dialect = "fanuc";
+        const QString html = QString::fromStdString(sheetHtml(plan, o));
+        for (const char* text : {"Jig &lt;rev B&gt; &amp; spare", "jig&amp;fixture.taiwa", "2026-11-23", "O1234", "fanuc",
+                                 "steel-s45c", "120.000 x 80.000 x 25.000 mm", "G54",
+                                 "origin X0 Y0 at the stock's front-left corner, Z0 on the top face",
+                                 "End mill &lt;10&gt; &amp; co", "ER32 &quot;short&quot;", "T27 &lt;worn&gt; &amp; chipped",
+                                 "12.5 min of machining, 1 tool changes, 12.6 min in all"})
+            QVERIFY2(html.contains(text), text);
+        // The row: no. 1, unit 3, T/H 27, 3820 rpm (1000 x 120 / (pi x 10)), 573 mm/min (x 0.05 x 3 flutes),
+        // depths 4 to 7.5, allowances, 37 mm of cutting path (7 down + 30 across), 12.5 min.
+        QVERIFY2(html.contains("<tr><td class=n>1</td><td class=n>3</td><td>M4</td><td>Roughing II</td><td class=n>27</td>"
+                               "<td class=n>27</td><td>End mill &lt;10&gt; &amp; co</td><td class=n>3820</td>"
+                               "<td class=n>573</td><td class=n>4.000</td><td class=n>7.500</td><td class=n>0.300</td>"
+                               "<td class=n>0.200</td><td class=n>37.000</td><td class=n>12.50</td></tr>"),
+                 qPrintable(html));
+        // The tool list: life 120, used 30, left 90.
+        QVERIFY(html.contains("<td class=n>120</td><td class=n>30.0</td><td class=n>90.0</td>"));
+        for (const char* raw : {"<rev B>", "<10>", "<worn>", "& spare", "& co"}) QVERIFY2(!html.contains(raw), raw);
     }
 
     void inchSheetShowsInches()
@@ -76,6 +137,28 @@ private slots:
         const QString words = QString::fromUtf8(text.readAllStandardOutput());
         QVERIFY2(words.contains("Machining instruction sheet") && words.contains("Roughing I") && words.contains("Pilot hole"),
                  qPrintable(words.left(400)));
+    }
+
+    void longSheetsRepeatTheTableHeaderOnEveryPage()
+    {
+        Plan plan = samplePlan("Long");
+        const auto one = plan.steps;
+        for (int copy = 0; copy < 15; ++copy) plan.steps.insert(plan.steps.end(), one.begin(), one.end());
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("long.pdf");
+        QVERIFY(!writeSheetPdf(plan, {}, pdf.toStdString()));
+        QProcess info;
+        info.start("pdfinfo", {pdf});
+        QVERIFY(info.waitForFinished());
+        const auto pages = QRegularExpression("Pages:\\s+(\\d+)").match(QString::fromUtf8(info.readAllStandardOutput()));
+        QVERIFY(pages.hasMatch() && pages.captured(1).toInt() >= 2);
+        for (int page = 1; page <= pages.captured(1).toInt(); ++page) {
+            QProcess text;
+            text.start("pdftotext", {"-f", QString::number(page), "-l", QString::number(page), pdf, "-"});
+            QVERIFY(text.waitForFinished());
+            const QString words = QString::fromUtf8(text.readAllStandardOutput());
+            QVERIFY2(words.contains("S rpm") && words.contains(QString("page %1").arg(page)), qPrintable(words.left(300)));
+        }
     }
 };
 

@@ -6,6 +6,7 @@
 #include "tools/cutting.h"
 #include "tools/tool_library.h"
 
+#include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -31,6 +32,11 @@ private slots:
             QVERIFY(std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.type == ToolType::TaperEndMill && t.taperAngle == angle; }));
         std::set<int> ids;
         for (const auto& t : tools) {
+            QVERIFY2(t.lifeMinutes >= 60 && t.lifeMinutes <= 240 && t.usedMinutes == 0, t.name.c_str());
+            QVERIFY2(t.stickout > t.fluteLength && !t.holder.empty(), t.name.c_str());
+            if (t.type == ToolType::FlatEndMill)
+                QVERIFY2(t.fluteLength >= 2 * t.diameter && t.fluteLength <= 3 * t.diameter && t.flutes >= 2 && t.flutes <= 4,
+                         t.name.c_str());
             QVERIFY2(ids.insert(t.id).second, "duplicate tool id");
             for (const auto& m : TechnologyTable::builtIn().materials())
                 QVERIFY2(t.cuttingFor(m.id), qPrintable(QString::fromStdString(t.name + " lacks " + m.id)));
@@ -55,6 +61,8 @@ private slots:
             QVERIFY(id && *id > 60);
             QVERIFY(lib->remove(21, error));
             QVERIFY(lib->addUsage(27, 12.5, error));
+            QVERIFY(!lib->remove(99, error));
+            QCOMPARE(error, path + " has no tool T99");
         }
         auto again = ToolLibrary::open(path, error);
         const auto tools = again->tools(error);
@@ -96,6 +104,64 @@ private slots:
         QCOMPARE(test::readFile(path), before);
     }
 
+    void versionOneLibraryIsUpgradedInPlace()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("v1.sqlite").toStdString();
+        sqlite3* db = nullptr;
+        sqlite3_open(path.c_str(), &db);
+        // The version 1 schema, as Taiwa 0.1 wrote it, with one shop tool.
+        QCOMPARE(sqlite3_exec(db, R"sql(
+            CREATE TABLE tools (id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT NULL, diameter REAL NOT NULL,
+              corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
+              flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
+              flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0);
+            CREATE TABLE cutting_data (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
+              surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL, PRIMARY KEY (tool_id, material));
+            INSERT INTO tools VALUES (7, 'Shop end mill 9 mm', 'flat_end_mill', 9, 0, 0, 118, 20, 40, 'ER25', 3, 100, 12);
+            INSERT INTO cutting_data VALUES (7, 'pom', 250, 0.09, 0.4);
+            PRAGMA user_version = 1;)sql", nullptr, nullptr, nullptr), SQLITE_OK);
+        sqlite3_close(db);
+        std::string error;
+        for (int open = 0; open < 2; ++open) {  // the second open finds version 2 and changes nothing
+            auto lib = ToolLibrary::open(path, error);
+            QVERIFY2(lib, error.c_str());
+            const auto tools = lib->tools(error);
+            QVERIFY2(tools, error.c_str());
+            QCOMPARE(tools->size(), std::size_t(1));
+            const Tool& t = tools->front();
+            QCOMPARE(t.id, 7);
+            QCOMPARE(t.usedMinutes, 12.0);
+            QVERIFY(t.centreCutting);  // what every end mill of a version 1 library was taken to be
+            QCOMPARE(t.cutting, (std::vector<CuttingData>{{"pom", 250, 0.09, 0.4}}));
+        }
+        sqlite3_open(path.c_str(), &db);
+        sqlite3_stmt* version = nullptr;
+        sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
+        QCOMPARE(sqlite3_step(version), SQLITE_ROW);
+        QCOMPARE(sqlite3_column_int(version, 0), 2);
+        sqlite3_finalize(version);
+        sqlite3_close(db);
+    }
+
+    void centreCuttingIsStored()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("tools.sqlite").toStdString();
+        std::string error;
+        auto lib = ToolLibrary::open(path, error);
+        QVERIFY(lib);
+        Tool t = defaultToolLibrary()[20];
+        t.id = 0;
+        t.centreCutting = false;
+        const auto id = lib->save(t, error);
+        QVERIFY(id);
+        const auto tools = lib->tools(error);
+        QVERIFY(!tools->back().centreCutting && tools->back().id == *id);
+        const auto face = std::find_if(tools->begin(), tools->end(), [](const Tool& x) { return x.type == ToolType::FaceMill; });
+        QVERIFY(!face->centreCutting);
+    }
+
     void lockedLibraryIsReportedNotWaitedOnForever()
     {
         QTemporaryDir dir;
@@ -113,6 +179,37 @@ private slots:
         QVERIFY(lib->addUsage(27, 1, error));
     }
 
+    void lockedOnOpenIsReportedAfterTheBusyTimeout()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("tools.sqlite").toStdString();
+        std::string error;
+        QVERIFY(ToolLibrary::open(path, error));
+        sqlite3* other = nullptr;
+        sqlite3_open(path.c_str(), &other);
+        QCOMPARE(sqlite3_exec(other, "BEGIN EXCLUSIVE; UPDATE tools SET used_minutes = 1", nullptr, nullptr, nullptr), SQLITE_OK);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(!ToolLibrary::open(path, error));
+        QVERIFY(clock.elapsed() >= 1400 && clock.elapsed() < 10000);
+        QVERIFY2(QString::fromStdString(error).contains(QString::fromStdString(path + " is locked by another program")), error.c_str());
+        sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
+        sqlite3_close(other);
+    }
+
+    void unwritableFolderIsReported()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath("plain-file");
+        test::writeFile(file, "not a folder");
+        const std::string path = (file + "/tools.sqlite").toStdString();  // a folder that cannot exist
+        std::string error;
+        QVERIFY(!ToolLibrary::open(path, error));
+        QVERIFY2(QString::fromStdString(error).contains(QString::fromStdString("folder of the tool library " + path)),
+                 error.c_str());
+        QCOMPARE(test::readFile(file), std::string("not a folder"));
+    }
+
     void speedsAndFeedsFromCuttingData()
     {
         Tool t;
@@ -128,6 +225,15 @@ private slots:
         QVERIFY(!speedsFeeds(t, "pom"));
         t.diameter = 1;                        // 38197 rpm clamped to the spindle's 12000
         QCOMPARE(speedsFeeds(t, "steel-s45c")->rpm, 12000.0);
+        QCOMPARE(speedsFeeds(t, "steel-s45c", 24000, 1500)->feed, 1500.0);  // 24000 x 0.05 x 3 = 3600 clamped
+        Tool drill;
+        drill.type = ToolType::Drill;
+        drill.diameter = 10.2;
+        drill.cutting = {{"aluminium-6061", 120, 0.2, 1.0}};
+        const auto d = speedsFeeds(drill, "aluminium-6061");
+        QCOMPARE(d->rpm, 3745.0);              // 1000 x 120 / (pi x 10.2) = 3744.8
+        QCOMPARE(d->feed, 749.0);              // 3745 x 0.2 per revolution, not per flute
+        QCOMPARE(d->plungeFeed, 749.0);
     }
 };
 

@@ -1,73 +1,58 @@
-// CL creation on hand-made steps: every step kind's path starts and ends at
-// safe height, never takes the tool centre outside the outline shrunk by the
-// tool radius, clears every roughing layer completely (Clipper), mills
-// climb, keeps arcs as arcs, and estimates time as a hand computation does.
-#include "paths/cl.h"
-#include "paths/contour.h"
+// Pocket tool paths on hand-made steps: roughing and floor finishing start
+// and end at safe height, keep the tool centre inside the outline shrunk by
+// the tool radius (1 µm, arcs sampled), cut equal layers of at most gamma x D
+// ending exactly at the cut depth, clear every layer completely (Clipper),
+// mill climb, enter through the pilot hole or on a ramp, and keep the
+// outermost ring exactly on the offset with its corner arcs.
 #include "paths/coverage.h"
-#include "support/pocket_geometry.h"
+#include "test_toolpaths_support.h"
 
 #include <QtTest>
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 using namespace taiwa;
+using namespace taiwa::test;
+
+Q_DECLARE_METATYPE(taiwa::Quad)
 
 namespace {
 
-Tool endMill(double d)
+const PathParameters kParams{};
+
+// The distinct depths (negative Z) at which the path cuts in the plane:
+// the ends of horizontal cutting moves.
+std::vector<double> layerZs(const ToolPath& p)
 {
-    Tool t;
-    t.id = 1;
-    t.type = ToolType::FlatEndMill;
-    t.diameter = d;
-    t.fluteLength = 3 * d;
-    return t;
+    std::set<double> zs;
+    for (const auto& q : cuttingPieces(p))
+        if (q.move.feed == FeedKind::Cut && std::abs(q.from.z - q.move.end.z) < 1e-12) zs.insert(q.move.end.z);
+    return {zs.begin(), zs.end()};
 }
 
-Step pocketStep(StepKind kind, Quad outline, double start, double cut)
+// The part of the path that cuts at height z.
+ToolPath atHeight(const ToolPath& p, double z)
 {
-    Step s;
-    s.kind = kind;
-    s.outline = outline;
-    s.startDepth = start;
-    s.cutDepth = cut;
-    s.position = centroid(outline.corners);
-    return s;
-}
-
-Quad rectangle(double w, double h, double r) { return {{{{0, 0}, {w, 0}, {w, h}, {0, h}}}, r}; }
-
-// All XY points the tool centre passes through while feeding (arcs sampled).
-std::vector<Point3> feedPoints(const ToolPath& p)
-{
-    std::vector<Point3> pts;
-    Point3 at = p.start;
-    for (const auto& m : p.moves) {
-        if (m.kind == MoveKind::Feed) pts.push_back(m.end);
-        if (m.kind == MoveKind::ArcCW || m.kind == MoveKind::ArcCCW) {
-            const Point2 a{at.x - m.centre.x, at.y - m.centre.y}, e{m.end.x - m.centre.x, m.end.y - m.centre.y};
-            double sweep = std::atan2(cross(a, e), dot(a, e));
-            if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-            if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-            for (int i = 1; i <= 32; ++i) {
-                const double ang = std::atan2(a.y, a.x) + sweep * i / 32;
-                pts.push_back({m.centre.x + length(a) * std::cos(ang), m.centre.y + length(a) * std::sin(ang),
-                               at.z + (m.end.z - at.z) * i / 32});
-            }
-        }
-        if (m.kind != MoveKind::DrillCycle) at = m.end;
+    ToolPath layer{p.start, {}};
+    for (const auto& q : cuttingPieces(p)) {
+        if (std::abs(q.move.end.z - z) > 1e-9 || std::abs(q.from.z - z) > 1e-9) continue;
+        if (layer.moves.empty() || !(layer.moves.back().end == q.from)) layer.moves.push_back({MoveKind::Rapid, q.from});
+        layer.moves.push_back(q.move);
     }
-    return pts;
+    return layer;
 }
 
-double worstOutside(const Quad& outline, double radius, const ToolPath& p)
+// No rapid ends below the height where the step's material begins.
+bool rapidsStayInAir(const ToolPath& p, const Step& s)
 {
-    double worst = -1e9;
-    for (const auto& q : feedPoints(p)) worst = std::max(worst, test::signedDistance(outline, {q.x, q.y}) + radius);
-    return worst;
+    return std::all_of(p.moves.begin(), p.moves.end(), [&](const Move& m) {
+        return m.kind != MoveKind::Rapid || m.end.z >= -s.startDepth + kParams.clearance - 1e-12;
+    });
 }
+
+Quad parallelogram60() { return {{{{0, 0}, {80, 0}, {100, 20 * std::sqrt(3.0)}, {20, 20 * std::sqrt(3.0)}}}, 4.0}; }
 
 }  // namespace
 
@@ -78,162 +63,181 @@ private slots:
     {
         QTest::addColumn<Quad>("outline");
         QTest::addColumn<double>("diameter");
-        QTest::newRow("rectangle") << rectangle(100, 60, 5.7) << 10.0;
-        QTest::newRow("thin slot") << rectangle(100, 12, 3) << 6.0;
-        QTest::newRow("tight corners r = R") << rectangle(40, 30, 3) << 6.0;
-        QTest::newRow("parallelogram 60 deg")
-            << Quad{{{{0, 0}, {80, 0}, {80 + 40 * std::cos(std::numbers::pi / 3), 40 * std::sin(std::numbers::pi / 3)},
-                      {40 * std::cos(std::numbers::pi / 3), 40 * std::sin(std::numbers::pi / 3)}}}, 4.0}
-            << 8.0;
+        QTest::addColumn<double>("start");
+        QTest::newRow("rectangle") << rectangle(100, 60, 5.7) << 10.0 << 0.0;
+        QTest::newRow("thin 12 x 100") << rectangle(12, 100, 3) << 6.0 << 0.0;
+        QTest::newRow("slot a hair wider than the tool") << rectangle(100, 10.2, 5) << 10.0 << 0.0;
+        QTest::newRow("square, tight corners r = R") << rectangle(40, 40, 3) << 6.0 << 0.0;
+        QTest::newRow("parallelogram 60 deg") << parallelogram60() << 8.0 << 0.0;
+        QTest::newRow("irregular convex quad") << Quad{{{{0, 0}, {70, 8}, {62, 50}, {9, 41}}}, 3.5} << 6.0 << 0.0;
+        QTest::newRow("M2D layer below air") << rectangle(90, 50, 4) << 8.0 << 4.2;
     }
     void roughingStaysInsideAndClearsEveryLayer()
     {
         QFETCH(Quad, outline);
         QFETCH(double, diameter);
-        const Tool tool = endMill(diameter);
+        QFETCH(double, start);
+        const Tool tool = makeTool(ToolType::FlatEndMill, diameter);
         TechnologyData tech;
         tech.gamma = 0.5;
-        const Step s = pocketStep(StepKind::Roughing, outline, 0, 11.8);
-        const ToolPath p = makeToolPath(s, tool, tech, {});
-        QCOMPARE(p.start.z, 5.0);
-        QCOMPARE(p.moves.back().end.z, 5.0);
-        QVERIFY(worstOutside(outline, tool.radius(), p) <= 1e-6);
-        // Layers: equal, at most gamma x D, the last one at the cut depth.
-        std::vector<double> zs;
-        for (const auto& q : feedPoints(p))
-            if (std::none_of(zs.begin(), zs.end(), [&](double z) { return std::abs(z - q.z) < 1e-9; }) && q.z < 0) zs.push_back(q.z);
-        const double lowest = *std::min_element(zs.begin(), zs.end());
-        QVERIFY(std::abs(lowest + 11.8) < 1e-9);
-        const int layers = static_cast<int>(std::ceil(11.8 / (0.5 * diameter) - 1e-9));
-        for (int k = 1; k <= layers; ++k) {
-            const double z = -11.8 * k / layers;
-            QVERIFY2(std::any_of(zs.begin(), zs.end(), [&](double v) { return std::abs(v - z) < 1e-9; }), "layer missing");
-            // The part of the path at this layer's height clears the whole outline.
-            ToolPath layer{p.start, {}};
-            for (const auto& m : p.moves)
-                if (m.kind != MoveKind::Rapid && std::abs(m.end.z - z) < 1e-9) layer.moves.push_back(m);
-            QVERIFY2(paths::uncutArea(outline, layer, tool.radius()) < 1e-3,
-                     qPrintable(QString("layer %1 leaves %2 mm2").arg(k).arg(paths::uncutArea(outline, layer, tool.radius()))));
+        const double cut = 11.8;
+        const Step s = makePocketStep(StepKind::Roughing, outline, start, cut);
+        const ToolPath p = makeToolPath(s, tool, tech, kParams);
+        QCOMPARE(p.start.z, kParams.safeZ);
+        QCOMPARE(endOf(p).z, kParams.safeZ);
+        QCOMPARE(p.moves.front().kind, MoveKind::Rapid);
+        QCOMPARE(p.moves.front().end.z, -start + kParams.clearance);  // air above the start depth
+        QVERIFY(rapidsStayInAir(p, s));
+        QVERIFY2(worstOutside(outline, tool.radius(), p) <= 1e-6, qPrintable(QString::number(worstOutside(outline, tool.radius(), p))));
+        // Feeds never start above the clearance plane of the step's material.
+        for (const auto& q : feedPoints(p)) QVERIFY(q.z <= -start + kParams.clearance + 1e-12);
+
+        // Equal layers of at most gamma x D from the start depth, the last
+        // exactly at the cut depth.
+        const auto zs = layerZs(p);
+        const int n = static_cast<int>(std::ceil((cut - start) / (tech.gamma * diameter) - 1e-9));
+        QCOMPARE(static_cast<int>(zs.size()), n);
+        QCOMPARE(zs.front(), -cut);
+        double above = -start;
+        for (auto it = zs.rbegin(); it != zs.rend(); ++it) {
+            QVERIFY(above - *it <= tech.gamma * diameter + 1e-9);
+            QVERIFY(std::abs((above - *it) - (cut - start) / n) < 1e-9);
+            above = *it;
+            // Every layer clears the whole outline (within 1 µm of it).
+            const double left = paths::uncutArea(outline, atHeight(p, *it), tool.radius());
+            QVERIFY2(left < 1e-3, qPrintable(QString("layer at %1 leaves %2 mm2").arg(*it).arg(left)));
         }
+    }
+
+    // The proof is not vacuous: leaving out the last ring leaves stock.
+    void coverageProofDetectsUncutStock()
+    {
+        const Quad outline = rectangle(60, 40, 4);
+        const ToolPath p = makeToolPath(makePocketStep(StepKind::Roughing, outline, 0, 2), makeTool(ToolType::FlatEndMill, 8),
+                                        TechnologyData{}, kParams);
+        ToolPath layer = atHeight(p, -2);
+        QVERIFY(paths::uncutArea(outline, layer, 4) < 1e-3);
+        QVERIFY(paths::uncutArea(outline, layer, 3.5) > 1.0);  // a smaller tool on the same path leaves the walls
+        layer.moves.resize(layer.moves.size() / 2);
+        QVERIFY(paths::uncutArea(outline, layer, 4) > 1.0);
     }
 
     void outermostRingIsExactlyTheOffsetWithCornerArcs()
     {
         const Quad outline = rectangle(100, 60, 5.7);
-        const ToolPath p = makeToolPath(pocketStep(StepKind::Roughing, outline, 0, 3), endMill(10), TechnologyData{}, {});
-        QVERIFY(std::abs(worstOutside(outline, 5, p)) < 1e-9);  // it touches the outline shrunk by R
+        const ToolPath p = makeToolPath(makePocketStep(StepKind::Roughing, outline, 0, 3), makeTool(ToolType::FlatEndMill, 10),
+                                        TechnologyData{}, kParams);
+        QVERIFY(std::abs(worstOutside(outline, 5, p)) < 1e-9);  // touches the outline shrunk by R
         int cornerArcs = 0;
-        Point3 at = p.start;
-        for (const auto& m : p.moves) {
-            if (m.kind == MoveKind::ArcCCW && std::abs(distance({at.x, at.y}, m.centre) - 0.7) < 1e-9) ++cornerArcs;
-            if (m.kind != MoveKind::DrillCycle) at = m.end;
+        for (const auto& q : cuttingPieces(p))
+            if (q.move.kind == MoveKind::ArcCCW && std::abs(distance({q.from.x, q.from.y}, q.move.centre) - 0.7) < 1e-9 &&
+                std::abs(arcSweep(q.from, q.move) - std::numbers::pi / 2) < 1e-9)
+                ++cornerArcs;
+        QCOMPARE(cornerArcs, 4);  // r - R = 0.7, quarter arcs, not chords
+    }
+
+    // With an M3 spindle the wall must be on the tool's right: the ring
+    // along the wall runs counter-clockwise; conventional milling reverses it.
+    void roughingIsClimbMilled()
+    {
+        const Quad outline = parallelogram60();
+        const Step s = makePocketStep(StepKind::Roughing, outline, 0, 4);
+        const Tool tool = makeTool(ToolType::FlatEndMill, 8);
+        const WallSides climb = wallSides(makeToolPath(s, tool, TechnologyData{}, kParams), outline, 4);
+        QVERIFY(climb.right >= 4);  // four sides (r = R: sharp centre corners)
+        QCOMPARE(climb.left, 0);
+        PathParameters conventional;
+        conventional.climb = false;
+        const WallSides up = wallSides(makeToolPath(s, tool, TechnologyData{}, conventional), outline, 4);
+        QVERIFY(up.left >= 4);
+        QCOMPARE(up.right, 0);
+    }
+
+    void roughingPlungesIntoThePilotHoleOtherwiseRamps()
+    {
+        const Quad outline = rectangle(80, 50, 4);
+        const Tool tool = makeTool(ToolType::FlatEndMill, 8);
+        Step s = makePocketStep(StepKind::Roughing, outline, 0, 9);
+        s.holeDiameter = 8;
+        const auto count = [](const ToolPath& p, FeedKind k) {
+            return std::count_if(p.moves.begin(), p.moves.end(), [&](const Move& m) { return isCut(m) && m.feed == k; });
+        };
+        ToolPath p = makeToolPath(s, tool, TechnologyData{}, kParams);
+        QCOMPARE(count(p, FeedKind::Ramp), 0);
+        for (const auto& q : cuttingPieces(p))
+            if (q.move.feed == FeedKind::Plunge) {
+                QCOMPARE(q.move.end.x, s.position.x);
+                QCOMPARE(q.move.end.y, s.position.y);
+            }
+        QCOMPARE(count(p, FeedKind::Plunge), 3);  // one per layer (9 mm, 4 mm layers)
+
+        // A hole narrower than the tool, or none: a helix at the ramp angle.
+        for (const double hole : {6.0, 0.0}) {
+            s.holeDiameter = hole;
+            p = makeToolPath(s, tool, TechnologyData{}, kParams);
+            QCOMPARE(count(p, FeedKind::Plunge), 0);
+            QVERIFY(count(p, FeedKind::Ramp) > 3);
+            for (const auto& q : cuttingPieces(p)) {
+                if (q.move.feed != FeedKind::Ramp || q.move.kind == MoveKind::Feed) continue;
+                const double run = std::abs(arcSweep(q.from, q.move)) * distance({q.from.x, q.from.y}, q.move.centre);
+                QVERIFY(q.from.z - q.move.end.z <= run * std::tan(3 * std::numbers::pi / 180) + 1e-9);
+            }
         }
-        QVERIFY(cornerArcs >= 4);  // corner radius r - R = 0.7 as arcs, not chords
+        // Floor finishing never uses the hole (roughing removed it).
+        s.kind = StepKind::FloorFinishing;
+        s.holeDiameter = 8;
+        QVERIFY(count(makeToolPath(s, tool, TechnologyData{}, kParams), FeedKind::Ramp) > 0);
     }
 
-    void contoursAreClimbMilledCounterClockwise()
+    // A slot too narrow for a helix: ramp along its centre line.
+    void narrowSlotRampsAlongItsLine()
     {
-        paths::PathBuilder b({0, 0, 0});
-        const Quad c = rectangle(50, 30, 2);
-        b.feed({paths::contourStart(c, true).point.x, paths::contourStart(c, true).point.y, -1});
-        paths::appendContour(b, c, -1, true);
-        const ToolPath p = b.take();
-        double area = 0;
-        Point3 at = p.moves.front().end;
-        for (const auto& m : p.moves) {
-            area += cross({at.x, at.y}, {m.end.x, m.end.y});
-            at = m.end;
+        const Quad outline = rectangle(100, 10.2, 5);
+        const ToolPath p = makeToolPath(makePocketStep(StepKind::Roughing, outline, 0, 5), makeTool(ToolType::FlatEndMill, 10),
+                                        TechnologyData{}, kParams);
+        int ramps = 0;
+        for (const auto& q : cuttingPieces(p)) {
+            if (q.move.feed != FeedKind::Ramp) continue;
+            ++ramps;
+            QCOMPARE(q.move.kind, MoveKind::Feed);
+            QVERIFY(std::abs(q.move.end.y - 5.1) < 1e-3);
+            const double run = std::hypot(q.move.end.x - q.from.x, q.move.end.y - q.from.y);
+            QVERIFY(q.from.z - q.move.end.z <= run * std::tan(3 * std::numbers::pi / 180) + 1e-9);
         }
-        QVERIFY(area > 0);  // counter-clockwise: the wall on the tool's right, climb with M3
+        QVERIFY(ramps >= 2);
+        QVERIFY(worstOutside(outline, 5, p) <= 1e-6);
     }
 
-    void wallFinishingLeadsInTangentiallyAndIncises()
+    void floorFinishingReachesTheFloorAndCoversIt()
     {
-        const Quad outline = rectangle(80, 50, 6);
-        const Tool tool = endMill(12);
-        TechnologyData tech;
-        tech.gamma = 0.5;
-        Step s = pocketStep(StepKind::WallFinishing, outline, 0, 14);
-        ToolPath p = makeToolPath(s, tool, tech, {});
-        QVERIFY(worstOutside(outline, 6, p) <= 1e-9);
-        int arcs = 0;
-        for (const auto& m : p.moves) arcs += m.kind == MoveKind::ArcCCW;
-        QCOMPARE(arcs, 2);  // sharp centre corners (r = R): only the two lead arcs
-        s.multiIncision = true;
-        p = makeToolPath(s, tool, tech, {});
-        int levels = 0;
-        for (const auto& m : p.moves) levels += m.feed == FeedKind::Plunge;
-        QCOMPARE(levels, static_cast<int>(std::ceil(14.0 / 6.0)));
-    }
-
-    void taperWallRunsTheTipOnTheFloorOffset()
-    {
-        const Quad top = rectangle(80, 50, 6);
-        Tool t = endMill(4);
-        t.type = ToolType::TaperEndMill;
-        t.taperAngle = 5;
-        Step s = pocketStep(StepKind::WallFinishing, top, 0, 10);
-        s.wallTaper = 5;
-        const ToolPath p = makeToolPath(s, t, TechnologyData{}, {});
-        const double offset = 2 + 10 * std::tan(5 * std::numbers::pi / 180);
-        QVERIFY(std::abs(worstOutside(top, offset, p)) < 1e-9);
-    }
-
-    void pilotHolePecksWhenDeep()
-    {
-        Step s;
-        s.kind = StepKind::PilotHole;
-        s.position = {30, 20};
-        s.cutDepth = 11;
-        Tool drill = endMill(10);
-        drill.type = ToolType::Drill;
-        ToolPath p = makeToolPath(s, drill, TechnologyData{}, {});
-        QCOMPARE(p.moves.size(), std::size_t(1));
-        QCOMPARE(p.moves[0].end.z, -11.0);
-        QCOMPARE(p.moves[0].peck, 0.0);
-        s.cutDepth = 40;
-        p = makeToolPath(s, drill, TechnologyData{}, {});
-        QCOMPARE(p.moves[0].peck, 10.0);
-    }
-
-    void inclinedFaceStepsOverForTheScallop()
-    {
-        Step s;
-        s.kind = StepKind::InclinedFaceFinishing;
-        s.cutDepth = 10;
-        s.scallop = 0.01;
-        const double tan10 = std::tan(10 * std::numbers::pi / 180);
-        s.face = InclinedFace{{{{0, 0}, {0, 40}}}, {{{10 * tan10, 0}, {10 * tan10, 40}}}, 10};
-        s.outline = Quad{{{{10 * tan10, 0}, {60, 0}, {60, 40}, {10 * tan10, 40}}}, 4};
-        Tool ball = endMill(6);
-        ball.type = ToolType::BallEndMill;
-        const ToolPath p = makeToolPath(s, ball, TechnologyData{}, {});
-        // Passes along Y; consecutive passes one scallop step-over apart along the face.
-        std::vector<Point3> starts;
-        for (const auto& m : p.moves)
-            if (m.kind == MoveKind::Feed && std::abs(m.end.y - 4) < 1e-9) starts.push_back(m.end);
-        QVERIFY(starts.size() > 10);
-        const double expected = 2 * std::sqrt(2 * 3 * 0.01 - 0.01 * 0.01);
-        const double along = std::hypot(starts[1].x - starts[0].x, starts[1].z - starts[0].z);
-        QVERIFY(along <= expected + 1e-9);
-        QVERIFY(along > 0.8 * expected);
-        // The tip never goes below the floor, and the last pass reaches it.
+        const Quad outline = rectangle(70, 45, 4.7);
+        const Tool tool = makeTool(ToolType::FlatEndMill, 8);
+        const Step s = makePocketStep(StepKind::FloorFinishing, outline, 9.8, 10);
+        const ToolPath p = makeToolPath(s, tool, TechnologyData{}, kParams);
+        QCOMPARE(p.start.z, kParams.safeZ);
+        QCOMPARE(endOf(p).z, kParams.safeZ);
+        QCOMPARE(p.moves.front().end.z, -9.8 + kParams.clearance);  // rapid through the roughed air
+        QVERIFY(rapidsStayInAir(p, s));
+        const auto zs = layerZs(p);
+        QCOMPARE(static_cast<int>(zs.size()), 1);
+        QCOMPARE(zs.front(), -10.0);
         double lowest = 0;
-        for (const auto& m : p.moves) lowest = std::min(lowest, m.end.z);
-        QVERIFY(std::abs(lowest + 10) < 1e-9);
+        for (const auto& q : feedPoints(p)) lowest = std::min(lowest, q.z);
+        QCOMPARE(lowest, -10.0);
+        QVERIFY(worstOutside(outline, 4, p) <= 1e-6);
+        QVERIFY(paths::uncutArea(outline, atHeight(p, -10), 4) < 1e-3);
+        // Finer than roughing: more (and shorter-spaced) rings on the same outline.
+        const Step rough = makePocketStep(StepKind::Roughing, outline, 9.8, 10);
+        QVERIFY(cuttingPieces(p).size() > cuttingPieces(makeToolPath(rough, tool, TechnologyData{}, kParams)).size());
     }
 
-    void timeEstimateIsTheHandComputation()
+    void refusesWhatTheChecksRefuse()
     {
-        ToolPath p{{0, 0, 5}, {}};
-        p.moves.push_back({MoveKind::Rapid, {0, 0, 1}});
-        Move plunge{MoveKind::Feed, {0, 0, -2}};
-        plunge.feed = FeedKind::Plunge;
-        p.moves.push_back(plunge);
-        p.moves.push_back({MoveKind::Feed, {100, 0, -2}});
-        SpeedsFeeds sf{1000, 500, 100};
-        const double expected = 4.0 / 15000 + 3.0 / 100 + 100.0 / 500;
-        QVERIFY(std::abs(estimateMinutes(p, sf) - expected) < 1e-12);
+        const Tool tool = makeTool(ToolType::FlatEndMill, 10);
+        QVERIFY_THROWS_EXCEPTION(std::logic_error,
+            makeToolPath(makePocketStep(StepKind::Roughing, rectangle(50, 40, 4), 0, 5), tool, TechnologyData{}, kParams));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error,
+            makeToolPath(makePocketStep(StepKind::Roughing, rectangle(50, 9, 4.5), 0, 5), tool, TechnologyData{}, kParams));
     }
 };
 

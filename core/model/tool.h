@@ -44,6 +44,7 @@ struct Tool {
     double stickout = 0.0;       // length out of the holder [mm]
     std::string holder;
     int flutes = 2;
+    bool centreCutting = true;   // end mills: can ramp or plunge into solid material (face mills cannot)
     double lifeMinutes = 0.0;    // cutting time a fresh tool lasts
     double usedMinutes = 0.0;    // cutting time already spent
     std::vector<CuttingData> cutting;

@@ -1,10 +1,11 @@
 // CL creation: the tool path of a step by its kind, and time estimates.
 #include "paths/cl.h"
 
-#include "paths/pocket.h"
-#include "paths/walls.h"
+#include "paths/generators.h"
 
 #include <cmath>
+#include <numbers>
+#include <stdexcept>
 
 namespace taiwa {
 
@@ -12,28 +13,66 @@ ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& 
 {
     switch (step.kind) {
     case StepKind::PilotHole: return paths::pilotHole(step, tool, params);
-    case StepKind::Roughing: return paths::pocketRoughing(step, tool, tech, params);
+    case StepKind::Roughing:
+        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+        return paths::pocketRoughing(step, tool, tech, params);
     case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
     case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
     case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
     }
-    return {};
+    throw std::logic_error("unknown step kind");
 }
+
+namespace {
+
+double distance3(Point3 a, Point3 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)); }
+
+// Length of a feed or arc move (helices: the planar arc and the Z change).
+double cutLength(Point3 from, const Move& m)
+{
+    if (m.kind == MoveKind::Feed) return distance3(from, m.end);
+    const Point2 a{from.x - m.centre.x, from.y - m.centre.y}, b{m.end.x - m.centre.x, m.end.y - m.centre.y};
+    double sweep = std::atan2(cross(a, b), dot(a, b));
+    if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
+    if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
+    return std::hypot(std::abs(sweep) * length(a), m.end.z - from.z);
+}
+
+double minutesAt(double mm, double rate)
+{
+    if (mm <= 0.0) return 0.0;
+    if (!(rate > 0.0)) throw std::invalid_argument("a feed rate used by the path is not positive");
+    return mm / rate;
+}
+
+}  // namespace
 
 double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapidRate)
 {
-    // Each move's length at its own rate: cutting feed, plunge/ramp feed or rapid.
-    double minutes = 0.0;
+    double cut = 0.0, plunge = 0.0, rapid = 0.0;
     Point3 at = path.start;
     for (const auto& m : path.moves) {
-        ToolPath one{at, {m}};
-        const PathLength len = pathLength(one);
-        const double feed = m.kind == MoveKind::DrillCycle || m.feed == FeedKind::Cut ? sf.feed : sf.plungeFeed;
-        if (feed > 0) minutes += len.feed / feed;
-        minutes += len.rapid / rapidRate;
-        if (m.kind != MoveKind::DrillCycle) at = m.end;
+        switch (m.kind) {
+        case MoveKind::Rapid: rapid += distance3(at, m.end); break;
+        case MoveKind::Feed:
+        case MoveKind::ArcCW:
+        case MoveKind::ArcCCW: (m.feed == FeedKind::Cut ? cut : plunge) += cutLength(at, m); break;
+        case MoveKind::DrillCycle: {
+            // G98 cycle: rapid over the hole and down to the R plane, drill
+            // at the feed; each peck retracts to the R plane and rapids back
+            // to its depth; rapid out to R and back to the initial level.
+            const double drilled = m.retractZ - m.end.z;
+            rapid += std::hypot(m.end.x - at.x, m.end.y - at.y) + 2 * std::abs(at.z - m.retractZ) + drilled;
+            cut += drilled;
+            if (m.peck > 0.0)
+                for (double reached = m.peck; reached < drilled - 1e-9; reached += m.peck) rapid += 2 * reached;
+            at = {m.end.x, m.end.y, at.z};
+            continue;
+        }
+        }
+        at = m.end;
     }
-    return minutes;
+    return minutesAt(cut, sf.feed) + minutesAt(plunge, sf.plungeFeed) + minutesAt(rapid, rapidRate);
 }
 
 }  // namespace taiwa

@@ -12,6 +12,7 @@ namespace taiwa {
 
 struct PathParameters {
     double stepOver = 0.45;        // radial step-over as a fraction of the tool diameter
+    double finishStepOver = 0.3;   // floor finishing step-over (fine), fraction of the tool diameter
     double safeZ = 5.0;            // rapid height above the stock top [mm]
     double clearance = 1.0;        // feed starts this far above the material [mm]
     double peckWhenDeeperThan = 3.0;  // drilling pecks when depth > this x drill diameter
@@ -23,7 +24,14 @@ struct PathParameters {
 };
 
 // The tool path of one step. Z layers of at most gamma x D for roughing.
-// Throws std::logic_error only for a step the checks should have refused.
+// The path is the tool tip (flat and taper end mills: the centre of the flat
+// bottom; ball end mills: the lowest point of the ball); it starts and ends
+// at params.safeZ. A ROUGHING step whose holeDiameter > 0 tells that a pilot
+// hole of that diameter was drilled at step.position: the tool plunges into
+// it when the hole is at least as wide as the tool and lies where the tool
+// centre may go; otherwise (and always without a hole) it ramps in.
+// Throws std::logic_error only for a step the checks should have refused
+// (no outline, a tool that does not fit) or for a layer it failed to clear.
 ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 
 // Estimated time of a path: feed moves at their feed (plunge/ramp feed where

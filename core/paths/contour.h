@@ -19,6 +19,9 @@ struct ContourStart {
 };
 ContourStart contourStart(const Quad& centre, bool ccw);
 
+// Signed distance of a point to a rounded convex quad: negative inside.
+double signedDistance(const Quad& q, Point2 p);
+
 // Appends the closed contour at height z; the builder must already be at
 // contourStart(centre, ccw).point.
 void appendContour(PathBuilder& b, const Quad& centre, double z, bool ccw);

@@ -121,6 +121,7 @@ ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::
     sheet.units = units;
     sheet.dialect = options.dialect;
     sheet.jobFile = options.jobFile;
+    sheet.programNumber = options.programNumber;
 
     const std::pair<std::string, std::string> texts[] = {
         {path(".nc"), program.nc},

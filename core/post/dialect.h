@@ -1,28 +1,62 @@
 // Controller dialects as data (interfaces.md "Dialects"): framing, sequence
-// numbers, number style, comments, tool change and retract blocks. The one
-// writer (gcode_writer) reads these; no dialect copies the writer.
+// numbers, number style, comments, the words of tool changes, cycles and the
+// program end. The one writer (gcode_writer) reads these; no dialect copies
+// the writer. Templates use fmt named fields: {units}, {workOffset}, {tool},
+// {number}, {name}.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace taiwa::post {
 
-struct Dialect {
-    std::string name;
-    bool percentFraming = false;          // '%' leader and trailer lines
-    bool programNumber = false;           // "O1000 (NAME)" line
-    bool sequenceNumbers = false;         // N words on every block
-    int sequenceIncrement = 10;
-    bool decimalPointAlways = false;      // "X10." (FANUC) rather than "X10"
-    bool upperCaseComments = false;
-    std::vector<std::string> preamble;    // blocks after the header; {UNITS} = G20/G21
-    std::vector<std::string> retract;     // blocks that send Z to the machine's safe height
-    bool lengthOffsetWithFirstZ = false;  // "G43 H1 Z5." (FANUC) vs a lone "G43 H1"
-    std::string cycleRetractMode;         // "G98" before canned cycles, or empty
+struct Decimals {
+    int mm = 3;
+    int inch = 4;
 };
 
+struct Dialect {
+    std::string name;
+    // Framing.
+    bool percentFraming = false;     // '%' leader and trailer lines
+    std::string programNumberLine;   // "O{number:04d} ({name})"; empty: none
+    // Blocks.
+    bool sequenceNumbers = false;    // N word on every block
+    int sequenceStart = 10;
+    int sequenceIncrement = 10;
+    int sequenceMax = 99999;         // wraps to sequenceStart beyond this
+    std::size_t maxLineLength = 255; // longer comments are cut, longer blocks refused
+    // Numbers.
+    bool decimalPointAlways = false; // "X10." (FANUC) rather than "X10"
+    Decimals lengthDecimals{3, 4};
+    Decimals feedDecimals{1, 2};
+    // Comments: always in parentheses, never nested.
+    bool upperCaseComments = false;
+    // Program frame and tool change.
+    std::vector<std::string> preamble;  // after the header comments
+    std::string workOffset = "G54";     // also restated with the first move after each tool change
+    std::vector<std::string> retract;   // to the machine's safe height (tool change, end)
+    std::string toolChange = "T{tool} M6";
+    std::string lengthOffset = "G43 H{tool}";
+    bool lengthOffsetWithZ = false;     // "G43 H1 Z5." in one block (FANUC) or "G43 H1" alone
+    std::string spindleClockwise = "M3";
+    std::string spindleCounterClockwise = "M4";
+    std::string spindleStop = "M5";
+    std::string coolantOn = "M8";
+    std::string coolantOff = "M9";
+    // Canned drilling cycles.
+    std::string drill = "G81";
+    std::string peckDrill = "G83";      // peck depth in Q
+    std::string cycleCancel = "G80";
+    std::string cycleRetract = "G98";   // back to the initial level after each hole
+    char dwellWord = 'P';               // G4 P<seconds> (LinuxCNC) or G4 X<seconds> (FANUC)
+    std::string programEnd = "M30";
+};
+
+const Dialect& fanucDialect();
+const Dialect& linuxcncDialect();
+
 const Dialect* findDialect(const std::string& name);
-const std::vector<Dialect>& dialects();
 
 }  // namespace taiwa::post

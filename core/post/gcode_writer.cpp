@@ -1,43 +1,56 @@
-// The G-code writer: number formatting, modal suppression, sequence numbers,
-// unit conversion at the output edge, and the line-to-source map.
+// The G-code writer: framing, modal suppression, sequence numbers, line
+// limits, canned cycles and the line-to-source map (see gcode_writer.h).
 #include "post/gcode_writer.h"
+
+#include "post/number_format.h"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cctype>
-#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace taiwa::post {
 
-std::string formatNumber(double value, int decimals, bool decimalPointAlways)
+namespace {
+
+enum Axis { X, Y, Z };
+constexpr char kAxisLetter[] = {'X', 'Y', 'Z'};
+
+// Printable ASCII only: parentheses (neither controller allows nested
+// comments) and control characters become spaces, a non-ASCII (UTF-8)
+// character becomes one '?'.
+std::string commentText(const std::string& text, bool upper)
 {
-    if (!std::isfinite(value)) throw std::invalid_argument("post-processor: a coordinate or feed is not a finite number");
-    std::string s = fmt::format("{:.{}f}", value, decimals);
-    if (s.find('.') != std::string::npos) {
-        while (s.back() == '0') s.pop_back();
-        if (s.back() == '.' && !decimalPointAlways) s.pop_back();
+    std::string t;
+    t.reserve(text.size());
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if ((u & 0xc0) == 0x80) continue;  // UTF-8 continuation byte
+        char out = c;
+        if (u >= 0x80) out = '?';
+        else if (c == '(' || c == ')' || u < 0x20 || u == 0x7f) out = ' ';
+        t += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(out))) : out;
     }
-    if (s == "-0" || s == "-0.") s.erase(0, 1);
-    if (s == "-." || s == ".") s = decimalPointAlways ? "0." : "0";
-    return s;
+    return t;
 }
+
+}  // namespace
 
 GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units)
-    : dialect_(dialect), units_(units), decimals_(units == LengthUnit::Inch ? 4 : 3)
+    : dialect_(dialect), units_(units),
+      decimals_(units == LengthUnit::Inch ? dialect.lengthDecimals.inch : dialect.lengthDecimals.mm),
+      feedDecimals_(units == LengthUnit::Inch ? dialect.feedDecimals.inch : dialect.feedDecimals.mm)
 {
 }
 
-std::string GCodeWriter::length(double mm) const
-{
-    return formatNumber(fromMm(mm, units_), decimals_, dialect_.decimalPointAlways);
-}
+std::string GCodeWriter::length(double v) const { return formatNumber(v, decimals_, dialect_.decimalPointAlways); }
 
-std::string GCodeWriter::feedValue(double mmPerMin) const
+GCodeWriter::Written GCodeWriter::written(double v) const
 {
-    // Feeds: one decimal in mm/min, two in in/min; a whole feed has no point needed.
-    return formatNumber(fromMm(mmPerMin, units_), units_ == LengthUnit::Inch ? 2 : 1, dialect_.decimalPointAlways);
+    Written w{length(v), 0.0};
+    w.value = std::strtod(w.text.c_str(), nullptr);
+    return w;
 }
 
 void GCodeWriter::line(const std::string& text)
@@ -49,111 +62,194 @@ void GCodeWriter::line(const std::string& text)
 
 void GCodeWriter::block(const std::string& words)
 {
+    std::string b;
     if (dialect_.sequenceNumbers) {
-        sequence_ += dialect_.sequenceIncrement;
-        line(fmt::format("N{} {}", sequence_, words));
+        sequence_ = sequence_ == 0 || sequence_ + dialect_.sequenceIncrement > dialect_.sequenceMax
+                        ? dialect_.sequenceStart
+                        : sequence_ + dialect_.sequenceIncrement;
+        b = fmt::format("N{} {}", sequence_, words);
     } else {
-        line(words);
+        b = words;
     }
+    if (b.size() > dialect_.maxLineLength)
+        throw std::length_error(fmt::format("post-processor: block longer than {} characters: {}", dialect_.maxLineLength, b));
+    line(b);
 }
 
-void GCodeWriter::comment(const std::string& text)
+std::string GCodeWriter::motion(const std::string& code)
 {
-    std::string t;
-    for (char c : text) {
-        if (c == '(' || c == ')') c = ' ';
-        if (c == '\n' || c == '\r') c = ' ';
-        t += dialect_.upperCaseComments ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
-    }
-    line("(" + t + ")");
+    if (motion_ == code) return "";
+    motion_ = code;
+    return code + " ";
 }
 
-void GCodeWriter::forgetPosition()
+std::string GCodeWriter::axisWords(const Point3& to, bool forceXY)
 {
-    pos_.reset();
-    motion_.clear();
-    feed_.reset();  // a new tool states its feed again
-}
-
-std::string GCodeWriter::axes(const Point3& to, bool forceXY)
-{
+    const double v[] = {to.x, to.y, to.z};
     std::string w;
-    const auto word = [&](char axis, double v, std::optional<double> was, bool force) {
-        const std::string now = length(v);
-        if (force || !was || length(*was) != now) w += fmt::format(" {}{}", axis, now);
-    };
-    word('X', to.x, pos_ ? std::optional(pos_->x) : std::nullopt, forceXY);
-    word('Y', to.y, pos_ ? std::optional(pos_->y) : std::nullopt, forceXY);
-    word('Z', to.z, pos_ ? std::optional(pos_->z) : std::nullopt, false);
+    for (int a = X; a <= Z; ++a) {
+        Written now = written(v[a]);
+        if ((forceXY && a != Z) || !axis_[a] || axis_[a]->text != now.text) w += fmt::format(" {}{}", kAxisLetter[a], now.text);
+        axis_[a] = std::move(now);
+    }
     return w;
 }
 
 std::string GCodeWriter::feedWord(double feedRate)
 {
-    const std::string f = feedValue(feedRate);
-    if (feed_ && feedValue(*feed_) == f) return "";
-    feed_ = feedRate;
+    std::string f = formatNumber(feedRate, feedDecimals_, dialect_.decimalPointAlways);
+    if (f == feed_) return "";
+    feed_ = f;
     return " F" + f;
+}
+
+void GCodeWriter::requirePosition(const char* what) const
+{
+    if (!axis_[X] || !axis_[Y] || !axis_[Z] || !pendingLengthOffset_.empty())
+        throw std::logic_error(fmt::format("post-processor: {} from an unknown position (the first move after a tool change must be a rapid)", what));
+}
+
+void GCodeWriter::forgetModalState()
+{
+    axis_ = {};
+    motion_.clear();
+    feed_.clear();
+    cycleWords_.clear();
+}
+
+void GCodeWriter::cancelCycle()
+{
+    if (cycleWords_.empty()) return;
+    block(dialect_.cycleCancel);
+    cycleWords_.clear();
+    motion_.clear();
+}
+
+void GCodeWriter::programStart(const ProgramInfo& info)
+{
+    if (dialect_.percentFraming) line("%");
+    const std::string name = commentText(info.name.empty() ? std::string("TAIWA") : info.name, dialect_.upperCaseComments);
+    if (!dialect_.programNumberLine.empty())
+        line(fmt::format(fmt::runtime(dialect_.programNumberLine), fmt::arg("number", info.number), fmt::arg("name", name.substr(0, 40))));
+    else
+        comment("Program " + info.name);
+    comment(fmt::format("Generated by Taiwa {}; material {}; units {}", TAIWA_VERSION, info.material,
+                        units_ == LengthUnit::Inch ? "inch" : "mm"));
+    for (const auto& t : info.tools) comment(fmt::format("T{} D{} {}", t.number, length(t.diameter), t.name));
+    for (const auto& b : dialect_.preamble)
+        block(fmt::format(fmt::runtime(b), fmt::arg("units", units_ == LengthUnit::Inch ? "G20" : "G21"),
+                          fmt::arg("workOffset", dialect_.workOffset)));
+}
+
+void GCodeWriter::comment(const std::string& text)
+{
+    cancelCycle();
+    std::string c = "(" + commentText(text, dialect_.upperCaseComments);
+    if (c.size() + 1 > dialect_.maxLineLength) c.resize(dialect_.maxLineLength - 1);
+    line(c + ")");
+}
+
+void GCodeWriter::toolChange(int tool)
+{
+    cancelCycle();
+    for (const auto& b : dialect_.retract) block(b);
+    block(fmt::format(fmt::runtime(dialect_.toolChange), fmt::arg("tool", tool)));
+    forgetModalState();
+    const std::string offset = fmt::format(fmt::runtime(dialect_.lengthOffset), fmt::arg("tool", tool));
+    if (dialect_.lengthOffsetWithZ) pendingLengthOffset_ = offset;
+    else block(offset);
+    workOffsetDue_ = true;
+}
+
+void GCodeWriter::spindle(SpindleDirection direction, double rpm)
+{
+    cancelCycle();
+    if (direction == SpindleDirection::Off) {
+        block(dialect_.spindleStop);
+        return;
+    }
+    block(fmt::format("S{} {}", formatInteger(rpm),
+                      direction == SpindleDirection::Clockwise ? dialect_.spindleClockwise : dialect_.spindleCounterClockwise));
+}
+
+void GCodeWriter::coolant(bool on)
+{
+    cancelCycle();
+    block(on ? dialect_.coolantOn : dialect_.coolantOff);
 }
 
 void GCodeWriter::rapid(const Point3& to)
 {
     cancelCycle();
-    const std::string w = axes(to, false);
-    if (!w.empty()) {
-        block(motion_ == "G0" ? w.substr(1) : "G0" + w);
-        motion_ = "G0";
+    if (!axis_[X] || !axis_[Y]) {
+        // Position unknown (after a tool change): across in XY at the height
+        // the retract left, then down in Z with the length offset.
+        Written x = written(to.x), y = written(to.y);
+        block(motion("G0") + (workOffsetDue_ ? dialect_.workOffset + " " : "") + "X" + x.text + " Y" + y.text);
+        axis_[X] = std::move(x);
+        axis_[Y] = std::move(y);
+        workOffsetDue_ = false;
     }
-    pos_ = to;
+    const std::string w = axisWords(to, false);
+    if (!pendingLengthOffset_.empty()) {
+        // FANUC: the length offset comes in with the first move down, "G43 H1 Z5.".
+        block(motion("G0") + pendingLengthOffset_ + w);
+        pendingLengthOffset_.clear();
+    } else if (!w.empty()) {
+        block(motion("G0") + w.substr(1));
+    }
 }
 
 void GCodeWriter::feed(const Point3& to, double feedRate)
 {
     cancelCycle();
-    const std::string w = axes(to, false);
-    if (!w.empty()) {
-        const std::string f = feedWord(feedRate);
-        block(motion_ == "G1" ? (w + f).substr(1) : "G1" + w + f);
-        motion_ = "G1";
-    }
-    pos_ = to;
+    requirePosition("a feed move");
+    const std::string w = axisWords(to, false);
+    if (w.empty()) return;
+    block(motion("G1") + w.substr(1) + feedWord(feedRate));
 }
 
-void GCodeWriter::arc(bool clockwise, const Point3& to, Point2 centre, double feedRate)
+void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double feedRate)
 {
     cancelCycle();
-    if (!pos_) throw std::invalid_argument("post-processor: an arc without a known start point");
-    const std::string code = clockwise ? "G2" : "G3";
-    std::string w = code + axes(to, true);
-    w += fmt::format(" I{} J{}", length(centre.x - pos_->x), length(centre.y - pos_->y));
-    w += feedWord(feedRate);
-    block(w);
-    motion_ = code;
-    pos_ = to;
+    requirePosition("an arc");
+    // I, J from the start as written, so the controller's centre is ours to half a unit.
+    const double i = centre.x - axis_[X]->value, j = centre.y - axis_[Y]->value;
+    const std::string w = axisWords(to, true);
+    block(motion(clockwise ? "G2" : "G3") + w.substr(1) + " I" + length(i) + " J" + length(j) + feedWord(feedRate));
 }
 
-void GCodeWriter::drill(const Move& cycle, double feedRate)
+void GCodeWriter::drillCycle(const DrillCycle& c)
 {
-    if (!pos_) throw std::invalid_argument("post-processor: a drilling cycle without a known start height");
-    std::string w = dialect_.cycleRetractMode.empty() ? std::string() : dialect_.cycleRetractMode + " ";
-    w += cycle.peck > 0 ? "G83" : "G81";
-    w += fmt::format(" X{} Y{} Z{} R{}", length(cycle.end.x), length(cycle.end.y), length(cycle.end.z), length(cycle.retractZ));
-    if (cycle.peck > 0) w += " Q" + length(cycle.peck);
-    feed_.reset();
-    w += feedWord(feedRate);
-    block(w);
-    inCycle_ = true;
-    motion_ = "cycle";
-    // G98: the tool returns to the initial level above the hole.
-    pos_ = Point3{cycle.end.x, cycle.end.y, pos_->z};
+    requirePosition("a drilling cycle");
+    const std::string& code = c.peck > 0 ? dialect_.peckDrill : dialect_.drill;
+    std::string params = " Z" + length(c.bottom.z) + " R" + length(c.retractZ);
+    if (c.peck > 0) params += " Q" + length(c.peck);
+    const std::string xy = axisWords({c.bottom.x, c.bottom.y, axis_[Z]->value}, true);
+    const std::string f = formatNumber(c.feed, feedDecimals_, dialect_.decimalPointAlways);
+    if (motion_ == code && cycleWords_ == params && feed_ == f) {
+        block(xy.substr(1));  // one more hole of the same modal cycle
+    } else {
+        const std::string retractMode = cycleWords_.empty() && !dialect_.cycleRetract.empty() ? dialect_.cycleRetract + " " : "";
+        block(retractMode + motion(code) + xy.substr(1) + params + feedWord(c.feed));
+        cycleWords_ = params;
+    }
+    // Back at the initial level, or at R if that is higher (LinuxCNC's G98).
+    if (axis_[Z]->value < c.retractZ) axis_[Z] = written(c.retractZ);
 }
 
-void GCodeWriter::cancelCycle()
+void GCodeWriter::dwell(double seconds)
 {
-    if (!inCycle_) return;
-    block("G80");
-    inCycle_ = false;
-    motion_.clear();
+    cancelCycle();
+    block(fmt::format("G4 {}{}", dialect_.dwellWord, formatNumber(seconds, 3, dialect_.decimalPointAlways)));
+}
+
+void GCodeWriter::programEnd()
+{
+    cancelCycle();
+    for (const auto& b : dialect_.retract) block(b);
+    block(dialect_.programEnd);
+    if (dialect_.percentFraming) line("%");
 }
 
 }  // namespace taiwa::post

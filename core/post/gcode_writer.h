@@ -1,66 +1,76 @@
-// The G-code writer at the end of the post-processor chain: it owns every
-// number's formatting (fixed decimals per unit, trailing zeros trimmed, no
-// "-0", NaN refused), emits modal words only when they change, numbers the
-// blocks, converts mm to inch at the edge, and records where each line came
-// from.
+// The G-code writer at the end of the sink chain. It receives lengths and
+// feeds already in the tape's units, owns every number's formatting (through
+// number_format), writes modal words only when they change (motion code,
+// each axis, feed, a canned cycle's Z R Q), numbers the blocks, keeps lines
+// within the dialect's limit, and records where each line came from.
 #pragma once
 
 #include "model/job.h"
-#include "model/toolpath.h"
 #include "post/dialect.h"
-#include "post/post.h"
+#include "post/machine_sink.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace taiwa::post {
 
-// "12.5", "-0.001", "10" (or "10." with a decimal point always); throws
-// std::invalid_argument for NaN or infinity.
-std::string formatNumber(double value, int decimals, bool decimalPointAlways);
-
-class GCodeWriter {
+class GCodeWriter final : public MachineSink {
 public:
     GCodeWriter(const Dialect& dialect, LengthUnit units);
 
-    void setSource(BlockSource source) { source_ = source; }
-    // A raw block (sequence number added); words already formatted.
-    void block(const std::string& words);
-    void comment(const std::string& text);
-    void line(const std::string& text);  // unnumbered line ('%', O-number)
+    void source(BlockSource where) override { source_ = where; }
+    void programStart(const ProgramInfo& info) override;
+    void comment(const std::string& text) override;
+    void toolChange(int tool) override;
+    void spindle(SpindleDirection direction, double rpm) override;
+    void coolant(bool on) override;
+    void rapid(const Point3& to) override;
+    void feed(const Point3& to, double feedRate) override;
+    void arc(const Point3& to, Point2 centre, bool clockwise, double feedRate) override;
+    void drillCycle(const DrillCycle& cycle) override;
+    void dwell(double seconds) override;
+    void programEnd() override;
 
-    // Motion in mm (core units); feeds in mm/min.
-    void rapid(const Point3& to);
-    void feed(const Point3& to, double feedRate);
-    void arc(bool clockwise, const Point3& to, Point2 centre, double feedRate);
-    void drill(const Move& cycle, double feedRate);
-    void cancelCycle();
-
-    // Forget modal position, motion and feed (after a tool change).
-    void forgetPosition();
-    void setPosition(const Point3& p) { pos_ = p; }
-
-    std::string length(double mm) const;   // one length word's number, in output units
-    std::string feedValue(double mmPerMin) const;
     const std::string& text() const { return text_; }
     const std::vector<BlockSource>& sources() const { return sources_; }
 
 private:
-    std::string axes(const Point3& to, bool forceXY);
+    // The number of an axis word as written, and the value the controller reads from it.
+    struct Written {
+        std::string text;
+        double value = 0.0;
+    };
+
+    std::string length(double v) const;
+    Written written(double v) const;
+    void line(const std::string& text);   // unnumbered ('%', O-number, comments)
+    void block(const std::string& words); // numbered when the dialect numbers blocks
+    std::string motion(const std::string& code);  // "G1 " when the modal motion changes, else ""
+    // " X.. Y.. Z.." for the axes whose written number changes (X, Y always when forced).
+    std::string axisWords(const Point3& to, bool forceXY);
     std::string feedWord(double feedRate);
+    void requirePosition(const char* what) const;
+    void cancelCycle();
+    void forgetModalState();
 
     const Dialect& dialect_;
     LengthUnit units_;
     int decimals_;
+    int feedDecimals_;
     int sequence_ = 0;
     BlockSource source_;
     std::string text_;
     std::vector<BlockSource> sources_;
-    std::optional<Point3> pos_;
-    std::string motion_;  // current modal motion code
-    std::optional<double> feed_;
-    bool inCycle_ = false;
+
+    // Modal state as the controller sees it.
+    std::array<std::optional<Written>, 3> axis_;  // X, Y, Z; empty while unknown
+    std::string motion_;                           // G0, G1, G2, G3, G81, G83 or empty
+    std::string feed_;                             // last F number
+    std::string cycleWords_;                       // " Z.. R.. Q.." of the active cycle
+    std::string pendingLengthOffset_;              // "G43 H1" waiting for the first Z move (FANUC)
+    bool workOffsetDue_ = false;                   // restate the work offset with the next XY move
 };
 
 }  // namespace taiwa::post

@@ -1,31 +1,65 @@
-// The tape image list (pipeline stage 5): every block with its listing line
-// number, then the block count, the characters punched (end-of-block
-// included) and the length of paper tape at 10 characters per inch.
+// The tape image list (pipeline stage 5, see tape_image.h).
 #include "post/tape_image.h"
 
 #include <fmt/format.h>
 
-#include <sstream>
+#include <cctype>
+#include <string_view>
 
 namespace taiwa::post {
 
+namespace {
+
+bool isBlock(std::string_view line) { return !line.empty() && line != "%" && line.front() != '('; }
+
+// Calls f(line) for every line of the tape, without its end-of-block.
+template <class F>
+void forEachLine(const std::string& nc, F f)
+{
+    std::size_t from = 0;
+    while (from < nc.size()) {
+        std::size_t eob = nc.find('\n', from);
+        if (eob == std::string::npos) eob = nc.size();
+        f(std::string_view(nc).substr(from, eob - from));
+        from = eob + 1;
+    }
+}
+
+}  // namespace
+
+TapeLength measureTape(const std::string& nc)
+{
+    TapeLength t;
+    forEachLine(nc, [&](std::string_view line) {
+        ++t.lines;
+        t.characters += line.size() + 1;
+        if (isBlock(line)) ++t.blocks;
+    });
+    return t;
+}
+
 std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect)
 {
-    std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n", programName, dialect);
-    out += std::string(72, '-') + "\n";
-    std::istringstream in(nc);
-    std::string block;
-    int line = 0, blocks = 0;
-    std::size_t characters = 0;
-    while (std::getline(in, block)) {
-        ++line;
-        characters += block.size() + 1;  // EOB
-        if (!block.empty() && block != "%" && block.front() != '(') ++blocks;
-        out += fmt::format("{:6d}  {}\n", line, block);
-    }
-    out += std::string(72, '-') + "\n";
-    const double metres = static_cast<double>(characters) / 10.0 * 0.0254;
-    out += fmt::format("blocks {}   lines {}   characters {}   tape length {:.1f} m\n", blocks, line, characters, metres);
+    const std::string rule(72, '-');
+    std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", programName,
+                                  dialect, rule, "LINE", "N", rule);
+    std::size_t lineNumber = 0;
+    forEachLine(nc, [&](std::string_view line) {
+        ++lineNumber;
+        // The N column: the block's sequence number, its text without it.
+        std::string_view n, rest = line;
+        if (line.size() > 1 && line[0] == 'N' && std::isdigit(static_cast<unsigned char>(line[1]))) {
+            std::size_t end = 1;
+            while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) ++end;
+            n = line.substr(1, end - 1);
+            rest = line.substr(std::min(line.size(), end + 1));
+        }
+        fmt::format_to(std::back_inserter(out), "{:>7}  {:>6}  {}\n", lineNumber, n, rest);
+    });
+    const TapeLength t = measureTape(nc);
+    out += rule + "\n";
+    out += fmt::format("blocks {}   lines {}   characters {} (EOB included)   tape length {:.2f} m at 10 characters per inch\n",
+                       t.blocks, t.lines, t.characters, t.metres());
     return out;
 }
 

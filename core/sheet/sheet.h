@@ -16,6 +16,7 @@ struct SheetOptions {
     LengthUnit units = LengthUnit::Millimetre;  // lengths shown in this unit
     std::string dialect = "linuxcnc";
     std::string jobFile;                        // file name shown in the header
+    int programNumber = 0;                      // O-number of the tape; 0 = not shown
     std::string date;                           // printed date; empty = none (tests)
 };
 

@@ -24,20 +24,22 @@ Content content(const Plan& plan, const SheetOptions& o)
         {"Material", job.material},
         {"Machine", job.machine},
         {"Date", o.date},
+        {"Program", o.programNumber > 0 ? fmt::format("O{:04d}", o.programNumber) : std::string()},
         {"Stock", fmt::format("{} x {} x {} {}", len(job.stock.width), len(job.stock.length), len(job.stock.height), us)},
-        {"Work offset", job.workOffset},
-        {"Setup", "X0 Y0 front-left corner" +
-                      (job.stock.x == 0 && job.stock.y == 0 ? std::string()
-                                                            : fmt::format(" (stock corner at X{} Y{})", len(job.stock.x), len(job.stock.y))) +
-                      ", Z0 top face"},
         {"Steps", std::to_string(plan.steps.size())},
         {"Tool changes", std::to_string(plan.toolChanges)},
         {"Total time", fmt::format("{:.1f} min", plan.totalMinutes)},
     };
+    c.setup = "Setup: work offset " + job.workOffset + ", origin X0 Y0 at the stock's front-left corner" +
+              (job.stock.x == 0 && job.stock.y == 0
+                   ? std::string()
+                   : fmt::format(" (stock corner at X{} Y{})", len(job.stock.x), len(job.stock.y))) +
+              ", Z0 on the top face.";
+    std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
-                       "Depth " + us, "Wall left", "Floor left", "Path " + us, "Min"};
+                       "Depth " + us, "Wall left", "Floor left", "Cut " + us, "Min"};
     c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};
-    c.steps.widths = {3, 3, 4, 13, 3, 3, 17, 5, 6, 6, 6, 6, 6, 7, 4};
+    c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 19, 5, 6, 5.5, 5.5, 5, 5, 7, 4};
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& s = plan.steps[i];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
@@ -47,7 +49,7 @@ Content content(const Plan& plan, const SheetOptions& o)
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
                                 sf ? fmt::format("{:.0f}", sf->rpm) : "-", sf ? feed(sf->feed) : "-", len(s.startDepth),
                                 len(s.cutDepth), len(s.wallAllowance), len(s.floorAllowance),
-                                s.path ? len(pl.feed + pl.rapid) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
+                                s.path ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
     }
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
     c.tools.numeric = {true, false, false, true, true, false, true, true, true};
@@ -57,7 +59,10 @@ Content content(const Plan& plan, const SheetOptions& o)
                                 fmt::format("{:.0f}", t.lifeMinutes), fmt::format("{:.1f}", t.usedMinutes),
                                 fmt::format("{:.1f}", t.remainingLife())});
     c.notes = plan.notes;
-    c.total = fmt::format("{:.1f} min including {} tool changes", plan.totalMinutes, plan.toolChanges);
+    double cutting = 0.0;
+    for (const auto& s : plan.steps) cutting += s.minutes.value_or(0.0);
+    c.total = fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all", cutting, plan.toolChanges,
+                          plan.totalMinutes);
     return c;
 }
 

@@ -21,6 +21,7 @@ struct Table {
 struct Content {
     std::string title;
     std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
+    std::string setup;                                        // work offset and origin, one sentence
     Table steps;
     Table tools;
     std::vector<std::string> notes;

@@ -27,7 +27,7 @@ public:
     {
         area_ = QRectF(QPointF(0, 0), pdf.pageLayout().paintRectPixels(pdf.resolution()).size());
         normal_ = QFont(QStringLiteral("DejaVu Sans"));
-        normal_.setPointSizeF(8);
+        normal_.setPointSizeF(9);
         bold_ = normal_;
         bold_.setBold(true);
         title_ = bold_;
@@ -47,7 +47,7 @@ public:
 
     void heading(const std::string& text)
     {
-        ensure(3 * line_);
+        ensure(4.5 * line_);  // the heading, a table header and one row stay together
         y_ += line_ * 0.4;
         p_.setFont(bold_);
         p_.drawText(QRectF(0, y_, area_.width(), line_), Qt::AlignLeft | Qt::AlignVCenter, q(text));
@@ -74,22 +74,28 @@ public:
         const double total = std::accumulate(t.widths.begin(), t.widths.end(), 0.0);
         std::vector<double> x{0};
         for (const double w : t.widths) x.push_back(x.back() + w / total * area_.width());
+        // The header takes two lines, so that "Depth mm" wraps instead of being elided.
         const auto row = [&](const std::vector<std::string>& cells, bool header) {
-            if (header) p_.fillRect(QRectF(0, y_, area_.width(), line_), QColor(221, 221, 221));
+            const double h = header ? 2 * line_ : line_;
+            if (header) p_.fillRect(QRectF(0, y_, area_.width(), h), QColor(221, 221, 221));
             p_.setFont(header ? bold_ : normal_);
             for (std::size_t i = 0; i < cells.size(); ++i) {
-                const QRectF cell(x[i], y_, x[i + 1] - x[i], line_);
+                const QRectF cell(x[i], y_, x[i + 1] - x[i], h);
                 p_.drawRect(cell);
                 const QRectF text = cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0);
-                const auto align = (t.numeric[i] && !header ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter;
-                p_.drawText(text, align, elide(q(cells[i]), text.width()));
+                if (header) {
+                    p_.drawText(text, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, q(cells[i]));
+                } else {
+                    const auto align = (t.numeric[i] ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter;
+                    p_.drawText(text, align, elide(q(cells[i]), text.width()));
+                }
             }
             p_.setFont(normal_);
-            y_ += line_;
+            y_ += h;
         };
         row(t.headers, true);
         for (const auto& r : t.rows) {
-            if (y_ + line_ > area_.height() - line_) {
+            if (y_ + line_ > area_.height() - line_) {  // the header repeated on the next page
                 newPage();
                 row(t.headers, true);
             }
@@ -154,6 +160,7 @@ std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& o
     PagePainter page(pdf, painter);
     page.title(c.title);
     page.fields(c.fields);
+    page.paragraph(c.setup);
     page.heading("Process steps");
     page.table(c.steps);
     page.heading("Tools");

@@ -3,8 +3,10 @@
 // table. Ids are stable: they are the T numbers on the tape.
 #include "tools/tool_library.h"
 
-#include <cstdlib>
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdlib>
 
 namespace taiwa {
 
@@ -14,7 +16,7 @@ namespace {
 // material, as a carbide-tool maker's starting values, scaled by tool kind.
 struct MaterialData {
     const char* id;
-    double vcMill, fzMill;    // end mills, per mm of diameter for fz
+    double vcMill, fzMill;    // milling, per mm of diameter (2-25 mm) for fz
     double vcDrill, fDrill;   // drills, per mm of diameter for f
 };
 constexpr MaterialData kMaterials[] = {
@@ -32,7 +34,7 @@ std::vector<CuttingData> cuttingFor(ToolType type, double diameter)
     for (const auto& m : kMaterials) {
         const bool drill = type == ToolType::Drill || type == ToolType::CentreDrill;
         const double scale = type == ToolType::FaceMill ? 1.2 : type == ToolType::TaperEndMill ? 0.6 : 1.0;
-        const double fz = drill ? m.fDrill * diameter : m.fzMill * std::max(diameter, 2.0);
+        const double fz = drill ? m.fDrill * diameter : m.fzMill * std::clamp(diameter, 2.0, 25.0);
         data.push_back({m.id, (drill ? m.vcDrill : m.vcMill) * scale, fz, drill ? 1.0 : 0.4});
     }
     return data;
@@ -102,7 +104,8 @@ std::vector<Tool> defaultToolLibrary()
         tools.push_back(t);
     }
     // T60: face mill.
-    tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 300));
+    tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 240));
+    tools.back().centreCutting = false;  // inserts on the rim only: it cannot plunge
     return tools;
 }
 

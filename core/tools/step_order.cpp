@@ -3,10 +3,6 @@
 // otherwise follows the units' machining order.
 #include "tools/tool_choice.h"
 
-#include <fmt/format.h>
-
-#include <algorithm>
-
 #include <map>
 #include <set>
 
@@ -74,29 +70,6 @@ std::vector<int> orderSteps(const std::vector<Step>& steps)
             if (--waiting[static_cast<std::size_t>(j)] == 0) release(j);
     }
     return order;
-}
-
-std::vector<ToolLifeNote> planToolLife(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library)
-{
-    std::vector<ToolLifeNote> notes;
-    std::map<int, double> left;  // remaining minutes of the tool now in the magazine
-    for (std::size_t k = 0; k < orderedSteps.size(); ++k) {
-        const Step& s = orderedSteps[k];
-        if (!s.tool || !s.minutes) continue;
-        const int id = s.tool->toolId;
-        const auto it = std::find_if(library.begin(), library.end(), [id](const Tool& t) { return t.id == id; });
-        if (it == library.end() || it->lifeMinutes <= 0) continue;
-        if (!left.count(id)) left[id] = it->remainingLife();
-        if (*s.minutes > left[id]) {
-            notes.push_back({static_cast<int>(k), id,
-                             fmt::format("T{} ({}) has {:.1f} min of life left but step {} (unit {} {}) needs {:.1f} min: "
-                                         "change it for a fresh one before that step",
-                                         id, it->name, std::max(0.0, left[id]), k + 1, s.unit + 1, s.label(), *s.minutes)});
-            left[id] = it->lifeMinutes;  // the change is planned: a fresh tool
-        }
-        left[id] -= *s.minutes;
-    }
-    return notes;
 }
 
 }  // namespace taiwa

@@ -1,13 +1,14 @@
 // Tool choice for every step of a unit, with the reason in words.
 #include "tools/tool_choice.h"
 
+#include "model/codes.h"
 #include "tools/tool_fit.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <optional>
 
 namespace taiwa {
 
@@ -28,28 +29,87 @@ Fit fitFor(const Step& s)
 {
     Fit f;
     f.depth = s.cutDepth - s.startDepth;
+    f.centreCutting = s.kind == StepKind::FloorFinishing;  // it ramps into the beta2 left below the roughing
     if (s.outline) {
         f.cornerRadius = s.outline->cornerRadius;
         f.maxDiameter = inscribedRadius(s.outline->corners);  // at most half the pocket's width
     }
     if (s.kind == StepKind::InclinedFaceFinishing && s.face) {
+        // No corner radius to fit: the ball runs along the face (along Y);
+        // its radius at most half the face's length and at most 6 mm.
         f.type = ToolType::BallEndMill;
-        f.maxDiameter = std::min(12.0, 0.25 * distance(s.face->topEdge[0], s.face->topEdge[1]));
+        f.maxDiameter = std::min(12.0, distance(s.face->topEdge[0], s.face->topEdge[1]));
         f.cornerRadius = 0;
     } else if (s.kind == StepKind::WallFinishing && s.wallTaper > 0) {
+        // The outline is at the top surface; the wall leans in by depth x
+        // tan(taper), so the corner radius the tip must fit is the floor's.
         f.type = ToolType::TaperEndMill;
         f.taperAngle = s.wallTaper;
+        if (s.outline) f.cornerRadius = std::max(1e-3, s.outline->cornerRadius - s.cutDepth * tanDeg(s.wallTaper));
     }
     return f;
 }
 
-std::string describe(const Step& s, const Tool& t, const Fit& f)
+// "largest flat end mill (10 mm) whose radius 5 mm fits the corner radius 5.7 mm";
+// shortOf: the depth its flutes do not reach (0 = they do).
+std::string describeEndMill(const Tool& t, const Fit& f, double shortOf = 0.0)
 {
     std::string r = fmt::format("largest {} ({}) ", toString(t.type), mm(t.diameter));
-    if (f.type == ToolType::TaperEndMill) r += fmt::format("of the wall's taper {:g} deg per side", f.taperAngle);
-    else if (f.cornerRadius > 0) r += fmt::format("whose radius {} fits the corner radius {}", mm(t.radius()), mm(f.cornerRadius));
-    else r += fmt::format("that fits the {}", s.kind == StepKind::InclinedFaceFinishing ? "inclined face" : "pocket");
+    if (f.cornerRadius > 0) r += fmt::format("whose radius {} fits the corner radius {}", mm(t.radius()), mm(f.cornerRadius));
+    else r += fmt::format("of diameter at most half the pocket's inscribed width {}", mm(2 * f.maxDiameter));
+    if (shortOf > 0)
+        r += fmt::format("; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: "
+                         "it cuts one layer at a time",
+                         mm(t.fluteLength), mm(shortOf));
     return r;
+}
+
+std::string describe(const Step& s, const Tool& t, const Fit& f, double shortOf)
+{
+    if (f.type == ToolType::TaperEndMill)
+        return fmt::format("taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the "
+                           "corner radius {} at the floor",
+                           f.taperAngle, mm(t.diameter), mm(t.radius()), mm(f.cornerRadius));
+    if (s.kind == StepKind::InclinedFaceFinishing && s.face)
+        return fmt::format("largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}",
+                           mm(t.diameter), mm(distance(s.face->topEdge[0], s.face->topEdge[1])));
+    return describeEndMill(t, f, shortOf);
+}
+
+// What the roughing layers of a unit need. They share one end mill (a
+// layer is gamma x D of it deep): the tightest layer's corner and width, the
+// thickest layer's depth, a stick-out reaching the deepest.
+Fit roughingFit(const std::vector<Step>& steps)
+{
+    std::optional<Fit> all;
+    for (const auto& s : steps) {
+        if (s.kind != StepKind::Roughing) continue;
+        const Fit layer = fitFor(s);
+        if (!all) {
+            all = layer;
+        } else {
+            if (layer.cornerRadius > 0)
+                all->cornerRadius = all->cornerRadius > 0 ? std::min(all->cornerRadius, layer.cornerRadius) : layer.cornerRadius;
+            all->maxDiameter = std::min(all->maxDiameter, layer.maxDiameter);
+            all->depth = std::max(all->depth, layer.depth);
+        }
+        all->reach = std::max(all->reach, s.cutDepth);
+    }
+    return all.value_or(Fit{});
+}
+
+// The largest end mill that fits, with flutes reaching the depth where
+// possible; otherwise one whose stick-out reaches it, shortOf then the depth
+// its flutes do not reach.
+const Tool* roughingTool(const std::vector<Tool>& library, const Fit& f, const std::string& material, double& shortOf)
+{
+    shortOf = 0.0;
+    if (const Tool* t = tools::largestFitting(library, f, material)) return t;
+    Fit shorter = f;
+    shorter.depth = 0.0;
+    const Tool* t = tools::largestFitting(library, shorter, material);
+    if (t) shortOf = f.depth;
+    return t;
 }
 
 }  // namespace
@@ -63,10 +123,10 @@ ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, c
     Fit f;
     f.cornerRadius = p.cornerRadius - tech.alpha2;
     f.maxDiameter = 0.5 * std::min(width, p.lengthY - 2 * tech.alpha2);
-    f.depth = bottom;
+    f.reach = bottom;  // the flutes cut one layer at a time
+    f.centreCutting = pilotHoleFromCode(p.pilotHole) == PilotHole::None;
     if (const Tool* t = tools::largestFitting(library, f, material))
-        return {ToolChoice{t->id, fmt::format("largest flat end mill ({}) whose radius fits the corner radius {} of the "
-                                              "roughing layers", mm(t->diameter), mm(f.cornerRadius))}, {}};
+        return {ToolChoice{t->id, describeEndMill(*t, f) + " of the roughing layers"}, {}};
     return {std::nullopt, tools::noFitMessage(library, f, material, "roughing")};
 }
 
@@ -75,8 +135,11 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
 {
     std::vector<std::string> problems;
     double plungeDiameter = 0;  // the first end mill that must enter the pilot hole
+    double pocketLimit = 1e9;   // the pilot drill stays as narrow as that end mill had to be
     bool hasPilot = false;
     for (const auto& s : steps) hasPilot |= s.kind == StepKind::PilotHole;
+    Fit roughing = roughingFit(steps);
+    roughing.centreCutting = !hasPilot;  // without a pilot hole it ramps into solid material
 
     const auto pick = [&](Step& s, const Fit& f) {
         const auto pin = pins.find(toKey(s.kind));
@@ -89,8 +152,10 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
             else s.tool = ToolChoice{t->id, "pinned by the operator"};
             return;
         }
-        if (const Tool* t = tools::largestFitting(library, f, material)) {
-            s.tool = ToolChoice{t->id, describe(s, *t, f)};
+        double shortOf = 0.0;
+        if (const Tool* t = s.kind == StepKind::Roughing ? roughingTool(library, f, material, shortOf)
+                                                         : tools::largestFitting(library, f, material)) {
+            s.tool = ToolChoice{t->id, describe(s, *t, f, shortOf)};
         } else {
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, toString(s.kind)));
         }
@@ -98,11 +163,13 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
 
     for (auto& s : steps) {
         if (s.kind == StepKind::PilotHole) continue;
-        pick(s, fitFor(s));
+        const Fit f = s.kind == StepKind::Roughing ? roughing : fitFor(s);
+        pick(s, f);
+        if (s.tool && s.kind == StepKind::Roughing && !hasPilot && pins.find(toKey(s.kind)) == pins.end())
+            s.tool->reason += "; it cuts at its centre and ramps in (no pilot hole)";
         if (s.tool && plungeDiameter == 0) {
             plungeDiameter = byId(library, s.tool->toolId)->diameter;
-            if (s.kind == StepKind::Roughing && pins.find(toKey(s.kind)) == pins.end())
-                s.tool->reason += hasPilot ? "; plunges into the pilot hole" : "; ramps in helically (no pilot hole)";
+            pocketLimit = f.maxDiameter;
         }
     }
     // The pilot hole last: the smallest drill not smaller than the end mill that plunges into it.
@@ -110,9 +177,9 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         if (s.kind != StepKind::PilotHole) continue;
         Fit f;
         f.type = ToolType::Drill;
-        f.minDiameter = plungeDiameter;
+        f.minDiameter = std::max(plungeDiameter, s.holeDiameter);
+        f.maxDiameter = pocketLimit;
         f.depth = s.cutDepth;
-        f.maxDiameter = s.holeDiameter > 0 ? s.holeDiameter : 1e9;
         const auto pin = pins.find(toKey(s.kind));
         if (pin != pins.end()) {
             pick(s, f);
@@ -122,7 +189,11 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         } else {
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, "pilot hole"));
         }
-        if (s.tool) s.holeDiameter = byId(library, s.tool->toolId)->diameter;
+        if (!s.tool) continue;
+        s.holeDiameter = byId(library, s.tool->toolId)->diameter;
+        for (auto& r : steps)
+            if (r.kind == StepKind::Roughing && r.number == 1 && r.tool && pins.find(toKey(r.kind)) == pins.end())
+                r.tool->reason += fmt::format("; enters the {} pilot hole", mm(s.holeDiameter));
     }
     return problems;
 }

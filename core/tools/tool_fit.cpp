@@ -15,11 +15,14 @@ std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
         return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
     if (f.cornerRadius > 0 && t.radius() > f.cornerRadius + 1e-9)
         return fmt::format("its radius {:g} mm is larger than the corner radius {:g} mm", t.radius(), f.cornerRadius);
+    if (f.centreCutting && !t.centreCutting) return "it does not cut at its centre, so it cannot ramp in without a pilot hole";
     if (t.diameter > f.maxDiameter + 1e-9) return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
     if (t.diameter < f.minDiameter - 1e-9)
         return fmt::format("its diameter {:g} mm is smaller than the {:g} mm needed", t.diameter, f.minDiameter);
-    if (t.fluteLength > 0 && t.fluteLength + 1e-9 < f.depth && f.type != ToolType::TaperEndMill)
+    if (t.fluteLength > 0 && t.fluteLength + 1e-9 < f.depth)
         return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
+    if (t.stickout > 0 && t.stickout + 1e-9 < f.reach)
+        return fmt::format("its stick-out ({:g} mm) is shorter than the depth {:g} mm", t.stickout, f.reach);
     return {};
 }
 

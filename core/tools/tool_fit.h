@@ -15,7 +15,9 @@ struct Fit {
     double minDiameter = 0.0;
     double maxDiameter = 1e9;
     double depth = 0.0;         // depth the flutes must reach
+    double reach = 0.0;         // depth the stick-out must reach (flutes may be shorter)
     double taperAngle = 0.0;    // taper end mills: exactly this angle
+    bool centreCutting = false; // it ramps into solid material (no pilot hole)
 };
 
 bool fits(const Tool& t, const Fit& f, const std::string& material);

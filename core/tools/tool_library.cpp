@@ -5,26 +5,36 @@
 #include <sqlite3.h>
 
 #include <filesystem>
+#include <iterator>
 #include <system_error>
 
 namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 1;
+constexpr int kSchemaVersion = 2;
 
+// The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
 CREATE TABLE tools (
   id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT NULL, diameter REAL NOT NULL,
   corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
   flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
-  flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0);
+  flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0,
+  centre_cutting INTEGER NOT NULL DEFAULT 1);
 CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 1;
+PRAGMA user_version = 2;
 )sql";
+
+// Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
+constexpr const char* kMigrations[] = {
+    // 1 -> 2: whether an end mill cuts at its centre (ramping in without a pilot hole).
+    "ALTER TABLE tools ADD COLUMN centre_cutting INTEGER NOT NULL DEFAULT 1; PRAGMA user_version = 2;",
+};
+static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
 // A prepared statement that finalizes itself.
 class Statement {
@@ -67,7 +77,9 @@ bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, 
 
 bool insert(sqlite3* db, const Tool& t)
 {
-    Statement s(db, "INSERT OR REPLACE INTO tools VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    Statement s(db, "INSERT OR REPLACE INTO tools (id, name, type, diameter, corner_radius, taper_angle, point_angle, "
+                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting) "
+                    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
     if (!s.ok()) return false;
     s.bind(1, t.id);
     s.bind(2, t.name);
@@ -82,6 +94,7 @@ bool insert(sqlite3* db, const Tool& t)
     s.bind(11, t.flutes);
     s.bind(12, t.lifeMinutes);
     s.bind(13, t.usedMinutes);
+    s.bind(14, t.centreCutting ? 1 : 0);
     if (s.step() != SQLITE_DONE) return false;
     Statement del(db, "DELETE FROM cutting_data WHERE tool_id = ?");
     del.bind(1, t.id);
@@ -152,6 +165,15 @@ std::unique_ptr<ToolLibrary> ToolLibrary::open(const std::string& path, std::str
             exec(db, "ROLLBACK");
             return nullptr;
         }
+    } else if (v < kSchemaVersion) {
+        // An older library: every migration from its version on, in one transaction.
+        bool ok = exec(db, "BEGIN IMMEDIATE");
+        for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
+        if (!ok || !exec(db, "COMMIT")) {
+            error = describe(db, path) + " (while upgrading it from tool library version " + std::to_string(v) + ")";
+            exec(db, "ROLLBACK");
+            return nullptr;
+        }
     }
     return lib;
 }
@@ -160,7 +182,7 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
 {
     sqlite3* db = db_->handle;
     Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
-                    "holder, flutes, life_minutes, used_minutes FROM tools ORDER BY id");
+                    "holder, flutes, life_minutes, used_minutes, centre_cutting FROM tools ORDER BY id");
     if (!s.ok()) {
         error = describe(db, path_);
         return std::nullopt;
@@ -187,6 +209,7 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
         t.flutes = s.integer(10);
         t.lifeMinutes = s.real(11);
         t.usedMinutes = s.real(12);
+        t.centreCutting = s.integer(13) != 0;
         out.push_back(std::move(t));
     }
     if (rc != SQLITE_DONE) {
@@ -210,15 +233,13 @@ std::optional<int> ToolLibrary::save(const Tool& tool, std::string& error)
 {
     sqlite3* db = db_->handle;
     Tool t = tool;
-    if (t.id == 0) {
+    bool ok = exec(db, "BEGIN IMMEDIATE");
+    if (ok && t.id == 0) {
         Statement s(db, "SELECT coalesce(max(id), 0) + 1 FROM tools");
-        if (!s.ok() || s.step() != SQLITE_ROW) {
-            error = describe(db, path_);
-            return std::nullopt;
-        }
-        t.id = s.integer(0);
+        ok = s.ok() && s.step() == SQLITE_ROW;
+        t.id = ok ? s.integer(0) : 0;
     }
-    if (!exec(db, "BEGIN IMMEDIATE") || !insert(db, t) || !exec(db, "COMMIT")) {
+    if (!ok || !insert(db, t) || !exec(db, "COMMIT")) {
         error = describe(db, path_);
         exec(db, "ROLLBACK");
         return std::nullopt;
@@ -226,15 +247,29 @@ std::optional<int> ToolLibrary::save(const Tool& tool, std::string& error)
     return t.id;
 }
 
+namespace {
+
+// Runs a one-tool statement; false with a message when it fails or the tool does not exist.
+bool changeOne(sqlite3* db, Statement& s, int id, const std::string& path, std::string& error)
+{
+    if (!s.ok() || s.step() != SQLITE_DONE) {
+        error = describe(db, path);
+        return false;
+    }
+    if (sqlite3_changes(db) == 0) {
+        error = path + " has no tool T" + std::to_string(id);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 bool ToolLibrary::remove(int id, std::string& error)
 {
     Statement s(db_->handle, "DELETE FROM tools WHERE id = ?");
     s.bind(1, id);
-    if (!s.ok() || s.step() != SQLITE_DONE) {
-        error = describe(db_->handle, path_);
-        return false;
-    }
-    return true;
+    return changeOne(db_->handle, s, id, path_, error);
 }
 
 bool ToolLibrary::addUsage(int id, double minutes, std::string& error)
@@ -242,11 +277,7 @@ bool ToolLibrary::addUsage(int id, double minutes, std::string& error)
     Statement s(db_->handle, "UPDATE tools SET used_minutes = used_minutes + ? WHERE id = ?");
     s.bind(1, minutes);
     s.bind(2, id);
-    if (!s.ok() || s.step() != SQLITE_DONE) {
-        error = describe(db_->handle, path_);
-        return false;
-    }
-    return true;
+    return changeOne(db_->handle, s, id, path_, error);
 }
 
 }  // namespace taiwa

@@ -1,4 +1,5 @@
-// Running LinuxCNC's rs274 on our G-code and reading its canonical calls.
+// Running LinuxCNC's rs274 on our G-code and reading its canonical calls
+// (see rs274.h).
 #include "support/rs274.h"
 
 #include <QDir>
@@ -13,84 +14,116 @@
 namespace taiwa::test {
 
 namespace {
+
 std::vector<double> numbers(const QString& args)
 {
     std::vector<double> v;
     for (const auto& part : args.split(QRegularExpression("[,\\s]+"), Qt::SkipEmptyParts)) v.push_back(part.toDouble());
     return v;
 }
+
+bool copyData(const QString& name, const QString& to)
+{
+    return QFile::copy(QStringLiteral(TAIWA_TEST_DATA "/rs274/") + name, to) &&
+           QFile::setPermissions(to, QFile::ReadOwner | QFile::WriteOwner);
+}
+
+// rs274 prints "executing" on stderr for every run; anything else there is
+// its complaint (which need not contain the word "error": "Radius to end of
+// arc differs from radius to start: ...", "Nested comment found").
+QString complaint(const QString& out, const QString& err)
+{
+    QStringList bad;
+    for (const auto& l : err.split('\n', Qt::SkipEmptyParts))
+        if (l.trimmed() != "executing") bad << l;
+    for (const auto& l : out.split('\n', Qt::SkipEmptyParts))
+        if (!l.contains("COMMENT(") && l.contains("error", Qt::CaseInsensitive)) bad << l;
+    return bad.join('\n');
+}
+
 }  // namespace
 
 Rs274Result runRs274(const std::string& ngc)
 {
     Rs274Result r;
     QTemporaryDir dir;
-    // A fresh tool table (rs274 reads it, diameters irrelevant without
-    // cutter compensation) and an empty parameter file, which rs274 rewrites.
-    QFile tbl(dir.filePath("tools.tbl"));
-    tbl.open(QIODevice::WriteOnly);
-    for (int t = 1; t <= 200; ++t) tbl.write(QStringLiteral("T%1 P%1 D0.25\n").arg(t).toUtf8());
-    tbl.close();
-    QFile var(dir.filePath("params.var"));
-    var.open(QIODevice::WriteOnly);
-    var.close();
-    QFile prog(dir.filePath("program.ngc"));
-    prog.open(QIODevice::WriteOnly);
-    prog.write(ngc.data(), static_cast<qint64>(ngc.size()));
-    prog.close();
+    const QString tbl = dir.filePath("tools.tbl"), var = dir.filePath("params.var"), prog = dir.filePath("program.ngc");
+    QFile program(prog);
+    if (!copyData("tools.tbl", tbl) || !copyData("params.var", var) || !program.open(QIODevice::WriteOnly)) {
+        r.errors = "cannot prepare rs274's files in " + dir.path();
+        return r;
+    }
+    program.write(ngc.data(), static_cast<qint64>(ngc.size()));
+    program.close();
 
     QProcess p;
     p.setWorkingDirectory(dir.path());
-    p.start(QStringLiteral(TAIWA_RS274), {"-g", "-t", tbl.fileName(), "-v", var.fileName(), prog.fileName()});
+    p.start(QStringLiteral(TAIWA_RS274), {"-g", "-t", tbl, "-v", var, prog});
     p.closeWriteChannel();
     if (!p.waitForFinished(300000)) {
         p.kill();
         r.errors = "rs274 did not finish";
         return r;
     }
-    const QString out = QString::fromUtf8(p.readAllStandardOutput());
-    const QString err = QString::fromUtf8(p.readAllStandardError());
-    r.ok = p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0 && !err.contains("error", Qt::CaseInsensitive);
-    if (!r.ok) r.errors = err + out.right(2000);
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.errors = complaint(r.out, r.err);
+    r.ok = r.exitCode == 0 && r.errors.isEmpty();
+    if (!r.ok && r.errors.isEmpty()) r.errors = QString("rs274 exit code %1").arg(r.exitCode);
 
-    static const QRegularExpression call(R"(^\s*\d+\s+N\.+\s+([A-Z_]+)\((.*)\)\s*$)");
+    static const QRegularExpression call(R"(^\s*\d+\s+N[.0-9]+\s+([A-Z_0-9]+)\((.*)\)\s*$)");
     static const QRegularExpression stepComment(R"(^STEP (\d+):)");
+    // The tool starts at machine zero: in program coordinates, minus the work offset.
     Point3 at{};
+    double feed = 0.0;
     int step = 0, tool = 0, selected = 0;
-    for (const auto& line : out.split('\n')) {
+    for (const auto& line : r.out.split('\n')) {
         const auto m = call.match(line);
         if (!m.hasMatch()) continue;
         r.canon << line.trimmed();
         const QString name = m.captured(1);
         const QString args = m.captured(2);
-        if (name == "COMMENT") {
+        if (name == "USE_LENGTH_UNITS") {
+            const bool inches = args == "CANON_UNITS_INCHES";
+            if (inches != r.inches) {
+                const double k = inches ? 1 / 25.4 : 25.4;
+                at = {at.x * k, at.y * k, at.z * k};
+                feed *= k;
+            }
+            r.inches = inches;
+        } else if (name == "SET_G5X_OFFSET" && r.moves.empty()) {
+            const auto v = numbers(args);
+            at = {-v.at(1), -v.at(2), -v.at(3)};
+        } else if (name == "SET_FEED_RATE") {
+            feed = args.toDouble();
+        } else if (name == "COMMENT") {
             const auto s = stepComment.match(args.mid(1, args.size() - 2));
             if (s.hasMatch()) step = s.captured(1).toInt();
         } else if (name == "SELECT_TOOL") {
             selected = args.toInt();
         } else if (name == "CHANGE_TOOL") {
             tool = selected;
-        } else if (name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED") {
-            const auto v = numbers(args);
-            CanonMove c;
-            c.kind = name == "STRAIGHT_FEED" ? CanonMove::Feed : CanonMove::Traverse;
-            c.start = at;
-            c.end = {v.at(0), v.at(1), v.at(2)};
-            c.step = step;
-            c.tool = tool;
-            r.moves.push_back(c);
-            at = c.end;
-        } else if (name == "ARC_FEED") {
+        } else if (name == "DWELL") {
+            ++r.dwells;
+        } else if (name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED" || name == "ARC_FEED") {
+            // STRAIGHT_*(x, y, z, a, b, c);
             // ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end_point, a, b, c)
             const auto v = numbers(args);
             CanonMove c;
-            c.kind = CanonMove::Arc;
             c.start = at;
-            c.end = {v.at(0), v.at(1), v.at(5)};
-            c.centre = {v.at(2), v.at(3)};
-            c.rotation = static_cast<int>(v.at(4));
             c.step = step;
             c.tool = tool;
+            if (name == "ARC_FEED") {
+                c.kind = CanonMove::Arc;
+                c.end = {v.at(0), v.at(1), v.at(5)};
+                c.centre = {v.at(2), v.at(3)};
+                c.rotation = static_cast<int>(v.at(4));
+            } else {
+                c.kind = name == "STRAIGHT_FEED" ? CanonMove::Feed : CanonMove::Traverse;
+                c.end = {v.at(0), v.at(1), v.at(2)};
+            }
+            if (c.kind != CanonMove::Traverse) c.feed = feed;
             r.moves.push_back(c);
             at = c.end;
         }

@@ -1,7 +1,6 @@
-// Wall finishing (vertical and tapered walls, one or several Z incisions,
-// tangent lead-in and lead-out arcs), inclined-face finishing of module M2D
-// with a ball end mill at a set scallop height, and the pilot-hole drilling
-// cycle.
+// The tool-path generators of the step kinds, one source file each:
+// pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
+// inclined_face.cpp, pilot_hole.cpp. makeToolPath dispatches to them.
 #pragma once
 
 #include "model/step.h"
@@ -12,6 +11,8 @@
 
 namespace taiwa::paths {
 
+ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
+ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p);

@@ -1,0 +1,98 @@
+// Wall finishing: the tool-centre contour of the outline (vertical walls) or
+// of the floor cross-section (tapered walls), one or several Z incisions,
+// each entered and left on a quarter-circle arc tangent to the wall.
+#include "paths/generators.h"
+
+#include "paths/contour.h"
+#include "paths/path_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace taiwa::paths {
+
+namespace {
+
+Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
+Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
+
+// Largest lead radius, at most `wanted`, whose whole circle (tangent to the
+// contour at its start, on the pocket's side) stays in the centre region:
+// circles tangent at one point grow nested, so bisection finds it.
+double leadRadius(const Quad& centre, bool ccw, double wanted)
+{
+    const ContourStart s = contourStart(centre, ccw);
+    const Point2 inward = ccw ? leftOf(s.direction) : -1.0 * leftOf(s.direction);
+    const auto fits = [&](double l) { return signedDistance(centre, s.point + l * inward) <= -l + 1e-9; };
+    if (fits(wanted)) return wanted;
+    double lo = 0.0, hi = wanted;
+    for (int it = 0; it < 50; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (fits(mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+// One incision at depth z: approach above the lead-in start, plunge there
+// (inside the cleared pocket), lead-in arc, the closed contour, lead-out arc.
+// Lead-in and lead-out share one centre: quarter circles ending and starting
+// tangentially at the middle of the contour's first side.
+void incision(PathBuilder& b, const Quad& centre, double z, bool ccw, double wantedLead, double approachZ)
+{
+    const ContourStart s = contourStart(centre, ccw);
+    const Point2 inward = ccw ? leftOf(s.direction) : -1.0 * leftOf(s.direction);
+    const double lead = leadRadius(centre, ccw, wantedLead);
+    const Point2 c = s.point + lead * inward;
+    const Point2 from = c - lead * s.direction, to = c + lead * s.direction;
+    if (b.at().z > approachZ) {
+        b.rapid(at(from, b.at().z));
+        b.rapid(at(from, approachZ));
+    } else {
+        b.feed(at(from, b.at().z));  // at the last incision's depth, inside the pocket
+    }
+    b.feed(at(from, z), FeedKind::Plunge);
+    if (lead > 0) b.arc(ccw, at(s.point, z), c);
+    appendContour(b, centre, z, ccw);
+    if (lead > 0) b.arc(ccw, at(to, z), c);
+}
+
+}  // namespace
+
+ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
+{
+    if (!step.outline) throw std::logic_error("wall step without an outline");
+    const Quad outline{counterClockwise(step.outline->corners), step.outline->cornerRadius};
+    const double R = tool.radius();
+    const double t = step.wallTaper > 0 ? tanDeg(step.wallTaper) : 0.0;
+    // A flank steeper than the wall would cut into it above the tip.
+    const double flank = tool.type == ToolType::TaperEndMill ? tool.taperAngle : 0.0;
+    if (flank > step.wallTaper + 1e-9) throw std::logic_error("tool flank steeper than the wall");
+    if (step.wallTaper == 0.0 && outline.cornerRadius < R - 1e-9)
+        throw std::logic_error("wall corner radius smaller than the tool radius");
+    if (!offsetExists(outline, R + step.cutDepth * t)) throw std::logic_error("pocket narrower than the tool");
+
+    // Incision depths: one at full depth, or equal steps of at most gamma x D.
+    std::vector<double> depths{step.cutDepth};
+    if (step.multiIncision) {
+        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+        const double range = step.cutDepth - step.startDepth;
+        const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
+        depths.clear();
+        for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
+        depths.push_back(step.cutDepth);
+    }
+    // The tip runs on the wall's cross-section at its own depth d moved in
+    // by R (vertical walls: the outline itself); for a tapered wall that is
+    // the top outline moved in by R + d tan(S), and the flank of a taper end
+    // mill of the wall's angle then touches the wall over its whole height.
+    const double wantedLead = p.leadRadius > 0 ? p.leadRadius : R;
+    const ContourStart s0 = contourStart(centreQuad(outline, R + depths.front() * t), p.climb);
+    PathBuilder b({s0.point.x, s0.point.y, p.safeZ});
+    for (const double d : depths)
+        incision(b, centreQuad(outline, R + d * t), -d, p.climb, wantedLead, -step.startDepth + p.clearance);
+    b.rapid(at({b.at().x, b.at().y}, p.safeZ));
+    return b.take();
+}
+
+}  // namespace taiwa::paths
