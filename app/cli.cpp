@@ -169,7 +169,7 @@ int run(int argc, char** argv)
         case Command::Render: return render(o);
         case Command::Station:
 #ifdef TAIWA_WITH_UI
-            return ui::runStation(argc, argv);
+            return ui::runStation(argc, argv, QString::fromStdString(o.job));
 #else
             std::cerr << "taiwa: this build has no station window (built without TAIWA_BUILD_UI)\n";
             return kInternal;

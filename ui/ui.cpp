@@ -1,6 +1,22 @@
-// Placeholder of the ui layer until the station window lands.
+// runStation: the QApplication, the translator and the station window.
 #include "ui/ui.h"
-#include <cstdio>
+
+#include "ui/language.h"
+#include "ui/station_window.h"
+
+#include <QApplication>
+
 namespace taiwa::ui {
-int runStation(int, char**) { std::fputs("taiwa: the station window is not built yet\n", stderr); return 1; }
+
+int runStation(int& argc, char** argv, const QString& jobPath)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("Taiwa");
+    QApplication::setApplicationName("taiwa");
+    installTranslator(app);
+    StationWindow window(jobPath);
+    window.show();
+    return QApplication::exec();
 }
+
+}  // namespace taiwa::ui

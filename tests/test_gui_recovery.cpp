@@ -1,0 +1,121 @@
+// Crash recovery. A window with unsaved edits is destroyed without closing
+// (what a kill -9 leaves behind on disk: the autosaved recovery file and
+// nothing else) after the autosave timer ran; the next window started on the
+// same job offers the recovery file and restores the typed values. A
+// recovery file older than the job file is not offered; a clean close
+// removes it.
+#include "io/job_io.h"
+#include "ui/autosave.h"
+#include "ui/file_actions.h"
+#include "ui/job_document.h"
+#include "ui/station_window.h"
+
+#include <QAbstractButton>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+class TestGuiRecovery : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+    static void type(QWidget& w, const char* name, const QString& text)
+    {
+        auto* e = w.findChild<QLineEdit*>(name);
+        QVERIFY(e);
+        e->setFocus();
+        e->selectAll();
+        QTest::keyClicks(e, text);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        QStandardPaths::setTestModeEnabled(true);
+        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
+        qputenv("TAIWA_NO_PROMPTS", "1");
+        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+    }
+
+    void untitledJobRestoredAfterAKill()
+    {
+        const QString recovery = Autosaver::recoveryPath({});
+        QVERIFY(recovery.startsWith(dir_.path()));
+        QVERIFY(!QFile::exists(recovery));
+        QElapsedTimer sinceLastEdit;
+        {
+            auto* w = new StationWindow;
+            QTest::mouseClick(w->findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+            type(*w, "m4.depth", "7.25");
+            type(*w, "m4.r1", "6.5");
+            sinceLastEdit.start();
+            QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(recovery), 2 * Autosaver::kIntervalMs);
+            delete w;  // no close event, no save: as after kill -9
+        }
+        // The edits reached the disk within one autosave interval.
+        QVERIFY2(sinceLastEdit.elapsed() <= Autosaver::kIntervalMs + 500,
+                 qPrintable(QString::number(sinceLastEdit.elapsed())));
+        QVERIFY(QFile::exists(recovery));
+        StationWindow w2;
+        QCOMPARE(w2.document()->job().units.size(), std::size_t(1));
+        const auto& m4 = std::get<M4Pocket>(w2.document()->job().units[0].module);
+        QCOMPARE(m4.depth, 7.25);
+        QCOMPARE(m4.cornerRadius, 6.5);
+        QCOMPARE(w2.findChild<QLineEdit*>("m4.depth")->text(), QString("7.25"));
+        QVERIFY(w2.document()->isModified());
+        QVERIFY(w2.windowTitle().contains('*'));
+        QVERIFY(w2.close());  // prompts are off: the changes are dropped
+        QVERIFY(!QFile::exists(recovery));
+    }
+
+    void savedJobRestoredOnlyWhenTheRecoveryIsNewer()
+    {
+        const QString job = dir_.filePath("plate.taiwa");
+        Job j;
+        j.name = "plate";
+        M4Pocket p;
+        p.corners = {Point2{10, 10}, Point2{60, 10}, Point2{60, 40}, Point2{10, 40}};
+        p.cornerRadius = 5;
+        p.depth = 8;
+        j.units.push_back(MachiningUnit{"A", p});
+        QVERIFY(!writeFileAtomically(job.toStdString(), writeJob(j)));
+        const QString recovery = Autosaver::recoveryPath(job);
+        {
+            auto* w = new StationWindow(job);
+            QCOMPARE(w->document()->job(), j);
+            type(*w, "m4.depth", "11");
+            w->autosaver()->saveNow();  // what the timer does every 3 s
+            QVERIFY(QFile::exists(recovery));
+            delete w;
+        }
+        {
+            StationWindow w(job);  // the recovery is newer than the file: restored, still modified
+            QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 11.0);
+            QCOMPARE(w.document()->path(), job);
+            QVERIFY(w.document()->isModified());
+            QVERIFY(w.fileActions()->save());  // saved: the recovery file goes
+            QVERIFY(!QFile::exists(recovery));
+        }
+        // A stale recovery file (older than the job file) is not offered.
+        Job stale = j;
+        std::get<M4Pocket>(stale.units[0].module).depth = 3;
+        QVERIFY(!writeFileAtomically(recovery.toStdString(), writeJob(stale)));
+        QFile f(recovery);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        QVERIFY(f.setFileTime(QDateTime::currentDateTime().addSecs(-3600), QFileDevice::FileModificationTime));
+        f.close();
+        StationWindow w(job);
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 11.0);
+        QVERIFY(!w.document()->isModified());
+    }
+};
+
+QTEST_MAIN(TestGuiRecovery)
+#include "test_gui_recovery.moc"

@@ -1,0 +1,234 @@
+// The station window end to end on the offscreen platform: adding an M4 unit
+// from the palette, typing its form with the keyboard (Tab and Enter), live
+// checks (checkJob messages and "not a number"), the step list, code combo
+// boxes, undo/redo (one step per field), the NC view <-> step mapping, and
+// the save/open round trip.
+#include "check/input_check.h"
+#include "ui/file_actions.h"
+#include "ui/job_document.h"
+#include "ui/nc_view.h"
+#include "ui/plan_runner.h"
+#include "ui/station_window.h"
+#include "ui/step_panel.h"
+#include "ui/step_table.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTextBlock>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+class TestGuiStation : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+    static QLineEdit* edit(QWidget& w, const QString& name)
+    {
+        auto* e = w.findChild<QLineEdit*>(name);
+        if (!e) qWarning("no line edit %s", qPrintable(name));
+        return e;
+    }
+    static QLabel* label(QWidget& w, const QString& name) { return w.findChild<QLabel*>(name + ".error"); }
+    static void retype(QLineEdit* e, const QString& text)
+    {
+        e->setFocus();
+        e->selectAll();
+        if (text.isEmpty()) QTest::keyClick(e, Qt::Key_Backspace);
+        else QTest::keyClicks(e, text);
+    }
+    static bool isRed(QWidget* e) { return e->styleSheet().contains("#ffd0d0"); }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        QStandardPaths::setTestModeEnabled(true);
+        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
+        qputenv("TAIWA_NO_PROMPTS", "1");
+        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+    }
+
+    void editCheckPlanUndoSaveOpen()
+    {
+        StationWindow w;
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.document()->job().units.empty());
+        QVERIFY(!w.windowTitle().contains('*'));
+
+        auto* add = w.findChild<QAbstractButton*>("unit.addM4");
+        QVERIFY(add);
+        QTest::mouseClick(add, Qt::LeftButton);
+        QCOMPARE(w.document()->job().units.size(), std::size_t(1));
+        QVERIFY(w.windowTitle().contains('*'));
+
+        // The whole form with the keyboard: type, Tab to the next field.
+        const QStringList names{"m4.P1.x", "m4.P1.y", "m4.P2.x", "m4.P2.y", "m4.P3.x",
+                                "m4.P3.y", "m4.P4.x", "m4.P4.y", "m4.r1", "m4.depth"};
+        const QStringList values{"10", "10", "70", "10", "70", "50", "10", "50", "8", "9"};
+        edit(w, names[0])->setFocus();
+        for (int i = 0; i < names.size(); ++i) {
+            auto* e = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+            QVERIFY2(e, qPrintable(names[i]));
+            QCOMPARE(e->objectName(), names[i]);
+            e->selectAll();
+            QTest::keyClicks(e, values[i]);
+            QTest::keyClick(e, Qt::Key_Tab);
+        }
+        const auto& m4 = std::get<M4Pocket>(w.document()->job().units[0].module);
+        QCOMPARE(m4.corners[2].x, 70.0);
+        QCOMPARE(m4.corners[3].y, 50.0);
+        QCOMPARE(m4.cornerRadius, 8.0);
+        QCOMPARE(m4.depth, 9.0);
+        QVERIFY(w.stepTable()->rowCount() > 0);
+
+        // depth 0: refused by checkJob; its message is shown under the field.
+        QLineEdit* depth = edit(w, "m4.depth");
+        retype(depth, "0");
+        QVERIFY(isRed(depth));
+        const Diagnostics ds = checkJob(w.document()->job(), TechnologyTable::builtIn(), w.planRunner()->library());
+        auto it = std::find_if(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.field == "depth"; });
+        QVERIFY(it != ds.end());
+        QVERIFY(label(w, "m4.depth")->isVisible());
+        QVERIFY2(label(w, "m4.depth")->text().contains(QString::fromStdString(it->message)),
+                 qPrintable(label(w, "m4.depth")->text()));
+        QCOMPARE(w.stepTable()->rowCount(), 0);
+
+        // Not a number: kept as typed, red, "not a number".
+        retype(depth, "12,5x");
+        QCOMPARE(depth->text(), QString("12,5x"));
+        QVERIFY(isRed(depth));
+        QCOMPARE(label(w, "m4.depth")->text(), QString("not a number"));
+
+        // Fixed: not red, the steps of U=1 F=1 H=0.
+        retype(depth, "12.5");
+        QVERIFY(!isRed(depth));
+        QVERIFY(!label(w, "m4.depth")->isVisible());
+        QCOMPARE(depth->text(), QString("12.5"));
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 12.5);
+        QCOMPARE(w.stepTable()->stepLabels(),
+                 QStringList({"Pilot hole", "Roughing I", "Floor finishing I", "Wall finishing I"}));
+
+        // Undo (Ctrl+Z in the field) goes back to the depth before the typing; redo re-applies.
+        QTest::keyClick(depth, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 9.0);
+        QCOMPARE(depth->text(), QString("9"));
+        QTest::keyClick(depth, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 12.5);
+        QCOMPARE(depth->text(), QString("12.5"));
+        // One undo step per field edit: adding the unit, the five fields typed
+        // with a value other than the new unit's (P2.x, P3.x, P3.y, P4.y,
+        // depth), and the retyping of depth ("0", "12,5x", "12.5" without
+        // leaving the field) as one more.
+        QCOMPARE(w.document()->undoStack()->count(), 7);
+        QVERIFY(w.document()->undoStack()->text(6).contains("T (depth)"));
+
+        // A code from its combo box with the keyboard: U = 9 (roughing only).
+        auto* u = w.findChild<QComboBox*>("m4.U");
+        QVERIFY(u);
+        QVERIFY(u->currentText().startsWith("1"));
+        u->setFocus();
+        QTest::keyClick(u, Qt::Key_End);
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).toolUse, 9);
+        QCOMPARE(w.stepTable()->stepLabels(), QStringList({"Pilot hole", "Roughing I"}));
+        QTest::keyClick(u, Qt::Key_Return);  // Enter moves on, as Tab does
+        QCOMPARE(QApplication::focusWidget()->objectName(), QString("m4.F"));
+        w.document()->undoStack()->undo();
+        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).toolUse, 1);
+        QCOMPARE(u->currentData().toInt(), 1);
+
+        // The NC program: putting the cursor on a line posted from a step names
+        // that step's move (for the preview); selectMove() finds the line back.
+        w.planRunner()->flush();
+        QPlainTextEdit* nc = w.ncView()->text();
+        QVERIFY(nc->toPlainText().size() > 100);
+        QSignalSpy moves(w.ncView(), &NcView::moveSelected);
+        const QStringList ncLines = nc->toPlainText().split('\n');
+        int cutLine = -1;
+        for (int i = 0; i < ncLines.size() && cutLine < 0; ++i)
+            if (ncLines[i].contains(QRegularExpression("(^|\\s)G1\\s"))) cutLine = i;
+        QVERIFY(cutLine > 0);
+        nc->setTextCursor(QTextCursor(nc->document()->findBlockByNumber(cutLine)));
+        QCOMPARE(moves.count(), 1);
+        const int step = moves[0][0].toInt(), move = moves[0][1].toInt();
+        QVERIFY(step >= 0 && move >= 0);
+        nc->setTextCursor(QTextCursor(nc->document()->findBlockByNumber(0)));
+        QVERIFY(w.ncView()->selectMove(step, move));
+        QCOMPARE(nc->textCursor().blockNumber(), cutLine);
+
+        // Selecting a step in the list tells the preview and shows its numbers.
+        QSignalSpy steps(w.stepPanel(), &StepPanel::stepSelected);
+        QTest::mouseClick(w.stepTable()->viewport(), Qt::LeftButton, {},
+                          w.stepTable()->visualItemRect(w.stepTable()->item(1, 2)).center());
+        QCOMPARE(w.stepPanel()->selectedStep(), 1);
+        QCOMPARE(steps.count(), 1);
+        QCOMPARE(steps[0][0].toInt(), 1);
+        QVERIFY2(w.findChild<QLabel*>("step.details")->text().contains("Roughing I"),
+                 qPrintable(w.findChild<QLabel*>("step.details")->text()));
+
+        // Save, open in a new window: the same job.
+        const QString path = dir_.filePath("saved.taiwa");
+        QVERIFY(w.fileActions()->saveTo(path));
+        QVERIFY(!w.windowTitle().contains('*'));
+        QVERIFY(w.windowTitle().contains("saved.taiwa"));
+        StationWindow w2(path);
+        QVERIFY(w2.document()->job() == w.document()->job());
+        QCOMPARE(edit(w2, "m4.depth")->text(), QString("12.5"));
+        QVERIFY(!w2.document()->isModified());
+    }
+
+    void enterMovesToTheNextField()
+    {
+        StationWindow w;
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        QLineEdit* x = edit(w, "m4.P1.x");
+        x->setFocus();
+        x->selectAll();
+        QTest::keyClicks(x, "12");
+        QTest::keyClick(x, Qt::Key_Return);
+        QCOMPARE(QApplication::focusWidget(), edit(w, "m4.P1.y"));
+        // r1 too big for the 50 x 30 pocket: red, with checkJob's message.
+        QLineEdit* r1 = edit(w, "m4.r1");
+        retype(r1, "20");
+        QVERIFY(isRed(r1));
+        QVERIFY2(label(w, "m4.r1")->text().contains("half"), qPrintable(label(w, "m4.r1")->text()));
+        QCOMPARE(w.stepTable()->rowCount(), 0);
+    }
+
+    void addM2DAndMoveUnits()
+    {
+        StationWindow w;
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
+        QCOMPARE(w.document()->job().units.size(), std::size_t(2));
+        QVERIFY(std::holds_alternative<M2DPocket>(w.document()->job().units[1].module));
+        retype(edit(w, "m2d.theta2"), "15");
+        QCOMPARE(std::get<M2DPocket>(w.document()->job().units[1].module).theta2, std::optional<double>(15.0));
+        retype(edit(w, "m2d.theta2"), "");
+        QVERIFY(!std::get<M2DPocket>(w.document()->job().units[1].module).theta2);
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.up"), Qt::LeftButton);
+        QVERIFY(std::holds_alternative<M2DPocket>(w.document()->job().units[0].module));
+        w.document()->undoStack()->undo();
+        QVERIFY(std::holds_alternative<M4Pocket>(w.document()->job().units[0].module));
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.delete"), Qt::LeftButton);
+        QCOMPARE(w.document()->job().units.size(), std::size_t(1));
+    }
+};
+
+QTEST_MAIN(TestGuiStation)
+#include "test_gui_station.moc"

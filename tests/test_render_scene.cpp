@@ -1,0 +1,291 @@
+// The 3-D preview, rendered: a hand-built plan (stock 100 x 80 x 30, a
+// pilot drill and one rectangular pocket roughing path) through the
+// offscreen renderer and through PreviewWidget under X. Pixels at known
+// world positions show the path, rapid, tool and stock colours, pixels off
+// the stock the background; views and step selection change the image;
+// picking finds the move under a pixel; the widget rotates on a drag and
+// reports a click on a path. Needs an X display (xvfb-run -a).
+#include "ui/preview_widget.h"
+#include "viz/palette.h"
+#include "viz/render.h"
+#include "viz/scene.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <vtkCamera.h>
+
+#include <cstdlib>
+
+using namespace taiwa;
+using namespace taiwa::viz;
+using taiwa::ui::PreviewWidget;
+
+namespace {
+
+constexpr int kW = 800, kH = 600;
+constexpr int kRoughing = 1;     // step index of the pocket
+constexpr int kSlotMove = 2;     // the feed (40,40) -> (60,40) through the pocket centre
+constexpr int kRapidMove = 16;   // the rapid (75,40,5) -> (90,70,5)
+
+Plan handPlan()
+{
+    Plan plan;
+    plan.mmJob.stock = {0, 0, 100, 80, 30};
+    Tool drill;
+    drill.id = 2;
+    drill.type = ToolType::Drill;
+    drill.diameter = 12;
+    drill.fluteLength = 40;
+    Tool mill;
+    mill.id = 1;
+    mill.type = ToolType::FlatEndMill;
+    mill.diameter = 10;
+    mill.fluteLength = 25;
+    plan.tools = {drill, mill};
+
+    Step pilot;
+    pilot.kind = StepKind::PilotHole;
+    pilot.tool = ToolChoice{2, "pilot"};
+    Move cycle{MoveKind::DrillCycle, {40, 40, -4}};
+    cycle.retractZ = 1;
+    pilot.path = ToolPath{{40, 40, 5}, {cycle}};
+
+    // Pocket [20,80] x [20,60], depth 5, D10: a slot through the centre,
+    // then two rings counter-clockwise, then away at safe height.
+    Step rough;
+    rough.kind = StepKind::Roughing;
+    rough.tool = ToolChoice{1, "roughing"};
+    ToolPath p{{40, 40, 5}, {}};
+    p.moves.push_back({MoveKind::Rapid, {40, 40, 1}});
+    p.moves.push_back({MoveKind::Feed, {40, 40, -5}, {}, FeedKind::Plunge});
+    for (Point2 q : {Point2{60, 40}, {70, 40}, {70, 48}, {30, 48}, {30, 32}, {70, 32}, {70, 40}, {75, 40}, {75, 55}, {25, 55},
+                     {25, 25}, {75, 25}})
+        p.moves.push_back({MoveKind::Feed, {q.x, q.y, -5}});
+    p.moves.push_back({MoveKind::Feed, {75, 40, -5}});
+    p.moves.push_back({MoveKind::Rapid, {75, 40, 5}});
+    p.moves.push_back({MoveKind::Rapid, {90, 70, 5}});
+    rough.path = p;
+    plan.steps = {pilot, rough};
+    return plan;
+}
+
+bool near(QRgb c, Rgb want, int tol) { return std::abs(qRed(c) - want.r) <= tol && std::abs(qGreen(c) - want.g) <= tol && std::abs(qBlue(c) - want.b) <= tol; }
+
+double colourDistance(QRgb c, Rgb want) { return std::hypot(qRed(c) - want.r, qGreen(c) - want.g, qBlue(c) - want.b); }
+
+// A line of that colour passes within `radius` pixels of (x, y): the pixel
+// there nearest to the colour is within `tol` of it, or (thin lines are
+// multisampled into their backdrop) at least twice as near to it as the
+// backdrop is, the backdrop being the window's pixel farthest from it.
+bool colourNear(const QImage& img, std::array<double, 2> at, Rgb want, int radius = 2, int tol = 12)
+{
+    double nearest = 1e9, backdrop = 0;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int x = static_cast<int>(at[0]) + dx, y = static_cast<int>(at[1]) + dy;
+            if (!img.valid(x, y)) continue;
+            const double d = colourDistance(img.pixel(x, y), want);
+            nearest = std::min(nearest, d);
+            backdrop = std::max(backdrop, d);
+        }
+    return nearest <= tol || nearest <= 0.5 * backdrop;
+}
+
+bool goldish(QRgb c) { return qRed(c) > 150 && qGreen(c) > 100 && qBlue(c) < 90 && qRed(c) > qBlue(c) + 100; }
+
+// Where world points land in the offscreen image made with these options.
+std::array<double, 2> pixelOf(const Plan& plan, ViewPreset view, Point3 p)
+{
+    Scene s;
+    s.setPlan(std::make_shared<const Plan>(plan));
+    s.setView(view, static_cast<double>(kW) / kH);
+    return s.toPixel(p, kW, kH);
+}
+
+int differingPixels(const QImage& a, const QImage& b)
+{
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+class TestRenderScene : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    Plan plan_ = handPlan();
+
+    QImage render(RenderOptions o, const QString& name)
+    {
+        const QString path = dir_.filePath(name);
+        const auto err = renderToPng(plan_, o, path.toStdString());
+        if (err) qWarning("%s", err->c_str());
+        if (const QByteArray shots = qgetenv("TAIWA_SCREENSHOTS"); !err && !shots.isEmpty()) {
+            QFile::remove(shots + "/" + name);
+            QFile::copy(path, shots + "/" + name);
+        }
+        return err ? QImage() : QImage(path).convertToFormat(QImage::Format_RGB32);
+    }
+
+private slots:
+    void topViewShowsPathsToolAndBackground()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        const QImage img = render(o, "top.png");
+        QCOMPARE(img.size(), QSize(kW, kH));
+        // Off the stock: exactly the background.
+        QVERIFY(near(img.pixel(3, 3), palette::kBackground, 0));
+        QVERIFY(near(img.pixel(qRound(pixelOf(plan_, o.view, {-3, 40, 0})[0]), kH / 2), palette::kBackground, 0));
+        // The pocket centre (50, 40) lies on the slot: the feed colour.
+        QVERIFY(colourNear(img, pixelOf(plan_, o.view, {50, 40, -5}), palette::kFeed));
+        // The rapid away at safe height.
+        QVERIFY(colourNear(img, pixelOf(plan_, o.view, {82.5, 55, 5}), palette::kRapid));
+        // The translucent stock block tints the background inside the stock.
+        const auto inStock = pixelOf(plan_, o.view, {8, 8, 0});
+        QVERIFY(!near(img.pixel(int(inStock[0]), int(inStock[1])), palette::kBackground, 2));
+        // The tool (the drill of the first step) stands over the path start.
+        const auto start = pixelOf(plan_, o.view, {40, 40, 5});
+        QVERIFY2(goldish(img.pixel(int(start[0]), int(start[1]))), qPrintable(QString::number(img.pixel(int(start[0]), int(start[1])), 16)));
+    }
+
+    void viewsAndSelectionChangeTheImage()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        const QImage top = render(o, "top.png");
+        o.view = ViewPreset::Iso;
+        const QImage iso = render(o, "iso.png");
+        o.view = ViewPreset::Front;
+        const QImage front = render(o, "front.png");
+        QVERIFY(differingPixels(top, iso) > kW * kH / 20);
+        QVERIFY(differingPixels(iso, front) > kW * kH / 20);
+
+        // Step 0 selected: the roughing path is dimmed, the drill shown.
+        o.view = ViewPreset::Top;
+        o.step = 0;
+        const QImage drillOnly = render(o, "step0.png");
+        QVERIFY(colourNear(drillOnly, pixelOf(plan_, o.view, {50, 40, -5}), palette::kDimmed));
+        QVERIFY(!colourNear(drillOnly, pixelOf(plan_, o.view, {50, 40, -5}), palette::kFeed));
+        QVERIFY(!colourNear(drillOnly, pixelOf(plan_, o.view, {82.5, 55, 5}), palette::kRapid));
+        o.step = kRoughing;
+        const QImage rough = render(o, "step1.png");
+        QVERIFY(colourNear(rough, pixelOf(plan_, o.view, {50, 40, -5}), palette::kFeed));
+        QVERIFY(differingPixels(drillOnly, rough) > 1000);
+    }
+
+    void simulatedStockAfterTheStep()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        o.showStock = true;
+        const QImage img = render(o, "stock.png");
+        // Uncut top: the stock colour (lit head-on); the pocket floor off the path: machined.
+        const auto uncut = pixelOf(plan_, o.view, {8, 8, 0});
+        QVERIFY(near(img.pixel(int(uncut[0]), int(uncut[1])), palette::kStock, 20));
+        const auto floor = pixelOf(plan_, o.view, {27.5, 40, -5});
+        QVERIFY(near(img.pixel(int(floor[0]), int(floor[1])), palette::kMachined, 20));
+        // Before the pocket (after the pilot hole only) the same spot is uncut.
+        o.step = 0;
+        const QImage before = render(o, "stock0.png");
+        QVERIFY(near(before.pixel(int(floor[0]), int(floor[1])), palette::kStock, 20));
+    }
+
+    void pickingAndHighlight()
+    {
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan_));
+        s.setView(ViewPreset::Top, static_cast<double>(kW) / kH);
+        const auto at = s.toPixel({55, 40, -5}, kW, kH);
+        QCOMPARE(s.pickMove(at[0], at[1] + 3, kW, kH), (MoveRef{kRoughing, kSlotMove}));
+        const auto rapid = s.toPixel({82.5, 55, 5}, kW, kH);
+        QCOMPARE(s.pickMove(rapid[0], rapid[1], kW, kH), (MoveRef{kRoughing, kRapidMove}));
+        QVERIFY(!s.pickMove(5, 5, kW, kH));
+    }
+
+    void missingDisplayIsAnError()
+    {
+        const QByteArray display = qgetenv("DISPLAY");
+        qunsetenv("DISPLAY");
+        const auto err = renderToPng(plan_, {}, dir_.filePath("none.png").toStdString());
+        qputenv("DISPLAY", display);
+        QVERIFY(err);
+        QVERIFY(err->find("xvfb-run") != std::string::npos);
+        QVERIFY(!QFile::exists(dir_.filePath("none.png")));
+    }
+
+    void widgetShowsTheScene()
+    {
+        PreviewWidget w;
+        w.resize(kW, kH);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        w.setView(ViewPreset::Top);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        const QByteArray shots = qgetenv("TAIWA_SCREENSHOTS");
+        if (!shots.isEmpty()) img.save(shots + "/preview-widget-top.png");
+        QCOMPARE(img.size(), QSize(kW, kH));
+        const auto& scene = w.scene();
+        QVERIFY(near(img.pixel(3, 3), palette::kBackground, 0));
+        QVERIFY(colourNear(img, scene.toPixel({50, 40, -5}, kW, kH), palette::kFeed));
+        QVERIFY(colourNear(img, scene.toPixel({82.5, 55, 5}, kW, kH), palette::kRapid));
+        const auto start = scene.toPixel({40, 40, 5}, kW, kH);
+        QVERIFY(goldish(img.pixel(int(start[0]), int(start[1]))));
+
+        w.setSelectedStep(kRoughing);
+        w.highlightMove(kRoughing, kSlotMove);
+        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(colourNear(img, scene.toPixel({55, 40, -5}, kW, kH), palette::kHighlight));
+
+        w.setShowStock(true);
+        w.setView(ViewPreset::Iso);
+        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        if (!shots.isEmpty()) img.save(shots + "/preview-widget.png");
+        // The pocket floor, lit obliquely: darker than the palette, still green.
+        const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
+        const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
+        QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
+    }
+
+    void widgetClickPicksAndDragRotates()
+    {
+        PreviewWidget w;
+        w.resize(kW, kH);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        w.setView(ViewPreset::Top);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QSignalSpy clicked(&w, &PreviewWidget::moveClicked);
+        const auto at = w.scene().toPixel({55, 40, -5}, kW, kH);
+        QTest::mouseClick(&w, Qt::LeftButton, {}, QPoint(int(at[0]), int(at[1])));
+        QCOMPARE(clicked.size(), 1);
+        QCOMPARE(clicked[0][0].toInt(), kRoughing);
+        QCOMPARE(clicked[0][1].toInt(), kSlotMove);
+
+        // A left drag turns the camera and clicks nothing.
+        vtkCamera* cam = w.scene().renderer()->GetActiveCamera();
+        double before[3], after[3];
+        cam->GetPosition(before);
+        const QPointF from(400, 300), to(520, 260);
+        QMouseEvent press(QEvent::MouseButtonPress, from, w.mapToGlobal(from), Qt::LeftButton, Qt::LeftButton, {});
+        QApplication::sendEvent(&w, &press);
+        for (int k = 1; k <= 6; ++k) {
+            const QPointF p = from + (to - from) * (k / 6.0);
+            QMouseEvent move(QEvent::MouseMove, p, w.mapToGlobal(p), Qt::NoButton, Qt::LeftButton, {});
+            QApplication::sendEvent(&w, &move);
+        }
+        QMouseEvent release(QEvent::MouseButtonRelease, to, w.mapToGlobal(to), Qt::LeftButton, Qt::NoButton, {});
+        QApplication::sendEvent(&w, &release);
+        cam->GetPosition(after);
+        QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[1] - before[1]) + std::abs(after[2] - before[2]) > 1.0);
+        QCOMPARE(clicked.size(), 1);
+    }
+};
+
+QTEST_MAIN(TestRenderScene)
+#include "test_render_scene.moc"

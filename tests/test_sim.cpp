@@ -1,0 +1,208 @@
+// Stock simulation on the height field: a pocket path leaves every cell the
+// tool reached at the pocket depth and every other cell untouched; a drill
+// cycle makes a hole of the drill's diameter with its conical point; ball,
+// taper and arc sweeps follow their profiles; per-step snapshots are the
+// stock before and after each step and are cached.
+#include "sim/cutter_profile.h"
+#include "sim/material_removal.h"
+#include "sim/path_samples.h"
+#include "sim/stock_simulation.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+using namespace taiwa;
+using namespace taiwa::sim;
+
+namespace {
+
+const Stock kStock{0, 0, 100, 80, 30};
+
+Tool tool(ToolType type, double d)
+{
+    Tool t;
+    t.id = 1;
+    t.type = type;
+    t.diameter = d;
+    t.fluteLength = 25;
+    return t;
+}
+
+// Boustrophedon raster over [x0,x1] x [y0,y1] at depth z with stepover s,
+// then the rectangle's contour: every point within R of the rectangle is
+// within R of the path. Plunge from and retract to safe height.
+ToolPath rasterPocket(double x0, double y0, double x1, double y1, double z, double s)
+{
+    ToolPath p{{x0, y0, 5.0}, {}};
+    p.moves.push_back({MoveKind::Feed, {x0, y0, z}, {}, FeedKind::Plunge});
+    bool right = true;
+    for (double y = y0;; y = std::min(y + s, y1)) {
+        p.moves.push_back({MoveKind::Feed, {right ? x1 : x0, y, z}});
+        right = !right;
+        if (y >= y1) break;
+        p.moves.push_back({MoveKind::Feed, {right ? x0 : x1, std::min(y + s, y1), z}});
+    }
+    for (Point3 c : {Point3{x0, y0, z}, Point3{x1, y0, z}, Point3{x1, y1, z}, Point3{x0, y1, z}, Point3{x0, y0, z}})
+        p.moves.push_back({MoveKind::Feed, c});
+    p.moves.push_back({MoveKind::Rapid, {x0, y0, 5.0}});
+    return p;
+}
+
+double distanceToRect(Point2 p, double x0, double y0, double x1, double y1)
+{
+    const double dx = std::max({x0 - p.x, 0.0, p.x - x1});
+    const double dy = std::max({y0 - p.y, 0.0, p.y - y1});
+    return std::hypot(dx, dy);
+}
+
+}  // namespace
+
+class TestSim : public QObject {
+    Q_OBJECT
+private slots:
+    void cellSizeFollowsTheBudget()
+    {
+        QCOMPARE(HeightField::cellSizeFor(kStock), 0.25);
+        QVERIFY(std::abs(HeightField::cellSizeFor({0, 0, 2000, 1000, 50}, 1'000'000) - std::sqrt(2.0)) < 1e-12);
+        const HeightField f(kStock, 0.25);
+        QCOMPARE(f.columns(), 400);
+        QCOMPARE(f.rows(), 320);
+        QCOMPARE(f.at(10, 10), 0.0);
+    }
+
+    void pocketCellsAtDepthOthersUntouched()
+    {
+        HeightField f(kStock, 0.25);
+        // Tool centre over [25,75] x [25,55], R = 5: the pocket is [20,80] x [20,60] with R5 corners.
+        cut(f, rasterPocket(25, 25, 75, 55, -5.0, 4.0), tool(ToolType::FlatEndMill, 10));
+        int inside = 0, outside = 0;
+        for (int j = 0; j < f.rows(); ++j)
+            for (int i = 0; i < f.columns(); ++i) {
+                const double d = distanceToRect(f.centre(i, j), 25, 25, 75, 55);
+                if (d < 5.0 - 1e-9) {
+                    QCOMPARE(f.at(i, j), -5.0);
+                    ++inside;
+                } else if (d > 5.0 + 1e-9) {
+                    QCOMPARE(f.at(i, j), 0.0);
+                    ++outside;
+                }
+            }
+        // The pocket's area in cells: 60 x 40 minus the corner rounding.
+        const double area = 60.0 * 40.0 - (4.0 - M_PI) * 25.0;
+        QVERIFY(std::abs(inside * 0.0625 - area) < 2.0);
+        QVERIFY(outside > 85'000);
+    }
+
+    void drillMakesAHoleOfItsDiameter()
+    {
+        HeightField f(kStock, 0.25);
+        Tool drill = tool(ToolType::Drill, 8.0);
+        drill.pointAngle = 118;
+        ToolPath p{{50, 40, 5}, {}};
+        Move m{MoveKind::DrillCycle, {50, 40, -12}};
+        m.retractZ = 1.0;
+        p.moves.push_back(m);
+        cut(f, p, drill);
+        // Along the row through the centre, the cells lowered span the diameter.
+        const int j = static_cast<int>(40 / 0.25);
+        int lowered = 0;
+        for (int i = 0; i < f.columns(); ++i) lowered += f.at(i, j) < 0 ? 1 : 0;
+        QVERIFY2(std::abs(lowered * 0.25 - 8.0) <= 0.25, qPrintable(QString::number(lowered)));
+        // The point: z = -12 + r / tan(59 deg).
+        for (int i = 0; i < f.columns(); ++i) {
+            const double r = distance(f.centre(i, j), {50.0, 40.0});
+            if (r < 3.9) QVERIFY(std::abs(f.at(i, j) - (-12 + r / std::tan(59 * M_PI / 180))) < 1e-4);
+            if (r > 4.1) QCOMPARE(f.at(i, j), 0.0);
+        }
+    }
+
+    void ballSweepLeavesARoundGroove()
+    {
+        HeightField f(kStock, 0.25);
+        ToolPath p{{10, 40.125, -5}, {{MoveKind::Feed, {90, 40.125, -5}}}};
+        cut(f, p, tool(ToolType::BallEndMill, 10));
+        for (double dy : {0.0, 1.0, 2.5, 4.0}) {
+            const double expected = -std::sqrt(25.0 - dy * dy);
+            QVERIFY(std::abs(f.atPoint(50.1, 40.125 + dy) - expected) < 1e-4);
+        }
+        QCOMPARE(f.atPoint(50.1, 40.125 + 5.5), 0.0);
+    }
+
+    void taperFlankAndHelicalArcs()
+    {
+        HeightField f(kStock, 0.25);
+        Tool taper = tool(ToolType::TaperEndMill, 4.0);
+        taper.taperAngle = 10;
+        cut(f, ToolPath{{50.125, 40.125, 5}, {{MoveKind::Feed, {50.125, 40.125, -10}}}}, taper);
+        QCOMPARE(f.atPoint(50.125, 40.125), -10.0);
+        // Along the row through the axis: the flat tip (R2), then the 10 degree flank.
+        const int j = static_cast<int>(40.125 / 0.25);
+        int flank = 0;
+        for (int i = 0; i < f.columns(); ++i) {
+            const double r = std::abs(f.centre(i, j).x - 50.125);
+            const double expected = std::min(0.0, -10.0 + std::max(0.0, r - 2.0) / std::tan(10 * M_PI / 180));
+            QVERIFY(std::abs(f.at(i, j) - expected) < 1e-4);
+            flank += expected < -1e-3 && r > 2.0 ? 1 : 0;
+        }
+        QVERIFY(flank >= 12);  // 2 x 10 tan 10 deg / 0.25 cells on the flank
+
+        // A full circle (end == start) of radius 20 at Z -3, flat D6.
+        HeightField g(kStock, 0.25);
+        ToolPath ring{{70, 40, -3}, {{MoveKind::ArcCCW, {70, 40, -3}, {50, 40}}}};
+        cut(g, ring, tool(ToolType::FlatEndMill, 6));
+        for (double a = 0; a < 6.28; a += 0.3) {
+            QCOMPARE(g.atPoint(50 + 20 * std::cos(a), 40 + 20 * std::sin(a)), -3.0);
+            QCOMPARE(g.atPoint(50 + 16.5 * std::cos(a), 40 + 16.5 * std::sin(a)), 0.0);
+        }
+        // Sampled within the chord tolerance.
+        for (const auto& piece : flattenPath(ring, 0.01)) {
+            const Point2 mid{(piece.from.x + piece.to.x) / 2 - 50, (piece.from.y + piece.to.y) / 2 - 40};
+            QVERIFY(20.0 - length(mid) <= 0.01 + 1e-12);
+        }
+    }
+
+    void snapshotsBeforeAndAfterEachStep()
+    {
+        Plan plan;
+        plan.mmJob.stock = kStock;
+        Tool drill = tool(ToolType::Drill, 12);
+        drill.id = 2;
+        Tool mill = tool(ToolType::FlatEndMill, 10);
+        plan.tools = {drill, mill};
+        Step hole, rough;
+        hole.tool = ToolChoice{2, ""};
+        Move m{MoveKind::DrillCycle, {50, 40, -8}};
+        m.retractZ = 1;
+        hole.path = ToolPath{{50, 40, 5}, {m}};
+        rough.tool = ToolChoice{1, ""};
+        rough.path = rasterPocket(25, 25, 75, 55, -5.0, 4.0);
+        plan.steps = {hole, rough, Step{}};  // the last one has no path yet
+
+        StockSimulation sim(plan);
+        QCOMPARE(sim.stepCount(), 3);
+        QVERIFY(sim.before(0) == sim.initial());
+        QVERIFY(std::abs(sim.after(0).atPoint(50.1, 40.1) - (-8.0 + 0.125 * std::sqrt(2.0) / std::tan(59 * M_PI / 180))) < 1e-4);
+        QCOMPARE(sim.after(0).atPoint(30, 30), 0.0);
+        QCOMPARE(sim.after(1).atPoint(30, 30), -5.0);
+        QVERIFY(sim.after(1).atPoint(50.1, 40.1) < -7.5);  // the hole is still there
+        QVERIFY(&sim.before(1) == &sim.after(0));
+        QVERIFY(sim.after(2) == sim.after(1));
+        QVERIFY(&sim.finished() == &sim.after(2));
+
+        // Cached: asking again costs nothing like the first computation.
+        StockSimulation fresh(plan);
+        const auto t0 = std::chrono::steady_clock::now();
+        fresh.after(1);
+        const auto t1 = std::chrono::steady_clock::now();
+        for (int k = 0; k < 100; ++k) fresh.after(1);
+        const auto t2 = std::chrono::steady_clock::now();
+        QVERIFY(t2 - t1 < (t1 - t0) / 5);
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, fresh.after(3));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSim)
+#include "test_sim.moc"

@@ -1,0 +1,171 @@
+// File menu work: open/save, recent files, unsaved-changes prompt, recovery,
+// export.
+#include "ui/file_actions.h"
+
+#include "io/job_io.h"
+#include "pipeline/export.h"
+#include "post/post.h"
+#include "ui/autosave.h"
+#include "ui/job_document.h"
+#include "ui/plan_runner.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+
+#include <algorithm>
+
+namespace taiwa::ui {
+namespace {
+const char* const kFilter = "Taiwa jobs (*.taiwa);;All files (*)";
+const char* const kRecentKey = "recentFiles";
+constexpr int kMaxRecent = 8;
+}  // namespace
+
+FileActions::FileActions(JobDocument* doc, PlanRunner* runner, QWidget* window)
+    : QObject(window), doc_(doc), runner_(runner), window_(window)
+{
+}
+
+bool FileActions::promptsDisabled() { return qEnvironmentVariable("TAIWA_NO_PROMPTS") == "1"; }
+
+bool FileActions::maybeSave()
+{
+    if (!doc_->isModified() || promptsDisabled()) return true;
+    const auto answer = QMessageBox::question(window_, tr("Unsaved changes"),
+                                              tr("The job has unsaved changes. Save them?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+bool FileActions::newJob()
+{
+    if (!maybeSave()) return false;
+    if (doc_->isModified()) Autosaver::removeRecovery(doc_->path());  // the operator discarded the changes
+    Job j;
+    j.name = tr("New job").toStdString();
+    doc_->reset(j, {}, false);
+    return true;
+}
+
+bool FileActions::open()
+{
+    if (!maybeSave()) return false;
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Open job"), {}, kFilter);
+    return !path.isEmpty() && openPath(path);
+}
+
+bool FileActions::openPath(const QString& path)
+{
+    const JobReadResult r = readJobFile(path.toStdString());
+    if (!r.job) {
+        QString why;
+        for (const Diagnostic& d : r.diagnostics) why += QString::fromStdString(format(path.toStdString(), d)) + "\n";
+        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
+        else QMessageBox::warning(window_, tr("Cannot open job"), why);
+        return false;
+    }
+    if (doc_->isModified()) Autosaver::removeRecovery(doc_->path());  // the operator discarded the changes
+    doc_->reset(*r.job, path, false);
+    addRecent(path);
+    emit message(tr("Opened %1").arg(path));
+    return true;
+}
+
+bool FileActions::save() { return doc_->path().isEmpty() ? saveAs() : saveTo(doc_->path()); }
+
+bool FileActions::saveAs()
+{
+    QString path = QFileDialog::getSaveFileName(window_, tr("Save job"), doc_->path(), kFilter);
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += ".taiwa";
+    return saveTo(path);
+}
+
+bool FileActions::saveTo(const QString& path)
+{
+    const QString err = doc_->saveTo(path);
+    if (!err.isEmpty()) {
+        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(err));
+        else QMessageBox::warning(window_, tr("Cannot save job"), err);
+        return false;
+    }
+    addRecent(path);
+    emit message(tr("Saved %1").arg(path));
+    return true;
+}
+
+void FileActions::exportJob()
+{
+    runner_->flush();
+    const auto plan = runner_->fullPlan();
+    if (!plan || !(plan->job == doc_->job())) {
+        QMessageBox::warning(window_, tr("Export"), tr("The job has input errors; fix them before exporting."));
+        return;
+    }
+    const QString dir = QFileDialog::getExistingDirectory(window_, tr("Export into folder"));
+    if (dir.isEmpty()) return;
+    QStringList dialects;
+    for (const auto& d : dialectNames()) dialects << QString::fromStdString(d);
+    bool ok = false;
+    const QString dialect = QInputDialog::getItem(window_, tr("Export"), tr("Controller dialect"), dialects,
+                                                  std::max(0, static_cast<int>(dialects.indexOf(runner_->dialect()))),
+                                                  false, &ok);
+    if (!ok) return;
+    ExportOptions eo;
+    eo.dialect = dialect.toStdString();
+    eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
+    const QString stem = doc_->path().isEmpty() ? QStringLiteral("job") : QFileInfo(doc_->path()).completeBaseName();
+    const ExportResult r = exportPlan(*plan, dir.toStdString(), stem.toStdString(), eo);
+    if (r.error) QMessageBox::warning(window_, tr("Export failed"), QString::fromStdString(*r.error));
+    else emit message(tr("Exported %1 files into %2").arg(r.files.size()).arg(dir));
+}
+
+bool FileActions::offerRecovery(const QString& jobPath)
+{
+    const auto job = Autosaver::pendingRecovery(jobPath);
+    if (!job) return false;
+    if (!promptsDisabled()) {
+        const QString what = jobPath.isEmpty() ? tr("an untitled job") : QFileInfo(jobPath).fileName();
+        const auto answer = QMessageBox::question(
+            window_, tr("Recover job"),
+            tr("Taiwa was not closed properly while editing %1. Its autosaved copy is newer than the file. "
+               "Restore the autosaved copy?").arg(what));
+        if (answer != QMessageBox::Yes) {
+            Autosaver::removeRecovery(jobPath);
+            return false;
+        }
+    }
+    doc_->reset(*job, jobPath, true);
+    if (!jobPath.isEmpty()) addRecent(jobPath);
+    emit message(tr("Restored the autosaved job (not saved to a file yet)"));
+    return true;
+}
+
+void FileActions::addRecent(const QString& path)
+{
+    QSettings s;
+    QStringList files = s.value(kRecentKey).toStringList();
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    files.removeAll(abs);
+    files.prepend(abs);
+    while (files.size() > kMaxRecent) files.removeLast();
+    s.setValue(kRecentKey, files);
+}
+
+void FileActions::fillRecentMenu(QMenu* menu)
+{
+    menu->clear();
+    const QStringList files = QSettings().value(kRecentKey).toStringList();
+    for (const QString& f : files)
+        menu->addAction(f, this, [this, f] {
+            if (maybeSave()) openPath(f);
+        });
+    if (files.isEmpty()) menu->addAction(tr("(none)"))->setEnabled(false);
+}
+
+}  // namespace taiwa::ui

@@ -1,0 +1,49 @@
+// The File menu's work: new, open, save, save as, recent files (QSettings),
+// the unsaved-changes prompt (skipped when TAIWA_NO_PROMPTS=1), recovery of
+// an autosaved job at start, and export of the planned job.
+#pragma once
+
+#include <QObject>
+#include <QStringList>
+
+class QMenu;
+class QWidget;
+
+namespace taiwa::ui {
+
+class JobDocument;
+class PlanRunner;
+
+class FileActions : public QObject {
+    Q_OBJECT
+public:
+    FileActions(JobDocument* doc, PlanRunner* runner, QWidget* window);
+
+    bool newJob();
+    bool open();
+    bool openPath(const QString& path);
+    bool save();
+    bool saveAs();
+    bool saveTo(const QString& path);
+    void exportJob();
+    // True when the job may be dropped (saved, discarded, or not modified).
+    bool maybeSave();
+    // At start: offer the recovery file of jobPath (empty: untitled) left by a
+    // session that did not close, when it is newer than the file.
+    bool offerRecovery(const QString& jobPath);
+    // Fills the "Open recent" menu.
+    void fillRecentMenu(QMenu* menu);
+
+    static bool promptsDisabled();
+
+signals:
+    void message(const QString& text);
+
+private:
+    void addRecent(const QString& path);
+    JobDocument* doc_;
+    PlanRunner* runner_;
+    QWidget* window_;
+};
+
+}  // namespace taiwa::ui

@@ -1,0 +1,90 @@
+// The edited job and its undo commands.
+#include "ui/job_document.h"
+
+#include "io/job_io.h"
+
+#include <QUndoCommand>
+#include <QUndoStack>
+
+namespace taiwa::ui {
+namespace {
+
+// One edit of the job, kept as the job before and after (jobs are small).
+class JobEditCommand : public QUndoCommand {
+public:
+    JobEditCommand(JobDocument* doc, Job before, Job after, const QString& text, QString mergeKey, int selection)
+        : QUndoCommand(text), doc_(doc), before_(std::move(before)), after_(std::move(after)),
+          mergeKey_(std::move(mergeKey)), selection_(selection)
+    {
+    }
+    int id() const override { return mergeKey_.isEmpty() ? -1 : 1; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        const auto* o = static_cast<const JobEditCommand*>(other);
+        if (o->mergeKey_ != mergeKey_) return false;
+        after_ = o->after_;
+        setObsolete(after_ == before_);  // typed back to where it was: no undo step
+        return true;
+    }
+    void redo() override
+    {
+        doc_->apply(after_, selection_, first_ && !mergeKey_.isEmpty());
+        first_ = false;
+    }
+    void undo() override { doc_->apply(before_, selection_, false); }
+
+private:
+    JobDocument* doc_;
+    Job before_, after_;
+    QString mergeKey_;
+    int selection_;
+    bool first_ = true;
+};
+
+}  // namespace
+
+JobDocument::JobDocument(QObject* parent) : QObject(parent), undo_(new QUndoStack(this))
+{
+    connect(undo_, &QUndoStack::cleanChanged, this, [this] { emit modifiedChanged(isModified()); });
+}
+
+bool JobDocument::isModified() const { return dirtyWithoutUndo_ || !undo_->isClean(); }
+
+void JobDocument::edit(const Job& after, const QString& text, const QString& mergeKey, int selection)
+{
+    if (after == job_) return;
+    const bool wasModified = isModified();
+    const QString key = mergeKey.isEmpty() ? QString() : QStringLiteral("%1#%2").arg(mergeKey).arg(mergeEpoch_);
+    undo_->push(new JobEditCommand(this, job_, after, text, key, selection));
+    if (wasModified != isModified()) emit modifiedChanged(isModified());
+}
+
+void JobDocument::apply(const Job& job, int selection, bool fromTyping)
+{
+    job_ = job;
+    emit changed(fromTyping);
+    if (selection >= 0) emit selectionRequested(selection);
+}
+
+void JobDocument::reset(const Job& job, const QString& path, bool modified)
+{
+    undo_->clear();
+    job_ = job;
+    path_ = path;
+    dirtyWithoutUndo_ = modified;
+    emit changed(false);
+    emit selectionRequested(job_.units.empty() ? -1 : 0);
+    emit modifiedChanged(isModified());
+}
+
+QString JobDocument::saveTo(const QString& path)
+{
+    if (auto err = writeFileAtomically(path.toStdString(), writeJob(job_))) return QString::fromStdString(*err);
+    path_ = path;
+    dirtyWithoutUndo_ = false;
+    undo_->setClean();
+    emit modifiedChanged(isModified());
+    return {};
+}
+
+}  // namespace taiwa::ui

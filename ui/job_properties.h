@@ -1,0 +1,36 @@
+// The job's own inputs: name, material, length unit (switching converts
+// every length) and the stock block (width, length, height); each change is one undoable edit, numbers parsed
+// as in the unit forms.
+#pragma once
+
+#include "check/diagnostic.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QLineEdit;
+
+namespace taiwa::ui {
+
+class JobDocument;
+
+class JobProperties : public QWidget {
+    Q_OBJECT
+public:
+    explicit JobProperties(JobDocument* doc, QWidget* parent = nullptr);
+    // Shows the job's values (force: also over text that is not a number).
+    void refresh(bool force);
+    // Marks the stock/material widgets the job-level diagnostics name.
+    void showDiagnostics(const Diagnostics& jobLevel);
+
+private:
+    void editStock(int which, const QString& text);
+    JobDocument* doc_;
+    QLineEdit* name_;
+    QComboBox* material_;
+    QComboBox* unit_;
+    QLineEdit* stock_[3];
+    bool bad_[3] = {false, false, false};
+};
+
+}  // namespace taiwa::ui

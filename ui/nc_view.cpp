@@ -1,0 +1,101 @@
+// The NC view and its line <-> (step, move) mapping.
+#include "ui/nc_view.h"
+
+#include "ui/nc_highlighter.h"
+
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QTextBlock>
+#include <QVBoxLayout>
+
+namespace taiwa::ui {
+
+NcView::NcView(QWidget* parent)
+    : QWidget(parent), dialect_(new QComboBox(this)), summary_(new QLabel(this)), text_(new QPlainTextEdit(this))
+{
+    dialect_->setObjectName("nc.dialect");
+    for (const std::string& d : dialectNames()) dialect_->addItem(QString::fromStdString(d));
+    text_->setObjectName("nc");
+    text_->setReadOnly(true);
+    text_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    text_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    text_->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+    new NcHighlighter(text_->document());
+
+    auto* top = new QHBoxLayout;
+    auto* label = new QLabel(tr("&NC program, dialect:"), this);
+    label->setBuddy(dialect_);
+    top->addWidget(label);
+    top->addWidget(dialect_);
+    top->addWidget(summary_, 1);
+    auto* box = new QVBoxLayout(this);
+    box->setContentsMargins(0, 0, 0, 0);
+    box->addLayout(top);
+    box->addWidget(text_, 1);
+
+    connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
+    connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
+}
+
+QString NcView::dialect() const { return dialect_->currentText(); }
+
+void NcView::setProgram(const QString& nc, const std::vector<BlockSource>& lines)
+{
+    lines_ = lines;
+    selecting_ = true;
+    text_->setPlainText(nc);
+    selecting_ = false;
+    summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
+}
+
+void NcView::setMessage(const QString& text)
+{
+    lines_.clear();
+    selecting_ = true;
+    text_->setPlainText(text);
+    selecting_ = false;
+    summary_->clear();
+}
+
+bool NcView::selectMove(int step, int move)
+{
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+        if (lines_[i].step != step || lines_[i].move != move) continue;
+        const QTextBlock block = text_->document()->findBlockByNumber(static_cast<int>(i));
+        QTextCursor c(block);
+        c.select(QTextCursor::LineUnderCursor);
+        selecting_ = true;
+        text_->setTextCursor(c);
+        text_->centerCursor();
+        selecting_ = false;
+        return true;
+    }
+    return false;
+}
+
+void NcView::showStep(int step)
+{
+    if (step < 0) return;
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+        if (lines_[i].step != step) continue;
+        selecting_ = true;
+        text_->setTextCursor(QTextCursor(text_->document()->findBlockByNumber(static_cast<int>(i))));
+        text_->centerCursor();
+        selecting_ = false;
+        return;
+    }
+}
+
+void NcView::onCursorMoved()
+{
+    if (selecting_) return;
+    const int line = text_->textCursor().blockNumber();
+    if (line < 0 || line >= static_cast<int>(lines_.size())) return;
+    const BlockSource& s = lines_[static_cast<std::size_t>(line)];
+    if (s.step >= 0) emit moveSelected(s.step, s.move);
+}
+
+}  // namespace taiwa::ui

@@ -1,0 +1,50 @@
+// The NC view: the posted tape in a read-only, highlighted text view with the
+// dialect chooser above it. A click on a line names the (step, move) it came
+// from through PostedProgram::lines; selectMove() does the reverse.
+#pragma once
+
+#include "post/post.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+
+namespace taiwa::ui {
+
+class NcView : public QWidget {
+    Q_OBJECT
+public:
+    explicit NcView(QWidget* parent = nullptr);
+
+    // The dialect chosen in the combo box ("linuxcnc", "fanuc").
+    QString dialect() const;
+    // Shows a program; `lines` has one entry per line of `nc`.
+    void setProgram(const QString& nc, const std::vector<BlockSource>& lines);
+    // Shows why there is no program (input errors, planning failure).
+    void setMessage(const QString& text);
+    // Selects and shows the first line posted from (step, move); false if none.
+    bool selectMove(int step, int move);
+    // Scrolls to the first line of a step (its header comment) without
+    // emitting moveSelected; -1 does nothing.
+    void showStep(int step);
+    QPlainTextEdit* text() const { return text_; }
+
+signals:
+    void dialectChanged(const QString& dialect);
+    // The operator put the cursor on a line posted from (step, move).
+    void moveSelected(int step, int move);
+
+private:
+    void onCursorMoved();
+    QComboBox* dialect_;
+    QLabel* summary_;
+    QPlainTextEdit* text_;
+    std::vector<BlockSource> lines_;
+    bool selecting_ = false;
+};
+
+}  // namespace taiwa::ui

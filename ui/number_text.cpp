@@ -1,0 +1,30 @@
+// Locale-independent number parsing and formatting for the station forms.
+#include "ui/number_text.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+namespace taiwa::ui {
+
+std::optional<double> parseNumber(const QString& text)
+{
+    const std::string s = text.trimmed().toStdString();
+    if (s.empty()) return std::nullopt;
+    const char* first = s.data();
+    if (*first == '+') ++first;  // from_chars does not take a leading '+'
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(first, s.data() + s.size(), v, std::chars_format::general);
+    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+QString formatNumber(double v)
+{
+    char buf[64];
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    if (ec != std::errc()) return QString::number(v, 'g', 17);
+    return QString::fromLatin1(buf, static_cast<int>(end - buf));
+}
+
+}  // namespace taiwa::ui

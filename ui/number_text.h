@@ -1,0 +1,19 @@
+// Locale-independent number text for the forms: '.' is the only decimal
+// separator whatever the system locale says, and numbers are shown in their
+// shortest round-trip form so that a value read back is the value typed.
+#pragma once
+
+#include <QString>
+
+#include <optional>
+
+namespace taiwa::ui {
+
+// The number in `text` (surrounding blanks allowed); nullopt when the text is
+// not one finite number ("12,5", "1e", "abc", "").
+std::optional<double> parseNumber(const QString& text);
+
+// Shortest text that parses back to exactly `v` ("12.5", "-3", "0.01").
+QString formatNumber(double v);
+
+}  // namespace taiwa::ui

@@ -1,0 +1,146 @@
+// Checks and plans for the window, the full plan on a worker thread.
+#include "ui/plan_runner.h"
+
+#include "check/input_check.h"
+#include "tools/tool_library.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+#include <exception>
+
+namespace taiwa::ui {
+namespace {
+
+// The full pipeline and the post-processor; runs on the worker thread, so it
+// touches nothing but its arguments.
+PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library, const QString& dialect)
+{
+    PlanRunner::Result r;
+    try {
+        auto plan = std::make_shared<Plan>(planJob(job, TechnologyTable::builtIn(), library));
+        if (!plan->ok()) {
+            r.nc = QObject::tr("(no program: the job has input errors)");
+            return r;
+        }
+        PostOptions po;
+        po.dialect = dialect.toStdString();
+        po.units = job.lengthUnit;
+        po.programName = job.name;
+        po.material = job.material;
+        PostedProgram prog = postProcess(plan->steps, plan->tools, po);
+        r.nc = QString::fromStdString(prog.nc);
+        r.lines = std::move(prog.lines);
+        r.plan = std::move(plan);
+    } catch (const std::exception& e) {
+        r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
+    }
+    return r;
+}
+
+}  // namespace
+
+PlanRunner::PlanRunner(QObject* parent) : QObject(parent), debounce_(new QTimer(this))
+{
+    pool_.setMaxThreadCount(1);
+    reloadLibrary();
+    debounce_->setSingleShot(true);
+    debounce_->setInterval(0);  // next event-loop pass: edits of one batch coalesce
+    connect(debounce_, &QTimer::timeout, this, &PlanRunner::startFull);
+}
+
+PlanRunner::~PlanRunner() { pool_.waitForDone(); }
+
+void PlanRunner::reloadLibrary()
+{
+    std::string err;
+    std::vector<Tool> tools;
+    if (auto lib = ToolLibrary::open(defaultToolLibraryPath(), err)) {
+        if (auto t = lib->tools(err)) tools = std::move(*t);
+    }
+    libraryError_.clear();
+    if (tools.empty()) {
+        libraryError_ = QString::fromStdString(err.empty() ? "the library has no tools" : err);
+        tools = defaultToolLibrary();
+    }
+    library_ = std::move(tools);
+}
+
+void PlanRunner::update(const Job& job)
+{
+    ++generation_;
+    pending_ = job;
+    const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), library_);
+    emit checked(ds);
+    if (hasErrors(ds)) {
+        debounce_->stop();
+        pendingFull_ = false;
+        emit stepsPlanned(nullptr);
+        emit programReady(nullptr, tr("(no program: the job has input errors)"), {});
+        return;
+    }
+    try {
+        PlanOptions fastOptions;
+        fastOptions.withToolPaths = false;
+        emit stepsPlanned(std::make_shared<const Plan>(planJob(job, TechnologyTable::builtIn(), library_, fastOptions)));
+    } catch (const std::exception& e) {
+        emit checked({Diagnostic{Severity::Error, std::nullopt, "", "", std::string("planning failed: ") + e.what()}});
+        return;
+    }
+    pendingFull_ = true;
+    debounce_->start();
+}
+
+void PlanRunner::setDialect(const QString& dialect)
+{
+    if (dialect == dialect_) return;
+    dialect_ = dialect;
+    if (!full_) return;
+    pending_ = full_->job;
+    ++generation_;
+    pendingFull_ = true;
+    debounce_->start();
+}
+
+void PlanRunner::startFull()
+{
+    if (!pendingFull_) return;
+    if (inFlight_ >= 0) return;  // finished() starts the newest edit when the worker is free
+    pendingFull_ = false;
+    const int generation = generation_;
+    inFlight_ = generation;
+    pool_.start([this, generation, job = pending_, library = library_, dialect = dialect_] {
+        const Result r = planAndPost(job, library, dialect);
+        QMetaObject::invokeMethod(this, [this, generation, r] { finished(generation, r); }, Qt::QueuedConnection);
+    });
+}
+
+void PlanRunner::finished(int generation, const Result& r)
+{
+    if (generation == inFlight_) inFlight_ = -1;
+    if (generation == generation_) publish(r);
+    if (pendingFull_ && !debounce_->isActive()) startFull();
+}
+
+void PlanRunner::publish(const Result& r)
+{
+    if (r.plan) full_ = r.plan;
+    emit programReady(r.plan, r.nc, r.lines);
+}
+
+void PlanRunner::flush()
+{
+    debounce_->stop();
+    pool_.waitForDone();
+    if (!pendingFull_) {
+        if (inFlight_ >= 0) {  // its result is queued: deliver it now
+            QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
+        }
+        return;
+    }
+    pendingFull_ = false;
+    ++generation_;  // anything still queued is older than this
+    publish(planAndPost(pending_, library_, dialect_));
+}
+
+}  // namespace taiwa::ui

@@ -1,0 +1,80 @@
+// Runs the pipeline for the window. On every change: checkJob and the fast
+// step list (planJob without tool paths) at once on the GUI thread (a few
+// milliseconds); the full plan with tool paths and the NC program on a
+// worker thread at the next event-loop pass, newest edit wins: results of an
+// edit that has been superseded are dropped.
+#pragma once
+
+#include "check/diagnostic.h"
+#include "model/job.h"
+#include "model/tool.h"
+#include "pipeline/pipeline.h"
+#include "post/post.h"
+
+#include <QObject>
+#include <QString>
+#include <QThreadPool>
+
+#include <memory>
+#include <vector>
+
+class QTimer;
+
+namespace taiwa::ui {
+
+class PlanRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit PlanRunner(QObject* parent = nullptr);
+    ~PlanRunner() override;
+
+    const std::vector<Tool>& library() const { return library_; }
+    // Empty, or why the shop's tool library could not be opened (the
+    // built-in default library is used instead).
+    const QString& libraryError() const { return libraryError_; }
+    // Re-reads the shop's tool library (after the tool library dialog).
+    void reloadLibrary();
+
+    // Checks the job now; plans the step list now when there are no errors
+    // and schedules the full plan.
+    void update(const Job& job);
+    // The controller dialect of the NC program; re-posts the last plan.
+    void setDialect(const QString& dialect);
+    const QString& dialect() const { return dialect_; }
+    // The last full plan (nullptr until one ran without errors).
+    std::shared_ptr<const Plan> fullPlan() const { return full_; }
+    // Runs a pending full plan at once, on the calling thread (export, tests).
+    void flush();
+    bool isBusy() const { return inFlight_ >= 0 || pendingFull_; }
+
+    struct Result {
+        std::shared_ptr<const Plan> plan;
+        QString nc;  // the tape, or why there is none
+        std::vector<BlockSource> lines;
+    };
+
+signals:
+    void checked(const taiwa::Diagnostics& diagnostics);
+    void stepsPlanned(std::shared_ptr<const taiwa::Plan> plan);
+    // plan nullptr: no program; nc says why.
+    void programReady(std::shared_ptr<const taiwa::Plan> plan, const QString& nc,
+                      const std::vector<taiwa::BlockSource>& lines);
+
+private:
+    void startFull();
+    void finished(int generation, const Result& r);
+    void publish(const Result& r);
+
+    std::vector<Tool> library_;
+    QString libraryError_;
+    QString dialect_ = QStringLiteral("linuxcnc");
+    Job pending_;
+    bool pendingFull_ = false;
+    int generation_ = 0;
+    int inFlight_ = -1;  // generation being planned on the worker, -1: none
+    QTimer* debounce_;
+    QThreadPool pool_;
+    std::shared_ptr<const Plan> full_;
+};
+
+}  // namespace taiwa::ui

@@ -1,0 +1,200 @@
+// PreviewWidget: VTK rendering inside a QOpenGLWidget. The generic render
+// window uses Qt's context: it asks to be made current (WindowMakeCurrentEvent)
+// and whether it is (WindowIsCurrentEvent), renders only inside paintGL
+// (ReadyForRendering), after which its display framebuffer is blitted into
+// the widget's (defaultFramebufferObject()). Frame presentation is Qt's, so
+// WindowFrameEvent needs no answer. Mouse events go to a
+// vtkGenericRenderWindowInteractor with the trackball camera style; its
+// render requests become update() calls.
+#include "ui/preview_widget.h"
+
+#include <QGuiApplication>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QWheelEvent>
+
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkOpenGLState.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa::ui {
+
+namespace {
+constexpr int kClickSlop = 3;  // pixels the mouse may move and still click
+}
+
+PreviewWidget::PreviewWidget(QWidget* parent)
+    : QOpenGLWidget(parent), window_(vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New()),
+      interactor_(vtkSmartPointer<vtkGenericRenderWindowInteractor>::New())
+{
+    setMinimumSize(160, 120);
+    setFocusPolicy(Qt::StrongFocus);
+    window_->SetReadyForRendering(false);
+    window_->SetFrameBlitModeToNoBlit();  // paintGL copies the frame into Qt's framebuffer
+    window_->AddRenderer(scene_.renderer());
+    window_->AddObserver(vtkCommand::WindowMakeCurrentEvent, this, &PreviewWidget::onMakeCurrent);
+    window_->AddObserver(vtkCommand::WindowIsCurrentEvent, this, &PreviewWidget::onIsCurrent);
+
+    interactor_->SetRenderWindow(window_);
+    interactor_->EnableRenderOff();  // we render in paintGL only
+    interactor_->AddObserver(vtkCommand::RenderEvent, this, &PreviewWidget::onInteractorRender);
+    auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+    style->SetDefaultRenderer(scene_.renderer());
+    interactor_->SetInteractorStyle(style);
+    interactor_->Initialize();
+}
+
+PreviewWidget::~PreviewWidget()
+{
+    makeCurrent();
+    window_->Finalize();  // frees VTK's GL objects while Qt's context is current
+    doneCurrent();
+}
+
+// The context only: QOpenGLWidget::makeCurrent() would also rebind the
+// widget's framebuffer behind VTK's cached state, and VTK would then attach
+// its own buffers to Qt's framebuffer.
+void PreviewWidget::onMakeCurrent(vtkObject*, unsigned long, void*)
+{
+    if (context() && QOpenGLContext::currentContext() != context()) context()->makeCurrent(context()->surface());
+}
+
+void PreviewWidget::onIsCurrent(vtkObject*, unsigned long, void* callData)
+{
+    *static_cast<bool*>(callData) = context() && QOpenGLContext::currentContext() == context();
+}
+
+void PreviewWidget::onInteractorRender(vtkObject*, unsigned long, void*) { update(); }
+
+void PreviewWidget::initializeGL()
+{
+    window_->SetOwnContext(false);
+    window_->OpenGLInitContext();
+}
+
+void PreviewWidget::resizeGL(int w, int h)
+{
+    const double dpr = devicePixelRatioF();
+    const int pw = static_cast<int>(std::lround(w * dpr)), ph = static_cast<int>(std::lround(h * dpr));
+    window_->SetSize(pw, ph);
+    interactor_->UpdateSize(pw, ph);
+    scene_.setView(view_, static_cast<double>(w) / std::max(h, 1));
+}
+
+void PreviewWidget::paintGL()
+{
+    // Qt has bound the widget's framebuffer and set its own GL state: VTK's
+    // cached state is stale. Render, then copy VTK's frame into Qt's buffer.
+    vtkOpenGLState* state = window_->GetState();
+    state->Reset();
+    state->ResetFramebufferBindings();
+    state->Push();
+    state->vtkglDepthFunc(GL_LEQUAL);  // Qt leaves GL_LESS; VTK expects GL_LEQUAL
+    window_->SetReadyForRendering(true);
+    window_->Render();
+    window_->SetReadyForRendering(false);
+    state->PushDrawFramebufferBinding();
+    state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+    state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
+    window_->BlitDisplayFramebuffer();
+    state->PopDrawFramebufferBinding();
+    state->Pop();
+}
+
+void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan)
+{
+    scene_.setPlan(std::move(plan));
+    scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
+    update();
+}
+
+void PreviewWidget::setSelectedStep(int index)
+{
+    scene_.setSelectedStep(index);
+    update();
+}
+
+void PreviewWidget::setShowStock(bool show)
+{
+    scene_.setShowStock(show);
+    update();
+}
+
+void PreviewWidget::setView(viz::ViewPreset view)
+{
+    view_ = view;
+    scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
+    update();
+}
+
+void PreviewWidget::highlightMove(int step, int move)
+{
+    scene_.highlightMove(step, move);
+    update();
+}
+
+bool PreviewWidget::supported()
+{
+    const QString platform = QGuiApplication::platformName();
+    return platform != QLatin1String("offscreen") && platform != QLatin1String("minimal");
+}
+
+QImage PreviewWidget::grabImage() { return grabFramebuffer(); }
+
+void PreviewWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent)
+{
+    const double dpr = devicePixelRatioF();
+    const QPointF p = e->position();
+    interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr),
+                                          e->modifiers() & Qt::ControlModifier ? 1 : 0,
+                                          e->modifiers() & Qt::ShiftModifier ? 1 : 0);
+    interactor_->InvokeEvent(vtkEvent, e);
+}
+
+void PreviewWidget::mousePressEvent(QMouseEvent* e)
+{
+    pressPos_ = e->position().toPoint();
+    dragged_ = false;
+    switch (e->button()) {
+    case Qt::LeftButton: forwardMouse(e, vtkCommand::LeftButtonPressEvent); break;
+    case Qt::MiddleButton: forwardMouse(e, vtkCommand::MiddleButtonPressEvent); break;
+    case Qt::RightButton: forwardMouse(e, vtkCommand::RightButtonPressEvent); break;
+    default: break;
+    }
+}
+
+void PreviewWidget::mouseMoveEvent(QMouseEvent* e)
+{
+    if ((e->position().toPoint() - pressPos_).manhattanLength() > kClickSlop) dragged_ = true;
+    forwardMouse(e, vtkCommand::MouseMoveEvent);
+}
+
+void PreviewWidget::mouseReleaseEvent(QMouseEvent* e)
+{
+    switch (e->button()) {
+    case Qt::LeftButton: forwardMouse(e, vtkCommand::LeftButtonReleaseEvent); break;
+    case Qt::MiddleButton: forwardMouse(e, vtkCommand::MiddleButtonReleaseEvent); break;
+    case Qt::RightButton: forwardMouse(e, vtkCommand::RightButtonReleaseEvent); break;
+    default: break;
+    }
+    if (e->button() == Qt::LeftButton && !dragged_) {
+        const QPointF p = e->position();
+        if (auto hit = scene_.pickMove(p.x(), p.y(), width(), height())) emit moveClicked(hit->step, hit->move);
+    }
+}
+
+void PreviewWidget::wheelEvent(QWheelEvent* e)
+{
+    const double dpr = devicePixelRatioF();
+    const QPointF p = e->position();
+    interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr));
+    if (e->angleDelta().y() > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, e);
+    else if (e->angleDelta().y() < 0) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent, e);
+}
+
+}  // namespace taiwa::ui

@@ -1,0 +1,74 @@
+// The 3-D preview of the station window: the viz scene of a plan shown in a
+// Qt 6 QOpenGLWidget through vtkGenericOpenGLRenderWindow (VTK renders into
+// the widget's own framebuffer, inside paintGL). Left drag rotates, middle
+// drag or shift + left drag pans, the wheel zooms; a click on a path emits
+// the move under the cursor.
+#pragma once
+
+#include "viz/render.h"
+#include "viz/scene.h"
+
+#include <QImage>
+#include <QOpenGLWidget>
+#include <QPoint>
+
+#include <vtkSmartPointer.h>
+
+#include <memory>
+
+class vtkGenericOpenGLRenderWindow;
+class vtkGenericRenderWindowInteractor;
+class vtkObject;
+
+namespace taiwa::ui {
+
+class PreviewWidget : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    explicit PreviewWidget(QWidget* parent = nullptr);
+    ~PreviewWidget() override;
+
+    void setPlan(std::shared_ptr<const Plan> plan);
+    void setSelectedStep(int index /* -1 all */);
+    void setShowStock(bool show);
+    // Camera preset, fitted to the stock and the paths.
+    void setView(viz::ViewPreset view);
+    void highlightMove(int step, int move);
+    // The current frame (rendered now if needed).
+    QImage grabImage();
+
+    // False on Qt platforms without OpenGL widgets (offscreen, minimal):
+    // there a window holding a PreviewWidget crashes in Qt's compositor, so
+    // the station shows a placeholder instead.
+    static bool supported();
+
+    // The scene, for tests and the NC view's picking.
+    const viz::Scene& scene() const { return scene_; }
+
+signals:
+    void moveClicked(int step, int move);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void wheelEvent(QWheelEvent* e) override;
+
+private:
+    void onMakeCurrent(vtkObject*, unsigned long, void*);
+    void onIsCurrent(vtkObject*, unsigned long, void* callData);
+    void onInteractorRender(vtkObject*, unsigned long, void*);
+    void forwardMouse(QMouseEvent* e, unsigned long vtkEvent);
+
+    viz::Scene scene_;
+    vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
+    vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
+    viz::ViewPreset view_ = viz::ViewPreset::Iso;
+    QPoint pressPos_;
+    bool dragged_ = false;
+};
+
+}  // namespace taiwa::ui

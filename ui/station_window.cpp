@@ -1,0 +1,319 @@
+// The station window: layout and wiring only; the work is done by the
+// document, plan runner, forms, panels and file actions.
+#include "ui/station_window.h"
+
+#include "ui/autosave.h"
+#include "ui/file_actions.h"
+#include "ui/job_document.h"
+#include "ui/job_properties.h"
+#include "ui/language.h"
+#include "ui/module_palette.h"
+#include "ui/nc_view.h"
+#include "ui/plan_runner.h"
+#include "ui/step_panel.h"
+#include "ui/step_table.h"
+#include "ui/technology_dialog.h"
+#include "ui/tool_library_dialog.h"
+#include "ui/unit_form.h"
+#include "ui/unit_list_panel.h"
+
+#include "ui/preview_widget.h"
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QFileInfo>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QOpenGLContext>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace taiwa::ui {
+
+StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
+    : QMainWindow(parent), doc_(new JobDocument(this)), runner_(new PlanRunner(this)),
+      autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, this)),
+      palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
+      forms_(new QStackedWidget), m4Form_(new UnitForm(m4Fields(), "m4")), m2dForm_(new UnitForm(m2dFields(), "m2d")),
+      unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView)
+{
+    auto* main = new QSplitter(Qt::Horizontal);
+    main->addWidget(buildLeft());
+    main->addWidget(buildCentre());
+    main->addWidget(buildRight());
+    main->setStretchFactor(0, 0);
+    main->setStretchFactor(1, 0);
+    main->setStretchFactor(2, 1);
+    setCentralWidget(main);
+    buildMenus();
+    wire();
+    resize(1600, 940);
+    main->setSizes({320, 450, 830});
+    if (!runner_->libraryError().isEmpty())
+        statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)").arg(runner_->libraryError()));
+
+    if (!files_->offerRecovery(jobPath) && !(jobPath.isEmpty() ? files_->newJob() : files_->openPath(jobPath)))
+        files_->newJob();
+    updateTitle();
+}
+
+QWidget* StationWindow::buildLeft()
+{
+    auto* left = new QWidget;
+    auto* box = new QVBoxLayout(left);
+    auto* paletteGroup = new QGroupBox(tr("Modules"));
+    (new QVBoxLayout(paletteGroup))->addWidget(palette_);
+    auto* unitsGroup = new QGroupBox(tr("Machining units, in order"));
+    (new QVBoxLayout(unitsGroup))->addWidget(units_);
+    auto* jobGroup = new QGroupBox(tr("Job"));
+    (new QVBoxLayout(jobGroup))->addWidget(jobProps_);
+    box->addWidget(paletteGroup);
+    box->addWidget(unitsGroup, 1);
+    box->addWidget(jobGroup);
+    return left;
+}
+
+QWidget* StationWindow::buildCentre()
+{
+    auto* empty = new QLabel(tr("Pick a module on the left (M4 or M2D) to add a machining unit."));
+    empty->setAlignment(Qt::AlignCenter);
+    empty->setWordWrap(true);
+    forms_->addWidget(empty);
+    forms_->addWidget(m4Form_);
+    forms_->addWidget(m2dForm_);
+    unitMessages_->setObjectName("unit.messages");
+    unitMessages_->setStyleSheet("color: #a00000;");
+    unitMessages_->setWordWrap(true);
+    auto* formGroup = new QGroupBox(tr("Unit"));
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(forms_);
+    auto* box = new QVBoxLayout(formGroup);
+    box->addWidget(scroll, 1);
+    box->addWidget(unitMessages_);
+    return formGroup;
+}
+
+QWidget* StationWindow::buildRight()
+{
+    auto* right = new QSplitter(Qt::Vertical);
+    if (QOpenGLContext().create()) {
+        preview_ = new PreviewWidget;
+        preview_->setObjectName("preview");
+        preview_->setMinimumSize(320, 240);
+        right->addWidget(preview_);
+    } else {  // e.g. a remote display or the offscreen platform: everything else still works
+        auto* noGl = new QLabel(tr("No 3-D preview: this display has no OpenGL."));
+        noGl->setObjectName("preview.unavailable");
+        noGl->setAlignment(Qt::AlignCenter);
+        noGl->setFrameShape(QFrame::StyledPanel);
+        right->addWidget(noGl);
+    }
+    auto* lower = new QSplitter(Qt::Horizontal);
+    lower->addWidget(steps_);
+    lower->addWidget(nc_);
+    lower->setStretchFactor(0, 3);
+    lower->setStretchFactor(1, 2);
+    right->addWidget(lower);
+    right->setSizes({500, 440});
+    return right;
+}
+
+void StationWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, files_, &FileActions::newJob);
+    file->addAction(tr("&Open…"), QKeySequence::Open, files_, &FileActions::open);
+    QMenu* recent = file->addMenu(tr("Open &recent"));
+    connect(recent, &QMenu::aboutToShow, this, [this, recent] { files_->fillRecentMenu(recent); });
+    file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
+    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Export tape and sheet…"), QKeySequence(tr("Ctrl+E")), files_, &FileActions::exportJob);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* job = menuBar()->addMenu(tr("&Job"));
+    job->addAction(tr("Add &M4 pocket"), QKeySequence(tr("Ctrl+4")), units_, &UnitListPanel::addM4);
+    job->addAction(tr("Add M&2D pocket"), QKeySequence(tr("Ctrl+3")), units_, &UnitListPanel::addM2D);
+    job->addSeparator();
+    job->addAction(tr("&Technology data…"), QKeySequence(tr("Ctrl+T")), this, &StationWindow::editTechnology);
+    job->addAction(tr("Tool &library…"), QKeySequence(tr("Ctrl+L")), this, &StationWindow::showToolLibrary);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* language = view->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(this);
+    for (const auto& [code, name] : availableLanguages()) {
+        QAction* a = language->addAction(name);
+        a->setCheckable(true);
+        a->setChecked(code == savedLanguage());
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code = code] {
+            saveLanguage(code);
+            statusBar()->showMessage(tr("The language changes when Taiwa is started again."), 8000);
+        });
+    }
+}
+
+void StationWindow::wire()
+{
+    connect(doc_, &JobDocument::changed, this, &StationWindow::onDocumentChanged);
+    connect(doc_, &JobDocument::selectionRequested, units_, &UnitListPanel::selectUnit);
+    connect(doc_, &JobDocument::modifiedChanged, this, &StationWindow::updateTitle);
+    connect(palette_, &ModulePalette::addModule, units_,
+            [this](const QString& m) { m == "m4" ? units_->addM4() : units_->addM2D(); });
+    connect(units_, &UnitListPanel::currentUnitChanged, this, &StationWindow::onUnitSelected);
+    for (UnitForm* f : {m4Form_, m2dForm_}) {
+        connect(f, &UnitForm::edited, this,
+                [this, f](int field, std::optional<double> v) { onFieldEdited(f, field, v); });
+        connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
+    }
+    connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
+        diagnostics_ = ds;
+        showDiagnostics();
+    });
+    connect(runner_, &PlanRunner::stepsPlanned, steps_, &StepPanel::setPlan);
+    connect(runner_, &PlanRunner::programReady, this,
+            [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
+                if (plan) nc_->setProgram(nc, lines);
+                else nc_->setMessage(nc);
+                onProgram(plan);
+            });
+    connect(nc_, &NcView::dialectChanged, runner_, &PlanRunner::setDialect);
+    connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
+    connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    if (!preview_) return;
+    connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);
+    connect(steps_, &StepPanel::showStockToggled, preview_, &PreviewWidget::setShowStock);
+    connect(steps_, &StepPanel::viewRequested, preview_, [this](ViewButton v) {
+        preview_->setView(v == ViewButton::Top     ? viz::ViewPreset::Top
+                          : v == ViewButton::Front ? viz::ViewPreset::Front
+                                                   : viz::ViewPreset::Iso);
+    });
+    connect(nc_, &NcView::moveSelected, preview_, &PreviewWidget::highlightMove);
+    connect(preview_, &PreviewWidget::moveClicked, nc_, &NcView::selectMove);
+}
+
+StepTable* StationWindow::stepTable() const { return steps_->table(); }
+
+UnitForm* StationWindow::currentForm() const
+{
+    const int u = units_->currentUnit();
+    const auto& units = doc_->job().units;
+    if (u < 0 || u >= static_cast<int>(units.size())) return nullptr;
+    return std::holds_alternative<M4Pocket>(units[static_cast<std::size_t>(u)].module) ? m4Form_ : m2dForm_;
+}
+
+void StationWindow::onDocumentChanged(bool fromTyping)
+{
+    units_->refresh();
+    jobProps_->refresh(!fromTyping);
+    if (UnitForm* f = currentForm())
+        f->setUnit(doc_->job().units[static_cast<std::size_t>(units_->currentUnit())], !fromTyping);
+    runner_->update(doc_->job());
+}
+
+void StationWindow::onUnitSelected(int unit)
+{
+    UnitForm* f = currentForm();
+    forms_->setCurrentWidget(f ? static_cast<QWidget*>(f) : forms_->widget(0));
+    if (f) f->setUnit(doc_->job().units[static_cast<std::size_t>(unit)], true);
+    showDiagnostics();
+}
+
+void StationWindow::onFieldEdited(UnitForm* form, int field, std::optional<double> value)
+{
+    const int u = units_->currentUnit();
+    if (u < 0 || form != currentForm()) return;
+    const FieldSpec& spec = form->fields()[static_cast<std::size_t>(field)];
+    Job j = doc_->job();
+    spec.set(j.units[static_cast<std::size_t>(u)], value);
+    if (j == doc_->job()) {
+        showDiagnostics();  // same value retyped: clear "not a number"
+        return;
+    }
+    doc_->edit(j, tr("Edit %1 of unit %2").arg(spec.label).arg(u + 1), QStringLiteral("%1:%2").arg(u).arg(spec.key));
+}
+
+void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
+{
+    if (!plan) return;
+    if (preview_) preview_->setPlan(plan);
+    steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
+}
+
+void StationWindow::showDiagnostics()
+{
+    const int u = units_->currentUnit();
+    Diagnostics ofUnit, jobLevel;
+    int otherUnits = 0;
+    for (const Diagnostic& d : diagnostics_) {
+        if (!d.unit) jobLevel.push_back(d);
+        else if (*d.unit == u + 1) ofUnit.push_back(d);
+        else ++otherUnits;
+    }
+    QStringList unitText;
+    if (UnitForm* f = currentForm())
+        for (const Diagnostic& d : f->showDiagnostics(ofUnit))
+            unitText << QString::fromStdString(d.field.empty() ? d.message : d.field + ": " + d.message);
+    unitMessages_->setText(unitText.join("\n"));
+    jobProps_->showDiagnostics(jobLevel);
+    QStringList status;
+    for (const Diagnostic& d : jobLevel)
+        status << QString::fromStdString((d.field.empty() ? "" : d.field + ": ") + d.message);
+    if (otherUnits > 0) status << tr("%n problem(s) in other units", "", otherUnits);
+    if (status.isEmpty()) statusBar()->clearMessage();
+    else statusBar()->showMessage(status.join("  •  "));
+}
+
+void StationWindow::editTechnology()
+{
+    TechnologyDialog dialog(doc_->job(), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    Job j = doc_->job();
+    j.technology = *dialog.overrides();
+    doc_->edit(j, tr("Edit technology data"));
+}
+
+void StationWindow::showToolLibrary()
+{
+    ToolLibraryDialog dialog(this);
+    dialog.exec();
+    if (!dialog.changed()) return;
+    runner_->reloadLibrary();
+    runner_->update(doc_->job());
+}
+
+void StationWindow::updateTitle()
+{
+    const QString name = doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
+    setWindowTitle(QStringLiteral("%1%2 — Taiwa").arg(name, doc_->isModified() ? "*" : ""));
+}
+
+void StationWindow::closeEvent(QCloseEvent* e)
+{
+    if (!files_->maybeSave()) {
+        e->ignore();
+        return;
+    }
+    Autosaver::removeRecovery(doc_->path());
+    e->accept();
+}
+
+}  // namespace taiwa::ui

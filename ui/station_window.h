@@ -1,0 +1,86 @@
+// The station's main window: wires the module palette, unit list, job
+// properties, module forms, step panel, 3-D preview and NC view to the job
+// document, the plan runner, autosave and the file actions. It owns no
+// logic of its own beyond passing signals on.
+#pragma once
+
+#include "check/diagnostic.h"
+#include "pipeline/pipeline.h"
+
+#include <QMainWindow>
+
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QStackedWidget;
+
+namespace taiwa::ui {
+
+class Autosaver;
+class FileActions;
+class JobDocument;
+class JobProperties;
+class ModulePalette;
+class NcView;
+class PlanRunner;
+class PreviewWidget;
+class StepPanel;
+class StepTable;
+class UnitForm;
+class UnitListPanel;
+
+class StationWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    // jobPath empty: a new job. Either way a newer recovery file of that job
+    // (left by a crash) is offered first.
+    explicit StationWindow(const QString& jobPath = {}, QWidget* parent = nullptr);
+
+    JobDocument* document() const { return doc_; }
+    PlanRunner* planRunner() const { return runner_; }
+    FileActions* fileActions() const { return files_; }
+    Autosaver* autosaver() const { return autosave_; }
+    UnitListPanel* unitList() const { return units_; }
+    StepPanel* stepPanel() const { return steps_; }
+    StepTable* stepTable() const;
+    NcView* ncView() const { return nc_; }
+    PreviewWidget* preview() const { return preview_; }
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+
+private:
+    QWidget* buildLeft();
+    QWidget* buildCentre();
+    QWidget* buildRight();
+    void buildMenus();
+    void wire();
+    void onDocumentChanged(bool fromTyping);
+    void onUnitSelected(int unit);
+    void onFieldEdited(UnitForm* form, int field, std::optional<double> value);
+    void onProgram(std::shared_ptr<const Plan> plan);
+    void showDiagnostics();
+    void editTechnology();
+    void showToolLibrary();
+    void updateTitle();
+    UnitForm* currentForm() const;
+
+    JobDocument* doc_;
+    PlanRunner* runner_;
+    Autosaver* autosave_;
+    FileActions* files_;
+    ModulePalette* palette_;
+    UnitListPanel* units_;
+    JobProperties* jobProps_;
+    QStackedWidget* forms_;
+    UnitForm* m4Form_;
+    UnitForm* m2dForm_;
+    QLabel* unitMessages_;
+    StepPanel* steps_;
+    PreviewWidget* preview_ = nullptr;
+    NcView* nc_;
+    Diagnostics diagnostics_;
+};
+
+}  // namespace taiwa::ui

@@ -1,0 +1,188 @@
+// The step panel: step list, step numbers, play timer and view buttons.
+#include "ui/step_panel.h"
+
+#include "ui/number_text.h"
+#include "ui/step_table.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace taiwa::ui {
+namespace {
+
+QString length(double mm, LengthUnit u)
+{
+    return formatNumber(std::round(fromMm(mm, u) * 1e4) / 1e4) + " " + unitSymbol(u);
+}
+
+}  // namespace
+
+StepPanel::StepPanel(QWidget* parent)
+    : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QPushButton(this)),
+      stock_(new QCheckBox(tr("&Stock"), this)), timer_(new QTimer(this))
+{
+    details_->setObjectName("step.details");
+    details_->setWordWrap(true);
+    details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    details_->setMinimumHeight(details_->fontMetrics().lineSpacing() * 3);
+    details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    play_->setObjectName("step.play");
+    play_->setCheckable(true);
+    play_->setText(tr("▶ Pla&y"));
+    stock_->setObjectName("view.stock");
+    stock_->setChecked(true);
+    timer_->setInterval(1200);
+
+    auto* buttons = new QHBoxLayout;
+    auto* all = new QPushButton(tr("&All steps"), this);
+    all->setObjectName("step.all");
+    buttons->addWidget(all);
+    buttons->addWidget(play_);
+    buttons->addStretch(1);
+    const std::pair<const char*, QString> views[] = {
+        {"view.iso", tr("&Iso")}, {"view.top", tr("&Top")}, {"view.front", tr("F&ront")}};
+    for (int i = 0; i < 3; ++i) {
+        auto* b = new QPushButton(views[i].second, this);
+        b->setObjectName(views[i].first);
+        connect(b, &QPushButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
+        buttons->addWidget(b);
+    }
+    buttons->addWidget(stock_);
+
+    auto* box = new QVBoxLayout(this);
+    box->setContentsMargins(0, 0, 0, 0);
+    box->addWidget(table_, 1);
+    box->addWidget(details_);
+    box->addLayout(buttons);
+
+    connect(table_, &QTableWidget::itemSelectionChanged, this, &StepPanel::onSelectionChanged);
+    connect(all, &QPushButton::clicked, this, [this] { selectStep(-1); });
+    connect(play_, &QPushButton::toggled, this, &StepPanel::setPlaying);
+    connect(timer_, &QTimer::timeout, this, &StepPanel::advance);
+    connect(stock_, &QCheckBox::toggled, this, &StepPanel::showStockToggled);
+}
+
+void StepPanel::setPlan(const std::shared_ptr<const Plan>& plan)
+{
+    const int keep = selectedStep();
+    plan_ = plan;
+    {
+        const QSignalBlocker block(table_);
+        table_->setPlan(plan);
+        if (keep >= 0 && keep < table_->rowCount()) table_->selectRow(keep);
+    }
+    if (!plan || table_->rowCount() == 0) setPlaying(false);
+    lastEmitted_ = -2;  // a new plan: tell the preview again
+    onSelectionChanged();
+}
+
+int StepPanel::selectedStep() const
+{
+    const auto rows = table_->selectionModel()->selectedRows();
+    return rows.isEmpty() ? -1 : rows.first().row();
+}
+
+void StepPanel::selectStep(int index)
+{
+    if (index < 0 || index >= table_->rowCount()) table_->clearSelection();
+    else table_->selectRow(index);
+    onSelectionChanged();
+}
+
+bool StepPanel::isPlaying() const { return timer_->isActive(); }
+
+void StepPanel::setPlaying(bool on)
+{
+    on = on && table_->rowCount() > 0;
+    if (on == isPlaying()) {
+        const QSignalBlocker block(play_);
+        play_->setChecked(on);
+        return;
+    }
+    if (on) {
+        selectStep(0);
+        timer_->start();
+    } else {
+        timer_->stop();
+    }
+    const QSignalBlocker block(play_);
+    play_->setChecked(on);
+    play_->setText(on ? tr("■ Stop (&Y)") : tr("▶ Pla&y"));
+}
+
+void StepPanel::setPlayInterval(int ms) { timer_->setInterval(ms); }
+
+void StepPanel::advance()
+{
+    const int next = selectedStep() + 1;
+    if (next >= table_->rowCount()) {
+        setPlaying(false);
+        selectStep(-1);
+        return;
+    }
+    selectStep(next);
+}
+
+void StepPanel::onSelectionChanged()
+{
+    const int index = selectedStep();
+    showDetails(index);
+    if (index == lastEmitted_) return;
+    lastEmitted_ = index;
+    emit stepSelected(index);
+}
+
+void StepPanel::showDetails(int index)
+{
+    if (!plan_ || index < 0 || index >= static_cast<int>(plan_->steps.size())) {
+        if (!plan_) details_->setText(tr("No steps: the job has input errors."));
+        else
+            details_->setText(tr("%n step(s), %1 min, %2 tool change(s)", "", static_cast<int>(plan_->steps.size()))
+                                  .arg(QString::number(plan_->totalMinutes, 'f', 1))
+                                  .arg(plan_->toolChanges));
+        return;
+    }
+    const Step& s = plan_->steps[static_cast<std::size_t>(index)];
+    const LengthUnit u = plan_->job.lengthUnit;
+    QStringList lines;
+    lines << tr("<b>%1</b> of unit %2 (%3), machining type %4")
+                 .arg(QString::fromStdString(s.label()))
+                 .arg(s.unit + 1)
+                 .arg(QString::fromStdString(s.module))
+                 .arg(static_cast<int>(s.machiningType));
+    lines << tr("Air to %1, cuts to %2; leaves wall %3, floor %4")
+                 .arg(length(s.startDepth, u), length(s.cutDepth, u), length(s.wallAllowance, u),
+                      length(s.floorAllowance, u));
+    if (s.outline) {
+        QStringList pts;
+        for (const Point2& p : s.outline->corners)
+            pts << QStringLiteral("(%1, %2)").arg(formatNumber(std::round(fromMm(p.x, u) * 1e4) / 1e4),
+                                                  formatNumber(std::round(fromMm(p.y, u) * 1e4) / 1e4));
+        lines << tr("Outline %1, r %2").arg(pts.join(' '), length(s.outline->cornerRadius, u));
+    } else if (s.face) {
+        lines << tr("Inclined face at %1° from the vertical, scallop %2")
+                     .arg(formatNumber(s.face->angle), length(s.scallop, u));
+    } else {
+        lines << tr("At (%1, %2), Ø %3")
+                     .arg(formatNumber(std::round(fromMm(s.position.x, u) * 1e4) / 1e4),
+                          formatNumber(std::round(fromMm(s.position.y, u) * 1e4) / 1e4), length(s.holeDiameter, u));
+    }
+    if (s.wallTaper > 0) lines << tr("Wall taper %1° per side").arg(formatNumber(s.wallTaper));
+    if (s.tool) {
+        const Tool* t = plan_->tool(s.tool->toolId);
+        lines << tr("T%1 %2: %3")
+                     .arg(s.tool->toolId)
+                     .arg(t ? QString::fromStdString(t->name) : QString())
+                     .arg(QString::fromStdString(s.tool->reason));
+    }
+    if (s.minutes) lines << tr("Estimated %1 min").arg(QString::number(*s.minutes, 'f', 2));
+    details_->setText(lines.join("<br>"));
+}
+
+}  // namespace taiwa::ui

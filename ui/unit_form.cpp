@@ -1,0 +1,194 @@
+// The generic module form: widgets from FieldSpecs, live parsing and the
+// display of check diagnostics.
+#include "ui/unit_form.h"
+
+#include "ui/module_palette.h"
+#include "ui/number_text.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QKeyEvent>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace taiwa::ui {
+
+namespace {
+const char* const kRed = "background: #ffd0d0;";
+}
+
+UnitForm::UnitForm(const std::vector<FieldSpec>& fields, const QString& prefix, QWidget* parent)
+    : QWidget(parent), fields_(fields), rows_(fields.size())
+{
+    auto* outer = new QVBoxLayout(this);
+    auto* drawing = new QLabel(this);
+    drawing->setObjectName(prefix + ".drawing");
+    drawing->setPixmap(moduleDrawing(prefix, 320));
+    drawing->setAlignment(Qt::AlignCenter);
+    outer->addWidget(drawing);
+    auto* form = new QFormLayout;
+    outer->addLayout(form);
+    outer->addStretch(1);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    QWidget* previous = nullptr;
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        const FieldSpec& f = fields_[i];
+        const int index = static_cast<int>(i);
+        auto* cell = new QWidget(this);
+        auto* box = new QVBoxLayout(cell);
+        box->setContentsMargins(0, 0, 0, 0);
+        box->setSpacing(1);
+        QWidget* editor = nullptr;
+        Row& row = rows_[i];
+        if (f.kind == FieldKind::Code) {
+            row.combo = new QComboBox(cell);
+            for (const auto& [value, text] : f.codes) {
+                row.combo->addItem(text, value);
+                row.combo->setItemData(row.combo->count() - 1, text, Qt::ToolTipRole);
+            }
+            // The meanings are long: the closed box shows their start, the list all of it.
+            row.combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+            row.combo->setMinimumContentsLength(16);
+            connect(row.combo, &QComboBox::activated, this, [this, index](int item) {
+                emit edited(index, rows_[static_cast<std::size_t>(index)].combo->itemData(item).toDouble());
+            });
+            row.combo->installEventFilter(this);
+            editor = row.combo;
+        } else {
+            row.edit = new QLineEdit(cell);
+            if (!f.placeholder.isEmpty())
+                row.edit->setPlaceholderText(
+                    QCoreApplication::translate("taiwa::ui::FieldSpec", f.placeholder.toUtf8().constData()));
+            connect(row.edit, &QLineEdit::textEdited, this, [this, index](const QString& t) { onTextEdited(index, t); });
+            connect(row.edit, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
+            connect(row.edit, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
+            row.edit->installEventFilter(this);
+            editor = row.edit;
+        }
+        editor->setObjectName(prefix + "." + f.key);
+        row.message = new QLabel(cell);
+        row.message->setObjectName(prefix + "." + f.key + ".error");
+        row.message->setStyleSheet("color: #a00000;");
+        row.message->setWordWrap(true);
+        row.message->hide();
+        box->addWidget(editor);
+        box->addWidget(row.message);
+        form->addRow(QCoreApplication::translate("taiwa::ui::FieldSpec", f.label.toUtf8().constData()), cell);
+        if (previous) setTabOrder(previous, editor);
+        previous = editor;
+    }
+}
+
+void UnitForm::setUnit(const MachiningUnit& unit, bool force)
+{
+    updating_ = true;
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        Row& row = rows_[i];
+        const std::optional<double> v = fields_[i].get(unit);
+        if (row.combo) {
+            const int code = v ? static_cast<int>(std::lround(*v)) : 0;
+            int item = row.combo->findData(code);
+            if (item < 0) {
+                row.combo->addItem(QStringLiteral("%1 – not a code of the table").arg(code), code);
+                item = row.combo->count() - 1;
+            }
+            row.combo->setCurrentIndex(item);
+            continue;
+        }
+        const QString text = row.edit->text();
+        const bool empty = text.trimmed().isEmpty();
+        const std::optional<double> typed = parseNumber(text);
+        const bool same = (typed && v && *typed == *v) || (empty && !v && fields_[i].kind == FieldKind::OptionalNumber);
+        if (same || (!force && row.notANumber)) continue;
+        row.edit->setText(v ? formatNumber(*v) : QString());
+        row.notANumber = false;
+    }
+    updating_ = false;
+}
+
+void UnitForm::onTextEdited(int field, const QString& text)
+{
+    Row& row = rows_[static_cast<std::size_t>(field)];
+    const bool optional = fields_[static_cast<std::size_t>(field)].kind == FieldKind::OptionalNumber;
+    if (optional && text.trimmed().isEmpty()) {
+        row.notANumber = false;
+        emit edited(field, std::nullopt);
+        return;
+    }
+    const std::optional<double> v = parseNumber(text);
+    row.notANumber = !v;
+    if (!v) {
+        setMessage(field, tr("not a number"));
+        return;
+    }
+    emit edited(field, v);
+}
+
+void UnitForm::setMessage(int field, const QString& message)
+{
+    Row& row = rows_[static_cast<std::size_t>(field)];
+    QWidget* editor = row.edit ? static_cast<QWidget*>(row.edit) : row.combo;
+    editor->setStyleSheet(message.isNull() ? QString() : QString(kRed));
+    editor->setToolTip(message);
+    row.message->setText(message);
+    row.message->setVisible(!message.isEmpty());
+}
+
+Diagnostics UnitForm::showDiagnostics(const Diagnostics& ofThisUnit)
+{
+    std::vector<QString> messages(fields_.size());
+    std::vector<bool> red(fields_.size(), false);
+    Diagnostics unmatched;
+    for (const Diagnostic& d : ofThisUnit) {
+        const QString field = QString::fromStdString(d.field);
+        bool shown = false;
+        for (std::size_t i = 0; i < fields_.size(); ++i) {
+            if (!fields_[i].diagFields.contains(field)) continue;
+            red[i] = true;
+            if (!shown) {  // the message once, under the first widget it names
+                const QString m = QString::fromStdString(d.message);
+                messages[i] = messages[i].isEmpty() ? m : messages[i] + "\n" + m;
+                shown = true;
+            }
+        }
+        if (!shown) unmatched.push_back(d);
+    }
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        const int index = static_cast<int>(i);
+        if (rows_[i].notANumber) setMessage(index, tr("not a number"));
+        else if (red[i]) setMessage(index, messages[i].isEmpty() ? QStringLiteral("") : messages[i]);
+        else setMessage(index, QString());
+    }
+    return unmatched;
+}
+
+bool UnitForm::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::KeyPress && qobject_cast<QComboBox*>(watched)) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {  // Enter moves on, as in the line edits
+            focusNextChild();
+            return true;
+        }
+    }
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
+            key->keyCombination() == QKeyCombination(Qt::ControlModifier | Qt::ShiftModifier, Qt::Key_Z))
+            return true;  // not accepted: the window's undo/redo shortcut runs
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+bool UnitForm::hasUnparsableText() const
+{
+    for (const Row& r : rows_)
+        if (r.notANumber) return true;
+    return false;
+}
+
+}  // namespace taiwa::ui

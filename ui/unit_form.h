@@ -1,0 +1,62 @@
+// The form of one module (M4 or M2D): a QFormLayout of line edits and code
+// combo boxes built from FieldSpecs, each with a message label under it.
+// Typed text is kept as typed; text that is not a number turns the field red
+// with "not a number", and the check diagnostics of the unit are shown on the
+// widgets whose field they name.
+#pragma once
+
+#include "check/diagnostic.h"
+#include "ui/field_spec.h"
+
+#include <QWidget>
+
+#include <optional>
+#include <vector>
+
+class QLabel;
+class QLineEdit;
+class QComboBox;
+
+namespace taiwa::ui {
+
+class UnitForm : public QWidget {
+    Q_OBJECT
+public:
+    // prefix: "m4" or "m2d", the widget objectName prefix and the drawing shown above the fields.
+    UnitForm(const std::vector<FieldSpec>& fields, const QString& prefix, QWidget* parent = nullptr);
+
+    const std::vector<FieldSpec>& fields() const { return fields_; }
+    // Shows the unit's values. force = false keeps text the operator is
+    // typing (a field whose text is not a number, or parses to the value).
+    void setUnit(const MachiningUnit& unit, bool force);
+    // Marks the widgets the diagnostics name; returns the ones no widget shows.
+    Diagnostics showDiagnostics(const Diagnostics& ofThisUnit);
+    bool hasUnparsableText() const;
+
+protected:
+    // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
+    // line edit's own undo.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+signals:
+    // A field got a valid value (from typing or from a combo box).
+    void edited(int field, std::optional<double> value);
+    // The operator left a field (Tab, Enter, click elsewhere).
+    void fieldLeft();
+
+private:
+    struct Row {
+        QLineEdit* edit = nullptr;
+        QComboBox* combo = nullptr;
+        QLabel* message = nullptr;
+        bool notANumber = false;
+    };
+    void onTextEdited(int field, const QString& text);
+    void setMessage(int field, const QString& message);
+
+    std::vector<FieldSpec> fields_;
+    std::vector<Row> rows_;
+    bool updating_ = false;
+};
+
+}  // namespace taiwa::ui

@@ -1,0 +1,113 @@
+// The unit list and its buttons.
+#include "ui/unit_list_panel.h"
+
+#include "ui/job_document.h"
+
+#include <QGridLayout>
+#include <QListWidget>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace taiwa::ui {
+
+UnitListPanel::UnitListPanel(JobDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc), list_(new QListWidget(this))
+{
+    list_->setObjectName("units");
+    auto* box = new QVBoxLayout(this);
+    box->setContentsMargins(0, 0, 0, 0);
+    box->addWidget(list_);
+    auto* buttons = new QGridLayout;
+    auto add = [&](const char* name, const QString& text, int r, int c, void (UnitListPanel::*slot)()) {
+        auto* b = new QPushButton(text, this);
+        b->setObjectName(name);
+        connect(b, &QPushButton::clicked, this, slot);
+        buttons->addWidget(b, r, c);
+    };
+    add("unit.duplicate", tr("D&uplicate"), 0, 0, &UnitListPanel::duplicate);
+    add("unit.up", tr("▲ U&p"), 0, 1, &UnitListPanel::moveUp);
+    add("unit.down", tr("▼ Do&wn"), 0, 2, &UnitListPanel::moveDown);
+    add("unit.delete", tr("De&lete"), 0, 3, &UnitListPanel::remove);
+    box->addLayout(buttons);
+    connect(list_, &QListWidget::currentRowChanged, this, &UnitListPanel::currentUnitChanged);
+}
+
+int UnitListPanel::currentUnit() const { return list_->currentRow(); }
+
+void UnitListPanel::selectUnit(int unit)
+{
+    if (unit >= list_->count()) unit = list_->count() - 1;
+    list_->setCurrentRow(unit);
+    emit currentUnitChanged(list_->currentRow());
+}
+
+void UnitListPanel::refresh()
+{
+    const auto& units = doc_->job().units;
+    const int keep = list_->currentRow();
+    const QSignalBlocker block(list_);
+    while (list_->count() > static_cast<int>(units.size())) delete list_->takeItem(list_->count() - 1);
+    for (std::size_t i = 0; i < units.size(); ++i) {
+        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(moduleName(units[i].module));
+        if (!units[i].name.empty()) text += " " + QString::fromStdString(units[i].name);
+        if (static_cast<int>(i) < list_->count()) list_->item(static_cast<int>(i))->setText(text);
+        else list_->addItem(text);
+    }
+    list_->setCurrentRow(std::min(keep, list_->count() - 1));
+}
+
+void UnitListPanel::addM4()
+{
+    Job j = doc_->job();
+    M4Pocket p;
+    p.corners = {Point2{10, 10}, Point2{60, 10}, Point2{60, 40}, Point2{10, 40}};
+    p.cornerRadius = 8;
+    p.depth = 10;
+    j.units.push_back(MachiningUnit{"", p});
+    doc_->edit(j, tr("Add M4 unit"), {}, static_cast<int>(j.units.size()) - 1);
+}
+
+void UnitListPanel::addM2D()
+{
+    Job j = doc_->job();
+    M2DPocket p;
+    p.corner = Point2{10, 10};
+    p.lengthX = 50;
+    p.lengthY = 30;
+    p.depth = 8;
+    p.theta1 = 10;
+    p.cornerRadius = 8;
+    j.units.push_back(MachiningUnit{"", p});
+    doc_->edit(j, tr("Add M2D unit"), {}, static_cast<int>(j.units.size()) - 1);
+}
+
+void UnitListPanel::duplicate()
+{
+    const int u = currentUnit();
+    if (u < 0) return;
+    Job j = doc_->job();
+    j.units.insert(j.units.begin() + u + 1, j.units[static_cast<std::size_t>(u)]);
+    doc_->edit(j, tr("Duplicate unit %1").arg(u + 1), {}, u + 1);
+}
+
+void UnitListPanel::move(int delta)
+{
+    const int u = currentUnit();
+    const int to = u + delta;
+    Job j = doc_->job();
+    if (u < 0 || to < 0 || to >= static_cast<int>(j.units.size())) return;
+    std::swap(j.units[static_cast<std::size_t>(u)], j.units[static_cast<std::size_t>(to)]);
+    doc_->edit(j, tr("Move unit %1").arg(u + 1), {}, to);
+}
+
+void UnitListPanel::remove()
+{
+    const int u = currentUnit();
+    if (u < 0) return;
+    Job j = doc_->job();
+    j.units.erase(j.units.begin() + u);
+    doc_->edit(j, tr("Delete unit %1").arg(u + 1), {}, std::max(0, u - 1));
+}
+
+}  // namespace taiwa::ui

@@ -1,0 +1,27 @@
+// The colours of the 3-D preview, in one place (also used by the tests to
+// find things in rendered images).
+#pragma once
+
+namespace taiwa::viz {
+
+struct Rgb {
+    unsigned char r = 0, g = 0, b = 0;
+    double red() const { return r / 255.0; }
+    double green() const { return g / 255.0; }
+    double blue() const { return b / 255.0; }
+};
+
+namespace palette {
+inline constexpr Rgb kBackground{38, 44, 56};    // solid, so a pixel off the stock is exactly this
+inline constexpr Rgb kFeed{64, 160, 255};        // feed and arc moves
+inline constexpr Rgb kRapid{255, 110, 64};       // rapids, drawn thin
+inline constexpr Rgb kDimmed{96, 104, 118};      // paths of the steps not selected
+inline constexpr Rgb kHighlight{255, 0, 220};    // the move picked in the NC view or the 3-D view
+inline constexpr Rgb kTool{235, 190, 40};        // the tool glyph
+inline constexpr Rgb kStock{176, 182, 194};      // uncut stock faces
+inline constexpr Rgb kMachined{120, 200, 160};   // faces the simulation has cut
+inline constexpr Rgb kStockEdges{150, 158, 172}; // the stock's box when the stock is hidden
+inline constexpr Rgb kText{220, 224, 232};
+}  // namespace palette
+
+}  // namespace taiwa::viz

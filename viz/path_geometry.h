@@ -1,0 +1,30 @@
+// Tool paths as VTK line geometry: the flattened pieces of one path (arcs
+// sampled, drill cycles unrolled) as one shared point list with two line
+// sets, feeds and rapids, and for each piece the move it belongs to (for
+// highlighting and picking).
+#pragma once
+
+#include "model/toolpath.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+namespace taiwa::viz {
+
+struct PathGeometry {
+    // Point k is where piece k starts, point k + 1 where it ends.
+    vtkSmartPointer<vtkPoints> points;
+    vtkSmartPointer<vtkPolyData> feeds;   // one line cell per feed, arc or drilling piece
+    vtkSmartPointer<vtkPolyData> rapids;  // one line cell per rapid piece
+    std::vector<int> moveOfPiece;         // index into ToolPath::moves
+};
+
+// Arcs sampled within `chordTolerance` mm.
+PathGeometry makePathGeometry(const ToolPath& path, double chordTolerance = 0.01);
+
+// The pieces of one move only, as lines (the highlight).
+vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move);
+
+}  // namespace taiwa::viz

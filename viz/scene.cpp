@@ -1,0 +1,297 @@
+// The preview scene: actors for the stock, the paths, the tool, the
+// highlight and the axes, rebuilt or restyled as the selection changes.
+#include "viz/scene.h"
+
+#include "sim/stock_simulation.h"
+#include "viz/camera_presets.h"
+#include "viz/palette.h"
+#include "viz/solids.h"
+
+#include <vtkAxesActor.h>
+#include <vtkCamera.h>
+#include <vtkCaptionActor2D.h>
+#include <vtkMatrix4x4.h>
+#include <vtkOutlineSource.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace taiwa::viz {
+
+namespace {
+
+vtkSmartPointer<vtkActor> actorFor(vtkPolyData* pd, Rgb colour)
+{
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(pd);
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(colour.red(), colour.green(), colour.blue());
+    return actor;
+}
+
+vtkSmartPointer<vtkActor> lineActor(vtkPolyData* pd, Rgb colour, double width)
+{
+    auto actor = actorFor(pd, colour);
+    actor->GetProperty()->LightingOff();  // lines show their colour exactly
+    actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+    return actor;
+}
+
+void setColour(vtkActor* a, Rgb c) { a->GetProperty()->SetColor(c.red(), c.green(), c.blue()); }
+
+// 1, 2 or 5 times a power of ten, near a fifth of the size.
+double niceLength(double size)
+{
+    const double target = std::max(size / 5.0, 1.0);
+    const double decade = std::pow(10.0, std::floor(std::log10(target)));
+    for (double f : {1.0, 2.0, 5.0})
+        if (f * decade >= target * 0.7) return f * decade;
+    return 10.0 * decade;
+}
+
+// World point to pixel through the camera's composite matrix.
+std::array<double, 2> project(vtkMatrix4x4* m, double x, double y, double z, int width, int height)
+{
+    const double in[4] = {x, y, z, 1.0};
+    double out[4];
+    m->MultiplyPoint(in, out);
+    const double w = out[3] != 0 ? out[3] : 1.0;
+    return {(out[0] / w + 1.0) / 2.0 * width, (1.0 - out[1] / w) / 2.0 * height};
+}
+
+double segmentDistance(double px, double py, const double a[2], const double b[2])
+{
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const double len2 = dx * dx + dy * dy;
+    const double t = len2 > 0 ? std::clamp(((px - a[0]) * dx + (py - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(px - a[0] - t * dx, py - a[1] - t * dy);
+}
+
+}  // namespace
+
+Scene::Scene() : renderer_(vtkSmartPointer<vtkRenderer>::New())
+{
+    renderer_->SetBackground(palette::kBackground.red(), palette::kBackground.green(), palette::kBackground.blue());
+}
+
+Scene::~Scene() = default;
+
+void Scene::clear()
+{
+    renderer_->RemoveAllViewProps();
+    steps_.clear();
+    simulation_.reset();
+    stock_ = stockEdges_ = tool_ = highlight_ = nullptr;
+    axes_ = nullptr;
+    scaleNote_ = nullptr;
+}
+
+void Scene::setPlan(std::shared_ptr<const Plan> plan)
+{
+    clear();
+    plan_ = std::move(plan);
+    if (!plan_) return;
+    const int n = static_cast<int>(plan_->steps.size());
+    if (selected_ >= n) selected_ = -1;
+    if (highlighted_.step >= n) highlighted_ = {};
+
+    const Stock& s = plan_->mmJob.stock;
+    auto outline = vtkSmartPointer<vtkOutlineSource>::New();
+    outline->SetBounds(s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0);
+    outline->Update();
+    stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
+    renderer_->AddActor(stockEdges_);
+
+    steps_.resize(plan_->steps.size());
+    for (int k = 0; k < n; ++k) {
+        const Step& step = plan_->steps[k];
+        if (!step.path) continue;
+        StepActors& a = steps_[k];
+        a.geometry = makePathGeometry(*step.path);
+        a.feeds = lineActor(a.geometry.feeds, palette::kFeed, 2.0);
+        a.rapids = lineActor(a.geometry.rapids, palette::kRapid, 1.0);
+        renderer_->AddActor(a.feeds);
+        renderer_->AddActor(a.rapids);
+    }
+
+    const double axisLength = niceLength(std::max(s.width, s.length));
+    axes_ = vtkSmartPointer<vtkAxesActor>::New();
+    axes_->SetTotalLength(axisLength, axisLength, axisLength);
+    axes_->SetShaftTypeToLine();
+    for (vtkCaptionActor2D* c : {axes_->GetXAxisCaptionActor2D(), axes_->GetYAxisCaptionActor2D(), axes_->GetZAxisCaptionActor2D()}) {
+        c->GetTextActor()->SetTextScaleModeToNone();
+        c->GetCaptionTextProperty()->SetFontSize(14);
+        c->GetCaptionTextProperty()->ShadowOff();
+    }
+    renderer_->AddActor(axes_);
+    scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
+    scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
+    scaleNote_->GetTextProperty()->SetFontSize(14);
+    scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
+    scaleNote_->SetDisplayPosition(8, 8);
+    renderer_->AddActor2D(scaleNote_);
+
+    updateStock();
+    updateEmphasis();
+    updateTool();
+    updateHighlight();
+}
+
+void Scene::setSelectedStep(int index)
+{
+    selected_ = plan_ && index >= 0 && index < static_cast<int>(plan_->steps.size()) ? index : -1;
+    updateStock();
+    updateEmphasis();
+    updateTool();
+}
+
+void Scene::setShowStock(bool show)
+{
+    showStock_ = show;
+    updateStock();
+}
+
+void Scene::highlightMove(int step, int move)
+{
+    highlighted_ = {step, move};
+    updateHighlight();
+}
+
+void Scene::updateEmphasis()
+{
+    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
+        StepActors& a = steps_[k];
+        if (!a.feeds) continue;
+        const bool emphasised = selected_ < 0 || selected_ == k;
+        setColour(a.feeds, emphasised ? palette::kFeed : palette::kDimmed);
+        a.feeds->GetProperty()->SetLineWidth(selected_ == k ? 3.0f : emphasised ? 2.0f : 1.0f);
+        a.rapids->SetVisibility(emphasised);
+    }
+}
+
+void Scene::updateStock()
+{
+    if (!plan_) return;
+    if (stock_) renderer_->RemoveActor(stock_);
+    if (showStock_) {
+        if (!simulation_) simulation_ = std::make_unique<sim::StockSimulation>(*plan_);
+        const sim::HeightField& field = selected_ < 0 ? simulation_->finished() : simulation_->after(selected_);
+        stock_ = actorFor(heightFieldSurface(field), palette::kStock);
+        stock_->GetMapper()->ScalarVisibilityOn();
+        stock_->GetMapper()->SetColorModeToDirectScalars();
+        stock_->GetProperty()->SetAmbient(0.25);
+        stock_->GetProperty()->SetDiffuse(0.75);
+    } else {
+        stock_ = actorFor(stockBlock(plan_->mmJob.stock), palette::kStock);
+        // Only the far faces: a glass tray behind the paths, which keep their colours.
+        stock_->GetProperty()->SetOpacity(0.12);
+        stock_->GetProperty()->FrontfaceCullingOn();
+    }
+    renderer_->AddActor(stock_);
+    stockEdges_->SetVisibility(!showStock_);
+}
+
+void Scene::updateTool()
+{
+    if (tool_) renderer_->RemoveActor(tool_);
+    tool_ = nullptr;
+    if (!plan_) return;
+    int k = selected_;
+    if (k < 0) {  // all steps: the tool of the first step that has a path
+        const auto& steps = plan_->steps;
+        const auto it = std::find_if(steps.begin(), steps.end(), [](const Step& s) { return s.path && s.tool; });
+        k = it == steps.end() ? -1 : static_cast<int>(it - steps.begin());
+    }
+    if (k < 0) return;
+    const Step& step = plan_->steps[k];
+    const Tool* tool = step.tool ? plan_->tool(step.tool->toolId) : nullptr;
+    if (!tool || !step.path) return;
+    tool_ = actorFor(toolSolid(*tool), palette::kTool);
+    tool_->SetPosition(step.path->start.x, step.path->start.y, step.path->start.z);
+    tool_->GetProperty()->SetAmbient(0.35);
+    tool_->GetProperty()->SetDiffuse(0.65);
+    renderer_->AddActor(tool_);
+}
+
+void Scene::updateHighlight()
+{
+    if (highlight_) renderer_->RemoveActor(highlight_);
+    highlight_ = nullptr;
+    const int k = highlighted_.step;
+    if (k < 0 || k >= static_cast<int>(steps_.size()) || !steps_[k].feeds) return;
+    highlight_ = lineActor(movePieces(steps_[k].geometry, highlighted_.move), palette::kHighlight, 5.0);
+    renderer_->AddActor(highlight_);
+}
+
+std::array<double, 6> Scene::bounds() const
+{
+    std::array<double, 6> b{0, 1, 0, 1, -1, 0};
+    if (!plan_) return b;
+    const Stock& s = plan_->mmJob.stock;
+    b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};
+    for (const auto& a : steps_) {
+        if (!a.geometry.points) continue;
+        double pb[6];
+        a.geometry.points->GetBounds(pb);
+        for (int i = 0; i < 6; i += 2) {
+            b[i] = std::min(b[i], pb[i]);
+            b[i + 1] = std::max(b[i + 1], pb[i + 1]);
+        }
+    }
+    return b;
+}
+
+void Scene::setView(ViewPreset preset, double aspect)
+{
+    applyViewPreset(renderer_->GetActiveCamera(), preset, bounds(), aspect);
+    renderer_->ResetCameraClippingRange();
+}
+
+vtkMatrix4x4* Scene::worldToView(int width, int height) const
+{
+    const double aspect = static_cast<double>(width) / std::max(height, 1);
+    return renderer_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+}
+
+std::array<double, 2> Scene::toPixel(const Point3& p, int width, int height) const
+{
+    return project(worldToView(width, height), p.x, p.y, p.z, width, height);
+}
+
+std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height, double tolerance) const
+{
+    std::optional<MoveRef> best;
+    double bestDistance = tolerance;
+    vtkMatrix4x4* m = worldToView(width, height);
+    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
+        const StepActors& a = steps_[k];
+        if (!a.geometry.points || (selected_ >= 0 && selected_ != k)) continue;
+        double prev[2] = {0, 0};
+        for (vtkIdType i = 0; i < a.geometry.points->GetNumberOfPoints(); ++i) {
+            double p[3];
+            a.geometry.points->GetPoint(i, p);
+            const auto px = project(m, p[0], p[1], p[2], width, height);
+            const double cur[2] = {px[0], px[1]};
+            if (i > 0) {
+                const double d = segmentDistance(x, y, prev, cur);
+                if (d <= bestDistance) {
+                    bestDistance = d;
+                    best = MoveRef{k, a.geometry.moveOfPiece[static_cast<std::size_t>(i - 1)]};
+                }
+            }
+            prev[0] = cur[0];
+            prev[1] = cur[1];
+        }
+    }
+    return best;
+}
+
+}  // namespace taiwa::viz

@@ -1,0 +1,98 @@
+// The 3-D preview scene of a plan, as a vtkRenderer: the stock (a
+// translucent block, or the simulated stock after the selected step), the
+// tool paths of every step (feeds and rapids in their colours, the selected
+// step emphasised, the others dimmed), the tool at the selected path's
+// start, one highlighted move, axes with a scale note, camera presets. The
+// offscreen renderer and the preview widget both show this scene; it is the
+// one door between the core's types and VTK.
+#pragma once
+
+#include "pipeline/pipeline.h"
+#include "viz/path_geometry.h"
+#include "viz/render.h"
+
+#include <vtkActor.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace taiwa::sim {
+class StockSimulation;
+}
+
+class vtkAxesActor;
+class vtkMatrix4x4;
+class vtkTextActor;
+
+namespace taiwa::viz {
+
+struct MoveRef {
+    int step = -1;  // index into Plan::steps
+    int move = -1;  // index into the step's ToolPath::moves
+    friend bool operator==(const MoveRef&, const MoveRef&) = default;
+};
+
+class Scene {
+public:
+    Scene();
+    ~Scene();
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    vtkRenderer* renderer() const { return renderer_; }
+
+    // Builds the scene for the plan (nullptr: an empty scene). Keeps the
+    // selection, stock and view settings when they still apply.
+    void setPlan(std::shared_ptr<const Plan> plan);
+    const Plan* plan() const { return plan_.get(); }
+    // -1: every step alike; k: step k emphasised, the tool at its start,
+    // the stock (when shown) as it is after step k.
+    void setSelectedStep(int index);
+    int selectedStep() const { return selected_; }
+    // The simulated stock instead of the translucent block.
+    void setShowStock(bool show);
+    // The move drawn in the highlight colour; (-1, -1) for none.
+    void highlightMove(int step, int move);
+    // Camera preset fitted to the stock and the paths for a viewport of
+    // width / height = aspect.
+    void setView(ViewPreset preset, double aspect);
+    // The union of the stock's box and the paths (xmin, xmax, ymin, ymax, zmin, zmax).
+    std::array<double, 6> bounds() const;
+
+    // Where a world point appears in a viewport of width x height pixels
+    // (x to the right, y downward from the top-left corner), for the
+    // current camera.
+    std::array<double, 2> toPixel(const Point3& p, int width, int height) const;
+    // The move whose drawn path passes nearest to pixel (x, y) within
+    // `tolerance` pixels, among the steps shown emphasised; nothing if none.
+    std::optional<MoveRef> pickMove(double x, double y, int width, int height, double tolerance = 6.0) const;
+
+private:
+    struct StepActors {
+        PathGeometry geometry;
+        vtkSmartPointer<vtkActor> feeds, rapids;
+    };
+    vtkMatrix4x4* worldToView(int width, int height) const;
+    void clear();
+    void updateEmphasis();
+    void updateStock();
+    void updateTool();
+    void updateHighlight();
+
+    vtkSmartPointer<vtkRenderer> renderer_;
+    std::shared_ptr<const Plan> plan_;
+    std::unique_ptr<sim::StockSimulation> simulation_;
+    std::vector<StepActors> steps_;
+    vtkSmartPointer<vtkActor> stock_, stockEdges_, tool_, highlight_;
+    vtkSmartPointer<vtkAxesActor> axes_;
+    vtkSmartPointer<vtkTextActor> scaleNote_;
+    int selected_ = -1;
+    bool showStock_ = false;
+    MoveRef highlighted_;
+};
+
+}  // namespace taiwa::viz
