@@ -3,8 +3,12 @@
 // nothing else) after the autosave timer ran; the next window started on the
 // same job offers the recovery file and restores the typed values. A
 // recovery file older than the job file is not offered; a clean close
-// removes it.
+// removes it. And with the real executable: `taiwa JOB` started on a job
+// with a newer recovery file adopts it and keeps autosaving it; killed with
+// SIGKILL, it leaves the recovery file whole and the job file untouched, and
+// the next start restores it.
 #include "io/job_io.h"
+#include "support/support.h"
 #include "ui/autosave.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -14,6 +18,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLineEdit>
+#include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -114,6 +119,57 @@ private slots:
         StationWindow w(job);
         QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 11.0);
         QVERIFY(!w.document()->isModified());
+    }
+
+    void realProcessKilled()
+    {
+        QVERIFY2(QFile::exists(TAIWA_BINARY), "build the taiwa executable first");
+        const QString job = dir_.filePath("killed.taiwa");
+        Job saved;
+        M4Pocket p;
+        p.corners = {Point2{10, 10}, Point2{60, 10}, Point2{60, 40}, Point2{10, 40}};
+        p.cornerRadius = 5;
+        p.depth = 8;
+        saved.units.push_back(MachiningUnit{"A", p});
+        const std::string savedText = writeJob(saved);
+        QVERIFY(!writeFileAtomically(job.toStdString(), savedText));
+        Job edited = saved;
+        std::get<M4Pocket>(edited.units[0].module).depth = 11;
+        const QString recovery = Autosaver::recoveryPath(job);
+        QVERIFY(!writeFileAtomically(recovery.toStdString(), writeJob(edited)));
+        const QDateTime before = QDateTime::currentDateTime();
+        auto age = [](const QString& path, int seconds) {
+            QFile f(path);
+            return f.open(QIODevice::ReadWrite) &&
+                   f.setFileTime(QDateTime::currentDateTime().addSecs(seconds), QFileDevice::FileModificationTime);
+        };
+        QVERIFY(age(job, -60));
+        QVERIFY(age(recovery, -30));  // older than now, newer than the job
+
+        QProcess taiwa;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("QT_QPA_PLATFORM", "offscreen");
+        env.insert("TAIWA_AUTOSAVE_DIR", qEnvironmentVariable("TAIWA_AUTOSAVE_DIR"));
+        env.insert("TAIWA_TOOL_DB", qEnvironmentVariable("TAIWA_TOOL_DB"));
+        env.insert("TAIWA_NO_PROMPTS", "1");  // restore without asking
+        taiwa.setProcessEnvironment(env);
+        taiwa.start(TAIWA_BINARY, {job});
+        QVERIFY(taiwa.waitForStarted());
+        // The process restored the recovery file and rewrites it within an
+        // autosave interval: its time moves past the start.
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(recovery).lastModified() >= before, 3 * Autosaver::kIntervalMs);
+        QCOMPARE(taiwa.state(), QProcess::Running);
+        taiwa.kill();  // SIGKILL
+        QVERIFY(taiwa.waitForFinished());
+        QCOMPARE(taiwa.exitStatus(), QProcess::CrashExit);
+
+        QCOMPARE(test::readFile(job), savedText);  // the job file was never touched
+        const JobReadResult r = readJobFile(recovery.toStdString());
+        QVERIFY(r.job);
+        QCOMPARE(*r.job, edited);
+        StationWindow w(job);
+        QCOMPARE(w.document()->job(), edited);
+        QVERIFY(w.document()->isModified());
     }
 };
 

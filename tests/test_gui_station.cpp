@@ -11,6 +11,9 @@
 #include "ui/station_window.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
+#include "ui/technology_dialog.h"
+#include "ui/tool_library_dialog.h"
+#include "tools/tool_library.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -21,6 +24,7 @@
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBlock>
 #include <QUndoStack>
@@ -208,6 +212,54 @@ private slots:
         QVERIFY(isRed(r1));
         QVERIFY2(label(w, "m4.r1")->text().contains("half"), qPrintable(label(w, "m4.r1")->text()));
         QCOMPARE(w.stepTable()->rowCount(), 0);
+    }
+
+    void inchSwitchConvertsEveryLength()
+    {
+        StationWindow w;
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        const Job mm = w.document()->job();
+        auto* units = w.findChild<QComboBox*>("job.unit");
+        QVERIFY(units);
+        units->setFocus();
+        QTest::keyClick(units, Qt::Key_Down);  // mm -> inch
+        const Job& in = w.document()->job();
+        QCOMPARE(in.lengthUnit, LengthUnit::Inch);
+        QCOMPARE(std::get<M4Pocket>(in.units[0].module).corners[1].x, 2.362205);  // 60 mm
+        QCOMPARE(in.stock.width, std::round(mm.stock.width / 25.4 * 1e6) / 1e6);
+        QCOMPARE(edit(w, "m4.depth")->text(), QString("0.393701"));
+        QTest::keyClick(units, Qt::Key_Up);  // back to mm: the values typed come back
+        QCOMPARE(w.document()->job(), mm);
+        w.document()->undoStack()->undo();
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->job(), mm);
+    }
+
+    void technologyOverrides()
+    {
+        Job j;
+        TechnologyDialog d(j);
+        auto* alpha2 = d.findChild<QLineEdit*>("technology.alpha2");
+        QVERIFY(alpha2);
+        QTest::keyClicks(alpha2, "0.5");
+        QVERIFY(d.overrides());
+        QCOMPARE(d.overrides()->alpha2, std::optional<double>(0.5));
+        QVERIFY(!d.overrides()->alpha1);
+        QTest::keyClicks(alpha2, "x");
+        QVERIFY(!d.overrides());  // "0.5x": the dialog refuses to apply it
+    }
+
+    void toolLibraryTable()
+    {
+        ToolLibraryDialog d;
+        std::string err;
+        auto lib = ToolLibrary::open(defaultToolLibraryPath(), err);
+        QVERIFY2(lib, err.c_str());
+        const auto tools = lib->tools(err);
+        QVERIFY(tools && !tools->empty());
+        QCOMPARE(d.table()->rowCount(), static_cast<int>(tools->size()));
+        QCOMPARE(d.table()->item(0, 0)->text(), QString::number(tools->front().id));
+        QCOMPARE(d.table()->item(0, 1)->text(), QString::fromStdString(tools->front().name));
     }
 
     void addM2DAndMoveUnits()

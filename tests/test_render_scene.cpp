@@ -4,12 +4,18 @@
 // world positions show the path, rapid, tool and stock colours, pixels off
 // the stock the background; views and step selection change the image;
 // picking finds the move under a pixel; the widget rotates on a drag and
-// reports a click on a path. Needs an X display (xvfb-run -a).
+// reports a click on a path. The sample job m4-standard.taiwa, planned with
+// the default tool library, at 400 x 300: path, pocket outline and
+// background where the camera puts them. Needs an X display (xvfb-run -a).
+#include "io/job_io.h"
+#include "support/support.h"
+#include "tools/tool_library.h"
 #include "ui/preview_widget.h"
 #include "viz/palette.h"
 #include "viz/render.h"
 #include "viz/scene.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -102,6 +108,30 @@ std::array<double, 2> pixelOf(const Plan& plan, ViewPreset view, Point3 p)
     s.setPlan(std::make_shared<const Plan>(plan));
     s.setView(view, static_cast<double>(kW) / kH);
     return s.toPixel(p, kW, kH);
+}
+
+Plan samplePlan(const char* name)
+{
+    const auto read = readJobFile(test::sourcePath(QString("resources/samples/") + name).toStdString());
+    return read.job ? planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary()) : Plan{};
+}
+
+// The midpoint of a straight feed at the step's cut depth, at least 5 mm
+// long and a tool diameter away from the path start (where the tool stands).
+std::optional<Point3> feedPointOf(const Plan& plan, const Step& step)
+{
+    const Tool* tool = plan.tool(step.tool->toolId);
+    Point3 from = step.path->start;
+    for (const Move& m : step.path->moves) {
+        const Point3 to = m.end;
+        const Point3 mid{(from.x + to.x) / 2, (from.y + to.y) / 2, to.z};
+        if (m.kind == MoveKind::Feed && std::abs(from.z - to.z) < 1e-6 && std::abs(to.z + step.cutDepth) < 1e-6 &&
+            std::hypot(to.x - from.x, to.y - from.y) > 5 &&
+            std::hypot(mid.x - step.path->start.x, mid.y - step.path->start.y) > tool->diameter)
+            return mid;
+        from = to;
+    }
+    return std::nullopt;
 }
 
 int differingPixels(const QImage& a, const QImage& b)
@@ -214,7 +244,7 @@ private slots:
         const auto err = renderToPng(plan_, {}, dir_.filePath("none.png").toStdString());
         qputenv("DISPLAY", display);
         QVERIFY(err);
-        QVERIFY(err->find("xvfb-run") != std::string::npos);
+        QCOMPARE(QString::fromStdString(*err), QString("rendering needs an X display (run under xvfb-run)"));
         QVERIFY(!QFile::exists(dir_.filePath("none.png")));
     }
 
@@ -250,6 +280,80 @@ private slots:
         const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
         const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
         QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
+    }
+
+    void samplePlanTopView()
+    {
+        const Plan plan = samplePlan("m4-standard.taiwa");
+        QVERIFY(plan.ok() && plan.steps.size() >= 3);
+        constexpr int w = 400, h = 300;
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        o.width = w;
+        o.height = h;
+        const auto png = [&](const RenderOptions& opt, const char* name) {
+            const QString path = dir_.filePath(name);
+            const auto err = renderToPng(plan, opt, path.toStdString());
+            if (err) qWarning("%s", err->c_str());
+            return err ? QImage() : QImage(path).convertToFormat(QImage::Format_RGB32);
+        };
+        const QImage top = png(o, "m4-top.png");
+        QCOMPARE(top.size(), QSize(w, h));
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan));
+        s.setView(ViewPreset::Top, static_cast<double>(w) / h);
+        const Stock& st = plan.mmJob.stock;
+        // Top view fitted to the stock: its centre is the image centre.
+        const auto centre = s.toPixel({st.x + st.width / 2, st.y + st.length / 2, 0}, w, h);
+        QVERIFY(std::abs(centre[0] - w / 2.0) < 2 && std::abs(centre[1] - h / 2.0) < 2);
+        // Off the stock (left of its left edge): the background.
+        const auto off = s.toPixel({st.x - 0.03 * st.width, st.y + st.length / 2, 0}, w, h);
+        QVERIFY(off[0] > 0);
+        QVERIFY(near(top.pixel(int(off[0]), int(off[1])), palette::kBackground, 0));
+        // The roughing path of the pocket: the feed colour; the pocket centre is drawn on.
+        const auto rough = std::find_if(plan.steps.begin(), plan.steps.end(), [](const Step& st2) { return st2.kind == StepKind::Roughing && st2.path; });
+        QVERIFY(rough != plan.steps.end());
+        const auto feed = feedPointOf(plan, *rough);
+        QVERIFY(feed);
+        QVERIFY(colourNear(top, s.toPixel(*feed, w, h), palette::kFeed));
+        const auto pc = s.toPixel({rough->position.x, rough->position.y, 0}, w, h);
+        QVERIFY(!near(top.pixel(int(pc[0]), int(pc[1])), palette::kBackground, 8));
+        // The finished pocket's outline (middle of its first side): the outline colour.
+        const auto& q = rough->outline->corners;
+        QVERIFY(colourNear(top, s.toPixel({(q[0].x + q[1].x) / 2, (q[0].y + q[1].y) / 2, 0}, w, h), palette::kPartEdges));
+
+        o.view = ViewPreset::Iso;
+        QVERIFY(differingPixels(top, png(o, "m4-iso.png")) > w * h / 20);
+        o.view = ViewPreset::Top;
+        o.step = 1;  // step 2 only
+        QVERIFY(differingPixels(top, png(o, "m4-step2.png")) > 200);
+
+        // Figure, not asserted: plate.taiwa (29 steps) at 800 x 600.
+        const Plan plate = samplePlan("plate.taiwa");
+        QElapsedTimer t;
+        t.start();
+        const auto err = renderToPng(plate, {}, dir_.filePath("plate.png").toStdString());
+        qDebug("plate.taiwa iso 800x600: renderToPng %lld ms (%s)", static_cast<long long>(t.elapsed()), err ? err->c_str() : "ok");
+    }
+
+    void widgetShowsTheSamplePlan()
+    {
+        PreviewWidget w;
+        w.resize(400, 300);
+        w.setPlan(std::make_shared<const Plan>(samplePlan("m4-standard.taiwa")));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(img.size(), QSize(400, 300));
+        int background = 0, blue = 0;
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x) {
+                const QRgb c = img.pixel(x, y);
+                background += near(c, palette::kBackground, 0) ? 1 : 0;
+                blue += qBlue(c) > 180 && qBlue(c) > qRed(c) + 100 ? 1 : 0;
+            }
+        QVERIFY2(background > 400 * 300 / 10, qPrintable(QString::number(background)));
+        QVERIFY2(blue > 300, qPrintable(QString::number(blue)));
     }
 
     void widgetClickPicksAndDragRotates()

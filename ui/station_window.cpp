@@ -23,10 +23,12 @@
 #include <QCloseEvent>
 #include <QFileInfo>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QOpenGLContext>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -72,7 +74,18 @@ QWidget* StationWindow::buildLeft()
     auto* unitsGroup = new QGroupBox(tr("Machining units, in order"));
     (new QVBoxLayout(unitsGroup))->addWidget(units_);
     auto* jobGroup = new QGroupBox(tr("Job"));
-    (new QVBoxLayout(jobGroup))->addWidget(jobProps_);
+    auto* jobBox = new QVBoxLayout(jobGroup);
+    jobBox->addWidget(jobProps_);
+    auto* dialogs = new QHBoxLayout;
+    auto* technology = new QPushButton(tr("Technology data…"));
+    technology->setObjectName("job.technology");
+    auto* tools = new QPushButton(tr("Tool library…"));
+    tools->setObjectName("job.tools");
+    dialogs->addWidget(technology);
+    dialogs->addWidget(tools);
+    jobBox->addLayout(dialogs);
+    connect(technology, &QPushButton::clicked, this, &StationWindow::editTechnology);
+    connect(tools, &QPushButton::clicked, this, &StationWindow::showToolLibrary);
     box->addWidget(paletteGroup);
     box->addWidget(unitsGroup, 1);
     box->addWidget(jobGroup);

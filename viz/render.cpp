@@ -1,7 +1,9 @@
 // Offscreen rendering of the preview scene to a PNG: a vtkRenderWindow in
 // offscreen mode, read back with vtkWindowToImageFilter, written by
-// vtkPNGWriter. The X display is checked first so that a missing display is
-// an error message, not an abort inside VTK.
+// vtkPNGWriter. The X display is opened here first, so that a missing or
+// unreachable display is an error message, not an abort inside VTK, and the
+// window is given that connection (SetDisplayId): VTK opens none of its own,
+// so a display that goes away between the check and the render cannot abort.
 #include "viz/render.h"
 
 #include "viz/scene.h"
@@ -17,13 +19,38 @@
 
 namespace taiwa::viz {
 
+namespace {
+
+constexpr const char* kNeedsDisplay = "rendering needs an X display (run under xvfb-run)";
+
+// An open connection to $DISPLAY, closed when it goes out of scope.
+struct XConnection {
+    Display* display = nullptr;
+    std::string problem;  // why there is none
+    XConnection()
+    {
+        const char* name = std::getenv("DISPLAY");
+        if (!name || !*name) {
+            problem = kNeedsDisplay;
+            return;
+        }
+        display = XOpenDisplay(nullptr);
+        if (!display) problem = std::string(kNeedsDisplay) + ": cannot open X display '" + name + "'";
+    }
+    ~XConnection()
+    {
+        if (display) XCloseDisplay(display);
+    }
+    XConnection(const XConnection&) = delete;
+    XConnection& operator=(const XConnection&) = delete;
+};
+
+}  // namespace
+
 std::optional<std::string> displayProblem()
 {
-    const char* name = std::getenv("DISPLAY");
-    if (!name || !*name) return "no X display (DISPLAY is not set): run under `xvfb-run -a`";
-    Display* d = XOpenDisplay(nullptr);
-    if (!d) return std::string("cannot open X display '") + name + "': run under `xvfb-run -a`";
-    XCloseDisplay(d);
+    const XConnection x;
+    if (!x.display) return x.problem;
     return std::nullopt;
 }
 
@@ -33,7 +60,8 @@ std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& o,
         return "image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + " is outside 16..8192 pixels";
     if (o.step < -1 || o.step >= static_cast<int>(plan.steps.size()))
         return "step " + std::to_string(o.step + 1) + " is out of range: the plan has " + std::to_string(plan.steps.size()) + " steps";
-    if (auto problem = displayProblem()) return problem;
+    const XConnection x;  // declared before the window: closed after it
+    if (!x.display) return x.problem;
 
     Scene scene;
     scene.setPlan(std::make_shared<const Plan>(plan));
@@ -42,6 +70,7 @@ std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& o,
     scene.setView(o.view, static_cast<double>(o.width) / o.height);
 
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetDisplayId(x.display);
     window->SetOffScreenRendering(1);
     window->SetSize(o.width, o.height);
     window->AddRenderer(scene.renderer());

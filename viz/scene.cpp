@@ -10,6 +10,7 @@
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
+#include <vtkCoordinate.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOutlineSource.h>
 #include <vtkPolyDataMapper.h>
@@ -89,7 +90,7 @@ void Scene::clear()
     renderer_->RemoveAllViewProps();
     steps_.clear();
     simulation_.reset();
-    stock_ = stockEdges_ = tool_ = highlight_ = nullptr;
+    stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = nullptr;
     axes_ = nullptr;
     scaleNote_ = nullptr;
 }
@@ -109,6 +110,8 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan)
     outline->Update();
     stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
     renderer_->AddActor(stockEdges_);
+    partEdges_ = lineActor(pocketOutlines(plan_->steps), palette::kPartEdges, 1.5);
+    renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
     for (int k = 0; k < n; ++k) {
@@ -136,7 +139,9 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan)
     scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
     scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
-    scaleNote_->SetDisplayPosition(8, 8);
+    scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
+    scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    scaleNote_->SetPosition(0.99, 0.015);
     renderer_->AddActor2D(scaleNote_);
 
     updateStock();

@@ -1,7 +1,8 @@
 // The 3-D preview scene of a plan, as a vtkRenderer: the stock (a
 // translucent block, or the simulated stock after the selected step), the
-// tool paths of every step (feeds and rapids in their colours, the selected
-// step emphasised, the others dimmed), the tool at the selected path's
+// finished pockets' outlines at the top face and the floor, the tool paths
+// of every step (feeds and rapids in their colours, the selected step
+// emphasised, the others dimmed), the tool at the selected path's
 // start, one highlighted move, axes with a scale note, camera presets. The
 // offscreen renderer and the preview widget both show this scene; it is the
 // one door between the core's types and VTK.
@@ -87,7 +88,7 @@ private:
     std::shared_ptr<const Plan> plan_;
     std::unique_ptr<sim::StockSimulation> simulation_;
     std::vector<StepActors> steps_;
-    vtkSmartPointer<vtkActor> stock_, stockEdges_, tool_, highlight_;
+    vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_;
     vtkSmartPointer<vtkAxesActor> axes_;
     vtkSmartPointer<vtkTextActor> scaleNote_;
     int selected_ = -1;

@@ -1,4 +1,5 @@
-// The stock surface from the height field, the stock block, the tool solid.
+// The stock surface from the height field, the stock block, the tool solid,
+// the pocket outlines.
 #include "viz/solids.h"
 
 #include "sim/cutter_profile.h"
@@ -11,7 +12,9 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <vector>
 
@@ -126,6 +129,60 @@ vtkSmartPointer<vtkPolyData> toolSolid(const Tool& tool)
     pd->SetPoints(points);
     pd->SetPolys(polys);
     return withNormals(pd, 40.0);
+}
+
+namespace {
+
+// The rounded quad as a closed polyline at height z: each corner's arc
+// around the corner moved inward by the radius, from the outward normal of
+// the side before it to that of the side after it (counter-clockwise).
+void addRoundedQuad(vtkPoints* points, vtkCellArray* lines, const Quad& q, double z)
+{
+    const double r = std::max(q.cornerRadius, 0.0);
+    const auto sharp = counterClockwise(q.corners);
+    const auto centres = r > 0 ? offsetInward(Quad{sharp, q.cornerRadius}, r).corners : sharp;
+    std::vector<vtkIdType> ids;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 in = sharp[i] - sharp[(i + 3) % 4], out = sharp[(i + 1) % 4] - sharp[i];
+        const double a0 = std::atan2(-in.x, in.y), a1raw = std::atan2(-out.x, out.y);  // outward normals
+        double sweep = a1raw - a0;
+        while (sweep < 0) sweep += 2 * std::numbers::pi;
+        const int n = r > 0 ? std::max(1, static_cast<int>(std::ceil(sweep / (5.0 * std::numbers::pi / 180.0)))) : 0;
+        for (int k = 0; k <= n; ++k) {
+            const double a = a0 + sweep * k / std::max(n, 1);
+            ids.push_back(points->InsertNextPoint(centres[i].x + r * std::cos(a), centres[i].y + r * std::sin(a), z));
+        }
+    }
+    ids.push_back(ids.front());
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps)
+{
+    std::map<int, const Step*> last;  // unit -> its last wall step
+    for (const Step& s : steps) {
+        if (!s.outline || s.kind == StepKind::PilotHole || s.kind == StepKind::InclinedFaceFinishing) continue;
+        const Step*& best = last[s.unit];
+        if (!best || s.wallAllowance < best->wallAllowance - 1e-9 ||
+            (s.wallAllowance <= best->wallAllowance + 1e-9 && s.cutDepth > best->cutDepth))
+            best = &s;
+    }
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto lines = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& [unit, s] : last) {
+        (void)unit;
+        const Quad& top = *s->outline;
+        addRoundedQuad(points, lines, top, 0.0);
+        const double inset = s->wallTaper > 0 ? s->cutDepth * tanDeg(s->wallTaper) : 0.0;
+        const Quad floor = inset > 0 ? offsetInward(top, inset) : top;
+        addRoundedQuad(points, lines, floor, -s->cutDepth);
+    }
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(points);
+    pd->SetLines(lines);
+    return pd;
 }
 
 }  // namespace taiwa::viz

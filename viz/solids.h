@@ -1,14 +1,17 @@
 // Solid geometry of the preview: the stock as a block or as the simulated
-// height-field surface, and the tool as a solid of revolution of its
-// cutting profile.
+// height-field surface, the tool as a solid of revolution of its cutting
+// profile, and the finished pockets' outlines as lines.
 #pragma once
 
 #include "model/job.h"
+#include "model/step.h"
 #include "model/tool.h"
 #include "sim/height_field.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+
+#include <vector>
 
 namespace taiwa::viz {
 
@@ -24,5 +27,12 @@ vtkSmartPointer<vtkPolyData> stockBlock(const Stock& stock);
 // The tool with its tip at the origin and its axis along +Z, up to its
 // cutting length, with normals.
 vtkSmartPointer<vtkPolyData> toolSolid(const Tool& tool);
+
+// The finished pockets as closed lines: for each unit, the outline of its
+// last wall step (the one leaving the least wall allowance, then the
+// deepest) with its rounded corners sampled every 5 degrees, once at the
+// top face (Z 0) and once at the floor (Z -cutDepth; for a tapered wall the
+// outline moved inward by cutDepth x tan(taper)).
+vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps);
 
 }  // namespace taiwa::viz

@@ -15,44 +15,47 @@ const char* moduleName(const ModuleInput& m)
 }
 
 namespace {
-struct ToMm {
-    LengthUnit u;
-    double operator()(double v) const { return toMm(v, u); }
-    Point2 operator()(Point2 p) const { return {toMm(p.x, u), toMm(p.y, u)}; }
+// Applies one length conversion to every length of a module.
+struct ConvertLengths {
+    const std::function<double(double)>& f;
+    Point2 operator()(Point2 p) const { return {f(p.x), f(p.y)}; }
     ModuleInput operator()(M4Pocket m) const
     {
         for (auto& c : m.corners) c = (*this)(c);
-        m.cornerRadius = (*this)(m.cornerRadius);
-        m.depth = (*this)(m.depth);
+        m.cornerRadius = f(m.cornerRadius);
+        m.depth = f(m.depth);
         return m;
     }
     ModuleInput operator()(M2DPocket m) const
     {
         m.corner = (*this)(m.corner);
-        m.lengthX = (*this)(m.lengthX);
-        m.lengthY = (*this)(m.lengthY);
-        m.depth = (*this)(m.depth);
-        m.cornerRadius = (*this)(m.cornerRadius);
-        m.scallop = (*this)(m.scallop);
+        m.lengthX = f(m.lengthX);
+        m.lengthY = f(m.lengthY);
+        m.depth = f(m.depth);
+        m.cornerRadius = f(m.cornerRadius);
+        m.scallop = f(m.scallop);
         return m;
     }
 };
 }  // namespace
 
+Job withLengths(const Job& job, LengthUnit unit, const std::function<double(double)>& f)
+{
+    Job out = job;
+    out.lengthUnit = unit;
+    out.stock = {f(job.stock.x), f(job.stock.y), f(job.stock.width), f(job.stock.length), f(job.stock.height)};
+    for (auto* v : {&out.technology.alpha1, &out.technology.alpha2, &out.technology.alpha3, &out.technology.beta2})
+        if (*v) *v = f(**v);
+    const ConvertLengths convert{f};
+    for (auto& u : out.units) u.module = std::visit(convert, u.module);
+    return out;
+}
+
 Job toMillimetres(const Job& job)
 {
     if (job.lengthUnit == LengthUnit::Millimetre) return job;
-    const ToMm mm{job.lengthUnit};
-    Job out = job;
-    out.lengthUnit = LengthUnit::Millimetre;
-    out.stock = {mm(job.stock.x), mm(job.stock.y), mm(job.stock.width), mm(job.stock.length), mm(job.stock.height)};
-    auto conv = [&](std::optional<double>& v) { if (v) v = mm(*v); };
-    conv(out.technology.alpha1);
-    conv(out.technology.alpha2);
-    conv(out.technology.alpha3);
-    conv(out.technology.beta2);
-    for (auto& unit : out.units) unit.module = std::visit(mm, unit.module);
-    return out;
+    const LengthUnit from = job.lengthUnit;
+    return withLengths(job, LengthUnit::Millimetre, [from](double v) { return toMm(v, from); });
 }
 
 }  // namespace taiwa

@@ -6,6 +6,7 @@
 #include "model/geometry.h"
 #include "model/technology.h"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -88,6 +89,11 @@ struct Job {
     std::vector<MachiningUnit> units;
     friend bool operator==(const Job&, const Job&) = default;
 };
+
+// The same job with every length (stock, technology overrides, module
+// inputs) passed through `convert` and marked as being in `unit`; angles,
+// codes and gamma unchanged.
+Job withLengths(const Job& job, LengthUnit unit, const std::function<double(double)>& convert);
 
 // The same job with every length in mm (lengthUnit = Millimetre); angles,
 // codes and gamma unchanged. The pipeline works on this copy only.

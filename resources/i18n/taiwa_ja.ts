@@ -232,6 +232,14 @@
 <context>
     <name>taiwa::ui::StationWindow</name>
     <message>
+        <source>Technology data…</source>
+        <translation>加工技術データ…</translation>
+    </message>
+    <message>
+        <source>Tool library…</source>
+        <translation>工具ライブラリ…</translation>
+    </message>
+    <message>
         <location filename="../../ui/station_window.cpp" line="59"/>
         <source>Tool library: %1 (using the built-in library)</source>
         <translation>工具ライブラリ: %1(内蔵ライブラリを使用)</translation>
