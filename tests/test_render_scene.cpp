@@ -14,10 +14,12 @@
 #include "viz/palette.h"
 #include "viz/render.h"
 #include "viz/scene.h"
+#include "viz/solids.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QVBoxLayout>
 #include <QtTest>
 
 #include <vtkCamera.h>
@@ -225,6 +227,53 @@ private slots:
         QVERIFY(near(before.pixel(int(floor[0]), int(floor[1])), palette::kStock, 20));
     }
 
+    // The simulated stock's surface is closed (its vector area sums to
+    // zero), its upward faces cover the stock exactly once, and flat regions
+    // are merged: far fewer quads than cells.
+    void stockSurfaceIsClosedAndMerged()
+    {
+        const Stock stock{0, 0, 200, 150, 30};
+        sim::HeightField field(stock, 0.25);
+        const auto measure = [](vtkPolyData* pd) {
+            std::array<double, 3> total{0, 0, 0};
+            double up = 0;
+            vtkIdType n = 0;
+            const vtkIdType* ids = nullptr;
+            auto polys = pd->GetPolys();
+            polys->InitTraversal();
+            while (polys->GetNextCell(n, ids)) {
+                std::array<double, 3> area{0, 0, 0};  // Newell's vector area
+                for (vtkIdType k = 0; k < n; ++k) {
+                    double a[3], b[3];
+                    pd->GetPoint(ids[k], a);
+                    pd->GetPoint(ids[(k + 1) % n], b);
+                    area[0] += 0.5 * (a[1] * b[2] - a[2] * b[1]);
+                    area[1] += 0.5 * (a[2] * b[0] - a[0] * b[2]);
+                    area[2] += 0.5 * (a[0] * b[1] - a[1] * b[0]);
+                }
+                for (int i = 0; i < 3; ++i) total[i] += area[i];
+                if (area[2] > 0) up += area[2];
+            }
+            return std::tuple{total, up, pd->GetNumberOfPolys()};
+        };
+        const auto [fresh, freshUp, freshCount] = measure(heightFieldSurface(field));
+        QVERIFY(std::abs(fresh[0]) + std::abs(fresh[1]) + std::abs(fresh[2]) < 1e-6);
+        QVERIFY(std::abs(freshUp - 200.0 * 150.0) < 1e-6);
+        const long cells = static_cast<long>(field.columns()) * field.rows();
+        QVERIFY2(freshCount < 2 * (field.columns() + field.rows()) + 20, qPrintable(QString::number(freshCount)));
+
+        // A pocket 5 mm deep with a sloped wall along one side.
+        for (int j = 0; j < field.rows(); ++j)
+            for (int i = 0; i < field.columns(); ++i) {
+                const Point2 c = field.centre(i, j);
+                if (c.x > 40 && c.x < 120 && c.y > 30 && c.y < 90) field.lower(i, j, c.x < 50 ? -(c.x - 40) / 2 : -5);
+            }
+        const auto [cut, cutUp, cutCount] = measure(heightFieldSurface(field));
+        QVERIFY(std::abs(cut[0]) + std::abs(cut[1]) + std::abs(cut[2]) < 1e-6);
+        QVERIFY(std::abs(cutUp - 200.0 * 150.0) < 1e-6);
+        QVERIFY2(cutCount < cells / 20, qPrintable(QString("%1 quads for %2 cells").arg(cutCount).arg(cells)));
+    }
+
     void pickingAndHighlight()
     {
         Scene s;
@@ -280,6 +329,25 @@ private slots:
         const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
         const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
         QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
+    }
+
+    // Grabbed as part of a window (how the station's screenshots are taken)
+    // the frame is opaque: no alpha is left for the grab to darken the
+    // background and the translucent stock into near-black.
+    void grabbedInAWindowIsOpaque()
+    {
+        QWidget host;
+        auto* w = new PreviewWidget(&host);
+        (new QVBoxLayout(&host))->addWidget(w);
+        host.resize(kW, kH);
+        w->setPlan(std::make_shared<const Plan>(plan_));
+        w->setShowStock(true);
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        QTest::qWait(100);
+        const QImage img = host.grab().toImage().convertToFormat(QImage::Format_RGB32);
+        const QPoint corner = w->geometry().topLeft() + QPoint(3, 3);
+        QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));
     }
 
     void samplePlanTopView()

@@ -89,12 +89,16 @@ void NcView::showStep(int step)
     }
 }
 
+BlockSource NcView::currentSource() const
+{
+    const int line = text_->textCursor().blockNumber();
+    return line >= 0 && line < static_cast<int>(lines_.size()) ? lines_[static_cast<std::size_t>(line)] : BlockSource{};
+}
+
 void NcView::onCursorMoved()
 {
     if (selecting_) return;
-    const int line = text_->textCursor().blockNumber();
-    if (line < 0 || line >= static_cast<int>(lines_.size())) return;
-    const BlockSource& s = lines_[static_cast<std::size_t>(line)];
+    const BlockSource s = currentSource();
     if (s.step >= 0) emit moveSelected(s.step, s.move);
 }
 

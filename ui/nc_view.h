@@ -32,6 +32,9 @@ public:
     // emitting moveSelected; -1 does nothing.
     void showStep(int step);
     QPlainTextEdit* text() const { return text_; }
+    // The (step, move) the line under the text cursor was posted from;
+    // step -1 for lines that belong to no move (header, comments).
+    BlockSource currentSource() const;
 
 signals:
     void dialectChanged(const QString& dialect);

@@ -102,6 +102,13 @@ void PreviewWidget::paintGL()
     state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
     state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
     window_->BlitDisplayFramebuffer();
+    // VTK leaves alpha below 1 where the background and the translucent
+    // stock are; an opaque window ignores it, but grabFramebuffer() (and so
+    // QWidget::grab) would premultiply it into near-black. Make it opaque.
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    state->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     state->PopDrawFramebufferBinding();
     state->Pop();
 }
@@ -122,6 +129,12 @@ void PreviewWidget::setSelectedStep(int index)
 void PreviewWidget::setShowStock(bool show)
 {
     scene_.setShowStock(show);
+    update();
+}
+
+void PreviewWidget::setStockBefore(bool before)
+{
+    scene_.setStockBefore(before);
     update();
 }
 

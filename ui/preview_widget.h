@@ -31,6 +31,8 @@ public:
     void setPlan(std::shared_ptr<const Plan> plan);
     void setSelectedStep(int index /* -1 all */);
     void setShowStock(bool show);
+    // The stock before the selected step rather than after it.
+    void setStockBefore(bool before);
     // Camera preset, fitted to the stock and the paths.
     void setView(viz::ViewPreset view);
     void highlightMove(int step, int move);

@@ -213,7 +213,10 @@ void StationWindow::wire()
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     if (!preview_) return;
     connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);
+    preview_->setShowStock(steps_->stockShown());
+    preview_->setStockBefore(steps_->stockBefore());
     connect(steps_, &StepPanel::showStockToggled, preview_, &PreviewWidget::setShowStock);
+    connect(steps_, &StepPanel::stockBeforeToggled, preview_, &PreviewWidget::setStockBefore);
     connect(steps_, &StepPanel::viewRequested, preview_, [this](ViewButton v) {
         preview_->setView(v == ViewButton::Top     ? viz::ViewPreset::Top
                           : v == ViewButton::Front ? viz::ViewPreset::Front
@@ -221,6 +224,7 @@ void StationWindow::wire()
     });
     connect(nc_, &NcView::moveSelected, preview_, &PreviewWidget::highlightMove);
     connect(preview_, &PreviewWidget::moveClicked, nc_, &NcView::selectMove);
+    connect(preview_, &PreviewWidget::moveClicked, preview_, &PreviewWidget::highlightMove);
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }

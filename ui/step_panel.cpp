@@ -7,7 +7,7 @@
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPushButton>
+#include <QToolButton>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -24,8 +24,9 @@ QString length(double mm, LengthUnit u)
 }  // namespace
 
 StepPanel::StepPanel(QWidget* parent)
-    : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QPushButton(this)),
-      stock_(new QCheckBox(tr("&Stock"), this)), timer_(new QTimer(this))
+    : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QToolButton(this)),
+      stock_(new QCheckBox(tr("&Stock"), this)), before_(new QCheckBox(tr("&Before step"), this)),
+      timer_(new QTimer(this))
 {
     details_->setObjectName("step.details");
     details_->setWordWrap(true);
@@ -37,10 +38,16 @@ StepPanel::StepPanel(QWidget* parent)
     play_->setText(tr("▶ Pla&y"));
     stock_->setObjectName("view.stock");
     stock_->setChecked(true);
+    stock_->setToolTip(tr("The stock as the simulation cuts it, instead of a glass block"));
+    before_->setObjectName("view.before");
+    before_->setToolTip(tr("The stock as it is before the selected step, instead of after it"));
     timer_->setInterval(1200);
 
     auto* buttons = new QHBoxLayout;
-    auto* all = new QPushButton(tr("&All steps"), this);
+    // Tool buttons (as wide as their text) so that the row fits beside the
+    // unit form at the window's smallest useful width.
+    auto* all = new QToolButton(this);
+    all->setText(tr("&All steps"));
     all->setObjectName("step.all");
     buttons->addWidget(all);
     buttons->addWidget(play_);
@@ -48,12 +55,14 @@ StepPanel::StepPanel(QWidget* parent)
     const std::pair<const char*, QString> views[] = {
         {"view.iso", tr("&Iso")}, {"view.top", tr("&Top")}, {"view.front", tr("F&ront")}};
     for (int i = 0; i < 3; ++i) {
-        auto* b = new QPushButton(views[i].second, this);
+        auto* b = new QToolButton(this);
+        b->setText(views[i].second);
         b->setObjectName(views[i].first);
-        connect(b, &QPushButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
+        connect(b, &QToolButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
         buttons->addWidget(b);
     }
     buttons->addWidget(stock_);
+    buttons->addWidget(before_);
 
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
@@ -62,10 +71,12 @@ StepPanel::StepPanel(QWidget* parent)
     box->addLayout(buttons);
 
     connect(table_, &QTableWidget::itemSelectionChanged, this, &StepPanel::onSelectionChanged);
-    connect(all, &QPushButton::clicked, this, [this] { selectStep(-1); });
-    connect(play_, &QPushButton::toggled, this, &StepPanel::setPlaying);
+    connect(all, &QToolButton::clicked, this, [this] { selectStep(-1); });
+    connect(play_, &QToolButton::toggled, this, &StepPanel::setPlaying);
     connect(timer_, &QTimer::timeout, this, &StepPanel::advance);
     connect(stock_, &QCheckBox::toggled, this, &StepPanel::showStockToggled);
+    connect(stock_, &QCheckBox::toggled, before_, &QWidget::setEnabled);
+    connect(before_, &QCheckBox::toggled, this, &StepPanel::stockBeforeToggled);
 }
 
 void StepPanel::setPlan(const std::shared_ptr<const Plan>& plan)
@@ -94,6 +105,10 @@ void StepPanel::selectStep(int index)
     else table_->selectRow(index);
     onSelectionChanged();
 }
+
+bool StepPanel::stockShown() const { return stock_->isChecked(); }
+
+bool StepPanel::stockBefore() const { return before_->isChecked(); }
 
 bool StepPanel::isPlaying() const { return timer_->isActive(); }
 

@@ -1,6 +1,7 @@
 // The step list with what goes with it: the numbers of the selected step, a
 // play button that walks through the steps on a timer, the iso/top/front
-// view buttons and the stock switch. It only emits what the operator asked
+// view buttons and the stock switches (simulated stock; before or after
+// the step). It only emits what the operator asked
 // for; the window passes that on to the 3-D preview.
 #pragma once
 
@@ -12,7 +13,7 @@
 
 class QCheckBox;
 class QLabel;
-class QPushButton;
+class QToolButton;
 class QTimer;
 
 namespace taiwa::ui {
@@ -33,6 +34,9 @@ public:
     // -1 = all steps.
     int selectedStep() const;
     void selectStep(int index);
+    // The switches' states (the preview starts from them).
+    bool stockShown() const;
+    bool stockBefore() const;
     bool isPlaying() const;
     void setPlaying(bool on);
     // Milliseconds per step while playing.
@@ -42,6 +46,7 @@ signals:
     void stepSelected(int index);  // -1 = all
     void viewRequested(taiwa::ui::ViewButton view);
     void showStockToggled(bool on);
+    void stockBeforeToggled(bool before);
 
 private:
     void onSelectionChanged();
@@ -50,8 +55,9 @@ private:
 
     StepTable* table_;
     QLabel* details_;
-    QPushButton* play_;
+    QToolButton* play_;
     QCheckBox* stock_;
+    QCheckBox* before_;
     QTimer* timer_;
     std::shared_ptr<const Plan> plan_;
     int lastEmitted_ = -2;

@@ -11,6 +11,7 @@
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCoordinate.h>
+#include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOutlineSource.h>
 #include <vtkPolyDataMapper.h>
@@ -81,6 +82,22 @@ double segmentDistance(double px, double py, const double a[2], const double b[2
 Scene::Scene() : renderer_(vtkSmartPointer<vtkRenderer>::New())
 {
     renderer_->SetBackground(palette::kBackground.red(), palette::kBackground.green(), palette::kBackground.blue());
+    // A headlight alone lights the three faces of a block in iso view
+    // alike (each at the same angle to the view): one flat grey. A key
+    // light from above and to the left of the viewer, with a weaker
+    // headlight, shades top, left and right faces apart in every view and
+    // still lights a face seen head-on at full strength.
+    renderer_->AutomaticLightCreationOff();
+    auto head = vtkSmartPointer<vtkLight>::New();
+    head->SetLightTypeToHeadlight();
+    head->SetIntensity(0.45);
+    auto key = vtkSmartPointer<vtkLight>::New();
+    key->SetLightTypeToCameraLight();  // camera at (0, 0, 1) looking at the origin, Y up
+    key->SetPosition(-0.5, 0.8, 1.0);
+    key->SetFocalPoint(0.0, 0.0, 0.0);
+    key->SetIntensity(0.6);
+    renderer_->AddLight(head);
+    renderer_->AddLight(key);
 }
 
 Scene::~Scene() = default;
@@ -164,6 +181,12 @@ void Scene::setShowStock(bool show)
     updateStock();
 }
 
+void Scene::setStockBefore(bool before)
+{
+    stockBefore_ = before;
+    updateStock();
+}
+
 void Scene::highlightMove(int step, int move)
 {
     highlighted_ = {step, move};
@@ -188,7 +211,9 @@ void Scene::updateStock()
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
         if (!simulation_) simulation_ = std::make_unique<sim::StockSimulation>(*plan_);
-        const sim::HeightField& field = selected_ < 0 ? simulation_->finished() : simulation_->after(selected_);
+        const sim::HeightField& field = selected_ < 0 ? (stockBefore_ ? simulation_->initial() : simulation_->finished())
+                                        : stockBefore_ ? simulation_->before(selected_)
+                                                       : simulation_->after(selected_);
         stock_ = actorFor(heightFieldSurface(field), palette::kStock);
         stock_->GetMapper()->ScalarVisibilityOn();
         stock_->GetMapper()->SetColorModeToDirectScalars();

@@ -56,8 +56,14 @@ public:
     int selectedStep() const { return selected_; }
     // The simulated stock instead of the translucent block.
     void setShowStock(bool show);
+    // The simulated stock as it is before the selected step instead of
+    // after it (with no step selected: the fresh stock instead of the
+    // finished part).
+    void setStockBefore(bool before);
+    bool stockBefore() const { return stockBefore_; }
     // The move drawn in the highlight colour; (-1, -1) for none.
     void highlightMove(int step, int move);
+    MoveRef highlightedMove() const { return highlighted_; }
     // Camera preset fitted to the stock and the paths for a viewport of
     // width / height = aspect.
     void setView(ViewPreset preset, double aspect);
@@ -93,6 +99,7 @@ private:
     vtkSmartPointer<vtkTextActor> scaleNote_;
     int selected_ = -1;
     bool showStock_ = false;
+    bool stockBefore_ = false;
     MoveRef highlighted_;
 };
 

@@ -15,10 +15,11 @@
 
 namespace taiwa::viz {
 
-// The closed surface of the simulated stock: the height field's top (one
-// vertex per cell centre), its four side walls and the bottom, with point
-// normals and RGB point colours: palette::kStock where the top is uncut,
-// palette::kMachined where the simulation lowered it.
+// The closed surface of the simulated stock: the height field's top (a
+// vertex per cell centre; rectangles of vertices at one height merged into
+// one quad), its four side walls and the bottom, with a normal per quad
+// (flat shading) and RGB point colours: palette::kStock where the top is
+// uncut, palette::kMachined where the simulation lowered it.
 vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& field);
 
 // The uncut stock block.

@@ -435,6 +435,18 @@
         <translation>素材(&amp;S)</translation>
     </message>
     <message>
+        <source>&amp;Before step</source>
+        <translation>加工前(&amp;B)</translation>
+    </message>
+    <message>
+        <source>The stock as the simulation cuts it, instead of a glass block</source>
+        <translation>ガラスのブロックではなく、シミュレーションで削った素材を表示</translation>
+    </message>
+    <message>
+        <source>The stock as it is before the selected step, instead of after it</source>
+        <translation>選んだ工程の後ではなく、その前の素材を表示</translation>
+    </message>
+    <message>
         <location filename="../../ui/step_panel.cpp" line="37"/>
         <location filename="../../ui/step_panel.cpp" line="116"/>
         <source>▶ Pla&amp;y</source>

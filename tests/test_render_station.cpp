@@ -1,0 +1,206 @@
+// The station window with its real 3-D preview, under X (xvfb-run, the xcb
+// platform): the preview follows the step list and the play button, the
+// stock switches show the part after and before the selected step, a click
+// on an NC block highlights its move in 3-D (pixels checked at the move's
+// projected midpoint), and a click on a move in 3-D puts the NC view's
+// cursor on the block posted from it. The GUI tests (test_gui_*) run
+// offscreen without OpenGL and cannot see any of this.
+#include "support/support.h"
+#include "ui/nc_view.h"
+#include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
+#include "ui/station_window.h"
+#include "ui/step_panel.h"
+#include "viz/palette.h"
+#include "viz/scene.h"
+
+#include <QCheckBox>
+#include <QPlainTextEdit>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTextBlock>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+namespace {
+
+double distance(QRgb c, viz::Rgb want) { return std::hypot(qRed(c) - want.r, qGreen(c) - want.g, qBlue(c) - want.b); }
+
+// Some pixel within 2 of (x, y) is within 40 of the colour (lines are
+// multisampled into what lies behind them).
+bool colourAround(const QImage& img, std::array<double, 2> at, viz::Rgb want)
+{
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int x = static_cast<int>(at[0]) + dx, y = static_cast<int>(at[1]) + dy;
+            if (img.valid(x, y) && distance(img.pixel(x, y), want) < 40) return true;
+        }
+    return false;
+}
+
+int differingPixels(const QImage& a, const QImage& b)
+{
+    int n = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+class TestRenderStation : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    std::unique_ptr<StationWindow> w_;
+
+    PreviewWidget* preview() const { return w_->preview(); }
+    QImage frame() const { return preview()->grabImage().convertToFormat(QImage::Format_RGB32); }
+    const Plan& plan() const { return *w_->planRunner()->fullPlan(); }
+
+    // The first straight feed longer than 10 mm of a step, as a move index.
+    int longFeed(int step) const
+    {
+        const ToolPath& path = *plan().steps[static_cast<std::size_t>(step)].path;
+        Point3 from = path.start;
+        for (std::size_t m = 0; m < path.moves.size(); ++m) {
+            const Move& mv = path.moves[m];
+            if (mv.kind == MoveKind::Feed && std::hypot(mv.end.x - from.x, mv.end.y - from.y) > 10 &&
+                std::abs(mv.end.z - from.z) < 1e-9)
+                return static_cast<int>(m);
+            from = mv.end;
+        }
+        return -1;
+    }
+    Point3 midpoint(int step, int move) const
+    {
+        const ToolPath& path = *plan().steps[static_cast<std::size_t>(step)].path;
+        const Point3 a = move == 0 ? path.start : path.moves[static_cast<std::size_t>(move - 1)].end;
+        const Point3 b = path.moves[static_cast<std::size_t>(move)].end;
+        return {(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2};
+    }
+    int firstStepOf(StepKind kind) const
+    {
+        for (std::size_t k = 0; k < plan().steps.size(); ++k)
+            if (plan().steps[k].kind == kind && plan().steps[k].path) return static_cast<int>(k);
+        return -1;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        QStandardPaths::setTestModeEnabled(true);
+        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
+        qputenv("TAIWA_NO_PROMPTS", "1");
+        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+        w_ = std::make_unique<StationWindow>(test::sourcePath("resources/samples/plate.taiwa"));
+        w_->resize(1600, 940);
+        w_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w_.get()));
+        QVERIFY2(preview(), "the station has no 3-D preview: OpenGL missing under this display?");
+        w_->planRunner()->flush();
+        QVERIFY(w_->planRunner()->fullPlan());
+        QTRY_VERIFY(preview()->scene().plan() == w_->planRunner()->fullPlan().get());
+    }
+    void cleanupTestCase() { w_.reset(); }
+
+    void previewFollowsTheStepList()
+    {
+        const int k = firstStepOf(StepKind::Roughing);
+        QVERIFY(k > 0);
+        w_->stepPanel()->selectStep(k);
+        QCOMPARE(preview()->scene().selectedStep(), k);
+        w_->findChild<QAbstractButton*>("step.all")->click();
+        QCOMPARE(preview()->scene().selectedStep(), -1);
+    }
+
+    void playWalksThroughEveryStep()
+    {
+        StepPanel* panel = w_->stepPanel();
+        panel->setPlayInterval(20);
+        std::vector<int> seen;
+        auto* scene = &preview()->scene();
+        QTimer probe;
+        connect(&probe, &QTimer::timeout, this, [&] {
+            if (seen.empty() || seen.back() != scene->selectedStep()) seen.push_back(scene->selectedStep());
+        });
+        probe.start(2);
+        w_->findChild<QAbstractButton*>("step.play")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isPlaying(), 20'000);
+        probe.stop();
+        QCOMPARE(scene->selectedStep(), -1);  // back to all steps at the end
+        QVERIFY(seen.size() > plan().steps.size() / 2);  // most steps seen in between, in order
+        for (std::size_t i = 1; i + 1 < seen.size(); ++i) QVERIFY(seen[i] > seen[i - 1]);
+    }
+
+    void stockBeforeAndAfterTheStep()
+    {
+        const int k = firstStepOf(StepKind::Roughing);
+        auto* stock = w_->findChild<QCheckBox*>("view.stock");
+        auto* before = w_->findChild<QCheckBox*>("view.before");
+        QVERIFY(stock && before);
+        QVERIFY(stock->isChecked());
+        w_->stepPanel()->selectStep(k);
+        const QImage after = frame();
+        before->click();
+        QVERIFY(preview()->scene().stockBefore());
+        const QImage beforeImage = frame();
+        // The pocket this step roughs out is open in one and closed in the
+        // other: a large area differs.
+        QVERIFY2(differingPixels(after, beforeImage) > 2000, qPrintable(QString::number(differingPixels(after, beforeImage))));
+        before->click();
+        QVERIFY(!preview()->scene().stockBefore());
+        QCOMPARE(differingPixels(after, frame()), 0);
+        stock->click();  // the glass block: the switch for before/after goes grey
+        QVERIFY(!before->isEnabled());
+        stock->click();
+        QVERIFY(before->isEnabled());
+    }
+
+    void ncBlockHighlightsItsMove()
+    {
+        const int k = firstStepOf(StepKind::Roughing);
+        const int m = longFeed(k);
+        QVERIFY(m >= 0);
+        w_->stepPanel()->selectStep(k);
+        NcView* nc = w_->ncView();
+        // Scroll the block into view, put the cursor on the line before it,
+        // then click the block as the operator would.
+        QVERIFY(nc->selectMove(k, m));
+        const QRect line = nc->text()->cursorRect();
+        nc->text()->moveCursor(QTextCursor::PreviousBlock);
+        QVERIFY(nc->currentSource().move != m);
+        QTest::mouseClick(nc->text()->viewport(), Qt::LeftButton, {}, QPoint(8, line.center().y()));
+        QCOMPARE(nc->currentSource().step, k);
+        QCOMPARE(nc->currentSource().move, m);
+        QCOMPARE(preview()->scene().highlightedMove(), (viz::MoveRef{k, m}));
+        const auto at = preview()->scene().toPixel(midpoint(k, m), preview()->width(), preview()->height());
+        QVERIFY(colourAround(frame(), at, viz::palette::kHighlight));
+    }
+
+    void clickInThreeDSelectsTheBlock()
+    {
+        const int k = firstStepOf(StepKind::Roughing);
+        const int m = longFeed(k);
+        w_->stepPanel()->selectStep(k);
+        w_->findChild<QAbstractButton*>("view.top")->click();
+        const viz::Scene& scene = preview()->scene();
+        const auto at = scene.toPixel(midpoint(k, m), preview()->width(), preview()->height());
+        const auto picked = scene.pickMove(at[0], at[1], preview()->width(), preview()->height());
+        QVERIFY(picked);
+        QCOMPARE(picked->step, k);
+        w_->ncView()->text()->moveCursor(QTextCursor::Start);
+        preview()->highlightMove(-1, -1);
+        QTest::mouseClick(preview(), Qt::LeftButton, {}, QPoint(qRound(at[0]), qRound(at[1])));
+        QCOMPARE(w_->ncView()->currentSource().step, picked->step);
+        QCOMPARE(w_->ncView()->currentSource().move, picked->move);
+        QCOMPARE(scene.highlightedMove(), *picked);
+    }
+};
+
+QTEST_MAIN(TestRenderStation)
+#include "test_render_station.moc"
