@@ -4,6 +4,7 @@
 // boxes, undo/redo (one step per field), the NC view <-> step mapping, and
 // the save/open round trip.
 #include "check/input_check.h"
+#include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/nc_view.h"
@@ -279,6 +280,21 @@ private slots:
         QVERIFY(std::holds_alternative<M4Pocket>(w.document()->job().units[0].module));
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.delete"), Qt::LeftButton);
         QCOMPARE(w.document()->job().units.size(), std::size_t(1));
+    }
+
+    // Without OpenGL (the offscreen platform here) the window still opens,
+    // plans and posts; the 3-D view's place says why it is empty.
+    void noOpenGlShowsAPlaceholder()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(!w.preview());
+        auto* note = w.findChild<QLabel*>("preview.unavailable");
+        QVERIFY(note && note->isVisible());
+        QCOMPARE(note->text(), QString("No 3-D preview: this display has no OpenGL."));
+        w.planRunner()->flush();
+        QVERIFY(w.planRunner()->fullPlan());
+        QVERIFY(w.stepTable()->rowCount() > 0);
     }
 };
 

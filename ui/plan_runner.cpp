@@ -31,6 +31,8 @@ PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library,
         PostedProgram prog = postProcess(plan->steps, plan->tools, po);
         r.nc = QString::fromStdString(prog.nc);
         r.lines = std::move(prog.lines);
+        r.stock = std::make_shared<sim::StockSimulation>(*plan);
+        r.stock->finished();  // the part as the preview first shows it
         r.plan = std::move(plan);
     } catch (const std::exception& e) {
         r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
@@ -124,7 +126,10 @@ void PlanRunner::finished(int generation, const Result& r)
 
 void PlanRunner::publish(const Result& r)
 {
-    if (r.plan) full_ = r.plan;
+    if (r.plan) {
+        full_ = r.plan;
+        stock_ = r.stock;
+    }
     emit programReady(r.plan, r.nc, r.lines);
 }
 

@@ -2,7 +2,8 @@
 // step list (planJob without tool paths) at once on the GUI thread (a few
 // milliseconds); the full plan with tool paths and the NC program on a
 // worker thread at the next event-loop pass, newest edit wins: results of an
-// edit that has been superseded are dropped.
+// edit that has been superseded are dropped. The worker also simulates the
+// stock of the finished part for the 3-D preview.
 #pragma once
 
 #include "check/diagnostic.h"
@@ -10,6 +11,7 @@
 #include "model/tool.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
+#include "sim/stock_simulation.h"
 
 #include <QObject>
 #include <QString>
@@ -47,8 +49,13 @@ public:
     void flush();
     bool isBusy() const { return inFlight_ >= 0 || pendingFull_; }
 
+    // The stock simulation of fullPlan(), the finished part already
+    // simulated on the worker thread; the GUI thread owns it from here.
+    std::shared_ptr<sim::StockSimulation> stockSimulation() const { return stock_; }
+
     struct Result {
         std::shared_ptr<const Plan> plan;
+        std::shared_ptr<sim::StockSimulation> stock;
         QString nc;  // the tape, or why there is none
         std::vector<BlockSource> lines;
     };
@@ -75,6 +82,7 @@ private:
     QTimer* debounce_;
     QThreadPool pool_;
     std::shared_ptr<const Plan> full_;
+    std::shared_ptr<sim::StockSimulation> stock_;
 };
 
 }  // namespace taiwa::ui

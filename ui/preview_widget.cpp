@@ -8,7 +8,6 @@
 // render requests become update() calls.
 #include "ui/preview_widget.h"
 
-#include <QGuiApplication>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QWheelEvent>
@@ -113,9 +112,9 @@ void PreviewWidget::paintGL()
     state->Pop();
 }
 
-void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan)
+void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
 {
-    scene_.setPlan(std::move(plan));
+    scene_.setPlan(std::move(plan), std::move(stock));
     scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
     update();
 }
@@ -149,12 +148,6 @@ void PreviewWidget::highlightMove(int step, int move)
 {
     scene_.highlightMove(step, move);
     update();
-}
-
-bool PreviewWidget::supported()
-{
-    const QString platform = QGuiApplication::platformName();
-    return platform != QLatin1String("offscreen") && platform != QLatin1String("minimal");
 }
 
 QImage PreviewWidget::grabImage() { return grabFramebuffer(); }

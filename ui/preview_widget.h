@@ -28,7 +28,8 @@ public:
     explicit PreviewWidget(QWidget* parent = nullptr);
     ~PreviewWidget() override;
 
-    void setPlan(std::shared_ptr<const Plan> plan);
+    // The plan and, if made already, its stock simulation (see viz::Scene).
+    void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     void setSelectedStep(int index /* -1 all */);
     void setShowStock(bool show);
     // The stock before the selected step rather than after it.
@@ -38,11 +39,6 @@ public:
     void highlightMove(int step, int move);
     // The current frame (rendered now if needed).
     QImage grabImage();
-
-    // False on Qt platforms without OpenGL widgets (offscreen, minimal):
-    // there a window holding a PreviewWidget crashes in Qt's compositor, so
-    // the station shows a placeholder instead.
-    static bool supported();
 
     // The scene, for tests and the NC view's picking.
     const viz::Scene& scene() const { return scene_; }

@@ -112,12 +112,13 @@ void Scene::clear()
     scaleNote_ = nullptr;
 }
 
-void Scene::setPlan(std::shared_ptr<const Plan> plan)
+void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
 {
     clear();
     plan_ = std::move(plan);
     if (!plan_) return;
     const int n = static_cast<int>(plan_->steps.size());
+    if (stock && stock->stepCount() == n) simulation_ = std::move(stock);
     if (selected_ >= n) selected_ = -1;
     if (highlighted_.step >= n) highlighted_ = {};
 
@@ -169,7 +170,9 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan)
 
 void Scene::setSelectedStep(int index)
 {
-    selected_ = plan_ && index >= 0 && index < static_cast<int>(plan_->steps.size()) ? index : -1;
+    const int selected = plan_ && index >= 0 && index < static_cast<int>(plan_->steps.size()) ? index : -1;
+    if (selected == selected_) return;  // the step list re-announces its selection after every plan
+    selected_ = selected;
     updateStock();
     updateEmphasis();
     updateTool();
@@ -210,7 +213,7 @@ void Scene::updateStock()
     if (!plan_) return;
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
-        if (!simulation_) simulation_ = std::make_unique<sim::StockSimulation>(*plan_);
+        if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
         const sim::HeightField& field = selected_ < 0 ? (stockBefore_ ? simulation_->initial() : simulation_->finished())
                                         : stockBefore_ ? simulation_->before(selected_)
                                                        : simulation_->after(selected_);

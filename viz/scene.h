@@ -47,8 +47,11 @@ public:
     vtkRenderer* renderer() const { return renderer_; }
 
     // Builds the scene for the plan (nullptr: an empty scene). Keeps the
-    // selection, stock and view settings when they still apply.
-    void setPlan(std::shared_ptr<const Plan> plan);
+    // selection, stock and view settings when they still apply. `stock`, if
+    // given, is the plan's stock simulation made elsewhere (the station
+    // makes it on its planning thread); otherwise the scene makes one when
+    // the stock is first shown.
+    void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     const Plan* plan() const { return plan_.get(); }
     // -1: every step alike; k: step k emphasised, the tool at its start,
     // the stock (when shown) as it is after step k.
@@ -92,7 +95,7 @@ private:
 
     vtkSmartPointer<vtkRenderer> renderer_;
     std::shared_ptr<const Plan> plan_;
-    std::unique_ptr<sim::StockSimulation> simulation_;
+    std::shared_ptr<sim::StockSimulation> simulation_;
     std::vector<StepActors> steps_;
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_;
     vtkSmartPointer<vtkAxesActor> axes_;
