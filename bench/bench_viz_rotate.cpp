@@ -54,17 +54,16 @@ std::map<int, double> framesPerSecond;
 
 void BM_Rotate(benchmark::State& state)
 {
-    if (auto problem = viz::displayProblem()) {
-        state.SkipWithError(problem->c_str());
+    const viz::OffscreenWindow offscreen(800, 600);
+    if (offscreen.problem()) {
+        state.SkipWithError(offscreen.problem()->c_str());
         return;
     }
     const int segments = static_cast<int>(state.range(0));
     viz::Scene scene;
     scene.setPlan(zigzagPlan(segments));
     scene.setView(viz::ViewPreset::Iso, 800.0 / 600.0);
-    auto window = vtkSmartPointer<vtkRenderWindow>::New();
-    window->SetOffScreenRendering(1);
-    window->SetSize(800, 600);
+    vtkRenderWindow* window = offscreen.window();
     window->AddRenderer(scene.renderer());
     window->Render();  // first frame uploads the geometry
     const auto start = std::chrono::steady_clock::now();

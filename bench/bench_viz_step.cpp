@@ -55,9 +55,12 @@ void BM_SelectStep(benchmark::State& state)
         scene.setPlan(plan);
         scene.setShowStock(true);
         scene.setView(viz::ViewPreset::Iso, 800.0 / 600.0);
-        auto window = vtkSmartPointer<vtkRenderWindow>::New();
-        window->SetOffScreenRendering(1);
-        window->SetSize(800, 600);
+        const viz::OffscreenWindow offscreen(800, 600);
+        vtkRenderWindow* window = offscreen.window();
+        if (!window) {
+            state.SkipWithError(offscreen.problem()->c_str());
+            return;
+        }
         window->AddRenderer(scene.renderer());
         window->Render();
         state.ResumeTiming();

@@ -13,9 +13,11 @@
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <thread>
 
 namespace taiwa::viz {
 
@@ -34,7 +36,13 @@ struct XConnection {
             problem = kNeedsDisplay;
             return;
         }
-        display = XOpenDisplay(nullptr);
+        // An X server refuses connections made in quick succession for a
+        // moment (EAGAIN; Xvfb does after a few dozen): try again for up
+        // to a second before calling the display unreachable.
+        for (int attempt = 0; attempt < 50 && !display; ++attempt) {
+            if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            display = XOpenDisplay(nullptr);
+        }
         if (!display) problem = std::string(kNeedsDisplay) + ": cannot open X display '" + name + "'";
     }
     ~XConnection()
@@ -54,27 +62,54 @@ std::optional<std::string> displayProblem()
     return std::nullopt;
 }
 
+struct OffscreenWindow::Impl {
+    XConnection x;  // declared before the window: closed after it
+    vtkSmartPointer<vtkRenderWindow> window;
+    std::optional<std::string> problem;
+};
+
+OffscreenWindow::OffscreenWindow(int width, int height) : impl_(std::make_unique<Impl>())
+{
+    if (!impl_->x.display) {
+        impl_->problem = impl_->x.problem;
+        return;
+    }
+    auto w = vtkSmartPointer<vtkRenderWindow>::New();
+    w->SetDisplayId(impl_->x.display);
+    w->SetOffScreenRendering(1);
+    w->SetSize(width, height);
+    if (!w->SupportsOpenGL()) {
+        impl_->problem = "no usable OpenGL (3.2 or later) on this display";
+        return;
+    }
+    impl_->window = w;
+}
+
+OffscreenWindow::~OffscreenWindow()
+{
+    if (impl_->window) impl_->window->Finalize();  // its GL context, while the connection is open
+}
+
+const std::optional<std::string>& OffscreenWindow::problem() const { return impl_->problem; }
+
+vtkRenderWindow* OffscreenWindow::window() const { return impl_->window; }
+
 std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& o, const std::string& pngPath)
 {
     if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
         return "image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + " is outside 16..8192 pixels";
     if (o.step < -1 || o.step >= static_cast<int>(plan.steps.size()))
         return "step " + std::to_string(o.step + 1) + " is out of range: the plan has " + std::to_string(plan.steps.size()) + " steps";
-    const XConnection x;  // declared before the window: closed after it
-    if (!x.display) return x.problem;
+    const OffscreenWindow offscreen(o.width, o.height);
+    if (offscreen.problem()) return offscreen.problem();
+    vtkRenderWindow* window = offscreen.window();
 
     Scene scene;
     scene.setPlan(std::make_shared<const Plan>(plan));
     scene.setSelectedStep(o.step);
     scene.setShowStock(o.showStock);  // last: the stock is simulated once, for the right step
     scene.setView(o.view, static_cast<double>(o.width) / o.height);
-
-    auto window = vtkSmartPointer<vtkRenderWindow>::New();
-    window->SetDisplayId(x.display);
-    window->SetOffScreenRendering(1);
-    window->SetSize(o.width, o.height);
     window->AddRenderer(scene.renderer());
-    if (!window->SupportsOpenGL()) return std::string("no usable OpenGL (3.2 or later) on this display");
     window->Render();
 
     auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();

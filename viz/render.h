@@ -5,8 +5,11 @@
 
 #include "pipeline/pipeline.h"
 
+#include <memory>
 #include <optional>
 #include <string>
+
+class vtkRenderWindow;
 
 namespace taiwa::viz {
 
@@ -24,5 +27,24 @@ std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& op
 
 // Why offscreen rendering cannot work here (no X display), or nothing.
 std::optional<std::string> displayProblem();
+
+// An offscreen render window on a connection to the X display of its own,
+// closed after the window: VTK opens no connection itself, so none is left
+// behind however many windows come and go (benchmarks make hundreds).
+class OffscreenWindow {
+public:
+    OffscreenWindow(int width, int height);
+    ~OffscreenWindow();
+    OffscreenWindow(const OffscreenWindow&) = delete;
+    OffscreenWindow& operator=(const OffscreenWindow&) = delete;
+    // Why there is no window (no display, no usable OpenGL), or nothing.
+    const std::optional<std::string>& problem() const;
+    // nullptr when problem() says why.
+    vtkRenderWindow* window() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace taiwa::viz
