@@ -295,6 +295,7 @@ private slots:
         w.planRunner()->flush();
         QVERIFY(w.planRunner()->fullPlan());
         QVERIFY(w.stepTable()->rowCount() > 0);
+        QVERIFY(!w.planRunner()->stockSimulation());  // no preview: no stock simulated for it
     }
 };
 

@@ -105,6 +105,9 @@ private slots:
         w_->planRunner()->flush();
         QVERIFY(w_->planRunner()->fullPlan());
         QTRY_VERIFY(preview()->scene().plan() == w_->planRunner()->fullPlan().get());
+        // The finished part was simulated on the planning thread.
+        QVERIFY(w_->planRunner()->stockSimulation());
+        QCOMPARE(w_->planRunner()->stockSimulation()->stepCount(), static_cast<int>(plan().steps.size()));
     }
     void cleanupTestCase() { w_.reset(); }
 

@@ -14,7 +14,7 @@ namespace {
 
 // The full pipeline and the post-processor; runs on the worker thread, so it
 // touches nothing but its arguments.
-PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library, const QString& dialect)
+PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library, const QString& dialect, bool simulateStock)
 {
     PlanRunner::Result r;
     try {
@@ -31,8 +31,10 @@ PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library,
         PostedProgram prog = postProcess(plan->steps, plan->tools, po);
         r.nc = QString::fromStdString(prog.nc);
         r.lines = std::move(prog.lines);
-        r.stock = std::make_shared<sim::StockSimulation>(*plan);
-        r.stock->finished();  // the part as the preview first shows it
+        if (simulateStock) {
+            r.stock = std::make_shared<sim::StockSimulation>(*plan);
+            r.stock->finished();  // the part as the preview first shows it
+        }
         r.plan = std::move(plan);
     } catch (const std::exception& e) {
         r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
@@ -111,8 +113,8 @@ void PlanRunner::startFull()
     pendingFull_ = false;
     const int generation = generation_;
     inFlight_ = generation;
-    pool_.start([this, generation, job = pending_, library = library_, dialect = dialect_] {
-        const Result r = planAndPost(job, library, dialect);
+    pool_.start([this, generation, job = pending_, library = library_, dialect = dialect_, sim = simulateStock_] {
+        const Result r = planAndPost(job, library, dialect, sim);
         QMetaObject::invokeMethod(this, [this, generation, r] { finished(generation, r); }, Qt::QueuedConnection);
     });
 }
@@ -145,7 +147,7 @@ void PlanRunner::flush()
     }
     pendingFull_ = false;
     ++generation_;  // anything still queued is older than this
-    publish(planAndPost(pending_, library_, dialect_));
+    publish(planAndPost(pending_, library_, dialect_, simulateStock_));
 }
 
 }  // namespace taiwa::ui

@@ -2,8 +2,8 @@
 // step list (planJob without tool paths) at once on the GUI thread (a few
 // milliseconds); the full plan with tool paths and the NC program on a
 // worker thread at the next event-loop pass, newest edit wins: results of an
-// edit that has been superseded are dropped. The worker also simulates the
-// stock of the finished part for the 3-D preview.
+// edit that has been superseded are dropped. For a 3-D preview the worker
+// also simulates the stock of the finished part.
 #pragma once
 
 #include "check/diagnostic.h"
@@ -49,8 +49,12 @@ public:
     void flush();
     bool isBusy() const { return inFlight_ >= 0 || pendingFull_; }
 
+    // Whether the worker also simulates the stock of the finished part (for
+    // a 3-D preview; off by default).
+    void setSimulateStock(bool on) { simulateStock_ = on; }
     // The stock simulation of fullPlan(), the finished part already
-    // simulated on the worker thread; the GUI thread owns it from here.
+    // simulated on the worker thread (nullptr when not asked for); the GUI
+    // thread owns it from here.
     std::shared_ptr<sim::StockSimulation> stockSimulation() const { return stock_; }
 
     struct Result {
@@ -75,6 +79,7 @@ private:
     std::vector<Tool> library_;
     QString libraryError_;
     QString dialect_ = QStringLiteral("linuxcnc");
+    bool simulateStock_ = false;
     Job pending_;
     bool pendingFull_ = false;
     int generation_ = 0;

@@ -212,6 +212,7 @@ void StationWindow::wire()
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     if (!preview_) return;
+    runner_->setSimulateStock(true);
     connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);
     preview_->setShowStock(steps_->stockShown());
     preview_->setStockBefore(steps_->stockBefore());
