@@ -19,7 +19,6 @@
 #include <QFile>
 #include <QLineEdit>
 #include <QProcess>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -43,10 +42,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(dir_.isValid());
-        QStandardPaths::setTestModeEnabled(true);
-        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
-        qputenv("TAIWA_NO_PROMPTS", "1");
-        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+        test::isolateStation(dir_.path());
     }
 
     void untitledJobRestoredAfterAKill()

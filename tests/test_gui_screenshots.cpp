@@ -17,7 +17,6 @@
 #include <QDir>
 #include <QMenuBar>
 #include <QPlainTextEdit>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -47,10 +46,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(dir_.isValid());
-        QStandardPaths::setTestModeEnabled(true);
-        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
-        qputenv("TAIWA_NO_PROMPTS", "1");
-        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+        test::isolateStation(dir_.path());
     }
 
     void plate()

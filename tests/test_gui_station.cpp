@@ -24,7 +24,6 @@
 #include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBlock>
@@ -58,10 +57,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(dir_.isValid());
-        QStandardPaths::setTestModeEnabled(true);
-        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
-        qputenv("TAIWA_NO_PROMPTS", "1");
-        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+        test::isolateStation(dir_.path());
     }
 
     void editCheckPlanUndoSaveOpen()

@@ -8,6 +8,7 @@
 // the default tool library, at 400 x 300: path, pocket outline and
 // background where the camera puts them. Needs an X display (xvfb-run -a).
 #include "io/job_io.h"
+#include "support/images.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "ui/preview_widget.h"
@@ -27,6 +28,7 @@
 #include <cstdlib>
 
 using namespace taiwa;
+using taiwa::test::differingPixels;
 using namespace taiwa::viz;
 using taiwa::ui::PreviewWidget;
 
@@ -134,14 +136,6 @@ std::optional<Point3> feedPointOf(const Plan& plan, const Step& step)
         from = to;
     }
     return std::nullopt;
-}
-
-int differingPixels(const QImage& a, const QImage& b)
-{
-    int n = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
-    return n;
 }
 
 }  // namespace

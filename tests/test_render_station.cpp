@@ -5,6 +5,7 @@
 // projected midpoint), and a click on a move in 3-D puts the NC view's
 // cursor on the block posted from it. The GUI tests (test_gui_*) run
 // offscreen without OpenGL and cannot see any of this.
+#include "support/images.h"
 #include "support/support.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
@@ -16,7 +17,6 @@
 
 #include <QCheckBox>
 #include <QPlainTextEdit>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTextBlock>
 #include <QtTest>
@@ -24,6 +24,7 @@
 #include <cmath>
 
 using namespace taiwa;
+using taiwa::test::differingPixels;
 using namespace taiwa::ui;
 
 namespace {
@@ -40,14 +41,6 @@ bool colourAround(const QImage& img, std::array<double, 2> at, viz::Rgb want)
             if (img.valid(x, y) && distance(img.pixel(x, y), want) < 40) return true;
         }
     return false;
-}
-
-int differingPixels(const QImage& a, const QImage& b)
-{
-    int n = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) n += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
-    return n;
 }
 
 }  // namespace
@@ -93,10 +86,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(dir_.isValid());
-        QStandardPaths::setTestModeEnabled(true);
-        qputenv("TAIWA_AUTOSAVE_DIR", dir_.filePath("autosave").toUtf8());
-        qputenv("TAIWA_NO_PROMPTS", "1");
-        qputenv("TAIWA_TOOL_DB", dir_.filePath("tools.sqlite").toUtf8());
+        test::isolateStation(dir_.path());
         w_ = std::make_unique<StationWindow>(test::sourcePath("resources/samples/plate.taiwa"));
         w_->resize(1600, 940);
         w_->show();

@@ -5,6 +5,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <stdexcept>
@@ -13,6 +14,14 @@ namespace taiwa::test {
 
 QString sourcePath(const QString& relative) { return QDir(QStringLiteral(TAIWA_SOURCE_DIR)).filePath(relative); }
 QString dataPath(const QString& relative) { return QDir(QStringLiteral(TAIWA_TEST_DATA)).filePath(relative); }
+
+void isolateStation(const QString& dir)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    qputenv("TAIWA_AUTOSAVE_DIR", QDir(dir).filePath(QStringLiteral("autosave")).toUtf8());
+    qputenv("TAIWA_NO_PROMPTS", "1");
+    qputenv("TAIWA_TOOL_DB", QDir(dir).filePath(QStringLiteral("tools.sqlite")).toUtf8());
+}
 
 QString testToolDb()
 {

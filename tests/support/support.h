@@ -27,6 +27,11 @@ RunResult runTaiwa(const QStringList& args, const QStringList& env = {});
 // The path of that per-test-process tool library (created on first use by taiwa).
 QString testToolDb();
 
+// For tests that open the station: QStandardPaths' test mode, autosave and
+// the tool library in `dir` (a temporary folder), no questions asked
+// (TAIWA_NO_PROMPTS).
+void isolateStation(const QString& dir);
+
 std::string readFile(const QString& path);
 void writeFile(const QString& path, const std::string& text);
 
