@@ -123,10 +123,7 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;
 
-    const bool depthOk = p.depth > 0.0;
-    if (!depthOk) r.unit("depth", msg::depthNotPositive(r.len(p.depth)));
-    else if (ctx.stock && p.depth > ctx.stock->height + kTolerance)
-        r.unit("depth", msg::deeperThanStock(r.len(p.depth), r.len(ctx.stock->height)));
+    const bool depthOk = checkDepth(p.depth, r);
     if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
 
     const bool anglesOk = anglesValid(p, r);

@@ -142,10 +142,7 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;
 
-    const bool depthOk = p.depth > 0.0;
-    if (!depthOk) r.unit("depth", msg::depthNotPositive(r.len(p.depth)));
-    else if (ctx.stock && p.depth > ctx.stock->height + kTolerance)
-        r.unit("depth", msg::deeperThanStock(r.len(p.depth), r.len(ctx.stock->height)));
+    const bool depthOk = checkDepth(p.depth, r);
 
     const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
     if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));

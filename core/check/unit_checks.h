@@ -48,6 +48,9 @@ struct UnitReport {
     bool figureValid = false;  // its top outline is well-formed: take part in the interference check
 };
 UnitReport checkM4(const M4Pocket& mm, int unitNo, const Context& ctx);
+// The depth T of either module: positive, and no deeper than the stock
+// (when the stock is valid). False when it is not positive.
+bool checkDepth(double depth, Reporter& r);
 UnitReport checkM2D(const M2DPocket& mm, int unitNo, const Context& ctx);
 
 // One corner radius that a step's tool must fit into.
