@@ -3,12 +3,14 @@
 // in Japanese, the compiled-in translation is used.
 // With TAIWA_SCREENSHOTS_DIR set (run under `xvfb-run -a` so that the 3-D
 // view renders) it also writes the PNGs of docs/screenshots/: the whole
-// window, then the window with single steps selected.
+// window, the window with single steps selected, and a contact sheet of the
+// 3-D view with each step selected in turn (simulated stock after it).
 #include "support/support.h"
 #include "ui/job_document.h"
 #include "ui/language.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
 #include "ui/station_window.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
@@ -16,6 +18,7 @@
 
 #include <QDir>
 #include <QMenuBar>
+#include <QPainter>
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -40,6 +43,36 @@ class TestGuiScreenshots : public QObject {
         const QImage image = w.grab().toImage();
         QVERIFY(!image.isNull());
         QVERIFY(image.save(QDir(out).filePath(name)));
+    }
+
+    // Every step selected in turn: the 3-D view as a tile with the step's
+    // number, unit and label, six tiles a row.
+    static void contactSheet(StationWindow& w)
+    {
+        constexpr int kTileW = 400, kTileH = 260, kColumns = 6, kCaption = 22;
+        const QStringList labels = w.stepTable()->stepLabels();
+        const int steps = static_cast<int>(labels.size());
+        const int rows = (steps + kColumns - 1) / kColumns;
+        QImage sheet(kColumns * kTileW, rows * (kTileH + kCaption), QImage::Format_RGB32);
+        sheet.fill(QColor(238, 238, 238));
+        QPainter painter(&sheet);
+        QFont font = painter.font();
+        font.setPixelSize(14);
+        painter.setFont(font);
+        const auto& plan = *w.planRunner()->fullPlan();
+        for (int k = 0; k < steps; ++k) {
+            w.stepPanel()->selectStep(k);
+            QCoreApplication::processEvents();
+            const QImage view = w.preview()->grabImage().scaled(kTileW, kTileH, Qt::KeepAspectRatio, Qt::SmoothTransformation);
+            const int x = (k % kColumns) * kTileW, y = (k / kColumns) * (kTileH + kCaption);
+            painter.drawImage(x + (kTileW - view.width()) / 2, y + kCaption, view);
+            const Step& s = plan.steps[static_cast<std::size_t>(k)];
+            painter.setPen(Qt::black);
+            painter.drawText(QRect(x + 6, y, kTileW - 12, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
+                             QStringLiteral("%1. unit %2: %3").arg(k + 1).arg(s.unit + 1).arg(labels[k]));
+        }
+        painter.end();
+        QVERIFY(sheet.save(QDir(qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR")).filePath("station-plate-steps.png")));
     }
 
 private slots:
@@ -72,6 +105,8 @@ private slots:
             settle(w);
             save(w, QStringLiteral("station-plate-step%1.png").arg(k + 1));
         }
+        if (w.preview() && !qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR").isEmpty()) contactSheet(w);
+
         // The M2D unit's form with its drawing.
         const auto& units = w.document()->job().units;
         for (std::size_t i = 0; i < units.size(); ++i)
