@@ -3,10 +3,13 @@
 // cycle makes a hole of the drill's diameter with its conical point; ball,
 // taper and arc sweeps follow their profiles; per-step snapshots are the
 // stock before and after each step and are cached.
+#include "io/job_io.h"
 #include "sim/cutter_profile.h"
 #include "sim/material_removal.h"
 #include "sim/path_samples.h"
 #include "sim/stock_simulation.h"
+#include "support/support.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -201,6 +204,54 @@ private slots:
         const auto t2 = std::chrono::steady_clock::now();
         QVERIFY(t2 - t1 < (t1 - t0) / 5);
         QVERIFY_THROWS_EXCEPTION(std::out_of_range, fresh.after(3));
+    }
+
+    // plate.taiwa's 29 steps: the finished part cut in two halves on two
+    // threads is the same, cell for cell, as every step cut in order; and
+    // stepping through all steps keeps a bounded number of snapshots.
+    void finishedInParallelEqualsInOrder()
+    {
+        const auto read = readJobFile(test::sourcePath("resources/samples/plate.taiwa").toStdString());
+        QVERIFY(read.job);
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(plan.ok() && plan.steps.size() > 20);
+        StockSimulation parallel(plan), inOrder(plan);
+        const HeightField& finished = parallel.finished();
+        for (int k = 0; k < inOrder.stepCount(); ++k) {
+            inOrder.after(k);
+            QVERIFY(inOrder.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent);
+        }
+        QVERIFY(finished == inOrder.after(inOrder.stepCount() - 1));
+        QVERIFY(finished.atPoint(42.5, 37.5) < -9.9);  // unit 1's floor, 10 mm deep
+        QVERIFY(!(finished == inOrder.after(10)));
+        // A step asked for after the finished part comes from a checkpoint
+        // or the start, and agrees with the in-order one.
+        QVERIFY(parallel.after(20) == inOrder.after(20));
+    }
+
+    // Many steps: only the checkpoints and the last few asked for are kept.
+    void snapshotsAreBounded()
+    {
+        Plan plan;
+        plan.mmJob.stock = kStock;
+        Tool mill = tool(ToolType::FlatEndMill, 6);
+        mill.id = 1;
+        plan.tools = {mill};
+        for (int i = 0; i < 300; ++i) {
+            Step s;
+            s.tool = ToolChoice{1, ""};
+            const double x = 5 + (i % 30) * 3, y = 5 + (i / 30) * 7;
+            s.path = ToolPath{{x, y, 5}, {{MoveKind::Feed, {x, y, -1.0 - i % 3}}}};
+            plan.steps.push_back(s);
+        }
+        StockSimulation sim(plan);
+        for (int k = 0; k < 300; ++k) sim.after(k);
+        QVERIFY2(sim.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent,
+                 qPrintable(QString::number(sim.snapshotCount())));
+        for (int k = 299; k >= 0; k -= 7) sim.before(k);
+        QVERIFY(sim.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent);
+        StockSimulation again(plan);
+        QVERIFY(again.finished() == sim.after(299));
     }
 };
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace taiwa::sim {
 
@@ -31,6 +32,12 @@ double HeightField::atPoint(double x, double y) const
     const int i = std::clamp(static_cast<int>(std::floor((x - stock_.x) / cell_)), 0, nx_ - 1);
     const int j = std::clamp(static_cast<int>(std::floor((y - stock_.y) / cell_)), 0, ny_ - 1);
     return at(i, j);
+}
+
+void HeightField::meet(const HeightField& other)
+{
+    if (other.nx_ != nx_ || other.ny_ != ny_) throw std::invalid_argument("HeightField::meet: different grids");
+    for (std::size_t k = 0; k < z_.size(); ++k) z_[k] = std::min(z_[k], other.z_[k]);
 }
 
 }  // namespace taiwa::sim

@@ -44,6 +44,10 @@ public:
         if (v < h) h = v;
     }
 
+    // Keeps the lower of the two heights in every cell: the material that
+    // both leave. The fields must have the same grid.
+    void meet(const HeightField& other);
+
     const std::vector<float>& heights() const { return z_; }  // row-major, row j = Y
     friend bool operator==(const HeightField&, const HeightField&) = default;
 

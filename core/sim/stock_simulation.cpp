@@ -3,6 +3,8 @@
 
 #include "sim/material_removal.h"
 
+#include <algorithm>
+#include <future>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -10,7 +12,8 @@
 namespace taiwa::sim {
 
 StockSimulation::StockSimulation(const Plan& plan, std::size_t maxCells)
-    : initial_(plan.mmJob.stock, HeightField::cellSizeFor(plan.mmJob.stock, maxCells))
+    : initial_(plan.mmJob.stock, HeightField::cellSizeFor(plan.mmJob.stock, maxCells)),
+      stride_(std::max(1, (static_cast<int>(plan.steps.size()) + kCheckpoints - 1) / kCheckpoints))
 {
     cuts_.reserve(plan.steps.size());
     for (const Step& s : plan.steps) {
@@ -22,20 +25,57 @@ StockSimulation::StockSimulation(const Plan& plan, std::size_t maxCells)
     }
 }
 
+void StockSimulation::cutSteps(HeightField& field, int from, int to) const
+{
+    for (int i = from; i < to; ++i)
+        if (cuts_[i].hasPath) cut(field, cuts_[i].path, cuts_[i].tool);
+}
+
+const HeightField& StockSimulation::keep(int k, HeightField field)
+{
+    const HeightField& kept = snapshots_.insert_or_assign(k, std::move(field)).first->second;
+    if (!isCheckpoint(k)) {
+        recent_.push_back(k);
+        while (recent_.size() > kRecent) {
+            snapshots_.erase(recent_.front());
+            recent_.pop_front();
+        }
+    }
+    return kept;
+}
+
 const HeightField& StockSimulation::after(int k)
 {
     if (k < 0 || k >= stepCount())
         throw std::out_of_range("StockSimulation::after: step " + std::to_string(k) + " of " + std::to_string(stepCount()));
     if (auto it = snapshots_.find(k); it != snapshots_.end()) return it->second;
-    // Start from the latest snapshot before k.
+    // Start from the latest snapshot before k; keep the checkpoints passed.
     auto base = snapshots_.lower_bound(k);
     HeightField field = base == snapshots_.begin() ? initial_ : std::prev(base)->second;
     const int from = base == snapshots_.begin() ? 0 : std::prev(base)->first + 1;
-    for (int i = from; i <= k; ++i) {
-        if (cuts_[i].hasPath) cut(field, cuts_[i].path, cuts_[i].tool);
-        if (i < k) snapshots_.emplace(i, field);
+    for (int i = from; i < k; ++i) {
+        cutSteps(field, i, i + 1);
+        if (isCheckpoint(i)) snapshots_.insert_or_assign(i, field);
     }
-    return snapshots_.emplace(k, std::move(field)).first->second;
+    cutSteps(field, k, k + 1);
+    return keep(k, std::move(field));
+}
+
+const HeightField& StockSimulation::finished()
+{
+    const int n = stepCount();
+    if (n == 0) return initial_;
+    if (auto it = snapshots_.find(n - 1); it != snapshots_.end()) return it->second;
+    if (n < 2 || !snapshots_.empty()) return after(n - 1);
+    const int half = n / 2;
+    auto secondHalf = std::async(std::launch::async, [this, half, n] {
+        HeightField field = initial_;
+        cutSteps(field, half, n);
+        return field;
+    });
+    HeightField field = after(half - 1);  // on this thread, keeping its checkpoints
+    field.meet(secondHalf.get());
+    return keep(n - 1, std::move(field));
 }
 
 const HeightField& StockSimulation::before(int k)

@@ -1,12 +1,16 @@
 // The stock as it is before and after each step of a plan, simulated on a
 // height field. Snapshots are computed on first request, from the nearest
-// one already known, and kept, so stepping through the steps is fast.
+// one already known. Kept are at most kCheckpoints evenly spaced ones (any
+// step is then at most stepCount / kCheckpoints cuts away from one) and the
+// kRecent last asked for, so stepping through the steps is fast and a
+// 3,000-step job does not hold 3,000 copies of the stock.
 #pragma once
 
 #include "pipeline/pipeline.h"
 #include "sim/height_field.h"
 
 #include <cstddef>
+#include <deque>
 #include <map>
 
 namespace taiwa::sim {
@@ -17,15 +21,24 @@ public:
     // grid has at most `maxCells` cells (HeightField::cellSizeFor).
     explicit StockSimulation(const Plan& plan, std::size_t maxCells = 500'000);
 
+    static constexpr int kCheckpoints = 32;
+    static constexpr std::size_t kRecent = 4;
+
     int stepCount() const { return static_cast<int>(cuts_.size()); }
     const HeightField& initial() const { return initial_; }
     // The stock after steps 0..k (k in 0..stepCount()-1). A step without a
-    // path or whose tool is not in the plan removes nothing.
+    // path or whose tool is not in the plan removes nothing. The reference
+    // stays valid until kRecent other snapshots have been asked for.
     const HeightField& after(int k);
     // The stock before step k: after(k - 1), or the fresh stock for k = 0.
     const HeightField& before(int k);
-    // After the last step: the finished part.
-    const HeightField& finished() { return cuts_.empty() ? initial_ : after(stepCount() - 1); }
+    // After the last step: the finished part. Asked first, the two halves
+    // of the steps are cut on two threads and the results met (every cut
+    // only lowers cells, so the order of the cuts does not matter: the
+    // result is the same, cell for cell, as cutting them in order).
+    const HeightField& finished();
+    // How many snapshots are kept now (at most kCheckpoints + kRecent).
+    std::size_t snapshotCount() const { return snapshots_.size(); }
 
 private:
     struct Cut {
@@ -33,9 +46,15 @@ private:
         ToolPath path;
         Tool tool;
     };
+    bool isCheckpoint(int k) const { return (k + 1) % stride_ == 0; }
+    const HeightField& keep(int k, HeightField field);
+    void cutSteps(HeightField& field, int from, int to) const;  // steps from..to-1
+
     HeightField initial_;
     std::vector<Cut> cuts_;
+    int stride_ = 1;
     std::map<int, HeightField> snapshots_;
+    std::deque<int> recent_;  // snapshots that are not checkpoints, oldest first
 };
 
 }  // namespace taiwa::sim
