@@ -1,8 +1,9 @@
-// Input processing: one test per refusal of the spec (field, unit and message
-// checked), overlapping versus touching figures, several errors collected at
-// once, inch jobs quoting inches, the technology data in force and the unit
-// order. The tool library is made by hand here.
+// Input processing of single units: one test per refusal of the spec
+// (field, unit and message checked). The job-level checks are in
+// test_input_check_job.cpp; the hand-made tool library and the helpers in
+// support/check_fixtures.h.
 #include "check/input_check.h"
+#include "support/check_fixtures.h"
 
 #include <QtTest>
 
@@ -11,84 +12,7 @@
 #include <numbers>
 
 using namespace taiwa;
-
-namespace {
-
-Tool tool(int id, ToolType type, double diameter, double taper = 0.0)
-{
-    Tool t;
-    t.id = id;
-    t.name = "tool " + std::to_string(id);
-    t.type = type;
-    t.diameter = diameter;
-    t.taperAngle = taper;
-    return t;
-}
-
-const std::vector<Tool> kLibrary{
-    tool(1, ToolType::Drill, 5),          tool(2, ToolType::FlatEndMill, 2),  tool(3, ToolType::FlatEndMill, 6),
-    tool(4, ToolType::FlatEndMill, 10),   tool(5, ToolType::FlatEndMill, 16), tool(6, ToolType::TaperEndMill, 2, 3),
-    tool(7, ToolType::BallEndMill, 4),
-};
-
-M4Pocket m4(double x0 = 20, double y0 = 20, double w = 100, double h = 60)
-{
-    M4Pocket p;
-    p.corners = {{{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + h}, {x0, y0 + h}}};
-    p.cornerRadius = 8;
-    p.depth = 12;
-    return p;
-}
-
-M2DPocket m2d()
-{
-    M2DPocket p;
-    p.corner = {130, 20};
-    p.lengthX = 60;
-    p.lengthY = 50;
-    p.depth = 10;
-    p.theta1 = 20;
-    p.cornerRadius = 5;
-    return p;
-}
-
-Job job(std::vector<ModuleInput> modules)
-{
-    Job j;
-    j.name = "test";
-    j.stock = {0, 0, 200, 150, 40};
-    for (auto& m : modules) j.units.push_back({"", std::move(m)});
-    return j;
-}
-
-Diagnostics check(const Job& j, const std::vector<Tool>& library = kLibrary)
-{
-    return checkJob(j, TechnologyTable::builtIn(), library);
-}
-
-QByteArray dump(const Diagnostics& ds)
-{
-    QByteArray out;
-    for (const auto& d : ds) out += QByteArray::fromStdString(format("job", d)) + "\n";
-    return out;
-}
-
-// Exactly one diagnostic, on `unit` (0 = job level) and `field`, whose message contains `text`.
-bool only(const Diagnostics& ds, int unit, const std::string& field, const std::string& text)
-{
-    if (ds.size() != 1) return false;
-    const Diagnostic& d = ds[0];
-    const bool unitOk = unit == 0 ? !d.unit.has_value() && d.module.empty() : d.unit == unit;
-    return d.severity == Severity::Error && unitOk && d.field == field && d.message.find(text) != std::string::npos;
-}
-
-#define EXPECT_ONLY(ds, unit, field, text)                                                                             \
-    do {                                                                                                               \
-        const Diagnostics found_ = (ds);                                                                               \
-        QVERIFY2(only(found_, unit, field, text), dump(found_).constData());                                           \
-    } while (0)
-
-}  // namespace
+using namespace taiwa::test;
 
 class TestInputCheck : public QObject {
     Q_OBJECT
@@ -300,101 +224,6 @@ private slots:
         j.technology = {};
         j.technology.alpha3 = 0.5;  // not below alpha2 = 0.3
         EXPECT_ONLY(check(j), 0, "technology.alpha3", "α3 = 0.5 mm must be smaller than the roughing wall allowance α2 = 0.3 mm");
-    }
-
-    void touchingFiguresPassOverlappingAreRefused()
-    {
-        // Shared straight edge x = 120, and a shared slanted edge.
-        QVERIFY(check(job({m4(20, 20), m4(120, 20, 60, 60)})).empty());
-        M4Pocket a = m4(), b = m4();
-        a.corners = {{{20, 20}, {80, 20}, {100, 80}, {20, 80}}};
-        b.corners = {{{80, 20}, {180, 20}, {180, 80}, {100, 80}}};
-        QVERIFY2(check(job({a, b})).empty(), dump(check(job({a, b}))));
-        // 10 mm of overlap along x: refused, on the later unit, naming both.
-        EXPECT_ONLY(check(job({m4(20, 20), m4(110, 20, 60, 60)})), 2, "corners", "the figure of unit 2 overlaps the figure of unit 1");
-        // An overlap of 0.01 mm along a 60 mm edge is still an overlap.
-        QCOMPARE(check(job({m4(20, 20), m4(119.99, 20, 60, 60)})).size(), std::size_t(1));
-        // M4 against M2D.
-        M2DPocket q = m2d();
-        q.corner = {115, 20};
-        EXPECT_ONLY(check(job({m4(), q})), 2, "corner", "overlaps the figure of unit 1");
-    }
-    void roundedCornersKeepDiagonalNeighboursApart()
-    {
-        // The sharp corners overlap by 1 x 1 mm: with r1 = 8 the rounded outlines
-        // stay apart, with r1 = 0.4 they overlap.
-        QVERIFY(check(job({m4(20, 20, 50, 50), m4(69, 69, 50, 50)})).empty());
-        M4Pocket a = m4(20, 20, 50, 50), b = m4(69, 69, 50, 50);
-        a.cornerRadius = b.cornerRadius = 0.4;  // r1 - alpha2 = 0.1 leaves room for a 0.1 mm end mill
-        const auto ds = checkJob(job({a, b}), TechnologyTable::builtIn(), {tool(2, ToolType::FlatEndMill, 0.1)});
-        EXPECT_ONLY(ds, 2, "corners", "overlaps the figure of unit 1");
-    }
-
-    void severalErrorsCollectedAtOnce()
-    {
-        M4Pocket bad = m4();
-        bad.depth = 0;
-        M2DPocket worse = m2d();
-        worse.toolUse = 3;
-        Job j = job({bad, worse});
-        j.material = "unobtainium";
-        const auto ds = check(j);
-        QCOMPARE(ds.size(), std::size_t(3));
-        QCOMPARE(ds[0].field, std::string("material"));
-        QVERIFY(ds[1].unit == 1 && ds[1].field == "depth");
-        QVERIFY(ds[2].unit == 2 && ds[2].field == "U" && ds[2].module == "M2D");
-    }
-    void errorsAreCapped()
-    {
-        std::vector<ModuleInput> units;
-        for (int i = 0; i < 150; ++i) {
-            M4Pocket p = m4();
-            p.toolUse = 2;
-            units.push_back(p);
-        }
-        const auto ds = check(job(units));
-        QCOMPARE(ds.size(), std::size_t(100));
-        QVERIFY(ds.back().message.find("more errors not listed") != std::string::npos);
-    }
-
-    void inchJobQuotesInches()
-    {
-        Job j = job({m4(1, 1, 4, 2)});
-        j.lengthUnit = LengthUnit::Inch;
-        j.stock = {0, 0, 8, 6, 2};
-        auto& p = std::get<M4Pocket>(j.units[0].module);
-        p.cornerRadius = 0.3;
-        p.depth = 0.5;
-        QVERIFY2(check(j).empty(), dump(check(j)));
-        p.cornerRadius = 1.25;
-        EXPECT_ONLY(check(j), 1, "cornerRadius", "corner radius 1.25 in is larger than half the shortest side (2 in long)");
-        p.cornerRadius = 0.3;
-        p.depth = -0.5;
-        EXPECT_ONLY(check(j), 1, "depth", "the depth is -0.5 in");
-        p.depth = 0.5;
-        p.tools = {{"roughing", 5}};
-        EXPECT_ONLY(check(j), 1, "tools.roughing", "r1 − α2 = 0.2882 in");  // 7.62 mm - 0.3 mm
-    }
-
-    void technologyInForce()
-    {
-        Job j = job({m4()});
-        j.technology.alpha2 = 0.5;
-        const auto t = jobTechnology(j, TechnologyTable::builtIn());
-        QVERIFY(t && t->alpha2 == 0.5 && t->alpha1 == 1.0 && t->gamma == 0.5);
-        j.material = "steel-s45c";
-        QCOMPARE(jobTechnology(j, TechnologyTable::builtIn())->beta2, 0.25);
-        j.material = "unobtainium";
-        QVERIFY(!jobTechnology(j, TechnologyTable::builtIn()));
-    }
-
-    void unitOrderIsNearestNeighbourFromTheFirst()
-    {
-        const Job j = job({m4(0, 0, 20, 20), m4(100, 0, 20, 20), m4(20, 0, 20, 20), m4(60, 0, 20, 20)});
-        QCOMPARE(machiningOrder(j), (std::vector<int>{0, 2, 3, 1}));
-        const Job tie = job({m4(40, 0, 20, 20), m4(80, 0, 20, 20), m4(0, 0, 20, 20)});
-        QCOMPARE(machiningOrder(tie), (std::vector<int>{0, 1, 2}));  // equal distance: the earlier unit first
-        QVERIFY(machiningOrder(job({})).empty());
     }
 };
 

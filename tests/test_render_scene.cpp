@@ -1,13 +1,13 @@
-// The 3-D preview, rendered: a hand-built plan (stock 100 x 80 x 30, a
-// pilot drill and one rectangular pocket roughing path) through the
-// offscreen renderer and through PreviewWidget under X. Pixels at known
-// world positions show the path, rapid, tool and stock colours, pixels off
-// the stock the background; views and step selection change the image;
-// picking finds the move under a pixel; the widget rotates on a drag and
-// reports a click on a path. The sample job m4-standard.taiwa, planned with
-// the default tool library, at 400 x 300: path, pocket outline and
-// background where the camera puts them. Needs an X display (xvfb-run -a).
+// The 3-D preview scene, rendered offscreen (`taiwa render`'s code): a
+// hand-built plan (support/hand_plan.h) and the sample m4-standard.taiwa.
+// Pixels at known world positions show the path, rapid, tool and stock
+// colours, pixels off the stock the background; views and step selection
+// change the image; the simulated stock is cut after its step and not
+// before; the stock surface is closed and merged; picking finds the move
+// under a pixel; no display is an error message. The same scene inside the
+// Qt widget: test_render_preview_widget. Needs an X display (xvfb-run -a).
 #include "io/job_io.h"
+#include "support/hand_plan.h"
 #include "support/images.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
@@ -28,82 +28,11 @@
 #include <cstdlib>
 
 using namespace taiwa;
-using taiwa::test::differingPixels;
+using namespace taiwa::test;
 using namespace taiwa::viz;
 using taiwa::ui::PreviewWidget;
 
 namespace {
-
-constexpr int kW = 800, kH = 600;
-constexpr int kRoughing = 1;     // step index of the pocket
-constexpr int kSlotMove = 2;     // the feed (40,40) -> (60,40) through the pocket centre
-constexpr int kRapidMove = 16;   // the rapid (75,40,5) -> (90,70,5)
-
-Plan handPlan()
-{
-    Plan plan;
-    plan.mmJob.stock = {0, 0, 100, 80, 30};
-    Tool drill;
-    drill.id = 2;
-    drill.type = ToolType::Drill;
-    drill.diameter = 12;
-    drill.fluteLength = 40;
-    Tool mill;
-    mill.id = 1;
-    mill.type = ToolType::FlatEndMill;
-    mill.diameter = 10;
-    mill.fluteLength = 25;
-    plan.tools = {drill, mill};
-
-    Step pilot;
-    pilot.kind = StepKind::PilotHole;
-    pilot.tool = ToolChoice{2, "pilot"};
-    Move cycle{MoveKind::DrillCycle, {40, 40, -4}};
-    cycle.retractZ = 1;
-    pilot.path = ToolPath{{40, 40, 5}, {cycle}};
-
-    // Pocket [20,80] x [20,60], depth 5, D10: a slot through the centre,
-    // then two rings counter-clockwise, then away at safe height.
-    Step rough;
-    rough.kind = StepKind::Roughing;
-    rough.tool = ToolChoice{1, "roughing"};
-    ToolPath p{{40, 40, 5}, {}};
-    p.moves.push_back({MoveKind::Rapid, {40, 40, 1}});
-    p.moves.push_back({MoveKind::Feed, {40, 40, -5}, {}, FeedKind::Plunge});
-    for (Point2 q : {Point2{60, 40}, {70, 40}, {70, 48}, {30, 48}, {30, 32}, {70, 32}, {70, 40}, {75, 40}, {75, 55}, {25, 55},
-                     {25, 25}, {75, 25}})
-        p.moves.push_back({MoveKind::Feed, {q.x, q.y, -5}});
-    p.moves.push_back({MoveKind::Feed, {75, 40, -5}});
-    p.moves.push_back({MoveKind::Rapid, {75, 40, 5}});
-    p.moves.push_back({MoveKind::Rapid, {90, 70, 5}});
-    rough.path = p;
-    plan.steps = {pilot, rough};
-    return plan;
-}
-
-bool near(QRgb c, Rgb want, int tol) { return std::abs(qRed(c) - want.r) <= tol && std::abs(qGreen(c) - want.g) <= tol && std::abs(qBlue(c) - want.b) <= tol; }
-
-double colourDistance(QRgb c, Rgb want) { return std::hypot(qRed(c) - want.r, qGreen(c) - want.g, qBlue(c) - want.b); }
-
-// A line of that colour passes within `radius` pixels of (x, y): the pixel
-// there nearest to the colour is within `tol` of it, or (thin lines are
-// multisampled into their backdrop) at least twice as near to it as the
-// backdrop is, the backdrop being the window's pixel farthest from it.
-bool colourNear(const QImage& img, std::array<double, 2> at, Rgb want, int radius = 2, int tol = 12)
-{
-    double nearest = 1e9, backdrop = 0;
-    for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-            const int x = static_cast<int>(at[0]) + dx, y = static_cast<int>(at[1]) + dy;
-            if (!img.valid(x, y)) continue;
-            const double d = colourDistance(img.pixel(x, y), want);
-            nearest = std::min(nearest, d);
-            backdrop = std::max(backdrop, d);
-        }
-    return nearest <= tol || nearest <= 0.5 * backdrop;
-}
-
-bool goldish(QRgb c) { return qRed(c) > 150 && qGreen(c) > 100 && qBlue(c) < 90 && qRed(c) > qBlue(c) + 100; }
 
 // Where world points land in the offscreen image made with these options.
 std::array<double, 2> pixelOf(const Plan& plan, ViewPreset view, Point3 p)
@@ -112,12 +41,6 @@ std::array<double, 2> pixelOf(const Plan& plan, ViewPreset view, Point3 p)
     s.setPlan(std::make_shared<const Plan>(plan));
     s.setView(view, static_cast<double>(kW) / kH);
     return s.toPixel(p, kW, kH);
-}
-
-Plan samplePlan(const char* name)
-{
-    const auto read = readJobFile(test::sourcePath(QString("resources/samples/") + name).toStdString());
-    return read.job ? planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary()) : Plan{};
 }
 
 // The midpoint of a straight feed at the step's cut depth, at least 5 mm
@@ -291,59 +214,6 @@ private slots:
         QVERIFY(!QFile::exists(dir_.filePath("none.png")));
     }
 
-    void widgetShowsTheScene()
-    {
-        PreviewWidget w;
-        w.resize(kW, kH);
-        w.setPlan(std::make_shared<const Plan>(plan_));
-        w.setView(ViewPreset::Top);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
-        const QByteArray shots = qgetenv("TAIWA_SCREENSHOTS");
-        if (!shots.isEmpty()) img.save(shots + "/preview-widget-top.png");
-        QCOMPARE(img.size(), QSize(kW, kH));
-        const auto& scene = w.scene();
-        QVERIFY(near(img.pixel(3, 3), palette::kBackground, 0));
-        QVERIFY(colourNear(img, scene.toPixel({50, 40, -5}, kW, kH), palette::kFeed));
-        QVERIFY(colourNear(img, scene.toPixel({82.5, 55, 5}, kW, kH), palette::kRapid));
-        const auto start = scene.toPixel({40, 40, 5}, kW, kH);
-        QVERIFY(goldish(img.pixel(int(start[0]), int(start[1]))));
-
-        w.setSelectedStep(kRoughing);
-        w.highlightMove(kRoughing, kSlotMove);
-        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
-        QVERIFY(colourNear(img, scene.toPixel({55, 40, -5}, kW, kH), palette::kHighlight));
-
-        w.setShowStock(true);
-        w.setView(ViewPreset::Iso);
-        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
-        if (!shots.isEmpty()) img.save(shots + "/preview-widget.png");
-        // The pocket floor, lit obliquely: darker than the palette, still green.
-        const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
-        const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
-        QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
-    }
-
-    // Grabbed as part of a window (how the station's screenshots are taken)
-    // the frame is opaque: no alpha is left for the grab to darken the
-    // background and the translucent stock into near-black.
-    void grabbedInAWindowIsOpaque()
-    {
-        QWidget host;
-        auto* w = new PreviewWidget(&host);
-        (new QVBoxLayout(&host))->addWidget(w);
-        host.resize(kW, kH);
-        w->setPlan(std::make_shared<const Plan>(plan_));
-        w->setShowStock(true);
-        host.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&host));
-        QTest::qWait(100);
-        const QImage img = host.grab().toImage().convertToFormat(QImage::Format_RGB32);
-        const QPoint corner = w->geometry().topLeft() + QPoint(3, 3);
-        QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));
-    }
-
     void samplePlanTopView()
     {
         const Plan plan = samplePlan("m4-standard.taiwa");
@@ -396,60 +266,6 @@ private slots:
         t.start();
         const auto err = renderToPng(plate, {}, dir_.filePath("plate.png").toStdString());
         qDebug("plate.taiwa iso 800x600: renderToPng %lld ms (%s)", static_cast<long long>(t.elapsed()), err ? err->c_str() : "ok");
-    }
-
-    void widgetShowsTheSamplePlan()
-    {
-        PreviewWidget w;
-        w.resize(400, 300);
-        w.setPlan(std::make_shared<const Plan>(samplePlan("m4-standard.taiwa")));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        const QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
-        QCOMPARE(img.size(), QSize(400, 300));
-        int background = 0, blue = 0;
-        for (int y = 0; y < img.height(); ++y)
-            for (int x = 0; x < img.width(); ++x) {
-                const QRgb c = img.pixel(x, y);
-                background += near(c, palette::kBackground, 0) ? 1 : 0;
-                blue += qBlue(c) > 180 && qBlue(c) > qRed(c) + 100 ? 1 : 0;
-            }
-        QVERIFY2(background > 400 * 300 / 10, qPrintable(QString::number(background)));
-        QVERIFY2(blue > 300, qPrintable(QString::number(blue)));
-    }
-
-    void widgetClickPicksAndDragRotates()
-    {
-        PreviewWidget w;
-        w.resize(kW, kH);
-        w.setPlan(std::make_shared<const Plan>(plan_));
-        w.setView(ViewPreset::Top);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QSignalSpy clicked(&w, &PreviewWidget::moveClicked);
-        const auto at = w.scene().toPixel({55, 40, -5}, kW, kH);
-        QTest::mouseClick(&w, Qt::LeftButton, {}, QPoint(int(at[0]), int(at[1])));
-        QCOMPARE(clicked.size(), 1);
-        QCOMPARE(clicked[0][0].toInt(), kRoughing);
-        QCOMPARE(clicked[0][1].toInt(), kSlotMove);
-
-        // A left drag turns the camera and clicks nothing.
-        vtkCamera* cam = w.scene().renderer()->GetActiveCamera();
-        double before[3], after[3];
-        cam->GetPosition(before);
-        const QPointF from(400, 300), to(520, 260);
-        QMouseEvent press(QEvent::MouseButtonPress, from, w.mapToGlobal(from), Qt::LeftButton, Qt::LeftButton, {});
-        QApplication::sendEvent(&w, &press);
-        for (int k = 1; k <= 6; ++k) {
-            const QPointF p = from + (to - from) * (k / 6.0);
-            QMouseEvent move(QEvent::MouseMove, p, w.mapToGlobal(p), Qt::NoButton, Qt::LeftButton, {});
-            QApplication::sendEvent(&w, &move);
-        }
-        QMouseEvent release(QEvent::MouseButtonRelease, to, w.mapToGlobal(to), Qt::LeftButton, Qt::NoButton, {});
-        QApplication::sendEvent(&w, &release);
-        cam->GetPosition(after);
-        QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[1] - before[1]) + std::abs(after[2] - before[2]) > 1.0);
-        QCOMPARE(clicked.size(), 1);
     }
 };
 

@@ -27,24 +27,6 @@ using namespace taiwa;
 using taiwa::test::differingPixels;
 using namespace taiwa::ui;
 
-namespace {
-
-double distance(QRgb c, viz::Rgb want) { return std::hypot(qRed(c) - want.r, qGreen(c) - want.g, qBlue(c) - want.b); }
-
-// Some pixel within 2 of (x, y) is within 40 of the colour (lines are
-// multisampled into what lies behind them).
-bool colourAround(const QImage& img, std::array<double, 2> at, viz::Rgb want)
-{
-    for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-            const int x = static_cast<int>(at[0]) + dx, y = static_cast<int>(at[1]) + dy;
-            if (img.valid(x, y) && distance(img.pixel(x, y), want) < 40) return true;
-        }
-    return false;
-}
-
-}  // namespace
-
 class TestRenderStation : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
@@ -172,7 +154,7 @@ private slots:
         QCOMPARE(nc->currentSource().move, m);
         QCOMPARE(preview()->scene().highlightedMove(), (viz::MoveRef{k, m}));
         const auto at = preview()->scene().toPixel(midpoint(k, m), preview()->width(), preview()->height());
-        QVERIFY(colourAround(frame(), at, viz::palette::kHighlight));
+        QVERIFY(test::colourNear(frame(), at, viz::palette::kHighlight, 2, 40));
     }
 
     void clickInThreeDSelectsTheBlock()

@@ -1,0 +1,114 @@
+// Input processing of whole jobs: overlapping versus touching figures
+// (rounded corners included), several errors collected at once and capped,
+// inch jobs quoting inches, the technology data in force, and the unit order.
+#include "check/input_check.h"
+#include "support/check_fixtures.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace taiwa;
+using namespace taiwa::test;
+
+class TestInputCheckJob : public QObject {
+    Q_OBJECT
+private slots:
+    void touchingFiguresPassOverlappingAreRefused()
+    {
+        // Shared straight edge x = 120, and a shared slanted edge.
+        QVERIFY(check(job({m4(20, 20), m4(120, 20, 60, 60)})).empty());
+        M4Pocket a = m4(), b = m4();
+        a.corners = {{{20, 20}, {80, 20}, {100, 80}, {20, 80}}};
+        b.corners = {{{80, 20}, {180, 20}, {180, 80}, {100, 80}}};
+        QVERIFY2(check(job({a, b})).empty(), dump(check(job({a, b}))));
+        // 10 mm of overlap along x: refused, on the later unit, naming both.
+        EXPECT_ONLY(check(job({m4(20, 20), m4(110, 20, 60, 60)})), 2, "corners", "the figure of unit 2 overlaps the figure of unit 1");
+        // An overlap of 0.01 mm along a 60 mm edge is still an overlap.
+        QCOMPARE(check(job({m4(20, 20), m4(119.99, 20, 60, 60)})).size(), std::size_t(1));
+        // M4 against M2D.
+        M2DPocket q = m2d();
+        q.corner = {115, 20};
+        EXPECT_ONLY(check(job({m4(), q})), 2, "corner", "overlaps the figure of unit 1");
+    }
+    void roundedCornersKeepDiagonalNeighboursApart()
+    {
+        // The sharp corners overlap by 1 x 1 mm: with r1 = 8 the rounded outlines
+        // stay apart, with r1 = 0.4 they overlap.
+        QVERIFY(check(job({m4(20, 20, 50, 50), m4(69, 69, 50, 50)})).empty());
+        M4Pocket a = m4(20, 20, 50, 50), b = m4(69, 69, 50, 50);
+        a.cornerRadius = b.cornerRadius = 0.4;  // r1 - alpha2 = 0.1 leaves room for a 0.1 mm end mill
+        const auto ds = checkJob(job({a, b}), TechnologyTable::builtIn(), {tool(2, ToolType::FlatEndMill, 0.1)});
+        EXPECT_ONLY(ds, 2, "corners", "overlaps the figure of unit 1");
+    }
+
+    void severalErrorsCollectedAtOnce()
+    {
+        M4Pocket bad = m4();
+        bad.depth = 0;
+        M2DPocket worse = m2d();
+        worse.toolUse = 3;
+        Job j = job({bad, worse});
+        j.material = "unobtainium";
+        const auto ds = check(j);
+        QCOMPARE(ds.size(), std::size_t(3));
+        QCOMPARE(ds[0].field, std::string("material"));
+        QVERIFY(ds[1].unit == 1 && ds[1].field == "depth");
+        QVERIFY(ds[2].unit == 2 && ds[2].field == "U" && ds[2].module == "M2D");
+    }
+    void errorsAreCapped()
+    {
+        std::vector<ModuleInput> units;
+        for (int i = 0; i < 150; ++i) {
+            M4Pocket p = m4();
+            p.toolUse = 2;
+            units.push_back(p);
+        }
+        const auto ds = check(job(units));
+        QCOMPARE(ds.size(), std::size_t(100));
+        QVERIFY(ds.back().message.find("more errors not listed") != std::string::npos);
+    }
+
+    void inchJobQuotesInches()
+    {
+        Job j = job({m4(1, 1, 4, 2)});
+        j.lengthUnit = LengthUnit::Inch;
+        j.stock = {0, 0, 8, 6, 2};
+        auto& p = std::get<M4Pocket>(j.units[0].module);
+        p.cornerRadius = 0.3;
+        p.depth = 0.5;
+        QVERIFY2(check(j).empty(), dump(check(j)));
+        p.cornerRadius = 1.25;
+        EXPECT_ONLY(check(j), 1, "cornerRadius", "corner radius 1.25 in is larger than half the shortest side (2 in long)");
+        p.cornerRadius = 0.3;
+        p.depth = -0.5;
+        EXPECT_ONLY(check(j), 1, "depth", "the depth is -0.5 in");
+        p.depth = 0.5;
+        p.tools = {{"roughing", 5}};
+        EXPECT_ONLY(check(j), 1, "tools.roughing", "r1 − α2 = 0.2882 in");  // 7.62 mm - 0.3 mm
+    }
+
+    void technologyInForce()
+    {
+        Job j = job({m4()});
+        j.technology.alpha2 = 0.5;
+        const auto t = jobTechnology(j, TechnologyTable::builtIn());
+        QVERIFY(t && t->alpha2 == 0.5 && t->alpha1 == 1.0 && t->gamma == 0.5);
+        j.material = "steel-s45c";
+        QCOMPARE(jobTechnology(j, TechnologyTable::builtIn())->beta2, 0.25);
+        j.material = "unobtainium";
+        QVERIFY(!jobTechnology(j, TechnologyTable::builtIn()));
+    }
+
+    void unitOrderIsNearestNeighbourFromTheFirst()
+    {
+        const Job j = job({m4(0, 0, 20, 20), m4(100, 0, 20, 20), m4(20, 0, 20, 20), m4(60, 0, 20, 20)});
+        QCOMPARE(machiningOrder(j), (std::vector<int>{0, 2, 3, 1}));
+        const Job tie = job({m4(40, 0, 20, 20), m4(80, 0, 20, 20), m4(0, 0, 20, 20)});
+        QCOMPARE(machiningOrder(tie), (std::vector<int>{0, 1, 2}));  // equal distance: the earlier unit first
+        QVERIFY(machiningOrder(job({})).empty());
+    }
+};
+
+QTEST_APPLESS_MAIN(TestInputCheckJob)
+#include "test_input_check_job.moc"

@@ -1,0 +1,141 @@
+// The preview scene inside the station's Qt widget (PreviewWidget, VTK in a
+// QOpenGLWidget) under X: the hand-built plan's path, rapid and tool at
+// their pixels, the selected step and highlighted move; the frame is
+// opaque when grabbed as part of a window (as the station's screenshots
+// are); the sample m4-standard.taiwa shows background and path; a click on
+// a path reports its move and a left drag turns the camera without
+// clicking. Needs an X display (xvfb-run -a).
+#include "support/hand_plan.h"
+#include "support/images.h"
+#include "ui/preview_widget.h"
+#include "viz/palette.h"
+#include "viz/scene.h"
+
+#include <QApplication>
+#include <QSignalSpy>
+#include <QVBoxLayout>
+#include <QtTest>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+using namespace taiwa;
+using namespace taiwa::test;
+using namespace taiwa::viz;
+using taiwa::ui::PreviewWidget;
+
+class TestRenderPreviewWidget : public QObject {
+    Q_OBJECT
+    Plan plan_ = handPlan();
+
+private slots:
+    void widgetShowsTheScene()
+    {
+        PreviewWidget w;
+        w.resize(kW, kH);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        w.setView(ViewPreset::Top);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        const QByteArray shots = qgetenv("TAIWA_SCREENSHOTS");
+        if (!shots.isEmpty()) img.save(shots + "/preview-widget-top.png");
+        QCOMPARE(img.size(), QSize(kW, kH));
+        const auto& scene = w.scene();
+        QVERIFY(near(img.pixel(3, 3), palette::kBackground, 0));
+        QVERIFY(colourNear(img, scene.toPixel({50, 40, -5}, kW, kH), palette::kFeed));
+        QVERIFY(colourNear(img, scene.toPixel({82.5, 55, 5}, kW, kH), palette::kRapid));
+        const auto start = scene.toPixel({40, 40, 5}, kW, kH);
+        QVERIFY(goldish(img.pixel(int(start[0]), int(start[1]))));
+
+        w.setSelectedStep(kRoughing);
+        w.highlightMove(kRoughing, kSlotMove);
+        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(colourNear(img, scene.toPixel({55, 40, -5}, kW, kH), palette::kHighlight));
+
+        w.setShowStock(true);
+        w.setView(ViewPreset::Iso);
+        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        if (!shots.isEmpty()) img.save(shots + "/preview-widget.png");
+        // The pocket floor, lit obliquely: darker than the palette, still green.
+        const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
+        const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
+        QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
+    }
+
+    // Grabbed as part of a window (how the station's screenshots are taken)
+    // the frame is opaque: no alpha is left for the grab to darken the
+    // background and the translucent stock into near-black.
+    void grabbedInAWindowIsOpaque()
+    {
+        QWidget host;
+        auto* w = new PreviewWidget(&host);
+        (new QVBoxLayout(&host))->addWidget(w);
+        host.resize(kW, kH);
+        w->setPlan(std::make_shared<const Plan>(plan_));
+        w->setShowStock(true);
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        QTest::qWait(100);
+        const QImage img = host.grab().toImage().convertToFormat(QImage::Format_RGB32);
+        const QPoint corner = w->geometry().topLeft() + QPoint(3, 3);
+        QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));
+    }
+
+    void widgetShowsTheSamplePlan()
+    {
+        PreviewWidget w;
+        w.resize(400, 300);
+        w.setPlan(std::make_shared<const Plan>(samplePlan("m4-standard.taiwa")));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(img.size(), QSize(400, 300));
+        int background = 0, blue = 0;
+        for (int y = 0; y < img.height(); ++y)
+            for (int x = 0; x < img.width(); ++x) {
+                const QRgb c = img.pixel(x, y);
+                background += near(c, palette::kBackground, 0) ? 1 : 0;
+                blue += qBlue(c) > 180 && qBlue(c) > qRed(c) + 100 ? 1 : 0;
+            }
+        QVERIFY2(background > 400 * 300 / 10, qPrintable(QString::number(background)));
+        QVERIFY2(blue > 300, qPrintable(QString::number(blue)));
+    }
+
+    void widgetClickPicksAndDragRotates()
+    {
+        PreviewWidget w;
+        w.resize(kW, kH);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        w.setView(ViewPreset::Top);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QSignalSpy clicked(&w, &PreviewWidget::moveClicked);
+        const auto at = w.scene().toPixel({55, 40, -5}, kW, kH);
+        QTest::mouseClick(&w, Qt::LeftButton, {}, QPoint(int(at[0]), int(at[1])));
+        QCOMPARE(clicked.size(), 1);
+        QCOMPARE(clicked[0][0].toInt(), kRoughing);
+        QCOMPARE(clicked[0][1].toInt(), kSlotMove);
+
+        // A left drag turns the camera and clicks nothing.
+        vtkCamera* cam = w.scene().renderer()->GetActiveCamera();
+        double before[3], after[3];
+        cam->GetPosition(before);
+        const QPointF from(400, 300), to(520, 260);
+        QMouseEvent press(QEvent::MouseButtonPress, from, w.mapToGlobal(from), Qt::LeftButton, Qt::LeftButton, {});
+        QApplication::sendEvent(&w, &press);
+        for (int k = 1; k <= 6; ++k) {
+            const QPointF p = from + (to - from) * (k / 6.0);
+            QMouseEvent move(QEvent::MouseMove, p, w.mapToGlobal(p), Qt::NoButton, Qt::LeftButton, {});
+            QApplication::sendEvent(&w, &move);
+        }
+        QMouseEvent release(QEvent::MouseButtonRelease, to, w.mapToGlobal(to), Qt::LeftButton, Qt::NoButton, {});
+        QApplication::sendEvent(&w, &release);
+        cam->GetPosition(after);
+        QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[1] - before[1]) + std::abs(after[2] - before[2]) > 1.0);
+        QCOMPARE(clicked.size(), 1);
+    }
+};
+
+QTEST_MAIN(TestRenderPreviewWidget)
+#include "test_render_preview_widget.moc"
