@@ -28,15 +28,22 @@ class TestRenderPreviewWidget : public QObject {
     Q_OBJECT
     Plan plan_ = handPlan();
 
-private slots:
-    void widgetShowsTheScene()
+    // The hand-built plan in the widget, kW x kH, top view, shown.
+    void showFromTop(PreviewWidget& w)
     {
-        PreviewWidget w;
         w.resize(kW, kH);
         w.setPlan(std::make_shared<const Plan>(plan_));
         w.setView(ViewPreset::Top);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
+    }
+
+private slots:
+    void widgetShowsTheScene()
+    {
+        PreviewWidget w;
+        showFromTop(w);
+        if (QTest::currentTestFailed()) return;
         QImage img = w.grabImage().convertToFormat(QImage::Format_RGB32);
         const QByteArray shots = qgetenv("TAIWA_SCREENSHOTS");
         if (!shots.isEmpty()) img.save(shots + "/preview-widget-top.png");
@@ -105,11 +112,8 @@ private slots:
     void widgetClickPicksAndDragRotates()
     {
         PreviewWidget w;
-        w.resize(kW, kH);
-        w.setPlan(std::make_shared<const Plan>(plan_));
-        w.setView(ViewPreset::Top);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        showFromTop(w);
+        if (QTest::currentTestFailed()) return;
         QSignalSpy clicked(&w, &PreviewWidget::moveClicked);
         const auto at = w.scene().toPixel({55, 40, -5}, kW, kH);
         QTest::mouseClick(&w, Qt::LeftButton, {}, QPoint(int(at[0]), int(at[1])));
