@@ -37,10 +37,6 @@ double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(
 // and the first step (the snapshots are kept, so the stock comes from cache).
 void BM_SelectStep(benchmark::State& state)
 {
-    if (auto problem = viz::displayProblem()) {
-        state.SkipWithError(problem->c_str());
-        return;
-    }
     const auto plan = samplePlan();
     if (!plan || plan->steps.empty()) {
         state.SkipWithError("cannot plan resources/samples/plate.taiwa (run from the source root)");

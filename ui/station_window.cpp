@@ -272,7 +272,7 @@ void StationWindow::onFieldEdited(UnitForm* form, int field, std::optional<doubl
 void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
 {
     if (!plan) return;
-    if (preview_) preview_->setPlan(plan, plan == runner_->fullPlan() ? runner_->stockSimulation() : nullptr);
+    if (preview_) preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
     steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
 }
 

@@ -55,13 +55,6 @@ struct XConnection {
 
 }  // namespace
 
-std::optional<std::string> displayProblem()
-{
-    const XConnection x;
-    if (!x.display) return x.problem;
-    return std::nullopt;
-}
-
 struct OffscreenWindow::Impl {
     XConnection x;  // declared before the window: closed after it
     vtkSmartPointer<vtkRenderWindow> window;

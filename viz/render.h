@@ -25,9 +25,6 @@ struct RenderOptions {
 // Renders and writes the PNG; the error message, or nothing on success.
 std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& options, const std::string& pngPath);
 
-// Why offscreen rendering cannot work here (no X display), or nothing.
-std::optional<std::string> displayProblem();
-
 // An offscreen render window on a connection to the X display of its own,
 // closed after the window: VTK opens no connection itself, so none is left
 // behind however many windows come and go (benchmarks make hundreds).

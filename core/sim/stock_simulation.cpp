@@ -53,11 +53,10 @@ const HeightField& StockSimulation::after(int k)
     auto base = snapshots_.lower_bound(k);
     HeightField field = base == snapshots_.begin() ? initial_ : std::prev(base)->second;
     const int from = base == snapshots_.begin() ? 0 : std::prev(base)->first + 1;
-    for (int i = from; i < k; ++i) {
+    for (int i = from; i <= k; ++i) {
         cutSteps(field, i, i + 1);
-        if (isCheckpoint(i)) snapshots_.insert_or_assign(i, field);
+        if (i < k && isCheckpoint(i)) snapshots_.insert_or_assign(i, field);
     }
-    cutSteps(field, k, k + 1);
     return keep(k, std::move(field));
 }
 
