@@ -4,9 +4,9 @@
 #include "app/cli.h"
 
 #include "app/options.h"
-#include "check/input_check.h"
-#include "io/job_io.h"
-#include "pipeline/export.h"
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 

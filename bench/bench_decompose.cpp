@@ -2,8 +2,9 @@
 // mix and taper, M2D every fifth unit, on a grid of touching and separate
 // figures): checkJob, machiningOrder and the decomposition of all units,
 // each reported as time per unit.
-#include "check/input_check.h"
-#include "decompose/decompose.h"
+#include "job/job_check.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "bench_job.h"
 
 #include <benchmark/benchmark.h>
@@ -75,9 +76,9 @@ void BM_DecomposeAll(benchmark::State& state)
         steps = 0;
         for (int u = 0; u < kUnits; ++u) {
             const auto& module = job.units[static_cast<std::size_t>(u)].module;
-            const auto unitSteps = std::holds_alternative<M4Pocket>(module)
-                                       ? decomposeM4(std::get<M4Pocket>(module), tech, u)
-                                       : decomposeM2D(std::get<M2DPocket>(module), tech, 6.0, u);
+            const auto unitSteps = (module).is<M4Pocket>()
+                                       ? decomposeM4((module).as<M4Pocket>(), tech, u)
+                                       : decomposeM2D((module).as<M2DPocket>(), tech, 6.0, u);
             steps += unitSteps.size();
             benchmark::DoNotOptimize(unitSteps.data());
         }

@@ -2,7 +2,7 @@
 // tool choice, tool paths), posting G-code, and the whole export with sheet
 // and PDF. Prints G-code bytes and blocks per second and the export time.
 #include "bench_job.h"
-#include "pipeline/export.h"
+#include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "tools/tool_library.h"

@@ -9,6 +9,8 @@
 // Offscreen unless a display is set; under `xvfb-run -a` the preview exists
 // and its setPlan is inside FullPlan. Run from the source tree's root, or
 // set TAIWA_BENCH_JOB to the job file.
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "ui/job_document.h"
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
@@ -36,7 +38,7 @@ void changeDepth()
 {
     Job j = window->document()->job();
     depth = depth == 10.0 ? 10.5 : 10.0;
-    std::get<M4Pocket>(j.units[0].module).depth = depth;
+    (j.units[0].module).as<M4Pocket>().depth = depth;
     window->document()->edit(j, "bench", "bench");
 }
 

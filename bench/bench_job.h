@@ -5,6 +5,8 @@
 #pragma once
 
 #include "model/job.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 
 namespace taiwa::bench {
 

@@ -5,7 +5,7 @@
 // Xvfb), walking forward through every step as the play button does, and
 // jumping back to the first step. Run under `xvfb-run -a` from the source
 // tree's root, or set TAIWA_BENCH_JOB.
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "tools/tool_library.h"
 #include "viz/render.h"
 #include "viz/scene.h"

@@ -4,7 +4,8 @@
 // wall slope with alpha2 left, theta2 defaulting to theta1, and the pilot,
 // floor, wall and inclined-face steps. Expectations come from the spec's
 // formulas written out here.
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 
 #include <QtTest>
 

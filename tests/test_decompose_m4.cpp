@@ -3,7 +3,8 @@
 // clockwise, pinned to the step list the spec's formulas give. Expected
 // outlines are computed here from the side lines (each side moved along its
 // own normal by the total inward distance), not by calling the implementation.
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 
 #include <QtTest>
 

@@ -7,7 +7,10 @@
 // with a newer recovery file adopts it and keeps autosaving it; killed with
 // SIGKILL, it leaves the recovery file whole and the job file untouched, and
 // the next start restores it.
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "io/job_io.h"
+#include "job/job_file.h"
 #include "support/support.h"
 #include "ui/autosave.h"
 #include "ui/file_actions.h"
@@ -66,7 +69,7 @@ private slots:
         QVERIFY(QFile::exists(recovery));
         StationWindow w2;
         QCOMPARE(w2.document()->job().units.size(), std::size_t(1));
-        const auto& m4 = std::get<M4Pocket>(w2.document()->job().units[0].module);
+        const auto& m4 = (w2.document()->job().units[0].module).as<M4Pocket>();
         QCOMPARE(m4.depth, 7.25);
         QCOMPARE(m4.cornerRadius, 6.5);
         QCOMPARE(w2.findChild<QLineEdit*>("m4.depth")->text(), QString("7.25"));
@@ -98,7 +101,7 @@ private slots:
         }
         {
             StationWindow w(job);  // the recovery is newer than the file: restored, still modified
-            QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 11.0);
+            QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 11.0);
             QCOMPARE(w.document()->path(), job);
             QVERIFY(w.document()->isModified());
             QVERIFY(w.fileActions()->save());  // saved: the recovery file goes
@@ -106,14 +109,14 @@ private slots:
         }
         // A stale recovery file (older than the job file) is not offered.
         Job stale = j;
-        std::get<M4Pocket>(stale.units[0].module).depth = 3;
+        (stale.units[0].module).as<M4Pocket>().depth = 3;
         QVERIFY(!writeFileAtomically(recovery.toStdString(), writeJob(stale)));
         QFile f(recovery);
         QVERIFY(f.open(QIODevice::ReadWrite));
         QVERIFY(f.setFileTime(QDateTime::currentDateTime().addSecs(-3600), QFileDevice::FileModificationTime));
         f.close();
         StationWindow w(job);
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 11.0);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 11.0);
         QVERIFY(!w.document()->isModified());
     }
 
@@ -130,7 +133,7 @@ private slots:
         const std::string savedText = writeJob(saved);
         QVERIFY(!writeFileAtomically(job.toStdString(), savedText));
         Job edited = saved;
-        std::get<M4Pocket>(edited.units[0].module).depth = 11;
+        (edited.units[0].module).as<M4Pocket>().depth = 11;
         const QString recovery = Autosaver::recoveryPath(job);
         QVERIFY(!writeFileAtomically(recovery.toStdString(), writeJob(edited)));
         const QDateTime before = QDateTime::currentDateTime();

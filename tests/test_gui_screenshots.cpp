@@ -5,6 +5,8 @@
 // view renders) it also writes the PNGs of docs/screenshots/: the whole
 // window, the window with single steps selected, and a contact sheet of the
 // 3-D view with each step selected in turn (simulated stock after it).
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "support/support.h"
 #include "ui/job_document.h"
 #include "ui/language.h"
@@ -110,7 +112,7 @@ private slots:
         // The M2D unit's form with its drawing.
         const auto& units = w.document()->job().units;
         for (std::size_t i = 0; i < units.size(); ++i)
-            if (std::holds_alternative<M2DPocket>(units[i].module)) {
+            if ((units[i].module).is<M2DPocket>()) {
                 w.unitList()->selectUnit(static_cast<int>(i));
                 break;
             }

@@ -3,7 +3,9 @@
 // checks (checkJob messages and "not a number"), the step list, code combo
 // boxes, undo/redo (one step per field), the NC view <-> step mapping, and
 // the save/open round trip.
-#include "check/input_check.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
+#include "job/job_check.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -88,7 +90,7 @@ private slots:
             QTest::keyClicks(e, values[i]);
             QTest::keyClick(e, Qt::Key_Tab);
         }
-        const auto& m4 = std::get<M4Pocket>(w.document()->job().units[0].module);
+        const auto& m4 = (w.document()->job().units[0].module).as<M4Pocket>();
         QCOMPARE(m4.corners[2].x, 70.0);
         QCOMPARE(m4.corners[3].y, 50.0);
         QCOMPARE(m4.cornerRadius, 8.0);
@@ -118,16 +120,16 @@ private slots:
         QVERIFY(!isRed(depth));
         QVERIFY(!label(w, "m4.depth")->isVisible());
         QCOMPARE(depth->text(), QString("12.5"));
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 12.5);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 12.5);
         QCOMPARE(w.stepTable()->stepLabels(),
                  QStringList({"Pilot hole", "Roughing I", "Floor finishing I", "Wall finishing I"}));
 
         // Undo (Ctrl+Z in the field) goes back to the depth before the typing; redo re-applies.
         QTest::keyClick(depth, Qt::Key_Z, Qt::ControlModifier);
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 9.0);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 9.0);
         QCOMPARE(depth->text(), QString("9"));
         QTest::keyClick(depth, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).depth, 12.5);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 12.5);
         QCOMPARE(depth->text(), QString("12.5"));
         // One undo step per field edit: adding the unit, the five fields typed
         // with a value other than the new unit's (P2.x, P3.x, P3.y, P4.y,
@@ -142,12 +144,12 @@ private slots:
         QVERIFY(u->currentText().startsWith("1"));
         u->setFocus();
         QTest::keyClick(u, Qt::Key_End);
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).toolUse, 9);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().toolUse, 9);
         QCOMPARE(w.stepTable()->stepLabels(), QStringList({"Pilot hole", "Roughing I"}));
         QTest::keyClick(u, Qt::Key_Return);  // Enter moves on, as Tab does
         QCOMPARE(QApplication::focusWidget()->objectName(), QString("m4.F"));
         w.document()->undoStack()->undo();
-        QCOMPARE(std::get<M4Pocket>(w.document()->job().units[0].module).toolUse, 1);
+        QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().toolUse, 1);
         QCOMPARE(u->currentData().toInt(), 1);
 
         // The NC program: putting the cursor on a line posted from a step names
@@ -222,7 +224,7 @@ private slots:
         QTest::keyClick(units, Qt::Key_Down);  // mm -> inch
         const Job& in = w.document()->job();
         QCOMPARE(in.lengthUnit, LengthUnit::Inch);
-        QCOMPARE(std::get<M4Pocket>(in.units[0].module).corners[1].x, 2.362205);  // 60 mm
+        QCOMPARE((in.units[0].module).as<M4Pocket>().corners[1].x, 2.362205);  // 60 mm
         QCOMPARE(in.stock.width, std::round(mm.stock.width / 25.4 * 1e6) / 1e6);
         QCOMPARE(edit(w, "m4.depth")->text(), QString("0.393701"));
         QTest::keyClick(units, Qt::Key_Up);  // back to mm: the values typed come back
@@ -265,15 +267,15 @@ private slots:
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
         QCOMPARE(w.document()->job().units.size(), std::size_t(2));
-        QVERIFY(std::holds_alternative<M2DPocket>(w.document()->job().units[1].module));
+        QVERIFY((w.document()->job().units[1].module).is<M2DPocket>());
         retype(edit(w, "m2d.theta2"), "15");
-        QCOMPARE(std::get<M2DPocket>(w.document()->job().units[1].module).theta2, std::optional<double>(15.0));
+        QCOMPARE((w.document()->job().units[1].module).as<M2DPocket>().theta2, std::optional<double>(15.0));
         retype(edit(w, "m2d.theta2"), "");
-        QVERIFY(!std::get<M2DPocket>(w.document()->job().units[1].module).theta2);
+        QVERIFY(!(w.document()->job().units[1].module).as<M2DPocket>().theta2);
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.up"), Qt::LeftButton);
-        QVERIFY(std::holds_alternative<M2DPocket>(w.document()->job().units[0].module));
+        QVERIFY((w.document()->job().units[0].module).is<M2DPocket>());
         w.document()->undoStack()->undo();
-        QVERIFY(std::holds_alternative<M4Pocket>(w.document()->job().units[0].module));
+        QVERIFY((w.document()->job().units[0].module).is<M4Pocket>());
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.delete"), Qt::LeftButton);
         QCOMPARE(w.document()->job().units.size(), std::size_t(1));
     }

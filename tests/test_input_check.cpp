@@ -2,7 +2,9 @@
 // (field, unit and message checked). The job-level checks are in
 // test_input_check_job.cpp; the hand-made tool library and the helpers in
 // support/check_fixtures.h.
-#include "check/input_check.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
+#include "job/job_check.h"
 #include "support/check_fixtures.h"
 
 #include <QtTest>

@@ -1,7 +1,9 @@
 // Input processing of whole jobs: overlapping versus touching figures
 // (rounded corners included), several errors collected at once and capped,
 // inch jobs quoting inches, the technology data in force, and the unit order.
-#include "check/input_check.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
+#include "job/job_check.h"
 #include "support/check_fixtures.h"
 
 #include <QtTest>
@@ -74,7 +76,7 @@ private slots:
         Job j = job({m4(1, 1, 4, 2)});
         j.lengthUnit = LengthUnit::Inch;
         j.stock = {0, 0, 8, 6, 2};
-        auto& p = std::get<M4Pocket>(j.units[0].module);
+        auto& p = (j.units[0].module).as<M4Pocket>();
         p.cornerRadius = 0.3;
         p.depth = 0.5;
         QVERIFY2(check(j).empty(), dump(check(j)));

@@ -4,8 +4,10 @@
 // hand-built jobs survive writeJob/readJob; canonical text and defaults.
 // Refusals are in test_job_refusals.cpp. TAIWA_REGENERATE=1 rewrites the
 // samples canonically (review the diff before committing).
-#include "check/input_check.h"
-#include "io/job_io.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
+#include "job/job_check.h"
+#include "job/job_file.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
 
@@ -151,13 +153,13 @@ private slots:
             const Job job = *readJobFile(f.toStdString()).job;
             inch = inch || job.lengthUnit == LengthUnit::Inch;
             for (const auto& u : job.units) {
-                if (const auto* m = std::get_if<M4Pocket>(&u.module)) {
+                if (const auto* m = (u.module).getIf<M4Pocket>()) {
                     seen.insert("M4 U" + std::to_string(m->toolUse));
                     seen.insert("M4 F" + std::to_string(m->wallFinish));
                     seen.insert("M4 H" + std::to_string(m->pilotHole));
                     if (m->taper > 0) seen.insert("M4 taper F" + std::to_string(m->wallFinish));
                 } else {
-                    const auto& d = std::get<M2DPocket>(u.module);
+                    const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
                     if (d.theta2) seen.insert("M2D theta2");
                 }
@@ -223,12 +225,12 @@ private slots:
         QCOMPARE(j.workOffset, std::string("G54"));
         QCOMPARE(j.stock.x, 0.0);
         QVERIFY(j.technology.empty());
-        const auto& m = std::get<M4Pocket>(j.units[0].module);
+        const auto& m = (j.units[0].module).as<M4Pocket>();
         QCOMPARE(m.taper, 0.0);
         QCOMPARE(m.wallFinish, 1);
         QCOMPARE(m.pilotHole, 0);
         QVERIFY(m.tools.empty());
-        const auto& d = std::get<M2DPocket>(j.units[1].module);
+        const auto& d = (j.units[1].module).as<M2DPocket>();
         QVERIFY(!d.theta2);
         QCOMPARE(d.scallop, 0.01);
         QCOMPARE(d.pilotHole, 0);
@@ -242,8 +244,8 @@ private slots:
         text.replace(text.find("\"F\": 3"), 6, "\"F\": 7.0");
         const JobReadResult r = readJob(text);
         QVERIFY(r.job);
-        QCOMPARE(std::get<M4Pocket>(r.job->units[0].module).toolUse, 4);
-        QCOMPARE(std::get<M4Pocket>(r.job->units[0].module).wallFinish, 7);
+        QCOMPARE((r.job->units[0].module).as<M4Pocket>().toolUse, 4);
+        QCOMPARE((r.job->units[0].module).as<M4Pocket>().wallFinish, 7);
     }
 
     void hugeNumbersAreKeptOrRefusedNeverCrash()
@@ -252,7 +254,7 @@ private slots:
         text.replace(text.find("\"depth\": 12.7"), 13, "\"depth\": 1.7976931348623157e308");
         const JobReadResult big = readJob(text);
         QVERIFY(big.job);
-        QCOMPARE(std::get<M4Pocket>(big.job->units[0].module).depth, 1.7976931348623157e308);
+        QCOMPARE((big.job->units[0].module).as<M4Pocket>().depth, 1.7976931348623157e308);
         QCOMPARE(readJob(writeJob(*big.job)).job, big.job);
         text.replace(text.find("1.7976931348623157e308"), 22, "-1e999");
         const JobReadResult over = readJob(text);

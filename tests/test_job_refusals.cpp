@@ -4,6 +4,7 @@
 // without a crash; diagnostics are capped; writes are atomic.
 // TAIWA_REGENERATE=1 rewrites the *.expected files (review the diff).
 #include "io/job_io.h"
+#include "job/job_file.h"
 #include "support/support.h"
 
 #include <QDir>

@@ -2,6 +2,8 @@
 #include "model/codes.h"
 #include "model/geometry.h"
 #include "model/job.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "model/step.h"
 #include "model/technology.h"
 
@@ -69,7 +71,7 @@ private slots:
         m.taper = 5;
         job.units.push_back({"a", m});
         const Job mm = toMillimetres(job);
-        const auto& p = std::get<M4Pocket>(mm.units[0].module);
+        const auto& p = (mm.units[0].module).as<M4Pocket>();
         QCOMPARE(p.depth, 12.7);
         QCOMPARE(p.taper, 5.0);
         QCOMPARE(mm.stock.width, 101.6);

@@ -6,7 +6,7 @@
 // before; the stock surface is closed and merged; picking finds the move
 // under a pixel; no display is an error message. The same scene inside the
 // Qt widget: test_render_preview_widget. Needs an X display (xvfb-run -a).
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "support/hand_plan.h"
 #include "support/images.h"
 #include "support/support.h"

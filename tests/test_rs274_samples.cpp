@@ -6,11 +6,13 @@
 // - roughing reaches exactly -(T - beta2) and leaves exactly alpha2 on the walls,
 // - the finishing steps reach the floor at exactly -T,
 // - the inch tape describes the same moves as the mm tape.
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "support/pocket_geometry.h"
 #include "support/rs274.h"
 #include "support/support.h"
 
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 

@@ -1,8 +1,9 @@
 // The machining instruction sheet of a planned sample job: every step's row
 // with its numbers, the tool list, escaping of job text, and a PDF that
 // poppler reads as A4 landscape pages.
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "pipeline/pipeline.h"
+#include "export/sheet_pdf.h"
 #include "sheet/sheet.h"
 #include "support/support.h"
 #include "tools/cutting.h"
@@ -84,7 +85,7 @@ private slots:
         s.path = path;
         s.minutes = 12.5;
         plan.steps = {s};
-        plan.notes = {"T27 <worn> & chipped"};
+        plan.diagnostics.push_back({Severity::Warning, 1, "M4", "tools.roughing", "T27 <worn> & chipped"});
         plan.toolChanges = 1;
         plan.totalMinutes = 12.63;
         SheetOptions o;

@@ -3,10 +3,11 @@
 // cycle makes a hole of the drill's diameter with its conical point; ball,
 // taper and arc sweeps follow their profiles; per-step snapshots are the
 // stock before and after each step and are cached.
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "sim/cutter_profile.h"
 #include "sim/material_removal.h"
 #include "sim/path_samples.h"
+#include "pipeline/pipeline.h"
 #include "sim/stock_simulation.h"
 #include "support/support.h"
 #include "tools/tool_library.h"

@@ -2,7 +2,8 @@
 // corner, the pilot drill chosen after the roughing tool, taper walls, pins,
 // no-fit messages; the job-wide order honours every dependency and saves
 // tool changes; tool-life notes.
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "tools/tool_choice.h"
 #include "tools/tool_library.h"
 

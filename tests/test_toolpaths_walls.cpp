@@ -6,7 +6,8 @@
 // and never gouges the pocket; drilling pecks when deep.
 #include "test_toolpaths_support.h"
 
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 #include "model/job.h"
 
 #include <QtTest>

@@ -2,6 +2,7 @@
 #include "ui/autosave.h"
 
 #include "io/job_io.h"
+#include "job/job_file.h"
 #include "ui/job_document.h"
 
 #include <QCryptographicHash>

@@ -1,10 +1,11 @@
-// What the unit forms show: one FieldSpec per input of a module (key for the
-// widget's objectName, label, the job-file field the checks name, how to read
-// and write the value on a MachiningUnit). The forms and the undo commands are
-// generic over these descriptions.
+// What the unit forms show, in Qt's terms: the module's own form description
+// (core/modules/form_fields.h, one FormField per input) as FieldSpecs with
+// QStrings and getters/setters on a MachiningUnit. The forms and the undo
+// commands are generic over these descriptions; no module is named here.
 #pragma once
 
 #include "model/job.h"
+#include "modules/module_kind.h"
 
 #include <QString>
 #include <QStringList>
@@ -20,7 +21,7 @@ enum class FieldKind { Number, OptionalNumber, Code };
 
 struct FieldSpec {
     QString key;                 // widget objectName suffix: "P1.x", "depth", "U"
-    QString label;               // form label: "P1 X", "T (depth)"
+    QString label;               // form label (source text): "P1 X", "T (depth)"
     QString placeholder;         // shown in an empty field (OptionalNumber: what empty means)
     QStringList diagFields;      // checkJob field names shown on this widget
     FieldKind kind = FieldKind::Number;
@@ -29,11 +30,9 @@ struct FieldSpec {
     std::function<void(MachiningUnit&, std::optional<double>)> set;
 };
 
-// Fields of the module forms, top to bottom (the tab order).
-const std::vector<FieldSpec>& m4Fields();
-const std::vector<FieldSpec>& m2dFields();
-const std::vector<FieldSpec>& fieldsFor(const ModuleInput& m);
-// Widget objectName prefix of a module: "m4", "m2d".
-QString modulePrefix(const ModuleInput& m);
+// Fields of a module's form, top to bottom (the tab order).
+const std::vector<FieldSpec>& fieldsFor(const ModuleKind& kind);
+// Widget objectName prefix of a module: its name in lower case ("m4", "m2d").
+QString modulePrefix(const ModuleKind& kind);
 
 }  // namespace taiwa::ui

@@ -2,8 +2,8 @@
 // export.
 #include "ui/file_actions.h"
 
-#include "io/job_io.h"
-#include "pipeline/export.h"
+#include "job/job_file.h"
+#include "export/export.h"
 #include "post/post.h"
 #include "ui/autosave.h"
 #include "ui/job_document.h"

@@ -3,7 +3,7 @@
 // as in the unit forms.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 
 #include <QWidget>
 

@@ -1,6 +1,10 @@
-// The module palette and the module drawings (SVG from resources/modules).
+// The module palette and the module drawings (SVG from each module's folder,
+// core/modules/<kind>/<kind>.svg, compiled in as Qt resources).
 #include "ui/module_palette.h"
 
+#include "modules/registry.h"
+
+#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QPainter>
 #include <QSvgRenderer>
@@ -8,9 +12,9 @@
 
 namespace taiwa::ui {
 
-QPixmap moduleDrawing(const QString& module, int width)
+QPixmap moduleDrawing(const QString& resource, int width)
 {
-    QSvgRenderer svg(QStringLiteral(":/modules/%1.svg").arg(module));
+    QSvgRenderer svg(resource);
     const QSize base = svg.defaultSize().isValid() ? svg.defaultSize() : QSize(420, 220);
     const QSize size(width, width * base.height() / base.width());
     QPixmap pm(size);
@@ -25,12 +29,13 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
 {
     auto* box = new QHBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
-    const std::pair<QString, QString> modules[] = {{"m4", tr("Add M4 pocket")}, {"m2d", tr("Add M2D 3-D pocket")}};
-    for (const auto& [module, text] : modules) {
+    for (const ModuleKind* kind : moduleKinds()) {
+        const QString module = QString::fromUtf8(kind->name());
+        const QString text = QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText());
         auto* b = new QToolButton(this);
-        b->setObjectName(QStringLiteral("unit.add%1").arg(module.toUpper()));
+        b->setObjectName(QStringLiteral("unit.add%1").arg(module));
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
-        const QPixmap drawing = moduleDrawing(module, 140);
+        const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), 140);
         b->setIcon(QIcon(drawing));
         b->setIconSize(drawing.size());
         b->setText(text);

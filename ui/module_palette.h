@@ -1,6 +1,6 @@
-// The module palette: one button per machining module, each showing the
-// module's drawing with the dimension symbols of the part drawing (M4: P1..P4,
-// r1, T, S; M2D: L1, L2, θ1, θ2, T, r1). A click adds a unit of that module.
+// The module palette: one button per machining module kind (in the order of
+// core/modules/registry.cpp), each showing the module's drawing with the
+// dimension symbols of the part drawing. A click adds a unit of that module.
 #pragma once
 
 #include <QPixmap>
@@ -8,8 +8,9 @@
 
 namespace taiwa::ui {
 
-// The drawing of a module ("m4", "m2d") rendered at `width` pixels wide.
-QPixmap moduleDrawing(const QString& module, int width);
+// A module's drawing (its Qt resource path, ModuleKind::drawing()) rendered
+// at `width` pixels wide.
+QPixmap moduleDrawing(const QString& resource, int width);
 
 class ModulePalette : public QWidget {
     Q_OBJECT
@@ -17,7 +18,7 @@ public:
     explicit ModulePalette(QWidget* parent = nullptr);
 
 signals:
-    void addModule(const QString& module);  // "m4", "m2d"
+    void addModule(const QString& module);  // the module kind's name: "M4", "M2D"
 };
 
 }  // namespace taiwa::ui

@@ -1,7 +1,7 @@
 // Checks and plans for the window, the full plan on a worker thread.
 #include "ui/plan_runner.h"
 
-#include "check/input_check.h"
+#include "job/job_check.h"
 #include "tools/tool_library.h"
 
 #include <QCoreApplication>

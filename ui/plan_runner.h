@@ -6,7 +6,7 @@
 // also simulates the stock of the finished part.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 #include "model/job.h"
 #include "model/tool.h"
 #include "pipeline/pipeline.h"

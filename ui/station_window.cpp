@@ -2,6 +2,10 @@
 // document, plan runner, forms, panels and file actions.
 #include "ui/station_window.h"
 
+#include "modules/registry.h"
+
+#include <QCoreApplication>
+
 #include "ui/autosave.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -42,9 +46,9 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     : QMainWindow(parent), doc_(new JobDocument(this)), runner_(new PlanRunner(this)),
       autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, this)),
       palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
-      forms_(new QStackedWidget), m4Form_(new UnitForm(m4Fields(), "m4")), m2dForm_(new UnitForm(m2dFields(), "m2d")),
-      unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView)
+      forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView)
 {
+    for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
     auto* main = new QSplitter(Qt::Horizontal);
     main->addWidget(buildLeft());
     main->addWidget(buildCentre());
@@ -94,12 +98,11 @@ QWidget* StationWindow::buildLeft()
 
 QWidget* StationWindow::buildCentre()
 {
-    auto* empty = new QLabel(tr("Pick a module on the left (M4 or M2D) to add a machining unit."));
+    auto* empty = new QLabel(tr("Pick a module on the left to add a machining unit."));
     empty->setAlignment(Qt::AlignCenter);
     empty->setWordWrap(true);
     forms_->addWidget(empty);
-    forms_->addWidget(m4Form_);
-    forms_->addWidget(m2dForm_);
+    for (const ModuleKind* kind : moduleKinds()) forms_->addWidget(unitForms_.at(kind->name()));
     unitMessages_->setObjectName("unit.messages");
     unitMessages_->setStyleSheet("color: #a00000;");
     unitMessages_->setWordWrap(true);
@@ -163,8 +166,11 @@ void StationWindow::buildMenus()
     edit->addAction(redo);
 
     QMenu* job = menuBar()->addMenu(tr("&Job"));
-    job->addAction(tr("Add &M4 pocket"), QKeySequence(tr("Ctrl+4")), units_, &UnitListPanel::addM4);
-    job->addAction(tr("Add M&2D pocket"), QKeySequence(tr("Ctrl+3")), units_, &UnitListPanel::addM2D);
+    for (const ModuleKind* kind : moduleKinds()) {
+        const QString name = QString::fromUtf8(kind->name());
+        job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), units_,
+                       [this, name] { units_->addUnit(name); });
+    }
     job->addSeparator();
     job->addAction(tr("&Technology data…"), QKeySequence(tr("Ctrl+T")), this, &StationWindow::editTechnology);
     job->addAction(tr("Tool &library…"), QKeySequence(tr("Ctrl+L")), this, &StationWindow::showToolLibrary);
@@ -189,12 +195,11 @@ void StationWindow::wire()
     connect(doc_, &JobDocument::changed, this, &StationWindow::onDocumentChanged);
     connect(doc_, &JobDocument::selectionRequested, units_, &UnitListPanel::selectUnit);
     connect(doc_, &JobDocument::modifiedChanged, this, &StationWindow::updateTitle);
-    connect(palette_, &ModulePalette::addModule, units_,
-            [this](const QString& m) { m == "m4" ? units_->addM4() : units_->addM2D(); });
+    connect(palette_, &ModulePalette::addModule, units_, &UnitListPanel::addUnit);
     connect(units_, &UnitListPanel::currentUnitChanged, this, &StationWindow::onUnitSelected);
-    for (UnitForm* f : {m4Form_, m2dForm_}) {
+    for (const auto& [name, f] : unitForms_) {
         connect(f, &UnitForm::edited, this,
-                [this, f](int field, std::optional<double> v) { onFieldEdited(f, field, v); });
+                [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
         connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
     }
     connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
@@ -235,7 +240,8 @@ UnitForm* StationWindow::currentForm() const
     const int u = units_->currentUnit();
     const auto& units = doc_->job().units;
     if (u < 0 || u >= static_cast<int>(units.size())) return nullptr;
-    return std::holds_alternative<M4Pocket>(units[static_cast<std::size_t>(u)].module) ? m4Form_ : m2dForm_;
+    const auto it = unitForms_.find(units[static_cast<std::size_t>(u)].module.name());
+    return it == unitForms_.end() ? nullptr : it->second;
 }
 
 void StationWindow::onDocumentChanged(bool fromTyping)

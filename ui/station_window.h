@@ -4,12 +4,14 @@
 // logic of its own beyond passing signals on.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 #include "pipeline/pipeline.h"
 
 #include <QMainWindow>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <optional>
 
 class QLabel;
@@ -74,8 +76,7 @@ private:
     UnitListPanel* units_;
     JobProperties* jobProps_;
     QStackedWidget* forms_;
-    UnitForm* m4Form_;
-    UnitForm* m2dForm_;
+    std::map<std::string, UnitForm*> unitForms_;  // one per module kind, by name
     QLabel* unitMessages_;
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;

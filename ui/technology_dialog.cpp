@@ -1,7 +1,7 @@
 // The technology data dialog.
 #include "ui/technology_dialog.h"
 
-#include "check/input_check.h"
+#include "job/job_check.h"
 #include "ui/number_text.h"
 
 #include <QDialogButtonBox>

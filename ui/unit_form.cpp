@@ -21,13 +21,14 @@ namespace {
 const char* const kRed = "background: #ffd0d0;";
 }
 
-UnitForm::UnitForm(const std::vector<FieldSpec>& fields, const QString& prefix, QWidget* parent)
-    : QWidget(parent), fields_(fields), rows_(fields.size())
+UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
+    : QWidget(parent), fields_(fieldsFor(kind)), rows_(fields_.size())
 {
     auto* outer = new QVBoxLayout(this);
     auto* drawing = new QLabel(this);
+    const QString prefix = modulePrefix(kind);
     drawing->setObjectName(prefix + ".drawing");
-    drawing->setPixmap(moduleDrawing(prefix, 320));
+    drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 320));
     drawing->setAlignment(Qt::AlignCenter);
     outer->addWidget(drawing);
     auto* form = new QFormLayout;

@@ -1,11 +1,11 @@
-// The form of one module (M4 or M2D): a QFormLayout of line edits and code
+// The form of one module kind: a QFormLayout of line edits and code
 // combo boxes built from FieldSpecs, each with a message label under it.
 // Typed text is kept as typed; text that is not a number turns the field red
 // with "not a number", and the check diagnostics of the unit are shown on the
 // widgets whose field they name.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 #include "ui/field_spec.h"
 
 #include <QWidget>
@@ -22,8 +22,9 @@ namespace taiwa::ui {
 class UnitForm : public QWidget {
     Q_OBJECT
 public:
-    // prefix: "m4" or "m2d", the widget objectName prefix and the drawing shown above the fields.
-    UnitForm(const std::vector<FieldSpec>& fields, const QString& prefix, QWidget* parent = nullptr);
+    // The form of one module kind: its drawing above its fields; widget
+    // objectNames "<prefix>.<key>" (prefix: modulePrefix(kind), "m4").
+    explicit UnitForm(const ModuleKind& kind, QWidget* parent = nullptr);
 
     const std::vector<FieldSpec>& fields() const { return fields_; }
     // Shows the unit's values. force = false keeps text the operator is

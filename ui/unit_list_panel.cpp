@@ -1,6 +1,8 @@
 // The unit list and its buttons.
 #include "ui/unit_list_panel.h"
 
+#include "modules/registry.h"
+
 #include "ui/job_document.h"
 
 #include <QGridLayout>
@@ -49,7 +51,7 @@ void UnitListPanel::refresh()
     const QSignalBlocker block(list_);
     while (list_->count() > static_cast<int>(units.size())) delete list_->takeItem(list_->count() - 1);
     for (std::size_t i = 0; i < units.size(); ++i) {
-        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(moduleName(units[i].module));
+        QString text = QStringLiteral("%1 %2").arg(i + 1).arg(units[i].module.name());
         if (!units[i].name.empty()) text += " " + QString::fromStdString(units[i].name);
         if (static_cast<int>(i) < list_->count()) list_->item(static_cast<int>(i))->setText(text);
         else list_->addItem(text);
@@ -57,29 +59,13 @@ void UnitListPanel::refresh()
     list_->setCurrentRow(std::min(keep, list_->count() - 1));
 }
 
-void UnitListPanel::addM4()
+void UnitListPanel::addUnit(const QString& module)
 {
+    const ModuleKind* kind = findModuleKind(module.toStdString());
+    if (!kind) return;
     Job j = doc_->job();
-    M4Pocket p;
-    p.corners = {Point2{10, 10}, Point2{60, 10}, Point2{60, 40}, Point2{10, 40}};
-    p.cornerRadius = 8;
-    p.depth = 10;
-    j.units.push_back(MachiningUnit{"", p});
-    doc_->edit(j, tr("Add M4 unit"), {}, static_cast<int>(j.units.size()) - 1);
-}
-
-void UnitListPanel::addM2D()
-{
-    Job j = doc_->job();
-    M2DPocket p;
-    p.corner = Point2{10, 10};
-    p.lengthX = 50;
-    p.lengthY = 30;
-    p.depth = 8;
-    p.theta1 = 10;
-    p.cornerRadius = 8;
-    j.units.push_back(MachiningUnit{"", p});
-    doc_->edit(j, tr("Add M2D unit"), {}, static_cast<int>(j.units.size()) - 1);
+    j.units.push_back(MachiningUnit{"", kind->makeDefault(j.stock)});
+    doc_->edit(j, tr("Add %1 unit").arg(module), {}, static_cast<int>(j.units.size()) - 1);
 }
 
 void UnitListPanel::duplicate()

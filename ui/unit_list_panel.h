@@ -20,8 +20,9 @@ public:
     // Refreshes the item texts from the document.
     void refresh();
 
-    void addM4();
-    void addM2D();
+    // Adds a unit of the module kind named `module` ("M4") with the kind's
+    // default values, and selects it.
+    void addUnit(const QString& module);
     void duplicate();
     void moveUp() { move(-1); }
     void moveDown() { move(1); }

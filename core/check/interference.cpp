@@ -4,7 +4,6 @@
 // whose common area exceeds a sliver tolerance is refused.
 #include "check/messages.h"
 #include "check/unit_checks.h"
-#include "decompose/decompose.h"
 
 #include <polyclipping/clipper.hpp>
 
@@ -65,9 +64,8 @@ struct Figure {
     double minX, maxX, minY, maxY;
 };
 
-Figure figure(const ModuleInput& m, int unit)
+Figure figure(const Quad& q, int unit)
 {
-    const Quad q = topOutline(m);
     Figure f{unit, flatten(q), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y, q.corners[0].y};
     for (std::size_t i = 0; i < 4; ++i) {
         f.perimeter += distance(q.corners[i], q.corners[(i + 1) % 4]);
@@ -93,17 +91,10 @@ double commonArea(const Figure& a, const Figure& b)
 
 }  // namespace
 
-Quad topOutline(const ModuleInput& m)
-{
-    if (const auto* m4 = std::get_if<M4Pocket>(&m)) return Quad{counterClockwise(m4->corners), m4->cornerRadius};
-    return m2dCrossSection(std::get<M2DPocket>(m), 0.0);
-}
-
-Diagnostics interferences(const Job& mmJob, const std::vector<bool>& valid, LengthUnit shownUnit)
+Diagnostics interferences(std::vector<UnitFigure> units, LengthUnit shownUnit)
 {
     std::vector<Figure> figures;
-    for (std::size_t u = 0; u < mmJob.units.size(); ++u)
-        if (valid[u]) figures.push_back(figure(mmJob.units[u].module, static_cast<int>(u)));
+    for (const auto& u : units) figures.push_back(figure(u.outline, u.unit));
     // Sweep along X: only figures whose boxes meet can overlap.
     std::sort(figures.begin(), figures.end(), [](const Figure& a, const Figure& b) { return a.minX < b.minX; });
     std::vector<std::pair<int, int>> pairs;  // (earlier unit, later unit), 0-based
@@ -126,9 +117,8 @@ Diagnostics interferences(const Job& mmJob, const std::vector<bool>& valid, Leng
     Diagnostics out;
     for (const std::size_t k : order) {
         const auto [first, second] = pairs[k];
-        const auto& unit = mmJob.units[static_cast<std::size_t>(second)];
-        out.push_back({Severity::Error, second + 1, moduleName(unit.module),
-                       std::holds_alternative<M4Pocket>(unit.module) ? "corners" : "corner",
+        const auto later = std::find_if(units.begin(), units.end(), [&](const UnitFigure& f) { return f.unit == second; });
+        out.push_back({Severity::Error, second + 1, later->module, later->field,
                        msg::overlap(second + 1, first + 1, areas[k], shownUnit)});
     }
     return out;

@@ -11,21 +11,12 @@ namespace taiwa::check {
 
 namespace {
 
-constexpr double kAngleTolerance = 1e-6;   // degrees: a taper end mill "of that angle"
-constexpr double kRadiusTolerance = 1e-9;  // mm
-
-const Tool* findTool(const std::vector<Tool>& library, int id)
-{
-    const auto it = std::find_if(library.begin(), library.end(), [id](const Tool& t) { return t.id == id; });
-    return it == library.end() ? nullptr : &*it;
-}
-
 bool suits(const Tool& t, const RoomQuery& q)
 {
-    return t.type == q.type && (q.type != ToolType::TaperEndMill || std::abs(t.taperAngle - q.taper) < kAngleTolerance);
+    return t.type == q.type && (q.type != ToolType::TaperEndMill || sameAngle(t.taperAngle, q.taper));
 }
 
-bool fits(const Tool& t, const RoomQuery& q) { return t.radius() <= q.available + kRadiusTolerance; }
+bool fits(const Tool& t, const RoomQuery& q) { return fitsInto(t.radius(), q.available); }
 
 // The largest suitable tool that fits: the one a machinist would take instead.
 const Tool* largestFitting(const std::vector<Tool>& library, const RoomQuery& q)

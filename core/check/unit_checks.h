@@ -1,9 +1,11 @@
-// Internal to input processing: the checks of one unit per module, the tool
-// fit checks they share, and the interference check between figures. The
-// public entry point is check/input_check.h.
+// Input checks shared by the modules and the job: the context of a unit's
+// checks, the reporter, the depth and tool-room checks every pocket module
+// uses, the interference check between figures and the unit order. A
+// module's own checks live in its folder (core/modules/<kind>/); checkJob
+// (job/job_check.h) runs them all.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 #include "check/messages.h"
 #include "model/job.h"
 #include "model/technology.h"
@@ -47,11 +49,9 @@ struct UnitReport {
     Diagnostics diagnostics;
     bool figureValid = false;  // its top outline is well-formed: take part in the interference check
 };
-UnitReport checkM4(const M4Pocket& mm, int unitNo, const Context& ctx);
 // The depth T of either module: positive, and no deeper than the stock
 // (when the stock is valid). False when it is not positive.
 bool checkDepth(double depth, Reporter& r);
-UnitReport checkM2D(const M2DPocket& mm, int unitNo, const Context& ctx);
 
 // One corner radius that a step's tool must fit into.
 struct RoomQuery {
@@ -69,10 +69,18 @@ void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::
 // Pins with an unknown step kind or a tool id not in the library.
 void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out);
 
-// The figure at the top surface, for the interference check.
-Quad topOutline(const ModuleInput& mmModule);
-// One diagnostic per overlapping pair (on the later unit, naming both);
-// only figures marked valid are compared.
-Diagnostics interferences(const Job& mmJob, const std::vector<bool>& valid, LengthUnit shownUnit);
+// The figure of one unit at the top surface, for the interference check.
+struct UnitFigure {
+    int unit = 0;                 // 0-based
+    std::string module;           // "M4"
+    std::string field;            // where an overlap is reported ("corners")
+    Quad outline;                 // in mm
+};
+// One diagnostic per overlapping pair (on the later unit, naming both).
+Diagnostics interferences(std::vector<UnitFigure> figures, LengthUnit shownUnit);
+
+// Machining order of the units (0-based indices) from their centres: see
+// docs/input-checks.md ("Unit order").
+std::vector<int> machiningOrder(const std::vector<Point2>& centres);
 
 }  // namespace taiwa::check

@@ -1,20 +1,17 @@
 // Machining order of the units (docs/input-checks.md, "Unit order"): start
 // with the unit the operator put first, then always go to the nearest unit
 // not yet machined (centre to centre), ties going to the earlier unit.
-#include "check/input_check.h"
+#include "job/job_check.h"
 
 #include "check/unit_checks.h"
 
 #include <limits>
 
-namespace taiwa {
+namespace taiwa::check {
 
-std::vector<int> machiningOrder(const Job& job)
+std::vector<int> machiningOrder(const std::vector<Point2>& centres)
 {
-    const std::size_t n = job.units.size();
-    std::vector<Point2> centres;
-    centres.reserve(n);
-    for (const auto& unit : job.units) centres.push_back(centroid(check::topOutline(unit.module).corners));
+    const std::size_t n = centres.size();
 
     std::vector<int> order;
     order.reserve(n);
@@ -35,4 +32,4 @@ std::vector<int> machiningOrder(const Job& job)
     return order;
 }
 
-}  // namespace taiwa
+}  // namespace taiwa::check

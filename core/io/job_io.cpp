@@ -1,4 +1,4 @@
-// Job files on disk: reading one with its size checked before it is read
+// Files on disk: reading one with its size checked before it is read
 // into memory, and writing any text atomically (temporary file in the same
 // folder, fsync, rename), so that an interrupted write never leaves half a
 // file where a whole one was.
@@ -22,9 +22,9 @@ namespace {
 
 Diagnostic fileProblem(std::string message) { return {Severity::Error, std::nullopt, "", "", std::move(message)}; }
 
-JobReadResult refused(std::string message)
+io::TextReadResult refused(std::string message)
 {
-    JobReadResult r;
+    io::TextReadResult r;
     r.diagnostics.push_back(fileProblem(std::move(message)));
     return r;
 }
@@ -62,7 +62,7 @@ int createTemporary(const std::filesystem::path& target, std::string& tempPath)
 
 }  // namespace
 
-JobReadResult readJobFile(const std::string& path)
+io::TextReadResult io::readTextFile(const std::string& path, std::size_t maxBytes)
 {
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
@@ -75,7 +75,7 @@ JobReadResult readJobFile(const std::string& path)
     if (!std::filesystem::is_regular_file(status)) return refused(msg::io::notAFile());
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) return refused(msg::io::fileCannotOpen(ec.message()));
-    if (size > kMaxJobFileBytes) return refused(msg::io::fileTooLarge(size, kMaxJobFileBytes));
+    if (size > maxBytes) return refused(msg::io::fileTooLarge(size, maxBytes));
 
     std::ifstream in(path, std::ios::binary);
     if (!in) return refused(msg::io::fileCannotOpen(systemError(errno)));
@@ -85,7 +85,7 @@ JobReadResult readJobFile(const std::string& path)
     if (in.bad()) return refused(msg::io::fileUnreadable(systemError(errno)));
     text.resize(static_cast<std::size_t>(in.gcount()));
     if (text.size() > size) return refused(msg::io::fileUnreadable("the file changed while it was read"));
-    return readJob(text);
+    return {std::move(text), {}};
 }
 
 std::optional<std::string> writeFileAtomically(const std::string& path, std::string_view text)

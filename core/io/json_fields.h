@@ -4,7 +4,7 @@
 // the documented default). Nothing here throws.
 #pragma once
 
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 #include "model/geometry.h"
 
 #include <nlohmann/json.hpp>

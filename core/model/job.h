@@ -4,13 +4,13 @@
 #pragma once
 
 #include "model/geometry.h"
+#include "model/module.h"
 #include "model/technology.h"
 
 #include <functional>
 #include <map>
 #include <optional>
 #include <string>
-#include <variant>
 #include <vector>
 
 namespace taiwa {
@@ -36,41 +36,8 @@ struct Stock {
 // "floor", "wall", "inclined".
 using ToolPins = std::map<std::string, int>;
 
-// Module M4: 2.5-D pocket with walls parallel to the depth direction.
-struct M4Pocket {
-    std::array<Point2, 4> corners{};  // P1..P4 of the final outline at the top
-    double cornerRadius = 0.0;        // r1
-    double depth = 0.0;               // T, measured down from the top surface
-    double taper = 0.0;               // S, degrees per side, 0 = vertical
-    int toolUse = 1;                  // U (Table 1)
-    int wallFinish = 1;               // F (Table 2)
-    int pilotHole = 0;                // H (Table 3)
-    ToolPins tools;
-    friend bool operator==(const M4Pocket&, const M4Pocket&) = default;
-};
-
-// Module M2D: geometric 3-D pocket, the two walls at the ends of L1 inclined.
-struct M2DPocket {
-    Point2 corner{};             // (X1, Y1): reference corner of the top opening
-    double lengthX = 0.0;        // L1, top opening along X
-    double lengthY = 0.0;        // L2, top opening along Y
-    double depth = 0.0;          // T
-    double theta1 = 0.0;         // left wall angle from the vertical [deg]
-    std::optional<double> theta2;  // right wall angle; equals theta1 when absent
-    double cornerRadius = 0.0;   // r1 of the vertical corners
-    int toolUse = 1;             // U: 1 or 9 only
-    int pilotHole = 0;           // H
-    double scallop = 0.01;       // scallop height of the inclined-face finish
-    ToolPins tools;
-    double rightAngle() const { return theta2.value_or(theta1); }
-    friend bool operator==(const M2DPocket&, const M2DPocket&) = default;
-};
-
-using ModuleInput = std::variant<M4Pocket, M2DPocket>;
-
-// Module name as written in the job file and messages: "M4", "M2D".
-const char* moduleName(const ModuleInput& m);
-
+// One machining unit: a module input of any kind (core/modules/) and the
+// name the operator gave it.
 struct MachiningUnit {
     std::string name;  // optional label the operator gave
     ModuleInput module;
@@ -93,7 +60,7 @@ struct Job {
 // The same job with every length (stock, technology overrides, module
 // inputs) passed through `convert` and marked as being in `unit`; angles,
 // codes and gamma unchanged.
-Job withLengths(const Job& job, LengthUnit unit, const std::function<double(double)>& convert);
+Job withLengths(const Job& job, LengthUnit unit, const LengthMap& convert);
 
 // The same job with every length in mm (lengthUnit = Millimetre); angles,
 // codes and gamma unchanged. The pipeline works on this copy only.

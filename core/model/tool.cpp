@@ -38,4 +38,11 @@ const CuttingData* Tool::cuttingFor(const std::string& material) const
     return nullptr;
 }
 
+const Tool* findTool(const std::vector<Tool>& library, int id)
+{
+    for (const auto& t : library)
+        if (t.id == id) return &t;
+    return nullptr;
+}
+
 }  // namespace taiwa

@@ -61,4 +61,17 @@ struct ToolChoice {
     friend bool operator==(const ToolChoice&, const ToolChoice&) = default;
 };
 
+// The tool of that id in `library`; nullptr when there is none.
+const Tool* findTool(const std::vector<Tool>& library, int id);
+
+// One rule for every fit of a tool (input checks and tool choice alike): a
+// size fits into a room when it exceeds it by no more than kFitTolerance, so
+// that a tool fitting exactly by the documented rule is not refused for a
+// rounding error of the arithmetic; a taper end mill is "of that angle"
+// within kAngleTolerance.
+constexpr double kFitTolerance = 1e-6;    // mm
+constexpr double kAngleTolerance = 1e-6;  // degrees
+inline bool fitsInto(double size, double room) { return size <= room + kFitTolerance; }
+inline bool sameAngle(double a, double b) { return a - b <= kAngleTolerance && b - a <= kAngleTolerance; }
+
 }  // namespace taiwa

@@ -1,15 +1,19 @@
 // The whole pipeline of spec/milling-modules.md, headless: input processing,
-// decomposition, tool choice and ordering, CL creation and time estimates.
-// The command line and the station window both call planJob().
+// each unit planned through its module's door, step ordering, CL creation
+// and time estimates. The command line and the station window both call
+// planJob(), and build their post-processor options with postOptions().
 #pragma once
 
-#include "check/diagnostic.h"
+#include "job/job_check.h"
 #include "model/job.h"
-#include "model/step.h"
+#include "model/plan.h"
 #include "model/technology.h"
 #include "model/tool.h"
 #include "paths/cl.h"
+#include "post/post.h"
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,22 +25,21 @@ struct PlanOptions {
     double toolChangeSeconds = 8.0;  // added per tool change to the total time
 };
 
-struct Plan {
-    Job job;                         // as typed
-    Job mmJob;                       // in mm
-    TechnologyData technology;       // in force, mm
-    Diagnostics diagnostics;         // input errors stop the plan: steps stay empty
-    std::vector<int> unitOrder;      // machining order of the units
-    std::vector<Step> steps;         // job-wide machining order, tool/path/minutes filled
-    std::vector<Tool> tools;         // the library tools the steps use, by first use
-    std::vector<std::string> notes;  // tool life and other notes for the sheet
-    double totalMinutes = 0.0;       // cutting + rapid + tool changes
-    int toolChanges = 0;
-    bool ok() const { return !hasErrors(diagnostics); }
-    const Tool* tool(int id) const;
-};
+// Tool paths are computed on every core, at most this many threads.
+constexpr std::size_t kMaxPathThreads = 8;
 
+// Plans a job already converted and checked (job/job_check.h): input errors
+// in it stop the plan with its steps empty.
+Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const PlanOptions& options = {});
+// Converts, checks and plans the job.
 Plan planJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library,
              const PlanOptions& options = {});
+
+// The post-processor's options for a plan: the one place where the command
+// line's export and the station's NC view build them, so that both print the
+// same tape. `units` defaults to the job's; an unnamed job's program is named
+// after `fileStem` (the job file's or the export's stem).
+PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optional<LengthUnit> units = std::nullopt,
+                        int programNumber = 1000, const std::string& fileStem = {});
 
 }  // namespace taiwa

@@ -5,7 +5,7 @@
 // QPdfWriter.
 #pragma once
 
-#include "pipeline/pipeline.h"
+#include "model/plan.h"
 
 #include <optional>
 #include <string>
@@ -22,10 +22,5 @@ struct SheetOptions {
 
 // A self-contained HTML document (inline CSS, no external resources).
 std::string sheetHtml(const Plan& plan, const SheetOptions& options);
-
-// Writes the sheet as an A4 landscape PDF. Needs a QGuiApplication (the
-// command line runs one on the offscreen platform). Returns an error message
-// or nothing on success.
-std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
 
 }  // namespace taiwa

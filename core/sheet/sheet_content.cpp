@@ -58,7 +58,7 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.tools.rows.push_back({std::to_string(t.id), t.name, toString(t.type), len(t.diameter), len(t.stickout), t.holder,
                                 fmt::format("{:.0f}", t.lifeMinutes), fmt::format("{:.1f}", t.usedMinutes),
                                 fmt::format("{:.1f}", t.remainingLife())});
-    c.notes = plan.notes;
+    c.notes = plan.notes();
     double cutting = 0.0;
     for (const auto& s : plan.steps) cutting += s.minutes.value_or(0.0);
     c.total = fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all", cutting, plan.toolChanges,

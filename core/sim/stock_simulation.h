@@ -6,7 +6,7 @@
 // 3,000-step job does not hold 3,000 copies of the stock.
 #pragma once
 
-#include "pipeline/pipeline.h"
+#include "model/plan.h"
 #include "sim/height_field.h"
 
 #include <cstddef>

@@ -18,11 +18,6 @@ using tools::Fit;
 
 std::string mm(double v) { return fmt::format("{:g} mm", std::round(v * 1000) / 1000); }
 
-const Tool* byId(const std::vector<Tool>& library, int id)
-{
-    const auto it = std::find_if(library.begin(), library.end(), [id](const Tool& t) { return t.id == id; });
-    return it == library.end() ? nullptr : &*it;
-}
 
 // What a milling step needs of its end mill.
 Fit fitFor(const Step& s)
@@ -114,19 +109,11 @@ const Tool* roughingTool(const std::vector<Tool>& library, const Fit& f, const s
 
 }  // namespace
 
-ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, const std::vector<Tool>& library,
-                               const std::string& material)
+ToolPick chooseRoughingTool(const Fit& f, const std::vector<Tool>& library, const std::string& material,
+                            const std::string& what)
 {
-    const double bottom = p.depth - tech.beta2;
-    const double tanL = tanDeg(p.theta1), tanR = tanDeg(p.rightAngle());
-    const double width = p.lengthX - bottom * (tanL + tanR) - 2 * tech.alpha2;
-    Fit f;
-    f.cornerRadius = p.cornerRadius - tech.alpha2;
-    f.maxDiameter = 0.5 * std::min(width, p.lengthY - 2 * tech.alpha2);
-    f.reach = bottom;  // the flutes cut one layer at a time
-    f.centreCutting = pilotHoleFromCode(p.pilotHole) == PilotHole::None;
     if (const Tool* t = tools::largestFitting(library, f, material))
-        return {ToolChoice{t->id, describeEndMill(*t, f) + " of the roughing layers"}, {}};
+        return {ToolChoice{t->id, describeEndMill(*t, f) + " of the " + what}, {}};
     return {std::nullopt, tools::noFitMessage(library, f, material, "roughing")};
 }
 
@@ -144,7 +131,7 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
     const auto pick = [&](Step& s, const Fit& f) {
         const auto pin = pins.find(toKey(s.kind));
         if (pin != pins.end()) {
-            const Tool* t = byId(library, pin->second);
+            const Tool* t = findTool(library, pin->second);
             if (!t) problems.push_back(fmt::format("{}: pinned tool T{} is not in the tool library", s.label(), pin->second));
             else if (!tools::fits(*t, f, material))
                 problems.push_back(fmt::format("{}: pinned tool T{} ({}) does not fit: {}", s.label(), t->id, t->name,
@@ -168,7 +155,7 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         if (s.tool && s.kind == StepKind::Roughing && !hasPilot && pins.find(toKey(s.kind)) == pins.end())
             s.tool->reason += "; it cuts at its centre and ramps in (no pilot hole)";
         if (s.tool && plungeDiameter == 0) {
-            plungeDiameter = byId(library, s.tool->toolId)->diameter;
+            plungeDiameter = findTool(library, s.tool->toolId)->diameter;
             pocketLimit = f.maxDiameter;
         }
     }
@@ -190,7 +177,7 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, "pilot hole"));
         }
         if (!s.tool) continue;
-        s.holeDiameter = byId(library, s.tool->toolId)->diameter;
+        s.holeDiameter = findTool(library, s.tool->toolId)->diameter;
         for (auto& r : steps)
             if (r.kind == StepKind::Roughing && r.number == 1 && r.tool && pins.find(toKey(r.kind)) == pins.end())
                 r.tool->reason += fmt::format("; enters the {} pilot hole", mm(s.holeDiameter));

@@ -7,6 +7,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "tools/tool_fit.h"
 
 #include <optional>
 #include <string>
@@ -19,10 +20,11 @@ struct ToolPick {
     std::string problem;  // why no tool fits, when choice is empty
 };
 
-// The roughing tool of an M2D pocket, needed before its decomposition (the
-// layer count depends on its diameter).
-ToolPick chooseM2DRoughingTool(const M2DPocket& mmPocket, const TechnologyData& tech, const std::vector<Tool>& library,
-                               const std::string& material);
+// A roughing tool chosen before the decomposition that depends on it (M2D:
+// the layer count depends on its diameter): the largest end mill that fits
+// `f`, the reason naming `what` it roughs ("roughing layers").
+ToolPick chooseRoughingTool(const tools::Fit& f, const std::vector<Tool>& library, const std::string& material,
+                            const std::string& what);
 
 // Chooses tools for all steps of one unit (steps in decomposition order), in
 // place: roughing the largest end mill that fits the roughing corner radius and

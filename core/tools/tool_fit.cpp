@@ -11,17 +11,17 @@ std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
 {
     if (t.type != f.type) return fmt::format("it is a {}, the step needs a {}", toString(t.type), toString(f.type));
     if (!t.cuttingFor(material)) return "it has no cutting data for " + material;
-    if (f.type == ToolType::TaperEndMill && std::abs(t.taperAngle - f.taperAngle) > 1e-9)
+    if (f.type == ToolType::TaperEndMill && !sameAngle(t.taperAngle, f.taperAngle))
         return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
-    if (f.cornerRadius > 0 && t.radius() > f.cornerRadius + 1e-9)
+    if (f.cornerRadius > 0 && !fitsInto(t.radius(), f.cornerRadius))
         return fmt::format("its radius {:g} mm is larger than the corner radius {:g} mm", t.radius(), f.cornerRadius);
     if (f.centreCutting && !t.centreCutting) return "it does not cut at its centre, so it cannot ramp in without a pilot hole";
-    if (t.diameter > f.maxDiameter + 1e-9) return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
-    if (t.diameter < f.minDiameter - 1e-9)
+    if (!fitsInto(t.diameter, f.maxDiameter)) return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
+    if (!fitsInto(f.minDiameter, t.diameter))
         return fmt::format("its diameter {:g} mm is smaller than the {:g} mm needed", t.diameter, f.minDiameter);
-    if (t.fluteLength > 0 && t.fluteLength + 1e-9 < f.depth)
+    if (t.fluteLength > 0 && !fitsInto(f.depth, t.fluteLength))
         return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
-    if (t.stickout > 0 && t.stickout + 1e-9 < f.reach)
+    if (t.stickout > 0 && !fitsInto(f.reach, t.stickout))
         return fmt::format("its stick-out ({:g} mm) is shorter than the depth {:g} mm", t.stickout, f.reach);
     return {};
 }
@@ -49,7 +49,7 @@ std::string noFitMessage(const std::vector<Tool>& library, const Fit& f, const s
 {
     const Tool* smallest = nullptr;
     for (const auto& t : library)
-        if (t.type == f.type && (f.type != ToolType::TaperEndMill || std::abs(t.taperAngle - f.taperAngle) < 1e-9) &&
+        if (t.type == f.type && (f.type != ToolType::TaperEndMill || sameAngle(t.taperAngle, f.taperAngle)) &&
             (!smallest || t.diameter < smallest->diameter))
             smallest = &t;
     if (!smallest) {

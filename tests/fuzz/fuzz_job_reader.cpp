@@ -6,7 +6,7 @@
 // Run: build-fuzz/tests/fuzz/fuzz_job_reader -dict=tests/fuzz/job.dict -max_len=4096 CORPUS resources/samples
 // Keep every crashing input, and a corpus minimized with -merge=1 (at most 40
 // files), in tests/data/fuzz-regressions: the tests replay that folder.
-#include "io/job_io.h"
+#include "job/job_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,9 @@
 // only.
 #pragma once
 
-#include "check/input_check.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
+#include "job/job_check.h"
 
 #include <QByteArray>
 #include <QtTest>

@@ -4,7 +4,7 @@
 // jobs planned with the default tool library. Header only, like images.h.
 #pragma once
 
-#include "io/job_io.h"
+#include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "support/support.h"
 #include "tools/tool_library.h"

@@ -1,7 +1,8 @@
 // Geometry oracle for the tests: finished pocket solids and tool gouge depth.
 #include "support/pocket_geometry.h"
 
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
+#include "modules/m4/m4.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +35,7 @@ double signedDistanceSharp(const std::array<Point2, 4>& pIn, Point2 c)
 
 Quad pocketSection(const ModuleInput& m, double depth)
 {
-    if (const auto* m4 = std::get_if<M4Pocket>(&m)) {
+    if (const auto* m4 = (m).getIf<M4Pocket>()) {
         const Quad top{counterClockwise(m4->corners), m4->cornerRadius};
         if (m4->taper == 0.0) return top;
         // The wall leans inward: the section shrinks by depth * tan(S); the
@@ -43,12 +44,13 @@ Quad pocketSection(const ModuleInput& m, double depth)
         q.cornerRadius = std::max(q.cornerRadius, 0.0);
         return q;
     }
-    return m2dCrossSection(std::get<M2DPocket>(m), depth);
+    return m2dCrossSection((m).as<M2DPocket>(), depth);
 }
 
 double pocketDepth(const ModuleInput& m)
 {
-    return std::visit([](const auto& p) { return p.depth; }, m);
+    if (const auto* m4 = m.getIf<M4Pocket>()) return m4->depth;
+    return m.as<M2DPocket>().depth;
 }
 
 double toolRadiusAt(const Tool& tool, double h)

@@ -1,8 +1,12 @@
-// Writing the canonical text of a job (writeJob of job_io.h): keys in a fixed
-// order, two-space indentation with points and other short number lists on
-// one line, whole numbers without ".0", other numbers in nlohmann's shortest
-// round-trip form, a final newline.
-#include "io/job_io.h"
+// Writing the canonical text of a job (writeJob of job_file.h): keys in a
+// fixed order (a unit's own keys in the order its module's door writes them),
+// two-space indentation with points and other short number lists on one line,
+// whole numbers without ".0", other numbers in nlohmann's shortest round-trip
+// form, a final newline.
+#include "job/job_file.h"
+
+#include "io/json_write.h"
+#include "modules/registry.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,55 +17,14 @@ namespace taiwa {
 namespace {
 
 using ordered = nlohmann::ordered_json;
-
-// A whole number is written as one ("20", not "20.0"); up to 2^53 every whole
-// double is exact as an integer.
-ordered number(double v)
-{
-    constexpr double kExactInteger = 9007199254740992.0;  // 2^53
-    if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) <= kExactInteger)
-        return static_cast<std::int64_t>(v);
-    return v;
-}
-
-ordered point(Point2 p) { return ordered::array({number(p.x), number(p.y)}); }
-
-ordered pins(const ToolPins& tools)
-{
-    ordered out = ordered::object();
-    for (const auto& [step, id] : tools) out[step] = id;
-    return out;
-}
+using io::number;
 
 ordered unitJson(const MachiningUnit& unit)
 {
     ordered u;
-    u["module"] = moduleName(unit.module);
+    u["module"] = unit.module.name();
     u["name"] = unit.name;
-    if (const auto* m = std::get_if<M4Pocket>(&unit.module)) {
-        u["corners"] = ordered::array();
-        for (const auto& c : m->corners) u["corners"].push_back(point(c));
-        u["cornerRadius"] = number(m->cornerRadius);
-        u["depth"] = number(m->depth);
-        u["taper"] = number(m->taper);
-        u["U"] = m->toolUse;
-        u["F"] = m->wallFinish;
-        u["H"] = m->pilotHole;
-        if (!m->tools.empty()) u["tools"] = pins(m->tools);
-    } else {
-        const auto& d = std::get<M2DPocket>(unit.module);
-        u["corner"] = point(d.corner);
-        u["L1"] = number(d.lengthX);
-        u["L2"] = number(d.lengthY);
-        u["depth"] = number(d.depth);
-        u["theta1"] = number(d.theta1);
-        if (d.theta2) u["theta2"] = number(*d.theta2);
-        u["cornerRadius"] = number(d.cornerRadius);
-        u["U"] = d.toolUse;
-        u["H"] = d.pilotHole;
-        u["scallop"] = number(d.scallop);
-        if (!d.tools.empty()) u["tools"] = pins(d.tools);
-    }
+    moduleKind(unit.module).write(unit.module, u);
     return u;
 }
 

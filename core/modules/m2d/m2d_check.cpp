@@ -2,7 +2,7 @@
 // opening and its inclined walls, the floor they leave, depth against stock
 // and technology data, and tool room.
 #include "check/messages.h"
-#include "check/unit_checks.h"
+#include "modules/m2d/m2d_kind.h"
 #include "model/codes.h"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // walls): pilot hole, one roughing step, floor finishing and the wall
 // finishing steps of code F, as spec/milling-modules.md and
 // docs/decomposition.md describe them.
-#include "decompose/decompose.h"
+#include "modules/m4/m4.h"
 #include "decompose/make_step.h"
 
 #include "model/codes.h"

@@ -1,12 +1,15 @@
-// Input processing entry points: checkJob runs the job-level checks (material,
-// stock, technology overrides), every unit's checks and the interference
-// check, collecting all diagnostics (capped); jobTechnology gives the
-// technology data in force.
-#include "check/input_check.h"
+// Input processing of a whole job: the job-level checks (material, stock,
+// technology overrides), every unit's checks through its module's door and
+// the interference check, collecting all diagnostics (capped);
+// jobTechnology gives the technology data in force.
+#include "job/job_check.h"
 
 #include "check/messages.h"
 #include "check/unit_checks.h"
+#include "io/job_messages.h"
+#include "modules/registry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace taiwa {
@@ -65,11 +68,12 @@ std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTa
     return effective(m->data, mmJob.technology);
 }
 
-Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library)
+CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library)
 {
-    const Job mm = toMillimetres(job);
+    CheckedJob c{job, toMillimetres(job), {}, std::nullopt};
+    const Job& mm = c.mmJob;
     const LengthUnit shown = job.lengthUnit;
-    Diagnostics out;
+    Diagnostics& out = c.diagnostics;
 
     std::optional<TechnologyData> tech = jobTechnology(mm, table);
     if (!tech) {
@@ -83,19 +87,22 @@ Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::ve
     const bool stockOk = checkStock(mm.stock, shown, out);
 
     const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library};
-    std::vector<bool> valid(mm.units.size(), false);
+    std::vector<check::UnitFigure> figures;
     for (std::size_t u = 0; u < mm.units.size(); ++u) {
         const int unitNo = static_cast<int>(u) + 1;
-        const auto report = std::visit(
-            [&](const auto& m) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(m)>, M4Pocket>) return check::checkM4(m, unitNo, ctx);
-                else return check::checkM2D(m, unitNo, ctx);
-            },
-            mm.units[u].module);
+        const ModuleInput& module = mm.units[u].module;
+        const ModuleKind* kind = findModuleKind(module.name());
+        if (!kind) {  // a unit being built in the station: no module yet
+            out.push_back({Severity::Error, unitNo, module.name(), "module", msg::io::unknownModule(module.name(), moduleNames())});
+            continue;
+        }
+        const auto report = kind->check(module, unitNo, ctx);
         out.insert(out.end(), report.diagnostics.begin(), report.diagnostics.end());
-        valid[u] = report.figureValid;
+        if (!report.figureValid) continue;
+        if (const auto outline = kind->topOutline(module))
+            figures.push_back({static_cast<int>(u), kind->name(), kind->outlineField(), *outline});
     }
-    const Diagnostics overlaps = check::interferences(mm, valid, shown);
+    const Diagnostics overlaps = check::interferences(std::move(figures), shown);
     out.insert(out.end(), overlaps.begin(), overlaps.end());
 
     if (out.size() > kMaxDiagnostics) {
@@ -103,7 +110,32 @@ Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::ve
         out.resize(kMaxDiagnostics - 1);
         out.push_back({Severity::Error, std::nullopt, "", "", msg::tooManyErrors(dropped)});
     }
-    return out;
+    if (!hasErrors(out)) c.technology = tech;
+    return c;
+}
+
+Diagnostics checkJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library)
+{
+    return checkedJob(job, table, library).diagnostics;
+}
+
+std::vector<int> machiningOrder(const Job& mmJob)
+{
+    std::vector<Point2> centres;
+    std::vector<int> units;
+    for (std::size_t u = 0; u < mmJob.units.size(); ++u) {
+        const auto& module = mmJob.units[u].module;
+        if (const auto outline = moduleKind(module).topOutline(module)) {
+            centres.push_back(centroid(outline->corners));
+            units.push_back(static_cast<int>(u));
+        }
+    }
+    std::vector<int> order;
+    for (const int k : check::machiningOrder(centres)) order.push_back(units[static_cast<std::size_t>(k)]);
+    // Units without a figure in the XY plane keep their place after those with one.
+    for (std::size_t u = 0; u < mmJob.units.size(); ++u)
+        if (std::find(units.begin(), units.end(), static_cast<int>(u)) == units.end()) order.push_back(static_cast<int>(u));
+    return order;
 }
 
 }  // namespace taiwa

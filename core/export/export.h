@@ -1,9 +1,10 @@
 // Export of a planned job: the files of interfaces.md ("export writes into
 // DIR"), each written atomically. Shared by `taiwa export` and the window's
-// export dialog.
+// export dialog. Its own library (taiwa_export): the PDF sheet is painted
+// with Qt, which the rest of the core does without.
 #pragma once
 
-#include "pipeline/pipeline.h"
+#include "model/plan.h"
 
 #include <optional>
 #include <string>

@@ -1,5 +1,5 @@
 // Formatting diagnostics the way `taiwa check` prints them.
-#include "check/diagnostic.h"
+#include "model/diagnostic.h"
 
 #include <algorithm>
 

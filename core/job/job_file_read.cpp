@@ -1,12 +1,15 @@
-// Reading a job document (readJob of job_io.h): the JSON tree from
-// json_document, then every field checked for presence and kind, collecting
-// all problems as diagnostics. Values are kept as typed: whether they make
-// sense (a code in its table, a pocket inside the stock) is input processing.
-#include "io/job_io.h"
+// Reading a job document (readJob of job_file.h): the JSON tree from
+// json_document, then every field checked for presence and kind, each unit's
+// own fields by its module's door, collecting all problems as diagnostics.
+// Values are kept as typed: whether they make sense (a code in its table, a
+// pocket inside the stock) is input processing.
+#include "job/job_file.h"
 
+#include "io/job_io.h"
 #include "io/job_messages.h"
 #include "io/json_document.h"
 #include "io/json_fields.h"
+#include "modules/registry.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,17 +22,11 @@ using nlohmann::json;
 using io::ObjectFields;
 using io::Place;
 
-const std::vector<std::string> kModules{"M4", "M2D"};
 const std::vector<std::string> kJobKeys{"format", "version",  "name",  "lengthUnit", "material",
                                         "machine", "workOffset", "stock", "technology", "units"};
 const std::vector<std::string> kStockShapes{"block"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma"};
-const std::vector<std::string> kM4Keys{"module", "name", "corners", "cornerRadius", "depth",
-                                       "taper",  "U",    "F",       "H",            "tools"};
-const std::vector<std::string> kM2DKeys{"module",       "name", "corner", "L1",      "L2",    "depth", "theta1",
-                                        "theta2", "cornerRadius", "U",      "H",       "scallop", "tools"};
-
 bool isBlank(std::string_view text)
 {
     return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
@@ -44,48 +41,7 @@ std::string knownModule(const json& unit)
     const auto it = unit.find("module");
     if (it == unit.end() || !it->is_string()) return {};
     const auto& name = it->get_ref<const std::string&>();
-    return std::find(kModules.begin(), kModules.end(), name) != kModules.end() ? name : std::string();
-}
-
-M4Pocket readM4(const ObjectFields& f)
-{
-    M4Pocket m;
-    f.rejectUnknown("module M4", kM4Keys);
-    if (const json* corners = f.find("corners")) {
-        if (!corners->is_array()) f.error("corners", msg::io::wrongType("an array of 4 points [x, y]", *corners));
-        else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
-        else
-            for (std::size_t i = 0; i < 4; ++i)
-                m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
-    } else {
-        f.error("corners", msg::io::missing("an array of 4 points [x, y]"));
-    }
-    m.cornerRadius = f.number("cornerRadius").value_or(0.0);
-    m.depth = f.number("depth").value_or(0.0);
-    m.taper = f.number("taper", 0.0);
-    m.toolUse = f.whole("U").value_or(0);
-    m.wallFinish = f.whole("F", 1);
-    m.pilotHole = f.whole("H", 0);
-    m.tools = f.wholeMap("tools");
-    return m;
-}
-
-M2DPocket readM2D(const ObjectFields& f)
-{
-    M2DPocket m;
-    f.rejectUnknown("module M2D", kM2DKeys);
-    m.corner = f.point("corner").value_or(Point2{});
-    m.lengthX = f.number("L1").value_or(0.0);
-    m.lengthY = f.number("L2").value_or(0.0);
-    m.depth = f.number("depth").value_or(0.0);
-    m.theta1 = f.number("theta1").value_or(0.0);
-    m.theta2 = f.optionalNumber("theta2");
-    m.cornerRadius = f.number("cornerRadius").value_or(0.0);
-    m.toolUse = f.whole("U").value_or(0);
-    m.pilotHole = f.whole("H", 0);
-    m.scallop = f.number("scallop", 0.01);
-    m.tools = f.wholeMap("tools");
-    return m;
+    return findModuleKind(name) ? name : std::string();
 }
 
 std::optional<MachiningUnit> readUnit(const json& unit, int number, io::DiagnosticSink& sink)
@@ -100,15 +56,14 @@ std::optional<MachiningUnit> readUnit(const json& unit, int number, io::Diagnost
     }
     if (module.empty()) {
         const json* name = f.find("module");
-        if (!name) f.error("module", msg::io::missing(msg::io::oneOf(kModules)));
+        if (!name) f.error("module", msg::io::missing(msg::io::oneOf(moduleNames())));
         else if (!name->is_string()) f.error("module", msg::io::wrongType("a string", *name));
-        else f.error("module", msg::io::unknownModule(name->get<std::string>(), kModules));
+        else f.error("module", msg::io::unknownModule(name->get<std::string>(), moduleNames()));
         return std::nullopt;
     }
     MachiningUnit out;
     out.name = f.string("name", "");
-    if (module == "M4") out.module = readM4(f);
-    else out.module = readM2D(f);
+    out.module = findModuleKind(module)->read(f);
     return out;
 }
 
@@ -239,6 +194,17 @@ JobReadResult readJob(std::string_view text)
     if (sink.empty()) result.job = std::move(job);
     result.diagnostics = std::move(sink).finish();
     return result;
+}
+
+}  // namespace taiwa
+
+namespace taiwa {
+
+JobReadResult readJobFile(const std::string& path)
+{
+    io::TextReadResult text = io::readTextFile(path, kMaxJobFileBytes);
+    if (!text.text) return {std::nullopt, std::move(text.diagnostics)};
+    return readJob(*text.text);
 }
 
 }  // namespace taiwa

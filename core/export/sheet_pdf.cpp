@@ -1,7 +1,7 @@
 // The instruction sheet as a PDF, painted through Qt's own PDF writer: A4
 // landscape, the table header repeated on every page, long text elided to
 // its column. Painting directly keeps a 1,000-unit job's sheet fast.
-#include "sheet/sheet.h"
+#include "export/sheet_pdf.h"
 
 #include "sheet/sheet_content.h"
 

@@ -1,7 +1,7 @@
 // Input checks of one M4 unit (2.5-D pocket): numbers, codes, the outline's
 // geometry, depth against stock and technology data, and tool room.
 #include "check/messages.h"
-#include "check/unit_checks.h"
+#include "modules/m4/m4_kind.h"
 #include "model/codes.h"
 
 #include <algorithm>

@@ -1,8 +1,10 @@
 // Export of a planned job into its files (interfaces.md), and the
 // machine-readable step list STEM.steps.json.
-#include "pipeline/export.h"
+#include "export/export.h"
 
+#include "export/sheet_pdf.h"
 #include "io/job_io.h"
+#include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "sheet/sheet.h"
 
@@ -109,13 +111,8 @@ ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::
     const LengthUnit units = options.units.value_or(plan.job.lengthUnit);
     const auto path = [&](const char* suffix) { return (std::filesystem::path(outDir) / (stem + suffix)).string(); };
 
-    PostOptions post;
-    post.dialect = options.dialect;
-    post.units = units;
-    post.programNumber = options.programNumber;
-    post.programName = plan.job.name.empty() ? stem : plan.job.name;
-    post.material = plan.mmJob.material;
-    const PostedProgram program = postProcess(plan.steps, plan.tools, post);
+    const PostedProgram program =
+        postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
 
     SheetOptions sheet;
     sheet.units = units;

@@ -2,7 +2,7 @@
 // walls): pilot hole in the floor, roughing in layers that follow the wall
 // slope, floor finishing of the flat part, the vertical walls, and the two
 // inclined faces (see docs/decomposition.md).
-#include "decompose/decompose.h"
+#include "modules/m2d/m2d.h"
 #include "decompose/make_step.h"
 
 #include "model/codes.h"

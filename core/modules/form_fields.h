@@ -1,0 +1,79 @@
+// What a module's form shows, described without any widget: one FormField
+// per input (key, label, the checks' field names, how to read and write the
+// value on the module input). The station builds its forms and undo commands
+// from these; labels are source texts of the translation (context
+// "taiwa::ui::FieldSpec", marked with TAIWA_TRANSLATE_NOOP for lupdate).
+#pragma once
+
+#include "model/codes.h"
+#include "model/module.h"
+
+#include <cmath>
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+// Marks a source text for lupdate (run with
+// -tr-function-alias QT_TRANSLATE_NOOP+=TAIWA_TRANSLATE_NOOP) without Qt.
+#define TAIWA_TRANSLATE_NOOP(context, text) text
+
+namespace taiwa {
+
+enum class FormFieldKind { Number, OptionalNumber, Code };
+
+struct FormField {
+    std::string key;                      // widget objectName suffix: "P1.x", "depth", "U"
+    std::string label;                    // "T (depth)"
+    std::string placeholder;              // OptionalNumber: what an empty field means
+    std::vector<std::string> diagFields;  // check field names shown on this widget
+    FormFieldKind kind = FormFieldKind::Number;
+    std::vector<std::pair<int, std::string>> codes;  // Code: value and its meaning
+    std::function<std::optional<double>(const ModuleInput&)> get;
+    std::function<void(ModuleInput&, std::optional<double>)> set;
+};
+
+namespace form {
+
+// A number of module T read and written by two functions.
+template <class T, class Get, class Set>
+FormField number(std::string key, std::string label, std::vector<std::string> diag, Get get, Set set)
+{
+    FormField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.diagFields = std::move(diag);
+    f.get = [get](const ModuleInput& m) -> std::optional<double> {
+        if (const T* v = m.getIf<T>()) return get(*v);
+        return std::nullopt;
+    };
+    f.set = [set](ModuleInput& m, std::optional<double> v) {
+        if (T* p = m.getIf<T>(); p && v) set(*p, *v);
+    };
+    return f;
+}
+
+// A number member of module T.
+template <class T>
+FormField member(std::string key, std::string label, std::vector<std::string> diag, double T::*m)
+{
+    return number<T>(std::move(key), std::move(label), std::move(diag), [m](const T& t) { return t.*m; },
+                     [m](T& t, double v) { t.*m = v; });
+}
+
+// A code of one of the code tables, with the meaning of each allowed value.
+template <class T, class Code>
+FormField code(std::string key, std::string label, std::initializer_list<Code> allowed, int T::*m)
+{
+    FormField f = number<T>(key, std::move(label), {key}, [m](const T& t) { return static_cast<double>(t.*m); },
+                            [m](T& t, double v) { t.*m = static_cast<int>(std::lround(v)); });
+    f.kind = FormFieldKind::Code;
+    for (Code c : allowed) f.codes.emplace_back(static_cast<int>(c), std::string(meaning(c)));
+    return f;
+}
+
+}  // namespace form
+
+}  // namespace taiwa

@@ -1,0 +1,178 @@
+// The door of module M2D (geometric 3-D pocket with two inclined walls): its
+// job-file keys, checks, outline, planning and form, as module_kind.h asks.
+// Registered in modules/registry.cpp.
+#include "modules/m2d/m2d_kind.h"
+#include "modules/pocket_plan.h"
+
+#include "io/json_write.h"
+
+#include <algorithm>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name",         "corner", "L1", "L2",      "depth", "theta1",
+                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "tools"};
+
+}  // namespace
+
+ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, const std::vector<Tool>& library,
+                               const std::string& material)
+{
+    const double bottom = p.depth - tech.beta2;
+    const double width = p.lengthX - bottom * (tanDeg(p.theta1) + tanDeg(p.rightAngle())) - 2 * tech.alpha2;
+    tools::Fit f;
+    f.cornerRadius = p.cornerRadius - tech.alpha2;
+    f.maxDiameter = 0.5 * std::min(width, p.lengthY - 2 * tech.alpha2);
+    f.reach = bottom;  // the flutes cut one layer at a time
+    f.centreCutting = pilotHoleFromCode(p.pilotHole) == PilotHole::None;
+    return chooseRoughingTool(f, library, material, "roughing layers");
+}
+
+namespace {
+
+class M2DKind final : public ModuleKindOf<M2DPocket> {
+public:
+    const char* paletteText() const override
+    {
+        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M2D 3-D pocket");
+    }
+    const char* drawing() const override { return ":/modules/m2d.svg"; }
+    const char* outlineField() const override { return "corner"; }
+
+    ModuleInput makeDefault(const Stock& s) const override
+    {
+        M2DPocket p;
+        p.corner = Point2{s.x + 10, s.y + 10};
+        p.lengthX = 50;
+        p.lengthY = 30;
+        p.depth = 8;
+        p.theta1 = 10;
+        p.cornerRadius = 8;
+        return p;
+    }
+
+    const std::vector<FormField>& fields() const override
+    {
+        static const std::vector<FormField> fs = makeFields();
+        return fs;
+    }
+
+protected:
+    M2DPocket readInput(const io::ObjectFields& f) const override
+    {
+        M2DPocket m;
+        f.rejectUnknown("module M2D", kKeys);
+        m.corner = f.point("corner").value_or(Point2{});
+        m.lengthX = f.number("L1").value_or(0.0);
+        m.lengthY = f.number("L2").value_or(0.0);
+        m.depth = f.number("depth").value_or(0.0);
+        m.theta1 = f.number("theta1").value_or(0.0);
+        m.theta2 = f.optionalNumber("theta2");
+        m.cornerRadius = f.number("cornerRadius").value_or(0.0);
+        m.toolUse = f.whole("U").value_or(0);
+        m.pilotHole = f.whole("H", 0);
+        m.scallop = f.number("scallop", 0.01);
+        m.tools = f.wholeMap("tools");
+        return m;
+    }
+
+    void writeInput(const M2DPocket& d, nlohmann::ordered_json& u) const override
+    {
+        u["corner"] = io::point(d.corner);
+        u["L1"] = io::number(d.lengthX);
+        u["L2"] = io::number(d.lengthY);
+        u["depth"] = io::number(d.depth);
+        u["theta1"] = io::number(d.theta1);
+        if (d.theta2) u["theta2"] = io::number(*d.theta2);
+        u["cornerRadius"] = io::number(d.cornerRadius);
+        u["U"] = d.toolUse;
+        u["H"] = d.pilotHole;
+        u["scallop"] = io::number(d.scallop);
+        if (!d.tools.empty()) u["tools"] = io::pins(d.tools);
+    }
+
+    check::UnitReport checkInput(const M2DPocket& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return check::checkM2D(mm, unitNo, ctx);
+    }
+
+    std::optional<Quad> outline(const M2DPocket& mm) const override { return m2dCrossSection(mm, 0.0); }
+
+    std::vector<Step> planInput(const M2DPocket& m2d, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        // The layer count depends on the roughing tool: choose it first.
+        double diameter = 0.0;
+        if (const auto pin = m2d.tools.find(toKey(StepKind::Roughing)); pin != m2d.tools.end()) {
+            if (const Tool* t = findTool(ctx.library, pin->second)) diameter = t->diameter;
+        } else {
+            const ToolPick pick = chooseM2DRoughingTool(m2d, ctx.tech, ctx.library, ctx.material);
+            if (!pick.choice) {
+                out.push_back({Severity::Error, ctx.unit + 1, M2DPocket::kName, "tools.roughing", pick.problem});
+                return {};
+            }
+            diameter = findTool(ctx.library, pick.choice->toolId)->diameter;
+        }
+        std::vector<Step> steps = decomposeM2D(m2d, ctx.tech, diameter, ctx.unit);
+        choosePocketTools(steps, m2d.tools, ctx, M2DPocket::kName, out);
+        // The inclined-face passes must stop short of the vertical end walls'
+        // corner rounding: give those steps the floor section (radius r1).
+        for (auto& s : steps)
+            if (s.kind == StepKind::InclinedFaceFinishing) s.outline = m2dCrossSection(m2d, m2d.depth);
+        return steps;
+    }
+
+private:
+    static std::vector<FormField> makeFields()
+    {
+        using form::member;
+        using form::number;
+        std::vector<FormField> fs;
+        fs.push_back(number<M2DPocket>("X1", "X1", {"corner"}, [](const M2DPocket& m) { return m.corner.x; },
+                                       [](M2DPocket& m, double v) { m.corner.x = v; }));
+        fs.push_back(number<M2DPocket>("Y1", "Y1", {"corner"}, [](const M2DPocket& m) { return m.corner.y; },
+                                       [](M2DPocket& m, double v) { m.corner.y = v; }));
+        fs.push_back(member<M2DPocket>("L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L1 (length X)"), {"L1"},
+                                       &M2DPocket::lengthX));
+        fs.push_back(member<M2DPocket>("L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L2 (length Y)"), {"L2"},
+                                       &M2DPocket::lengthY));
+        fs.push_back(member<M2DPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                       &M2DPocket::depth));
+        fs.push_back(member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"),
+                                       {"theta1"}, &M2DPocket::theta1));
+        FormField t2;
+        t2.key = "theta2";
+        t2.label = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)");
+        t2.diagFields = {"theta2"};
+        t2.kind = FormFieldKind::OptionalNumber;
+        t2.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1");
+        t2.get = [](const ModuleInput& m) -> std::optional<double> {
+            if (const auto* p = m.getIf<M2DPocket>()) return p->theta2;
+            return std::nullopt;
+        };
+        t2.set = [](ModuleInput& m, std::optional<double> v) {
+            if (auto* p = m.getIf<M2DPocket>()) p->theta2 = v;
+        };
+        fs.push_back(std::move(t2));
+        fs.push_back(member<M2DPocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
+                                       {"cornerRadius"}, &M2DPocket::cornerRadius));
+        fs.push_back(form::code<M2DPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                                           {ToolUse::Standard, ToolUse::RoughOnly}, &M2DPocket::toolUse));
+        fs.push_back(form::code<M2DPocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
+                                           {PilotHole::Drill, PilotHole::None}, &M2DPocket::pilotHole));
+        fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
+                                       {"scallop"}, &M2DPocket::scallop));
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& m2dModule()
+{
+    static const M2DKind kind;
+    return kind;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,42 @@
+// Module M4: the 2.5-D pocket with walls parallel to the depth direction (or
+// tapered by S), four corners and one corner radius. Its input as the job
+// keeps it, and its decomposition (core/modules/m4/m4_decompose.cpp). The
+// rest of the module is behind its door (m4_kind.cpp).
+#pragma once
+
+#include "model/geometry.h"
+#include "model/job.h"
+#include "model/module.h"
+#include "model/step.h"
+#include "model/technology.h"
+
+#include <array>
+#include <vector>
+
+namespace taiwa {
+
+struct M4Pocket {
+    static constexpr const char* kName = "M4";
+    std::array<Point2, 4> corners{};  // P1..P4 of the final outline at the top
+    double cornerRadius = 0.0;        // r1
+    double depth = 0.0;               // T, measured down from the top surface
+    double taper = 0.0;               // S, degrees per side, 0 = vertical
+    int toolUse = 1;                  // U (Table 1)
+    int wallFinish = 1;               // F (Table 2)
+    int pilotHole = 0;                // H (Table 3)
+    ToolPins tools;
+
+    void convertLengths(const LengthMap& f)
+    {
+        for (auto& c : corners) c = {f(c.x), f(c.y)};
+        cornerRadius = f(cornerRadius);
+        depth = f(depth);
+    }
+    friend bool operator==(const M4Pocket&, const M4Pocket&) = default;
+};
+
+// The process steps of one M4 unit (inputs in mm and checked; tools, paths
+// and times not yet chosen). `unit` is the 0-based unit index stored in each step.
+std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech, int unit);
+
+}  // namespace taiwa

@@ -1,0 +1,135 @@
+// The door of module M4 (2.5-D pocket): its job-file keys, checks, outline,
+// planning and form, as module_kind.h asks. Registered in modules/registry.cpp.
+#include "modules/m4/m4.h"
+#include "modules/m4/m4_kind.h"
+#include "modules/pocket_plan.h"
+
+#include "io/job_messages.h"
+#include "io/json_write.h"
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name", "corners", "cornerRadius", "depth",
+                                     "taper",  "U",    "F",       "H",            "tools"};
+
+class M4Kind final : public ModuleKindOf<M4Pocket> {
+public:
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
+    const char* drawing() const override { return ":/modules/m4.svg"; }
+    const char* outlineField() const override { return "corners"; }
+
+    ModuleInput makeDefault(const Stock& s) const override
+    {
+        M4Pocket p;
+        p.corners = {Point2{s.x + 10, s.y + 10}, Point2{s.x + 60, s.y + 10}, Point2{s.x + 60, s.y + 40},
+                     Point2{s.x + 10, s.y + 40}};
+        p.cornerRadius = 8;
+        p.depth = 10;
+        return p;
+    }
+
+    const std::vector<FormField>& fields() const override
+    {
+        static const std::vector<FormField> fs = makeFields();
+        return fs;
+    }
+
+protected:
+    M4Pocket readInput(const io::ObjectFields& f) const override
+    {
+        using nlohmann::json;
+        M4Pocket m;
+        f.rejectUnknown("module M4", kKeys);
+        if (const json* corners = f.find("corners")) {
+            if (!corners->is_array()) f.error("corners", msg::io::wrongType("an array of 4 points [x, y]", *corners));
+            else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
+            else
+                for (std::size_t i = 0; i < 4; ++i)
+                    m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
+        } else {
+            f.error("corners", msg::io::missing("an array of 4 points [x, y]"));
+        }
+        m.cornerRadius = f.number("cornerRadius").value_or(0.0);
+        m.depth = f.number("depth").value_or(0.0);
+        m.taper = f.number("taper", 0.0);
+        m.toolUse = f.whole("U").value_or(0);
+        m.wallFinish = f.whole("F", 1);
+        m.pilotHole = f.whole("H", 0);
+        m.tools = f.wholeMap("tools");
+        return m;
+    }
+
+    void writeInput(const M4Pocket& m, nlohmann::ordered_json& u) const override
+    {
+        u["corners"] = nlohmann::ordered_json::array();
+        for (const auto& c : m.corners) u["corners"].push_back(io::point(c));
+        u["cornerRadius"] = io::number(m.cornerRadius);
+        u["depth"] = io::number(m.depth);
+        u["taper"] = io::number(m.taper);
+        u["U"] = m.toolUse;
+        u["F"] = m.wallFinish;
+        u["H"] = m.pilotHole;
+        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
+    }
+
+    check::UnitReport checkInput(const M4Pocket& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkM4(mm, unitNo, ctx);
+    }
+
+    std::optional<Quad> outline(const M4Pocket& mm) const override
+    {
+        return Quad{counterClockwise(mm.corners), mm.cornerRadius};
+    }
+
+    std::vector<Step> planInput(const M4Pocket& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        std::vector<Step> steps = decomposeM4(mm, ctx.tech, ctx.unit);
+        choosePocketTools(steps, mm.tools, ctx, M4Pocket::kName, out);
+        return steps;
+    }
+
+private:
+    static std::vector<FormField> makeFields()
+    {
+        using form::member;
+        using form::number;
+        std::vector<FormField> fs;
+        for (std::size_t i = 0; i < 4; ++i) {
+            const std::string p = "P" + std::to_string(i + 1);
+            const std::vector<std::string> diag{"corners[" + std::to_string(i) + "]", "corners"};
+            fs.push_back(number<M4Pocket>(p + ".x", p + " X", diag, [i](const M4Pocket& m) { return m.corners[i].x; },
+                                          [i](M4Pocket& m, double v) { m.corners[i].x = v; }));
+            fs.push_back(number<M4Pocket>(p + ".y", p + " Y", diag, [i](const M4Pocket& m) { return m.corners[i].y; },
+                                          [i](M4Pocket& m, double v) { m.corners[i].y = v; }));
+        }
+        fs.push_back(member<M4Pocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
+                                      {"cornerRadius"}, &M4Pocket::cornerRadius));
+        fs.push_back(member<M4Pocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                      &M4Pocket::depth));
+        fs.push_back(member<M4Pocket>("taper", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "S (taper, °/side)"),
+                                      {"taper"}, &M4Pocket::taper));
+        fs.push_back(form::code<M4Pocket>(
+            "U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly, ToolUse::RoughOnly},
+            &M4Pocket::toolUse));
+        fs.push_back(form::code<M4Pocket>(
+            "F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+            {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage}, &M4Pocket::wallFinish));
+        fs.push_back(form::code<M4Pocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
+                                          {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole));
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& m4Module()
+{
+    static const M4Kind kind;
+    return kind;
+}
+
+}  // namespace taiwa

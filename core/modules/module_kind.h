@@ -1,0 +1,100 @@
+// The door of a machining module: everything the job file, the input checks,
+// the planning and the station ask of one module kind, in one table. Each kind
+// lives in core/modules/<kind>/ and is registered by one line in
+// core/modules/registry.cpp; nothing outside its folder names its input
+// struct. docs/modules.md says how a module is added.
+//
+// Implementations derive from ModuleKindOf<T> and receive their own input
+// struct T (see model/module.h) instead of the type-erased ModuleInput.
+#pragma once
+
+#include "check/unit_checks.h"
+#include "io/json_fields.h"
+#include "model/diagnostic.h"
+#include "model/geometry.h"
+#include "model/job.h"
+#include "model/module.h"
+#include "model/step.h"
+#include "model/technology.h"
+#include "model/tool.h"
+#include "modules/form_fields.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+// What planning one unit needs besides the unit itself; all lengths in mm.
+struct UnitPlanContext {
+    const TechnologyData& tech;
+    const std::vector<Tool>& library;
+    const std::string& material;
+    int unit = 0;  // 0-based index of the unit in the job, stored in its steps
+};
+
+class ModuleKind {
+public:
+    virtual ~ModuleKind() = default;
+
+    // "M4": in the job file, in messages, in widget names (lower case).
+    virtual const char* name() const = 0;
+    // The palette button's words, "Add M4 pocket" (source text of the
+    // translation, context "taiwa::ui::ModulePalette").
+    virtual const char* paletteText() const = 0;
+    // The module's drawing as a Qt resource path (":/modules/m4.svg").
+    virtual const char* drawing() const = 0;
+
+    // A new unit of this kind for the station's "Add", inside the stock.
+    virtual ModuleInput makeDefault(const Stock& stock) const = 0;
+
+    // Job file: the unit's own keys (beside "module" and "name").
+    virtual ModuleInput read(const io::ObjectFields& unit) const = 0;
+    virtual void write(const ModuleInput& m, nlohmann::ordered_json& unit) const = 0;
+
+    // Input checks of one unit (lengths in mm, quoted in the job's unit).
+    virtual check::UnitReport check(const ModuleInput& mm, int unitNo, const check::Context& ctx) const = 0;
+
+    // Top-view outline at the stock top for the interference check, the unit
+    // order and the preview; nullopt for a unit with no figure in the XY plane.
+    virtual std::optional<Quad> topOutline(const ModuleInput& mm) const = 0;
+    // The field an overlap is reported on ("corners").
+    virtual const char* outlineField() const = 0;
+
+    // Decomposition, tool choice and whatever the module must settle between
+    // them (M2D: the roughing tool before the layers); problems become
+    // diagnostics of the unit. Inputs are checked and in mm.
+    virtual std::vector<Step> plan(const ModuleInput& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
+
+    // The station's form, top to bottom (the tab order).
+    virtual const std::vector<FormField>& fields() const = 0;
+};
+
+// Adapter: implementations work on their own input struct.
+template <class T>
+class ModuleKindOf : public ModuleKind {
+public:
+    const char* name() const final { return T::kName; }
+    ModuleInput read(const io::ObjectFields& unit) const final { return readInput(unit); }
+    void write(const ModuleInput& m, nlohmann::ordered_json& unit) const final { writeInput(m.as<T>(), unit); }
+    check::UnitReport check(const ModuleInput& mm, int unitNo, const check::Context& ctx) const final
+    {
+        return checkInput(mm.as<T>(), unitNo, ctx);
+    }
+    std::optional<Quad> topOutline(const ModuleInput& mm) const final { return outline(mm.as<T>()); }
+    std::vector<Step> plan(const ModuleInput& mm, const UnitPlanContext& ctx, Diagnostics& out) const final
+    {
+        return planInput(mm.as<T>(), ctx, out);
+    }
+
+protected:
+    virtual T readInput(const io::ObjectFields& unit) const = 0;
+    virtual void writeInput(const T& m, nlohmann::ordered_json& unit) const = 0;
+    virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const = 0;
+    virtual std::optional<Quad> outline(const T& mm) const = 0;
+    virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
+};
+
+}  // namespace taiwa
