@@ -6,6 +6,7 @@
 // jumping back to the first step. Run under `xvfb-run -a` from the source
 // tree's root, or set TAIWA_BENCH_JOB.
 #include "job/job_file.h"
+#include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 #include "viz/render.h"
 #include "viz/scene.h"

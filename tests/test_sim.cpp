@@ -188,13 +188,13 @@ private slots:
         StockSimulation sim(plan);
         QCOMPARE(sim.stepCount(), 3);
         QVERIFY(sim.before(0) == sim.initial());
-        QVERIFY(std::abs(sim.after(0).atPoint(50.1, 40.1) - (-8.0 + 0.125 * std::sqrt(2.0) / std::tan(59 * M_PI / 180))) < 1e-4);
-        QCOMPARE(sim.after(0).atPoint(30, 30), 0.0);
-        QCOMPARE(sim.after(1).atPoint(30, 30), -5.0);
-        QVERIFY(sim.after(1).atPoint(50.1, 40.1) < -7.5);  // the hole is still there
-        QVERIFY(&sim.before(1) == &sim.after(0));
-        QVERIFY(sim.after(2) == sim.after(1));
-        QVERIFY(&sim.finished() == &sim.after(2));
+        QVERIFY(std::abs(sim.after(0)->atPoint(50.1, 40.1) - (-8.0 + 0.125 * std::sqrt(2.0) / std::tan(59 * M_PI / 180))) < 1e-4);
+        QCOMPARE(sim.after(0)->atPoint(30, 30), 0.0);
+        QCOMPARE(sim.after(1)->atPoint(30, 30), -5.0);
+        QVERIFY(sim.after(1)->atPoint(50.1, 40.1) < -7.5);  // the hole is still there
+        QVERIFY(sim.before(1) == sim.after(0));  // the same shared snapshot
+        QVERIFY(*sim.after(2) == *sim.after(1));
+        QVERIFY(sim.finished() == sim.after(2));
 
         // Cached: asking again costs nothing like the first computation.
         StockSimulation fresh(plan);
@@ -217,17 +217,17 @@ private slots:
         const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
         QVERIFY(plan.ok() && plan.steps.size() > 20);
         StockSimulation parallel(plan), inOrder(plan);
-        const HeightField& finished = parallel.finished();
+        const HeightField& finished = *parallel.finished();
         for (int k = 0; k < inOrder.stepCount(); ++k) {
             inOrder.after(k);
             QVERIFY(inOrder.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent);
         }
-        QVERIFY(finished == inOrder.after(inOrder.stepCount() - 1));
+        QVERIFY(finished == *inOrder.after(inOrder.stepCount() - 1));
         QVERIFY(finished.atPoint(42.5, 37.5) < -9.9);  // unit 1's floor, 10 mm deep
-        QVERIFY(!(finished == inOrder.after(10)));
+        QVERIFY(!(finished == *inOrder.after(10)));
         // A step asked for after the finished part comes from a checkpoint
         // or the start, and agrees with the in-order one.
-        QVERIFY(parallel.after(20) == inOrder.after(20));
+        QVERIFY(*parallel.after(20) == *inOrder.after(20));
     }
 
     // Many steps: only the checkpoints and the last few asked for are kept.
@@ -246,13 +246,18 @@ private slots:
             plan.steps.push_back(s);
         }
         StockSimulation sim(plan);
+        // A snapshot handed out stays valid and unchanged however many others are asked for
+        // (it was a reference into the cache, dropped after kRecent other requests).
+        const StockSimulation::Snapshot held = sim.after(3);
+        const HeightField heldCopy = *held;
         for (int k = 0; k < 300; ++k) sim.after(k);
+        QVERIFY(*held == heldCopy);
         QVERIFY2(sim.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent,
                  qPrintable(QString::number(sim.snapshotCount())));
         for (int k = 299; k >= 0; k -= 7) sim.before(k);
         QVERIFY(sim.snapshotCount() <= StockSimulation::kCheckpoints + StockSimulation::kRecent);
         StockSimulation again(plan);
-        QVERIFY(again.finished() == sim.after(299));
+        QVERIFY(*again.finished() == *sim.after(299));
     }
 };
 

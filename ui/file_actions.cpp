@@ -99,6 +99,11 @@ bool FileActions::saveTo(const QString& path)
     return true;
 }
 
+QString FileActions::exportStem(const QString& jobPath)
+{
+    return jobPath.isEmpty() ? QStringLiteral("job") : QFileInfo(jobPath).completeBaseName();
+}
+
 void FileActions::exportJob()
 {
     runner_->flush();
@@ -119,8 +124,7 @@ void FileActions::exportJob()
     ExportOptions eo;
     eo.dialect = dialect.toStdString();
     eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
-    const QString stem = doc_->path().isEmpty() ? QStringLiteral("job") : QFileInfo(doc_->path()).completeBaseName();
-    const ExportResult r = exportPlan(*plan, dir.toStdString(), stem.toStdString(), eo);
+    const ExportResult r = exportPlan(*plan, dir.toStdString(), exportStem(doc_->path()).toStdString(), eo);
     if (r.error) QMessageBox::warning(window_, tr("Export failed"), QString::fromStdString(*r.error));
     else emit message(tr("Exported %1 files into %2").arg(r.files.size()).arg(dir));
 }

@@ -17,6 +17,9 @@ class PlanRunner;
 class FileActions : public QObject {
     Q_OBJECT
 public:
+    // The stem of an export's files, and the program name of an unnamed job:
+    // the job file's base name, "job" while it has none.
+    static QString exportStem(const QString& jobPath);
     FileActions(JobDocument* doc, PlanRunner* runner, QWidget* window);
 
     bool newJob();

@@ -12,37 +12,46 @@
 namespace taiwa::ui {
 namespace {
 
-// The full pipeline and the post-processor; runs on the worker thread, so it
-// touches nothing but its arguments.
-PlanRunner::Result planAndPost(const Job& job, const std::vector<Tool>& library, const QString& dialect, bool simulateStock)
+// Posts a plan and, for a 3-D preview, simulates its finished part; runs on
+// the worker thread, so it touches nothing but its arguments.
+PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options, bool simulateStock)
 {
     PlanRunner::Result r;
-    try {
-        auto plan = std::make_shared<Plan>(planJob(job, TechnologyTable::builtIn(), library));
-        if (!plan->ok()) {
-            r.nc = QObject::tr("(no program: the job has input errors)");
-            return r;
-        }
-        PostOptions po;
-        po.dialect = dialect.toStdString();
-        po.units = job.lengthUnit;
-        po.programName = job.name;
-        po.material = job.material;
-        PostedProgram prog = postProcess(plan->steps, plan->tools, po);
-        r.nc = QString::fromStdString(prog.nc);
-        r.lines = std::move(prog.lines);
-        if (simulateStock) {
-            r.stock = std::make_shared<sim::StockSimulation>(*plan);
-            r.stock->finished();  // the part as the preview first shows it
-        }
-        r.plan = std::move(plan);
-    } catch (const std::exception& e) {
-        r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
+    PostedProgram prog = postProcess(plan->steps, plan->tools, options);
+    r.nc = QString::fromStdString(prog.nc);
+    r.lines = std::move(prog.lines);
+    if (simulateStock) {
+        r.stock = std::make_shared<sim::StockSimulation>(*plan);
+        r.stock->finished();  // the part as the preview first shows it
     }
+    r.plan = std::move(plan);
     return r;
 }
 
 }  // namespace
+
+PlanRunner::Settings PlanRunner::settings() const
+{
+    return {library_, dialect_.toStdString(), fileStem_.toStdString(), simulateStock_};
+}
+
+PlanRunner::Result PlanRunner::run(const Work& w, const Settings& s)
+{
+    try {
+        std::shared_ptr<const Plan> plan = w.plan;
+        if (w.job) plan = std::make_shared<const Plan>(planJob(*w.job, s.library));
+        if (!plan->ok()) {
+            Result r;
+            r.nc = QObject::tr("(no program: the job has input errors)");
+            return r;
+        }
+        return postAndSimulate(plan, postOptions(*plan, s.dialect, std::nullopt, 1000, s.fileStem), s.simulateStock);
+    } catch (const std::exception& e) {
+        Result r;
+        r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
+        return r;
+    }
+}
 
 PlanRunner::PlanRunner(QObject* parent) : QObject(parent), debounce_(new QTimer(this))
 {
@@ -73,10 +82,9 @@ void PlanRunner::reloadLibrary()
 void PlanRunner::update(const Job& job)
 {
     ++generation_;
-    pending_ = job;
-    const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), library_);
-    emit checked(ds);
-    if (hasErrors(ds)) {
+    auto checkedOnce = std::make_shared<const CheckedJob>(checkedJob(job, TechnologyTable::builtIn(), library_));
+    emit checked(checkedOnce->diagnostics);
+    if (!checkedOnce->ok()) {
         debounce_->stop();
         pendingFull_ = false;
         emit stepsPlanned(nullptr);
@@ -86,11 +94,17 @@ void PlanRunner::update(const Job& job)
     try {
         PlanOptions fastOptions;
         fastOptions.withToolPaths = false;
-        emit stepsPlanned(std::make_shared<const Plan>(planJob(job, TechnologyTable::builtIn(), library_, fastOptions)));
+        emit stepsPlanned(std::make_shared<const Plan>(planJob(*checkedOnce, library_, fastOptions)));
     } catch (const std::exception& e) {
         emit checked({Diagnostic{Severity::Error, std::nullopt, "", "", std::string("planning failed: ") + e.what()}});
         return;
     }
+    schedule({std::move(checkedOnce), nullptr});
+}
+
+void PlanRunner::schedule(Work work)
+{
+    pending_ = std::move(work);
     pendingFull_ = true;
     debounce_->start();
 }
@@ -100,10 +114,18 @@ void PlanRunner::setDialect(const QString& dialect)
     if (dialect == dialect_) return;
     dialect_ = dialect;
     if (!full_) return;
-    pending_ = full_->job;
     ++generation_;
-    pendingFull_ = true;
-    debounce_->start();
+    // The tool paths do not depend on the dialect: only the post runs again.
+    schedule({pendingFull_ ? pending_.job : nullptr, full_});
+}
+
+void PlanRunner::setFileStem(const QString& stem)
+{
+    if (stem == fileStem_) return;
+    fileStem_ = stem;
+    if (!full_) return;
+    ++generation_;
+    schedule({pendingFull_ ? pending_.job : nullptr, full_});
 }
 
 void PlanRunner::startFull()
@@ -113,8 +135,8 @@ void PlanRunner::startFull()
     pendingFull_ = false;
     const int generation = generation_;
     inFlight_ = generation;
-    pool_.start([this, generation, job = pending_, library = library_, dialect = dialect_, sim = simulateStock_] {
-        const Result r = planAndPost(job, library, dialect, sim);
+    pool_.start([this, generation, work = pending_, settings = settings()] {
+        const Result r = run(work, settings);
         QMetaObject::invokeMethod(this, [this, generation, r] { finished(generation, r); }, Qt::QueuedConnection);
     });
 }
@@ -147,7 +169,7 @@ void PlanRunner::flush()
     }
     pendingFull_ = false;
     ++generation_;  // anything still queued is older than this
-    publish(planAndPost(pending_, library_, dialect_, simulateStock_));
+    publish(run(pending_, settings()));
 }
 
 }  // namespace taiwa::ui

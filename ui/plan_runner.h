@@ -1,11 +1,14 @@
-// Runs the pipeline for the window. On every change: checkJob and the fast
-// step list (planJob without tool paths) at once on the GUI thread (a few
-// milliseconds); the full plan with tool paths and the NC program on a
-// worker thread at the next event-loop pass, newest edit wins: results of an
-// edit that has been superseded are dropped. For a 3-D preview the worker
-// also simulates the stock of the finished part.
+// Runs the pipeline for the window. On every change the job is converted and
+// checked once (checkedJob) on the GUI thread, and the fast step list planned
+// from that checked job (planJob without tool paths; a few milliseconds);
+// the full plan with tool paths and the NC program follow on a worker thread
+// at the next event-loop pass, from the same checked job, newest edit wins:
+// results of an edit that has been superseded are dropped. A change of
+// dialect or program name only re-posts the last plan. For a 3-D preview the
+// worker also simulates the stock of the finished part.
 #pragma once
 
+#include "job/job_check.h"
 #include "model/diagnostic.h"
 #include "model/job.h"
 #include "model/tool.h"
@@ -43,6 +46,9 @@ public:
     // The controller dialect of the NC program; re-posts the last plan.
     void setDialect(const QString& dialect);
     const QString& dialect() const { return dialect_; }
+    // The job file's stem, the program name of an unnamed job (as export
+    // names it); re-posts the last plan.
+    void setFileStem(const QString& stem);
     // The last full plan (nullptr until one ran without errors).
     std::shared_ptr<const Plan> fullPlan() const { return full_; }
     // Runs a pending full plan at once, on the calling thread (export, tests).
@@ -72,15 +78,33 @@ signals:
                       const std::vector<taiwa::BlockSource>& lines);
 
 private:
+    // What the worker does next: plan and post a checked job, or re-post the
+    // last plan only.
+    struct Work {
+        std::shared_ptr<const CheckedJob> job;  // null: re-post `plan`
+        std::shared_ptr<const Plan> plan;
+    };
+    void schedule(Work work);
     void startFull();
     void finished(int generation, const Result& r);
     void publish(const Result& r);
+    // Everything the worker reads, copied when it starts: the GUI thread may
+    // change the runner's own values meanwhile.
+    struct Settings {
+        std::vector<Tool> library;
+        std::string dialect;
+        std::string fileStem;
+        bool simulateStock = false;
+    };
+    Settings settings() const;
+    static Result run(const Work& w, const Settings& s);
 
     std::vector<Tool> library_;
     QString libraryError_;
     QString dialect_ = QStringLiteral("linuxcnc");
     bool simulateStock_ = false;
-    Job pending_;
+    QString fileStem_;
+    Work pending_;
     bool pendingFull_ = false;
     int generation_ = 0;
     int inFlight_ = -1;  // generation being planned on the worker, -1: none

@@ -327,6 +327,8 @@ void StationWindow::showToolLibrary()
 void StationWindow::updateTitle()
 {
     const QString name = doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
+    // An unnamed job's program is named after its file, as export names it.
+    runner_->setFileStem(FileActions::exportStem(doc_->path()));
     setWindowTitle(QStringLiteral("%1%2 — Taiwa").arg(name, doc_->isModified() ? "*" : ""));
 }
 

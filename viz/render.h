@@ -3,7 +3,7 @@
 // `xvfb-run -a` will do); without one it returns an error, it never crashes.
 #pragma once
 
-#include "pipeline/pipeline.h"
+#include "model/plan.h"
 
 #include <memory>
 #include <optional>

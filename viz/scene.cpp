@@ -214,10 +214,10 @@ void Scene::updateStock()
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
         if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
-        const sim::HeightField& field = selected_ < 0 ? (stockBefore_ ? simulation_->initial() : simulation_->finished())
-                                        : stockBefore_ ? simulation_->before(selected_)
-                                                       : simulation_->after(selected_);
-        stock_ = actorFor(heightFieldSurface(field), palette::kStock);
+        const sim::StockSimulation::Snapshot field = selected_ < 0 ? (stockBefore_ ? simulation_->initial() : simulation_->finished())
+                                                     : stockBefore_ ? simulation_->before(selected_)
+                                                                    : simulation_->after(selected_);
+        stock_ = actorFor(heightFieldSurface(*field), palette::kStock);
         stock_->GetMapper()->ScalarVisibilityOn();
         stock_->GetMapper()->SetColorModeToDirectScalars();
         stock_->GetProperty()->SetAmbient(0.25);

@@ -8,7 +8,7 @@
 // one door between the core's types and VTK.
 #pragma once
 
-#include "pipeline/pipeline.h"
+#include "model/plan.h"
 #include "viz/path_geometry.h"
 #include "viz/render.h"
 

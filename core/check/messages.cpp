@@ -69,11 +69,6 @@ std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth)
                        quote(b2), quote(depth), unitNo);
 }
 
-std::string tooManyErrors(std::size_t notShown)
-{
-    return fmt::format("{} more errors not listed; correct the ones above first", notShown);
-}
-
 std::string depthNotPositive(Len depth)
 {
     return fmt::format("the depth is {}; it must be greater than zero (measured down from the top face)", quote(depth));

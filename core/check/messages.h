@@ -28,7 +28,6 @@ std::string technologyNotPositive(const std::string& name, double shownValue, co
 std::string alpha3NotBelowAlpha2(Len a3, Len a2);
 std::string alpha1NotBelowDepth(int unitNo, Len a1, Len depth);
 std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth);
-std::string tooManyErrors(std::size_t notShown);
 
 // Dimensions and codes of a unit.
 std::string depthNotPositive(Len depth);

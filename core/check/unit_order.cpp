@@ -1,8 +1,6 @@
 // Machining order of the units (docs/input-checks.md, "Unit order"): start
 // with the unit the operator put first, then always go to the nearest unit
 // not yet machined (centre to centre), ties going to the earlier unit.
-#include "job/job_check.h"
-
 #include "check/unit_checks.h"
 
 #include <limits>

@@ -1,7 +1,6 @@
 // Typed, diagnosing access to the fields of a job document (json_fields.h).
 #include "io/json_fields.h"
 
-#include "check/messages.h"
 #include "io/job_messages.h"
 
 #include <algorithm>
@@ -11,22 +10,6 @@
 namespace taiwa::io {
 
 using nlohmann::json;
-
-void DiagnosticSink::add(Diagnostic d)
-{
-    if (kept_.size() < kMaxDiagnostics) kept_.push_back(std::move(d));
-    else ++dropped_;
-}
-
-Diagnostics DiagnosticSink::finish() &&
-{
-    if (dropped_ > 0) {
-        // The last kept one makes room for the line that counts the rest.
-        kept_.pop_back();
-        kept_.push_back({Severity::Error, std::nullopt, "", "", msg::tooManyErrors(dropped_ + 1)});
-    }
-    return std::move(kept_);
-}
 
 ObjectFields::ObjectFields(const json& object, Place place, DiagnosticSink& sink)
     : object_(object), place_(std::move(place)), sink_(sink)

@@ -17,21 +17,6 @@
 
 namespace taiwa::io {
 
-// Collects diagnostics up to a cap; the rest are counted and summarised by
-// one last line.
-class DiagnosticSink {
-public:
-    static constexpr std::size_t kMaxDiagnostics = 100;
-    void add(Diagnostic d);
-    bool empty() const { return kept_.empty(); }
-    // The kept diagnostics, with a final "N more errors" line when some were dropped.
-    Diagnostics finish() &&;
-
-private:
-    Diagnostics kept_;
-    std::size_t dropped_ = 0;
-};
-
 // Where fields live: the unit (1-based, absent for the job) and its module,
 // and the path of the enclosing object ("stock.", "technology.", "" in a unit).
 struct Place {

@@ -16,7 +16,6 @@ namespace taiwa {
 
 namespace {
 
-constexpr std::size_t kMaxDiagnostics = 100;
 
 Diagnostic jobError(std::string field, std::string message)
 {
@@ -105,11 +104,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     const Diagnostics overlaps = check::interferences(std::move(figures), shown);
     out.insert(out.end(), overlaps.begin(), overlaps.end());
 
-    if (out.size() > kMaxDiagnostics) {
-        const std::size_t dropped = out.size() - (kMaxDiagnostics - 1);
-        out.resize(kMaxDiagnostics - 1);
-        out.push_back({Severity::Error, std::nullopt, "", "", msg::tooManyErrors(dropped)});
-    }
+    out = capped(std::move(out));
     if (!hasErrors(out)) c.technology = tech;
     return c;
 }

@@ -44,7 +44,7 @@ std::string knownModule(const json& unit)
     return findModuleKind(name) ? name : std::string();
 }
 
-std::optional<MachiningUnit> readUnit(const json& unit, int number, io::DiagnosticSink& sink)
+std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSink& sink)
 {
     const std::string module = knownModule(unit);
     static const json kNoFields = json::object();
@@ -112,7 +112,7 @@ TechnologyOverrides readTechnology(const ObjectFields& job)
 }
 
 // A key given twice, reported where it is: in a unit or at job level.
-void reportRepeated(const io::JsonPath& path, const json& root, io::DiagnosticSink& sink)
+void reportRepeated(const io::JsonPath& path, const json& root, DiagnosticSink& sink)
 {
     Diagnostic d{Severity::Error, std::nullopt, "", io::joinPath(path.begin(), path.end()),
                  msg::io::duplicateKey()};
@@ -172,7 +172,7 @@ JobReadResult readJob(std::string_view text)
         return result;
     }
 
-    io::DiagnosticSink sink;
+    DiagnosticSink sink;
     for (const auto& path : doc.repeatedKeys) reportRepeated(path, root, sink);
     const ObjectFields f(root, Place{}, sink);
     f.rejectUnknown("a job", kJobKeys);

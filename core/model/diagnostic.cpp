@@ -1,6 +1,8 @@
 // Formatting diagnostics the way `taiwa check` prints them.
 #include "model/diagnostic.h"
 
+#include <string>
+
 #include <algorithm>
 
 namespace taiwa {
@@ -15,6 +17,30 @@ std::string format(const std::string& job, const Diagnostic& d)
 bool hasErrors(const Diagnostics& ds)
 {
     return std::any_of(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+void DiagnosticSink::add(Diagnostic d)
+{
+    if (kept_.size() < kMaxDiagnostics) kept_.push_back(std::move(d));
+    else ++dropped_;
+}
+
+Diagnostics DiagnosticSink::finish() &&
+{
+    if (dropped_ > 0) {
+        // The last kept one makes room for the line that counts the rest.
+        kept_.pop_back();
+        kept_.push_back({Severity::Error, std::nullopt, "", "",
+                         std::to_string(dropped_ + 1) + " more errors not listed; correct the ones above first"});
+    }
+    return std::move(kept_);
+}
+
+Diagnostics capped(Diagnostics ds)
+{
+    DiagnosticSink sink;
+    for (auto& d : ds) sink.add(std::move(d));
+    return std::move(sink).finish();
 }
 
 }  // namespace taiwa

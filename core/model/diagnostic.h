@@ -1,7 +1,11 @@
-// Diagnostics of input processing: errors as values that name the job, the
-// unit, its module and the field, with a sentence a machinist understands.
+// Diagnostics: what the operator must fix (errors) or should know (warnings,
+// such as a tool reaching its life), as values that name the job, the unit,
+// its module and the field, with a sentence a machinist understands. Every
+// stage reports this way; a failure of the program itself (a file that
+// cannot be written) is a Failure (model/result.h).
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,5 +31,26 @@ using Diagnostics = std::vector<Diagnostic>;
 std::string format(const std::string& job, const Diagnostic& d);
 
 bool hasErrors(const Diagnostics& ds);
+
+// Every list of diagnostics shown to the operator holds at most this many;
+// the last line then counts the rest.
+constexpr std::size_t kMaxDiagnostics = 100;
+
+// Collects diagnostics up to the cap; the rest are counted and summarised by
+// one last line.
+class DiagnosticSink {
+public:
+    void add(Diagnostic d);
+    bool empty() const { return kept_.empty(); }
+    // The kept diagnostics, with a final "N more errors" line when some were dropped.
+    Diagnostics finish() &&;
+
+private:
+    Diagnostics kept_;
+    std::size_t dropped_ = 0;
+};
+
+// The same list, capped as DiagnosticSink caps it.
+Diagnostics capped(Diagnostics ds);
 
 }  // namespace taiwa

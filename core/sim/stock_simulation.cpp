@@ -12,7 +12,7 @@
 namespace taiwa::sim {
 
 StockSimulation::StockSimulation(const Plan& plan, std::size_t maxCells)
-    : initial_(plan.mmJob.stock, HeightField::cellSizeFor(plan.mmJob.stock, maxCells)),
+    : initial_(std::make_shared<const HeightField>(plan.mmJob.stock, HeightField::cellSizeFor(plan.mmJob.stock, maxCells))),
       stride_(std::max(1, (static_cast<int>(plan.steps.size()) + kCheckpoints - 1) / kCheckpoints))
 {
     cuts_.reserve(plan.steps.size());
@@ -31,9 +31,10 @@ void StockSimulation::cutSteps(HeightField& field, int from, int to) const
         if (cuts_[i].hasPath) cut(field, cuts_[i].path, cuts_[i].tool);
 }
 
-const HeightField& StockSimulation::keep(int k, HeightField field)
+const StockSimulation::Snapshot& StockSimulation::keep(int k, HeightField field)
 {
-    const HeightField& kept = snapshots_.insert_or_assign(k, std::move(field)).first->second;
+    const Snapshot& kept =
+        snapshots_.insert_or_assign(k, std::make_shared<const HeightField>(std::move(field))).first->second;
     if (!isCheckpoint(k)) {
         recent_.push_back(k);
         while (recent_.size() > kRecent) {
@@ -44,23 +45,23 @@ const HeightField& StockSimulation::keep(int k, HeightField field)
     return kept;
 }
 
-const HeightField& StockSimulation::after(int k)
+StockSimulation::Snapshot StockSimulation::after(int k)
 {
     if (k < 0 || k >= stepCount())
         throw std::out_of_range("StockSimulation::after: step " + std::to_string(k) + " of " + std::to_string(stepCount()));
     if (auto it = snapshots_.find(k); it != snapshots_.end()) return it->second;
     // Start from the latest snapshot before k; keep the checkpoints passed.
     auto base = snapshots_.lower_bound(k);
-    HeightField field = base == snapshots_.begin() ? initial_ : std::prev(base)->second;
+    HeightField field = base == snapshots_.begin() ? *initial_ : *std::prev(base)->second;
     const int from = base == snapshots_.begin() ? 0 : std::prev(base)->first + 1;
     for (int i = from; i <= k; ++i) {
         cutSteps(field, i, i + 1);
-        if (i < k && isCheckpoint(i)) snapshots_.insert_or_assign(i, field);
+        if (i < k && isCheckpoint(i)) snapshots_.insert_or_assign(i, std::make_shared<const HeightField>(field));
     }
     return keep(k, std::move(field));
 }
 
-const HeightField& StockSimulation::finished()
+StockSimulation::Snapshot StockSimulation::finished()
 {
     const int n = stepCount();
     if (n == 0) return initial_;
@@ -68,16 +69,16 @@ const HeightField& StockSimulation::finished()
     if (n < 2 || !snapshots_.empty()) return after(n - 1);
     const int half = n / 2;
     auto secondHalf = std::async(std::launch::async, [this, half, n] {
-        HeightField field = initial_;
+        HeightField field = *initial_;
         cutSteps(field, half, n);
         return field;
     });
-    HeightField field = after(half - 1);  // on this thread, keeping its checkpoints
+    HeightField field = *after(half - 1);  // on this thread, keeping its checkpoints
     field.meet(secondHalf.get());
     return keep(n - 1, std::move(field));
 }
 
-const HeightField& StockSimulation::before(int k)
+StockSimulation::Snapshot StockSimulation::before(int k)
 {
     if (k == 0) return initial_;
     return after(k - 1);

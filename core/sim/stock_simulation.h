@@ -3,7 +3,9 @@
 // one already known. Kept are at most kCheckpoints evenly spaced ones (any
 // step is then at most stepCount / kCheckpoints cuts away from one) and the
 // kRecent last asked for, so stepping through the steps is fast and a
-// 3,000-step job does not hold 3,000 copies of the stock.
+// 3,000-step job does not hold 3,000 copies of the stock. Snapshots are handed
+// out as shared immutable values: one stays valid however many others are
+// asked for later.
 #pragma once
 
 #include "model/plan.h"
@@ -12,6 +14,7 @@
 #include <cstddef>
 #include <deque>
 #include <map>
+#include <memory>
 
 namespace taiwa::sim {
 
@@ -24,19 +27,20 @@ public:
     static constexpr int kCheckpoints = 32;
     static constexpr std::size_t kRecent = 4;
 
+    using Snapshot = std::shared_ptr<const HeightField>;
+
     int stepCount() const { return static_cast<int>(cuts_.size()); }
-    const HeightField& initial() const { return initial_; }
+    const Snapshot& initial() const { return initial_; }
     // The stock after steps 0..k (k in 0..stepCount()-1). A step without a
-    // path or whose tool is not in the plan removes nothing. The reference
-    // stays valid until kRecent other snapshots have been asked for.
-    const HeightField& after(int k);
+    // path or whose tool is not in the plan removes nothing.
+    Snapshot after(int k);
     // The stock before step k: after(k - 1), or the fresh stock for k = 0.
-    const HeightField& before(int k);
+    Snapshot before(int k);
     // After the last step: the finished part. Asked first, the two halves
     // of the steps are cut on two threads and the results met (every cut
     // only lowers cells, so the order of the cuts does not matter: the
     // result is the same, cell for cell, as cutting them in order).
-    const HeightField& finished();
+    Snapshot finished();
     // How many snapshots are kept now (at most kCheckpoints + kRecent).
     std::size_t snapshotCount() const { return snapshots_.size(); }
 
@@ -47,13 +51,13 @@ private:
         Tool tool;
     };
     bool isCheckpoint(int k) const { return (k + 1) % stride_ == 0; }
-    const HeightField& keep(int k, HeightField field);
+    const Snapshot& keep(int k, HeightField field);
     void cutSteps(HeightField& field, int from, int to) const;  // steps from..to-1
 
-    HeightField initial_;
+    Snapshot initial_;
     std::vector<Cut> cuts_;
     int stride_ = 1;
-    std::map<int, HeightField> snapshots_;
+    std::map<int, Snapshot> snapshots_;
     std::deque<int> recent_;  // snapshots that are not checkpoints, oldest first
 };
 
