@@ -5,6 +5,7 @@
 // the save/open round trip.
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "export/export.h"
 #include "job/job_check.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
@@ -282,6 +283,47 @@ private slots:
 
     // Without OpenGL (the offscreen platform here) the window still opens,
     // plans and posts; the 3-D view's place says why it is empty.
+    void dialectChangeRepostsWithoutReplanning()
+    {
+        // The tool paths do not depend on the dialect: changing it re-posts the
+        // last plan (the very same Plan object) instead of planning again.
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.planRunner()->flush();
+        const auto before = w.planRunner()->fullPlan();
+        QVERIFY(before);
+        w.planRunner()->setDialect("fanuc");
+        w.planRunner()->flush();
+        QCOMPARE(w.planRunner()->fullPlan().get(), before.get());
+        QVERIFY2(w.ncView()->text()->toPlainText().startsWith("%\nO1000"),
+                 qPrintable(w.ncView()->text()->toPlainText().left(40)));
+    }
+
+    void unnamedJobTapeEqualsTheExportedOne()
+    {
+        // One function builds the post options for the NC view and for export:
+        // an unnamed job's program is named after the export stem in both.
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        Job j = w.document()->job();
+        j.name.clear();
+        w.document()->edit(j, "unname", {}, 0);
+        w.planRunner()->flush();
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan && plan->job.name.empty());
+        QTemporaryDir dir;
+        ExportOptions eo;
+        eo.dialect = w.planRunner()->dialect().toStdString();
+        const ExportResult r = exportPlan(*plan, dir.path().toStdString(),
+                                          FileActions::exportStem(w.document()->path()).toStdString(), eo);
+        QVERIFY(!r.error);
+        QFile nc(dir.filePath(FileActions::exportStem(w.document()->path()) + ".nc"));
+        QVERIFY(nc.open(QIODevice::ReadOnly));
+        const QStringList shown = w.ncView()->text()->toPlainText().split('\n');
+        const QStringList written = QString::fromUtf8(nc.readAll()).split('\n');
+        for (qsizetype i = 0; i < std::min(shown.size(), written.size()); ++i)
+            QVERIFY2(shown[i] == written[i], qPrintable(QString("line %1: %2 | %3").arg(i + 1).arg(shown[i], written[i])));
+        QCOMPARE(shown.size(), written.size());
+    }
+
     void noOpenGlShowsAPlaceholder()
     {
         StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
