@@ -1,4 +1,4 @@
-// The command line of interfaces.md: `taiwa [JOB]`, `taiwa check JOB`,
+// The command line of docs/command-line.md: `taiwa [JOB]`, `taiwa check JOB`,
 // `taiwa export JOB --out DIR ...`, `taiwa render JOB --out PNG ...`,
 // `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 1 internal failure.
 #include "app/cli.h"

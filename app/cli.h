@@ -1,4 +1,4 @@
-// The command line of interfaces.md: check, export, render, --version, --help.
+// The command line of docs/command-line.md: check, export, render, --version, --help.
 #pragma once
 namespace taiwa::app {
 // Exit codes: 0 ok, 2 input errors, 1 internal failure.

@@ -1,4 +1,4 @@
-// Entry point of `taiwa`: the command line of interfaces.md, or the station
+// Entry point of `taiwa`: the command line of docs/command-line.md, or the station
 // window when called with no command.
 #include "app/cli.h"
 

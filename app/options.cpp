@@ -1,4 +1,4 @@
-// Parsing of the command line of interfaces.md into Options.
+// Parsing of the command line of docs/command-line.md into Options.
 #include "app/options.h"
 
 #include "post/post.h"

@@ -4,6 +4,8 @@
 // tool changes; tool-life notes.
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "job/job_check.h"
+#include "pipeline/pipeline.h"
 #include "tools/tool_choice.h"
 #include "tools/tool_library.h"
 
@@ -60,6 +62,29 @@ int changes(const std::vector<Step>& steps, const std::vector<int>& order)
 class TestToolChoice : public QObject {
     Q_OBJECT
 private slots:
+    void aToolThatFitsExactlyIsChosen()
+    {
+        // 4.6 x 4.6, r1 1.3, α2 0.3: the roughing outline is 4.0 wide and its
+        // corners 1.0, so a 2 mm end mill fits exactly by the documented rule
+        // (radius <= r1 - α2, diameter <= the inscribed radius). The arithmetic
+        // gives 1.9999999999999998: the check passed it and tool choice refused it.
+        Job j;
+        j.stock = {0, 0, 50, 50, 20};
+        M4Pocket p;
+        p.corners = {Point2{10, 10}, Point2{14.6, 10}, Point2{14.6, 14.6}, Point2{10, 14.6}};
+        p.cornerRadius = 1.3;
+        p.depth = 5;
+        p.pilotHole = 9;
+        j.units.push_back({"exact", p});
+        QVERIFY(!hasErrors(checkJob(j, TechnologyTable::builtIn(), lib())));
+        PlanOptions stepsOnly;
+        stepsOnly.withToolPaths = false;
+        const Plan plan = planJob(j, TechnologyTable::builtIn(), lib(), stepsOnly);
+        QVERIFY2(plan.ok(), plan.diagnostics.empty() ? "" : plan.diagnostics.front().message.c_str());
+        for (const auto& s : plan.steps)
+            if (s.kind == StepKind::Roughing) QCOMPARE(tool(s.tool->toolId).diameter, 2.0);
+    }
+
     void roughingTakesTheLargestEndMillThatFitsAndThePilotFollowsIt()
     {
         auto steps = decomposeM4(pocket(6), tech(), 0);  // roughing corner radius 5.7

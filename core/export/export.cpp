@@ -1,4 +1,4 @@
-// Export of a planned job into its files (interfaces.md), and the
+// Export of a planned job into its files (docs/command-line.md), and the
 // machine-readable step list STEM.steps.json.
 #include "export/export.h"
 

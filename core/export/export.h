@@ -1,4 +1,4 @@
-// Export of a planned job: the files of interfaces.md ("export writes into
+// Export of a planned job: the files of docs/command-line.md ("export writes into
 // DIR"), each written atomically. Shared by `taiwa export` and the window's
 // export dialog. Its own library (taiwa_export): the PDF sheet is painted
 // with Qt, which the rest of the core does without.

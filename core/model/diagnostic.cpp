@@ -11,7 +11,8 @@ std::string format(const std::string& job, const Diagnostic& d)
 {
     if (!d.unit && d.field.empty()) return job + ": " + d.message;  // the file itself (unreadable, not JSON)
     const std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
-    return job + ": " + where + " " + (d.field.empty() ? std::string("unit") : d.field) + ": " + d.message;
+    const std::string kind = d.severity == Severity::Warning ? "warning: " : "";
+    return job + ": " + where + " " + (d.field.empty() ? std::string("unit") : d.field) + ": " + kind + d.message;
 }
 
 bool hasErrors(const Diagnostics& ds)

@@ -27,7 +27,8 @@ using Diagnostics = std::vector<Diagnostic>;
 
 // "JOB: unit N (MODULE) field: message", or "JOB: job field: message" for a
 // job-level field, or "JOB: message" for the file as a whole (no unit, no
-// field: unreadable, not JSON), as `taiwa check` prints it.
+// field: unreadable, not JSON), as `taiwa check` prints it. A warning's
+// message starts with "warning: ".
 std::string format(const std::string& job, const Diagnostic& d);
 
 bool hasErrors(const Diagnostics& ds);

@@ -1,4 +1,4 @@
-// Controller dialects as data (interfaces.md "Dialects"): framing, sequence
+// Controller dialects as data (docs/command-line.md "Dialects"): framing, sequence
 // numbers, number style, comments, the words of tool changes, cycles and the
 // program end. The one writer (gcode_writer) reads these; no dialect copies
 // the writer. Templates use fmt named fields: {units}, {workOffset}, {tool},

@@ -1,6 +1,6 @@
 // Post-processors (pipeline stage 5): CL data to NC data for one controller
 // dialect, and the tape image list. A dialect is data plus a small class
-// (interfaces.md "Dialects"); the writer owns all number formatting.
+// (docs/command-line.md "Dialects"); the writer owns all number formatting.
 #pragma once
 
 #include "model/job.h"

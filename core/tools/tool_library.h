@@ -1,4 +1,4 @@
-// The shop's tool library in SQLite, shared by all jobs (interfaces.md "Tool
+// The shop's tool library in SQLite, shared by all jobs (docs/command-line.md "Tool
 // library"). Created with the default library on first use. Every failure
 // (corrupt file, locked database, read-only folder) is an error value with a
 // clear message; nothing here ever touches a job.

@@ -1,0 +1,111 @@
+// The contract of a module's door (core/modules/module_kind.h), checked on
+// every registered module kind, so a new module is held to it without a test
+// of its own: its default unit checks clean and plans; it survives the job
+// file; every form field reads back what it sets; lengths convert both ways;
+// its name finds it in the registry.
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "modules/registry.h"
+#include "pipeline/pipeline.h"
+#include "tools/tool_library.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace taiwa;
+
+namespace {
+
+Job jobWith(const ModuleKind& kind)
+{
+    Job j;
+    j.name = std::string("default ") + kind.name();
+    j.stock = {0, 0, 200, 150, 40};
+    j.units.push_back({"u", kind.makeDefault(j.stock)});
+    return j;
+}
+
+}  // namespace
+
+class TestModules : public QObject {
+    Q_OBJECT
+private slots:
+    void registryFindsEveryKindByName()
+    {
+        QVERIFY(moduleKinds().size() >= 2);
+        for (const ModuleKind* k : moduleKinds()) {
+            QCOMPARE(findModuleKind(k->name()), k);
+            QCOMPARE(std::string(k->makeDefault({}).name()), std::string(k->name()));
+            QVERIFY(std::string(k->drawing()).starts_with(":/modules/"));
+            QVERIFY(!std::string(k->paletteText()).empty());
+        }
+        QVERIFY(!findModuleKind("M99"));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, moduleKind(ModuleInput{}));
+    }
+
+    void defaultUnitChecksCleanAndPlans()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            const Job j = jobWith(*k);
+            const Diagnostics ds = checkJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY2(!hasErrors(ds), qPrintable(QString::fromStdString(ds.empty() ? "" : format("job", ds.front()))));
+            const Plan plan = planJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY2(plan.ok(), k->name());
+            QVERIFY(!plan.steps.empty());
+            for (const Step& s : plan.steps) {
+                QCOMPARE(s.module, std::string(k->name()));
+                QVERIFY(s.tool && s.path && s.minutes);
+            }
+        }
+    }
+
+    void unitSurvivesTheJobFile()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            const Job j = jobWith(*k);
+            const JobReadResult back = readJob(writeJob(j));
+            QVERIFY2(back.job, k->name());
+            QVERIFY(*back.job == j);
+            QCOMPARE(writeJob(*back.job), writeJob(j));
+        }
+    }
+
+    void everyFormFieldReadsBackWhatItSets()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            QVERIFY(!k->fields().empty());
+            ModuleInput m = k->makeDefault({});
+            for (const FormField& f : k->fields()) {
+                const double v = f.kind == FormFieldKind::Code ? f.codes.back().first : 3.25;
+                f.set(m, v);
+                QVERIFY2(f.get(m) && *f.get(m) == v, f.key.c_str());
+                QVERIFY(!f.label.empty() && !f.diagFields.empty());
+                if (f.kind == FormFieldKind::OptionalNumber) {
+                    f.set(m, std::nullopt);
+                    QVERIFY(!f.get(m));
+                }
+            }
+        }
+    }
+
+    void lengthsConvertBothWays()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            const ModuleInput mm = k->makeDefault({});
+            ModuleInput m = mm;
+            m.convertLengths([](double v) { return v / 25.4; });
+            QVERIFY(!(m == mm));
+            m.convertLengths([](double v) { return v * 25.4; });
+            // Every field within rounding of the original.
+            for (const FormField& f : k->fields()) {
+                const auto a = f.get(mm), b = f.get(m);
+                QCOMPARE(a.has_value(), b.has_value());
+                if (a) QVERIFY2(std::abs(*a - *b) <= 1e-12 * std::max(1.0, std::abs(*a)), f.key.c_str());
+            }
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestModules)
+#include "test_modules.moc"
