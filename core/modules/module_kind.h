@@ -88,6 +88,11 @@ public:
     {
         return planInput(mm.as<T>(), ctx, out);
     }
+    const std::vector<FormField>& fields() const final
+    {
+        static const std::vector<FormField> fs = formFields();  // one per module kind
+        return fs;
+    }
 
 protected:
     virtual T readInput(const io::ObjectFields& unit) const = 0;
@@ -95,6 +100,15 @@ protected:
     virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const = 0;
     virtual std::optional<Quad> outline(const T& mm) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
+    virtual std::vector<FormField> formFields() const = 0;
 };
+
+// The one instance of a module kind, for its `<kind>Module()` function.
+template <class Kind>
+const ModuleKind& moduleInstance()
+{
+    static const Kind kind;
+    return kind;
+}
 
 }  // namespace taiwa

@@ -53,12 +53,6 @@ public:
         return p;
     }
 
-    const std::vector<FormField>& fields() const override
-    {
-        static const std::vector<FormField> fs = makeFields();
-        return fs;
-    }
-
 protected:
     M2DPocket readInput(const io::ObjectFields& f) const override
     {
@@ -123,8 +117,7 @@ protected:
         return steps;
     }
 
-private:
-    static std::vector<FormField> makeFields()
+    std::vector<FormField> formFields() const override
     {
         using form::member;
         using form::number;
@@ -169,10 +162,6 @@ private:
 
 }  // namespace
 
-const ModuleKind& m2dModule()
-{
-    static const M2DKind kind;
-    return kind;
-}
+const ModuleKind& m2dModule() { return moduleInstance<M2DKind>(); }
 
 }  // namespace taiwa

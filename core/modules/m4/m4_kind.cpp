@@ -30,12 +30,6 @@ public:
         return p;
     }
 
-    const std::vector<FormField>& fields() const override
-    {
-        static const std::vector<FormField> fs = makeFields();
-        return fs;
-    }
-
 protected:
     M4Pocket readInput(const io::ObjectFields& f) const override
     {
@@ -91,8 +85,7 @@ protected:
         return steps;
     }
 
-private:
-    static std::vector<FormField> makeFields()
+    std::vector<FormField> formFields() const override
     {
         using form::member;
         using form::number;
@@ -126,10 +119,6 @@ private:
 
 }  // namespace
 
-const ModuleKind& m4Module()
-{
-    static const M4Kind kind;
-    return kind;
-}
+const ModuleKind& m4Module() { return moduleInstance<M4Kind>(); }
 
 }  // namespace taiwa
