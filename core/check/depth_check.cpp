@@ -1,4 +1,4 @@
-// The depth check both modules share (see unit_checks.h).
+// The depth checks the pocket modules share (see unit_checks.h).
 #include "check/messages.h"
 #include "check/unit_checks.h"
 
@@ -14,6 +14,20 @@ bool checkDepth(double depth, Reporter& r)
     if (r.ctx.stock && depth > r.ctx.stock->height + kTolerance)
         r.unit("depth", msg::deeperThanStock(r.len(depth), r.len(r.ctx.stock->height)));
     return true;
+}
+
+bool checkDepthAllowances(double depth, const TechnologyData& tech, bool drillsPilot, bool roughsToFloor, Reporter& r)
+{
+    bool ok = true;
+    if (drillsPilot && tech.alpha1 >= depth) {
+        r.job("technology.alpha1", msg::alpha1NotBelowDepth(r.unitNo, r.len(tech.alpha1), r.len(depth)));
+        ok = false;
+    }
+    if (roughsToFloor && tech.beta2 >= depth) {
+        r.job("technology.beta2", msg::beta2NotBelowDepth(r.unitNo, r.len(tech.beta2), r.len(depth)));
+        ok = false;
+    }
+    return ok;
 }
 
 }  // namespace taiwa::check

@@ -52,6 +52,11 @@ struct UnitReport {
 // The depth T of either module: positive, and no deeper than the stock
 // (when the stock is valid). False when it is not positive.
 bool checkDepth(double depth, Reporter& r);
+// The allowances a pocket leaves against its depth T: α1 (the pilot hole
+// stops α1 above the floor) when it drills one, β2 (roughing stops β2 above
+// the floor) when it roughs or finishes the floor. Reported on the job's
+// technology fields, naming the unit. False when one is not below T.
+bool checkDepthAllowances(double depth, const TechnologyData& tech, bool drillsPilot, bool roughsToFloor, Reporter& r);
 
 // One corner radius that a step's tool must fit into.
 struct RoomQuery {

@@ -134,15 +134,8 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 
     if (!ctx.tech || !codes || !depthOk) return report;
     const TechnologyData& tech = *ctx.tech;
-    bool depthsOk = true;
-    if (p.pilotHole == 0 && tech.alpha1 >= p.depth) {
-        r.job("technology.alpha1", msg::alpha1NotBelowDepth(unitNo, r.len(tech.alpha1), r.len(p.depth)));
-        depthsOk = false;
-    }
-    if (tech.beta2 >= p.depth) {
-        r.job("technology.beta2", msg::beta2NotBelowDepth(unitNo, r.len(tech.beta2), r.len(p.depth)));
-        depthsOk = false;
-    }
+    const bool depthsOk =
+        checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill, true, r);
     if (report.figureValid && floorOk && anglesOk && depthsOk) checkToolRoom(p, tech, r);
     return report;
 }

@@ -161,15 +161,8 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
     if (!ctx.tech || !codes || !depthOk) return report;
     const TechnologyData& tech = *ctx.tech;
     const ToolUse use = *toolUseFromCode(p.toolUse);
-    bool depthsOk = true;
-    if (*pilotHoleFromCode(p.pilotHole) == PilotHole::Drill && tech.alpha1 >= p.depth) {
-        r.job("technology.alpha1", msg::alpha1NotBelowDepth(unitNo, r.len(tech.alpha1), r.len(p.depth)));
-        depthsOk = false;
-    }
-    if ((hasRoughing(use) || hasFloorFinishing(use)) && tech.beta2 >= p.depth) {
-        r.job("technology.beta2", msg::beta2NotBelowDepth(unitNo, r.len(tech.beta2), r.len(p.depth)));
-        depthsOk = false;
-    }
+    const bool depthsOk = checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill,
+                                               hasRoughing(use) || hasFloorFinishing(use), r);
     if (outlineOk && taperOk && taperFits && depthsOk) checkToolRoom(p, tech, r);
     return report;
 }
