@@ -11,6 +11,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -233,6 +234,45 @@ private slots:
         QVERIFY(i > 0);
         QCOMPARE(l[i + 1], QString("G2 X20 Y50 I0 J-5"));        // X, Y stated even when unchanged
         QCOMPARE(l[i + 2], QString("G3 X25 Y45 Z-4 I0 J-5"));    // Z only when it changes
+    }
+
+    // The writer's last guard: an arc whose radius or length is below one
+    // unit of the tape (0.001 mm, 0.0001 in) is written as a line, or not at
+    // all, never as "G3 X92 Y30 I0 J0"; a full circle stays a full circle.
+    void degenerateArcsBecomeLines()
+    {
+        const auto tape = [](LengthUnit u, const std::function<void(post::MachineSink&)>& moves) {
+            post::GCodeWriter w(post::linuxcncDialect(), u);
+            w.toolChange(1);
+            w.rapid({92, 29.9999, -2});
+            moves(w);
+            const QStringList l = lines(w.text());
+            return l.mid(l.indexOf(QRegularExpression("^G0 G54 X92 .*")) + 2);  // after the rapid across and down
+        };
+        // A slot's collapsed ring: quarter arcs of radius 0.1 µm around (92, 30).
+        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) {
+                     w.arc({92.0001, 30, -2}, {92, 30}, false, 100);
+                     w.arc({92, 30.0001, -2}, {92, 30}, false, 100);
+                     w.feed({28, 30.0001, -2}, 100);
+                 }),
+                 (QStringList{"G1 X28 F100"}));
+        // Radius 0.4 µm, half a turn down a little: a line.
+        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) { w.arc({92, 30.0007, -2.1}, {92, 30.0003}, true, 100); }),
+                 (QStringList{"G1 Y30.001 Z-2.1 F100"}));
+        // Radius 10 mm but 0.5 µm along the arc: a line, not a full circle.
+        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) {
+                     w.arc({92 - 10 * (1 - std::cos(5e-5)), 29.9999 + 10 * std::sin(5e-5), -2}, {82, 29.9999}, false, 100);
+                 }),
+                 QStringList{});
+        // A true full circle of 1 µm radius is still written as one.
+        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }),
+                 (QStringList{"G3 X92 Y30 I0.001 J0 F100"}));
+        // In inch (the writer's input is in tape units) one unit is 0.0001 in:
+        // a radius of 0.00008 in is a line, one of 0.0003 in an arc.
+        QCOMPARE(tape(LengthUnit::Inch, [](post::MachineSink& w) { w.arc({92.00016, 29.9999, -2}, {92.00008, 29.9999}, false, 100); }),
+                 (QStringList{"G1 X92.0002 F100"}));
+        QCOMPARE(tape(LengthUnit::Inch, [](post::MachineSink& w) { w.arc({92.0006, 29.9999, -2}, {92.0003, 29.9999}, false, 100); }),
+                 (QStringList{"G3 X92.0006 Y29.9999 I0.0003 J0 F100"}));
     }
 
     void drillingWithAndWithoutPeck()

@@ -37,10 +37,12 @@ public:
     const std::vector<BlockSource>& sources() const { return sources_; }
 
 private:
-    // The number of an axis word as written, and the value the controller reads from it.
+    // The number of an axis word as written, the value the controller reads
+    // from it, and the value the caller asked for.
     struct Written {
         std::string text;
         double value = 0.0;
+        double exact = 0.0;
     };
 
     std::string length(double v) const;
@@ -59,6 +61,7 @@ private:
     LengthUnit units_;
     int decimals_;
     int feedDecimals_;
+    double resolution_;  // one unit of the last decimal of a length: 0.001 mm, 0.0001 in
     int sequence_ = 0;
     BlockSource source_;
     std::string text_;
