@@ -275,6 +275,91 @@ private slots:
                  (QStringList{"G3 X92.0006 Y29.9999 I0.0003 J0 F100"}));
     }
 
+    // The job's work offset reaches the tape: in LinuxCNC's preamble and with
+    // the first move after each tool change in both dialects, and nowhere a
+    // G54 the job did not ask for. Every G54..G59; FANUC's G54.1 P1..P48;
+    // LinuxCNC's G59.1..G59.3. Before, the tape always said G54.
+    void workOffsetReachesTheTape_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("asked");
+        QTest::addColumn<QString>("words");
+        for (const char* d : {"linuxcnc", "fanuc"})
+            for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"}) QTest::newRow(qPrintable(QString(d) + " " + g)) << d << g << g;
+        for (const char* g : {"G59.1", "G59.2", "G59.3"}) QTest::newRow(qPrintable(QString("linuxcnc ") + g)) << "linuxcnc" << g << g;
+        for (const int p : {1, 2, 17, 47, 48})
+            QTest::newRow(qPrintable(QString("fanuc G54.1 P%1").arg(p))) << "fanuc" << QString("G54.1 P%1").arg(p) << QString("G54.1 P%1").arg(p);
+        // One spelling on the tape whatever the job's.
+        QTest::newRow("fanuc g54.1p7") << "fanuc" << "g54.1p7" << "G54.1 P7";
+        QTest::newRow("linuxcnc g56") << "linuxcnc" << " g56 " << "G56";
+    }
+    void workOffsetReachesTheTape()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, asked);
+        QFETCH(QString, words);
+        for (const LengthUnit u : {LengthUnit::Millimetre, LengthUnit::Inch}) {
+            auto o = options(dialect.toStdString(), u);
+            o.workOffset = asked.toStdString();
+            QCOMPARE(workOffsetProblem(o.dialect, o.workOffset), std::nullopt);
+            const QStringList l = lines(postProcess(steps(), library(), o).nc);
+            const bool fanuc = dialect == "fanuc";
+            const QString units = u == LengthUnit::Inch ? "G20" : "G21";
+            const QString across = u == LengthUnit::Inch ? "X0.3937 Y0.7874" : fanuc ? "X10. Y20." : "X10 Y20";
+            // Both tool changes restate it with the first move across.
+            QCOMPARE(l.filter(QRegularExpression("^(N\\d+ )?G0 " + QRegularExpression::escape(words) + " " + across + "$")).size(), 2);
+            if (fanuc) QVERIFY(l.contains("N10 G17 " + units + " G40 G49 G80 G90"));
+            else QVERIFY(l.contains("G17 " + units + " G40 G49 " + words + " G80 G90 G94 G64 P0.01"));
+            // No other work offset anywhere: every G5x word on the tape is the job's.
+            for (const auto& line : l) {
+                if (line.startsWith('(')) continue;
+                const QString rest = QString(line).remove(words);
+                QVERIFY2(!rest.contains(QRegularExpression("G5[4-9]")), qPrintable(line));
+            }
+        }
+    }
+
+    // What a controller does not have is refused, saying what it offers,
+    // before anything is written; LinuxCNC has no G54.1 (its interpreter
+    // stops at "Unknown g code used"), FANUC no G59.1.
+    void workOffsetTheControllerLacksIsRefused_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("asked");
+        QTest::addColumn<QString>("message");
+        const QString lcnc = "linuxcnc offers G54 to G59, G59.1, G59.2 and G59.3";
+        const QString fanuc = "fanuc offers G54 to G59 and G54.1 P1 to P48";
+        QTest::newRow("linuxcnc G54.1 P1") << "linuxcnc" << "G54.1 P1"
+                                          << "work offset 'G54.1 P1' cannot be posted for linuxcnc: linuxcnc has no G54.1 P "
+                                             "(FANUC's extended work offsets); " + lcnc;
+        QTest::newRow("linuxcnc G54.1 P48") << "linuxcnc" << "G54.1 P48" << lcnc;
+        QTest::newRow("fanuc G59.1") << "fanuc" << "G59.1" << "work offset 'G59.1' cannot be posted for fanuc: fanuc has no G59.1; " + fanuc;
+        QTest::newRow("fanuc G54.1 P0") << "fanuc" << "G54.1 P0" << "there is no G54.1 P0; " + fanuc;
+        QTest::newRow("fanuc G54.1 P49") << "fanuc" << "G54.1 P49" << "there is no G54.1 P49; " + fanuc;
+        QTest::newRow("linuxcnc G59.4") << "linuxcnc" << "G59.4" << "linuxcnc has no G59.4; " + lcnc;
+        QTest::newRow("linuxcnc G53") << "linuxcnc" << "G53" << "not a work offset; " + lcnc;
+        QTest::newRow("fanuc G60") << "fanuc" << "G60" << "not a work offset; " + fanuc;
+        QTest::newRow("fanuc G54 P1") << "fanuc" << "G54 P1" << "not a work offset";
+        QTest::newRow("empty") << "fanuc" << "" << "work offset '' cannot be posted for fanuc: not a work offset";
+    }
+    void workOffsetTheControllerLacksIsRefused()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, asked);
+        QFETCH(QString, message);
+        auto o = options(dialect.toStdString());
+        o.workOffset = asked.toStdString();
+        const auto why = workOffsetProblem(o.dialect, o.workOffset);
+        QVERIFY(why.has_value());
+        QVERIFY2(QString::fromStdString(*why).contains(message), why->c_str());
+        try {
+            postProcess(steps(), library(), o);
+            QFAIL("posted a work offset the controller lacks");
+        } catch (const std::invalid_argument& e) {
+            QCOMPARE(std::string(e.what()), *why);
+        }
+    }
+
     void drillingWithAndWithoutPeck()
     {
         auto s = steps();

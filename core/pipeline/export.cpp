@@ -100,6 +100,10 @@ ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::
         result.error = "the job did not pass input processing; nothing was written";
         return result;
     }
+    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset)) {
+        result.error = *why + "; nothing was written";
+        return result;
+    }
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) {
@@ -115,6 +119,7 @@ ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::
     post.programNumber = options.programNumber;
     post.programName = plan.job.name.empty() ? stem : plan.job.name;
     post.material = plan.mmJob.material;
+    post.workOffset = plan.job.workOffset;
     const PostedProgram program = postProcess(plan.steps, plan.tools, post);
 
     SheetOptions sheet;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace taiwa::post {
 
@@ -38,8 +39,8 @@ std::string commentText(const std::string& text, bool upper)
 
 }  // namespace
 
-GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units)
-    : dialect_(dialect), units_(units),
+GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset)
+    : dialect_(dialect), units_(units), workOffset_(std::move(workOffset)),
       decimals_(units == LengthUnit::Inch ? dialect.lengthDecimals.inch : dialect.lengthDecimals.mm),
       feedDecimals_(units == LengthUnit::Inch ? dialect.feedDecimals.inch : dialect.feedDecimals.mm),
       resolution_(std::pow(10.0, -decimals_))
@@ -140,7 +141,7 @@ void GCodeWriter::programStart(const ProgramInfo& info)
     for (const auto& t : info.tools) comment(fmt::format("T{} D{} {}", t.number, length(t.diameter), t.name));
     for (const auto& b : dialect_.preamble)
         block(fmt::format(fmt::runtime(b), fmt::arg("units", units_ == LengthUnit::Inch ? "G20" : "G21"),
-                          fmt::arg("workOffset", dialect_.workOffset)));
+                          fmt::arg("workOffset", workOffset_)));
 }
 
 void GCodeWriter::comment(const std::string& text)
@@ -187,7 +188,7 @@ void GCodeWriter::rapid(const Point3& to)
         // Position unknown (after a tool change): across in XY at the height
         // the retract left, then down in Z with the length offset.
         Written x = written(to.x), y = written(to.y);
-        block(motion("G0") + (workOffsetDue_ ? dialect_.workOffset + " " : "") + "X" + x.text + " Y" + y.text);
+        block(motion("G0") + (workOffsetDue_ ? workOffset_ + " " : "") + "X" + x.text + " Y" + y.text);
         axis_[X] = std::move(x);
         axis_[Y] = std::move(y);
         workOffsetDue_ = false;

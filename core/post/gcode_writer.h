@@ -18,7 +18,8 @@ namespace taiwa::post {
 
 class GCodeWriter final : public MachineSink {
 public:
-    GCodeWriter(const Dialect& dialect, LengthUnit units);
+    // workOffset: the words selecting the work offset, as workOffsetWords gives them.
+    GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset = "G54");
 
     void source(BlockSource where) override { source_ = where; }
     void programStart(const ProgramInfo& info) override;
@@ -59,6 +60,7 @@ private:
 
     const Dialect& dialect_;
     LengthUnit units_;
+    std::string workOffset_;
     int decimals_;
     int feedDecimals_;
     double resolution_;  // one unit of the last decimal of a length: 0.001 mm, 0.0001 in
