@@ -241,7 +241,8 @@ private slots:
     // all, never as "G3 X92 Y30 I0 J0"; a full circle stays a full circle.
     void degenerateArcsBecomeLines()
     {
-        const auto tape = [](LengthUnit u, const std::function<void(post::MachineSink&)>& moves) {
+        using Sink = post::MachineSink;
+        const auto tape = [](LengthUnit u, const std::function<void(Sink&)>& moves) {
             post::GCodeWriter w(post::linuxcncDialect(), u);
             w.toolChange(1);
             w.rapid({92, 29.9999, -2});
@@ -249,29 +250,31 @@ private slots:
             const QStringList l = lines(w.text());
             return l.mid(l.indexOf(QRegularExpression("^G0 G54 X92 .*")) + 2);  // after the rapid across and down
         };
+        const auto mm = LengthUnit::Millimetre, in = LengthUnit::Inch;
         // A slot's collapsed ring: quarter arcs of radius 0.1 µm around (92, 30).
-        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) {
+        QCOMPARE(tape(mm, [](Sink& w) {
                      w.arc({92.0001, 30, -2}, {92, 30}, false, 100);
                      w.arc({92, 30.0001, -2}, {92, 30}, false, 100);
                      w.feed({28, 30.0001, -2}, 100);
                  }),
                  (QStringList{"G1 X28 F100"}));
         // Radius 0.4 µm, half a turn down a little: a line.
-        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) { w.arc({92, 30.0007, -2.1}, {92, 30.0003}, true, 100); }),
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 30.0007, -2.1}, {92, 30.0003}, true, 100); }),
                  (QStringList{"G1 Y30.001 Z-2.1 F100"}));
         // Radius 10 mm but 0.5 µm along the arc: a line, not a full circle.
-        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) {
-                     w.arc({92 - 10 * (1 - std::cos(5e-5)), 29.9999 + 10 * std::sin(5e-5), -2}, {82, 29.9999}, false, 100);
+        QCOMPARE(tape(mm, [](Sink& w) {
+                     const double a = 5e-5;  // rad
+                     w.arc({82 + 10 * std::cos(a), 29.9999 + 10 * std::sin(a), -2}, {82, 29.9999}, false, 100);
                  }),
                  QStringList{});
         // A true full circle of 1 µm radius is still written as one.
-        QCOMPARE(tape(LengthUnit::Millimetre, [](post::MachineSink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }),
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }),
                  (QStringList{"G3 X92 Y30 I0.001 J0 F100"}));
         // In inch (the writer's input is in tape units) one unit is 0.0001 in:
         // a radius of 0.00008 in is a line, one of 0.0003 in an arc.
-        QCOMPARE(tape(LengthUnit::Inch, [](post::MachineSink& w) { w.arc({92.00016, 29.9999, -2}, {92.00008, 29.9999}, false, 100); }),
+        QCOMPARE(tape(in, [](Sink& w) { w.arc({92.00016, 29.9999, -2}, {92.00008, 29.9999}, false, 100); }),
                  (QStringList{"G1 X92.0002 F100"}));
-        QCOMPARE(tape(LengthUnit::Inch, [](post::MachineSink& w) { w.arc({92.0006, 29.9999, -2}, {92.0003, 29.9999}, false, 100); }),
+        QCOMPARE(tape(in, [](Sink& w) { w.arc({92.0006, 29.9999, -2}, {92.0003, 29.9999}, false, 100); }),
                  (QStringList{"G3 X92.0006 Y29.9999 I0.0003 J0 F100"}));
     }
 
@@ -284,14 +287,16 @@ private slots:
         QTest::addColumn<QString>("dialect");
         QTest::addColumn<QString>("asked");
         QTest::addColumn<QString>("words");
+        const auto row = [](const QString& dialect, const QString& asked, const QString& words) {
+            QTest::newRow(qPrintable(dialect + " " + asked)) << dialect << asked << words;
+        };
         for (const char* d : {"linuxcnc", "fanuc"})
-            for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"}) QTest::newRow(qPrintable(QString(d) + " " + g)) << d << g << g;
-        for (const char* g : {"G59.1", "G59.2", "G59.3"}) QTest::newRow(qPrintable(QString("linuxcnc ") + g)) << "linuxcnc" << g << g;
-        for (const int p : {1, 2, 17, 47, 48})
-            QTest::newRow(qPrintable(QString("fanuc G54.1 P%1").arg(p))) << "fanuc" << QString("G54.1 P%1").arg(p) << QString("G54.1 P%1").arg(p);
+            for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"}) row(d, g, g);
+        for (const char* g : {"G59.1", "G59.2", "G59.3"}) row("linuxcnc", g, g);
+        for (const int p : {1, 2, 17, 47, 48}) row("fanuc", QString("G54.1 P%1").arg(p), QString("G54.1 P%1").arg(p));
         // One spelling on the tape whatever the job's.
-        QTest::newRow("fanuc g54.1p7") << "fanuc" << "g54.1p7" << "G54.1 P7";
-        QTest::newRow("linuxcnc g56") << "linuxcnc" << " g56 " << "G56";
+        row("fanuc", "g54.1p7", "G54.1 P7");
+        row("linuxcnc", " g56 ", "G56");
     }
     void workOffsetReachesTheTape()
     {
@@ -307,7 +312,8 @@ private slots:
             const QString units = u == LengthUnit::Inch ? "G20" : "G21";
             const QString across = u == LengthUnit::Inch ? "X0.3937 Y0.7874" : fanuc ? "X10. Y20." : "X10 Y20";
             // Both tool changes restate it with the first move across.
-            QCOMPARE(l.filter(QRegularExpression("^(N\\d+ )?G0 " + QRegularExpression::escape(words) + " " + across + "$")).size(), 2);
+            const QRegularExpression restated("^(N\\d+ )?G0 " + QRegularExpression::escape(words) + " " + across + "$");
+            QCOMPARE(l.filter(restated).size(), 2);
             if (fanuc) QVERIFY(l.contains("N10 G17 " + units + " G40 G49 G80 G90"));
             else QVERIFY(l.contains("G17 " + units + " G40 G49 " + words + " G80 G90 G94 G64 P0.01"));
             // No other work offset anywhere: every G5x word on the tape is the job's.
@@ -329,11 +335,13 @@ private slots:
         QTest::addColumn<QString>("message");
         const QString lcnc = "linuxcnc offers G54 to G59, G59.1, G59.2 and G59.3";
         const QString fanuc = "fanuc offers G54 to G59 and G54.1 P1 to P48";
-        QTest::newRow("linuxcnc G54.1 P1") << "linuxcnc" << "G54.1 P1"
-                                          << "work offset 'G54.1 P1' cannot be posted for linuxcnc: linuxcnc has no G54.1 P "
-                                             "(FANUC's extended work offsets); " + lcnc;
+        QTest::newRow("linuxcnc G54.1 P1")
+            << "linuxcnc" << "G54.1 P1"
+            << "work offset 'G54.1 P1' cannot be posted for linuxcnc: linuxcnc has no G54.1 P (FANUC's extended work "
+               "offsets); " + lcnc;
         QTest::newRow("linuxcnc G54.1 P48") << "linuxcnc" << "G54.1 P48" << lcnc;
-        QTest::newRow("fanuc G59.1") << "fanuc" << "G59.1" << "work offset 'G59.1' cannot be posted for fanuc: fanuc has no G59.1; " + fanuc;
+        QTest::newRow("fanuc G59.1") << "fanuc" << "G59.1"
+                                    << "work offset 'G59.1' cannot be posted for fanuc: fanuc has no G59.1; " + fanuc;
         QTest::newRow("fanuc G54.1 P0") << "fanuc" << "G54.1 P0" << "there is no G54.1 P0; " + fanuc;
         QTest::newRow("fanuc G54.1 P49") << "fanuc" << "G54.1 P49" << "there is no G54.1 P49; " + fanuc;
         QTest::newRow("linuxcnc G59.4") << "linuxcnc" << "G59.4" << "linuxcnc has no G59.4; " + lcnc;

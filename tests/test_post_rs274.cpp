@@ -264,7 +264,8 @@ private slots:
         QVERIFY2(r.ok, qPrintable(r.errors));
         const QString d = disagreement(r, job(), library(), o.units);
         QVERIFY2(d.isEmpty(), qPrintable(d));
-        static const QRegularExpression set(R"(SET_G5X_OFFSET\((\d+),)"), move(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED)\()");
+        static const QRegularExpression set(R"(SET_G5X_OFFSET\((\d+),)");
+        static const QRegularExpression move(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED)\()");
         int inForce = 0, moves = 0, cuts = 0;
         for (const auto& line : r.canon) {
             if (const auto m = set.match(line); m.hasMatch()) inForce = m.captured(1).toInt();
@@ -272,7 +273,8 @@ private slots:
             const auto m = move.match(line);
             if (!m.hasMatch()) continue;
             const bool cut = m.captured(1) != "STRAIGHT_TRAVERSE";
-            if (dialect == "linuxcnc" || cut) QVERIFY2(inForce == index, qPrintable(line + QString(" in system %1").arg(inForce)));
+            if (dialect == "linuxcnc" || cut)
+                QVERIFY2(inForce == index, qPrintable(line + QString(" in system %1").arg(inForce)));
             ++moves;
             cuts += cut;
         }

@@ -32,7 +32,8 @@ struct Figure {
 Figure figure(const ModuleInput& m, int unit)
 {
     const Quad q = topOutline(m);
-    Figure f{unit, toClipper(flatten(q, kChordTolerance)), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y, q.corners[0].y};
+    Figure f{unit, toClipper(flatten(q, kChordTolerance)), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y,
+             q.corners[0].y};
     for (std::size_t i = 0; i < 4; ++i) {
         f.perimeter += distance(q.corners[i], q.corners[(i + 1) % 4]);
         f.minX = std::min(f.minX, q.corners[i].x);

@@ -38,6 +38,9 @@ inline Point2 fromClipper(const ClipperLib::IntPoint& p)
 }
 
 // The area of a Clipper polygon in mm², whatever its orientation.
-inline double clipperAreaMm2(const ClipperLib::Path& p) { return std::abs(ClipperLib::Area(p)) / (kClipperScale * kClipperScale); }
+inline double clipperAreaMm2(const ClipperLib::Path& p)
+{
+    return std::abs(ClipperLib::Area(p)) / (kClipperScale * kClipperScale);
+}
 
 }  // namespace taiwa

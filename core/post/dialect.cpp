@@ -22,15 +22,18 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
 {
     // One spelling: upper case, no spaces, then "G54.1 P7".
     std::string code;
-    for (const char c : requested)
-        if (!std::isspace(static_cast<unsigned char>(c))) code += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (const char c : requested) {
+        const auto u = static_cast<unsigned char>(c);
+        if (!std::isspace(u)) code += static_cast<char>(std::toupper(u));
+    }
     std::string offers = "G54 to G59";
     for (std::size_t i = 0; i < d.moreWorkOffsets.size(); ++i)
         offers += (i + 1 == d.moreWorkOffsets.size() ? " and " : ", ") + d.moreWorkOffsets[i];
     if (d.extendedWorkOffsets > 0) offers += fmt::format(" and G54.1 P1 to P{}", d.extendedWorkOffsets);
     const auto refuse = [&](const std::string& why) {
         return std::invalid_argument(
-            fmt::format("work offset '{}' cannot be posted for {}: {}; {} offers {}", requested, d.name, why, d.name, offers));
+            fmt::format("work offset '{}' cannot be posted for {}: {}; {} offers {}", requested, d.name, why, d.name,
+                        offers));
     };
 
     static const std::regex plain(R"(G5[4-9])"), more(R"(G59\.[0-9])"), extended(R"(G54\.1P([0-9]{1,3}))");

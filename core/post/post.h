@@ -19,7 +19,7 @@ struct PostOptions {
     int programNumber = 1000;          // O-number (fanuc)
     std::string programName;           // job name for the header comment
     std::string material;              // for speeds and feeds
-    std::string workOffset = "G54";    // the job's: G54..G59 everywhere, G54.1 P1..P48 on fanuc, G59.1..G59.3 on linuxcnc
+    std::string workOffset = "G54";    // the job's: G54..G59; G54.1 P1..P48 (fanuc); G59.1..G59.3 (linuxcnc)
     bool coolant = true;
     double safeZ = 5.0;                // [mm] above the stock top
 };
