@@ -206,6 +206,36 @@ private slots:
         }
     }
 
+    // The job's work offset is the tape's (it once always said G54); one the
+    // chosen controller lacks stops the export with what it offers, nothing written.
+    void exportSelectsTheJobsWorkOffset()
+    {
+        QTemporaryDir dir;
+        json job = baseJob();
+        job["workOffset"] = "G57";
+        const QString file = dir.filePath("g57.taiwa");
+        writeFile(file, job.dump());
+        for (const char* dialect : {"linuxcnc", "fanuc"}) {
+            const QString out = dir.filePath(QString("out-") + dialect);
+            const auto r = runTaiwa({"export", file, "--out", out, "--dialect", dialect});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QString nc = QString::fromStdString(readFile(QDir(out).filePath("g57.nc")));
+            QVERIFY2(nc.contains(QRegularExpression("\\bG0 G57 X")) && !nc.contains("G54"), qPrintable(nc.left(600)));
+        }
+        job["workOffset"] = "G54.1 P3";
+        writeFile(file, job.dump());
+        const auto fanuc = runTaiwa({"export", file, "--out", dir.filePath("out-p3"), "--dialect", "fanuc"});
+        QVERIFY2(fanuc.exitCode == 0, qPrintable(fanuc.err));
+        QVERIFY(QString::fromStdString(readFile(dir.filePath("out-p3/g57.nc"))).contains(" G0 G54.1 P3 X"));
+        const QString out = dir.filePath("out-refused");
+        const auto lcnc = runTaiwa({"export", file, "--out", out, "--dialect", "linuxcnc"});
+        QCOMPARE(lcnc.exitCode, 1);
+        QVERIFY2(lcnc.err.contains("taiwa: export: work offset 'G54.1 P3' cannot be posted for linuxcnc") &&
+                     lcnc.err.contains("G59.1, G59.2 and G59.3"),
+                 qPrintable(lcnc.err));
+        QVERIFY(!QFileInfo::exists(out));
+    }
+
     void toolLibraryThatCannotBeOpenedIsReported()
     {
         QTemporaryDir dir;

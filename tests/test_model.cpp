@@ -1,4 +1,5 @@
-// Model value types: geometry of outlines, code tables, unit conversion.
+// Model value types: geometry of outlines (offsets, flattening), the sweep
+// of an arc move, code tables, unit conversion.
 #include "model/codes.h"
 #include "model/geometry.h"
 #include "model/job.h"
@@ -6,10 +7,16 @@
 #include "modules/m4/m4.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "model/toolpath.h"
 
 #include <QtTest>
 
+#include <cmath>
+#include <numbers>
+
 using namespace taiwa;
+
+Q_DECLARE_METATYPE(taiwa::Quad)
 
 class TestModel : public QObject {
     Q_OBJECT
@@ -50,6 +57,55 @@ private slots:
     {
         QVERIFY(std::abs(inscribedRadius({{{0, 0}, {100, 0}, {100, 40}, {0, 40}}}) - 20.0) < 1e-6);
     }
+    // Counter-clockwise positive in (0, 2π], clockwise negative in [-2π, 0);
+    // an arc that ends where it starts is a full circle, never 0.
+    void arcSweepConvention()
+    {
+        const double pi = std::numbers::pi;
+        const Point3 from{10, 0, 0};
+        const auto arc = [](MoveKind k, Point3 end) { return Move{k, end, {0, 0}}; };
+        QVERIFY(std::abs(arcSweep(from, arc(MoveKind::ArcCCW, {0, 10, -1})) - pi / 2) < 1e-12);
+        QVERIFY(std::abs(arcSweep(from, arc(MoveKind::ArcCW, {0, 10, 0})) + 3 * pi / 2) < 1e-12);
+        QVERIFY(std::abs(arcSweep(from, arc(MoveKind::ArcCCW, {-10, 0, 0})) - pi) < 1e-12);
+        QVERIFY(std::abs(arcSweep(from, arc(MoveKind::ArcCW, {-10, 0, 0})) + pi) < 1e-12);
+        QCOMPARE(arcSweep(from, arc(MoveKind::ArcCCW, from)), 2 * pi);
+        QCOMPARE(arcSweep(from, arc(MoveKind::ArcCW, from)), -2 * pi);
+    }
+
+    // Chord ends on the arcs, chords within the tolerance, counter-clockwise
+    // whatever the input's orientation; sharp corners are one point; a slot
+    // whose radius is half its width (its core a segment) still flattens to
+    // its two half discs and the rectangle between them.
+    void flattenKeepsArcsWithinTheTolerance_data()
+    {
+        QTest::addColumn<Quad>("q");
+        QTest::newRow("rectangle r 5") << Quad{{{{0, 0}, {100, 0}, {100, 50}, {0, 50}}}, 5.0};
+        QTest::newRow("clockwise parallelogram r 3") << Quad{{{{0, 0}, {30, 40}, {130, 40}, {100, 0}}}, 3.0};
+        QTest::newRow("slot 80 x 16 r 8") << Quad{{{{20, 22}, {100, 22}, {100, 38}, {20, 38}}}, 8.0};
+        QTest::newRow("rotated slot r 8") << Quad{{{{30, 20}, {94, 68}, {84.4, 80.8}, {20.4, 32.8}}}, 8.0};
+    }
+    void flattenKeepsArcsWithinTheTolerance()
+    {
+        QFETCH(Quad, q);
+        const double tol = 0.001, r = q.cornerRadius;
+        const auto pts = flatten(q, tol);
+        QVERIFY(pts.size() > 8);
+        double area = 0;
+        for (std::size_t i = 0; i < pts.size(); ++i) area += 0.5 * cross(pts[i], pts[(i + 1) % pts.size()]);
+        // A corner that turns by φ loses r²(tan(φ/2) - φ/2) of the sharp area.
+        const auto p = counterClockwise(q.corners);
+        double exact = signedArea(p);
+        for (std::size_t i = 0; i < 4; ++i) {
+            const Point2 a = p[i] - p[(i + 3) % 4], b = p[(i + 1) % 4] - p[i];
+            const double turn = std::atan2(cross(a, b), dot(a, b));
+            exact -= r * r * (std::tan(turn / 2) - turn / 2);
+        }
+        QVERIFY2(area > 0 && area <= exact + 1e-9 && area > exact - tol * 2 * std::numbers::pi * r,
+                 qPrintable(QString("area %1, exact %2").arg(area).arg(exact)));
+        const Quad sharpQuad{q.corners, 0.0};
+        QCOMPARE(flatten(sharpQuad, tol).size(), std::size_t(4));
+    }
+
     void codeTablesRejectUndefinedCodes()
     {
         for (int u : {1, 6, 7, 8, 9}) QVERIFY(toolUseFromCode(u).has_value());

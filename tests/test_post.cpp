@@ -11,6 +11,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -233,6 +234,138 @@ private slots:
         QVERIFY(i > 0);
         QCOMPARE(l[i + 1], QString("G2 X20 Y50 I0 J-5"));        // X, Y stated even when unchanged
         QCOMPARE(l[i + 2], QString("G3 X25 Y45 Z-4 I0 J-5"));    // Z only when it changes
+    }
+
+    // The writer's last guard: an arc whose radius or length is below one
+    // unit of the tape (0.001 mm, 0.0001 in) is written as a line, or not at
+    // all, never as "G3 X92 Y30 I0 J0"; a full circle stays a full circle.
+    void degenerateArcsBecomeLines()
+    {
+        using Sink = post::MachineSink;
+        const auto tape = [](LengthUnit u, const std::function<void(Sink&)>& moves) {
+            post::GCodeWriter w(post::linuxcncDialect(), u);
+            w.toolChange(1);
+            w.rapid({92, 29.9999, -2});
+            moves(w);
+            const QStringList l = lines(w.text());
+            return l.mid(l.indexOf(QRegularExpression("^G0 G54 X92 .*")) + 2);  // after the rapid across and down
+        };
+        const auto mm = LengthUnit::Millimetre, in = LengthUnit::Inch;
+        // A slot's collapsed ring: quarter arcs of radius 0.1 µm around (92, 30).
+        QCOMPARE(tape(mm, [](Sink& w) {
+                     w.arc({92.0001, 30, -2}, {92, 30}, false, 100);
+                     w.arc({92, 30.0001, -2}, {92, 30}, false, 100);
+                     w.feed({28, 30.0001, -2}, 100);
+                 }),
+                 (QStringList{"G1 X28 F100"}));
+        // Radius 0.4 µm, half a turn down a little: a line.
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 30.0007, -2.1}, {92, 30.0003}, true, 100); }),
+                 (QStringList{"G1 Y30.001 Z-2.1 F100"}));
+        // Radius 10 mm but 0.5 µm along the arc: a line, not a full circle.
+        QCOMPARE(tape(mm, [](Sink& w) {
+                     const double a = 5e-5;  // rad
+                     w.arc({82 + 10 * std::cos(a), 29.9999 + 10 * std::sin(a), -2}, {82, 29.9999}, false, 100);
+                 }),
+                 QStringList{});
+        // A true full circle of 1 µm radius is still written as one.
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }),
+                 (QStringList{"G3 X92 Y30 I0.001 J0 F100"}));
+        // In inch (the writer's input is in tape units) one unit is 0.0001 in:
+        // a radius of 0.00008 in is a line, one of 0.0003 in an arc.
+        QCOMPARE(tape(in, [](Sink& w) { w.arc({92.00016, 29.9999, -2}, {92.00008, 29.9999}, false, 100); }),
+                 (QStringList{"G1 X92.0002 F100"}));
+        QCOMPARE(tape(in, [](Sink& w) { w.arc({92.0006, 29.9999, -2}, {92.0003, 29.9999}, false, 100); }),
+                 (QStringList{"G3 X92.0006 Y29.9999 I0.0003 J0 F100"}));
+    }
+
+    // The job's work offset reaches the tape: in LinuxCNC's preamble and with
+    // the first move after each tool change in both dialects, and nowhere a
+    // G54 the job did not ask for. Every G54..G59; FANUC's G54.1 P1..P48;
+    // LinuxCNC's G59.1..G59.3. Before, the tape always said G54.
+    void workOffsetReachesTheTape_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("asked");
+        QTest::addColumn<QString>("words");
+        const auto row = [](const QString& dialect, const QString& asked, const QString& words) {
+            QTest::newRow(qPrintable(dialect + " " + asked)) << dialect << asked << words;
+        };
+        for (const char* d : {"linuxcnc", "fanuc"})
+            for (const char* g : {"G54", "G55", "G56", "G57", "G58", "G59"}) row(d, g, g);
+        for (const char* g : {"G59.1", "G59.2", "G59.3"}) row("linuxcnc", g, g);
+        for (const int p : {1, 2, 17, 47, 48}) row("fanuc", QString("G54.1 P%1").arg(p), QString("G54.1 P%1").arg(p));
+        // One spelling on the tape whatever the job's.
+        row("fanuc", "g54.1p7", "G54.1 P7");
+        row("linuxcnc", " g56 ", "G56");
+    }
+    void workOffsetReachesTheTape()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, asked);
+        QFETCH(QString, words);
+        for (const LengthUnit u : {LengthUnit::Millimetre, LengthUnit::Inch}) {
+            auto o = options(dialect.toStdString(), u);
+            o.workOffset = asked.toStdString();
+            QCOMPARE(workOffsetProblem(o.dialect, o.workOffset), std::nullopt);
+            const QStringList l = lines(postProcess(steps(), library(), o).nc);
+            const bool fanuc = dialect == "fanuc";
+            const QString units = u == LengthUnit::Inch ? "G20" : "G21";
+            const QString across = u == LengthUnit::Inch ? "X0.3937 Y0.7874" : fanuc ? "X10. Y20." : "X10 Y20";
+            // Both tool changes restate it with the first move across.
+            const QRegularExpression restated("^(N\\d+ )?G0 " + QRegularExpression::escape(words) + " " + across + "$");
+            QCOMPARE(l.filter(restated).size(), 2);
+            if (fanuc) QVERIFY(l.contains("N10 G17 " + units + " G40 G49 G80 G90"));
+            else QVERIFY(l.contains("G17 " + units + " G40 G49 " + words + " G80 G90 G94 G64 P0.01"));
+            // No other work offset anywhere: every G5x word on the tape is the job's.
+            for (const auto& line : l) {
+                if (line.startsWith('(')) continue;
+                const QString rest = QString(line).remove(words);
+                QVERIFY2(!rest.contains(QRegularExpression("G5[4-9]")), qPrintable(line));
+            }
+        }
+    }
+
+    // What a controller does not have is refused, saying what it offers,
+    // before anything is written; LinuxCNC has no G54.1 (its interpreter
+    // stops at "Unknown g code used"), FANUC no G59.1.
+    void workOffsetTheControllerLacksIsRefused_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("asked");
+        QTest::addColumn<QString>("message");
+        const QString lcnc = "linuxcnc offers G54 to G59, G59.1, G59.2 and G59.3";
+        const QString fanuc = "fanuc offers G54 to G59 and G54.1 P1 to P48";
+        QTest::newRow("linuxcnc G54.1 P1")
+            << "linuxcnc" << "G54.1 P1"
+            << "work offset 'G54.1 P1' cannot be posted for linuxcnc: linuxcnc has no G54.1 P (FANUC's extended work "
+               "offsets); " + lcnc;
+        QTest::newRow("linuxcnc G54.1 P48") << "linuxcnc" << "G54.1 P48" << lcnc;
+        QTest::newRow("fanuc G59.1") << "fanuc" << "G59.1"
+                                    << "work offset 'G59.1' cannot be posted for fanuc: fanuc has no G59.1; " + fanuc;
+        QTest::newRow("fanuc G54.1 P0") << "fanuc" << "G54.1 P0" << "there is no G54.1 P0; " + fanuc;
+        QTest::newRow("fanuc G54.1 P49") << "fanuc" << "G54.1 P49" << "there is no G54.1 P49; " + fanuc;
+        QTest::newRow("linuxcnc G59.4") << "linuxcnc" << "G59.4" << "linuxcnc has no G59.4; " + lcnc;
+        QTest::newRow("linuxcnc G53") << "linuxcnc" << "G53" << "not a work offset; " + lcnc;
+        QTest::newRow("fanuc G60") << "fanuc" << "G60" << "not a work offset; " + fanuc;
+        QTest::newRow("fanuc G54 P1") << "fanuc" << "G54 P1" << "not a work offset";
+        QTest::newRow("empty") << "fanuc" << "" << "work offset '' cannot be posted for fanuc: not a work offset";
+    }
+    void workOffsetTheControllerLacksIsRefused()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, asked);
+        QFETCH(QString, message);
+        auto o = options(dialect.toStdString());
+        o.workOffset = asked.toStdString();
+        const auto why = workOffsetProblem(o.dialect, o.workOffset);
+        QVERIFY(why.has_value());
+        QVERIFY2(QString::fromStdString(*why).contains(message), why->c_str());
+        try {
+            postProcess(steps(), library(), o);
+            QFAIL("posted a work offset the controller lacks");
+        } catch (const std::invalid_argument& e) {
+            QCOMPARE(std::string(e.what()), *why);
+        }
     }
 
     void drillingWithAndWithoutPeck()

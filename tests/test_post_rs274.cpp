@@ -4,7 +4,8 @@
 // for both dialects, must pass rs274 without a complaint, and the canonical
 // moves it reads back must be our path: every cutting move's end, arc centre
 // and direction to 1 µm, every rapid of the path, every hole's depth and
-// pecks, the feed rates and the tool in the spindle.
+// pecks, the feed rates and the tool in the spindle; the same for every work
+// offset the tape can select.
 #include "post/post.h"
 #include "support/rs274.h"
 #include "tools/cutting.h"
@@ -229,6 +230,60 @@ private slots:
         QVERIFY2(r.ok, qPrintable(r.errors));
         const QString d = disagreement(r, offGridJob(), library(), o.units);
         QVERIFY2(d.isEmpty(), qPrintable(d));
+    }
+
+    // The job's work offset as LinuxCNC reads it: every move of a linuxcnc
+    // tape (the preamble selects it) and every cut of a fanuc tape (selected
+    // with the first move after a tool change; the G28 retract before it is
+    // in G54) is made in that system, rs274 naming it in SET_G5X_OFFSET(n, …)
+    // (G54..G59 are 1..6, G59.1..G59.3 7..9), and the moves read back in it
+    // are our path. params.var gives every system its own X and Y offset
+    // (n - 1 in, (n - 1) / 2 in) and G54's Z (machine Z0 is program Z 100).
+    // G54.1 P (fanuc only) is not LinuxCNC's: test_post checks its text.
+    void workOffsetReadBack_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("offset");
+        QTest::addColumn<int>("index");
+        const char* codes[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+        for (int n = 1; n <= 9; ++n) {
+            QTest::newRow(qPrintable(QString("linuxcnc ") + codes[n - 1])) << "linuxcnc" << codes[n - 1] << n;
+            if (n <= 6) QTest::newRow(qPrintable(QString("fanuc ") + codes[n - 1])) << "fanuc" << codes[n - 1] << n;
+        }
+    }
+    void workOffsetReadBack()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, offset);
+        QFETCH(int, index);
+        PostOptions o;
+        o.dialect = dialect.toStdString();
+        o.workOffset = offset.toStdString();
+        o.material = "aluminium-6061";
+        const Rs274Result r = runRs274(postProcess(job(), library(), o).nc);
+        QVERIFY2(r.ok, qPrintable(r.errors));
+        const QString d = disagreement(r, job(), library(), o.units);
+        QVERIFY2(d.isEmpty(), qPrintable(d));
+        static const QRegularExpression set(R"(SET_G5X_OFFSET\((\d+),)");
+        static const QRegularExpression move(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED)\()");
+        int inForce = 0, moves = 0, cuts = 0;
+        for (const auto& line : r.canon) {
+            if (const auto m = set.match(line); m.hasMatch()) inForce = m.captured(1).toInt();
+            if (line.contains("PROGRAM_END")) break;
+            const auto m = move.match(line);
+            if (!m.hasMatch()) continue;
+            const bool cut = m.captured(1) != "STRAIGHT_TRAVERSE";
+            if (dialect == "linuxcnc" || cut)
+                QVERIFY2(inForce == index, qPrintable(line + QString(" in system %1").arg(inForce)));
+            ++moves;
+            cuts += cut;
+        }
+        QVERIFY(moves > 20 && cuts > 10);
+        if (dialect == "linuxcnc") {
+            // From machine zero, in the job's system: the offset is stated before any move.
+            const Point3 home{-25.4 * (index - 1), -12.7 * (index - 1), 100};
+            QVERIFY2(near(r.moves.front().start, home), qPrintable(str(r.moves.front().start)));
+        }
     }
 
     // The judge must be able to say no: a broken tape is reported, with rs274's words.

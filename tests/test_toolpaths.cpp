@@ -231,6 +231,62 @@ private slots:
         QVERIFY(cuttingPieces(p).size() > cuttingPieces(makeToolPath(rough, tool, TechnologyData{}, kParams)).size());
     }
 
+    // A slot whose corner radius is half its width: its innermost ring
+    // collapses to the centre line, where the corner arcs once shrank to
+    // 0.1 µm and came out as "G3 X92 Y30 I0 J0" (a zero-radius full circle
+    // to the controller). No arc of any step may have a radius or a length
+    // below 1 µm: such an arc is a line, or nothing.
+    void slotArcsAreNeverDegenerate_data()
+    {
+        QTest::addColumn<Quad>("outline");
+        QTest::addColumn<double>("diameter");
+        const Quad slot{{{{20, 22}, {100, 22}, {100, 38}, {20, 38}}}, 8.0};
+        // 80 x 16 turned by atan(3/4): the corners are exact decimals.
+        const Quad turned{{{{30, 20}, {94, 68}, {84.4, 80.8}, {20.4, 32.8}}}, 8.0};
+        for (const double d : {6.0, 8.0, 10.0, 12.0}) {
+            QTest::newRow(qPrintable(QString("slot 80 x 16 r 8, D%1").arg(d))) << slot << d;
+            QTest::newRow(qPrintable(QString("turned slot, D%1").arg(d))) << turned << d;
+        }
+        QTest::newRow("slot 12 x 100 r 6, D6") << rectangle(12, 100, 6) << 6.0;
+        QTest::newRow("slot 100 x 10.2 r 5.1, D10") << rectangle(100, 10.2, 5.1) << 10.0;
+    }
+    void slotArcsAreNeverDegenerate()
+    {
+        QFETCH(Quad, outline);
+        QFETCH(double, diameter);
+        const Tool tool = makeTool(ToolType::FlatEndMill, diameter);
+        TechnologyData tech;
+        tech.gamma = 0.5;
+        std::vector<std::pair<QString, Step>> steps;
+        Step rough = makePocketStep(StepKind::Roughing, outline, 0, 9.8);
+        steps.push_back({"roughing, helix or ramp", rough});
+        rough.holeDiameter = diameter;
+        steps.push_back({"roughing, pilot hole", rough});
+        steps.push_back({"floor finishing", makePocketStep(StepKind::FloorFinishing, outline, 9.8, 10)});
+        Step wall = makePocketStep(StepKind::WallFinishing, outline, 0, 10);
+        steps.push_back({"wall finishing", wall});
+        wall.multiIncision = true;
+        steps.push_back({"wall finishing, F = 2", wall});
+        for (const auto& [name, step] : steps) {
+            const ToolPath p = makeToolPath(step, tool, tech, kParams);
+            int arcs = 0;
+            for (const auto& q : cuttingPieces(p)) {
+                if (q.move.kind == MoveKind::Feed) continue;
+                ++arcs;
+                const double r = distance({q.from.x, q.from.y}, q.move.centre);
+                const double run = std::abs(arcSweep(q.from, q.move)) * r;
+                // No arc turns more than half a turn either (a corner turns
+                // less, a helix runs in halves): a collapsed side must not send
+                // a corner arc the long way round.
+                QVERIFY2(r >= 1e-3 && run >= 1e-3 && std::abs(arcSweep(q.from, q.move)) <= std::numbers::pi + 1e-9,
+                         qPrintable(QString("%1: arc to (%2, %3) of radius %4 mm and length %5 mm")
+                                        .arg(name).arg(q.move.end.x).arg(q.move.end.y).arg(r).arg(run)));
+            }
+            QVERIFY2(arcs > 0, qPrintable(name + ": no arcs at all"));
+            QVERIFY2(worstOutside(outline, tool.radius(), p) <= 1e-6, qPrintable(name));
+        }
+    }
+
     void refusesWhatTheChecksRefuse()
     {
         const Tool tool = makeTool(ToolType::FlatEndMill, 10);

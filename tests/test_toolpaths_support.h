@@ -36,16 +36,6 @@ inline Step makePocketStep(StepKind kind, Quad outline, double start, double cut
 
 inline Quad rectangle(double w, double h, double r) { return {{{{0, 0}, {w, 0}, {w, h}, {0, h}}}, r}; }
 
-// Signed sweep of an arc move from `from` (CCW positive).
-inline double arcSweep(Point3 from, const Move& m)
-{
-    const Point2 a{from.x - m.centre.x, from.y - m.centre.y}, e{m.end.x - m.centre.x, m.end.y - m.centre.y};
-    double sweep = std::atan2(cross(a, e), dot(a, e));
-    if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-    if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-    return sweep;
-}
-
 inline bool isCut(const Move& m) { return m.kind == MoveKind::Feed || m.kind == MoveKind::ArcCW || m.kind == MoveKind::ArcCCW; }
 
 // A cutting move with where it starts.

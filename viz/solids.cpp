@@ -211,26 +211,12 @@ vtkSmartPointer<vtkPolyData> toolSolid(const Tool& tool)
 
 namespace {
 
-// The rounded quad as a closed polyline at height z: each corner's arc
-// around the corner moved inward by the radius, from the outward normal of
-// the side before it to that of the side after it (counter-clockwise).
+// The rounded quad as a closed polyline at height z, its corner arcs
+// within 10 µm (model/geometry.h's flatten).
 void addRoundedQuad(vtkPoints* points, vtkCellArray* lines, const Quad& q, double z)
 {
-    const double r = std::max(q.cornerRadius, 0.0);
-    const auto sharp = counterClockwise(q.corners);
-    const auto centres = r > 0 ? offsetInward(Quad{sharp, q.cornerRadius}, r).corners : sharp;
     std::vector<vtkIdType> ids;
-    for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 in = sharp[i] - sharp[(i + 3) % 4], out = sharp[(i + 1) % 4] - sharp[i];
-        const double a0 = std::atan2(-in.x, in.y), a1raw = std::atan2(-out.x, out.y);  // outward normals
-        double sweep = a1raw - a0;
-        while (sweep < 0) sweep += 2 * std::numbers::pi;
-        const int n = r > 0 ? std::max(1, static_cast<int>(std::ceil(sweep / (5.0 * std::numbers::pi / 180.0)))) : 0;
-        for (int k = 0; k <= n; ++k) {
-            const double a = a0 + sweep * k / std::max(n, 1);
-            ids.push_back(points->InsertNextPoint(centres[i].x + r * std::cos(a), centres[i].y + r * std::sin(a), z));
-        }
-    }
+    for (const Point2 p : flatten(q, 0.01)) ids.push_back(points->InsertNextPoint(p.x, p.y, z));
     ids.push_back(ids.front());
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
 }

@@ -1,61 +1,25 @@
 // Interference check of input processing: the top outlines of two figures
 // of one job must not overlap (touching is allowed). Rounded corners are
-// flattened to 1 µm, outlines scaled to integers for Clipper, and a pair
-// whose common area exceeds a sliver tolerance is refused.
+// flattened to 1 µm (model/geometry.h), outlines put on Clipper's integer
+// grid (model/clipper_scale.h), and a pair whose common area exceeds a
+// sliver tolerance is refused.
 #include "check/messages.h"
 #include "check/unit_checks.h"
-
-#include <polyclipping/clipper.hpp>
+#include "model/clipper_scale.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace taiwa::check {
 
 namespace {
 
-constexpr double kScale = 1e6;          // integer units per mm
 constexpr double kChordTolerance = 1e-3;  // mm between an arc and its chords
-// Rounding to the integer grid can make two touching edges overlap by half a
-// grid cell along their length: allow that sliver, plus 1e-6 mm^2.
+// Rounding to the integer grid (model/clipper_scale.h) can make two touching
+// edges overlap by half a grid cell along their length: allow that sliver (a
+// whole cell wide), plus 1e-6 mm^2.
 constexpr double kAreaTolerance = 1e-6;  // mm^2
-constexpr double kSliverWidth = 1e-6;    // mm
-
-ClipperLib::IntPoint scaled(Point2 p)
-{
-    return {static_cast<ClipperLib::cInt>(std::llround(p.x * kScale)),
-            static_cast<ClipperLib::cInt>(std::llround(p.y * kScale))};
-}
-
-// The rounded outline as a polygon: straight sides exact, each corner arc
-// replaced by chords within kChordTolerance (chord ends on the arc).
-ClipperLib::Path flatten(const Quad& q)
-{
-    const double r = std::max(q.cornerRadius, 0.0);
-    const Quad core = offsetInward(Quad{q.corners, r}, r);  // the arc centres
-    const auto p = counterClockwise(q.corners);
-    ClipperLib::Path path;
-    for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 inDir = p[i] - p[(i + 3) % 4];
-        const Point2 outDir = p[(i + 1) % 4] - p[i];
-        // Outward normals (right of a counter-clockwise side).
-        const double a0 = std::atan2(-inDir.x, inDir.y);
-        double a1 = std::atan2(-outDir.x, outDir.y);
-        while (a1 < a0) a1 += 2.0 * std::numbers::pi;
-        int n = 1;
-        if (r > kChordTolerance) {
-            const double step = 2.0 * std::acos(1.0 - kChordTolerance / r);
-            n = std::max(1, static_cast<int>(std::ceil((a1 - a0) / step)));
-        }
-        for (int k = 0; k <= n; ++k) {
-            const double a = a0 + (a1 - a0) * k / n;
-            path.push_back(scaled(core.corners[i] + r * Point2{std::cos(a), std::sin(a)}));
-            if (r == 0.0) break;
-        }
-    }
-    return path;
-}
+constexpr double kSliverWidth = 1.0 / kClipperScale;  // mm
 
 struct Figure {
     int unit;  // 0-based
@@ -66,7 +30,8 @@ struct Figure {
 
 Figure figure(const Quad& q, int unit)
 {
-    Figure f{unit, flatten(q), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y, q.corners[0].y};
+    Figure f{unit, toClipper(flatten(q, kChordTolerance)), 0.0, q.corners[0].x, q.corners[0].x, q.corners[0].y,
+             q.corners[0].y};
     for (std::size_t i = 0; i < 4; ++i) {
         f.perimeter += distance(q.corners[i], q.corners[(i + 1) % 4]);
         f.minX = std::min(f.minX, q.corners[i].x);
@@ -85,8 +50,8 @@ double commonArea(const Figure& a, const Figure& b)
     ClipperLib::Paths out;
     clipper.Execute(ClipperLib::ctIntersection, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     double area = 0.0;
-    for (const auto& p : out) area += std::abs(ClipperLib::Area(p));
-    return area / (kScale * kScale);
+    for (const auto& p : out) area += clipperAreaMm2(p);
+    return area;
 }
 
 }  // namespace

@@ -102,6 +102,10 @@ ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::
         result.error = "the job did not pass input processing; nothing was written";
         return result;
     }
+    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset)) {
+        result.error = *why + "; nothing was written";
+        return result;
+    }
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) {

@@ -1,8 +1,10 @@
-// Plane geometry of pocket outlines: orientation, convexity, inward offset.
+// Plane geometry of pocket outlines: orientation, convexity, inward offset,
+// flattening.
 #include "model/geometry.h"
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 
 namespace taiwa {
 
@@ -81,6 +83,36 @@ Quad offsetInward(const Quad& q, double d)
         out.corners[i] = base[j] + s * dir[j];
     }
     return out;
+}
+
+std::vector<Point2> flatten(const Quad& qIn, double tolerance)
+{
+    const auto p = counterClockwise(qIn.corners);
+    const double rho = std::max(qIn.cornerRadius, 0.0);
+    const Quad core = offsetInward(Quad{p, rho}, rho);  // the arc centres
+    std::vector<Point2> pts;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 c = core.corners[i];
+        if (rho <= 1e-9) {
+            pts.push_back(c);
+            continue;
+        }
+        // From the outward normal of the side before the corner to that of
+        // the side after it. The directions are the outline's own: the
+        // core's sides are parallel to them but may have collapsed (a slot
+        // whose radius is half its width has a segment for a core).
+        const Point2 dPrev = p[i] - p[(i + 3) % 4], dNext = p[(i + 1) % 4] - p[i];
+        const double a0 = std::atan2(-dPrev.x, dPrev.y);
+        double a1 = std::atan2(-dNext.x, dNext.y);
+        while (a1 < a0) a1 += 2 * std::numbers::pi;
+        const double step = 2 * std::acos(std::max(0.0, 1 - tolerance / rho));
+        const int n = std::max(1, static_cast<int>(std::ceil((a1 - a0) / std::max(step, 1e-3))));
+        for (int k = 0; k <= n; ++k) {
+            const double a = a0 + (a1 - a0) * k / n;
+            pts.push_back({c.x + rho * std::cos(a), c.y + rho * std::sin(a)});
+        }
+    }
+    return pts;
 }
 
 double inscribedRadius(const std::array<Point2, 4>& pIn)

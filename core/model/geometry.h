@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace taiwa {
 
@@ -55,6 +56,13 @@ bool isSelfIntersecting(const std::array<Point2, 4>& p);
 // corners being the intersections of the moved sides; corner radius r - d.
 // Exact for convex outlines: the inward offset of a rounded convex polygon.
 Quad offsetInward(const Quad& q, double d);
+
+// The rounded quad as a closed polygon, counter-clockwise: straight sides
+// exact, each corner arc replaced by chords whose ends lie on the arc and
+// which stray at most `tolerance` from it (sharp corners, r <= 1e-9, are one
+// point). The one flattening of outlines: the coverage proof, the
+// interference check and the preview's outlines use it.
+std::vector<Point2> flatten(const Quad& q, double tolerance);
 
 // Radius of the largest circle that fits inside the sharp convex polygon
 // (used for the pilot-hole and tool-entry checks).

@@ -1,4 +1,4 @@
-// Length of a tool path, cutting and rapid travel apart.
+// Length of a tool path, cutting and rapid travel apart, and the sweep of an arc move.
 #include "model/toolpath.h"
 
 #include <cmath>
@@ -11,15 +11,20 @@ double dist(Point3 a, Point3 b) { return std::sqrt((a.x - b.x) * (a.x - b.x) + (
 
 double arcLength(Point3 from, const Move& m)
 {
-    const Point2 a{from.x - m.centre.x, from.y - m.centre.y};
-    const Point2 b{m.end.x - m.centre.x, m.end.y - m.centre.y};
-    double sweep = std::atan2(cross(a, b), dot(a, b));
-    if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-    if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-    const double planar = std::abs(sweep) * length(a);
+    const double planar = std::abs(arcSweep(from, m)) * std::hypot(from.x - m.centre.x, from.y - m.centre.y);
     return std::hypot(planar, m.end.z - from.z);
 }
 }  // namespace
+
+double arcSweep(Point3 from, const Move& arc)
+{
+    const Point2 a{from.x - arc.centre.x, from.y - arc.centre.y};
+    const Point2 b{arc.end.x - arc.centre.x, arc.end.y - arc.centre.y};
+    double sweep = std::atan2(cross(a, b), dot(a, b));
+    if (arc.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
+    if (arc.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
+    return sweep;
+}
 
 PathLength pathLength(const ToolPath& p)
 {

@@ -40,6 +40,16 @@ struct ToolPath {
     friend bool operator==(const ToolPath&, const ToolPath&) = default;
 };
 
+// The signed sweep [rad] in XY of an arc move (ArcCW or ArcCCW) that starts
+// at `from`, around arc.centre to arc.end, the way a controller reads G2/G3:
+// atan2(cross, dot) of the start and end radii, then counter-clockwise
+// positive in (0, 2π] (a result <= 0 gains 2π), clockwise negative in
+// [-2π, 0) (a result >= 0 loses 2π). An arc that ends where it starts is a
+// full circle, +2π or -2π, never 0 (a start on the centre counts as that
+// too). Z plays no part (a helix sweeps as its projection). The one place
+// this convention is written; lengths, times, flattening and the post use it.
+double arcSweep(Point3 from, const Move& arc);
+
 // Length of the path, split into cutting and rapid travel.
 struct PathLength {
     double feed = 0.0;

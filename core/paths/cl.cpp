@@ -4,7 +4,6 @@
 #include "paths/generators.h"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace taiwa {
@@ -31,11 +30,8 @@ double distance3(Point3 a, Point3 b) { return std::sqrt((a.x - b.x) * (a.x - b.x
 double cutLength(Point3 from, const Move& m)
 {
     if (m.kind == MoveKind::Feed) return distance3(from, m.end);
-    const Point2 a{from.x - m.centre.x, from.y - m.centre.y}, b{m.end.x - m.centre.x, m.end.y - m.centre.y};
-    double sweep = std::atan2(cross(a, b), dot(a, b));
-    if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-    if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-    return std::hypot(std::abs(sweep) * length(a), m.end.z - from.z);
+    const double radius = std::hypot(from.x - m.centre.x, from.y - m.centre.y);
+    return std::hypot(std::abs(arcSweep(from, m)) * radius, m.end.z - from.z);
 }
 
 double minutesAt(double mm, double rate)

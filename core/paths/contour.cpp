@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace taiwa::paths {
 
@@ -21,12 +22,16 @@ Geometry geometryOf(const Quad& q)
 {
     Geometry g;
     g.rho = q.cornerRadius > kSharp ? q.cornerRadius : 0.0;
-    const Quad core = offsetInward(Quad{counterClockwise(q.corners), g.rho}, g.rho);
-    g.core = core.corners;
+    const auto p = counterClockwise(q.corners);
+    g.core = offsetInward(Quad{p, g.rho}, g.rho).corners;
+    // The directions are the quad's own sides': the core's are parallel to
+    // them but may collapse (a slot whose radius is half its width has a
+    // segment for a core), and a side of rounding noise would send its
+    // corner arcs the long way round.
     for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 t = g.core[(i + 1) % 4] - g.core[i];
-        const double len = length(t);
-        g.dir[i] = len > 0 ? (1.0 / len) * t : Point2{1, 0};
+        const Point2 t = p[(i + 1) % 4] - p[i];
+        if (!(length(t) > 0.0)) throw std::logic_error("contour of a quadrilateral with a side of no length");
+        g.dir[i] = (1.0 / length(t)) * t;
         g.out[i] = {g.dir[i].y, -g.dir[i].x};
     }
     return g;

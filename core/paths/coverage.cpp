@@ -2,30 +2,14 @@
 // centre path versus the region to clear.
 #include "paths/coverage.h"
 
-#include <polyclipping/clipper.hpp>
+#include "model/clipper_scale.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace taiwa::paths {
 
 namespace {
-
-constexpr double kScale = 1e4;  // Clipper integer units per mm (0.1 µm)
-
-ClipperLib::IntPoint toInt(Point2 p)
-{
-    return {static_cast<ClipperLib::cInt>(std::llround(p.x * kScale)), static_cast<ClipperLib::cInt>(std::llround(p.y * kScale))};
-}
-Point2 toMm(const ClipperLib::IntPoint& p) { return {static_cast<double>(p.X) / kScale, static_cast<double>(p.Y) / kScale}; }
-
-ClipperLib::Path toPath(const std::vector<Point2>& pts)
-{
-    ClipperLib::Path p;
-    for (const auto& q : pts) p.push_back(toInt(q));
-    return p;
-}
 
 // XY polyline of the path's cutting moves, arcs flattened.
 std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
@@ -45,15 +29,12 @@ std::vector<std::vector<Point2>> feedPolylines(const ToolPath& path)
         if (m.kind == MoveKind::Feed) {
             current.push_back({m.end.x, m.end.y});
         } else {
-            const Point2 a{at.x - m.centre.x, at.y - m.centre.y}, e{m.end.x - m.centre.x, m.end.y - m.centre.y};
-            double sweep = std::atan2(cross(a, e), dot(a, e));
-            if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-            if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-            const double r = length(a);
+            const double sweep = arcSweep(at, m);
+            const double r = std::hypot(at.x - m.centre.x, at.y - m.centre.y);
             // Chords within 1 µm of the arc.
             const double stepAngle = 2 * std::acos(std::max(0.0, 1 - 0.001 / std::max(r, 0.001)));
             const int n = std::max(2, static_cast<int>(std::ceil(std::abs(sweep) / std::max(stepAngle, 1e-3))));
-            const double a0 = std::atan2(a.y, a.x);
+            const double a0 = std::atan2(at.y - m.centre.y, at.x - m.centre.x);
             for (int i = 1; i <= n; ++i) {
                 const double ang = a0 + sweep * i / n;
                 current.push_back({m.centre.x + r * std::cos(ang), m.centre.y + r * std::sin(ang)});
@@ -78,23 +59,21 @@ ClipperLib::Paths leftover(const Quad& region, const ToolPath& path, double radi
     for (const auto& line : feedPolylines(path)) {
         for (std::size_t from = 0; from + 1 < line.size(); from += kPiece) {
             const std::size_t to = std::min(line.size(), from + kPiece + 1);
-            ClipperLib::ClipperOffset sweep(2.0, 0.5 * band * kScale);
-            sweep.AddPath(toPath({line.begin() + static_cast<std::ptrdiff_t>(from), line.begin() + static_cast<std::ptrdiff_t>(to)}),
+            ClipperLib::ClipperOffset sweep(2.0, 0.5 * band * kClipperScale);
+            sweep.AddPath(toClipper({line.begin() + static_cast<std::ptrdiff_t>(from), line.begin() + static_cast<std::ptrdiff_t>(to)}),
                           ClipperLib::jtRound, ClipperLib::etOpenRound);
             ClipperLib::Paths piece;
-            sweep.Execute(piece, radius * kScale);
+            sweep.Execute(piece, radius * kClipperScale);
             swept.insert(swept.end(), piece.begin(), piece.end());
         }
     }
     ClipperLib::Clipper c;
-    c.AddPath(toPath(flatten(offsetInward(region, band), 0.5 * band)), ClipperLib::ptSubject, true);
+    c.AddPath(toClipper(flatten(offsetInward(region, band), 0.5 * band)), ClipperLib::ptSubject, true);
     c.AddPaths(swept, ClipperLib::ptClip, true);
     ClipperLib::Paths left;
     c.Execute(ClipperLib::ctDifference, left, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return left;
 }
-
-double areaMm2(const ClipperLib::Path& p) { return std::abs(ClipperLib::Area(p)) / (kScale * kScale); }
 
 // The point of a convex rounded quad nearest to p (p itself when inside).
 Point2 clampInto(const Quad& q, Point2 p)
@@ -119,36 +98,10 @@ Point2 clampInto(const Quad& q, Point2 p)
 
 }  // namespace
 
-std::vector<Point2> flatten(const Quad& qIn, double tolerance)
-{
-    const Quad q{counterClockwise(qIn.corners), std::max(qIn.cornerRadius, 0.0)};
-    const double rho = q.cornerRadius;
-    const Quad core = offsetInward(q, rho);
-    std::vector<Point2> pts;
-    for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 c = core.corners[i];
-        if (rho <= 1e-9) {
-            pts.push_back(c);
-            continue;
-        }
-        const Point2 dPrev = core.corners[i] - core.corners[(i + 3) % 4], dNext = core.corners[(i + 1) % 4] - core.corners[i];
-        const double a0 = std::atan2(-dPrev.x, dPrev.y);  // outward normal of the side before
-        double a1 = std::atan2(-dNext.x, dNext.y);
-        while (a1 < a0) a1 += 2 * std::numbers::pi;
-        const double step = 2 * std::acos(std::max(0.0, 1 - tolerance / rho));
-        const int n = std::max(1, static_cast<int>(std::ceil((a1 - a0) / std::max(step, 1e-3))));
-        for (int k = 0; k <= n; ++k) {
-            const double a = a0 + (a1 - a0) * k / n;
-            pts.push_back({c.x + rho * std::cos(a), c.y + rho * std::sin(a)});
-        }
-    }
-    return pts;
-}
-
 double uncutArea(const Quad& region, const ToolPath& path, double radius, double band)
 {
     double a = 0;
-    for (const auto& p : leftover(region, path, radius, band)) a += areaMm2(p);
+    for (const auto& p : leftover(region, path, radius, band)) a += clipperAreaMm2(p);
     return a;
 }
 
@@ -157,17 +110,17 @@ std::vector<Point2> cleanupPoints(const Quad& region, const Quad& allowedCentres
 {
     std::vector<Point2> points;
     for (const auto& piece : leftover(region, path, radius, 0.005)) {
-        if (areaMm2(piece) < tolerance) continue;
+        if (clipperAreaMm2(piece) < tolerance) continue;
         // Visit the piece's centre of area, kept where the tool may go.
         double cx = 0, cy = 0, a = 0;
         for (std::size_t i = 0; i < piece.size(); ++i) {
-            const Point2 p = toMm(piece[i]), q = toMm(piece[(i + 1) % piece.size()]);
+            const Point2 p = fromClipper(piece[i]), q = fromClipper(piece[(i + 1) % piece.size()]);
             const double w = cross(p, q);
             a += w;
             cx += (p.x + q.x) * w;
             cy += (p.y + q.y) * w;
         }
-        const Point2 c = std::abs(a) > 1e-12 ? Point2{cx / (3 * a), cy / (3 * a)} : toMm(piece[0]);
+        const Point2 c = std::abs(a) > 1e-12 ? Point2{cx / (3 * a), cy / (3 * a)} : fromClipper(piece[0]);
         points.push_back(clampInto(allowedCentres, c));
     }
     return points;

@@ -11,9 +11,6 @@
 
 namespace taiwa::paths {
 
-// Flattens a rounded convex quad to a polygon (chord error <= tolerance).
-std::vector<Point2> flatten(const Quad& q, double tolerance);
-
 // Uncut area (mm^2) left inside `region` by a tool of radius R whose centre
 // runs along the XY projection of the path's feed moves; the region is
 // shrunk by `band` mm first (what the tool reaches within `band` of the

@@ -98,6 +98,7 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     post.programNumber = programNumber;
     post.programName = plan.job.name.empty() ? fileStem : plan.job.name;
     post.material = plan.mmJob.material;
+    post.workOffset = plan.job.workOffset;
     return post;
 }
 

@@ -35,7 +35,12 @@ struct Dialect {
     bool upperCaseComments = false;
     // Program frame and tool change.
     std::vector<std::string> preamble;  // after the header comments
-    std::string workOffset = "G54";     // also restated with the first move after each tool change
+    // Work offsets beyond G54..G59, which every controller has. The job's
+    // offset is stated with the first move after each tool change (and in
+    // the preamble where it says {workOffset}); one the controller lacks is
+    // refused (workOffsetWords).
+    std::vector<std::string> moreWorkOffsets;  // LinuxCNC: G59.1 G59.2 G59.3
+    int extendedWorkOffsets = 0;               // G54.1 P1..Pn (FANUC: 48); 0 none
     std::vector<std::string> retract;   // to the machine's safe height (tool change, end)
     std::string toolChange = "T{tool} M6";
     std::string lengthOffset = "G43 H{tool}";
@@ -53,6 +58,12 @@ struct Dialect {
     char dwellWord = 'P';               // G4 P<seconds> (LinuxCNC) or G4 X<seconds> (FANUC)
     std::string programEnd = "M30";
 };
+
+// The words that select the work offset `requested` (a job's "workOffset":
+// "G55", "g55", "G54.1 P7", "G54.1P7", "G59.2") on the dialect's controller,
+// written the one way ("G55", "G54.1 P7"). Throws std::invalid_argument,
+// saying what the controller offers, for one it does not have.
+std::string workOffsetWords(const Dialect& dialect, const std::string& requested);
 
 const Dialect& fanucDialect();
 const Dialect& linuxcncDialect();

@@ -7,8 +7,10 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace taiwa::post {
 
@@ -37,10 +39,11 @@ std::string commentText(const std::string& text, bool upper)
 
 }  // namespace
 
-GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units)
-    : dialect_(dialect), units_(units),
+GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset)
+    : dialect_(dialect), units_(units), workOffset_(std::move(workOffset)),
       decimals_(units == LengthUnit::Inch ? dialect.lengthDecimals.inch : dialect.lengthDecimals.mm),
-      feedDecimals_(units == LengthUnit::Inch ? dialect.feedDecimals.inch : dialect.feedDecimals.mm)
+      feedDecimals_(units == LengthUnit::Inch ? dialect.feedDecimals.inch : dialect.feedDecimals.mm),
+      resolution_(std::pow(10.0, -decimals_))
 {
 }
 
@@ -48,7 +51,7 @@ std::string GCodeWriter::length(double v) const { return formatNumber(v, decimal
 
 GCodeWriter::Written GCodeWriter::written(double v) const
 {
-    Written w{length(v), 0.0};
+    Written w{length(v), 0.0, v};
     w.value = std::strtod(w.text.c_str(), nullptr);
     return w;
 }
@@ -138,7 +141,7 @@ void GCodeWriter::programStart(const ProgramInfo& info)
     for (const auto& t : info.tools) comment(fmt::format("T{} D{} {}", t.number, length(t.diameter), t.name));
     for (const auto& b : dialect_.preamble)
         block(fmt::format(fmt::runtime(b), fmt::arg("units", units_ == LengthUnit::Inch ? "G20" : "G21"),
-                          fmt::arg("workOffset", dialect_.workOffset)));
+                          fmt::arg("workOffset", workOffset_)));
 }
 
 void GCodeWriter::comment(const std::string& text)
@@ -185,7 +188,7 @@ void GCodeWriter::rapid(const Point3& to)
         // Position unknown (after a tool change): across in XY at the height
         // the retract left, then down in Z with the length offset.
         Written x = written(to.x), y = written(to.y);
-        block(motion("G0") + (workOffsetDue_ ? dialect_.workOffset + " " : "") + "X" + x.text + " Y" + y.text);
+        block(motion("G0") + (workOffsetDue_ ? workOffset_ + " " : "") + "X" + x.text + " Y" + y.text);
         axis_[X] = std::move(x);
         axis_[Y] = std::move(y);
         workOffsetDue_ = false;
@@ -215,6 +218,17 @@ void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
     requirePosition("an arc");
     // I, J from the start as written, so the controller's centre is ours to half a unit.
     const double i = centre.x - axis_[X]->value, j = centre.y - axis_[Y]->value;
+    // An arc whose radius or length is below one unit of the tape is a line:
+    // written, its centre would be its start ("I0 J0") or its end its start
+    // (a full circle to the controller). Its length is measured from the
+    // start the caller meant, so that a full circle stays one.
+    const Point3 from{axis_[X]->exact, axis_[Y]->exact, axis_[Z]->exact};
+    const Move asked{clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, to, centre};
+    if (std::hypot(i, j) < resolution_ ||
+        std::abs(arcSweep(from, asked)) * std::hypot(from.x - centre.x, from.y - centre.y) < resolution_) {
+        feed(to, feedRate);
+        return;
+    }
     const std::string w = axisWords(to, true);
     block(motion(clockwise ? "G2" : "G3") + w.substr(1) + " I" + length(i) + " J" + length(j) + feedWord(feedRate));
 }

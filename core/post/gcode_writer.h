@@ -18,7 +18,8 @@ namespace taiwa::post {
 
 class GCodeWriter final : public MachineSink {
 public:
-    GCodeWriter(const Dialect& dialect, LengthUnit units);
+    // workOffset: the words selecting the work offset, as workOffsetWords gives them.
+    GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset = "G54");
 
     void source(BlockSource where) override { source_ = where; }
     void programStart(const ProgramInfo& info) override;
@@ -37,10 +38,12 @@ public:
     const std::vector<BlockSource>& sources() const { return sources_; }
 
 private:
-    // The number of an axis word as written, and the value the controller reads from it.
+    // The number of an axis word as written, the value the controller reads
+    // from it, and the value the caller asked for.
     struct Written {
         std::string text;
         double value = 0.0;
+        double exact = 0.0;
     };
 
     std::string length(double v) const;
@@ -57,8 +60,10 @@ private:
 
     const Dialect& dialect_;
     LengthUnit units_;
+    std::string workOffset_;
     int decimals_;
     int feedDecimals_;
+    double resolution_;  // one unit of the last decimal of a length: 0.001 mm, 0.0001 in
     int sequence_ = 0;
     BlockSource source_;
     std::string text_;

@@ -150,7 +150,7 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
     for (const auto& s : orderedSteps) cutting.push_back(cuttingOf(s, library, options.material));
 
     // The chain: poster -> [mm to inch] -> writer.
-    post::GCodeWriter writer(*dialect, options.units);
+    post::GCodeWriter writer(*dialect, options.units, post::workOffsetWords(*dialect, options.workOffset));
     std::optional<post::InchAdapter> inch;
     MachineSink& sink = options.units == LengthUnit::Inch ? static_cast<MachineSink&>(inch.emplace(writer)) : writer;
 

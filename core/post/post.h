@@ -7,6 +7,7 @@
 #include "model/step.h"
 #include "model/tool.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct PostOptions {
     int programNumber = 1000;          // O-number (fanuc)
     std::string programName;           // job name for the header comment
     std::string material;              // for speeds and feeds
+    std::string workOffset = "G54";    // the job's: G54..G59; G54.1 P1..P48 (fanuc); G59.1..G59.3 (linuxcnc)
     bool coolant = true;
     double safeZ = 5.0;                // [mm] above the stock top
 };
@@ -38,8 +40,14 @@ struct PostedProgram {
 std::vector<std::string> dialectNames();
 bool isDialect(const std::string& name);
 
+// Why the dialect's controller cannot select `workOffset` (a job's
+// "workOffset"), or nothing when it can (or the dialect is unknown: that is
+// postProcess's to refuse).
+std::optional<std::string> workOffsetProblem(const std::string& dialect, const std::string& workOffset);
+
 // Steps in machining order, each with tool and path. Throws
-// std::invalid_argument for an unknown dialect, or a step without tool/path.
+// std::invalid_argument for an unknown dialect, a work offset the dialect's
+// controller does not have, or a step without tool/path.
 PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
                           const PostOptions& options);
 

@@ -9,18 +9,6 @@ namespace taiwa::sim {
 
 namespace {
 
-// Signed sweep from `from` to the arc end, following the convention of
-// pathLength(): a zero sweep is a full circle.
-double arcSweep(Point3 from, const Move& m)
-{
-    const Point2 a{from.x - m.centre.x, from.y - m.centre.y};
-    const Point2 b{m.end.x - m.centre.x, m.end.y - m.centre.y};
-    double sweep = std::atan2(cross(a, b), dot(a, b));
-    if (m.kind == MoveKind::ArcCCW && sweep <= 0) sweep += 2 * std::numbers::pi;
-    if (m.kind == MoveKind::ArcCW && sweep >= 0) sweep -= 2 * std::numbers::pi;
-    return sweep;
-}
-
 void addArc(std::vector<PathPiece>& out, Point3 from, const Move& m, int index, double tol)
 {
     const double r = std::hypot(from.x - m.centre.x, from.y - m.centre.y);

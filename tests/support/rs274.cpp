@@ -58,6 +58,12 @@ Rs274Result runRs274(const std::string& ngc)
 
     QProcess p;
     p.setWorkingDirectory(dir.path());
+    // rs274 maps its tool table through $HOME/.tool.mmap: two runs sharing
+    // one (tests run in parallel) truncate each other's map and one dies of
+    // SIGBUS. Each run gets its own home, the temporary folder.
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("HOME", dir.path());
+    p.setProcessEnvironment(env);
     p.start(QStringLiteral(TAIWA_RS274), {"-g", "-t", tbl, "-v", var, prog});
     p.closeWriteChannel();
     if (!p.waitForFinished(300000)) {
