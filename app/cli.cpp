@@ -105,6 +105,12 @@ int exportJob(const Options& o, int& argc, char** argv)
 {
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
+    // Whether the chosen controller has the job's work offset is an input
+    // error of the job, known only now that the dialect is.
+    if (auto why = workOffsetProblem(o.dialect, l.plan.job.workOffset)) {
+        std::cerr << format(fileName(o.job), {Severity::Error, std::nullopt, "", "workOffset", *why}) << '\n';
+        return kInputErrors;
+    }
     // The PDF writer needs a QGuiApplication; no window is ever shown.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication qapp(argc, argv);

@@ -229,11 +229,17 @@ private slots:
         QVERIFY(QString::fromStdString(readFile(dir.filePath("out-p3/g57.nc"))).contains(" G0 G54.1 P3 X"));
         const QString out = dir.filePath("out-refused");
         const auto lcnc = runTaiwa({"export", file, "--out", out, "--dialect", "linuxcnc"});
-        QCOMPARE(lcnc.exitCode, 1);
-        QVERIFY2(lcnc.err.contains("taiwa: export: work offset 'G54.1 P3' cannot be posted for linuxcnc") &&
+        QCOMPARE(lcnc.exitCode, 2);
+        QVERIFY2(lcnc.err.contains("g57.taiwa: job workOffset: work offset 'G54.1 P3' cannot be posted for linuxcnc") &&
                      lcnc.err.contains("G59.1, G59.2 and G59.3"),
                  qPrintable(lcnc.err));
         QVERIFY(!QFileInfo::exists(out));
+        // What no controller has is refused by the check itself.
+        job["workOffset"] = "G99";
+        writeFile(file, job.dump());
+        const auto check = runTaiwa({"check", file});
+        QCOMPARE(check.exitCode, 2);
+        QVERIFY2(check.err.contains("g57.taiwa: job workOffset: 'G99' is not a work offset"), qPrintable(check.err));
     }
 
     void toolLibraryThatCannotBeOpenedIsReported()

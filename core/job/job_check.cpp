@@ -8,6 +8,7 @@
 #include "check/unit_checks.h"
 #include "io/job_messages.h"
 #include "modules/registry.h"
+#include "post/post.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,6 +85,12 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     if (tech && tech->alpha3 >= tech->alpha2)
         out.push_back(jobError("technology.alpha3", msg::alpha3NotBelowAlpha2({tech->alpha3, shown}, {tech->alpha2, shown})));
     const bool stockOk = checkStock(mm.stock, shown, out);
+    // A work offset some controller has; whether the chosen one has it is
+    // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).
+    const auto names = dialectNames();
+    if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
+        out.push_back(jobError("workOffset", "'" + job.workOffset +
+                                                 "' is not a work offset: give G54 to G59, G59.1 to G59.3 or G54.1 P1 to P48"));
 
     const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library};
     std::vector<check::UnitFigure> figures;
