@@ -283,6 +283,31 @@ private slots:
 
     // Without OpenGL (the offscreen platform here) the window still opens,
     // plans and posts; the 3-D view's place says why it is empty.
+    void separateVisitsToAFieldAreSeparateUndoSteps()
+    {
+        // Typing in the job's name or a stock field merges keystrokes into one
+        // undo step, but leaving the field and coming back starts a new one.
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QUndoStack* undo = w.document()->undoStack();
+        const int start = undo->count();
+        for (const char* field : {"job.name", "stock.width"}) {
+            QLineEdit* e = edit(w, field);
+            QVERIFY(e);
+            retype(e, "12");
+            QTest::keyClick(e, Qt::Key_3);
+            QCOMPARE(undo->count(), start + 1);  // one visit, one step
+            QTest::keyClick(e, Qt::Key_Tab);      // leave
+            retype(e, "45");                      // a second visit
+            QCOMPARE(undo->count(), start + 2);
+            undo->undo();
+            QCOMPARE(e->text(), QString("123"));
+            undo->undo();
+            undo->clear();
+        }
+    }
+
     void dialectChangeRepostsWithoutReplanning()
     {
         // The tool paths do not depend on the dialect: changing it re-posts the

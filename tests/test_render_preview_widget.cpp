@@ -70,6 +70,29 @@ private slots:
         QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
     }
 
+    // An edit of the job (a new plan on the same stock) keeps the camera the
+    // operator turned; another stock is fitted anew.
+    void cameraStaysPutAcrossEdits()
+    {
+        PreviewWidget w;
+        showFromTop(w);
+        if (QTest::currentTestFailed()) return;
+        vtkCamera* cam = w.scene().renderer()->GetActiveCamera();
+        cam->Azimuth(40);
+        cam->Elevation(20);
+        double turned[3];
+        cam->GetPosition(turned);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        double after[3];
+        cam->GetPosition(after);
+        for (int i = 0; i < 3; ++i) QCOMPARE(after[i], turned[i]);
+        Plan bigger = plan_;
+        bigger.mmJob.stock.width *= 2;
+        w.setPlan(std::make_shared<const Plan>(bigger));
+        cam->GetPosition(after);
+        QVERIFY(std::abs(after[0] - turned[0]) + std::abs(after[1] - turned[1]) + std::abs(after[2] - turned[2]) > 1.0);
+    }
+
     // Grabbed as part of a window (how the station's screenshots are taken)
     // the frame is opaque: no alpha is left for the grab to darken the
     // background and the translucent stock into near-black.

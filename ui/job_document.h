@@ -26,9 +26,6 @@ public:
     // edits with the same key merge into one undo step. `selection` is the
     // unit selected after the edit (-1: keep).
     void edit(const Job& after, const QString& text, const QString& mergeKey = {}, int selection = -1);
-    // Ends the current run of merged edits (the field lost focus): the next
-    // edit of the same field is a new undo step.
-    void closeMerge() { ++mergeSerial_; }
     // Ends the current run of merging edits (the operator left the field):
     // the next edit is a new undo step even with the same merge key.
     void breakMerge() { ++mergeEpoch_; }
@@ -53,7 +50,6 @@ private:
     QUndoStack* undo_;
     bool dirtyWithoutUndo_ = false;
     int mergeEpoch_ = 0;
-    int mergeSerial_ = 0;
 };
 
 }  // namespace taiwa::ui

@@ -45,9 +45,9 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
         form->addRow(labels[i], stock_[i]);
         connect(stock_[i], &QLineEdit::textEdited, this, [this, i](const QString& t) { editStock(i, t); });
         connect(stock_[i], &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
-        connect(stock_[i], &QLineEdit::editingFinished, doc_, &JobDocument::closeMerge);
+        connect(stock_[i], &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
     }
-    connect(name_, &QLineEdit::editingFinished, doc_, &JobDocument::closeMerge);
+    connect(name_, &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
     connect(name_, &QLineEdit::textEdited, this, [this](const QString& t) {
         Job j = doc_->job();
         j.name = t.toStdString();

@@ -82,7 +82,9 @@ void PreviewWidget::resizeGL(int w, int h)
     const int pw = static_cast<int>(std::lround(w * dpr)), ph = static_cast<int>(std::lround(h * dpr));
     window_->SetSize(pw, ph);
     interactor_->UpdateSize(pw, ph);
-    scene_.setView(view_, static_cast<double>(w) / std::max(h, 1));
+    // Fit the view while nothing is shown yet; afterwards a resize keeps the
+    // operator's camera.
+    if (!fittedStock_) scene_.setView(view_, static_cast<double>(w) / std::max(h, 1));
 }
 
 void PreviewWidget::paintGL()
@@ -114,8 +116,12 @@ void PreviewWidget::paintGL()
 
 void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
 {
+    // An edit of the job keeps the operator's camera; a new stock (another
+    // job) is fitted anew with the chosen preset.
+    const bool newStock = plan && (!fittedStock_ || !(*fittedStock_ == plan->mmJob.stock));
+    if (plan && newStock) fittedStock_ = plan->mmJob.stock;
     scene_.setPlan(std::move(plan), std::move(stock));
-    scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
+    if (newStock) scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
     update();
 }
 

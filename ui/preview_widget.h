@@ -15,6 +15,7 @@
 #include <vtkSmartPointer.h>
 
 #include <memory>
+#include <optional>
 
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
@@ -65,6 +66,7 @@ private:
     vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
     vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
     viz::ViewPreset view_ = viz::ViewPreset::Iso;
+    std::optional<Stock> fittedStock_;  // the stock the camera was last fitted to
     QPoint pressPos_;
     bool dragged_ = false;
 };
