@@ -283,6 +283,17 @@ private slots:
 
     // Without OpenGL (the offscreen platform here) the window still opens,
     // plans and posts; the 3-D view's place says why it is empty.
+    void focusGoesToTheNewUnitsFirstField()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m2d.X1")));
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m4.P1.x")));
+    }
+
     void separateVisitsToAFieldAreSeparateUndoSteps()
     {
         // Typing in the job's name or a stock field merges keystrokes into one

@@ -168,8 +168,8 @@ void StationWindow::buildMenus()
     QMenu* job = menuBar()->addMenu(tr("&Job"));
     for (const ModuleKind* kind : moduleKinds()) {
         const QString name = QString::fromUtf8(kind->name());
-        job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), units_,
-                       [this, name] { units_->addUnit(name); });
+        job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), this,
+                       [this, name] { addUnit(name); });
     }
     job->addSeparator();
     job->addAction(tr("&Technology data…"), QKeySequence(tr("Ctrl+T")), this, &StationWindow::editTechnology);
@@ -195,7 +195,7 @@ void StationWindow::wire()
     connect(doc_, &JobDocument::changed, this, &StationWindow::onDocumentChanged);
     connect(doc_, &JobDocument::selectionRequested, units_, &UnitListPanel::selectUnit);
     connect(doc_, &JobDocument::modifiedChanged, this, &StationWindow::updateTitle);
-    connect(palette_, &ModulePalette::addModule, units_, &UnitListPanel::addUnit);
+    connect(palette_, &ModulePalette::addModule, this, &StationWindow::addUnit);
     connect(units_, &UnitListPanel::currentUnitChanged, this, &StationWindow::onUnitSelected);
     for (const auto& [name, f] : unitForms_) {
         connect(f, &UnitForm::edited, this,
@@ -234,6 +234,13 @@ void StationWindow::wire()
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }
+
+void StationWindow::addUnit(const QString& module)
+{
+    units_->addUnit(module);
+    // The operator types the new unit's values next: its first field.
+    if (UnitForm* f = currentForm()) f->focusFirstField();
+}
 
 UnitForm* StationWindow::currentForm() const
 {

@@ -67,6 +67,8 @@ private:
     void showToolLibrary();
     void updateTitle();
     UnitForm* currentForm() const;
+    // Adds a unit of that module kind and puts the focus into its first field.
+    void addUnit(const QString& module);
 
     JobDocument* doc_;
     PlanRunner* runner_;

@@ -192,4 +192,12 @@ bool UnitForm::hasUnparsableText() const
     return false;
 }
 
+void UnitForm::focusFirstField()
+{
+    if (rows_.empty()) return;
+    QWidget* first = rows_.front().edit ? static_cast<QWidget*>(rows_.front().edit) : rows_.front().combo;
+    first->setFocus(Qt::OtherFocusReason);
+    if (rows_.front().edit) rows_.front().edit->selectAll();
+}
+
 }  // namespace taiwa::ui

@@ -33,6 +33,8 @@ public:
     // Marks the widgets the diagnostics name; returns the ones no widget shows.
     Diagnostics showDiagnostics(const Diagnostics& ofThisUnit);
     bool hasUnparsableText() const;
+    // Puts the keyboard focus into the first field (after a unit is added).
+    void focusFirstField();
 
 protected:
     // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
