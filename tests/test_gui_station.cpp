@@ -283,6 +283,50 @@ private slots:
 
     // Without OpenGL (the offscreen platform here) the window still opens,
     // plans and posts; the 3-D view's place says why it is empty.
+    void staleViewsAreMarked()
+    {
+        // An input error leaves the last valid program on view, greyed under a
+        // banner naming the first error; the fix brings the new program back.
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.planRunner()->flush();
+        auto* banner = w.findChild<QLabel*>("output.stale");
+        QVERIFY(banner && !banner->isVisible());
+        const QString program = w.ncView()->text()->toPlainText();
+        QLineEdit* depth = edit(w, "m4.depth");
+        retype(depth, "0");
+        w.planRunner()->flush();
+        QVERIFY(banner->isVisible());
+        QVERIFY2(banner->text().contains("unit 1 (M4) depth:"), qPrintable(banner->text()));
+        QCOMPARE(w.ncView()->text()->toPlainText(), program);
+        QVERIFY(w.ncView()->text()->styleSheet().contains("#9a9a9a"));
+        retype(depth, "12");
+        w.planRunner()->flush();
+        QVERIFY(!banner->isVisible());
+        QVERIFY(w.ncView()->text()->styleSheet().isEmpty());
+        QVERIFY(w.ncView()->text()->toPlainText() != program);  // the new depth's program
+    }
+
+    void totalsAreKeptWhileTimesAreComputed()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.planRunner()->flush();
+        auto* details = w.findChild<QLabel*>("step.details");
+        QVERIFY(details);
+        w.stepTable()->clearSelection();
+        const QString timed = details->text();
+        QVERIFY2(timed.contains(" min") && !timed.contains("0.0 min"), qPrintable(timed));
+        Job j = w.document()->job();
+        (j.units[0].module).as<M4Pocket>().depth = 11;
+        w.document()->edit(j, "deeper");  // the step list now, the times later
+        const QString updating = details->text();
+        QVERIFY2(updating.contains("updating") && !updating.contains("0.0 min"), qPrintable(updating));
+        QVERIFY(updating.contains(timed.section(" min", 0, 0).section(", ", 1)));
+        w.planRunner()->flush();
+        QVERIFY(!details->text().contains("updating"));
+    }
+
     void focusGoesToTheNewUnitsFirstField()
     {
         StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));

@@ -51,6 +51,11 @@ void NcView::setProgram(const QString& nc, const std::vector<BlockSource>& lines
     summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
 }
 
+void NcView::setStale(bool stale)
+{
+    text_->setStyleSheet(stale ? QStringLiteral("QPlainTextEdit { color: #9a9a9a; }") : QString());
+}
+
 void NcView::setMessage(const QString& text)
 {
     lines_.clear();

@@ -26,6 +26,8 @@ public:
     void setProgram(const QString& nc, const std::vector<BlockSource>& lines);
     // Shows why there is no program (input errors, planning failure).
     void setMessage(const QString& text);
+    // Greys the program while it is not the current job's (input errors).
+    void setStale(bool stale);
     // Selects and shows the first line posted from (step, move); false if none.
     bool selectMove(int step, int move);
     // Scrolls to the first line of a step (its header comment) without

@@ -26,6 +26,8 @@
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QFileInfo>
+
+#include <algorithm>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -121,6 +123,12 @@ QWidget* StationWindow::buildCentre()
 QWidget* StationWindow::buildRight()
 {
     auto* right = new QSplitter(Qt::Vertical);
+    // Over the views while they show the last valid plan and the job has errors.
+    stale_ = new QLabel;
+    stale_->setObjectName("output.stale");
+    stale_->setWordWrap(true);
+    stale_->setStyleSheet("background: #fff3c4; color: #5a4500; padding: 4px; border: 1px solid #e0c060;");
+    stale_->hide();
     if (QOpenGLContext().create()) {
         preview_ = new PreviewWidget;
         preview_->setObjectName("preview");
@@ -140,7 +148,12 @@ QWidget* StationWindow::buildRight()
     lower->setStretchFactor(1, 2);
     right->addWidget(lower);
     right->setSizes({500, 440});
-    return right;
+    auto* box = new QWidget;
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(stale_);
+    layout->addWidget(right, 1);
+    return box;
 }
 
 void StationWindow::buildMenus()
@@ -205,13 +218,15 @@ void StationWindow::wire()
     connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
         diagnostics_ = ds;
         showDiagnostics();
+        showStale();
     });
     connect(runner_, &PlanRunner::stepsPlanned, steps_, &StepPanel::setPlan);
     connect(runner_, &PlanRunner::programReady, this,
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
                 if (plan) nc_->setProgram(nc, lines);
-                else nc_->setMessage(nc);
+                else if (!hasErrors(diagnostics_)) nc_->setMessage(nc);  // with input errors the last program stays, marked stale
                 onProgram(plan);
+                showStale();
             });
     connect(nc_, &NcView::dialectChanged, runner_, &PlanRunner::setDialect);
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
@@ -287,6 +302,21 @@ void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
     if (!plan) return;
     if (preview_) preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
     steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
+}
+
+void StationWindow::showStale()
+{
+    const auto first = std::find_if(diagnostics_.begin(), diagnostics_.end(),
+                                    [](const Diagnostic& d) { return d.severity == Severity::Error; });
+    const bool stale = first != diagnostics_.end() && runner_->fullPlan();
+    stale_->setVisible(stale);
+    nc_->setStale(stale);
+    if (stale)
+        stale_->setText(tr("Not up to date: the job has input errors. The 3-D view and the NC program show the last "
+                           "valid job. First error: %1")
+                            .arg(QString::fromStdString(format(doc_->path().isEmpty() ? std::string("job")
+                                                                                      : QFileInfo(doc_->path()).fileName().toStdString(),
+                                                               *first))));
 }
 
 void StationWindow::showDiagnostics()

@@ -67,6 +67,8 @@ private:
     void showToolLibrary();
     void updateTitle();
     UnitForm* currentForm() const;
+    // The banner over the views while they show the last valid plan.
+    void showStale();
     // Adds a unit of that module kind and puts the focus into its first field.
     void addUnit(const QString& module);
 
@@ -79,6 +81,7 @@ private:
     JobProperties* jobProps_;
     QStackedWidget* forms_;
     std::map<std::string, UnitForm*> unitForms_;  // one per module kind, by name
+    QLabel* stale_ = nullptr;
     QLabel* unitMessages_;
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;

@@ -156,11 +156,20 @@ void StepPanel::onSelectionChanged()
 void StepPanel::showDetails(int index)
 {
     if (!plan_ || index < 0 || index >= static_cast<int>(plan_->steps.size())) {
-        if (!plan_) details_->setText(tr("No steps: the job has input errors."));
-        else
+        if (!plan_) {
+            details_->setText(tr("No steps: the job has input errors."));
+        } else if (!plan_->steps.empty() && !plan_->steps.front().minutes) {
+            // The step list comes before the times: keep the last ones until the new arrive.
+            details_->setText(tr("%n step(s), %1 min, %2 tool change(s) (updating…)", "",
+                                 static_cast<int>(plan_->steps.size()))
+                                  .arg(lastMinutes_ ? QString::number(*lastMinutes_, 'f', 1) : QStringLiteral("…"))
+                                  .arg(plan_->toolChanges));
+        } else {
+            lastMinutes_ = plan_->totalMinutes;
             details_->setText(tr("%n step(s), %1 min, %2 tool change(s)", "", static_cast<int>(plan_->steps.size()))
                                   .arg(QString::number(plan_->totalMinutes, 'f', 1))
                                   .arg(plan_->toolChanges));
+        }
         return;
     }
     const Step& s = plan_->steps[static_cast<std::size_t>(index)];

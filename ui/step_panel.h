@@ -10,6 +10,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 
 class QCheckBox;
 class QLabel;
@@ -60,6 +61,7 @@ private:
     QCheckBox* before_;
     QTimer* timer_;
     std::shared_ptr<const Plan> plan_;
+    std::optional<double> lastMinutes_;  // total time of the last plan with times
     int lastEmitted_ = -2;
 };
 
