@@ -15,6 +15,7 @@
 #include "ui/station_window.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
+#include "ui/unit_list_panel.h"
 #include "ui/technology_dialog.h"
 #include "ui/tool_library_dialog.h"
 #include "tools/tool_library.h"
@@ -25,6 +26,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
+#include <QStatusBar>
+#include <QListWidget>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -327,11 +330,52 @@ private slots:
         QVERIFY(!details->text().contains("updating"));
     }
 
+    void addedAndDuplicatedUnitsLandInFreeStock()
+    {
+        // plate.taiwa's stock has no room left for another 50 x 30 pocket: Add
+        // and Duplicate say so and add nothing, so the job stays valid.
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        const auto problems = [&] { return checkJob(w.document()->job(), TechnologyTable::builtIn(), w.planRunner()->library()); };
+        const std::size_t before = w.document()->job().units.size();
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        QCOMPARE(w.document()->job().units.size(), before);
+        QVERIFY2(w.statusBar()->currentMessage().contains("no free place"), qPrintable(w.statusBar()->currentMessage()));
+        auto* panel = w.findChild<UnitListPanel*>();
+        panel->selectUnit(0);
+        panel->duplicate();
+        QCOMPARE(w.document()->job().units.size(), before);
+
+        // With a stock twice as large, both land where they overlap nothing.
+        Job larger = w.document()->job();
+        larger.stock.width *= 2;
+        larger.stock.length *= 2;
+        w.document()->edit(larger, "larger", {}, 0);
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
+        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
+        panel->selectUnit(0);
+        panel->duplicate();
+        QCOMPARE(w.document()->job().units.size(), before + 3);
+        const Diagnostics ds = problems();
+        QVERIFY2(!hasErrors(ds), qPrintable(QString::fromStdString(ds.empty() ? "" : format("plate", ds.front()))));
+        // The copy is the same pocket, moved.
+        const auto& units = w.document()->job().units;
+        const auto& original = units[0].module.as<M4Pocket>();
+        const auto& copy = units[1].module.as<M4Pocket>();
+        QCOMPARE(copy.depth, original.depth);
+        QCOMPARE(copy.corners[2] - copy.corners[0], original.corners[2] - original.corners[0]);
+        QVERIFY(!(copy.corners[0] == original.corners[0]));
+    }
+
     void focusGoesToTheNewUnitsFirstField()
     {
         StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
+        Job roomy = w.document()->job();
+        roomy.stock.width = roomy.stock.length = 400;
+        w.document()->edit(roomy, "roomy");
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
         QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m2d.X1")));
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);

@@ -231,6 +231,7 @@ void StationWindow::wire()
     connect(nc_, &NcView::dialectChanged, runner_, &PlanRunner::setDialect);
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+    connect(units_, &UnitListPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     if (!preview_) return;
     runner_->setSimulateStock(true);
     connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);

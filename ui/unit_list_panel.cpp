@@ -1,6 +1,7 @@
 // The unit list and its buttons.
 #include "ui/unit_list_panel.h"
 
+#include "job/placement.h"
 #include "modules/registry.h"
 
 #include "ui/job_document.h"
@@ -64,8 +65,23 @@ void UnitListPanel::addUnit(const QString& module)
     const ModuleKind* kind = findModuleKind(module.toStdString());
     if (!kind) return;
     Job j = doc_->job();
-    j.units.push_back(MachiningUnit{"", kind->makeDefault(j.stock)});
+    // The module's default unit is in mm: in the job's own unit, then in free stock.
+    ModuleInput unit = kind->makeDefault(toMillimetres(j).stock);
+    const LengthUnit lu = j.lengthUnit;
+    unit.convertLengths([lu](double v) { return fromMm(v, lu); });
+    const auto placed = place(j, unit);
+    if (!placed) return;
+    j.units.push_back(MachiningUnit{"", *placed});
     doc_->edit(j, tr("Add %1 unit").arg(module), {}, static_cast<int>(j.units.size()) - 1);
+}
+
+std::optional<ModuleInput> UnitListPanel::place(const Job& job, const ModuleInput& unit)
+{
+    auto free = placeInFreeStock(job, unit);
+    if (!free)
+        emit message(tr("No unit added: the stock has no free place for it. Make the stock larger or a unit smaller, "
+                        "or move one."));
+    return free;
 }
 
 void UnitListPanel::duplicate()
@@ -73,7 +89,11 @@ void UnitListPanel::duplicate()
     const int u = currentUnit();
     if (u < 0) return;
     Job j = doc_->job();
-    j.units.insert(j.units.begin() + u + 1, j.units[static_cast<std::size_t>(u)]);
+    MachiningUnit copy = j.units[static_cast<std::size_t>(u)];
+    const auto placed = place(j, copy.module);
+    if (!placed) return;
+    copy.module = *placed;
+    j.units.insert(j.units.begin() + u + 1, std::move(copy));
     doc_->edit(j, tr("Duplicate unit %1").arg(u + 1), {}, u + 1);
 }
 

@@ -3,7 +3,11 @@
 // calls; each is one undoable edit of the job.
 #pragma once
 
+#include "model/job.h"
+
 #include <QWidget>
+
+#include <optional>
 
 class QListWidget;
 
@@ -21,8 +25,10 @@ public:
     void refresh();
 
     // Adds a unit of the module kind named `module` ("M4") with the kind's
-    // default values, and selects it.
+    // default values, in free stock, and selects it; says so when the stock
+    // has no free place, and adds nothing.
     void addUnit(const QString& module);
+    // A copy of the current unit after it, in free stock (or nothing, said).
     void duplicate();
     void moveUp() { move(-1); }
     void moveDown() { move(1); }
@@ -30,9 +36,12 @@ public:
 
 signals:
     void currentUnitChanged(int unit);
+    void message(const QString& text);  // for the status bar
 
 private:
     void move(int delta);
+    // The unit moved to free stock; nullopt, with a message, when there is none.
+    std::optional<ModuleInput> place(const Job& job, const ModuleInput& unit);
     JobDocument* doc_;
     QListWidget* list_;
 };

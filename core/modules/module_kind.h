@@ -62,6 +62,9 @@ public:
     virtual std::optional<Quad> topOutline(const ModuleInput& mm) const = 0;
     // The field an overlap is reported on ("corners").
     virtual const char* outlineField() const = 0;
+    // The same unit moved by `delta` in XY (the station places a new or
+    // duplicated unit in free stock); a unit without a figure stays as it is.
+    virtual void moveBy(ModuleInput& m, Point2 delta) const = 0;
 
     // Decomposition, tool choice and whatever the module must settle between
     // them (M2D: the roughing tool before the layers); problems become
@@ -84,6 +87,7 @@ public:
         return checkInput(mm.as<T>(), unitNo, ctx);
     }
     std::optional<Quad> topOutline(const ModuleInput& mm) const final { return outline(mm.as<T>()); }
+    void moveBy(ModuleInput& m, Point2 delta) const final { move(m.as<T>(), delta); }
     std::vector<Step> plan(const ModuleInput& mm, const UnitPlanContext& ctx, Diagnostics& out) const final
     {
         return planInput(mm.as<T>(), ctx, out);
@@ -99,6 +103,7 @@ protected:
     virtual void writeInput(const T& m, nlohmann::ordered_json& unit) const = 0;
     virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const = 0;
     virtual std::optional<Quad> outline(const T& mm) const = 0;
+    virtual void move(T& m, Point2 delta) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
     virtual std::vector<FormField> formFields() const = 0;
 };

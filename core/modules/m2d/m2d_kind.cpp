@@ -94,6 +94,8 @@ protected:
 
     std::optional<Quad> outline(const M2DPocket& mm) const override { return m2dCrossSection(mm, 0.0); }
 
+    void move(M2DPocket& m, Point2 delta) const override { m.corner = m.corner + delta; }
+
     std::vector<Step> planInput(const M2DPocket& m2d, const UnitPlanContext& ctx, Diagnostics& out) const override
     {
         // The layer count depends on the roughing tool: choose it first.

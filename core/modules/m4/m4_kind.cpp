@@ -78,6 +78,11 @@ protected:
         return Quad{counterClockwise(mm.corners), mm.cornerRadius};
     }
 
+    void move(M4Pocket& m, Point2 delta) const override
+    {
+        for (auto& c : m.corners) c = c + delta;
+    }
+
     std::vector<Step> planInput(const M4Pocket& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
     {
         std::vector<Step> steps = decomposeM4(mm, ctx.tech, ctx.unit);
