@@ -22,6 +22,7 @@
 #include <QMenuBar>
 #include <QPainter>
 #include <QPlainTextEdit>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -35,15 +36,24 @@ class TestGuiScreenshots : public QObject {
     static void settle(StationWindow& w)
     {
         w.planRunner()->flush();
-        QTest::qWait(300);  // layout, and a frame of the 3-D view
+        QTRY_VERIFY(!w.planRunner()->isBusy());
+        QCoreApplication::sendPostedEvents();  // layout
     }
+    // The window as a picture: its full size and not blank (a window grabbed
+    // before it was laid out or painted is one flat colour). Saved when
+    // TAIWA_SCREENSHOTS_DIR names a folder.
     static void save(StationWindow& w, const QString& name)
     {
+        const QImage image = w.grab().toImage();
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), w.size() * w.devicePixelRatio());
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 7)
+            for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
+        QVERIFY2(colours.size() > 50, qPrintable(name + ": " + QString::number(colours.size()) + " colours"));
         const QString out = qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR");
         if (out.isEmpty()) return;
         QDir().mkpath(out);
-        const QImage image = w.grab().toImage();
-        QVERIFY(!image.isNull());
         QVERIFY(image.save(QDir(out).filePath(name)));
     }
 
@@ -95,7 +105,8 @@ private slots:
         QVERIFY(w.planRunner()->fullPlan());
         const int steps = w.stepTable()->rowCount();
         QCOMPARE(steps, static_cast<int>(w.planRunner()->fullPlan()->steps.size()));
-        QVERIFY(steps > 4);
+        QCOMPARE(steps, 29);  // plate.taiwa: 6 units (the README's contact sheet shows each)
+        QCOMPARE(w.stepTable()->stepLabels().size(), 29);
         QVERIFY(w.ncView()->text()->toPlainText().startsWith("%") ||
                 w.ncView()->text()->toPlainText().contains("G21"));
         save(w, "station-plate.png");

@@ -2,7 +2,7 @@
 // tests/data/bad-jobs gives exactly the lines of its .expected file; deep,
 // huge, missing and unreadable files and the fuzzer's findings are refused
 // without a crash; diagnostics are capped; writes are atomic.
-// TAIWA_REGENERATE=1 rewrites the *.expected files (review the diff).
+// TAIWA_UPDATE_GOLDEN=1 rewrites the *.expected files (and fails: review the diff).
 #include "io/job_io.h"
 #include "job/job_file.h"
 #include "support/support.h"
@@ -59,10 +59,7 @@ private slots:
         QVERIFY(r.diagnostics.size() <= 100);
         const std::string actual = diagnosticLines(QFileInfo(file).fileName(), r.diagnostics);
         const QString expectedFile = file.chopped(6) + ".expected";
-        if (qEnvironmentVariableIntValue("TAIWA_REGENERATE") == 1) {
-            writeFile(expectedFile, actual);
-            return;
-        }
+        if (rewroteGolden(expectedFile, actual)) return;
         QVERIFY2(QFileInfo::exists(expectedFile), qPrintable(expectedFile + " is missing"));
         QCOMPARE(actual, readFile(expectedFile));
     }
@@ -72,20 +69,29 @@ private slots:
     void deepNestingIsRefusedWithoutCrash_data()
     {
         QTest::addColumn<QByteArray>("text");
-        QTest::newRow("100k open arrays") << QByteArray(100000, '[');
-        QTest::newRow("100k closed arrays") << QByteArray(100000, '[') + QByteArray(100000, ']');
+        QTest::addColumn<QString>("message");  // the whole message: where the 65th level opens
+        QTest::newRow("100k open arrays") << QByteArray(100000, '[')
+                                          << "not a job file: arrays and objects nested more than 64 deep at byte 65 (line 1, column 65)";
+        QTest::newRow("100k closed arrays") << QByteArray(100000, '[') + QByteArray(100000, ']')
+                                            << "not a job file: arrays and objects nested more than 64 deep at byte 65 (line 1, column 65)";
         QByteArray objects;
         for (int i = 0; i < 100000; ++i) objects += "{\"a\":";
-        QTest::newRow("100k objects") << objects + "1" + QByteArray(100000, '}');
-        QTest::newRow("deep in a unit") << R"({"format": "taiwa-job", "version": 1, "units": [{"module": "M4", "corners": )"
-                                               + QByteArray(100000, '[') + QByteArray(100000, ']') + "}]}";
+        QTest::newRow("100k objects") << objects + "1" + QByteArray(100000, '}')
+                                      << "not a job file: arrays and objects nested more than 64 deep at byte 321 (line 1, column 321)";
+        const QByteArray head = R"({"format": "taiwa-job", "version": 1, "units": [{"module": "M4", "corners": )";
+        QTest::newRow("deep in a unit") << head + QByteArray(100000, '[') + QByteArray(100000, ']') + "}]}"
+                                        << QString("not a job file: arrays and objects nested more than 64 deep at byte %1 (line 1, column %1)")
+                                               .arg(head.size() + 62);
     }
     void deepNestingIsRefusedWithoutCrash()
     {
         QFETCH(QByteArray, text);
+        QFETCH(QString, message);
         const JobReadResult r = readJob(text.toStdString());
         QVERIFY(!r.job);
-        QVERIFY(!r.diagnostics.empty());
+        QCOMPARE(r.diagnostics.size(), std::size_t{1});
+        QCOMPARE(QString::fromStdString(r.diagnostics.front().message), message);
+        QVERIFY(!r.diagnostics.front().unit);  // the file as a whole
     }
 
     void tooManyProblemsAreCapped()

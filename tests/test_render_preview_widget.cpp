@@ -106,7 +106,8 @@ private slots:
         w->setShowStock(true);
         host.show();
         QVERIFY(QTest::qWaitForWindowExposed(&host));
-        QTest::qWait(100);
+        // The layout has given the widget its place before the grab.
+        QTRY_VERIFY(w->geometry().size() == host.contentsRect().size() - QSize(2 * host.layout()->contentsMargins().left(), 2 * host.layout()->contentsMargins().top()));
         const QImage img = host.grab().toImage().convertToFormat(QImage::Format_RGB32);
         const QPoint corner = w->geometry().topLeft() + QPoint(3, 3);
         QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));

@@ -6,6 +6,7 @@
 
 #include "io/job_messages.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -48,7 +49,7 @@ bool writeAll(int fd, std::string_view text)
 // Creates a new temporary file beside `target`; its path in `tempPath`.
 int createTemporary(const std::filesystem::path& target, std::string& tempPath)
 {
-    static unsigned counter = 0;
+    static std::atomic<unsigned> counter{0};  // exports and autosave write from several threads
     for (int attempt = 0; attempt < 100; ++attempt) {
         const std::string name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-"
                                  + std::to_string(++counter);

@@ -124,7 +124,7 @@ std::string nestedTooDeep(std::size_t byte, std::size_t line, std::size_t column
 
 std::string numberTooLarge(const std::string& token)
 {
-    return "not a job file: the number " + excerpt(token) + " is too large for any dimension";
+    return "the number " + excerpt(token) + " is too large for any dimension";
 }
 
 std::string notAnObject(const nlohmann::json& root)

@@ -132,6 +132,68 @@ std::optional<std::size_t> tooDeepAt(std::string_view text)
     return std::nullopt;
 }
 
+// Where a number too large for a double stands: a SAX pass that follows the
+// keys and indices, and stops at the parse error nlohmann reports there. It
+// also remembers the last "module" string of each open object (the unit's).
+class OverflowLocator : public nlohmann::json_sax<json> {
+public:
+    JsonPath path;
+    std::string module;
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t& s) override
+    {
+        if (!frames_.empty() && frames_.back().object && frames_.back().key == "module") frames_.back().module = s;
+        return value();
+    }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(true); }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(false); }
+    bool end_array() override { return close(); }
+    bool key(string_t& k) override
+    {
+        frames_.back().key = k;
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override
+    {
+        for (const Frame& f : frames_) {
+            path.push_back(f.object ? msg::io::fieldKey(f.key) : "[" + std::to_string(f.index) + "]");
+            if (f.object && !f.module.empty()) module = f.module;
+        }
+        return false;
+    }
+
+private:
+    struct Frame {
+        bool object;
+        std::string key;
+        std::size_t index = 0;
+        std::string module;
+    };
+    bool value()
+    {
+        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+        return true;
+    }
+    bool open(bool object)
+    {
+        frames_.push_back({object, {}, 0, {}});
+        return true;
+    }
+    bool close()
+    {
+        frames_.pop_back();
+        return value();
+    }
+    std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 ParsedDocument parseDocument(std::string_view text)
@@ -153,6 +215,10 @@ ParsedDocument parseDocument(std::string_view text)
     } catch (const json::exception& e) {
         // out_of_range 406: "number overflow parsing '1e400'"
         out.error = msg::io::numberTooLarge(between(e.what(), "parsing '", "'"));
+        OverflowLocator where;
+        json::sax_parse(text.begin(), text.end(), &where);
+        out.errorPath = std::move(where.path);
+        out.errorModule = std::move(where.module);
     }
     return out;
 }

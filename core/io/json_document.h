@@ -22,6 +22,8 @@ std::string joinPath(JsonPath::const_iterator begin, JsonPath::const_iterator en
 struct ParsedDocument {
     std::optional<nlohmann::json> root;  // absent when the text is not JSON
     std::string error;                   // why, as a sentence, when absent
+    JsonPath errorPath;                  // where, when the text is JSON but a value cannot be held (1e400)
+    std::string errorModule;             // the "module" of the unit errorPath is in, when it came before
     std::vector<JsonPath> repeatedKeys;  // every key given a second time in its object
 };
 

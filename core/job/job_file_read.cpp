@@ -12,6 +12,7 @@
 #include "modules/registry.h"
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 
 namespace taiwa {
@@ -111,20 +112,29 @@ TechnologyOverrides readTechnology(const ObjectFields& job)
     return t;
 }
 
-// A key given twice, reported where it is: in a unit or at job level.
-void reportRepeated(const io::JsonPath& path, const json& root, DiagnosticSink& sink)
+// A problem at a path of the document, reported where it is: in a unit
+// ("units[2].depth": unit 3, field "depth", its module from `moduleOf`) or at
+// job level ("stock.height").
+Diagnostic atPath(const io::JsonPath& path, const std::function<std::string(std::size_t)>& moduleOf,
+                  std::string message)
 {
-    Diagnostic d{Severity::Error, std::nullopt, "", io::joinPath(path.begin(), path.end()),
-                 msg::io::duplicateKey()};
-    const json* units = root.contains("units") ? &root["units"] : nullptr;
-    if (path.size() >= 3 && path[0] == "units" && path[1].starts_with("[") && units && units->is_array()) {
+    Diagnostic d{Severity::Error, std::nullopt, "", io::joinPath(path.begin(), path.end()), std::move(message)};
+    if (path.size() >= 3 && path[0] == "units" && path[1].starts_with("[")) {
         const std::size_t index = std::stoul(path[1].substr(1));
-        const std::string module = index < units->size() ? knownModule((*units)[index]) : std::string();
+        const std::string module = moduleOf(index);
         d.unit = static_cast<int>(index + 1);
         d.module = module.empty() ? "?" : module;
         d.field = io::joinPath(path.begin() + 2, path.end());
     }
-    sink.add(std::move(d));
+    return d;
+}
+
+// A key given twice, reported where it is.
+void reportRepeated(const io::JsonPath& path, const json& root, DiagnosticSink& sink)
+{
+    const json* units = root.contains("units") && root["units"].is_array() ? &root["units"] : nullptr;
+    sink.add(atPath(path, [units](std::size_t i) { return units && i < units->size() ? knownModule((*units)[i]) : ""; },
+                    msg::io::duplicateKey()));
 }
 
 // Format and version come first: anything else of a file that is not a job,
@@ -158,6 +168,12 @@ JobReadResult readJob(std::string_view text)
         return result;
     }
     io::ParsedDocument doc = io::parseDocument(text);
+    if (!doc.root && !doc.errorPath.empty()) {
+        // JSON, but a value no dimension can have (1e400): named at its field.
+        const std::string module = findModuleKind(doc.errorModule) ? doc.errorModule : std::string();
+        result.diagnostics.push_back(atPath(doc.errorPath, [&](std::size_t) { return module; }, doc.error));
+        return result;
+    }
     if (!doc.root) {
         result.diagnostics.push_back(fileProblem(doc.error));
         return result;

@@ -1,6 +1,8 @@
 // Shared test helpers: source paths, running the command line, file I/O.
 #include "support/support.h"
 
+#include <QTest>
+
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -65,6 +67,16 @@ void writeFile(const QString& path, const std::string& text)
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) throw std::runtime_error("cannot write " + path.toStdString());
     f.write(text.data(), static_cast<qint64>(text.size()));
+}
+
+bool rewroteGolden(const QString& path, const std::string& actual)
+{
+    if (!qEnvironmentVariableIsSet("TAIWA_UPDATE_GOLDEN")) return false;
+    writeFile(path, actual);
+    QTest::qFail(qPrintable("golden rewritten: " + path +
+                            "; review the diff and run again without TAIWA_UPDATE_GOLDEN"),
+                 __FILE__, __LINE__);
+    return true;
 }
 
 }  // namespace taiwa::test

@@ -35,4 +35,9 @@ void isolateStation(const QString& dir);
 std::string readFile(const QString& path);
 void writeFile(const QString& path, const std::string& text);
 
+// TAIWA_UPDATE_GOLDEN=1 rewrites a golden or expected file with `actual`
+// instead of comparing, and fails the check (so no run that rewrote a file
+// passes unseen): true when it did, and the caller returns.
+bool rewroteGolden(const QString& path, const std::string& actual);
+
 }  // namespace taiwa::test
