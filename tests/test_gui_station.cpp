@@ -7,9 +7,12 @@
 #include "modules/m4/m4.h"
 #include "export/export.h"
 #include "job/job_check.h"
+#include "job/job_file.h"
+#include "pipeline/pipeline.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
+#include "ui/length_units.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
@@ -228,14 +231,38 @@ private slots:
         QTest::keyClick(units, Qt::Key_Down);  // mm -> inch
         const Job& in = w.document()->job();
         QCOMPARE(in.lengthUnit, LengthUnit::Inch);
-        QCOMPARE((in.units[0].module).as<M4Pocket>().corners[1].x, 2.362205);  // 60 mm
-        QCOMPARE(in.stock.width, std::round(mm.stock.width / 25.4 * 1e6) / 1e6);
-        QCOMPARE(edit(w, "m4.depth")->text(), QString("0.393701"));
+        QCOMPARE((in.units[0].module).as<M4Pocket>().corners[1].x, 60 / 25.4);  // exact, not rounded
+        QCOMPARE(in.stock.width, mm.stock.width / 25.4);
+        QCOMPARE(edit(w, "m4.depth")->text(), QString("0.393701"));  // rounded for display only
         QTest::keyClick(units, Qt::Key_Up);  // back to mm: the values typed come back
         QCOMPARE(w.document()->job(), mm);
         w.document()->undoStack()->undo();
         w.document()->undoStack()->undo();
         QCOMPARE(w.document()->job(), mm);
+    }
+
+    void unitSwitchKeepsThePlan()
+    {
+        // Converting plate.taiwa to inch must not change what the machine cuts:
+        // r1 6 mm once became 0.23622 in (5.99999 mm) and the 12 mm end mill was
+        // no longer chosen. Same steps, tools and depths; back in mm, the same job.
+        const Job mm = *readJobFile(test::sourcePath("resources/samples/plate.taiwa").toStdString()).job;
+        const Job in = convertLengthUnit(mm, LengthUnit::Inch);
+        const auto lib = defaultToolLibrary();
+        PlanOptions stepsOnly;
+        stepsOnly.withToolPaths = false;
+        const Plan a = planJob(mm, TechnologyTable::builtIn(), lib, stepsOnly);
+        const Plan b = planJob(in, TechnologyTable::builtIn(), lib, stepsOnly);
+        QVERIFY(a.ok() && b.ok());
+        QCOMPARE(b.steps.size(), a.steps.size());
+        for (std::size_t i = 0; i < a.steps.size(); ++i) {
+            QCOMPARE(b.steps[i].kind, a.steps[i].kind);
+            QCOMPARE(b.steps[i].unit, a.steps[i].unit);
+            QCOMPARE(b.steps[i].tool->toolId, a.steps[i].tool->toolId);
+            QVERIFY(std::abs(b.steps[i].cutDepth - a.steps[i].cutDepth) < 1e-9);
+            QVERIFY(std::abs(b.steps[i].startDepth - a.steps[i].startDepth) < 1e-9);
+        }
+        QCOMPARE(convertLengthUnit(in, LengthUnit::Millimetre), mm);
     }
 
     void technologyOverrides()

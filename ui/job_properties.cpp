@@ -92,8 +92,8 @@ void JobProperties::refresh(bool force)
     for (int i = 0; i < 3; ++i) {
         const double v = stockValue(j, i);
         const auto typed = parseNumber(stock_[i]->text());
-        if ((typed && *typed == v) || (!force && bad_[i])) continue;
-        stock_[i]->setText(formatNumber(v));
+        if ((typed && (*typed == v || stock_[i]->text() == formatShown(v))) || (!force && bad_[i])) continue;
+        stock_[i]->setText(formatShown(v));
         bad_[i] = false;
     }
 }

@@ -1,6 +1,7 @@
 // Conversion of a whole job between mm and inch.
 #include "ui/length_units.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace taiwa::ui {
@@ -8,13 +9,17 @@ namespace taiwa::ui {
 Job convertLengthUnit(const Job& job, LengthUnit to)
 {
     if (job.lengthUnit == to) return job;
-    // Rounded to what the form shows, so that mm -> inch -> mm gives back the
-    // typed values. Divided by the power of ten (not multiplied by its
-    // inverse): the result is the double nearest the decimal, 0.393701 and
-    // not 0.39370099999999997.
-    const double scale = to == LengthUnit::Inch ? 1e6 : 1e4;
-    return withLengths(toMillimetres(job), to,
-                       [to, scale](double mm) { return std::round(fromMm(mm, to) * scale) / scale; });
+    // Exact: what the machine cuts must not change with the unit the job is
+    // shown in (r1 6 mm rounded to 0.23622 in is 5.99999 mm, and a 12 mm end
+    // mill no longer fits). The forms round for display only. The last bits a
+    // round trip mm -> inch -> mm adds (6.000000000000001) are taken off, so
+    // the values typed come back.
+    const LengthUnit from = job.lengthUnit;
+    return withLengths(job, to, [from, to](double v) {
+        const double x = fromMm(toMm(v, from), to);
+        const double snapped = std::round(x * 1e9) / 1e9;
+        return std::abs(snapped - x) <= 1e-12 * std::max(1.0, std::abs(x)) ? snapped : x;
+    });
 }
 
 }  // namespace taiwa::ui

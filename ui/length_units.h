@@ -1,9 +1,9 @@
 // Switching a job between mm and inch: every length of the job (stock,
 // corners, radii, depths, L1/L2, scallop, technology allowances) is
 // converted so that the part stays the same; angles, codes and γ do not
-// change. Values are rounded to 0.0001 mm / 0.000001 in so that the form
-// shows what a machinist would type, and mm -> inch -> mm gives back the
-// values typed with up to four decimals.
+// change. Values are kept exact (the forms round what they show), so the
+// plan does not change with the unit, and mm -> inch -> mm gives back the
+// values typed.
 #pragma once
 
 #include "model/job.h"

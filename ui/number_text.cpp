@@ -27,4 +27,14 @@ QString formatNumber(double v)
     return QString::fromLatin1(buf, static_cast<int>(end - buf));
 }
 
+QString formatShown(double v)
+{
+    const QString exact = formatNumber(v);
+    const auto point = exact.indexOf('.');
+    const bool long_ = point >= 0 && !exact.contains('e') && exact.size() - point - 1 > kShownDecimals;
+    if (!long_ || std::abs(v) >= 1e9) return exact;
+    const double scale = std::pow(10.0, kShownDecimals);
+    return formatNumber(std::round(v * scale) / scale);
+}
+
 }  // namespace taiwa::ui

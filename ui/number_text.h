@@ -16,4 +16,11 @@ std::optional<double> parseNumber(const QString& text);
 // Shortest text that parses back to exactly `v` ("12.5", "-3", "0.01").
 QString formatNumber(double v);
 
+// What a form shows of a stored value: formatNumber, but at most
+// kShownDecimals decimals (6 mm converted to inch is stored exactly as
+// 0.23622047244094488 and shown as 0.23622). Display only: the job keeps the
+// exact value, so converting units never changes what the machine cuts.
+constexpr int kShownDecimals = 6;
+QString formatShown(double v);
+
 }  // namespace taiwa::ui

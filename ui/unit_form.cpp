@@ -103,9 +103,10 @@ void UnitForm::setUnit(const MachiningUnit& unit, bool force)
         const QString text = row.edit->text();
         const bool empty = text.trimmed().isEmpty();
         const std::optional<double> typed = parseNumber(text);
-        const bool same = (typed && v && *typed == *v) || (empty && !v && fields_[i].kind == FieldKind::OptionalNumber);
+        const bool same = (typed && v && (*typed == *v || text == formatShown(*v))) ||
+                          (empty && !v && fields_[i].kind == FieldKind::OptionalNumber);
         if (same || (!force && row.notANumber)) continue;
-        row.edit->setText(v ? formatNumber(*v) : QString());
+        row.edit->setText(v ? formatShown(*v) : QString());
         row.notANumber = false;
     }
     updating_ = false;
