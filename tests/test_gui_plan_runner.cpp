@@ -1,0 +1,98 @@
+// The station's plan runner on its asynchronous path, without flush(): an
+// edit made while the worker plans an older one drops the older result and
+// starts the worker again on the newest edit; a burst of edits in one
+// event-loop turn is planned once; a dialect change re-posts the last plan.
+#include "job/job_file.h"
+#include "modules/m4/m4.h"
+#include "support/support.h"
+#include "ui/plan_runner.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+namespace {
+
+Job plateWithDepth(double depth)
+{
+    Job j = *readJobFile(test::sourcePath("resources/samples/plate.taiwa").toStdString()).job;
+    j.units[0].module.as<M4Pocket>().depth = depth;
+    return j;
+}
+
+double firstDepth(const Plan& p) { return p.job.units[0].module.as<M4Pocket>().depth; }
+
+// The plans the runner published, in order.
+std::vector<std::shared_ptr<const Plan>> published(const QSignalSpy& spy)
+{
+    std::vector<std::shared_ptr<const Plan>> out;
+    for (const auto& args : spy)
+        if (auto p = args.at(0).value<std::shared_ptr<const Plan>>()) out.push_back(p);
+    return out;
+}
+
+}  // namespace
+
+class TestGuiPlanRunner : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase()
+    {
+        qRegisterMetaType<std::shared_ptr<const Plan>>();
+        qRegisterMetaType<std::vector<BlockSource>>();
+        QVERIFY(dir_.isValid());
+        test::isolateStation(dir_.path());
+    }
+
+    void anEditWhilePlanningDropsTheOlderResult()
+    {
+        PlanRunner runner;
+        QSignalSpy programs(&runner, &PlanRunner::programReady);
+        runner.update(plateWithDepth(10));
+        QCoreApplication::processEvents();  // the zero-time debounce fires: the worker starts on depth 10
+        QVERIFY(runner.isBusy());
+        runner.update(plateWithDepth(11));  // while it plans
+        runner.update(plateWithDepth(12));  // and another, in the same turn
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy(), 20000);
+        const auto plans = published(programs);
+        // Depth 10's result came back superseded and was dropped; the worker was
+        // started again on the newest edit only (11 was never planned).
+        QCOMPARE(plans.size(), std::size_t{1});
+        QCOMPARE(firstDepth(*plans.front()), 12.0);
+        QCOMPARE(runner.fullPlan(), plans.front());
+    }
+
+    void aBurstOfEditsIsPlannedOnce()
+    {
+        PlanRunner runner;
+        QSignalSpy programs(&runner, &PlanRunner::programReady);
+        QSignalSpy steps(&runner, &PlanRunner::stepsPlanned);
+        for (int i = 0; i < 5; ++i) runner.update(plateWithDepth(8 + i));
+        QCOMPARE(steps.size(), 5);  // the step list follows every edit at once
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy(), 20000);
+        const auto plans = published(programs);
+        QCOMPARE(plans.size(), std::size_t{1});
+        QCOMPARE(firstDepth(*plans.front()), 12.0);
+    }
+
+    void aDialectChangeRepostsTheSamePlan()
+    {
+        PlanRunner runner;
+        QSignalSpy programs(&runner, &PlanRunner::programReady);
+        runner.update(plateWithDepth(10));
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy(), 20000);
+        const auto first = runner.fullPlan();
+        QVERIFY(first);
+        runner.setDialect("fanuc");
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy() && programs.size() == 2, 20000);
+        QCOMPARE(runner.fullPlan(), first);  // no tool path computed again
+        QVERIFY(programs.at(1).at(1).toString().startsWith("%\nO1000"));
+    }
+};
+
+QTEST_MAIN(TestGuiPlanRunner)
+#include "test_gui_plan_runner.moc"
