@@ -118,13 +118,13 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.dialect = o.dialect;
     e.units = o.units;
     e.jobFile = fileName(o.job);
-    const ExportResult r = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
-    if (r.error) {
-        std::cerr << "taiwa: export: " << *r.error << '\n';
+    const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
+    if (!written) {
+        std::cerr << "taiwa: export: " << written.error() << '\n';
         return kInternal;
     }
-    std::cout << "taiwa: wrote " << r.files.size() << " files to " << o.out << '\n';
-    for (const auto& f : r.files) std::cout << "  " << f << '\n';
+    std::cout << "taiwa: wrote " << written->size() << " files to " << o.out << '\n';
+    for (const auto& f : *written) std::cout << "  " << f << '\n';
     return kOk;
 }
 

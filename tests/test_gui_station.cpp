@@ -463,9 +463,9 @@ private slots:
         QTemporaryDir dir;
         ExportOptions eo;
         eo.dialect = w.planRunner()->dialect().toStdString();
-        const ExportResult r = exportPlan(*plan, dir.path().toStdString(),
-                                          FileActions::exportStem(w.document()->path()).toStdString(), eo);
-        QVERIFY(!r.error);
+        const auto exported = exportPlan(*plan, dir.path().toStdString(),
+                                         FileActions::exportStem(w.document()->path()).toStdString(), eo);
+        QVERIFY(exported);
         QFile nc(dir.filePath(FileActions::exportStem(w.document()->path()) + ".nc"));
         QVERIFY(nc.open(QIODevice::ReadOnly));
         const QStringList shown = w.ncView()->text()->toPlainText().split('\n');

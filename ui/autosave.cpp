@@ -60,8 +60,8 @@ void Autosaver::saveNow()
     if (!doc_->isModified() || (written_ && *written_ == doc_->job())) return;
     const QString path = recoveryPath(doc_->path());
     QDir().mkpath(QFileInfo(path).absolutePath());
-    if (auto err = writeFileAtomically(path.toStdString(), writeJob(doc_->job()))) {
-        qWarning("taiwa: autosave failed: %s", err->c_str());
+    if (const auto written = writeFileAtomically(path.toStdString(), writeJob(doc_->job())); !written) {
+        qWarning("taiwa: autosave failed: %s", written.error().c_str());
         return;
     }
     written_ = doc_->job();

@@ -124,9 +124,9 @@ void FileActions::exportJob()
     ExportOptions eo;
     eo.dialect = dialect.toStdString();
     eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
-    const ExportResult r = exportPlan(*plan, dir.toStdString(), exportStem(doc_->path()).toStdString(), eo);
-    if (r.error) QMessageBox::warning(window_, tr("Export failed"), QString::fromStdString(*r.error));
-    else emit message(tr("Exported %1 files into %2").arg(r.files.size()).arg(dir));
+    const auto written = exportPlan(*plan, dir.toStdString(), exportStem(doc_->path()).toStdString(), eo);
+    if (!written) QMessageBox::warning(window_, tr("Export failed"), QString::fromStdString(written.error()));
+    else emit message(tr("Exported %1 files into %2").arg(written->size()).arg(dir));
 }
 
 bool FileActions::offerRecovery(const QString& jobPath)

@@ -80,7 +80,8 @@ void JobDocument::reset(const Job& job, const QString& path, bool modified)
 
 QString JobDocument::saveTo(const QString& path)
 {
-    if (auto err = writeFileAtomically(path.toStdString(), writeJob(job_))) return QString::fromStdString(*err);
+    if (const auto written = writeFileAtomically(path.toStdString(), writeJob(job_)); !written)
+        return QString::fromStdString(written.error());
     path_ = path;
     dirtyWithoutUndo_ = false;
     undo_->setClean();

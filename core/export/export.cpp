@@ -94,64 +94,39 @@ std::string stepsJson(const Plan& plan)
     return doc.dump(2) + "\n";
 }
 
-ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
-                        const ExportOptions& options)
+Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
+                                            const ExportOptions& options)
 {
-    ExportResult result;
-    if (!plan.ok()) {
-        result.error = "the job did not pass input processing; nothing was written";
-        return result;
-    }
-    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset)) {
-        result.error = *why + "; nothing was written";
-        return result;
-    }
+    if (!plan.ok()) return Failure{"the job did not pass input processing; nothing was written"};
+    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset)) return Failure{*why + "; nothing was written"};
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
-    if (ec) {
-        result.error = "cannot create folder " + outDir + ": " + ec.message();
-        return result;
-    }
+    if (ec) return Failure{"cannot create folder " + outDir + ": " + ec.message()};
     const LengthUnit units = options.units.value_or(plan.job.lengthUnit);
-    const auto path = [&](const char* suffix) { return (std::filesystem::path(outDir) / (stem + suffix)).string(); };
 
     const PostedProgram program =
         postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
-
     SheetOptions sheet;
     sheet.units = units;
     sheet.dialect = options.dialect;
     sheet.jobFile = options.jobFile;
     sheet.programNumber = options.programNumber;
+    auto pdf = sheetPdf(plan, sheet);
+    if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
 
-    const std::pair<std::string, std::string> texts[] = {
-        {path(".nc"), program.nc},
-        {path(".tape.txt"), program.tapeImage},
-        {path(".sheet.html"), sheetHtml(plan, sheet)},
-        {path(".steps.json"), stepsJson(plan)},
+    auto set = FileSet::open(outDir, stem);
+    if (!set) return Failure{set.error() + "; nothing was changed in " + outDir};
+    const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
+    const std::pair<const char*, std::string_view> files[] = {
+        {".nc", program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
+        {".steps.json", steps}, {".sheet.pdf", *pdf},
     };
-    for (const auto& [file, text] : texts) {
-        if (auto err = writeFileAtomically(file, text)) {
-            result.error = *err;
-            return result;
-        }
-        result.files.push_back(file);
-    }
-    // The PDF writer cannot write atomically itself: write beside, then rename.
-    const std::string pdf = path(".sheet.pdf");
-    const std::string partial = pdf + ".partial";
-    if (auto err = writeSheetPdf(plan, sheet, partial)) {
-        std::filesystem::remove(partial, ec);
-        result.error = *err;
-        return result;
-    }
-    std::filesystem::rename(partial, pdf, ec);
-    if (ec) {
-        result.error = "cannot write " + pdf + ": " + ec.message();
-        return result;
-    }
-    result.files.push_back(pdf);
-    return result;
+    for (const auto& [suffix, bytes] : files)
+        if (auto written = set->add(stem + suffix, bytes); !written)
+            return Failure{written.error() + "; nothing was changed in " + outDir};
+    auto written = set->commit();
+    if (!written) return Failure{written.error() + "; nothing was changed in " + outDir};
+    return written;
 }
 
 }  // namespace taiwa

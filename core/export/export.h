@@ -5,6 +5,7 @@
 #pragma once
 
 #include "model/plan.h"
+#include "model/result.h"
 
 #include <optional>
 #include <string>
@@ -19,16 +20,14 @@ struct ExportOptions {
     int programNumber = 1000;
 };
 
-struct ExportResult {
-    std::vector<std::string> files;  // paths written, in order
-    std::optional<std::string> error;
-};
-
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in
-// outDir (created if missing). Refuses a plan with input errors. The PDF needs
-// a QGuiApplication.
-ExportResult exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
-                        const ExportOptions& options);
+// outDir (created if missing), replaced as one set (io::FileSet): all are
+// written completely before any is renamed, so a failure leaves the old set
+// whole and the message says nothing was changed; exports of one stem into
+// one folder run one after the other. Refuses a plan with input errors. The
+// PDF needs a QGuiApplication. The paths written, in order.
+Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
+                                            const ExportOptions& options);
 
 // The machine-readable step list (STEM.steps.json).
 std::string stepsJson(const Plan& plan);

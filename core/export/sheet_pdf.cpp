@@ -3,8 +3,11 @@
 // its column. Painting directly keeps a 1,000-unit job's sheet fast.
 #include "export/sheet_pdf.h"
 
+#include "io/job_io.h"
+
 #include "sheet/sheet_content.h"
 
+#include <QBuffer>
 #include <QFile>
 #include <QFontMetricsF>
 #include <QGuiApplication>
@@ -144,18 +147,22 @@ private:
 
 }  // namespace
 
-std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path)
+Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
 {
-    if (!QGuiApplication::instance()) return std::string("the PDF writer needs a QGuiApplication");
+    if (!QGuiApplication::instance()) return Failure{"the PDF writer needs a QGuiApplication"};
     const sheet::Content c = sheet::content(plan, options);
-    QPdfWriter pdf(q(path));
+    // Painted into memory: the bytes are written like every other file, to
+    // the last byte and synced (QPdfWriter on a file reports no write error).
+    QBuffer bytes;
+    bytes.open(QIODevice::WriteOnly);
+    QPdfWriter pdf(&bytes);
     pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Landscape, QMarginsF(12, 12, 12, 12),
                                   QPageLayout::Millimeter));
     pdf.setResolution(300);
     pdf.setTitle(q(c.title + " – " + plan.job.name));
     pdf.setCreator(QStringLiteral("Taiwa " TAIWA_VERSION));
     QPainter painter;
-    if (!painter.begin(&pdf)) return "cannot write " + path;
+    if (!painter.begin(&pdf)) return Failure{"cannot paint the instruction sheet's PDF"};
     painter.setPen(QPen(Qt::black, 1));
     PagePainter page(pdf, painter);
     page.title(c.title);
@@ -171,9 +178,15 @@ std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& o
     }
     page.paragraph("Total: " + c.total + ".");
     page.finish();
-    painter.end();
-    if (QFile(q(path)).size() == 0) return "cannot write " + path;
-    return std::nullopt;
+    if (!painter.end() || bytes.data().isEmpty()) return Failure{"cannot paint the instruction sheet's PDF"};
+    return std::string(bytes.data().constData(), static_cast<std::size_t>(bytes.data().size()));
+}
+
+Status writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path)
+{
+    auto pdf = sheetPdf(plan, options);
+    if (!pdf) return Failure{pdf.error()};
+    return writeFileAtomically(path, *pdf);
 }
 
 }  // namespace taiwa

@@ -2,6 +2,7 @@
 // part of the sheet that needs Qt; sheet/ builds its content without it).
 #pragma once
 
+#include "model/result.h"
 #include "sheet/sheet.h"
 
 #include <optional>
@@ -9,9 +10,10 @@
 
 namespace taiwa {
 
-// Writes the sheet to `path`. Needs a QGuiApplication (the command line runs
-// one on the offscreen platform). Returns an error message or nothing on
-// success.
-std::optional<std::string> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
+// The sheet's PDF, as bytes. Needs a QGuiApplication (the command line runs
+// one on the offscreen platform).
+Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options);
+// The same, written atomically to `path`.
+Status writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
 
 }  // namespace taiwa

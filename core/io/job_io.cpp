@@ -11,9 +11,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <system_error>
 
+#include <csignal>
+#include <utility>
+
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -54,7 +59,8 @@ int createTemporary(const std::filesystem::path& target, std::string& tempPath)
         const std::string name = "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-"
                                  + std::to_string(++counter);
         tempPath = (target.parent_path() / name).string();
-        const int fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        // O_EXCL: a name that exists, a planted link included, is never opened.
+        const int fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST) return fd;
     }
     errno = EEXIST;
@@ -89,31 +95,145 @@ io::TextReadResult io::readTextFile(const std::string& path, std::size_t maxByte
     return {std::move(text), {}};
 }
 
-std::optional<std::string> writeFileAtomically(const std::string& path, std::string_view text)
+namespace {
+
+// Writes `text` to a new exclusive temporary beside `target`, synced, with
+// the permissions of the file it will replace; the temporary's path.
+Result<std::string> writeTemporary(const std::filesystem::path& target, std::string_view text)
 {
-    const std::filesystem::path target = std::filesystem::absolute(path);
     std::string temp;
     const int fd = createTemporary(target, temp);
-    if (fd < 0) return "cannot create a file in " + target.parent_path().string() + ": " + systemError(errno);
-
-    // Keep the permissions of the file being replaced.
+    if (fd < 0) return Failure{"cannot create a file in " + target.parent_path().string() + ": " + systemError(errno)};
     int error = 0;
     struct stat old {};
     const bool replacing = ::stat(target.c_str(), &old) == 0;
     if ((replacing && ::fchmod(fd, old.st_mode & 07777) != 0) || !writeAll(fd, text) || ::fsync(fd) != 0) error = errno;
     if (::close(fd) != 0 && error == 0) error = errno;
-    if (error == 0 && ::rename(temp.c_str(), target.c_str()) != 0) error = errno;
-    if (error == 0) {
-        // Make the rename itself durable.
-        const int dir = ::open(target.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-        if (dir >= 0) {
-            ::fsync(dir);
-            ::close(dir);
-        }
-        return std::nullopt;
+    if (error != 0) {
+        ::unlink(temp.c_str());
+        return Failure{"cannot write " + target.string() + ": " + systemError(error)};
     }
-    ::unlink(temp.c_str());
-    return "cannot write " + target.string() + ": " + systemError(error);
+    return temp;
+}
+
+// Makes the renames in a folder durable.
+void syncFolder(const std::filesystem::path& folder)
+{
+    const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir < 0) return;
+    ::fsync(dir);
+    ::close(dir);
+}
+
+// Temporaries of `stem` in `folder` whose writer has died (".STEM.x.tmp-PID-N"),
+// and the fixed-name partial PDF of older versions.
+void removeStaleTemporaries(const std::filesystem::path& folder, const std::string& stem)
+{
+    std::error_code ec;
+    std::filesystem::remove(folder / (stem + ".sheet.pdf.partial"), ec);
+    const std::string prefix = "." + stem + ".";
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        const auto tmp = name.rfind(".tmp-");
+        if (!name.starts_with(prefix) || tmp == std::string::npos) continue;
+        const std::string owner = name.substr(tmp + 5, name.find('-', tmp + 5) - (tmp + 5));
+        if (owner.empty() || owner.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(owner));
+        if (pid == ::getpid() || (::kill(pid, 0) != 0 && errno == ESRCH)) std::filesystem::remove(entry.path(), ec);
+    }
+}
+
+}  // namespace
+
+Status writeFileAtomically(const std::string& path, std::string_view text)
+{
+    const std::filesystem::path target = std::filesystem::absolute(path);
+    auto temp = writeTemporary(target, text);
+    if (!temp) return Failure{temp.error()};
+    if (::rename(temp->c_str(), target.c_str()) != 0) {
+        const int error = errno;
+        ::unlink(temp->c_str());
+        return Failure{"cannot write " + target.string() + ": " + systemError(error)};
+    }
+    syncFolder(target.parent_path());
+    return {};
+}
+
+FileSet::FileSet(std::string folder, std::string stem, int lock)
+    : folder_(std::move(folder)), stem_(std::move(stem)), lock_(lock)
+{
+}
+
+FileSet::FileSet(FileSet&& o) noexcept
+    : folder_(std::move(o.folder_)), stem_(std::move(o.stem_)), lock_(std::exchange(o.lock_, -1)),
+      staged_(std::move(o.staged_))
+{
+    o.staged_.clear();
+}
+
+FileSet::~FileSet()
+{
+    for (const auto& s : staged_) ::unlink(s.temp.c_str());
+    if (lock_ >= 0) ::close(lock_);  // releases the flock
+}
+
+Result<FileSet> FileSet::open(const std::string& folder, const std::string& stem)
+{
+    const std::filesystem::path dir = std::filesystem::absolute(folder);
+    const std::string lockPath = (dir / ("." + stem + ".lock")).string();
+    const int fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd < 0) return Failure{"cannot create the lock file " + lockPath + ": " + systemError(errno)};
+    while (::flock(fd, LOCK_EX) != 0) {
+        if (errno == EINTR) continue;
+        const int error = errno;
+        ::close(fd);
+        return Failure{"cannot lock " + lockPath + ": " + systemError(error)};
+    }
+    removeStaleTemporaries(dir, stem);
+    return FileSet(dir.string(), stem, fd);
+}
+
+Status FileSet::add(const std::string& name, std::string_view bytes)
+{
+    const std::filesystem::path target = std::filesystem::path(folder_) / name;
+    auto temp = writeTemporary(target, bytes);
+    if (!temp) return Failure{temp.error()};
+    staged_.push_back({target.string(), std::move(*temp)});
+    return {};
+}
+
+Result<std::vector<std::string>> FileSet::commit()
+{
+    // The old files are kept under a second name until every new one is in place.
+    std::vector<std::string> backups(staged_.size());
+    for (std::size_t i = 0; i < staged_.size(); ++i) {
+        const std::string backup = staged_[i].temp + ".old";
+        if (::link(staged_[i].target.c_str(), backup.c_str()) == 0) backups[i] = backup;
+    }
+    const auto dropBackups = [&] {
+        for (const auto& b : backups)
+            if (!b.empty()) ::unlink(b.c_str());
+    };
+    std::vector<std::string> written;
+    for (std::size_t i = 0; i < staged_.size(); ++i) {
+        if (::rename(staged_[i].temp.c_str(), staged_[i].target.c_str()) == 0) {
+            written.push_back(staged_[i].target);
+            continue;
+        }
+        const int error = errno;
+        // Put back what was there: the old set stays whole.
+        for (std::size_t k = 0; k < i; ++k) {
+            if (!backups[k].empty()) ::rename(backups[k].c_str(), staged_[k].target.c_str());
+            else ::unlink(staged_[k].target.c_str());
+            backups[k].clear();
+        }
+        dropBackups();
+        return Failure{"cannot write " + staged_[i].target + ": " + systemError(error)};
+    }
+    staged_.clear();
+    dropBackups();
+    syncFolder(folder_);
+    return written;
 }
 
 }  // namespace taiwa

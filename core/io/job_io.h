@@ -1,14 +1,17 @@
 // Files on disk for the job reader and every export: reading a text file
-// with its size checked before it is read into memory, and writing any text
-// atomically (temporary file in the same folder, fsync, rename).
+// with its size checked before it is read into memory, writing any text
+// atomically (temporary file in the same folder, fsync, rename), and
+// replacing a set of files together.
 #pragma once
 
 #include "model/diagnostic.h"
+#include "model/result.h"
 
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace taiwa {
 
@@ -24,8 +27,39 @@ TextReadResult readTextFile(const std::string& path, std::size_t maxBytes);
 
 }  // namespace io
 
-// Writes text to path atomically: a temporary file in the same folder, then
-// rename. Returns an error message, or nothing on success.
-std::optional<std::string> writeFileAtomically(const std::string& path, std::string_view text);
+// Writes text to path atomically: a temporary file in the same folder,
+// synced, then renamed over the old one.
+Status writeFileAtomically(const std::string& path, std::string_view text);
+
+// A set of files in one folder replaced together (an export: tape, sheet,
+// steps). Each file is written at once to a temporary beside its target,
+// created exclusively under a name of its own (never following a link
+// planted there), written to the last byte and synced. commit() renames them
+// all over the old ones, putting the old ones back if a rename fails; a set
+// not committed removes its temporaries. Sets of one stem in one folder are
+// serialised by a lock file (.STEM.lock), and temporaries of that stem left by
+// a process that died are removed when the next set is opened.
+class FileSet {
+public:
+    // Takes the folder's lock for `stem` (waits for another set of it).
+    static Result<FileSet> open(const std::string& folder, const std::string& stem);
+    FileSet(FileSet&& other) noexcept;
+    FileSet& operator=(FileSet&&) = delete;
+    ~FileSet();
+
+    // Writes `bytes` to the temporary of folder/name.
+    Status add(const std::string& name, std::string_view bytes);
+    // Renames every temporary over its target; the paths written, in order.
+    Result<std::vector<std::string>> commit();
+
+private:
+    FileSet(std::string folder, std::string stem, int lock);
+    struct Staged {
+        std::string target, temp;
+    };
+    std::string folder_, stem_;
+    int lock_ = -1;
+    std::vector<Staged> staged_;
+};
 
 }  // namespace taiwa
