@@ -23,8 +23,9 @@ std::optional<std::string> parseSize(std::string_view s, Options& o)
 {
     const auto x = s.find('x');
     const auto w = toInt(s.substr(0, x)), h = x == std::string_view::npos ? std::nullopt : toInt(s.substr(x + 1));
-    if (!w || !h || *w < 16 || *h < 16 || *w > 8192 || *h > 8192)
-        return "--size wants WIDTHxHEIGHT in pixels, 16 to 8192, e.g. 800x600; got '" + std::string(s) + "'";
+    // The upper bound is the renderer's (viz::kMaxRenderSide, checked by `render`).
+    if (!w || !h || *w < 16 || *h < 16)
+        return "--size wants WIDTHxHEIGHT in pixels, at least 16, e.g. 800x600; got '" + std::string(s) + "'";
     o.width = *w;
     o.height = *h;
     return std::nullopt;

@@ -282,11 +282,9 @@ private slots:
     void toolLibraryTable()
     {
         ToolLibraryDialog d;
-        std::string err;
-        auto lib = ToolLibrary::open(defaultToolLibraryPath(), err);
-        QVERIFY2(lib, err.c_str());
-        const auto tools = lib->tools(err);
-        QVERIFY(tools && !tools->empty());
+        const auto tools = readToolLibrary(defaultToolLibraryPath());
+        QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
+        QVERIFY(!tools->empty());
         QCOMPARE(d.table()->rowCount(), static_cast<int>(tools->size()));
         QCOMPARE(d.table()->item(0, 0)->text(), QString::number(tools->front().id));
         QCOMPARE(d.table()->item(0, 1)->text(), QString::fromStdString(tools->front().name));

@@ -359,12 +359,13 @@ private slots:
         o.workOffset = asked.toStdString();
         const auto why = workOffsetProblem(o.dialect, o.workOffset);
         QVERIFY(why.has_value());
-        QVERIFY2(QString::fromStdString(*why).contains(message), why->c_str());
+        QCOMPARE(why->field, std::string("workOffset"));
+        QVERIFY2(QString::fromStdString(why->message).contains(message), why->message.c_str());
         try {
             postProcess(steps(), library(), o);
             QFAIL("posted a work offset the controller lacks");
         } catch (const std::invalid_argument& e) {
-            QCOMPARE(std::string(e.what()), *why);
+            QCOMPARE(std::string(e.what()), why->message);
         }
     }
 

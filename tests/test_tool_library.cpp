@@ -47,25 +47,25 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("sub/tools.sqlite").toStdString();
-        std::string error;
         {
-            auto lib = ToolLibrary::open(path, error);
-            QVERIFY2(lib, error.c_str());
-            const auto tools = lib->tools(error);
+            auto lib = ToolLibrary::open(path);
+            QVERIFY2(lib, lib.ok() ? "" : lib.error().c_str());
+            const auto tools = lib->tools();
             QVERIFY(tools);
             QCOMPARE(*tools, defaultToolLibrary());
             Tool t = defaultToolLibrary()[5];
             t.id = 0;
             t.name = "Drill 5 mm, regrind";
-            const auto id = lib->save(t, error);
+            const auto id = lib->save(t);
             QVERIFY(id && *id > 60);
-            QVERIFY(lib->remove(21, error));
-            QVERIFY(lib->addUsage(27, 12.5, error));
-            QVERIFY(!lib->remove(99, error));
-            QCOMPARE(error, path + " has no tool T99");
+            QVERIFY(lib->remove(21));
+            QVERIFY(lib->addUsage(27, 12.5));
+            const Result<void> missing = lib->remove(99);
+            QVERIFY(!missing);
+            QCOMPARE(missing.error(), path + " has no tool T99");
         }
-        auto again = ToolLibrary::open(path, error);
-        const auto tools = again->tools(error);
+        auto again = ToolLibrary::open(path);
+        const auto tools = again->tools();
         QVERIFY(tools);
         QCOMPARE(tools->size(), defaultToolLibrary().size());  // one added, one removed
         QVERIFY(std::none_of(tools->begin(), tools->end(), [](const Tool& t) { return t.id == 21; }));
@@ -98,8 +98,9 @@ private slots:
             test::writeFile(path, content.toStdString());
         }
         const std::string before = test::readFile(path);
-        std::string error;
-        QVERIFY(!ToolLibrary::open(path.toStdString(), error));
+        const auto lib = ToolLibrary::open(path.toStdString());
+        QVERIFY(!lib);
+        const std::string error = lib.error();
         QVERIFY2(QString::fromStdString(error).contains(message) && QString::fromStdString(error).contains(path), error.c_str());
         QCOMPARE(test::readFile(path), before);
     }
@@ -122,12 +123,11 @@ private slots:
             INSERT INTO cutting_data VALUES (7, 'pom', 250, 0.09, 0.4);
             PRAGMA user_version = 1;)sql", nullptr, nullptr, nullptr), SQLITE_OK);
         sqlite3_close(db);
-        std::string error;
         for (int open = 0; open < 2; ++open) {  // the second open finds version 2 and changes nothing
-            auto lib = ToolLibrary::open(path, error);
-            QVERIFY2(lib, error.c_str());
-            const auto tools = lib->tools(error);
-            QVERIFY2(tools, error.c_str());
+            auto lib = ToolLibrary::open(path);
+            QVERIFY2(lib, lib.ok() ? "" : lib.error().c_str());
+            const auto tools = lib->tools();
+            QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
             QCOMPARE(tools->size(), std::size_t(1));
             const Tool& t = tools->front();
             QCOMPARE(t.id, 7);
@@ -148,15 +148,14 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("tools.sqlite").toStdString();
-        std::string error;
-        auto lib = ToolLibrary::open(path, error);
+        auto lib = ToolLibrary::open(path);
         QVERIFY(lib);
         Tool t = defaultToolLibrary()[20];
         t.id = 0;
         t.centreCutting = false;
-        const auto id = lib->save(t, error);
+        const auto id = lib->save(t);
         QVERIFY(id);
-        const auto tools = lib->tools(error);
+        const auto tools = lib->tools();
         QVERIFY(!tools->back().centreCutting && tools->back().id == *id);
         const auto face = std::find_if(tools->begin(), tools->end(), [](const Tool& x) { return x.type == ToolType::FaceMill; });
         QVERIFY(!face->centreCutting);
@@ -166,31 +165,32 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("tools.sqlite").toStdString();
-        std::string error;
-        auto lib = ToolLibrary::open(path, error);
+        auto lib = ToolLibrary::open(path);
         QVERIFY(lib);
         sqlite3* other = nullptr;
         sqlite3_open(path.c_str(), &other);
         QCOMPARE(sqlite3_exec(other, "BEGIN EXCLUSIVE", nullptr, nullptr, nullptr), SQLITE_OK);
-        QVERIFY(!lib->addUsage(27, 1, error));
-        QVERIFY2(QString::fromStdString(error).contains("locked by another program"), error.c_str());
+        const Result<void> locked = lib->addUsage(27, 1);
+        QVERIFY(!locked);
+        QVERIFY2(QString::fromStdString(locked.error()).contains("locked by another program"), locked.error().c_str());
         sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
         sqlite3_close(other);
-        QVERIFY(lib->addUsage(27, 1, error));
+        QVERIFY(lib->addUsage(27, 1));
     }
 
     void lockedOnOpenIsReportedAfterTheBusyTimeout()
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("tools.sqlite").toStdString();
-        std::string error;
-        QVERIFY(ToolLibrary::open(path, error));
+        QVERIFY(ToolLibrary::open(path));
         sqlite3* other = nullptr;
         sqlite3_open(path.c_str(), &other);
         QCOMPARE(sqlite3_exec(other, "BEGIN EXCLUSIVE; UPDATE tools SET used_minutes = 1", nullptr, nullptr, nullptr), SQLITE_OK);
         QElapsedTimer clock;
         clock.start();
-        QVERIFY(!ToolLibrary::open(path, error));
+        const auto busy = ToolLibrary::open(path);
+        QVERIFY(!busy);
+        const std::string error = busy.error();
         QVERIFY(clock.elapsed() >= 1400 && clock.elapsed() < 10000);
         QVERIFY2(QString::fromStdString(error).contains(QString::fromStdString(path + " is locked by another program")), error.c_str());
         sqlite3_exec(other, "ROLLBACK", nullptr, nullptr, nullptr);
@@ -203,8 +203,9 @@ private slots:
         const QString file = dir.filePath("plain-file");
         test::writeFile(file, "not a folder");
         const std::string path = (file + "/tools.sqlite").toStdString();  // a folder that cannot exist
-        std::string error;
-        QVERIFY(!ToolLibrary::open(path, error));
+        const auto lib = ToolLibrary::open(path);
+        QVERIFY(!lib);
+        const std::string error = lib.error();
         QVERIFY2(QString::fromStdString(error).contains(QString::fromStdString("folder of the tool library " + path)),
                  error.c_str());
         QCOMPARE(test::readFile(file), std::string("not a folder"));

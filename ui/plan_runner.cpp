@@ -66,14 +66,11 @@ PlanRunner::~PlanRunner() { pool_.waitForDone(); }
 
 void PlanRunner::reloadLibrary()
 {
-    std::string err;
-    std::vector<Tool> tools;
-    if (auto lib = ToolLibrary::open(defaultToolLibraryPath(), err)) {
-        if (auto t = lib->tools(err)) tools = std::move(*t);
-    }
+    auto read = readToolLibrary(defaultToolLibraryPath());
+    std::vector<Tool> tools = read ? std::move(*read) : std::vector<Tool>{};
     libraryError_.clear();
     if (tools.empty()) {
-        libraryError_ = QString::fromStdString(err.empty() ? "the library has no tools" : err);
+        libraryError_ = QString::fromStdString(read ? "the library has no tools" : read.error());
         tools = defaultToolLibrary();
     }
     library_ = std::move(tools);

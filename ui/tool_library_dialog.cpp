@@ -52,16 +52,13 @@ ToolLibraryDialog::ToolLibraryDialog(QWidget* parent)
 
 void ToolLibraryDialog::load()
 {
-    std::string err;
     const std::string path = defaultToolLibraryPath();
-    auto lib = ToolLibrary::open(path, err);
-    std::optional<std::vector<Tool>> tools;
-    if (lib) tools = lib->tools(err);
+    const auto tools = readToolLibrary(path);
     tools_ = tools ? *tools : std::vector<Tool>{};
     status_->setText(tools ? tr("%1 — %n tool(s)", "", static_cast<int>(tools_.size())).arg(QString::fromStdString(path))
-                           : tr("Cannot read the tool library: %1").arg(QString::fromStdString(err)));
+                           : tr("Cannot read the tool library: %1").arg(QString::fromStdString(tools.error())));
     status_->setStyleSheet(tools ? QString() : QStringLiteral("color: #a00000;"));
-    reset_->setEnabled(tools.has_value());
+    reset_->setEnabled(tools.ok());
     table_->setRowCount(static_cast<int>(tools_.size()));
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         const Tool& t = tools_[i];
@@ -89,10 +86,10 @@ void ToolLibraryDialog::resetWear()
     }
     Tool t = tools_[static_cast<std::size_t>(rows.first().row())];
     t.usedMinutes = 0.0;
-    std::string err;
-    auto lib = ToolLibrary::open(defaultToolLibraryPath(), err);
-    if (!lib || !lib->save(t, err)) {
-        status_->setText(tr("Cannot save the tool: %1").arg(QString::fromStdString(err)));
+    auto lib = ToolLibrary::open(defaultToolLibraryPath());
+    const Result<int> saved = lib ? lib->save(t) : Result<int>(Failure{lib.error()});
+    if (!saved) {
+        status_->setText(tr("Cannot save the tool: %1").arg(QString::fromStdString(saved.error())));
         status_->setStyleSheet(QStringLiteral("color: #a00000;"));
         return;
     }

@@ -6,10 +6,13 @@
 // so a display that goes away between the check and the render cannot abort.
 #include "viz/render.h"
 
+#include "io/job_io.h"
+
 #include "viz/scene.h"
 
 #include <X11/Xlib.h>
 #include <vtkPNGWriter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -87,14 +90,19 @@ const std::optional<std::string>& OffscreenWindow::problem() const { return impl
 
 vtkRenderWindow* OffscreenWindow::window() const { return impl_->window; }
 
-std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& o, const std::string& pngPath)
+Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::string& pngPath)
 {
-    if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
-        return "image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + " is outside 16..8192 pixels";
+    if (o.width < 16 || o.height < 16 || o.width > kMaxRenderSide || o.height > kMaxRenderSide)
+        return Failure{"image size " + std::to_string(o.width) + "x" + std::to_string(o.height) + " is outside 16.." +
+                       std::to_string(kMaxRenderSide) + " pixels"};
     if (o.step < -1 || o.step >= static_cast<int>(plan.steps.size()))
-        return "step " + std::to_string(o.step + 1) + " is out of range: the plan has " + std::to_string(plan.steps.size()) + " steps";
+        return Failure{"step " + std::to_string(o.step + 1) + " is out of range: the plan has " +
+                       std::to_string(plan.steps.size()) + " steps"};
+    // The folder first: VTK would report a missing one as "Ran out of disk space".
+    const auto folder = std::filesystem::absolute(pngPath).parent_path();
+    if (!std::filesystem::is_directory(folder)) return Failure{"cannot write " + pngPath + ": no folder " + folder.string()};
     const OffscreenWindow offscreen(o.width, o.height);
-    if (offscreen.problem()) return offscreen.problem();
+    if (offscreen.problem()) return Failure{*offscreen.problem()};
     vtkRenderWindow* window = offscreen.window();
 
     Scene scene;
@@ -111,11 +119,13 @@ std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& o,
     grab->ReadFrontBufferOff();
     grab->Update();
     auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(pngPath.c_str());
+    writer->WriteToMemoryOn();  // written like every other file: whole, synced, renamed
     writer->SetInputConnection(grab->GetOutputPort());
     writer->Write();
-    if (writer->GetErrorCode() != 0 || !std::filesystem::exists(pngPath)) return "cannot write " + pngPath;
-    return std::nullopt;
+    vtkUnsignedCharArray* png = writer->GetResult();
+    if (writer->GetErrorCode() != 0 || !png || png->GetNumberOfValues() == 0) return Failure{"cannot encode " + pngPath};
+    return writeFileAtomically(pngPath, std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
+                                                         static_cast<std::size_t>(png->GetNumberOfValues())));
 }
 
 }  // namespace taiwa::viz

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/plan.h"
+#include "model/result.h"
 
 #include <memory>
 #include <optional>
@@ -23,7 +24,10 @@ struct RenderOptions {
 };
 
 // Renders and writes the PNG; the error message, or nothing on success.
-std::optional<std::string> renderToPng(const Plan& plan, const RenderOptions& options, const std::string& pngPath);
+// The largest side of a picture `taiwa render` draws.
+constexpr int kMaxRenderSide = 4096;
+
+Result<void> renderToPng(const Plan& plan, const RenderOptions& options, const std::string& pngPath);
 
 // An offscreen render window on a connection to the X display of its own,
 // closed after the window: VTK opens no connection itself, so none is left

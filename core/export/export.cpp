@@ -98,7 +98,8 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
                                             const ExportOptions& options)
 {
     if (!plan.ok()) return Failure{"the job did not pass input processing; nothing was written"};
-    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset)) return Failure{*why + "; nothing was written"};
+    if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset))
+        return Failure{why->message + "; nothing was written"};
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) return Failure{"cannot create folder " + outDir + ": " + ec.message()};

@@ -182,7 +182,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     return std::string(bytes.data().constData(), static_cast<std::size_t>(bytes.data().size()));
 }
 
-Status writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path)
+Result<void> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path)
 {
     auto pdf = sheetPdf(plan, options);
     if (!pdf) return Failure{pdf.error()};

@@ -14,6 +14,6 @@ namespace taiwa {
 // one on the offscreen platform).
 Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options);
 // The same, written atomically to `path`.
-Status writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
+Result<void> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
 
 }  // namespace taiwa

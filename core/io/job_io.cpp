@@ -145,7 +145,7 @@ void removeStaleTemporaries(const std::filesystem::path& folder, const std::stri
 
 }  // namespace
 
-Status writeFileAtomically(const std::string& path, std::string_view text)
+Result<void> writeFileAtomically(const std::string& path, std::string_view text)
 {
     const std::filesystem::path target = std::filesystem::absolute(path);
     auto temp = writeTemporary(target, text);
@@ -193,7 +193,7 @@ Result<FileSet> FileSet::open(const std::string& folder, const std::string& stem
     return FileSet(dir.string(), stem, fd);
 }
 
-Status FileSet::add(const std::string& name, std::string_view bytes)
+Result<void> FileSet::add(const std::string& name, std::string_view bytes)
 {
     const std::filesystem::path target = std::filesystem::path(folder_) / name;
     auto temp = writeTemporary(target, bytes);

@@ -29,7 +29,7 @@ TextReadResult readTextFile(const std::string& path, std::size_t maxBytes);
 
 // Writes text to path atomically: a temporary file in the same folder,
 // synced, then renamed over the old one.
-Status writeFileAtomically(const std::string& path, std::string_view text);
+Result<void> writeFileAtomically(const std::string& path, std::string_view text);
 
 // A set of files in one folder replaced together (an export: tape, sheet,
 // steps). Each file is written at once to a temporary beside its target,
@@ -48,7 +48,7 @@ public:
     ~FileSet();
 
     // Writes `bytes` to the temporary of folder/name.
-    Status add(const std::string& name, std::string_view bytes);
+    Result<void> add(const std::string& name, std::string_view bytes);
     // Renames every temporary over its target; the paths written, in order.
     Result<std::vector<std::string>> commit();
 

@@ -58,6 +58,6 @@ private:
     std::optional<Failure> f_;
 };
 
-using Status = Result<void>;
+// (No alias such as "Status": X11's headers #define Status.)
 
 }  // namespace taiwa

@@ -74,14 +74,14 @@ std::vector<std::string> dialectNames()
 
 bool isDialect(const std::string& name) { return post::findDialect(name) != nullptr; }
 
-std::optional<std::string> workOffsetProblem(const std::string& dialect, const std::string& workOffset)
+std::optional<Diagnostic> workOffsetProblem(const std::string& dialect, const std::string& workOffset)
 {
     const post::Dialect* d = post::findDialect(dialect);
     if (!d) return std::nullopt;
     try {
         post::workOffsetWords(*d, workOffset);
     } catch (const std::invalid_argument& e) {
-        return std::string(e.what());
+        return Diagnostic{Severity::Error, std::nullopt, "", "workOffset", e.what()};
     }
     return std::nullopt;
 }

@@ -3,6 +3,7 @@
 // (docs/command-line.md "Dialects"); the writer owns all number formatting.
 #pragma once
 
+#include "model/diagnostic.h"
 #include "model/job.h"
 #include "model/step.h"
 #include "model/tool.h"
@@ -41,9 +42,9 @@ std::vector<std::string> dialectNames();
 bool isDialect(const std::string& name);
 
 // Why the dialect's controller cannot select `workOffset` (a job's
-// "workOffset"), or nothing when it can (or the dialect is unknown: that is
-// postProcess's to refuse).
-std::optional<std::string> workOffsetProblem(const std::string& dialect, const std::string& workOffset);
+// "workOffset"), as a diagnostic of that job field; nothing when it can (or
+// the dialect is unknown: that is postProcess's to refuse).
+std::optional<Diagnostic> workOffsetProblem(const std::string& dialect, const std::string& workOffset);
 
 // Steps in machining order, each with tool and path. Throws
 // std::invalid_argument for an unknown dialect, a work offset the dialect's

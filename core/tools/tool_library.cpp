@@ -120,72 +120,67 @@ struct ToolLibrary::Db {
 
 ToolLibrary::ToolLibrary(std::string path) : db_(std::make_unique<Db>()), path_(std::move(path)) {}
 ToolLibrary::~ToolLibrary() = default;
+ToolLibrary::ToolLibrary(ToolLibrary&&) noexcept = default;
 
-std::unique_ptr<ToolLibrary> ToolLibrary::open(const std::string& path, std::string& error)
+Result<ToolLibrary> ToolLibrary::open(const std::string& path)
 {
-    std::unique_ptr<ToolLibrary> lib(new ToolLibrary(path));
+    ToolLibrary lib(path);
     std::error_code ec;
     const bool fresh = !std::filesystem::exists(path, ec);
     if (fresh && std::filesystem::path(path).has_parent_path()) {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
         if (ec) {
-            error = "cannot create the folder of the tool library " + path + ": " + ec.message();
-            return nullptr;
+            return Failure{"cannot create the folder of the tool library " + path + ": " + ec.message()};
         }
     }
-    if (sqlite3_open_v2(path.c_str(), &lib->db_->handle, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
-        error = describe(lib->db_->handle, path);
-        return nullptr;
+    if (sqlite3_open_v2(path.c_str(), &lib.db_->handle, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+        return Failure{describe(lib.db_->handle, path)};
     }
-    sqlite3* db = lib->db_->handle;
+    sqlite3* db = lib.db_->handle;
     sqlite3_busy_timeout(db, 1500);
     exec(db, "PRAGMA foreign_keys = ON");
     Statement version(db, "PRAGMA user_version");
     if (!version.ok() || version.step() != SQLITE_ROW) {
-        error = describe(db, path);
-        return nullptr;
+        return Failure{describe(db, path)};
     }
     const int v = version.integer(0);
     if (v > kSchemaVersion) {
-        error = path + " was written by a newer Taiwa (tool library version " + std::to_string(v) +
-                "); this program reads version " + std::to_string(kSchemaVersion);
-        return nullptr;
+        return Failure{path + " was written by a newer Taiwa (tool library version " + std::to_string(v) +
+                       "); this program reads version " + std::to_string(kSchemaVersion)};
     }
     if (v == 0) {
         // A new file: create the schema and the default library in one transaction.
         Statement tables(db, "SELECT count(*) FROM sqlite_master");
         if (!tables.ok() || tables.step() != SQLITE_ROW || tables.integer(0) != 0) {
-            error = path + " is an SQLite database but not a tool library";
-            return nullptr;
+            return Failure{path + " is an SQLite database but not a tool library"};
         }
         bool ok = exec(db, "BEGIN IMMEDIATE") && exec(db, kSchema);
         for (const auto& t : defaultToolLibrary()) ok = ok && insert(db, t);
         if (!ok || !exec(db, "COMMIT")) {
-            error = describe(db, path);
+            const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
-            return nullptr;
+            return Failure{why};
         }
     } else if (v < kSchemaVersion) {
         // An older library: every migration from its version on, in one transaction.
         bool ok = exec(db, "BEGIN IMMEDIATE");
         for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
         if (!ok || !exec(db, "COMMIT")) {
-            error = describe(db, path) + " (while upgrading it from tool library version " + std::to_string(v) + ")";
+            const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
-            return nullptr;
+            return Failure{why + " (while upgrading it from tool library version " + std::to_string(v) + ")"};
         }
     }
     return lib;
 }
 
-std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
+Result<std::vector<Tool>> ToolLibrary::tools() const
 {
     sqlite3* db = db_->handle;
     Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
                     "holder, flutes, life_minutes, used_minutes, centre_cutting FROM tools ORDER BY id");
     if (!s.ok()) {
-        error = describe(db, path_);
-        return std::nullopt;
+        return Failure{describe(db, path_)};
     }
     std::vector<Tool> out;
     int rc;
@@ -195,8 +190,7 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
         t.name = s.text(1);
         const auto type = toolTypeFromKey(s.text(2));
         if (!type) {
-            error = path_ + ": tool " + std::to_string(t.id) + " has an unknown type '" + s.text(2) + "'";
-            return std::nullopt;
+            return Failure{path_ + ": tool " + std::to_string(t.id) + " has an unknown type '" + s.text(2) + "'"};
         }
         t.type = *type;
         t.diameter = s.real(3);
@@ -213,8 +207,7 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
         out.push_back(std::move(t));
     }
     if (rc != SQLITE_DONE) {
-        error = describe(db, path_);
-        return std::nullopt;
+        return Failure{describe(db, path_)};
     }
     Statement c(db, "SELECT tool_id, material, surface_speed, feed_per_tooth, plunge_factor FROM cutting_data ORDER BY tool_id, rowid");
     while (c.ok() && (rc = c.step()) == SQLITE_ROW) {
@@ -223,13 +216,12 @@ std::optional<std::vector<Tool>> ToolLibrary::tools(std::string& error) const
             if (t.id == id) t.cutting.push_back({c.text(1), c.real(2), c.real(3), c.real(4)});
     }
     if (!c.ok() || rc != SQLITE_DONE) {
-        error = describe(db, path_);
-        return std::nullopt;
+        return Failure{describe(db, path_)};
     }
     return out;
 }
 
-std::optional<int> ToolLibrary::save(const Tool& tool, std::string& error)
+Result<int> ToolLibrary::save(const Tool& tool)
 {
     sqlite3* db = db_->handle;
     Tool t = tool;
@@ -240,44 +232,45 @@ std::optional<int> ToolLibrary::save(const Tool& tool, std::string& error)
         t.id = ok ? s.integer(0) : 0;
     }
     if (!ok || !insert(db, t) || !exec(db, "COMMIT")) {
-        error = describe(db, path_);
+        const std::string why = describe(db, path_);
         exec(db, "ROLLBACK");
-        return std::nullopt;
+        return Failure{why};
     }
     return t.id;
 }
 
 namespace {
 
-// Runs a one-tool statement; false with a message when it fails or the tool does not exist.
-bool changeOne(sqlite3* db, Statement& s, int id, const std::string& path, std::string& error)
+// Runs a one-tool statement; a failure when it fails or the tool does not exist.
+Result<void> changeOne(sqlite3* db, Statement& s, int id, const std::string& path)
 {
-    if (!s.ok() || s.step() != SQLITE_DONE) {
-        error = describe(db, path);
-        return false;
-    }
-    if (sqlite3_changes(db) == 0) {
-        error = path + " has no tool T" + std::to_string(id);
-        return false;
-    }
-    return true;
+    if (!s.ok() || s.step() != SQLITE_DONE) return Failure{describe(db, path)};
+    if (sqlite3_changes(db) == 0) return Failure{path + " has no tool T" + std::to_string(id)};
+    return {};
 }
 
 }  // namespace
 
-bool ToolLibrary::remove(int id, std::string& error)
+Result<void> ToolLibrary::remove(int id)
 {
     Statement s(db_->handle, "DELETE FROM tools WHERE id = ?");
     s.bind(1, id);
-    return changeOne(db_->handle, s, id, path_, error);
+    return changeOne(db_->handle, s, id, path_);
 }
 
-bool ToolLibrary::addUsage(int id, double minutes, std::string& error)
+Result<void> ToolLibrary::addUsage(int id, double minutes)
 {
     Statement s(db_->handle, "UPDATE tools SET used_minutes = used_minutes + ? WHERE id = ?");
     s.bind(1, minutes);
     s.bind(2, id);
-    return changeOne(db_->handle, s, id, path_, error);
+    return changeOne(db_->handle, s, id, path_);
+}
+
+Result<std::vector<Tool>> readToolLibrary(const std::string& path)
+{
+    auto lib = ToolLibrary::open(path);
+    if (!lib) return Failure{lib.error()};
+    return lib->tools();
 }
 
 }  // namespace taiwa

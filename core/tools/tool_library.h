@@ -1,9 +1,10 @@
 // The shop's tool library in SQLite, shared by all jobs (docs/command-line.md "Tool
 // library"). Created with the default library on first use. Every failure
-// (corrupt file, locked database, read-only folder) is an error value with a
-// clear message; nothing here ever touches a job.
+// (corrupt file, locked database, read-only folder) is a Failure with a clear
+// message; nothing here ever touches a job.
 #pragma once
 
+#include "model/result.h"
 #include "model/tool.h"
 
 #include <memory>
@@ -22,24 +23,28 @@ std::vector<Tool> defaultToolLibrary();
 // $XDG_DATA_HOME/taiwa/tools.sqlite, else ~/.local/share/taiwa/tools.sqlite.
 std::string defaultToolLibraryPath();
 
+// The tools of the library at `path` (opened, and created when missing).
+class ToolLibrary;
+Result<std::vector<Tool>> readToolLibrary(const std::string& path);
+
 class ToolLibrary {
 public:
     // Opens (creating with the default library when the file does not exist).
-    // On failure returns nullptr and sets `error` to a sentence naming the
-    // file and what is wrong.
-    static std::unique_ptr<ToolLibrary> open(const std::string& path, std::string& error);
+    // A failure is a sentence naming the file and what is wrong.
+    static Result<ToolLibrary> open(const std::string& path);
     ~ToolLibrary();
+    ToolLibrary(ToolLibrary&&) noexcept;
     ToolLibrary(const ToolLibrary&) = delete;
     ToolLibrary& operator=(const ToolLibrary&) = delete;
 
     const std::string& path() const { return path_; }
-    // All tools ordered by id; nullopt + error on a database failure.
-    std::optional<std::vector<Tool>> tools(std::string& error) const;
-    // Insert (id 0 = assign a new id) or replace; returns the id or nullopt.
-    std::optional<int> save(const Tool& tool, std::string& error);
-    bool remove(int id, std::string& error);
+    // All tools ordered by id.
+    Result<std::vector<Tool>> tools() const;
+    // Insert (id 0 = assign a new id) or replace; the tool's id.
+    Result<int> save(const Tool& tool);
+    Result<void> remove(int id);
     // Adds cutting minutes to a tool's used life.
-    bool addUsage(int id, double minutes, std::string& error);
+    Result<void> addUsage(int id, double minutes);
 
 private:
     explicit ToolLibrary(std::string path);
