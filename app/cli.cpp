@@ -20,6 +20,7 @@
 
 #include <QGuiApplication>
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -99,6 +100,9 @@ int check(const Options& o)
 
 int exportJob(const Options& o, int& argc, char** argv)
 {
+    // A file size limit (ulimit -f) makes a write fail with EFBIG, which the
+    // export reports naming the file, instead of killing the process.
+    std::signal(SIGXFSZ, SIG_IGN);
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
     // Whether the chosen controller has the job's work offset is an input
