@@ -5,6 +5,9 @@
 // jobs into one folder at once leave one job's set; temporaries of a killed
 // export are gone after the next one.
 #include "support/support.h"
+#include "tools/tool_library.h"
+
+#include <nlohmann/json.hpp>
 
 #include <QtTest>
 
@@ -16,6 +19,7 @@
 #include <csignal>
 
 using namespace taiwa::test;
+using nlohmann::json;
 
 namespace {
 
@@ -144,6 +148,61 @@ private slots:
             QVERIFY(set.at(".sheet.pdf").find("%%EOF") != std::string::npos);
         }
         QVERIFY(leftovers(out).isEmpty());
+    }
+
+    void controlCharactersAndPercentStayInert()
+    {
+        // Text from the job reaches terminals, tapes and documents: a newline
+        // must not forge a message line, an ESC must not reach the terminal, a
+        // '%' must not end a FANUC tape inside its comments, a ')' must not
+        // end a comment, NUL/ESC must not reach the tape image or the sheet.
+        QTemporaryDir dir;
+        json job = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+        job["name"] = std::string("Plate %1 (rev\x1b[31mB)\nJOB: unit 9 (M4) depth: forged") + '\0' + "end";
+        job["units"][0]["name"] = "Pocket\x1b]0;title\x07 %";
+        const QString file = dir.filePath("ctl.taiwa");
+        writeFile(file, job.dump());
+        // A tool named with the same characters, in a library of this test's own.
+        const QString db = dir.filePath("tools.sqlite");
+        {
+            auto lib = taiwa::ToolLibrary::open(db.toStdString());
+            QVERIFY(lib);
+            auto tools = lib->tools();
+            QVERIFY(tools);
+            for (taiwa::Tool t : *tools) {
+                t.name += " %) \x1b[0m";
+                QVERIFY(lib->save(t));
+            }
+        }
+        const QStringList env{"TAIWA_TOOL_DB=" + db};
+        const QString out = dir.filePath("out");
+        for (const char* dialect : {"fanuc", "linuxcnc"}) {
+            const auto r = runTaiwa({"export", file, "--out", out, "--dialect", dialect}, env);
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const std::string nc = readFile(QDir(out).filePath("ctl.nc"));
+            std::size_t percents = 0, from = 0;
+            while ((from = nc.find('%', from)) != std::string::npos) ++percents, ++from;
+            QCOMPARE(percents, std::string(dialect) == "fanuc" ? std::size_t{2} : std::size_t{0});  // leader and trailer only
+            for (const QString& line : QString::fromStdString(nc).split('\n')) {
+                const auto open = line.indexOf('(');
+                if (open < 0) continue;
+                QVERIFY2(line.indexOf('(', open + 1) < 0 && line.indexOf(')') == line.size() - 1, qPrintable(line));
+            }
+            for (const char* s : {"ctl.nc", "ctl.tape.txt", "ctl.sheet.html", "ctl.steps.json"}) {
+                const std::string text = readFile(QDir(out).filePath(s));
+                QVERIFY2(text.find('\x1b') == std::string::npos && text.find('\0') == std::string::npos, s);
+            }
+        }
+        // The messages of check: one line per diagnostic, no escape reaching the terminal.
+        job["material"] = "alu\nJOB: unit 9 (M4) depth: forged\x1b[2J";
+        writeFile(file, job.dump());
+        const auto r = runTaiwa({"check", file}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(!r.err.contains(QChar(0x1b)), qPrintable(r.err));
+        const QStringList lines = r.err.trimmed().split('\n');
+        QCOMPARE(lines.size(), 1);
+        QVERIFY2(lines.front().startsWith("ctl.taiwa: job material:") && lines.front().contains("alu\\nJOB"),
+                 qPrintable(lines.front()));
     }
 
     void temporariesOfAKilledExportAreRemovedByTheNext()

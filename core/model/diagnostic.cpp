@@ -7,8 +7,38 @@
 
 namespace taiwa {
 
-std::string format(const std::string& job, const Diagnostic& d)
+namespace {
+
+// Control characters typed into a job (a newline in a material name, an ESC)
+// must not forge lines or send terminal escapes: shown as \n, \x1b…
+std::string quoted(const std::string& s)
 {
+    std::string out;
+    out.reserve(s.size());
+    for (const char c : s) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') out += "\\n";
+        else if (c == '\t') out += "\\t";
+        else if (c == '\r') out += "\\r";
+        else if (u < 0x20 || u == 0x7f) {
+            static const char* hex = "0123456789abcdef";
+            out += "\\x";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        } else out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string format(const std::string& jobName, const Diagnostic& diagnostic)
+{
+    Diagnostic d = diagnostic;
+    d.module = quoted(d.module);
+    d.field = quoted(d.field);
+    d.message = quoted(d.message);
+    const std::string job = quoted(jobName);
     if (!d.unit && d.field.empty()) return job + ": " + d.message;  // the file itself (unreadable, not JSON)
     const std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
     const std::string kind = d.severity == Severity::Warning ? "warning: " : "";

@@ -20,8 +20,8 @@ enum Axis { X, Y, Z };
 constexpr char kAxisLetter[] = {'X', 'Y', 'Z'};
 
 // Printable ASCII only: parentheses (neither controller allows nested
-// comments) and control characters become spaces, a non-ASCII (UTF-8)
-// character becomes one '?'.
+// comments), '%' (it ends a FANUC tape, even inside a comment) and control
+// characters become spaces, a non-ASCII (UTF-8) character becomes one '?'.
 std::string commentText(const std::string& text, bool upper)
 {
     std::string t;
@@ -31,7 +31,7 @@ std::string commentText(const std::string& text, bool upper)
         if ((u & 0xc0) == 0x80) continue;  // UTF-8 continuation byte
         char out = c;
         if (u >= 0x80) out = '?';
-        else if (c == '(' || c == ')' || u < 0x20 || u == 0x7f) out = ' ';
+        else if (c == '(' || c == ')' || c == '%' || u < 0x20 || u == 0x7f) out = ' ';
         t += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(out))) : out;
     }
     return t;

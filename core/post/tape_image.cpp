@@ -41,7 +41,10 @@ TapeLength measureTape(const std::string& nc)
 std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect)
 {
     const std::string rule(72, '-');
-    std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", programName,
+    // A printable listing: control characters of the job's name are not printed.
+    std::string name;
+    for (const char c : programName) name += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
+    std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", name,
                                   dialect, rule, "LINE", "N", rule);
     std::size_t lineNumber = 0;
     forEachLine(nc, [&](std::string_view line) {

@@ -16,7 +16,10 @@ std::string escape(const std::string& s)
         case '>': out += "&gt;"; break;
         case '&': out += "&amp;"; break;
         case '"': out += "&quot;"; break;
-        default: out += c;
+        default:
+            // Control characters (NUL, ESC…) have no place in a document: shown as �.
+            if ((static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') || c == 0x7f) out += "&#xFFFD;";
+            else out += c;
         }
     }
     return out;
