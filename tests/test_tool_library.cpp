@@ -105,6 +105,45 @@ private slots:
         QCOMPARE(test::readFile(path), before);
     }
 
+    void anEmptyFileIsRefusedNotFilled()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("tools.sqlite");
+        test::writeFile(path, "");
+        const auto lib = ToolLibrary::open(path.toStdString());
+        QVERIFY(!lib);
+        QCOMPARE(lib.error(), path.toStdString() + " is empty, not a tool library (delete it to have the default library created)");
+        QCOMPARE(QFileInfo(path).size(), 0);  // the operator's file, untouched
+    }
+
+    void impossibleToolValuesAreNamed_data()
+    {
+        QTest::addColumn<QString>("sql");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("diameter 0") << "UPDATE tools SET diameter = 0 WHERE id = 27"
+                                    << ": tool T27 (Flat end mill 10 mm carbide): diameter 0 mm must be greater than zero";
+        QTest::newRow("cutting speed 0") << "UPDATE cutting_data SET surface_speed = 0 WHERE tool_id = 27 AND material = 'pom'"
+                                         << ": tool T27 (Flat end mill 10 mm carbide): cutting speed for pom 0 m/min must be greater than zero";
+        QTest::newRow("negative feed") << "UPDATE cutting_data SET feed_per_tooth = -0.05 WHERE tool_id = 27 AND material = 'pom'"
+                                       << ": tool T27 (Flat end mill 10 mm carbide): feed per tooth for pom -0.05 mm must be greater than zero";
+    }
+    void impossibleToolValuesAreNamed()
+    {
+        QFETCH(QString, sql);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("tools.sqlite").toStdString();
+        QVERIFY(ToolLibrary::open(path));
+        sqlite3* db = nullptr;
+        sqlite3_open(path.c_str(), &db);
+        QCOMPARE(sqlite3_exec(db, sql.toUtf8().constData(), nullptr, nullptr, nullptr), SQLITE_OK);
+        QCOMPARE(sqlite3_changes(db), 1);
+        sqlite3_close(db);
+        const auto tools = readToolLibrary(path);
+        QVERIFY(!tools);
+        QCOMPARE(QString::fromStdString(tools.error()), QString::fromStdString(path) + message);
+    }
+
     void versionOneLibraryIsUpgradedInPlace()
     {
         QTemporaryDir dir;

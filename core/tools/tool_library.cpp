@@ -4,7 +4,10 @@
 
 #include <sqlite3.h>
 
+#include <cmath>
 #include <filesystem>
+
+#include <fmt/format.h>
 #include <iterator>
 #include <system_error>
 
@@ -127,6 +130,10 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
     ToolLibrary lib(path);
     std::error_code ec;
     const bool fresh = !std::filesystem::exists(path, ec);
+    // SQLite would take an empty file for a new database and fill it: the
+    // operator's file is never rewritten, so an empty one is refused.
+    if (!fresh && std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == 0)
+        return Failure{path + " is empty, not a tool library (delete it to have the default library created)"};
     if (fresh && std::filesystem::path(path).has_parent_path()) {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
         if (ec) {
@@ -217,6 +224,26 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
     }
     if (!c.ok() || rc != SQLITE_DONE) {
         return Failure{describe(db, path_)};
+    }
+    // Values no tool can have would fail deep in planning: named here.
+    for (const Tool& t : out) {
+        const auto bad = [&](const std::string& what) {
+            return Failure{path_ + ": tool T" + std::to_string(t.id) + " (" + t.name + "): " + what};
+        };
+        if (!(t.diameter > 0) || !std::isfinite(t.diameter))
+            return bad("diameter " + fmt::format("{:g}", t.diameter) + " mm must be greater than zero");
+        if (t.flutes < 1) return bad("flutes " + std::to_string(t.flutes) + " must be at least 1");
+        for (const auto& cd : t.cutting) {
+            if (!(cd.surfaceSpeed > 0) || !std::isfinite(cd.surfaceSpeed))
+                return bad("cutting speed for " + cd.material + " " + fmt::format("{:g}", cd.surfaceSpeed) +
+                           " m/min must be greater than zero");
+            if (!(cd.feedPerTooth > 0) || !std::isfinite(cd.feedPerTooth))
+                return bad("feed per tooth for " + cd.material + " " + fmt::format("{:g}", cd.feedPerTooth) +
+                           " mm must be greater than zero");
+            if (!(cd.plungeFactor > 0) || !std::isfinite(cd.plungeFactor))
+                return bad("plunge factor for " + cd.material + " " + fmt::format("{:g}", cd.plungeFactor) +
+                           " must be greater than zero");
+        }
     }
     return out;
 }
