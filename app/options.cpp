@@ -3,6 +3,7 @@
 
 #include "post/post.h"
 
+#include <algorithm>
 #include <charconv>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         if (i + 1 >= args.size()) return std::nullopt;
         return args[++i];
     };
+    std::vector<std::string_view> seen;  // options given so far
     for (; i < args.size(); ++i) {
         const auto a = args[i];
         if (a.empty()) return std::string("an empty argument");
@@ -67,6 +69,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         if (!takesValue) return "unknown option '" + std::string(a) + "'";
         const auto v = value();
         if (!v) return "option " + std::string(a) + " needs a value";
+        // Each option once, with a value: a second --out would silently win.
+        if (std::find(seen.begin(), seen.end(), a) != seen.end())
+            return "option " + std::string(a) + " is given twice";
+        seen.push_back(a);
+        if (v->empty()) return "option " + std::string(a) + " needs a value, not an empty one";
         const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render;
         if (a == "--tools") o.tools = *v;
         else if (a == "--out" && (forExport || forRender)) o.out = *v;

@@ -242,6 +242,43 @@ private slots:
         QVERIFY2(check.err.contains("g57.taiwa: job workOffset: 'G99' is not a work offset"), qPrintable(check.err));
     }
 
+    void optionsAreGivenOnceAndNotEmpty()
+    {
+        const QString job = sourcePath("resources/samples/m4-standard.taiwa");
+        QTemporaryDir dir;
+        const auto twice = runTaiwa({"export", job, "--out", dir.filePath("a"), "--out", dir.filePath("b")});
+        QCOMPARE(twice.exitCode, 2);
+        QVERIFY2(twice.err.contains("option --out is given twice"), qPrintable(twice.err));
+        QVERIFY(!QFileInfo::exists(dir.filePath("a")) && !QFileInfo::exists(dir.filePath("b")));
+        const auto empty = runTaiwa({"check", job, "--tools", ""});
+        QCOMPARE(empty.exitCode, 2);
+        QVERIFY2(empty.err.contains("option --tools needs a value, not an empty one"), qPrintable(empty.err));
+        const auto huge = runTaiwa({"render", job, "--out", dir.filePath("x.png"), "--size", "8192x8192"});
+        QCOMPARE(huge.exitCode, 2);
+        QVERIFY2(huge.err.contains("larger than 4096x4096"), qPrintable(huge.err));
+        const auto noFolder = runTaiwa({"render", job, "--out", dir.filePath("no/such/x.png")});
+        QCOMPARE(noFolder.exitCode, 1);
+        QVERIFY2(noFolder.err.contains("no folder") && !noFolder.err.contains("disk space"), qPrintable(noFolder.err));
+    }
+
+    void wholeNumbersFollowOneRule()
+    {
+        // "version": 1.0 was refused while "U": 1.0 was accepted: 1.0 is the whole number 1 in both.
+        QTemporaryDir dir;
+        json job = baseJob();
+        job["version"] = 1.0;
+        job["units"][0]["U"] = 1.0;
+        const QString file = dir.filePath("whole.taiwa");
+        writeFile(file, job.dump());
+        const auto ok = runTaiwa({"check", file});
+        QVERIFY2(ok.exitCode == 0, qPrintable(ok.err));
+        job["version"] = 1.5;
+        writeFile(file, job.dump());
+        const auto half = runTaiwa({"check", file});
+        QCOMPARE(half.exitCode, 2);
+        QVERIFY2(half.err.contains("job version:"), qPrintable(half.err));
+    }
+
     void toolLibraryThatCannotBeOpenedIsReported()
     {
         QTemporaryDir dir;

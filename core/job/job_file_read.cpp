@@ -12,6 +12,7 @@
 #include "modules/registry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <cctype>
 
@@ -146,13 +147,15 @@ std::optional<Diagnostic> refuseFormat(const json& root)
     if (*format != "taiwa-job") return fileProblem(msg::io::formatWrong(*format));
     const auto version = root.find("version");
     if (version == root.end()) return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::missing("a whole number")};
-    if (version->is_number_float())
+    // The one rule for whole numbers (as for "U": 1.0): 1.0 is the whole number 1.
+    if (version->is_number_float() && version->get<double>() != std::floor(version->get<double>()))
         return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::notWhole(*version)};
-    if (!version->is_number_integer() && !version->is_number_unsigned())
+    if (!version->is_number())
         return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::wrongType("a whole number", *version)};
-    if (version->is_number_unsigned() && version->get<std::uint64_t>() > std::uint64_t{INT64_MAX})
+    if ((version->is_number_unsigned() && version->get<std::uint64_t>() > std::uint64_t{INT64_MAX}) ||
+        (version->is_number_float() && version->get<double>() > 9.2e18))
         return fileProblem(msg::io::versionNewer(INT64_MAX, Job::kFormatVersion));
-    const auto n = version->get<std::int64_t>();
+    const auto n = version->is_number_float() ? static_cast<std::int64_t>(version->get<double>()) : version->get<std::int64_t>();
     if (n > Job::kFormatVersion) return fileProblem(msg::io::versionNewer(n, Job::kFormatVersion));
     if (n < Job::kFormatVersion) return fileProblem(msg::io::versionUnknown(n, Job::kFormatVersion));
     return std::nullopt;
