@@ -167,6 +167,36 @@ private slots:
         q.toolUse = 4;
         EXPECT_ONLY(check(job({q})), 1, "U", "U = 4 is not defined");
     }
+    void valuesThatWouldMakeTheWorkUnboundedAreRefused()
+    {
+        // γ 1e-9 once planned 1e10 layers (bad_alloc after 84 s and 13.6 GB).
+        Job j = job({m4()});
+        j.technology.gamma = 1e-9;
+        EXPECT_ONLY(check(j), 0, "technology.gamma", "γ is 1e-09; it must lie between 0.05 and 2");
+        j.technology.gamma = 5;
+        EXPECT_ONLY(check(j), 0, "technology.gamma", "it must lie between 0.05 and 2");
+        j = job({m4()});
+        j.technology.alpha2 = 500;
+        EXPECT_ONLY(check(j), 0, "technology.alpha2", "α2 is 500 mm; it must lie between 0 and 20 mm");
+        M2DPocket q = m2d();
+        q.scallop = 0.0004;
+        EXPECT_ONLY(check(job({q})), 1, "scallop", "the scallop height is 0.0004 mm; it must be at least 0.001 mm");
+        // A job shifted by 1e10 mm: refused at the stock and at the unit, each named.
+        j = job({m4()});
+        j.stock.x = 1e10;
+        EXPECT_ONLY(check(j), 0, "stock.x", "every length and coordinate must lie within ±1000000 mm");
+        M4Pocket far = m4();
+        for (auto& c : far.corners) c.x += 1e10;
+        const Diagnostics ds = check(job({far}));
+        QVERIFY(std::any_of(ds.begin(), ds.end(), [](const Diagnostic& d) {
+            return d.unit == 1 && d.field == "corners[0]" && d.message.find("within ±1000000 mm") != std::string::npos;
+        }));
+        QVERIFY(std::none_of(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.message.find("radius 0") != std::string::npos; }));
+        j = job({m4()});
+        j.stock.width = 20000;
+        EXPECT_ONLY(check(j), 0, "stock.width", "the stock width is 20000 mm; a stock of more than 10000 mm a side");
+    }
+
     void nonFiniteNumbers()
     {
         M4Pocket p = m4();
@@ -174,7 +204,7 @@ private slots:
         EXPECT_ONLY(check(job({p})), 1, "depth", "not a finite number");
         p = m4();
         p.corners[1].x = std::numeric_limits<double>::infinity();
-        EXPECT_ONLY(check(job({p})), 1, "corners[1]", "a coordinate of P2 is not a finite number");
+        EXPECT_ONLY(check(job({p})), 1, "corners[1]", "the coordinate X of P2 is not a finite number");
         M2DPocket q = m2d();
         q.scallop = std::numeric_limits<double>::quiet_NaN();
         EXPECT_ONLY(check(job({q})), 1, "scallop", "not a finite number");

@@ -4,9 +4,16 @@
 // ending exactly at the cut depth, clear every layer completely (Clipper),
 // mill climb, enter through the pilot hole or on a ramp, and keep the
 // outermost ring exactly on the offset with its corner arcs.
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "modules/m4/m4.h"
 #include "paths/coverage.h"
+#include "pipeline/pipeline.h"
+#include "support/support.h"
+#include "tools/tool_library.h"
 #include "test_toolpaths_support.h"
 
+#include <QDir>
 #include <QtTest>
 
 #include <cmath>
@@ -59,6 +66,47 @@ Quad parallelogram60() { return {{{{0, 0}, {80, 0}, {100, 20 * std::sqrt(3.0)}, 
 class TestToolpaths : public QObject {
     Q_OBJECT
 private slots:
+    void moveEstimatesFollowThePaths()
+    {
+        // The budget's estimate of every sample step is of the order of the
+        // moves the path really has: never below a quarter, at most 20 times.
+        for (const QString& f : QDir(test::sourcePath("resources/samples")).entryList({"*.taiwa"})) {
+            const Job job = *readJobFile(test::sourcePath("resources/samples/" + f).toStdString()).job;
+            const Plan plan = planJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY2(plan.ok(), qPrintable(f));
+            for (const Step& s : plan.steps) {
+                const double estimate = estimateMoves(s, *plan.tool(s.tool->toolId), plan.technology, {});
+                const double real = static_cast<double>(s.path->moves.size());
+                QVERIFY2(estimate >= real / 4 && estimate <= real * 20 + 50,
+                         qPrintable(QString("%1 %2: %3 estimated, %4 real").arg(f, QString::fromStdString(s.label())).arg(estimate).arg(real)));
+            }
+        }
+    }
+
+    void aJobBeyondTheMoveBudgetIsRefusedBeforeAnyPath()
+    {
+        // Sixteen 2 m pockets whose 1.4 mm corners take a 2 mm end mill, at
+        // γ 0.05: 50 layers of 1,100 rings each, about 11 million moves.
+        Job j;
+        j.stock = {0, 0, 10000, 10000, 30};
+        j.technology.gamma = 0.05;
+        for (int i = 0; i < 16; ++i) {
+            M4Pocket p;
+            const double x = 400 + (i % 4) * 2400, y = 400 + (i / 4) * 2400;
+            p.corners = {Point2{x, y}, Point2{x + 2000, y}, Point2{x + 2000, y + 2000}, Point2{x, y + 2000}};
+            p.cornerRadius = 1.4;
+            p.depth = 5;
+            p.toolUse = 9;
+            j.units.push_back({"big", p});
+        }
+        QVERIFY(!hasErrors(checkJob(j, TechnologyTable::builtIn(), defaultToolLibrary())));
+        const Plan plan = planJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(!plan.ok());
+        QVERIFY(std::all_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return !s.path; }));
+        const auto& d = plan.diagnostics.back();
+        QVERIFY2(d.message.find("more than the 1e+07 a job may have") != std::string::npos, d.message.c_str());
+    }
+
     void roughingStaysInsideAndClearsEveryLayer_data()
     {
         QTest::addColumn<Quad>("outline");

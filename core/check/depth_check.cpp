@@ -2,6 +2,8 @@
 #include "check/messages.h"
 #include "check/unit_checks.h"
 
+#include <cmath>
+
 namespace taiwa::check {
 
 bool checkDepth(double depth, Reporter& r)
@@ -13,6 +15,19 @@ bool checkDepth(double depth, Reporter& r)
     }
     if (r.ctx.stock && depth > r.ctx.stock->height + kTolerance)
         r.unit("depth", msg::deeperThanStock(r.len(depth), r.len(r.ctx.stock->height)));
+    return true;
+}
+
+bool checkLength(double mm, const std::string& field, const std::string& what, Reporter& r)
+{
+    if (!std::isfinite(mm)) {
+        r.unit(field, msg::notFinite(what));
+        return false;
+    }
+    if (std::abs(mm) > kMaxLength) {
+        r.unit(field, msg::beyondReach(what, r.len(mm), r.len(kMaxLength)));
+        return false;
+    }
     return true;
 }
 

@@ -20,7 +20,11 @@ std::string trimmed(double v, int decimals)
 
 std::string quote(Len v)
 {
-    return trimmed(fromMm(v.mm, v.unit), v.unit == LengthUnit::Inch ? 4 : 3) + " " + unitSymbol(v.unit);
+    const double shown = fromMm(v.mm, v.unit);
+    std::string text = trimmed(shown, v.unit == LengthUnit::Inch ? 4 : 3);
+    // A value too small for the usual decimals is not "0": its significant digits.
+    if (shown != 0.0 && (text == "0" || text == "-0")) text = fmt::format("{:g}", shown);
+    return text + " " + unitSymbol(v.unit);
 }
 
 std::string quoteDeg(double deg) { return trimmed(deg, 3) + "°"; }
@@ -67,6 +71,31 @@ std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth)
     return fmt::format("the floor allowance β2 = {} is not smaller than the depth {} of unit {}: "
                        "roughing would not cut at all",
                        quote(b2), quote(depth), unitNo);
+}
+
+std::string beyondReach(const std::string& what, Len value, Len limit)
+{
+    return fmt::format("{} is {}; every length and coordinate must lie within ±{} of the origin (beyond it a "
+                       "micrometre is no longer exact on the tape)", what, quote(value), quote(limit));
+}
+
+std::string technologyOutOfRange(const std::string& name, double shownValue, double low, double high,
+                                 const std::string& unitText, const std::string& why)
+{
+    return fmt::format("{} is {:g}{}; it must lie between {:g} and {:g}{} ({})", name, shownValue, unitText, low, high,
+                       unitText, why);
+}
+
+std::string scallopTooSmall(Len scallop, Len smallest)
+{
+    return fmt::format("the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the "
+                       "inclined faces without a finer surface any machine holds)", quote(scallop), quote(smallest));
+}
+
+std::string stockTooLarge(const std::string& key, Len value, Len limit)
+{
+    return fmt::format("the stock {} is {}; a stock of more than {} a side is not a part for this station",
+                       key, quote(value), quote(limit));
 }
 
 std::string depthNotPositive(Len depth)

@@ -22,6 +22,13 @@ std::string toolName(const Tool& t);  // "T12 (flat end mill Ø6 mm)", always in
 
 // Job level.
 std::string notFinite(const std::string& what);
+// "the coordinate X of P1 is 1e+10 mm; every length must lie within ±1000000 mm ..."
+std::string beyondReach(const std::string& what, Len value, Len limit);
+// "γ is 1e-09; it must lie between 0.05 and 2 (...)"
+std::string technologyOutOfRange(const std::string& name, double shownValue, double low, double high,
+                                 const std::string& unitText, const std::string& why);
+std::string scallopTooSmall(Len scallop, Len smallest);
+std::string stockTooLarge(const std::string& key, Len value, Len limit);
 std::string unknownMaterial(const std::string& id, const std::vector<std::string>& known);
 std::string stockNotPositive(const std::string& what, Len v);
 std::string technologyNotPositive(const std::string& name, double shownValue, const std::string& unitText);

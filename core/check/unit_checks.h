@@ -52,6 +52,12 @@ struct UnitReport {
 // The depth T of either module: positive, and no deeper than the stock
 // (when the stock is valid). False when it is not positive.
 bool checkDepth(double depth, Reporter& r);
+
+// Every length and coordinate of a job lies within ±kMaxLength mm: beyond it
+// a micrometre is no longer exact in a double, nor on a tape. Finite and
+// within reach, else a diagnostic on `field` of the unit.
+constexpr double kMaxLength = 1e6;  // mm
+bool checkLength(double mm, const std::string& field, const std::string& what, Reporter& r);
 // The allowances a pocket leaves against its depth T: α1 (the pilot hole
 // stops α1 above the floor) when it drills one, β2 (roughing stops β2 above
 // the floor) when it roughs or finishes the floor. Reported on the job's

@@ -23,37 +23,68 @@ Diagnostic jobError(std::string field, std::string message)
     return {Severity::Error, std::nullopt, "", std::move(field), std::move(message)};
 }
 
-// Stock dimensions finite and positive; returns whether the stock is usable.
+// The largest stock side: a part for this station, and every cell, layer and
+// pass count bounded.
+constexpr double kMaxStockSide = 10'000.0;  // mm
+
+// Stock origin within reach, dimensions positive and at most kMaxStockSide;
+// returns whether the stock is usable.
 bool checkStock(const Stock& mm, LengthUnit shown, Diagnostics& out)
 {
     bool ok = true;
     const std::pair<const char*, double> origin[] = {{"x", mm.x}, {"y", mm.y}};
-    for (const auto& [key, v] : origin)
-        if (!std::isfinite(v)) out.push_back(jobError(std::string("stock.") + key, msg::notFinite(std::string("the stock ") + key))), ok = false;
+    for (const auto& [key, v] : origin) {
+        if (std::isfinite(v) && std::abs(v) <= check::kMaxLength) continue;
+        out.push_back(jobError(std::string("stock.") + key,
+                               std::isfinite(v) ? msg::beyondReach(std::string("the stock ") + key, {v, shown}, {check::kMaxLength, shown})
+                                                : msg::notFinite(std::string("the stock ") + key)));
+        ok = false;
+    }
     const std::pair<const char*, double> sizes[] = {{"width", mm.width}, {"length", mm.length}, {"height", mm.height}};
     for (const auto& [key, v] : sizes) {
         const std::string field = std::string("stock.") + key;
         if (!std::isfinite(v)) out.push_back(jobError(field, msg::notFinite("the stock " + std::string(key)))), ok = false;
         else if (v <= 0.0) out.push_back(jobError(field, msg::stockNotPositive(key, {v, shown}))), ok = false;
+        else if (v > kMaxStockSide) out.push_back(jobError(field, msg::stockTooLarge(key, {v, shown}, {kMaxStockSide, shown}))), ok = false;
     }
     return ok;
 }
 
-// Overrides finite and positive (lengths quoted in the job's unit, gamma as is).
+// The technology values in force, each within a range that keeps the work
+// bounded (γ sets the layer count, the allowances the passes): docs/input-checks.md.
+struct TechnologyRange {
+    const char* key;
+    const char* name;
+    double low, high;  // mm, or a factor for γ
+    const char* why;
+};
+constexpr TechnologyRange kTechnologyRanges[] = {
+    {"alpha1", "α1", 0.0, 50.0, "the pilot hole stops α1 above the floor"},
+    {"alpha2", "α2", 0.0, 20.0, "the wall allowance roughing leaves"},
+    {"alpha3", "α3", 0.0, 20.0, "the wall allowance semi-finishing leaves"},
+    {"beta2", "β2", 0.0, 20.0, "the floor allowance roughing leaves"},
+    {"gamma", "γ", 0.05, 2.0, "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
+};
+
+// Overrides finite and within their ranges (lengths quoted in the job's unit, gamma as is).
 bool checkOverrides(const TechnologyOverrides& mm, LengthUnit shown, Diagnostics& out)
 {
     bool ok = true;
-    const std::tuple<const char*, const char*, std::optional<double>> values[] = {
-        {"alpha1", "α1", mm.alpha1}, {"alpha2", "α2", mm.alpha2}, {"alpha3", "α3", mm.alpha3},
-        {"beta2", "β2", mm.beta2},   {"gamma", "γ", mm.gamma}};
-    for (const auto& [key, name, v] : values) {
+    const std::optional<double> values[] = {mm.alpha1, mm.alpha2, mm.alpha3, mm.beta2, mm.gamma};
+    for (std::size_t i = 0; i < std::size(values); ++i) {
+        const auto& v = values[i];
+        const TechnologyRange& range = kTechnologyRanges[i];
         if (!v) continue;
-        const std::string field = std::string("technology.") + key;
-        const bool isGamma = std::string(key) == "gamma";
-        if (!std::isfinite(*v)) out.push_back(jobError(field, msg::notFinite(name))), ok = false;
+        const std::string field = std::string("technology.") + range.key;
+        const bool isGamma = std::string(range.key) == "gamma";
+        const auto shownOf = [&](double x) { return isGamma ? x : fromMm(x, shown); };
+        const std::string unitText = isGamma ? "" : std::string(" ") + unitSymbol(shown);
+        if (!std::isfinite(*v)) out.push_back(jobError(field, msg::notFinite(range.name))), ok = false;
         else if (*v <= 0.0)
-            out.push_back(jobError(field, msg::technologyNotPositive(name, isGamma ? *v : fromMm(*v, shown),
-                                                                     isGamma ? "" : std::string(" ") + unitSymbol(shown)))),
+            out.push_back(jobError(field, msg::technologyNotPositive(range.name, shownOf(*v), unitText))), ok = false;
+        else if (*v < range.low || *v > range.high)
+            out.push_back(jobError(field, msg::technologyOutOfRange(range.name, shownOf(*v), shownOf(range.low),
+                                                                     shownOf(range.high), unitText, range.why))),
                 ok = false;
     }
     return ok;

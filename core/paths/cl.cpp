@@ -3,6 +3,7 @@
 
 #include "paths/generators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -69,6 +70,29 @@ double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapid
         at = m.end;
     }
     return minutesAt(cut, sf.feed) + minutesAt(plunge, sf.plungeFeed) + minutesAt(rapid, rapidRate);
+}
+
+double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    const double D = std::max(tool.diameter, 1e-3);
+    const double layers = std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
+    const double rings =
+        step.outline ? std::ceil(inscribedRadius(step.outline->corners) / std::max(params.stepOver * D, 1e-3)) + 1 : 1;
+    constexpr double kMovesPerRing = 12;  // four sides, four corners, links
+    switch (step.kind) {
+    case StepKind::PilotHole: return 10;
+    case StepKind::Roughing: return layers * rings * kMovesPerRing;
+    case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
+    case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
+    case StepKind::InclinedFaceFinishing: {
+        if (!step.face) return 10;
+        const double R = D / 2, h = std::clamp(step.scallop, 1e-6, R);
+        const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
+        const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
+        return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
+    }
+    }
+    return 10;
 }
 
 }  // namespace taiwa

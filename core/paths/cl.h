@@ -34,6 +34,12 @@ struct PathParameters {
 // (no outline, a tool that does not fit) or for a layer it failed to clear.
 ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 
+// About how many moves makeToolPath would make for the step, from its
+// geometry alone (layers x rings or passes), computed in microseconds: the
+// pipeline refuses a plan whose paths would not fit its move budget before
+// computing any of them.
+double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+
 // Estimated time of a path: feed moves at their feed (plunge/ramp feed where
 // marked), rapids at `rapidRate` mm/min, plus `toolChangeSeconds` is NOT
 // included (the sheet adds tool changes). Minutes.

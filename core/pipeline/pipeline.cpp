@@ -9,6 +9,8 @@
 #include "tools/cutting.h"
 #include "tools/tool_choice.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <future>
 #include <string>
@@ -61,6 +63,25 @@ Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const 
                     plan.mmJob.material + "; add it in the tool library"));
     }
     if (!plan.ok() || !options.withToolPaths) return plan;
+
+    // The budget: estimated before any path is computed, so that no job can
+    // exhaust the memory (the checks' ranges bound every step; this bounds the job).
+    double estimated = 0.0;
+    std::vector<double> perUnit(plan.mmJob.units.size(), 0.0);
+    for (const auto& step : plan.steps) {
+        const double moves = estimateMoves(step, *findTool(library, step.tool->toolId), plan.technology, options.path);
+        estimated += moves;
+        perUnit[static_cast<std::size_t>(step.unit)] += moves;
+    }
+    if (estimated > kMaxPlanMoves) {
+        const auto biggest = std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin();
+        plan.diagnostics.push_back(unitError(
+            plan.mmJob, static_cast<int>(biggest), "",
+            fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's), more than the "
+                        "{:.3g} a job may have; make the job smaller, the allowances or the depth of cut (γ) larger",
+                        estimated, perUnit[static_cast<std::size_t>(biggest)], kMaxPlanMoves)));
+        return plan;
+    }
 
     // The paths of the steps are independent of each other: compute them on
     // every core (at most kMaxPathThreads).

@@ -27,6 +27,9 @@ struct PlanOptions {
 
 // Tool paths are computed on every core, at most this many threads.
 constexpr std::size_t kMaxPathThreads = 8;
+// The most moves a plan's paths may hold (about 1 GB of moves, a 250 MB tape):
+// a job beyond it is refused before any path is computed.
+constexpr double kMaxPlanMoves = 10'000'000;
 
 // Plans a job already converted and checked (job/job_check.h): input errors
 // in it stop the plan with its steps empty.

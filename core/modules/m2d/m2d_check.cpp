@@ -19,20 +19,21 @@ constexpr double kTolerance = 1e-9;  // mm
 bool allFinite(const M2DPocket& p, Reporter& r)
 {
     bool ok = true;
-    auto need = [&](const char* field, double v, const std::string& what) {
+    auto length = [&](const char* field, double v, const std::string& what) { ok &= checkLength(v, field, what, r); };
+    auto angle = [&](const char* field, double v, const std::string& what) {
         if (std::isfinite(v)) return;
         r.unit(field, msg::notFinite(what));
         ok = false;
     };
-    need("corner", p.corner.x, "X1 of the reference corner");
-    need("corner", p.corner.y, "Y1 of the reference corner");
-    need("L1", p.lengthX, "L1");
-    need("L2", p.lengthY, "L2");
-    need("depth", p.depth, "the depth");
-    need("theta1", p.theta1, "θ1");
-    if (p.theta2) need("theta2", *p.theta2, "θ2");
-    need("cornerRadius", p.cornerRadius, "the corner radius");
-    need("scallop", p.scallop, "the scallop height");
+    length("corner", p.corner.x, "X1 of the reference corner");
+    length("corner", p.corner.y, "Y1 of the reference corner");
+    length("L1", p.lengthX, "L1");
+    length("L2", p.lengthY, "L2");
+    length("depth", p.depth, "the depth");
+    angle("theta1", p.theta1, "θ1");
+    if (p.theta2) angle("theta2", *p.theta2, "θ2");
+    length("cornerRadius", p.cornerRadius, "the corner radius");
+    length("scallop", p.scallop, "the scallop height");
     return ok;
 }
 
@@ -124,7 +125,10 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
     if (!allFinite(p, r)) return report;
 
     const bool depthOk = checkDepth(p.depth, r);
+    // The smallest scallop height keeps the inclined faces' passes bounded (R / 1 µm at most).
+    constexpr double kSmallestScallop = 0.001;  // mm
     if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
+    else if (p.scallop < kSmallestScallop) r.unit("scallop", msg::scallopTooSmall(r.len(p.scallop), r.len(kSmallestScallop)));
 
     const bool anglesOk = anglesValid(p, r);
     const std::size_t before = report.diagnostics.size();

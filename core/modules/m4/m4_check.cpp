@@ -20,18 +20,17 @@ constexpr double kTolerance = 1e-9;  // mm
 bool allFinite(const M4Pocket& p, Reporter& r)
 {
     bool ok = true;
-    for (std::size_t i = 0; i < 4; ++i)
-        if (!std::isfinite(p.corners[i].x) || !std::isfinite(p.corners[i].y)) {
-            r.unit("corners[" + std::to_string(i) + "]", msg::notFinite("a coordinate of P" + std::to_string(i + 1)));
-            ok = false;
-        }
-    const std::pair<const char*, double> numbers[] = {
-        {"cornerRadius", p.cornerRadius}, {"depth", p.depth}, {"taper", p.taper}};
-    for (const auto& [field, v] : numbers)
-        if (!std::isfinite(v)) {
-            r.unit(field, msg::notFinite(std::string("the ") + field));
-            ok = false;
-        }
+    for (std::size_t i = 0; i < 4; ++i) {
+        const std::string field = "corners[" + std::to_string(i) + "]", point = "P" + std::to_string(i + 1);
+        ok &= checkLength(p.corners[i].x, field, "the coordinate X of " + point, r) &&
+              checkLength(p.corners[i].y, field, "the coordinate Y of " + point, r);
+    }
+    ok &= checkLength(p.cornerRadius, "cornerRadius", "the cornerRadius", r);
+    ok &= checkLength(p.depth, "depth", "the depth", r);
+    if (!std::isfinite(p.taper)) {
+        r.unit("taper", msg::notFinite("the taper"));
+        ok = false;
+    }
     return ok;
 }
 
