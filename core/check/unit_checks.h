@@ -87,7 +87,10 @@ struct UnitFigure {
     std::string field;            // where an overlap is reported ("corners")
     Quad outline;                 // in mm
 };
-// One diagnostic per overlapping pair (on the later unit, naming both).
+// One diagnostic per overlapping pair (on the later unit, naming both), in
+// the order of the later unit; at most kMaxDiagnostics of them, then a line
+// saying the rest was not looked for. Figures are compared through a grid,
+// only with the earlier ones in the cells they cover.
 Diagnostics interferences(std::vector<UnitFigure> figures, LengthUnit shownUnit);
 
 // Machining order of the units (0-based indices) from their centres: see
