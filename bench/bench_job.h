@@ -5,6 +5,8 @@
 #pragma once
 
 #include "model/job.h"
+
+#include <algorithm>
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 
@@ -12,15 +14,20 @@ namespace taiwa::bench {
 
 constexpr int kUnits = 1000;
 
-inline Job bigJob()
+// `units` units (the shared 1,000 by default), 40 to a row up to 1,600 units,
+// then a square grid (at most ~110,000 units fit the largest stock).
+inline Job bigJob(int units = kUnits)
 {
     Job job;
     job.name = "bench-decompose";
-    job.stock = {0, 0, 40 * 30.0, 25 * 30.0, 40};
+    int columns = 40;
+    while (columns * columns < units * 40 / 25 && columns < 333) ++columns;
+    const int rows = (units + columns - 1) / columns;
+    job.stock = {0, 0, columns * 30.0, std::max(25, rows) * 30.0 + 10, 40};
     const int codes[][3] = {{1, 1, 0}, {1, 2, 9}, {1, 3, 0}, {6, 1, 0}, {7, 3, 9}, {8, 2, 9}, {9, 1, 0}};
-    for (int i = 0; i < kUnits; ++i) {
+    for (int i = 0; i < units; ++i) {
         // Pitch 30 mm along X with 30 mm wide figures: neighbours in a row touch.
-        const double x = (i % 40) * 30.0, y = 5 + (i / 40) * 30.0;
+        const double x = (i % columns) * 30.0, y = 5 + (i / columns) * 30.0;
         if (i % 5 == 4) {
             M2DPocket m;
             m.corner = {x, y};

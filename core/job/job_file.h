@@ -16,7 +16,7 @@
 namespace taiwa {
 
 // Files larger than this are refused before parsing.
-constexpr std::size_t kMaxJobFileBytes = 16u * 1024u * 1024u;
+constexpr std::size_t kMaxJobFileBytes = 64u * 1024u * 1024u;  // a 100,000-unit job is about 25 MB
 
 struct JobReadResult {
     std::optional<Job> job;   // present only when the file was read whole

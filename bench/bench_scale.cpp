@@ -1,0 +1,88 @@
+// How the work grows with the job: `taiwa check` (read + checks + unit order)
+// at 100 / 1,000 / 10,000 / 100,000 units and the whole export (plan with
+// paths, tape, sheet with its PDF, steps) at 100 / 1,000 / 10,000 units, each
+// in a child process of its own so that its peak memory (ru_maxrss) is its
+// alone. Prints time per unit and peak memory; time per unit should stay
+// flat (the overlap check and the unit order go through grids).
+#include "bench_job.h"
+
+#include "export/export.h"
+#include "io/job_io.h"
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "pipeline/pipeline.h"
+#include "tools/tool_library.h"
+
+#include <QGuiApplication>
+#include <QTemporaryDir>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace taiwa;
+
+namespace {
+
+struct Measured {
+    double seconds = 0;
+    long peakKb = 0;
+    bool ok = false;
+};
+
+// Runs `work` in a child; its wall time and peak resident memory.
+Measured inChild(const std::function<bool()>& work)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(work() ? 0 : 1);
+    int status = 0;
+    rusage usage{};
+    ::wait4(pid, &status, 0, &usage);
+    Measured m;
+    m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m.peakKb = usage.ru_maxrss;
+    m.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    return m;
+}
+
+void print(const char* what, int units, const Measured& m)
+{
+    std::printf("%-8s %7d units  %9.3f s  %8.1f us/unit  peak %7.1f MB  %s\n", what, units, m.seconds,
+                m.seconds / units * 1e6, m.peakKb / 1024.0, m.ok ? "ok" : "FAILED");
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    const std::vector<Tool> library = defaultToolLibrary();
+    QTemporaryDir dir;
+    for (const int units : {100, 1'000, 10'000, 100'000}) {
+        const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
+        if (!writeFileAtomically(file, writeJob(bench::bigJob(units)))) return 1;
+        print("check", units, inChild([&] {
+            const auto read = readJobFile(file);
+            return read.job && !hasErrors(checkJob(*read.job, TechnologyTable::builtIn(), library));
+        }));
+    }
+    for (const int units : {100, 1'000, 10'000}) {
+        const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
+        print("export", units, inChild([&] {
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+            QGuiApplication app(argc, argv);
+            const auto read = readJobFile(file);
+            if (!read.job) return false;
+            const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), library);
+            if (!plan.ok()) return false;
+            return exportPlan(plan, dir.filePath(QString("out-%1").arg(units)).toStdString(), "job", {}).ok();
+        }));
+    }
+    return 0;
+}
