@@ -115,7 +115,7 @@ private slots:
         const JobReadResult r = readJobFile(file.toStdString());
         QVERIFY(!r.job);
         QCOMPARE(diagnosticLines("huge.taiwa", r.diagnostics),
-                 std::string("huge.taiwa: the file is 104857600 bytes (100.0 MB); a job file may be at most 16777216 bytes (16 MB)\n"));
+                 std::string("huge.taiwa: the file is 104857600 bytes (100.0 MB); a job file may be at most 67108864 bytes (64 MB)\n"));
         QVERIFY(f.open(QIODevice::WriteOnly));
         QVERIFY(f.resize(qint64(kMaxJobFileBytes) + 1));
         f.close();

@@ -139,8 +139,12 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
         a.geometry = makePathGeometry(*step.path);
         a.feeds = lineActor(a.geometry.feeds, palette::kFeed, 2.0);
         a.rapids = lineActor(a.geometry.rapids, palette::kRapid, 1.0);
-        renderer_->AddActor(a.feeds);
-        renderer_->AddActor(a.rapids);
+        // Added without AddActor's search of every prop already there (it
+        // made a 10,000-unit job's scene quadratic: 33 s for 3,000 units).
+        for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
+            renderer_->GetViewProps()->AddItem(actor);
+            actor->AddConsumer(renderer_);
+        }
     }
 
     const double axisLength = niceLength(std::max(s.width, s.length));
