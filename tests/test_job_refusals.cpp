@@ -119,7 +119,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly));
         QVERIFY(f.resize(qint64(kMaxJobFileBytes) + 1));
         f.close();
-        QVERIFY(readJobFile(file.toStdString()).diagnostics.at(0).message.starts_with("the file is 16777217 bytes"));
+        QVERIFY(readJobFile(file.toStdString()).diagnostics.at(0).message.starts_with("the file is 67108865 bytes"));
     }
 
     void missingAndUnreadableFiles()
