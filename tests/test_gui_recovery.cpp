@@ -41,6 +41,27 @@ class TestGuiRecovery : public QObject {
         QTest::keyClicks(e, text);
     }
 
+    // The name an older Taiwa gave a job's recovery file (no owner in it):
+    // taken as left by an owner that is gone.
+    static QString legacyRecoveryPath(const QString& job)
+    {
+        StationWindow probe;
+        const QString own = probe.autosaver()->recoveryPath(job);
+        return own.left(own.lastIndexOf('.', own.size() - 7)) + ".taiwa";
+    }
+
+    static Job sampleJob(double depth)
+    {
+        Job j;
+        j.name = "shared";
+        M4Pocket p;
+        p.corners = {Point2{10, 10}, Point2{60, 10}, Point2{60, 40}, Point2{10, 40}};
+        p.cornerRadius = 5;
+        p.depth = depth;
+        j.units.push_back(MachiningUnit{"A", p});
+        return j;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -50,12 +71,13 @@ private slots:
 
     void untitledJobRestoredAfterAKill()
     {
-        const QString recovery = Autosaver::recoveryPath({});
-        QVERIFY(recovery.startsWith(dir_.path()));
-        QVERIFY(!QFile::exists(recovery));
+        QVERIFY(Autosaver::recoveryFiles({}).isEmpty());
+        QString recovery;
         QElapsedTimer sinceLastEdit;
         {
             auto* w = new StationWindow;
+            recovery = w->autosaver()->recoveryPath({});
+            QVERIFY(recovery.startsWith(dir_.path()));
             QTest::mouseClick(w->findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
             type(*w, "m4.depth", "7.25");
             type(*w, "m4.r1", "6.5");
@@ -75,8 +97,9 @@ private slots:
         QCOMPARE(w2.findChild<QLineEdit*>("m4.depth")->text(), QString("7.25"));
         QVERIFY(w2.document()->isModified());
         QVERIFY(w2.windowTitle().contains('*'));
-        QVERIFY(w2.close());  // prompts are off: the changes are dropped
-        QVERIFY(!QFile::exists(recovery));
+        QVERIFY(!QFile::exists(recovery));  // restored: the dead window's file is gone
+        QVERIFY(w2.close());                // prompts are off: the changes are dropped
+        QVERIFY(Autosaver::recoveryFiles({}).isEmpty());
     }
 
     void savedJobRestoredOnlyWhenTheRecoveryIsNewer()
@@ -90,9 +113,10 @@ private slots:
         p.depth = 8;
         j.units.push_back(MachiningUnit{"A", p});
         QVERIFY(writeFileAtomically(job.toStdString(), writeJob(j)));
-        const QString recovery = Autosaver::recoveryPath(job);
+        QString recovery;
         {
             auto* w = new StationWindow(job);
+            recovery = w->autosaver()->recoveryPath(job);
             QCOMPARE(w->document()->job(), j);
             type(*w, "m4.depth", "11");
             w->autosaver()->saveNow();  // what the timer does every 3 s
@@ -104,8 +128,8 @@ private slots:
             QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 11.0);
             QCOMPARE(w.document()->path(), job);
             QVERIFY(w.document()->isModified());
-            QVERIFY(w.fileActions()->save());  // saved: the recovery file goes
-            QVERIFY(!QFile::exists(recovery));
+            QVERIFY(w.fileActions()->save());  // saved: the recovery files go
+            QVERIFY(Autosaver::recoveryFiles(job).isEmpty());
         }
         // A stale recovery file (older than the job file) is not offered.
         Job stale = j;
@@ -118,6 +142,48 @@ private slots:
         StationWindow w(job);
         QCOMPARE((w.document()->job().units[0].module).as<M4Pocket>().depth, 11.0);
         QVERIFY(!w.document()->isModified());
+    }
+
+    void twoWindowsOnOneJobKeepTheirOwnRecovery()
+    {
+        const QString job = dir_.filePath("shared.taiwa");
+        QVERIFY(writeFileAtomically(job.toStdString(), writeJob(sampleJob(8))));
+        StationWindow a(job);
+        type(a, "m4.depth", "9");
+        a.autosaver()->saveNow();
+        const QString aRecovery = a.autosaver()->recoveryPath(job);
+        QVERIFY(QFile::exists(aRecovery));
+        // B opens the job A is editing: no "not closed properly" (A is alive),
+        // and A's recovery file is left alone.
+        StationWindow b(job);
+        QCOMPARE((b.document()->job().units[0].module).as<M4Pocket>().depth, 8.0);
+        QVERIFY(!b.document()->isModified());
+        QVERIFY(QFile::exists(aRecovery));
+        // Both edit: each keeps a recovery file of its own.
+        type(b, "m4.depth", "10");
+        b.autosaver()->saveNow();
+        QCOMPARE(Autosaver::recoveryFiles(job).size(), 2);
+        QVERIFY(b.autosaver()->recoveryPath(job) != aRecovery);
+        QCOMPARE((readJobFile(aRecovery.toStdString()).job->units[0].module).as<M4Pocket>().depth, 9.0);
+        a.autosaver()->saveNow();
+        QVERIFY(b.close() && a.close());  // prompts off: changes dropped, own files removed
+        QVERIFY(Autosaver::recoveryFiles(job).isEmpty());
+    }
+
+    void aSaveDoesNotOverwriteWhatAnotherWindowSaved()
+    {
+        const QString job = dir_.filePath("both.taiwa");
+        QVERIFY(writeFileAtomically(job.toStdString(), writeJob(sampleJob(8))));
+        StationWindow a(job), b(job);
+        type(b, "m4.depth", "12");
+        QVERIFY(b.fileActions()->save());
+        type(a, "m4.depth", "7");
+        QVERIFY(!a.fileActions()->save());  // prompts off: refused, not overwritten
+        QCOMPARE((readJobFile(job.toStdString()).job->units[0].module).as<M4Pocket>().depth, 12.0);
+        QVERIFY(a.document()->isModified());  // A's edit is kept in the window
+        // B, which wrote it last, saves again without a question.
+        type(b, "m4.depth", "13");
+        QVERIFY(b.fileActions()->save());
     }
 
     void realProcessKilled()
@@ -134,7 +200,8 @@ private slots:
         QVERIFY(writeFileAtomically(job.toStdString(), savedText));
         Job edited = saved;
         (edited.units[0].module).as<M4Pocket>().depth = 11;
-        const QString recovery = Autosaver::recoveryPath(job);
+        // Left by an owner that is gone (an older Taiwa named no owner).
+        const QString recovery = legacyRecoveryPath(job);
         QVERIFY(writeFileAtomically(recovery.toStdString(), writeJob(edited)));
         const QDateTime before = QDateTime::currentDateTime();
         auto age = [](const QString& path, int seconds) {
@@ -154,16 +221,23 @@ private slots:
         taiwa.setProcessEnvironment(env);
         taiwa.start(TAIWA_BINARY, {job});
         QVERIFY(taiwa.waitForStarted());
-        // The process restored the recovery file and rewrites it within an
-        // autosave interval: its time moves past the start.
-        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(recovery).lastModified() >= before, 3 * Autosaver::kIntervalMs);
+        // The process restored the recovery file and writes its own within an
+        // autosave interval.
+        const auto itsOwn = [&] {
+            for (const QString& f : Autosaver::recoveryFiles(job))
+                if (f != recovery && QFileInfo(f).lastModified() >= before) return f;
+            return QString();
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(!itsOwn().isEmpty(), 3 * Autosaver::kIntervalMs);
+        const QString childsRecovery = itsOwn();
+        QVERIFY(!QFile::exists(recovery));
         QCOMPARE(taiwa.state(), QProcess::Running);
         taiwa.kill();  // SIGKILL
         QVERIFY(taiwa.waitForFinished());
         QCOMPARE(taiwa.exitStatus(), QProcess::CrashExit);
 
         QCOMPARE(test::readFile(job), savedText);  // the job file was never touched
-        const JobReadResult r = readJobFile(recovery.toStdString());
+        const JobReadResult r = readJobFile(childsRecovery.toStdString());
         QVERIFY(r.job);
         QCOMPARE(*r.job, edited);
         StationWindow w(job);

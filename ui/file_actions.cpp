@@ -25,8 +25,8 @@ const char* const kRecentKey = "recentFiles";
 constexpr int kMaxRecent = 8;
 }  // namespace
 
-FileActions::FileActions(JobDocument* doc, PlanRunner* runner, QWidget* window)
-    : QObject(window), doc_(doc), runner_(runner), window_(window)
+FileActions::FileActions(JobDocument* doc, PlanRunner* runner, Autosaver* autosave, QWidget* window)
+    : QObject(window), doc_(doc), autosave_(autosave), runner_(runner), window_(window)
 {
 }
 
@@ -45,7 +45,7 @@ bool FileActions::maybeSave()
 bool FileActions::newJob()
 {
     if (!maybeSave()) return false;
-    if (doc_->isModified()) Autosaver::removeRecovery(doc_->path());  // the operator discarded the changes
+    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());  // the operator discarded the changes
     Job j;
     j.name = tr("New job").toStdString();
     doc_->reset(j, {}, false);
@@ -69,7 +69,7 @@ bool FileActions::openPath(const QString& path)
         else QMessageBox::warning(window_, tr("Cannot open job"), why);
         return false;
     }
-    if (doc_->isModified()) Autosaver::removeRecovery(doc_->path());  // the operator discarded the changes
+    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());  // the operator discarded the changes
     doc_->reset(*r.job, path, false);
     addRecent(path);
     emit message(tr("Opened %1").arg(path));
@@ -88,6 +88,19 @@ bool FileActions::saveAs()
 
 bool FileActions::saveTo(const QString& path)
 {
+    // Never overwrite silently what another window or program saved meanwhile.
+    if (path == doc_->path() && doc_->changedOnDisk()) {
+        const QString why = tr("%1 was changed on disk since this window opened or saved it (by another window or "
+                               "program).").arg(QFileInfo(path).fileName());
+        if (promptsDisabled()) {
+            qWarning("taiwa: %s Not saved.", qPrintable(why));
+            emit message(why + tr(" Not saved: use Save As."));
+            return false;
+        }
+        const auto answer = QMessageBox::question(window_, tr("Save job"), why + tr(" Overwrite it with this window's job?"),
+                                                  QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Save) return false;
+    }
     const QString err = doc_->saveTo(path);
     if (!err.isEmpty()) {
         if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(err));
@@ -131,7 +144,10 @@ void FileActions::exportJob()
 
 bool FileActions::offerRecovery(const QString& jobPath)
 {
-    const auto job = Autosaver::pendingRecovery(jobPath);
+    // Only a file whose owner is gone: never the one of a window still editing the job.
+    const QString file = Autosaver::pendingRecoveryFile(jobPath);
+    if (file.isEmpty()) return false;
+    const auto job = readJobFile(file.toStdString()).job;
     if (!job) return false;
     if (!promptsDisabled()) {
         const QString what = jobPath.isEmpty() ? tr("an untitled job") : QFileInfo(jobPath).fileName();
@@ -140,11 +156,12 @@ bool FileActions::offerRecovery(const QString& jobPath)
             tr("Taiwa was not closed properly while editing %1. Its autosaved copy is newer than the file. "
                "Restore the autosaved copy?").arg(what));
         if (answer != QMessageBox::Yes) {
-            Autosaver::removeRecovery(jobPath);
+            QFile::remove(file);  // that dead owner's file only
             return false;
         }
     }
     doc_->reset(*job, jobPath, true);
+    QFile::remove(file);  // restored: this window's own autosave carries it from here
     if (!jobPath.isEmpty()) addRecent(jobPath);
     emit message(tr("Restored the autosaved job (not saved to a file yet)"));
     return true;

@@ -13,6 +13,7 @@ namespace taiwa::ui {
 
 class JobDocument;
 class PlanRunner;
+class Autosaver;
 
 class FileActions : public QObject {
     Q_OBJECT
@@ -20,7 +21,7 @@ public:
     // The stem of an export's files, and the program name of an unnamed job:
     // the job file's base name, "job" while it has none.
     static QString exportStem(const QString& jobPath);
-    FileActions(JobDocument* doc, PlanRunner* runner, QWidget* window);
+    FileActions(JobDocument* doc, PlanRunner* runner, Autosaver* autosave, QWidget* window);
 
     bool newJob();
     bool open();
@@ -45,6 +46,7 @@ signals:
 private:
     void addRecent(const QString& path);
     JobDocument* doc_;
+    Autosaver* autosave_;
     PlanRunner* runner_;
     QWidget* window_;
 };

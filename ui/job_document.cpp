@@ -1,6 +1,10 @@
 // The edited job and its undo commands.
 #include "ui/job_document.h"
 
+#include <QCryptographicHash>
+#include <QFile>
+#include <QFileInfo>
+
 #include "io/job_io.h"
 #include "job/job_file.h"
 
@@ -67,11 +71,30 @@ void JobDocument::apply(const Job& job, int selection, bool fromTyping)
     if (selection >= 0) emit selectionRequested(selection);
 }
 
+namespace {
+
+// What the file holds now, as a hash; empty when there is no such file.
+QByteArray contentStamp(const QString& path)
+{
+    QFile f(path);
+    if (path.isEmpty() || !f.open(QIODevice::ReadOnly)) return {};
+    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha1);
+}
+
+}  // namespace
+
+bool JobDocument::changedOnDisk() const
+{
+    if (path_.isEmpty() || !QFileInfo::exists(path_)) return false;
+    return contentStamp(path_) != diskStamp_;
+}
+
 void JobDocument::reset(const Job& job, const QString& path, bool modified)
 {
     undo_->clear();
     job_ = job;
     path_ = path;
+    diskStamp_ = contentStamp(path);
     dirtyWithoutUndo_ = modified;
     emit changed(false);
     emit selectionRequested(job_.units.empty() ? -1 : 0);
@@ -80,8 +103,10 @@ void JobDocument::reset(const Job& job, const QString& path, bool modified)
 
 QString JobDocument::saveTo(const QString& path)
 {
-    if (const auto written = writeFileAtomically(path.toStdString(), writeJob(job_)); !written)
+    const std::string text = writeJob(job_);
+    if (const auto written = writeFileAtomically(path.toStdString(), text); !written)
         return QString::fromStdString(written.error());
+    diskStamp_ = QCryptographicHash::hash(QByteArray::fromStdString(text), QCryptographicHash::Sha1);
     path_ = path;
     dirtyWithoutUndo_ = false;
     undo_->setClean();

@@ -5,6 +5,7 @@
 
 #include "model/job.h"
 
+#include <QByteArray>
 #include <QObject>
 #include <QString>
 
@@ -33,6 +34,9 @@ public:
     void reset(const Job& job, const QString& path, bool modified);
     // Writes the job to path atomically; empty string on success, else the error.
     QString saveTo(const QString& path);
+    // The job's file was changed by someone else (another window, another
+    // program) since this document opened or saved it.
+    bool changedOnDisk() const;
 
     // Called by the undo commands only.
     void apply(const Job& job, int selection, bool fromTyping);
@@ -47,6 +51,7 @@ signals:
 private:
     Job job_;
     QString path_;
+    QByteArray diskStamp_;  // hash of the file as this document last read or wrote it
     QUndoStack* undo_;
     bool dirtyWithoutUndo_ = false;
     int mergeEpoch_ = 0;

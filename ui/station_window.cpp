@@ -46,7 +46,7 @@ namespace taiwa::ui {
 
 StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     : QMainWindow(parent), doc_(new JobDocument(this)), runner_(new PlanRunner(this)),
-      autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, this)),
+      autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, autosave_, this)),
       palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
       forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView)
 {
@@ -376,7 +376,7 @@ void StationWindow::closeEvent(QCloseEvent* e)
         e->ignore();
         return;
     }
-    Autosaver::removeRecovery(doc_->path());
+    autosave_->removeRecovery(doc_->path());
     e->accept();
 }
 
