@@ -106,23 +106,27 @@ void PlanRunner::schedule(Work work)
     debounce_->start();
 }
 
+void PlanRunner::repost()
+{
+    if (!full_) return;
+    ++generation_;
+    // The tool paths depend on neither the dialect nor the program name: only
+    // the post runs again (unless an edit is pending, whose plan comes anyway).
+    schedule({pendingFull_ ? pending_.job : nullptr, full_});
+}
+
 void PlanRunner::setDialect(const QString& dialect)
 {
     if (dialect == dialect_) return;
     dialect_ = dialect;
-    if (!full_) return;
-    ++generation_;
-    // The tool paths do not depend on the dialect: only the post runs again.
-    schedule({pendingFull_ ? pending_.job : nullptr, full_});
+    repost();
 }
 
 void PlanRunner::setFileStem(const QString& stem)
 {
     if (stem == fileStem_) return;
     fileStem_ = stem;
-    if (!full_) return;
-    ++generation_;
-    schedule({pendingFull_ ? pending_.job : nullptr, full_});
+    repost();
 }
 
 void PlanRunner::startFull()

@@ -85,6 +85,7 @@ private:
         std::shared_ptr<const Plan> plan;
     };
     void schedule(Work work);
+    void repost();
     void startFull();
     void finished(int generation, const Result& r);
     void publish(const Result& r);
