@@ -127,6 +127,33 @@ private slots:
         QVERIFY(differingPixels(drillOnly, rough) > 1000);
     }
 
+    // A plan of many steps is drawn merged (two actors and the selected
+    // step's own): the same colours where the same paths are.
+    void largePlansAreDrawnMerged()
+    {
+        Plan big = plan_;
+        big.steps.clear();
+        for (int i = 0; i < 250; ++i) big.steps.insert(big.steps.end(), plan_.steps.begin(), plan_.steps.begin() + 2);
+        QVERIFY(big.steps.size() > 400);
+        const auto draw = [&](int step, const QString& name) {
+            RenderOptions o;
+            o.view = ViewPreset::Top;
+            o.step = step;
+            const QString path = dir_.filePath(name);
+            const auto drawn = renderToPng(big, o, path.toStdString());
+            if (!drawn) qWarning("%s", drawn.error().c_str());
+            return drawn ? QImage(path).convertToFormat(QImage::Format_RGB32) : QImage();
+        };
+        const QImage all = draw(-1, "big-all.png");
+        QVERIFY(colourNear(all, pixelOf(big, ViewPreset::Top, {50, 40, -5}), palette::kFeed));
+        QVERIFY(colourNear(all, pixelOf(big, ViewPreset::Top, {82.5, 55, 5}), palette::kRapid));
+        const QImage drill = draw(0, "big-step0.png");
+        QVERIFY(colourNear(drill, pixelOf(big, ViewPreset::Top, {50, 40, -5}), palette::kDimmed));
+        QVERIFY(!colourNear(drill, pixelOf(big, ViewPreset::Top, {82.5, 55, 5}), palette::kRapid));
+        const QImage rough = draw(kRoughing, "big-step1.png");
+        QVERIFY(colourNear(rough, pixelOf(big, ViewPreset::Top, {50, 40, -5}), palette::kFeed));
+    }
+
     void simulatedStockAfterTheStep()
     {
         RenderOptions o;

@@ -7,6 +7,7 @@
 #include "viz/palette.h"
 #include "viz/solids.h"
 
+#include <vtkAppendPolyData.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
@@ -106,6 +107,8 @@ void Scene::clear()
 {
     renderer_->RemoveAllViewProps();
     steps_.clear();
+    allFeeds_ = allRapids_ = nullptr;
+    shownStep_ = -1;
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = nullptr;
     axes_ = nullptr;
@@ -132,6 +135,8 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
+    const bool merged = steps_.size() > kMergeAbove;
+    auto feeds = vtkSmartPointer<vtkAppendPolyData>::New(), rapids = vtkSmartPointer<vtkAppendPolyData>::New();
     for (int k = 0; k < n; ++k) {
         const Step& step = plan_->steps[k];
         if (!step.path) continue;
@@ -139,12 +144,25 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
         a.geometry = makePathGeometry(*step.path);
         a.feeds = lineActor(a.geometry.feeds, palette::kFeed, 2.0);
         a.rapids = lineActor(a.geometry.rapids, palette::kRapid, 1.0);
+        if (merged) {
+            feeds->AddInputData(a.geometry.feeds);
+            rapids->AddInputData(a.geometry.rapids);
+            continue;
+        }
         // Added without AddActor's search of every prop already there (it
-        // made a 10,000-unit job's scene quadratic: 33 s for 3,000 units).
+        // made a large job's scene quadratic: 33 s for 3,000 units).
         for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
             renderer_->GetViewProps()->AddItem(actor);
             actor->AddConsumer(renderer_);
         }
+    }
+    if (merged) {
+        feeds->Update();
+        rapids->Update();
+        allFeeds_ = lineActor(feeds->GetOutput(), palette::kFeed, 2.0);
+        allRapids_ = lineActor(rapids->GetOutput(), palette::kRapid, 1.0);
+        renderer_->AddActor(allFeeds_);
+        renderer_->AddActor(allRapids_);
     }
 
     const double axisLength = niceLength(std::max(s.width, s.length));
@@ -202,6 +220,27 @@ void Scene::highlightMove(int step, int move)
 
 void Scene::updateEmphasis()
 {
+    if (allFeeds_) {
+        // Merged: everything in one pair of actors, the selected step drawn
+        // over it with its own.
+        setColour(allFeeds_, selected_ < 0 ? palette::kFeed : palette::kDimmed);
+        allFeeds_->GetProperty()->SetLineWidth(selected_ < 0 ? 2.0f : 1.0f);
+        allRapids_->SetVisibility(selected_ < 0);
+        if (shownStep_ >= 0 && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
+            renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].feeds);
+            renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].rapids);
+        }
+        shownStep_ = -1;
+        if (selected_ >= 0 && steps_[static_cast<std::size_t>(selected_)].feeds) {
+            StepActors& a = steps_[static_cast<std::size_t>(selected_)];
+            setColour(a.feeds, palette::kFeed);
+            a.feeds->GetProperty()->SetLineWidth(3.0f);
+            renderer_->AddActor(a.feeds);
+            renderer_->AddActor(a.rapids);
+            shownStep_ = selected_;
+        }
+        return;
+    }
     for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
         StepActors& a = steps_[k];
         if (!a.feeds) continue;

@@ -97,6 +97,12 @@ private:
     std::shared_ptr<const Plan> plan_;
     std::shared_ptr<sim::StockSimulation> simulation_;
     std::vector<StepActors> steps_;
+    // A plan of more than kMergeAbove steps is drawn as two actors (all feeds,
+    // all rapids) and only the selected step's own: thousands of actors cost
+    // the renderer far more than their segments.
+    static constexpr std::size_t kMergeAbove = 400;
+    vtkSmartPointer<vtkActor> allFeeds_, allRapids_;
+    int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_;
     vtkSmartPointer<vtkAxesActor> axes_;
     vtkSmartPointer<vtkTextActor> scaleNote_;
