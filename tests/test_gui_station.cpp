@@ -2,13 +2,15 @@
 // from the palette, typing its form with the keyboard (Tab and Enter), live
 // checks (checkJob messages and "not a number"), the step list, code combo
 // boxes, undo/redo (one step per field), the NC view <-> step mapping, and
-// the save/open round trip.
+// the save/open round trip, unit conversion, technology and tool library dialogs. Its
+// behaviour between edits is in test_gui_station_behaviour.cpp.
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 #include "export/export.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
+#include "support/gui_fields.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -46,21 +48,11 @@ class TestGuiStation : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
 
-    static QLineEdit* edit(QWidget& w, const QString& name)
-    {
-        auto* e = w.findChild<QLineEdit*>(name);
-        if (!e) qWarning("no line edit %s", qPrintable(name));
-        return e;
-    }
-    static QLabel* label(QWidget& w, const QString& name) { return w.findChild<QLabel*>(name + ".error"); }
-    static void retype(QLineEdit* e, const QString& text)
-    {
-        e->setFocus();
-        e->selectAll();
-        if (text.isEmpty()) QTest::keyClick(e, Qt::Key_Backspace);
-        else QTest::keyClicks(e, text);
-    }
-    static bool isRed(QWidget* e) { return e->styleSheet().contains("#ffd0d0"); }
+    using Fields = test::GuiFields;
+    static QLineEdit* edit(QWidget& w, const QString& name) { return Fields::edit(w, name); }
+    static QLabel* label(QWidget& w, const QString& name) { return Fields::label(w, name); }
+    static void retype(QLineEdit* e, const QString& text) { Fields::retype(e, text); }
+    static bool isRed(QWidget* e) { return Fields::isRed(e); }
 
 private slots:
     void initTestCase()
@@ -311,168 +303,6 @@ private slots:
 
     // Without OpenGL (the offscreen platform here) the window still opens,
     // plans and posts; the 3-D view's place says why it is empty.
-    void staleViewsAreMarked()
-    {
-        // An input error leaves the last valid program on view, greyed under a
-        // banner naming the first error; the fix brings the new program back.
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        w.planRunner()->flush();
-        auto* banner = w.findChild<QLabel*>("output.stale");
-        QVERIFY(banner && !banner->isVisible());
-        const QString program = w.ncView()->text()->toPlainText();
-        QLineEdit* depth = edit(w, "m4.depth");
-        retype(depth, "0");
-        w.planRunner()->flush();
-        QVERIFY(banner->isVisible());
-        QVERIFY2(banner->text().contains("unit 1 (M4) depth:"), qPrintable(banner->text()));
-        QCOMPARE(w.ncView()->text()->toPlainText(), program);
-        QVERIFY(w.ncView()->text()->styleSheet().contains("#9a9a9a"));
-        retype(depth, "12");
-        w.planRunner()->flush();
-        QVERIFY(!banner->isVisible());
-        QVERIFY(w.ncView()->text()->styleSheet().isEmpty());
-        QVERIFY(w.ncView()->text()->toPlainText() != program);  // the new depth's program
-    }
-
-    void totalsAreKeptWhileTimesAreComputed()
-    {
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        w.planRunner()->flush();
-        auto* details = w.findChild<QLabel*>("step.details");
-        QVERIFY(details);
-        w.stepTable()->clearSelection();
-        const QString timed = details->text();
-        QVERIFY2(timed.contains(" min") && !timed.contains("0.0 min"), qPrintable(timed));
-        Job j = w.document()->job();
-        (j.units[0].module).as<M4Pocket>().depth = 11;
-        w.document()->edit(j, "deeper");  // the step list now, the times later
-        const QString updating = details->text();
-        QVERIFY2(updating.contains("updating") && !updating.contains("0.0 min"), qPrintable(updating));
-        QVERIFY(updating.contains(timed.section(" min", 0, 0).section(", ", 1)));
-        w.planRunner()->flush();
-        QVERIFY(!details->text().contains("updating"));
-    }
-
-    void addedAndDuplicatedUnitsLandInFreeStock()
-    {
-        // plate.taiwa's stock has no room left for another 50 x 30 pocket: Add
-        // and Duplicate say so and add nothing, so the job stays valid.
-        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        const auto problems = [&] { return checkJob(w.document()->job(), TechnologyTable::builtIn(), w.planRunner()->library()); };
-        const std::size_t before = w.document()->job().units.size();
-        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
-        QCOMPARE(w.document()->job().units.size(), before);
-        QVERIFY2(w.statusBar()->currentMessage().contains("no free place"), qPrintable(w.statusBar()->currentMessage()));
-        auto* panel = w.findChild<UnitListPanel*>();
-        panel->selectUnit(0);
-        panel->duplicate();
-        QCOMPARE(w.document()->job().units.size(), before);
-
-        // With a stock twice as large, both land where they overlap nothing.
-        Job larger = w.document()->job();
-        larger.stock.width *= 2;
-        larger.stock.length *= 2;
-        w.document()->edit(larger, "larger", {}, 0);
-        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
-        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
-        panel->selectUnit(0);
-        panel->duplicate();
-        QCOMPARE(w.document()->job().units.size(), before + 3);
-        const Diagnostics ds = problems();
-        QVERIFY2(!hasErrors(ds), qPrintable(QString::fromStdString(ds.empty() ? "" : format("plate", ds.front()))));
-        // The copy is the same pocket, moved.
-        const auto& units = w.document()->job().units;
-        const auto& original = units[0].module.as<M4Pocket>();
-        const auto& copy = units[1].module.as<M4Pocket>();
-        QCOMPARE(copy.depth, original.depth);
-        QCOMPARE(copy.corners[2] - copy.corners[0], original.corners[2] - original.corners[0]);
-        QVERIFY(!(copy.corners[0] == original.corners[0]));
-    }
-
-    void focusGoesToTheNewUnitsFirstField()
-    {
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        Job roomy = w.document()->job();
-        roomy.stock.width = roomy.stock.length = 400;
-        w.document()->edit(roomy, "roomy");
-        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM2D"), Qt::LeftButton);
-        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m2d.X1")));
-        QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
-        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m4.P1.x")));
-    }
-
-    void separateVisitsToAFieldAreSeparateUndoSteps()
-    {
-        // Typing in the job's name or a stock field merges keystrokes into one
-        // undo step, but leaving the field and coming back starts a new one.
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QUndoStack* undo = w.document()->undoStack();
-        const int start = undo->count();
-        for (const char* field : {"job.name", "stock.width"}) {
-            QLineEdit* e = edit(w, field);
-            QVERIFY(e);
-            retype(e, "12");
-            QTest::keyClick(e, Qt::Key_3);
-            QCOMPARE(undo->count(), start + 1);  // one visit, one step
-            QTest::keyClick(e, Qt::Key_Tab);      // leave
-            retype(e, "45");                      // a second visit
-            QCOMPARE(undo->count(), start + 2);
-            undo->undo();
-            QCOMPARE(e->text(), QString("123"));
-            undo->undo();
-            undo->clear();
-        }
-    }
-
-    void dialectChangeRepostsWithoutReplanning()
-    {
-        // The tool paths do not depend on the dialect: changing it re-posts the
-        // last plan (the very same Plan object) instead of planning again.
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        w.planRunner()->flush();
-        const auto before = w.planRunner()->fullPlan();
-        QVERIFY(before);
-        w.planRunner()->setDialect("fanuc");
-        w.planRunner()->flush();
-        QCOMPARE(w.planRunner()->fullPlan().get(), before.get());
-        QVERIFY2(w.ncView()->text()->toPlainText().startsWith("%\nO1000"),
-                 qPrintable(w.ncView()->text()->toPlainText().left(40)));
-    }
-
-    void unnamedJobTapeEqualsTheExportedOne()
-    {
-        // One function builds the post options for the NC view and for export:
-        // an unnamed job's program is named after the export stem in both.
-        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
-        Job j = w.document()->job();
-        j.name.clear();
-        w.document()->edit(j, "unname", {}, 0);
-        w.planRunner()->flush();
-        const auto plan = w.planRunner()->fullPlan();
-        QVERIFY(plan && plan->job.name.empty());
-        QTemporaryDir dir;
-        ExportOptions eo;
-        eo.dialect = w.planRunner()->dialect().toStdString();
-        const auto exported = exportPlan(*plan, dir.path().toStdString(),
-                                         FileActions::exportStem(w.document()->path()).toStdString(), eo);
-        QVERIFY(exported);
-        QFile nc(dir.filePath(FileActions::exportStem(w.document()->path()) + ".nc"));
-        QVERIFY(nc.open(QIODevice::ReadOnly));
-        const QStringList shown = w.ncView()->text()->toPlainText().split('\n');
-        const QStringList written = QString::fromUtf8(nc.readAll()).split('\n');
-        for (qsizetype i = 0; i < std::min(shown.size(), written.size()); ++i)
-            QVERIFY2(shown[i] == written[i], qPrintable(QString("line %1: %2 | %3").arg(i + 1).arg(shown[i], written[i])));
-        QCOMPARE(shown.size(), written.size());
-    }
-
     void noOpenGlShowsAPlaceholder()
     {
         StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
