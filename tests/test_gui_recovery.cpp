@@ -23,6 +23,7 @@
 #include <QLineEdit>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QStatusBar>
 #include <QtTest>
 
 using namespace taiwa;
@@ -159,6 +160,10 @@ private slots:
         QCOMPARE((b.document()->job().units[0].module).as<M4Pocket>().depth, 8.0);
         QVERIFY(!b.document()->isModified());
         QVERIFY(QFile::exists(aRecovery));
+        // B is told that A has the job open.
+        QTRY_VERIFY2(b.statusBar()->currentMessage().contains("also open in 1 other window"),
+                     qPrintable(b.statusBar()->currentMessage()));
+        QVERIFY(!a.statusBar()->currentMessage().contains("also open"));
         // Both edit: each keeps a recovery file of its own.
         type(b, "m4.depth", "10");
         b.autosaver()->saveNow();

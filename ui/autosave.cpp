@@ -80,8 +80,42 @@ Autosaver::Autosaver(JobDocument* doc, QObject* parent) : QObject(parent), doc_(
 }
 
 // The window is gone: its recovery file stays for the next start (as after a
-// kill), unless a clean close removed it.
-Autosaver::~Autosaver() { liveInstances().erase(instance_); }
+// kill), unless a clean close removed it; its open mark goes.
+Autosaver::~Autosaver()
+{
+    liveInstances().erase(instance_);
+    if (!openMark_.isEmpty()) QFile::remove(openMark_);
+}
+
+void Autosaver::markOpen(const QString& jobPath)
+{
+    const QString mark = jobPath.isEmpty() ? QString()
+                                           : QDir(autosaveDir()).filePath(QStringLiteral("open-%1.%2-%3.taiwa")
+                                                                              .arg(recoveryStem(jobPath).mid(9))
+                                                                              .arg(QCoreApplication::applicationPid())
+                                                                              .arg(instance_));
+    if (mark == openMark_) return;
+    if (!openMark_.isEmpty()) QFile::remove(openMark_);
+    openMark_ = mark;
+    if (mark.isEmpty()) return;
+    QDir().mkpath(autosaveDir());
+    QFile f(mark);
+    if (f.open(QIODevice::WriteOnly)) f.write(QFileInfo(jobPath).absoluteFilePath().toUtf8());
+}
+
+int Autosaver::openElsewhere(const QString& jobPath, const Autosaver* self)
+{
+    if (jobPath.isEmpty()) return 0;
+    const QString stem = QStringLiteral("open-") + recoveryStem(jobPath).mid(9);
+    int n = 0;
+    for (const QString& f : QDir(autosaveDir()).entryList({stem + ".*.taiwa"}, QDir::Files)) {
+        const QString path = QDir(autosaveDir()).filePath(f);
+        if (self && path == self->openMark_) continue;
+        if (ownerGone(f, stem)) QFile::remove(path);  // a window that died with the job open
+        else ++n;
+    }
+    return n;
+}
 
 QString Autosaver::recoveryPath(const QString& jobPath) const
 {

@@ -45,6 +45,11 @@ public:
     static std::optional<Job> pendingRecovery(const QString& jobPath);
     // Removes this window's recovery file of the job.
     void removeRecovery(const QString& jobPath) const;
+    // Marks the job file as open in this window (an empty path: none), so
+    // that another window opening it can warn; the mark goes with the window.
+    void markOpen(const QString& jobPath);
+    // How many other live windows have the job file open.
+    static int openElsewhere(const QString& jobPath, const Autosaver* self);
     // Writes now when the job has changes the recovery file does not have.
     void saveNow();
 
@@ -52,6 +57,7 @@ private:
     JobDocument* doc_;
     QTimer* timer_;
     int instance_;  // this window's number in the process
+    QString openMark_;  // this window's mark of the job it has open
     QString writtenFor_;  // the job path the recovery file was last written for
     std::optional<Job> written_;
 };

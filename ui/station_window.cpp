@@ -26,6 +26,7 @@
 #include <QActionGroup>
 #include <QCloseEvent>
 #include <QFileInfo>
+#include <QTimer>
 
 #include <algorithm>
 #include <QGroupBox>
@@ -367,6 +368,17 @@ void StationWindow::updateTitle()
     const QString name = doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
     // An unnamed job's program is named after its file, as export names it.
     runner_->setFileStem(FileActions::exportStem(doc_->path()));
+    if (doc_->path() != openPath_) {
+        // Another window editing the same file: say so once, on opening it.
+        openPath_ = doc_->path();
+        autosave_->markOpen(openPath_);
+        if (const int others = Autosaver::openElsewhere(openPath_, autosave_)) {
+            const QString warning = tr("%1 is also open in %n other window(s): a save here asks before it overwrites "
+                                       "what another window saved.", "", others).arg(name);
+            // After the "Opened" message of the same event.
+            QTimer::singleShot(0, this, [this, warning] { statusBar()->showMessage(warning, 15000); });
+        }
+    }
     setWindowTitle(QStringLiteral("%1%2 — Taiwa").arg(name, doc_->isModified() ? "*" : ""));
 }
 

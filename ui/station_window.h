@@ -82,6 +82,7 @@ private:
     QStackedWidget* forms_;
     std::map<std::string, UnitForm*> unitForms_;  // one per module kind, by name
     QLabel* stale_ = nullptr;
+    QString openPath_;  // the job file this window has marked open
     QLabel* unitMessages_;
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;
