@@ -7,6 +7,7 @@
 #include "export/export.h"
 #include "job/job_check.h"
 #include "modules/m4/m4.h"
+#include "sheet/sheet.h"
 #include "support/gui_fields.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
@@ -23,6 +24,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -126,6 +128,26 @@ private slots:
         QCOMPARE(copy.depth, original.depth);
         QCOMPARE(copy.corners[2] - copy.corners[0], original.corners[2] - original.corners[0]);
         QVERIFY(!(copy.corners[0] == original.corners[0]));
+    }
+
+    void unitNamesAreTypedInTheFormAndReachTheSheet()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QLineEdit* name = edit(w, "m4.name");
+        QVERIFY(name);
+        QCOMPARE(name->text(), QString("Pocket A"));
+        retype(name, "Cover recess");
+        QCOMPARE(w.document()->job().units[0].name, std::string("Cover recess"));
+        w.document()->undoStack()->undo();  // the whole name typed at once is one step
+        QCOMPARE(w.document()->job().units[0].name, std::string("Pocket A"));
+        w.document()->undoStack()->redo();
+        QVERIFY(w.findChild<QListWidget*>()->item(0)->text().endsWith("Cover recess"));
+        w.planRunner()->flush();
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan);
+        QVERIFY(QString::fromStdString(sheetHtml(*plan, {})).contains("<td class=n>1 Cover recess</td>"));
     }
 
     void focusGoesToTheNewUnitsFirstField()

@@ -42,9 +42,10 @@ private slots:
             const Tool& t = *plan.tool(s.tool->toolId);
             const auto sf = speedsFeeds(t, plan.mmJob.material);
             const QString row = QString::fromStdString(fmt::format(
-                "<tr><td class=n>{}</td><td class=n>{}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
+                "<tr><td class=n>{}</td><td class=n>{} {}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
                 "<td class=n>{:.0f}</td><td class=n>{:.0f}</td><td class=n>{:.3f}</td><td class=n>{:.3f}</td>",
-                i + 1, s.unit + 1, s.module, s.label(), t.id, t.id, t.name, sf->rpm, sf->feed, s.startDepth, s.cutDepth));
+                i + 1, s.unit + 1, plan.job.units[static_cast<std::size_t>(s.unit)].name, s.module, s.label(), t.id, t.id,
+                t.name, sf->rpm, sf->feed, s.startDepth, s.cutDepth));
             QVERIFY2(html.contains(row), qPrintable(row));
         }
         for (const auto& t : plan.tools) QVERIFY(html.contains(QString::fromStdString(t.holder)));

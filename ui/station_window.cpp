@@ -215,6 +215,13 @@ void StationWindow::wire()
         connect(f, &UnitForm::edited, this,
                 [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
         connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
+        connect(f, &UnitForm::nameEdited, this, [this](const QString& typed) {
+            const int u = units_->currentUnit();
+            if (u < 0) return;
+            Job j = doc_->job();
+            j.units[static_cast<std::size_t>(u)].name = typed.toStdString();
+            doc_->edit(j, tr("Rename unit %1").arg(u + 1), QStringLiteral("%1:name").arg(u));
+        });
     }
     connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
         diagnostics_ = ds;

@@ -34,6 +34,15 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     auto* form = new QFormLayout;
     outer->addLayout(form);
     outer->addStretch(1);
+    // The operator's name for the unit, shown in the unit list, the step list
+    // and the sheet; a unit of any module has one.
+    name_ = new QLineEdit(this);
+    name_->setObjectName(prefix + ".name");
+    name_->setPlaceholderText(tr("optional, e.g. Pocket A"));
+    form->addRow(tr("Unit name"), name_);
+    connect(name_, &QLineEdit::textEdited, this, [this](const QString& t) { emit nameEdited(t); });
+    connect(name_, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
+    connect(name_, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     QWidget* previous = nullptr;
     for (std::size_t i = 0; i < fields_.size(); ++i) {
@@ -87,6 +96,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
 void UnitForm::setUnit(const MachiningUnit& unit, bool force)
 {
     updating_ = true;
+    if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));
     for (std::size_t i = 0; i < fields_.size(); ++i) {
         Row& row = rows_[i];
         const std::optional<double> v = fields_[i].get(unit);

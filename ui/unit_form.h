@@ -44,6 +44,8 @@ protected:
 signals:
     // A field got a valid value (from typing or from a combo box).
     void edited(int field, std::optional<double> value);
+    // The unit's name as typed.
+    void nameEdited(const QString& name);
     // The operator left a field (Tab, Enter, click elsewhere).
     void fieldLeft();
 
@@ -59,6 +61,7 @@ private:
 
     std::vector<FieldSpec> fields_;
     std::vector<Row> rows_;
+    QLineEdit* name_ = nullptr;
     bool updating_ = false;
 };
 

@@ -45,7 +45,11 @@ Content content(const Plan& plan, const SheetOptions& o)
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
         const auto sf = t ? speedsFeeds(*t, job.material) : std::nullopt;
         const PathLength pl = s.path ? pathLength(*s.path) : PathLength{};
-        c.steps.rows.push_back({std::to_string(i + 1), std::to_string(s.unit + 1), s.module, s.label(),
+        // The unit by its number and the name the operator gave it.
+        std::string unit = std::to_string(s.unit + 1);
+        if (s.unit >= 0 && static_cast<std::size_t>(s.unit) < job.units.size() && !job.units[s.unit].name.empty())
+            unit += " " + job.units[static_cast<std::size_t>(s.unit)].name;
+        c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
                                 sf ? fmt::format("{:.0f}", sf->rpm) : "-", sf ? feed(sf->feed) : "-", len(s.startDepth),
                                 len(s.cutDepth), len(s.wallAllowance), len(s.floorAllowance),
