@@ -10,6 +10,11 @@
 
 #include <QtTest>
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <random>
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -90,6 +95,41 @@ QStringList between(const QStringList& l, const QString& from, const QString& to
 class TestPost : public QObject {
     Q_OBJECT
 private slots:
+    void fastNumbersEqualFmtsExactRounding()
+    {
+        // The writer formats scaled integers instead of fmt's "{:.3f}": the
+        // text must be the same, half cases included (fmt rounds the exact
+        // binary value; near a half the writer leaves the choice to fmt).
+        const auto reference = [](double v, int d, bool point) {
+            std::string s = fmt::format("{:.{}f}", v, d);
+            if (s.find('.') != std::string::npos) {
+                while (s.back() == '0') s.pop_back();
+                if (s.back() == '.' && !point) s.pop_back();
+            } else if (point) {
+                s += '.';
+            }
+            if (s == "-0" || s == "-0.") s.erase(0, 1);
+            return s;
+        };
+        std::mt19937_64 random(11);
+        std::uniform_real_distribution<double> wide(-5000, 5000);
+        std::uniform_int_distribution<int> grid(-5'000'000, 5'000'000);
+        for (int i = 0; i < 400'000; ++i) {
+            for (const int d : {3, 4}) {
+                const double a = wide(random);
+                const double half = (grid(random) + 0.5) / std::pow(10.0, d);  // x.xxx5: the half cases
+                const double exact = grid(random) / std::pow(10.0, d);
+                for (const double v : {a, half, exact, -half})
+                    for (const bool point : {false, true})
+                        if (post::formatNumber(v, d, point) != reference(v, d, point))
+                            QFAIL(qPrintable(QString("%1 with %2 decimals: %3, fmt %4")
+                                                 .arg(v, 0, 'g', 17).arg(d)
+                                                 .arg(QString::fromStdString(post::formatNumber(v, d, point)),
+                                                      QString::fromStdString(reference(v, d, point)))));
+            }
+        }
+    }
+
     void numbersAreFormattedByTheWriter()
     {
         using post::formatNumber;

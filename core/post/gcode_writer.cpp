@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -52,7 +53,9 @@ std::string GCodeWriter::length(double v) const { return formatNumber(v, decimal
 GCodeWriter::Written GCodeWriter::written(double v) const
 {
     Written w{length(v), 0.0, v};
-    w.value = std::strtod(w.text.c_str(), nullptr);
+    // The value as written: from_chars reads the text exactly as strtod
+    // would, without the locale and the copy.
+    std::from_chars(w.text.data(), w.text.data() + w.text.size(), w.value);
     return w;
 }
 
@@ -70,7 +73,11 @@ void GCodeWriter::block(const std::string& words)
         sequence_ = sequence_ == 0 || sequence_ + dialect_.sequenceIncrement > dialect_.sequenceMax
                         ? dialect_.sequenceStart
                         : sequence_ + dialect_.sequenceIncrement;
-        b = fmt::format("N{} {}", sequence_, words);
+        b.reserve(words.size() + 8);
+        b += 'N';
+        b += std::to_string(sequence_);
+        b += ' ';
+        b += words;
     } else {
         b = words;
     }
@@ -92,7 +99,11 @@ std::string GCodeWriter::axisWords(const Point3& to, bool forceXY)
     std::string w;
     for (int a = X; a <= Z; ++a) {
         Written now = written(v[a]);
-        if ((forceXY && a != Z) || !axis_[a] || axis_[a]->text != now.text) w += fmt::format(" {}{}", kAxisLetter[a], now.text);
+        if ((forceXY && a != Z) || !axis_[a] || axis_[a]->text != now.text) {
+            w += ' ';
+            w += kAxisLetter[a];
+            w += now.text;
+        }
         axis_[a] = std::move(now);
     }
     return w;
