@@ -3,7 +3,8 @@
 // paths, tape, sheet with its PDF, steps) at 100 / 1,000 / 10,000 units, each
 // in a child process of its own so that its peak memory (ru_maxrss) is its
 // alone. Prints time per unit and peak memory; time per unit should stay
-// flat (the overlap check and the unit order go through grids).
+// flat (the overlap check and the unit order go through grids). Last, the
+// export of bench/fine-pocket.taiwa (step-over 2 %, step-down 0.2 mm).
 #include "bench_job.h"
 
 #include "export/export.h"
@@ -84,5 +85,21 @@ int main(int argc, char** argv)
             return exportPlan(plan, dir.filePath(QString("out-%1").arg(units)).toStdString(), "job", {}).ok();
         }));
     }
+    // The fine pocket of the CAM comparison (bench/fine-pocket.taiwa): 100 x 60
+    // x 20, a 10 mm end mill, step-over 2 %, step-down 0.2 mm.
+    const std::string fine = TAIWA_BENCH_DIR "/fine-pocket.taiwa";
+    print("fine", 1, inChild([&] {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        QGuiApplication app(argc, argv);
+        const auto read = readJobFile(fine);
+        if (!read.job) return false;
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), library);
+        if (!plan.ok()) return false;
+        std::size_t moves = 0;
+        for (const Step& s : plan.steps) moves += s.path ? s.path->moves.size() : 0;
+        std::printf("fine pocket: %zu moves\n", moves);
+        std::fflush(stdout);
+        return exportPlan(plan, dir.filePath("fine").toStdString(), "fine-pocket", {}).ok();
+    }));
     return 0;
 }

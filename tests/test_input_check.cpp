@@ -172,9 +172,9 @@ private slots:
         // γ 1e-9 once planned 1e10 layers (bad_alloc after 84 s and 13.6 GB).
         Job j = job({m4()});
         j.technology.gamma = 1e-9;
-        EXPECT_ONLY(check(j), 0, "technology.gamma", "γ is 1e-09; it must lie between 0.05 and 2");
+        EXPECT_ONLY(check(j), 0, "technology.gamma", "γ is 1e-09; it must lie between 0.01 and 2");
         j.technology.gamma = 5;
-        EXPECT_ONLY(check(j), 0, "technology.gamma", "it must lie between 0.05 and 2");
+        EXPECT_ONLY(check(j), 0, "technology.gamma", "it must lie between 0.01 and 2");
         j = job({m4()});
         j.technology.alpha2 = 500;
         EXPECT_ONLY(check(j), 0, "technology.alpha2", "α2 is 500 mm; it must lie between 0 and 20 mm");
@@ -254,7 +254,16 @@ private slots:
         j.technology.gamma = 0;
         EXPECT_ONLY(check(j), 0, "technology.gamma", "γ = 0 must be greater than zero");
         j.technology = {};
-        j.technology.alpha3 = 0.5;  // not below alpha2 = 0.3
+        j.technology.alpha3 = 0.5;  // not below alpha2 = 0.3, but no unit finishes its walls in two stages
+        QVERIFY(check(j).empty());
+        M4Pocket twoStage = m4();
+        twoStage.wallFinish = 3;
+        M4Pocket another = m4(20, 90, 60, 40);
+        another.wallFinish = 3;
+        j.units = {{"", m4()}, {"", twoStage}};
+        j.units[1].module.as<M4Pocket>().corners = m4(130, 20, 50, 40).corners;
+        j.units.push_back({"", another});
+        // Checked where it is used, said once for the job.
         EXPECT_ONLY(check(j), 0, "technology.alpha3", "α3 = 0.5 mm must be smaller than the roughing wall allowance α2 = 0.3 mm");
     }
 };

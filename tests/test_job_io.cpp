@@ -177,7 +177,7 @@ private slots:
         Job empty;
         empty.name = "";
         Job overrides = handBuilt();
-        overrides.technology = {0.5, 0.25, 0.05, 0.1, 1.25};
+        overrides.technology = {0.5, 0.25, 0.05, 0.1, 1.25, 0.3};
         for (const Job& j : {handBuilt(), inch, empty, overrides}) {
             const std::string text = writeJob(j);
             const JobReadResult r = readJob(text);

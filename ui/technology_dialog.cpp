@@ -1,6 +1,8 @@
 // The technology data dialog.
 #include "ui/technology_dialog.h"
 
+#include <iterator>
+
 #include "job/job_check.h"
 #include "ui/number_text.h"
 
@@ -25,7 +27,7 @@ struct Entry {
     double TechnologyData::*value;
 };
 
-const Entry kEntries[5] = {
+const Entry kEntries[] = {
     {"alpha1", "α1", QT_TRANSLATE_NOOP("taiwa::ui::TechnologyDialog", "pilot hole stops this far above the floor"),
      true, &TechnologyOverrides::alpha1, &TechnologyData::alpha1},
     {"alpha2", "α2", QT_TRANSLATE_NOOP("taiwa::ui::TechnologyDialog", "wall allowance left by roughing"), true,
@@ -36,7 +38,12 @@ const Entry kEntries[5] = {
      &TechnologyOverrides::beta2, &TechnologyData::beta2},
     {"gamma", "γ", QT_TRANSLATE_NOOP("taiwa::ui::TechnologyDialog", "roughing layer depth / tool diameter"), false,
      &TechnologyOverrides::gamma, &TechnologyData::gamma},
+    {"stepOver", "ae/D", QT_TRANSLATE_NOOP("taiwa::ui::TechnologyDialog", "roughing step-over / tool diameter"), false,
+     &TechnologyOverrides::stepOver, &TechnologyData::stepOver},
 };
+constexpr int kFields = static_cast<int>(std::size(kEntries));
+static_assert(kFields == 6, "TechnologyDialog::edits_ holds one editor per entry");
+
 
 QString shown(double v) { return formatNumber(std::round(v * 1e5) / 1e5); }
 
@@ -53,7 +60,7 @@ TechnologyDialog::TechnologyDialog(const Job& job, QWidget* parent)
     grid->addWidget(new QLabel(tr("<b>Table (%1)</b>").arg(QString::fromStdString(job.material)), this), 0, 2);
     grid->addWidget(new QLabel(tr("<b>This job</b> (empty = table)"), this), 0, 3);
     grid->addWidget(new QLabel(tr("<b>In force</b>"), this), 0, 4);
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < kFields; ++i) {
         const Entry& e = kEntries[i];
         const int row = i + 1;
         auto* symbol = new QLabel(QStringLiteral("<b>%1</b>").arg(e.symbol), this);
@@ -91,7 +98,7 @@ TechnologyDialog::TechnologyDialog(const Job& job, QWidget* parent)
 std::optional<TechnologyOverrides> TechnologyDialog::overrides() const
 {
     TechnologyOverrides o;
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < kFields; ++i) {
         const QString text = edits_[i]->text().trimmed();
         if (text.isEmpty()) continue;
         const auto v = parseNumber(text);
@@ -105,14 +112,14 @@ void TechnologyDialog::refresh()
 {
     const auto o = overrides();
     error_->setText(o ? QString() : tr("not a number"));
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < kFields; ++i) {
         const bool bad = !edits_[i]->text().trimmed().isEmpty() && !parseNumber(edits_[i]->text());
         edits_[i]->setStyleSheet(bad ? "background: #ffd0d0;" : "");
     }
     Job j = job_;
     if (o) j.technology = *o;
     const auto inForce = jobTechnology(toMillimetres(j), TechnologyTable::builtIn());
-    for (int i = 0; i < 5; ++i) {
+    for (int i = 0; i < kFields; ++i) {
         const Entry& e = kEntries[i];
         if (!inForce) {
             effective_[i]->setText(QStringLiteral("–"));

@@ -25,8 +25,8 @@ public:
 private:
     void refresh();
     Job job_;
-    std::array<QLineEdit*, 5> edits_{};
-    std::array<QLabel*, 5> effective_{};
+    std::array<QLineEdit*, 6> edits_{};  // one per technology value (α1, α2, α3, β2, γ, step-over)
+    std::array<QLabel*, 6> effective_{};
     QLabel* error_;
 };
 

@@ -63,20 +63,22 @@ constexpr TechnologyRange kTechnologyRanges[] = {
     {"alpha2", "α2", 0.0, 20.0, "the wall allowance roughing leaves"},
     {"alpha3", "α3", 0.0, 20.0, "the wall allowance semi-finishing leaves"},
     {"beta2", "β2", 0.0, 20.0, "the floor allowance roughing leaves"},
-    {"gamma", "γ", 0.05, 2.0, "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
+    {"gamma", "γ", 0.01, 2.0, "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
+    {"stepOver", "the step-over", 0.01, 0.9,
+     "roughing's radial step-over as a multiple of the tool diameter; at 0.9 and above the rings leave cusps"},
 };
 
 // Overrides finite and within their ranges (lengths quoted in the job's unit, gamma as is).
 bool checkOverrides(const TechnologyOverrides& mm, LengthUnit shown, Diagnostics& out)
 {
     bool ok = true;
-    const std::optional<double> values[] = {mm.alpha1, mm.alpha2, mm.alpha3, mm.beta2, mm.gamma};
+    const std::optional<double> values[] = {mm.alpha1, mm.alpha2, mm.alpha3, mm.beta2, mm.gamma, mm.stepOver};
     for (std::size_t i = 0; i < std::size(values); ++i) {
         const auto& v = values[i];
         const TechnologyRange& range = kTechnologyRanges[i];
         if (!v) continue;
         const std::string field = std::string("technology.") + range.key;
-        const bool isGamma = std::string(range.key) == "gamma";
+        const bool isGamma = std::string(range.key) == "gamma" || std::string(range.key) == "stepOver";  // factors
         const auto shownOf = [&](double x) { return isGamma ? x : fromMm(x, shown); };
         const std::string unitText = isGamma ? "" : std::string(" ") + unitSymbol(shown);
         if (!std::isfinite(*v)) out.push_back(jobError(field, msg::notFinite(range.name))), ok = false;
@@ -113,8 +115,6 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         out.push_back(jobError("material", msg::unknownMaterial(job.material, known)));
     }
     if (!checkOverrides(mm.technology, shown, out)) tech.reset();
-    if (tech && tech->alpha3 >= tech->alpha2)
-        out.push_back(jobError("technology.alpha3", msg::alpha3NotBelowAlpha2({tech->alpha3, shown}, {tech->alpha2, shown})));
     const bool stockOk = checkStock(mm.stock, shown, out);
     // A work offset some controller has; whether the chosen one has it is
     // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).
@@ -142,6 +142,15 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     const Diagnostics overlaps = check::interferences(std::move(figures), shown);
     out.insert(out.end(), overlaps.begin(), overlaps.end());
 
+    // A job-level finding several units make (α3 against α2) is said once.
+    std::vector<std::pair<std::string, std::string>> seen;
+    std::erase_if(out, [&](const Diagnostic& d) {
+        if (d.unit) return false;
+        const std::pair<std::string, std::string> key{d.field, d.message};
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) return true;
+        seen.push_back(key);
+        return false;
+    });
     out = capped(std::move(out));
     if (!hasErrors(out)) c.technology = tech;
     return c;

@@ -28,7 +28,7 @@ const std::vector<std::string> kJobKeys{"format", "version",  "name",  "lengthUn
                                         "machine", "workOffset", "stock", "technology", "units"};
 const std::vector<std::string> kStockShapes{"block"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
-const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma"};
+const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma", "stepOver"};
 bool isBlank(std::string_view text)
 {
     return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
@@ -110,6 +110,7 @@ TechnologyOverrides readTechnology(const ObjectFields& job)
     t.alpha3 = f.optionalNumber("alpha3");
     t.beta2 = f.optionalNumber("beta2");
     t.gamma = f.optionalNumber("gamma");
+    t.stepOver = f.optionalNumber("stepOver");
     return t;
 }
 

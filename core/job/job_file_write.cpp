@@ -49,6 +49,7 @@ ordered jobJson(const Job& job)
         if (o.alpha3) t["alpha3"] = number(*o.alpha3);
         if (o.beta2) t["beta2"] = number(*o.beta2);
         if (o.gamma) t["gamma"] = number(*o.gamma);
+        if (o.stepOver) t["stepOver"] = number(*o.stepOver);
         j["technology"] = std::move(t);
     }
     j["units"] = ordered::array();

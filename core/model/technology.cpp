@@ -53,6 +53,7 @@ TechnologyData effective(const TechnologyData& base, const TechnologyOverrides& 
     if (o.alpha3) d.alpha3 = *o.alpha3;
     if (o.beta2) d.beta2 = *o.beta2;
     if (o.gamma) d.gamma = *o.gamma;
+    if (o.stepOver) d.stepOver = *o.stepOver;
     return d;
 }
 

@@ -15,13 +15,14 @@ struct TechnologyData {
     double alpha3 = 0.1;  // wall allowance left by the semi-finish pass (F = 3) [mm]
     double beta2 = 0.2;   // floor allowance left by roughing [mm]
     double gamma = 0.5;   // roughing layer depth = gamma x tool diameter [-]
+    double stepOver = 0.45;  // roughing's radial step-over = stepOver x tool diameter [-]
     friend bool operator==(const TechnologyData&, const TechnologyData&) = default;
 };
 
 // The per-job overrides: only the values the job sets, in the job's units.
 struct TechnologyOverrides {
-    std::optional<double> alpha1, alpha2, alpha3, beta2, gamma;
-    bool empty() const { return !alpha1 && !alpha2 && !alpha3 && !beta2 && !gamma; }
+    std::optional<double> alpha1, alpha2, alpha3, beta2, gamma, stepOver;
+    bool empty() const { return !alpha1 && !alpha2 && !alpha3 && !beta2 && !gamma && !stepOver; }
     friend bool operator==(const TechnologyOverrides&, const TechnologyOverrides&) = default;
 };
 

@@ -11,7 +11,7 @@
 namespace taiwa {
 
 struct PathParameters {
-    double stepOver = 0.45;        // radial step-over as a fraction of the tool diameter
+    // Roughing's radial step-over is technology data (TechnologyData::stepOver).
     double finishStepOver = 0.3;   // floor finishing step-over (fine), fraction of the tool diameter
     double safeZ = 5.0;            // rapid height above the stock top [mm]
     double clearance = 1.0;        // feed starts this far above the material [mm]

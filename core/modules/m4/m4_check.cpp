@@ -162,7 +162,11 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
     const ToolUse use = *toolUseFromCode(p.toolUse);
     const bool depthsOk = checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill,
                                                hasRoughing(use) || hasFloorFinishing(use), r);
-    if (outlineOk && taperOk && taperFits && depthsOk) checkToolRoom(p, tech, r);
+    // α3 is used only by a two-stage wall finish (F = 3): checked where it is used.
+    const bool twoStage = hasWallFinishing(use) && *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
+    if (twoStage && tech.alpha3 >= tech.alpha2)
+        r.job("technology.alpha3", msg::alpha3NotBelowAlpha2(r.len(tech.alpha3), r.len(tech.alpha2)));
+    if (outlineOk && taperOk && taperFits && depthsOk && !(twoStage && tech.alpha3 >= tech.alpha2)) checkToolRoom(p, tech, r);
     return report;
 }
 
