@@ -1,6 +1,7 @@
-// How the work grows with the job: `taiwa check` (read + checks + unit order)
-// at 100 / 1,000 / 10,000 / 100,000 units and the whole export (plan with
-// paths, tape, sheet with its PDF, steps) at 100 / 1,000 / 10,000 units, each
+// How the work grows with the job: `taiwa check` (read, checks, unit order,
+// decomposition, tool choice and step order) and the whole export (plan with
+// paths, tape, sheet with its PDF, steps) at 100 / 1,000 / 10,000 / 100,000
+// units, each
 // in a child process of its own so that its peak memory (ru_maxrss) is its
 // alone. Prints time per unit and peak memory; time per unit should stay
 // flat (the overlap check and the unit order go through grids). Last, the
@@ -21,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <string_view>
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -63,17 +65,26 @@ void print(const char* what, int units, const Measured& m)
 
 int main(int argc, char** argv)
 {
+    // `bench_scale --write-job N FILE` only writes the N-unit job, for profiling
+    // `taiwa check FILE` / `taiwa export FILE` by hand.
+    if (argc == 4 && std::string_view(argv[1]) == "--write-job")
+        return writeFileAtomically(argv[3], writeJob(bench::bigJob(std::atoi(argv[2])))) ? 0 : 1;
     const std::vector<Tool> library = defaultToolLibrary();
     QTemporaryDir dir;
     for (const int units : {100, 1'000, 10'000, 100'000}) {
         const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
         if (!writeFileAtomically(file, writeJob(bench::bigJob(units)))) return 1;
+        // What `taiwa check` does: read, input processing, decomposition,
+        // tool choice and step order, no paths.
         print("check", units, inChild([&] {
             const auto read = readJobFile(file);
-            return read.job && !hasErrors(checkJob(*read.job, TechnologyTable::builtIn(), library));
+            if (!read.job) return false;
+            PlanOptions stepsOnly;
+            stepsOnly.withToolPaths = false;
+            return planJob(*read.job, TechnologyTable::builtIn(), library, stepsOnly).ok();
         }));
     }
-    for (const int units : {100, 1'000, 10'000}) {
+    for (const int units : {100, 1'000, 10'000, 100'000}) {
         const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
         print("export", units, inChild([&] {
             qputenv("QT_QPA_PLATFORM", "offscreen");

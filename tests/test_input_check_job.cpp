@@ -9,6 +9,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 using namespace taiwa;
@@ -33,6 +34,22 @@ private slots:
         M2DPocket q = m2d();
         q.corner = {115, 20};
         EXPECT_ONLY(check(job({m4(), q})), 2, "corner", "overlaps the figure of unit 1");
+    }
+    // Turned figures meet along a slanted side, where the quick test of the
+    // sides' normals must tell touching (accepted) from 5 µm of overlap
+    // (refused) as the boolean does.
+    void turnedFiguresTouchingOrOverlapping()
+    {
+        const double a = 30 * std::numbers::pi / 180, c = std::cos(a), s = std::sin(a);
+        const auto square = [&](double shift) {
+            M4Pocket m = m4();
+            const Point2 o{60 + shift * c, 30 + shift * s};
+            const Point2 ex{40 * c, 40 * s}, ey{-40 * s, 40 * c};
+            m.corners = {{o, o + ex, o + ex + ey, o + ey}};
+            return m;
+        };
+        QVERIFY2(check(job({square(0), square(40)})).empty(), dump(check(job({square(0), square(40)}))));
+        EXPECT_ONLY(check(job({square(0), square(39.995)})), 2, "corners", "overlaps the figure of unit 1");
     }
     void roundedCornersKeepDiagonalNeighboursApart()
     {

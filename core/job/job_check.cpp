@@ -175,8 +175,10 @@ std::vector<int> machiningOrder(const Job& mmJob)
     std::vector<int> order;
     for (const int k : check::machiningOrder(centres)) order.push_back(units[static_cast<std::size_t>(k)]);
     // Units without a figure in the XY plane keep their place after those with one.
+    std::vector<bool> placed(mmJob.units.size(), false);
+    for (const int u : units) placed[static_cast<std::size_t>(u)] = true;
     for (std::size_t u = 0; u < mmJob.units.size(); ++u)
-        if (std::find(units.begin(), units.end(), static_cast<int>(u)) == units.end()) order.push_back(static_cast<int>(u));
+        if (!placed[u]) order.push_back(static_cast<int>(u));
     return order;
 }
 

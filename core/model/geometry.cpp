@@ -3,6 +3,7 @@
 #include "model/geometry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -115,23 +116,72 @@ std::vector<Point2> flatten(const Quad& qIn, double tolerance)
     return pts;
 }
 
+namespace {
+
+// Whether the inward offset by d (corners o + d w) keeps positive
+// orientation with every side pointing the way it did in p.
+bool offsetHolds(const std::array<Point2, 4>& p, const std::array<Point2, 4>& o0, const std::array<Point2, 4>& w,
+                 double d)
+{
+    std::array<Point2, 4> o{};
+    for (std::size_t i = 0; i < 4; ++i) o[i] = o0[i] + d * w[i];
+    if (!(signedArea(o) > 0.0)) return false;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (!(dot(p[(i + 1) % 4] - p[i], o[(i + 1) % 4] - o[i]) > 0.0)) return false;
+    return true;
+}
+
+}  // namespace
+
 double inscribedRadius(const std::array<Point2, 4>& pIn)
 {
-    // Bisection on the inward offset: the largest d whose offset quad keeps
-    // positive orientation and does not turn inside out.
-    const auto p = counterClockwise(pIn);
+    // The largest d whose inward offset keeps positive orientation and does
+    // not turn inside out. The offset's corners move along straight lines as
+    // d grows (corner(d) = corner(0) + d w), so each side's length along its
+    // direction is linear in d and the area quadratic: the answer is the
+    // first root among them. It runs for every unit and step of a job; a
+    // bisection stands behind it for the shapes where rounding makes the
+    // root disagree with the offset itself.
+    // About its own centre: the radius does not depend on where the quad is,
+    // its rounding does.
+    auto p = counterClockwise(pIn);
+    const Point2 centre = centroid(p);
+    for (auto& c : p) c = c - centre;
+    const Quad o0q = offsetInward(Quad{p, 0.0}, 0.0), o1q = offsetInward(Quad{p, 0.0}, 1.0);
+    const auto& o0 = o0q.corners;
+    std::array<Point2, 4> w{};
+    for (std::size_t i = 0; i < 4; ++i) w[i] = o1q.corners[i] - o0[i];
+
+    double first = std::numeric_limits<double>::infinity();
+    double a0 = 0, a1 = 0, a2 = 0;  // twice the area: a0 + a1 d + a2 d^2
+    for (std::size_t i = 0; i < 4; ++i) {
+        const std::size_t j = (i + 1) % 4;
+        const Point2 side = p[j] - p[i];
+        const double along0 = dot(side, o0[j] - o0[i]), rate = dot(side, w[j] - w[i]);
+        if (rate < 0 && along0 > 0) first = std::min(first, -along0 / rate);
+        a0 += cross(o0[i], o0[j]);
+        a1 += cross(o0[i], w[j]) + cross(w[i], o0[j]);
+        a2 += cross(w[i], w[j]);
+    }
+    // The smallest positive root of the area, if it comes first.
+    if (a2 != 0.0) {
+        const double disc = a1 * a1 - 4 * a2 * a0;
+        if (disc >= 0) {
+            const double q = -0.5 * (a1 + std::copysign(std::sqrt(disc), a1));
+            for (const double r : {q / a2, q != 0.0 ? a0 / q : -1.0})
+                if (r > 0) first = std::min(first, r);
+        }
+    } else if (a1 < 0) {
+        first = std::min(first, -a0 / a1);
+    }
+    if (std::isfinite(first) && offsetHolds(p, o0, w, first * (1 - 1e-9)) && !offsetHolds(p, o0, w, first * (1 + 1e-9)))
+        return first;
+
     double lo = 0.0, hi = 0.0;
     for (std::size_t i = 0; i < 4; ++i) hi = std::max(hi, distance(p[i], p[(i + 2) % 4]));
     for (int it = 0; it < 80; ++it) {
         const double mid = 0.5 * (lo + hi);
-        const Quad o = offsetInward(Quad{p, 0.0}, mid);
-        bool ok = signedArea(o.corners) > 0.0;
-        for (std::size_t i = 0; ok && i < 4; ++i) {
-            const Point2 a = p[(i + 1) % 4] - p[i];
-            const Point2 b = o.corners[(i + 1) % 4] - o.corners[i];
-            ok = dot(a, b) > 0.0;
-        }
-        (ok ? lo : hi) = mid;
+        (offsetHolds(p, o0, w, mid) ? lo : hi) = mid;
     }
     return lo;
 }

@@ -15,6 +15,7 @@
 #include <future>
 #include <string>
 #include <thread>
+#include <utility>
 
 namespace taiwa {
 
@@ -28,12 +29,12 @@ Diagnostic unitError(const Job& job, int unit, std::string field, std::string me
 
 }  // namespace
 
-Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const PlanOptions& options)
+Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options)
 {
     Plan plan;
-    plan.job = checked.job;
-    plan.mmJob = checked.mmJob;
-    plan.diagnostics = checked.diagnostics;
+    plan.job = std::move(checked.job);
+    plan.mmJob = std::move(checked.mmJob);
+    plan.diagnostics = std::move(checked.diagnostics);
     if (!plan.ok()) return plan;
     plan.technology = *checked.technology;
     plan.unitOrder = machiningOrder(plan.mmJob);
@@ -41,6 +42,7 @@ Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const 
     // Each unit through its module's door: decomposition, tool choice and
     // whatever the module settles between them.
     std::vector<Step> unordered;
+    unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
     for (const int u : plan.unitOrder) {
         const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
         const UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u};
@@ -49,6 +51,7 @@ Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const 
     }
     if (!plan.ok()) return plan;
 
+    plan.steps.reserve(unordered.size());
     for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
 
     int currentTool = 0;

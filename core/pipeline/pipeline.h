@@ -32,8 +32,9 @@ constexpr std::size_t kMaxPathThreads = 8;
 constexpr double kMaxPlanMoves = 10'000'000;
 
 // Plans a job already converted and checked (job/job_check.h): input errors
-// in it stop the plan with its steps empty.
-Plan planJob(const CheckedJob& checked, const std::vector<Tool>& library, const PlanOptions& options = {});
+// in it stop the plan with its steps empty. A checked job passed as a
+// temporary is moved into the plan, not copied.
+Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options = {});
 // Converts, checks and plans the job.
 Plan planJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library,
              const PlanOptions& options = {});

@@ -3,8 +3,10 @@
 // otherwise follows the units' machining order.
 #include "tools/tool_choice.h"
 
-#include <map>
-#include <set>
+#include <algorithm>
+#include <functional>
+#include <queue>
+#include <unordered_map>
 
 namespace taiwa {
 
@@ -38,33 +40,49 @@ int toolOf(const Step& s) { return s.tool ? s.tool->toolId : 0; }
 std::vector<int> orderSteps(const std::vector<Step>& steps)
 {
     const int n = static_cast<int>(steps.size());
-    std::map<int, std::vector<int>> byUnit;
-    for (int i = 0; i < n; ++i) byUnit[steps[static_cast<std::size_t>(i)].unit].push_back(i);
+    const auto at = [&](int i) -> const Step& { return steps[static_cast<std::size_t>(i)]; };
+    // The steps of each unit (units are few steps each: the pairs within a
+    // unit are all looked at).
+    int units = 0;
+    for (const Step& s : steps) units = std::max(units, s.unit + 1);
+    std::vector<std::vector<int>> byUnit(static_cast<std::size_t>(units));
+    for (int i = 0; i < n; ++i) byUnit[static_cast<std::size_t>(at(i).unit)].push_back(i);
     std::vector<int> waiting(static_cast<std::size_t>(n), 0);
     std::vector<std::vector<int>> next(static_cast<std::size_t>(n));
-    for (const auto& [unit, members] : byUnit)
+    for (const auto& members : byUnit)
         for (const int a : members)
             for (const int b : members)
-                if (dependsOn(steps[static_cast<std::size_t>(b)], steps[static_cast<std::size_t>(a)])) {
+                if (dependsOn(at(b), at(a))) {
                     next[static_cast<std::size_t>(a)].push_back(b);
                     ++waiting[static_cast<std::size_t>(b)];
                 }
-    std::set<int> ready;
-    std::map<int, std::set<int>> readyByTool;
+    // The ready steps, lowest index first: all of them, and those of each
+    // tool. A step taken through one heap stays in the other until it comes
+    // to the top there and is seen to be taken.
+    using Heap = std::priority_queue<int, std::vector<int>, std::greater<>>;
+    Heap ready;
+    std::unordered_map<int, Heap> readyByTool;
+    std::vector<bool> taken(static_cast<std::size_t>(n), false);
     const auto release = [&](int i) {
-        ready.insert(i);
-        readyByTool[toolOf(steps[static_cast<std::size_t>(i)])].insert(i);
+        ready.push(i);
+        readyByTool[toolOf(at(i))].push(i);
+    };
+    const auto top = [&](Heap& h) {
+        while (!h.empty() && taken[static_cast<std::size_t>(h.top())]) h.pop();
+        return h.empty() ? -1 : h.top();
     };
     for (int i = 0; i < n; ++i)
         if (waiting[static_cast<std::size_t>(i)] == 0) release(i);
     std::vector<int> order;
+    order.reserve(static_cast<std::size_t>(n));
     int current = -1;
-    while (!ready.empty()) {
-        auto same = readyByTool.find(current);
-        const int i = same != readyByTool.end() && !same->second.empty() ? *same->second.begin() : *ready.begin();
-        ready.erase(i);
-        current = toolOf(steps[static_cast<std::size_t>(i)]);
-        readyByTool[current].erase(i);
+    while (true) {
+        int i = -1;
+        if (const auto same = readyByTool.find(current); same != readyByTool.end()) i = top(same->second);
+        if (i < 0) i = top(ready);
+        if (i < 0) break;
+        taken[static_cast<std::size_t>(i)] = true;
+        current = toolOf(at(i));
         order.push_back(i);
         for (const int j : next[static_cast<std::size_t>(i)])
             if (--waiting[static_cast<std::size_t>(j)] == 0) release(j);

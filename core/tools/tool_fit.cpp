@@ -7,26 +7,49 @@
 
 namespace taiwa::tools {
 
+namespace {
+
+// The first thing that keeps `t` from the step, or None. Tool choice asks
+// this of every library tool for every step: no words are made for it.
+enum class Misfit { None, Type, Material, Taper, CornerRadius, CentreCutting, TooLarge, TooSmall, Flutes, Stickout };
+
+Misfit misfit(const Tool& t, const Fit& f, const std::string& material)
+{
+    if (t.type != f.type) return Misfit::Type;
+    if (!t.cuttingFor(material)) return Misfit::Material;
+    if (f.type == ToolType::TaperEndMill && !sameAngle(t.taperAngle, f.taperAngle)) return Misfit::Taper;
+    if (f.cornerRadius > 0 && !fitsInto(t.radius(), f.cornerRadius)) return Misfit::CornerRadius;
+    if (f.centreCutting && !t.centreCutting) return Misfit::CentreCutting;
+    if (!fitsInto(t.diameter, f.maxDiameter)) return Misfit::TooLarge;
+    if (!fitsInto(f.minDiameter, t.diameter)) return Misfit::TooSmall;
+    if (t.fluteLength > 0 && !fitsInto(f.depth, t.fluteLength)) return Misfit::Flutes;
+    if (t.stickout > 0 && !fitsInto(f.reach, t.stickout)) return Misfit::Stickout;
+    return Misfit::None;
+}
+
+}  // namespace
+
 std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
 {
-    if (t.type != f.type) return fmt::format("it is a {}, the step needs a {}", toString(t.type), toString(f.type));
-    if (!t.cuttingFor(material)) return "it has no cutting data for " + material;
-    if (f.type == ToolType::TaperEndMill && !sameAngle(t.taperAngle, f.taperAngle))
-        return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
-    if (f.cornerRadius > 0 && !fitsInto(t.radius(), f.cornerRadius))
+    switch (misfit(t, f, material)) {
+    case Misfit::None: return {};
+    case Misfit::Type: return fmt::format("it is a {}, the step needs a {}", toString(t.type), toString(f.type));
+    case Misfit::Material: return "it has no cutting data for " + material;
+    case Misfit::Taper: return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
+    case Misfit::CornerRadius:
         return fmt::format("its radius {:g} mm is larger than the corner radius {:g} mm", t.radius(), f.cornerRadius);
-    if (f.centreCutting && !t.centreCutting) return "it does not cut at its centre, so it cannot ramp in without a pilot hole";
-    if (!fitsInto(t.diameter, f.maxDiameter)) return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
-    if (!fitsInto(f.minDiameter, t.diameter))
+    case Misfit::CentreCutting: return "it does not cut at its centre, so it cannot ramp in without a pilot hole";
+    case Misfit::TooLarge: return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
+    case Misfit::TooSmall:
         return fmt::format("its diameter {:g} mm is smaller than the {:g} mm needed", t.diameter, f.minDiameter);
-    if (t.fluteLength > 0 && !fitsInto(f.depth, t.fluteLength))
-        return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
-    if (t.stickout > 0 && !fitsInto(f.reach, t.stickout))
+    case Misfit::Flutes: return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
+    case Misfit::Stickout:
         return fmt::format("its stick-out ({:g} mm) is shorter than the depth {:g} mm", t.stickout, f.reach);
+    }
     return {};
 }
 
-bool fits(const Tool& t, const Fit& f, const std::string& material) { return whyNot(t, f, material).empty(); }
+bool fits(const Tool& t, const Fit& f, const std::string& material) { return misfit(t, f, material) == Misfit::None; }
 
 const Tool* largestFitting(const std::vector<Tool>& library, const Fit& f, const std::string& material)
 {
