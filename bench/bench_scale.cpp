@@ -1,11 +1,13 @@
 // How the work grows with the job: `taiwa check` (read, checks, unit order,
 // decomposition, tool choice and step order) and the whole export (plan with
 // paths, tape, sheet with its PDF, steps) at 100 / 1,000 / 10,000 / 100,000
-// units, each
+// units (100,000 units hold about 35 million moves: refused by the job's
+// move budget, which the figure shows), each
 // in a child process of its own so that its peak memory (ru_maxrss) is its
 // alone. Prints time per unit and peak memory; time per unit should stay
 // flat (the overlap check and the unit order go through grids). Last, the
 // export of bench/fine-pocket.taiwa (step-over 2 %, step-down 0.2 mm).
+#include "bench_child.h"
 #include "bench_job.h"
 
 #include "export/export.h"
@@ -18,46 +20,24 @@
 #include <QGuiApplication>
 #include <QTemporaryDir>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <string_view>
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 using namespace taiwa;
 
 namespace {
 
-struct Measured {
-    double seconds = 0;
-    long peakKb = 0;
-    bool ok = false;
-};
+// The export child's exit code when the plan is refused for its size.
+constexpr int kRefused = 3;
 
-// Runs `work` in a child; its wall time and peak resident memory.
-Measured inChild(const std::function<bool()>& work)
-{
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid == 0) ::_exit(work() ? 0 : 1);
-    int status = 0;
-    rusage usage{};
-    ::wait4(pid, &status, 0, &usage);
-    Measured m;
-    m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m.peakKb = usage.ru_maxrss;
-    m.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    return m;
-}
-
-void print(const char* what, int units, const Measured& m)
+void print(const char* what, int units, const bench::Measured& m)
 {
     std::printf("%-8s %7d units  %9.3f s  %8.1f us/unit  peak %7.1f MB  %s\n", what, units, m.seconds,
-                m.seconds / units * 1e6, m.peakKb / 1024.0, m.ok ? "ok" : "FAILED");
+                m.seconds / units * 1e6, m.peakKb / 1024.0,
+                m.ok ? "ok" : m.exitCode == kRefused ? "refused: over the job's move budget (kMaxPlanMoves)" : "FAILED");
     std::fflush(stdout);
 }
 
@@ -76,7 +56,7 @@ int main(int argc, char** argv)
         if (!writeFileAtomically(file, writeJob(bench::bigJob(units)))) return 1;
         // What `taiwa check` does: read, input processing, decomposition,
         // tool choice and step order, no paths.
-        print("check", units, inChild([&] {
+        print("check", units, bench::inChild([&] {
             const auto read = readJobFile(file);
             if (!read.job) return false;
             PlanOptions stepsOnly;
@@ -86,20 +66,24 @@ int main(int argc, char** argv)
     }
     for (const int units : {100, 1'000, 10'000, 100'000}) {
         const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
-        print("export", units, inChild([&] {
+        print("export", units, bench::inChild([&] {
             qputenv("QT_QPA_PLATFORM", "offscreen");
             QGuiApplication app(argc, argv);
             const auto read = readJobFile(file);
             if (!read.job) return false;
             const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), library);
-            if (!plan.ok()) return false;
+            if (!plan.ok()) {
+                for (const auto& d : plan.diagnostics)
+                    if (d.severity == Severity::Error && d.message.find("moves") != std::string::npos) ::_exit(kRefused);
+                return false;
+            }
             return exportPlan(plan, dir.filePath(QString("out-%1").arg(units)).toStdString(), "job", {}).ok();
         }));
     }
     // The fine pocket of the CAM comparison (bench/fine-pocket.taiwa): 100 x 60
     // x 20, a 10 mm end mill, step-over 2 %, step-down 0.2 mm.
     const std::string fine = TAIWA_BENCH_DIR "/fine-pocket.taiwa";
-    print("fine", 1, inChild([&] {
+    print("fine", 1, bench::inChild([&] {
         qputenv("QT_QPA_PLATFORM", "offscreen");
         QGuiApplication app(argc, argv);
         const auto read = readJobFile(fine);

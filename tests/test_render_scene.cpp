@@ -230,6 +230,31 @@ private slots:
         QVERIFY(!s.pickMove(5, 5, kW, kH));
     }
 
+    // Merged, the steps have no geometry of their own until one is selected
+    // or highlighted: picking goes through the merged points and finds the
+    // same move, on the last copy of the step when nothing is selected and
+    // on the selected copy otherwise.
+    void pickingAMergedPlan()
+    {
+        Plan big = plan_;
+        big.steps.clear();
+        for (int i = 0; i < 250; ++i) big.steps.insert(big.steps.end(), plan_.steps.begin(), plan_.steps.begin() + 2);
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(big));
+        s.setView(ViewPreset::Top, static_cast<double>(kW) / kH);
+        const auto at = s.toPixel({55, 40, -5}, kW, kH);
+        const int last = kRoughing + 2 * 249;
+        QCOMPARE(s.pickMove(at[0], at[1] + 3, kW, kH), (MoveRef{last, kSlotMove}));
+        s.setSelectedStep(kRoughing + 2);
+        QCOMPARE(s.pickMove(at[0], at[1] + 3, kW, kH), (MoveRef{kRoughing + 2, kSlotMove}));
+        const auto rapid = s.toPixel({82.5, 55, 5}, kW, kH);
+        QCOMPARE(s.pickMove(rapid[0], rapid[1], kW, kH), (MoveRef{kRoughing + 2, kRapidMove}));
+        s.highlightMove(kRoughing + 4, kSlotMove);  // a step not selected: its geometry made for the highlight
+        QCOMPARE(s.highlightedMove(), (MoveRef{kRoughing + 4, kSlotMove}));
+        const auto b = s.bounds();
+        QVERIFY(b[4] < -5 && b[5] >= 5);  // the paths' depth and clearance height, from the merged points
+    }
+
     void missingDisplayIsAnError()
     {
         const QByteArray display = qgetenv("DISPLAY");

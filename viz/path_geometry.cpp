@@ -18,28 +18,61 @@ vtkSmartPointer<vtkPolyData> linesOn(vtkPoints* points, vtkCellArray* lines)
 }
 }  // namespace
 
-PathGeometry makePathGeometry(const ToolPath& path, double chordTolerance)
+namespace {
+
+// Appends the path's pieces: its points after those already in `points`,
+// one line cell a piece, and the move of each piece.
+void appendPath(const ToolPath& path, double chordTolerance, vtkPoints* points, vtkCellArray* feeds,
+                vtkCellArray* rapids, std::vector<int>& moveOfPiece)
 {
     const std::vector<sim::PathPiece> pieces = sim::flattenPath(path, chordTolerance);
+    const vtkIdType base = points->GetNumberOfPoints();
+    points->InsertNextPoint(pieces.empty() ? path.start.x : pieces[0].from.x,
+                            pieces.empty() ? path.start.y : pieces[0].from.y,
+                            pieces.empty() ? path.start.z : pieces[0].from.z);
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const auto& p = pieces[k];
+        points->InsertNextPoint(p.to.x, p.to.y, p.to.z);
+        const vtkIdType ids[2] = {base + static_cast<vtkIdType>(k), base + static_cast<vtkIdType>(k + 1)};
+        (p.rapid ? rapids : feeds)->InsertNextCell(2, ids);
+        moveOfPiece.push_back(p.move);
+    }
+}
+
+}  // namespace
+
+PathGeometry makePathGeometry(const ToolPath& path, double chordTolerance)
+{
     PathGeometry g;
     g.points = vtkSmartPointer<vtkPoints>::New();
     g.points->SetDataTypeToDouble();
-    g.points->SetNumberOfPoints(static_cast<vtkIdType>(pieces.size() + 1));
-    g.points->SetPoint(0, path.start.x, path.start.y, path.start.z);
     auto feeds = vtkSmartPointer<vtkCellArray>::New();
     auto rapids = vtkSmartPointer<vtkCellArray>::New();
-    g.moveOfPiece.reserve(pieces.size());
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-        const auto& p = pieces[k];
-        if (k == 0) g.points->SetPoint(0, p.from.x, p.from.y, p.from.z);
-        g.points->SetPoint(static_cast<vtkIdType>(k + 1), p.to.x, p.to.y, p.to.z);
-        const vtkIdType ids[2] = {static_cast<vtkIdType>(k), static_cast<vtkIdType>(k + 1)};
-        (p.rapid ? rapids : feeds)->InsertNextCell(2, ids);
-        g.moveOfPiece.push_back(p.move);
-    }
+    appendPath(path, chordTolerance, g.points, feeds, rapids, g.moveOfPiece);
     g.feeds = linesOn(g.points, feeds);
     g.rapids = linesOn(g.points, rapids);
     return g;
+}
+
+MergedPaths makeMergedPaths(const std::vector<const ToolPath*>& paths, double chordTolerance)
+{
+    MergedPaths m;
+    m.points = vtkSmartPointer<vtkPoints>::New();
+    m.points->SetDataTypeToDouble();
+    auto feeds = vtkSmartPointer<vtkCellArray>::New();
+    auto rapids = vtkSmartPointer<vtkCellArray>::New();
+    for (const ToolPath* path : paths) {
+        const vtkIdType first = m.points->GetNumberOfPoints();
+        m.first.push_back(first);
+        if (path) {
+            appendPath(*path, chordTolerance, m.points, feeds, rapids, m.moveOfPiece);
+            m.moveOfPiece.push_back(-1);  // the step's last point starts no piece
+        }
+        m.count.push_back(m.points->GetNumberOfPoints() - first);
+    }
+    m.feeds = linesOn(m.points, feeds);
+    m.rapids = linesOn(m.points, rapids);
+    return m;
 }
 
 vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move)

@@ -24,6 +24,18 @@ struct PathGeometry {
 // Arcs sampled within `chordTolerance` mm.
 PathGeometry makePathGeometry(const ToolPath& path, double chordTolerance = 0.01);
 
+// The paths of many steps in one point list and two line sets (a large
+// plan's scene draws them as two actors and makes no VTK object per step).
+// Step k's points are [first[k], first[k] + count[k]); the piece from point
+// i to point i + 1 belongs to move moveOfPiece[i] of its step's path.
+struct MergedPaths {
+    vtkSmartPointer<vtkPoints> points;
+    vtkSmartPointer<vtkPolyData> feeds, rapids;
+    std::vector<vtkIdType> first, count;  // per step; count 0 for a step without a path
+    std::vector<int> moveOfPiece;         // per point
+};
+MergedPaths makeMergedPaths(const std::vector<const ToolPath*>& paths, double chordTolerance = 0.01);
+
 // The pieces of one move only, as lines (the highlight).
 vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move);
 

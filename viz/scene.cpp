@@ -7,7 +7,6 @@
 #include "viz/palette.h"
 #include "viz/solids.h"
 
-#include <vtkAppendPolyData.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
@@ -107,6 +106,7 @@ void Scene::clear()
 {
     renderer_->RemoveAllViewProps();
     steps_.clear();
+    merged_ = {};
     allFeeds_ = allRapids_ = nullptr;
     shownStep_ = -1;
     simulation_.reset();
@@ -135,34 +135,26 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
-    const bool merged = steps_.size() > kMergeAbove;
-    auto feeds = vtkSmartPointer<vtkAppendPolyData>::New(), rapids = vtkSmartPointer<vtkAppendPolyData>::New();
-    for (int k = 0; k < n; ++k) {
-        const Step& step = plan_->steps[k];
-        if (!step.path) continue;
-        StepActors& a = steps_[k];
-        a.geometry = makePathGeometry(*step.path);
-        a.feeds = lineActor(a.geometry.feeds, palette::kFeed, 2.0);
-        a.rapids = lineActor(a.geometry.rapids, palette::kRapid, 1.0);
-        if (merged) {
-            feeds->AddInputData(a.geometry.feeds);
-            rapids->AddInputData(a.geometry.rapids);
-            continue;
-        }
-        // Added without AddActor's search of every prop already there (it
-        // made a large job's scene quadratic: 33 s for 3,000 units).
-        for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
-            renderer_->GetViewProps()->AddItem(actor);
-            actor->AddConsumer(renderer_);
-        }
-    }
-    if (merged) {
-        feeds->Update();
-        rapids->Update();
-        allFeeds_ = lineActor(feeds->GetOutput(), palette::kFeed, 2.0);
-        allRapids_ = lineActor(rapids->GetOutput(), palette::kRapid, 1.0);
+    if (steps_.size() > kMergeAbove) {
+        std::vector<const ToolPath*> paths;
+        paths.reserve(steps_.size());
+        for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
+        merged_ = makeMergedPaths(paths);
+        allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
+        allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
         renderer_->AddActor(allFeeds_);
         renderer_->AddActor(allRapids_);
+    } else {
+        for (int k = 0; k < n; ++k) {
+            const StepActors& a = stepActors(k);
+            if (!a.feeds) continue;
+            // Added without AddActor's search of every prop already there (it
+            // made a large job's scene quadratic: 33 s for 3,000 units).
+            for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
+                renderer_->GetViewProps()->AddItem(actor);
+                actor->AddConsumer(renderer_);
+            }
+        }
     }
 
     const double axisLength = niceLength(std::max(s.width, s.length));
@@ -188,6 +180,18 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     updateEmphasis();
     updateTool();
     updateHighlight();
+}
+
+Scene::StepActors& Scene::stepActors(int k)
+{
+    StepActors& a = steps_[static_cast<std::size_t>(k)];
+    const Step& step = plan_->steps[static_cast<std::size_t>(k)];
+    if (!a.feeds && step.path) {
+        a.geometry = makePathGeometry(*step.path);
+        a.feeds = lineActor(a.geometry.feeds, palette::kFeed, 2.0);
+        a.rapids = lineActor(a.geometry.rapids, palette::kRapid, 1.0);
+    }
+    return a;
 }
 
 void Scene::setSelectedStep(int index)
@@ -231,8 +235,8 @@ void Scene::updateEmphasis()
             renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].rapids);
         }
         shownStep_ = -1;
-        if (selected_ >= 0 && steps_[static_cast<std::size_t>(selected_)].feeds) {
-            StepActors& a = steps_[static_cast<std::size_t>(selected_)];
+        if (selected_ >= 0 && stepActors(selected_).feeds) {
+            StepActors& a = stepActors(selected_);
             setColour(a.feeds, palette::kFeed);
             a.feeds->GetProperty()->SetLineWidth(3.0f);
             renderer_->AddActor(a.feeds);
@@ -302,7 +306,7 @@ void Scene::updateHighlight()
     if (highlight_) renderer_->RemoveActor(highlight_);
     highlight_ = nullptr;
     const int k = highlighted_.step;
-    if (k < 0 || k >= static_cast<int>(steps_.size()) || !steps_[k].feeds) return;
+    if (k < 0 || k >= static_cast<int>(steps_.size()) || !stepActors(k).feeds) return;
     highlight_ = lineActor(movePieces(steps_[k].geometry, highlighted_.move), palette::kHighlight, 5.0);
     renderer_->AddActor(highlight_);
 }
@@ -313,10 +317,14 @@ std::array<double, 6> Scene::bounds() const
     if (!plan_) return b;
     const Stock& s = plan_->mmJob.stock;
     b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};
-    for (const auto& a : steps_) {
-        if (!a.geometry.points) continue;
+    std::vector<vtkPoints*> pointSets;
+    if (merged_.points) pointSets.push_back(merged_.points);
+    for (const auto& a : steps_)
+        if (a.geometry.points) pointSets.push_back(a.geometry.points);
+    for (vtkPoints* points : pointSets) {
+        if (points->GetNumberOfPoints() == 0) continue;
         double pb[6];
-        a.geometry.points->GetBounds(pb);
+        points->GetBounds(pb);
         for (int i = 0; i < 6; i += 2) {
             b[i] = std::min(b[i], pb[i]);
             b[i + 1] = std::max(b[i + 1], pb[i + 1]);
@@ -347,25 +355,33 @@ std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height
     std::optional<MoveRef> best;
     double bestDistance = tolerance;
     vtkMatrix4x4* m = worldToView(width, height);
-    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
-        const StepActors& a = steps_[k];
-        if (!a.geometry.points || (selected_ >= 0 && selected_ != k)) continue;
+    // Step k's points and the move of the piece starting at each.
+    const auto pick = [&](int k, vtkPoints* points, vtkIdType first, vtkIdType count, const int* moveOfPiece) {
         double prev[2] = {0, 0};
-        for (vtkIdType i = 0; i < a.geometry.points->GetNumberOfPoints(); ++i) {
+        for (vtkIdType i = 0; i < count; ++i) {
             double p[3];
-            a.geometry.points->GetPoint(i, p);
+            points->GetPoint(first + i, p);
             const auto px = project(m, p[0], p[1], p[2], width, height);
             const double cur[2] = {px[0], px[1]};
             if (i > 0) {
                 const double d = segmentDistance(x, y, prev, cur);
                 if (d <= bestDistance) {
                     bestDistance = d;
-                    best = MoveRef{k, a.geometry.moveOfPiece[static_cast<std::size_t>(i - 1)]};
+                    best = MoveRef{k, moveOfPiece[i - 1]};
                 }
             }
             prev[0] = cur[0];
             prev[1] = cur[1];
         }
+    };
+    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
+        if (selected_ >= 0 && selected_ != k) continue;
+        const StepActors& a = steps_[static_cast<std::size_t>(k)];
+        if (a.geometry.points)
+            pick(k, a.geometry.points, 0, a.geometry.points->GetNumberOfPoints(), a.geometry.moveOfPiece.data());
+        else if (merged_.points && merged_.count[static_cast<std::size_t>(k)] > 0)
+            pick(k, merged_.points, merged_.first[static_cast<std::size_t>(k)], merged_.count[static_cast<std::size_t>(k)],
+                 merged_.moveOfPiece.data() + merged_.first[static_cast<std::size_t>(k)]);
     }
     return best;
 }

@@ -86,6 +86,9 @@ private:
         PathGeometry geometry;
         vtkSmartPointer<vtkActor> feeds, rapids;
     };
+    // Step k's own geometry and actors (made on first use in merged mode);
+    // null actors for a step without a path.
+    StepActors& stepActors(int k);
     vtkMatrix4x4* worldToView(int width, int height) const;
     void clear();
     void updateEmphasis();
@@ -99,8 +102,11 @@ private:
     std::vector<StepActors> steps_;
     // A plan of more than kMergeAbove steps is drawn as two actors (all feeds,
     // all rapids) and only the selected step's own: thousands of actors cost
-    // the renderer far more than their segments.
+    // the renderer far more than their segments, and making and freeing a
+    // few VTK objects per step took longer than drawing them (3,000 units:
+    // 11,600 steps).
     static constexpr std::size_t kMergeAbove = 400;
+    MergedPaths merged_;  // merged mode only
     vtkSmartPointer<vtkActor> allFeeds_, allRapids_;
     int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_;
