@@ -28,10 +28,16 @@ private slots:
         QVERIFY(count(ToolType::FlatEndMill) >= 10);
         QVERIFY(count(ToolType::BallEndMill) >= 5);
         QVERIFY(count(ToolType::FaceMill) == 1);
+        QVERIFY(count(ToolType::Probe) == 1);  // for work-centre probing: a ball, no cutting data, no wear
         for (const double angle : {1.0, 2.0, 3.0, 5.0, 7.0, 10.0})
             QVERIFY(std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.type == ToolType::TaperEndMill && t.taperAngle == angle; }));
         std::set<int> ids;
         for (const auto& t : tools) {
+            if (t.type == ToolType::Probe) {
+                QVERIFY(t.cutting.empty() && t.flutes == 0 && t.diameter > 0);
+                QVERIFY2(ids.insert(t.id).second, "duplicate tool id");
+                continue;
+            }
             QVERIFY2(t.lifeMinutes >= 60 && t.lifeMinutes <= 240 && t.usedMinutes == 0, t.name.c_str());
             QVERIFY2(t.stickout > t.fluteLength && !t.holder.empty(), t.name.c_str());
             if (t.type == ToolType::FlatEndMill)

@@ -51,9 +51,11 @@ public:
     // Reports every key not in `known` as an unknown field of `owner`.
     void rejectUnknown(const std::string& owner, const std::vector<std::string>& known) const;
 
-private:
+    // One value of an array (reported at `field`, "touches[2]").
     std::optional<double> numberValue(const nlohmann::json& v, const std::string& field) const;
     std::optional<int> wholeValue(const nlohmann::json& v, const std::string& field) const;
+
+private:
 
     const nlohmann::json& object_;
     Place place_;

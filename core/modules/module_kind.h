@@ -14,6 +14,7 @@
 #include "model/geometry.h"
 #include "model/job.h"
 #include "model/module.h"
+#include "model/setup.h"
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
@@ -73,6 +74,13 @@ public:
 
     // The station's form, top to bottom (the tab order).
     virtual const std::vector<FormField>& fields() const = 0;
+    // What a setup unit hands on besides steps (probing: the measured centre
+    // and the probing cycle); nothing for machining units. Inputs are checked
+    // and in mm.
+    virtual std::optional<WorkSetup> setup(const ModuleInput& /*mm*/, const UnitPlanContext& /*ctx*/) const
+    {
+        return std::nullopt;
+    }
 };
 
 // Adapter: implementations work on their own input struct.

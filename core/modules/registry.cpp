@@ -7,7 +7,8 @@
 
 #define TAIWA_MODULES(X) \
     X(m4)                \
-    X(m2d)
+    X(m2d)               \
+    X(probe)
 
 namespace taiwa {
 

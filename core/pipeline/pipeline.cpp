@@ -47,8 +47,13 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
         const UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u};
         auto steps = moduleKind(module).plan(module, ctx, plan.diagnostics);
+        if (auto setup = moduleKind(module).setup(module, ctx)) {
+            setup->workOffset = plan.job.workOffset;
+            plan.setups.push_back(std::move(*setup));
+        }
         unordered.insert(unordered.end(), std::make_move_iterator(steps.begin()), std::make_move_iterator(steps.end()));
     }
+    std::sort(plan.setups.begin(), plan.setups.end(), [](const WorkSetup& a, const WorkSetup& b) { return a.unit < b.unit; });
     if (!plan.ok()) return plan;
 
     plan.steps.reserve(unordered.size());

@@ -106,6 +106,12 @@ std::vector<Tool> defaultToolLibrary()
     // T60: face mill.
     tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 240));
     tools.back().centreCutting = false;  // inserts on the rim only: it cannot plunge
+    // T90: touch probe for work-centre probing, 4 mm ruby ball; its length
+    // is set to the ball's lowest point. It cuts nothing: no cutting data.
+    Tool probe = make(90, ToolType::Probe, 4, "Touch probe, 4 mm ruby ball", 0, 50, "HSK63 probe body", 0, 0);
+    probe.cutting.clear();
+    probe.centreCutting = false;
+    tools.push_back(probe);
     return tools;
 }
 

@@ -232,7 +232,8 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         };
         if (!(t.diameter > 0) || !std::isfinite(t.diameter))
             return bad("diameter " + fmt::format("{:g}", t.diameter) + " mm must be greater than zero");
-        if (t.flutes < 1) return bad("flutes " + std::to_string(t.flutes) + " must be at least 1");
+        if (t.flutes < 1 && t.type != ToolType::Probe)  // a probe cuts nothing
+            return bad("flutes " + std::to_string(t.flutes) + " must be at least 1");
         for (const auto& cd : t.cutting) {
             if (!(cd.surfaceSpeed > 0) || !std::isfinite(cd.surfaceSpeed))
                 return bad("cutting speed for " + cd.material + " " + fmt::format("{:g}", cd.surfaceSpeed) +
