@@ -6,6 +6,7 @@
 // samples canonically (review the diff before committing).
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "modules/probe/probe.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "support/support.h"
@@ -154,6 +155,9 @@ private slots:
                     seen.insert("M4 F" + std::to_string(m->wallFinish));
                     seen.insert("M4 H" + std::to_string(m->pilotHole));
                     if (m->taper > 0) seen.insert("M4 taper F" + std::to_string(m->wallFinish));
+                } else if (const auto* p = (u.module).getIf<ProbeUnit>()) {
+                    seen.insert("PROBE shape" + std::to_string(p->shape) + " where" + std::to_string(p->where));
+                    seen.insert(p->x[1] ? "PROBE touches" : "PROBE cycle only");
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -163,7 +167,8 @@ private slots:
         }
         QVERIFY(inch);
         for (const char* want : {"M4 U1", "M4 U6", "M4 U7", "M4 U8", "M4 U9", "M4 F1", "M4 F2", "M4 F3", "M4 H0", "M4 H9",
-                                 "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2"})
+                                 "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
+                                 "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only"})
             QVERIFY2(seen.count(want), want);
     }
 

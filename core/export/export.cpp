@@ -5,6 +5,7 @@
 #include "export/sheet_pdf.h"
 #include "io/job_io.h"
 #include "pipeline/pipeline.h"
+#include "post/probe_program.h"
 #include "post/post.h"
 #include "sheet/sheet.h"
 
@@ -118,10 +119,24 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     auto set = FileSet::open(outDir, stem);
     if (!set) return Failure{set.error() + "; nothing was changed in " + outDir};
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
-    const std::pair<const char*, std::string_view> files[] = {
+    std::vector<std::pair<std::string, std::string>> files = {
         {".nc", program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
     };
+    // Probing units: the setting program from the touches entered (when
+    // there are) and the probing cycle, STEM.u<unit>.setting.nc and
+    // STEM.u<unit>.probe.nc, with O-numbers after the tape's.
+    int next = options.programNumber;
+    const auto oNumber = [&] { return (next++) % 9999 + 1; };
+    for (const WorkSetup& w : plan.setups) {
+        const std::string unit = ".u" + std::to_string(w.unit + 1);
+        if (w.measured) {
+            PostOptions o = postOptions(plan, options.dialect, LengthUnit::Millimetre, oNumber(), stem);
+            files.emplace_back(unit + ".setting.nc", settingProgram(w, o));
+        }
+        PostOptions o = postOptions(plan, options.dialect, LengthUnit::Millimetre, oNumber(), stem);
+        files.emplace_back(unit + ".probe.nc", probingProgram(w, o));
+    }
     for (const auto& [suffix, bytes] : files)
         if (auto written = set->add(stem + suffix, bytes); !written)
             return Failure{written.error() + "; nothing was changed in " + outDir};

@@ -168,6 +168,10 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     page.title(c.title);
     page.fields(c.fields);
     page.paragraph(c.setup);
+    if (!c.workCentre.rows.empty()) {
+        page.heading("Work centre");
+        page.table(c.workCentre);
+    }
     page.heading("Process steps");
     page.table(c.steps);
     page.heading("Tools");

@@ -20,9 +20,8 @@ namespace {
 enum Axis { X, Y, Z };
 constexpr char kAxisLetter[] = {'X', 'Y', 'Z'};
 
-// Printable ASCII only: parentheses (neither controller allows nested
-// comments), '%' (it ends a FANUC tape, even inside a comment) and control
-// characters become spaces, a non-ASCII (UTF-8) character becomes one '?'.
+}  // namespace
+
 std::string commentText(const std::string& text, bool upper)
 {
     std::string t;
@@ -37,8 +36,6 @@ std::string commentText(const std::string& text, bool upper)
     }
     return t;
 }
-
-}  // namespace
 
 GCodeWriter::GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset)
     : dialect_(dialect), units_(units), workOffset_(std::move(workOffset)),

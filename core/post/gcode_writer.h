@@ -16,6 +16,12 @@
 
 namespace taiwa::post {
 
+// The text of a comment as both controllers take it: printable ASCII only;
+// parentheses (neither controller allows nested comments), '%' (it ends a
+// FANUC tape, even inside a comment) and control characters become spaces,
+// a non-ASCII (UTF-8) character becomes one '?'.
+std::string commentText(const std::string& text, bool upper);
+
 class GCodeWriter final : public MachineSink {
 public:
     // workOffset: the words selecting the work offset, as workOffsetWords gives them.

@@ -35,7 +35,34 @@ Content content(const Plan& plan, const SheetOptions& o)
                    ? std::string()
                    : fmt::format(" (stock corner at X{} Y{})", len(job.stock.x), len(job.stock.y))) +
               ", Z0 on the top face.";
+    if (!plan.setups.empty())
+        c.setup = fmt::format("Setup: work offset {} at the centre of the workpiece, found by probing (unit {}); Z0 on "
+                              "its top face.",
+                              job.workOffset, plan.setups.front().unit + 1);
     std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
+    // Probing units: what the touches entered measured (the probing cycle
+    // measures again on the machine and prints it there).
+    c.workCentre.headers = {"Unit", "Workpiece", "Probe", "Centre X " + us, "Centre Y " + us, "Top Z " + us, "Size " + us,
+                            "Turned deg", "Residuals " + us};
+    c.workCentre.numeric = {true, false, false, true, true, true, false, true, false};
+    c.workCentre.widths = {3, 10, 6, 7, 7, 6, 10, 5, 26};
+    for (const WorkSetup& w : plan.setups) {
+        const std::string shape = w.round ? (w.inside ? "round bore" : "round boss") : (w.inside ? "rectangular pocket" : "rectangular block");
+        const std::string probe = fmt::format("T{} ball {}", w.tool, len(2 * w.ballRadius));
+        if (!w.measured) {
+            c.workCentre.rows.push_back({std::to_string(w.unit + 1), shape, probe, "-", "-", "-", "-", "-",
+                                         "no touches entered: run the probing cycle"});
+            continue;
+        }
+        const auto& m = *w.measured;
+        std::string residuals;
+        for (std::size_t i = 0; i < m.residuals.size(); ++i)
+            residuals += fmt::format("{}P{} {:+.{}f}", i ? " " : "", i + 1, fromMm(m.residuals[i], u), u == LengthUnit::Inch ? 5 : 4);
+        c.workCentre.rows.push_back(
+            {std::to_string(w.unit + 1), shape, probe, len(m.centre.x), len(m.centre.y), m.top ? len(*m.top) : "-",
+             w.round ? "D " + len(2 * m.radius) : len(m.width) + " x " + len(m.length),
+             !w.round && m.rotationMeasured ? fmt::format("{:.4f}", m.rotation) : "-", residuals});
+    }
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
                        "Depth " + us, "Wall left", "Floor left", "Cut " + us, "Min"};
     c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};

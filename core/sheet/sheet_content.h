@@ -23,6 +23,7 @@ struct Content {
     std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
     std::string setup;                                        // work offset and origin, one sentence
     Table steps;
+    Table workCentre;  // probing units: the measured centre, size, rotation and residuals; empty rows when none
     Table tools;
     std::vector<std::string> notes;
     std::string total;

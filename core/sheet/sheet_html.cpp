@@ -61,7 +61,9 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
         if (i % 3 == 0) h += (i ? "</tr>" : "") + std::string("<tr>");
         h += "<td><b>" + escape(c.fields[i].first) + "</b></td><td>" + escape(c.fields[i].second) + "</td>";
     }
-    h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n<h2>Process steps</h2>\n" + table(c.steps) + "<h2>Tools</h2>\n" + table(c.tools);
+    h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n";
+    if (!c.workCentre.rows.empty()) h += "<h2>Work centre</h2>\n" + table(c.workCentre);
+    h += "<h2>Process steps</h2>\n" + table(c.steps) + "<h2>Tools</h2>\n" + table(c.tools);
     if (!c.notes.empty()) {
         h += "<h2>Notes</h2>\n<ul>";
         for (const auto& n : c.notes) h += "<li>" + escape(n) + "</li>";

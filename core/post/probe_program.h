@@ -1,0 +1,24 @@
+// The NC programs of work-centre probing (a WorkSetup, model/setup.h):
+// the setting program that hands the centre measured from the operator's
+// touches to the control as the job's work offset and moves the spindle to
+// it, and the probing cycle that makes the touches on the machine by itself
+// (G38.3 with #5061-#5070 on LinuxCNC, G31 with #5061-#5063 on FANUC), does
+// the arithmetic on the control and writes the work offset. Both are in mm
+// (G21) whatever the job's unit. docs/probing.md describes them.
+#pragma once
+
+#include "model/setup.h"
+#include "post/post.h"
+
+#include <string>
+
+namespace taiwa {
+
+// Needs setup.measured. Throws std::invalid_argument for an unknown dialect
+// or a work offset its controller does not have.
+std::string settingProgram(const WorkSetup& setup, const PostOptions& options);
+
+// Throws as settingProgram does.
+std::string probingProgram(const WorkSetup& setup, const PostOptions& options);
+
+}  // namespace taiwa
