@@ -279,8 +279,11 @@ void StationWindow::onDocumentChanged(bool fromTyping)
 {
     units_->refresh();
     jobProps_->refresh(!fromTyping);
-    if (UnitForm* f = currentForm())
-        f->setUnit(doc_->job().units[static_cast<std::size_t>(units_->currentUnit())], !fromTyping);
+    if (UnitForm* f = currentForm()) {
+        const MachiningUnit& unit = doc_->job().units[static_cast<std::size_t>(units_->currentUnit())];
+        f->setUnit(unit, !fromTyping);
+        f->setSketch(moduleKind(unit.module).sketch(unit.module, doc_->job().lengthUnit, runner_->library()));
+    }
     runner_->update(doc_->job());
 }
 
@@ -288,7 +291,11 @@ void StationWindow::onUnitSelected(int unit)
 {
     UnitForm* f = currentForm();
     forms_->setCurrentWidget(f ? static_cast<QWidget*>(f) : forms_->widget(0));
-    if (f) f->setUnit(doc_->job().units[static_cast<std::size_t>(unit)], true);
+    if (f) {
+        const MachiningUnit& u = doc_->job().units[static_cast<std::size_t>(unit)];
+        f->setUnit(u, true);
+        f->setSketch(moduleKind(u.module).sketch(u.module, doc_->job().lengthUnit, runner_->library()));
+    }
     showDiagnostics();
 }
 

@@ -2,6 +2,8 @@
 // display of check diagnostics.
 #include "ui/unit_form.h"
 
+#include "ui/sketch_view.h"
+
 #include "ui/module_palette.h"
 #include "ui/number_text.h"
 
@@ -31,6 +33,9 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 320));
     drawing->setAlignment(Qt::AlignCenter);
     outer->addWidget(drawing);
+    sketch_ = new SketchView(this);
+    sketch_->setObjectName(prefix + ".sketch");
+    outer->addWidget(sketch_);
     auto* form = new QFormLayout;
     outer->addLayout(form);
     outer->addStretch(1);
@@ -92,6 +97,8 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
         previous = editor;
     }
 }
+
+void UnitForm::setSketch(std::optional<Sketch> sketch) { sketch_->setSketch(std::move(sketch)); }
 
 void UnitForm::setUnit(const MachiningUnit& unit, bool force)
 {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "model/diagnostic.h"
+#include "model/sketch.h"
 #include "ui/field_spec.h"
 
 #include <QWidget>
@@ -35,6 +36,9 @@ public:
     bool hasUnparsableText() const;
     // Puts the keyboard focus into the first field (after a unit is added).
     void focusFirstField();
+    // The unit's live figure under the drawing (probing: the touches and
+    // the fit); hidden when the module has none.
+    void setSketch(std::optional<Sketch> sketch);
 
 protected:
     // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
@@ -59,6 +63,7 @@ private:
     void onTextEdited(int field, const QString& text);
     void setMessage(int field, const QString& message);
 
+    class SketchView* sketch_ = nullptr;
     std::vector<FieldSpec> fields_;
     std::vector<Row> rows_;
     QLineEdit* name_ = nullptr;

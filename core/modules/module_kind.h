@@ -15,6 +15,7 @@
 #include "model/job.h"
 #include "model/module.h"
 #include "model/setup.h"
+#include "model/sketch.h"
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
@@ -78,6 +79,14 @@ public:
     // and the probing cycle); nothing for machining units. Inputs are checked
     // and in mm.
     virtual std::optional<WorkSetup> setup(const ModuleInput& /*mm*/, const UnitPlanContext& /*ctx*/) const
+    {
+        return std::nullopt;
+    }
+    // The unit's live figure for the station's form (model/sketch.h), from
+    // the unit as the job holds it (lengths in `unit`); nothing for modules
+    // whose form shows their fixed drawing only.
+    virtual std::optional<Sketch> sketch(const ModuleInput& /*unit*/, LengthUnit /*unit*/,
+                                         const std::vector<Tool>& /*library*/) const
     {
         return std::nullopt;
     }

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace taiwa::sheet {
 
 Content content(const Plan& plan, const SheetOptions& o)
@@ -45,7 +47,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     c.workCentre.headers = {"Unit", "Workpiece", "Probe", "Centre X " + us, "Centre Y " + us, "Top Z " + us, "Size " + us,
                             "Turned deg", "Residuals " + us};
     c.workCentre.numeric = {true, false, false, true, true, true, false, true, false};
-    c.workCentre.widths = {3, 10, 6, 7, 7, 6, 10, 5, 26};
+    c.workCentre.widths = {3, 10, 9, 7, 7, 6, 10, 5, 23};
     for (const WorkSetup& w : plan.setups) {
         const std::string shape = w.round ? (w.inside ? "round bore" : "round boss") : (w.inside ? "rectangular pocket" : "rectangular block");
         const std::string probe = fmt::format("T{} ball {}", w.tool, len(2 * w.ballRadius));
@@ -57,7 +59,11 @@ Content content(const Plan& plan, const SheetOptions& o)
         const auto& m = *w.measured;
         std::string residuals;
         for (std::size_t i = 0; i < m.residuals.size(); ++i)
-            residuals += fmt::format("{}P{} {:+.{}f}", i ? " " : "", i + 1, fromMm(m.residuals[i], u), u == LengthUnit::Inch ? 5 : 4);
+        {
+            const int decimals = u == LengthUnit::Inch ? 5 : 4;
+            const double r = fromMm(m.residuals[i], u);  // below the last digit: +0, never -0
+            residuals += fmt::format("{}P{} {:+.{}f}", i ? " " : "", i + 1, std::abs(r) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : r, decimals);
+        }
         c.workCentre.rows.push_back(
             {std::to_string(w.unit + 1), shape, probe, len(m.centre.x), len(m.centre.y), m.top ? len(*m.top) : "-",
              w.round ? "D " + len(2 * m.radius) : len(m.width) + " x " + len(m.length),
