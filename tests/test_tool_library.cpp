@@ -168,12 +168,16 @@ private slots:
             INSERT INTO cutting_data VALUES (7, 'pom', 250, 0.09, 0.4);
             PRAGMA user_version = 1;)sql", nullptr, nullptr, nullptr), SQLITE_OK);
         sqlite3_close(db);
-        for (int open = 0; open < 2; ++open) {  // the second open finds version 2 and changes nothing
+        for (int open = 0; open < 2; ++open) {  // the second open finds version 3 and changes nothing
             auto lib = ToolLibrary::open(path);
             QVERIFY2(lib, lib.ok() ? "" : lib.error().c_str());
             const auto tools = lib->tools();
             QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
-            QCOMPARE(tools->size(), std::size_t(1));
+            // The shop's end mill, and the touch probe version 3 brings (T90 was free).
+            QCOMPARE(tools->size(), std::size_t(2));
+            QCOMPARE(tools->back().id, 90);
+            QCOMPARE(tools->back().type, ToolType::Probe);
+            QVERIFY(tools->back().cutting.empty());
             const Tool& t = tools->front();
             QCOMPARE(t.id, 7);
             QCOMPARE(t.usedMinutes, 12.0);
@@ -184,7 +188,7 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 2);
+        QCOMPARE(sqlite3_column_int(version, 0), 3);
         sqlite3_finalize(version);
         sqlite3_close(db);
     }

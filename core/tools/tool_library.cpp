@@ -15,7 +15,7 @@ namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 2;
+constexpr int kSchemaVersion = 3;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -29,13 +29,18 @@ CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 2;
+PRAGMA user_version = 3;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
 constexpr const char* kMigrations[] = {
     // 1 -> 2: whether an end mill cuts at its centre (ramping in without a pilot hole).
     "ALTER TABLE tools ADD COLUMN centre_cutting INTEGER NOT NULL DEFAULT 1; PRAGMA user_version = 2;",
+    // 2 -> 3: the default library's touch probe T90 (work-centre probing),
+    // unless the library has a probe already or uses T90 for another tool.
+    "INSERT INTO tools (id, name, type, diameter, flute_length, stickout, holder, flutes, life_minutes, centre_cutting) "
+    "SELECT 90, 'Touch probe, 4 mm ruby ball', 'probe', 4, 0, 50, 'HSK63 probe body', 0, 0, 0 "
+    "WHERE NOT EXISTS (SELECT 1 FROM tools WHERE type = 'probe' OR id = 90); PRAGMA user_version = 3;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
