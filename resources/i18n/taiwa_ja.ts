@@ -192,6 +192,10 @@
         <source>Add M2D 3-D pocket</source>
         <translation>M2D 立体ポケットを追加</translation>
     </message>
+    <message>
+        <source>Add work-centre probing</source>
+        <translation>ワーク中心の測定を追加</translation>
+    </message>
 </context>
 <context>
     <name>taiwa::ui::NcView</name>
@@ -812,6 +816,58 @@
         <location filename="../../ui/field_spec.cpp" line="119"/>
         <source>Scallop height</source>
         <translation>カスプ高さ</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>形状</translation>
+    </message>
+    <message>
+        <source>Touched from</source>
+        <translation>接触する側</translation>
+    </message>
+    <message>
+        <source>P1 machine X</source>
+        <translation>P1 機械座標 X</translation>
+    </message>
+    <message>
+        <source>P1 machine Y</source>
+        <translation>P1 機械座標 Y</translation>
+    </message>
+    <message>
+        <source>Top face machine Z</source>
+        <translation>上面 機械座標 Z</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>許容差</translation>
+    </message>
+    <message>
+        <source>Nominal diameter / width X</source>
+        <translation>呼び径 / 幅 X</translation>
+    </message>
+    <message>
+        <source>Nominal length Y</source>
+        <translation>呼び長さ Y</translation>
+    </message>
+    <message>
+        <source>Touch depth</source>
+        <translation>接触深さ</translation>
+    </message>
+    <message>
+        <source>Clearance</source>
+        <translation>逃げ量</translation>
+    </message>
+    <message>
+        <source>Search distance</source>
+        <translation>探索距離</translation>
+    </message>
+    <message>
+        <source>Probing feed (mm/min)</source>
+        <translation>測定送り (mm/min)</translation>
+    </message>
+    <message>
+        <source>not touched</source>
+        <translation>未測定</translation>
     </message>
 </context>
 <context>
