@@ -4,7 +4,11 @@
 // residuals reported), bores and bosses, blocks and pockets (the stylus
 // ball added or taken off), the first touch anywhere on the outline; and the
 // refusals, each naming the touch to blame.
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "modules/probe/probe.h"
 #include "modules/probe/probe_fit.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -244,6 +248,51 @@ private slots:
         const auto p = expectProblem(fitRectangle(t, {kBall, false, 0.01}));
         QCOMPARE(p.point, 1);
         QCOMPARE(p.message, std::string("the points on -X and +X are swapped: the +X side (point 1) lies at or left of the -X side (point 2)"));
+    }
+    // Through the job: the refusal on the touch's own field, named in words
+    // the operator reads on the form.
+    void checkNamesTheTouchField()
+    {
+        Job job;
+        job.stock = {-50, -50, 100, 100, 30};
+        ProbeUnit p;
+        const auto t = onCircle({0, 0}, 30, false, {0, 70, 150, 230, 300});
+        for (std::size_t i = 0; i < t.size(); ++i) p.x[i] = t[i].at.x, p.y[i] = t[i].at.y;
+        *p.x[3] += 0.5;  // P4 half a millimetre off
+        p.sizeX = 60;
+        job.units.push_back({"Boss", p});
+        const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QCOMPARE(ds.size(), std::size_t(1));
+        QCOMPARE(ds[0].field, std::string("touches[3]"));
+        QVERIFY2(ds[0].message.starts_with("point 4 is "), ds[0].message.c_str());
+        // P1 is the measuring origin.
+        *p.x[3] -= 0.5;
+        p.x[0] = 1.0;
+        job.units[0] = {"Boss", p};
+        const Diagnostics origin = checkJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(!origin.empty() && origin[0].field == "touches[0]");
+    }
+    // A half-typed touch (X without Y) and a touch left out are saved as the
+    // operator left them, and refused with the point named.
+    void halfTypedTouchesSurviveTheJobFile()
+    {
+        Job job;
+        job.stock = {-50, -50, 100, 100, 30};
+        ProbeUnit p;
+        p.x[0] = p.y[0] = 0.0;
+        p.x[1] = 12.5;       // its Y not yet typed
+        p.x[3] = 4, p.y[3] = 5;  // P3 left out
+        p.sizeX = 40;
+        job.units.push_back({"", p});
+        const std::string text = writeJob(job);
+        QVERIFY2(text.find("[12.5, null]") != std::string::npos && text.find("null,") != std::string::npos, text.c_str());
+        const JobReadResult back = readJob(text);
+        QVERIFY(back.job);
+        QVERIFY(*back.job == job);
+        const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(!ds.empty());
+        QCOMPARE(ds[0].field, std::string("touches[1]"));
+        QCOMPARE(ds[0].message, std::string("point 2: its Y is missing"));
     }
     void sideNotGiven()
     {
