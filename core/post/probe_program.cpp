@@ -11,7 +11,9 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string_view>
 
@@ -125,11 +127,56 @@ std::string settingProgram(const WorkSetup& s, const PostOptions& o)
     return p.take();
 }
 
+namespace {
+
+// How a dialect spells the cycle: its variables, a touch with its test for
+// "nothing touched", and where the skip result is. The cycle itself
+// (probingProgram) is one sequence for both.
+struct CycleSyntax {
+    std::string x0, y0, z0, ball, top, safe, low, cx, cy, sizeX, sizeY;
+    std::string store[4];  // the results of the touches -X, +X, -Y, +Y
+    std::array<const char*, 3> result;  // the skip position in X, Y, Z
+    // The touch moving `axis` to `target` (an expression), and the test that
+    // stops the program when nothing was touched: touch n, its message.
+    std::function<void(Program&, int n, char axis, const std::string& target, const std::string& message)> touch;
+};
+
+CycleSyntax linuxcncSyntax()
+{
+    CycleSyntax c{"#<x0>", "#<y0>", "#<z0>", "#<ball>", "#<top>", "#<safe>", "#<low>", "#<cx>", "#<cy>", "#<sizex>",
+                  "#<sizey>", {"#<xm>", "#<xp>", "#<ym>", "#<yp>"}, {"#5061", "#5062", "#5063"}, {}};
+    c.touch = [](Program& p, int n, char axis, const std::string& target, const std::string& message) {
+        // G38.3: no error when nothing is touched; #5070 says whether it was.
+        p.block(fmt::format("G38.3 {}[{}]", axis, target));
+        p.block(fmt::format("o1{:02d} if [#5070 EQ 0]", n));
+        p.block(fmt::format("  (abort, touch {}: {})", n, message));
+        p.block(fmt::format("o1{:02d} endif", n));
+    };
+    return c;
+}
+
+CycleSyntax fanucSyntax(const WorkSetup& s)
+{
+    CycleSyntax c{"#100", "#101", "#102", "#103", "#110", "#111", "#112", "#124", "#125", "#126", "#127",
+                  {"#120", "#121", "#122", "#123"}, {"#5061", "#5062", "#5063"}, {}};
+    c.touch = [&s, result = c.result](Program& p, int n, char axis, const std::string& target, const std::string&) {
+        // G31 skip: a touch not made leaves the skip position at the target;
+        // the program then jumps to the alarm of touch n (its message there).
+        p.block(fmt::format("#105 = [{}]", target));
+        p.block(fmt::format("G31 {}#105 F{}", axis, p.num(s.feed)));
+        p.block(fmt::format("IF [ABS[{} - #105] LT 0.0005] GOTO 900{}", result[axis - 'X'], n));
+    };
+    return c;
+}
+
+}  // namespace
+
 std::string probingProgram(const WorkSetup& s, const PostOptions& o)
 {
     const post::Dialect& d = dialectOf(o);
     const bool fanuc = o.dialect == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
+    const CycleSyntax v = fanuc ? fanucSyntax(s) : linuxcncSyntax();
     Program p(d);
     header(p, d, o, s, "Probing cycle");
     const double hx = s.sizeX / 2, hy = (s.round ? s.sizeX : s.sizeY) / 2;
@@ -140,14 +187,14 @@ std::string probingProgram(const WorkSetup& s, const PostOptions& o)
                           Program::text(2 * hx), Program::text(2 * hy), Program::text(s.touchDepth), Program::text(s.search)));
     p.comment(fmt::format("Ends with {} at the measured centre and top face", off.words));
 
-    // The touches: axis, direction of the touch (+1: towards +), where it
-    // starts and where it looks to, relative to the start position.
+    // The side touches: where each starts and where it looks to along its
+    // axis, relative to the approximate centre (inside: from the centre).
     struct SideTouch {
         const char* name;
         char axis;
-        double start, target;  // along the axis, relative to the approximate centre
+        double start, target;
     };
-    const double out = s.inside ? -1.0 : 1.0;  // outside touches start beyond the outline
+    const double out = s.inside ? -1.0 : 1.0;
     const SideTouch sides[4] = {
         {"-X", 'X', s.inside ? 0.0 : -(hx + s.clearance), -(hx - out * s.search)},
         {"+X", 'X', s.inside ? 0.0 : hx + s.clearance, hx - out * s.search},
@@ -156,130 +203,87 @@ std::string probingProgram(const WorkSetup& s, const PostOptions& o)
     };
     // The top face: at the centre of a boss or block, beside a bore or pocket.
     const double topAt = s.inside ? -(hx + s.clearance) : 0.0;
+    // An assignment; on FANUC, whose variables are numbers, with what it holds.
+    const auto set = [&](const std::string& var, const std::string& expr, const char* what) {
+        const bool plain = expr.find(' ') == std::string::npos;
+        std::string b = var + " = " + (plain ? expr : "[" + expr + "]");
+        if (fanuc) b += " (" + post::commentText(what, true) + ")";
+        p.block(b);
+    };
+
+    // Modes and the probe; the start position (the approximate centre) in
+    // the active coordinates: LinuxCNC's current position #5420-#5422, on
+    // FANUC #5041-#5043 after selecting the offset the cycle sets (whose
+    // values it reads at the end).
+    p.block(fanuc ? fmt::format("G21 G90 G17 G40 G94 {}", off.words) : std::string("G21 G90 G17 G40 G94"));
+    p.block(fmt::format("T{} M6", s.tool));
+    p.block(fmt::format("G43 H{}", s.tool));
+    const char* const current[3] = {fanuc ? "#5041" : "#5420", fanuc ? "#5042" : "#5421", fanuc ? "#5043" : "#5422"};
+    p.block(fmt::format("{} = {} ({})", v.x0, current[0],
+                        post::commentText("the approximate centre: where the probe stands", d.upperCaseComments)));
+    p.block(fmt::format("{} = {}", v.y0, current[1]));
+    p.block(fmt::format("{} = {}", v.z0, current[2]));
+    set(v.ball, p.num(s.ballRadius), "ball radius");
+    if (!fanuc) p.block(fmt::format("F{}", p.num(s.feed)));
+
+    p.comment("Touch 1: the top face");
+    if (topAt != 0.0) p.block(fmt::format("G0 X[{}{}]", v.x0, p.plus(topAt)));
+    v.touch(p, 1, 'Z', v.z0 + p.plus(-(s.search + s.clearance)),
+            fmt::format("no top face within {} mm below the start", Program::text(s.search + s.clearance)));
+    set(v.top, v.result[2], "top face");
+    set(v.safe, v.top + p.plus(s.clearance), "safe height");
+    set(v.low, v.top + p.plus(-s.touchDepth), "touch height");
+    p.block(fmt::format("G0 Z{}", v.safe));
+    if (topAt != 0.0) p.block(fmt::format("G0 X{}", v.x0));
+    if (s.inside) p.block(fmt::format("G0 Z{}", v.low));
+
+    for (int k = 0; k < 4; ++k) {
+        const SideTouch& t = sides[k];
+        const int n = k + 2;
+        const bool isX = t.axis == 'X';
+        const std::string& base = isX ? v.x0 : v.y0;
+        // Along Y the touches run through the centre found in X.
+        const std::string across = isX ? "Y" + v.y0 : "X" + v.cx;
+        p.comment(fmt::format("Touch {}: side {}", n, t.name));
+        if (!s.inside) {
+            p.block(fmt::format("G0 {}[{}{}] {}", t.axis, base, p.plus(t.start), across));
+            p.block(fmt::format("G0 Z{}", v.low));
+        } else if (k == 2) {
+            p.block(fmt::format("G0 {}", across));
+        }
+        v.touch(p, n, t.axis, base + p.plus(t.target),
+                fmt::format("no side {} within {} mm past the nominal outline", t.name, Program::text(s.search)));
+        p.block(fmt::format("{} = {}", v.store[k], v.result[isX ? 0 : 1]));
+        if (!s.inside) {
+            p.block(fmt::format("G0 {}[{}{}]", t.axis, base, p.plus(t.start)));
+            p.block(fmt::format("G0 Z{}", v.safe));
+        } else {
+            p.block(fmt::format("G0 {}{}", t.axis, base));
+        }
+        if (k == 1) set(v.cx, fmt::format("[{} + {}] / 2", v.store[0], v.store[1]), "centre X");
+    }
+    set(v.cy, fmt::format("[{} + {}] / 2", v.store[2], v.store[3]), "centre Y");
+    const char* ballSign = s.inside ? "+" : "-";
+    set(v.sizeX, fmt::format("{} - {} {} 2 * {}", v.store[1], v.store[0], ballSign, v.ball), "size X");
+    set(v.sizeY, fmt::format("{} - {} {} 2 * {}", v.store[3], v.store[2], ballSign, v.ball), "size Y");
+    p.block(fmt::format("G0 Z{}", v.safe));
+    p.comment(fmt::format("The centre becomes {}: its X Y 0, the top face Z 0", off.words));
 
     if (!fanuc) {
-        p.block("G21 G90 G17 G40 G94");
-        p.block(fmt::format("T{} M6", s.tool));
-        p.block(fmt::format("G43 H{}", s.tool));
-        p.block("#<x0> = #5420 (the approximate centre: where the probe stands)");
-        p.block("#<y0> = #5421");
-        p.block("#<z0> = #5422");
-        p.block(fmt::format("#<ball> = {}", p.num(s.ballRadius)));
-        p.block(fmt::format("F{}", p.num(s.feed)));
-        // Touch 1: the top face.
-        p.comment("Touch 1: the top face");
-        if (topAt != 0.0) p.block(fmt::format("G0 X[#<x0>{}]", p.plus(topAt)));
-        p.block(fmt::format("G38.3 Z[#<z0> - {}]", p.num(s.search + s.clearance)));
-        p.block("o101 if [#5070 EQ 0]");
-        p.block(fmt::format("  (abort, touch 1: no top face within {} mm below the start)", Program::text(s.search + s.clearance)));
-        p.block("o101 endif");
-        p.block("#<top> = #5063");
-        p.block(fmt::format("#<safe> = [#<top> + {}]", p.num(s.clearance)));
-        p.block(fmt::format("#<low> = [#<top> - {}]", p.num(s.touchDepth)));
-        p.block("G0 Z#<safe>");
-        if (topAt != 0.0) p.block("G0 X#<x0>");
-        if (s.inside) p.block("G0 Z#<low>");
-        int n = 2;
-        for (const SideTouch& t : sides) {
-            const bool isX = t.axis == 'X';
-            const char* var = isX ? "#5061" : "#5062";
-            const std::string name = fmt::format("#<{}{}>", isX ? 'x' : 'y', t.name[0] == '-' ? "m" : "p");
-            // Along Y the touches run through the centre found in X.
-            const std::string across = isX ? "Y#<y0>" : "X#<cx>";
-            const std::string base = isX ? "#<x0>" : "#<y0>";
-            p.comment(fmt::format("Touch {}: side {}", n, t.name));
-            if (!s.inside) {
-                p.block(fmt::format("G0 {}[{}{}] {}", t.axis, base, p.plus(t.start), across));
-                p.block("G0 Z#<low>");
-            } else if (!isX && t.name[0] == '-') {
-                p.block(fmt::format("G0 {}", across));
-            }
-            p.block(fmt::format("G38.3 {}[{}{}]", t.axis, base, p.plus(t.target)));
-            p.block(fmt::format("o1{:02d} if [#5070 EQ 0]", n));
-            p.block(fmt::format("  (abort, touch {}: no side {} within {} mm past the nominal outline)", n, t.name, Program::text(s.search)));
-            p.block(fmt::format("o1{:02d} endif", n));
-            p.block(fmt::format("{} = {}", name, var));
-            if (!s.inside) {
-                p.block(fmt::format("G0 {}[{}{}]", t.axis, base, p.plus(t.start)));
-                p.block("G0 Z#<safe>");
-            } else {
-                p.block(fmt::format("G0 {}{}", t.axis, base));
-            }
-            if (n == 3) p.block("#<cx> = [[#<xm> + #<xp>] / 2]");
-            ++n;
-        }
-        p.block("#<cy> = [[#<ym> + #<yp>] / 2]");
-        const std::string ball2 = s.inside ? "+ 2 * #<ball>" : "- 2 * #<ball>";
-        p.block(fmt::format("#<sizex> = [#<xp> - #<xm> {}]", ball2));
-        p.block(fmt::format("#<sizey> = [#<yp> - #<ym> {}]", ball2));
-        p.block("G0 Z#<safe>");
-        p.comment(fmt::format("The centre becomes {}: its X Y 0, the top face Z 0", off.words));
-        p.block("G0 X#<cx> Y#<cy>");
-        p.block(fmt::format("G10 L20 P{} X0 Y0 Z[#5422 - #<top>]", off.p));
+        // L20: the current position gets these coordinates in system P,
+        // whatever system is active.
+        p.block(fmt::format("G0 X{} Y{}", v.cx, v.cy));
+        p.block(fmt::format("G10 L20 P{} X0 Y0 Z[#5422 - {}]", off.p, v.top));
         p.block(fmt::format("{} G0 X0 Y0", off.words));
-        p.block(s.round ? "(debug, centre found; diameter #<sizey>, across X #<sizex>)"
-                        : "(debug, centre found; size #<sizex> x #<sizey>)");
+        p.block(s.round ? fmt::format("(debug, centre found; diameter {}, across X {})", v.sizeY, v.sizeX)
+                        : fmt::format("(debug, centre found; size {} x {})", v.sizeX, v.sizeY));
         footer(p, d, false);
         return p.take();
     }
-
-    // FANUC: macro variables, skip positions in the active work coordinates.
-    // The cycle runs in the offset it sets, whose values it reads and adds
-    // the centre to.
+    // The offset's values plus the centre found in its own coordinates.
     const int base = off.extended ? 7001 + 20 * (off.p - 1) : 5201 + 20 * off.p;
-    p.block(fmt::format("G21 G90 G17 G40 G94 {}", off.words));
-    p.block(fmt::format("T{} M6", s.tool));
-    p.block(fmt::format("G43 H{}", s.tool));
-    p.block("#100 = #5041 (THE APPROXIMATE CENTRE: WHERE THE PROBE STANDS)");
-    p.block("#101 = #5042");
-    p.block("#102 = #5043");
-    p.block(fmt::format("#103 = {} (BALL RADIUS)", p.num(s.ballRadius)));
-    const std::string feed = "F" + p.num(s.feed);
-    p.comment("Touch 1: the top face");
-    if (topAt != 0.0) p.block(fmt::format("G0 X[#100{}]", p.plus(topAt)));
-    p.block(fmt::format("#104 = #102 - {}", p.num(s.search + s.clearance)));
-    p.block(fmt::format("G31 Z#104 {}", feed));
-    p.block("IF [ABS[#5063 - #104] LT 0.0005] GOTO 9001");
-    p.block("#110 = #5063 (TOP FACE)");
-    p.block(fmt::format("#111 = #110 + {} (SAFE)", p.num(s.clearance)));
-    p.block(fmt::format("#112 = #110 - {} (TOUCH HEIGHT)", p.num(s.touchDepth)));
-    p.block("G0 Z#111");
-    if (topAt != 0.0) p.block("G0 X#100");
-    if (s.inside) p.block("G0 Z#112");
-    int n = 2;
-    const int store[4] = {120, 121, 122, 123};  // -X, +X, -Y, +Y
-    for (const SideTouch& t : sides) {
-        const bool isX = t.axis == 'X';
-        const char* centreVar = isX ? "#100" : "#101";
-        const std::string across = isX ? "Y#101" : "X#124";
-        p.comment(fmt::format("Touch {}: side {}", n, t.name));
-        if (!s.inside) {
-            p.block(fmt::format("G0 {}[{}{}] {}", t.axis, centreVar, p.plus(t.start), across));
-            p.block("G0 Z#112");
-        } else if (!isX && t.name[0] == '-') {
-            p.block(fmt::format("G0 {}", across));
-        }
-        p.block(fmt::format("#105 = {}{}", centreVar, p.plus(t.target)));
-        p.block(fmt::format("G31 {}#105 {}", t.axis, feed));
-        p.block(fmt::format("IF [ABS[{} - #105] LT 0.0005] GOTO 900{}", isX ? "#5061" : "#5062", n));
-        p.block(fmt::format("#{} = {}", store[n - 2], isX ? "#5061" : "#5062"));
-        if (!s.inside) {
-            p.block(fmt::format("G0 {}[{}{}]", t.axis, centreVar, p.plus(t.start)));
-            p.block("G0 Z#111");
-        } else {
-            p.block(fmt::format("G0 {}{}", t.axis, centreVar));
-        }
-        if (n == 3) p.block("#124 = [#120 + #121] / 2 (CENTRE X)");
-        ++n;
-    }
-    p.block("#125 = [#122 + #123] / 2 (CENTRE Y)");
-    const char* ball2 = s.inside ? "+ 2 * #103" : "- 2 * #103";
-    p.block(fmt::format("#126 = #121 - #120 {} (SIZE X)", ball2));
-    p.block(fmt::format("#127 = #123 - #122 {} (SIZE Y)", ball2));
-    p.block("G0 Z#111");
-    p.comment(fmt::format("The centre becomes {}: its X Y 0, the top face Z 0", off.words));
-    p.block(fmt::format("G10 {} P{} X[#{} + #124] Y[#{} + #125] Z[#{} + #110]", off.extended ? "L20" : "L2", off.p, base,
-                        base + 1, base + 2));
+    p.block(fmt::format("G10 {} P{} X[#{} + {}] Y[#{} + {}] Z[#{} + {}]", off.extended ? "L20" : "L2", off.p, base, v.cx,
+                        base + 1, v.cy, base + 2, v.top));
     p.block(fmt::format("{} G0 X0 Y0", off.words));
     p.block("GOTO 9999");
     for (int k = 1; k <= 5; ++k)

@@ -44,6 +44,16 @@ const Tool* probeTool(const ProbeUnit& p, const std::vector<Tool>& library)
     return found;
 }
 
+// The fit of the unit's touches (in mm) with its probe's ball: the
+// workpiece's circle or rectangle, or why not.
+using UnitFit = std::variant<probe::CircleFit, probe::RectangleFit, probe::FitProblem>;
+UnitFit fitOf(const ProbeUnit& p, const std::vector<probe::Touch>& touches, const Tool& probe)
+{
+    const probe::FitSettings fs{probe.radius(), p.where == 2, p.tolerance};
+    const auto widen = [](auto&& fit) { return std::visit([](auto&& v) -> UnitFit { return v; }, fit); };
+    return p.shape == 1 ? widen(probe::fitCircle(touches, fs)) : widen(probe::fitRectangle(touches, fs));
+}
+
 class ProbeKind final : public ModuleKindOf<ProbeUnit> {
 public:
     const char* paletteText() const override
@@ -79,25 +89,22 @@ public:
         w.feed = p.feed;
         const auto touches = touchesOf(p);
         if (touches.size() <= 1) return w;  // no touches yet: the cycle only
-        const probe::FitSettings fs{w.ballRadius, w.inside, p.tolerance};
+        if (!tool) return w;
+        const UnitFit fit = fitOf(p, touches, *tool);
         WorkSetup::Measured m;
-        if (w.round) {
-            const auto fit = probe::fitCircle(touches, fs);
-            if (!std::holds_alternative<probe::CircleFit>(fit)) return w;  // refused by the checks already
-            const auto& c = std::get<probe::CircleFit>(fit);
-            m.centre = p.origin + c.centre;
-            m.radius = c.radius;
-            m.residuals = c.residuals;
+        if (const auto* c = std::get_if<probe::CircleFit>(&fit)) {
+            m.centre = p.origin + c->centre;
+            m.radius = c->radius;
+            m.residuals = c->residuals;
+        } else if (const auto* r = std::get_if<probe::RectangleFit>(&fit)) {
+            m.centre = p.origin + r->centre;
+            m.width = r->width;
+            m.length = r->length;
+            m.rotation = r->rotation;
+            m.rotationMeasured = r->rotationMeasured;
+            m.residuals = r->residuals;
         } else {
-            const auto fit = probe::fitRectangle(touches, fs);
-            if (!std::holds_alternative<probe::RectangleFit>(fit)) return w;
-            const auto& r = std::get<probe::RectangleFit>(fit);
-            m.centre = p.origin + r.centre;
-            m.width = r.width;
-            m.length = r.length;
-            m.rotation = r.rotation;
-            m.rotationMeasured = r.rotationMeasured;
-            m.residuals = r.residuals;
+            return w;  // refused by the checks already
         }
         m.top = p.top;
         w.measured = m;
@@ -135,7 +142,6 @@ public:
                                           touches.size(), needed, "STEM.uN.probe.nc"));
             return s;
         }
-        const probe::FitSettings fs{tool->radius(), p.where == 2, p.tolerance};
         const auto flag = [&](int point, const std::string& message) {
             s.problem = true;
             s.lines.push_back(message);
@@ -147,31 +153,24 @@ public:
                 // Residuals below half the last digit shown as +0.0000, not -0.0000.
                 s.marks[k].label += fmt::format(" {:+.4f}", std::abs(residuals[k]) < 5e-5 ? 0.0 : fromMm(residuals[k], shown));
         };
+        const UnitFit fit = fitOf(p, touches, *tool);
         Point2 centre;
-        if (p.shape == 1) {
-            const auto fit = probe::fitCircle(touches, fs);
-            if (const auto* e = std::get_if<probe::FitProblem>(&fit)) {
-                flag(e->point, e->message);
-                return s;
-            }
-            const auto& c = std::get<probe::CircleFit>(fit);
-            centre = c.centre;
-            residualLabels(c.residuals);
+        if (const auto* e = std::get_if<probe::FitProblem>(&fit)) {
+            flag(e->point, e->message);
+            return s;
+        } else if (const auto* c = std::get_if<probe::CircleFit>(&fit)) {
+            centre = c->centre;
+            residualLabels(c->residuals);
             // The workpiece's outline, and the ball centres' circle it was fitted to.
-            const double ballPath = p.where == 2 ? c.radius - tool->radius() : c.radius + tool->radius();
-            for (const double r : {c.radius, ballPath}) {
+            const double ballPath = p.where == 2 ? c->radius - tool->radius() : c->radius + tool->radius();
+            for (const double r : {c->radius, ballPath}) {
                 std::vector<Point2> ring;
                 for (int k = 0; k < 120; ++k)
-                    ring.push_back(c.centre + r * Point2{std::cos(k * std::numbers::pi / 60), std::sin(k * std::numbers::pi / 60)});
+                    ring.push_back(c->centre + r * Point2{std::cos(k * std::numbers::pi / 60), std::sin(k * std::numbers::pi / 60)});
                 s.outlines.push_back(std::move(ring));
             }
-            s.lines.push_back(fmt::format("{}: diameter {}", p.where == 2 ? "Bore" : "Boss", len(2 * c.radius)));
+            s.lines.push_back(fmt::format("{}: diameter {}", p.where == 2 ? "Bore" : "Boss", len(2 * c->radius)));
         } else {
-            const auto fit = probe::fitRectangle(touches, fs);
-            if (const auto* e = std::get_if<probe::FitProblem>(&fit)) {
-                flag(e->point, e->message);
-                return s;
-            }
             const auto& r = std::get<probe::RectangleFit>(fit);
             centre = r.centre;
             residualLabels(r.residuals);
@@ -331,19 +330,9 @@ protected:
         // The fit of the touches entered (none but the origin: the cycle only).
         const auto touches = touchesOf(p);
         if (touches.size() <= 1) return report;
-        const probe::FitSettings fs{tool->radius(), p.where == 2, p.tolerance};
-        const auto problem = [&]() -> std::optional<probe::FitProblem> {
-            if (p.shape == 1) {
-                const auto fit = probe::fitCircle(touches, fs);
-                if (const auto* e = std::get_if<probe::FitProblem>(&fit)) return *e;
-            } else {
-                const auto fit = probe::fitRectangle(touches, fs);
-                if (const auto* e = std::get_if<probe::FitProblem>(&fit)) return *e;
-            }
-            return std::nullopt;
-        }();
-        if (problem) r.unit(problem->point > 0 ? "touches[" + std::to_string(problem->point - 1) + "]" : "touches",
-                            problem->message);
+        const UnitFit fit = fitOf(p, touches, *tool);
+        if (const auto* e = std::get_if<probe::FitProblem>(&fit))
+            r.unit(e->point > 0 ? "touches[" + std::to_string(e->point - 1) + "]" : "touches", e->message);
         return report;
     }
 
