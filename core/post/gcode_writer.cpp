@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -49,10 +51,9 @@ std::string GCodeWriter::length(double v) const { return formatNumber(v, decimal
 
 GCodeWriter::Written GCodeWriter::written(double v) const
 {
-    Written w{length(v), 0.0, v};
-    // The value as written: from_chars reads the text exactly as strtod
-    // would, without the locale and the copy.
-    std::from_chars(w.text.data(), w.text.data() + w.text.size(), w.value);
+    Written w;
+    w.exact = v;
+    w.size = static_cast<std::uint8_t>(formatNumberInto(w.chars.data(), v, decimals_, dialect_.decimalPointAlways, &w.value));
     return w;
 }
 
@@ -63,24 +64,50 @@ void GCodeWriter::line(const std::string& text)
     sources_.push_back(source_);
 }
 
-void GCodeWriter::block(const std::string& words)
+void GCodeWriter::beginBlock()
 {
-    std::string b;
+    blockStart_ = text_.size();
     if (dialect_.sequenceNumbers) {
         sequence_ = sequence_ == 0 || sequence_ + dialect_.sequenceIncrement > dialect_.sequenceMax
                         ? dialect_.sequenceStart
                         : sequence_ + dialect_.sequenceIncrement;
-        b.reserve(words.size() + 8);
-        b += 'N';
-        b += std::to_string(sequence_);
-        b += ' ';
-        b += words;
-    } else {
-        b = words;
+        char n[16];
+        const auto [end, ec] = std::to_chars(n, n + sizeof n, sequence_);
+        text_ += 'N';
+        text_.append(n, end);
+        text_ += ' ';
     }
-    if (b.size() > dialect_.maxLineLength)
-        throw std::length_error(fmt::format("post-processor: block longer than {} characters: {}", dialect_.maxLineLength, b));
-    line(b);
+    wordsStart_ = text_.size();
+}
+
+void GCodeWriter::word(std::string_view w)
+{
+    if (w.empty()) return;
+    if (text_.size() > wordsStart_) text_ += ' ';
+    text_ += w;
+}
+
+void GCodeWriter::word(char letter, std::string_view number)
+{
+    if (text_.size() > wordsStart_) text_ += ' ';
+    text_ += letter;
+    text_ += number;
+}
+
+void GCodeWriter::endBlock()
+{
+    if (text_.size() - blockStart_ > dialect_.maxLineLength)
+        throw std::length_error(fmt::format("post-processor: block longer than {} characters: {}", dialect_.maxLineLength,
+                                            text_.substr(blockStart_)));
+    text_ += '\n';
+    sources_.push_back(source_);
+}
+
+void GCodeWriter::block(const std::string& words)
+{
+    beginBlock();
+    text_ += words;
+    endBlock();
 }
 
 std::string GCodeWriter::motion(const std::string& code)
@@ -90,25 +117,40 @@ std::string GCodeWriter::motion(const std::string& code)
     return code + " ";
 }
 
-std::string GCodeWriter::axisWords(const Point3& to, bool forceXY)
+void GCodeWriter::motionWord(const char* code)
 {
-    const double v[] = {to.x, to.y, to.z};
-    std::string w;
-    for (int a = X; a <= Z; ++a) {
-        Written now = written(v[a]);
-        if ((forceXY && a != Z) || !axis_[a] || axis_[a]->text != now.text) {
-            w += ' ';
-            w += kAxisLetter[a];
-            w += now.text;
-        }
-        axis_[a] = std::move(now);
-    }
-    return w;
+    if (motion_ == code) return;
+    motion_ = code;
+    word(code);
 }
 
-std::string GCodeWriter::feedWord(double feedRate)
+bool GCodeWriter::axisWords(const Point3& to, bool forceXY)
 {
-    std::string f = formatNumber(feedRate, feedDecimals_, dialect_.decimalPointAlways);
+    const double v[] = {to.x, to.y, to.z};
+    bool any = false;
+    for (int a = X; a <= Z; ++a) {
+        Written now = written(v[a]);
+        if ((forceXY && a != Z) || !axis_[a] || axis_[a]->text() != now.text()) {
+            word(kAxisLetter[a], now.text());
+            any = true;
+        }
+        axis_[a] = now;
+    }
+    return any;
+}
+
+void GCodeWriter::feedWord(double feedRate)
+{
+    char f[kNumberChars];
+    const std::string_view text(f, formatNumberInto(f, feedRate, feedDecimals_, dialect_.decimalPointAlways));
+    if (text == feed_) return;
+    feed_ = text;
+    word('F', text);
+}
+
+std::string GCodeWriter::feedText(double feedRate)
+{
+    const std::string f = formatNumber(feedRate, feedDecimals_, dialect_.decimalPointAlways);
     if (f == feed_) return "";
     feed_ = f;
     return " F" + f;
@@ -195,29 +237,52 @@ void GCodeWriter::rapid(const Point3& to)
     if (!axis_[X] || !axis_[Y]) {
         // Position unknown (after a tool change): across in XY at the height
         // the retract left, then down in Z with the length offset.
-        Written x = written(to.x), y = written(to.y);
-        block(motion("G0") + (workOffsetDue_ ? workOffset_ + " " : "") + "X" + x.text + " Y" + y.text);
-        axis_[X] = std::move(x);
-        axis_[Y] = std::move(y);
+        const Written x = written(to.x), y = written(to.y);
+        beginBlock();
+        motionWord("G0");
+        if (workOffsetDue_) word(workOffset_);
+        word('X', x.text());
+        word('Y', y.text());
+        endBlock();
+        axis_[X] = x;
+        axis_[Y] = y;
         workOffsetDue_ = false;
     }
-    const std::string w = axisWords(to, false);
-    if (!pendingLengthOffset_.empty()) {
-        // FANUC: the length offset comes in with the first move down, "G43 H1 Z5.".
-        block(motion("G0") + pendingLengthOffset_ + w);
-        pendingLengthOffset_.clear();
-    } else if (!w.empty()) {
-        block(motion("G0") + w.substr(1));
+    // The Z (or XYZ) move: written only when a word changes, or to bring in
+    // FANUC's pending length offset ("G43 H1 Z5." with the first move down).
+    const std::size_t mark = text_.size();
+    const std::string savedMotion = motion_;
+    const int savedSequence = sequence_;
+    beginBlock();
+    motionWord("G0");
+    word(pendingLengthOffset_);
+    if (!axisWords(to, false) && pendingLengthOffset_.empty()) {
+        text_.resize(mark);  // nothing moves: no block
+        motion_ = savedMotion;
+        sequence_ = savedSequence;
+        return;
     }
+    pendingLengthOffset_.clear();
+    endBlock();
 }
 
 void GCodeWriter::feed(const Point3& to, double feedRate)
 {
     cancelCycle();
     requirePosition("a feed move");
-    const std::string w = axisWords(to, false);
-    if (w.empty()) return;
-    block(motion("G1") + w.substr(1) + feedWord(feedRate));
+    const std::size_t mark = text_.size();
+    const std::string savedMotion = motion_;
+    const int savedSequence = sequence_;
+    beginBlock();
+    motionWord("G1");
+    if (!axisWords(to, false)) {
+        text_.resize(mark);  // nothing moves: no block
+        motion_ = savedMotion;
+        sequence_ = savedSequence;
+        return;
+    }
+    feedWord(feedRate);
+    endBlock();
 }
 
 void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double feedRate)
@@ -237,8 +302,14 @@ void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
         feed(to, feedRate);
         return;
     }
-    const std::string w = axisWords(to, true);
-    block(motion(clockwise ? "G2" : "G3") + w.substr(1) + " I" + length(i) + " J" + length(j) + feedWord(feedRate));
+    beginBlock();
+    motionWord(clockwise ? "G2" : "G3");
+    axisWords(to, true);
+    char n[kNumberChars];
+    word('I', {n, formatNumberInto(n, i, decimals_, dialect_.decimalPointAlways)});
+    word('J', {n, formatNumberInto(n, j, decimals_, dialect_.decimalPointAlways)});
+    feedWord(feedRate);
+    endBlock();
 }
 
 void GCodeWriter::drillCycle(const DrillCycle& c)
@@ -247,15 +318,20 @@ void GCodeWriter::drillCycle(const DrillCycle& c)
     const std::string& code = c.peck > 0 ? dialect_.peckDrill : dialect_.drill;
     std::string params = " Z" + length(c.bottom.z) + " R" + length(c.retractZ);
     if (c.peck > 0) params += " Q" + length(c.peck);
-    const std::string xy = axisWords({c.bottom.x, c.bottom.y, axis_[Z]->value}, true);
     const std::string f = formatNumber(c.feed, feedDecimals_, dialect_.decimalPointAlways);
+    const Point3 hole{c.bottom.x, c.bottom.y, axis_[Z]->value};
+    beginBlock();
     if (motion_ == code && cycleWords_ == params && feed_ == f) {
-        block(xy.substr(1));  // one more hole of the same modal cycle
+        axisWords(hole, true);  // one more hole of the same modal cycle
     } else {
-        const std::string retractMode = cycleWords_.empty() && !dialect_.cycleRetract.empty() ? dialect_.cycleRetract + " " : "";
-        block(retractMode + motion(code) + xy.substr(1) + params + feedWord(c.feed));
+        if (cycleWords_.empty()) word(dialect_.cycleRetract);
+        motionWord(code.c_str());
+        axisWords(hole, true);
+        text_ += params;
+        feedWord(c.feed);
         cycleWords_ = params;
     }
+    endBlock();
     // Back at the initial level, or at R if that is higher (LinuxCNC's G98).
     if (axis_[Z]->value < c.retractZ) axis_[Z] = written(c.retractZ);
 }

@@ -7,11 +7,14 @@
 
 #include "model/job.h"
 #include "post/dialect.h"
+#include "post/number_format.h"
 #include "post/machine_sink.h"
 
 #include <array>
 #include <optional>
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace taiwa::post {
@@ -44,22 +47,35 @@ public:
     const std::vector<BlockSource>& sources() const { return sources_; }
 
 private:
-    // The number of an axis word as written, the value the controller reads
-    // from it, and the value the caller asked for.
+    // The number of an axis word as written (in place: no allocation on the
+    // writer's hot path), the value the controller reads from it, and the
+    // value the caller asked for.
     struct Written {
-        std::string text;
+        std::array<char, kNumberChars> chars{};
+        std::uint8_t size = 0;
         double value = 0.0;
         double exact = 0.0;
+        std::string_view text() const { return {chars.data(), size}; }
     };
 
     std::string length(double v) const;
     Written written(double v) const;
     void line(const std::string& text);   // unnumbered ('%', O-number, comments)
     void block(const std::string& words); // numbered when the dialect numbers blocks
+    // A block written in place into the tape: begun (its N word when the
+    // dialect numbers blocks), words appended, ended (length checked, line
+    // and its source recorded).
+    void beginBlock();
+    void word(std::string_view w);                 // separated by a space from the one before
+    void word(char letter, std::string_view number);
+    void endBlock();
+    void motionWord(const char* code);             // the motion code when the modal motion changes
+    // The X, Y, Z words whose written number changes (X, Y always when
+    // forced), with the axes' state updated; whether any was written.
+    bool axisWords(const Point3& to, bool forceXY);
+    void feedWord(double feedRate);
     std::string motion(const std::string& code);  // "G1 " when the modal motion changes, else ""
-    // " X.. Y.. Z.." for the axes whose written number changes (X, Y always when forced).
-    std::string axisWords(const Point3& to, bool forceXY);
-    std::string feedWord(double feedRate);
+    std::string feedText(double feedRate);        // " F.." when the feed changes, else 
     void requirePosition(const char* what) const;
     void cancelCycle();
     void forgetModalState();
@@ -71,6 +87,7 @@ private:
     int feedDecimals_;
     double resolution_;  // one unit of the last decimal of a length: 0.001 mm, 0.0001 in
     int sequence_ = 0;
+    std::size_t blockStart_ = 0, wordsStart_ = 0;  // of the block being written, in text_
     BlockSource source_;
     std::string text_;
     std::vector<BlockSource> sources_;

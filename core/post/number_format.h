@@ -3,6 +3,7 @@
 // NaN and infinity refused.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace taiwa::post {
@@ -11,6 +12,13 @@ namespace taiwa::post {
 // habit where "X10" may mean 10 µm). Throws std::invalid_argument for NaN or
 // infinity: a non-number never reaches a tape.
 std::string formatNumber(double value, int decimals, bool decimalPointAlways);
+
+// The same characters written into `out` (at least kNumberChars long); their
+// count. `asRead` gets the value a controller reads back from them (the
+// scaled integer over the power of ten: what a correctly rounded parse of
+// the text gives, without parsing it). The writer's hot path: no string.
+constexpr std::size_t kNumberChars = 48;
+std::size_t formatNumberInto(char* out, double value, int decimals, bool decimalPointAlways, double* asRead = nullptr);
 
 // A whole number (spindle speed, tool and offset numbers): rounded, no point.
 std::string formatInteger(double value);
