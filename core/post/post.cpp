@@ -151,6 +151,9 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
 
     // The chain: poster -> [mm to inch] -> writer.
     post::GCodeWriter writer(*dialect, options.units, post::workOffsetWords(*dialect, options.workOffset));
+    std::size_t moves = 0;
+    for (const auto& s : orderedSteps) moves += s.path ? s.path->moves.size() : 0;
+    writer.reserve(moves + 16 * orderedSteps.size() + 64);  // a block a move, plus each step's frame
     std::optional<post::InchAdapter> inch;
     MachineSink& sink = options.units == LengthUnit::Inch ? static_cast<MachineSink&>(inch.emplace(writer)) : writer;
 
@@ -160,8 +163,8 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
     poster.end();
 
     PostedProgram p;
-    p.nc = writer.text();
-    p.lines = writer.sources();
+    p.nc = writer.takeText();
+    p.lines = writer.takeSources();
     p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name);
     return p;
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <charconv>
 #include <string_view>
 
 namespace taiwa::post {
@@ -46,6 +47,13 @@ std::string tapeImage(const std::string& nc, const std::string& programName, con
     for (const char c : programName) name += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
     std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", name,
                                   dialect, rule, "LINE", "N", rule);
+    out.reserve(out.size() + nc.size() + nc.size() / 2);
+    // Right-aligned in `width` columns (the line numbers and N words are
+    // never wider): appended by hand, fmt per line took most of the time.
+    const auto column = [&out](std::string_view text, std::size_t width) {
+        if (text.size() < width) out.append(width - text.size(), ' ');
+        out += text;
+    };
     std::size_t lineNumber = 0;
     forEachLine(nc, [&](std::string_view line) {
         ++lineNumber;
@@ -57,7 +65,14 @@ std::string tapeImage(const std::string& nc, const std::string& programName, con
             n = line.substr(1, end - 1);
             rest = line.substr(std::min(line.size(), end + 1));
         }
-        fmt::format_to(std::back_inserter(out), "{:>7}  {:>6}  {}\n", lineNumber, n, rest);
+        char digits[24];
+        const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, lineNumber);
+        column({digits, static_cast<std::size_t>(end - digits)}, 7);
+        out += "  ";
+        column(n, 6);
+        out += "  ";
+        out += rest;
+        out += '\n';
     });
     const TapeLength t = measureTape(nc);
     out += rule + "\n";
