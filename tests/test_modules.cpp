@@ -11,6 +11,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace taiwa;
@@ -69,6 +70,42 @@ private slots:
             QVERIFY2(back.job, k->name());
             QVERIFY(*back.job == j);
             QCOMPARE(writeJob(*back.job), writeJob(j));
+        }
+    }
+
+    // A pocket's own step-over: through its form field it reaches its
+    // roughing steps and makes their rings closer (more moves) than the
+    // technology data's, survives the job file, and out of range it is
+    // refused on its field in the technology's words.
+    void unitStepOverOverridesTheTechnology()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            const auto field = std::find_if(k->fields().begin(), k->fields().end(), [](const FormField& f) { return f.key == "stepOver"; });
+            if (field == k->fields().end()) continue;  // not a pocket
+            const Job plain = jobWith(*k);
+            Job fine = plain;
+            field->set(fine.units[0].module, 0.1);
+            QCOMPARE(field->get(fine.units[0].module), std::optional<double>(0.1));
+            const auto roughingMoves = [](const Plan& p) {
+                std::size_t n = 0;
+                for (const Step& s : p.steps)
+                    if (s.kind == StepKind::Roughing) n += s.path->moves.size();
+                return n;
+            };
+            const Plan a = planJob(plain, TechnologyTable::builtIn(), defaultToolLibrary());
+            const Plan b = planJob(fine, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY2(a.ok() && b.ok(), k->name());
+            for (const Step& s : b.steps)
+                if (s.kind == StepKind::Roughing) QCOMPARE(s.stepOver, std::optional<double>(0.1));
+            QVERIFY2(roughingMoves(b) > roughingMoves(a), k->name());
+            const JobReadResult back = readJob(writeJob(fine));
+            QVERIFY(back.job && *back.job == fine);
+            field->set(fine.units[0].module, 0.95);
+            const Diagnostics ds = checkJob(fine, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY(!ds.empty());
+            QCOMPARE(ds[0].field, std::string("stepOver"));
+            QVERIFY2(ds[0].message.find("the step-over") != std::string::npos && ds[0].message.find("0.9") != std::string::npos,
+                     ds[0].message.c_str());
         }
     }
 

@@ -64,6 +64,14 @@ bool checkLength(double mm, const std::string& field, const std::string& what, R
 // technology fields, naming the unit. False when one is not below T.
 bool checkDepthAllowances(double depth, const TechnologyData& tech, bool drillsPilot, bool roughsToFloor, Reporter& r);
 
+// The step-over's range, the technology data's and a unit's own alike.
+constexpr double kStepOverLow = 0.01, kStepOverHigh = 0.9;
+constexpr const char* kStepOverWhy =
+    "roughing's radial step-over as a multiple of the tool diameter; at 0.9 and above the rings leave cusps";
+// A unit's own step-over (a fraction of D): within that range, on field
+// "stepOver". True when absent or within.
+bool checkStepOver(const std::optional<double>& stepOver, Reporter& r);
+
 // One corner radius that a step's tool must fit into.
 struct RoomQuery {
     std::vector<std::string> stepKeys;  // pin keys of the steps using this radius ("roughing", "floor")

@@ -64,8 +64,7 @@ constexpr TechnologyRange kTechnologyRanges[] = {
     {"alpha3", "α3", 0.0, 20.0, "the wall allowance semi-finishing leaves"},
     {"beta2", "β2", 0.0, 20.0, "the floor allowance roughing leaves"},
     {"gamma", "γ", 0.01, 2.0, "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
-    {"stepOver", "the step-over", 0.01, 0.9,
-     "roughing's radial step-over as a multiple of the tool diameter; at 0.9 and above the rings leave cusps"},
+    {"stepOver", "the step-over", check::kStepOverLow, check::kStepOverHigh, check::kStepOverWhy},
 };
 
 // Overrides finite and within their ranges (lengths quoted in the job's unit, gamma as is).

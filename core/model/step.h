@@ -67,6 +67,9 @@ struct Step {
     bool multiIncision = false;   // wall cut in several Z incisions (F = 2)
     std::optional<InclinedFace> face;  // inclined-face finishing only
     double scallop = 0.0;              // inclined-face finishing only
+    // Roughing: the unit's radial step-over as a fraction of the tool
+    // diameter, when the unit overrides the technology data's.
+    std::optional<double> stepOver;
 
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;

@@ -63,6 +63,35 @@ FormField member(std::string key, std::string label, std::vector<std::string> di
                      [m](T& t, double v) { t.*m = v; });
 }
 
+// An optional number member of module T: empty means `placeholder` says
+// what (the technology's value, "same as θ1", "not touched").
+template <class T>
+FormField optionalMember(std::string key, std::string label, std::string placeholder, std::vector<std::string> diag,
+                         std::optional<double> T::*m)
+{
+    FormField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.placeholder = std::move(placeholder);
+    f.diagFields = std::move(diag);
+    f.kind = FormFieldKind::OptionalNumber;
+    f.get = [m](const ModuleInput& in) -> std::optional<double> {
+        if (const T* v = in.getIf<T>()) return v->*m;
+        return std::nullopt;
+    };
+    f.set = [m](ModuleInput& in, std::optional<double> v) {
+        if (T* p = in.getIf<T>()) p->*m = v;
+    };
+    return f;
+}
+// The unit's own roughing step-over (a fraction of D), empty: the job's
+// technology data.
+template <class T>
+FormField stepOver()
+{
+    return optionalMember<T>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
+                             TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's"), {"stepOver"}, &T::stepOver);
+}
 // A code of one of the code tables, with the meaning of each allowed value.
 template <class T, class Code>
 FormField code(std::string key, std::string label, std::initializer_list<Code> allowed, int T::*m)

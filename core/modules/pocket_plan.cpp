@@ -27,4 +27,11 @@ void choosePocketTools(std::vector<Step>& steps, const ToolPins& pins, const Uni
     }
 }
 
+void setStepOver(std::vector<Step>& steps, std::optional<double> stepOver)
+{
+    if (!stepOver) return;
+    for (Step& s : steps)
+        if (s.kind == StepKind::Roughing) s.stepOver = stepOver;
+}
+
 }  // namespace taiwa

@@ -14,4 +14,8 @@ namespace taiwa {
 void choosePocketTools(std::vector<Step>& steps, const ToolPins& pins, const UnitPlanContext& ctx, const char* module,
                        Diagnostics& out);
 
+// The unit's own step-over (a fraction of D) to its roughing steps; the
+// technology data's stays in force when the unit has none.
+void setStepOver(std::vector<Step>& steps, std::optional<double> stepOver);
+
 }  // namespace taiwa

@@ -77,7 +77,7 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
     const double D = std::max(tool.diameter, 1e-3);
     const double layers = std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
     const double rings =
-        step.outline ? std::ceil(inscribedRadius(step.outline->corners) / std::max(std::min(tech.stepOver, params.finishStepOver) * D, 1e-3)) + 1
+        step.outline ? std::ceil(inscribedRadius(step.outline->corners) / std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1
                      : 1;
     constexpr double kMovesPerRing = 12;  // four sides, four corners, links
     switch (step.kind) {

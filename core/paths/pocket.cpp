@@ -104,7 +104,7 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
 ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     const auto depths = layerDepths(step.startDepth, step.cutDepth, tech.gamma * tool.diameter);
-    return clear(step, tool, depths, tech.stepOver * tool.diameter, p);
+    return clear(step, tool, depths, step.stepOver.value_or(tech.stepOver) * tool.diameter, p);
 }
 
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p)

@@ -869,6 +869,14 @@
         <source>not touched</source>
         <translation>未測定</translation>
     </message>
+    <message>
+        <source>Step-over (× D)</source>
+        <translation>ステップオーバ(× D)</translation>
+    </message>
+    <message>
+        <source>technology data's</source>
+        <translation>技術データの値</translation>
+    </message>
 </context>
 <context>
     <name>taiwa::ui::TechnologyDialog</name>

@@ -29,6 +29,7 @@ struct M2DPocket {
     int toolUse = 1;               // U: 1 or 9 only
     int pilotHole = 0;             // H
     double scallop = 0.01;         // scallop height of the inclined-face finish
+    std::optional<double> stepOver;  // roughing's step-over (fraction of D) for this unit; the technology's when absent
     ToolPins tools;
     double rightAngle() const { return theta2.value_or(theta1); }
 

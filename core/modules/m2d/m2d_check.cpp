@@ -125,6 +125,7 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
     if (!allFinite(p, r)) return report;
 
     const bool depthOk = checkDepth(p.depth, r);
+    checkStepOver(p.stepOver, r);
     // The smallest scallop height keeps the inclined faces' passes bounded (R / 1 µm at most).
     constexpr double kSmallestScallop = 0.001;  // mm
     if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));

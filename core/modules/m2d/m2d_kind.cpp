@@ -13,7 +13,7 @@ namespace taiwa {
 namespace {
 
 const std::vector<std::string> kKeys{"module", "name",         "corner", "L1", "L2",      "depth", "theta1",
-                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "tools"};
+                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "stepOver", "tools"};
 
 }  // namespace
 
@@ -68,6 +68,7 @@ protected:
         m.toolUse = f.whole("U").value_or(0);
         m.pilotHole = f.whole("H", 0);
         m.scallop = f.number("scallop", 0.01);
+        m.stepOver = f.optionalNumber("stepOver");
         m.tools = f.wholeMap("tools");
         return m;
     }
@@ -84,6 +85,7 @@ protected:
         u["U"] = d.toolUse;
         u["H"] = d.pilotHole;
         u["scallop"] = io::number(d.scallop);
+        if (d.stepOver) u["stepOver"] = io::number(*d.stepOver);
         if (!d.tools.empty()) u["tools"] = io::pins(d.tools);
     }
 
@@ -111,6 +113,7 @@ protected:
             diameter = findTool(ctx.library, pick.choice->toolId)->diameter;
         }
         std::vector<Step> steps = decomposeM2D(m2d, ctx.tech, diameter, ctx.unit);
+        setStepOver(steps, m2d.stepOver);
         choosePocketTools(steps, m2d.tools, ctx, M2DPocket::kName, out);
         // The inclined-face passes must stop short of the vertical end walls'
         // corner rounding: give those steps the floor section (radius r1).
@@ -136,20 +139,9 @@ protected:
                                        &M2DPocket::depth));
         fs.push_back(member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"),
                                        {"theta1"}, &M2DPocket::theta1));
-        FormField t2;
-        t2.key = "theta2";
-        t2.label = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)");
-        t2.diagFields = {"theta2"};
-        t2.kind = FormFieldKind::OptionalNumber;
-        t2.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1");
-        t2.get = [](const ModuleInput& m) -> std::optional<double> {
-            if (const auto* p = m.getIf<M2DPocket>()) return p->theta2;
-            return std::nullopt;
-        };
-        t2.set = [](ModuleInput& m, std::optional<double> v) {
-            if (auto* p = m.getIf<M2DPocket>()) p->theta2 = v;
-        };
-        fs.push_back(std::move(t2));
+        fs.push_back(form::optionalMember<M2DPocket>("theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)"),
+                                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1"),
+                                                     {"theta2"}, &M2DPocket::theta2));
         fs.push_back(member<M2DPocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
                                        {"cornerRadius"}, &M2DPocket::cornerRadius));
         fs.push_back(form::code<M2DPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
@@ -158,6 +150,7 @@ protected:
                                            {PilotHole::Drill, PilotHole::None}, &M2DPocket::pilotHole));
         fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
                                        {"scallop"}, &M2DPocket::scallop));
+        fs.push_back(form::stepOver<M2DPocket>());
         return fs;
     }
 };

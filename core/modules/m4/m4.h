@@ -24,6 +24,7 @@ struct M4Pocket {
     int toolUse = 1;                  // U (Table 1)
     int wallFinish = 1;               // F (Table 2)
     int pilotHole = 0;                // H (Table 3)
+    std::optional<double> stepOver;   // roughing's step-over (fraction of D) for this unit; the technology's when absent
     ToolPins tools;
 
     void convertLengths(const LengthMap& f)

@@ -142,6 +142,7 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
     if (!allFinite(p, r)) return report;
 
     const bool depthOk = checkDepth(p.depth, r);
+    checkStepOver(p.stepOver, r);
 
     const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
     if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));

@@ -12,7 +12,7 @@ namespace taiwa {
 namespace {
 
 const std::vector<std::string> kKeys{"module", "name", "corners", "cornerRadius", "depth",
-                                     "taper",  "U",    "F",       "H",            "tools"};
+                                     "taper",  "U",    "F",       "H",            "stepOver", "tools"};
 
 class M4Kind final : public ModuleKindOf<M4Pocket> {
 public:
@@ -51,6 +51,7 @@ protected:
         m.toolUse = f.whole("U").value_or(0);
         m.wallFinish = f.whole("F", 1);
         m.pilotHole = f.whole("H", 0);
+        m.stepOver = f.optionalNumber("stepOver");
         m.tools = f.wholeMap("tools");
         return m;
     }
@@ -65,6 +66,7 @@ protected:
         u["U"] = m.toolUse;
         u["F"] = m.wallFinish;
         u["H"] = m.pilotHole;
+        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
         if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
     }
 
@@ -86,6 +88,7 @@ protected:
     std::vector<Step> planInput(const M4Pocket& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
     {
         std::vector<Step> steps = decomposeM4(mm, ctx.tech, ctx.unit);
+        setStepOver(steps, mm.stepOver);
         choosePocketTools(steps, mm.tools, ctx, M4Pocket::kName, out);
         return steps;
     }
@@ -118,6 +121,7 @@ protected:
             {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage}, &M4Pocket::wallFinish));
         fs.push_back(form::code<M4Pocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
                                           {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole));
+        fs.push_back(form::stepOver<M4Pocket>());
         return fs;
     }
 };

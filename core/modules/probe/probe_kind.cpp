@@ -388,20 +388,8 @@ protected:
             side.codes = {{0, "(round: none)"}, {1, "-X"}, {2, "+X"}, {3, "-Y"}, {4, "+Y"}};
             fs.push_back(std::move(side));
         }
-        FormField top;
-        top.key = "top";
-        top.label = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Top face machine Z");
-        top.placeholder = "not touched";
-        top.diagFields = {"top"};
-        top.kind = FormFieldKind::OptionalNumber;
-        top.get = [](const ModuleInput& m) -> std::optional<double> {
-            const ProbeUnit* p = m.getIf<ProbeUnit>();
-            return p ? p->top : std::nullopt;
-        };
-        top.set = [](ModuleInput& m, std::optional<double> v) {
-            if (ProbeUnit* p = m.getIf<ProbeUnit>()) p->top = v;
-        };
-        fs.push_back(std::move(top));
+        fs.push_back(form::optionalMember<ProbeUnit>("top", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Top face machine Z"),
+                                                     "not touched", {"top"}, &ProbeUnit::top));
         fs.push_back(member<ProbeUnit>("tolerance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tolerance"), {"tolerance"},
                                        &ProbeUnit::tolerance));
         fs.push_back(member<ProbeUnit>("sizeX", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal diameter / width X"),
