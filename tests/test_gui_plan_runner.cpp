@@ -79,6 +79,24 @@ private slots:
         QCOMPARE(firstDepth(*plans.front()), 12.0);
     }
 
+    // The stock grid chosen in the View menu: the last plan simulated again
+    // on it (plate.taiwa's 200 x 150 stock: 0.25 mm standard, 0.1 mm fine,
+    // 0.5 mm coarse, each within its cell budget).
+    void aStockGridChangeSimulatesAgain()
+    {
+        PlanRunner runner;
+        runner.setSimulateStock(true);
+        runner.update(plateWithDepth(10));
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy() && runner.stockSimulation(), 20000);
+        QCOMPARE(runner.stockSimulation()->initial()->cellSize(), 0.25);
+        for (const auto& [grid, cell] : {std::pair{sim::kStockGrids[0], 0.1}, std::pair{sim::kStockGrids[2], 0.5}}) {
+            const auto before = runner.stockSimulation();
+            runner.setStockGrid(grid);
+            QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy() && runner.stockSimulation() != before, 20000);
+            QCOMPARE(runner.stockSimulation()->initial()->cellSize(), cell);
+        }
+    }
+
     void aDialectChangeRepostsTheSamePlan()
     {
         PlanRunner runner;

@@ -20,6 +20,8 @@
 #include "ui/unit_list_panel.h"
 
 #include <QAbstractButton>
+#include <QAction>
+#include <QStatusBar>
 #include <QApplication>
 #include <QFile>
 #include <QLabel>
@@ -46,6 +48,26 @@ private slots:
     {
         QVERIFY(dir_.isValid());
         test::isolateStation(dir_.path());
+    }
+
+    // View > Stock grid: the choice reaches the plan runner, is kept for the
+    // next window, and the status bar says what this stock gets.
+    void stockGridIsChosenAndKept()
+    {
+        {
+            StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCOMPARE(w.planRunner()->stockGrid(), sim::kStockGrids[1]);  // the default
+            auto* fine = w.findChild<QAction*>("stockGrid.0");
+            QVERIFY(fine);
+            fine->trigger();
+            QCOMPARE(w.planRunner()->stockGrid(), sim::kStockGrids[0]);
+            QVERIFY2(w.statusBar()->currentMessage().contains("0.1 mm cells"), qPrintable(w.statusBar()->currentMessage()));
+        }
+        StationWindow again(test::sourcePath("resources/samples/plate.taiwa"));
+        QCOMPARE(again.planRunner()->stockGrid(), sim::kStockGrids[0]);
+        again.findChild<QAction*>("stockGrid.1")->trigger();  // back to the default for the other tests
     }
 
     void staleViewsAreMarked()

@@ -14,14 +14,15 @@ namespace {
 
 // Posts a plan and, for a 3-D preview, simulates its finished part; runs on
 // the worker thread, so it touches nothing but its arguments.
-PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options, bool simulateStock)
+PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options, bool simulateStock,
+                                   sim::StockGrid grid)
 {
     PlanRunner::Result r;
     PostedProgram prog = postProcess(plan->steps, plan->tools, options);
     r.nc = QString::fromStdString(prog.nc);
     r.lines = std::move(prog.lines);
     if (simulateStock) {
-        r.stock = std::make_shared<sim::StockSimulation>(*plan);
+        r.stock = std::make_shared<sim::StockSimulation>(*plan, grid);
         r.stock->finished();  // the part as the preview first shows it
     }
     r.plan = std::move(plan);
@@ -32,7 +33,7 @@ PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostO
 
 PlanRunner::Settings PlanRunner::settings() const
 {
-    return {library_, dialect_.toStdString(), fileStem_.toStdString(), simulateStock_};
+    return {library_, dialect_.toStdString(), fileStem_.toStdString(), simulateStock_, stockGrid_};
 }
 
 PlanRunner::Result PlanRunner::run(const Work& w, const Settings& s)
@@ -45,7 +46,8 @@ PlanRunner::Result PlanRunner::run(const Work& w, const Settings& s)
             r.nc = QObject::tr("(no program: the job has input errors)");
             return r;
         }
-        return postAndSimulate(plan, postOptions(*plan, s.dialect, std::nullopt, 1000, s.fileStem), s.simulateStock);
+        return postAndSimulate(plan, postOptions(*plan, s.dialect, std::nullopt, 1000, s.fileStem), s.simulateStock,
+                               s.stockGrid);
     } catch (const std::exception& e) {
         Result r;
         r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
@@ -119,6 +121,13 @@ void PlanRunner::setDialect(const QString& dialect)
 {
     if (dialect == dialect_) return;
     dialect_ = dialect;
+    repost();
+}
+
+void PlanRunner::setStockGrid(sim::StockGrid grid)
+{
+    if (grid == stockGrid_) return;
+    stockGrid_ = grid;
     repost();
 }
 

@@ -58,6 +58,10 @@ public:
     // Whether the worker also simulates the stock of the finished part (for
     // a 3-D preview; off by default).
     void setSimulateStock(bool on) { simulateStock_ = on; }
+    // The grid the stock is simulated on (View > Stock grid); the last plan
+    // is simulated again on it.
+    void setStockGrid(sim::StockGrid grid);
+    sim::StockGrid stockGrid() const { return stockGrid_; }
     // The stock simulation of fullPlan(), the finished part already
     // simulated on the worker thread (nullptr when not asked for); the GUI
     // thread owns it from here.
@@ -96,6 +100,7 @@ private:
         std::string dialect;
         std::string fileStem;
         bool simulateStock = false;
+        sim::StockGrid stockGrid;
     };
     Settings settings() const;
     static Result run(const Work& w, const Settings& s);
@@ -104,6 +109,7 @@ private:
     QString libraryError_;
     QString dialect_ = QStringLiteral("linuxcnc");
     bool simulateStock_ = false;
+    sim::StockGrid stockGrid_;
     QString fileStem_;
     Work pending_;
     bool pendingFull_ = false;

@@ -37,6 +37,8 @@
 #include <QOpenGLContext>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSettings>
+#include <QLocale>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -200,6 +202,30 @@ void StationWindow::buildMenus()
         connect(a, &QAction::triggered, this, [this, code = code] {
             saveLanguage(code);
             statusBar()->showMessage(tr("The language changes when Taiwa is started again."), 8000);
+        });
+    }
+    // The grid the 3-D view simulates the stock on: finer shows more, takes
+    // longer after each change. Kept across sessions.
+    QMenu* grid = view->addMenu(tr("Stock &grid"));
+    grid->setObjectName("menu.stockGrid");
+    auto* grids = new QActionGroup(this);
+    const int saved = std::clamp(QSettings().value("preview/stockGrid", 1).toInt(), 0, int(std::size(sim::kStockGrids)) - 1);
+    runner_->setStockGrid(sim::kStockGrids[saved]);
+    const QString names[] = {tr("Fine: %1 mm, up to %2 cells"), tr("Standard: %1 mm, up to %2 cells"),
+                             tr("Coarse: %1 mm, up to %2 cells")};
+    for (int k = 0; k < int(std::size(sim::kStockGrids)); ++k) {
+        const sim::StockGrid g = sim::kStockGrids[k];
+        QAction* a = grid->addAction(names[k].arg(g.finest).arg(QLocale().toString(qulonglong(g.maxCells))));
+        a->setObjectName(QStringLiteral("stockGrid.%1").arg(k));
+        a->setCheckable(true);
+        a->setChecked(k == saved);
+        grids->addAction(a);
+        connect(a, &QAction::triggered, this, [this, k, g] {
+            QSettings().setValue("preview/stockGrid", k);
+            runner_->setStockGrid(g);
+            // What this job's stock gets: the grid is coarser on a stock too large for its cells.
+            const double cell = sim::HeightField::cellSizeFor(doc_->job().stock, g.maxCells, g.finest);
+            statusBar()->showMessage(tr("Stock grid: %1 mm cells on this stock").arg(cell, 0, 'g', 3), 8000);
         });
     }
 }

@@ -11,8 +11,9 @@
 
 namespace taiwa::sim {
 
-StockSimulation::StockSimulation(const Plan& plan, std::size_t maxCells)
-    : initial_(std::make_shared<const HeightField>(plan.mmJob.stock, HeightField::cellSizeFor(plan.mmJob.stock, maxCells))),
+StockSimulation::StockSimulation(const Plan& plan, StockGrid grid)
+    : initial_(std::make_shared<const HeightField>(plan.mmJob.stock,
+                                                   HeightField::cellSizeFor(plan.mmJob.stock, grid.maxCells, grid.finest))),
       stride_(std::max(1, (static_cast<int>(plan.steps.size()) + kCheckpoints - 1) / kCheckpoints))
 {
     cuts_.reserve(plan.steps.size());

@@ -430,6 +430,26 @@
         <source>untitled</source>
         <translation>無題</translation>
     </message>
+    <message>
+        <source>Stock &amp;grid</source>
+        <translation>素材グリッド(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Fine: %1 mm, up to %2 cells</source>
+        <translation>細かい: %1 mm、最大 %2 セル</translation>
+    </message>
+    <message>
+        <source>Standard: %1 mm, up to %2 cells</source>
+        <translation>標準: %1 mm、最大 %2 セル</translation>
+    </message>
+    <message>
+        <source>Coarse: %1 mm, up to %2 cells</source>
+        <translation>粗い: %1 mm、最大 %2 セル</translation>
+    </message>
+    <message>
+        <source>Stock grid: %1 mm cells on this stock</source>
+        <translation>素材グリッド: この素材では %1 mm のセル</translation>
+    </message>
 </context>
 <context>
     <name>taiwa::ui::StepPanel</name>
