@@ -3,6 +3,9 @@
 // and PDF. Prints G-code bytes and blocks per second and the export time.
 #include "bench_job.h"
 #include "export/export.h"
+#include "export/sheet_pdf.h"
+#include "paths/cl.h"
+#include "sheet/sheet.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "tools/tool_library.h"
@@ -26,11 +29,17 @@ const std::vector<Tool>& library()
     return tools;
 }
 
-void BM_PlanJob(benchmark::State& state)
+// Planning with tool paths, each time from scratch (nothing proved kept).
+// "repeated": the shared job, whose pockets repeat a few shapes (a pocket
+// shape is proved once); "distinct": no two pockets alike.
+void BM_PlanJob(benchmark::State& state, bool distinct)
 {
-    const Job job = bigJob();
+    const Job job = bigJob(bench::kUnits, distinct);
     std::size_t moves = 0;
     for (auto _ : state) {
+        state.PauseTiming();
+        forgetProvedLayers();
+        state.ResumeTiming();
         const Plan plan = planJob(job, TechnologyTable::builtIn(), library());
         if (!plan.ok()) state.SkipWithError("the bench job does not pass input processing");
         moves = 0;
@@ -40,7 +49,8 @@ void BM_PlanJob(benchmark::State& state)
     state.counters["moves"] = static_cast<double>(moves);
     state.counters["units/s"] = benchmark::Counter(1000.0, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_PlanJob)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PlanJob, repeated, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PlanJob, distinct, true)->Unit(benchmark::kMillisecond);
 
 // Input processing, decomposition, tool choice and ordering only: what the
 // window recomputes on every keystroke before the paths.
@@ -73,18 +83,44 @@ void BM_PostGCode(benchmark::State& state)
 }
 BENCHMARK(BM_PostGCode)->Unit(benchmark::kMillisecond);
 
-// The whole export as `taiwa export` does it (plan + five files incl. PDF).
-void BM_ExportEndToEnd(benchmark::State& state)
+// The parts of an export besides planning and posting, each on its own.
+void BM_Sheet(benchmark::State& state, int part)
 {
-    const Job job = bigJob();
+    const Plan plan = planJob(bigJob(), TechnologyTable::builtIn(), library());
+    SheetOptions o;
+    o.programNumber = 1000;
+    std::size_t bytes = 0;
+    for (auto _ : state) {
+        std::string out;
+        if (part == 0) out = sheetHtml(plan, o);
+        else if (part == 1) out = *sheetPdf(plan, o);
+        else out = stepsJson(plan);
+        bytes = out.size();
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.counters["bytes"] = static_cast<double>(bytes);
+}
+BENCHMARK_CAPTURE(BM_Sheet, html, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sheet, pdf, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sheet, steps_json, 2)->Unit(benchmark::kMillisecond);
+
+// The whole export as `taiwa export` does it (plan + five files incl. PDF),
+// from scratch each time (nothing proved kept).
+void BM_ExportEndToEnd(benchmark::State& state, bool distinct)
+{
+    const Job job = bigJob(bench::kUnits, distinct);
     QTemporaryDir dir;
     for (auto _ : state) {
+        state.PauseTiming();
+        forgetProvedLayers();
+        state.ResumeTiming();
         const Plan plan = planJob(job, TechnologyTable::builtIn(), library());
         const auto written = exportPlan(plan, dir.path().toStdString(), "bench", {});
         if (!written) state.SkipWithError(written.error().c_str());
     }
 }
-BENCHMARK(BM_ExportEndToEnd)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ExportEndToEnd, repeated, false)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ExportEndToEnd, distinct, true)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

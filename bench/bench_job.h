@@ -15,8 +15,10 @@ namespace taiwa::bench {
 constexpr int kUnits = 1000;
 
 // `units` units (the shared 1,000 by default), 40 to a row up to 1,600 units,
-// then a square grid (at most ~110,000 units fit the largest stock).
-inline Job bigJob(int units = kUnits)
+// then a square grid (at most ~110,000 units fit the largest stock). With
+// `distinct`, no two pockets have the same size (each up to 4 mm narrower,
+// still inside its 30 mm cell): nothing proved for one serves another.
+inline Job bigJob(int units = kUnits, bool distinct = false)
 {
     Job job;
     job.name = "bench-decompose";
@@ -28,10 +30,11 @@ inline Job bigJob(int units = kUnits)
     for (int i = 0; i < units; ++i) {
         // Pitch 30 mm along X with 30 mm wide figures: neighbours in a row touch.
         const double x = (i % columns) * 30.0, y = 5 + (i / columns) * 30.0;
+        const double narrower = distinct ? (i % 997) * 0.004 : 0.0;
         if (i % 5 == 4) {
             M2DPocket m;
             m.corner = {x, y};
-            m.lengthX = 30;
+            m.lengthX = 30 - narrower;
             m.lengthY = 20;
             m.depth = 6;
             m.theta1 = 10;
@@ -42,7 +45,7 @@ inline Job bigJob(int units = kUnits)
         }
         const auto* c = codes[i % 7];
         M4Pocket m;
-        m.corners = {{{x, y}, {x + 30, y}, {x + 30, y + 20}, {x, y + 20}}};
+        m.corners = {{{x, y}, {x + 30 - narrower, y}, {x + 30 - narrower, y + 20}, {x, y + 20}}};
         m.cornerRadius = 5;
         m.depth = 8;
         m.taper = (i % 3 == 0) ? 3.0 : 0.0;

@@ -157,6 +157,29 @@ private slots:
         }
     }
 
+    // A pocket's layer is proved once per shape: the same pocket elsewhere
+    // gets the path it gets when nothing was proved before (the memo changes
+    // how often the proof runs, never a path), for shapes with and without
+    // cleanup visits (a skewed outline at a wide step-over leaves cusps).
+    void aRepeatedPocketGetsTheSamePathAsAFreshOne()
+    {
+        TechnologyData wide;
+        wide.stepOver = 0.9;
+        const Quad skew{{{{0, 0}, {70, 5}, {80, 45}, {-5, 38}}}, 4.5};
+        for (const auto& [outline, tech] : {std::pair{rectangle(60, 40, 4), TechnologyData{}}, std::pair{skew, wide}}) {
+            Quad moved = outline;
+            for (auto& c : moved.corners) c = c + Point2{137.25, -61.5};
+            const Tool tool = makeTool(ToolType::FlatEndMill, 8);
+            forgetProvedLayers();
+            const ToolPath fresh = makeToolPath(makePocketStep(StepKind::Roughing, moved, 0, 2), tool, tech, kParams);
+            forgetProvedLayers();
+            makeToolPath(makePocketStep(StepKind::Roughing, outline, 0, 2), tool, tech, kParams);  // proves the shape
+            const ToolPath remembered = makeToolPath(makePocketStep(StepKind::Roughing, moved, 0, 2), tool, tech, kParams);
+            QVERIFY(fresh == remembered);
+            QVERIFY(paths::uncutArea(moved, atHeight(remembered, -2), 4) < 1e-3);
+        }
+    }
+
     // The proof is not vacuous: leaving out the last ring leaves stock.
     void coverageProofDetectsUncutStock()
     {

@@ -34,6 +34,11 @@ struct PathParameters {
 // (no outline, a tool that does not fit) or for a layer it failed to clear.
 ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 
+// Pocket layers are proved once per shape, tool, entry and step-over
+// (pocket.cpp: a repeated pocket gets the same answer moved to its place);
+// benchmarks forget what was proved to measure a first computation.
+void forgetProvedLayers();
+
 // About how many moves makeToolPath would make for the step, from its
 // geometry alone (layers x rings or passes), computed in microseconds: the
 // pipeline refuses a plan whose paths would not fit its move budget before

@@ -10,7 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <mutex>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace taiwa::paths {
 
@@ -58,6 +61,83 @@ void appendRings(PathBuilder& b, const Quad& outline, const std::vector<double>&
     for (const auto& c : cleanup) b.feed(at(c, z));
 }
 
+// The cleanup visits of one layer (see clear()): what the proof that the
+// layer clears the outline finds, and adds, until it finds nothing.
+std::vector<Point2> proveLayer(const Quad& outline, double R, const Entry& entry, const std::vector<double>& offsets,
+                               const PathParameters& p)
+{
+    std::vector<Point2> cleanup;
+    const Quad centres = centreQuad(outline, R);
+    for (int round = 0;; ++round) {
+        PathBuilder probe(at(entry.point, 0.0));
+        appendEntry(probe, entry, 0.0, p.rampAngle, p.climb);
+        appendRings(probe, outline, offsets, cleanup, 0.0, p.climb);
+        const auto more = cleanupPoints(outline, centres, probe.take(), R);
+        if (more.empty()) break;
+        if (round == kCleanupRounds) throw std::logic_error("pocket layer not cleared");
+        cleanup.insert(cleanup.end(), more.begin(), more.end());
+    }
+    return cleanup;
+}
+
+// The proof is most of a pocket's path time, and shops repeat pockets
+// (patterns, arrays, families of parts): it is done about the outline's
+// first corner, a pure function of the shape, the tool, the entry and the
+// step-over there, and remembered. A pocket of the same shape elsewhere
+// gets the same answer moved to its place, the one it would have computed:
+// the cache changes no result, only how often it is computed (so the
+// output does not depend on which thread came first).
+struct ProofKey {
+    Quad outline;       // about its first corner
+    Point2 position;    // the step's position, about that corner
+    double R, hole, stepOver;
+    PathParameters params;
+    bool operator==(const ProofKey& o) const
+    {
+        return outline.corners == o.outline.corners && outline.cornerRadius == o.outline.cornerRadius &&
+               position == o.position && R == o.R && hole == o.hole && stepOver == o.stepOver && params == o.params;
+    }
+};
+struct ProofKeyHash {
+    std::size_t operator()(const ProofKey& k) const
+    {
+        std::size_t h = 0;
+        const auto mix = [&h](double v) { h = h * 1'000'003u ^ std::hash<double>{}(v); };
+        for (const Point2 c : k.outline.corners) mix(c.x), mix(c.y);
+        mix(k.outline.cornerRadius), mix(k.position.x), mix(k.position.y), mix(k.R), mix(k.hole), mix(k.stepOver);
+        return h;
+    }
+};
+
+constexpr std::size_t kRemembered = 4096;  // shapes; forgotten all at once beyond
+std::mutex provedMutex;
+std::unordered_map<ProofKey, std::vector<Point2>, ProofKeyHash> proved;
+
+std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Point2 position, double stepOver,
+                                  const PathParameters& p)
+{
+    std::mutex& mutex = provedMutex;
+
+    const Point2 origin = outline.corners[0];
+    ProofKey key{outline, position - origin, R, hole, stepOver, p};
+    for (auto& c : key.outline.corners) c = c - origin;
+    std::vector<Point2> local;
+    {
+        std::lock_guard lock(mutex);
+        if (const auto it = proved.find(key); it != proved.end()) local = it->second;
+        else local.push_back({std::nan(""), 0});  // not known yet
+    }
+    if (!local.empty() && std::isnan(local.front().x)) {
+        const Entry entry = chooseEntry(key.outline, R, hole, key.position);
+        local = proveLayer(key.outline, R, entry, ringOffsets(key.outline, R, stepOver), p);
+        std::lock_guard lock(mutex);
+        if (proved.size() >= kRemembered) proved.clear();
+        proved.emplace(key, local);
+    }
+    for (auto& c : local) c = c + origin;
+    return local;
+}
+
 ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& depths, double stepOver,
                const PathParameters& p)
 {
@@ -76,17 +156,7 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
     // depth (the entry's last turn or line, the rings, the cleanup; the ramp
     // above the layer does not count), and add cleanup visits for what it
     // leaves until it leaves nothing.
-    std::vector<Point2> cleanup;
-    const Quad centres = centreQuad(outline, R);
-    for (int round = 0;; ++round) {
-        PathBuilder probe(at(entry.point, 0.0));
-        appendEntry(probe, entry, 0.0, p.rampAngle, p.climb);
-        appendRings(probe, outline, offsets, cleanup, 0.0, p.climb);
-        const auto more = cleanupPoints(outline, centres, probe.take(), R);
-        if (more.empty()) break;
-        if (round == kCleanupRounds) throw std::logic_error("pocket layer not cleared");
-        cleanup.insert(cleanup.end(), more.begin(), more.end());
-    }
+    const std::vector<Point2> cleanup = cleanupVisits(outline, R, hole, step.position, stepOver, p);
 
     PathBuilder b(at(entry.point, p.safeZ));
     b.rapid(at(entry.point, -step.startDepth + p.clearance));
@@ -113,3 +183,13 @@ ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters
 }
 
 }  // namespace taiwa::paths
+
+namespace taiwa {
+
+void forgetProvedLayers()
+{
+    std::lock_guard lock(paths::provedMutex);
+    paths::proved.clear();
+}
+
+}  // namespace taiwa
