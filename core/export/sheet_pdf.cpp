@@ -16,7 +16,9 @@
 #include <QPainter>
 #include <QPdfWriter>
 
+#include <map>
 #include <numeric>
+#include <unordered_map>
 
 namespace taiwa {
 
@@ -37,6 +39,7 @@ public:
         title_.setPointSizeF(14);
         p_.setFont(normal_);
         line_ = QFontMetricsF(normal_, &pdf_).height() * 1.35;
+        normalMetrics_ = QFontMetricsF(normal_, &pdf_);
     }
 
     void title(const std::string& text)
@@ -89,8 +92,7 @@ public:
                 if (header) {
                     p_.drawText(text, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, q(cells[i]));
                 } else {
-                    const auto align = (t.numeric[i] ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter;
-                    p_.drawText(text, align, elide(q(cells[i]), text.width()));
+                    cellText(text, cells[i], t.numeric[i]);
                 }
             }
             p_.setFont(normal_);
@@ -116,6 +118,24 @@ public:
     void finish() { footer(); }
 
 private:
+    // A body cell's text, elided to the cell and aligned right (numbers) or
+    // left, on the cell's middle line. Cells repeat (modules, tools, labels,
+    // numbers): each text is elided and measured once per column width, and
+    // drawn at a point rather than laid out in a rectangle (the layout was
+    // most of a 150-page sheet's time).
+    void cellText(const QRectF& cell, const std::string& text, bool right)
+    {
+        auto& fitted = fitted_[cell.width()];
+        auto it = fitted.find(text);
+        if (it == fitted.end()) {
+            const QString elided = normalMetrics_.elidedText(q(text), Qt::ElideRight, cell.width());
+            it = fitted.emplace(text, std::pair{elided, normalMetrics_.horizontalAdvance(elided)}).first;
+        }
+        const auto& [shown, advance] = it->second;
+        const double x = right ? cell.right() - advance : cell.left();
+        const double baseline = cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
+        p_.drawText(QPointF(x, baseline), shown);
+    }
     QString elide(const QString& s, double width) const
     {
         return QFontMetricsF(p_.font(), &pdf_).elidedText(s, Qt::ElideRight, width);
@@ -141,6 +161,8 @@ private:
     QPainter& p_;
     QRectF area_;
     QFont normal_, bold_, title_;
+    QFontMetricsF normalMetrics_{QFont()};
+    std::map<double, std::unordered_map<std::string, std::pair<QString, double>>> fitted_;  // by column width
     double line_ = 0, y_ = 0;
     int page_ = 1;
 };
