@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -116,24 +117,24 @@ std::unordered_map<ProofKey, std::vector<Point2>, ProofKeyHash> proved;
 std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Point2 position, double stepOver,
                                   const PathParameters& p)
 {
-    std::mutex& mutex = provedMutex;
-
     const Point2 origin = outline.corners[0];
     ProofKey key{outline, position - origin, R, hole, stepOver, p};
     for (auto& c : key.outline.corners) c = c - origin;
-    std::vector<Point2> local;
+    std::optional<std::vector<Point2>> known;
     {
-        std::lock_guard lock(mutex);
-        if (const auto it = proved.find(key); it != proved.end()) local = it->second;
-        else local.push_back({std::nan(""), 0});  // not known yet
+        std::lock_guard lock(provedMutex);
+        if (const auto it = proved.find(key); it != proved.end()) known = it->second;
     }
-    if (!local.empty() && std::isnan(local.front().x)) {
+    if (!known) {
+        // Proved outside the lock: two threads may prove one shape at once,
+        // and get the same answer.
         const Entry entry = chooseEntry(key.outline, R, hole, key.position);
-        local = proveLayer(key.outline, R, entry, ringOffsets(key.outline, R, stepOver), p);
-        std::lock_guard lock(mutex);
+        known = proveLayer(key.outline, R, entry, ringOffsets(key.outline, R, stepOver), p);
+        std::lock_guard lock(provedMutex);
         if (proved.size() >= kRemembered) proved.clear();
-        proved.emplace(key, local);
+        proved.emplace(key, *known);
     }
+    std::vector<Point2> local = std::move(*known);
     for (auto& c : local) c = c + origin;
     return local;
 }

@@ -138,8 +138,9 @@ public:
         }
         const std::size_t needed = p.shape == 1 ? 3 : 4;
         if (touches.size() < needed) {
-            s.lines.push_back(fmt::format("{} of at least {} touches entered: the probing cycle ({}) makes them on the machine",
-                                          touches.size(), needed, "STEM.uN.probe.nc"));
+            s.lines.push_back(fmt::format("{} of at least {} touches entered: the probing cycle the export writes "
+                                          "makes them on the machine",
+                                          touches.size(), needed));
             return s;
         }
         const auto flag = [&](int point, const std::string& message) {
