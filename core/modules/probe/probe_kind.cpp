@@ -3,18 +3,13 @@
 // centre and the probing cycle's data), as module_kind.h asks. It has no
 // figure in the XY plane and no machining steps. Registered in
 // modules/registry.cpp.
-#include "modules/probe/probe.h"
-#include "modules/probe/probe_fit.h"
-#include "modules/module_kind.h"
+#include "modules/probe/probe_kind.h"
 
-#include "check/messages.h"
 #include "io/job_messages.h"
 #include "io/json_write.h"
 
-#include <fmt/format.h>
 
-#include <cmath>
-#include <numbers>
+#include <algorithm>
 #include <variant>
 
 namespace taiwa {
@@ -23,36 +18,6 @@ namespace {
 
 const std::vector<std::string> kKeys{"module", "name", "shape", "where", "touches", "sides", "origin", "top",
                                      "T", "tolerance", "sizeX", "sizeY", "touchDepth", "clearance", "search", "feed"};
-
-// The touches entered, in order (the first at 0, 0).
-std::vector<probe::Touch> touchesOf(const ProbeUnit& p)
-{
-    std::vector<probe::Touch> t;
-    for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i)
-        if (p.x[i] && p.y[i]) t.push_back({{*p.x[i], *p.y[i]}, static_cast<probe::Side>(p.side[i])});
-    return t;
-}
-
-const Tool* probeTool(const ProbeUnit& p, const std::vector<Tool>& library)
-{
-    const Tool* found = nullptr;
-    for (const Tool& t : library)
-        if (t.type == ToolType::Probe && (p.tool == 0 || t.id == p.tool)) {
-            if (found && p.tool == 0) return nullptr;  // several probes: which one must be said
-            found = &t;
-        }
-    return found;
-}
-
-// The fit of the unit's touches (in mm) with its probe's ball: the
-// workpiece's circle or rectangle, or why not.
-using UnitFit = std::variant<probe::CircleFit, probe::RectangleFit, probe::FitProblem>;
-UnitFit fitOf(const ProbeUnit& p, const std::vector<probe::Touch>& touches, const Tool& probe)
-{
-    const probe::FitSettings fs{probe.radius(), p.where == 2, p.tolerance};
-    const auto widen = [](auto&& fit) { return std::visit([](auto&& v) -> UnitFit { return v; }, fit); };
-    return p.shape == 1 ? widen(probe::fitCircle(touches, fs)) : widen(probe::fitRectangle(touches, fs));
-}
 
 class ProbeKind final : public ModuleKindOf<ProbeUnit> {
 public:
@@ -113,83 +78,7 @@ public:
 
     std::optional<Sketch> sketch(const ModuleInput& unit, LengthUnit shown, const std::vector<Tool>& library) const override
     {
-        ProbeUnit p = unit.as<ProbeUnit>();
-        p.convertLengths([shown](double v) { return toMm(v, shown); });
-        const auto len = [shown](double mm) {
-            const int decimals = shown == LengthUnit::Inch ? 4 : 3;
-            const double v = fromMm(mm, shown);
-            return fmt::format("{:.{}f} {}", std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v, decimals, unitSymbol(shown));
-        };
-        Sketch s;
-        const auto touches = touchesOf(p);
-        std::vector<std::size_t> index;  // of each touch among P1..P8
-        for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i)
-            if (p.x[i] && p.y[i]) index.push_back(i);
-        for (std::size_t k = 0; k < touches.size(); ++k) {
-            std::string label = "P" + std::to_string(index[k] + 1);
-            if (p.shape == 2 && touches[k].side != probe::Side::None) label += std::string(" ") + probe::toString(touches[k].side);
-            s.marks.push_back({touches[k].at, label, false});
-        }
-        const Tool* tool = probeTool(p, library);
-        if (!tool) {
-            s.problem = true;
-            s.lines.push_back("No probe in the tool library (type \"probe\"): the ball radius is unknown");
-            return s;
-        }
-        const std::size_t needed = p.shape == 1 ? 3 : 4;
-        if (touches.size() < needed) {
-            s.lines.push_back(fmt::format("{} of at least {} touches entered: the probing cycle the export writes "
-                                          "makes them on the machine",
-                                          touches.size(), needed));
-            return s;
-        }
-        const auto flag = [&](int point, const std::string& message) {
-            s.problem = true;
-            s.lines.push_back(message);
-            for (std::size_t k = 0; k < s.marks.size(); ++k)
-                if (static_cast<int>(index[k]) + 1 == point) s.marks[k].flagged = true;
-        };
-        const auto residualLabels = [&](const std::vector<double>& residuals) {
-            for (std::size_t k = 0; k < s.marks.size() && k < residuals.size(); ++k)
-                // Residuals below half the last digit shown as +0.0000, not -0.0000.
-                s.marks[k].label += fmt::format(" {:+.4f}", std::abs(residuals[k]) < 5e-5 ? 0.0 : fromMm(residuals[k], shown));
-        };
-        const UnitFit fit = fitOf(p, touches, *tool);
-        Point2 centre;
-        if (const auto* e = std::get_if<probe::FitProblem>(&fit)) {
-            flag(e->point, e->message);
-            return s;
-        } else if (const auto* c = std::get_if<probe::CircleFit>(&fit)) {
-            centre = c->centre;
-            residualLabels(c->residuals);
-            // The workpiece's outline, and the ball centres' circle it was fitted to.
-            const double ballPath = p.where == 2 ? c->radius - tool->radius() : c->radius + tool->radius();
-            for (const double r : {c->radius, ballPath}) {
-                std::vector<Point2> ring;
-                for (int k = 0; k < 120; ++k)
-                    ring.push_back(c->centre + r * Point2{std::cos(k * std::numbers::pi / 60), std::sin(k * std::numbers::pi / 60)});
-                s.outlines.push_back(std::move(ring));
-            }
-            s.lines.push_back(fmt::format("{}: diameter {}", p.where == 2 ? "Bore" : "Boss", len(2 * c->radius)));
-        } else {
-            const auto& r = std::get<probe::RectangleFit>(fit);
-            centre = r.centre;
-            residualLabels(r.residuals);
-            const double a = r.rotation * std::numbers::pi / 180;
-            const Point2 ex{std::cos(a), std::sin(a)}, ey{-std::sin(a), std::cos(a)};
-            std::vector<Point2> box;
-            for (const auto& [u, v] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-                box.push_back(r.centre + (u * r.width / 2) * ex + (v * r.length / 2) * ey);
-            s.outlines.push_back(std::move(box));
-            s.lines.push_back(fmt::format("{}: {} x {}, turned {}", p.where == 2 ? "Pocket" : "Block", len(r.width), len(r.length),
-                                          r.rotationMeasured ? fmt::format("{:.4f} deg", r.rotation) : "(not measured: touch one side twice)"));
-        }
-        s.centre = centre;
-        const Point2 machine = p.origin + centre;
-        s.lines.push_back(fmt::format("Centre from P1: X {} Y {}", len(centre.x), len(centre.y)));
-        s.lines.push_back(fmt::format("Work offset to set: X {} Y {}{}", len(machine.x), len(machine.y),
-                                      p.top ? " Z " + len(*p.top) : std::string()));
-        return s;
+        return probeSketch(unit.as<ProbeUnit>(), shown, library);
     }
 
 protected:
@@ -274,67 +163,7 @@ protected:
 
     check::UnitReport checkInput(const ProbeUnit& p, int unitNo, const check::Context& ctx) const override
     {
-        check::UnitReport report;
-        check::Reporter r{unitNo, ProbeUnit::kName, ctx, report.diagnostics};
-        if (p.shape != 1 && p.shape != 2)
-            r.unit("shape", fmt::format("shape {} is not defined: 1 round (boss or bore), 2 rectangular (block or pocket)", p.shape));
-        if (p.where != 1 && p.where != 2)
-            r.unit("where", fmt::format("where {} is not defined: 1 touched from outside (boss, block), 2 from inside "
-                                        "(bore, pocket)",
-                                        p.where));
-        bool finite = true;
-        for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i) {
-            const std::string field = "touches[" + std::to_string(i) + "]", point = "P" + std::to_string(i + 1);
-            if (p.x[i]) finite &= check::checkLength(*p.x[i], field, "the X of " + point, r);
-            if (p.y[i]) finite &= check::checkLength(*p.y[i], field, "the Y of " + point, r);
-            if (static_cast<bool>(p.x[i]) != static_cast<bool>(p.y[i])) {
-                r.unit(field, fmt::format("point {}: its {} is missing", i + 1, p.x[i] ? "Y" : "X"));
-                finite = false;
-            }
-            if (p.shape == 2 && p.x[i] && p.y[i] && (p.side[i] < 1 || p.side[i] > 4)) {
-                r.unit("sides[" + std::to_string(i) + "]",
-                       fmt::format("point {}: say which side it touches: 1 -X, 2 +X, 3 -Y, 4 +Y", i + 1));
-                finite = false;
-            }
-        }
-        if (!p.x[0] || !p.y[0] || *p.x[0] != 0.0 || *p.y[0] != 0.0) {
-            r.unit("touches[0]", "point 1 is the measuring origin: it is at 0, 0 and the others are measured from it");
-            finite = false;
-        }
-        finite &= check::checkLength(p.origin.x, "origin", "the machine X of point 1", r) &&
-                  check::checkLength(p.origin.y, "origin", "the machine Y of point 1", r);
-        if (p.top) finite &= check::checkLength(*p.top, "top", "the machine Z of the top face", r);
-        const auto positive = [&](double v, const char* field, const char* what, double most) {
-            if (!std::isfinite(v) || v <= 0 || v > most) {
-                r.unit(field, fmt::format("{} must be above 0 and at most {:g} mm, not {:g}", what, most, v));
-                return false;
-            }
-            return true;
-        };
-        positive(p.sizeX, "sizeX", p.shape == 2 ? "the nominal width along X" : "the nominal diameter", check::kMaxLength);
-        if (p.shape == 2) positive(p.sizeY, "sizeY", "the nominal length along Y", check::kMaxLength);
-        positive(p.touchDepth, "touchDepth", "the depth of the side touches", 1000);
-        positive(p.clearance, "clearance", "the clearance", 1000);
-        positive(p.search, "search", "the search distance", 1000);
-        if (!std::isfinite(p.feed) || p.feed <= 0 || p.feed > 5000)
-            r.unit("feed", fmt::format("the probing feed must be above 0 and at most 5000 mm/min, not {:g}", p.feed));
-        if (!std::isfinite(p.tolerance) || p.tolerance < 0.001 || p.tolerance > 1)
-            r.unit("tolerance", fmt::format("the tolerance must lie between 0.001 and 1 mm, not {:g}", p.tolerance));
-
-        const Tool* tool = ctx.library ? probeTool(p, *ctx.library) : nullptr;
-        if (ctx.library && !tool) {
-            if (p.tool != 0) r.unit("T", fmt::format("T{} is not a probe in the tool library", p.tool));
-            else r.unit("T", "the tool library has no probe, or several: add one of type \"probe\" or say which (T)");
-        }
-        if (!finite || !tool || hasErrors(report.diagnostics)) return report;
-
-        // The fit of the touches entered (none but the origin: the cycle only).
-        const auto touches = touchesOf(p);
-        if (touches.size() <= 1) return report;
-        const UnitFit fit = fitOf(p, touches, *tool);
-        if (const auto* e = std::get_if<probe::FitProblem>(&fit))
-            r.unit(e->point > 0 ? "touches[" + std::to_string(e->point - 1) + "]" : "touches", e->message);
-        return report;
+        return check::checkProbe(p, unitNo, ctx);
     }
 
     std::optional<Quad> outline(const ProbeUnit&) const override { return std::nullopt; }
