@@ -170,6 +170,13 @@ private slots:
         const auto plan = w.planRunner()->fullPlan();
         QVERIFY(plan);
         QVERIFY(QString::fromStdString(sheetHtml(*plan, {})).contains("<td class=n>1 Cover recess</td>"));
+        // And the NC program's step comments, quoted; parentheses and '%'
+        // (which a comment cannot hold) become spaces.
+        QVERIFY2(w.ncView()->text()->toPlainText().contains("(STEP 1: UNIT 1 \"Cover recess\" M4 PILOT HOLE T"),
+                 qPrintable(w.ncView()->text()->toPlainText().left(600)));
+        retype(name, "Recess (B) 50%");
+        w.planRunner()->flush();
+        QVERIFY(w.ncView()->text()->toPlainText().contains("UNIT 1 \"Recess  B  50 \" M4"));
     }
 
     void focusGoesToTheNewUnitsFirstField()

@@ -64,7 +64,11 @@ public:
     void step(int index, const Step& s, const Cutting& c)
     {
         sink_.source({index, -1});
-        sink_.comment(fmt::format("STEP {}: UNIT {} {} {} T{}", index + 1, s.unit + 1, s.module, upper(s.label()), c.tool->id));
+        // The unit by its number and the name the operator gave it (quoted:
+        // a name may hold words like a step's).
+        const auto u = static_cast<std::size_t>(s.unit);
+        const std::string name = u < o_.unitNames.size() && !o_.unitNames[u].empty() ? " \"" + o_.unitNames[u] + "\"" : "";
+        sink_.comment(fmt::format("STEP {}: UNIT {}{} {} {} T{}", index + 1, s.unit + 1, name, s.module, upper(s.label()), c.tool->id));
         const ToolPath& p = *s.path;
         const double approachZ = std::max(o_.safeZ, p.start.z);
         if (c.tool->id != tool_) {

@@ -21,6 +21,7 @@ struct PostOptions {
     std::string programName;           // job name for the header comment
     std::string material;              // for speeds and feeds
     std::string workOffset = "G54";    // the job's: G54..G59; G54.1 P1..P48 (fanuc); G59.1..G59.3 (linuxcnc)
+    std::vector<std::string> unitNames;  // the operator's name of each unit (by index; empty: none), in the step comments
     bool coolant = true;
     double safeZ = 5.0;                // [mm] above the stock top
 };
