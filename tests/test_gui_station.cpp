@@ -16,6 +16,7 @@
 #include "ui/job_document.h"
 #include "ui/length_units.h"
 #include "ui/nc_view.h"
+#include "ui/number_text.h"
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
 #include "ui/step_panel.h"
@@ -55,6 +56,21 @@ class TestGuiStation : public QObject {
     static bool isRed(QWidget* e) { return Fields::isRed(e); }
 
 private slots:
+    // Times as the operator reads a clock, in the step table too.
+    void timesAreShownAsMinutesAndSeconds()
+    {
+        QCOMPARE(clockTime(0), QString("0:00"));
+        QCOMPARE(clockTime(0.42), QString("0:25"));
+        QCOMPARE(clockTime(12.0833), QString("12:05"));
+        QCOMPARE(clockTime(62.5), QString("1:02:30"));
+        StepTable table;
+        const Plan plan = planJob(*readJobFile(test::sourcePath("resources/samples/m4-standard.taiwa").toStdString()).job,
+                                  TechnologyTable::builtIn(), defaultToolLibrary());
+        table.setPlan(std::make_shared<const Plan>(plan));
+        QCOMPARE(table.horizontalHeaderItem(6)->text(), QString("Time"));
+        QCOMPARE(table.item(1, 6)->text(), clockTime(*plan.steps[1].minutes));
+        QVERIFY(table.item(1, 6)->text().contains(':'));
+    }
     void initTestCase()
     {
         QVERIFY(dir_.isValid());

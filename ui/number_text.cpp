@@ -2,6 +2,7 @@
 #include "ui/number_text.h"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -35,6 +36,14 @@ QString formatShown(double v)
     if (!long_ || std::abs(v) >= 1e9) return exact;
     const double scale = std::pow(10.0, kShownDecimals);
     return formatNumber(std::round(v * scale) / scale);
+}
+
+QString clockTime(double minutes)
+{
+    const long long total = std::llround(std::max(minutes, 0.0) * 60);
+    const long long h = total / 3600, m = total / 60 % 60, sec = total % 60;
+    if (h > 0) return QStringLiteral("%1:%2:%3").arg(h).arg(m, 2, 10, QLatin1Char('0')).arg(sec, 2, 10, QLatin1Char('0'));
+    return QStringLiteral("%1:%2").arg(m).arg(sec, 2, 10, QLatin1Char('0'));
 }
 
 }  // namespace taiwa::ui

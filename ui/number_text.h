@@ -16,6 +16,10 @@ std::optional<double> parseNumber(const QString& text);
 // Shortest text that parses back to exactly `v` ("12.5", "-3", "0.01").
 QString formatNumber(double v);
 
+// A time in minutes as the operator reads a clock: "0:25", "12:05",
+// "1:02:30" from an hour on; rounded to the second.
+QString clockTime(double minutes);
+
 // What a form shows of a stored value: formatNumber, but at most
 // kShownDecimals decimals (6 mm converted to inch is stored exactly as
 // 0.23622047244094488 and shown as 0.23622). Display only: the job keeps the

@@ -12,7 +12,7 @@ namespace taiwa::ui {
 StepTable::StepTable(QWidget* parent) : QTableWidget(0, 7, parent)
 {
     setObjectName("steps");
-    setHorizontalHeaderLabels({tr("No."), tr("Unit"), tr("Step"), tr("Tool"), tr("Start"), tr("Depth"), tr("Min")});
+    setHorizontalHeaderLabels({tr("No."), tr("Unit"), tr("Step"), tr("Tool"), tr("Start"), tr("Depth"), tr("Time")});
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setSelectionMode(QAbstractItemView::SingleSelection);
@@ -45,7 +45,9 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         setItem(r, 3, new QTableWidgetItem(tool));
         setItem(r, 4, new QTableWidgetItem(round(s.startDepth)));
         setItem(r, 5, new QTableWidgetItem(round(s.cutDepth)));
-        setItem(r, 6, new QTableWidgetItem(s.minutes ? QString::number(*s.minutes, 'f', 1) : QString()));
+        auto* time = new QTableWidgetItem(s.minutes ? clockTime(*s.minutes) : QString());
+        time->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        setItem(r, 6, time);
     }
     resizeColumnsToContents();
 }

@@ -588,8 +588,8 @@
     </message>
     <message>
         <location filename="../../ui/step_table.cpp" line="15"/>
-        <source>Min</source>
-        <translation>分</translation>
+        <source>Time</source>
+        <translation>時間</translation>
     </message>
 </context>
 <context>
