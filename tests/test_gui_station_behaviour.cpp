@@ -20,6 +20,7 @@
 #include "ui/unit_list_panel.h"
 
 #include <QAbstractButton>
+#include <QComboBox>
 #include <QAction>
 #include <QStatusBar>
 #include <QApplication>
@@ -68,6 +69,34 @@ private slots:
         StationWindow again(test::sourcePath("resources/samples/plate.taiwa"));
         QCOMPARE(again.planRunner()->stockGrid(), sim::kStockGrids[0]);
         again.findChild<QAction*>("stockGrid.1")->trigger();  // back to the default for the other tests
+    }
+
+    // One dialect: the chooser shows the one the program on view is posted
+    // in and the export offers; the last one chosen is where the next window
+    // starts (it once said fanuc over a LinuxCNC program).
+    void theDialectShownIsTheDialectPosted()
+    {
+        {
+            StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.planRunner()->flush();
+            auto* chooser = w.findChild<QComboBox*>("nc.dialect");
+            QVERIFY(chooser);
+            QCOMPARE(chooser->currentText(), w.planRunner()->dialect());
+            QCOMPARE(chooser->currentText(), QString("linuxcnc"));
+            QVERIFY(!w.ncView()->text()->toPlainText().startsWith("%"));
+            chooser->setCurrentText("fanuc");
+            w.planRunner()->flush();
+            QCOMPARE(w.planRunner()->dialect(), QString("fanuc"));
+            QVERIFY(w.ncView()->text()->toPlainText().startsWith("%\nO1000"));
+        }
+        StationWindow again(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        again.planRunner()->flush();
+        QCOMPARE(again.findChild<QComboBox*>("nc.dialect")->currentText(), QString("fanuc"));
+        QCOMPARE(again.planRunner()->dialect(), QString("fanuc"));
+        QVERIFY(again.ncView()->text()->toPlainText().startsWith("%"));
+        again.findChild<QComboBox*>("nc.dialect")->setCurrentText("linuxcnc");  // back for the other tests
     }
 
     void staleViewsAreMarked()

@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QSignalBlocker>
 #include <QTextBlock>
 #include <QVBoxLayout>
 
@@ -41,6 +42,12 @@ NcView::NcView(QWidget* parent)
 }
 
 QString NcView::dialect() const { return dialect_->currentText(); }
+
+void NcView::setDialect(const QString& dialect)
+{
+    const QSignalBlocker quiet(dialect_);
+    dialect_->setCurrentText(dialect);
+}
 
 void NcView::setProgram(const QString& nc, const std::vector<BlockSource>& lines)
 {

@@ -22,6 +22,9 @@ public:
 
     // The dialect chosen in the combo box ("linuxcnc", "fanuc").
     QString dialect() const;
+    // Shows `dialect` as chosen (the plan runner's, which the program is
+    // posted in), without announcing it as a change.
+    void setDialect(const QString& dialect);
     // Shows a program; `lines` has one entry per line of `nc`.
     void setProgram(const QString& nc, const std::vector<BlockSource>& lines);
     // Shows why there is no program (input errors, planning failure).

@@ -262,7 +262,17 @@ void StationWindow::wire()
                 onProgram(plan);
                 showStale();
             });
-    connect(nc_, &NcView::dialectChanged, runner_, &PlanRunner::setDialect);
+    // One dialect: the plan runner's, which the program on view is posted in
+    // and the export offers first; the chooser shows it. The last one chosen
+    // is where the next window starts.
+    QString dialect = QSettings().value("nc/dialect", "linuxcnc").toString();
+    if (!isDialect(dialect.toStdString())) dialect = "linuxcnc";
+    runner_->setDialect(dialect);
+    nc_->setDialect(dialect);
+    connect(nc_, &NcView::dialectChanged, this, [this](const QString& d) {
+        QSettings().setValue("nc/dialect", d);
+        runner_->setDialect(d);
+    });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     connect(units_, &UnitListPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
