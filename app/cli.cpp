@@ -41,7 +41,9 @@ Usage:
   taiwa export JOB --out DIR [--dialect fanuc|linuxcnc] [--units mm|inch]
                                    the whole pipeline; writes STEM.nc,
                                    STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf
-                                   and STEM.steps.json into DIR
+                                   and STEM.steps.json into DIR (and each probing
+                                   unit's programs); the dialect: --dialect, else
+                                   the job's, else linuxcnc
   taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
                [--view iso|top|front]
                                    the 3-D preview of step K (1-based, in
@@ -105,14 +107,16 @@ int exportJob(const Options& o, int& argc, char** argv)
     std::signal(SIGXFSZ, SIG_IGN);
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
-    // Whether the chosen controller has the job's work offset is an input
-    // error of the job, known only now that the dialect is.
-    if (auto why = workOffsetProblem(o.dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
+    // The dialect asked for, else the job's own, else LinuxCNC's. Whether its
+    // controller has the job's work offset is an input error of the job,
+    // known only now that the dialect is.
+    const std::string dialect = !o.dialect.empty() ? o.dialect : !l.plan.job.dialect.empty() ? l.plan.job.dialect : "linuxcnc";
+    if (auto why = workOffsetProblem(dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
     // The PDF writer needs a QGuiApplication; no window is ever shown.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication qapp(argc, argv);
     ExportOptions e;
-    e.dialect = o.dialect;
+    e.dialect = dialect;
     e.units = o.units;
     e.jobFile = fileName(o.job);
     const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);

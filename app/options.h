@@ -14,7 +14,7 @@ struct Options {
     Command command = Command::Station;
     std::string job;                  // JOB argument
     std::string out;                  // --out
-    std::string dialect = "linuxcnc"; // --dialect
+    std::string dialect;              // --dialect; empty: the job's, else linuxcnc
     std::optional<LengthUnit> units;  // --units
     std::string tools;                // --tools
     std::optional<int> step;          // --step K (1-based); empty = all

@@ -146,6 +146,34 @@ private slots:
         QVERIFY2(r.err.contains("unit 2 (M4)") || r.err.contains("unit 1 (M4)"), qPrintable(r.err));
     }
 
+    // The job's own dialect (format version 2): exported without --dialect,
+    // overridden by it; an unknown one, or one whose controller lacks the
+    // job's work offset, is refused on input.
+    void theJobsDialectIsExported()
+    {
+        json job = baseJob();
+        job["version"] = 2;
+        job["dialect"] = "fanuc";
+        QTemporaryDir dir;
+        const QString file = dir.filePath("fanuc-job.taiwa");
+        writeFile(file, job.dump());
+        QCOMPARE(runTaiwa({"export", file, "--out", dir.filePath("a")}).exitCode, 0);
+        QVERIFY(readFile(dir.filePath("a/fanuc-job.nc")).starts_with("%\nO1000"));
+        QCOMPARE(runTaiwa({"export", file, "--out", dir.filePath("b"), "--dialect", "linuxcnc"}).exitCode, 0);
+        QVERIFY(!readFile(dir.filePath("b/fanuc-job.nc")).starts_with("%"));
+        job["dialect"] = "heidenhain";
+        writeFile(file, job.dump());
+        auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("job dialect: unknown dialect 'heidenhain'; this program posts fanuc, linuxcnc"), qPrintable(r.err));
+        job["dialect"] = "fanuc";
+        job["workOffset"] = "G59.1";
+        writeFile(file, job.dump());
+        r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("workOffset") && r.err.contains("fanuc"), qPrintable(r.err));
+    }
+
     void corruptFilesAreRefusedCleanly_data()
     {
         QTest::addColumn<QByteArray>("content");

@@ -24,6 +24,7 @@
 #include <QAction>
 #include <QStatusBar>
 #include <QApplication>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -71,11 +72,13 @@ private slots:
         again.findChild<QAction*>("stockGrid.1")->trigger();  // back to the default for the other tests
     }
 
-    // One dialect: the chooser shows the one the program on view is posted
-    // in and the export offers; the last one chosen is where the next window
-    // starts (it once said fanuc over a LinuxCNC program).
-    void theDialectShownIsTheDialectPosted()
+    // One dialect, the job's: the chooser shows the one the program on view
+    // is posted in (it once said fanuc over a LinuxCNC program); choosing
+    // another is an undoable edit of the job, saved with it; a new job takes
+    // the one last chosen.
+    void theDialectShownIsTheJobsAndIsPosted()
     {
+        const QString saved = QDir(dir_.path()).filePath("dialect.taiwa");
         {
             StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
             w.show();
@@ -83,20 +86,29 @@ private slots:
             w.planRunner()->flush();
             auto* chooser = w.findChild<QComboBox*>("nc.dialect");
             QVERIFY(chooser);
-            QCOMPARE(chooser->currentText(), w.planRunner()->dialect());
-            QCOMPARE(chooser->currentText(), QString("linuxcnc"));
+            QCOMPARE(chooser->currentText(), QString("linuxcnc"));  // the sample names none: the command line's
+            QCOMPARE(w.planRunner()->dialect(), QString("linuxcnc"));
             QVERIFY(!w.ncView()->text()->toPlainText().startsWith("%"));
             chooser->setCurrentText("fanuc");
             w.planRunner()->flush();
+            QCOMPARE(w.document()->job().dialect, std::string("fanuc"));
+            QVERIFY(w.document()->isModified());
             QCOMPARE(w.planRunner()->dialect(), QString("fanuc"));
             QVERIFY(w.ncView()->text()->toPlainText().startsWith("%\nO1000"));
+            w.document()->undoStack()->undo();
+            QCOMPARE(chooser->currentText(), QString("linuxcnc"));
+            QCOMPARE(w.planRunner()->dialect(), QString("linuxcnc"));
+            w.document()->undoStack()->redo();
+            QVERIFY(w.document()->saveTo(saved).isEmpty());
         }
-        StationWindow again(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        StationWindow again(saved);
         again.planRunner()->flush();
         QCOMPARE(again.findChild<QComboBox*>("nc.dialect")->currentText(), QString("fanuc"));
-        QCOMPARE(again.planRunner()->dialect(), QString("fanuc"));
         QVERIFY(again.ncView()->text()->toPlainText().startsWith("%"));
-        again.findChild<QComboBox*>("nc.dialect")->setCurrentText("linuxcnc");  // back for the other tests
+        StationWindow fresh(QString{});  // a new job: the dialect last chosen
+        QCOMPARE(fresh.document()->job().dialect, std::string("fanuc"));
+        QCOMPARE(fresh.findChild<QComboBox*>("nc.dialect")->currentText(), QString("fanuc"));
+        rememberDialect("linuxcnc");  // as the other tests expect
     }
 
     void staleViewsAreMarked()

@@ -172,6 +172,20 @@ private slots:
             QVERIFY2(seen.count(want), want);
     }
 
+    // Version 2 only when the job names its dialect: a job without one is
+    // still written as version 1 (a program of version 1 reads it).
+    void theDialectIsVersionTwo()
+    {
+        Job j = handBuilt();
+        QVERIFY(writeJob(j).find("\"version\": 1,") != std::string::npos);
+        j.dialect = "fanuc";
+        const std::string text = writeJob(j);
+        QVERIFY(text.find("\"version\": 2,") != std::string::npos);
+        QVERIFY(text.find("\"dialect\": \"fanuc\"") != std::string::npos);
+        const JobReadResult back = readJob(text);
+        QVERIFY(back.job && *back.job == j);
+    }
+
     void handBuiltJobsRoundTrip()
     {
         Job inch = handBuilt();

@@ -2,6 +2,8 @@
 // export.
 #include "ui/file_actions.h"
 
+#include "ui/nc_view.h"
+
 #include "job/job_file.h"
 #include "export/export.h"
 #include "post/post.h"
@@ -48,6 +50,7 @@ bool FileActions::newJob()
     if (doc_->isModified()) autosave_->removeRecovery(doc_->path());  // the operator discarded the changes
     Job j;
     j.name = tr("New job").toStdString();
+    j.dialect = lastChosenDialect().toStdString();
     doc_->reset(j, {}, false);
     return true;
 }

@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QTextBlock>
 #include <QVBoxLayout>
@@ -40,6 +41,14 @@ NcView::NcView(QWidget* parent)
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
 }
+
+QString lastChosenDialect()
+{
+    const QString d = QSettings().value("nc/dialect", "linuxcnc").toString();
+    return isDialect(d.toStdString()) ? d : QStringLiteral("linuxcnc");
+}
+
+void rememberDialect(const QString& dialect) { QSettings().setValue("nc/dialect", dialect); }
 
 QString NcView::dialect() const { return dialect_->currentText(); }
 

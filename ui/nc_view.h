@@ -15,6 +15,11 @@ class QPlainTextEdit;
 
 namespace taiwa::ui {
 
+// The dialect last chosen in any window (the settings' "nc/dialect"),
+// which a new job takes; linuxcnc until one is chosen.
+QString lastChosenDialect();
+void rememberDialect(const QString& dialect);
+
 class NcView : public QWidget {
     Q_OBJECT
 public:

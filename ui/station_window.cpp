@@ -262,16 +262,15 @@ void StationWindow::wire()
                 onProgram(plan);
                 showStale();
             });
-    // One dialect: the plan runner's, which the program on view is posted in
-    // and the export offers first; the chooser shows it. The last one chosen
-    // is where the next window starts.
-    QString dialect = QSettings().value("nc/dialect", "linuxcnc").toString();
-    if (!isDialect(dialect.toStdString())) dialect = "linuxcnc";
-    runner_->setDialect(dialect);
-    nc_->setDialect(dialect);
+    // One dialect, the job's (docs/job-format.md `dialect`): the chooser
+    // shows it, the program on view is posted in it, the export offers it.
+    // Choosing another is an edit of the job (undoable); a new job takes the
+    // one last chosen.
     connect(nc_, &NcView::dialectChanged, this, [this](const QString& d) {
-        QSettings().setValue("nc/dialect", d);
-        runner_->setDialect(d);
+        rememberDialect(d);
+        Job after = doc_->job();
+        after.dialect = d.toStdString();
+        doc_->edit(after, tr("Dialect %1").arg(d));
     });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
@@ -313,6 +312,10 @@ UnitForm* StationWindow::currentForm() const
 
 void StationWindow::onDocumentChanged(bool fromTyping)
 {
+    // The job's dialect, else what the command line would post: linuxcnc.
+    const QString dialect = doc_->job().dialect.empty() ? QStringLiteral("linuxcnc") : QString::fromStdString(doc_->job().dialect);
+    runner_->setDialect(dialect);
+    nc_->setDialect(dialect);
     units_->refresh();
     jobProps_->refresh(!fromTyping);
     if (UnitForm* f = currentForm()) {

@@ -121,6 +121,17 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
         out.push_back(jobError("workOffset", "'" + job.workOffset +
                                                  "' is not a work offset: give G54 to G59, G59.1 to G59.3 or G54.1 P1 to P48"));
+    // The job's own dialect: one this program posts, whose controller has the
+    // job's work offset.
+    else if (!job.dialect.empty()) {
+        if (!isDialect(job.dialect)) {
+            std::string known;
+            for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+            out.push_back(jobError("dialect", "unknown dialect '" + job.dialect + "'; this program posts " + known));
+        } else if (auto why = workOffsetProblem(job.dialect, job.workOffset)) {
+            out.push_back(*why);
+        }
+    }
 
     const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library};
     std::vector<check::UnitFigure> figures;

@@ -24,8 +24,8 @@ using nlohmann::json;
 using io::ObjectFields;
 using io::Place;
 
-const std::vector<std::string> kJobKeys{"format", "version",  "name",  "lengthUnit", "material",
-                                        "machine", "workOffset", "stock", "technology", "units"};
+const std::vector<std::string> kJobKeys{"format",     "version", "name",  "lengthUnit", "material", "machine",
+                                        "workOffset", "dialect", "stock", "technology", "units"};
 const std::vector<std::string> kStockShapes{"block"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma", "stepOver"};
@@ -158,7 +158,7 @@ std::optional<Diagnostic> refuseFormat(const json& root)
         return fileProblem(msg::io::versionNewer(INT64_MAX, Job::kFormatVersion));
     const auto n = version->is_number_float() ? static_cast<std::int64_t>(version->get<double>()) : version->get<std::int64_t>();
     if (n > Job::kFormatVersion) return fileProblem(msg::io::versionNewer(n, Job::kFormatVersion));
-    if (n < Job::kFormatVersion) return fileProblem(msg::io::versionUnknown(n, Job::kFormatVersion));
+    if (n < Job::kOldestFormatVersion) return fileProblem(msg::io::versionUnknown(n, Job::kFormatVersion));
     return std::nullopt;
 }
 
@@ -202,6 +202,7 @@ JobReadResult readJob(std::string_view text)
     job.material = f.string("material").value_or("");
     job.machine = f.string("machine", job.machine);
     job.workOffset = f.string("workOffset", job.workOffset);
+    job.dialect = f.string("dialect", "");
     job.stock = readStock(f);
     job.technology = readTechnology(f);
     const json* units = f.find("units");

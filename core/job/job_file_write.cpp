@@ -32,12 +32,13 @@ ordered jobJson(const Job& job)
 {
     ordered j;
     j["format"] = "taiwa-job";
-    j["version"] = Job::kFormatVersion;
+    j["version"] = job.dialect.empty() ? Job::kOldestFormatVersion : Job::kFormatVersion;
     j["name"] = job.name;
     j["lengthUnit"] = job.lengthUnit == LengthUnit::Inch ? "inch" : "mm";
     j["material"] = job.material;
     j["machine"] = job.machine;
     j["workOffset"] = job.workOffset;
+    if (!job.dialect.empty()) j["dialect"] = job.dialect;
     const Stock& s = job.stock;
     j["stock"] = {{"shape", "block"},           {"x", number(s.x)},           {"y", number(s.y)},
                   {"width", number(s.width)},   {"length", number(s.length)}, {"height", number(s.height)}};

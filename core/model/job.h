@@ -45,12 +45,19 @@ struct MachiningUnit {
 };
 
 struct Job {
-    static constexpr int kFormatVersion = 1;
+    // Version 2 added `dialect`. A job is written as version 1 when it has
+    // none, so that a program reading version 1 still reads it.
+    static constexpr int kFormatVersion = 2;
+    static constexpr int kOldestFormatVersion = 1;
     std::string name;
     LengthUnit lengthUnit = LengthUnit::Millimetre;
     std::string material = "aluminium-6061";
     std::string machine = "vmc";
     std::string workOffset = "G54";
+    // The controller dialect the job is posted for ("linuxcnc", "fanuc");
+    // empty: not chosen (the command line then posts for linuxcnc, the
+    // station for the dialect last chosen).
+    std::string dialect;
     Stock stock;
     TechnologyOverrides technology;
     std::vector<MachiningUnit> units;
