@@ -148,13 +148,15 @@ protected:
             else u["touches"].push_back(nullptr);
             u["sides"].push_back(p.side[i]);
         }
-        if (p.shape == 1) u.erase("sides");
+        // Side codes and the length along Y are kept whatever the shape: an
+        // operator who turns a rectangle round and back loses nothing.
+        if (std::all_of(p.side.begin(), p.side.end(), [](int v) { return v == 0; })) u.erase("sides");
         u["origin"] = io::point(p.origin);
         if (p.top) u["top"] = io::number(*p.top);
         if (p.tool) u["T"] = p.tool;
         u["tolerance"] = io::number(p.tolerance);
         u["sizeX"] = io::number(p.sizeX);
-        if (p.shape != 1) u["sizeY"] = io::number(p.sizeY);
+        if (p.shape != 1 || p.sizeY != 0) u["sizeY"] = io::number(p.sizeY);
         u["touchDepth"] = io::number(p.touchDepth);
         u["clearance"] = io::number(p.clearance);
         u["search"] = io::number(p.search);
