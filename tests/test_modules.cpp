@@ -79,9 +79,11 @@ private slots:
     // refused on its field in the technology's words.
     void unitStepOverOverridesTheTechnology()
     {
+        int pockets = 0;
         for (const ModuleKind* k : moduleKinds()) {
             const auto field = std::find_if(k->fields().begin(), k->fields().end(), [](const FormField& f) { return f.key == "stepOver"; });
             if (field == k->fields().end()) continue;  // not a pocket
+            ++pockets;
             const Job plain = jobWith(*k);
             Job fine = plain;
             field->set(fine.units[0].module, 0.1);
@@ -107,6 +109,7 @@ private slots:
             QVERIFY2(ds[0].message.find("the step-over") != std::string::npos && ds[0].message.find("0.9") != std::string::npos,
                      ds[0].message.c_str());
         }
+        QCOMPARE(pockets, 2);  // M4 and M2D
     }
 
     void everyFormFieldReadsBackWhatItSets()

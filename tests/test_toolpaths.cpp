@@ -157,26 +157,34 @@ private slots:
         }
     }
 
-    // A pocket's layer is proved once per shape: the same pocket elsewhere
-    // gets the path it gets when nothing was proved before (the memo changes
-    // how often the proof runs, never a path), for shapes with and without
-    // cleanup visits (a skewed outline at a wide step-over leaves cusps).
+    // A pocket's layer is proved once per shape and the answer moved to the
+    // other places the shape is used. A 30° parallelogram at a wide step-over
+    // needs cleanup visits in its acute corners: the moved pocket's path is
+    // the original's moved (to rounding), its visits land in its own corners
+    // (the layer is cleared), and it is the path a fresh proof gives.
     void aRepeatedPocketGetsTheSamePathAsAFreshOne()
     {
         TechnologyData wide;
         wide.stepOver = 0.9;
-        const Quad skew{{{{0, 0}, {70, 5}, {80, 45}, {-5, 38}}}, 4.5};
-        for (const auto& [outline, tech] : {std::pair{rectangle(60, 40, 4), TechnologyData{}}, std::pair{skew, wide}}) {
-            Quad moved = outline;
-            for (auto& c : moved.corners) c = c + Point2{137.25, -61.5};
-            const Tool tool = makeTool(ToolType::FlatEndMill, 8);
-            forgetProvedLayers();
-            const ToolPath fresh = makeToolPath(makePocketStep(StepKind::Roughing, moved, 0, 2), tool, tech, kParams);
-            forgetProvedLayers();
-            makeToolPath(makePocketStep(StepKind::Roughing, outline, 0, 2), tool, tech, kParams);  // proves the shape
-            const ToolPath remembered = makeToolPath(makePocketStep(StepKind::Roughing, moved, 0, 2), tool, tech, kParams);
-            QVERIFY(fresh == remembered);
-            QVERIFY(paths::uncutArea(moved, atHeight(remembered, -2), 4) < 1e-3);
+        const Quad parallelogram{{{{0, 0}, {90, 0}, {141.96, 30}, {51.96, 30}}}, 4.0};
+        const Point2 shift{137.25, -61.5};
+        Quad moved = parallelogram;
+        for (auto& c : moved.corners) c = c + shift;
+        const Tool tool = makeTool(ToolType::FlatEndMill, 8);
+        const auto path = [&](const Quad& q) { return makeToolPath(makePocketStep(StepKind::Roughing, q, 0, 2), tool, wide, kParams); };
+
+        forgetProvedLayers();
+        const ToolPath fresh = path(moved);
+        forgetProvedLayers();
+        const ToolPath original = path(parallelogram);  // proves the shape
+        const ToolPath remembered = path(moved);         // and this one reuses it
+        QVERIFY(fresh == remembered);
+        QVERIFY(paths::uncutArea(moved, atHeight(remembered, -2), 4) < 1e-3);
+        QCOMPARE(remembered.moves.size(), original.moves.size());
+        for (std::size_t i = 0; i < original.moves.size(); ++i) {
+            const Point3 a = original.moves[i].end, b = remembered.moves[i].end;
+            QVERIFY2(std::abs(b.x - a.x - shift.x) < 1e-9 && std::abs(b.y - a.y - shift.y) < 1e-9 && std::abs(b.z - a.z) < 1e-12,
+                     qPrintable(QString("move %1").arg(i)));
         }
     }
 

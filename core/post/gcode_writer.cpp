@@ -6,8 +6,6 @@
 
 #include <fmt/format.h>
 
-#include <charconv>
-
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -110,13 +108,6 @@ void GCodeWriter::block(const std::string& words)
     endBlock();
 }
 
-std::string GCodeWriter::motion(const std::string& code)
-{
-    if (motion_ == code) return "";
-    motion_ = code;
-    return code + " ";
-}
-
 void GCodeWriter::motionWord(const char* code)
 {
     if (motion_ == code) return;
@@ -146,14 +137,6 @@ void GCodeWriter::feedWord(double feedRate)
     if (text == feed_) return;
     feed_ = text;
     word('F', text);
-}
-
-std::string GCodeWriter::feedText(double feedRate)
-{
-    const std::string f = formatNumber(feedRate, feedDecimals_, dialect_.decimalPointAlways);
-    if (f == feed_) return "";
-    feed_ = f;
-    return " F" + f;
 }
 
 void GCodeWriter::requirePosition(const char* what) const

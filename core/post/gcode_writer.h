@@ -84,8 +84,6 @@ private:
     // forced), with the axes' state updated; whether any was written.
     bool axisWords(const Point3& to, bool forceXY);
     void feedWord(double feedRate);
-    std::string motion(const std::string& code);  // "G1 " when the modal motion changes, else ""
-    std::string feedText(double feedRate);        // " F.." when the feed changes, else 
     void requirePosition(const char* what) const;
     void cancelCycle();
     void forgetModalState();

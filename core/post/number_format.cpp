@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <optional>
-#include <string_view>
 #include <stdexcept>
 
 namespace taiwa::post {
