@@ -1,0 +1,153 @@
+// A turned part's profile: its half cross-section in the +XZ plane as the
+// operator enters it (rows in cutting order, diameters as a lathe control
+// prints them) and as the core computes with it (exact lines and arcs in Z
+// and radius, each edge with a stable id). Also the grinding-allowance table
+// (spec "Turning", seed 001). Plain value types; the computations are in
+// profile_resolve.h and allowance.h, OpenCASCADE only behind core/occt/.
+//
+// Conventions, everywhere in Taiwa's turning code:
+// - Z runs along the spindle axis, X across it; the operator reads and types
+//   X as a diameter, the geometry works with the radius r = X / 2.
+// - The profile view shows Z to the right and X upward (+Y toward the
+//   viewer), so an arc drawn clockwise there is G2 in G18 and
+//   counter-clockwise is G3.
+#pragma once
+
+#include "model/module.h"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa::turning {
+
+// A point of the half-section: z along the axis, r the radius (>= 0).
+struct ZR {
+    double z = 0.0;
+    double r = 0.0;
+    friend bool operator==(const ZR&, const ZR&) = default;
+};
+
+enum class ProfileSide { Outer, Inner };           // OD: material toward the axis; ID: away from it
+enum class ElementKind { Line, ArcCW, ArcCCW };    // as seen in the profile view (G2 / G3 in G18)
+enum class CornerKind { None, Chamfer, Rounding };  // at the end of a row, toward the next row
+
+// What an edge must meet once turned and ground.
+struct EdgeAttributes {
+    std::optional<double> roughness;  // Ra [µm]
+    std::string tolerance;            // an ISO 286 fit ("h6", "H7") or limits ("+0.01/-0.02"); empty: none
+    bool empty() const { return !roughness && tolerance.empty(); }
+    friend bool operator==(const EdgeAttributes&, const EdgeAttributes&) = default;
+};
+
+// One row of the profile table: an element from the previous row's end (or
+// the profile's start) to this row's end point.
+struct ProfileRow {
+    int id = 0;                     // stable; the edge id is "E<id>", its corner "E<id>.c"
+    ElementKind kind = ElementKind::Line;
+    double x = 0.0;                 // end point: diameter
+    double z = 0.0;                 // end point: Z
+    // Arcs: the radius (the arc of less than half a turn), or the centre
+    // (diameter and Z) when the arc is longer or the operator has it.
+    std::optional<double> radius;
+    std::optional<double> centreX, centreZ;
+    CornerKind corner = CornerKind::None;
+    double cornerSize = 0.0;        // chamfer leg (along both lines) or rounding radius
+    EdgeAttributes attributes;
+    friend bool operator==(const ProfileRow&, const ProfileRow&) = default;
+};
+
+enum class GrooveKind { Auto, None, Lateral, Longitudinal, Ring };
+
+// One row of the grinding-allowance table (seed 001, Fig. 2).
+struct AllowanceRow {
+    std::string edge;                  // "E3"
+    double allowance = 0.0;            // stock left for grinding, normal to the edge [mm]
+    std::optional<double> adjustment;  // at a tangent (180°) joint; none: the finishing tool's nose radius
+    GrooveKind groove = GrooveKind::Auto;
+    std::optional<double> grooveWidth;  // none: no relief groove
+    std::optional<double> grooveDepth;  // none: the allowance
+    friend bool operator==(const AllowanceRow&, const AllowanceRow&) = default;
+};
+
+struct TurnedProfile {
+    ProfileSide side = ProfileSide::Outer;
+    double startX = 0.0;  // start point: diameter
+    double startZ = 0.0;
+    std::vector<ProfileRow> rows;
+    std::vector<AllowanceRow> allowances;
+
+    int nextRowId() const
+    {
+        int id = 0;
+        for (const auto& r : rows) id = std::max(id, r.id);
+        return id + 1;
+    }
+    void convertLengths(const LengthMap& f)
+    {
+        startX = f(startX);
+        startZ = f(startZ);
+        for (auto& r : rows) {
+            r.x = f(r.x);
+            r.z = f(r.z);
+            if (r.radius) r.radius = f(*r.radius);
+            if (r.centreX) r.centreX = f(*r.centreX);
+            if (r.centreZ) r.centreZ = f(*r.centreZ);
+            r.cornerSize = f(r.cornerSize);
+            // roughness stays in µm Ra, tolerance as typed
+        }
+        for (auto& a : allowances) {
+            a.allowance = f(a.allowance);
+            if (a.adjustment) a.adjustment = f(*a.adjustment);
+            if (a.grooveWidth) a.grooveWidth = f(*a.grooveWidth);
+            if (a.grooveDepth) a.grooveDepth = f(*a.grooveDepth);
+        }
+    }
+    friend bool operator==(const TurnedProfile&, const TurnedProfile&) = default;
+};
+
+// An exact edge of the half-section, in z and radius.
+struct Segment {
+    bool arc = false;
+    ZR a, b;          // start and end, in the direction of travel
+    ZR centre;        // arcs
+    double radius = 0.0;
+    bool ccw = false;  // arcs: counter-clockwise in the profile view (G3)
+    friend bool operator==(const Segment&, const Segment&) = default;
+};
+
+// A resolved edge of the profile: its geometry, id and attributes.
+struct Edge {
+    std::string id;      // "E3", "E3.c" for the chamfer or rounding at row E3's end
+    Segment geometry;
+    EdgeAttributes attributes;
+    int row = 0;         // 0-based row of the profile table it comes from
+    bool corner = false; // a chamfer or rounding made from the row's corner field
+    friend bool operator==(const Edge&, const Edge&) = default;
+};
+
+struct ResolvedProfile {
+    ProfileSide side = ProfileSide::Outer;
+    std::vector<Edge> edges;  // one chain, in cutting order
+    const Edge* find(const std::string& id) const
+    {
+        for (const auto& e : edges)
+            if (e.id == id) return &e;
+        return nullptr;
+    }
+};
+
+std::string edgeId(int rowId);  // "E3"
+std::string cornerEdgeId(int rowId);  // "E3.c"
+
+const char* toKey(ElementKind k);  // "line", "cw", "ccw"
+const char* toKey(CornerKind k);   // "none", "chamfer", "rounding"
+const char* toKey(GrooveKind k);   // "auto", "none", "lateral", "longitudinal", "ring"
+const char* toKey(ProfileSide s);  // "outer", "inner"
+std::optional<ElementKind> elementKindFromKey(const std::string& s);
+std::optional<CornerKind> cornerKindFromKey(const std::string& s);
+std::optional<GrooveKind> grooveKindFromKey(const std::string& s);
+std::optional<ProfileSide> profileSideFromKey(const std::string& s);
+
+}  // namespace taiwa::turning

@@ -1,0 +1,461 @@
+// The grinding allowance of seed 001 (core/turning/allowance.h) on profiles
+// small enough to work out by hand: every angle case of the neighbour rules
+// (0-90°, 90-180°, 180° with the adjustment typed or taken from the tool's
+// nose radius, above 180°, both neighbours ground at a convex corner), each
+// relief groove kind typed and identified automatically, with the exact
+// vertices and arc centres of the deformed profile to 1 µm; the profile
+// table's own geometry (chamfers, roundings, arcs by radius and by centre);
+// and the refusals, each naming its row and field.
+//
+// All profiles are outer (OD) profiles drawn from the front face at the axis
+// toward the chuck: Z decreasing, X (diameter) growing at the shoulders. In
+// the comments (z, r) is a point with r the radius.
+#include "turning/allowance.h"
+#include "turning/profile_resolve.h"
+#include "turning/segment_math.h"
+
+#include <QtTest>
+
+#include <string>
+#include <vector>
+
+using namespace taiwa;
+using namespace taiwa::turning;
+
+namespace {
+
+constexpr double kTol = 1e-6;  // mm: well inside 1 µm
+
+ProfileRow line(int id, double x, double z, CornerKind corner = CornerKind::None, double size = 0.0)
+{
+    ProfileRow r;
+    r.id = id;
+    r.x = x;
+    r.z = z;
+    r.corner = corner;
+    r.cornerSize = size;
+    return r;
+}
+
+// The stepped shaft most cases use: front face E1 up to Ø40 at Z0, the Ø40
+// cylinder E2 to Z-50, the shoulder E3 up to Ø60, the Ø60 cylinder E4 to Z-80.
+TurnedProfile steppedShaft()
+{
+    TurnedProfile p;
+    p.rows = {line(1, 40, 0), line(2, 40, -50), line(3, 60, -50), line(4, 60, -80)};
+    return p;
+}
+
+AllowanceRow row(const std::string& edge, double a)
+{
+    AllowanceRow r;
+    r.edge = edge;
+    r.allowance = a;
+    return r;
+}
+
+struct Expect {
+    std::string id;
+    Origin origin;
+    ZR a, b;
+    std::optional<ZR> centre = std::nullopt;  // arcs
+};
+
+Deformation deform(const TurnedProfile& p, const AllowanceOptions& o = {})
+{
+    const Resolution r = resolveProfile(p);
+    for (const auto& pr : r.problems) qWarning("%s: %s", pr.field.c_str(), pr.message.c_str());
+    return applyAllowances(r.profile, p.allowances, o);
+}
+
+QString describe(const DeformedProfile& d)
+{
+    QString s;
+    for (const auto& e : d.edges)
+        s += QString("  %1 %2 (%3, %4) -> (%5, %6)\n")
+                 .arg(QString::fromStdString(e.id), toKey(e.origin))
+                 .arg(e.geometry.a.z)
+                 .arg(e.geometry.a.r)
+                 .arg(e.geometry.b.z)
+                 .arg(e.geometry.b.r);
+    return s;
+}
+
+void expectChain(const Deformation& d, const std::vector<Expect>& want)
+{
+    for (const auto& p : d.problems) qWarning("%s: %s", p.field.c_str(), p.message.c_str());
+    QVERIFY(d.ok());
+    const auto& got = d.profile.edges;
+    QVERIFY2(got.size() == want.size(), qPrintable("got\n" + describe(d.profile)));
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        const auto& g = got[i];
+        const auto& w = want[i];
+        const QString where = QString("edge %1 of\n%2").arg(i).arg(describe(d.profile));
+        QVERIFY2(g.id == w.id, qPrintable("id " + QString::fromStdString(g.id) + " at " + where));
+        QVERIFY2(g.origin == w.origin, qPrintable("origin at " + where));
+        QVERIFY2(dist(g.geometry.a, w.a) < kTol && dist(g.geometry.b, w.b) < kTol, qPrintable("ends at " + where));
+        QCOMPARE(g.geometry.arc, w.centre.has_value());
+        if (w.centre) QVERIFY2(dist(g.geometry.centre, *w.centre) < kTol, qPrintable("centre at " + where));
+    }
+}
+
+const FieldProblem* problemOn(const std::vector<FieldProblem>& ps, const std::string& field)
+{
+    for (const auto& p : ps)
+        if (p.field == field) return &p;
+    return nullptr;
+}
+
+}  // namespace
+
+class TestGrindingAllowance : public QObject {
+    Q_OBJECT
+
+private slots:
+    // The table's own geometry: a rounding R3 between the Ø30 cylinder and
+    // its shoulder (a right turn): tangent points 3 mm back from the corner
+    // (-20, 15), centre (-17, 18), clockwise; a chamfer 1 on the front edge.
+    void chamfersAndRoundingsAreCutIntoTheTable()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 30, 0, CornerKind::Chamfer, 1.0), line(2, 30, -20, CornerKind::Rounding, 3.0),
+                  line(3, 50, -20), line(4, 50, -40)};
+        const Resolution r = resolveProfile(p);
+        QVERIFY(r.ok());
+        QCOMPARE(r.profile.edges.size(), std::size_t(6));
+        const auto& e = r.profile.edges;
+        QCOMPARE(e[1].id, std::string("E1.c"));
+        QVERIFY(dist(e[0].geometry.b, {0, 14}) < kTol);   // the face ends 1 below the corner (0, 15)
+        QVERIFY(dist(e[1].geometry.b, {-1, 15}) < kTol);  // the chamfer runs to 1 along the cylinder
+        QCOMPARE(e[3].id, std::string("E2.c"));
+        QVERIFY(e[3].geometry.arc && !e[3].geometry.ccw);
+        QVERIFY(dist(e[3].geometry.a, {-17, 15}) < kTol);
+        QVERIFY(dist(e[3].geometry.b, {-20, 18}) < kTol);
+        QVERIFY(dist(e[3].geometry.centre, {-17, 18}) < kTol);
+    }
+
+    // An arc by its radius (the shorter arc) and the same arc by its centre:
+    // R10 from (-10, 10) to (-20, 20). Clockwise (G2) puts the centre right
+    // of the chord, at (-10, 20): a concave fillet into the shoulder.
+    void arcsByRadiusAndByCentre()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 20, 0), line(2, 20, -10)};
+        ProfileRow a;
+        a.id = 3;
+        a.kind = ElementKind::ArcCW;
+        a.x = 40;
+        a.z = -20;
+        a.radius = 10.0;
+        p.rows.push_back(a);
+        const Resolution byRadius = resolveProfile(p);
+        QVERIFY(byRadius.ok());
+        QVERIFY(dist(byRadius.profile.edges[2].geometry.centre, {-10, 20}) < kTol);
+        p.rows[2].radius.reset();
+        p.rows[2].centreX = 40.0;  // the centre's diameter: radius 20
+        p.rows[2].centreZ = -10.0;
+        const Resolution byCentre = resolveProfile(p);
+        QVERIFY(byCentre.ok());
+        QCOMPARE(byCentre.profile.edges[2].geometry, byRadius.profile.edges[2].geometry);
+    }
+
+    // 0-90° at the start (the front face meets the Ø40 cylinder at 90°): the
+    // new edge runs square to E2 from the vertex (0, 20) up to (0, 20.3).
+    // Above 180° at the end (the shoulder E3, 270°): the moved cylinder meets
+    // E3 itself at (-50, 20.3); E3 is trimmed to start there.
+    void upTo90AndAbove180()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E2", 0.3)};
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
+                        {"E2.start", Origin::Side, {0, 20}, {0, 20.3}},
+                        {"E2.moved", Origin::Moved, {0, 20.3}, {-50, 20.3}},
+                        {"E3", Origin::Original, {-50, 20.3}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+        QCOMPARE(d.profile.rows.size(), std::size_t(1));
+        QCOMPARE(d.profile.rows[0].start.joint, Joint::UpTo90);
+        QCOMPARE(d.profile.rows[0].start.angle, 90.0);
+        QCOMPARE(d.profile.rows[0].end.joint, Joint::Concave);
+        QCOMPARE(d.profile.rows[0].end.angle, 270.0);
+        QCOMPARE(d.profile.rows[0].end.grooveNote, std::string("none: no groove width given"));
+    }
+
+    // 90-180°: a 45° cone E2 from (0, 15) to (-5, 20) leads into the Ø40
+    // cylinder E3 (the part's angle there is 135°). The new edge follows E2's
+    // tangent past (-5, 20) until the moved cylinder r = 20.5: (-5.5, 20.5).
+    void obtuseFollowsTheNeighboursTangent()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 30, 0), line(2, 40, -5), line(3, 40, -40), line(4, 60, -40), line(5, 60, -60)};
+        p.allowances = {row("E3", 0.5)};
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 15}},
+                        {"E2", Origin::Original, {0, 15}, {-5, 20}},
+                        {"E3.start", Origin::Side, {-5, 20}, {-5.5, 20.5}},
+                        {"E3.moved", Origin::Moved, {-5.5, 20.5}, {-40, 20.5}},
+                        {"E4", Origin::Original, {-40, 20.5}, {-40, 30}},
+                        {"E5", Origin::Original, {-40, 30}, {-60, 30}}});
+        QCOMPARE(d.profile.rows[0].start.joint, Joint::Obtuse);
+        QVERIFY(std::abs(d.profile.rows[0].start.angle - 135.0) < 1e-9);
+    }
+
+    // 180°: the Ø30 cylinder E2 runs tangent into the rounding E2.c (R3,
+    // centre (-17, 18)) at (-17, 15). With the adjustment 0.8 typed, the
+    // allowance ends square to E2 at 0.8 before the tangent point: the step
+    // at Z-16.2 from r 15.2 down to 15, then E2's last 0.8 unchanged.
+    void tangentJointIsShortenedByTheTypedAdjustment()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 30, 0), line(2, 30, -20, CornerKind::Rounding, 3.0), line(3, 50, -20), line(4, 50, -40)};
+        p.allowances = {row("E2", 0.2)};
+        p.allowances[0].adjustment = 0.8;
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 15}},
+                        {"E2.start", Origin::Side, {0, 15}, {0, 15.2}},
+                        {"E2.moved", Origin::Moved, {0, 15.2}, {-16.2, 15.2}},
+                        {"E2.end", Origin::Side, {-16.2, 15.2}, {-16.2, 15}},
+                        {"E2", Origin::Original, {-16.2, 15}, {-17, 15}},
+                        {"E2.c", Origin::Original, {-17, 15}, {-20, 18}, ZR{-17, 18}},
+                        {"E3", Origin::Original, {-20, 18}, {-20, 25}},
+                        {"E4", Origin::Original, {-20, 25}, {-40, 25}}});
+        QCOMPARE(d.profile.rows[0].end.joint, Joint::Tangent);
+        QCOMPARE(d.profile.rows[0].end.adjustment, 0.8);
+        QCOMPARE(d.profile.rows[0].end.adjustmentFrom, std::string("typed"));
+    }
+
+    // The same with no adjustment typed: the finishing tool's nose radius
+    // 0.4 is taken, the step moves to Z-16.6.
+    void tangentJointTakesTheNoseRadiusFromTheTool()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 30, 0), line(2, 30, -20, CornerKind::Rounding, 3.0), line(3, 50, -20), line(4, 50, -40)};
+        p.allowances = {row("E2", 0.2)};
+        AllowanceOptions o;
+        o.noseRadius = 0.4;
+        o.toolName = "T102";
+        const Deformation d = deform(p, o);
+        QVERIFY(d.ok());
+        QCOMPARE(d.profile.edges[3].id, std::string("E2.end"));
+        QVERIFY(dist(d.profile.edges[3].geometry.a, {-16.6, 15.2}) < kTol);
+        QVERIFY(dist(d.profile.edges[3].geometry.b, {-16.6, 15}) < kTol);
+        QCOMPARE(d.profile.rows[0].end.adjustmentFrom, std::string("nose radius of T102"));
+        // Without a tool nor a typed value, the row is refused on its adjustment.
+        const Deformation none = deform(p);
+        QVERIFY(!none.ok());
+        QVERIFY(problemOn(none.problems, "allowances[1].adjustment"));
+    }
+
+    // 90° with both edges ground (seed Fig. 7(e)): the front face E1 (0.2)
+    // and the cylinder E2 (0.3) both move; they meet at (0.2, 20.3). The
+    // face's free end on the axis closes along the axis: the chain starts at
+    // (0.2, 0).
+    void convexCornerWithBothGroundMeetsAtTheMovedEdges()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E1", 0.2), row("E2", 0.3)};
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1.moved", Origin::Moved, {0.2, 0}, {0.2, 20.3}},
+                        {"E2.moved", Origin::Moved, {0.2, 20.3}, {-50, 20.3}},
+                        {"E3", Origin::Original, {-50, 20.3}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+        QCOMPARE(d.profile.rows[0].end.joint, Joint::BothSet);
+        QCOMPARE(d.profile.rows[1].start.joint, Joint::BothSet);
+        QCOMPARE(d.profile.rows[0].start.joint, Joint::FreeEnd);
+    }
+
+    // Lateral groove identified automatically: E2 runs along the axis, E3 is
+    // not ground. Width 2, depth = the allowance 0.3, at the corner
+    // (-50, 20.3): top from there to (-47.7, 20.3), bottom (-48, 20) to
+    // (-50, 20); the groove's wall at Z-50 lies on E3, which goes on up.
+    void lateralGrooveIdentified()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E2", 0.3)};
+        p.allowances[0].grooveWidth = 2.0;
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
+                        {"E2.start", Origin::Side, {0, 20}, {0, 20.3}},
+                        {"E2.moved", Origin::Moved, {0, 20.3}, {-47.7, 20.3}},
+                        {"E2.groove1", Origin::Groove, {-47.7, 20.3}, {-48, 20}},
+                        {"E2.groove2", Origin::Groove, {-48, 20}, {-50, 20}},
+                        {"E3", Origin::Original, {-50, 20}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+        const auto& g = d.profile.rows[0].end.groove;
+        QVERIFY(g);
+        QCOMPARE(g->kind, GrooveKind::Lateral);
+        QVERIFY(g->identified);
+        QCOMPARE(g->rule, std::string("E2 runs along the spindle axis"));
+        QCOMPARE(g->depth, 0.3);
+    }
+
+    // Longitudinal groove identified automatically: only the shoulder face E3
+    // (square to the axis) is ground, 0.2, groove width 1. The moved face
+    // z = -49.8 meets E2 at (-49.8, 20); the groove is cut into the face:
+    // bottom Z-50 from r 20 to 21, top at the face from r 20 to 21.2.
+    void longitudinalGrooveIdentified()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E3", 0.2)};
+        p.allowances[0].grooveWidth = 1.0;
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
+                        {"E2", Origin::Original, {0, 20}, {-50, 20}},
+                        {"E3.groove1", Origin::Groove, {-50, 20}, {-50, 21}},
+                        {"E3.groove2", Origin::Groove, {-50, 21}, {-49.8, 21.2}},
+                        {"E3.moved", Origin::Moved, {-49.8, 21.2}, {-49.8, 30}},
+                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+        const auto& g = d.profile.rows[0].start.groove;
+        QVERIFY(g);
+        QCOMPARE(g->kind, GrooveKind::Longitudinal);
+        QCOMPARE(g->rule, std::string("E3 is square to the spindle axis"));
+    }
+
+    // Ring groove identified automatically: E2 (0.3, groove width 1.5) and
+    // the shoulder E3 (0.2) both ground. The moved edges meet at
+    // (-49.8, 20.3); the lateral part (1.5 + 0.3 along the cylinder), the
+    // longitudinal part (into the face) and the corner between them come off.
+    void ringGrooveIdentifiedWhenTheNeighbourIsGround()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E2", 0.3), row("E3", 0.2)};
+        p.allowances[0].grooveWidth = 1.5;
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
+                        {"E2.start", Origin::Side, {0, 20}, {0, 20.3}},
+                        {"E2.moved", Origin::Moved, {0, 20.3}, {-48, 20.3}},
+                        {"E2.groove1", Origin::Groove, {-48, 20.3}, {-48.3, 20}},
+                        {"E2.groove2", Origin::Groove, {-48.3, 20}, {-50.1, 20}},
+                        {"E2.groove3", Origin::Groove, {-50.1, 20}, {-50.1, 21.8}},
+                        {"E2.groove4", Origin::Groove, {-50.1, 21.8}, {-49.8, 22.1}},
+                        {"E3.moved", Origin::Moved, {-49.8, 22.1}, {-49.8, 30}},
+                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+        const auto& g = d.profile.rows[0].end.groove;
+        QVERIFY(g);
+        QCOMPARE(g->kind, GrooveKind::Ring);
+        QCOMPARE(g->rule, std::string("the neighbour E3 is ground too"));
+        QCOMPARE(g->inEdge, std::string("E2, E3"));
+    }
+
+    // A kind typed overrides the rules: a lateral groove asked for on the
+    // shoulder face goes into the cylinder E2 (the edge along the axis at
+    // that corner), depth 0.5 typed: from the corner (-49.8, 20) along E2.
+    void typedKindIsKept()
+    {
+        TurnedProfile p = steppedShaft();
+        p.allowances = {row("E3", 0.2)};
+        p.allowances[0].groove = GrooveKind::Lateral;
+        p.allowances[0].grooveWidth = 1.0;
+        p.allowances[0].grooveDepth = 0.5;
+        const Deformation d = deform(p);
+        QVERIFY(d.ok());
+        const auto& g = d.profile.rows[0].start.groove;
+        QVERIFY(g && !g->identified);
+        QCOMPARE(g->kind, GrooveKind::Lateral);
+        QCOMPARE(g->inEdge, std::string("E2"));
+        // E2 now ends where the groove starts, 1.5 before the corner; the
+        // groove drops to r 19.5 and runs back to the moved face.
+        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
+                        {"E2", Origin::Original, {0, 20}, {-48.3, 20}},
+                        {"E3.groove1", Origin::Groove, {-48.3, 20}, {-48.8, 19.5}},
+                        {"E3.groove2", Origin::Groove, {-48.8, 19.5}, {-49.8, 19.5}},
+                        {"E3.groove3", Origin::Groove, {-49.8, 19.5}, {-49.8, 20}},
+                        {"E3.moved", Origin::Moved, {-49.8, 20}, {-49.8, 30}},
+                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
+                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+    }
+
+    // Roughness and tolerance of a picked edge go with its moved edge.
+    void attributesStayWithTheMovedEdge()
+    {
+        TurnedProfile p = steppedShaft();
+        p.rows[1].attributes.roughness = 0.4;
+        p.rows[1].attributes.tolerance = "h6";
+        p.allowances = {row("E2", 0.3)};
+        const Deformation d = deform(p);
+        QVERIFY(d.ok());
+        QCOMPARE(d.profile.edges[2].id, std::string("E2.moved"));
+        QCOMPARE(d.profile.edges[2].attributes.roughness, std::optional<double>(0.4));
+        QCOMPARE(d.profile.edges[2].attributes.tolerance, std::string("h6"));
+        QVERIFY(d.profile.edges[1].attributes.empty());  // the side edge carries none
+    }
+
+    void refusalsNameTheRowAndField()
+    {
+        {  // an allowance higher than its concave neighbour: the edges would cross
+            TurnedProfile p;
+            p.rows = {line(1, 40, 0), line(2, 40, -50), line(3, 40.4, -50), line(4, 40.4, -80)};
+            p.allowances = {row("E2", 0.3)};
+            const Deformation d = deform(p);
+            const auto* pr = problemOn(d.problems, "allowances[1].allowance");
+            QVERIFY(pr);
+            QCOMPARE(pr->message, std::string("allowance row 1: an allowance of 0.3 mm on E2 reaches past the end of "
+                                              "its neighbour E3 (0.2 mm long); the edges would cross"));
+        }
+        {  // a groove wider than its edge
+            TurnedProfile p = steppedShaft();
+            p.allowances = {row("E2", 0.3)};
+            p.allowances[0].grooveWidth = 60.0;
+            const auto* pr = problemOn(deform(p).problems, "allowances[1].grooveWidth");
+            QVERIFY(pr);
+            QCOMPARE(pr->message, std::string("allowance row 1: a lateral groove 60 mm wide and 0.3 mm deep takes 60.3 mm "
+                                              "of E2, which is 50 mm long"));
+        }
+        {  // a groove deeper than the part allows
+            TurnedProfile p = steppedShaft();
+            p.allowances = {row("E2", 0.3)};
+            p.allowances[0].grooveWidth = 2.0;
+            p.allowances[0].grooveDepth = 25.0;
+            const auto* pr = problemOn(deform(p).problems, "allowances[1].grooveDepth");
+            QVERIFY(pr);
+            QCOMPARE(pr->message, std::string("allowance row 1: a groove 25 mm deep at E2 reaches the axis; it is deeper "
+                                              "than the part allows"));
+        }
+        {  // an edge that does not exist
+            TurnedProfile p = steppedShaft();
+            p.allowances = {row("E9", 0.3)};
+            const auto* pr = problemOn(deform(p).problems, "allowances[1].edge");
+            QVERIFY(pr);
+            QCOMPARE(pr->message, std::string("allowance row 1: there is no edge E9 in the profile"));
+        }
+        {  // a profile that is not one chain: row 4 comes back across the front face
+            TurnedProfile p;
+            p.rows = {line(1, 40, 0), line(2, 40, -50), line(3, 20, -50), line(4, 20, 10)};
+            const Resolution r = resolveProfile(p);
+            QVERIFY(!r.ok());
+            QCOMPARE(r.problems[0].field, std::string("rows[4].x"));
+            QVERIFY2(r.problems[0].message.starts_with("the profile is not one chain: E4 (row 4) meets E1 (row 1)"),
+                     r.problems[0].message.c_str());
+        }
+        {  // a diameter below zero
+            TurnedProfile p;
+            p.rows = {line(1, 40, 0), line(2, -4, -50)};
+            const Resolution r = resolveProfile(p);
+            QCOMPARE(r.problems.size(), std::size_t(1));
+            QCOMPARE(r.problems[0].field, std::string("rows[2].x"));
+            QCOMPARE(r.problems[0].message, std::string("row 2: the end diameter is -4 mm; a diameter cannot be below zero"));
+        }
+        {  // an arc whose radius cannot reach its end point
+            TurnedProfile p;
+            p.rows = {line(1, 20, 0)};
+            ProfileRow a;
+            a.id = 2;
+            a.kind = ElementKind::ArcCW;
+            a.x = 40;
+            a.z = -20;
+            a.radius = 5.0;
+            p.rows.push_back(a);
+            const Resolution r = resolveProfile(p);
+            QCOMPARE(r.problems.size(), std::size_t(1));
+            QCOMPARE(r.problems[0].field, std::string("rows[2].radius"));
+            QVERIFY2(r.problems[0].message.starts_with("row 2: a radius of 5 mm cannot reach the end point, which is "
+                                                       "22.36"),
+                     r.problems[0].message.c_str());
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGrindingAllowance)
+#include "test_grinding_allowance.moc"
