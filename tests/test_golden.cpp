@@ -3,7 +3,12 @@
 // tests/golden/STEM.DIALECT.nc (the tape) or tests/golden/STEM.uN.KIND.DIALECT.nc
 // (a probing unit's setting program and probing cycle), reviewed by hand once. A mismatch writes STEM.DIALECT.nc.actual beside
 // the golden file; TAIWA_UPDATE_GOLDEN=1 rewrites the golden files instead.
+// Lathe jobs have no tape yet: their golden file is the turned profiles of
+// STEM.steps.json (tests/golden/STEM.turned.json: profile, allowance rows,
+// deformed profile), reviewed by hand against docs/turning.md.
 #include "support/support.h"
+
+#include <nlohmann/json.hpp>
 
 #include <QDir>
 #include <QFileInfo>
@@ -21,15 +26,36 @@ private slots:
         QTest::addColumn<QString>("dialect");
         const auto files = QDir(sourcePath("resources/samples")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name);
         QVERIFY(!files.isEmpty());
-        for (const auto& f : files)
+        for (const auto& f : files) {
+            if (readFile(f.absoluteFilePath()).find("\"shape\": \"bar\"") != std::string::npos) {
+                QTest::newRow(qPrintable(f.completeBaseName() + "/turned")) << f.absoluteFilePath() << "turned";
+                continue;
+            }
             for (const char* dialect : {"fanuc", "linuxcnc"})
                 QTest::newRow(qPrintable(f.completeBaseName() + "/" + dialect)) << f.absoluteFilePath() << dialect;
+        }
     }
     void tapeMatchesGolden()
     {
         QFETCH(QString, job);
         QFETCH(QString, dialect);
         QTemporaryDir out;
+        if (dialect == "turned") {
+            const auto r = runTaiwa({"export", job, "--out", out.path()});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QString stem = QFileInfo(job).completeBaseName();
+            QVERIFY(QDir(out.path()).entryList({"*.nc"}, QDir::Files).isEmpty());  // no tape for a lathe job yet
+            const auto steps = nlohmann::json::parse(readFile(QDir(out.path()).filePath(stem + ".steps.json")));
+            const std::string actual = steps.at("turnedProfiles").dump(1) + "\n";
+            const QString golden = sourcePath("tests/golden/" + stem + ".turned.json");
+            if (rewroteGolden(golden, actual)) return;
+            QVERIFY2(QFileInfo::exists(golden), qPrintable("no golden file " + golden + " (TAIWA_UPDATE_GOLDEN=1 writes it)"));
+            if (actual != readFile(golden)) {
+                writeFile(golden + ".actual", actual);
+                QFAIL(qPrintable("turned profiles differ from " + golden + "; see " + golden + ".actual"));
+            }
+            return;
+        }
         const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString stem = QFileInfo(job).completeBaseName();

@@ -12,7 +12,7 @@
 // the comments (z, r) is a point with r the radius.
 #include "turning/allowance.h"
 #include "turning/profile_resolve.h"
-#include "turning/segment_math.h"
+#include "model/turned_geometry.h"
 
 #include <QtTest>
 

@@ -7,8 +7,10 @@
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 #include "modules/probe/probe.h"
+#include "modules/turn/turn.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
+#include "pipeline/pipeline.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
 
@@ -158,6 +160,8 @@ private slots:
                 } else if (const auto* p = (u.module).getIf<ProbeUnit>()) {
                     seen.insert("PROBE shape" + std::to_string(p->shape) + " where" + std::to_string(p->where));
                     seen.insert(p->x[1] ? "PROBE touches" : "PROBE cycle only");
+                } else if (const auto* t = (u.module).getIf<TurnUnit>()) {
+                    seen.insert(t->profile.side == turning::ProfileSide::Inner ? "TURN inner" : "TURN outer");
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -168,7 +172,35 @@ private slots:
         QVERIFY(inch);
         for (const char* want : {"M4 U1", "M4 U6", "M4 U7", "M4 U8", "M4 U9", "M4 F1", "M4 F2", "M4 F3", "M4 H0", "M4 H9",
                                  "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
-                                 "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only"})
+                                 "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner"})
+            QVERIFY2(seen.count(want), want);
+    }
+
+    // The lathe samples show every case of seed 001 once planned: each
+    // neighbour rule, each groove kind typed and identified, the adjustment
+    // typed and taken from the tool's nose radius.
+    void latheSamplesCoverEveryCaseOfTheGrindingAllowance()
+    {
+        std::set<std::string> seen;
+        for (const auto& f : samples()) {
+            const Job job = *readJobFile(f.toStdString()).job;
+            if (!job.bar) continue;
+            const Plan plan = planJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+            QVERIFY2(plan.ok(), qPrintable(f));
+            for (const auto& part : plan.turned)
+                for (const auto& row : part.deformed.rows)
+                    for (const auto* end : {&row.start, &row.end}) {
+                        seen.insert(std::string("joint ") + turning::toKey(end->joint));
+                        if (end->groove)
+                            seen.insert(std::string("groove ") + turning::toKey(end->groove->kind) +
+                                        (end->groove->identified ? " identified" : " typed"));
+                        if (end->joint == turning::Joint::Tangent)
+                            seen.insert(end->adjustmentFrom == "typed" ? "adjustment typed" : "adjustment from tool");
+                    }
+        }
+        for (const char* want : {"joint free end", "joint 0-90", "joint 90-180", "joint 180", "joint above 180",
+                                 "joint both ground", "groove lateral identified", "groove longitudinal identified", "groove ring identified",
+                                 "groove lateral typed", "adjustment typed", "adjustment from tool"})
             QVERIFY2(seen.count(want), want);
     }
 

@@ -15,8 +15,8 @@
 namespace {
 
 // Lowest first. A folder may include itself and any folder before it.
-const QStringList kCoreLayers{"model", "io",   "tools",   "check", "decompose", "paths",    "post",
-                              "sim",   "sheet", "modules", "job",   "pipeline",  "export"};
+const QStringList kCoreLayers{"model", "machine", "io",   "tools", "check",   "occt", "turning",  "decompose",
+                              "paths", "post",    "sim",  "sheet", "modules", "job",  "pipeline", "export"};
 const QStringList kTopLayers{"core", "viz", "ui", "app"};
 
 struct Include {
@@ -91,6 +91,23 @@ private slots:
                 wrong << QStringLiteral("%1:%2 includes %3").arg(inc.file).arg(inc.line).arg(inc.target);
         }
         QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join('\n')));
+    }
+
+    void openCascadeOnlyBehindItsDoor()
+    {
+        // OpenCASCADE's headers (gp_Pnt.hxx, TopoDS_Shape.hxx, …) are
+        // included in core/occt/ and nowhere else but the tests that build
+        // solids with it.
+        QStringList wrong;
+        int inDoor = 0;
+        for (const QString& top : {QStringLiteral("core"), QStringLiteral("viz"), QStringLiteral("ui"), QStringLiteral("app")})
+            for (const Include& inc : includesBelow(top)) {
+                if (!inc.target.endsWith(".hxx>")) continue;
+                if (inc.file.startsWith("core/occt/")) ++inDoor;
+                else wrong << QStringLiteral("%1:%2 includes %3").arg(inc.file).arg(inc.line).arg(inc.target);
+            }
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join('\n')));
+        QVERIFY(inDoor > 10);  // the rule sees the door's includes at all
     }
 
     void moduleFoldersAreReachedThroughTheDoor()

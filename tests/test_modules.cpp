@@ -23,6 +23,11 @@ Job jobWith(const ModuleKind& kind)
     Job j;
     j.name = std::string("default ") + kind.name();
     j.stock = {0, 0, 200, 150, 40};
+    if (kind.machineKind() == MachineKind::Lathe) {  // a turning module: a lathe and a bar
+        j.machine = "lathe";
+        j.bar = BarStock{50, 100, 1, 0};
+        j.stock = {};  // a lathe job's file holds its bar, not a block
+    }
     j.units.push_back({"u", kind.makeDefault(j.stock)});
     return j;
 }
@@ -53,8 +58,9 @@ private slots:
             QVERIFY2(!hasErrors(ds), qPrintable(QString::fromStdString(ds.empty() ? "" : format("job", ds.front()))));
             const Plan plan = planJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
             QVERIFY2(plan.ok(), k->name());
-            // A machining unit plans steps; a setup unit (probing) hands on its setup instead.
-            QVERIFY2(plan.steps.empty() != plan.setups.empty(), k->name());
+            // A machining unit plans steps; a setup unit (probing) hands on its
+            // setup instead, a turning unit (for now) its profile to cut.
+            QVERIFY2(int(!plan.steps.empty()) + int(!plan.setups.empty()) + int(!plan.turned.empty()) == 1, k->name());
             for (const Step& s : plan.steps) {
                 QCOMPARE(s.module, std::string(k->name()));
                 QVERIFY(s.tool && s.path && s.minutes);

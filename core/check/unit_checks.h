@@ -23,6 +23,7 @@ struct Context {
     std::optional<TechnologyData> tech;             // absent when the material is unknown
     const Stock* stock = nullptr;                   // nullptr when the stock itself is refused
     const std::vector<Tool>* library = nullptr;
+    const BarStock* bar = nullptr;                  // lathe jobs: nullptr when the bar itself is refused
 };
 
 // Adds diagnostics of one unit (1-based unitNo, module "M4"/"M2D"), or of

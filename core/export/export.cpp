@@ -77,6 +77,79 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
     return j;
 }
 
+// A point of a turned profile: [X as a diameter, Z].
+nlohmann::ordered_json xz(turning::ZR p, LengthUnit u) { return nlohmann::ordered_json::array({out(2.0 * p.r, u), out(p.z, u)}); }
+
+nlohmann::ordered_json segmentJson(const turning::Segment& g, const turning::EdgeAttributes& a, LengthUnit u)
+{
+    nlohmann::ordered_json j;
+    j["element"] = g.arc ? (g.ccw ? "ccw" : "cw") : "line";
+    j["start"] = xz(g.a, u);
+    j["end"] = xz(g.b, u);
+    if (g.arc) {
+        j["centre"] = xz(g.centre, u);
+        j["radius"] = out(g.radius, u);
+    }
+    if (a.roughness) j["roughness"] = *a.roughness;
+    if (!a.tolerance.empty()) j["tolerance"] = a.tolerance;
+    return j;
+}
+
+nlohmann::ordered_json endJson(const turning::EndOutcome& e, LengthUnit u)
+{
+    nlohmann::ordered_json j;
+    j["joint"] = turning::toKey(e.joint);
+    if (!e.neighbour.empty()) {
+        j["neighbour"] = e.neighbour;
+        j["angle"] = std::round(e.angle * 1e6) / 1e6;
+    }
+    if (e.joint == turning::Joint::Tangent) {
+        j["adjustment"] = out(e.adjustment, u);
+        j["adjustmentFrom"] = e.adjustmentFrom;
+    }
+    if (e.groove) {
+        const auto& g = *e.groove;
+        j["groove"] = {{"kind", turning::toKey(g.kind)}, {"identified", g.identified}, {"rule", g.rule},
+                       {"in", g.inEdge}, {"width", out(g.width, u)}, {"depth", out(g.depth, u)}, {"corner", xz(g.corner, u)}};
+    } else if (!e.grooveNote.empty()) {
+        j["groove"] = e.grooveNote;
+    }
+    return j;
+}
+
+// A turning unit: its profile as drawn, the allowance rows as applied and
+// the deformed profile, each edge saying where it came from.
+nlohmann::ordered_json turnedJson(const TurnedPart& part, LengthUnit u)
+{
+    nlohmann::ordered_json j;
+    j["unit"] = part.unit + 1;
+    j["name"] = part.name;
+    j["side"] = turning::toKey(part.profile.side);
+    j["profile"] = nlohmann::ordered_json::array();
+    for (const auto& e : part.profile.edges) {
+        nlohmann::ordered_json s;
+        s["id"] = e.id;
+        s.update(segmentJson(e.geometry, e.attributes, u));
+        j["profile"].push_back(s);
+    }
+    j["allowances"] = nlohmann::ordered_json::array();
+    for (const auto& r : part.deformed.rows)
+        j["allowances"].push_back({{"edge", r.edge}, {"allowance", out(r.allowance, u)}, {"start", endJson(r.start, u)},
+                                   {"end", endJson(r.end, u)}});
+    if (!part.noseRadiusTool.empty()) j["noseRadiusFrom"] = part.noseRadiusTool;
+    j["deformed"] = nlohmann::ordered_json::array();
+    for (const auto& e : part.deformed.edges) {
+        nlohmann::ordered_json d;
+        d["id"] = e.id;
+        d["origin"] = turning::toKey(e.origin);
+        d["from"] = e.from;
+        if (e.allowanceRow >= 0) d["allowanceRow"] = e.allowanceRow + 1;
+        d.update(segmentJson(e.geometry, e.attributes, u));
+        j["deformed"].push_back(d);
+    }
+    return j;
+}
+
 }  // namespace
 
 std::string stepsJson(const Plan& plan)
@@ -92,6 +165,10 @@ std::string stepsJson(const Plan& plan)
     doc["toolChanges"] = plan.toolChanges;
     doc["steps"] = nlohmann::ordered_json::array();
     for (const auto& s : plan.steps) doc["steps"].push_back(stepJson(plan, s, u));
+    if (!plan.turned.empty()) {
+        doc["turnedProfiles"] = nlohmann::ordered_json::array();
+        for (const TurnedPart& part : plan.turned) doc["turnedProfiles"].push_back(turnedJson(part, u));
+    }
     return doc.dump(2) + "\n";
 }
 
@@ -123,6 +200,9 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         {".nc", program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
     };
+    // A lathe job has no tape yet (turning steps and lathe NC come with the
+    // turning process): its sheet and steps.json hold the profile to cut.
+    if (plan.mmJob.bar) std::erase_if(files, [](const auto& f) { return f.first == ".nc" || f.first == ".tape.txt"; });
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
     // STEM.u<unit>.probe.nc, with O-numbers after the tape's.

@@ -190,6 +190,12 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     page.title(c.title);
     page.fields(c.fields);
     page.paragraph(c.setup);
+    if (!c.allowances.rows.empty()) {
+        page.heading("Grinding allowances");
+        page.table(c.allowances);
+        page.heading("Turned profile as cut");
+        page.table(c.turned);
+    }
     if (!c.workCentre.rows.empty()) {
         page.heading("Work centre");
         page.table(c.workCentre);

@@ -34,6 +34,11 @@ public:
     void error(const std::string& field, const std::string& message) const;
     std::string path(const std::string& field) const { return place_.prefix + field; }
     DiagnosticSink& sink() const { return sink_; }
+    // The fields of an object nested in this one ("rows[2]." + key).
+    ObjectFields nested(const nlohmann::json& object, const std::string& prefix) const
+    {
+        return ObjectFields(object, Place{place_.unit, place_.module, place_.prefix + prefix}, sink_);
+    }
 
     std::optional<double> number(const char* key) const;  // required
     double number(const char* key, double fallback) const;

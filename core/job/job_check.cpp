@@ -7,6 +7,7 @@
 #include "check/messages.h"
 #include "check/unit_checks.h"
 #include "io/job_messages.h"
+#include "machine/machine.h"
 #include "modules/registry.h"
 #include "post/post.h"
 
@@ -47,6 +48,37 @@ bool checkStock(const Stock& mm, LengthUnit shown, Diagnostics& out)
         else if (v <= 0.0) out.push_back(jobError(field, msg::stockNotPositive(key, {v, shown}))), ok = false;
         else if (v > kMaxStockSide) out.push_back(jobError(field, msg::stockTooLarge(key, {v, shown}, {kMaxStockSide, shown}))), ok = false;
     }
+    return ok;
+}
+
+// A bar: diameter and length positive and within kMaxStockSide, the face
+// stock not negative and shorter than the bar, a bore narrower than the bar,
+// and a bar the lathe's spindle takes.
+bool checkBar(const BarStock& mm, const Machine* machine, LengthUnit shown, Diagnostics& out)
+{
+    bool ok = true;
+    const std::pair<const char*, double> sizes[] = {{"diameter", mm.diameter}, {"length", mm.length}};
+    for (const auto& [key, v] : sizes) {
+        const std::string field = std::string("stock.") + key;
+        if (!std::isfinite(v)) out.push_back(jobError(field, msg::notFinite("the bar " + std::string(key)))), ok = false;
+        else if (v <= 0.0) out.push_back(jobError(field, msg::stockNotPositive(key, {v, shown}))), ok = false;
+        else if (v > kMaxStockSide) out.push_back(jobError(field, msg::stockTooLarge(key, {v, shown}, {kMaxStockSide, shown}))), ok = false;
+    }
+    if (!ok) return false;
+    if (!std::isfinite(mm.face) || mm.face < 0.0 || mm.face >= mm.length)
+        out.push_back(jobError("stock.face", "the face stock is " + msg::quote({mm.face, shown}) +
+                                                 "; it must be at least 0 and shorter than the bar")),
+            ok = false;
+    if (!std::isfinite(mm.bore) || mm.bore < 0.0 || mm.bore >= mm.diameter)
+        out.push_back(jobError("stock.bore", "the bar's bore is Ø" + msg::quote({mm.bore, shown}) +
+                                                 "; it must be 0 (a solid bar) or narrower than the bar (Ø" +
+                                                 msg::quote({mm.diameter, shown}) + ")")),
+            ok = false;
+    if (machine && machine->maxBarDiameter > 0.0 && mm.diameter > machine->maxBarDiameter)
+        out.push_back(jobError("stock.diameter", "a bar of Ø" + msg::quote({mm.diameter, shown}) +
+                                                     " does not pass the spindle of machine " + machine->id + " (Ø" +
+                                                     msg::quote({machine->maxBarDiameter, shown}) + " at most)")),
+            ok = false;
     return ok;
 }
 
@@ -114,7 +146,27 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         out.push_back(jobError("material", msg::unknownMaterial(job.material, known)));
     }
     if (!checkOverrides(mm.technology, shown, out)) tech.reset();
-    const bool stockOk = checkStock(mm.stock, shown, out);
+    // The machine: one of the library's, with the stock its kind takes.
+    const Machine* machine = findMachine(job.machine);
+    if (!machine) {
+        std::string known;
+        for (const auto& id : machineIds()) known += (known.empty() ? "" : ", ") + id;
+        out.push_back(jobError("machine", "unknown machine '" + job.machine + "'; the machine library has " + known));
+    }
+    const bool lathe = machine && machine->kind == MachineKind::Lathe;
+    bool stockOk = false, barOk = false;
+    if (mm.bar) {
+        barOk = checkBar(*mm.bar, machine, shown, out);
+        if (machine && !lathe)
+            out.push_back(jobError("stock.shape", "a bar is stock for a lathe; machine " + machine->id +
+                                                      " mills a block: give \"shape\": \"block\" or a lathe")),
+                barOk = false;
+    } else {
+        stockOk = checkStock(mm.stock, shown, out);
+        if (lathe)
+            out.push_back(jobError("stock.shape", "machine " + machine->id + " is a lathe: its stock is a bar "
+                                                  "(\"shape\": \"bar\" with its diameter and length)"));
+    }
     // A work offset some controller has; whether the chosen one has it is
     // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).
     const auto names = dialectNames();
@@ -133,7 +185,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         }
     }
 
-    const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library};
+    const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library, barOk ? &*mm.bar : nullptr};
     std::vector<check::UnitFigure> figures;
     for (std::size_t u = 0; u < mm.units.size(); ++u) {
         const int unitNo = static_cast<int>(u) + 1;
@@ -141,6 +193,12 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         const ModuleKind* kind = findModuleKind(module.name());
         if (!kind) {  // a unit being built in the station: no module yet
             out.push_back({Severity::Error, unitNo, module.name(), "module", msg::io::unknownModule(module.name(), moduleNames())});
+            continue;
+        }
+        if (machine && kind->machineKind() != machine->kind) {
+            out.push_back({Severity::Error, unitNo, module.name(), "module",
+                           std::string("module ") + module.name() + " runs on a " + toKey(kind->machineKind()) +
+                               "; this job's machine " + machine->id + " is a " + toKey(machine->kind)});
             continue;
         }
         const auto report = kind->check(module, unitNo, ctx);

@@ -26,8 +26,9 @@ using io::Place;
 
 const std::vector<std::string> kJobKeys{"format",     "version", "name",  "lengthUnit", "material", "machine",
                                         "workOffset", "dialect", "stock", "technology", "units"};
-const std::vector<std::string> kStockShapes{"block"};
+const std::vector<std::string> kStockShapes{"block", "bar"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
+const std::vector<std::string> kBarKeys{"shape", "diameter", "length", "face", "bore"};
 const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma", "stepOver"};
 bool isBlank(std::string_view text)
 {
@@ -69,7 +70,7 @@ std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSi
     return out;
 }
 
-Stock readStock(const ObjectFields& job)
+Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
 {
     Stock s;
     const json* v = job.find("stock");
@@ -84,7 +85,16 @@ Stock readStock(const ObjectFields& job)
         f.error("shape", msg::io::unknownStockShape(shape->get<std::string>(), kStockShapes));
         return s;
     }
-    f.choice("shape", kStockShapes);
+    if (f.choice("shape", kStockShapes).value_or(0) == 1) {
+        f.rejectUnknown("a bar stock", kBarKeys);
+        BarStock b;
+        b.diameter = f.number("diameter").value_or(0.0);
+        b.length = f.number("length").value_or(0.0);
+        b.face = f.number("face", 0.0);
+        b.bore = f.number("bore", 0.0);
+        bar = b;
+        return s;
+    }
     f.rejectUnknown("a block stock", kBlockKeys);
     s.x = f.number("x", 0.0);
     s.y = f.number("y", 0.0);
@@ -203,7 +213,7 @@ JobReadResult readJob(std::string_view text)
     job.machine = f.string("machine", job.machine);
     job.workOffset = f.string("workOffset", job.workOffset);
     job.dialect = f.string("dialect", "");
-    job.stock = readStock(f);
+    job.stock = readStock(f, job.bar);
     job.technology = readTechnology(f);
     const json* units = f.find("units");
     if (!units) f.error("units", msg::io::missing("an array of machining units"));

@@ -32,7 +32,7 @@ ordered jobJson(const Job& job)
 {
     ordered j;
     j["format"] = "taiwa-job";
-    j["version"] = job.dialect.empty() ? Job::kOldestFormatVersion : Job::kFormatVersion;
+    j["version"] = formatVersionFor(job);
     j["name"] = job.name;
     j["lengthUnit"] = job.lengthUnit == LengthUnit::Inch ? "inch" : "mm";
     j["material"] = job.material;
@@ -40,8 +40,15 @@ ordered jobJson(const Job& job)
     j["workOffset"] = job.workOffset;
     if (!job.dialect.empty()) j["dialect"] = job.dialect;
     const Stock& s = job.stock;
-    j["stock"] = {{"shape", "block"},           {"x", number(s.x)},           {"y", number(s.y)},
-                  {"width", number(s.width)},   {"length", number(s.length)}, {"height", number(s.height)}};
+    if (job.bar)
+        j["stock"] = {{"shape", "bar"},
+                      {"diameter", number(job.bar->diameter)},
+                      {"length", number(job.bar->length)},
+                      {"face", number(job.bar->face)},
+                      {"bore", number(job.bar->bore)}};
+    else
+        j["stock"] = {{"shape", "block"},         {"x", number(s.x)},           {"y", number(s.y)},
+                      {"width", number(s.width)}, {"length", number(s.length)}, {"height", number(s.height)}};
     if (!job.technology.empty()) {
         ordered t = ordered::object();
         const TechnologyOverrides& o = job.technology;

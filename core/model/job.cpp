@@ -1,6 +1,8 @@
 // Job helpers: the conversion of a job between length units.
 #include "model/job.h"
 
+#include <string>
+
 namespace taiwa {
 
 const char* unitSymbol(LengthUnit u) { return u == LengthUnit::Inch ? "in" : "mm"; }
@@ -10,10 +12,19 @@ Job withLengths(const Job& job, LengthUnit unit, const LengthMap& f)
     Job out = job;
     out.lengthUnit = unit;
     out.stock = {f(job.stock.x), f(job.stock.y), f(job.stock.width), f(job.stock.length), f(job.stock.height)};
+    if (job.bar) out.bar = BarStock{f(job.bar->diameter), f(job.bar->length), f(job.bar->face), f(job.bar->bore)};
     for (auto* v : {&out.technology.alpha1, &out.technology.alpha2, &out.technology.alpha3, &out.technology.beta2})
         if (*v) *v = f(**v);
     for (auto& u : out.units) u.module.convertLengths(f);
     return out;
+}
+
+int formatVersionFor(const Job& job)
+{
+    if (job.bar) return 3;
+    for (const auto& u : job.units)
+        if (std::string(u.module.name()) == "TURN") return 3;
+    return job.dialect.empty() ? Job::kOldestFormatVersion : 2;
 }
 
 Job toMillimetres(const Job& job)

@@ -31,6 +31,17 @@ struct Stock {
     friend bool operator==(const Stock&, const Stock&) = default;
 };
 
+// Round bar stock of a lathe job: Z = 0 is the finished front face, the bar
+// reaches `face` beyond it (the face stock) and `length` back from there
+// toward the chuck; a bore of `bore` diameter (0: solid) runs through it.
+struct BarStock {
+    double diameter = 50.0;
+    double length = 100.0;
+    double face = 1.0;
+    double bore = 0.0;
+    friend bool operator==(const BarStock&, const BarStock&) = default;
+};
+
 // Tool ids the operator pinned for some steps of a unit; any step kind not
 // named here has its tool chosen automatically. Keys: "pilot", "roughing",
 // "floor", "wall", "inclined".
@@ -45,9 +56,11 @@ struct MachiningUnit {
 };
 
 struct Job {
-    // Version 2 added `dialect`. A job is written as version 1 when it has
-    // none, so that a program reading version 1 still reads it.
-    static constexpr int kFormatVersion = 2;
+    // Version 2 added `dialect`, version 3 lathe jobs (bar stock, turned
+    // profiles). A job is written in the oldest version that holds it, so
+    // that a program reading version 1 still reads every milling job
+    // without a dialect.
+    static constexpr int kFormatVersion = 3;
     static constexpr int kOldestFormatVersion = 1;
     std::string name;
     LengthUnit lengthUnit = LengthUnit::Millimetre;
@@ -58,7 +71,8 @@ struct Job {
     // empty: not chosen (the command line then posts for linuxcnc, the
     // station for the dialect last chosen).
     std::string dialect;
-    Stock stock;
+    Stock stock;                   // milling jobs
+    std::optional<BarStock> bar;   // lathe jobs: the stock is a bar (then `stock` is not used)
     TechnologyOverrides technology;
     std::vector<MachiningUnit> units;
     friend bool operator==(const Job&, const Job&) = default;
@@ -67,6 +81,9 @@ struct Job {
 // The same job with every length (stock, technology overrides, module
 // inputs) passed through `convert` and marked as being in `unit`; angles,
 // codes and gamma unchanged.
+// The oldest job format version that holds everything of `job`.
+int formatVersionFor(const Job& job);
+
 Job withLengths(const Job& job, LengthUnit unit, const LengthMap& convert);
 
 // The same job with every length in mm (lengthUnit = Millimetre); angles,

@@ -9,6 +9,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "model/turned.h"
 
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct Plan {
     Diagnostics diagnostics;         // input errors stop the plan: steps stay empty; warnings (tool life) do not
     std::vector<int> unitOrder;      // machining order of the units
     std::vector<WorkSetup> setups;   // probing units: measured centres and probing cycles, in unit order
+    std::vector<TurnedPart> turned;  // turning units: profile and deformed profile, in unit order
     std::vector<Step> steps;         // job-wide machining order, tool/path/minutes filled
     std::vector<Tool> tools;         // the library tools the steps use, by first use
     double totalMinutes = 0.0;       // cutting + rapid + tool changes

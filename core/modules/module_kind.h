@@ -9,6 +9,7 @@
 #pragma once
 
 #include "check/unit_checks.h"
+#include "machine/machine.h"
 #include "io/json_fields.h"
 #include "model/diagnostic.h"
 #include "model/geometry.h"
@@ -19,6 +20,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "model/turned.h"
 #include "modules/form_fields.h"
 
 #include <nlohmann/json.hpp>
@@ -79,6 +81,15 @@ public:
     // and the probing cycle); nothing for machining units. Inputs are checked
     // and in mm.
     virtual std::optional<WorkSetup> setup(const ModuleInput& /*mm*/, const UnitPlanContext& /*ctx*/) const
+    {
+        return std::nullopt;
+    }
+    // The kind of machine the module runs on: milling modules on a mill,
+    // turning modules on a lathe.
+    virtual MachineKind machineKind() const { return MachineKind::Mill; }
+    // What a turning unit hands on besides steps: its profile and the
+    // deformed profile to cut. Inputs are checked and in mm.
+    virtual std::optional<TurnedPart> turned(const ModuleInput& /*mm*/, const UnitPlanContext& /*ctx*/) const
     {
         return std::nullopt;
     }

@@ -8,7 +8,8 @@
 #define TAIWA_MODULES(X) \
     X(m4)                \
     X(m2d)               \
-    X(probe)
+    X(probe)             \
+    X(turn)
 
 namespace taiwa {
 

@@ -4,7 +4,7 @@
 // exactly one face are read back as lines and arcs.
 #include "occt/profile_boolean.h"
 
-#include "turning/segment_math.h"
+#include "model/turned_geometry.h"
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Cut.hxx>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "model/result.h"
-#include "turning/profile.h"
+#include "model/turned.h"
 
 #include <vector>
 

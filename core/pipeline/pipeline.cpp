@@ -51,9 +51,14 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
             setup->workOffset = plan.job.workOffset;
             plan.setups.push_back(std::move(*setup));
         }
+        if (auto part = moduleKind(module).turned(module, ctx)) {
+            part->name = plan.job.units[static_cast<std::size_t>(u)].name;
+            plan.turned.push_back(std::move(*part));
+        }
         unordered.insert(unordered.end(), std::make_move_iterator(steps.begin()), std::make_move_iterator(steps.end()));
     }
     std::sort(plan.setups.begin(), plan.setups.end(), [](const WorkSetup& a, const WorkSetup& b) { return a.unit < b.unit; });
+    std::sort(plan.turned.begin(), plan.turned.end(), [](const TurnedPart& a, const TurnedPart& b) { return a.unit < b.unit; });
     if (!plan.ok()) return plan;
 
     plan.steps.reserve(unordered.size());

@@ -7,8 +7,66 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 
 namespace taiwa::sheet {
+
+namespace {
+
+std::string attributesText(const turning::EdgeAttributes& a)
+{
+    std::string t = a.roughness ? fmt::format("Ra {:g}", *a.roughness) : std::string();
+    if (!a.tolerance.empty()) t += (t.empty() ? "" : ", ") + a.tolerance;
+    return t.empty() ? "-" : t;
+}
+
+std::string endText(const turning::EndOutcome& e, const std::function<std::string(double)>& len)
+{
+    using turning::Joint;
+    std::string t = toKey(e.joint);
+    if (e.joint != Joint::FreeEnd) t = fmt::format("{} {} ({:g}°)", e.neighbour, t, std::round(e.angle * 1000) / 1000);
+    if (e.joint == Joint::Tangent && e.adjustment > 0) t += ", shortened " + len(e.adjustment) + " (" + e.adjustmentFrom + ")";
+    return t;
+}
+
+std::string grooveText(const turning::EndOutcome& e, const std::function<std::string(double)>& len)
+{
+    if (!e.groove) return e.grooveNote;
+    const auto& g = *e.groove;
+    return fmt::format("{} {} x {} in {}{}", turning::toKey(g.kind), len(g.width), len(g.depth), g.inEdge,
+                       g.identified ? " (identified: " + g.rule + ")" : std::string(" (typed)"));
+}
+
+// The grinding-allowance table and the profile as cut, of every turning unit.
+void turnedTables(const Plan& plan, const std::function<std::string(double)>& len, const std::string& us, Content& c)
+{
+    c.allowances.headers = {"Unit", "Edge", "Allowance " + us, "Ra, tolerance", "At its start", "At its end", "Relief groove"};
+    c.allowances.numeric = {true, false, true, false, false, false, false};
+    c.allowances.widths = {5, 4, 5, 7, 16, 16, 37};
+    c.turned.headers = {"Unit", "Edge", "From", "Element", "X start", "Z start", "X end", "Z end", "R", "Ra, tolerance"};
+    c.turned.numeric = {true, false, false, false, true, true, true, true, true, false};
+    c.turned.widths = {6, 9, 9, 6, 6, 6, 6, 6, 5, 9};
+    for (const TurnedPart& part : plan.turned) {
+        const std::string unit = std::to_string(part.unit + 1) + (part.name.empty() ? "" : " " + part.name);
+        for (const auto& r : part.deformed.rows) {
+            const turning::Edge* e = part.profile.find(r.edge);
+            std::string groove = grooveText(r.start, len);
+            const std::string atEnd = grooveText(r.end, len);
+            if (!atEnd.empty()) groove += (groove.empty() ? "" : "; ") + atEnd;
+            c.allowances.rows.push_back({unit, r.edge, len(r.allowance), e ? attributesText(e->attributes) : "-",
+                                         endText(r.start, len), endText(r.end, len), groove.empty() ? "-" : groove});
+        }
+        if (part.deformed.rows.empty()) continue;
+        for (const auto& e : part.deformed.edges) {
+            const auto& g = e.geometry;
+            c.turned.rows.push_back({unit, e.id, e.origin == turning::Origin::Original ? "as drawn" : std::string(toKey(e.origin)) + " " + e.from,
+                                     g.arc ? (g.ccw ? "arc CCW" : "arc CW") : "line", len(2 * g.a.r), len(g.a.z),
+                                     len(2 * g.b.r), len(g.b.z), g.arc ? len(g.radius) : "-", attributesText(e.attributes)});
+        }
+    }
+}
+
+}  // namespace
 
 Content content(const Plan& plan, const SheetOptions& o)
 {
@@ -27,7 +85,9 @@ Content content(const Plan& plan, const SheetOptions& o)
         {"Machine", job.machine},
         {"Date", o.date},
         {"Program", o.programNumber > 0 ? fmt::format("O{:04d}", o.programNumber) : std::string()},
-        {"Stock", fmt::format("{} x {} x {} {}", len(job.stock.width), len(job.stock.length), len(job.stock.height), us)},
+        {"Stock", job.bar ? fmt::format("bar D{} x {} {}, face stock {}{}", len(job.bar->diameter), len(job.bar->length), us,
+                                        len(job.bar->face), job.bar->bore > 0 ? ", bore D" + len(job.bar->bore) : std::string())
+                          : fmt::format("{} x {} x {} {}", len(job.stock.width), len(job.stock.length), len(job.stock.height), us)},
         {"Steps", std::to_string(plan.steps.size())},
         {"Tool changes", std::to_string(plan.toolChanges)},
         {"Total time", fmt::format("{:.1f} min", plan.totalMinutes)},
@@ -41,7 +101,13 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.setup = fmt::format("Setup: work offset {} at the centre of the workpiece, found by probing (unit {}); Z0 on "
                               "its top face.",
                               job.workOffset, plan.setups.front().unit + 1);
+    if (job.bar)
+        c.setup = "Setup: work offset " + job.workOffset + ", X0 on the spindle axis (X in diameter), Z0 on the finished "
+                  "front face; the bar stands out of the chuck by at least the profile's length.";
+    if (job.bar)  // no tape yet for a lathe job: no dialect, no program number
+        std::erase_if(c.fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
     std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
+    turnedTables(plan, len, us, c);
     // Probing units: what the touches entered measured (the probing cycle
     // measures again on the machine and prints it there).
     c.workCentre.headers = {"Unit", "Workpiece", "Probe", "Centre X " + us, "Centre Y " + us, "Top Z " + us, "Size " + us,

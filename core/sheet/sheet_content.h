@@ -24,6 +24,8 @@ struct Content {
     std::string setup;                                        // work offset and origin, one sentence
     Table steps;
     Table workCentre;  // probing units: the measured centre, size, rotation and residuals; empty rows when none
+    Table allowances;  // turning units: every grinding-allowance row with its edge, attributes and groove
+    Table turned;      // turning units: the deformed profile the lathe cuts, edge by edge
     Table tools;
     std::vector<std::string> notes;
     std::string total;

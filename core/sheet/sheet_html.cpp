@@ -63,6 +63,8 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
     }
     h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n";
     if (!c.workCentre.rows.empty()) h += "<h2>Work centre</h2>\n" + table(c.workCentre);
+    if (!c.allowances.rows.empty())
+        h += "<h2>Grinding allowances</h2>\n" + table(c.allowances) + "<h2>Turned profile as cut</h2>\n" + table(c.turned);
     h += "<h2>Process steps</h2>\n" + table(c.steps) + "<h2>Tools</h2>\n" + table(c.tools);
     if (!c.notes.empty()) {
         h += "<h2>Notes</h2>\n<ul>";

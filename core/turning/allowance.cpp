@@ -4,7 +4,7 @@
 
 #include "check/messages.h"
 #include "occt/profile_boolean.h"
-#include "turning/segment_math.h"
+#include "model/turned_geometry.h"
 
 #include <fmt/format.h>
 
@@ -14,30 +14,6 @@
 #include <numbers>
 
 namespace taiwa::turning {
-
-const char* toKey(Joint j)
-{
-    switch (j) {
-    case Joint::FreeEnd: return "free end";
-    case Joint::UpTo90: return "0-90";
-    case Joint::Obtuse: return "90-180";
-    case Joint::Tangent: return "180";
-    case Joint::Concave: return "above 180";
-    case Joint::BothSet: return "both ground";
-    }
-    return "";
-}
-
-const char* toKey(Origin o)
-{
-    switch (o) {
-    case Origin::Original: return "original";
-    case Origin::Moved: return "moved";
-    case Origin::Side: return "side";
-    case Origin::Groove: return "groove";
-    }
-    return "";
-}
 
 namespace {
 

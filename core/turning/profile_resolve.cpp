@@ -2,7 +2,7 @@
 #include "turning/profile_resolve.h"
 
 #include "check/messages.h"
-#include "turning/segment_math.h"
+#include "model/turned_geometry.h"
 
 #include <fmt/format.h>
 

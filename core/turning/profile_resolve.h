@@ -6,7 +6,7 @@
 #pragma once
 
 #include "model/job.h"
-#include "turning/profile.h"
+#include "model/turned.h"
 
 #include <string>
 #include <vector>

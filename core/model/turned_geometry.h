@@ -1,10 +1,10 @@
-// Exact plane geometry of the half-section's lines and arcs (turning/profile.h
+// Exact plane geometry of the half-section's lines and arcs (model/turned.h
 // Segment): tangents, normals, lengths, points along an edge, the infinite
 // curve an edge lies on and where two such curves meet. Nothing here turns
 // an arc into a polygon; OpenCASCADE is not needed for any of it.
 #pragma once
 
-#include "turning/profile.h"
+#include "model/turned.h"
 
 #include <cmath>
 #include <optional>

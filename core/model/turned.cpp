@@ -1,6 +1,6 @@
-// Names of the turned-profile value types (profile.h) as the job file and the
-// station spell them.
-#include "turning/profile.h"
+// Names of the turned-profile value types (model/turned.h) as the job file,
+// the station and steps.json spell them.
+#include "model/turned.h"
 
 #include <array>
 #include <utility>
@@ -49,5 +49,29 @@ std::optional<ElementKind> elementKindFromKey(const std::string& s) { return fro
 std::optional<CornerKind> cornerKindFromKey(const std::string& s) { return fromKey(kCornerKinds, s); }
 std::optional<GrooveKind> grooveKindFromKey(const std::string& s) { return fromKey(kGrooveKinds, s); }
 std::optional<ProfileSide> profileSideFromKey(const std::string& s) { return fromKey(kSides, s); }
+
+const char* toKey(Joint j)
+{
+    switch (j) {
+    case Joint::FreeEnd: return "free end";
+    case Joint::UpTo90: return "0-90";
+    case Joint::Obtuse: return "90-180";
+    case Joint::Tangent: return "180";
+    case Joint::Concave: return "above 180";
+    case Joint::BothSet: return "both ground";
+    }
+    return "";
+}
+
+const char* toKey(Origin o)
+{
+    switch (o) {
+    case Origin::Original: return "original";
+    case Origin::Moved: return "moved";
+    case Origin::Side: return "side";
+    case Origin::Groove: return "groove";
+    }
+    return "";
+}
 
 }  // namespace taiwa::turning

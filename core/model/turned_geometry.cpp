@@ -1,5 +1,5 @@
 // Exact line and arc geometry of the half-section (segment_math.h).
-#include "turning/segment_math.h"
+#include "model/turned_geometry.h"
 
 #include <algorithm>
 #include <numbers>

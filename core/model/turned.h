@@ -1,9 +1,12 @@
-// A turned part's profile: its half cross-section in the +XZ plane as the
-// operator enters it (rows in cutting order, diameters as a lathe control
-// prints them) and as the core computes with it (exact lines and arcs in Z
-// and radius, each edge with a stable id). Also the grinding-allowance table
-// (spec "Turning", seed 001). Plain value types; the computations are in
-// profile_resolve.h and allowance.h, OpenCASCADE only behind core/occt/.
+// A turned part's profile as plain values: its half cross-section in the +XZ
+// plane as the operator enters it (rows in cutting order, diameters as a
+// lathe control prints them) and as the core computes with it (exact lines
+// and arcs in Z and radius, each edge with a stable id); the
+// grinding-allowance table (seed 001) and what applying it made: the
+// deformed profile, each edge saying where it came from (TurnedPart, a
+// plan's result for one TURN unit). The computations are in core/turning/,
+// the exact line/arc geometry in model/turned_geometry.h, OpenCASCADE only
+// behind core/occt/.
 //
 // Conventions, everywhere in Taiwa's turning code:
 // - Z runs along the spindle axis, X across it; the operator reads and types
@@ -150,4 +153,75 @@ std::optional<CornerKind> cornerKindFromKey(const std::string& s);
 std::optional<GrooveKind> grooveKindFromKey(const std::string& s);
 std::optional<ProfileSide> profileSideFromKey(const std::string& s);
 
+// How a picked edge meets its neighbour at one end: the angle is the part's
+// own (material-side) angle at the shared vertex.
+enum class Joint {
+    FreeEnd,   // the profile ends here: the allowance ends square to the edge
+    UpTo90,    // 0°–90°: a new edge from the vertex, square to the picked edge
+    Obtuse,    // 90°–180°: the new edge follows the neighbour's tangent
+    Tangent,   // 180°: square to the picked edge, from the vertex shifted by the adjustment
+    Concave,   // above 180°: the new edge follows the neighbour
+    BothSet,   // convex up to 180°, neighbour ground too: the two moved edges meet
+};
+const char* toKey(Joint j);  // "free end", "0-90", "90-180", "180", "above 180", "both ground"
+
+enum class Origin { Original, Moved, Side, Groove };
+const char* toKey(Origin o);  // "original", "moved", "side", "groove"
+
+struct DeformedEdge {
+    std::string id;           // "E3" (unchanged or trimmed), "E3.moved", "E3.start", "E3.end", "E3.groove1"
+    Segment geometry;
+    EdgeAttributes attributes;  // the source edge's, kept on its moved edge
+    Origin origin = Origin::Original;
+    std::string from;         // the profile edge it comes from
+    int allowanceRow = -1;    // 0-based row of the allowance table that made it; -1 for untouched edges
+    friend bool operator==(const DeformedEdge&, const DeformedEdge&) = default;
+};
+
+struct GrooveMade {
+    GrooveKind kind = GrooveKind::Lateral;  // never Auto or None
+    bool identified = false;                // chosen by the rules, not typed
+    std::string rule;                       // why this kind ("E3 runs along the axis")
+    std::string inEdge;                     // the edge it is cut into (both for a ring: "E3, E2")
+    double width = 0.0, depth = 0.0;
+    ZR corner;
+    friend bool operator==(const GrooveMade&, const GrooveMade&) = default;
+};
+
+struct EndOutcome {
+    Joint joint = Joint::FreeEnd;
+    double angle = 0.0;           // the part's angle at the vertex [deg]; 0 at a free end
+    std::string neighbour;        // its id; empty at a free end
+    double adjustment = 0.0;      // used at a tangent joint
+    std::string adjustmentFrom;   // "typed", "nose radius of T102 (…)"
+    std::optional<GrooveMade> groove;
+    std::string grooveNote;       // why none was made at a concave corner of 90°–180°
+    friend bool operator==(const EndOutcome&, const EndOutcome&) = default;
+};
+
+struct AllowanceOutcome {
+    std::string edge;
+    double allowance = 0.0;
+    EndOutcome start, end;  // at the edge's start and end vertex, in cutting order
+    friend bool operator==(const AllowanceOutcome&, const AllowanceOutcome&) = default;
+};
+
+struct DeformedProfile {
+    ProfileSide side = ProfileSide::Outer;
+    std::vector<DeformedEdge> edges;  // one chain in cutting order
+    std::vector<AllowanceOutcome> rows;  // one per allowance row
+};
+
 }  // namespace taiwa::turning
+
+namespace taiwa {
+
+struct TurnedPart {
+    int unit = 0;  // 0-based unit index
+    std::string name;
+    turning::ResolvedProfile profile;
+    turning::DeformedProfile deformed;
+    std::string noseRadiusTool;  // the finishing tool whose nose radius gave adjustments ("" when none was needed)
+};
+
+}  // namespace taiwa

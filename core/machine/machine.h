@@ -1,0 +1,50 @@
+// The machines a job can name, as data (resources/machines/*.json, compiled
+// in): what kind each is (a milling machine or a lathe), its travel, spindle
+// and feed limits, rapid rates, tool changer or turret, and for a lathe that
+// X is programmed as a diameter and the chuck's envelope. A definition is
+// validated when read; every problem names the file and the key.
+#pragma once
+
+#include "model/result.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+enum class MachineKind { Mill, Lathe };
+const char* toKey(MachineKind k);  // "mill", "lathe"
+
+struct AxisTravel {
+    double min = 0.0, max = 0.0;  // mm
+};
+
+struct Machine {
+    std::string id;    // "vmc": what a job's "machine" names
+    std::string name;  // "Vertical machining centre"
+    std::string source;  // where it was read from ("built in: vmc.json")
+    MachineKind kind = MachineKind::Mill;
+    bool xDiameter = false;                    // lathes: X is programmed as a diameter
+    std::map<std::string, AxisTravel> travel;  // "x", "y", "z"
+    double maxSpindleSpeed = 0.0;              // rpm
+    double maxFeed = 0.0;                      // mm/min
+    std::map<std::string, double> rapid;       // mm/min per axis
+    int toolPockets = 0;                       // mills: the tool changer's pockets
+    int turretStations = 0;                    // lathes
+    double chuckDiameter = 0.0;                // lathes [mm]
+    double maxBarDiameter = 0.0;               // lathes: the largest bar through the spindle [mm]
+    double jawLength = 0.0;                    // lathes: how far the jaws grip along Z [mm]
+    std::string coolantOn = "M8", coolantOff = "M9";
+};
+
+// Reads one machine definition; `source` names it in every message.
+Result<Machine> readMachine(const std::string& text, const std::string& source);
+
+// The machines this program knows, by id.
+const std::vector<Machine>& machineLibrary();
+const Machine* findMachine(const std::string& id);
+std::vector<std::string> machineIds();
+
+}  // namespace taiwa

@@ -1,0 +1,294 @@
+// Module TURN behind its door (modules/module_kind.h): the job file's keys,
+// the input checks (the profile table, the allowance table, the bar), and
+// the deformed profile handed to the plan. No steps yet: cutting the profile
+// is the next turning issue's.
+#include "modules/module_kind.h"
+#include "modules/turn/turn.h"
+
+#include "check/messages.h"
+#include "io/job_messages.h"
+#include "io/json_write.h"
+#include "turning/allowance.h"
+#include "turning/profile_resolve.h"
+#include "model/turned_geometry.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace taiwa {
+
+namespace {
+
+using namespace turning;
+using ordered = nlohmann::ordered_json;
+
+const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances"};
+const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
+                                        "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance"};
+const std::vector<std::string> kAllowanceKeys{"edge", "allowance", "adjustment", "groove", "grooveWidth", "grooveDepth"};
+const std::vector<std::string> kSides{"outer", "inner"};
+const std::vector<std::string> kKinds{"line", "cw", "ccw"};
+const std::vector<std::string> kCorners{"none", "chamfer", "rounding"};
+const std::vector<std::string> kGrooves{"auto", "none", "lateral", "longitudinal", "ring"};
+
+std::size_t optionalChoice(const io::ObjectFields& f, const char* key, const std::vector<std::string>& allowed)
+{
+    return f.find(key) ? f.choice(key, allowed).value_or(0) : 0;
+}
+
+using io::number;
+
+// TEMPORARY until tools/turning_tools.h lands: the turning insert with the
+// smallest nose radius.
+const Tool* finishingTurningTool(const std::vector<Tool>& library, bool /*inside*/)
+{
+    const Tool* best = nullptr;
+    for (const auto& t : library)
+        if (t.type == ToolType::TurningInsert && t.cornerRadius > 0 && (!best || t.cornerRadius < best->cornerRadius)) best = &t;
+    return best;
+}
+
+// The finishing tool whose nose radius becomes the adjustment where a row gives none.
+AllowanceOptions allowanceOptions(const TurnedProfile& p, const std::vector<Tool>& library, LengthUnit shown)
+{
+    AllowanceOptions o;
+    o.shown = shown;
+    if (const Tool* t = finishingTurningTool(library, p.side == ProfileSide::Inner)) {
+        o.noseRadius = t->cornerRadius;
+        o.toolName = msg::toolName(*t);
+    }
+    return o;
+}
+
+class TurnKind final : public ModuleKindOf<TurnUnit> {
+public:
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add turned profile"); }
+    const char* drawing() const override { return ":/modules/turn.svg"; }
+    MachineKind machineKind() const override { return MachineKind::Lathe; }
+
+    ModuleInput makeDefault(const Stock& /*stock*/) const override
+    {
+        // A stepped shaft: front face, Ø30 with a chamfer, shoulder, Ø40.
+        TurnUnit t;
+        auto row = [](int id, double x, double z) {
+            ProfileRow r;
+            r.id = id;
+            r.x = x;
+            r.z = z;
+            return r;
+        };
+        t.profile.rows = {row(1, 30, 0), row(2, 30, -30), row(3, 40, -30), row(4, 40, -60)};
+        t.profile.rows[0].corner = CornerKind::Chamfer;
+        t.profile.rows[0].cornerSize = 1.0;
+        return t;
+    }
+
+    std::optional<TurnedPart> turned(const ModuleInput& mm, const UnitPlanContext& ctx) const override
+    {
+        const TurnUnit& t = mm.as<TurnUnit>();
+        TurnedPart part;
+        part.unit = ctx.unit;
+        part.profile = resolveProfile(t.profile).profile;
+        const AllowanceOptions o = allowanceOptions(t.profile, ctx.library, LengthUnit::Millimetre);
+        part.deformed = applyAllowances(part.profile, t.profile.allowances, o).profile;
+        for (const auto& r : part.deformed.rows)
+            for (const EndOutcome* e : {&r.start, &r.end})
+                if (e->adjustmentFrom.starts_with("nose radius")) part.noseRadiusTool = o.toolName;
+        return part;
+    }
+
+protected:
+    TurnUnit readInput(const io::ObjectFields& f) const override
+    {
+        TurnUnit t;
+        TurnedProfile& p = t.profile;
+        f.rejectUnknown("a TURN unit", kUnitKeys);
+        p.side = optionalChoice(f, "side", kSides) == 1 ? ProfileSide::Inner : ProfileSide::Outer;
+        if (const auto* start = f.find("start")) {
+            if (!start->is_object()) {
+                f.error("start", msg::io::wrongType("an object {\"x\": diameter, \"z\": Z}", *start));
+            } else {
+                const io::ObjectFields s = f.nested(*start, "start.");
+                s.rejectUnknown("the start point", {"x", "z"});
+                p.startX = s.number("x", 0.0);
+                p.startZ = s.number("z", 0.0);
+            }
+        }
+        const auto* rows = f.find("rows");
+        if (!rows || !rows->is_array()) {
+            f.error("rows", rows ? msg::io::wrongType("an array of profile rows", *rows) : msg::io::missing("an array of profile rows"));
+        } else {
+            for (std::size_t i = 0; i < rows->size(); ++i) {
+                const std::string prefix = fmt::format("rows[{}].", i + 1);
+                if (!(*rows)[i].is_object()) {
+                    f.error(prefix.substr(0, prefix.size() - 1), msg::io::wrongType("an object", (*rows)[i]));
+                    continue;
+                }
+                const io::ObjectFields r = f.nested((*rows)[i], prefix);
+                r.rejectUnknown("a profile row", kRowKeys);
+                ProfileRow row;
+                row.id = r.whole("id", static_cast<int>(i) + 1);
+                row.kind = static_cast<ElementKind>(optionalChoice(r, "kind", kKinds));
+                row.x = r.number("x").value_or(0.0);
+                row.z = r.number("z").value_or(0.0);
+                row.radius = r.optionalNumber("radius");
+                row.centreX = r.optionalNumber("centreX");
+                row.centreZ = r.optionalNumber("centreZ");
+                row.corner = static_cast<CornerKind>(optionalChoice(r, "corner", kCorners));
+                row.cornerSize = r.number("cornerSize", 0.0);
+                row.attributes.roughness = r.optionalNumber("roughness");
+                row.attributes.tolerance = r.string("tolerance", "");
+                p.rows.push_back(row);
+            }
+        }
+        if (const auto* allowances = f.find("allowances")) {
+            if (!allowances->is_array()) {
+                f.error("allowances", msg::io::wrongType("an array of grinding-allowance rows", *allowances));
+            } else {
+                for (std::size_t i = 0; i < allowances->size(); ++i) {
+                    const std::string prefix = fmt::format("allowances[{}].", i + 1);
+                    if (!(*allowances)[i].is_object()) {
+                        f.error(prefix.substr(0, prefix.size() - 1), msg::io::wrongType("an object", (*allowances)[i]));
+                        continue;
+                    }
+                    const io::ObjectFields a = f.nested((*allowances)[i], prefix);
+                    a.rejectUnknown("a grinding-allowance row", kAllowanceKeys);
+                    AllowanceRow row;
+                    row.edge = a.string("edge").value_or("");
+                    row.allowance = a.number("allowance").value_or(0.0);
+                    row.adjustment = a.optionalNumber("adjustment");
+                    row.groove = static_cast<GrooveKind>(optionalChoice(a, "groove", kGrooves));
+                    row.grooveWidth = a.optionalNumber("grooveWidth");
+                    row.grooveDepth = a.optionalNumber("grooveDepth");
+                    p.allowances.push_back(row);
+                }
+            }
+        }
+        return t;
+    }
+
+    void writeInput(const TurnUnit& t, ordered& u) const override
+    {
+        const TurnedProfile& p = t.profile;
+        u["side"] = toKey(p.side);
+        u["start"] = {{"x", number(p.startX)}, {"z", number(p.startZ)}};
+        u["rows"] = ordered::array();
+        for (const auto& r : p.rows) {
+            ordered j;
+            j["id"] = r.id;
+            j["kind"] = toKey(r.kind);
+            j["x"] = number(r.x);
+            j["z"] = number(r.z);
+            if (r.radius) j["radius"] = number(*r.radius);
+            if (r.centreX) j["centreX"] = number(*r.centreX);
+            if (r.centreZ) j["centreZ"] = number(*r.centreZ);
+            if (r.corner != CornerKind::None) {
+                j["corner"] = toKey(r.corner);
+                j["cornerSize"] = number(r.cornerSize);
+            }
+            if (r.attributes.roughness) j["roughness"] = number(*r.attributes.roughness);
+            if (!r.attributes.tolerance.empty()) j["tolerance"] = r.attributes.tolerance;
+            u["rows"].push_back(std::move(j));
+        }
+        if (p.allowances.empty()) return;
+        u["allowances"] = ordered::array();
+        for (const auto& a : p.allowances) {
+            ordered j;
+            j["edge"] = a.edge;
+            j["allowance"] = number(a.allowance);
+            if (a.adjustment) j["adjustment"] = number(*a.adjustment);
+            if (a.groove != GrooveKind::Auto) j["groove"] = toKey(a.groove);
+            if (a.grooveWidth) j["grooveWidth"] = number(*a.grooveWidth);
+            if (a.grooveDepth) j["grooveDepth"] = number(*a.grooveDepth);
+            u["allowances"].push_back(std::move(j));
+        }
+    }
+
+    check::UnitReport checkInput(const TurnUnit& t, int unitNo, const check::Context& ctx) const override
+    {
+        check::UnitReport report;
+        auto add = [&](const FieldProblem& p) {
+            report.diagnostics.push_back({Severity::Error, unitNo, TurnUnit::kName, p.field, p.message});
+        };
+        const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
+        for (const auto& p : r.problems) add(p);
+        if (!r.ok()) return report;
+        static const std::vector<Tool> none;
+        const Deformation d =
+            applyAllowances(r.profile, t.profile.allowances, allowanceOptions(t.profile, ctx.library ? *ctx.library : none, ctx.shownUnit));
+        for (const auto& p : d.problems) add(p);
+        if (!d.ok() || !ctx.bar) return report;
+        checkInBar(d.profile, t.profile, *ctx.bar, ctx.shownUnit, [&](std::string field, std::string message) {
+            report.diagnostics.push_back({Severity::Error, unitNo, TurnUnit::kName, std::move(field), std::move(message)});
+        });
+        return report;
+    }
+
+    std::optional<Quad> outline(const TurnUnit&) const override { return std::nullopt; }
+    void move(TurnUnit&, Point2) const override {}
+    std::vector<Step> planInput(const TurnUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }
+    // The fields above the profile table; the tables themselves are the
+    // station's profile editor (ui/profile_editor.h).
+    std::vector<FormField> formFields() const override
+    {
+        using form::number;
+        std::vector<FormField> fs;
+        FormField side = number<TurnUnit>(
+            "side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Profile"), {"side"},
+            [](const TurnUnit& t) { return t.profile.side == ProfileSide::Inner ? 2.0 : 1.0; },
+            [](TurnUnit& t, double v) { t.profile.side = std::lround(v) == 2 ? ProfileSide::Inner : ProfileSide::Outer; });
+        side.kind = FormFieldKind::Code;
+        side.codes = {{1, "outer (OD)"}, {2, "inner (ID, a bore)"}};
+        fs.push_back(side);
+        fs.push_back(number<TurnUnit>("start.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start X (diameter)"),
+                                      {"start", "start.x"}, [](const TurnUnit& t) { return t.profile.startX; },
+                                      [](TurnUnit& t, double v) { t.profile.startX = v; }));
+        fs.push_back(number<TurnUnit>("start.z", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start Z"), {"start.z"},
+                                      [](const TurnUnit& t) { return t.profile.startZ; },
+                                      [](TurnUnit& t, double v) { t.profile.startZ = v; }));
+        return fs;
+    }
+
+public:
+    const char* outlineField() const override { return "rows"; }
+
+private:
+    // The profile, allowances included, lies within the bar: an outer
+    // profile no larger than the bar's diameter, an inner one inside it,
+    // every Z between the face stock and the bar's end.
+    template <class Report>
+    static void checkInBar(const DeformedProfile& d, const TurnedProfile& p, const BarStock& bar, LengthUnit shown, Report report)
+    {
+        const auto len = [&](double mm) { return msg::quote({mm, shown}); };
+        double rMax = 0.0, zMin = 0.0, zMax = 0.0;
+        bool first = true;
+        for (const auto& e : d.edges) {
+            for (ZR q : {e.geometry.a, e.geometry.b}) {
+                rMax = std::max(rMax, q.r);
+                zMin = first ? q.z : std::min(zMin, q.z);
+                zMax = first ? q.z : std::max(zMax, q.z);
+                first = false;
+            }
+            if (e.geometry.arc) {
+                const ZR top{e.geometry.centre.z, e.geometry.centre.r + e.geometry.radius};
+                if (contains(e.geometry, top)) rMax = std::max(rMax, top.r);
+            }
+        }
+        if (2.0 * rMax > bar.diameter + 1e-9)
+            report("rows", fmt::format("the profile{} reaches Ø{}, more than the bar's Ø{}",
+                                       p.allowances.empty() ? "" : " with its grinding allowances", len(2.0 * rMax),
+                                       len(bar.diameter)));
+        if (zMax > bar.face + 1e-9)
+            report("rows", fmt::format("the profile reaches Z{}, beyond the bar's face stock (Z{})", len(zMax), len(bar.face)));
+        if (zMin < bar.face - bar.length - 1e-9)
+            report("rows", fmt::format("the profile reaches Z{}, beyond the bar's end (Z{})", len(zMin),
+                                       len(bar.face - bar.length)));
+    }
+};
+
+}  // namespace
+
+const ModuleKind& turnModule() { return moduleInstance<TurnKind>(); }
+
+}  // namespace taiwa
