@@ -214,6 +214,87 @@ private slots:
         QVERIFY2(r.err.startsWith("nothing.taiwa: "), qPrintable(r.err));
     }
 
+    // Lathe jobs: the refusals of a turned profile and of the bar, each on
+    // its field; machine and stock of different kinds refused.
+    void latheRefusalsNameTheField_data()
+    {
+        QTest::addColumn<QString>("pointer");
+        QTest::addColumn<QString>("value");
+        QTest::addColumn<QString>("prefix");
+        const QString u = "bad.taiwa: unit 1 (TURN) ";
+        QTest::newRow("diameter below zero") << "/units/0/rows/1/x" << "-30" << u + "rows[2].x: row 2: the end diameter is -30 mm";
+        QTest::newRow("radius cannot reach") << "/units/0/rows/1"
+                                             << R"({"id": 2, "kind": "cw", "x": 30, "z": -40, "radius": 5})"
+                                             << u + "rows[2].radius: row 2: a radius of 5 mm cannot reach the end point";
+        QTest::newRow("not one chain") << "/units/0/rows/6" << R"({"id": 7, "kind": "line", "x": 20, "z": 5})"
+                                       << u + "rows[7].x: the profile is not one chain: E7 (row 7) meets";
+        QTest::newRow("edge not there") << "/units/0/allowances/0/edge" << "\"E42\""
+                                        << u + "allowances[1].edge: allowance row 1: there is no edge E42 in the profile";
+        QTest::newRow("groove too wide") << "/units/0/allowances/0/grooveWidth" << "40"
+                                         << u + "allowances[1].grooveWidth: allowance row 1: a lateral groove 40 mm wide";
+        QTest::newRow("groove too deep") << "/units/0/allowances/0/grooveDepth" << "16"
+                                         << u + "allowances[1].grooveDepth: allowance row 1: a groove 16 mm deep at E3 reaches the axis";
+        QTest::newRow("edges would cross") << "/units/0/allowances/0/allowance" << "6"
+                                           << u + "allowances[1].allowance: allowance row 1: an allowance of 6 mm on E3 reaches past the end of its neighbour E4";
+        QTest::newRow("profile beyond the bar") << "/stock/diameter" << "42"
+                                                << u + "rows: the profile with its grinding allowances reaches Ø46 mm, more than the bar's Ø42 mm";
+        QTest::newRow("bore wider than the bar") << "/stock/bore" << "50" << "bad.taiwa: job stock.bore: the bar's bore is Ø50 mm";
+        QTest::newRow("bar beyond the spindle") << "/stock/diameter" << "80"
+                                                << "bad.taiwa: job stock.diameter: a bar of Ø80 mm does not pass the spindle of machine lathe";
+        QTest::newRow("bar on a mill") << "/machine" << "\"vmc\"" << "bad.taiwa: job stock.shape: a bar is stock for a lathe";
+        QTest::newRow("unknown machine") << "/machine" << "\"vtl\"" << "bad.taiwa: job machine: unknown machine 'vtl'";
+    }
+    void latheRefusalsNameTheField()
+    {
+        QFETCH(QString, pointer);
+        QFETCH(QString, value);
+        QFETCH(QString, prefix);
+        json job = json::parse(readFile(sourcePath("resources/samples/lathe-shaft-grinding.taiwa")));
+        job[json::json_pointer(pointer.toStdString())] = json::parse(value.toStdString());
+        QTemporaryDir dir;
+        const QString file = dir.filePath("bad.taiwa");
+        writeFile(file, job.dump(2));
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith(prefix), qPrintable(r.err));
+    }
+
+    void millingModuleOnALatheIsRefused()
+    {
+        json job = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+        job["machine"] = "lathe";
+        job["stock"] = {{"shape", "bar"}, {"diameter", 50}, {"length", 100}};
+        QTemporaryDir dir;
+        const QString file = dir.filePath("mixed.taiwa");
+        writeFile(file, job.dump(2));
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("mixed.taiwa: unit 1 (M4) module: module M4 runs on a mill; this job's machine lathe is a lathe"),
+                 qPrintable(r.err));
+    }
+
+    // A lathe job exports its sheet and steps.json; no tape until the turning
+    // process is built.
+    void latheExportWritesSheetAndStepsOnly()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("out");
+        const auto r = runTaiwa({"export", sourcePath("resources/samples/lathe-shaft-grinding.taiwa"), "--out", out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList expected{"lathe-shaft-grinding.sheet.html", "lathe-shaft-grinding.sheet.pdf",
+                                   "lathe-shaft-grinding.steps.json"};
+        QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name), expected);
+        const std::string html = readFile(QDir(out).filePath("lathe-shaft-grinding.sheet.html"));
+        QVERIFY(html.find("<h2>Grinding allowances</h2>") != std::string::npos);
+        QVERIFY(html.find("<td>Ra 0.4, h6</td>") != std::string::npos);  // the seat's attributes, on its row and its moved edge
+        QVERIFY(html.find("lateral 2.000 x 0.300 in E3 (identified: E3 runs along the spindle axis)") != std::string::npos);
+        const json steps = json::parse(readFile(QDir(out).filePath("lathe-shaft-grinding.steps.json")));
+        const auto& moved = steps["turnedProfiles"][0]["deformed"][3];
+        QCOMPARE(moved["id"].get<std::string>(), std::string("E3.moved"));
+        QCOMPARE(moved["start"][0].get<double>(), 30.6);  // Ø30 h6 + 2 x 0.3
+        QCOMPARE(moved["tolerance"].get<std::string>(), std::string("h6"));
+    }
+
     void exportWritesTheFiveFiles()
     {
         QTemporaryDir dir;

@@ -218,6 +218,23 @@ private slots:
         QVERIFY(back.job && *back.job == j);
     }
 
+    // Version 3 only for lathe jobs: every milling sample is still version 1
+    // or 2 on disk and when written, so older programs read them as before.
+    void latheJobsAreVersionThreeAndOnlyThey()
+    {
+        int lathe = 0, milling = 0;
+        for (const auto& f : samples()) {
+            const std::string text = readFile(f);
+            const Job job = *readJob(text).job;
+            const bool isLathe = job.bar.has_value();
+            (isLathe ? lathe : milling)++;
+            const bool three = text.find("\"version\": 3,") != std::string::npos;
+            QVERIFY2(three == isLathe, qPrintable(f));
+            QCOMPARE(formatVersionFor(job), isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
+        }
+        QVERIFY(lathe >= 5 && milling >= 15);
+    }
+
     void handBuiltJobsRoundTrip()
     {
         Job inch = handBuilt();
