@@ -16,6 +16,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -365,6 +368,64 @@ private slots:
                         {"E3.moved", Origin::Moved, {-49.8, 20}, {-49.8, 30}},
                         {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
                         {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
+    }
+
+    // An arc moves concentrically. A ball end: E1 is the quarter circle R10
+    // about (-10, 0) from the axis (0, 0) up to (-10, 10), counter-clockwise,
+    // tangent there to the Ø20 cylinder E2. With 0.5 it becomes R10.5 from
+    // (0.5, 0) (its free end on the axis closes along the axis); at the
+    // tangent end the adjustment 0.4 is arc length: the foot lies 0.4/10 rad
+    // before 90°, the new edge runs radially out to R10.5 there, and E1's
+    // last 0.4 stays as drawn.
+    void arcEdgeMovesConcentrically()
+    {
+        TurnedProfile p;
+        ProfileRow dome;
+        dome.id = 1;
+        dome.kind = ElementKind::ArcCCW;
+        dome.x = 20;
+        dome.z = -10;
+        dome.radius = 10.0;
+        p.rows = {dome, line(2, 20, -30), line(3, 30, -30), line(4, 30, -50)};
+        p.allowances = {row("E1", 0.5)};
+        p.allowances[0].adjustment = 0.4;
+        const double a = std::numbers::pi / 2 - 0.04;  // the foot's angle about the centre
+        const ZR c{-10, 0}, foot{-10 + 10 * std::cos(a), 10 * std::sin(a)}, out{-10 + 10.5 * std::cos(a), 10.5 * std::sin(a)};
+        const Deformation d = deform(p);
+        expectChain(d, {{"E1.moved", Origin::Moved, {0.5, 0}, out, c},
+                        {"E1.end", Origin::Side, out, foot},
+                        {"E1", Origin::Original, foot, {-10, 10}, c},
+                        {"E2", Origin::Original, {-10, 10}, {-30, 10}},
+                        {"E3", Origin::Original, {-30, 10}, {-30, 15}},
+                        {"E4", Origin::Original, {-30, 15}, {-50, 15}}});
+        QVERIFY(d.profile.edges[0].geometry.ccw);
+        QVERIFY(std::abs(d.profile.edges[0].geometry.radius - 10.5) < kTol);
+        QCOMPARE(d.profile.rows[0].end.joint, Joint::Tangent);
+        // A concave arc loses radius: R10 with 10 or more is refused.
+        TurnedProfile q;
+        ProfileRow fillet;
+        fillet.id = 2;
+        fillet.kind = ElementKind::ArcCW;
+        fillet.x = 40;
+        fillet.z = -30;
+        fillet.radius = 10.0;
+        q.rows = {line(1, 20, 0), line(3, 20, -20), fillet, line(4, 40, -50)};
+        q.rows[1].id = 3;
+        q.rows[2].id = 2;
+        q.allowances = {row("E2", 10.0)};
+        const Deformation refused = deform(q);
+        const auto* pr = problemOn(refused.problems, "allowances[1].allowance");
+        QVERIFY(pr);
+        QCOMPARE(pr->message, std::string("allowance row 1: E2 is an arc of radius 10 mm; an allowance of 10 mm leaves it no radius"));
+        q.allowances[0].allowance = 0.5;  // R9.5 about the same centre (-20, 20)
+        q.allowances[0].adjustment = 0.0;  // tangent into E3 at its start: no shortening typed
+        const Deformation fine = deform(q);
+        QVERIFY(fine.ok());
+        const auto moved = std::find_if(fine.profile.edges.begin(), fine.profile.edges.end(),
+                                        [](const DeformedEdge& e) { return e.id == "E2.moved"; });
+        QVERIFY(moved != fine.profile.edges.end());
+        QVERIFY(dist(moved->geometry.centre, {-20, 20}) < kTol);
+        QVERIFY(std::abs(moved->geometry.radius - 9.5) < kTol);
     }
 
     // Roughness and tolerance of a picked edge go with its moved edge.

@@ -183,10 +183,8 @@ protected:
             if (r.radius) j["radius"] = number(*r.radius);
             if (r.centreX) j["centreX"] = number(*r.centreX);
             if (r.centreZ) j["centreZ"] = number(*r.centreZ);
-            if (r.corner != CornerKind::None) {
-                j["corner"] = toKey(r.corner);
-                j["cornerSize"] = number(r.cornerSize);
-            }
+            if (r.corner != CornerKind::None) j["corner"] = toKey(r.corner);
+            if (r.corner != CornerKind::None || r.cornerSize != 0.0) j["cornerSize"] = number(r.cornerSize);
             if (r.attributes.roughness) j["roughness"] = number(*r.attributes.roughness);
             if (!r.attributes.tolerance.empty()) j["tolerance"] = r.attributes.tolerance;
             u["rows"].push_back(std::move(j));
