@@ -33,6 +33,14 @@ private slots:
             QVERIFY(std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.type == ToolType::TaperEndMill && t.taperAngle == angle; }));
         std::set<int> ids;
         for (const auto& t : tools) {
+            if (t.type == ToolType::TurningInsert || t.type == ToolType::Grooving || t.type == ToolType::Threading) {
+                // Lathe tools (tests/test_turning_tools.cpp checks them in detail).
+                QVERIFY2(!t.turning.empty() && t.cornerRadius > 0 && t.diameter > 0, t.name.c_str());
+                QVERIFY2(ids.insert(t.id).second, "duplicate tool id");
+                for (const auto& m : TechnologyTable::builtIn().materials())
+                    QVERIFY2(t.cuttingFor(m.id), qPrintable(QString::fromStdString(t.name + " lacks " + m.id)));
+                continue;
+            }
             if (t.type == ToolType::Probe) {
                 QVERIFY(t.cutting.empty() && t.flutes == 0 && t.diameter > 0);
                 QVERIFY2(ids.insert(t.id).second, "duplicate tool id");
@@ -168,16 +176,18 @@ private slots:
             INSERT INTO cutting_data VALUES (7, 'pom', 250, 0.09, 0.4);
             PRAGMA user_version = 1;)sql", nullptr, nullptr, nullptr), SQLITE_OK);
         sqlite3_close(db);
-        for (int open = 0; open < 2; ++open) {  // the second open finds version 3 and changes nothing
+        for (int open = 0; open < 2; ++open) {  // the second open finds version 4 and changes nothing
             auto lib = ToolLibrary::open(path);
             QVERIFY2(lib, lib.ok() ? "" : lib.error().c_str());
             const auto tools = lib->tools();
             QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
-            // The shop's end mill, and the touch probe version 3 brings (T90 was free).
-            QCOMPARE(tools->size(), std::size_t(2));
-            QCOMPARE(tools->back().id, 90);
-            QCOMPARE(tools->back().type, ToolType::Probe);
-            QVERIFY(tools->back().cutting.empty());
+            // The shop's end mill, the touch probe version 3 brings (T90 was
+            // free) and the lathe tools of version 4 (T101-T107 were free).
+            QCOMPARE(tools->size(), std::size_t(2) + defaultLatheTools().size());
+            QCOMPARE((*tools)[1].id, 90);
+            QCOMPARE((*tools)[1].type, ToolType::Probe);
+            QVERIFY((*tools)[1].cutting.empty());
+            QCOMPARE(tools->back(), defaultLatheTools().back());
             const Tool& t = tools->front();
             QCOMPARE(t.id, 7);
             QCOMPARE(t.usedMinutes, 12.0);
@@ -188,7 +198,7 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 3);
+        QCOMPARE(sqlite3_column_int(version, 0), 4);
         sqlite3_finalize(version);
         sqlite3_close(db);
     }

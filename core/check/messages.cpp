@@ -31,6 +31,8 @@ std::string quoteDeg(double deg) { return trimmed(deg, 3) + "°"; }
 
 std::string toolName(const Tool& t)
 {
+    if (t.type == ToolType::TurningInsert && !t.turning.insertCode.empty())  // inserts by their code and nose
+        return fmt::format("T{} ({} {}, nose R{} mm)", t.id, toString(t.type), t.turning.insertCode, trimmed(t.cornerRadius, 3));
     std::string s = fmt::format("T{} ({} Ø{} mm", t.id, toString(t.type), trimmed(t.diameter, 3));
     if (t.type == ToolType::TaperEndMill) s += ", " + quoteDeg(t.taperAngle) + " per side";
     return s + ")";

@@ -32,11 +32,30 @@ struct CuttingData {
     friend bool operator==(const CuttingData&, const CuttingData&) = default;
 };
 
+// What a lathe tool adds to a tool (types TurningInsert, Grooving,
+// Threading): the insert as the shop names it (ISO 1832, parsed by
+// tools/insert_code.h), the holder, and for blades and threading inserts
+// their own limits. Zero or empty where it does not apply.
+struct TurningSpec {
+    std::string insertCode;      // "CNMG 120408"; the nose radius is the tool's cornerRadius
+    double approachAngle = 0.0;  // the holder's approach (lead) angle κr [deg]: 95, 93, 107.5
+    std::string hand;            // "right", "left" or "neutral"
+    bool inside = false;         // a boring bar (inner profiles)
+    double minBore = 0.0;        // boring bars: the smallest bore it enters [mm]
+    double width = 0.0;          // grooving and parting blades [mm]
+    double maxDepth = 0.0;       // grooving blades: the deepest groove [mm]
+    double maxDiameter = 0.0;    // parting blades: the largest diameter parted off [mm]
+    double pitchMin = 0.0, pitchMax = 0.0;  // threading inserts [mm]
+    double threadAngle = 0.0;    // threading inserts: 60 (metric), 55 (Whitworth) [deg]
+    bool empty() const { return *this == TurningSpec{}; }
+    friend bool operator==(const TurningSpec&, const TurningSpec&) = default;
+};
+
 struct Tool {
     int id = 0;                  // the library's id; also the T number
     std::string name;
     ToolType type = ToolType::FlatEndMill;
-    double diameter = 0.0;       // [mm], at the tip for taper end mills
+    double diameter = 0.0;       // [mm], at the tip for taper end mills; inserts: the inscribed circle, blades: the width
     double cornerRadius = 0.0;   // corner or nose radius [mm]
     double taperAngle = 0.0;     // degrees per side (taper end mills)
     double pointAngle = 118.0;   // drills [deg]
@@ -47,7 +66,8 @@ struct Tool {
     bool centreCutting = true;   // end mills: can ramp or plunge into solid material (face mills cannot)
     double lifeMinutes = 0.0;    // cutting time a fresh tool lasts
     double usedMinutes = 0.0;    // cutting time already spent
-    std::vector<CuttingData> cutting;
+    std::vector<CuttingData> cutting;  // turning tools: feedPerTooth is the feed per revolution [mm/rev]
+    TurningSpec turning;               // lathe tools
     double radius() const { return diameter / 2.0; }
     double remainingLife() const { return lifeMinutes - usedMinutes; }
     const CuttingData* cuttingFor(const std::string& material) const;

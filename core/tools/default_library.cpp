@@ -57,7 +57,81 @@ Tool make(int id, ToolType type, double d, std::string name, double flute, doubl
     return t;
 }
 
+// Turning: surface speed [m/min] and feed per revolution [mm/rev] per
+// material for roughing and finishing inserts, a carbide maker's starting
+// values; grooving and threading take a share of them.
+struct TurningData {
+    const char* id;
+    double vcRough, fRough, vcFinish, fFinish;
+};
+constexpr TurningData kTurningMaterials[] = {
+    {"aluminium-6061", 500, 0.30, 600, 0.12}, {"steel-s45c", 200, 0.30, 250, 0.12},
+    {"stainless-304", 160, 0.25, 190, 0.10},  {"cast-iron-fc250", 180, 0.30, 220, 0.15},
+    {"brass-c3604", 300, 0.25, 350, 0.10},    {"pom", 250, 0.25, 300, 0.12},
+};
+
+// A lathe tool: the insert from its ISO code (inscribed circle as the
+// diameter, nose radius as the corner radius), the holder and cutting data.
+Tool lathe(int id, ToolType type, std::string name, std::string code, double noseRadius, double ic, TurningSpec spec,
+           std::string holder, bool finishing, double feedShare = 1.0)
+{
+    Tool t;
+    t.id = id;
+    t.type = type;
+    t.name = std::move(name);
+    t.diameter = ic;
+    t.cornerRadius = noseRadius;
+    t.holder = std::move(holder);
+    t.flutes = 1;
+    t.lifeMinutes = 30;
+    t.centreCutting = false;
+    spec.insertCode = std::move(code);
+    t.turning = std::move(spec);
+    for (const auto& m : kTurningMaterials)
+        t.cutting.push_back({m.id, finishing ? m.vcFinish : m.vcRough, (finishing ? m.fFinish : m.fRough) * feedShare, 1.0});
+    return t;
+}
+
 }  // namespace
+
+// The lathe's tools, T101 on: OD roughing and finishing, ID boring, a
+// grooving and a parting blade, a threading insert.
+std::vector<Tool> defaultLatheTools()
+{
+    std::vector<Tool> tools;
+    TurningSpec od;
+    od.approachAngle = 95;
+    od.hand = "right";
+    tools.push_back(lathe(101, ToolType::TurningInsert, "OD roughing CNMG 120408, 95° holder", "CNMG 120408", 0.8, 12.7, od,
+                          "PCLNR 2525M12", false));
+    od.approachAngle = 93;
+    tools.push_back(lathe(102, ToolType::TurningInsert, "OD finishing DNMG 150604, 93° holder", "DNMG 150604", 0.4, 12.7,
+                          od, "PDJNR 2525M15", true));
+    tools.push_back(lathe(103, ToolType::TurningInsert, "OD finishing VCMT 160404, 93° holder", "VCMT 160404", 0.4, 9.525,
+                          od, "SVJCR 2525M16", true));
+    TurningSpec id = od;
+    id.inside = true;
+    id.minBore = 16;
+    tools.push_back(lathe(104, ToolType::TurningInsert, "ID boring DCMT 11T304, bar Ø12", "DCMT 11T304", 0.4, 9.525, id,
+                          "S12M-SDUCR 11", true));
+    TurningSpec groove;
+    groove.width = 3;
+    groove.maxDepth = 15;
+    groove.hand = "neutral";
+    tools.push_back(lathe(105, ToolType::Grooving, "Grooving blade 3 mm, depth 15", "", 0.2, 3, groove, "GHDR 26-3", true, 0.5));
+    TurningSpec part = groove;
+    part.maxDepth = 25;
+    part.maxDiameter = 50;
+    tools.push_back(lathe(106, ToolType::Grooving, "Parting blade 3 mm, up to Ø50", "", 0.2, 3, part, "GHDR 26-3 parting", true, 0.4));
+    TurningSpec thread;
+    thread.hand = "right";
+    thread.pitchMin = 0.5;
+    thread.pitchMax = 3.0;
+    thread.threadAngle = 60;
+    tools.push_back(lathe(107, ToolType::Threading, "Threading 60° external, pitch 0.5-3", "", 0.05, 6.35, thread,
+                          "SER 2525M16", true));
+    return tools;
+}
 
 std::vector<Tool> defaultToolLibrary()
 {
@@ -112,6 +186,7 @@ std::vector<Tool> defaultToolLibrary()
     probe.cutting.clear();
     probe.centreCutting = false;
     tools.push_back(probe);
+    for (Tool& t : defaultLatheTools()) tools.push_back(std::move(t));
     return tools;
 }
 

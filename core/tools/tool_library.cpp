@@ -2,6 +2,7 @@
 // library, reading and editing. Every failure is a message naming the file.
 #include "tools/tool_library.h"
 
+#include <nlohmann/json.hpp>
 #include <sqlite3.h>
 
 #include <cmath>
@@ -9,13 +10,14 @@
 
 #include <fmt/format.h>
 #include <iterator>
+#include <optional>
 #include <system_error>
 
 namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 3;
+constexpr int kSchemaVersion = 4;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -24,12 +26,12 @@ CREATE TABLE tools (
   corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
   flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
   flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0,
-  centre_cutting INTEGER NOT NULL DEFAULT 1);
+  centre_cutting INTEGER NOT NULL DEFAULT 1, turning TEXT NOT NULL DEFAULT '');
 CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 3;
+PRAGMA user_version = 4;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
@@ -41,6 +43,10 @@ constexpr const char* kMigrations[] = {
     "INSERT INTO tools (id, name, type, diameter, flute_length, stickout, holder, flutes, life_minutes, centre_cutting) "
     "SELECT 90, 'Touch probe, 4 mm ruby ball', 'probe', 4, 0, 50, 'HSK63 probe body', 0, 0, 0 "
     "WHERE NOT EXISTS (SELECT 1 FROM tools WHERE type = 'probe' OR id = 90); PRAGMA user_version = 3;",
+    // 3 -> 4: lathe tools (the insert code, holder and blade data as JSON in
+    // `turning`); the default lathe tools are added after it where their ids
+    // are free (addLatheTools).
+    "ALTER TABLE tools ADD COLUMN turning TEXT NOT NULL DEFAULT ''; PRAGMA user_version = 4;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
@@ -83,11 +89,62 @@ std::string describe(sqlite3* db, const std::string& path)
 
 bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
 
+bool insert(sqlite3* db, const Tool& t);
+
+// Upgrading to version 4: the default lathe tools whose ids the library does
+// not use yet.
+bool addLatheTools(sqlite3* db)
+{
+    for (const Tool& t : defaultLatheTools()) {
+        Statement used(db, "SELECT count(*) FROM tools WHERE id = ?");
+        used.bind(1, t.id);
+        if (!used.ok() || used.step() != SQLITE_ROW) return false;
+        if (used.integer(0) == 0 && !insert(db, t)) return false;
+    }
+    return true;
+}
+
+// A lathe tool's TurningSpec as the `turning` column holds it: JSON, empty
+// for other tools.
+std::string turningText(const TurningSpec& t)
+{
+    if (t.empty()) return "";
+    return nlohmann::json{{"insertCode", t.insertCode}, {"approachAngle", t.approachAngle}, {"hand", t.hand},
+                          {"inside", t.inside},         {"minBore", t.minBore},             {"width", t.width},
+                          {"maxDepth", t.maxDepth},     {"maxDiameter", t.maxDiameter},     {"pitchMin", t.pitchMin},
+                          {"pitchMax", t.pitchMax},     {"threadAngle", t.threadAngle}}
+        .dump();
+}
+
+std::optional<TurningSpec> turningFrom(const std::string& text)
+{
+    TurningSpec t;
+    if (text.empty()) return t;
+    const auto j = nlohmann::json::parse(text, nullptr, false);
+    if (!j.is_object()) return std::nullopt;
+    try {
+        t.insertCode = j.value("insertCode", "");
+        t.approachAngle = j.value("approachAngle", 0.0);
+        t.hand = j.value("hand", "");
+        t.inside = j.value("inside", false);
+        t.minBore = j.value("minBore", 0.0);
+        t.width = j.value("width", 0.0);
+        t.maxDepth = j.value("maxDepth", 0.0);
+        t.maxDiameter = j.value("maxDiameter", 0.0);
+        t.pitchMin = j.value("pitchMin", 0.0);
+        t.pitchMax = j.value("pitchMax", 0.0);
+        t.threadAngle = j.value("threadAngle", 0.0);
+    } catch (const nlohmann::json::exception&) {
+        return std::nullopt;
+    }
+    return t;
+}
+
 bool insert(sqlite3* db, const Tool& t)
 {
     Statement s(db, "INSERT OR REPLACE INTO tools (id, name, type, diameter, corner_radius, taper_angle, point_angle, "
-                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting) "
-                    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting, turning) "
+                    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
     if (!s.ok()) return false;
     s.bind(1, t.id);
     s.bind(2, t.name);
@@ -103,6 +160,7 @@ bool insert(sqlite3* db, const Tool& t)
     s.bind(12, t.lifeMinutes);
     s.bind(13, t.usedMinutes);
     s.bind(14, t.centreCutting ? 1 : 0);
+    s.bind(15, turningText(t.turning));
     if (s.step() != SQLITE_DONE) return false;
     Statement del(db, "DELETE FROM cutting_data WHERE tool_id = ?");
     del.bind(1, t.id);
@@ -177,6 +235,7 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         // An older library: every migration from its version on, in one transaction.
         bool ok = exec(db, "BEGIN IMMEDIATE");
         for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
+        if (v < 4) ok = ok && addLatheTools(db);
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
@@ -190,7 +249,7 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
 {
     sqlite3* db = db_->handle;
     Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
-                    "holder, flutes, life_minutes, used_minutes, centre_cutting FROM tools ORDER BY id");
+                    "holder, flutes, life_minutes, used_minutes, centre_cutting, turning FROM tools ORDER BY id");
     if (!s.ok()) {
         return Failure{describe(db, path_)};
     }
@@ -216,6 +275,9 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         t.lifeMinutes = s.real(11);
         t.usedMinutes = s.real(12);
         t.centreCutting = s.integer(13) != 0;
+        const auto turning = turningFrom(s.text(14));
+        if (!turning) return Failure{path_ + ": tool " + std::to_string(t.id) + " has unreadable lathe data '" + s.text(14) + "'"};
+        t.turning = *turning;
         out.push_back(std::move(t));
     }
     if (rc != SQLITE_DONE) {

@@ -16,8 +16,13 @@ namespace taiwa {
 
 // The realistic default library: centre drills, twist drills 3-20 mm, flat
 // end mills 2-25 mm, ball end mills, taper end mills 1-10 deg per side, a face
-// mill; with cutting data for every material of the built-in technology table.
+// mill, a touch probe and the lathe's tools (T101-T107); with cutting data
+// for every material of the built-in technology table.
 std::vector<Tool> defaultToolLibrary();
+// Its lathe tools (T101-T107: OD roughing and finishing inserts, a boring
+// bar, grooving and parting blades, a threading insert); a library of an
+// older version gets those whose ids are free when it is upgraded.
+std::vector<Tool> defaultLatheTools();
 
 // Where the library lives unless configured: $TAIWA_TOOL_DB, else
 // $XDG_DATA_HOME/taiwa/tools.sqlite, else ~/.local/share/taiwa/tools.sqlite.

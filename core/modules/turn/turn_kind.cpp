@@ -8,6 +8,7 @@
 #include "check/messages.h"
 #include "io/job_messages.h"
 #include "io/json_write.h"
+#include "tools/turning_tools.h"
 #include "turning/allowance.h"
 #include "turning/profile_resolve.h"
 #include "model/turned_geometry.h"
@@ -38,16 +39,6 @@ std::size_t optionalChoice(const io::ObjectFields& f, const char* key, const std
 }
 
 using io::number;
-
-// TEMPORARY until tools/turning_tools.h lands: the turning insert with the
-// smallest nose radius.
-const Tool* finishingTurningTool(const std::vector<Tool>& library, bool /*inside*/)
-{
-    const Tool* best = nullptr;
-    for (const auto& t : library)
-        if (t.type == ToolType::TurningInsert && t.cornerRadius > 0 && (!best || t.cornerRadius < best->cornerRadius)) best = &t;
-    return best;
-}
 
 // The finishing tool whose nose radius becomes the adjustment where a row gives none.
 AllowanceOptions allowanceOptions(const TurnedProfile& p, const std::vector<Tool>& library, LengthUnit shown)
