@@ -6,6 +6,9 @@
 #include "app/options.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
+#include "job/step_job.h"
+#include "io/job_io.h"
+#include "model/technology.h"
 #include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
@@ -48,6 +51,10 @@ Usage:
                [--view iso|top|front]
                                    the 3-D preview of step K (1-based, in
                                    machining order) or all steps, to a PNG
+  taiwa import STEP --out JOB [--material ID]
+                                   a lathe job from a STEP solid of revolution:
+                                   its outer profile (and bore) as turned-profile
+                                   units, a bar that holds it; JOB must not exist
   taiwa --version | --help
 
 Common options:
@@ -92,6 +99,32 @@ Loaded load(const Options& o, bool withToolPaths)
     l.plan = planJob(*read.job, TechnologyTable::builtIn(), *tools, options);
     l.exit = printDiagnostics(name, l.plan.diagnostics);
     return l;
+}
+
+int importStep(const Options& o)
+{
+    std::error_code ec;
+    if (std::filesystem::exists(o.out, ec)) {
+        std::cerr << "taiwa: import: " << o.out << " exists; give a new file name (nothing was written)\n";
+        return kInputErrors;
+    }
+    const auto job = latheJobFromStep(o.job, o.material);
+    if (!job) {
+        std::cerr << "taiwa: import: " << job.error() << '\n';
+        return kInputErrors;
+    }
+    if (!TechnologyTable::builtIn().find(o.material)) {
+        std::cerr << "taiwa: import: material '" << o.material << "' is not in the technology table\n";
+        return kInputErrors;
+    }
+    if (auto saved = writeFileAtomically(o.out, writeJob(*job)); !saved) {
+        std::cerr << "taiwa: import: " << saved.error() << '\n';
+        return kInternal;
+    }
+    std::cout << "taiwa: wrote " << o.out << ": " << job->units.size() << " turned profile"
+              << (job->units.size() == 1 ? "" : "s") << " on a bar D" << job->bar->diameter << " x " << job->bar->length
+              << " mm\n";
+    return kOk;
 }
 
 int check(const Options& o)
@@ -180,6 +213,7 @@ int run(int argc, char** argv)
         case Command::Check: return check(o);
         case Command::Export: return exportJob(o, argc, argv);
         case Command::Render: return render(o);
+        case Command::Import: return importStep(o);
         case Command::Station:
 #ifdef TAIWA_WITH_UI
             return ui::runStation(argc, argv, QString::fromStdString(o.job));

@@ -45,6 +45,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         if (first == "check") o.command = Command::Check, i = 1;
         else if (first == "export") o.command = Command::Export, i = 1;
         else if (first == "render") o.command = Command::Render, i = 1;
+        else if (first == "import") o.command = Command::Import, i = 1;
     }
     auto value = [&]() -> std::optional<std::string_view> {
         if (i + 1 >= args.size()) return std::nullopt;
@@ -60,7 +61,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             continue;
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
-                                a == "--size" || a == "--view";
+                                a == "--size" || a == "--view" || a == "--material";
         if (a == "--stock") {
             if (o.command != Command::Render) return std::string("option --stock does not go with this command");
             o.stock = true;
@@ -74,9 +75,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             return "option " + std::string(a) + " is given twice";
         seen.push_back(a);
         if (v->empty()) return "option " + std::string(a) + " needs a value, not an empty one";
-        const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render;
-        if (a == "--tools") o.tools = *v;
-        else if (a == "--out" && (forExport || forRender)) o.out = *v;
+        const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render,
+                   forImport = o.command == Command::Import;
+        if (a == "--tools" && !forImport) o.tools = *v;
+        else if (a == "--out" && (forExport || forRender || forImport)) o.out = *v;
+        else if (a == "--material" && forImport) o.material = *v;
         else if (a == "--dialect" && forExport) {
             if (!isDialect(std::string(*v))) {
                 std::string names;
@@ -101,8 +104,9 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             return "option " + std::string(a) + " does not go with this command";
         }
     }
+    if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
     if (o.command != Command::Station && o.job.empty()) return std::string("no job file given");
-    if ((o.command == Command::Export || o.command == Command::Render) && o.out.empty())
+    if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
         return std::string("--out is required");
     return std::nullopt;
 }

@@ -8,11 +8,11 @@
 
 namespace taiwa::app {
 
-enum class Command { Station, Check, Export, Render, Help, Version };
+enum class Command { Station, Check, Export, Render, Import, Help, Version };
 
 struct Options {
     Command command = Command::Station;
-    std::string job;                  // JOB argument
+    std::string job;                  // JOB argument (import: the STEP file)
     std::string out;                  // --out
     std::string dialect;              // --dialect; empty: the job's, else linuxcnc
     std::optional<LengthUnit> units;  // --units
@@ -21,6 +21,7 @@ struct Options {
     bool stock = false;               // --stock
     int width = 800, height = 600;    // --size WxH
     std::string view = "iso";         // --view
+    std::string material = "steel-s45c";  // --material (import)
 };
 
 // Fills `o`; returns a message naming the bad argument, or nothing.

@@ -93,6 +93,11 @@ public:
     {
         return std::nullopt;
     }
+    // A turning unit's profile table (the station's profile editor, STEP
+    // import); nullptr for other modules. setTurnedProfile replaces it and
+    // says whether the module has one.
+    virtual const turning::TurnedProfile* turnedProfile(const ModuleInput& /*m*/) const { return nullptr; }
+    virtual bool setTurnedProfile(ModuleInput& /*m*/, const turning::TurnedProfile& /*p*/) const { return false; }
     // The unit's live figure for the station's form (model/sketch.h), from
     // the unit as the job holds it (lengths in `unit`); nothing for modules
     // whose form shows their fixed drawing only.

@@ -75,6 +75,19 @@ public:
         return t;
     }
 
+    const TurnedProfile* turnedProfile(const ModuleInput& m) const override
+    {
+        const TurnUnit* t = m.getIf<TurnUnit>();
+        return t ? &t->profile : nullptr;
+    }
+    bool setTurnedProfile(ModuleInput& m, const TurnedProfile& p) const override
+    {
+        TurnUnit* t = m.getIf<TurnUnit>();
+        if (!t) return false;
+        t->profile = p;
+        return true;
+    }
+
     std::optional<TurnedPart> turned(const ModuleInput& mm, const UnitPlanContext& ctx) const override
     {
         const TurnUnit& t = mm.as<TurnUnit>();
