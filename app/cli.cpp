@@ -18,7 +18,10 @@
 #include "viz/render.h"
 #endif
 #ifdef TAIWA_WITH_UI
+#include "ui/profile_view.h"
 #include "ui/ui.h"
+
+#include <QApplication>
 #endif
 
 #include <QGuiApplication>
@@ -48,9 +51,11 @@ Usage:
                                    unit's programs); the dialect: --dialect, else
                                    the job's, else linuxcnc
   taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
-               [--view iso|top|front]
+               [--view iso|top|front|profile]
                                    the 3-D preview of step K (1-based, in
-                                   machining order) or all steps, to a PNG
+                                   machining order) or all steps, to a PNG; a
+                                   lathe job: the part revolved, or with
+                                   --view profile its profile views
   taiwa import STEP --out JOB [--material ID]
                                    a lathe job from a STEP solid of revolution:
                                    its outer profile (and bore) as turned-profile
@@ -162,7 +167,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     return kOk;
 }
 
-int render(const Options& o)
+int render(const Options& o, int& argc, char** argv)
 {
 #ifdef TAIWA_WITH_RENDER
     // 4096 x 4096 takes seconds and ~1 GB with software rendering (8192 took 17 s and 5.8 GB).
@@ -173,6 +178,20 @@ int render(const Options& o)
     }
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
+    if (o.view == "profile") {  // a lathe job's profile views, painted by the station's widget offscreen
+        if (l.plan.turned.empty()) {
+            std::cerr << "taiwa: render: --view profile draws turned profiles; this job has none\n";
+            return kInputErrors;
+        }
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+        QApplication qapp(argc, argv);
+        if (!ui::profileImage(l.plan, o.width, o.height).save(QString::fromStdString(o.out), "PNG")) {
+            std::cerr << "taiwa: render: cannot write " << o.out << '\n';
+            return kInternal;
+        }
+        std::cout << "taiwa: wrote " << o.out << '\n';
+        return kOk;
+    }
     viz::RenderOptions r;
     r.step = o.step ? *o.step - 1 : -1;
     if (o.step && (*o.step < 1 || *o.step > static_cast<int>(l.plan.steps.size()))) {
@@ -212,7 +231,7 @@ int run(int argc, char** argv)
         case Command::Version: std::cout << "taiwa " << TAIWA_VERSION << '\n'; return kOk;
         case Command::Check: return check(o);
         case Command::Export: return exportJob(o, argc, argv);
-        case Command::Render: return render(o);
+        case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);
         case Command::Station:
 #ifdef TAIWA_WITH_UI

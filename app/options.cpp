@@ -98,7 +98,8 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         } else if (a == "--size" && forRender) {
             if (auto err = parseSize(*v, o)) return err;
         } else if (a == "--view" && forRender) {
-            if (*v != "iso" && *v != "top" && *v != "front") return "--view is iso, top or front, not '" + std::string(*v) + "'";
+            if (*v != "iso" && *v != "top" && *v != "front" && *v != "profile")
+                return "--view is iso, top, front or profile, not '" + std::string(*v) + "'";
             o.view = *v;
         } else {
             return "option " + std::string(a) + " does not go with this command";

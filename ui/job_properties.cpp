@@ -1,6 +1,7 @@
 // The job properties box.
 #include "ui/job_properties.h"
 
+#include "machine/machine.h"
 #include "model/technology.h"
 #include "ui/job_document.h"
 #include "ui/length_units.h"
@@ -8,18 +9,24 @@
 
 #include <QComboBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QLineEdit>
 
 namespace taiwa::ui {
 namespace {
-const char* const kStockKeys[3] = {"stock.width", "stock.length", "stock.height"};
+// The stock's fields: a block's, or a lathe job's bar.
+const char* const kStockKeys[4] = {"stock.width", "stock.length", "stock.height", ""};
+const char* const kBarKeys[4] = {"stock.diameter", "stock.length", "stock.face", "stock.bore"};
+const char* stockKey(const Job& j, int which) { return j.bar ? kBarKeys[which] : kStockKeys[which]; }
 double& stockValue(Job& j, int which)
 {
+    if (j.bar) return which == 0 ? j.bar->diameter : which == 1 ? j.bar->length : which == 2 ? j.bar->face : j.bar->bore;
     return which == 0 ? j.stock.width : which == 1 ? j.stock.length : j.stock.height;
 }
 double stockValue(const Job& j, int which)
 {
-    return which == 0 ? j.stock.width : which == 1 ? j.stock.length : j.stock.height;
+    Job copy = j;
+    return stockValue(copy, which);
 }
 }  // namespace
 
@@ -38,11 +45,25 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     form->addRow(tr("Name"), name_);
     form->addRow(tr("Material"), material_);
     form->addRow(tr("Units"), unit_);
-    const QString labels[3] = {tr("Stock width (X)"), tr("Stock length (Y)"), tr("Stock height (Z)")};
-    for (int i = 0; i < 3; ++i) {
+    // The machine: a milling machine takes a block, a lathe a bar.
+    machine_ = new QComboBox(this);
+    machine_->setObjectName("job.machine");
+    for (const Machine& m : machineLibrary())
+        machine_->addItem(QString::fromStdString(m.id + " – " + m.name), QString::fromStdString(m.id));
+    form->addRow(tr("Machine"), machine_);
+    connect(machine_, &QComboBox::activated, this, [this](int i) {
+        Job j = doc_->job();
+        j.machine = machine_->itemData(i).toString().toStdString();
+        const Machine* m = findMachine(j.machine);
+        if (m && m->kind == MachineKind::Lathe && !j.bar) j.bar = BarStock{};
+        if (m && m->kind == MachineKind::Mill) j.bar.reset();
+        doc_->edit(j, tr("Machine %1").arg(QString::fromStdString(j.machine)));
+    });
+    form_ = form;
+    for (int i = 0; i < 4; ++i) {
         stock_[i] = new QLineEdit(this);
-        stock_[i]->setObjectName(kStockKeys[i]);
-        form->addRow(labels[i], stock_[i]);
+        stock_[i]->setObjectName(i < 3 ? kStockKeys[i] : kBarKeys[i]);  // renamed by refresh() for a bar
+        form->addRow(new QLabel(this), stock_[i]);  // its words set by refresh(): a block's or a bar's
         connect(stock_[i], &QLineEdit::textEdited, this, [this, i](const QString& t) { editStock(i, t); });
         connect(stock_[i], &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
         connect(stock_[i], &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
@@ -75,7 +96,7 @@ void JobProperties::editStock(int which, const QString& text)
     }
     Job j = doc_->job();
     stockValue(j, which) = *v;
-    doc_->edit(j, tr("Edit %1").arg(kStockKeys[which]), kStockKeys[which]);
+    doc_->edit(j, tr("Edit %1").arg(stockKey(j, which)), stockKey(j, which));
 }
 
 void JobProperties::refresh(bool force)
@@ -89,7 +110,25 @@ void JobProperties::refresh(bool force)
     }
     material_->setCurrentIndex(m);
     unit_->setCurrentIndex(j.lengthUnit == LengthUnit::Inch ? 1 : 0);
-    for (int i = 0; i < 3; ++i) {
+    int mi = machine_->findData(QString::fromStdString(j.machine));
+    if (mi < 0) {
+        machine_->addItem(QString::fromStdString(j.machine) + tr(" (unknown)"), QString::fromStdString(j.machine));
+        mi = machine_->count() - 1;
+    }
+    machine_->setCurrentIndex(mi);
+    const QString blockLabels[4] = {tr("Stock width (X)"), tr("Stock length (Y)"), tr("Stock height (Z)"), QString()};
+    const QString barLabels[4] = {tr("Bar diameter"), tr("Bar length"), tr("Face stock"), tr("Bore (0: solid)")};
+    for (int i = 0; i < 4; ++i) {
+        const bool shown = j.bar || i < 3;
+        stock_[i]->setVisible(shown);
+        stock_[i]->setObjectName(j.bar || i == 3 ? kBarKeys[i] : kStockKeys[i]);
+        if (auto* label = qobject_cast<QLabel*>(form_->labelForField(stock_[i]))) {
+            label->setText(j.bar ? barLabels[i] : blockLabels[i]);
+            label->setVisible(shown);
+        }
+    }
+    for (int i = 0; i < 4; ++i) {
+        if (!j.bar && i == 3) continue;
         const double v = stockValue(j, i);
         const auto typed = parseNumber(stock_[i]->text());
         if ((typed && (*typed == v || stock_[i]->text() == formatShown(v))) || (!force && bad_[i])) continue;
@@ -100,10 +139,11 @@ void JobProperties::refresh(bool force)
 
 void JobProperties::showDiagnostics(const Diagnostics& jobLevel)
 {
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 4; ++i) {
         QString msg = bad_[i] ? tr("not a number") : QString();
         for (const Diagnostic& d : jobLevel)
-            if (d.field == kStockKeys[i]) msg = QString::fromStdString(d.message);
+            if (d.field == stockKey(doc_->job(), i) || (i == 0 && d.field == "stock.shape") || (i == 0 && d.field == "machine"))
+                msg = QString::fromStdString(d.message);
         stock_[i]->setStyleSheet(msg.isEmpty() ? QString() : QStringLiteral("background: #ffd0d0;"));
         stock_[i]->setToolTip(msg);
     }

@@ -1,6 +1,7 @@
 // The job's own inputs: name, material, length unit (switching converts
-// every length) and the stock block (width, length, height); each change is one undoable edit, numbers parsed
-// as in the unit forms.
+// every length), the machine and its stock (a block: width, length, height;
+// a lathe's bar: diameter, length, face stock, bore); each change is one
+// undoable edit, numbers parsed as in the unit forms.
 #pragma once
 
 #include "model/diagnostic.h"
@@ -8,6 +9,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QFormLayout;
 class QLineEdit;
 
 namespace taiwa::ui {
@@ -29,8 +31,10 @@ private:
     QLineEdit* name_;
     QComboBox* material_;
     QComboBox* unit_;
-    QLineEdit* stock_[3];
-    bool bad_[3] = {false, false, false};
+    QLineEdit* stock_[4];  // block: width, length, height; bar: diameter, length, face, bore
+    bool bad_[4] = {false, false, false, false};
+    QComboBox* machine_ = nullptr;
+    QFormLayout* form_ = nullptr;
 };
 
 }  // namespace taiwa::ui

@@ -42,8 +42,16 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
         b->setToolTip(text);
         b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
         connect(b, &QToolButton::clicked, this, [this, module] { emit addModule(module); });
+        b->setProperty("machineKind", static_cast<int>(kind->machineKind()));
         box->addWidget(b);
     }
+    setMachineKind(MachineKind::Mill);
+}
+
+void ModulePalette::setMachineKind(MachineKind kind)
+{
+    for (QToolButton* b : findChildren<QToolButton*>())
+        b->setVisible(b->property("machineKind").toInt() == static_cast<int>(kind));
 }
 
 }  // namespace taiwa::ui

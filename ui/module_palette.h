@@ -3,6 +3,8 @@
 // dimension symbols of the part drawing. A click adds a unit of that module.
 #pragma once
 
+#include "machine/machine.h"
+
 #include <QPixmap>
 #include <QWidget>
 
@@ -16,6 +18,9 @@ class ModulePalette : public QWidget {
     Q_OBJECT
 public:
     explicit ModulePalette(QWidget* parent = nullptr);
+    // Shows the modules of that machine kind only (milling modules on a
+    // mill, turning modules on a lathe).
+    void setMachineKind(MachineKind kind);
 
 signals:
     void addModule(const QString& module);  // the module kind's name: "M4", "M2D"

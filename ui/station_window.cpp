@@ -2,6 +2,8 @@
 // document, plan runner, forms, panels and file actions.
 #include "ui/station_window.h"
 
+#include "machine/machine.h"
+
 #include "modules/registry.h"
 
 #include <QCoreApplication>
@@ -241,6 +243,16 @@ void StationWindow::wire()
         connect(f, &UnitForm::edited, this,
                 [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
         connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
+        connect(f, &UnitForm::unitEdited, this, [this](const ModuleInput& after, const QString& text, const QString& key) {
+            const int u = units_->currentUnit();
+            if (u < 0) return;
+            Job j = doc_->job();
+            j.units[static_cast<std::size_t>(u)].module = after;
+            // A table cell is committed whole: each commit is an undo step of
+            // its own, kept as typing so that the open cell editor stays.
+            doc_->edit(j, tr("%1 of unit %2").arg(text).arg(u + 1), key.isEmpty() ? QString() : QStringLiteral("%1:%2").arg(u).arg(key));
+            doc_->breakMerge();
+        });
         connect(f, &UnitForm::nameEdited, this, [this](const QString& typed) {
             const int u = units_->currentUnit();
             if (u < 0) return;
@@ -257,7 +269,10 @@ void StationWindow::wire()
     connect(runner_, &PlanRunner::stepsPlanned, steps_, &StepPanel::setPlan);
     connect(runner_, &PlanRunner::programReady, this,
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
-                if (plan) nc_->setProgram(nc, lines);
+                if (plan && plan->mmJob.bar)  // a lathe job: no tape yet
+                    nc_->setMessage(tr("A lathe job has no NC program yet: turning steps and lathe NC come with the "
+                                       "turning process. The sheet and steps.json of an export hold the profile to cut."));
+                else if (plan) nc_->setProgram(nc, lines);
                 else if (!hasErrors(diagnostics_)) nc_->setMessage(nc);  // with input errors the last program stays, marked stale
                 onProgram(plan);
                 showStale();
@@ -318,8 +333,11 @@ void StationWindow::onDocumentChanged(bool fromTyping)
     nc_->setDialect(dialect);
     units_->refresh();
     jobProps_->refresh(!fromTyping);
+    const Machine* machine = findMachine(doc_->job().machine);
+    palette_->setMachineKind(machine ? machine->kind : MachineKind::Mill);
     if (UnitForm* f = currentForm()) {
         const MachiningUnit& unit = doc_->job().units[static_cast<std::size_t>(units_->currentUnit())];
+        f->setContext(doc_->job(), runner_->library());
         f->setUnit(unit, !fromTyping);
         f->setSketch(moduleKind(unit.module).sketch(unit.module, doc_->job().lengthUnit, runner_->library()));
     }
@@ -332,6 +350,7 @@ void StationWindow::onUnitSelected(int unit)
     forms_->setCurrentWidget(f ? static_cast<QWidget*>(f) : forms_->widget(0));
     if (f) {
         const MachiningUnit& u = doc_->job().units[static_cast<std::size_t>(unit)];
+        f->setContext(doc_->job(), runner_->library());
         f->setUnit(u, true);
         f->setSketch(moduleKind(u.module).sketch(u.module, doc_->job().lengthUnit, runner_->library()));
     }

@@ -4,6 +4,9 @@
 
 #include "ui/sketch_view.h"
 
+#include "modules/registry.h"
+#include "ui/profile_editor.h"
+
 #include "ui/module_palette.h"
 #include "ui/number_text.h"
 
@@ -24,7 +27,7 @@ const char* const kRed = "background: #ffd0d0;";
 }
 
 UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
-    : QWidget(parent), fields_(fieldsFor(kind)), rows_(fields_.size())
+    : QWidget(parent), kind_(kind), fields_(fieldsFor(kind)), rows_(fields_.size())
 {
     auto* outer = new QVBoxLayout(this);
     auto* drawing = new QLabel(this);
@@ -38,6 +41,18 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     outer->addWidget(sketch_);
     auto* form = new QFormLayout;
     outer->addLayout(form);
+    // A turned profile's tables and view, under its few fields.
+    if (kind.turnedProfile(kind.makeDefault({}))) {
+        drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 240));
+        profile_ = new ProfileEditor(prefix, this);
+        outer->addWidget(profile_);
+        connect(profile_, &ProfileEditor::edited, this,
+                [this](const turning::TurnedProfile& after, const QString& text, const QString& key) {
+                    ModuleInput m = current_;
+                    if (!kind_.setTurnedProfile(m, after)) return;
+                    emit unitEdited(m, text, key);
+                });
+    }
     outer->addStretch(1);
     // The operator's name for the unit, shown in the unit list, the step list
     // and the sheet; a unit of any module has one.
@@ -100,8 +115,16 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
 
 void UnitForm::setSketch(std::optional<Sketch> sketch) { sketch_->setSketch(std::move(sketch)); }
 
+void UnitForm::setContext(const Job& job, const std::vector<Tool>& library)
+{
+    if (profile_) profile_->setContext(job.bar, library);
+}
+
 void UnitForm::setUnit(const MachiningUnit& unit, bool force)
 {
+    current_ = unit.module;
+    if (profile_)
+        if (const turning::TurnedProfile* p = kind_.turnedProfile(unit.module)) profile_->setProfile(*p, force);
     updating_ = true;
     if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));
     for (std::size_t i = 0; i < fields_.size(); ++i) {
@@ -157,8 +180,9 @@ void UnitForm::setMessage(int field, const QString& message)
     row.message->setVisible(!message.isEmpty());
 }
 
-Diagnostics UnitForm::showDiagnostics(const Diagnostics& ofThisUnit)
+Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
 {
+    const Diagnostics ofThisUnit = profile_ ? profile_->showDiagnostics(all) : all;
     std::vector<QString> messages(fields_.size());
     std::vector<bool> red(fields_.size(), false);
     Diagnostics unmatched;

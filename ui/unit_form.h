@@ -6,7 +6,9 @@
 #pragma once
 
 #include "model/diagnostic.h"
+#include "model/job.h"
 #include "model/sketch.h"
+#include "model/tool.h"
 #include "ui/field_spec.h"
 
 #include <QWidget>
@@ -39,6 +41,11 @@ public:
     // The unit's live figure under the drawing (probing: the touches and
     // the fit); hidden when the module has none.
     void setSketch(std::optional<Sketch> sketch);
+    // The job around the unit (a turned profile's bar) and the tool library
+    // (its finishing tool's nose radius), for the profile editor.
+    void setContext(const Job& job, const std::vector<Tool>& library);
+    // The editor of a turned profile (module TURN); nullptr for other modules.
+    class ProfileEditor* profileEditor() const { return profile_; }
 
 protected:
     // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
@@ -52,6 +59,8 @@ signals:
     void nameEdited(const QString& name);
     // The operator left a field (Tab, Enter, click elsewhere).
     void fieldLeft();
+    // The unit's module input as a whole after an edit of the profile editor.
+    void unitEdited(const taiwa::ModuleInput& after, const QString& text, const QString& mergeKey);
 
 private:
     struct Row {
@@ -64,6 +73,9 @@ private:
     void setMessage(int field, const QString& message);
 
     class SketchView* sketch_ = nullptr;
+    class ProfileEditor* profile_ = nullptr;
+    const ModuleKind& kind_;
+    ModuleInput current_;  // the unit's module input as last shown
     std::vector<FieldSpec> fields_;
     std::vector<Row> rows_;
     QLineEdit* name_ = nullptr;

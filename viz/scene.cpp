@@ -6,6 +6,7 @@
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
 #include "viz/solids.h"
+#include "model/turned_geometry.h"
 
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
@@ -124,6 +125,11 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     if (stock && stock->stepCount() == n) simulation_ = std::move(stock);
     if (selected_ >= n) selected_ = -1;
     if (highlighted_.step >= n) highlighted_ = {};
+    lathe_ = plan_->mmJob.bar.has_value();
+    if (lathe_) {
+        buildLathe();
+        return;
+    }
 
     const Stock& s = plan_->mmJob.stock;
     auto outline = vtkSmartPointer<vtkOutlineSource>::New();
@@ -255,9 +261,60 @@ void Scene::updateEmphasis()
     }
 }
 
+void Scene::buildLathe()
+{
+    const BarStock& bar = *plan_->mmJob.bar;
+    // The part: each turned unit's deformed profile (what the lathe cuts),
+    // the edges as drawn in the part's colour, the grinding stock (moved
+    // and side edges) and the relief grooves in the machined colour.
+    for (const TurnedPart& part : plan_->turned) {
+        std::vector<turning::Segment> finished, ground;
+        for (const auto& e : part.deformed.edges)
+            (e.origin == turning::Origin::Original ? finished : ground).push_back(e.geometry);
+        for (const auto* chain : {&finished, &ground}) {
+            if (chain->empty()) continue;
+            // Each run of consecutive edges revolved on its own.
+            std::vector<turning::Segment> run;
+            const auto flush = [&] {
+                if (run.empty()) return;
+                auto actor = actorFor(revolvedChain(run), chain == &ground ? palette::kMachined : palette::kStock);
+                actor->GetProperty()->SetAmbient(0.3);
+                actor->GetProperty()->SetDiffuse(0.7);
+                renderer_->AddActor(actor);
+                run.clear();
+            };
+            for (const auto& seg : *chain) {
+                if (!run.empty() && turning::dist(run.back().b, seg.a) > 1e-6) flush();
+                run.push_back(seg);
+            }
+            flush();
+        }
+    }
+    // The bar as glass: its outline revolved.
+    const double r = bar.diameter / 2, b = bar.bore / 2, z0 = bar.face - bar.length, z1 = bar.face;
+    const std::vector<turning::Segment> outline{turning::lineSegment({z1, b}, {z1, r}), turning::lineSegment({z1, r}, {z0, r}),
+                                                turning::lineSegment({z0, r}, {z0, b})};
+    stock_ = actorFor(revolvedChain(outline), palette::kStockEdges);
+    stock_->GetProperty()->SetOpacity(0.15);
+    renderer_->AddActor(stock_);
+    const double axisLength = niceLength(bar.diameter);
+    axes_ = vtkSmartPointer<vtkAxesActor>::New();
+    axes_->SetTotalLength(axisLength, axisLength, axisLength);
+    axes_->SetShaftTypeToLine();
+    axes_->SetXAxisLabelText("Z");  // the spindle axis runs along the view's X
+    axes_->SetYAxisLabelText("");
+    axes_->SetZAxisLabelText("X");
+    for (vtkCaptionActor2D* c : {axes_->GetXAxisCaptionActor2D(), axes_->GetYAxisCaptionActor2D(), axes_->GetZAxisCaptionActor2D()}) {
+        c->GetTextActor()->SetTextScaleModeToNone();
+        c->GetCaptionTextProperty()->SetFontSize(14);
+        c->GetCaptionTextProperty()->ShadowOff();
+    }
+    renderer_->AddActor(axes_);
+}
+
 void Scene::updateStock()
 {
-    if (!plan_) return;
+    if (!plan_ || lathe_) return;
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
         if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
@@ -315,6 +372,11 @@ std::array<double, 6> Scene::bounds() const
 {
     std::array<double, 6> b{0, 1, 0, 1, -1, 0};
     if (!plan_) return b;
+    if (plan_->mmJob.bar) {
+        const BarStock& bar = *plan_->mmJob.bar;
+        const double r = bar.diameter / 2;
+        return {bar.face - bar.length, bar.face, -r, r, -r, r};
+    }
     const Stock& s = plan_->mmJob.stock;
     b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};
     std::vector<vtkPoints*> pointSets;

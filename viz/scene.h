@@ -95,6 +95,9 @@ private:
     void updateStock();
     void updateTool();
     void updateHighlight();
+    // A lathe job (a bar, turned profiles): the part revolved, the grinding
+    // stock in its own colour, the bar as glass.
+    void buildLathe();
 
     vtkSmartPointer<vtkRenderer> renderer_;
     std::shared_ptr<const Plan> plan_;
@@ -115,6 +118,7 @@ private:
     int selected_ = -1;
     bool showStock_ = false;
     bool stockBefore_ = false;
+    bool lathe_ = false;  // the plan is a lathe job's: no height field, no paths yet
     MoveRef highlighted_;
 };
 

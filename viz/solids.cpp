@@ -1,7 +1,8 @@
 // The stock surface from the height field, the stock block, the tool solid,
-// the pocket outlines.
+// the pocket outlines, and a lathe job's surfaces of revolution.
 #include "viz/solids.h"
 
+#include "model/turned_geometry.h"
 #include "sim/cutter_profile.h"
 #include "viz/palette.h"
 
@@ -247,6 +248,37 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps)
     pd->SetPoints(points);
     pd->SetLines(lines);
     return pd;
+}
+
+vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain)
+{
+    // The chain as points in (z, r), arcs every 3°.
+    std::vector<std::pair<double, double>> profile;
+    for (const auto& s : chain) {
+        const int n = s.arc ? std::max(2, static_cast<int>(std::ceil(turning::sweep(s) / (3.0 * std::numbers::pi / 180.0)))) : 1;
+        const double len = turning::length(s);
+        for (int i = profile.empty() ? 0 : 1; i <= n; ++i) {
+            const turning::ZR p = turning::pointAt(s, len * i / n);
+            profile.emplace_back(p.z, p.r);
+        }
+    }
+    constexpr int kTurn = 72;
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& [z, r] : profile)
+        for (int k = 0; k < kTurn; ++k) {
+            const double a = 2.0 * std::numbers::pi * k / kTurn;
+            points->InsertNextPoint(z, r * std::cos(a), r * std::sin(a));
+        }
+    for (std::size_t i = 0; i + 1 < profile.size(); ++i)
+        for (int k = 0; k < kTurn; ++k) {
+            const auto at = [&](std::size_t row, int col) { return static_cast<vtkIdType>(row * kTurn + (col % kTurn)); };
+            addQuad(cells, at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
+        }
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(points);
+    pd->SetPolys(cells);
+    return withNormals(pd, 30.0);
 }
 
 }  // namespace taiwa::viz

@@ -5,6 +5,7 @@
 
 #include "model/job.h"
 #include "model/step.h"
+#include "model/turned.h"
 #include "model/tool.h"
 #include "sim/height_field.h"
 
@@ -35,5 +36,12 @@ vtkSmartPointer<vtkPolyData> toolSolid(const Tool& tool);
 // top face (Z 0) and once at the floor (Z -cutDepth; for a tapered wall the
 // outline moved inward by cutDepth x tan(taper)).
 vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps);
+
+// A lathe job's chain of half-section edges (turned profile, deformed
+// profile, bar outline) revolved about the spindle axis: the surface of
+// revolution with the spindle along VTK's X (Z of the lathe to the right),
+// the radius in Y and Z; arcs sampled every 3° and the turn in 72 steps,
+// for display only, with normals.
+vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain);
 
 }  // namespace taiwa::viz

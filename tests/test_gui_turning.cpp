@@ -1,0 +1,240 @@
+// Turned profiles in the station (QTest on the offscreen platform): a lathe
+// job chosen in the job properties, a turned profile added from the palette
+// and a stepped shaft typed into its table with the keyboard; an edge picked
+// by a mouse click in the profile view (the table row follows), its
+// grinding-allowance row filled and the deformed profile seen in the view
+// and in the plan; undo and redo of a typed cell; a refused value marking
+// its cell and naming the row; the corner revision of a chamfer as one
+// undoable edit. With TAIWA_SCREENSHOTS_DIR set it writes
+// docs/screenshots/station-turning.png (the sample lathe-shaft-grinding).
+#include "modules/registry.h"
+#include "support/gui_fields.h"
+#include "support/support.h"
+#include "ui/job_document.h"
+#include "ui/plan_runner.h"
+#include "ui/profile_editor.h"
+#include "ui/profile_view.h"
+#include "ui/station_window.h"
+#include "ui/unit_list_panel.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+using taiwa::test::GuiFields;
+
+namespace {
+
+const turning::TurnedProfile& profileOf(StationWindow& w, int unit = 0)
+{
+    const ModuleInput& m = w.document()->job().units[static_cast<std::size_t>(unit)].module;
+    return *moduleKind(m).turnedProfile(m);
+}
+
+void settle(StationWindow& w)
+{
+    w.planRunner()->flush();
+    QTRY_VERIFY(!w.planRunner()->isBusy());
+    QCoreApplication::sendPostedEvents();
+}
+
+// Types into a table cell with the keyboard as an operator does: the cell's
+// editor opened, the text typed over what it holds, then `key` (Tab: on to
+// the next cell; Return: done).
+void typeInto(QTableWidget* t, int row, int col, const QString& text, Qt::Key key = Qt::Key_Return)
+{
+    t->setCurrentCell(row, col);
+    t->editItem(t->item(row, col));
+    QWidget* editor = QApplication::focusWidget();
+    QVERIFY(editor && editor != t);
+    if (auto* e = qobject_cast<QLineEdit*>(editor)) e->selectAll();
+    QTest::keyClicks(editor, text);
+    QTest::keyClick(editor, key);
+    QCoreApplication::processEvents();  // the delegate commits Return and Tab queued
+}
+
+}  // namespace
+
+class TestGuiTurning : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        test::isolateStation(dir_.path());
+    }
+
+    void typeAShaftPickAnEdgeAndGrindIt()
+    {
+        StationWindow w;
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();  // the keyboard goes to the active window (under X as offscreen)
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        // The lathe: the palette offers turned profiles only, the stock is a bar.
+        auto* machine = w.findChild<QComboBox*>("job.machine");
+        QVERIFY(machine);
+        const int lathe = machine->findData("lathe");
+        QVERIFY(lathe >= 0);
+        machine->setCurrentIndex(lathe);
+        emit machine->activated(lathe);
+        QVERIFY(w.document()->job().bar);
+        auto* addTurn = w.findChild<QToolButton*>("unit.addTURN");
+        QVERIFY(addTurn && addTurn->isVisible());
+        QVERIFY(!w.findChild<QToolButton*>("unit.addM4")->isVisible());
+        GuiFields::retype(GuiFields::edit(w, "stock.diameter"), "64");
+        QCOMPARE(w.document()->job().bar->diameter, 64.0);
+        QTest::mouseClick(addTurn, Qt::LeftButton);
+        QCOMPARE(w.document()->job().units.size(), std::size_t(1));
+
+        // The default profile out, a stepped shaft typed in: from X0 Z0 up
+        // the front face to X40, the Ø40 seat to Z-50, the shoulder to X60,
+        // the Ø60 to Z-80.
+        auto* rows = w.findChild<QTableWidget*>("turn.rows");
+        QVERIFY(rows && rows->isVisible());
+        while (rows->rowCount() > 0) {
+            rows->setCurrentCell(0, ProfileEditor::XCol);
+            QTest::mouseClick(w.findChild<QPushButton*>("turn.deleteRow"), Qt::LeftButton);
+        }
+        QVERIFY(profileOf(w).rows.empty());
+        const std::pair<const char*, const char*> shaft[] = {{"40", "0"}, {"40", "-50"}, {"60", "-50"}, {"60", "-80"}};
+        for (int r = 0; r < 4; ++r) {
+            QTest::mouseClick(w.findChild<QPushButton*>("turn.addRow"), Qt::LeftButton);
+            QCOMPARE(rows->rowCount(), r + 1);
+            typeInto(rows, r, ProfileEditor::XCol, shaft[r].first, Qt::Key_Tab);
+            QCoreApplication::processEvents();  // the X cell's editor closes, Z's opens
+            QWidget* zEditor = QApplication::focusWidget();  // Tab went on to Z
+            QVERIFY(zEditor && rows->currentColumn() == ProfileEditor::ZCol);
+            qobject_cast<QLineEdit*>(zEditor)->selectAll();
+            QTest::keyClicks(zEditor, shaft[r].second);
+            QTest::keyClick(zEditor, Qt::Key_Return);
+            QCoreApplication::processEvents();
+
+        }
+        const auto& typed = profileOf(w);
+        QCOMPARE(typed.rows.size(), std::size_t(4));
+        QCOMPARE(typed.rows[1].x, 40.0);
+        QCOMPARE(typed.rows[1].z, -50.0);
+        QCOMPARE(typed.rows[3].x, 60.0);
+        QCOMPARE(typed.rows[3].z, -80.0);
+        QCOMPARE(typed.rows[3].id, 4);
+        settle(w);
+        QVERIFY2(w.planRunner()->fullPlan() && w.planRunner()->fullPlan()->ok(), "the typed shaft plans");
+
+        // E2 picked with the mouse in the middle of the Ø40 seat; the table follows.
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        QVERIFY(view && view->isVisible());
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->toPixel(-25, 40).toPoint());
+        QCOMPARE(view->selectedEdge(), QString("E2"));
+        QCOMPARE(rows->currentRow(), 1);
+        // Its grinding allowance: a row for the picked edge, 0.3 typed.
+        QTest::mouseClick(w.findChild<QPushButton*>("turn.addAllowance"), Qt::LeftButton);
+        auto* allowances = w.findChild<QTableWidget*>("turn.allowances");
+        QCOMPARE(allowances->rowCount(), 1);
+        QCOMPARE(allowances->item(0, ProfileEditor::AEdgeCol)->text(), QString("E2"));
+        typeInto(allowances, 0, ProfileEditor::AAllowCol, "0.3");
+        QCOMPARE(profileOf(w).allowances.at(0).allowance, 0.3);
+        // The deformed profile: in the view at once, in the plan when it comes.
+        QVERIFY(view->deformed());
+        const auto movedIn = [](const turning::DeformedProfile& d) -> const turning::DeformedEdge* {
+            for (const auto& e : d.edges)
+                if (e.id == "E2.moved") return &e;
+            return nullptr;
+        };
+        const turning::DeformedEdge* moved = movedIn(*view->deformed());
+        QVERIFY(moved);
+        QCOMPARE(moved->geometry.a.r, 20.3);  // Ø40.6
+        settle(w);
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan && plan->ok() && plan->turned.size() == 1);
+        QVERIFY(movedIn(plan->turned[0].deformed));
+        QCOMPARE(movedIn(plan->turned[0].deformed)->geometry.b, (turning::ZR{-50, 20.3}));
+
+        // Undo and redo of the typed cell.
+        w.document()->undoStack()->undo();
+        QCOMPARE(profileOf(w).allowances.at(0).allowance, 0.2);  // what "Add allowance" put there
+        QCOMPARE(allowances->item(0, ProfileEditor::AAllowCol)->text(), QString("0.2"));
+        w.document()->undoStack()->redo();
+        QCOMPARE(profileOf(w).allowances.at(0).allowance, 0.3);
+
+        // A diameter below zero: the cell red, the row named.
+        typeInto(rows, 2, ProfileEditor::XCol, "-5");
+        settle(w);
+        QTableWidgetItem* bad = rows->item(2, ProfileEditor::XCol);
+        QVERIFY2(bad->toolTip().startsWith("row 3: the end diameter is -5 mm"), qPrintable(bad->toolTip() + " / " + w.findChild<QLabel*>("turn.messages")->text()));
+        QCOMPARE(bad->background().color(), QColor("#ffd0d0"));
+        QVERIFY(w.findChild<QLabel*>("turn.messages")->text().contains("row 3"));
+        w.document()->undoStack()->undo();
+        settle(w);
+        QCOMPARE(profileOf(w).rows[2].x, 60.0);
+        QVERIFY(rows->item(2, ProfileEditor::XCol)->toolTip().isEmpty());
+    }
+
+    // Corner revision (seed 002): every chamfer highlighted, one picked with
+    // the mouse, its size changed as one undoable edit.
+    void reviseAChamfer()
+    {
+        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.unitList()->selectUnit(0);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        QVERIFY(view && view->isVisible());
+        QTest::mouseClick(w.findChild<QPushButton*>("turn.reviseChamfers"), Qt::LeftButton);
+        QCOMPARE(view->highlightedCorners(), QStringList{"E4.c"});
+        QVERIFY(w.findChild<QWidget*>("turn.revision")->isVisible());
+        // The chamfer E4.c runs from X39 Z-40 to X40 Z-40.5: click its middle.
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->toPixel(-40.25, 39.5).toPoint());
+        QCOMPARE(view->highlightedCorners(), QStringList{"E4.c"});
+        auto* size = GuiFields::edit(w, "turn.cornerSize");
+        QVERIFY(size->isEnabled());
+        QCOMPARE(size->text(), QString("0.5"));
+        QVERIFY(w.findChild<QLabel*>("turn.revisionText")->text().startsWith("Chamfer E4.c"));
+        const int steps = w.document()->undoStack()->count();
+        GuiFields::retype(size, "1");
+        QTest::keyClick(size, Qt::Key_Return);
+        QCOMPARE(profileOf(w).rows[3].cornerSize, 1.0);
+        QCOMPARE(w.document()->undoStack()->count(), steps + 1);  // one edit
+        w.document()->undoStack()->undo();
+        QCOMPARE(profileOf(w).rows[3].cornerSize, 0.5);
+        w.document()->undoStack()->redo();
+        QCOMPARE(profileOf(w).rows[3].cornerSize, 1.0);
+        QTest::mouseClick(w.findChild<QPushButton*>("turn.revisionDone"), Qt::LeftButton);
+        QVERIFY(view->highlightedCorners().isEmpty());
+    }
+
+    void screenshot()
+    {
+        const QString out = qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR");
+        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.unitList()->selectUnit(0);
+        settle(w);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->toPixel(-20, 30).toPoint());
+        QCOMPARE(view->selectedEdge(), QString("E3"));
+        QVERIFY(view->deformed() && !view->deformed()->rows.empty());
+        if (out.isEmpty()) return;
+        QDir().mkpath(out);
+        QVERIFY(w.grab().toImage().save(QDir(out).filePath("station-turning.png")));
+    }
+};
+
+QTEST_MAIN(TestGuiTurning)
+#include "test_gui_turning.moc"
