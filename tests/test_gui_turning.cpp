@@ -5,11 +5,13 @@
 // grinding-allowance row filled and the deformed profile seen in the view
 // and in the plan; undo and redo of a typed cell; a refused value marking
 // its cell and naming the row; the corner revision of a chamfer as one
-// undoable edit. With TAIWA_SCREENSHOTS_DIR set it writes
+// undoable edit; a STEP model imported as a new lathe job. With
+// TAIWA_SCREENSHOTS_DIR set it writes
 // docs/screenshots/station-turning.png (the sample lathe-shaft-grinding).
 #include "modules/registry.h"
 #include "support/gui_fields.h"
 #include "support/support.h"
+#include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/plan_runner.h"
 #include "ui/profile_editor.h"
@@ -215,6 +217,32 @@ private slots:
         QCOMPARE(profileOf(w).rows[3].cornerSize, 1.0);
         QTest::mouseClick(w.findChild<QPushButton*>("turn.revisionDone"), Qt::LeftButton);
         QVERIFY(view->highlightedCorners().isEmpty());
+    }
+
+    // File > Import turned part (STEP): a new untitled lathe job with the
+    // model's outer profile and bore; a file that is not STEP changes nothing.
+    void importAStepModel()
+    {
+        StationWindow w;
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const Job before = w.document()->job();
+        QVERIFY(!w.fileActions()->importStepPath(test::sourcePath("resources/samples/plate.taiwa")));
+        QCOMPARE(w.document()->job(), before);
+        QVERIFY(w.fileActions()->importStepPath(test::sourcePath("resources/samples/drive-shaft.step")));
+        const Job& j = w.document()->job();
+        QCOMPARE(j.machine, std::string("lathe"));
+        QCOMPARE(j.units.size(), std::size_t(2));
+        QVERIFY(w.document()->path().isEmpty() && w.document()->isModified());
+        QCOMPARE(profileOf(w, 0).rows.size(), std::size_t(10));
+        QCOMPARE(profileOf(w, 0).rows[6].kind, turning::ElementKind::ArcCW);  // the collar's fillet R1
+        QCOMPARE(profileOf(w, 1).side, turning::ProfileSide::Inner);
+        w.unitList()->selectUnit(0);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        QCOMPARE(view->profile().edges.size(), std::size_t(10));
+        settle(w);
+        QVERIFY(w.planRunner()->fullPlan() && w.planRunner()->fullPlan()->ok());
     }
 
     void screenshot()

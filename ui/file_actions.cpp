@@ -2,6 +2,8 @@
 // export.
 #include "ui/file_actions.h"
 
+#include "job/step_job.h"
+
 #include "ui/nc_view.h"
 
 #include "job/job_file.h"
@@ -60,6 +62,31 @@ bool FileActions::open()
     if (!maybeSave()) return false;
     const QString path = QFileDialog::getOpenFileName(window_, tr("Open job"), {}, kFilter);
     return !path.isEmpty() && openPath(path);
+}
+
+bool FileActions::importStep()
+{
+    if (!maybeSave()) return false;
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Import a turned part (STEP)"), {},
+                                                      tr("STEP models (*.step *.stp *.STEP *.STP)"));
+    return !path.isEmpty() && importStepPath(path);
+}
+
+bool FileActions::importStepPath(const QString& path)
+{
+    auto job = latheJobFromStep(path.toStdString(), "steel-s45c");
+    if (!job) {
+        const QString why = QString::fromStdString(job.error());
+        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
+        else QMessageBox::warning(window_, tr("Cannot import"), why);
+        emit message(why);
+        return false;
+    }
+    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());
+    job->dialect = lastChosenDialect().toStdString();
+    doc_->reset(*job, {}, true);  // untitled and not on disk yet
+    emit message(tr("Imported %1: %n turned profile(s)", "", static_cast<int>(job->units.size())).arg(path));
+    return true;
 }
 
 bool FileActions::openPath(const QString& path)

@@ -26,6 +26,10 @@ public:
     bool newJob();
     bool open();
     bool openPath(const QString& path);
+    // A new, untitled lathe job from a STEP solid of revolution (its turned
+    // profiles and a bar that holds it); a refused file says why.
+    bool importStep();
+    bool importStepPath(const QString& path);
     bool save();
     bool saveAs();
     bool saveTo(const QString& path);

@@ -168,6 +168,7 @@ void StationWindow::buildMenus()
     file->addAction(tr("&Open…"), QKeySequence::Open, files_, &FileActions::open);
     QMenu* recent = file->addMenu(tr("Open &recent"));
     connect(recent, &QMenu::aboutToShow, this, [this, recent] { files_->fillRecentMenu(recent); });
+    file->addAction(tr("&Import turned part (STEP)…"), files_, &FileActions::importStep);
     file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);
     file->addSeparator();
