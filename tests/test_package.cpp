@@ -56,6 +56,8 @@ private slots:
         const Run r = run("dpkg-deb", {"-c", deb_});
         QCOMPARE(r.code, 0);
         for (const char* path : {"./usr/bin/taiwa", "./usr/share/taiwa/samples/plate.taiwa",
+                                 "./usr/share/taiwa/samples/lathe-shaft-grinding.taiwa",
+                                 "./usr/share/taiwa/samples/drive-shaft.step",
                                  "./usr/share/taiwa/schema/taiwa-job.schema.json",
                                  "./usr/share/taiwa/technology/materials.json", "./usr/share/applications/taiwa.desktop",
                                  "./usr/share/mime/packages/taiwa.xml", "./usr/share/icons/hicolor/scalable/apps/taiwa.svg",
@@ -71,7 +73,8 @@ private slots:
         const Run r = run("dpkg-deb", {"-f", deb_, "Depends"});
         QCOMPARE(r.code, 0);
         // dpkg-shlibdeps names the libraries' packages with versions.
-        for (const char* lib : {"libqt6widgets6", "libsqlite3-0", "libc6 (>="})
+        for (const char* lib : {"libqt6widgets6", "libsqlite3-0", "libc6 (>=", "libocct-data-exchange-7.6",
+                                "libocct-modeling-algorithms-7.6"})
             QVERIFY2(r.out.contains(lib), qPrintable(r.out));
     }
 
