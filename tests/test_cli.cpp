@@ -41,6 +41,18 @@ json baseJob()
 
 class TestCli : public QObject {
     Q_OBJECT
+    // `job` with `value` put at `pointer`, written to `file`: `taiwa check`
+    // refuses it with a first line starting with `prefix`.
+    static void expectRefused(json job, const QString& pointer, const QString& value, const QString& prefix,
+                              const QString& file)
+    {
+        job[json::json_pointer(pointer.toStdString())] = json::parse(value.toStdString());
+        writeFile(file, job.dump(2));
+        const auto r = runTaiwa({"check", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith(prefix), qPrintable(r.err));
+    }
+
 private slots:
     void versionAndHelp()
     {
@@ -114,14 +126,9 @@ private slots:
         QFETCH(QString, pointer);
         QFETCH(QString, value);
         QFETCH(QString, prefix);
-        json job = baseJob();
-        job[json::json_pointer(pointer.toStdString())] = json::parse(value.toStdString());
         QTemporaryDir dir;
         const QString file = dir.filePath("bad.taiwa");
-        writeFile(file, job.dump(2));
-        const auto r = runTaiwa({"check", file});
-        QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.startsWith(prefix), qPrintable(r.err));
+        expectRefused(baseJob(), pointer, value, prefix, file);
         // export refuses the same job and writes nothing
         const QString out = dir.filePath("out");
         const auto e = runTaiwa({"export", file, "--out", out});
@@ -249,14 +256,9 @@ private slots:
         QFETCH(QString, pointer);
         QFETCH(QString, value);
         QFETCH(QString, prefix);
-        json job = json::parse(readFile(sourcePath("resources/samples/lathe-shaft-grinding.taiwa")));
-        job[json::json_pointer(pointer.toStdString())] = json::parse(value.toStdString());
         QTemporaryDir dir;
-        const QString file = dir.filePath("bad.taiwa");
-        writeFile(file, job.dump(2));
-        const auto r = runTaiwa({"check", file});
-        QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.startsWith(prefix), qPrintable(r.err));
+        expectRefused(json::parse(readFile(sourcePath("resources/samples/lathe-shaft-grinding.taiwa"))), pointer, value,
+                      prefix, dir.filePath("bad.taiwa"));
     }
 
     void millingModuleOnALatheIsRefused()

@@ -19,6 +19,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 
 namespace taiwa::ui {
@@ -265,45 +266,46 @@ void ProfileEditor::fill(bool force)
         if (!item) t->setItem(r, c, cell(text, editable));
         else if (item->text() != text && (!typing || force) && !open) item->setText(text);
     };
+    // A code cell: a combo box made once per row, its choice one edit.
+    const auto combo = [&](QTableWidget* t, int r, int c, const QString& name, std::vector<std::pair<QString, int>> items,
+                           std::function<void(TurnedProfile&, int)> apply, const QString& what) {
+        auto* box = qobject_cast<QComboBox*>(t->cellWidget(r, c));
+        if (box) return box;
+        box = new QComboBox(t);
+        box->setObjectName(QStringLiteral("%1.%2.%3").arg(prefix_, name).arg(r + 1));
+        for (const auto& [text, value] : items) box->addItem(text, value);
+        t->setCellWidget(r, c, box);
+        connect(box, &QComboBox::activated, this, [this, box, apply, what](int index) {
+            TurnedProfile after = profile_;
+            apply(after, box->itemData(index).toInt());
+            commit(after, what, {});
+        });
+        return box;
+    };
     for (int i = 0; i < n; ++i) {
         const ProfileRow& row = profile_.rows[static_cast<std::size_t>(i)];
         set(rows_, i, EdgeCol, QString::fromStdString(edgeId(row.id)), false);
-        auto* kind = qobject_cast<QComboBox*>(rows_->cellWidget(i, KindCol));
-        if (!kind) {
-            kind = new QComboBox(rows_);
-            kind->setObjectName(QStringLiteral("%1.rows.%2.kind").arg(prefix_).arg(i + 1));
-            kind->addItem(tr("line"), int(ElementKind::Line));
-            kind->addItem(tr("arc CW (G2)"), int(ElementKind::ArcCW));
-            kind->addItem(tr("arc CCW (G3)"), int(ElementKind::ArcCCW));
-            rows_->setCellWidget(i, KindCol, kind);
-            connect(kind, &QComboBox::activated, this, [this, kind, i](int index) {
-                TurnedProfile after = profile_;
-                if (i >= static_cast<int>(after.rows.size())) return;
-                after.rows[static_cast<std::size_t>(i)].kind = static_cast<ElementKind>(kind->itemData(index).toInt());
-                commit(after, tr("Element of row %1").arg(i + 1), {});
-            });
-        }
+        const auto rowIndex = static_cast<std::size_t>(i);
+        auto* kind = combo(rows_, i, KindCol, "rows.kind",
+                           {{tr("line"), int(ElementKind::Line)}, {tr("arc CW (G2)"), int(ElementKind::ArcCW)},
+                            {tr("arc CCW (G3)"), int(ElementKind::ArcCCW)}},
+                           [rowIndex](TurnedProfile& p, int v) {
+                               if (rowIndex < p.rows.size()) p.rows[rowIndex].kind = static_cast<ElementKind>(v);
+                           },
+                           tr("Element of row %1").arg(i + 1));
         kind->setCurrentIndex(kind->findData(int(row.kind)));
         set(rows_, i, XCol, shown(row.x));
         set(rows_, i, ZCol, shown(row.z));
         set(rows_, i, RCol, shown(row.radius));
         set(rows_, i, CXCol, shown(row.centreX));
         set(rows_, i, CZCol, shown(row.centreZ));
-        auto* corner = qobject_cast<QComboBox*>(rows_->cellWidget(i, CornerCol));
-        if (!corner) {
-            corner = new QComboBox(rows_);
-            corner->setObjectName(QStringLiteral("%1.rows.%2.corner").arg(prefix_).arg(i + 1));
-            corner->addItem(tr("none"), int(CornerKind::None));
-            corner->addItem(tr("chamfer"), int(CornerKind::Chamfer));
-            corner->addItem(tr("rounding"), int(CornerKind::Rounding));
-            rows_->setCellWidget(i, CornerCol, corner);
-            connect(corner, &QComboBox::activated, this, [this, corner, i](int index) {
-                TurnedProfile after = profile_;
-                if (i >= static_cast<int>(after.rows.size())) return;
-                after.rows[static_cast<std::size_t>(i)].corner = static_cast<CornerKind>(corner->itemData(index).toInt());
-                commit(after, tr("Corner of row %1").arg(i + 1), {});
-            });
-        }
+        auto* corner = combo(rows_, i, CornerCol, "rows.corner",
+                             {{tr("none"), int(CornerKind::None)}, {tr("chamfer"), int(CornerKind::Chamfer)},
+                              {tr("rounding"), int(CornerKind::Rounding)}},
+                             [rowIndex](TurnedProfile& p, int v) {
+                                 if (rowIndex < p.rows.size()) p.rows[rowIndex].corner = static_cast<CornerKind>(v);
+                             },
+                             tr("Corner of row %1").arg(i + 1));
         corner->setCurrentIndex(corner->findData(int(row.corner)));
         set(rows_, i, SizeCol, row.corner == CornerKind::None && row.cornerSize == 0 ? QString() : shown(row.cornerSize));
         set(rows_, i, RaCol, shown(row.attributes.roughness));
@@ -316,20 +318,15 @@ void ProfileEditor::fill(bool force)
         set(allowances_, k, AEdgeCol, QString::fromStdString(a.edge));
         set(allowances_, k, AAllowCol, shown(a.allowance));
         set(allowances_, k, AAdjustCol, shown(a.adjustment));
-        auto* groove = qobject_cast<QComboBox*>(allowances_->cellWidget(k, AGrooveCol));
-        if (!groove) {
-            groove = new QComboBox(allowances_);
-            groove->setObjectName(QStringLiteral("%1.allowances.%2.groove").arg(prefix_).arg(k + 1));
-            for (const GrooveKind g : {GrooveKind::Auto, GrooveKind::None, GrooveKind::Lateral, GrooveKind::Longitudinal, GrooveKind::Ring})
-                groove->addItem(QString::fromUtf8(toKey(g)), int(g));
-            allowances_->setCellWidget(k, AGrooveCol, groove);
-            connect(groove, &QComboBox::activated, this, [this, groove, k](int index) {
-                TurnedProfile after = profile_;
-                if (k >= static_cast<int>(after.allowances.size())) return;
-                after.allowances[static_cast<std::size_t>(k)].groove = static_cast<GrooveKind>(groove->itemData(index).toInt());
-                commit(after, tr("Groove kind of allowance %1").arg(k + 1), {});
-            });
-        }
+        std::vector<std::pair<QString, int>> kinds;
+        for (const GrooveKind g : {GrooveKind::Auto, GrooveKind::None, GrooveKind::Lateral, GrooveKind::Longitudinal, GrooveKind::Ring})
+            kinds.emplace_back(QString::fromUtf8(toKey(g)), int(g));
+        const auto at = static_cast<std::size_t>(k);
+        auto* groove = combo(allowances_, k, AGrooveCol, "allowances.groove", kinds,
+                             [at](TurnedProfile& p, int v) {
+                                 if (at < p.allowances.size()) p.allowances[at].groove = static_cast<GrooveKind>(v);
+                             },
+                             tr("Groove kind of allowance %1").arg(k + 1));
         groove->setCurrentIndex(groove->findData(int(a.groove)));
         set(allowances_, k, AWidthCol, shown(a.grooveWidth));
         set(allowances_, k, ADepthCol, shown(a.grooveDepth));
