@@ -250,6 +250,10 @@ private slots:
                                                 << "bad.taiwa: job stock.diameter: a bar of Ø80 mm does not pass the spindle of machine lathe";
         QTest::newRow("bar on a mill") << "/machine" << "\"vmc\"" << "bad.taiwa: job stock.shape: a bar is stock for a lathe";
         QTest::newRow("unknown machine") << "/machine" << "\"vtl\"" << "bad.taiwa: job machine: unknown machine 'vtl'";
+        QString many = "[";
+        for (int i = 1; i <= 1001; ++i) many += QString("%1{\"id\": %2, \"x\": %3, \"z\": %4}").arg(i > 1 ? "," : "").arg(i).arg(10 + i % 2).arg(-i);
+        QTest::newRow("too many rows") << "/units/0/rows" << many + "]"
+                                       << u + "rows: the profile table has 1001 rows; a turned profile has at most 1000";
     }
     void latheRefusalsNameTheField()
     {

@@ -239,6 +239,10 @@ void ProfileEditor::setContext(std::optional<BarStock> bar, const std::vector<To
 
 void ProfileEditor::refreshView()
 {
+    if (profile_.rows.size() > kMaxProfileRows || profile_.allowances.size() > kMaxAllowanceRows) {
+        view_->setProfile({}, std::nullopt, bar_);  // refused by the checks: nothing to draw
+        return;
+    }
     const Resolution r = resolveProfile(profile_);
     std::optional<DeformedProfile> deformed;
     if (r.ok()) {

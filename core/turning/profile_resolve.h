@@ -27,6 +27,11 @@ struct Resolution {
     bool ok() const { return problems.empty(); }
 };
 
+// The most rows a profile and its allowance table may have: the chain check
+// is quadratic in the rows and the union grows with the allowance rows
+// (docs/turning.md); a job beyond them is refused, the station draws nothing.
+constexpr std::size_t kMaxProfileRows = 1000, kMaxAllowanceRows = 200;
+
 std::string rowField(std::size_t row, const char* key);        // "rows[3].radius" for index 2
 std::string allowanceField(std::size_t row, const char* key);  // "allowances[1].edge" for index 0
 

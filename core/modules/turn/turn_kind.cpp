@@ -24,6 +24,8 @@ namespace {
 using namespace turning;
 using ordered = nlohmann::ordered_json;
 
+constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
+
 const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances"};
 const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
                                         "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance"};
@@ -213,6 +215,16 @@ protected:
         auto add = [&](const FieldProblem& p) {
             report.diagnostics.push_back({Severity::Error, unitNo, TurnUnit::kName, p.field, p.message});
         };
+        // Bounded work: the chain check is quadratic in the rows, the union
+        // grows with the allowance rows.
+        if (t.profile.rows.size() > kMaxRows || t.profile.allowances.size() > kMaxAllowances) {
+            const bool rows = t.profile.rows.size() > kMaxRows;
+            add({rows ? "rows" : "allowances",
+                 fmt::format("the {} has {} rows; a turned profile has at most {} (split the part into several units)",
+                             rows ? "profile table" : "grinding-allowance table",
+                             rows ? t.profile.rows.size() : t.profile.allowances.size(), rows ? kMaxRows : kMaxAllowances)});
+            return report;
+        }
         const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
         for (const auto& p : r.problems) add(p);
         if (!r.ok()) return report;
