@@ -7,6 +7,8 @@
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "job/step_job.h"
+#include "machine/machine.h"
+#include "post/post.h"
 #include "io/job_io.h"
 #include "model/technology.h"
 #include "export/export.h"
@@ -60,6 +62,11 @@ Usage:
                                    a lathe job from a STEP solid of revolution:
                                    its outer profile (and bore) as turned-profile
                                    units, a bar that holds it; JOB must not exist
+  taiwa --list-machines | --list-dialects
+                                   the machines (shipped, and the shop's own in
+                                   ~/.config/taiwa/machines/*.json) and the
+                                   dialects this program knows, with where each
+                                   comes from
   taiwa --version | --help
 
 Common options:
@@ -129,6 +136,22 @@ int importStep(const Options& o)
     std::cout << "taiwa: wrote " << o.out << ": " << job->units.size() << " turned profile"
               << (job->units.size() == 1 ? "" : "s") << " on a bar D" << job->bar->diameter << " x " << job->bar->length
               << " mm\n";
+    return kOk;
+}
+
+// One line per machine: id, kind, name and where it was read from; the
+// user's files left out on standard error.
+int listMachines()
+{
+    for (const Machine& m : machineLibrary())
+        std::cout << m.id << '\t' << toKey(m.kind) << '\t' << m.name << '\t' << m.source << '\n';
+    for (const std::string& p : machineLibraryProblems()) std::cerr << "taiwa: " << p << '\n';
+    return kOk;
+}
+
+int listDialects()
+{
+    for (const std::string& d : dialectNames()) std::cout << d << "\tbuilt in\n";
     return kOk;
 }
 
@@ -233,6 +256,8 @@ int run(int argc, char** argv)
         case Command::Export: return exportJob(o, argc, argv);
         case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);
+        case Command::ListMachines: return listMachines();
+        case Command::ListDialects: return listDialects();
         case Command::Station:
 #ifdef TAIWA_WITH_UI
             return ui::runStation(argc, argv, QString::fromStdString(o.job));

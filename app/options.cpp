@@ -42,6 +42,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         const auto first = args[0];
         if (first == "--help" || first == "-h") { o.command = Command::Help; return std::nullopt; }
         if (first == "--version") { o.command = Command::Version; return std::nullopt; }
+        if (first == "--list-machines" || first == "--list-dialects") {
+            if (args.size() > 1) return "'" + std::string(first) + "' takes no arguments";
+            o.command = first == "--list-machines" ? Command::ListMachines : Command::ListDialects;
+            return std::nullopt;
+        }
         if (first == "check") o.command = Command::Check, i = 1;
         else if (first == "export") o.command = Command::Export, i = 1;
         else if (first == "render") o.command = Command::Render, i = 1;

@@ -8,7 +8,7 @@
 
 namespace taiwa::app {
 
-enum class Command { Station, Check, Export, Render, Import, Help, Version };
+enum class Command { Station, Check, Export, Render, Import, ListMachines, ListDialects, Help, Version };
 
 struct Options {
     Command command = Command::Station;

@@ -265,6 +265,50 @@ private slots:
                       prefix, dir.filePath("bad.taiwa"));
     }
 
+    // Machines as data: the shipped ones listed with their source; a shop's
+    // own file in the config folder replaces one or adds one; a broken one
+    // is left out naming file, line and key, the shipped ones keep working.
+    void machinesAreDataTheShopCanEdit()
+    {
+        QTemporaryDir config;
+        const QStringList env{"XDG_CONFIG_HOME=" + config.path()};
+        auto r = runTaiwa({"--list-machines"}, env);
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString("vmc\tmill\tVertical machining centre\tbuilt in: machines/vmc.json\n"
+                                "lathe\tlathe\tTwo-axis CNC lathe, one turret\tbuilt in: machines/lathe.json\n"));
+        const QString folder = config.filePath("taiwa/machines");
+        QVERIFY(QDir().mkpath(folder));
+        json big = json::parse(readFile(sourcePath("resources/machines/lathe.json")));
+        big["id"] = "lathe";
+        big["name"] = "Big-bore lathe";
+        big["chuck"]["maxBarDiameter"] = 100;
+        writeFile(folder + "/lathe.json", big.dump(2));
+        json broken = json::parse(readFile(sourcePath("resources/machines/vmc.json")));
+        broken["id"] = "hmc";
+        broken["maxSpindleSpeed"] = -5;
+        writeFile(folder + "/hmc.json", broken.dump(2));
+        writeFile(folder + "/notes.json", "{ \"format\": \"taiwa-machine\",\n  \"version\": 1,\n  oops }\n");
+        r = runTaiwa({"--list-machines"}, env);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("lathe\tlathe\tBig-bore lathe\t" + folder + "/lathe.json\n"), qPrintable(r.out));
+        QVERIFY(r.out.startsWith("vmc\tmill\tVertical machining centre\tbuilt in"));
+        QVERIFY(!r.out.contains("hmc"));
+        const QStringList err = r.err.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(err.size(), 2);
+        QVERIFY2(err[0].startsWith("taiwa: " + folder + "/hmc.json:") && err[0].contains(": maxSpindleSpeed: must be a number above zero (left out; the shipped machines stay)"),
+                 qPrintable(err[0]));
+        QCOMPARE(err[1], "taiwa: " + folder + "/notes.json:3: not valid JSON (left out; the shipped machines stay)");
+        // The shop's lathe takes a Ø80 bar the shipped one refuses.
+        json job = json::parse(readFile(sourcePath("resources/samples/lathe-shaft-grinding.taiwa")));
+        job["stock"]["diameter"] = 80;
+        QTemporaryDir dir;
+        writeFile(dir.filePath("big.taiwa"), job.dump(2));
+        QCOMPARE(runTaiwa({"check", dir.filePath("big.taiwa"), "--tools", dir.filePath("t.sqlite")}, env).exitCode, 0);
+        QCOMPARE(runTaiwa({"check", dir.filePath("big.taiwa"), "--tools", dir.filePath("t.sqlite")}, {"XDG_CONFIG_HOME=" + dir.path()}).exitCode, 2);
+        r = runTaiwa({"--list-dialects"});
+        QCOMPARE(r.out, QString("fanuc\tbuilt in\nlinuxcnc\tbuilt in\n"));
+    }
+
     void millingModuleOnALatheIsRefused()
     {
         json job = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));

@@ -5,6 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace taiwa {
@@ -15,13 +20,25 @@ namespace {
 
 using json = nlohmann::json;
 
+// The line (from 1) of the first `"key"` of a dotted path's last part in
+// the text, for messages; 0 when it is not there (a missing key).
+int lineOf(const std::string& text, const std::string& path)
+{
+    const std::string key = "\"" + path.substr(path.rfind('.') + 1) + "\"";
+    const auto at = text.find(key);
+    if (at == std::string::npos) return 0;
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
 class Reader {
 public:
-    Reader(const json& j, std::string source) : j_(j), source_(std::move(source)) {}
+    Reader(const json& j, std::string source, const std::string& text) : j_(j), source_(std::move(source)), text_(text) {}
 
+    // "FILE:LINE: key: what" (no line for a key that is missing).
     [[noreturn]] void fail(const std::string& key, const std::string& what) const
     {
-        throw std::runtime_error(source_ + ": " + key + ": " + what);
+        const int line = lineOf(text_, key);
+        throw std::runtime_error(source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key + ": " + what);
     }
     const json& at(const json& o, const std::string& key, const std::string& path) const
     {
@@ -92,36 +109,90 @@ public:
 private:
     const json& j_;
     std::string source_;
+    const std::string& text_;
 };
 
 }  // namespace
 
 Result<Machine> readMachine(const std::string& text, const std::string& source)
 {
-    const json j = json::parse(text, nullptr, false);
-    if (j.is_discarded()) return Failure{source + ": not valid JSON"};
+    json j;
     try {
-        return Reader(j, source).read();
+        j = json::parse(text);
+    } catch (const json::parse_error& e) {
+        const auto upTo = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upTo), '\n'));
+        return Failure{source + ":" + std::to_string(line) + ": not valid JSON"};
+    }
+    try {
+        return Reader(j, source, text).read();
     } catch (const std::runtime_error& e) {
         return Failure{e.what()};
     }
 }
 
-const std::vector<Machine>& machineLibrary()
+std::string userMachineFolder()
 {
-    static const std::vector<Machine> machines = [] {
-        std::vector<Machine> ms;
+    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::string(xdg) + "/taiwa/machines";
+    const char* home = std::getenv("HOME");
+    return std::string(home && *home ? home : ".") + "/.config/taiwa/machines";
+}
+
+namespace {
+
+struct Library {
+    std::vector<Machine> machines;
+    std::vector<std::string> problems;
+};
+
+// The shipped definitions, then the user's: a user file of a known id
+// replaces the shipped one, a new id adds a machine; a broken file is left
+// out with its problem, the shipped ones stay.
+const Library& library()
+{
+    static const Library lib = [] {
+        Library l;
         const std::pair<const char*, const char*> builtIn[] = {{builtin::kMachineVmcJson, "built in: machines/vmc.json"},
                                                                {builtin::kMachineLatheJson, "built in: machines/lathe.json"}};
         for (const auto& [text, source] : builtIn) {
             auto m = readMachine(text, source);
             if (!m) throw std::logic_error("a shipped machine definition is broken: " + m.error());
-            ms.push_back(std::move(*m));
+            l.machines.push_back(std::move(*m));
         }
-        return ms;
+        std::error_code ec;
+        std::vector<std::filesystem::path> files;
+        for (const auto& e : std::filesystem::directory_iterator(userMachineFolder(), ec))
+            if (e.path().extension() == ".json") files.push_back(e.path());
+        std::sort(files.begin(), files.end());
+        for (const auto& f : files) {
+            std::ifstream in(f, std::ios::binary);
+            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            if (!in.good() && !in.eof()) {
+                l.problems.push_back(f.string() + ": cannot read it");
+                continue;
+            }
+            if (text.size() > 1 << 20) {
+                l.problems.push_back(f.string() + ": larger than 1 MB, not a machine definition");
+                continue;
+            }
+            auto m = readMachine(text, f.string());
+            if (!m) {
+                l.problems.push_back(m.error() + " (left out; the shipped machines stay)");
+                continue;
+            }
+            const auto same = std::find_if(l.machines.begin(), l.machines.end(), [&](const Machine& x) { return x.id == m->id; });
+            if (same != l.machines.end()) *same = std::move(*m);
+            else l.machines.push_back(std::move(*m));
+        }
+        return l;
     }();
-    return machines;
+    return lib;
 }
+
+}  // namespace
+
+const std::vector<Machine>& machineLibrary() { return library().machines; }
+const std::vector<std::string>& machineLibraryProblems() { return library().problems; }
 
 const Machine* findMachine(const std::string& id)
 {

@@ -1,8 +1,9 @@
 // The machines a job can name, as data (resources/machines/*.json, compiled
-// in): what kind each is (a milling machine or a lathe), its travel, spindle
-// and feed limits, rapid rates, tool changer or turret, and for a lathe that
-// X is programmed as a diameter and the chuck's envelope. A definition is
-// validated when read; every problem names the file and the key.
+// in, overridable by the shop's own files in the user's config folder): what
+// kind each is (a milling machine or a lathe), its travel, spindle and feed
+// limits, rapid rates, tool changer or turret, and for a lathe that X is
+// programmed as a diameter and the chuck's envelope. A definition is
+// validated when read; every problem names the file, the line and the key.
 #pragma once
 
 #include "model/result.h"
@@ -42,8 +43,14 @@ struct Machine {
 // Reads one machine definition; `source` names it in every message.
 Result<Machine> readMachine(const std::string& text, const std::string& source);
 
-// The machines this program knows, by id.
+// The machines this program knows: the shipped definitions, each replaced
+// or joined by the user's (*.json in userMachineFolder(), read once).
 const std::vector<Machine>& machineLibrary();
+// The user's definitions that were left out, one sentence each naming the
+// file, the line and the key.
+const std::vector<std::string>& machineLibraryProblems();
+// $XDG_CONFIG_HOME/taiwa/machines, else ~/.config/taiwa/machines.
+std::string userMachineFolder();
 const Machine* findMachine(const std::string& id);
 std::vector<std::string> machineIds();
 
