@@ -22,6 +22,7 @@
 #include <QMenuBar>
 #include <QPainter>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -145,6 +146,26 @@ private slots:
         QCOMPARE(menus.first(), QString("ファイル(&F)"));
         settle(w);
         save(w, "station-plate-ja.png");
+    }
+
+    // Simplified Chinese, on a lathe job (the turned-profile editor).
+    void chinese()
+    {
+        qputenv("TAIWA_LANG", "zh");
+        QVERIFY(installTranslator(*QCoreApplication::instance()));
+        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        w.resize(1600, 940);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QStringList menus;
+        for (QAction* a : w.menuBar()->actions()) menus << a->text();
+        QCOMPARE(menus.first(), QString("文件(&F)"));
+        w.unitList()->selectUnit(0);
+        auto* add = w.findChild<QPushButton*>("turn.addRow");
+        QVERIFY(add);
+        QCOMPARE(add->text(), QString("添加行"));
+        settle(w);
+        save(w, "station-lathe-zh.png");
     }
 };
 

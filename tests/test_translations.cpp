@@ -1,5 +1,5 @@
-// The Japanese texts are complete: resources/i18n/update-ts.py run on a copy
-// of resources/i18n/taiwa_ja.ts (lupdate over ui/ and core/modules/) finds no
+// The Japanese and Simplified Chinese texts are complete: resources/i18n/update-ts.py run on a copy
+// of each catalogue (lupdate over ui/ and core/modules/) finds no
 // text of the sources without its translation and changes nothing, so a new
 // tr() or module label left untranslated, or a catalogue not brought up to
 // date, fails here.
@@ -20,6 +20,7 @@ private slots:
     {
         QTest::addColumn<QString>("catalogue");
         QTest::newRow("ja") << "resources/i18n/taiwa_ja.ts";
+        QTest::newRow("zh") << "resources/i18n/taiwa_zh.ts";
     }
     void everyTextIsTranslated()
     {

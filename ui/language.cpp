@@ -1,4 +1,4 @@
-// Language choice and the Japanese translator.
+// Language choice and the translators (Japanese, Simplified Chinese).
 #include "ui/language.h"
 
 #include <QCoreApplication>
@@ -9,7 +9,9 @@ namespace taiwa::ui {
 
 std::vector<std::pair<QString, QString>> availableLanguages()
 {
-    return {{QStringLiteral("en"), QStringLiteral("English")}, {QStringLiteral("ja"), QStringLiteral("日本語")}};
+    return {{QStringLiteral("en"), QStringLiteral("English")},
+            {QStringLiteral("ja"), QStringLiteral("日本語")},
+            {QStringLiteral("zh"), QStringLiteral("中文(简体)")}};
 }
 
 QString savedLanguage()

@@ -1,0 +1,1094 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!-- Texts of the station window (lupdate from ui/ and core/modules/ by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+    <context>
+        <name>taiwa::ui::FileActions</name>
+        <message>
+            <source>Unsaved changes</source>
+            <translation>未保存的更改</translation>
+        </message>
+        <message>
+            <source>The job has unsaved changes. Save them?</source>
+            <translation>作业有未保存的更改。要保存吗?</translation>
+        </message>
+        <message>
+            <source>New job</source>
+            <translation>新建作业</translation>
+        </message>
+        <message>
+            <source>Open job</source>
+            <translation>打开作业</translation>
+        </message>
+        <message>
+            <source>Import a turned part (STEP)</source>
+            <translation>导入车削零件 (STEP)</translation>
+        </message>
+        <message>
+            <source>STEP models (*.step *.stp *.STEP *.STP)</source>
+            <translation>STEP 模型 (*.step *.stp *.STEP *.STP)</translation>
+        </message>
+        <message>
+            <source>Cannot import</source>
+            <translation>无法导入</translation>
+        </message>
+        <message numerus="yes">
+            <source>Imported %1: %n turned profile(s)</source>
+            <translation>
+                <numerusform>已导入 %1:%n 个车削轮廓</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Cannot open job</source>
+            <translation>无法打开作业</translation>
+        </message>
+        <message>
+            <source>Opened %1</source>
+            <translation>已打开 %1</translation>
+        </message>
+        <message>
+            <source>Save job</source>
+            <translation>保存作业</translation>
+        </message>
+        <message>
+            <source>%1 was changed on disk since this window opened or saved it (by another window or program).</source>
+            <translation>自本窗口打开或保存 %1 以来,它已在磁盘上被(其他窗口或程序)修改。</translation>
+        </message>
+        <message>
+            <source> Not saved: use Save As.</source>
+            <translation> 未保存:请使用“另存为”。</translation>
+        </message>
+        <message>
+            <source> Overwrite it with this window's job?</source>
+            <translation> 用本窗口的作业覆盖它吗?</translation>
+        </message>
+        <message>
+            <source>Cannot save job</source>
+            <translation>无法保存作业</translation>
+        </message>
+        <message>
+            <source>Saved %1</source>
+            <translation>已保存 %1</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>导出</translation>
+        </message>
+        <message>
+            <source>The job has input errors; fix them before exporting.</source>
+            <translation>作业有输入错误,请在导出前修正。</translation>
+        </message>
+        <message>
+            <source>Export into folder</source>
+            <translation>导出到文件夹</translation>
+        </message>
+        <message>
+            <source>Controller dialect</source>
+            <translation>控制系统方言</translation>
+        </message>
+        <message>
+            <source>Export failed</source>
+            <translation>导出失败</translation>
+        </message>
+        <message>
+            <source>Exported %1 files into %2</source>
+            <translation>已将 %1 个文件导出到 %2</translation>
+        </message>
+        <message>
+            <source>an untitled job</source>
+            <translation>未命名作业</translation>
+        </message>
+        <message>
+            <source>Recover job</source>
+            <translation>恢复作业</translation>
+        </message>
+        <message>
+            <source>Taiwa was not closed properly while editing %1. Its autosaved copy is newer than the file. Restore the autosaved copy?</source>
+            <translation>编辑 %1 时 Taiwa 未正常关闭。自动保存的副本比文件更新。要恢复自动保存的副本吗?</translation>
+        </message>
+        <message>
+            <source>Restored the autosaved job (not saved to a file yet)</source>
+            <translation>已恢复自动保存的作业(尚未保存到文件)</translation>
+        </message>
+        <message>
+            <source>(none)</source>
+            <translation>(无)</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::JobProperties</name>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>inch (converts every length)</source>
+            <translation>英寸(换算所有长度)</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Material</source>
+            <translation>材料</translation>
+        </message>
+        <message>
+            <source>Units</source>
+            <translation>单位</translation>
+        </message>
+        <message>
+            <source>Machine</source>
+            <translation>机床</translation>
+        </message>
+        <message>
+            <source>Machine %1</source>
+            <translation>机床 %1</translation>
+        </message>
+        <message>
+            <source>Edit job name</source>
+            <translation>编辑作业名称</translation>
+        </message>
+        <message>
+            <source>Change material</source>
+            <translation>更改材料</translation>
+        </message>
+        <message>
+            <source>Change length unit</source>
+            <translation>更改长度单位</translation>
+        </message>
+        <message>
+            <source>not a number</source>
+            <translation>不是数字</translation>
+        </message>
+        <message>
+            <source>Edit %1</source>
+            <translation>编辑 %1</translation>
+        </message>
+        <message>
+            <source> (unknown)</source>
+            <translation>(未知)</translation>
+        </message>
+        <message>
+            <source>Stock width (X)</source>
+            <translation>毛坯宽度 (X)</translation>
+        </message>
+        <message>
+            <source>Stock length (Y)</source>
+            <translation>毛坯长度 (Y)</translation>
+        </message>
+        <message>
+            <source>Stock height (Z)</source>
+            <translation>毛坯高度 (Z)</translation>
+        </message>
+        <message>
+            <source>Bar diameter</source>
+            <translation>棒料直径</translation>
+        </message>
+        <message>
+            <source>Bar length</source>
+            <translation>棒料长度</translation>
+        </message>
+        <message>
+            <source>Face stock</source>
+            <translation>端面余量</translation>
+        </message>
+        <message>
+            <source>Bore (0: solid)</source>
+            <translation>内孔直径 (0:实心)</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::NcView</name>
+        <message>
+            <source>&amp;NC program, dialect:</source>
+            <translation>NC 程序(&amp;N),方言:</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n block(s)</source>
+            <translation>
+                <numerusform>%n 个程序段</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::PlanRunner</name>
+        <message>
+            <source>(no program: the job has input errors)</source>
+            <translation>(无程序:作业有输入错误)</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ProfileEditor</name>
+        <message>
+            <source>Edge</source>
+            <translation>边</translation>
+        </message>
+        <message>
+            <source>Element</source>
+            <translation>元素</translation>
+        </message>
+        <message>
+            <source>X (dia.)</source>
+            <translation>X (直径)</translation>
+        </message>
+        <message>
+            <source>Z</source>
+            <translation>Z</translation>
+        </message>
+        <message>
+            <source>R</source>
+            <translation>R</translation>
+        </message>
+        <message>
+            <source>Centre X</source>
+            <translation>圆心 X</translation>
+        </message>
+        <message>
+            <source>Centre Z</source>
+            <translation>圆心 Z</translation>
+        </message>
+        <message>
+            <source>Corner</source>
+            <translation>拐角</translation>
+        </message>
+        <message>
+            <source>Size</source>
+            <translation>尺寸</translation>
+        </message>
+        <message>
+            <source>Ra µm</source>
+            <translation>Ra µm</translation>
+        </message>
+        <message>
+            <source>Tolerance</source>
+            <translation>公差</translation>
+        </message>
+        <message>
+            <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
+            <translation>轮廓,按切削顺序(X 为直径;圆弧:R 或圆心)</translation>
+        </message>
+        <message>
+            <source>Add row</source>
+            <translation>添加行</translation>
+        </message>
+        <message>
+            <source>Insert row</source>
+            <translation>插入行</translation>
+        </message>
+        <message>
+            <source>Delete row</source>
+            <translation>删除行</translation>
+        </message>
+        <message>
+            <source>Revise chamfers</source>
+            <translation>修改倒角</translation>
+        </message>
+        <message>
+            <source>Revise roundings</source>
+            <translation>修改圆角</translation>
+        </message>
+        <message>
+            <source>Done</source>
+            <translation>完成</translation>
+        </message>
+        <message>
+            <source>Allowance</source>
+            <translation>磨削余量</translation>
+        </message>
+        <message>
+            <source>Adjustment</source>
+            <translation>调整量</translation>
+        </message>
+        <message>
+            <source>Relief groove</source>
+            <translation>退刀槽</translation>
+        </message>
+        <message>
+            <source>Width</source>
+            <translation>宽度</translation>
+        </message>
+        <message>
+            <source>Depth</source>
+            <translation>深度</translation>
+        </message>
+        <message>
+            <source>Grinding allowance per edge (empty: adjustment from the finishing tool's nose radius, depth = allowance, no width = no groove)</source>
+            <translation>各边的磨削余量(空:调整量取精加工刀具的刀尖圆弧半径,深度 = 余量,无宽度 = 无槽)</translation>
+        </message>
+        <message>
+            <source>Add allowance for picked edge</source>
+            <translation>为所选边添加余量</translation>
+        </message>
+        <message>
+            <source>Delete allowance</source>
+            <translation>删除余量</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直线</translation>
+        </message>
+        <message>
+            <source>arc CW (G2)</source>
+            <translation>顺时针圆弧 (G2)</translation>
+        </message>
+        <message>
+            <source>arc CCW (G3)</source>
+            <translation>逆时针圆弧 (G3)</translation>
+        </message>
+        <message>
+            <source>Element of row %1</source>
+            <translation>第 %1 行的元素</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>无</translation>
+        </message>
+        <message>
+            <source>chamfer</source>
+            <translation>倒角</translation>
+        </message>
+        <message>
+            <source>rounding</source>
+            <translation>圆角</translation>
+        </message>
+        <message>
+            <source>Corner of row %1</source>
+            <translation>第 %1 行的拐角</translation>
+        </message>
+        <message>
+            <source>Groove kind of allowance %1</source>
+            <translation>余量 %1 的槽类型</translation>
+        </message>
+        <message>
+            <source>not a number</source>
+            <translation>不是数字</translation>
+        </message>
+        <message>
+            <source>row %1: not a number</source>
+            <translation>第 %1 行:不是数字</translation>
+        </message>
+        <message>
+            <source>%1 of row %2</source>
+            <translation>第 %2 行的 %1</translation>
+        </message>
+        <message>
+            <source>allowance %1: not a number</source>
+            <translation>余量 %1:不是数字</translation>
+        </message>
+        <message>
+            <source>%1 of allowance %2</source>
+            <translation>余量 %2 的 %1</translation>
+        </message>
+        <message>
+            <source>Add row %1</source>
+            <translation>添加第 %1 行</translation>
+        </message>
+        <message>
+            <source>Delete row %1</source>
+            <translation>删除第 %1 行</translation>
+        </message>
+        <message>
+            <source>Pick an edge in the view first.</source>
+            <translation>请先在图中选择一条边。</translation>
+        </message>
+        <message>
+            <source>%1 has an allowance already.</source>
+            <translation>%1 已有余量。</translation>
+        </message>
+        <message>
+            <source>Add grinding allowance for %1</source>
+            <translation>为 %1 添加磨削余量</translation>
+        </message>
+        <message>
+            <source>Delete allowance %1</source>
+            <translation>删除余量 %1</translation>
+        </message>
+        <message>
+            <source>chamfers</source>
+            <translation>倒角</translation>
+        </message>
+        <message>
+            <source>roundings</source>
+            <translation>圆角</translation>
+        </message>
+        <message>
+            <source>The profile has no %1.</source>
+            <translation>轮廓中没有%1。</translation>
+        </message>
+        <message>
+            <source>%1 %2: pick one in the view</source>
+            <translation>%1 个%2:请在图中选择一个</translation>
+        </message>
+        <message>
+            <source>Chamfer %1: leg</source>
+            <translation>倒角 %1:边长</translation>
+        </message>
+        <message>
+            <source>Rounding %1: radius</source>
+            <translation>圆角 %1:半径</translation>
+        </message>
+        <message>
+            <source>Revise %1</source>
+            <translation>修改 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ProfileView</name>
+        <message>
+            <source>Z →   X (diameter) ↑</source>
+            <translation>Z →   X (直径) ↑</translation>
+        </message>
+        <message>
+            <source>- - - to cut (grinding allowance)</source>
+            <translation>- - - 待切削(含磨削余量)</translation>
+        </message>
+    </context>
+    <context>
+        <name>QObject</name>
+        <message>
+            <source>(no program: the job has input errors)</source>
+            <translation>(无程序:作业有输入错误)</translation>
+        </message>
+        <message>
+            <source>(no program: %1)</source>
+            <translation>(无程序:%1)</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::StationWindow</name>
+        <message>
+            <source>Tool library: %1 (using the built-in library)</source>
+            <translation>刀具库:%1(使用内置刀具库)</translation>
+        </message>
+        <message>
+            <source>Modules</source>
+            <translation>模块</translation>
+        </message>
+        <message>
+            <source>Machining units, in order</source>
+            <translation>加工单元(按顺序)</translation>
+        </message>
+        <message>
+            <source>Job</source>
+            <translation>作业</translation>
+        </message>
+        <message>
+            <source>Technology data…</source>
+            <translation>工艺数据…</translation>
+        </message>
+        <message>
+            <source>Tool library…</source>
+            <translation>刀具库…</translation>
+        </message>
+        <message>
+            <source>Pick a module on the left to add a machining unit.</source>
+            <translation>在左侧选择一个模块以添加加工单元。</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>单元</translation>
+        </message>
+        <message>
+            <source>No 3-D preview: this display has no OpenGL.</source>
+            <translation>无 3D 预览:此显示器不支持 OpenGL。</translation>
+        </message>
+        <message>
+            <source>&amp;File</source>
+            <translation>文件(&amp;F)</translation>
+        </message>
+        <message>
+            <source>&amp;New</source>
+            <translation>新建(&amp;N)</translation>
+        </message>
+        <message>
+            <source>&amp;Open…</source>
+            <translation>打开(&amp;O)…</translation>
+        </message>
+        <message>
+            <source>Open &amp;recent</source>
+            <translation>最近打开(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Import turned part (STEP)…</source>
+            <translation>导入车削零件 (STEP)(&amp;I)…</translation>
+        </message>
+        <message>
+            <source>&amp;Save</source>
+            <translation>保存(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Save &amp;as…</source>
+            <translation>另存为(&amp;A)…</translation>
+        </message>
+        <message>
+            <source>&amp;Export tape and sheet…</source>
+            <translation>导出程序和作业指导书(&amp;E)…</translation>
+        </message>
+        <message>
+            <source>Ctrl+E</source>
+            <translation>Ctrl+E</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>退出(&amp;Q)</translation>
+        </message>
+        <message>
+            <source>&amp;Edit</source>
+            <translation>编辑(&amp;E)</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>撤销(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation>重做(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Ctrl+Shift+Z</source>
+            <translation>Ctrl+Shift+Z</translation>
+        </message>
+        <message>
+            <source>Ctrl+Y</source>
+            <translation>Ctrl+Y</translation>
+        </message>
+        <message>
+            <source>&amp;Job</source>
+            <translation>作业(&amp;J)</translation>
+        </message>
+        <message>
+            <source>&amp;Technology data…</source>
+            <translation>工艺数据(&amp;T)…</translation>
+        </message>
+        <message>
+            <source>Ctrl+T</source>
+            <translation>Ctrl+T</translation>
+        </message>
+        <message>
+            <source>Tool &amp;library…</source>
+            <translation>刀具库(&amp;L)…</translation>
+        </message>
+        <message>
+            <source>Ctrl+L</source>
+            <translation>Ctrl+L</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>视图(&amp;V)</translation>
+        </message>
+        <message>
+            <source>&amp;Language</source>
+            <translation>语言(&amp;L)</translation>
+        </message>
+        <message>
+            <source>The language changes when Taiwa is started again.</source>
+            <translation>语言将在 Taiwa 下次启动时切换。</translation>
+        </message>
+        <message>
+            <source>Stock &amp;grid</source>
+            <translation>毛坯网格(&amp;G)</translation>
+        </message>
+        <message>
+            <source>Fine: %1 mm, up to %2 cells</source>
+            <translation>细:%1 mm,最多 %2 个单元格</translation>
+        </message>
+        <message>
+            <source>Standard: %1 mm, up to %2 cells</source>
+            <translation>标准:%1 mm,最多 %2 个单元格</translation>
+        </message>
+        <message>
+            <source>Coarse: %1 mm, up to %2 cells</source>
+            <translation>粗:%1 mm,最多 %2 个单元格</translation>
+        </message>
+        <message>
+            <source>Stock grid: %1 mm cells on this stock</source>
+            <translation>毛坯网格:此毛坯上为 %1 mm 单元格</translation>
+        </message>
+        <message>
+            <source>%1 of unit %2</source>
+            <translation>单元 %2 的 %1</translation>
+        </message>
+        <message>
+            <source>Rename unit %1</source>
+            <translation>重命名单元 %1</translation>
+        </message>
+        <message>
+            <source>A lathe job has no NC program yet: turning steps and lathe NC come with the turning process. The sheet and steps.json of an export hold the profile to cut.</source>
+            <translation>车床作业尚无 NC 程序:车削工步和车床 NC 将随车削工艺提供。导出的作业指导书和 steps.json 中包含待切削的轮廓。</translation>
+        </message>
+        <message>
+            <source>Dialect %1</source>
+            <translation>方言 %1</translation>
+        </message>
+        <message>
+            <source>Edit %1 of unit %2</source>
+            <translation>编辑单元 %2 的 %1</translation>
+        </message>
+        <message>
+            <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
+            <translation>不是最新:作业有输入错误。3D 视图和 NC 程序显示的是最后一个有效作业。第一个错误:%1</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n problem(s) in other units</source>
+            <translation>
+                <numerusform>其他单元中有 %n 个问题</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Edit technology data</source>
+            <translation>编辑工艺数据</translation>
+        </message>
+        <message>
+            <source>untitled</source>
+            <translation>未命名</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 is also open in %n other window(s): a save here asks before it overwrites what another window saved.</source>
+            <translation>
+                <numerusform>%1 也在其他 %n 个窗口中打开:在此保存时,覆盖其他窗口保存的内容前会先询问。</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::StepPanel</name>
+        <message>
+            <source>&amp;Stock</source>
+            <translation>毛坯(&amp;S)</translation>
+        </message>
+        <message>
+            <source>&amp;Before step</source>
+            <translation>工步之前(&amp;B)</translation>
+        </message>
+        <message>
+            <source>▶ Pla&amp;y</source>
+            <translation>▶ 播放(&amp;Y)</translation>
+        </message>
+        <message>
+            <source>The stock as the simulation cuts it, instead of a glass block</source>
+            <translation>显示仿真切削后的毛坯,而不是玻璃块</translation>
+        </message>
+        <message>
+            <source>The stock as it is before the selected step, instead of after it</source>
+            <translation>显示所选工步之前而不是之后的毛坯</translation>
+        </message>
+        <message>
+            <source>&amp;All steps</source>
+            <translation>全部工步(&amp;A)</translation>
+        </message>
+        <message>
+            <source>&amp;Iso</source>
+            <translation>轴测(&amp;I)</translation>
+        </message>
+        <message>
+            <source>&amp;Top</source>
+            <translation>俯视(&amp;T)</translation>
+        </message>
+        <message>
+            <source>F&amp;ront</source>
+            <translation>正视(&amp;R)</translation>
+        </message>
+        <message>
+            <source>■ Stop (&amp;Y)</source>
+            <translation>■ 停止(&amp;Y)</translation>
+        </message>
+        <message>
+            <source>No steps: the job has input errors.</source>
+            <translation>无工步:作业有输入错误。</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n step(s), %1 min, %2 tool change(s) (updating…)</source>
+            <translation>
+                <numerusform>%n 个工步,%1 分钟,换刀 %2 次(更新中…)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n step(s), %1 min, %2 tool change(s)</source>
+            <translation>
+                <numerusform>%n 个工步,%1 分钟,换刀 %2 次</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;%1&lt;/b&gt; of unit %2 (%3), machining type %4</source>
+            <translation>单元 %2 (%3) 的 &lt;b&gt;%1&lt;/b&gt;,加工类型 %4</translation>
+        </message>
+        <message>
+            <source>Air to %1, cuts to %2; leaves wall %3, floor %4</source>
+            <translation>空走至 %1,切削至 %2;侧壁余量 %3,底面余量 %4</translation>
+        </message>
+        <message>
+            <source>Outline %1, r %2</source>
+            <translation>轮廓 %1,r %2</translation>
+        </message>
+        <message>
+            <source>Inclined face at %1° from the vertical, scallop %2</source>
+            <translation>斜面与竖直方向成 %1°,残留高度 %2</translation>
+        </message>
+        <message>
+            <source>At (%1, %2), Ø %3</source>
+            <translation>位置 (%1, %2),Ø %3</translation>
+        </message>
+        <message>
+            <source>Wall taper %1° per side</source>
+            <translation>侧壁单边斜度 %1°</translation>
+        </message>
+        <message>
+            <source>T%1 %2: %3</source>
+            <translation>T%1 %2:%3</translation>
+        </message>
+        <message>
+            <source>Estimated %1 min</source>
+            <translation>预计 %1 分钟</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::StepTable</name>
+        <message>
+            <source>No.</source>
+            <translation>序号</translation>
+        </message>
+        <message>
+            <source>Unit</source>
+            <translation>单元</translation>
+        </message>
+        <message>
+            <source>Step</source>
+            <translation>工步</translation>
+        </message>
+        <message>
+            <source>Tool</source>
+            <translation>刀具</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>起始深度</translation>
+        </message>
+        <message>
+            <source>Depth</source>
+            <translation>深度</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>时间</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TechnologyDialog</name>
+        <message>
+            <source>Technology data</source>
+            <translation>工艺数据</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;Value&lt;/b&gt;</source>
+            <translation>&lt;b&gt;项目&lt;/b&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;Table (%1)&lt;/b&gt;</source>
+            <translation>&lt;b&gt;数据表 (%1)&lt;/b&gt;</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;This job&lt;/b&gt; (empty = table)</source>
+            <translation>&lt;b&gt;本作业&lt;/b&gt;(空 = 数据表)</translation>
+        </message>
+        <message>
+            <source>&lt;b&gt;In force&lt;/b&gt;</source>
+            <translation>&lt;b&gt;生效值&lt;/b&gt;</translation>
+        </message>
+        <message>
+            <source>(unknown material)</source>
+            <translation>(未知材料)</translation>
+        </message>
+        <message>
+            <source>not a number</source>
+            <translation>不是数字</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ToolLibraryDialog</name>
+        <message>
+            <source>&amp;Reset wear of the selected tool</source>
+            <translation>重置所选刀具的磨损(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Tool library</source>
+            <translation>刀具库</translation>
+        </message>
+        <message>
+            <source>T</source>
+            <translation>T</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>类型</translation>
+        </message>
+        <message>
+            <source>Ø mm</source>
+            <translation>Ø mm</translation>
+        </message>
+        <message>
+            <source>Corner r</source>
+            <translation>刀尖 r</translation>
+        </message>
+        <message>
+            <source>Taper °</source>
+            <translation>锥度 °</translation>
+        </message>
+        <message>
+            <source>Flute mm</source>
+            <translation>刃长 mm</translation>
+        </message>
+        <message>
+            <source>Holder</source>
+            <translation>刀柄</translation>
+        </message>
+        <message>
+            <source>Life min</source>
+            <translation>寿命 分钟</translation>
+        </message>
+        <message>
+            <source>Used min</source>
+            <translation>已用 分钟</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 — %n tool(s)</source>
+            <translation>
+                <numerusform>%1 — %n 把刀具</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Cannot read the tool library: %1</source>
+            <translation>无法读取刀具库:%1</translation>
+        </message>
+        <message>
+            <source>Select a tool first.</source>
+            <translation>请先选择一把刀具。</translation>
+        </message>
+        <message>
+            <source>Cannot save the tool: %1</source>
+            <translation>无法保存刀具:%1</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::UnitForm</name>
+        <message>
+            <source>optional, e.g. Pocket A</source>
+            <translation>可选,例如 型腔 A</translation>
+        </message>
+        <message>
+            <source>Unit name</source>
+            <translation>单元名称</translation>
+        </message>
+        <message>
+            <source>not a number</source>
+            <translation>不是数字</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::UnitListPanel</name>
+        <message>
+            <source>D&amp;uplicate</source>
+            <translation>复制(&amp;U)</translation>
+        </message>
+        <message>
+            <source>▲ U&amp;p</source>
+            <translation>▲ 上移(&amp;P)</translation>
+        </message>
+        <message>
+            <source>▼ Do&amp;wn</source>
+            <translation>▼ 下移(&amp;W)</translation>
+        </message>
+        <message>
+            <source>De&amp;lete</source>
+            <translation>删除(&amp;L)</translation>
+        </message>
+        <message>
+            <source>Add %1 unit</source>
+            <translation>添加 %1 单元</translation>
+        </message>
+        <message>
+            <source>No unit added: the stock has no free place for it. Make the stock larger or a unit smaller, or move one.</source>
+            <translation>未添加单元:毛坯上没有空位。请加大毛坯、缩小单元或移动其他单元。</translation>
+        </message>
+        <message>
+            <source>Duplicate unit %1</source>
+            <translation>复制单元 %1</translation>
+        </message>
+        <message>
+            <source>Move unit %1</source>
+            <translation>移动单元 %1</translation>
+        </message>
+        <message>
+            <source>Delete unit %1</source>
+            <translation>删除单元 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::FieldSpec</name>
+        <message>
+            <source>Step-over (× D)</source>
+            <translation>行距 (× D)</translation>
+        </message>
+        <message>
+            <source>technology data's</source>
+            <translation>工艺数据的值</translation>
+        </message>
+        <message>
+            <source>L1 (length X)</source>
+            <translation>L1(X 向长度)</translation>
+        </message>
+        <message>
+            <source>L2 (length Y)</source>
+            <translation>L2(Y 向长度)</translation>
+        </message>
+        <message>
+            <source>T (depth)</source>
+            <translation>T(深度)</translation>
+        </message>
+        <message>
+            <source>θ1 (left wall, °)</source>
+            <translation>θ1(左壁,°)</translation>
+        </message>
+        <message>
+            <source>θ2 (right wall, °)</source>
+            <translation>θ2(右壁,°)</translation>
+        </message>
+        <message>
+            <source>empty = same as θ1</source>
+            <translation>空 = 与 θ1 相同</translation>
+        </message>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(拐角半径)</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(刀具使用)</translation>
+        </message>
+        <message>
+            <source>H (pilot hole)</source>
+            <translation>H(预钻孔)</translation>
+        </message>
+        <message>
+            <source>Scallop height</source>
+            <translation>残留高度</translation>
+        </message>
+        <message>
+            <source>S (taper, °/side)</source>
+            <translation>S(斜度,单边 °)</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(侧壁精加工)</translation>
+        </message>
+        <message>
+            <source>Shape</source>
+            <translation>形状</translation>
+        </message>
+        <message>
+            <source>Touched from</source>
+            <translation>接触方向</translation>
+        </message>
+        <message>
+            <source>P1 machine X</source>
+            <translation>P1 机床坐标 X</translation>
+        </message>
+        <message>
+            <source>P1 machine Y</source>
+            <translation>P1 机床坐标 Y</translation>
+        </message>
+        <message>
+            <source>Top face machine Z</source>
+            <translation>顶面 机床坐标 Z</translation>
+        </message>
+        <message>
+            <source>Tolerance</source>
+            <translation>公差</translation>
+        </message>
+        <message>
+            <source>Nominal diameter / width X</source>
+            <translation>公称直径 / X 向宽度</translation>
+        </message>
+        <message>
+            <source>Nominal length Y</source>
+            <translation>公称长度 Y</translation>
+        </message>
+        <message>
+            <source>Touch depth</source>
+            <translation>接触深度</translation>
+        </message>
+        <message>
+            <source>Clearance</source>
+            <translation>安全距离</translation>
+        </message>
+        <message>
+            <source>Search distance</source>
+            <translation>搜索距离</translation>
+        </message>
+        <message>
+            <source>Probing feed (mm/min)</source>
+            <translation>测量进给 (mm/min)</translation>
+        </message>
+        <message>
+            <source>Profile</source>
+            <translation>轮廓</translation>
+        </message>
+        <message>
+            <source>Start X (diameter)</source>
+            <translation>起点 X (直径)</translation>
+        </message>
+        <message>
+            <source>Start Z</source>
+            <translation>起点 Z</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ModulePalette</name>
+        <message>
+            <source>Add M2D 3-D pocket</source>
+            <translation>添加 M2D 三维型腔</translation>
+        </message>
+        <message>
+            <source>Add M4 pocket</source>
+            <translation>添加 M4 型腔</translation>
+        </message>
+        <message>
+            <source>Add work-centre probing</source>
+            <translation>添加工件中心测量</translation>
+        </message>
+        <message>
+            <source>Add turned profile</source>
+            <translation>添加车削轮廓</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TechnologyDialog</name>
+        <message>
+            <source>pilot hole stops this far above the floor</source>
+            <translation>预钻孔在底面以上此距离处停止</translation>
+        </message>
+        <message>
+            <source>wall allowance left by roughing</source>
+            <translation>粗加工留下的侧壁余量</translation>
+        </message>
+        <message>
+            <source>wall allowance of the semi-finish pass (F = 3)</source>
+            <translation>半精加工的侧壁余量 (F = 3)</translation>
+        </message>
+        <message>
+            <source>floor allowance left by roughing</source>
+            <translation>粗加工留下的底面余量</translation>
+        </message>
+        <message>
+            <source>roughing layer depth / tool diameter</source>
+            <translation>粗加工层深 / 刀具直径</translation>
+        </message>
+        <message>
+            <source>roughing step-over / tool diameter</source>
+            <translation>粗加工行距 / 刀具直径</translation>
+        </message>
+    </context>
+</TS>
