@@ -25,8 +25,8 @@ double& stockValue(Job& j, int which)
 }
 double stockValue(const Job& j, int which)
 {
-    Job copy = j;
-    return stockValue(copy, which);
+    if (j.bar) return which == 0 ? j.bar->diameter : which == 1 ? j.bar->length : which == 2 ? j.bar->face : j.bar->bore;
+    return which == 0 ? j.stock.width : which == 1 ? j.stock.length : j.stock.height;
 }
 }  // namespace
 

@@ -540,7 +540,7 @@ Diagnostics ProfileEditor::showDiagnostics(const Diagnostics& ofThisUnit)
             at = allowanceCell(field);
             table = allowances_;
         }
-        if (!at && field != "rows") {
+        if (!at && field != "rows" && field != "allowances") {
             unmatched.push_back(d);
             continue;
         }

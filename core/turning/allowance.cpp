@@ -420,13 +420,14 @@ private:
         std::vector<Loop> add{part_};
         for (const Loop& s : shapes_) add.push_back(s);
         auto boundary = regionBoundary(add, cuts_);
+        // Problems of the union as a whole are the table's, not one row's.
         if (!boundary) {
-            problem(0, "allowance", boundary.error());
+            out_.problems.push_back({"allowances", boundary.error()});
             return;
         }
         if (boundary->size() != 1) {
-            problem(0, "allowance", fmt::format("the allowances and grooves split the part into {} pieces",
-                                                boundary->size()));
+            out_.problems.push_back(
+                {"allowances", fmt::format("the allowances and grooves split the part into {} pieces", boundary->size())});
             return;
         }
         // Preference: moved, side, untouched edges, grooves, picked edges, closure.
@@ -461,9 +462,9 @@ private:
                     contains(order[s].s, piece.b, 1e-6))
                     tag[j] = static_cast<int>(s);
             if (tag[j] < 0) {
-                problem(0, "allowance", fmt::format("internal: a piece of the deformed profile at Z{} X{} lies on no "
-                                                    "edge; please report this job",
-                                                    len(mid.z), len(2.0 * mid.r)));
+                out_.problems.push_back({"allowances", fmt::format("internal: a piece of the deformed profile at Z{} X{} "
+                                                                   "lies on no edge; please report this job",
+                                                                   len(mid.z), len(2.0 * mid.r))});
                 return;
             }
         }
