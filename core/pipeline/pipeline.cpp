@@ -132,6 +132,7 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     post.programNumber = programNumber;
     post.programName = plan.job.name.empty() ? fileStem : plan.job.name;
     post.material = plan.mmJob.material;
+    post.machine = plan.job.machine;
     post.workOffset = plan.job.workOffset;
     for (const auto& u : plan.job.units) post.unitNames.push_back(u.name);
     return post;

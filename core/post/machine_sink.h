@@ -23,6 +23,7 @@ struct ProgramInfo {
     int number = 1000;       // O-number where the dialect has one
     std::string material;
     std::vector<ToolEntry> tools;  // in order of first use
+    std::string machine;           // the job's machine ("vmc"), named in the header
 };
 
 struct DrillCycle {

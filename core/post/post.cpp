@@ -53,7 +53,7 @@ public:
 
     void start(const std::vector<Cutting>& cutting)
     {
-        post::ProgramInfo info{o_.programName, o_.programNumber, o_.material, {}};
+        post::ProgramInfo info{o_.programName, o_.programNumber, o_.material, {}, o_.machine};
         for (const auto& c : cutting)
             if (std::none_of(info.tools.begin(), info.tools.end(), [&](const auto& t) { return t.number == c.tool->id; }))
                 info.tools.push_back({c.tool->id, c.tool->diameter, c.tool->name});
