@@ -8,6 +8,7 @@
 #include "job/job_file.h"
 #include "job/step_job.h"
 #include "machine/machine.h"
+#include "post/dialect.h"
 #include "post/post.h"
 #include "io/job_io.h"
 #include "model/technology.h"
@@ -63,10 +64,10 @@ Usage:
                                    its outer profile (and bore) as turned-profile
                                    units, a bar that holds it; JOB must not exist
   taiwa --list-machines | --list-dialects
-                                   the machines (shipped, and the shop's own in
-                                   ~/.config/taiwa/machines/*.json) and the
-                                   dialects this program knows, with where each
-                                   comes from
+                                   the machines and dialects this program knows
+                                   (shipped, and the shop's own in
+                                   ~/.config/taiwa/machines|dialects/*.json),
+                                   with where each comes from
   taiwa --version | --help
 
 Common options:
@@ -151,7 +152,9 @@ int listMachines()
 
 int listDialects()
 {
-    for (const std::string& d : dialectNames()) std::cout << d << "\tbuilt in\n";
+    for (const post::Dialect& d : post::dialectLibrary())
+        std::cout << d.name << '\t' << d.description << '\t' << d.source << '\n';
+    for (const std::string& p : post::dialectLibraryProblems()) std::cerr << "taiwa: " << p << '\n';
     return kOk;
 }
 

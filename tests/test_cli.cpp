@@ -305,8 +305,48 @@ private slots:
         writeFile(dir.filePath("big.taiwa"), job.dump(2));
         QCOMPARE(runTaiwa({"check", dir.filePath("big.taiwa"), "--tools", dir.filePath("t.sqlite")}, env).exitCode, 0);
         QCOMPARE(runTaiwa({"check", dir.filePath("big.taiwa"), "--tools", dir.filePath("t.sqlite")}, {"XDG_CONFIG_HOME=" + dir.path()}).exitCode, 2);
-        r = runTaiwa({"--list-dialects"});
-        QCOMPARE(r.out, QString("fanuc\tbuilt in\nlinuxcnc\tbuilt in\n"));
+    }
+
+    // Dialects as data: a shop's own file posts a program the way it says
+    // (a FANUC-like control without the % framing, under a name of its own);
+    // a broken one is refused naming file, line and key.
+    void dialectsAreDataTheShopCanEdit()
+    {
+        QTemporaryDir config;
+        const QStringList env{"XDG_CONFIG_HOME=" + config.path()};
+        auto r = runTaiwa({"--list-dialects"}, env);
+        QCOMPARE(r.out, QString("fanuc\tFANUC 0i/30i-style ISO G-code (machining centre)\tbuilt in: dialects/fanuc.json\n"
+                                "linuxcnc\tLinuxCNC 2.9 (rs274ngc)\tbuilt in: dialects/linuxcnc.json\n"));
+        const QString folder = config.filePath("taiwa/dialects");
+        QVERIFY(QDir().mkpath(folder));
+        json shop = json::parse(readFile(sourcePath("resources/dialects/fanuc.json")));
+        shop["name"] = "shop-fanuc";
+        shop["description"] = "our old control";
+        shop["percentFraming"] = false;
+        writeFile(folder + "/shop.json", shop.dump(2));
+        json bad = shop;
+        bad["name"] = "bad";
+        bad["toolChange"] = "T{tol} M6";
+        writeFile(folder + "/bad.json", bad.dump(2));
+        r = runTaiwa({"--list-dialects"}, env);
+        QVERIFY2(r.out.endsWith("shop-fanuc\tour old control\t" + folder + "/shop.json\n"), qPrintable(r.out));
+        QVERIFY2(r.err.startsWith("taiwa: " + folder + "/bad.json:") &&
+                     r.err.contains(": toolChange: not a template this program can fill"),
+                 qPrintable(r.err));
+        QTemporaryDir out;
+        const QString job = sourcePath("resources/samples/m4-standard.taiwa");
+        r = runTaiwa({"export", job, "--out", out.filePath("shop"), "--dialect", "shop-fanuc"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = runTaiwa({"export", job, "--out", out.filePath("fanuc"), "--dialect", "fanuc"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const std::string shopTape = readFile(out.filePath("shop/m4-standard.nc"));
+        const std::string fanucTape = readFile(out.filePath("fanuc/m4-standard.nc"));
+        QVERIFY(fanucTape.starts_with("%\n"));
+        QVERIFY(shopTape.starts_with("O1000 (COVER PLATE: STANDARD POCKET)\n"));
+        QVERIFY(shopTape.find("DIALECT SHOP-FANUC") != std::string::npos);
+        // Without the shop's folder the name is unknown.
+        r = runTaiwa({"export", job, "--out", out.filePath("x"), "--dialect", "shop-fanuc"});
+        QCOMPARE(r.exitCode, 2);
     }
 
     void millingModuleOnALatheIsRefused()

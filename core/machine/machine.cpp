@@ -2,14 +2,11 @@
 #include "machine/machine.h"
 
 #include "builtin_data.h"
+#include "io/data_files.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 namespace taiwa {
@@ -20,15 +17,7 @@ namespace {
 
 using json = nlohmann::json;
 
-// The line (from 1) of the first `"key"` of a dotted path's last part in
-// the text, for messages; 0 when it is not there (a missing key).
-int lineOf(const std::string& text, const std::string& path)
-{
-    const std::string key = "\"" + path.substr(path.rfind('.') + 1) + "\"";
-    const auto at = text.find(key);
-    if (at == std::string::npos) return 0;
-    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
-}
+using io::lineOfKey;
 
 class Reader {
 public:
@@ -37,7 +26,7 @@ public:
     // "FILE:LINE: key: what" (no line for a key that is missing).
     [[noreturn]] void fail(const std::string& key, const std::string& what) const
     {
-        const int line = lineOf(text_, key);
+        const int line = lineOfKey(text_, key);
         throw std::runtime_error(source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key + ": " + what);
     }
     const json& at(const json& o, const std::string& key, const std::string& path) const
@@ -120,9 +109,7 @@ Result<Machine> readMachine(const std::string& text, const std::string& source)
     try {
         j = json::parse(text);
     } catch (const json::parse_error& e) {
-        const auto upTo = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-        const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upTo), '\n'));
-        return Failure{source + ":" + std::to_string(line) + ": not valid JSON"};
+        return Failure{source + ":" + std::to_string(io::lineOfByte(text, e.byte)) + ": not valid JSON"};
     }
     try {
         return Reader(j, source, text).read();
@@ -131,12 +118,7 @@ Result<Machine> readMachine(const std::string& text, const std::string& source)
     }
 }
 
-std::string userMachineFolder()
-{
-    if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return std::string(xdg) + "/taiwa/machines";
-    const char* home = std::getenv("HOME");
-    return std::string(home && *home ? home : ".") + "/.config/taiwa/machines";
-}
+std::string userMachineFolder() { return io::userDataFolder("machines"); }
 
 namespace {
 
@@ -159,23 +141,12 @@ const Library& library()
             if (!m) throw std::logic_error("a shipped machine definition is broken: " + m.error());
             l.machines.push_back(std::move(*m));
         }
-        std::error_code ec;
-        std::vector<std::filesystem::path> files;
-        for (const auto& e : std::filesystem::directory_iterator(userMachineFolder(), ec))
-            if (e.path().extension() == ".json") files.push_back(e.path());
-        std::sort(files.begin(), files.end());
-        for (const auto& f : files) {
-            std::ifstream in(f, std::ios::binary);
-            std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            if (!in.good() && !in.eof()) {
-                l.problems.push_back(f.string() + ": cannot read it");
+        for (const io::DataFile& f : io::jsonFilesIn(userMachineFolder())) {
+            if (!f.problem.empty()) {
+                l.problems.push_back(f.problem);
                 continue;
             }
-            if (text.size() > 1 << 20) {
-                l.problems.push_back(f.string() + ": larger than 1 MB, not a machine definition");
-                continue;
-            }
-            auto m = readMachine(text, f.string());
+            auto m = readMachine(f.text, f.path);
             if (!m) {
                 l.problems.push_back(m.error() + " (left out; the shipped machines stay)");
                 continue;

@@ -14,9 +14,6 @@
 
 namespace taiwa::post {
 
-namespace {
-std::array<const Dialect*, 2> table() { return {&fanucDialect(), &linuxcncDialect()}; }
-}  // namespace
 
 std::string workOffsetWords(const Dialect& d, const std::string& requested)
 {
@@ -56,8 +53,8 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
 
 const Dialect* findDialect(const std::string& name)
 {
-    for (const Dialect* d : table())
-        if (d->name == name) return d;
+    for (const Dialect& d : dialectLibrary())
+        if (d.name == name) return &d;
     return nullptr;
 }
 
@@ -68,7 +65,7 @@ namespace taiwa {
 std::vector<std::string> dialectNames()
 {
     std::vector<std::string> names;
-    for (const post::Dialect* d : post::table()) names.push_back(d->name);
+    for (const post::Dialect& d : post::dialectLibrary()) names.push_back(d.name);
     return names;
 }
 

@@ -1,9 +1,11 @@
-// Controller dialects as data (docs/command-line.md "Dialects"): framing, sequence
+// Controller dialects as data (resources/dialects/*.json, docs/machines.md): framing, sequence
 // numbers, number style, comments, the words of tool changes, cycles and the
 // program end. The one writer (gcode_writer) reads these; no dialect copies
 // the writer. Templates use fmt named fields: {units}, {workOffset}, {tool},
 // {number}, {name}.
 #pragma once
+
+#include "model/result.h"
 
 #include <cstddef>
 #include <string>
@@ -18,6 +20,9 @@ struct Decimals {
 
 struct Dialect {
     std::string name;
+    std::string description;         // "FANUC 0i/30i-style ISO G-code"
+    std::string source;              // where it was read from ("built in: dialects/fanuc.json")
+    std::string macroSyntax = "linuxcnc";  // the probing cycle's macro variables: "fanuc" (#100) or "linuxcnc" (#<name>)
     // Framing.
     bool percentFraming = false;     // '%' leader and trailer lines
     std::string programNumberLine;   // "O{number:04d} ({name})"; empty: none
@@ -64,6 +69,16 @@ struct Dialect {
 // written the one way ("G55", "G54.1 P7"). Throws std::invalid_argument,
 // saying what the controller offers, for one it does not have.
 std::string workOffsetWords(const Dialect& dialect, const std::string& requested);
+
+// Reads one dialect definition (format taiwa-dialect, version 1); every
+// problem names `source`, the line and the key.
+Result<Dialect> readDialect(const std::string& text, const std::string& source);
+// The dialects this program posts: the shipped definitions
+// (resources/dialects/*.json, compiled in), each replaced or joined by the
+// shop's own files in ~/.config/taiwa/dialects; read once.
+const std::vector<Dialect>& dialectLibrary();
+// The shop's files that were left out, one sentence each.
+const std::vector<std::string>& dialectLibraryProblems();
 
 const Dialect& fanucDialect();
 const Dialect& linuxcncDialect();

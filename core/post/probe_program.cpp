@@ -100,7 +100,7 @@ std::string settingProgram(const WorkSetup& s, const PostOptions& o)
 {
     if (!s.measured) throw std::invalid_argument("no measured centre to set");
     const post::Dialect& d = dialectOf(o);
-    const bool fanuc = o.dialect == "fanuc";
+    const bool fanuc = post::findDialect(o.dialect) && post::findDialect(o.dialect)->macroSyntax == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
     const WorkSetup::Measured& m = *s.measured;
     Program p(d);
@@ -175,7 +175,7 @@ CycleSyntax fanucSyntax(const WorkSetup& s)
 std::string probingProgram(const WorkSetup& s, const PostOptions& o)
 {
     const post::Dialect& d = dialectOf(o);
-    const bool fanuc = o.dialect == "fanuc";
+    const bool fanuc = post::findDialect(o.dialect) && post::findDialect(o.dialect)->macroSyntax == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
     const CycleSyntax v = fanuc ? fanucSyntax(s) : linuxcncSyntax();
     Program p(d);
