@@ -4,6 +4,7 @@
 // name file, line and key.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,29 @@ std::vector<DataFile> jsonFilesIn(const std::string& folder);
 int lineOfKey(const std::string& text, const std::string& dottedPath);
 // The line (from 1) of byte `byte` (1-based, as JSON parse errors count).
 int lineOfByte(const std::string& text, std::size_t byte);
+
+// The shop's files of a kind joined to the shipped definitions `items`: a
+// file whose key (id, name) is known replaces that one, a new key joins; a
+// file that cannot be used is left out with its problem (`read` gives a
+// Result<T> naming file, line and key; `what`: "machines", "dialects").
+template <class T, class Read, class KeyOf>
+void addShopFiles(std::vector<T>& items, std::vector<std::string>& problems, const std::string& folder, Read read,
+                  KeyOf key, const std::string& what)
+{
+    for (const DataFile& f : jsonFilesIn(folder)) {
+        if (!f.problem.empty()) {
+            problems.push_back(f.problem);
+            continue;
+        }
+        auto item = read(f.text, f.path);
+        if (!item) {
+            problems.push_back(item.error() + " (left out; the shipped " + what + " stay)");
+            continue;
+        }
+        const auto same = std::find_if(items.begin(), items.end(), [&](const T& x) { return key(x) == key(*item); });
+        if (same != items.end()) *same = std::move(*item);
+        else items.push_back(std::move(*item));
+    }
+}
 
 }  // namespace taiwa::io

@@ -141,20 +141,8 @@ const Library& library()
             if (!m) throw std::logic_error("a shipped machine definition is broken: " + m.error());
             l.machines.push_back(std::move(*m));
         }
-        for (const io::DataFile& f : io::jsonFilesIn(userMachineFolder())) {
-            if (!f.problem.empty()) {
-                l.problems.push_back(f.problem);
-                continue;
-            }
-            auto m = readMachine(f.text, f.path);
-            if (!m) {
-                l.problems.push_back(m.error() + " (left out; the shipped machines stay)");
-                continue;
-            }
-            const auto same = std::find_if(l.machines.begin(), l.machines.end(), [&](const Machine& x) { return x.id == m->id; });
-            if (same != l.machines.end()) *same = std::move(*m);
-            else l.machines.push_back(std::move(*m));
-        }
+        io::addShopFiles(l.machines, l.problems, userMachineFolder(), readMachine, [](const Machine& m) { return m.id; },
+                         "machines");
         return l;
     }();
     return lib;

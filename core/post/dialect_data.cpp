@@ -178,20 +178,8 @@ const Library& library()
             if (!d) throw std::logic_error("a shipped dialect definition is broken: " + d.error());
             l.dialects.push_back(std::move(*d));
         }
-        for (const io::DataFile& f : io::jsonFilesIn(io::userDataFolder("dialects"))) {
-            if (!f.problem.empty()) {
-                l.problems.push_back(f.problem);
-                continue;
-            }
-            auto d = readDialect(f.text, f.path);
-            if (!d) {
-                l.problems.push_back(d.error() + " (left out; the shipped dialects stay)");
-                continue;
-            }
-            const auto same = std::find_if(l.dialects.begin(), l.dialects.end(), [&](const Dialect& x) { return x.name == d->name; });
-            if (same != l.dialects.end()) *same = std::move(*d);
-            else l.dialects.push_back(std::move(*d));
-        }
+        io::addShopFiles(l.dialects, l.problems, io::userDataFolder("dialects"), readDialect,
+                         [](const Dialect& d) { return d.name; }, "dialects");
         return l;
     }();
     return lib;
