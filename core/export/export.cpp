@@ -73,6 +73,29 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};
         j["moves"] = s.path->moves.size();
     }
+    if (s.turn) {
+        const TurnStep& t = *s.turn;
+        const PathLength len = turnPathLength(t.path);
+        j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};
+        j["moves"] = t.path.moves.size();
+        nlohmann::ordered_json tj;
+        tj["side"] = turning::toKey(t.side);
+        tj["region"] = t.region;
+        tj["orientation"] = t.orientation;
+        if (t.cutting.constantSurfaceSpeed) {
+            tj["surfaceSpeed"] = t.cutting.surfaceSpeed;
+            tj["maxRpm"] = t.cutting.maxRpm;
+        } else {
+            tj["rpm"] = t.cutting.rpm;
+        }
+        tj["feedPerRev"] = out(t.cutting.feedPerRev, u);
+        if (t.depthOfCut > 0) tj["depthOfCut"] = out(t.depthOfCut, u);
+        if (t.allowanceX > 0 || t.allowanceZ > 0) tj["allowance"] = {{"x", out(t.allowanceX, u)}, {"z", out(t.allowanceZ, u)}};
+        if (t.withdrawal > 0) tj["withdrawal"] = out(t.withdrawal, u);
+        if (t.path.cycle) tj["cycle"] = "G71";
+        if (t.path.comp != NoseCompensation::Off) tj["noseCompensation"] = t.path.comp == NoseCompensation::Left ? "G41" : "G42";
+        j["turning"] = tj;
+    }
     if (s.minutes) j["minutes"] = *s.minutes;
     return j;
 }
@@ -202,7 +225,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     };
     // A lathe job has no tape yet (turning steps and lathe NC come with the
     // turning process): its sheet and steps.json hold the profile to cut.
-    if (plan.mmJob.bar) std::erase_if(files, [](const auto& f) { return f.first == ".nc" || f.first == ".tape.txt"; });
+    if (plan.mmJob.bar && plan.steps.empty()) std::erase_if(files, [](const auto& f) { return f.first == ".nc" || f.first == ".tape.txt"; });
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
     // STEM.u<unit>.probe.nc, with O-numbers after the tape's.

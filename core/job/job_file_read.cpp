@@ -25,7 +25,7 @@ using io::ObjectFields;
 using io::Place;
 
 const std::vector<std::string> kJobKeys{"format",     "version", "name",  "lengthUnit", "material", "machine",
-                                        "workOffset", "dialect", "stock", "technology", "units"};
+                                        "workOffset", "dialect", "stock", "technology", "latheRoughing", "units"};
 const std::vector<std::string> kStockShapes{"block", "bar"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kBarKeys{"shape", "diameter", "length", "face", "bore"};
@@ -213,6 +213,7 @@ JobReadResult readJob(std::string_view text)
     job.machine = f.string("machine", job.machine);
     job.workOffset = f.string("workOffset", job.workOffset);
     job.dialect = f.string("dialect", "");
+    if (f.find("latheRoughing")) job.latheRoughingCycles = f.choice("latheRoughing", {"cycle", "passes"}).value_or(0) == 0;
     job.stock = readStock(f, job.bar);
     job.technology = readTechnology(f);
     const json* units = f.find("units");

@@ -39,6 +39,7 @@ ordered jobJson(const Job& job)
     j["machine"] = job.machine;
     j["workOffset"] = job.workOffset;
     if (!job.dialect.empty()) j["dialect"] = job.dialect;
+    if (!job.latheRoughingCycles) j["latheRoughing"] = "passes";
     const Stock& s = job.stock;
     if (job.bar)
         j["stock"] = {{"shape", "bar"},

@@ -74,6 +74,9 @@ struct Job {
     Stock stock;                   // milling jobs
     std::optional<BarStock> bar;   // lathe jobs: the stock is a bar (then `stock` is not used)
     TechnologyOverrides technology;
+    // Lathe jobs: roughing as the control's own cycle (G71) where a profile
+    // allows it, or always as explicit passes (controls without cycles).
+    bool latheRoughingCycles = true;
     std::vector<MachiningUnit> units;
     friend bool operator==(const Job&, const Job&) = default;
 };

@@ -13,6 +13,13 @@ const char* toString(StepKind k)
     case StepKind::FloorFinishing: return "floor finishing";
     case StepKind::WallFinishing: return "wall finishing";
     case StepKind::InclinedFaceFinishing: return "inclined-face finishing";
+    case StepKind::Facing: return "facing";
+    case StepKind::CentreDrilling: return "centre drilling";
+    case StepKind::Drilling: return "drilling";
+    case StepKind::TurnRoughing: return "roughing";
+    case StepKind::Grooving: return "grooving";
+    case StepKind::TurnFinishing: return "finishing";
+    case StepKind::Parting: return "parting off";
     }
     return "";
 }
@@ -25,9 +32,18 @@ const char* toKey(StepKind k)
     case StepKind::FloorFinishing: return "floor";
     case StepKind::WallFinishing: return "wall";
     case StepKind::InclinedFaceFinishing: return "inclined";
+    case StepKind::Facing: return "facing";
+    case StepKind::CentreDrilling: return "centre-drill";
+    case StepKind::Drilling: return "drill";
+    case StepKind::TurnRoughing: return "turn-rough";
+    case StepKind::Grooving: return "groove";
+    case StepKind::TurnFinishing: return "turn-finish";
+    case StepKind::Parting: return "part";
     }
     return "";
 }
+
+bool isTurning(StepKind k) { return k >= StepKind::Facing; }
 
 namespace {
 std::string roman(int n)
@@ -45,7 +61,9 @@ std::string Step::label() const
 {
     std::string s = toString(kind);
     s[0] = static_cast<char>(s[0] - 'a' + 'A');
-    if (kind == StepKind::PilotHole) return s;
+    if (kind == StepKind::PilotHole || kind == StepKind::Facing || kind == StepKind::CentreDrilling ||
+        kind == StepKind::Drilling || kind == StepKind::Parting)
+        return s;
     return s + " " + roman(number);
 }
 

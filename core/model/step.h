@@ -6,6 +6,7 @@
 #include "model/geometry.h"
 #include "model/tool.h"
 #include "model/toolpath.h"
+#include "model/turn_path.h"
 
 #include <optional>
 #include <string>
@@ -18,14 +19,26 @@ enum class StepKind {
     FloorFinishing,
     WallFinishing,
     InclinedFaceFinishing,
+    // Turning (model/turn_path.h): in the order a bar is cut.
+    Facing,
+    CentreDrilling,
+    Drilling,
+    TurnRoughing,
+    TurnFinishing,
+    Grooving,
+    Parting,
 };
+bool isTurning(StepKind k);
 const char* toString(StepKind k);  // "roughing"
-const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined")
+const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
+                                   // turning: "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "part")
 
 // Machining-type code attached to every step for the post-processor
 // (seed: "attached with a predetermined machining type code"):
 // 10 pilot hole, 20 roughing, 30 floor finishing, 40 wall finishing,
-// 41 wall semi-finish, 42 taper-wall middle pass, 50 inclined-face finishing.
+// 41 wall semi-finish, 42 taper-wall middle pass, 50 inclined-face finishing;
+// turning: 60 facing, 61 centre drilling, 62 drilling, 70 roughing,
+// 71 finishing, 72 grooving, 73 parting.
 enum class MachiningType : int {
     PilotHole = 10,
     Roughing = 20,
@@ -34,6 +47,13 @@ enum class MachiningType : int {
     WallSemiFinishing = 41,
     WallMiddlePass = 42,
     InclinedFaceFinishing = 50,
+    Facing = 60,
+    CentreDrilling = 61,
+    Drilling = 62,
+    TurnRoughing = 70,
+    TurnFinishing = 71,
+    Grooving = 72,
+    Parting = 73,
 };
 
 // An inclined face of module M2D: a plane strip between its edge at the top
@@ -70,6 +90,9 @@ struct Step {
     // Roughing: the unit's radial step-over as a fraction of the tool
     // diameter, when the unit overrides the technology data's.
     std::optional<double> stepOver;
+    // Turning steps: side, speeds, the path in XZ (then `path` stays empty:
+    // milling's stages pass such a step by).
+    std::optional<TurnStep> turn;
 
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;

@@ -26,7 +26,27 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
             if (!std::isfinite(v) || v <= 0) throw std::runtime_error("technology table: material " + mt.id + ": " + key + " must be a positive number");
             return v;
         };
-        mt.data = {num("alpha1"), num("alpha2"), num("alpha3"), num("beta2"), num("gamma")};
+        mt.data.alpha1 = num("alpha1");
+        mt.data.alpha2 = num("alpha2");
+        mt.data.alpha3 = num("alpha3");
+        mt.data.beta2 = num("beta2");
+        mt.data.gamma = num("gamma");
+        // Turning: optional per material (a table without it turns with the defaults).
+        if (m.contains("turning")) {
+            const auto& t = m["turning"];
+            auto turn = [&](const char* key, double& v) {
+                if (!t.contains(key)) return;
+                if (!t[key].is_number() || !std::isfinite(t[key].get<double>()) || t[key].get<double>() <= 0)
+                    throw std::runtime_error("technology table: material " + mt.id + ": turning." + key + " must be a positive number");
+                v = t[key].get<double>();
+            };
+            turn("depthOfCut", mt.data.turning.depthOfCut);
+            turn("allowanceX", mt.data.turning.allowanceX);
+            turn("allowanceZ", mt.data.turning.allowanceZ);
+            turn("retract", mt.data.turning.retract);
+            turn("clearance", mt.data.turning.clearance);
+            turn("withdrawal", mt.data.turning.withdrawal);
+        }
         table.materials_.push_back(std::move(mt));
     }
     return table;

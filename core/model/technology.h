@@ -9,6 +9,20 @@
 
 namespace taiwa {
 
+// Turning defaults of a material (docs/turning.md): roughing's depth of cut
+// per pass (radius), the finishing allowance it leaves across the axis
+// (radius) and along it, the lift after each pass, the clearance of
+// approaches, and grooving's withdrawal along the surface normal (seed 002).
+struct TurningTechnology {
+    double depthOfCut = 2.0;
+    double allowanceX = 0.2;
+    double allowanceZ = 0.1;
+    double retract = 0.5;
+    double clearance = 2.0;
+    double withdrawal = 0.3;
+    friend bool operator==(const TurningTechnology&, const TurningTechnology&) = default;
+};
+
 struct TechnologyData {
     double alpha1 = 1.0;  // pilot hole stops alpha1 above the pocket floor [mm]
     double alpha2 = 0.3;  // wall allowance left by roughing [mm]
@@ -16,6 +30,7 @@ struct TechnologyData {
     double beta2 = 0.2;   // floor allowance left by roughing [mm]
     double gamma = 0.5;   // roughing layer depth = gamma x tool diameter [-]
     double stepOver = 0.45;  // roughing's radial step-over = stepOver x tool diameter [-]
+    TurningTechnology turning{};
     friend bool operator==(const TechnologyData&, const TechnologyData&) = default;
 };
 

@@ -37,6 +37,9 @@ struct UnitPlanContext {
     const std::vector<Tool>& library;
     const std::string& material;
     int unit = 0;  // 0-based index of the unit in the job, stored in its steps
+    const Job* job = nullptr;          // the whole job in mm (a lathe unit looks at the bar and the other units)
+    const Machine* machine = nullptr;  // the job's machine, when known
+    LengthUnit shownUnit = LengthUnit::Millimetre;  // messages quote lengths in it
 };
 
 class ModuleKind {

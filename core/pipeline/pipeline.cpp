@@ -5,6 +5,7 @@
 #include "pipeline/pipeline.h"
 
 #include "job/job_check.h"
+#include "machine/machine.h"
 #include "modules/registry.h"
 #include "tools/cutting.h"
 #include "tools/tool_choice.h"
@@ -15,6 +16,7 @@
 #include <future>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <utility>
 
 namespace taiwa {
@@ -43,9 +45,10 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     // whatever the module settles between them.
     std::vector<Step> unordered;
     unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
+    const Machine* machine = findMachine(plan.mmJob.machine);
     for (const int u : plan.unitOrder) {
         const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
-        const UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u};
+        const UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
         auto steps = moduleKind(module).plan(module, ctx, plan.diagnostics);
         if (auto setup = moduleKind(module).setup(module, ctx)) {
             setup->workOffset = plan.job.workOffset;
@@ -62,7 +65,17 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     if (!plan.ok()) return plan;
 
     plan.steps.reserve(unordered.size());
-    for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
+    if (plan.mmJob.bar) {
+        // A bar is cut in the order of the steps' kinds (facing, drilling,
+        // roughing, finishing, grooving, parting off), units in turn within
+        // each: every unit's roughing before any finishing.
+        std::stable_sort(unordered.begin(), unordered.end(), [&](const Step& a, const Step& b) {
+            return std::tuple(static_cast<int>(a.kind), a.unit) < std::tuple(static_cast<int>(b.kind), b.unit);
+        });
+        for (auto& s : unordered) plan.steps.push_back(std::move(s));
+    } else {
+        for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
+    }
 
     int currentTool = 0;
     for (const auto& step : plan.steps) {
@@ -101,6 +114,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     const auto work = [&](std::size_t first, std::size_t stride) {
         for (std::size_t i = first; i < plan.steps.size(); i += stride) {
             Step& step = plan.steps[i];
+            if (step.turn) continue;  // turning steps come with their paths and times
             const Tool& tool = *findTool(library, step.tool->toolId);
             step.path = makeToolPath(step, tool, plan.technology, options.path);
             step.minutes = estimateMinutes(*step.path, *speedsFeeds(tool, plan.mmJob.material));
@@ -135,6 +149,12 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     post.machine = plan.job.machine;
     post.workOffset = plan.job.workOffset;
     for (const auto& u : plan.job.units) post.unitNames.push_back(u.name);
+    if (plan.mmJob.bar) {
+        // Clear of the bar for the turret to index: 25 mm above it and 50 mm in front of its face.
+        post.latheChangeX = plan.mmJob.bar->diameter + 50.0;
+        post.latheChangeZ = plan.mmJob.bar->face + 50.0;
+        post.turningCycles = plan.mmJob.latheRoughingCycles;
+    }
     return post;
 }
 

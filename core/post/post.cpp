@@ -7,6 +7,7 @@
 
 #include "post/dialect.h"
 #include "post/gcode_writer.h"
+#include "post/lathe_post.h"
 #include "post/tape_image.h"
 #include "post/unit_adapter.h"
 #include "tools/cutting.h"
@@ -147,6 +148,8 @@ private:
 PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
                           const PostOptions& options)
 {
+    if (std::any_of(orderedSteps.begin(), orderedSteps.end(), [](const Step& s) { return s.turn.has_value(); }))
+        return postLathe(orderedSteps, library, options);
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
     std::vector<Cutting> cutting;

@@ -25,6 +25,11 @@ struct PostOptions {
     std::vector<std::string> unitNames;  // the operator's name of each unit (by index; empty: none), in the step comments
     bool coolant = true;
     double safeZ = 5.0;                // [mm] above the stock top
+    // Lathe jobs: the point the turret retracts to for a tool change (X as
+    // a diameter), and whether roughing may be the control's own cycle
+    // (G71) where a step has one; false: the explicit passes.
+    double latheChangeX = 150.0, latheChangeZ = 50.0;
+    bool turningCycles = true;
 };
 
 // Where an NC block came from: the step (index into the ordered steps) and

@@ -139,20 +139,33 @@ Content content(const Plan& plan, const SheetOptions& o)
                        "Depth " + us, "Wall left", "Floor left", "Cut " + us, "Min"};
     c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};
     c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 19, 5, 6, 5.5, 5.5, 5, 5, 7, 4};
+    // A turning step's speed: constant surface speed with its spindle
+    // limit, or the drill's rpm; its feed per revolution.
+    const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
+        if (s.turn) {
+            const TurnCutting& tc = s.turn->cutting;
+            return tc.constantSurfaceSpeed ? fmt::format("{:.0f} m/min ≤{:.0f}", tc.surfaceSpeed, tc.maxRpm) : fmt::format("{:.0f}", tc.rpm);
+        }
+        return sf ? fmt::format("{:.0f}", sf->rpm) : "-";
+    };
+    const auto feedText = [&](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
+        if (s.turn) return fmt::format("{}/rev", len(s.turn->cutting.feedPerRev));
+        return sf ? feed(sf->feed) : "-";
+    };
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& s = plan.steps[i];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
         const auto sf = t ? speedsFeeds(*t, job.material) : std::nullopt;
-        const PathLength pl = s.path ? pathLength(*s.path) : PathLength{};
+        const PathLength pl = s.path ? pathLength(*s.path) : s.turn ? turnPathLength(s.turn->path) : PathLength{};
         // The unit by its number and the name the operator gave it.
         std::string unit = std::to_string(s.unit + 1);
         if (s.unit >= 0 && static_cast<std::size_t>(s.unit) < job.units.size() && !job.units[s.unit].name.empty())
             unit += " " + job.units[static_cast<std::size_t>(s.unit)].name;
         c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
-                                sf ? fmt::format("{:.0f}", sf->rpm) : "-", sf ? feed(sf->feed) : "-", len(s.startDepth),
+                                speedText(s, sf), feedText(s, sf), len(s.startDepth),
                                 len(s.cutDepth), len(s.wallAllowance), len(s.floorAllowance),
-                                s.path ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
+                                s.path || s.turn ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
     }
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
     c.tools.numeric = {true, false, false, true, true, false, true, true, true};

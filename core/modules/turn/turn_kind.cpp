@@ -1,7 +1,7 @@
 // Module TURN behind its door (modules/module_kind.h): the job file's keys,
-// the input checks (the profile table, the allowance table, the bar), and
-// the deformed profile handed to the plan. No steps yet: cutting the profile
-// is the next turning issue's.
+// the input checks (the profile table, the allowance table, the bar, the
+// pinned tools and the steps turned off), the deformed profile handed to the
+// plan, and the turning steps (core/turning/turn_plan.h).
 #include "modules/module_kind.h"
 #include "modules/turn/turn.h"
 
@@ -10,6 +10,7 @@
 #include "io/json_write.h"
 #include "tools/turning_tools.h"
 #include "turning/allowance.h"
+#include "turning/turn_plan.h"
 #include "turning/profile_resolve.h"
 #include "model/turned_geometry.h"
 
@@ -26,7 +27,7 @@ using ordered = nlohmann::ordered_json;
 
 constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
 
-const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances"};
+const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances", "tools", "skip"};
 const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
                                         "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance"};
 const std::vector<std::string> kAllowanceKeys{"edge", "allowance", "adjustment", "groove", "grooveWidth", "grooveDepth"};
@@ -171,6 +172,17 @@ protected:
                 }
             }
         }
+        t.tools = f.wholeMap("tools");
+        if (const auto* skip = f.find("skip")) {
+            if (!skip->is_array()) {
+                f.error("skip", msg::io::wrongType("an array of step names", *skip));
+            } else {
+                for (std::size_t i = 0; i < skip->size(); ++i) {
+                    if ((*skip)[i].is_string()) t.skip.push_back((*skip)[i].get<std::string>());
+                    else f.error(fmt::format("skip[{}]", i + 1), msg::io::wrongType("a step name", (*skip)[i]));
+                }
+            }
+        }
         return t;
     }
 
@@ -195,6 +207,8 @@ protected:
             if (!r.attributes.tolerance.empty()) j["tolerance"] = r.attributes.tolerance;
             u["rows"].push_back(std::move(j));
         }
+        if (!t.tools.empty()) u["tools"] = io::pins(t.tools);
+        if (!t.skip.empty()) u["skip"] = t.skip;
         if (p.allowances.empty()) return;
         u["allowances"] = ordered::array();
         for (const auto& a : p.allowances) {
@@ -225,6 +239,17 @@ protected:
                              rows ? t.profile.rows.size() : t.profile.allowances.size(), rows ? kMaxRows : kMaxAllowances)});
             return report;
         }
+        const auto& keys = turnStepKeys();
+        const std::string known = fmt::format("{}", fmt::join(keys, ", "));
+        for (std::size_t i = 0; i < t.skip.size(); ++i)
+            if (std::find(keys.begin(), keys.end(), t.skip[i]) == keys.end())
+                add({fmt::format("skip[{}]", i + 1), fmt::format("\"{}\" is not a turning step; steps are {}", t.skip[i], known)});
+        for (const auto& [key, id] : t.tools) {
+            if (std::find(keys.begin(), keys.end(), key) == keys.end())
+                add({"tools." + key, fmt::format("\"{}\" is not a turning step; tools can be pinned for {}", key, known)});
+            else if (ctx.library && !findTool(*ctx.library, id))
+                add({"tools." + key, fmt::format("tool T{} is not in the tool library", id)});
+        }
         const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
         for (const auto& p : r.problems) add(p);
         if (!r.ok()) return report;
@@ -241,7 +266,45 @@ protected:
 
     std::optional<Quad> outline(const TurnUnit&) const override { return std::nullopt; }
     void move(TurnUnit&, Point2) const override {}
-    std::vector<Step> planInput(const TurnUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }
+    std::vector<Step> planInput(const TurnUnit& t, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        if (!ctx.job || !ctx.job->bar) return {};
+        const ResolvedProfile profile = resolveProfile(t.profile).profile;
+        const Deformation d = applyAllowances(profile, t.profile.allowances, allowanceOptions(t.profile, ctx.library, LengthUnit::Millimetre));
+        if (!d.ok() || d.profile.edges.empty()) return {};
+        TurnPlanRequest q;
+        q.unit = ctx.unit;
+        q.deformed = &d.profile;
+        q.bar = *ctx.job->bar;
+        q.library = &ctx.library;
+        q.material = ctx.material;
+        q.pins = t.tools;
+        q.skip = {t.skip.begin(), t.skip.end()};
+        q.tech = ctx.tech.turning;
+        q.boreBefore = q.bar.bore;
+        q.shown = ctx.shownUnit;
+        if (ctx.machine) {
+            q.maxRpm = ctx.machine->maxSpindleSpeed > 0 ? ctx.machine->maxSpindleSpeed : q.maxRpm;
+            double rapid = 0.0;
+            for (const auto& [axis, rate] : ctx.machine->rapid) rapid = rapid == 0.0 ? rate : std::min(rapid, rate);
+            if (rapid > 0) q.rapid = rapid;
+        }
+        // The job's first turned unit faces the bar; its last outer unit parts it off.
+        int firstTurn = -1, lastOuter = -1;
+        for (std::size_t u = 0; u < ctx.job->units.size(); ++u) {
+            const TurnUnit* other = ctx.job->units[u].module.getIf<TurnUnit>();
+            if (!other) continue;
+            if (firstTurn < 0) firstTurn = static_cast<int>(u);
+            if (other->profile.side == ProfileSide::Outer) lastOuter = static_cast<int>(u);
+        }
+        q.facing = firstTurn == ctx.unit;
+        q.parting = lastOuter == ctx.unit;
+        TurnPlanResult r = planTurnedUnit(q);
+        for (auto& p : r.problems)
+            out.push_back({Severity::Error, ctx.unit + 1, TurnUnit::kName, std::move(p.field), std::move(p.message)});
+        for (auto& n : r.notes) out.push_back({Severity::Warning, ctx.unit + 1, TurnUnit::kName, "", std::move(n)});
+        return std::move(r.steps);
+    }
     // The fields above the profile table; the tables themselves are the
     // station's profile editor (ui/profile_editor.h).
     std::vector<FormField> formFields() const override
