@@ -363,17 +363,21 @@ private slots:
                  qPrintable(r.err));
     }
 
-    // A lathe job exports its sheet and steps.json; no tape until the turning
-    // process is built.
-    void latheExportWritesSheetAndStepsOnly()
+    // A lathe job exports the five files: the lathe tape (G18, diameters,
+    // feed per revolution) beside the sheet and steps.json with the profile.
+    void latheExportWritesTheLatheTape()
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("out");
         const auto r = runTaiwa({"export", sourcePath("resources/samples/lathe-shaft-grinding.taiwa"), "--out", out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QStringList expected{"lathe-shaft-grinding.sheet.html", "lathe-shaft-grinding.sheet.pdf",
-                                   "lathe-shaft-grinding.steps.json"};
+        const QStringList expected{"lathe-shaft-grinding.nc", "lathe-shaft-grinding.sheet.html", "lathe-shaft-grinding.sheet.pdf",
+                                   "lathe-shaft-grinding.steps.json", "lathe-shaft-grinding.tape.txt"};
         QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name), expected);
+        const std::string nc = readFile(QDir(out).filePath("lathe-shaft-grinding.nc"));
+        QVERIFY(nc.find("G18 G7 G21 G40 G80 G90 G54 G95") != std::string::npos);
+        QVERIFY(nc.find("G96 D4500 S") != std::string::npos);  // constant surface speed under the lathe's limit
+        QVERIFY(nc.find("G42 G1") != std::string::npos && nc.find("G40 G1") != std::string::npos);
         const std::string html = readFile(QDir(out).filePath("lathe-shaft-grinding.sheet.html"));
         QVERIFY(html.find("<h2>Grinding allowances</h2>") != std::string::npos);
         QVERIFY(html.find("<td>Ra 0.4, h6</td>") != std::string::npos);  // the seat's attributes, on its row and its moved edge

@@ -59,11 +59,12 @@ private slots:
             const Plan plan = planJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
             QVERIFY2(plan.ok(), k->name());
             // A machining unit plans steps; a setup unit (probing) hands on its
-            // setup instead, a turning unit (for now) its profile to cut.
-            QVERIFY2(int(!plan.steps.empty()) + int(!plan.setups.empty()) + int(!plan.turned.empty()) == 1, k->name());
+            // setup instead; a turning unit its steps and the profile they cut.
+            if (k->machineKind() == MachineKind::Lathe) QVERIFY2(!plan.steps.empty() && !plan.turned.empty(), k->name());
+            else QVERIFY2(int(!plan.steps.empty()) + int(!plan.setups.empty()) + int(!plan.turned.empty()) == 1, k->name());
             for (const Step& s : plan.steps) {
                 QCOMPARE(s.module, std::string(k->name()));
-                QVERIFY(s.tool && s.path && s.minutes);
+                QVERIFY(s.tool && (s.path || s.turn) && s.minutes);
             }
         }
     }

@@ -76,7 +76,7 @@ private slots:
             QVERIFY2(plan.ok(), qPrintable(f));
             for (const Step& s : plan.steps) {
                 const double estimate = estimateMoves(s, *plan.tool(s.tool->toolId), plan.technology, {});
-                const double real = static_cast<double>(s.path->moves.size());
+                const double real = static_cast<double>(s.turn ? s.turn->path.moves.size() : s.path->moves.size());
                 QVERIFY2(estimate >= real / 4 && estimate <= real * 20 + 50,
                          qPrintable(QString("%1 %2: %3 estimated, %4 real").arg(f, QString::fromStdString(s.label())).arg(estimate).arg(real)));
             }

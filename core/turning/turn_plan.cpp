@@ -24,6 +24,9 @@ constexpr double kTol = 1e-7;
 // The share of a tool's surface speed the spindle limit must still give at
 // the smallest diameter a roughing or finishing step turns.
 constexpr double kMinSpeedShare = 0.5;
+// The widest groove a wall the finishing insert cannot go down may open
+// (beyond it the wall is a shoulder facing the chuck) [mm].
+constexpr double kGrooveReach = 30.0;
 
 const char* kFacing = "facing";
 const char* kCentreDrill = "centre-drill";
@@ -54,6 +57,12 @@ public:
         // the bore) are the facing step's; the turned contour starts after them.
         while (first_ < chain_.size() && std::abs(chain_[first_].a.z - zFront_) < 1e-6 && std::abs(chain_[first_].b.z - zFront_) < 1e-6)
             ++first_;
+        // Trailing edges on the back plane (an outer profile's back face
+        // down toward the axis) are parting off's.
+        last_ = chain_.size();
+        while (last_ > first_ + 1 && std::abs(chain_[last_ - 1].a.z - zEnd_) < 1e-6 && std::abs(chain_[last_ - 1].b.z - zEnd_) < 1e-6 &&
+               s_ * (chain_[last_ - 1].b.r - chain_[last_ - 1].a.r) < 0)
+            --last_;
         partLoop_ = makePartLoop();
     }
 
@@ -65,6 +74,7 @@ public:
         }
         planFacing();
         if (inner_) planDrilling();
+        if (drilledToSize_ || !out_.problems.empty()) return std::move(out_);
         const Tool* finishing = chooseFinishing();
         planRoughing(finishing);
         if (finishing) planFinishing(*finishing);
@@ -204,21 +214,8 @@ private:
     std::vector<bool> reachedBy(const Tool& t) const
     {
         std::vector<bool> ok(chain_.size(), true);
-        for (std::size_t i = first_; i < chain_.size(); ++i) ok[i] = !mustReach(i) || firstUnreached(t, i, i + 1) < 0;
+        for (std::size_t i = first_; i < last_; ++i) ok[i] = !mustReach(i) || firstUnreached(t, i, i + 1) < 0;
         return ok;
-    }
-
-    // The allowance's own edges the finishing insert follows beyond its
-    // angles, for the sheet.
-    void noteGrindingStockEdges(const Tool& t)
-    {
-        std::vector<std::string> ids;
-        for (std::size_t i = first_; i < chain_.size(); ++i)
-            if (!mustReach(i) && firstUnreached(t, i, i + 1) >= 0) ids.push_back(d_.edges[i].id);
-        if (ids.empty()) return;
-        note(fmt::format("{} follows {} with its nose radius compensated; its edge touches the grinding stock "
-                         "beside them (the grinder finishes that surface)",
-                         q_.unit + 1, toolWords(t), fmt::join(ids, ", ")));
     }
 
     std::string whyNot(const Tool& t, std::size_t i) const
@@ -296,22 +293,36 @@ private:
     {
         // The narrowest point of the bore, less the finishing allowance.
         double rMin = 1e300;
-        for (std::size_t i = first_; i < chain_.size(); ++i) rMin = std::min({rMin, chain_[i].a.r, chain_[i].b.r});
+        for (std::size_t i = first_; i < last_; ++i) rMin = std::min({rMin, chain_[i].a.r, chain_[i].b.r});
         const Tool* bar = roughingInsert(true);
         const double need = bar ? bar->turning.minBore : 0.0;
         if (q_.boreBefore >= need - kTol && q_.boreBefore > 0) return;  // the bar's bore takes the boring bar
         if (skipped(kDrill)) return;
-        const double maxDrill = 2.0 * (rMin - t_.allowanceX) - 2.0 * t_.depthOfCut * 0.0 - 1.0;
+        const double maxDrill = 2.0 * (rMin - t_.allowanceX) - 1.0;
         const Tool* drill = pinned(kDrill);
         std::string reason = "pinned";
+        // A plain bore narrower than the boring bar enters: drilled to size.
+        bool plain = true;
+        for (std::size_t i = first_; i < last_; ++i)
+            plain = plain && !chain_[i].arc && std::abs(chain_[i].a.r - rMin) < 1e-6 && std::abs(chain_[i].b.r - rMin) < 1e-6;
+        if (!drill && plain && maxDrill < need)
+            for (const auto& t : lib_)
+                if (t.type == ToolType::Drill && std::abs(t.diameter - 2.0 * rMin) < 1e-6) {
+                    drill = &t;
+                    reason = fmt::format("drills the plain bore to size ({}: the boring bar needs {})", dia(rMin), dia(need / 2.0));
+                    drilledToSize_ = true;
+                }
         if (!drill) {
             for (const auto& t : lib_)
                 if (t.type == ToolType::Drill && t.diameter <= maxDrill + kTol && t.diameter >= need - kTol &&
                     (!drill || t.diameter > drill->diameter))
                     drill = &t;
             if (!drill) {
-                problem("rows", fmt::format("the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range",
-                                            dia(need / 2.0), dia(maxDrill / 2.0), dia(need / 2.0)));
+                problem("rows", maxDrill < need
+                                    ? fmt::format("the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) "
+                                                  "and no drill of the library makes it to size", dia(need / 2.0), dia(maxDrill / 2.0))
+                                    : fmt::format("the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range",
+                                                  dia(need / 2.0), dia(maxDrill / 2.0), dia(need / 2.0)));
                 return;
             }
             reason = fmt::format("largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}", dia(maxDrill / 2.0), dia(need / 2.0));
@@ -442,9 +453,9 @@ private:
         // highest point) from the stock's surface to the profile's extreme.
         const double surface = inner_ ? std::max(q_.boreBefore, drilled_) / 2.0 : R_;
         double extreme = inner_ ? -1e300 : 1e300;
-        for (std::size_t i = first_; i < chain_.size(); ++i)
+        for (std::size_t i = first_; i < last_; ++i)
             for (const ZR p : {chain_[i].a, chain_[i].b}) extreme = inner_ ? std::max(extreme, p.r) : std::min(extreme, p.r);
-        for (std::size_t i = first_; i < chain_.size(); ++i)
+        for (std::size_t i = first_; i < last_; ++i)
             if (chain_[i].arc) {
                 const ZR c = chain_[i].centre;
                 const ZR ext{c.z, c.r - s_ * chain_[i].radius};
@@ -479,6 +490,7 @@ private:
             for (auto it = here.rbegin(); it != here.rend(); ++it) {
                 const auto [a, b] = *it;
                 if (b <= zLo + 0.5) continue;
+                if (a - rn >= zFront_ - 1e-6) continue;  // in front of the face: air
                 const bool front = b >= zApproach - 1e-9;
                 if (!front) {
                     // A pocket: plunge at its front end from the level above.
@@ -524,17 +536,17 @@ private:
 
     std::optional<TurnCycle> roughingCycle(const Tool& tool, double surface) const
     {
-        for (std::size_t i = first_; i < chain_.size(); ++i) {
+        for (std::size_t i = first_; i < last_; ++i) {
             const Segment& s = chain_[i];
             const double th0 = riseDegrees(tangentAtStart(s), side_), th1 = riseDegrees(tangentAtEnd(s), side_);
             if (th0 < -1e-6 || th1 < -1e-6 || th0 > 90.0 + 1e-6 || th1 > 90.0 + 1e-6) return std::nullopt;
         }
-        if (firstUnreached(tool, first_, chain_.size()) >= 0) return std::nullopt;
+        if (firstUnreached(tool, first_, last_) >= 0) return std::nullopt;
         TurnCycle c;
         c.inner = inner_;
-        c.contour.assign(chain_.begin() + static_cast<long>(first_), chain_.end());
+        c.contour.assign(chain_.begin() + static_cast<long>(first_), chain_.begin() + static_cast<long>(last_));
         // Out of the part at the end: the cycle's last element leaves along X.
-        const ZR end = chain_.back().b;
+        const ZR end = chain_[last_ - 1].b;
         const ZR out{end.z, surface + s_ * t_.clearance};
         if (s_ * (out.r - end.r) > kTol) c.contour.push_back(lineSegment(end, out));
         c.start = {zFront_ + t_.clearance, surface + s_ * t_.clearance};
@@ -548,7 +560,7 @@ private:
     void checkSpindleLimit(const Tool& tool, const TurnCutting& c, const char* key)
     {
         double rMin = 1e300;
-        for (std::size_t i = first_; i < chain_.size(); ++i) rMin = std::min({rMin, chain_[i].a.r, chain_[i].b.r});
+        for (std::size_t i = first_; i < last_; ++i) rMin = std::min({rMin, chain_[i].a.r, chain_[i].b.r});
         if (rMin <= 0.01) return;
         const double vcAt = std::numbers::pi * 2.0 * rMin * q_.maxRpm / 1000.0;
         if (vcAt < kMinSpeedShare * c.surfaceSpeed)
@@ -564,13 +576,22 @@ private:
     std::vector<std::pair<std::size_t, std::size_t>> unreachedRuns() const
     {
         std::vector<std::pair<std::size_t, std::size_t>> runs;
-        for (std::size_t i = first_; i < chain_.size();) {
+        for (std::size_t i = first_; i < last_;) {
             if (finishReach_.empty() || finishReach_[i]) {
                 ++i;
                 continue;
             }
             std::size_t j = i;
-            while (j < chain_.size() && !finishReach_[j]) ++j;
+            while (j < last_ && !finishReach_[j]) ++j;
+            // A wall the insert cannot go down opens a groove: the run goes
+            // on to where the profile comes back up to its mouth (within
+            // kGrooveReach), the bottom in the insert's shadow too.
+            const double mouth = chain_[i].a.r;
+            if (s_ * (chain_[j - 1].b.r - mouth) < -1e-6) {
+                std::size_t k = j;
+                while (k < last_ && s_ * (chain_[k].b.r - mouth) < -1e-6 && chain_[i].a.z - chain_[k].b.z <= kGrooveReach) ++k;
+                if (k < last_ && chain_[i].a.z - chain_[k].b.z <= kGrooveReach) j = k + 1;
+            }
             runs.emplace_back(i, j);  // [i, j)
             i = j;
         }
@@ -579,7 +600,6 @@ private:
 
     void planFinishing(const Tool& tool)
     {
-        noteGrindingStockEdges(tool);
         const auto cutting = cuttingOf(tool, kFinish, true);
         if (!cutting) return;
         checkSpindleLimit(tool, *cutting, kFinish);
@@ -595,7 +615,7 @@ private:
         // enter bridged by a line across its mouth (the blade cuts it after).
         std::vector<Segment> contour;
         const auto runs = unreachedRuns();
-        for (std::size_t i = first_; i < chain_.size();) {
+        for (std::size_t i = first_; i < last_;) {
             const auto run = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == i; });
             if (run == runs.end()) {
                 contour.push_back(chain_[i]);
@@ -627,6 +647,8 @@ private:
         const ZR last = contour.back().b;
         p.moves.push_back({TurnMove::Feed, {last.z + t_.clearance, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
         p.moves.push_back({TurnMove::Rapid, {last.z + t_.clearance, safeR()}, {}, FeedKind::Cut});
+        // Out of a bore along the axis before the turret moves on.
+        if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
         (void)tip;
         addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));
     }
@@ -660,7 +682,6 @@ private:
             const Segment chord = lineSegment(A.a, q);
             contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
             contour.insert(contour.begin() + static_cast<long>(k), {chord, rest});
-            bridged_ = true;
         }
         for (int guard = 0; guard < 1000; ++guard) {
             bool changed = false;
@@ -695,13 +716,9 @@ private:
                     else A = lineSegment(A.a, q);
                 }
                 changed = true;
-                bridged_ = true;
-            }
+                }
             if (!changed) break;
         }
-        if (bridged_)
-            note("the finishing insert's nose cannot sit in every concave corner of the profile: it runs past steps lower "
-                 "than its radius, leaving the fillet of its nose there");
     }
 
     // ---- grooving --------------------------------------------------------
@@ -719,6 +736,17 @@ private:
             for (std::size_t k = i; k < j; ++k)
                 for (const ZR p : {chain_[k].a, chain_[k].b}) deepest = inner_ ? std::max(deepest, p.r) : std::min(deepest, p.r);
             const std::string elements = d_.edges[i].id + (j - i > 1 ? "…" + d_.edges[j - 1].id : "");
+            // A wall that does not come back up is a shoulder facing the
+            // chuck: no blade finishes the surface behind it.
+            const bool groove = s_ * (b.r - a.r) >= -1e-6;
+            bool own = false;
+            for (std::size_t k = i; k < j; ++k) own = own || mustReach(k);
+            if (!groove && own) {
+                problem("rows", fmt::format("{} cannot be turned: {}; it is a shoulder facing the chuck, which needs a left-hand "
+                                            "tool the library does not have (or turn the part round and make it a second job)",
+                                            elements, whyNot(*finishingTool(), i)));
+                continue;
+            }
             // The widest blade not wider than the groove (fewer plunges);
             // for a narrower groove or a step, the narrowest (it may cut a
             // step from the air beside it).
@@ -745,10 +773,9 @@ private:
             const double w = blade->turning.width;
             const double mouth = inner_ ? std::min(a.r, b.r) : std::max(a.r, b.r);
             const double rTop = mouth + s_ * t_.clearance;
-            const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, bladeShape(w, 50.0, inner_), 0.0, 0.0);
-            // Plunges from the front wall back, less than a blade width
-            // apart, kept off the walls by what the region's growth takes.
-            const double eps = 1.5 * kFlatten, span = std::max(width - w - 2.0 * eps, 0.0);
+            const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, bladeShape(w, 50.0, inner_), 0.0, 0.0, 0.0, 0.0002);
+            // Plunges from the front wall back, less than a blade width apart.
+            const double eps = 1e-4, span = std::max(width - w, 0.0);  // off the walls, inside the blade's own narrowing
             const int n = span <= kTol ? 1 : static_cast<int>(std::ceil(span / (0.8 * w) - 1e-9)) + 1;
             std::vector<ZR> bottoms;
             for (int k = 0; k < n; ++k) {
@@ -787,6 +814,7 @@ private:
             const ZR normal = surfaceNormal(end, first_, chain_.size(), w);
             wr.feed(end + t_.withdrawal * normal);
             wr.rapid({wr.path.moves.back().end.z, rTop});
+            if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
             ts.path = std::move(wr.path);
             addStep(StepKind::Grooving, MachiningType::Grooving, *blade,
                     blade == pinned(kGroove) ? "pinned"
@@ -877,11 +905,11 @@ private:
     double zBarEnd_ = 0.0;
     double zFront_ = 0.0, zEnd_ = 0.0, rEnd_ = 0.0;
     double drilled_ = 0.0;
+    bool drilledToSize_ = false;
     std::vector<Segment> chain_;
-    std::size_t first_ = 0;
+    std::size_t first_ = 0, last_ = 0;  // the turned contour: chain_[first_, last_)
     std::vector<Segment> partLoop_;
     std::vector<bool> finishReach_;
-    bool bridged_ = false;
     const Tool* finishTool_ = nullptr;
     std::string finishReason_;
     TurnPlanResult out_;

@@ -99,18 +99,19 @@ ToolShape convexHull(std::vector<ZR> p)
     return h;
 }
 
-ForbiddenRegion ForbiddenRegion::make(const std::vector<Segment>& partLoop, const ToolShape& shape, double ax, double az)
+ForbiddenRegion ForbiddenRegion::make(const std::vector<Segment>& partLoop, const ToolShape& shape, double ax, double az,
+                                      double growth, double flattenTol)
 {
     // The reference point is forbidden where the tool, placed there, meets
     // the grown part: the part plus (-shape) grown by the allowances and the
     // flattening tolerance, as a convex pattern.
     std::vector<ZR> pattern;
-    const double gz = az + kFlatten, gr = ax + kFlatten;
+    const double gz = az + growth, gr = ax + growth;
     for (const ZR q : shape)
         for (const ZR c : {ZR{-gz, -gr}, ZR{gz, -gr}, ZR{gz, gr}, ZR{-gz, gr}}) pattern.push_back(ZR{-q.z, -q.r} + c);
     pattern = convexHull(std::move(pattern));
 
-    const std::vector<ZR> poly = flatten(partLoop);
+    const std::vector<ZR> poly = flatten(partLoop, flattenTol);
     ClipperLib::Paths pieces;
     pieces.reserve(poly.size() + 1);
     {

@@ -33,7 +33,10 @@ public:
     ForbiddenRegion() = default;
     // The part (a closed loop of exact edges) grown by `shape` and by the
     // allowances ax (across the axis, radius) and az (along it).
-    static ForbiddenRegion make(const std::vector<Segment>& partLoop, const ToolShape& shape, double ax, double az);
+    // `growth` covers the flattening (a blade that must fit a groove of its
+    // own width takes none, with a finer flattening).
+    static ForbiddenRegion make(const std::vector<Segment>& partLoop, const ToolShape& shape, double ax, double az,
+                                double growth = kFlatten, double flattenTol = kFlatten);
 
     // The free stretches [z0, z1] of the line r = const between zLo and zHi, ascending.
     std::vector<std::pair<double, double>> freeAlongZ(double r, double zLo, double zHi) const;

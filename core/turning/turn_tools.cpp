@@ -77,7 +77,10 @@ ToolShape insertShape(const InsertGeometry& g)
 ToolShape bladeShape(double width, double reach, bool inside)
 {
     const double s = inside ? -1.0 : 1.0;
-    return convexHull({{0.0, 0.0}, {-width, 0.0}, {-width, s * reach}, {0.0, s * reach}});
+    // Half a micrometre narrower on each side: a blade fits a groove of its
+    // own width (turn_region's arithmetic would otherwise shut it out).
+    constexpr double e = 0.0005;
+    return convexHull({{-e, 0.0}, {-width + e, 0.0}, {-width + e, s * reach}, {-e, s * reach}});
 }
 
 int insertOrientation(bool inside) { return inside ? 3 : 2; }

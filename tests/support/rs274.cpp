@@ -43,13 +43,21 @@ QString complaint(const QString& out, const QString& err)
 
 }  // namespace
 
-Rs274Result runRs274(const std::string& ngc)
+Rs274Result runRs274(const std::string& ngc, const std::string& toolTable)
 {
     Rs274Result r;
     QTemporaryDir dir;
     const QString tbl = dir.filePath("tools.tbl"), var = dir.filePath("params.var"), prog = dir.filePath("program.ngc");
     QFile program(prog);
-    if (!copyData("tools.tbl", tbl) || !copyData("params.var", var) || !program.open(QIODevice::WriteOnly)) {
+    bool table = false;
+    if (toolTable.empty()) {
+        table = copyData("tools.tbl", tbl);
+    } else {
+        QFile f(tbl);
+        table = f.open(QIODevice::WriteOnly) &&
+                f.write(toolTable.data(), static_cast<qint64>(toolTable.size())) == static_cast<qint64>(toolTable.size());
+    }
+    if (!table || !copyData("params.var", var) || !program.open(QIODevice::WriteOnly)) {
         r.errors = "cannot prepare rs274's files in " + dir.path();
         return r;
     }
@@ -83,7 +91,7 @@ Rs274Result runRs274(const std::string& ngc)
     // The tool starts at machine zero: in program coordinates, minus the work offset.
     Point3 at{};
     double feed = 0.0;
-    int step = 0, tool = 0, selected = 0;
+    int step = 0, tool = 0, selected = 0, plane = 17;
     for (const auto& line : r.out.split('\n')) {
         const auto m = call.match(line);
         if (!m.hasMatch()) continue;
@@ -101,6 +109,8 @@ Rs274Result runRs274(const std::string& ngc)
         } else if (name == "SET_G5X_OFFSET" && r.moves.empty()) {
             const auto v = numbers(args);
             at = {-v.at(1), -v.at(2), -v.at(3)};
+        } else if (name == "SELECT_PLANE") {
+            plane = args == "CANON_PLANE_XZ" ? 18 : args == "CANON_PLANE_YZ" ? 19 : 17;
         } else if (name == "SET_FEED_RATE") {
             feed = args.toDouble();
         } else if (name == "COMMENT") {
@@ -120,9 +130,11 @@ Rs274Result runRs274(const std::string& ngc)
             c.start = at;
             c.step = step;
             c.tool = tool;
+            c.plane = plane;
             if (name == "ARC_FEED") {
                 c.kind = CanonMove::Arc;
-                c.end = {v.at(0), v.at(1), v.at(5)};
+                // XZ: first axis Z, second X, the axis end point Y.
+                c.end = plane == 18 ? Point3{v.at(1), v.at(5), v.at(0)} : Point3{v.at(0), v.at(1), v.at(5)};
                 c.centre = {v.at(2), v.at(3)};
                 c.rotation = static_cast<int>(v.at(4));
             } else {
@@ -139,8 +151,12 @@ Rs274Result runRs274(const std::string& ngc)
 
 std::vector<Point3> sampleArc(const CanonMove& arc, double step)
 {
-    const Point2 a{arc.start.x - arc.centre.x, arc.start.y - arc.centre.y};
-    const Point2 b{arc.end.x - arc.centre.x, arc.end.y - arc.centre.y};
+    const bool xz = arc.plane == 18;
+    // The plane's (first, second) coordinates of a point, and back.
+    const auto inPlane = [&](const Point3& p) { return xz ? Point2{p.z, p.x} : Point2{p.x, p.y}; };
+    const double axisStart = xz ? arc.start.y : arc.start.z, axisEnd = xz ? arc.end.y : arc.end.z;
+    const Point2 a = inPlane(arc.start) - arc.centre;
+    const Point2 b = inPlane(arc.end) - arc.centre;
     const double radius = length(a);
     double sweep = std::atan2(cross(a, b), dot(a, b));
     if (arc.rotation > 0 && sweep <= 1e-12) sweep += 2 * std::numbers::pi;
@@ -154,8 +170,9 @@ std::vector<Point3> sampleArc(const CanonMove& arc, double step)
     for (int i = 1; i <= n; ++i) {
         const double t = static_cast<double>(i) / n;
         const double ang = a0 + sweep * t;
-        pts.push_back({arc.centre.x + radius * std::cos(ang), arc.centre.y + radius * std::sin(ang),
-                       arc.start.z + (arc.end.z - arc.start.z) * t});
+        const Point2 q{arc.centre.x + radius * std::cos(ang), arc.centre.y + radius * std::sin(ang)};
+        const double axis = axisStart + (axisEnd - axisStart) * t;
+        pts.push_back(xz ? Point3{q.y, axis, q.x} : Point3{q.x, q.y, axis});
     }
     return pts;
 }
