@@ -2,8 +2,15 @@
 // stepped shaft of 200 edges (100 cylinders, each with its shoulder), with 1,
 // 10 and 50 allowance rows on cylinders (every other one, half of them with
 // a relief groove). Prints the time per call and, as "per_row", per
-// allowance row; the profile's resolution from its table on its own.
+// allowance row; the profile's resolution from its table on its own. And
+// the turning process of a 100-element profile (issue: under 50 ms):
+// decomposition, tool choice, every path and the lathe tape, with the
+// number of moves and tape lines, for the control's cycle and for explicit
+// passes.
+#include "post/lathe_post.h"
+#include "tools/tool_library.h"
 #include "turning/allowance.h"
+#include "turning/turn_plan.h"
 #include "turning/profile_resolve.h"
 
 #include <benchmark/benchmark.h>
@@ -78,6 +85,68 @@ void BM_Allowance(benchmark::State& state)
                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_Allowance)->Arg(1)->Arg(10)->Arg(50)->Unit(benchmark::kMillisecond);
+
+// A stepped shaft of 100 elements: 50 cylinders of 2 mm, each with its
+// shoulder 0.5 mm up (radius), rounded every fifth with R0.2 arcs kept as arcs.
+TurnedProfile hundredElements()
+{
+    TurnedProfile p;
+    double x = 10.0, z = 0.0;
+    int id = 1;
+    ProfileRow face;
+    face.id = id++;
+    face.x = x;
+    p.rows.push_back(face);
+    for (int step = 0; step < 50; ++step) {
+        ProfileRow cyl;
+        cyl.id = id++;
+        cyl.x = x;
+        cyl.z = z -= 2.0;
+        p.rows.push_back(cyl);
+        if (step == 49) break;
+        ProfileRow shoulder;
+        shoulder.id = id++;
+        shoulder.x = x += 1.0;
+        shoulder.z = z;
+        if (step % 5 == 0) {
+            shoulder.corner = CornerKind::Rounding;
+            shoulder.cornerSize = 0.2;
+        }
+        p.rows.push_back(shoulder);
+    }
+    return p;
+}
+
+void BM_TurningProcess(benchmark::State& state)
+{
+    const bool cycles = state.range(0) != 0;
+    const TurnedProfile p = hundredElements();
+    const DeformedProfile d = applyAllowances(resolveProfile(p).profile, {}).profile;
+    const std::vector<Tool> library = defaultToolLibrary();
+    TurnPlanRequest q;
+    q.deformed = &d;
+    q.bar = {62.0, 140.0, 1.0, 0.0};
+    q.library = &library;
+    q.material = "steel-s45c";
+    q.maxRpm = 4500;
+    PostOptions o;
+    o.dialect = "fanuc";
+    o.turningCycles = cycles;
+    std::size_t moves = 0, lines = 0;
+    for (auto _ : state) {
+        const TurnPlanResult r = planTurnedUnit(q);
+        if (!r.problems.empty()) throw std::logic_error("the bench profile is refused: " + r.problems.front().message);
+        const PostedProgram tape = postLathe(r.steps, library, o);
+        moves = 0;
+        for (const auto& s : r.steps) moves += s.turn->path.moves.size();
+        lines = tape.lines.size();
+        benchmark::DoNotOptimize(tape.nc.data());
+    }
+    state.counters["elements"] = static_cast<double>(d.edges.size());
+    state.counters["moves"] = static_cast<double>(moves);
+    state.counters["tape_lines"] = static_cast<double>(lines);
+}
+BENCHMARK(BM_TurningProcess)->ArgName("cycles")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

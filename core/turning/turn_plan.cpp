@@ -194,7 +194,7 @@ private:
             if (!reaches(g, s, side_)) return static_cast<int>(i);
             // A concave arc (material outside the arc's circle) must be wider than the nose.
             if (s.arc) {
-                const bool materialOutside = (s.ccw ? -1.0 : 1.0) * s_ < 0;
+                const bool materialOutside = (s.ccw ? 1.0 : -1.0) * s_ < 0;  // a turn away from the material
                 if (materialOutside && s.radius <= g.noseRadius + kTol) return static_cast<int>(i);
             }
         }
