@@ -204,6 +204,10 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     page.table(c.steps);
     page.heading("Tools");
     page.table(c.tools);
+    if (!c.latheTools.rows.empty()) {
+        page.heading("Turret");
+        page.table(c.latheTools);
+    }
     if (!c.notes.empty()) {
         page.heading("Notes");
         for (const auto& n : c.notes) page.paragraph("- " + n);

@@ -2,10 +2,13 @@
 // length unit, one row per step in machining order and one per tool.
 #include "sheet/sheet_content.h"
 
+#include "machine/machine.h"
+#include "post/lathe_post.h"
 #include "tools/cutting.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -68,6 +71,33 @@ void turnedTables(const Plan& plan, const std::function<std::string(double)>& le
 
 }  // namespace
 
+namespace {
+
+// The lathe's setup: where the work offset is, the chuck, and how far the
+// bar must stand out of the jaws (the part, the parting blade and 2 mm).
+std::string latheSetup(const Plan& plan, const std::function<std::string(double)>& len)
+{
+    const Job& job = plan.mmJob;
+    double zMin = 0.0;
+    for (const TurnedPart& part : plan.turned)
+        for (const auto& e : part.deformed.edges) zMin = std::min({zMin, e.geometry.a.z, e.geometry.b.z});
+    double blade = 0.0;
+    for (const auto& s : plan.steps)
+        if (s.kind == StepKind::Parting && s.tool)
+            if (const Tool* t = plan.tool(s.tool->toolId)) blade = t->turning.width;
+    std::string chuck;
+    if (const Machine* m = findMachine(job.machine); m && m->chuckDiameter > 0)
+        chuck = fmt::format(" in chuck Ø{}", len(m->chuckDiameter));
+    double limit = 0.0;
+    for (const auto& s : plan.steps)
+        if (s.turn && s.turn->cutting.constantSurfaceSpeed) limit = s.turn->cutting.maxRpm;
+    return fmt::format("Setup: bar Ø{}{}, out of the jaws ≥ {}; {}: X0 spindle axis (X as Ø), Z0 finished face{}.",
+                       len(job.bar->diameter), chuck, len(job.bar->face - zMin + blade + 2.0), plan.job.workOffset,
+                       limit > 0 ? fmt::format("; vc in m/min up to {:.0f} rpm", limit) : "");
+}
+
+}  // namespace
+
 Content content(const Plan& plan, const SheetOptions& o)
 {
     const LengthUnit u = o.units;
@@ -101,11 +131,11 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.setup = fmt::format("Setup: work offset {} at the centre of the workpiece, found by probing (unit {}); Z0 on "
                               "its top face.",
                               job.workOffset, plan.setups.front().unit + 1);
-    if (job.bar)
-        c.setup = "Setup: work offset " + job.workOffset + ", X0 on the spindle axis (X in diameter), Z0 on the finished "
-                  "front face; the bar stands out of the chuck by at least the profile's length.";
-    if (job.bar)  // no tape yet for a lathe job: no dialect, no program number
-        std::erase_if(c.fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
+    if (job.bar) {
+        c.setup = latheSetup(plan, len);
+        if (plan.steps.empty())  // nothing to cut: no tape, no dialect, no program number
+            std::erase_if(c.fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
+    }
     std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
     turnedTables(plan, len, us, c);
     // Probing units: what the touches entered measured (the probing cycle
@@ -136,7 +166,7 @@ Content content(const Plan& plan, const SheetOptions& o)
              !w.round && m.rotationMeasured ? fmt::format("{:.4f}", m.rotation) : "-", residuals});
     }
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
-                       "Depth " + us, "Wall left", "Floor left", "Cut " + us, "Min"};
+                       "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min"};
     c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};
     c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 19, 5, 6, 5.5, 5.5, 5, 5, 7, 4};
     // A turning step's speed: constant surface speed with its spindle
@@ -144,7 +174,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
         if (s.turn) {
             const TurnCutting& tc = s.turn->cutting;
-            return tc.constantSurfaceSpeed ? fmt::format("{:.0f} m/min ≤{:.0f}", tc.surfaceSpeed, tc.maxRpm) : fmt::format("{:.0f}", tc.rpm);
+            return tc.constantSurfaceSpeed ? fmt::format("vc {:.0f}", tc.surfaceSpeed) : fmt::format("{:.0f}", tc.rpm);
         }
         return sf ? fmt::format("{:.0f}", sf->rpm) : "-";
     };
@@ -163,8 +193,9 @@ Content content(const Plan& plan, const SheetOptions& o)
             unit += " " + job.units[static_cast<std::size_t>(s.unit)].name;
         c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
-                                speedText(s, sf), feedText(s, sf), len(s.startDepth),
-                                len(s.cutDepth), len(s.wallAllowance), len(s.floorAllowance),
+                                speedText(s, sf), feedText(s, sf), s.turn ? "-" : len(s.startDepth),
+                                s.turn ? "-" : len(s.cutDepth), s.turn ? len(s.turn->allowanceX) : len(s.wallAllowance),
+                                s.turn ? len(s.turn->allowanceZ) : len(s.floorAllowance),
                                 s.path || s.turn ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
     }
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
@@ -174,6 +205,22 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.tools.rows.push_back({std::to_string(t.id), t.name, toString(t.type), len(t.diameter), len(t.stickout), t.holder,
                                 fmt::format("{:.0f}", t.lifeMinutes), fmt::format("{:.1f}", t.usedMinutes),
                                 fmt::format("{:.1f}", t.remainingLife())});
+    // Lathe tools by turret station: what the control's tool table needs.
+    c.latheTools.headers = {"Station", "T", "Tool", "Insert / blade", "Nose R " + us, "Tip orientation", "Holder"};
+    c.latheTools.numeric = {true, true, false, false, true, true, false};
+    c.latheTools.widths = {4, 3, 22, 12, 6, 6, 12};
+    for (const auto& [station, id] : latheStations(plan.steps)) {
+        const Tool* t = plan.tool(id);
+        if (!t) continue;
+        int orientation = 0;
+        for (const auto& s : plan.steps)
+            if (s.tool && s.tool->toolId == id && s.turn) orientation = s.turn->orientation;
+        const std::string insert = !t->turning.insertCode.empty() ? t->turning.insertCode
+                                   : t->turning.width > 0        ? "blade " + len(t->turning.width)
+                                                                 : toString(t->type);
+        c.latheTools.rows.push_back({fmt::format("{:02d}", station), std::to_string(id), t->name, insert, len(t->cornerRadius),
+                                     std::to_string(orientation), t->holder});
+    }
     c.notes = plan.notes();
     double cutting = 0.0;
     for (const auto& s : plan.steps) cutting += s.minutes.value_or(0.0);

@@ -27,6 +27,7 @@ struct Content {
     Table allowances;  // turning units: every grinding-allowance row with its edge, attributes and groove
     Table turned;      // turning units: the deformed profile the lathe cuts, edge by edge
     Table tools;
+    Table latheTools;  // lathe jobs: each tool's turret station, insert or blade, nose radius and tip orientation
     std::vector<std::string> notes;
     std::string total;
 };

@@ -66,6 +66,7 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
     if (!c.allowances.rows.empty())
         h += "<h2>Grinding allowances</h2>\n" + table(c.allowances) + "<h2>Turned profile as cut</h2>\n" + table(c.turned);
     h += "<h2>Process steps</h2>\n" + table(c.steps) + "<h2>Tools</h2>\n" + table(c.tools);
+    if (!c.latheTools.rows.empty()) h += "<h2>Turret</h2>\n" + table(c.latheTools);
     if (!c.notes.empty()) {
         h += "<h2>Notes</h2>\n<ul>";
         for (const auto& n : c.notes) h += "<li>" + escape(n) + "</li>";
