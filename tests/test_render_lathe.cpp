@@ -68,6 +68,41 @@ private slots:
         QVERIFY2(ratio > 46 / 30.6 - 0.12 && ratio < 46 / 30.6 + 0.12, qPrintable(QString::number(ratio)));
     }
 
+    // A selected turning step (front view): the bar as that step leaves it,
+    // half revolved behind the section, and the step's path in the section
+    // in the feed colour. After roughing (step 2) the silhouette is the
+    // roughed stock; after grooving (step 4) the groove cuts a notch into it
+    // and the blade's plunges are drawn in it.
+    void selectedStepShowsTheStockAfterItAndItsPath()
+    {
+        const auto feedPixels = [](const QImage& img) {
+            int n = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x) {
+                    const QColor c = img.pixelColor(x, y);
+                    n += std::abs(c.red() - viz::palette::kFeed.r) < 40 && std::abs(c.green() - viz::palette::kFeed.g) < 40 &&
+                         std::abs(c.blue() - viz::palette::kFeed.b) < 40;
+                }
+            return n;
+        };
+        const auto litHeight = [](const QImage& img, int x) {
+            int lit = 0;
+            for (int y = 0; y < img.height(); ++y) lit += img.pixelColor(x, y).lightness() > 110;
+            return lit;
+        };
+        const QImage rough = render("lathe-grooved-shaft", {"--view", "front", "--step", "2"});
+        const QImage groove = render("lathe-grooved-shaft", {"--view", "front", "--step", "4"});
+        const QImage whole = render("lathe-grooved-shaft", {"--view", "front"});
+        QVERIFY(!rough.isNull() && !groove.isNull() && !whole.isNull());
+        QVERIFY2(feedPixels(rough) > 200, qPrintable(QString::number(feedPixels(rough))));  // the passes
+        QVERIFY2(feedPixels(groove) > 20, qPrintable(QString::number(feedPixels(groove))));  // the plunges
+        QVERIFY2(feedPixels(whole) < 20, qPrintable(QString::number(feedPixels(whole))));  // no step: the part alone
+        // The groove's notch: some column lit lower after grooving than after roughing.
+        int notch = 0;
+        for (int x = 0; x < groove.width(); ++x) notch = std::max(notch, litHeight(rough, x) - litHeight(groove, x));
+        QVERIFY2(notch > 10, qPrintable(QString::number(notch)));
+    }
+
     void profileViewIsPaintedOffscreen()
     {
         const QImage img = render("lathe-both-ground", {"--view", "profile", "--size", "900x400"});

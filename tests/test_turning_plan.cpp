@@ -10,6 +10,7 @@
 #include "model/turned_geometry.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
+#include "sim/turned_stock.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "turning/allowance.h"
@@ -251,6 +252,34 @@ private slots:
         const Plan p = plan(sample("lathe-grooved-shaft"), library);
         QVERIFY(!p.ok());
         QVERIFY2(firstError(p).find("the tool library has no outside grooving blade") != std::string::npos, firstError(p).c_str());
+    }
+
+    void stockAfterEachStepShrinksToThePart()
+    {
+        const Plan p = plan(sample("lathe-turned-shaft"));
+        const BarStock& bar = *p.mmJob.bar;
+        const double R = bar.diameter / 2.0, barArea = R * bar.length;
+        QVERIFY(std::abs(sim::loopsArea(sim::turnedStockAfter(p, -1)) - barArea) < 1e-3);
+        // The part's half-section (its profile closed along the axis) and the bar left behind it.
+        std::vector<turning::Segment> loop;
+        for (const auto& e : p.turned.front().deformed.edges) loop.push_back(e.geometry);
+        const ZR a = loop.front().a, b = loop.back().b;
+        loop.push_back(turning::lineSegment(b, {b.z, 0.0}));
+        loop.push_back(turning::lineSegment({b.z, 0.0}, a));
+        const double part = std::abs(turning::signedArea(loop)) + R * (b.z - (bar.face - bar.length));
+        double before = barArea;
+        for (int k = 0; k < static_cast<int>(p.steps.size()) - 1; ++k) {  // up to finishing
+            const double now = sim::loopsArea(sim::turnedStockAfter(p, k));
+            QVERIFY2(now < before, qPrintable(QString("step %1 took nothing").arg(k + 1)));
+            QVERIFY2(now > part - 0.5, qPrintable(QString("step %1 cut into the part: %2 < %3").arg(k + 1).arg(now).arg(part)));
+            before = now;
+        }
+        // Finished: the part and the bar behind it, less what the nose's fillets keep.
+        QVERIFY2(before - part < 0.5, qPrintable(QString("%1 left over %2").arg(before).arg(part)));
+        // Parted off: the part and the bar's remnant apart, a blade's width less.
+        const auto parted = sim::turnedStockAfter(p, static_cast<int>(p.steps.size()) - 1);
+        QCOMPARE(parted.size(), std::size_t(2));
+        QVERIFY(std::abs(sim::loopsArea(parted) - (before - 3.0 * R)) < 0.5);
     }
 
     void spindleLimitTooLowIsRefused()

@@ -3,6 +3,7 @@
 #include "viz/scene.h"
 
 #include "sim/stock_simulation.h"
+#include "sim/turned_stock.h"
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
 #include "viz/solids.h"
@@ -10,6 +11,8 @@
 
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkPoints.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCoordinate.h>
 #include <vtkLight.h>
@@ -112,6 +115,8 @@ void Scene::clear()
     shownStep_ = -1;
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = nullptr;
+    latheParts_.clear();
+    latheStep_.clear();
     axes_ = nullptr;
     scaleNote_ = nullptr;
 }
@@ -281,6 +286,7 @@ void Scene::buildLathe()
                 actor->GetProperty()->SetAmbient(0.3);
                 actor->GetProperty()->SetDiffuse(0.7);
                 renderer_->AddActor(actor);
+                latheParts_.push_back(actor);
                 run.clear();
             };
             for (const auto& seg : *chain) {
@@ -312,9 +318,66 @@ void Scene::buildLathe()
     renderer_->AddActor(axes_);
 }
 
+void Scene::updateLatheStep()
+{
+    for (auto& a : latheStep_) renderer_->RemoveActor(a);
+    latheStep_.clear();
+    const Step* step = selected_ >= 0 ? &plan_->steps[static_cast<std::size_t>(selected_)] : nullptr;
+    const bool show = step && step->turn;
+    for (auto& a : latheParts_) a->SetVisibility(!show);
+    if (!show) return;
+    // The stock after the step, each loop of the half-section revolved over
+    // the half turn behind the section, so that the section shows.
+    for (const auto& loop : sim::turnedStockAfter(*plan_, selected_)) {
+        std::vector<turning::Segment> chain;
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const turning::ZR a = loop[i], b = loop[(i + 1) % loop.size()];
+            if (turning::dist(a, b) > 1e-9) chain.push_back(turning::lineSegment(a, b));
+        }
+        if (chain.empty()) continue;
+        auto actor = actorFor(revolvedChain(chain, true), palette::kStock);
+        actor->GetProperty()->SetAmbient(0.3);
+        actor->GetProperty()->SetDiffuse(0.7);
+        renderer_->AddActor(actor);
+        latheStep_.push_back(actor);
+    }
+    // The step's path in the section's upper half-plane ((z, 0, r), a hair
+    // in front of it): feeds and rapids through the programmed points.
+    const TurnPath& p = step->turn->path;
+    for (const bool rapids : {false, true}) {
+        auto points = vtkSmartPointer<vtkPoints>::New();
+        auto lines = vtkSmartPointer<vtkCellArray>::New();
+        turning::ZR at = p.start;
+        for (const auto& m : p.moves) {
+            if ((m.kind == TurnMove::Rapid) == rapids) {
+                std::vector<turning::ZR> pts{at, m.end};
+                if (m.kind == TurnMove::ArcCW || m.kind == TurnMove::ArcCCW) {
+                    const auto arc = turning::arcSegment(at, m.end, m.centre, m.kind == TurnMove::ArcCCW);
+                    pts.clear();
+                    const int n = std::max(2, static_cast<int>(std::ceil(turning::sweep(arc) / 0.05)));
+                    for (int i = 0; i <= n; ++i) pts.push_back(turning::pointAt(arc, turning::length(arc) * i / n));
+                }
+                lines->InsertNextCell(static_cast<int>(pts.size()));
+                for (const auto& q : pts) lines->InsertCellPoint(points->InsertNextPoint(q.z, -0.05, q.r));
+            }
+            at = m.end;
+        }
+        auto pd = vtkSmartPointer<vtkPolyData>::New();
+        pd->SetPoints(points);
+        pd->SetLines(lines);
+        auto actor = lineActor(pd, rapids ? palette::kRapid : palette::kFeed, rapids ? 1.0 : 2.0);
+        renderer_->AddActor(actor);
+        latheStep_.push_back(actor);
+    }
+}
+
 void Scene::updateStock()
 {
-    if (!plan_ || lathe_) return;
+    if (!plan_) return;
+    if (lathe_) {
+        updateLatheStep();
+        return;
+    }
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
         if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);

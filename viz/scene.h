@@ -98,6 +98,10 @@ private:
     // A lathe job (a bar, turned profiles): the part revolved, the grinding
     // stock in its own colour, the bar as glass.
     void buildLathe();
+    // A lathe job's selected step: the bar as that step leaves it, revolved
+    // (sim/turned_stock.h), and the step's path in the half-plane drawn
+    // over it; the finished part again when no step is selected.
+    void updateLatheStep();
 
     vtkSmartPointer<vtkRenderer> renderer_;
     std::shared_ptr<const Plan> plan_;
@@ -118,7 +122,8 @@ private:
     int selected_ = -1;
     bool showStock_ = false;
     bool stockBefore_ = false;
-    bool lathe_ = false;  // the plan is a lathe job's: no height field, no paths yet
+    bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane
+    std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;
     MoveRef highlighted_;
 };
 

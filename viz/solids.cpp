@@ -250,7 +250,7 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps)
     return pd;
 }
 
-vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain)
+vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain, bool half)
 {
     // The chain as points in (z, r), arcs every 3°.
     std::vector<std::pair<double, double>> profile;
@@ -262,17 +262,20 @@ vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& 
             profile.emplace_back(p.z, p.r);
         }
     }
+    // A full turn in kTurn columns (the last joining the first), or a half
+    // turn from -90° to 90° in kTurn / 2 + 1 columns.
     constexpr int kTurn = 72;
+    const int columns = half ? kTurn / 2 + 1 : kTurn;
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     for (const auto& [z, r] : profile)
-        for (int k = 0; k < kTurn; ++k) {
-            const double a = 2.0 * std::numbers::pi * k / kTurn;
+        for (int k = 0; k < columns; ++k) {
+            const double a = half ? std::numbers::pi * (static_cast<double>(k) / (columns - 1) - 0.5) : 2.0 * std::numbers::pi * k / kTurn;
             points->InsertNextPoint(z, r * std::cos(a), r * std::sin(a));
         }
     for (std::size_t i = 0; i + 1 < profile.size(); ++i)
-        for (int k = 0; k < kTurn; ++k) {
-            const auto at = [&](std::size_t row, int col) { return static_cast<vtkIdType>(row * kTurn + (col % kTurn)); };
+        for (int k = 0; k < (half ? columns - 1 : kTurn); ++k) {
+            const auto at = [&](std::size_t row, int col) { return static_cast<vtkIdType>(row * columns + (col % columns)); };
             addQuad(cells, at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1));
         }
     auto pd = vtkSmartPointer<vtkPolyData>::New();

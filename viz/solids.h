@@ -42,6 +42,9 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps);
 // revolution with the spindle along VTK's X (Z of the lathe to the right),
 // the radius in Y and Z; arcs sampled every 3° and the turn in 72 steps,
 // for display only, with normals.
-vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain);
+// `half`: only the half turn behind the section through the axis that
+// faces the front view (y >= 0), so that the section and a path drawn in
+// it (at (z, 0, r)) stay in sight.
+vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain, bool half = false);
 
 }  // namespace taiwa::viz
