@@ -22,7 +22,10 @@ using namespace taiwa::turning;
 
 namespace {
 
-TurnedProfile longShaft(int rows)
+// A stepped shaft: `steps` cylinders of `length`, each with its shoulder
+// `rise` up (diameter), a rounding of `rounding` on every fifth shoulder
+// when it is not 0.
+TurnedProfile steppedShaft(int steps, double length, double rise, double rounding)
 {
     TurnedProfile p;
     double x = 10.0, z = 0.0;
@@ -31,19 +34,29 @@ TurnedProfile longShaft(int rows)
     face.id = id++;
     face.x = x;
     p.rows.push_back(face);
-    for (int step = 0; step < 100; ++step) {
+    for (int step = 0; step < steps; ++step) {
         ProfileRow cyl;
         cyl.id = id++;
         cyl.x = x;
-        cyl.z = z -= 5.0;
+        cyl.z = z -= length;
         p.rows.push_back(cyl);
-        if (step == 99) break;
+        if (step == steps - 1) break;
         ProfileRow shoulder;
         shoulder.id = id++;
-        shoulder.x = x += 2.0;
+        shoulder.x = x += rise;
         shoulder.z = z;
+        if (rounding > 0 && step % 5 == 0) {
+            shoulder.corner = CornerKind::Rounding;
+            shoulder.cornerSize = rounding;
+        }
         p.rows.push_back(shoulder);
     }
+    return p;
+}
+
+TurnedProfile longShaft(int rows)
+{
+    TurnedProfile p = steppedShaft(100, 5.0, 2.0, 0.0);
     for (int k = 0; k < rows; ++k) {
         AllowanceRow a;
         a.edge = edgeId(2 + 4 * k);  // every other cylinder
@@ -88,34 +101,7 @@ BENCHMARK(BM_Allowance)->Arg(1)->Arg(10)->Arg(50)->Unit(benchmark::kMillisecond)
 
 // A stepped shaft of 100 elements: 50 cylinders of 2 mm, each with its
 // shoulder 0.5 mm up (radius), rounded every fifth with R0.2 arcs kept as arcs.
-TurnedProfile hundredElements()
-{
-    TurnedProfile p;
-    double x = 10.0, z = 0.0;
-    int id = 1;
-    ProfileRow face;
-    face.id = id++;
-    face.x = x;
-    p.rows.push_back(face);
-    for (int step = 0; step < 50; ++step) {
-        ProfileRow cyl;
-        cyl.id = id++;
-        cyl.x = x;
-        cyl.z = z -= 2.0;
-        p.rows.push_back(cyl);
-        if (step == 49) break;
-        ProfileRow shoulder;
-        shoulder.id = id++;
-        shoulder.x = x += 1.0;
-        shoulder.z = z;
-        if (step % 5 == 0) {
-            shoulder.corner = CornerKind::Rounding;
-            shoulder.cornerSize = 0.2;
-        }
-        p.rows.push_back(shoulder);
-    }
-    return p;
-}
+TurnedProfile hundredElements() { return steppedShaft(50, 2.0, 1.0, 0.2); }
 
 void BM_TurningProcess(benchmark::State& state)
 {

@@ -19,13 +19,7 @@ ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& 
     case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
     case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
     case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
-    case StepKind::Facing:
-    case StepKind::CentreDrilling:
-    case StepKind::Drilling:
-    case StepKind::TurnRoughing:
-    case StepKind::Grooving:
-    case StepKind::TurnFinishing:
-    case StepKind::Parting: break;  // turning steps get their paths from core/turning/
+    default: break;  // turning steps (isTurning) get their paths from core/turning/
     }
     throw std::logic_error("no milling tool path for step " + step.label());
 }
@@ -99,14 +93,9 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
         const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
         return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
     }
-    case StepKind::Facing:
-    case StepKind::CentreDrilling:
-    case StepKind::Drilling:
-    case StepKind::TurnRoughing:
-    case StepKind::Grooving:
-    case StepKind::TurnFinishing:
-    case StepKind::Parting: return step.turn ? static_cast<double>(step.turn->path.moves.size()) : 10;
+    default: break;  // turning steps (isTurning) come with their moves
     }
+    if (step.turn) return static_cast<double>(step.turn->path.moves.size());
     return 10;
 }
 
