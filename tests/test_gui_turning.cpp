@@ -13,12 +13,14 @@
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
+#include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/profile_editor.h"
 #include "ui/profile_view.h"
 #include "ui/station_window.h"
 #include "ui/unit_list_panel.h"
 
+#include <QPlainTextEdit>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -243,6 +245,24 @@ private slots:
         QCOMPARE(view->profile().edges.size(), std::size_t(10));
         settle(w);
         QVERIFY(w.planRunner()->fullPlan() && w.planRunner()->fullPlan()->ok());
+    }
+
+    // The NC view shows the lathe tape of the job on view, and a step
+    // selected in the step list marks its first block.
+    void latheTapeInTheNcView()
+    {
+        StationWindow w(test::sourcePath("resources/samples/lathe-grooved-shaft.taiwa"));
+        w.resize(1600, 1000);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        settle(w);
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan && plan->ok());
+        QCOMPARE(plan->steps.size(), std::size_t(5));
+        const QString nc = w.ncView()->text()->toPlainText();
+        QVERIFY2(nc.contains("G18 G7 G21 G40 G80 G90 G54 G95"), qPrintable(nc.left(400)));
+        QVERIFY(nc.contains("(STEP 4: UNIT 1 \"Outside\" TURN GROOVING I T105)"));
+        QVERIFY(nc.contains("G42 G1") && nc.contains("G96 D4500 S"));
     }
 
     void screenshot()

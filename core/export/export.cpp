@@ -223,8 +223,8 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         {".nc", program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
     };
-    // A lathe job has no tape yet (turning steps and lathe NC come with the
-    // turning process): its sheet and steps.json hold the profile to cut.
+    // A lathe job whose steps are all turned off has no tape: its sheet and
+    // steps.json hold the profile to cut.
     if (plan.mmJob.bar && plan.steps.empty()) std::erase_if(files, [](const auto& f) { return f.first == ".nc" || f.first == ".tape.txt"; });
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and

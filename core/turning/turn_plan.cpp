@@ -667,21 +667,35 @@ private:
     {
         // A line shorter than two nose radii into a concave corner: the
         // contour runs from its start straight to the point two nose radii
-        // on (through whatever lines and arcs follow).
+        // on (through whatever lines and arcs follow), or to the first
+        // outside corner before it.
         for (std::size_t k = 0; k + 1 < contour.size(); ++k) {
             const Segment& A = contour[k];
             if (A.arc || length(A) >= 2.0 * rn) continue;
             const ZR ta = tangentAtEnd(A), tb = tangentAtStart(contour[k + 1]);
             if (cross(ta, tb) * (inner_ ? -1.0 : 1.0) >= -1e-9) continue;  // a left turn (outer) goes round the material: convex
+            // Two nose radii on, or the first outside corner before that: a
+            // chord past an outside corner would cut through the material
+            // the corner holds.
+            const auto convexAfter = [&](std::size_t e) {
+                return e + 1 < contour.size() &&
+                       cross(tangentAtEnd(contour[e]), tangentAtStart(contour[e + 1])) * (inner_ ? -1.0 : 1.0) > 1e-9;
+            };
             double left = 2.0 * rn;
             std::size_t m = k + 1;
-            while (m < contour.size() && length(contour[m]) <= left) left -= length(contour[m++]);
+            while (m < contour.size() && length(contour[m]) <= left && !convexAfter(m)) left -= length(contour[m++]);
             if (m >= contour.size()) break;
-            const ZR q = pointAt(contour[m], left);
-            const Segment rest = piece(contour[m], q, contour[m].b);
+            const bool corner = length(contour[m]) <= left && convexAfter(m);
+            const ZR q = corner ? contour[m].b : pointAt(contour[m], left);
             const Segment chord = lineSegment(A.a, q);
-            contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
-            contour.insert(contour.begin() + static_cast<long>(k), {chord, rest});
+            if (corner) {
+                contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
+                contour.insert(contour.begin() + static_cast<long>(k), chord);
+            } else {
+                const Segment rest = piece(contour[m], q, contour[m].b);
+                contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
+                contour.insert(contour.begin() + static_cast<long>(k), {chord, rest});
+            }
         }
         for (int guard = 0; guard < 1000; ++guard) {
             bool changed = false;

@@ -25,8 +25,8 @@
 //   deformed profile (less the tolerance), and every element of origin
 //   "original" or "moved" longer than two nose radii (not counting the
 //   front face the facing cuts) touched: the nose-centre path comes to it
-//   at the nose radius within the tolerance (or a grooving blade's edge
-//   lies on it).
+//   at the nose radius within the tolerance (or grooving or parting
+//   blades or drills of the unit lie on all of it).
 // - Roughing: the nose never nearer the profile than the step's smaller
 //   finishing allowance (turn->allowanceX, allowanceZ) less the tolerance.
 // - Rapids: the bar's half-section (bar.diameter / 2 from bar.face back
@@ -40,6 +40,14 @@
 // - Grooving: the last feed before the rapid retract is the withdrawal:
 //   turn->withdrawal long and along the profile's outward normal where the
 //   blade ended, both within the tolerance.
+// - Every step cuts, each cut with the step's own tool, in G18; a tool is
+//   used with one orientation (the tool table's).
+// Not judged, reported: how deep an insert's whole cutting corner (the nose
+// and both edges, ISO shape angle and holder approach angle) reaches into
+// the part where its nose does not: into the deformed profile, and into
+// what must stay after grinding (the profile as drawn, plan.turned[k].profile,
+// and the deformed profile both); the planner lets the finishing insert's
+// edge touch grinding stock beside allowance edges it cannot follow.
 #pragma once
 
 #include "model/geometry.h"
@@ -60,23 +68,30 @@ namespace taiwa::test {
 // from the first step that uses the tool.
 std::string latheToolTable(const Plan& plan);
 
-// LinuxCNC tool orientation 1-9: the controlled point minus the nose centre,
-// as (z, r) in a Point2 {x = z, y = r}.
+// LinuxCNC tool orientation 1-4: the controlled point minus the nose centre,
+// as (z, r) in a Point2 {x = z, y = r} (2: X -r, Z -r; 3: X +r, Z -r;
+// 1: X -r, Z +r; 4: X +r, Z +r); any other: (0, 0).
 Point2 orientationOffset(int orientation, double noseRadius);
 
 struct LatheOracleOptions {
     double sample = 0.005;     // mm between checked points along a move
     double cell = 0.02;        // mm between the stock's columns along Z
-    double tolerance = 1e-3;   // mm
+    double tolerance = 1e-3;   // mm (an inch tape resolves 0.0001 in = 2.54 µm: judge it to 2.5 µm)
 };
 
 struct LatheVerdict {
     QStringList problems;      // one sentence each; empty: the tape passes
     double worstGouge = -1e9;  // deepest entry of any cutting move into its unit's material [mm] (negative: the closest clearance)
     double worstRapid = -1e9;  // largest overlap of a rapid with the stock left [mm]
+    QString worstRapidMove;    // which rapid, where
     double closestRoughing = 1e9;  // roughing: least (nose-to-profile distance - allowance) [mm]
     int feeds = 0, rapids = 0;     // moves judged
     QStringList touched;       // "unit 1 E3 0.4000" per element checked for finishing contact
+    // Not judged, for the reader: the deepest entry into the part of a
+    // turning insert's whole cutting corner (nose and both edges 5 mm long,
+    // the ISO shape's tip angle and the holder's approach angle), per step,
+    // where it is more than the tolerance: "step 3 Finishing I 0.1234 at ...".
+    QStringList insertBody;
 };
 
 // Judges an rs274 run of the plan's tape (moves in mm, or in inches: then
