@@ -270,10 +270,7 @@ void StationWindow::wire()
     connect(runner_, &PlanRunner::stepsPlanned, steps_, &StepPanel::setPlan);
     connect(runner_, &PlanRunner::programReady, this,
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
-                if (plan && plan->mmJob.bar)  // a lathe job: no tape yet
-                    nc_->setMessage(tr("A lathe job has no NC program yet: turning steps and lathe NC come with the "
-                                       "turning process. The sheet and steps.json of an export hold the profile to cut."));
-                else if (plan) nc_->setProgram(nc, lines);
+                if (plan) nc_->setProgram(nc, lines);  // a milling or a lathe tape
                 else if (!hasErrors(diagnostics_)) nc_->setMessage(nc);  // with input errors the last program stays, marked stale
                 onProgram(plan);
                 showStale();

@@ -614,10 +614,6 @@
             <translation>ユニット %1 の名前を変更</translation>
         </message>
         <message>
-            <source>A lathe job has no NC program yet: turning steps and lathe NC come with the turning process. The sheet and steps.json of an export hold the profile to cut.</source>
-            <translation>旋盤ジョブにはまだ NC プログラムがありません: 旋削工程と旋盤用 NC は旋削プロセスで追加されます。出力される作業指示書と steps.json に切削形状があります。</translation>
-        </message>
-        <message>
             <source>Dialect %1</source>
             <translation>方言 %1</translation>
         </message>

@@ -614,10 +614,6 @@
             <translation>重命名单元 %1</translation>
         </message>
         <message>
-            <source>A lathe job has no NC program yet: turning steps and lathe NC come with the turning process. The sheet and steps.json of an export hold the profile to cut.</source>
-            <translation>车床作业尚无 NC 程序:车削工步和车床 NC 将随车削工艺提供。导出的作业指导书和 steps.json 中包含待切削的轮廓。</translation>
-        </message>
-        <message>
             <source>Dialect %1</source>
             <translation>方言 %1</translation>
         </message>
