@@ -395,14 +395,20 @@ private:
         // The insert that reaches every element; of those the smallest nose
         // radius (the finest finish), then the lowest number. Failing that,
         // the one reaching most, the rest left for a grooving blade.
+        // Of equal reach over the part, the one that also follows more of
+        // the allowance's relief grooves (fewer left).
         const Tool* best = nullptr;
-        int bestMissing = 1 << 30;
+        int bestMissing = 1 << 30, bestGrooves = 1 << 30;
         for (const Tool* t : inserts()) {
             const auto ok = reachedBy(*t);
             const int missing = static_cast<int>(std::count(ok.begin() + static_cast<long>(first_), ok.end(), false));
-            if (!best || missing < bestMissing || (missing == bestMissing && t->cornerRadius < best->cornerRadius - kTol)) {
+            int grooves = 0;
+            for (std::size_t i = first_; i < last_; ++i) grooves += !mustReach(i) && firstUnreached(*t, i, i + 1) >= 0;
+            if (!best || missing < bestMissing || (missing == bestMissing && grooves < bestGrooves) ||
+                (missing == bestMissing && grooves == bestGrooves && t->cornerRadius < best->cornerRadius - kTol)) {
                 best = t;
                 bestMissing = missing;
+                bestGrooves = grooves;
             }
         }
         if (!best) {
@@ -626,6 +632,7 @@ private:
             if (dist(a, b) > kTol) contour.push_back(lineSegment(a, b));
             i = run->second;
         }
+        crossGrindingStockRuns(contour, tool);
         reachableCorners(contour, rn);
         TurnPath& p = ts.path;
         const ZR first = contour.front().a;
@@ -655,6 +662,65 @@ private:
 
     // The air side's unit normal of a line's direction.
     ZR airNormal(ZR t) const { return inner_ ? leftNormal(t) : ZR{t.r, -t.z}; }
+
+    // Runs of the allowance's own edges (relief grooves) the finishing
+    // insert cannot follow: followed with compensation, the nose would cut
+    // them but the insert's edges would cut what stands beside them, which
+    // may be the finished part. The contour crosses such a run on a chord
+    // the insert can follow, from before the run to after it, clear of the
+    // part; the groove is left (a note says so). Where no such chord is
+    // found within a few nose radii, the run is followed as drawn.
+    void crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& tool)
+    {
+        const auto g = *insertGeometry(tool);
+        const double rn = g.noseRadius;
+        std::vector<std::string> left;
+        for (std::size_t i = first_; i < last_;) {
+            if (mustReach(i) || firstUnreached(tool, i, i + 1) < 0) {
+                ++i;
+                continue;
+            }
+            // The whole run of the allowance's edges around it (a relief
+            // groove is several), from one edge of the part to the next.
+            std::size_t j = i;
+            while (j < last_ && !mustReach(j)) ++j;
+            while (i > first_ && !mustReach(i - 1)) --i;
+            const ZR a = chain_[i].a, b = chain_[j - 1].b;
+            // The run in the contour: the element starting at a, the one ending at b.
+            std::size_t ka = contour.size(), kb = contour.size();
+            for (std::size_t k = 0; k < contour.size(); ++k) {
+                if (ka == contour.size() && dist(contour[k].a, a) < 1e-9) ka = k;
+                if (dist(contour[k].b, b) < 1e-9) kb = k;
+            }
+            if (ka >= contour.size() || kb >= contour.size() || kb < ka || ka == 0 || kb + 1 >= contour.size()) {
+                i = j;
+                continue;
+            }
+            for (double reach = 2.0 * rn; reach <= 16.0 * rn; reach *= 2.0) {
+                const Segment& before = contour[ka - 1];
+                const Segment& after = contour[kb + 1];
+                if (length(before) < reach || length(after) < reach) break;
+                const ZR p = pointAt(before, length(before) - reach), q = pointAt(after, reach);
+                const Segment chord = lineSegment(p, q);
+                if (!reaches(g, chord, side_)) continue;
+                bool clear = true;
+                for (const auto& e : chain_)
+                    for (const ZR x : crossings(e, chord))
+                        clear = clear && (dist(x, p) < 1e-7 || dist(x, q) < 1e-7);
+                if (!clear) continue;
+                const Segment head = piece(before, before.a, p), tail = piece(after, q, after.b);
+                contour.erase(contour.begin() + static_cast<long>(ka) - 1, contour.begin() + static_cast<long>(kb) + 2);
+                contour.insert(contour.begin() + static_cast<long>(ka) - 1, {head, chord, tail});
+                left.push_back(d_.edges[i].id + (j - i > 1 ? "…" + d_.edges[j - 1].id : ""));
+                break;
+            }
+            i = j;
+        }
+        if (!left.empty())
+            note(fmt::format("{} of the grinding allowance cannot be followed by {} and is left (the finishing contour "
+                             "crosses it); cut it with a form tool or grind it out",
+                             fmt::join(left, ", "), toolWords(tool)));
+    }
 
     // A concave corner the nose can sit in only if both lines are long
     // enough to hold it (the control refuses the move otherwise: "concave
