@@ -43,8 +43,6 @@ const char* toKey(StepKind k)
     return "";
 }
 
-bool isTurning(StepKind k) { return k >= StepKind::Facing; }
-
 namespace {
 std::string roman(int n)
 {

@@ -28,7 +28,6 @@ enum class StepKind {
     Grooving,
     Parting,
 };
-bool isTurning(StepKind k);
 const char* toString(StepKind k);  // "roughing"
 const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
                                    // turning: "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "part")

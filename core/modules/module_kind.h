@@ -40,6 +40,7 @@ struct UnitPlanContext {
     const Job* job = nullptr;          // the whole job in mm (a lathe unit looks at the bar and the other units)
     const Machine* machine = nullptr;  // the job's machine, when known
     LengthUnit shownUnit = LengthUnit::Millimetre;  // messages quote lengths in it
+    const TurnedPart* turned = nullptr;  // a turning unit: what its turned() made, for plan() to cut
 };
 
 class ModuleKind {

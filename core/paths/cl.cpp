@@ -19,7 +19,7 @@ ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& 
     case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
     case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
     case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
-    default: break;  // turning steps (isTurning) get their paths from core/turning/
+    default: break;  // turning steps (Step::turn) get their paths from core/turning/
     }
     throw std::logic_error("no milling tool path for step " + step.label());
 }
@@ -93,7 +93,7 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
         const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
         return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
     }
-    default: break;  // turning steps (isTurning) come with their moves
+    default: break;  // turning steps (Step::turn) come with their moves
     }
     if (step.turn) return static_cast<double>(step.turn->path.moves.size());
     return 10;

@@ -48,13 +48,16 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     const Machine* machine = findMachine(plan.mmJob.machine);
     for (const int u : plan.unitOrder) {
         const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
-        const UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
+        UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
+        // A turning unit's deformed profile first: its steps cut it.
+        std::optional<TurnedPart> part = moduleKind(module).turned(module, ctx);
+        if (part) ctx.turned = &*part;
         auto steps = moduleKind(module).plan(module, ctx, plan.diagnostics);
         if (auto setup = moduleKind(module).setup(module, ctx)) {
             setup->workOffset = plan.job.workOffset;
             plan.setups.push_back(std::move(*setup));
         }
-        if (auto part = moduleKind(module).turned(module, ctx)) {
+        if (part) {
             part->name = plan.job.units[static_cast<std::size_t>(u)].name;
             plan.turned.push_back(std::move(*part));
         }

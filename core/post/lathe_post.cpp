@@ -44,7 +44,7 @@ std::string upper(std::string s)
 class LatheWriter {
 public:
     LatheWriter(const post::Dialect& d, const PostOptions& o)
-        : d_(d), o_(o), w_(latheWords(d)), inch_(o.units == LengthUnit::Inch)
+        : d_(d), w_(latheWords(d)), inch_(o.units == LengthUnit::Inch)
     {
         decimals_ = inch_ ? d.lengthDecimals.inch : d.lengthDecimals.mm;
     }
@@ -153,7 +153,6 @@ public:
 
 private:
     const post::Dialect& d_;
-    const PostOptions& o_;
     LatheWords w_;
     bool inch_;
     int decimals_ = 3;
@@ -165,28 +164,26 @@ private:
     ZR at_{};
 };
 
-// The roughing cycle's contour as blocks (no numbers): from the cycle's
-// start level onto the contour's first point, then each element.
-std::vector<std::pair<std::string, std::optional<std::string>>> cycleContour(const LatheWriter& w, const TurnCycle& c, bool typeTwo)
+// The roughing cycle's contour as blocks (no numbers), written through the
+// writer's number format: from the cycle's start level onto the contour's
+// first point (with Z too for a LinuxCNC subroutine, X alone for FANUC's
+// type I P block), then each element.
+std::vector<std::string> cycleContour(const LatheWriter& w, const TurnCycle& c, bool withZ)
 {
-    // (motion words, optional arc words) per element; written through the
-    // writer's number format.
-    std::vector<std::pair<std::string, std::optional<std::string>>> out;
+    std::vector<std::string> out;
     const ZR first = c.contour.front().a;
-    out.push_back({typeTwo ? "G0 " + w.x(first.r) + " " + w.z(c.start.z) : "G0 " + w.x(first.r), std::nullopt});
-    ZR at{c.start.z, first.r};
-    if (std::abs(at.z - first.z) > 1e-9) out.push_back({"G1 " + w.z(first.z), std::nullopt});
-    at = first;
+    out.push_back(withZ ? "G0 " + w.x(first.r) + " " + w.z(c.start.z) : "G0 " + w.x(first.r));
+    if (std::abs(c.start.z - first.z) > 1e-9) out.push_back("G1 " + w.z(first.z));
+    ZR at = first;
     for (const auto& s : c.contour) {
         if (s.arc) {
-            out.push_back({std::string(s.ccw ? "G3 " : "G2 ") + w.x(s.b.r) + " " + w.z(s.b.z) + " I" + w.num(s.centre.r - at.r) + " K" +
-                               w.num(s.centre.z - at.z),
-                           std::nullopt});
+            out.push_back(std::string(s.ccw ? "G3 " : "G2 ") + w.x(s.b.r) + " " + w.z(s.b.z) + " I" + w.num(s.centre.r - at.r) + " K" +
+                          w.num(s.centre.z - at.z));
         } else {
             std::string b = "G1";
             if (std::abs(s.b.r - at.r) > 1e-9) b += " " + w.x(s.b.r);
             if (std::abs(s.b.z - at.z) > 1e-9) b += " " + w.z(s.b.z);
-            if (b != "G1") out.push_back({b, std::nullopt});
+            if (b != "G1") out.push_back(b);
         }
         at = s.b;
     }
@@ -226,7 +223,7 @@ public:
                     w_.source({static_cast<int>(i), -1});
                     const auto& c = *steps_[i].turn->path.cycle;
                     w_.line(fmt::format("o{} sub", subNumber(i)));
-                    for (const auto& [b, arc] : cycleContour(w_, c, true)) w_.line("  " + b);
+                    for (const auto& b : cycleContour(w_, c, true)) w_.line("  " + b);
                     w_.line(fmt::format("o{} endsub", subNumber(i)));
                 }
     }
@@ -234,7 +231,6 @@ public:
     void step(std::size_t index, const Step& s)
     {
         const TurnStep& ts = *s.turn;
-        const Tool* tool = findTool(lib_, s.tool->toolId);
         const int station = stationOf(s.tool->toolId);
         w_.source({static_cast<int>(index), -1});
         const auto u = static_cast<std::size_t>(s.unit);
@@ -260,7 +256,6 @@ public:
                 coolant_ = true;
             }
         }
-        (void)tool;
         const TurnPath& p = ts.path;
         w_.rapid(p.start);
         if (usesCycle(s)) {
@@ -340,7 +335,7 @@ private:
             w_.block(fmt::format("G71 U{} R{}", w_.num(c.depthOfCut), w_.num(c.retract)));
             w_.block(fmt::format("G71 P{} Q{} U{} W{} {}", p, q, w_.num(2.0 * c.allowanceX * (c.inner ? -1.0 : 1.0)),
                                  w_.num(c.allowanceZ), w_.feedWord(cut.feedPerRev)));
-            for (const auto& [b, arc] : blocks) w_.block(b);
+            for (const auto& b : blocks) w_.block(b);
         } else {
             w_.block(fmt::format("G71 Q{} {} {} D{} I{} R{} {}", subNumber(index), w_.x(c.start.r), w_.z(c.start.z),
                                  w_.num(c.allowanceX), w_.num(c.depthOfCut), w_.num(c.retract), w_.feedWord(cut.feedPerRev)));

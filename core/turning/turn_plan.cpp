@@ -76,7 +76,7 @@ public:
         if (inner_) planDrilling();
         if (drilledToSize_ || !out_.problems.empty()) return std::move(out_);
         const Tool* finishing = chooseFinishing();
-        planRoughing(finishing);
+        planRoughing();
         if (finishing) planFinishing(*finishing);
         planGrooves();
         if (!inner_) planParting();
@@ -132,9 +132,8 @@ private:
         c.maxRpm = q_.maxRpm;
         c.feedPerRev = cd->feedPerTooth;
         c.plungeFeedPerRev = cd->feedPerTooth * std::clamp(cd->plungeFactor, 0.1, 1.0);
-        if (!css) {
+        if (!css) {  // drills: one feed, at the rpm of their diameter
             c.rpm = std::min(q_.maxRpm, std::round(1000.0 * cd->surfaceSpeed / (std::numbers::pi * std::max(tool.diameter, 0.1))));
-            c.feedPerRev = cd->feedPerTooth;
             c.plungeFeedPerRev = cd->feedPerTooth;
         }
         return c;
@@ -425,7 +424,7 @@ private:
 
     // ---- roughing ------------------------------------------------------------
 
-    void planRoughing(const Tool* finishing)
+    void planRoughing()
     {
         if (skipped(kRough)) return;
         const Tool* tool = pinned(kRough);
@@ -504,7 +503,7 @@ private:
                         left = true;
                         continue;
                     }
-                    w.rapid({w.path.moves.empty() ? zApproach : currentZ(w), rSafe});
+                    w.rapid({currentZ(w), rSafe});
                     w.rapid({b, rSafe});
                     w.rapid({b, rPrev});
                     w.feed({b, rc}, FeedKind::Plunge);
@@ -534,7 +533,6 @@ private:
         // clear of every element with the tip on the contour plus the
         // allowance (docs/turning.md).
         if (const auto cycle = roughingCycle(*tool, surface)) ts.path.cycle = *cycle;
-        (void)finishing;
         addStep(StepKind::TurnRoughing, MachiningType::TurnRoughing, *tool, reason, std::move(ts));
     }
 
@@ -637,7 +635,6 @@ private:
         TurnPath& p = ts.path;
         const ZR first = contour.front().a;
         const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};
-        const ZR tip = ts.tipFromCentre;
         p.start = {entry.z, safeR()};
         // To the entry point with the nose clear, then compensation on along -Z onto the contour.
         p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
@@ -656,7 +653,6 @@ private:
         p.moves.push_back({TurnMove::Rapid, {last.z + t_.clearance, safeR()}, {}, FeedKind::Cut});
         // Out of a bore along the axis before the turret moves on.
         if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
-        (void)tip;
         addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));
     }
 

@@ -269,12 +269,14 @@ protected:
     std::vector<Step> planInput(const TurnUnit& t, const UnitPlanContext& ctx, Diagnostics& out) const override
     {
         if (!ctx.job || !ctx.job->bar) return {};
-        const ResolvedProfile profile = resolveProfile(t.profile).profile;
-        const Deformation d = applyAllowances(profile, t.profile.allowances, allowanceOptions(t.profile, ctx.library, LengthUnit::Millimetre));
-        if (!d.ok() || d.profile.edges.empty()) return {};
+        // The deformed profile turned() made (the pipeline hands it on), or made here.
+        std::optional<TurnedPart> own;
+        const TurnedPart* part = ctx.turned;
+        if (!part) part = &own.emplace(*turned(ModuleInput(t), ctx));
+        if (part->deformed.edges.empty()) return {};
         TurnPlanRequest q;
         q.unit = ctx.unit;
-        q.deformed = &d.profile;
+        q.deformed = &part->deformed;
         q.bar = *ctx.job->bar;
         q.library = &ctx.library;
         q.material = ctx.material;
