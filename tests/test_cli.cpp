@@ -171,11 +171,12 @@ private slots:
         QVERIFY(readFile(dir.filePath("a/fanuc-job.nc")).starts_with("%\nO1000"));
         QCOMPARE(runTaiwa({"export", file, "--out", dir.filePath("b"), "--dialect", "linuxcnc"}).exitCode, 0);
         QVERIFY(!readFile(dir.filePath("b/fanuc-job.nc")).starts_with("%"));
-        job["dialect"] = "heidenhain";
+        job["dialect"] = "mazatrol";
         writeFile(file, job.dump());
         auto r = runTaiwa({"check", file});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("job dialect: unknown dialect 'heidenhain'; this program posts fanuc, linuxcnc"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("job dialect: unknown dialect 'mazatrol'; this program posts fanuc, linuxcnc, haas, sinumerik, heidenhain"),
+                 qPrintable(r.err));
         job["dialect"] = "fanuc";
         job["workOffset"] = "G59.1";
         writeFile(file, job.dump());
@@ -319,7 +320,10 @@ private slots:
         const QStringList env{"XDG_CONFIG_HOME=" + config.path()};
         auto r = runTaiwa({"--list-dialects"}, env);
         QCOMPARE(r.out, QString("fanuc\tFANUC 0i/30i-style ISO G-code (machining centre)\tbuilt in: dialects/fanuc.json\n"
-                                "linuxcnc\tLinuxCNC 2.9 (rs274ngc)\tbuilt in: dialects/linuxcnc.json\n"));
+                                "linuxcnc\tLinuxCNC 2.9 (rs274ngc)\tbuilt in: dialects/linuxcnc.json\n"
+                                "haas\tHaas NGC mill (FANUC-like ISO G-code)\tbuilt in: dialects/haas.json\n"
+                                "sinumerik\tSiemens SINUMERIK 840D sl / 828D, ISO mode off\tbuilt in: dialects/sinumerik.json\n"
+                                "heidenhain\tHEIDENHAIN TNC 640/620/530, Klartext (conversational)\tbuilt in: dialects/heidenhain.json\n"));
         const QString folder = config.filePath("taiwa/dialects");
         QVERIFY(QDir().mkpath(folder));
         json shop = json::parse(readFile(sourcePath("resources/dialects/fanuc.json")));

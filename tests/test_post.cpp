@@ -509,7 +509,7 @@ private slots:
 
     void refusals()
     {
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), library(), options("heidenhain")));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), library(), options("mazatrol")));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(steps(), {library()[0]}, options("fanuc")));
         auto o = options("fanuc");
         o.material = "titanium";  // no cutting data
@@ -517,7 +517,7 @@ private slots:
         auto s = steps();
         s[0].path.reset();
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, postProcess(s, library(), options("fanuc")));
-        QCOMPARE(dialectNames(), (std::vector<std::string>{"fanuc", "linuxcnc"}));
+        QCOMPARE(dialectNames(), (std::vector<std::string>{"fanuc", "linuxcnc", "haas", "sinumerik", "heidenhain"}));
         QVERIFY(isDialect("fanuc") && isDialect("linuxcnc") && !isDialect("mazatrol"));
     }
 };

@@ -5,6 +5,7 @@
 #include "export/sheet_pdf.h"
 #include "io/job_io.h"
 #include "pipeline/pipeline.h"
+#include "post/dialect.h"
 #include "post/probe_program.h"
 #include "post/post.h"
 #include "sheet/sheet.h"
@@ -201,6 +202,14 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     if (!plan.ok()) return Failure{"the job did not pass input processing; nothing was written"};
     if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset))
         return Failure{why->message + "; nothing was written"};
+    const post::Dialect* dialect = post::findDialect(options.dialect);
+    if (!dialect) return Failure{"unknown dialect '" + options.dialect + "'; nothing was written"};
+    if (auto why = plan.mmJob.bar ? post::millingOnly(*dialect, "a lathe job's tape")
+                   : !plan.setups.empty() ? post::millingOnly(*dialect, "a probing unit's programs")
+                                          : std::nullopt)
+        return Failure{*why + "; nothing was written"};
+    // The tape's file: STEM.nc, or the control's own kind (STEM.h for HEIDENHAIN).
+    const std::string tape = "." + dialect->fileExtension;
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
     if (ec) return Failure{"cannot create folder " + outDir + ": " + ec.message()};
@@ -220,12 +229,12 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     if (!set) return Failure{set.error() + "; nothing was changed in " + outDir};
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     std::vector<std::pair<std::string, std::string>> files = {
-        {".nc", program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
+        {tape, program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
     };
     // A lathe job whose steps are all turned off has no tape: its sheet and
     // steps.json hold the profile to cut.
-    if (plan.mmJob.bar && plan.steps.empty()) std::erase_if(files, [](const auto& f) { return f.first == ".nc" || f.first == ".tape.txt"; });
+    if (plan.mmJob.bar && plan.steps.empty()) std::erase_if(files, [&](const auto& f) { return f.first == tape || f.first == ".tape.txt"; });
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
     // STEM.u<unit>.probe.nc, with O-numbers after the tape's.

@@ -9,6 +9,7 @@
 #include "io/job_messages.h"
 #include "machine/machine.h"
 #include "modules/registry.h"
+#include "post/dialect.h"
 #include "post/post.h"
 
 #include <algorithm>
@@ -172,7 +173,8 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     const auto names = dialectNames();
     if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
         out.push_back(jobError("workOffset", "'" + job.workOffset +
-                                                 "' is not a work offset: give G54 to G59, G59.1 to G59.3 or G54.1 P1 to P48"));
+                                                 "' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) "
+                                                 "or G505 to G599 (SINUMERIK)"));
     // The job's own dialect: one this program posts, whose controller has the
     // job's work offset.
     else if (!job.dialect.empty()) {
@@ -182,6 +184,14 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
             out.push_back(jobError("dialect", "unknown dialect '" + job.dialect + "'; this program posts " + known));
         } else if (auto why = workOffsetProblem(job.dialect, job.workOffset)) {
             out.push_back(*why);
+        } else if (const post::Dialect* d = post::findDialect(job.dialect)) {
+            // Lathe tapes and probing cycles are written in the G-code dialects.
+            const bool probing = std::any_of(mm.units.begin(), mm.units.end(),
+                                             [](const auto& u) { return u.module.name() == "PROBE"; });
+            if (auto refusal = lathe ? post::millingOnly(*d, "a lathe job's tape")
+                               : probing ? post::millingOnly(*d, "a probing unit's programs")
+                                         : std::nullopt)
+                out.push_back(jobError("dialect", *refusal));
         }
     }
 

@@ -152,6 +152,12 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     post.machine = plan.job.machine;
     post.workOffset = plan.job.workOffset;
     for (const auto& u : plan.job.units) post.unitNames.push_back(u.name);
+    if (!plan.mmJob.bar) {
+        const Stock& s = plan.mmJob.stock;
+        post.hasStock = true;
+        post.stockMin = {s.x, s.y, -s.height};
+        post.stockMax = {s.x + s.width, s.y + s.length, 0.0};
+    }
     if (plan.mmJob.bar) {
         // Clear of the bar for the turret to index: 25 mm above it and 50 mm in front of its face.
         post.latheChangeX = plan.mmJob.bar->diameter + 50.0;

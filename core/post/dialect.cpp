@@ -9,11 +9,25 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <optional>
 #include <regex>
 #include <stdexcept>
 
 namespace taiwa::post {
 
+
+namespace {
+
+// A range entry of moreWorkOffsets ("G505..G599") as its two numbers.
+std::optional<std::pair<int, int>> rangeOf(const std::string& entry)
+{
+    static const std::regex range(R"(G([0-9]+)\.\.G([0-9]+))");
+    std::smatch m;
+    if (!std::regex_match(entry, m, range)) return std::nullopt;
+    return std::pair{std::stoi(m[1].str()), std::stoi(m[2].str())};
+}
+
+}  // namespace
 
 std::string workOffsetWords(const Dialect& d, const std::string& requested)
 {
@@ -23,32 +37,60 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
         const auto u = static_cast<unsigned char>(c);
         if (!std::isspace(u)) code += static_cast<char>(std::toupper(u));
     }
-    std::string offers = "G54 to G59";
-    for (std::size_t i = 0; i < d.moreWorkOffsets.size(); ++i)
-        offers += (i + 1 == d.moreWorkOffsets.size() ? " and " : ", ") + d.moreWorkOffsets[i];
-    if (d.extendedWorkOffsets > 0) offers += fmt::format(" and G54.1 P1 to P{}", d.extendedWorkOffsets);
+    std::string offers = d.plainWorkOffsets == 1 ? std::string("G54") : fmt::format("G54 to G{}", 53 + d.plainWorkOffsets);
+    for (std::size_t i = 0; i < d.moreWorkOffsets.size(); ++i) {
+        const auto range = rangeOf(d.moreWorkOffsets[i]);
+        offers += (i + 1 == d.moreWorkOffsets.size() ? " and " : ", ") +
+                  (range ? fmt::format("G{} to G{}", range->first, range->second) : d.moreWorkOffsets[i]);
+    }
+    const auto extendedWords = [&](int n) { return fmt::format(fmt::runtime(d.extendedWorkOffset), fmt::arg("n", n)); };
+    if (d.extendedWorkOffsets > 0) {
+        // "G54.1 P1 to P48": the last word of the template, the number in it.
+        const std::string last = extendedWords(d.extendedWorkOffsets);
+        offers += fmt::format(" and {} to {}", extendedWords(1), last.substr(last.rfind(' ') + 1));
+    }
     const auto refuse = [&](const std::string& why) {
         return std::invalid_argument(
             fmt::format("work offset '{}' cannot be posted for {}: {}; {} offers {}", requested, d.name, why, d.name,
                         offers));
     };
 
-    static const std::regex plain(R"(G5[4-9])"), more(R"(G59\.[0-9])"), extended(R"(G54\.1P([0-9]{1,3}))");
+    // G54.1 P7 (FANUC) and G154 P7 (Haas) are the same extended offset.
+    static const std::regex plain(R"(G5[4-9])"), other(R"(G59\.[0-9]|G5[0-9]{2})"), extended(R"(G(54\.1|154)P([0-9]{1,3}))");
     std::smatch m;
-    if (std::regex_match(code, plain)) return code;
-    if (std::regex_match(code, more)) {
-        if (std::find(d.moreWorkOffsets.begin(), d.moreWorkOffsets.end(), code) == d.moreWorkOffsets.end())
-            throw refuse(fmt::format("{} has no {}", d.name, code));
-        return code;
+    if (std::regex_match(code, plain)) {
+        if (code[2] - '4' < d.plainWorkOffsets) return code;
+        throw refuse(fmt::format("{} has no {}", d.name, code));
     }
     if (std::regex_match(code, m, extended)) {
         if (d.extendedWorkOffsets == 0)
-            throw refuse(fmt::format("{} has no G54.1 P (FANUC's extended work offsets)", d.name));
-        const int p = std::stoi(m[1].str());
-        if (p < 1 || p > d.extendedWorkOffsets) throw refuse(fmt::format("there is no G54.1 P{}", p));
-        return fmt::format("G54.1 P{}", p);
+            throw refuse(fmt::format("{} has no {}", d.name,
+                                     m[1].str() == "154" ? "G154 P (Haas' extended work offsets)" : "G54.1 P (FANUC's extended work offsets)"));
+        const int p = std::stoi(m[2].str());
+        if (p < 1 || p > d.extendedWorkOffsets) throw refuse(fmt::format("there is no {}", extendedWords(p)));
+        return extendedWords(p);
+    }
+    if (std::regex_match(code, other)) {
+        for (const auto& entry : d.moreWorkOffsets) {
+            if (entry == code) return code;
+            const auto range = rangeOf(entry);
+            if (range && code.find('.') == std::string::npos) {
+                const int g = std::stoi(code.substr(1));
+                if (g >= range->first && g <= range->second) return code;
+            }
+        }
+        throw refuse(fmt::format("{} has no {}", d.name, code));
     }
     throw refuse("not a work offset");
+}
+
+std::optional<std::string> millingOnly(const Dialect& d, const std::string& what)
+{
+    if (d.syntax == Syntax::Iso) return std::nullopt;
+    std::string iso;
+    for (const Dialect& other : dialectLibrary())
+        if (other.syntax == Syntax::Iso) iso += (iso.empty() ? "" : ", ") + other.name;
+    return fmt::format("the {} dialect writes milling programs only, not {}; {} can", d.name, what, iso);
 }
 
 const Dialect* findDialect(const std::string& name)

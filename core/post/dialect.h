@@ -1,13 +1,16 @@
 // Controller dialects as data (resources/dialects/*.json, docs/machines.md): framing, sequence
 // numbers, number style, comments, the words of tool changes, cycles and the
-// program end. The one writer (gcode_writer) reads these; no dialect copies
-// the writer. Templates use fmt named fields: {units}, {workOffset}, {tool},
-// {number}, {name}.
+// program end. Two writers read these: gcode_writer for the G-code controls
+// (syntax "iso", and "sinumerik" where Siemens' cycles and comments differ)
+// and klartext_writer for HEIDENHAIN's conversational language; no dialect
+// copies a writer. Templates use fmt named fields: {units}, {workOffset},
+// {tool}, {number}, {name}.
 #pragma once
 
 #include "model/result.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,11 +21,20 @@ struct Decimals {
     int inch = 4;
 };
 
+// The language a dialect's tape is written in: which writer writes it.
+enum class Syntax {
+    Iso,        // ISO G-code (FANUC, Haas, LinuxCNC)
+    Sinumerik,  // Siemens ISO-mode-off G-code: ';' comments, CYCLE81/CYCLE83 called by MCALL
+    Klartext,   // HEIDENHAIN conversational: L, CC/C, TOOL CALL, CYCL DEF
+};
+
 struct Dialect {
     std::string name;
     std::string description;         // "FANUC 0i/30i-style ISO G-code"
     std::string source;              // where it was read from ("built in: dialects/fanuc.json")
     std::string macroSyntax = "linuxcnc";  // the probing cycle's macro variables: "fanuc" (#100) or "linuxcnc" (#<name>)
+    Syntax syntax = Syntax::Iso;     // "iso", "sinumerik" or "klartext"
+    std::string fileExtension = "nc";  // of the tape's file: "nc", "mpf" (Siemens), "h" (HEIDENHAIN)
     // Framing.
     bool percentFraming = false;     // '%' leader and trailer lines
     std::string programNumberLine;   // "O{number:04d} ({name})"; empty: none
@@ -36,16 +48,24 @@ struct Dialect {
     bool decimalPointAlways = false; // "X10." (FANUC) rather than "X10"
     Decimals lengthDecimals{3, 4};
     Decimals feedDecimals{1, 2};
-    // Comments: always in parentheses, never nested.
+    // Comments: in parentheses (never nested), or after ';' to the end of
+    // the line (Siemens; HEIDENHAIN always).
     bool upperCaseComments = false;
+    bool semicolonComments = false;
+    // The words of the tape's units: G21/G20 (ISO), G710/G700 (Siemens, feeds too).
+    std::string metricWord = "G21";
+    std::string inchWord = "G20";
     // Program frame and tool change.
     std::vector<std::string> preamble;  // after the header comments
-    // Work offsets beyond G54..G59, which every controller has. The job's
-    // offset is stated with the first move after each tool change (and in
-    // the preamble where it says {workOffset}); one the controller lacks is
-    // refused (workOffsetWords).
-    std::vector<std::string> moreWorkOffsets;  // LinuxCNC: G59.1 G59.2 G59.3
-    int extendedWorkOffsets = 0;               // G54.1 P1..Pn (FANUC: 48); 0 none
+    // Work offsets: G54 and the ones after it (6: to G59; Siemens' settable
+    // ones end at G57), then more by name or by range ("G505..G599"). The
+    // job's offset is stated with the first move after each tool change (and
+    // in the preamble where it says {workOffset}); one the controller lacks
+    // is refused (workOffsetWords).
+    int plainWorkOffsets = 6;
+    std::vector<std::string> moreWorkOffsets;  // LinuxCNC: G59.1 G59.2 G59.3; Siemens: G505..G599
+    int extendedWorkOffsets = 0;               // P1..Pn of FANUC's G54.1 P (48), Haas' G154 P; 0 none
+    std::string extendedWorkOffset = "G54.1 P{n}";  // how the controller writes extended offset n
     std::vector<std::string> retract;   // to the machine's safe height (tool change, end)
     std::string toolChange = "T{tool} M6";
     std::string lengthOffset = "G43 H{tool}";
@@ -60,7 +80,10 @@ struct Dialect {
     std::string peckDrill = "G83";      // peck depth in Q
     std::string cycleCancel = "G80";
     std::string cycleRetract = "G98";   // back to the initial level after each hole
-    char dwellWord = 'P';               // G4 P<seconds> (LinuxCNC) or G4 X<seconds> (FANUC)
+    char dwellWord = 'P';               // G4 P<seconds> (LinuxCNC), G4 X<seconds> (FANUC), G4 F<seconds> (Siemens)
+    // The lathe's stock removal cycle: FANUC 0i's two blocks (G71 U R, then
+    // G71 P Q U W F) or the one block with the depth in D (Haas, FANUC 10/11).
+    bool oneBlockRoughingCycle = false;
     std::string programEnd = "M30";
 };
 
@@ -79,6 +102,12 @@ Result<Dialect> readDialect(const std::string& text, const std::string& source);
 const std::vector<Dialect>& dialectLibrary();
 // The shop's files that were left out, one sentence each.
 const std::vector<std::string>& dialectLibraryProblems();
+
+// Whether `d` posts programs beyond milling (lathe tapes, probing cycles):
+// the G-code dialects with FANUC or LinuxCNC macros do; Siemens and
+// HEIDENHAIN tapes are milling tapes for now. Otherwise the sentence to
+// refuse `what` with ("a lathe job", "a probing unit").
+std::optional<std::string> millingOnly(const Dialect& d, const std::string& what);
 
 const Dialect& fanucDialect();
 const Dialect& linuxcncDialect();

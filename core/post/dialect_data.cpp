@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <map>
+#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -44,10 +45,19 @@ public:
         d.description = text("description", "");
         d.macroSyntax = text("macroSyntax", d.macroSyntax);
         if (d.macroSyntax != "fanuc" && d.macroSyntax != "linuxcnc") fail("macroSyntax", "must be \"fanuc\" or \"linuxcnc\"");
+        const std::string syntax = text("syntax", "iso");
+        if (syntax == "iso") d.syntax = Syntax::Iso;
+        else if (syntax == "sinumerik") d.syntax = Syntax::Sinumerik;
+        else if (syntax == "klartext") d.syntax = Syntax::Klartext;
+        else fail("syntax", "must be \"iso\", \"sinumerik\" or \"klartext\"");
+        d.fileExtension = text("fileExtension", d.fileExtension);
+        if (d.fileExtension.empty() || d.fileExtension.size() > 8 ||
+            d.fileExtension.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos)
+            fail("fileExtension", "must be 1 to 8 lower-case letters or digits, without the dot");
         d.percentFraming = flag("percentFraming", d.percentFraming);
         d.programNumberLine = templ("programNumberLine", d.programNumberLine);
         d.sequenceNumbers = flag("sequenceNumbers", d.sequenceNumbers);
-        d.sequenceStart = whole("sequenceStart", d.sequenceStart, 1, 99999);
+        d.sequenceStart = whole("sequenceStart", d.sequenceStart, 0, 99999);
         d.sequenceIncrement = whole("sequenceIncrement", d.sequenceIncrement, 1, 1000);
         d.sequenceMax = whole("sequenceMax", d.sequenceMax, d.sequenceStart, 99999999);
         d.maxLineLength = static_cast<std::size_t>(whole("maxLineLength", static_cast<int>(d.maxLineLength), 40, 100000));
@@ -55,9 +65,22 @@ public:
         d.lengthDecimals = decimals("lengthDecimals", d.lengthDecimals);
         d.feedDecimals = decimals("feedDecimals", d.feedDecimals);
         d.upperCaseComments = flag("upperCaseComments", d.upperCaseComments);
+        d.semicolonComments = flag("semicolonComments", d.semicolonComments || d.syntax == Syntax::Klartext);
+        d.metricWord = text("metricWord", d.metricWord);
+        d.inchWord = text("inchWord", d.inchWord);
         d.preamble = templates("preamble", d.preamble);
+        d.plainWorkOffsets = whole("plainWorkOffsets", d.plainWorkOffsets, 1, 6);
         d.moreWorkOffsets = texts("moreWorkOffsets", d.moreWorkOffsets);
+        for (const auto& w : d.moreWorkOffsets)
+            if (!std::regex_match(w, std::regex(R"(G[0-9]+(\.[0-9])?|G[0-9]+\.\.G[0-9]+)")))
+                fail("moreWorkOffsets", "'" + w + "' is neither a G code (\"G59.1\") nor a range (\"G505..G599\")");
         d.extendedWorkOffsets = whole("extendedWorkOffsets", d.extendedWorkOffsets, 0, 300);
+        d.extendedWorkOffset = text("extendedWorkOffset", d.extendedWorkOffset);
+        try {
+            static_cast<void>(fmt::format(fmt::runtime(d.extendedWorkOffset), fmt::arg("n", 1)));
+        } catch (const fmt::format_error& e) {
+            fail("extendedWorkOffset", std::string("not a template this program can fill: ") + e.what() + " (field: {n})");
+        }
         d.retract = templates("retract", d.retract);
         d.toolChange = templ("toolChange", d.toolChange);
         d.lengthOffset = templ("lengthOffset", d.lengthOffset);
@@ -69,14 +92,17 @@ public:
                  {"cycleRetract", &d.cycleRetract}, {"programEnd", &d.programEnd}})
             *field = text(key, *field);
         const std::string dwell = text("dwellWord", std::string(1, d.dwellWord));
-        if (dwell != "P" && dwell != "X") fail("dwellWord", "must be \"P\" or \"X\"");
+        if (dwell != "P" && dwell != "X" && dwell != "F") fail("dwellWord", "must be \"P\", \"X\" or \"F\"");
         d.dwellWord = dwell[0];
+        d.oneBlockRoughingCycle = flag("oneBlockRoughingCycle", d.oneBlockRoughingCycle);
         return d;
     }
 
 private:
     static inline const std::set<std::string> kKeys{
-        "format", "version", "name", "description", "macroSyntax", "percentFraming", "programNumberLine",
+        "format", "version", "name", "description", "macroSyntax", "syntax", "fileExtension", "percentFraming",
+        "programNumberLine", "semicolonComments", "metricWord", "inchWord", "plainWorkOffsets", "extendedWorkOffset",
+        "oneBlockRoughingCycle",
         "sequenceNumbers", "sequenceStart", "sequenceIncrement", "sequenceMax", "maxLineLength", "decimalPointAlways",
         "lengthDecimals", "feedDecimals", "upperCaseComments", "preamble", "moreWorkOffsets", "extendedWorkOffsets",
         "retract", "toolChange", "lengthOffset", "lengthOffsetWithZ", "spindleClockwise", "spindleCounterClockwise",
@@ -171,8 +197,12 @@ const Library& library()
 {
     static const Library lib = [] {
         Library l;
-        const std::pair<const char*, const char*> builtIn[] = {{builtin::kDialectFanucJson, "built in: dialects/fanuc.json"},
-                                                               {builtin::kDialectLinuxcncJson, "built in: dialects/linuxcnc.json"}};
+        const std::pair<const char*, const char*> builtIn[] = {
+            {builtin::kDialectFanucJson, "built in: dialects/fanuc.json"},
+            {builtin::kDialectLinuxcncJson, "built in: dialects/linuxcnc.json"},
+            {builtin::kDialectHaasJson, "built in: dialects/haas.json"},
+            {builtin::kDialectSinumerikJson, "built in: dialects/sinumerik.json"},
+            {builtin::kDialectHeidenhainJson, "built in: dialects/heidenhain.json"}};
         for (const auto& [text, source] : builtIn) {
             auto d = readDialect(text, source);
             if (!d) throw std::logic_error("a shipped dialect definition is broken: " + d.error());

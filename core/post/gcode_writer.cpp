@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -174,13 +175,19 @@ void GCodeWriter::programStart(const ProgramInfo& info)
                         units_ == LengthUnit::Inch ? "inch" : "mm"));
     for (const auto& t : info.tools) comment(fmt::format("T{} D{} {}", t.number, length(t.diameter), t.name));
     for (const auto& b : dialect_.preamble)
-        block(fmt::format(fmt::runtime(b), fmt::arg("units", units_ == LengthUnit::Inch ? "G20" : "G21"),
+        block(fmt::format(fmt::runtime(b), fmt::arg("units", units_ == LengthUnit::Inch ? dialect_.inchWord : dialect_.metricWord),
                           fmt::arg("workOffset", workOffset_)));
 }
 
 void GCodeWriter::comment(const std::string& text)
 {
     cancelCycle();
+    if (dialect_.semicolonComments) {
+        std::string c = "; " + commentText(text, dialect_.upperCaseComments);
+        if (c.size() > dialect_.maxLineLength) c.resize(dialect_.maxLineLength);
+        line(c);
+        return;
+    }
     std::string c = "(" + commentText(text, dialect_.upperCaseComments);
     if (c.size() + 1 > dialect_.maxLineLength) c.resize(dialect_.maxLineLength - 1);
     line(c + ")");
@@ -299,6 +306,10 @@ void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
 void GCodeWriter::drillCycle(const DrillCycle& c)
 {
     requirePosition("a drilling cycle");
+    if (dialect_.syntax == Syntax::Sinumerik) {
+        sinumerikDrillCycle(c);
+        return;
+    }
     const std::string& code = c.peck > 0 ? dialect_.peckDrill : dialect_.drill;
     std::string params = " Z" + length(c.bottom.z) + " R" + length(c.retractZ);
     if (c.peck > 0) params += " Q" + length(c.peck);
@@ -318,6 +329,42 @@ void GCodeWriter::drillCycle(const DrillCycle& c)
     endBlock();
     // Back at the initial level, or at R if that is higher (LinuxCNC's G98).
     if (axis_[Z]->value < c.retractZ) axis_[Z] = written(c.retractZ);
+}
+
+void GCodeWriter::sinumerikDrillCycle(const DrillCycle& c)
+{
+    // The cycle is called modally (MCALL) at each position that follows, as
+    // G81 is; its parameters by position: CYCLE81(RTP, RFP, SDIS, DP) and
+    // CYCLE83(RTP, RFP, SDIS, DP, DPR, FDEP, FDPR, DAM, DTB, DTS, FRF, VARI).
+    // The reference plane is our R plane with no safety distance of its
+    // own, so the cycle drills from where G81 would; it returns to RTP, the
+    // initial level (or R when that is higher), as G98 does.
+    const double rtp = std::max(axis_[Z]->value, c.retractZ);
+    std::string params;
+    if (c.peck > 0) {
+        // Chip removal (VARI=1): out to the reference plane after each peck
+        // of DAM, the first one to FDEP; no dwells, full feed at first.
+        params = fmt::format("{}({},{},0,{},,{},,{},0,0,1,1)", dialect_.peckDrill, length(rtp), length(c.retractZ),
+                             length(c.bottom.z), length(std::max(c.bottom.z, c.retractZ - c.peck)), length(c.peck));
+    } else {
+        params = fmt::format("{}({},{},0,{})", dialect_.drill, length(rtp), length(c.retractZ), length(c.bottom.z));
+    }
+    const std::string f = formatNumber(c.feed, feedDecimals_, dialect_.decimalPointAlways);
+    if (cycleWords_ != params || feed_ != f) {
+        cancelCycle();
+        if (feed_ != f) {
+            beginBlock();
+            feedWord(c.feed);
+            endBlock();
+        }
+        block("MCALL " + params);
+        cycleWords_ = params;
+    }
+    beginBlock();
+    motionWord("G0");
+    axisWords({c.bottom.x, c.bottom.y, axis_[Z]->exact}, true);
+    endBlock();
+    axis_[Z] = written(rtp);
 }
 
 void GCodeWriter::dwell(double seconds)

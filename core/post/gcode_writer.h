@@ -1,4 +1,5 @@
-// The G-code writer at the end of the sink chain. It receives lengths and
+// The G-code writer at the end of the sink chain (ISO G-code, and Siemens'
+// where its comments and drilling cycles differ). It receives lengths and
 // feeds already in the tape's units, owns every number's formatting (through
 // number_format), writes modal words only when they change (motion code,
 // each axis, feed, a canned cycle's Z R Q), numbers the blocks, keeps lines
@@ -86,6 +87,7 @@ private:
     void feedWord(double feedRate);
     void requirePosition(const char* what) const;
     void cancelCycle();
+    void sinumerikDrillCycle(const DrillCycle& cycle);
     void forgetModalState();
 
     const Dialect& dialect_;

@@ -327,7 +327,15 @@ private:
     void cycle(std::size_t index, const TurnCycle& c, const TurnCutting& cut)
     {
         w_.rapid(c.start);
-        if (w_.words().fanuc) {
+        if (w_.words().fanuc && w_.dialect().oneBlockRoughingCycle) {
+            // One block, the depth of cut in D (Haas; the retract is the
+            // control's setting).
+            const auto blocks = cycleContour(w_, c, false);
+            const int p = w_.sequenceAhead(2), q = w_.sequenceAhead(1 + static_cast<int>(blocks.size()));
+            w_.block(fmt::format("G71 P{} Q{} U{} W{} D{} {}", p, q, w_.num(2.0 * c.allowanceX * (c.inner ? -1.0 : 1.0)),
+                                 w_.num(c.allowanceZ), w_.num(c.depthOfCut), w_.feedWord(cut.feedPerRev)));
+            for (const auto& b : blocks) w_.block(b);
+        } else if (w_.words().fanuc) {
             // Type I (X alone in the P block) when the contour only grows
             // outward; every contour here does (turn_plan: monotone).
             const auto blocks = cycleContour(w_, c, false);
@@ -371,6 +379,7 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
 {
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
+    if (const auto why = post::millingOnly(*dialect, "a lathe job's tape")) throw std::invalid_argument(*why);
     for (const auto& s : orderedSteps) {
         if (!s.turn || !s.tool) throw std::invalid_argument("post-processor: step " + s.label() + " is not a turning step with a tool");
         if (!findTool(library, s.tool->toolId))

@@ -24,6 +24,9 @@ struct ProgramInfo {
     std::string material;
     std::vector<ToolEntry> tools;  // in order of first use
     std::string machine;           // the job's machine ("vmc"), named in the header
+    // The stock block, its two corners (HEIDENHAIN's BLK FORM); none: unknown.
+    bool hasStock = false;
+    Point3 stockMin{}, stockMax{};
 };
 
 struct DrillCycle {

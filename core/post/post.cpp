@@ -7,6 +7,7 @@
 
 #include "post/dialect.h"
 #include "post/gcode_writer.h"
+#include "post/klartext_writer.h"
 #include "post/lathe_post.h"
 #include "post/tape_image.h"
 #include "post/unit_adapter.h"
@@ -54,7 +55,7 @@ public:
 
     void start(const std::vector<Cutting>& cutting)
     {
-        post::ProgramInfo info{o_.programName, o_.programNumber, o_.material, {}, o_.machine};
+        post::ProgramInfo info{o_.programName, o_.programNumber, o_.material, {}, o_.machine, o_.hasStock, o_.stockMin, o_.stockMax};
         for (const auto& c : cutting)
             if (std::none_of(info.tools.begin(), info.tools.end(), [&](const auto& t) { return t.number == c.tool->id; }))
                 info.tools.push_back({c.tool->id, c.tool->diameter, c.tool->name});
@@ -156,13 +157,22 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
     cutting.reserve(orderedSteps.size());
     for (const auto& s : orderedSteps) cutting.push_back(cuttingOf(s, library, options.material));
 
-    // The chain: poster -> [mm to inch] -> writer.
-    post::GCodeWriter writer(*dialect, options.units, post::workOffsetWords(*dialect, options.workOffset));
-    std::size_t moves = 0;
-    for (const auto& s : orderedSteps) moves += s.path ? s.path->moves.size() : 0;
-    writer.reserve(moves + 16 * orderedSteps.size() + 64);  // a block a move, plus each step's frame
+    // The chain: poster -> [mm to inch] -> writer (G-code, or HEIDENHAIN's
+    // Klartext where the job's offset G54..G59 is preset 1..6 of cycle 247).
+    const std::string offset = post::workOffsetWords(*dialect, options.workOffset);
+    std::optional<post::GCodeWriter> gcode;
+    std::optional<post::KlartextWriter> klartext;
+    MachineSink* writer = nullptr;
+    if (dialect->syntax == post::Syntax::Klartext) {
+        writer = &klartext.emplace(*dialect, options.units, std::stoi(offset.substr(1)) - 53);
+    } else {
+        std::size_t moves = 0;
+        for (const auto& s : orderedSteps) moves += s.path ? s.path->moves.size() : 0;
+        writer = &gcode.emplace(*dialect, options.units, offset);
+        gcode->reserve(moves + 16 * orderedSteps.size() + 64);  // a block a move, plus each step's frame
+    }
     std::optional<post::InchAdapter> inch;
-    MachineSink& sink = options.units == LengthUnit::Inch ? static_cast<MachineSink&>(inch.emplace(writer)) : writer;
+    MachineSink& sink = options.units == LengthUnit::Inch ? static_cast<MachineSink&>(inch.emplace(*writer)) : *writer;
 
     Poster poster(sink, options);
     poster.start(cutting);
@@ -170,8 +180,8 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
     poster.end();
 
     PostedProgram p;
-    p.nc = writer.takeText();
-    p.lines = writer.takeSources();
+    p.nc = gcode ? gcode->takeText() : klartext->takeText();
+    p.lines = gcode ? gcode->takeSources() : klartext->takeSources();
     p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name);
     return p;
 }

@@ -7,6 +7,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/tool.h"
+#include "model/toolpath.h"
 
 #include <optional>
 #include <string>
@@ -15,7 +16,7 @@
 namespace taiwa {
 
 struct PostOptions {
-    std::string dialect = "linuxcnc";  // "fanuc" or "linuxcnc"
+    std::string dialect = "linuxcnc";  // a dialect's name (dialectNames())
     LengthUnit units = LengthUnit::Millimetre;
     int programNumber = 1000;          // O-number (fanuc)
     std::string programName;           // job name for the header comment
@@ -25,6 +26,9 @@ struct PostOptions {
     std::vector<std::string> unitNames;  // the operator's name of each unit (by index; empty: none), in the step comments
     bool coolant = true;
     double safeZ = 5.0;                // [mm] above the stock top
+    // Milling jobs: the stock block's corners [mm] (HEIDENHAIN's BLK FORM).
+    bool hasStock = false;
+    Point3 stockMin{}, stockMax{};
     // Lathe jobs: the point the turret retracts to for a tool change (X as
     // a diameter), and whether roughing may be the control's own cycle
     // (G71) where a step has one; false: the explicit passes.

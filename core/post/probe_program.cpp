@@ -31,7 +31,7 @@ Offset offsetOf(const post::Dialect& d, const std::string& requested)
 {
     Offset o;
     o.words = post::workOffsetWords(d, requested);
-    if (o.words.starts_with("G54.1")) {
+    if (o.words.starts_with("G54.1") || o.words.starts_with("G154")) {
         o.extended = true;
         o.p = std::stoi(o.words.substr(o.words.find('P') + 1));
     } else if (o.words.size() == 3) {
@@ -46,6 +46,7 @@ const post::Dialect& dialectOf(const PostOptions& o)
 {
     const post::Dialect* d = post::findDialect(o.dialect);
     if (!d) throw std::invalid_argument("unknown dialect '" + o.dialect + "'");
+    if (const auto why = post::millingOnly(*d, "a probing unit's programs")) throw std::invalid_argument(*why);
     return *d;
 }
 

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <string_view>
@@ -11,7 +12,25 @@ namespace taiwa::post {
 
 namespace {
 
-bool isBlock(std::string_view line) { return !line.empty() && line != "%" && line.front() != '('; }
+// Not blocks: the '%' leader and trailer, comments of their own line in
+// parentheses or after ';' (a HEIDENHAIN comment is a numbered block), and
+// the continuation lines of a HEIDENHAIN cycle definition (indented).
+bool isBlock(std::string_view line)
+{
+    return !line.empty() && line != "%" && line.front() != '(' && line.front() != ';' && line.front() != ' ';
+}
+
+// The length of a block's number at the start of `line`, with the letter
+// before it: "N120 G0 ..." (G-code) or "12 L X+5 ..." (Klartext); 0 when
+// the line has none. `digits` gets where its digits start.
+std::size_t blockNumber(std::string_view line, std::size_t& digits)
+{
+    digits = line.size() > 1 && line[0] == 'N' && std::isdigit(static_cast<unsigned char>(line[1])) ? 1 : 0;
+    if (digits == 0 && (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0])))) return 0;
+    std::size_t end = digits;
+    while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) ++end;
+    return end;
+}
 
 // Calls f(line) for every line of the tape, without its end-of-block.
 template <class F>
@@ -59,10 +78,9 @@ std::string tapeImage(const std::string& nc, const std::string& programName, con
         ++lineNumber;
         // The N column: the block's sequence number, its text without it.
         std::string_view n, rest = line;
-        if (line.size() > 1 && line[0] == 'N' && std::isdigit(static_cast<unsigned char>(line[1]))) {
-            std::size_t end = 1;
-            while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end]))) ++end;
-            n = line.substr(1, end - 1);
+        std::size_t first = 0;
+        if (const std::size_t end = blockNumber(line, first); end > 0) {
+            n = line.substr(first, end - first);
             rest = line.substr(std::min(line.size(), end + 1));
         }
         char digits[24];

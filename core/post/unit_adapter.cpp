@@ -11,6 +11,8 @@ void InchAdapter::programStart(const ProgramInfo& info)
 {
     ProgramInfo converted = info;
     for (auto& t : converted.tools) t.diameter = inch(t.diameter);
+    converted.stockMin = inch(info.stockMin);
+    converted.stockMax = inch(info.stockMax);
     next_.programStart(converted);
 }
 
