@@ -1,7 +1,9 @@
 // Golden NC files: every sample exported through the real command line in
-// both dialects, every NC file of the export compared byte for byte with
-// tests/golden/STEM.DIALECT.nc (the tape) or tests/golden/STEM.uN.KIND.DIALECT.nc
-// (a probing unit's setting program and probing cycle), reviewed by hand once. A mismatch writes STEM.DIALECT.nc.actual beside
+// every dialect that posts it (Siemens and HEIDENHAIN: milling jobs only),
+// every NC file of the export compared byte for byte with
+// tests/golden/STEM.DIALECT.EXT (the tape: .nc, .mpf for Siemens, .h for
+// HEIDENHAIN) or tests/golden/STEM.uN.KIND.DIALECT.nc (a probing unit's
+// setting program and probing cycle), reviewed by hand once. A mismatch writes STEM.DIALECT.nc.actual beside
 // the golden file; TAIWA_UPDATE_GOLDEN=1 rewrites the golden files instead.
 // Lathe jobs have no tape yet: their golden file is the turned profiles of
 // STEM.steps.json (tests/golden/STEM.turned.json: profile, allowance rows,
@@ -27,10 +29,14 @@ private slots:
         const auto files = QDir(sourcePath("resources/samples")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name);
         QVERIFY(!files.isEmpty());
         for (const auto& f : files) {
-            if (readFile(f.absoluteFilePath()).find("\"shape\": \"bar\"") != std::string::npos)
-                QTest::newRow(qPrintable(f.completeBaseName() + "/turned")) << f.absoluteFilePath() << "turned";
-            for (const char* dialect : {"fanuc", "linuxcnc"})
+            const std::string text = readFile(f.absoluteFilePath());
+            const bool lathe = text.find("\"shape\": \"bar\"") != std::string::npos;
+            const bool probing = text.find("\"module\": \"PROBE\"") != std::string::npos;
+            if (lathe) QTest::newRow(qPrintable(f.completeBaseName() + "/turned")) << f.absoluteFilePath() << "turned";
+            for (const char* dialect : {"fanuc", "linuxcnc", "haas", "sinumerik", "heidenhain"}) {
+                if ((lathe || probing) && (dialect == std::string("sinumerik") || dialect == std::string("heidenhain"))) continue;
                 QTest::newRow(qPrintable(f.completeBaseName() + "/" + dialect)) << f.absoluteFilePath() << dialect;
+            }
         }
     }
     void tapeMatchesGolden()
@@ -56,12 +62,14 @@ private slots:
         const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString stem = QFileInfo(job).completeBaseName();
-        const auto written = QDir(out.path()).entryList({"*.nc"}, QDir::Files, QDir::Name);
-        QVERIFY(written.contains(stem + ".nc"));
+        const auto written = QDir(out.path()).entryList({"*.nc", "*.mpf", "*.h"}, QDir::Files, QDir::Name);
+        const QString tape = stem + (dialect == "sinumerik" ? ".mpf" : dialect == "heidenhain" ? ".h" : ".nc");
+        QVERIFY2(written.contains(tape), qPrintable(written.join(", ")));
         bool rewrote = false;
         for (const QString& name : written) {
             const std::string actual = readFile(QDir(out.path()).filePath(name));
-            const QString golden = sourcePath("tests/golden/" + name.chopped(3) + "." + dialect + ".nc");
+            const QString ext = QFileInfo(name).suffix();
+            const QString golden = sourcePath("tests/golden/" + name.chopped(ext.size() + 1) + "." + dialect + "." + ext);
             if (rewroteGolden(golden, actual)) {
                 rewrote = true;
                 continue;

@@ -148,6 +148,7 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     post.units = units.value_or(plan.job.lengthUnit);
     post.programNumber = programNumber;
     post.programName = plan.job.name.empty() ? fileStem : plan.job.name;
+    post.fileStem = fileStem;
     post.material = plan.mmJob.material;
     post.machine = plan.job.machine;
     post.workOffset = plan.job.workOffset;

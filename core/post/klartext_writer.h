@@ -20,8 +20,9 @@
 
 namespace taiwa::post {
 
-// The program name of BEGIN PGM / END PGM: letters, digits, '_' and '-'
-// of `name` (others become '_'), at most 32 characters; "TAIWA" when empty.
+// The program name of BEGIN PGM / END PGM, the file's (the control matches
+// them): letters, digits, '_' and '-' of `name` (others become '_'), at
+// most 32 characters; "TAIWA" when empty.
 std::string klartextProgramName(const std::string& name);
 
 class KlartextWriter final : public MachineSink {

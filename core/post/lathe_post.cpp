@@ -393,7 +393,7 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
     PostedProgram p;
     p.nc = writer.takeText();
     p.lines = writer.takeLines();
-    p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name);
+    p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name, options.machine);
     return p;
 }
 

@@ -20,6 +20,7 @@ struct ToolEntry {
 
 struct ProgramInfo {
     std::string name;
+    std::string file;        // the tape's file name without extension (HEIDENHAIN's program name)
     int number = 1000;       // O-number where the dialect has one
     std::string material;
     std::vector<ToolEntry> tools;  // in order of first use

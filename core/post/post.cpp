@@ -55,7 +55,7 @@ public:
 
     void start(const std::vector<Cutting>& cutting)
     {
-        post::ProgramInfo info{o_.programName, o_.programNumber, o_.material, {}, o_.machine, o_.hasStock, o_.stockMin, o_.stockMax};
+        post::ProgramInfo info{o_.programName, o_.fileStem, o_.programNumber, o_.material, {}, o_.machine, o_.hasStock, o_.stockMin, o_.stockMax};
         for (const auto& c : cutting)
             if (std::none_of(info.tools.begin(), info.tools.end(), [&](const auto& t) { return t.number == c.tool->id; }))
                 info.tools.push_back({c.tool->id, c.tool->diameter, c.tool->name});
@@ -182,7 +182,7 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
     PostedProgram p;
     p.nc = gcode ? gcode->takeText() : klartext->takeText();
     p.lines = gcode ? gcode->takeSources() : klartext->takeSources();
-    p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name);
+    p.tapeImage = post::tapeImage(p.nc, options.programName, dialect->name, options.machine);
     return p;
 }
 

@@ -20,6 +20,7 @@ struct PostOptions {
     LengthUnit units = LengthUnit::Millimetre;
     int programNumber = 1000;          // O-number (fanuc)
     std::string programName;           // job name for the header comment
+    std::string fileStem;              // the tape's file name without extension
     std::string material;              // for speeds and feeds
     std::string machine;               // the job's machine, named in the header comment
     std::string workOffset = "G54";    // the job's: G54..G59; G54.1 P1..P48 (fanuc); G59.1..G59.3 (linuxcnc)

@@ -58,14 +58,15 @@ TapeLength measureTape(const std::string& nc)
     return t;
 }
 
-std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect)
+std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect,
+                      const std::string& machine)
 {
     const std::string rule(72, '-');
     // A printable listing: control characters of the job's name are not printed.
     std::string name;
     for (const char c : programName) name += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
-    std::string out = fmt::format("TAPE IMAGE LIST   program {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", name,
-                                  dialect, rule, "LINE", "N", rule);
+    std::string out = fmt::format("TAPE IMAGE LIST   program {}   machine {}   dialect {}\n{}\n{:>7}  {:>6}  BLOCK\n{}\n", name,
+                                  machine.empty() ? "-" : machine, dialect, rule, "LINE", "N", rule);
     out.reserve(out.size() + nc.size() + nc.size() / 2);
     // Right-aligned in `width` columns (the line numbers and N words are
     // never wider): appended by hand, fmt per line took most of the time.

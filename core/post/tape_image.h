@@ -17,6 +17,9 @@ struct TapeLength {
 };
 
 TapeLength measureTape(const std::string& nc);
-std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect);
+// The listing's header names the program, the machine and the dialect; the
+// N column holds each block's number (N words, or HEIDENHAIN's leading one).
+std::string tapeImage(const std::string& nc, const std::string& programName, const std::string& dialect,
+                      const std::string& machine = {});
 
 }  // namespace taiwa::post

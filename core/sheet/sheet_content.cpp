@@ -3,6 +3,7 @@
 #include "sheet/sheet_content.h"
 
 #include "machine/machine.h"
+#include "post/dialect.h"
 #include "post/lathe_post.h"
 #include "tools/cutting.h"
 
@@ -98,6 +99,29 @@ std::string latheSetup(const Plan& plan, const std::function<std::string(double)
 
 }  // namespace
 
+// The dialect by name and by the control it speaks.
+static std::string dialectWords(const std::string& name)
+{
+    const post::Dialect* d = post::findDialect(name);
+    return d && !d->description.empty() ? name + " (" + d->description + ")" : name;
+}
+
+// The program as the control knows it: its O-number where the dialect has
+// one, else the tape's file name (Siemens, HEIDENHAIN, LinuxCNC).
+static std::string programWords(const SheetOptions& o)
+{
+    const post::Dialect* d = post::findDialect(o.dialect);
+    if (d && !d->programNumberLine.empty()) {
+        if (o.programNumber <= 0) return {};
+        // The number as the tape writes it: "O{number:04d}" of "O{number:04d} ({name})".
+        const std::string number = d->programNumberLine.substr(0, d->programNumberLine.find(' '));
+        return fmt::format(fmt::runtime(number), fmt::arg("number", o.programNumber), fmt::arg("name", ""));
+    }
+    if (!d || o.jobFile.empty()) return {};
+    const std::string file = o.jobFile.substr(o.jobFile.find_last_of("/\\") == std::string::npos ? 0 : o.jobFile.find_last_of("/\\") + 1);
+    return file.substr(0, file.rfind('.')) + "." + d->fileExtension;
+}
+
 Content content(const Plan& plan, const SheetOptions& o)
 {
     const LengthUnit u = o.units;
@@ -110,11 +134,11 @@ Content content(const Plan& plan, const SheetOptions& o)
     c.fields = {
         {"Job", plan.job.name},
         {"File", o.jobFile},
-        {"Dialect", o.dialect},
+        {"Dialect", dialectWords(o.dialect)},
         {"Material", job.material},
         {"Machine", job.machine},
         {"Date", o.date},
-        {"Program", o.programNumber > 0 ? fmt::format("O{:04d}", o.programNumber) : std::string()},
+        {"Program", programWords(o)},
         {"Stock", job.bar ? fmt::format("bar D{} x {} {}, face stock {}{}", len(job.bar->diameter), len(job.bar->length), us,
                                         len(job.bar->face), job.bar->bore > 0 ? ", bore D" + len(job.bar->bore) : std::string())
                           : fmt::format("{} x {} x {} {}", len(job.stock.width), len(job.stock.length), len(job.stock.height), us)},
