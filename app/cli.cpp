@@ -47,12 +47,13 @@ Usage:
   taiwa [JOB]                      open the station window (with JOB loaded)
   taiwa check JOB                  input processing only; one line per error:
                                    JOB: unit N (MODULE) field: message
-  taiwa export JOB --out DIR [--dialect fanuc|linuxcnc] [--units mm|inch]
-                                   the whole pipeline; writes STEM.nc,
-                                   STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf
-                                   and STEM.steps.json into DIR (and each probing
-                                   unit's programs); the dialect: --dialect, else
-                                   the job's, else linuxcnc
+  taiwa export JOB --out DIR [--dialect NAME] [--units mm|inch]
+                                   the whole pipeline; writes STEM.nc (.mpf for
+                                   sinumerik, .h for heidenhain), STEM.tape.txt,
+                                   STEM.sheet.html, STEM.sheet.pdf and
+                                   STEM.steps.json into DIR (and each probing
+                                   unit's programs); the dialect (--list-dialects):
+                                   --dialect, else the job's, else linuxcnc
   taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
                [--view iso|top|front|profile]
                                    the 3-D preview of step K (1-based, in

@@ -370,6 +370,58 @@ private slots:
                  qPrintable(r.err));
     }
 
+    // Siemens and HEIDENHAIN tapes are milling tapes: a lathe job or a
+    // probing unit is refused by name, on the job's dialect (check) and on
+    // --dialect (export, nothing written); a milling job's tape is the
+    // control's own kind of file. A shop's dialect with a syntax this
+    // program has no writer for is left out naming file, line and key.
+    void millingOnlyDialectsRefuseLatheAndProbing()
+    {
+        QTemporaryDir dir;
+        const QString lathe = sourcePath("resources/samples/lathe-turned-shaft.taiwa");
+        auto r = runTaiwa({"export", lathe, "--out", dir.filePath("l"), "--dialect", "sinumerik"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("the sinumerik dialect writes milling programs only, not a lathe job's tape; "
+                                "fanuc, linuxcnc, haas can; nothing was written"),
+                 qPrintable(r.err));
+        QVERIFY(!QDir(dir.filePath("l")).exists() || QDir(dir.filePath("l")).isEmpty());
+        json probe = json::parse(readFile(sourcePath("resources/samples/probe-bore.taiwa")));
+        probe["dialect"] = "heidenhain";
+        writeFile(dir.filePath("probe.taiwa"), probe.dump(2));
+        r = runTaiwa({"check", dir.filePath("probe.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("job dialect: the heidenhain dialect writes milling programs only, not a probing unit's programs"),
+                 qPrintable(r.err));
+        r = runTaiwa({"export", sourcePath("resources/samples/probe-bore.taiwa"), "--out", dir.filePath("p"), "--dialect", "heidenhain"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("not a probing unit's programs"), qPrintable(r.err));
+        r = runTaiwa({"export", sourcePath("resources/samples/m4-standard.taiwa"), "--out", dir.filePath("m"), "--dialect", "heidenhain"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(readFile(dir.filePath("m/m4-standard.h")).starts_with("0 BEGIN PGM m4-standard MM\n"));
+        QVERIFY(!QFileInfo::exists(dir.filePath("m/m4-standard.nc")));
+
+        QTemporaryDir config;
+        const QString folder = config.filePath("taiwa/dialects");
+        QVERIFY(QDir().mkpath(folder));
+        json bad = json::parse(readFile(sourcePath("resources/dialects/sinumerik.json")));
+        bad["name"] = "mazak";
+        bad["syntax"] = "mazatrol";
+        writeFile(folder + "/mazak.json", bad.dump(2));
+        json range = json::parse(readFile(sourcePath("resources/dialects/sinumerik.json")));
+        range["name"] = "siemens-old";
+        range["moreWorkOffsets"] = json::array({"G505-G599"});
+        writeFile(folder + "/old.json", range.dump(2));
+        r = runTaiwa({"--list-dialects"}, {"XDG_CONFIG_HOME=" + config.path()});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("sinumerik\t") && !r.out.contains("mazak") && !r.out.contains("siemens-old"), qPrintable(r.out));
+        QVERIFY2(r.err.contains(QRegularExpression(QRegularExpression::escape(folder + "/mazak.json:") +
+                                                   "[0-9]+: syntax: must be \"iso\", \"sinumerik\" or \"klartext\"")),
+                 qPrintable(r.err));
+        QVERIFY2(r.err.contains(folder + "/old.json:") &&
+                     r.err.contains(": moreWorkOffsets: 'G505-G599' is neither a G code (\"G59.1\") nor a range (\"G505..G599\")"),
+                 qPrintable(r.err));
+    }
+
     // A lathe job exports the five files: the lathe tape (G18, diameters,
     // feed per revolution) beside the sheet and steps.json with the profile.
     void latheExportWritesTheLatheTape()
