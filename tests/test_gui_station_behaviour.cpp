@@ -274,6 +274,35 @@ private slots:
                  qPrintable(w.ncView()->text()->toPlainText().left(40)));
     }
 
+    // Every dialect is a choice of the NC view's chooser: HEIDENHAIN shows
+    // the Klartext program; a lathe job's view in a milling-only dialect
+    // says why there is no program instead of showing a wrong one.
+    void everyDialectIsAChoice()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.planRunner()->flush();
+        auto* chooser = w.findChild<QComboBox*>("nc.dialect");
+        QVERIFY(chooser);
+        QStringList offered;
+        for (int i = 0; i < chooser->count(); ++i) offered << chooser->itemText(i);
+        QCOMPARE(offered, (QStringList{"fanuc", "linuxcnc", "haas", "sinumerik", "heidenhain"}));
+        chooser->setFocus();
+        while (chooser->currentText() != "heidenhain") QTest::keyClick(chooser, Qt::Key_Down);
+        w.planRunner()->flush();
+        QVERIFY2(w.ncView()->text()->toPlainText().startsWith("0 BEGIN PGM m4-standard MM\n"),
+                 qPrintable(w.ncView()->text()->toPlainText().left(60)));
+        QVERIFY(w.ncView()->text()->toPlainText().contains("TOOL CALL"));
+        QTest::keyClick(chooser, Qt::Key_Up);  // sinumerik
+        w.planRunner()->flush();
+        QVERIFY(w.ncView()->text()->toPlainText().contains("MCALL CYCLE81("));
+
+        StationWindow lathe(test::sourcePath("resources/samples/lathe-turned-shaft.taiwa"));
+        lathe.planRunner()->setDialect("sinumerik");
+        lathe.planRunner()->flush();
+        QVERIFY2(lathe.ncView()->text()->toPlainText().contains("the sinumerik dialect writes milling programs only"),
+                 qPrintable(lathe.ncView()->text()->toPlainText().left(200)));
+    }
+
     void unnamedJobTapeEqualsTheExportedOne()
     {
         // One function builds the post options for the NC view and for export:

@@ -113,6 +113,13 @@ private slots:
         QVERIFY2(exported.code == 0, qPrintable(exported.out));
         QVERIFY(QFile::exists(work_.filePath("out/plate.nc")));
         QVERIFY(QFile::exists(work_.filePath("out/plate.sheet.pdf")));
+        // Every shipped dialect is in the package, and posts from it.
+        for (const char* d : {"fanuc", "haas", "linuxcnc", "sinumerik", "heidenhain"})
+            QVERIFY2(QFile::exists(root.filePath(QString("usr/share/taiwa/dialects/%1.json").arg(d))), d);
+        const Run klartext = run(taiwa, {"export", sample, "--out", work_.filePath("tnc"), "--dialect", "heidenhain"}, {},
+                                 {"TAIWA_TOOL_DB=" + work_.filePath("tools.sqlite")});
+        QVERIFY2(klartext.code == 0, qPrintable(klartext.out));
+        QVERIFY(QFile::exists(work_.filePath("tnc/plate.h")));
         // The tool library went where it was told, not into the package's tree.
         QVERIFY(QFile::exists(work_.filePath("tools.sqlite")));
         QVERIFY(QDir(root.path()).entryList({"*.sqlite"}, QDir::Files).isEmpty());
