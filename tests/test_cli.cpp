@@ -370,19 +370,19 @@ private slots:
                  qPrintable(r.err));
     }
 
-    // Siemens and HEIDENHAIN tapes are milling tapes: a lathe job or a
-    // probing unit is refused by name, on the job's dialect (check) and on
-    // --dialect (export, nothing written); a milling job's tape is the
-    // control's own kind of file. A shop's dialect with a syntax this
+    // What a dialect does not write is refused by name, on the job's dialect
+    // (check) and on --dialect (export, nothing written): a lathe tape in
+    // HEIDENHAIN's Klartext, a probing unit's programs for Siemens or
+    // HEIDENHAIN; a tape is the control's own kind of file. A shop's dialect with a syntax this
     // program has no writer for is left out naming file, line and key.
     void millingOnlyDialectsRefuseLatheAndProbing()
     {
         QTemporaryDir dir;
         const QString lathe = sourcePath("resources/samples/lathe-turned-shaft.taiwa");
-        auto r = runTaiwa({"export", lathe, "--out", dir.filePath("l"), "--dialect", "sinumerik"});
+        auto r = runTaiwa({"export", lathe, "--out", dir.filePath("l"), "--dialect", "heidenhain"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("the sinumerik dialect writes milling programs only, not a lathe job's tape; "
-                                "fanuc, linuxcnc, haas can; nothing was written"),
+        QVERIFY2(r.err.contains("the heidenhain dialect writes no lathe tapes (Klartext is a milling control's language); "
+                                "fanuc, linuxcnc, haas, sinumerik can; nothing was written"),
                  qPrintable(r.err));
         QVERIFY(!QDir(dir.filePath("l")).exists() || QDir(dir.filePath("l")).isEmpty());
         json probe = json::parse(readFile(sourcePath("resources/samples/probe-bore.taiwa")));
@@ -390,11 +390,14 @@ private slots:
         writeFile(dir.filePath("probe.taiwa"), probe.dump(2));
         r = runTaiwa({"check", dir.filePath("probe.taiwa")});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("job dialect: the heidenhain dialect writes milling programs only, not a probing unit's programs"),
+        QVERIFY2(r.err.contains("job dialect: the heidenhain dialect writes no probing unit's programs; fanuc, linuxcnc, haas can"),
                  qPrintable(r.err));
         r = runTaiwa({"export", sourcePath("resources/samples/probe-bore.taiwa"), "--out", dir.filePath("p"), "--dialect", "heidenhain"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("not a probing unit's programs"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("writes no probing unit's programs"), qPrintable(r.err));
+        r = runTaiwa({"export", lathe, "--out", dir.filePath("s"), "--dialect", "sinumerik"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(readFile(dir.filePath("s/lathe-turned-shaft.mpf")).find("G18 DIAMON G710") != std::string::npos);
         r = runTaiwa({"export", sourcePath("resources/samples/m4-standard.taiwa"), "--out", dir.filePath("m"), "--dialect", "heidenhain"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(readFile(dir.filePath("m/m4-standard.h")).starts_with("0 BEGIN PGM m4-standard MM\n"));

@@ -297,9 +297,9 @@ private slots:
         QVERIFY(w.ncView()->text()->toPlainText().contains("MCALL CYCLE81("));
 
         StationWindow lathe(test::sourcePath("resources/samples/lathe-turned-shaft.taiwa"));
-        lathe.planRunner()->setDialect("sinumerik");
+        lathe.planRunner()->setDialect("heidenhain");
         lathe.planRunner()->flush();
-        QVERIFY2(lathe.ncView()->text()->toPlainText().contains("the sinumerik dialect writes milling programs only"),
+        QVERIFY2(lathe.ncView()->text()->toPlainText().contains("the heidenhain dialect writes no lathe tapes"),
                  qPrintable(lathe.ncView()->text()->toPlainText().left(200)));
     }
 

@@ -204,8 +204,8 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         return Failure{why->message + "; nothing was written"};
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) return Failure{"unknown dialect '" + options.dialect + "'; nothing was written"};
-    if (auto why = plan.mmJob.bar ? post::millingOnly(*dialect, "a lathe job's tape")
-                   : !plan.setups.empty() ? post::millingOnly(*dialect, "a probing unit's programs")
+    if (auto why = plan.mmJob.bar ? post::cannotPost(*dialect, post::Task::LatheTape)
+                   : !plan.setups.empty() ? post::cannotPost(*dialect, post::Task::ProbingPrograms)
                                           : std::nullopt)
         return Failure{*why + "; nothing was written"};
     // The tape's file: STEM.nc, or the control's own kind (STEM.h for HEIDENHAIN).

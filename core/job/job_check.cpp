@@ -188,8 +188,8 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
             // Lathe tapes and probing cycles are written in the G-code dialects.
             const bool probing = std::any_of(mm.units.begin(), mm.units.end(),
                                              [](const auto& u) { return u.module.name() == "PROBE"; });
-            if (auto refusal = lathe ? post::millingOnly(*d, "a lathe job's tape")
-                               : probing ? post::millingOnly(*d, "a probing unit's programs")
+            if (auto refusal = lathe ? post::cannotPost(*d, post::Task::LatheTape)
+                               : probing ? post::cannotPost(*d, post::Task::ProbingPrograms)
                                          : std::nullopt)
                 out.push_back(jobError("dialect", *refusal));
         }

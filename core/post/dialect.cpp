@@ -84,13 +84,28 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
     throw refuse("not a work offset");
 }
 
-std::optional<std::string> millingOnly(const Dialect& d, const std::string& what)
+namespace {
+
+bool posts(const Dialect& d, Task task)
 {
-    if (d.syntax == Syntax::Iso) return std::nullopt;
-    std::string iso;
+    switch (task) {
+    case Task::LatheTape: return d.syntax != Syntax::Klartext;
+    case Task::ProbingPrograms: return d.syntax == Syntax::Iso;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::optional<std::string> cannotPost(const Dialect& d, Task task)
+{
+    if (posts(d, task)) return std::nullopt;
+    std::string can;
     for (const Dialect& other : dialectLibrary())
-        if (other.syntax == Syntax::Iso) iso += (iso.empty() ? "" : ", ") + other.name;
-    return fmt::format("the {} dialect writes milling programs only, not {}; {} can", d.name, what, iso);
+        if (posts(other, task)) can += (can.empty() ? "" : ", ") + other.name;
+    if (task == Task::LatheTape)
+        return fmt::format("the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can", d.name, can);
+    return fmt::format("the {} dialect writes no probing unit's programs; {} can", d.name, can);
 }
 
 const Dialect* findDialect(const std::string& name)

@@ -103,11 +103,13 @@ const std::vector<Dialect>& dialectLibrary();
 // The shop's files that were left out, one sentence each.
 const std::vector<std::string>& dialectLibraryProblems();
 
-// Whether `d` posts programs beyond milling (lathe tapes, probing cycles):
-// the G-code dialects with FANUC or LinuxCNC macros do; Siemens and
-// HEIDENHAIN tapes are milling tapes for now. Otherwise the sentence to
-// refuse `what` with ("a lathe job", "a probing unit").
-std::optional<std::string> millingOnly(const Dialect& d, const std::string& what);
+// What a dialect may not write beside milling tapes: a lathe tape (not in
+// Klartext: HEIDENHAIN's lathe controls do not speak it) and a probing
+// unit's programs (the G-code dialects with FANUC or LinuxCNC macros).
+enum class Task { LatheTape, ProbingPrograms };
+// Nothing when `d` writes `task`; else the sentence refusing it, naming the
+// dialects that can.
+std::optional<std::string> cannotPost(const Dialect& d, Task task);
 
 const Dialect& fanucDialect();
 const Dialect& linuxcncDialect();

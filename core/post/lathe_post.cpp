@@ -1,7 +1,8 @@
 // The lathe post-processor (lathe_post.h). The dialect's data gives the
 // framing, block numbers, number style, comments, coolant and program end;
 // what a lathe says differently in each family (FANUC or LinuxCNC: the
-// dialect's macroSyntax) is in one small table, as for the probing cycle.
+// dialect's macroSyntax; Siemens: its syntax) is in one small table, as for
+// the probing cycle.
 #include "post/lathe_post.h"
 
 #include "post/dialect.h"
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace taiwa {
@@ -25,14 +27,16 @@ using turning::ZR;
 // What the two families of controls write differently on a lathe.
 struct LatheWords {
     bool fanuc = false;
+    bool siemens = false;    // SINUMERIK: T n D1, G96 S LIMS=, arcs by CR=, no G71 (explicit passes)
     const char* plane;       // preamble: plane, diameter mode, feed per revolution
     const char* feedPerRev;
 };
 
 LatheWords latheWords(const post::Dialect& d)
 {
-    if (d.macroSyntax == "fanuc") return {true, "G18", "G99"};
-    return {false, "G18 G7", "G95"};
+    if (d.syntax == post::Syntax::Sinumerik) return {false, true, "G18 DIAMON", "G95"};
+    if (d.macroSyntax == "fanuc") return {true, false, "G18", "G99"};
+    return {false, false, "G18 G7", "G95"};
 }
 
 std::string upper(std::string s)
@@ -92,6 +96,12 @@ public:
 
     void comment(const std::string& text)
     {
+        if (d_.semicolonComments) {
+            std::string c = "; " + post::commentText(text, d_.upperCaseComments);
+            if (c.size() > d_.maxLineLength) c.resize(d_.maxLineLength);
+            line(c);
+            return;
+        }
         std::string c = "(" + post::commentText(text, d_.upperCaseComments);
         if (c.size() + 1 > d_.maxLineLength) c.resize(d_.maxLineLength - 1);
         line(c + ")");
@@ -139,6 +149,17 @@ public:
     void linear(ZR to, double feed, const std::string& prefix = {}) { move("G1", to, feed, prefix); }
     void arc(bool cw, ZR to, ZR centre, double feed)
     {
+        if (w_.siemens) {
+            // The radius, negative for more than a half turn: CR= is a radius
+            // on every control, where I under DIAMON is not said the same way.
+            const double az = at_.z - centre.z, ar = at_.r - centre.r, bz = to.z - centre.z, br = to.r - centre.r;
+            double sweep = std::atan2(az * br - ar * bz, az * bz + ar * br);  // counter-clockwise, Z right and X up
+            if (cw) sweep = -sweep;
+            if (sweep <= 0) sweep += 2 * std::numbers::pi;
+            const double radius = std::hypot(az, ar);
+            move(cw ? "G2" : "G3", to, feed, {}, "CR=" + num(sweep > std::numbers::pi ? -radius : radius));
+            return;
+        }
         move(cw ? "G2" : "G3", to, feed, {}, "I" + num(centre.r - at_.r) + " K" + num(centre.z - at_.z));
     }
 
@@ -214,10 +235,14 @@ public:
             w_.comment(fmt::format("T{:02d} = library T{} {} R{} orientation {}", station, id, t ? t->name : "?",
                                    t ? w_.num(t->cornerRadius) : "?", orientationOf(id)));
         }
-        w_.block(fmt::format("{} {} G40 G80 G90 {} {}", w_.words().plane, w_.inch() ? "G20" : "G21",
-                             post::workOffsetWords(d, o_.workOffset), w_.words().feedPerRev));
+        if (w_.words().siemens)
+            w_.block(fmt::format("{} {} G40 G90 {} {}", w_.words().plane, w_.inch() ? d.inchWord : d.metricWord,
+                                 post::workOffsetWords(d, o_.workOffset), w_.words().feedPerRev));
+        else
+            w_.block(fmt::format("{} {} G40 G80 G90 {} {}", w_.words().plane, w_.inch() ? "G20" : "G21",
+                                 post::workOffsetWords(d, o_.workOffset), w_.words().feedPerRev));
         // LinuxCNC takes the roughing contours as subroutines, defined before they are called.
-        if (!w_.words().fanuc)
+        if (!w_.words().fanuc && !w_.words().siemens)
             for (std::size_t i = 0; i < steps_.size(); ++i)
                 if (usesCycle(steps_[i])) {
                     w_.source({static_cast<int>(i), -1});
@@ -240,6 +265,7 @@ public:
             stop();
             w_.rapid({o_.latheChangeZ, o_.latheChangeX / 2.0});
             if (w_.words().fanuc) w_.block(fmt::format("T{:02d}{:02d}", station, station));
+            else if (w_.words().siemens) w_.block(fmt::format("T{} D1", station));
             else w_.block(fmt::format("T{} M6 G43", station));
             w_.forget();
             station_ = station;
@@ -291,7 +317,12 @@ public:
     }
 
 private:
-    bool usesCycle(const Step& s) const { return o_.turningCycles && s.turn && s.turn->path.cycle.has_value(); }
+    // The control's G71 where the step has one (Siemens' CYCLE95 is not
+    // written: its tapes carry the passes).
+    bool usesCycle(const Step& s) const
+    {
+        return o_.turningCycles && !w_.words().siemens && s.turn && s.turn->path.cycle.has_value();
+    }
     static int subNumber(std::size_t stepIndex) { return 100 + static_cast<int>(stepIndex) + 1; }
 
     int stationOf(int id) const
@@ -313,6 +344,7 @@ private:
         // G96 S is in feet per minute under G20.
         const double vc = w_.inch() ? c.surfaceSpeed * 1000.0 / 304.8 : c.surfaceSpeed;
         if (w_.words().fanuc) return "G96 S" + post::formatInteger(vc);
+        if (w_.words().siemens) return "G96 S" + post::formatInteger(vc) + " LIMS=" + post::formatInteger(c.maxRpm);
         return "G96 D" + post::formatInteger(c.maxRpm) + " S" + post::formatInteger(vc);
     }
 
@@ -379,7 +411,7 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
 {
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
-    if (const auto why = post::millingOnly(*dialect, "a lathe job's tape")) throw std::invalid_argument(*why);
+    if (const auto why = post::cannotPost(*dialect, post::Task::LatheTape)) throw std::invalid_argument(*why);
     for (const auto& s : orderedSteps) {
         if (!s.turn || !s.tool) throw std::invalid_argument("post-processor: step " + s.label() + " is not a turning step with a tool");
         if (!findTool(library, s.tool->toolId))

@@ -46,7 +46,7 @@ const post::Dialect& dialectOf(const PostOptions& o)
 {
     const post::Dialect* d = post::findDialect(o.dialect);
     if (!d) throw std::invalid_argument("unknown dialect '" + o.dialect + "'");
-    if (const auto why = post::millingOnly(*d, "a probing unit's programs")) throw std::invalid_argument(*why);
+    if (const auto why = post::cannotPost(*d, post::Task::ProbingPrograms)) throw std::invalid_argument(*why);
     return *d;
 }
 
