@@ -28,6 +28,13 @@ struct Refusal {
 
 [[noreturn]] void refuse(const std::string& what) { throw Refusal{what}; }
 
+// "line 12: why [the line]" (1-based).
+std::string lineError(int line, const Refusal& r, const std::vector<std::string>& lines)
+{
+    const std::size_t i = static_cast<std::size_t>(line) - 1;
+    return "line " + std::to_string(line) + ": " + r.what + (i < lines.size() ? " [" + lines[i] + "]" : std::string());
+}
+
 std::vector<std::string> splitLines(const std::string& text)
 {
     std::vector<std::string> lines;
@@ -187,9 +194,7 @@ public:
             if (!sinumerik_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
                 refuse("a Haas tape begins and ends with a '%' line");
         } catch (const Refusal& r) {
-            const std::size_t i = static_cast<std::size_t>(m_.line) - 1;
-            m_.out.error = "line " + std::to_string(m_.line) + ": " + r.what +
-                           (i < lines.size() ? " [" + lines[i] + "]" : std::string());
+            m_.out.error = lineError(m_.line, r, lines);
         }
         return std::move(m_.out);
     }
@@ -540,9 +545,7 @@ public:
                 block(k);
             }
         } catch (const Refusal& r) {
-            const std::size_t i = static_cast<std::size_t>(m_.line) - 1;
-            m_.out.error = "line " + std::to_string(m_.line) + ": " + r.what +
-                           (i < lines.size() ? " [" + lines[i] + "]" : std::string());
+            m_.out.error = lineError(m_.line, r, lines);
         }
         return std::move(m_.out);
     }
