@@ -370,6 +370,51 @@ private slots:
                  qPrintable(r.err));
     }
 
+    // The operator's S and F per step kind of a unit ("cutting") reach the
+    // tape in place of the tool's cutting data, marked on the sheet; on a
+    // lathe F is per revolution and S a surface speed (drills: rpm); keys
+    // that are no step of the module, values out of the machine's range and
+    // a PROBE unit's "cutting" are refused naming the field.
+    void cuttingOverridesReachTheTape()
+    {
+        QTemporaryDir dir;
+        json lathe = json::parse(readFile(sourcePath("resources/samples/lathe-turned-shaft.taiwa")));
+        lathe["units"][0]["cutting"] = {{"turn-finish", {{"S", 180}, {"F", 0.08}}}, {"part", {{"F", 0.04}}}};
+        writeFile(dir.filePath("lathe.taiwa"), lathe.dump(2));
+        auto r = runTaiwa({"export", dir.filePath("lathe.taiwa"), "--out", dir.filePath("l"), "--dialect", "fanuc"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString tape = QString::fromStdString(readFile(dir.filePath("l/lathe.nc")));
+        const qsizetype finishing = tape.indexOf("TURN FINISHING");
+        QVERIFY(finishing > 0);
+        QVERIFY2(tape.indexOf("G96 S180 M3", finishing) > 0 && tape.indexOf(" F0.08\n", finishing) > 0, qPrintable(tape.mid(finishing, 400)));
+        QVERIFY(tape.indexOf(" F0.04\n", tape.indexOf("PARTING")) > 0);
+        const QString sheet = QString::fromStdString(readFile(dir.filePath("l/lathe.sheet.html")));
+        QVERIFY2(sheet.contains("vc 180*") && sheet.contains("S or F set by the operator"), qPrintable(sheet.left(200)));
+
+        json bad = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+        bad["units"][0]["cutting"] = {{"rough", {{"S", 8000}}}, {"wall", {{"S", 20000}, {"F", 20000}}}, {"floor", {{"F", 0.5}}}};
+        writeFile(dir.filePath("bad.taiwa"), bad.dump(2));
+        r = runTaiwa({"check", dir.filePath("bad.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        for (const char* expected : {
+                 "bad.taiwa: unit 1 (M4) cutting.rough: \"rough\" is not a step of module M4; its steps are pilot, roughing, floor, wall, inclined",
+                 "bad.taiwa: unit 1 (M4) cutting.wall.S: the spindle speed S 20000 rpm is out of range: give 1 to 12000 rpm (the spindle limit of vmc)",
+                 "bad.taiwa: unit 1 (M4) cutting.wall.F: the feed F 20000 mm/min is out of range: give 1 to 10000 mm/min (the feed limit of vmc)",
+                 "bad.taiwa: unit 1 (M4) cutting.floor.F: the feed F 0.5 mm/min is out of range"})
+            QVERIFY2(r.err.contains(expected), qPrintable(r.err));
+        json probe = json::parse(readFile(sourcePath("resources/samples/probe-bore.taiwa")));
+        probe["units"][0]["cutting"] = {{"roughing", {{"S", 1000}}}};
+        writeFile(dir.filePath("probe.taiwa"), probe.dump(2));
+        r = runTaiwa({"check", dir.filePath("probe.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cutting"), qPrintable(r.err));
+        json empty = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+        empty["units"][0]["cutting"] = {{"roughing", json::object()}};
+        writeFile(dir.filePath("empty.taiwa"), empty.dump(2));
+        r = runTaiwa({"check", dir.filePath("empty.taiwa")});
+        QVERIFY2(r.exitCode == 2 && r.err.contains("unit 1 (M4) cutting.roughing: give S, F or both"), qPrintable(r.err));
+    }
+
     // What a dialect does not write is refused by name, on the job's dialect
     // (check) and on --dialect (export, nothing written): a lathe tape in
     // HEIDENHAIN's Klartext, a probing unit's programs for Siemens or

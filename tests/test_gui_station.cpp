@@ -67,9 +67,9 @@ private slots:
         const Plan plan = planJob(*readJobFile(test::sourcePath("resources/samples/m4-standard.taiwa").toStdString()).job,
                                   TechnologyTable::builtIn(), defaultToolLibrary());
         table.setPlan(std::make_shared<const Plan>(plan));
-        QCOMPARE(table.horizontalHeaderItem(6)->text(), QString("Time"));
-        QCOMPARE(table.item(1, 6)->text(), clockTime(*plan.steps[1].minutes));
-        QVERIFY(table.item(1, 6)->text().contains(':'));
+        QCOMPARE(table.horizontalHeaderItem(StepTable::Time)->text(), QString("Time"));
+        QCOMPARE(table.item(1, StepTable::Time)->text(), clockTime(*plan.steps[1].minutes));
+        QVERIFY(table.item(1, StepTable::Time)->text().contains(':'));
     }
     void initTestCase()
     {

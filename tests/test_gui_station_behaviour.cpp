@@ -274,6 +274,61 @@ private slots:
                  qPrintable(w.ncView()->text()->toPlainText().left(40)));
     }
 
+    // S and F typed into the step list: the unit's speed and feed for steps
+    // of that kind, kept in the job (one undo step each), in bold in the
+    // list, on the tape; an emptied cell goes back to the tool's data.
+    void stepListSetsSpeedAndFeed()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.planRunner()->flush();
+        StepTable* table = w.stepTable();
+        int row = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->item(r, StepTable::StepName)->text() == "Roughing I") row = r;
+        QVERIFY(row >= 0);
+        const QString toolSpeed = table->item(row, StepTable::Speed)->text();
+        QVERIFY(!toolSpeed.isEmpty() && toolSpeed != "7100");
+        const auto type = [&](StepTable::Column column, const QString& text) {
+            table->setFocus();
+            table->setCurrentCell(row, column);
+            QTest::keyClick(table, Qt::Key_F2);
+            auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());  // the cell's editor
+            QVERIFY(editor && table->isAncestorOf(editor));
+            editor->selectAll();
+            QTest::keyClick(editor, Qt::Key_Backspace);
+            QTest::keyClicks(editor, text);
+            QTest::keyClick(editor, Qt::Key_Return);
+            // Return commits on the next turn of the event loop, and the
+            // table tells the edit on the one after (once its editor has closed).
+            for (int turn = 0; turn < 3; ++turn) QCoreApplication::processEvents();
+            w.planRunner()->flush();
+        };
+        type(StepTable::Speed, "7100");
+        type(StepTable::Feed, "1800");
+        const auto& cutting = w.document()->job().units[0].cutting;
+        QVERIFY(cutting.contains("roughing"));
+        QCOMPARE(cutting.at("roughing").speed, std::optional<double>(7100));
+        QCOMPARE(cutting.at("roughing").feed, std::optional<double>(1800));
+        QCOMPARE(table->item(row, StepTable::Speed)->text(), QString("7100"));
+        QVERIFY(table->item(row, StepTable::Speed)->font().bold());
+        QVERIFY(!table->item(row + 1, StepTable::Speed)->font().bold());
+        const QString tape = w.ncView()->text()->toPlainText();
+        QVERIFY2(tape.contains("S7100 M3\n") && tape.contains(QRegularExpression(" F1800\\.?\n")), qPrintable(tape.left(800)));
+        // Not a number: nothing changes.
+        type(StepTable::Feed, "fast");
+        QCOMPARE(w.document()->job().units[0].cutting.at("roughing").feed, std::optional<double>(1800));
+        QCOMPARE(table->item(row, StepTable::Feed)->text(), QString("1800"));
+        // Emptied: the tool's speed again; undo brings the 7100 back.
+        type(StepTable::Speed, "");
+        QVERIFY(!w.document()->job().units[0].cutting.at("roughing").speed);
+        QCOMPARE(table->item(row, StepTable::Speed)->text(), toolSpeed);
+        w.document()->undoStack()->undo();
+        w.planRunner()->flush();
+        QCOMPARE(w.document()->job().units[0].cutting.at("roughing").speed, std::optional<double>(7100));
+    }
+
     // Every dialect is a choice of the NC view's chooser: HEIDENHAIN shows
     // the Klartext program; a lathe job's view in a milling-only dialect
     // says why there is no program instead of showing a wrong one.

@@ -286,6 +286,18 @@ void StationWindow::wire()
         doc_->edit(after, tr("Dialect %1").arg(d));
     });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
+    // S or F typed in the step list: the unit's speed or feed for steps of
+    // that kind, an edit of the job (undoable); an emptied cell removes it.
+    connect(steps_->table(), &StepTable::cuttingEdited, this,
+            [this](int u, const QString& key, bool speed, std::optional<double> value) {
+                Job j = doc_->job();
+                if (u < 0 || static_cast<std::size_t>(u) >= j.units.size()) return;
+                auto& cutting = j.units[static_cast<std::size_t>(u)].cutting;
+                CuttingOverride& o = cutting[key.toStdString()];
+                (speed ? o.speed : o.feed) = value;
+                if (o.empty()) cutting.erase(key.toStdString());
+                doc_->edit(j, (speed ? tr("Spindle speed of %1, unit %2") : tr("Feed of %1, unit %2")).arg(key).arg(u + 1));
+            });
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     connect(units_, &UnitListPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
     if (!preview_) return;

@@ -83,6 +83,10 @@ void StepPanel::setPlan(const std::shared_ptr<const Plan>& plan)
 {
     const int keep = selectedStep();
     plan_ = plan;
+    if (table_->editing()) {
+        table_->setPlan(plan);  // waits for the cell being typed into; the selection stays
+        return;
+    }
     {
         const QSignalBlocker block(table_);
         table_->setPlan(plan);

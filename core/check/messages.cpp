@@ -210,6 +210,24 @@ std::string unknownPinKey(const std::string& key)
     return fmt::format("\"{}\" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined", key);
 }
 
+std::string unknownCuttingKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys)
+{
+    std::string list;
+    for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
+    return fmt::format("\"{}\" is not a step of module {}; its steps are {}", key, module, list);
+}
+
+std::string noCuttingSteps(const std::string& module)
+{
+    return fmt::format("module {} has no cutting steps to set a speed or feed for", module);
+}
+
+std::string cuttingValueOutOfRange(const std::string& what, double value, const std::string& unit, double low,
+                                   double high, const std::string& why)
+{
+    return fmt::format("{} {:g} {} is out of range: give {:g} to {:g} {}{}", what, value, unit, low, high, unit, why);
+}
+
 std::string toolNotInLibrary(int id) { return fmt::format("tool T{} is not in the tool library", id); }
 
 std::string noToolOfType(const std::string& typeName)

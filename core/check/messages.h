@@ -61,6 +61,11 @@ std::string pilotHoleUnknown(int code);
 
 // Tools.
 std::string unknownPinKey(const std::string& key);
+// The operator's speeds and feeds of a unit's steps ("cutting").
+std::string unknownCuttingKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys);
+std::string noCuttingSteps(const std::string& module);
+std::string cuttingValueOutOfRange(const std::string& what, double value, const std::string& unit, double low,
+                                   double high, const std::string& why);
 std::string toolNotInLibrary(int id);
 std::string noToolOfType(const std::string& typeName);
 std::string noTaperTool(double taper, const std::vector<double>& anglesInLibrary);

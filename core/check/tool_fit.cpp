@@ -80,11 +80,17 @@ void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::
     }
 }
 
+const std::vector<std::string>& millingStepKeys()
+{
+    static const std::vector<std::string> keys{"pilot", "roughing", "floor", "wall", "inclined"};
+    return keys;
+}
+
 void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out)
 {
-    static const std::set<std::string> kinds{"pilot", "roughing", "floor", "wall", "inclined"};
+    const auto& kinds = millingStepKeys();
     for (const auto& [key, id] : pins) {
-        if (!kinds.count(key)) out.push_back(error(unitNo, module, "tools." + key, msg::unknownPinKey(key)));
+        if (std::find(kinds.begin(), kinds.end(), key) == kinds.end()) out.push_back(error(unitNo, module, "tools." + key, msg::unknownPinKey(key)));
         else if (!findTool(*ctx.library, id)) out.push_back(error(unitNo, module, "tools." + key, msg::toolNotInLibrary(id)));
     }
 }

@@ -88,6 +88,9 @@ void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::
                Diagnostics& out);
 // Pins with an unknown step kind or a tool id not in the library.
 void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out);
+// The step keys of the pocket modules (pins, speeds and feeds): "pilot",
+// "roughing", "floor", "wall", "inclined".
+const std::vector<std::string>& millingStepKeys();
 
 // The figure of one unit at the top surface, for the interference check.
 struct UnitFigure {

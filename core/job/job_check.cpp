@@ -124,6 +124,51 @@ bool checkOverrides(const TechnologyOverrides& mm, LengthUnit shown, Diagnostics
     return ok;
 }
 
+// The operator's speeds and feeds: keys of the module's steps, S and F
+// positive and within the machine (S as rpm up to its spindle limit, or a
+// surface speed; F per minute up to its feed limit, or per revolution).
+void checkCutting(const std::map<std::string, CuttingOverride>& cutting, const ModuleKind& kind, int unitNo,
+                  const Machine* machine, LengthUnit shown, Diagnostics& out)
+{
+    if (cutting.empty()) return;
+    const std::vector<std::string> keys = kind.stepKeys();
+    const auto error = [&](const std::string& field, const std::string& message) {
+        out.push_back({Severity::Error, unitNo, kind.name(), field, message});
+    };
+    if (keys.empty()) {
+        error("cutting", msg::noCuttingSteps(kind.name()));
+        return;
+    }
+    const bool lathe = kind.machineKind() == MachineKind::Lathe;
+    const double maxRpm = machine && machine->maxSpindleSpeed > 0 ? machine->maxSpindleSpeed : 100000.0;
+    const double maxFeed = machine && machine->maxFeed > 0 ? machine->maxFeed : 100000.0;
+    const std::string length = unitSymbol(shown);
+    for (const auto& [key, c] : cutting) {
+        const std::string field = "cutting." + key;
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+            error(field, msg::unknownCuttingKey(key, kind.name(), keys));
+            continue;
+        }
+        if (c.speed) {
+            const bool vc = kind.surfaceSpeedStep(key);
+            const double high = vc ? 2000.0 : maxRpm;
+            if (!std::isfinite(*c.speed) || *c.speed < 1.0 || *c.speed > high)
+                error(field + ".S", msg::cuttingValueOutOfRange(vc ? "the surface speed S" : "the spindle speed S", *c.speed,
+                                                               vc ? "m/min" : "rpm", 1.0, high,
+                                                               vc ? "" : machine ? " (the spindle limit of " + machine->id + ")" : ""));
+        }
+        if (c.feed) {
+            // Per revolution on a lathe (at most 5 mm), per minute on a mill up to the machine's feed.
+            const double low = lathe ? 0.001 : 1.0, high = lathe ? 5.0 : maxFeed;
+            if (!std::isfinite(*c.feed) || *c.feed < low || *c.feed > high)
+                error(field + ".F", msg::cuttingValueOutOfRange(
+                                        "the feed F", fromMm(*c.feed, shown), length + (lathe ? "/rev" : "/min"),
+                                        fromMm(low, shown), fromMm(high, shown),
+                                        lathe || !machine ? "" : " (the feed limit of " + machine->id + ")"));
+        }
+    }
+}
+
 }  // namespace
 
 std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTable& table)
@@ -211,6 +256,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
                                "; this job's machine " + machine->id + " is a " + toKey(machine->kind)});
             continue;
         }
+        checkCutting(mm.units[u].cutting, *kind, unitNo, machine, shown, out);
         const auto report = kind->check(module, unitNo, ctx);
         out.insert(out.end(), report.diagnostics.begin(), report.diagnostics.end());
         if (!report.figureValid) continue;

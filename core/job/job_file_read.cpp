@@ -47,6 +47,34 @@ std::string knownModule(const json& unit)
     return findModuleKind(name) ? name : std::string();
 }
 
+// The unit's "cutting": {"roughing": {"S": 8000, "F": 1500}, ...}; which
+// keys the module's steps have is the checks' to say.
+std::map<std::string, CuttingOverride> readCutting(const ObjectFields& unit)
+{
+    std::map<std::string, CuttingOverride> out;
+    const json* v = unit.find("cutting");
+    if (!v) return out;
+    if (!v->is_object()) {
+        unit.error("cutting", msg::io::wrongType("an object", *v));
+        return out;
+    }
+    for (const auto& [key, value] : v->items()) {
+        const std::string prefix = "cutting." + msg::io::fieldKey(key) + ".";
+        if (!value.is_object()) {
+            unit.error("cutting." + msg::io::fieldKey(key), msg::io::wrongType("an object with S and/or F", value));
+            continue;
+        }
+        const ObjectFields c = unit.nested(value, prefix);
+        c.rejectUnknown("a step's speed and feed", {"S", "F"});
+        CuttingOverride o;
+        o.speed = c.optionalNumber("S");
+        o.feed = c.optionalNumber("F");
+        if (o.empty()) unit.error("cutting." + msg::io::fieldKey(key), "give S, F or both");
+        else out[key] = o;
+    }
+    return out;
+}
+
 std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSink& sink)
 {
     const std::string module = knownModule(unit);
@@ -67,6 +95,7 @@ std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSi
     MachiningUnit out;
     out.name = f.string("name", "");
     out.module = findModuleKind(module)->read(f);
+    out.cutting = readCutting(f);
     return out;
 }
 

@@ -25,6 +25,16 @@ ordered unitJson(const MachiningUnit& unit)
     u["module"] = unit.module.name();
     u["name"] = unit.name;
     moduleKind(unit.module).write(unit.module, u);
+    if (!unit.cutting.empty()) {
+        ordered cutting = ordered::object();
+        for (const auto& [key, c] : unit.cutting) {
+            ordered o = ordered::object();
+            if (c.speed) o["S"] = number(*c.speed);
+            if (c.feed) o["F"] = number(*c.feed);
+            cutting[key] = o;
+        }
+        u["cutting"] = cutting;
+    }
     return u;
 }
 

@@ -8,6 +8,7 @@
 
 #include "model/result.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
@@ -38,6 +39,13 @@ struct Machine {
     double maxBarDiameter = 0.0;               // lathes: the largest bar through the spindle [mm]
     double jawLength = 0.0;                    // lathes: how far the jaws grip along Z [mm]
     std::string coolantOn = "M8", coolantOff = "M9";
+    // The slowest axis' rapid rate [mm/min]; 0 when none is given.
+    double slowestRapid() const
+    {
+        double slowest = 0.0;
+        for (const auto& [axis, rate] : rapid) slowest = slowest == 0.0 ? rate : std::min(slowest, rate);
+        return slowest;
+    }
 };
 
 // Reads one machine definition; `source` names it in every message.

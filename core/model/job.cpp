@@ -15,7 +15,11 @@ Job withLengths(const Job& job, LengthUnit unit, const LengthMap& f)
     if (job.bar) out.bar = BarStock{f(job.bar->diameter), f(job.bar->length), f(job.bar->face), f(job.bar->bore)};
     for (auto* v : {&out.technology.alpha1, &out.technology.alpha2, &out.technology.alpha3, &out.technology.beta2})
         if (*v) *v = f(**v);
-    for (auto& u : out.units) u.module.convertLengths(f);
+    for (auto& u : out.units) {
+        u.module.convertLengths(f);
+        for (auto& [key, c] : u.cutting)
+            if (c.feed) c.feed = f(*c.feed);  // a length per minute or per revolution
+    }
     return out;
 }
 

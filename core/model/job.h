@@ -47,11 +47,13 @@ struct BarStock {
 // "floor", "wall", "inclined".
 using ToolPins = std::map<std::string, int>;
 
-// One machining unit: a module input of any kind (core/modules/) and the
-// name the operator gave it.
+// One machining unit: a module input of any kind (core/modules/), the name
+// the operator gave it, and the speeds and feeds the operator set for its
+// steps by step key (the keys of tool pins: "roughing", "turn-finish").
 struct MachiningUnit {
     std::string name;  // optional label the operator gave
     ModuleInput module;
+    std::map<std::string, CuttingOverride> cutting{};
     friend bool operator==(const MachiningUnit&, const MachiningUnit&) = default;
 };
 

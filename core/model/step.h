@@ -4,6 +4,7 @@
 #pragma once
 
 #include "model/geometry.h"
+#include "model/technology.h"
 #include "model/tool.h"
 #include "model/toolpath.h"
 #include "model/turn_path.h"
@@ -97,6 +98,10 @@ struct Step {
     std::optional<ToolChoice> tool;
     std::optional<ToolPath> path;
     std::optional<double> minutes;  // estimated machining time
+    // The operator's S and F for this step (its unit's `cutting` for its
+    // kind; F in mm per minute, or per revolution on a lathe), in place of
+    // the tool's cutting data.
+    CuttingOverride cutting{};
 
     std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)
     friend bool operator==(const Step&, const Step&) = default;

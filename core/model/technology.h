@@ -23,6 +23,18 @@ struct TurningTechnology {
     friend bool operator==(const TurningTechnology&, const TurningTechnology&) = default;
 };
 
+// The operator's spindle speed and feed for the steps of one kind of a unit,
+// in place of the tool's cutting data: S as the tape says it (rpm; a
+// turning step under constant surface speed: m/min) and F (per minute on
+// a mill, per revolution on a lathe, in the job's length unit). The
+// plunge feed follows F in proportion, as the control's feed override does.
+struct CuttingOverride {
+    std::optional<double> speed;  // S
+    std::optional<double> feed;   // F
+    bool empty() const { return !speed && !feed; }
+    friend bool operator==(const CuttingOverride&, const CuttingOverride&) = default;
+};
+
 struct TechnologyData {
     double alpha1 = 1.0;  // pilot hole stops alpha1 above the pocket floor [mm]
     double alpha2 = 0.3;  // wall allowance left by roughing [mm]

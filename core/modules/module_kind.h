@@ -88,6 +88,14 @@ public:
     {
         return std::nullopt;
     }
+    // The keys of the steps a unit of this kind may have (tool pins and the
+    // operator's speeds and feeds use them): "roughing", "turn-finish".
+    // None: the unit has no cutting steps (probing).
+    virtual std::vector<std::string> stepKeys() const { return {}; }
+    // The steps whose S is a surface speed in m/min (constant surface
+    // speed on a lathe), not rpm.
+    virtual bool surfaceSpeedStep(const std::string& /*key*/) const { return false; }
+
     // The kind of machine the module runs on: milling modules on a mill,
     // turning modules on a lathe.
     virtual MachineKind machineKind() const { return MachineKind::Mill; }

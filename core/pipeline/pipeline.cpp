@@ -80,13 +80,31 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
     }
 
+    // The operator's speeds and feeds, by step key; a turning step carries
+    // its cutting data, so it takes them (and its time) at once.
+    for (auto& step : plan.steps) {
+        const auto& cutting = plan.mmJob.units[static_cast<std::size_t>(step.unit)].cutting;
+        const auto it = cutting.find(toKey(step.kind));
+        if (it == cutting.end()) continue;
+        step.cutting = it->second;
+        if (!step.turn) continue;
+        TurnCutting& c = step.turn->cutting;
+        if (it->second.speed) (c.constantSurfaceSpeed ? c.surfaceSpeed : c.rpm) = *it->second.speed;
+        if (it->second.feed) {
+            if (c.feedPerRev > 0) c.plungeFeedPerRev *= *it->second.feed / c.feedPerRev;
+            c.feedPerRev = *it->second.feed;
+        }
+        const double rapid = machine && machine->slowestRapid() > 0 ? machine->slowestRapid() : 10000.0;
+        step.minutes = turnMinutes(step.turn->path, c, rapid);
+    }
+
     int currentTool = 0;
     for (const auto& step : plan.steps) {
         const Tool& tool = *findTool(library, step.tool->toolId);
         if (!plan.tool(tool.id)) plan.tools.push_back(tool);
         if (tool.id != currentTool) ++plan.toolChanges;
         currentTool = tool.id;
-        if (options.withToolPaths && !speedsFeeds(tool, plan.mmJob.material))
+        if (options.withToolPaths && !step.turn && !stepSpeedsFeeds(step, tool, plan.mmJob.material))
             plan.diagnostics.push_back(unitError(plan.mmJob, step.unit, "tools." + std::string(toKey(step.kind)),
                 "tool T" + std::to_string(tool.id) + " (" + tool.name + ") has no cutting data for material " +
                     plan.mmJob.material + "; add it in the tool library"));
@@ -120,7 +138,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
             if (step.turn) continue;  // turning steps come with their paths and times
             const Tool& tool = *findTool(library, step.tool->toolId);
             step.path = makeToolPath(step, tool, plan.technology, options.path);
-            step.minutes = estimateMinutes(*step.path, *speedsFeeds(tool, plan.mmJob.material));
+            step.minutes = estimateMinutes(*step.path, *stepSpeedsFeeds(step, tool, plan.mmJob.material));
         }
     };
     const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxPathThreads);

@@ -198,18 +198,20 @@ Content content(const Plan& plan, const SheetOptions& o)
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
         if (s.turn) {
             const TurnCutting& tc = s.turn->cutting;
-            return tc.constantSurfaceSpeed ? fmt::format("vc {:.0f}", tc.surfaceSpeed) : fmt::format("{:.0f}", tc.rpm);
+            return (tc.constantSurfaceSpeed ? fmt::format("vc {:.0f}", tc.surfaceSpeed) : fmt::format("{:.0f}", tc.rpm)) +
+                   (s.cutting.speed ? "*" : "");
         }
-        return sf ? fmt::format("{:.0f}", sf->rpm) : "-";
+        return sf ? fmt::format("{:.0f}", sf->rpm) + (s.cutting.speed ? "*" : "") : "-";
     };
     const auto feedText = [&](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
-        if (s.turn) return fmt::format("{}/rev", len(s.turn->cutting.feedPerRev));
-        return sf ? feed(sf->feed) : "-";
+        if (s.turn) return fmt::format("{}/rev", len(s.turn->cutting.feedPerRev)) + (s.cutting.feed ? "*" : "");
+        return sf ? feed(sf->feed) + (s.cutting.feed ? "*" : "") : "-";
     };
+
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& s = plan.steps[i];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-        const auto sf = t ? speedsFeeds(*t, job.material) : std::nullopt;
+        const auto sf = t ? stepSpeedsFeeds(s, *t, job.material) : std::nullopt;
         const PathLength pl = s.path ? pathLength(*s.path) : s.turn ? turnPathLength(s.turn->path) : PathLength{};
         // The unit by its number and the name the operator gave it.
         std::string unit = std::to_string(s.unit + 1);
@@ -246,6 +248,8 @@ Content content(const Plan& plan, const SheetOptions& o)
                                      std::to_string(orientation), t->holder});
     }
     c.notes = plan.notes();
+    if (std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return !s.cutting.empty(); }))
+        c.notes.push_back("* S or F set by the operator for the step, in place of the tool's cutting data.");
     double cutting = 0.0;
     for (const auto& s : plan.steps) cutting += s.minutes.value_or(0.0);
     c.total = fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all", cutting, plan.toolChanges,

@@ -1,6 +1,8 @@
 // Spindle speed and feed from a tool's cutting data.
 #include "tools/cutting.h"
 
+#include "model/step.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,6 +18,23 @@ std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& mate
     const bool drill = tool.type == ToolType::Drill || tool.type == ToolType::CentreDrill;
     sf.feed = std::min(std::round(sf.rpm * c->feedPerTooth * (drill ? 1 : tool.flutes)), maxFeed);
     sf.plungeFeed = std::round(sf.feed * c->plungeFactor);
+    return sf;
+}
+
+std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material)
+{
+    auto sf = speedsFeeds(tool, material);
+    const CuttingOverride& o = step.cutting;
+    if (!sf) {
+        if (!o.speed || !o.feed) return std::nullopt;
+        // The operator's numbers alone: plunging at half the feed.
+        return SpeedsFeeds{*o.speed, *o.feed, std::round(*o.feed / 2)};
+    }
+    if (o.speed) sf->rpm = *o.speed;
+    if (o.feed) {
+        if (sf->feed > 0) sf->plungeFeed = std::round(sf->plungeFeed * *o.feed / sf->feed);
+        sf->feed = *o.feed;
+    }
     return sf;
 }
 

@@ -21,4 +21,10 @@ struct SpeedsFeeds {
 std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& material, double maxRpm = 12000.0,
                                        double maxFeed = 10000.0);
 
+// A milling step's speeds and feeds: the tool's, with the operator's S and
+// F in their place where the step has them (Step::cutting); the plunge feed
+// follows F in proportion. nullopt as speedsFeeds, unless both are set.
+struct Step;
+std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material);
+
 }  // namespace taiwa

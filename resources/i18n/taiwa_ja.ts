@@ -618,6 +618,14 @@
             <translation>方言 %1</translation>
         </message>
         <message>
+            <source>Spindle speed of %1, unit %2</source>
+            <translation>%1の主軸回転数 (ユニット %2)</translation>
+        </message>
+        <message>
+            <source>Feed of %1, unit %2</source>
+            <translation>%1の送り (ユニット %2)</translation>
+        </message>
+        <message>
             <source>Edit %1 of unit %2</source>
             <translation>ユニット %2 の %1 を編集</translation>
         </message>
@@ -756,6 +764,14 @@
             <translation>工具</translation>
         </message>
         <message>
+            <source>S</source>
+            <translation>S</translation>
+        </message>
+        <message>
+            <source>F</source>
+            <translation>F</translation>
+        </message>
+        <message>
             <source>Start</source>
             <translation>開始深さ</translation>
         </message>
@@ -766,6 +782,18 @@
         <message>
             <source>Time</source>
             <translation>時間</translation>
+        </message>
+        <message>
+            <source>Spindle speed (rpm; m/min under constant surface speed): type to set it for this unit's steps of this kind, empty it for the tool's</source>
+            <translation>主軸回転数 (min⁻¹、周速一定制御では m/min)：入力するとこのユニットのこの種類の工程に設定、空にすると工具の切削条件に戻ります</translation>
+        </message>
+        <message>
+            <source>Feed (per minute; per revolution on a lathe): type to set it for this unit's steps of this kind, empty it for the tool's</source>
+            <translation>送り (毎分、旋盤では毎回転)：入力するとこのユニットのこの種類の工程に設定、空にすると工具の切削条件に戻ります</translation>
+        </message>
+        <message>
+            <source>Set for this step kind of the unit; empty the cell for the tool's cutting data</source>
+            <translation>このユニットのこの工程に設定された値です。空にすると工具の切削条件に戻ります</translation>
         </message>
     </context>
     <context>

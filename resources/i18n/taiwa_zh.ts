@@ -618,6 +618,14 @@
             <translation>方言 %1</translation>
         </message>
         <message>
+            <source>Spindle speed of %1, unit %2</source>
+            <translation>%1 的主轴转速（单元 %2）</translation>
+        </message>
+        <message>
+            <source>Feed of %1, unit %2</source>
+            <translation>%1 的进给（单元 %2）</translation>
+        </message>
+        <message>
             <source>Edit %1 of unit %2</source>
             <translation>编辑单元 %2 的 %1</translation>
         </message>
@@ -756,6 +764,14 @@
             <translation>刀具</translation>
         </message>
         <message>
+            <source>S</source>
+            <translation>S</translation>
+        </message>
+        <message>
+            <source>F</source>
+            <translation>F</translation>
+        </message>
+        <message>
             <source>Start</source>
             <translation>起始深度</translation>
         </message>
@@ -766,6 +782,18 @@
         <message>
             <source>Time</source>
             <translation>时间</translation>
+        </message>
+        <message>
+            <source>Spindle speed (rpm; m/min under constant surface speed): type to set it for this unit's steps of this kind, empty it for the tool's</source>
+            <translation>主轴转速（r/min；恒线速时为 m/min）：输入即为本单元此类工步设定，清空则恢复刀具的切削参数</translation>
+        </message>
+        <message>
+            <source>Feed (per minute; per revolution on a lathe): type to set it for this unit's steps of this kind, empty it for the tool's</source>
+            <translation>进给（每分钟；车床为每转）：输入即为本单元此类工步设定，清空则恢复刀具的切削参数</translation>
+        </message>
+        <message>
+            <source>Set for this step kind of the unit; empty the cell for the tool's cutting data</source>
+            <translation>为本单元此类工步设定的值；清空则恢复刀具的切削参数</translation>
         </message>
     </context>
     <context>

@@ -13,7 +13,7 @@ namespace taiwa {
 namespace {
 
 const std::vector<std::string> kKeys{"module", "name",         "corner", "L1", "L2",      "depth", "theta1",
-                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "stepOver", "tools"};
+                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "stepOver", "tools", "cutting"};
 
 }  // namespace
 
@@ -40,6 +40,7 @@ public:
     }
     const char* drawing() const override { return ":/modules/m2d.svg"; }
     const char* outlineField() const override { return "corner"; }
+    std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
 
     ModuleInput makeDefault(const Stock& s) const override
     {

@@ -12,13 +12,14 @@ namespace taiwa {
 namespace {
 
 const std::vector<std::string> kKeys{"module", "name", "corners", "cornerRadius", "depth",
-                                     "taper",  "U",    "F",       "H",            "stepOver", "tools"};
+                                     "taper",  "U",    "F",       "H",            "stepOver", "tools", "cutting"};
 
 class M4Kind final : public ModuleKindOf<M4Pocket> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
     const char* drawing() const override { return ":/modules/m4.svg"; }
     const char* outlineField() const override { return "corners"; }
+    std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
 
     ModuleInput makeDefault(const Stock& s) const override
     {

@@ -27,7 +27,7 @@ using ordered = nlohmann::ordered_json;
 
 constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
 
-const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances", "tools", "skip"};
+const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances", "tools", "skip", "cutting"};
 const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
                                         "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance"};
 const std::vector<std::string> kAllowanceKeys{"edge", "allowance", "adjustment", "groove", "grooveWidth", "grooveDepth"};
@@ -60,6 +60,9 @@ public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add turned profile"); }
     const char* drawing() const override { return ":/modules/turn.svg"; }
     MachineKind machineKind() const override { return MachineKind::Lathe; }
+    std::vector<std::string> stepKeys() const override { return turning::turnStepKeys(); }
+    // Drilling runs at a fixed rpm (G97); every other turning step at a surface speed.
+    bool surfaceSpeedStep(const std::string& key) const override { return key != "drill" && key != "centre-drill"; }
 
     ModuleInput makeDefault(const Stock& /*stock*/) const override
     {
@@ -287,9 +290,7 @@ protected:
         q.shown = ctx.shownUnit;
         if (ctx.machine) {
             q.maxRpm = ctx.machine->maxSpindleSpeed > 0 ? ctx.machine->maxSpindleSpeed : q.maxRpm;
-            double rapid = 0.0;
-            for (const auto& [axis, rate] : ctx.machine->rapid) rapid = rapid == 0.0 ? rate : std::min(rapid, rate);
-            if (rapid > 0) q.rapid = rapid;
+            if (const double rapid = ctx.machine->slowestRapid(); rapid > 0) q.rapid = rapid;
         }
         // The job's first turned unit faces the bar; its last outer unit parts it off.
         int firstTurn = -1, lastOuter = -1;
