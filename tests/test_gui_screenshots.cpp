@@ -24,6 +24,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSet>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -33,6 +34,15 @@ using namespace taiwa::ui;
 class TestGuiScreenshots : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
+
+    // A sample by its path in the project, from the project's folder: the
+    // pictures show "resources/samples/plate.taiwa", never a path of the
+    // machine they were made on.
+    static QString sample(const QString& file)
+    {
+        QDir::setCurrent(test::sourcePath(""));
+        return "resources/samples/" + file;
+    }
 
     static void settle(StationWindow& w)
     {
@@ -45,6 +55,9 @@ class TestGuiScreenshots : public QObject {
     // TAIWA_SCREENSHOTS_DIR names a folder.
     static void save(StationWindow& w, const QString& name)
     {
+        QVERIFY2(!w.statusBar()->currentMessage().contains(QDir(test::sourcePath("")).absolutePath()),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(!w.windowTitle().contains(QDir(test::sourcePath("")).absolutePath()), qPrintable(w.windowTitle()));
         const QImage image = w.grab().toImage();
         QVERIFY(!image.isNull());
         QCOMPARE(image.size(), w.size() * w.devicePixelRatio());
@@ -97,7 +110,7 @@ private slots:
 
     void plate()
     {
-        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        StationWindow w(sample("plate.taiwa"));
         w.resize(1600, 940);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -137,7 +150,7 @@ private slots:
     {
         qputenv("TAIWA_LANG", "ja");
         QVERIFY(installTranslator(*QCoreApplication::instance()));
-        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        StationWindow w(sample("plate.taiwa"));
         w.resize(1600, 940);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
@@ -153,7 +166,7 @@ private slots:
     {
         qputenv("TAIWA_LANG", "zh");
         QVERIFY(installTranslator(*QCoreApplication::instance()));
-        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        StationWindow w(sample("lathe-shaft-grinding.taiwa"));
         w.resize(1600, 940);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

@@ -155,6 +155,20 @@ private slots:
         QCOMPARE(preview()->scene().highlightedMove(), (viz::MoveRef{k, m}));
         const auto at = preview()->scene().toPixel(midpoint(k, m), preview()->width(), preview()->height());
         QVERIFY(test::colourNear(frame(), at, viz::palette::kHighlight, 2, 40));
+        // The block is a band across the NC view, and the tool stands where
+        // the block leaves it; the arrow key walks on, block by block.
+        const auto& moves = w_->planRunner()->fullPlan()->steps[static_cast<std::size_t>(k)].path->moves;
+        QCOMPARE(nc->highlightedLine(), nc->text()->textCursor().blockNumber());
+        QCOMPARE(preview()->scene().toolPosition(), std::optional<Point3>(moves[static_cast<std::size_t>(m)].end));
+        const int band = nc->highlightedLine();
+        nc->text()->setFocus();
+        QTest::keyClick(nc->text(), Qt::Key_Down);
+        QCOMPARE(nc->highlightedLine(), band + 1);
+        const BlockSource next = nc->currentSource();
+        QCOMPARE(next.step, k);
+        QCOMPARE(preview()->scene().highlightedMove(), (viz::MoveRef{k, next.move}));
+        QCOMPARE(preview()->scene().toolPosition(), std::optional<Point3>(moves[static_cast<std::size_t>(next.move)].end));
+        QVERIFY(moves[static_cast<std::size_t>(next.move)].end != moves[static_cast<std::size_t>(m)].end);
     }
 
     void clickInThreeDSelectsTheBlock()

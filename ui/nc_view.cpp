@@ -118,6 +118,14 @@ BlockSource NcView::currentSource() const
 
 void NcView::onCursorMoved()
 {
+    // The block the cursor is on, as a band across the view, whoever moved it.
+    QTextEdit::ExtraSelection band;
+    band.format.setBackground(QColor(255, 243, 176));
+    band.format.setProperty(QTextFormat::FullWidthSelection, true);
+    band.cursor = text_->textCursor();
+    band.cursor.clearSelection();
+    text_->setExtraSelections({band});
+    highlightedLine_ = band.cursor.blockNumber();
     if (selecting_) return;
     const BlockSource s = currentSource();
     if (s.step >= 0) emit moveSelected(s.step, s.move);

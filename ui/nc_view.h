@@ -45,6 +45,8 @@ public:
     // The (step, move) the line under the text cursor was posted from;
     // step -1 for lines that belong to no move (header, comments).
     BlockSource currentSource() const;
+    // The line drawn as the current block (a band across the view), -1 none.
+    int highlightedLine() const { return highlightedLine_; }
 
 signals:
     void dialectChanged(const QString& dialect);
@@ -58,6 +60,7 @@ private:
     QPlainTextEdit* text_;
     std::vector<BlockSource> lines_;
     bool selecting_ = false;
+    int highlightedLine_ = -1;
 };
 
 }  // namespace taiwa::ui

@@ -110,12 +110,10 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         setItem(r, No, fixed(QString::number(r + 1)));
         setItem(r, Unit, fixed(unit));
         setItem(r, StepName, fixed(QString::fromStdString(s.label())));
-        QString tool = QStringLiteral("–");
-        if (s.tool) {
-            tool = QStringLiteral("T%1").arg(s.tool->toolId);
-            if (const Tool* t = plan->tool(s.tool->toolId)) tool += " " + QString::fromStdString(t->name);
-        }
-        setItem(r, ToolName, fixed(tool));
+        // The tool by its number (its name in the tooltip and the step's details): the columns fit.
+        auto* tool = fixed(s.tool ? QStringLiteral("T%1").arg(s.tool->toolId) : QStringLiteral("–"));
+        if (const Tool* t = s.tool ? plan->tool(s.tool->toolId) : nullptr) tool->setToolTip(QString::fromStdString(t->name));
+        setItem(r, ToolName, tool);
         const ShownCutting c = shownCutting(*plan, s);
         const std::pair<Column, std::optional<double>> cells[] = {{Speed, c.speed}, {Feed, c.feed}};
         for (const auto& [column, value] : cells) {

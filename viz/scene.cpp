@@ -231,6 +231,7 @@ void Scene::highlightMove(int step, int move)
 {
     highlighted_ = {step, move};
     updateHighlight();
+    updateTool();
 }
 
 void Scene::updateEmphasis()
@@ -403,19 +404,30 @@ void Scene::updateTool()
 {
     if (tool_) renderer_->RemoveActor(tool_);
     tool_ = nullptr;
+    toolAt_.reset();
     if (!plan_) return;
-    int k = selected_;
+    const auto& steps = plan_->steps;
+    const int nSteps = static_cast<int>(steps.size());
+    // On an NC block: that block's step, the tool where the block leaves it.
+    const bool onBlock = highlighted_.step >= 0 && highlighted_.step < nSteps;
+    int k = onBlock ? highlighted_.step : selected_;
     if (k < 0) {  // all steps: the tool of the first step that has a path
-        const auto& steps = plan_->steps;
         const auto it = std::find_if(steps.begin(), steps.end(), [](const Step& s) { return s.path && s.tool; });
         k = it == steps.end() ? -1 : static_cast<int>(it - steps.begin());
     }
     if (k < 0) return;
-    const Step& step = plan_->steps[k];
+    const Step& step = steps[static_cast<std::size_t>(k)];
     const Tool* tool = step.tool ? plan_->tool(step.tool->toolId) : nullptr;
     if (!tool || !step.path) return;
+    Point3 at = step.path->start;
+    if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(step.path->moves.size())) {
+        const Move& m = step.path->moves[static_cast<std::size_t>(highlighted_.move)];
+        // A drilling cycle ends back up at its R plane (or higher): drawn at the hole's bottom.
+        at = m.end;
+    }
     tool_ = actorFor(toolSolid(*tool), palette::kTool);
-    tool_->SetPosition(step.path->start.x, step.path->start.y, step.path->start.z);
+    tool_->SetPosition(at.x, at.y, at.z);
+    toolAt_ = at;
     tool_->GetProperty()->SetAmbient(0.35);
     tool_->GetProperty()->SetDiffuse(0.65);
     renderer_->AddActor(tool_);

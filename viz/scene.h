@@ -3,7 +3,8 @@
 // finished pockets' outlines at the top face and the floor, the tool paths
 // of every step (feeds and rapids in their colours, the selected step
 // emphasised, the others dimmed), the tool at the selected path's
-// start, one highlighted move, axes with a scale note, camera presets. The
+// start or at the end of the highlighted move (the NC block the operator
+// is on), one highlighted move, axes with a scale note, camera presets. The
 // offscreen renderer and the preview widget both show this scene; it is the
 // one door between the core's types and VTK.
 #pragma once
@@ -64,9 +65,12 @@ public:
     // finished part).
     void setStockBefore(bool before);
     bool stockBefore() const { return stockBefore_; }
-    // The move drawn in the highlight colour; (-1, -1) for none.
+    // The move drawn in the highlight colour, the tool (of its step) at its
+    // end; (-1, -1) for none (the tool back at the selected step's start).
     void highlightMove(int step, int move);
     MoveRef highlightedMove() const { return highlighted_; }
+    // Where the tool is drawn (its tip), if it is.
+    std::optional<Point3> toolPosition() const { return toolAt_; }
     // Camera preset fitted to the stock and the paths for a viewport of
     // width / height = aspect.
     void setView(ViewPreset preset, double aspect);
@@ -125,6 +129,7 @@ private:
     bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;
     MoveRef highlighted_;
+    std::optional<Point3> toolAt_;
 };
 
 }  // namespace taiwa::viz
