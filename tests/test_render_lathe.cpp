@@ -75,16 +75,17 @@ private slots:
     // and the blade's plunges are drawn in it.
     void selectedStepShowsTheStockAfterItAndItsPath()
     {
-        const auto feedPixels = [](const QImage& img) {
+        const auto pixelsOf = [](const QImage& img, viz::Rgb colour) {
             int n = 0;
             for (int y = 0; y < img.height(); ++y)
                 for (int x = 0; x < img.width(); ++x) {
                     const QColor c = img.pixelColor(x, y);
-                    n += std::abs(c.red() - viz::palette::kFeed.r) < 40 && std::abs(c.green() - viz::palette::kFeed.g) < 40 &&
-                         std::abs(c.blue() - viz::palette::kFeed.b) < 40;
+                    n += std::abs(c.red() - colour.r) < 40 && std::abs(c.green() - colour.g) < 40 &&
+                         std::abs(c.blue() - colour.b) < 40;
                 }
             return n;
         };
+        const auto feedPixels = [&](const QImage& img) { return pixelsOf(img, viz::palette::kFeed); };
         const auto litHeight = [](const QImage& img, int x) {
             int lit = 0;
             for (int y = 0; y < img.height(); ++y) lit += img.pixelColor(x, y).lightness() > 110;
@@ -97,6 +98,11 @@ private slots:
         QVERIFY2(feedPixels(rough) > 200, qPrintable(QString::number(feedPixels(rough))));  // the passes
         QVERIFY2(feedPixels(groove) > 20, qPrintable(QString::number(feedPixels(groove))));  // the plunges
         QVERIFY2(feedPixels(whole) < 20, qPrintable(QString::number(feedPixels(whole))));  // no step: the part alone
+        // The step's tool in the section at the path's start: the blade over
+        // the groove, the roughing insert; none with no step selected.
+        QVERIFY2(pixelsOf(groove, viz::palette::kTool) > 300, qPrintable(QString::number(pixelsOf(groove, viz::palette::kTool))));
+        QVERIFY2(pixelsOf(rough, viz::palette::kTool) > 100, qPrintable(QString::number(pixelsOf(rough, viz::palette::kTool))));
+        QCOMPARE(pixelsOf(whole, viz::palette::kTool), 0);
         // The groove's notch: some column lit lower after grooving than after roughing.
         int notch = 0;
         for (int x = 0; x < groove.width(); ++x) notch = std::max(notch, litHeight(rough, x) - litHeight(groove, x));

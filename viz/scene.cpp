@@ -418,6 +418,23 @@ void Scene::updateTool()
     if (k < 0) return;
     const Step& step = steps[static_cast<std::size_t>(k)];
     const Tool* tool = step.tool ? plan_->tool(step.tool->toolId) : nullptr;
+    if (tool && step.turn && lathe_ && k == selected_) {
+        // In the section: the insert (or blade, or drill) at the path's
+        // start, or where the NC block the operator is on leaves it.
+        const TurnPath& p = step.turn->path;
+        turning::ZR at = p.start;
+        if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(p.moves.size()))
+            at = p.moves[static_cast<std::size_t>(highlighted_.move)].end;
+        std::vector<turning::ZR> outline = latheToolOutline(*tool, *step.turn);
+        if (outline.empty()) return;
+        for (auto& q : outline) q = q + at;
+        tool_ = actorFor(sectionFace(outline, -0.1), palette::kTool);
+        tool_->GetProperty()->SetAmbient(0.6);
+        tool_->GetProperty()->SetDiffuse(0.4);
+        toolAt_ = Point3{at.z, 0.0, at.r};  // VTK's X along the spindle, the radius up
+        renderer_->AddActor(tool_);
+        return;
+    }
     if (!tool || !step.path) return;
     Point3 at = step.path->start;
     if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(step.path->moves.size())) {

@@ -4,6 +4,7 @@
 
 #include "model/turned_geometry.h"
 #include "sim/cutter_profile.h"
+#include "turning/turn_tools.h"
 #include "viz/palette.h"
 
 #include <vtkCellArray.h>
@@ -282,6 +283,41 @@ vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& 
     pd->SetPoints(points);
     pd->SetPolys(cells);
     return withNormals(pd, 30.0);
+}
+
+std::vector<turning::ZR> latheToolOutline(const Tool& tool, const TurnStep& step)
+{
+    using turning::ZR;
+    const bool inside = step.side == turning::ProfileSide::Inner;
+    if (const auto g = turning::insertGeometry(tool)) {
+        std::vector<ZR> outline = turning::insertShape(*g);
+        for (ZR& p : outline) p = p - step.tipFromCentre;  // about the programmed point
+        return outline;
+    }
+    if (tool.turning.width > 0) {
+        const double reach = tool.turning.maxDepth > 0 ? tool.turning.maxDepth : 4.0 * tool.turning.width;
+        return turning::bladeShape(tool.turning.width, reach, inside);
+    }
+    if (tool.type == ToolType::Drill || tool.type == ToolType::CentreDrill) {
+        // Its half above the axis: the point, then the body back along +Z.
+        const double r = tool.radius();
+        const double point = r / std::tan(tool.pointAngle / 2.0 * std::numbers::pi / 180.0);
+        const double body = tool.fluteLength > 0 ? tool.fluteLength : 4.0 * tool.diameter;
+        return {{0.0, 0.0}, {point, r}, {point + body, r}, {point + body, 0.0}};
+    }
+    return {};
+}
+
+vtkSmartPointer<vtkPolyData> sectionFace(const std::vector<turning::ZR>& outline, double y)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    polys->InsertNextCell(static_cast<int>(outline.size()));
+    for (const auto& p : outline) polys->InsertCellPoint(points->InsertNextPoint(p.z, y, p.r));
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(points);
+    pd->SetPolys(polys);
+    return pd;
 }
 
 }  // namespace taiwa::viz

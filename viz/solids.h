@@ -47,4 +47,13 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps);
 // it (at (z, 0, r)) stay in sight.
 vtkSmartPointer<vtkPolyData> revolvedChain(const std::vector<turning::Segment>& chain, bool half = false);
 
+// A lathe tool as it stands in the section through the axis, a flat face in
+// the (z, r) plane with its programmed point at the origin: an insert's
+// nose and both cutting edges (turn_tools' insertShape, shifted from the
+// nose centre to the programmed point), a blade's width and reach from its
+// front corner, a drill's point and body above the axis. Empty for a tool
+// the section cannot show.
+std::vector<turning::ZR> latheToolOutline(const Tool& tool, const TurnStep& step);
+vtkSmartPointer<vtkPolyData> sectionFace(const std::vector<turning::ZR>& outline, double y);
+
 }  // namespace taiwa::viz
