@@ -31,6 +31,8 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
+#include <QTableWidget>
 #include <QPlainTextEdit>
 #include <QStatusBar>
 #include <QListWidget>
@@ -296,6 +298,83 @@ private slots:
         QCOMPARE(d.table()->rowCount(), static_cast<int>(tools->size()));
         QCOMPARE(d.table()->item(0, 0)->text(), QString::number(tools->front().id));
         QCOMPARE(d.table()->item(0, 1)->text(), QString::fromStdString(tools->front().name));
+    }
+
+    // The library is edited in place: a value typed over is checked and
+    // saved (a wrong one refused with the reason and put back), a tool is
+    // copied and retired, each an undo step; the next plan uses the edited
+    // tool; the machine's tool table is exported.
+    void toolLibraryIsEdited()
+    {
+        ToolLibraryDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QTableWidget* table = d.table();
+        int row = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->item(r, ToolLibraryDialog::Id)->text() == "27") row = r;
+        QVERIFY(row >= 0);
+        const auto type = [&](ToolLibraryDialog::Column column, const QString& text) {
+            table->setFocus();
+            table->setCurrentCell(row, column);
+            QTest::keyClick(table, Qt::Key_F2);
+            auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());
+            QVERIFY(editor && table->isAncestorOf(editor));
+            editor->selectAll();
+            QTest::keyClick(editor, Qt::Key_Backspace);
+            QTest::keyClicks(editor, text);
+            QTest::keyClick(editor, Qt::Key_Return);
+            for (int turn = 0; turn < 3; ++turn) QCoreApplication::processEvents();
+        };
+        const auto t27 = [] {
+            const auto tools = readToolLibrary(defaultToolLibraryPath());
+            if (!tools) return std::optional<Tool>();
+            const std::vector<Tool>& all = *tools;
+            const auto it = std::find_if(all.begin(), all.end(), [](const Tool& t) { return t.id == 27; });
+            return it == all.end() ? std::optional<Tool>() : std::optional<Tool>(*it);
+        };
+        QCOMPARE(t27()->diameter, 10.0);
+        type(ToolLibraryDialog::Diameter, "11");
+        QCOMPARE(t27()->diameter, 11.0);
+        QVERIFY(d.changed());
+        const double corner = t27()->cornerRadius;
+        type(ToolLibraryDialog::Corner, "6");  // more than half of 11 mm
+        QVERIFY2(d.status().contains("T27 not saved: corner radius 6 mm is more than half the diameter (5.5 mm)"),
+                 qPrintable(d.status()));
+        QCOMPARE(t27()->cornerRadius, corner);
+        QVERIFY(table->item(row, ToolLibraryDialog::Corner)->text() != "6");
+        type(ToolLibraryDialog::Diameter, "abc");
+        QVERIFY2(d.status().contains("'abc' is not a number"), qPrintable(d.status()));
+        QCOMPARE(t27()->diameter, 11.0);
+
+        // The next plan takes the 11 mm tool.
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.planRunner()->flush();
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan && plan->tool(27));
+        QCOMPARE(plan->tool(27)->diameter, 11.0);
+
+        // Copy, retire, undo.
+        const std::size_t count = d.tools().size();
+        table->selectRow(row);
+        d.findChild<QPushButton*>("tools.copy")->click();
+        QCOMPARE(d.tools().size(), count + 1);
+        QVERIFY(std::any_of(d.tools().begin(), d.tools().end(), [](const Tool& t) { return t.name == "Flat end mill 10 mm carbide (copy)"; }));
+        d.findChild<QPushButton*>("tools.retire")->click();
+        QCOMPARE(d.tools().size(), count);
+        d.undoStack()->undo();
+        QCOMPARE(d.tools().size(), count + 1);
+        d.undoStack()->undo();
+        QCOMPARE(d.tools().size(), count);
+        d.undoStack()->undo();  // the diameter back to 10 mm
+        QCOMPARE(t27()->diameter, 10.0);
+
+        const QString tbl = dir_.filePath("tool.tbl");
+        QVERIFY(d.exportToolTable(tbl, false));
+        QFile f(tbl);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY2(text.contains("\nT27 P27 Z0 D10 ;Flat end mill 10 mm carbide\n"), qPrintable(text.left(400)));
     }
 
     void addM2DAndMoveUnits()

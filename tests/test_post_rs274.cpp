@@ -9,6 +9,8 @@
 #include "post/post.h"
 #include "support/rs274.h"
 #include "tools/cutting.h"
+#include "post/tool_table.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -193,6 +195,19 @@ QString disagreement(const Rs274Result& r, const std::vector<Step>& steps, const
 class TestPostRs274 : public QObject {
     Q_OBJECT
 private slots:
+    // The tool table the library exports is one LinuxCNC's interpreter reads
+    // (the standalone rs274 takes it in inches), and a program runs with it.
+    void exportedToolTableIsRead()
+    {
+        const Rs274Result r = runRs274("G21\nT27 M6\nG43\nG0 X10 Y10 Z5\nG41 D27\nG1 X20 Y10 F100\nG40\nM30\n",
+                                       linuxcncToolTable(defaultToolLibrary(), LengthUnit::Inch));
+        QVERIFY2(r.ok, qPrintable(r.errors));
+        // G41 with the table's D10: the feed runs 5 mm to the left of the line.
+        const auto feed = std::find_if(r.moves.rbegin(), r.moves.rend(), [](const auto& m) { return m.kind == CanonMove::Feed; });
+        QVERIFY(feed != r.moves.rend());
+        QVERIFY2(std::abs(feed->end.y - 15.0) < 1e-3, qPrintable(r.canon.join('\n')));
+    }
+
     void tapeReadBackIsOurPath_data()
     {
         QTest::addColumn<QString>("dialect");

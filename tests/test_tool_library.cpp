@@ -5,6 +5,8 @@
 #include "model/technology.h"
 #include "tools/cutting.h"
 #include "tools/tool_library.h"
+#include "tools/tool_check.h"
+#include "post/tool_table.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
@@ -19,6 +21,54 @@ using namespace taiwa;
 class TestToolLibrary : public QObject {
     Q_OBJECT
 private slots:
+    // Each value a tool may not have is named with its field; the default
+    // library has none of them.
+    void toolProblemsNameTheField()
+    {
+        for (const Tool& t : defaultToolLibrary()) QVERIFY2(toolProblems(t).empty(), t.name.c_str());
+        Tool t = defaultToolLibrary().front();
+        const auto first = [](const Tool& x) { const auto p = toolProblems(x); return p.empty() ? std::string() : p.front().field + ": " + p.front().message; };
+        Tool bad = t;
+        bad.id = 1000;
+        QCOMPARE(first(bad), std::string("id: T number 1000 must be 1 to 999"));
+        bad = t;
+        bad.name = "  ";
+        QCOMPARE(first(bad), std::string("name: the name must not be empty"));
+        bad = t;
+        bad.diameter = 0;
+        QCOMPARE(first(bad), std::string("diameter: diameter 0 mm must be greater than zero"));
+        bad = t;
+        bad.fluteLength = 30;
+        bad.stickout = 20;
+        QCOMPARE(first(bad), std::string("stickout: stick-out 20 mm is shorter than the flutes (30 mm)"));
+        bad = t;
+        bad.taperAngle = 45;
+        QCOMPARE(first(bad), std::string("taperAngle: taper 45° per side must be 0 to less than 45°"));
+        bad = t;
+        bad.flutes = 0;
+        QCOMPARE(first(bad), std::string("flutes: flutes 0 must be at least 1"));
+    }
+
+    // The machine's tool table: LinuxCNC's tool.tbl (a turning tool with its
+    // nose diameter and tip) and FANUC's G10 offsets, lengths left at zero.
+    void toolTablesForTheMachine()
+    {
+        const std::vector<Tool> tools = defaultToolLibrary();
+        const std::string tbl = linuxcncToolTable(tools, LengthUnit::Millimetre);
+        QVERIFY2(tbl.starts_with(";Taiwa tool library, " + std::to_string(tools.size()) + " tools, mm;"), tbl.c_str());
+        QVERIFY(tbl.find("\nT27 P27 Z0 D10 ;Flat end mill 10 mm carbide\n") != std::string::npos);
+        QVERIFY(linuxcncToolTable(tools, LengthUnit::Inch).find("\nT27 P27 Z0 D0.3937 ;") != std::string::npos);
+        const std::string fanuc = fanucOffsetProgram(tools, LengthUnit::Millimetre);
+        QVERIFY(fanuc.starts_with("%\nO9000 (TAIWA TOOL OFFSETS)\n"));
+        QVERIFY(fanuc.find("\n(T27 FLAT END MILL 10 MM CARBIDE)\nG10 L12 P27 R5.\n") != std::string::npos);
+        QVERIFY(fanuc.ends_with("M30\n%\n"));
+        const auto lathe = defaultLatheTools();
+        const auto insert = std::find_if(lathe.begin(), lathe.end(), [](const Tool& t) { return t.id == 102; });
+        QVERIFY(insert != lathe.end());
+        QVERIFY(linuxcncToolTable(lathe, LengthUnit::Millimetre).find("\nT102 P102 X0 Z0 D0.8 Q2 ;") != std::string::npos);
+        QVERIFY(fanucOffsetProgram(lathe, LengthUnit::Millimetre).find("\nG10 P102 R0.4 Q2\n") != std::string::npos);
+    }
+
     void defaultLibraryCoversWhatTheShopNeeds()
     {
         const auto tools = defaultToolLibrary();

@@ -1,37 +1,74 @@
-// The shop's tool library (SQLite, ToolLibrary) as a table: id (T number),
-// name, type, diameter, corner radius, taper, flute length, holder, life and
-// the life already used. The selected tool's wear can be reset (a fresh tool
-// was put in); every database error is shown, never hidden.
+// The shop's tool library (SQLite, ToolLibrary) as a table the operator
+// edits: T number, name, type, diameter, corner radius, taper, flutes,
+// flute length, stick-out, holder, life and the life already used. A cell
+// typed over is checked (tools/tool_check.h) and saved at once, or refused
+// with the reason and put back; a tool can be copied under the next free T
+// number or retired (removed); every change is an undo step (Ctrl+Z). The
+// selected tool's wear can be reset (a fresh tool was put in). The machine's
+// tool table is exported from here: LinuxCNC's tool.tbl or a FANUC program
+// of G10 offsets. Every database error is shown, never hidden.
 #pragma once
 
 #include "model/tool.h"
 
 #include <QDialog>
 
+#include <optional>
 #include <vector>
 
 class QLabel;
 class QPushButton;
 class QTableWidget;
+class QTableWidgetItem;
+class QUndoStack;
 
 namespace taiwa::ui {
 
 class ToolLibraryDialog : public QDialog {
     Q_OBJECT
 public:
+    enum Column { Id, Name, Type, Diameter, Corner, Taper, Flutes, FluteLength, Stickout, Holder, Life, Used, ColumnCount };
+
     explicit ToolLibraryDialog(QWidget* parent = nullptr);
     QTableWidget* table() const { return table_; }
+    QUndoStack* undoStack() const { return undo_; }
     // True when a tool was changed (the window re-plans with the new library).
     bool changed() const { return changed_; }
+    // The tools as read last.
+    const std::vector<Tool>& tools() const { return tools_; }
+    // The status line's text (what was saved, or why not).
+    QString status() const;
+
+    // Replaces tool `before.id` (or adds `after`, or with no `after` removes
+    // it) in the library, as one undo step; false with the reason shown when
+    // it is refused or the database fails.
+    bool change(const std::optional<Tool>& before, const std::optional<Tool>& after, const QString& text);
+    // Copies the selected tool to the next free T number; retires (removes) it.
+    void copySelected();
+    void retireSelected();
+    // Writes the machine's tool table: `fanuc` a G10 program, else LinuxCNC's tool.tbl.
+    bool exportToolTable(const QString& path, bool fanuc);
 
 private:
-    void load();
+    friend class ToolEdit;
+    // Reads the library and fills the table; the status line says how many
+    // tools unless `keepStatus` (it says what was just done, or refused).
+    void load(bool keepStatus = false);
     void resetWear();
+    void onItemChanged(QTableWidgetItem* item);
+    void exportAsked();
+    // Applies one side of an edit to the database: save `tool`, or remove `id`.
+    bool apply(const std::optional<Tool>& tool, int id);
+    void fail(const QString& message);
+    int selectedRow() const;
+
     QTableWidget* table_;
     QLabel* status_;
     QPushButton* reset_;
+    QUndoStack* undo_;
     std::vector<Tool> tools_;
     bool changed_ = false;
+    bool filling_ = false;
 };
 
 }  // namespace taiwa::ui

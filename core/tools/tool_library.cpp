@@ -2,6 +2,8 @@
 // library, reading and editing. Every failure is a message naming the file.
 #include "tools/tool_library.h"
 
+#include "tools/tool_check.h"
+
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
 
@@ -293,26 +295,9 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         return Failure{describe(db, path_)};
     }
     // Values no tool can have would fail deep in planning: named here.
-    for (const Tool& t : out) {
-        const auto bad = [&](const std::string& what) {
-            return Failure{path_ + ": tool T" + std::to_string(t.id) + " (" + t.name + "): " + what};
-        };
-        if (!(t.diameter > 0) || !std::isfinite(t.diameter))
-            return bad("diameter " + fmt::format("{:g}", t.diameter) + " mm must be greater than zero");
-        if (t.flutes < 1 && t.type != ToolType::Probe)  // a probe cuts nothing
-            return bad("flutes " + std::to_string(t.flutes) + " must be at least 1");
-        for (const auto& cd : t.cutting) {
-            if (!(cd.surfaceSpeed > 0) || !std::isfinite(cd.surfaceSpeed))
-                return bad("cutting speed for " + cd.material + " " + fmt::format("{:g}", cd.surfaceSpeed) +
-                           " m/min must be greater than zero");
-            if (!(cd.feedPerTooth > 0) || !std::isfinite(cd.feedPerTooth))
-                return bad("feed per tooth for " + cd.material + " " + fmt::format("{:g}", cd.feedPerTooth) +
-                           " mm must be greater than zero");
-            if (!(cd.plungeFactor > 0) || !std::isfinite(cd.plungeFactor))
-                return bad("plunge factor for " + cd.material + " " + fmt::format("{:g}", cd.plungeFactor) +
-                           " must be greater than zero");
-        }
-    }
+    for (const Tool& t : out)
+        if (const auto problems = toolProblems(t); !problems.empty())
+            return Failure{path_ + ": tool T" + std::to_string(t.id) + " (" + t.name + "): " + problems.front().message};
     return out;
 }
 

@@ -830,8 +830,8 @@
     <context>
         <name>taiwa::ui::ToolLibraryDialog</name>
         <message>
-            <source>&amp;Reset wear of the selected tool</source>
-            <translation>選択した工具の摩耗をリセット(&amp;R)</translation>
+            <source>&amp;Reset wear</source>
+            <translation>摩耗をリセット(&amp;R)</translation>
         </message>
         <message>
             <source>Tool library</source>
@@ -862,8 +862,16 @@
             <translation>テーパ °</translation>
         </message>
         <message>
+            <source>Flutes</source>
+            <translation>刃数</translation>
+        </message>
+        <message>
             <source>Flute mm</source>
             <translation>刃長 mm</translation>
+        </message>
+        <message>
+            <source>Stick-out mm</source>
+            <translation>突出し mm</translation>
         </message>
         <message>
             <source>Holder</source>
@@ -877,6 +885,22 @@
             <source>Used min</source>
             <translation>使用 分</translation>
         </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>複製(&amp;C)</translation>
+        </message>
+        <message>
+            <source>Re&amp;tire</source>
+            <translation>廃棄(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>元に戻す(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Export tool table…</source>
+            <translation>工具テーブルを書き出し(&amp;E)…</translation>
+        </message>
         <message numerus="yes">
             <source>%1 — %n tool(s)</source>
             <translation>
@@ -888,12 +912,68 @@
             <translation>工具ライブラリを読めません: %1</translation>
         </message>
         <message>
-            <source>Select a tool first.</source>
-            <translation>先に工具を選んでください。</translation>
+            <source>Cannot open the tool library: %1</source>
+            <translation>工具ライブラリを開けません: %1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>工具を保存できません: %1</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>工具を廃棄できません: %1</translation>
+        </message>
+        <message>
+            <source>T%1 not saved: %2</source>
+            <translation>T%1 は保存されませんでした: %2</translation>
+        </message>
+        <message>
+            <source>T%1 not saved: %2 '%3' is not a number</source>
+            <translation>T%1 は保存されませんでした: %2 の「%3」は数値ではありません</translation>
+        </message>
+        <message>
+            <source>T%1: %2 changed</source>
+            <translation>T%1: %2 を変更しました</translation>
+        </message>
+        <message>
+            <source>Select a tool first.</source>
+            <translation>先に工具を選んでください。</translation>
+        </message>
+        <message>
+            <source>No free T number: the library uses T%1</source>
+            <translation>空き T 番号がありません: ライブラリは T%1 まで使用しています</translation>
+        </message>
+        <message>
+            <source>T%1 copied to T%2</source>
+            <translation>T%1 を T%2 に複製しました</translation>
+        </message>
+        <message>
+            <source>T%1 retired (Undo brings it back)</source>
+            <translation>T%1 を廃棄しました (元に戻すで復帰)</translation>
+        </message>
+        <message>
+            <source>T%1: wear reset</source>
+            <translation>T%1: 摩耗をリセットしました</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 に書き込めません: %2</translation>
+        </message>
+        <message>
+            <source>Tool table written to %1</source>
+            <translation>工具テーブルを %1 に書き出しました</translation>
+        </message>
+        <message>
+            <source>LinuxCNC tool table (*.tbl)</source>
+            <translation>LinuxCNC 工具テーブル (*.tbl)</translation>
+        </message>
+        <message>
+            <source>FANUC offset program, G10 (*.nc)</source>
+            <translation>FANUC オフセットプログラム、G10 (*.nc)</translation>
+        </message>
+        <message>
+            <source>Export tool table</source>
+            <translation>工具テーブルの書き出し</translation>
         </message>
     </context>
     <context>

@@ -830,8 +830,8 @@
     <context>
         <name>taiwa::ui::ToolLibraryDialog</name>
         <message>
-            <source>&amp;Reset wear of the selected tool</source>
-            <translation>重置所选刀具的磨损(&amp;R)</translation>
+            <source>&amp;Reset wear</source>
+            <translation>重置磨损(&amp;R)</translation>
         </message>
         <message>
             <source>Tool library</source>
@@ -862,8 +862,16 @@
             <translation>锥度 °</translation>
         </message>
         <message>
+            <source>Flutes</source>
+            <translation>刃数</translation>
+        </message>
+        <message>
             <source>Flute mm</source>
             <translation>刃长 mm</translation>
+        </message>
+        <message>
+            <source>Stick-out mm</source>
+            <translation>伸出长度 mm</translation>
         </message>
         <message>
             <source>Holder</source>
@@ -877,6 +885,22 @@
             <source>Used min</source>
             <translation>已用 分钟</translation>
         </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>复制(&amp;C)</translation>
+        </message>
+        <message>
+            <source>Re&amp;tire</source>
+            <translation>报废(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>撤销(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Export tool table…</source>
+            <translation>导出刀具表(&amp;E)…</translation>
+        </message>
         <message numerus="yes">
             <source>%1 — %n tool(s)</source>
             <translation>
@@ -888,12 +912,68 @@
             <translation>无法读取刀具库:%1</translation>
         </message>
         <message>
-            <source>Select a tool first.</source>
-            <translation>请先选择一把刀具。</translation>
+            <source>Cannot open the tool library: %1</source>
+            <translation>无法打开刀具库：%1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>无法保存刀具:%1</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>无法报废刀具：%1</translation>
+        </message>
+        <message>
+            <source>T%1 not saved: %2</source>
+            <translation>T%1 未保存：%2</translation>
+        </message>
+        <message>
+            <source>T%1 not saved: %2 '%3' is not a number</source>
+            <translation>T%1 未保存：%2 的“%3”不是数字</translation>
+        </message>
+        <message>
+            <source>T%1: %2 changed</source>
+            <translation>T%1：%2 已修改</translation>
+        </message>
+        <message>
+            <source>Select a tool first.</source>
+            <translation>请先选择一把刀具。</translation>
+        </message>
+        <message>
+            <source>No free T number: the library uses T%1</source>
+            <translation>没有空闲的 T 号：刀具库已用到 T%1</translation>
+        </message>
+        <message>
+            <source>T%1 copied to T%2</source>
+            <translation>T%1 已复制为 T%2</translation>
+        </message>
+        <message>
+            <source>T%1 retired (Undo brings it back)</source>
+            <translation>T%1 已报废（撤销可恢复）</translation>
+        </message>
+        <message>
+            <source>T%1: wear reset</source>
+            <translation>T%1：磨损已重置</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>无法写入 %1：%2</translation>
+        </message>
+        <message>
+            <source>Tool table written to %1</source>
+            <translation>刀具表已写入 %1</translation>
+        </message>
+        <message>
+            <source>LinuxCNC tool table (*.tbl)</source>
+            <translation>LinuxCNC 刀具表 (*.tbl)</translation>
+        </message>
+        <message>
+            <source>FANUC offset program, G10 (*.nc)</source>
+            <translation>FANUC 偏置程序，G10 (*.nc)</translation>
+        </message>
+        <message>
+            <source>Export tool table</source>
+            <translation>导出刀具表</translation>
         </message>
     </context>
     <context>
