@@ -26,6 +26,7 @@
 #include <QSet>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTranslator>
 #include <QtTest>
 
 using namespace taiwa;
@@ -179,6 +180,41 @@ private slots:
         QCOMPARE(add->text(), QString("添加行"));
         settle(w);
         save(w, "station-lathe-zh.png");
+    }
+
+    // The station at the two common screen sizes, in each language, on the
+    // plate with its second step selected: station-1366x768-en.png ...
+    // station-1920x1080-zh.png (the window as the screen's free area leaves
+    // it: the height less a 48-pixel panel).
+    void screenSizes_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        for (const char* language : {"en", "ja", "zh"})
+            for (const QSize size : {QSize(1366, 720), QSize(1920, 1032)})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(language).arg(size.width()))) << QString(language) << size;
+    }
+    void screenSizes()
+    {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        // The language alone: the translations of the rows before are taken out.
+        for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
+            QCoreApplication::removeTranslator(t);
+            delete t;
+        }
+        qputenv("TAIWA_LANG", language.toUtf8());
+        QCOMPARE(installTranslator(*QCoreApplication::instance()), language != "en");
+        StationWindow w(sample("plate.taiwa"));
+        w.resize(size);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.size(), size);
+        settle(w);
+        w.stepPanel()->selectStep(1);
+        settle(w);
+        const int screenHeight = size.width() == 1366 ? 768 : 1080;
+        save(w, QStringLiteral("station-%1x%2-%3.png").arg(size.width()).arg(screenHeight).arg(language));
     }
 };
 

@@ -33,6 +33,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QSplitter>
 #include <QtTest>
 
 using namespace taiwa;
@@ -272,6 +273,35 @@ private slots:
         QCOMPARE(w.planRunner()->fullPlan().get(), before.get());
         QVERIFY2(w.ncView()->text()->toPlainText().startsWith("%\nO1000"),
                  qPrintable(w.ncView()->text()->toPlainText().left(40)));
+    }
+
+    // On a 1280 x 720 screen every panel is on it and usable: the window's
+    // smallest size fits, the unit form keeps room for its labels and
+    // fields, the step list and the NC program show several lines (the left
+    // column scrolls rather than push the window off the screen).
+    void windowFitsSmallScreens()
+    {
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        QVERIFY2(w.minimumSizeHint().width() <= 1280 && w.minimumSizeHint().height() <= 720,
+                 qPrintable(QString("%1 x %2").arg(w.minimumSizeHint().width()).arg(w.minimumSizeHint().height())));
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.planRunner()->flush();
+        QCoreApplication::processEvents();
+        QCOMPARE(w.size(), QSize(1280, 720));
+        const QRect inside = w.rect();
+        const std::pair<const char*, QSize> panels[] = {
+            {"units", {200, 60}}, {"unit.scroll", {300, 300}}, {"steps", {220, 120}}, {"nc", {200, 120}}, {"job.name", {120, 15}}};
+        for (const auto& [name, least] : panels) {
+            auto* p = w.findChild<QWidget*>(name);
+            QVERIFY2(p && p->isVisible(), name);
+            const QRect at(p->mapTo(&w, QPoint(0, 0)), p->size());
+            QVERIFY2(inside.contains(at.topLeft()) && p->width() >= least.width() && p->height() >= least.height(),
+                     qPrintable(QString("%1: %2 x %3 at %4, %5").arg(name).arg(p->width()).arg(p->height()).arg(at.x()).arg(at.y())));
+        }
+        auto* view = w.findChild<QWidget*>(w.preview() ? "preview" : "preview.unavailable");
+        QVERIFY(view && view->isVisible() && view->width() >= 320 && view->height() >= 240);
     }
 
     // S and F typed into the step list: the unit's speed and feed for steps

@@ -47,6 +47,12 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     form->addRow(tr("Units"), unit_);
     // The machine: a milling machine takes a block, a lathe a bar.
     machine_ = new QComboBox(this);
+    // Long choices ("vmc – Vertical machining centre") shrink with the
+    // column instead of widening it; the list shows them whole.
+    for (QComboBox* c : {material_, unit_, machine_}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(12);
+    }
     machine_->setObjectName("job.machine");
     for (const Machine& m : machineLibrary())
         machine_->addItem(QString::fromStdString(m.id + " – " + m.name), QString::fromStdString(m.id));

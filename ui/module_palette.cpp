@@ -5,7 +5,7 @@
 #include "modules/registry.h"
 
 #include <QCoreApplication>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QPainter>
 #include <QSvgRenderer>
 #include <QToolButton>
@@ -27,7 +27,9 @@ QPixmap moduleDrawing(const QString& resource, int width)
 
 ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
 {
-    auto* box = new QHBoxLayout(this);
+    // Two to a row, whatever the number of modules: the column stays narrow
+    // enough for the form beside it on a 1280-pixel screen.
+    auto* box = new QGridLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     for (const ModuleKind* kind : moduleKinds()) {
         const QString module = QString::fromUtf8(kind->name());
@@ -35,7 +37,7 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
         auto* b = new QToolButton(this);
         b->setObjectName(QStringLiteral("unit.add%1").arg(module));
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
-        const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), 140);
+        const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), 120);
         b->setIcon(QIcon(drawing));
         b->setIconSize(drawing.size());
         b->setText(text);
@@ -43,15 +45,22 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
         b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
         connect(b, &QToolButton::clicked, this, [this, module] { emit addModule(module); });
         b->setProperty("machineKind", static_cast<int>(kind->machineKind()));
-        box->addWidget(b);
+        buttons_.push_back(b);
     }
     setMachineKind(MachineKind::Mill);
 }
 
 void ModulePalette::setMachineKind(MachineKind kind)
 {
-    for (QToolButton* b : findChildren<QToolButton*>())
-        b->setVisible(b->property("machineKind").toInt() == static_cast<int>(kind));
+    // The machine's modules, two to a row, in the registry's order.
+    auto* grid = static_cast<QGridLayout*>(layout());
+    int shown = 0;
+    for (QToolButton* b : buttons_) {
+        const bool mine = b->property("machineKind").toInt() == static_cast<int>(kind);
+        grid->removeWidget(b);
+        b->setVisible(mine);
+        if (mine) grid->addWidget(b, shown / 2, shown % 2), ++shown;
+    }
 }
 
 }  // namespace taiwa::ui

@@ -8,6 +8,10 @@
 #include <QPixmap>
 #include <QWidget>
 
+#include <vector>
+
+class QToolButton;
+
 namespace taiwa::ui {
 
 // A module's drawing (its Qt resource path, ModuleKind::drawing()) rendered
@@ -24,6 +28,9 @@ public:
 
 signals:
     void addModule(const QString& module);  // the module kind's name: "M4", "M2D"
+
+private:
+    std::vector<QToolButton*> buttons_;  // one per module kind, in the registry's order
 };
 
 }  // namespace taiwa::ui

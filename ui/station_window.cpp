@@ -39,6 +39,7 @@
 #include <QOpenGLContext>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScreen>
 #include <QSettings>
 #include <QLocale>
 #include <QSplitter>
@@ -66,8 +67,16 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     setCentralWidget(main);
     buildMenus();
     wire();
-    resize(1600, 940);
-    main->setSizes({320, 450, 830});
+    // The size the operator left it at, else 1600 x 940 within the screen's
+    // free area; the panels' split as left, else in proportion.
+    main->setObjectName("station.split");
+    QSettings settings;
+    if (!restoreGeometry(settings.value("station/geometry").toByteArray())) {
+        const QRect free = screen() ? screen()->availableGeometry() : QRect(0, 0, 1600, 940);
+        resize(std::min(1600, free.width()), std::min(940, free.height()));
+    }
+    if (!main->restoreState(settings.value("station/split").toByteArray()))
+        main->setSizes({width() * 22 / 100, width() * 26 / 100, width() * 52 / 100});
     if (!runner_->libraryError().isEmpty())
         statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)").arg(runner_->libraryError()));
 
@@ -100,7 +109,16 @@ QWidget* StationWindow::buildLeft()
     box->addWidget(paletteGroup);
     box->addWidget(unitsGroup, 1);
     box->addWidget(jobGroup);
-    return left;
+    // On a low screen (720 pixels) the column scrolls rather than push the
+    // window off the screen.
+    auto* scroll = new QScrollArea;
+    scroll->setObjectName("station.left");
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(left);
+    scroll->setMinimumWidth(left->minimumSizeHint().width() + 16);  // and its scroll bar
+    return scroll;
 }
 
 QWidget* StationWindow::buildCentre()
@@ -115,6 +133,8 @@ QWidget* StationWindow::buildCentre()
     unitMessages_->setWordWrap(true);
     auto* formGroup = new QGroupBox(tr("Unit"));
     auto* scroll = new QScrollArea;
+    scroll->setObjectName("unit.scroll");
+    scroll->setMinimumWidth(300);  // a form's labels and fields stay readable when the window is narrow
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -471,6 +491,9 @@ void StationWindow::closeEvent(QCloseEvent* e)
         return;
     }
     autosave_->removeRecovery(doc_->path());
+    QSettings settings;
+    settings.setValue("station/geometry", saveGeometry());
+    if (auto* split = findChild<QSplitter*>("station.split")) settings.setValue("station/split", split->saveState());
     e->accept();
 }
 

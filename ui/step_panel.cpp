@@ -61,14 +61,18 @@ StepPanel::StepPanel(QWidget* parent)
         connect(b, &QToolButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
         buttons->addWidget(b);
     }
-    buttons->addWidget(stock_);
-    buttons->addWidget(before_);
+    // The stock switches on a row of their own: the panel stays narrow.
+    auto* switches = new QHBoxLayout;
+    switches->addWidget(stock_);
+    switches->addWidget(before_);
+    switches->addStretch(1);
 
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addWidget(table_, 1);
     box->addWidget(details_);
     box->addLayout(buttons);
+    box->addLayout(switches);
 
     connect(table_, &QTableWidget::itemSelectionChanged, this, &StepPanel::onSelectionChanged);
     connect(all, &QToolButton::clicked, this, [this] { selectStep(-1); });

@@ -28,10 +28,11 @@ UnitListPanel::UnitListPanel(JobDocument* doc, QWidget* parent) : QWidget(parent
         connect(b, &QPushButton::clicked, this, slot);
         buttons->addWidget(b, r, c);
     };
+    // Two by two: the column stays narrow (a 1280-pixel screen).
     add("unit.duplicate", tr("D&uplicate"), 0, 0, &UnitListPanel::duplicate);
     add("unit.up", tr("▲ U&p"), 0, 1, &UnitListPanel::moveUp);
-    add("unit.down", tr("▼ Do&wn"), 0, 2, &UnitListPanel::moveDown);
-    add("unit.delete", tr("De&lete"), 0, 3, &UnitListPanel::remove);
+    add("unit.down", tr("▼ Do&wn"), 1, 1, &UnitListPanel::moveDown);
+    add("unit.delete", tr("De&lete"), 1, 0, &UnitListPanel::remove);
     box->addLayout(buttons);
     connect(list_, &QListWidget::currentRowChanged, this, &UnitListPanel::currentUnitChanged);
 }

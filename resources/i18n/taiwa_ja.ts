@@ -84,7 +84,7 @@
         </message>
         <message>
             <source>Controller dialect</source>
-            <translation>制御装置の方言</translation>
+            <translation>NC 形式 (制御装置)</translation>
         </message>
         <message>
             <source>Export failed</source>
@@ -202,7 +202,7 @@
         <name>taiwa::ui::NcView</name>
         <message>
             <source>&amp;NC program, dialect:</source>
-            <translation>NC プログラム(&amp;N)、方言:</translation>
+            <translation>NC プログラム(&amp;N)、NC 形式:</translation>
         </message>
         <message numerus="yes">
             <source>%n block(s)</source>
@@ -615,7 +615,7 @@
         </message>
         <message>
             <source>Dialect %1</source>
-            <translation>方言 %1</translation>
+            <translation>NC 形式 %1</translation>
         </message>
         <message>
             <source>Spindle speed of %1, unit %2</source>

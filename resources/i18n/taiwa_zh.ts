@@ -84,7 +84,7 @@
         </message>
         <message>
             <source>Controller dialect</source>
-            <translation>控制系统方言</translation>
+            <translation>数控系统格式</translation>
         </message>
         <message>
             <source>Export failed</source>
@@ -202,7 +202,7 @@
         <name>taiwa::ui::NcView</name>
         <message>
             <source>&amp;NC program, dialect:</source>
-            <translation>NC 程序(&amp;N),方言:</translation>
+            <translation>NC 程序(&amp;N),数控系统:</translation>
         </message>
         <message numerus="yes">
             <source>%n block(s)</source>
@@ -615,7 +615,7 @@
         </message>
         <message>
             <source>Dialect %1</source>
-            <translation>方言 %1</translation>
+            <translation>数控系统格式 %1</translation>
         </message>
         <message>
             <source>Spindle speed of %1, unit %2</source>
