@@ -18,6 +18,8 @@
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
 #include "ui/unit_list_panel.h"
+#include "modules/registry.h"
+#include "ui/unit_form.h"
 
 #include <QAbstractButton>
 #include <QComboBox>
@@ -273,6 +275,49 @@ private slots:
         QCOMPARE(w.planRunner()->fullPlan().get(), before.get());
         QVERIFY2(w.ncView()->text()->toPlainText().startsWith("%\nO1000"),
                  qPrintable(w.ncView()->text()->toPlainText().left(40)));
+    }
+
+    // Help on every field: the field being typed in has its line of help
+    // under the drawing and its symbol marked in the drawing (the pixels
+    // around the symbol turn the marking's yellow); every field of every
+    // module has help.
+    void fieldHelpFollowsTheFocus()
+    {
+        for (const ModuleKind* kind : moduleKinds())
+            for (const FormField& f : kind->fields())
+                QVERIFY2(!f.help.empty(), qPrintable(QString("%1 %2").arg(kind->name(), QString::fromStdString(f.key))));
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        auto* form = w.findChild<QWidget*>("m4.depth")->parentWidget()->parentWidget();
+        auto* unitForm = qobject_cast<UnitForm*>(form);
+        QVERIFY(unitForm);
+        auto* drawing = w.findChild<QLabel*>("m4.drawing");
+        const QImage plain = drawing->pixmap().toImage();
+        const auto yellow = [](const QImage& img) {
+            int n = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x) {
+                    const QColor c = img.pixelColor(x, y);
+                    n += c.red() > 230 && c.green() > 210 && c.blue() < 170;
+                }
+            return n;
+        };
+        QCOMPARE(yellow(plain), 0);
+        w.findChild<QLineEdit*>("m4.depth")->setFocus();
+        QCOMPARE(unitForm->highlightedSymbol(), QString("sym-T"));
+        QCOMPARE(unitForm->helpText(), QString("Depth of the pocket, down from the top surface"));
+        QVERIFY(w.findChild<QLabel*>("m4.help")->isVisible());
+        const int depthMark = yellow(drawing->pixmap().toImage());
+        QVERIFY2(depthMark > 40, qPrintable(QString::number(depthMark)));
+        w.findChild<QLineEdit*>("m4.P3.y")->setFocus();
+        QCOMPARE(unitForm->highlightedSymbol(), QString("sym-P3"));
+        QVERIFY(unitForm->helpText().startsWith("A corner of the pocket"));
+        w.findChild<QComboBox*>("m4.U")->setFocus();
+        QCOMPARE(unitForm->highlightedSymbol(), QString());
+        QVERIFY(unitForm->helpText().startsWith("Which steps the pocket gets"));
+        QCOMPARE(yellow(drawing->pixmap().toImage()), 0);
     }
 
     // On a 1280 x 720 screen every panel is on it and usable: the window's

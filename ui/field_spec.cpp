@@ -16,6 +16,8 @@ FieldSpec toSpec(const FormField& f)
     s.key = text(f.key);
     s.label = text(f.label);
     s.placeholder = text(f.placeholder);
+    s.help = text(f.help);
+    s.symbol = text(f.symbol);
     for (const auto& d : f.diagFields) s.diagFields << text(d);
     s.kind = f.kind == FormFieldKind::Code             ? FieldKind::Code
              : f.kind == FormFieldKind::OptionalNumber ? FieldKind::OptionalNumber

@@ -23,6 +23,8 @@ struct FieldSpec {
     QString key;                 // widget objectName suffix: "P1.x", "depth", "U"
     QString label;               // form label (source text): "P1 X", "T (depth)"
     QString placeholder;         // shown in an empty field (OptionalNumber: what empty means)
+    QString help;                // one line: what the value is (source text)
+    QString symbol;              // its symbol's id in the module drawing ("sym-P1"); empty: none
     QStringList diagFields;      // checkJob field names shown on this widget
     FieldKind kind = FieldKind::Number;
     std::vector<std::pair<int, QString>> codes;  // Code: value and "1 – roughing, ..."

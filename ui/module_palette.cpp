@@ -12,7 +12,9 @@
 
 namespace taiwa::ui {
 
-QPixmap moduleDrawing(const QString& resource, int width)
+QPixmap moduleDrawing(const QString& resource, int width) { return moduleDrawing(resource, width, QString()); }
+
+QPixmap moduleDrawing(const QString& resource, int width, const QString& highlight)
 {
     QSvgRenderer svg(resource);
     const QSize base = svg.defaultSize().isValid() ? svg.defaultSize() : QSize(420, 220);
@@ -21,6 +23,17 @@ QPixmap moduleDrawing(const QString& resource, int width)
     pm.fill(Qt::white);
     QPainter p(&pm);
     p.setRenderHint(QPainter::Antialiasing);
+    if (!highlight.isEmpty() && svg.elementExists(highlight)) {
+        // The symbol's box in the drawing's coordinates, then in the pixmap's.
+        const QRectF box = svg.transformForElement(highlight).mapRect(svg.boundsOnElement(highlight));
+        const QRectF view = svg.viewBoxF().isValid() ? svg.viewBoxF() : QRectF(QPointF(0, 0), base);
+        const double k = size.width() / view.width();
+        const QRectF mark((box.left() - view.left()) * k - 4, (box.top() - view.top()) * k - 3, box.width() * k + 8,
+                          box.height() * k + 6);
+        p.setPen(QPen(QColor(192, 57, 43), 2));
+        p.setBrush(QColor(255, 221, 87, 170));
+        p.drawRoundedRect(mark, 4, 4);
+    }
     svg.render(&p);
     return pm;
 }

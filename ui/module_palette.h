@@ -17,6 +17,9 @@ namespace taiwa::ui {
 // A module's drawing (its Qt resource path, ModuleKind::drawing()) rendered
 // at `width` pixels wide.
 QPixmap moduleDrawing(const QString& resource, int width);
+// The same with the symbol of id `highlight` ("sym-T") marked: a yellow
+// band behind it and a frame around it; unmarked when the id is not there.
+QPixmap moduleDrawing(const QString& resource, int width, const QString& highlight);
 
 class ModulePalette : public QWidget {
     Q_OBJECT

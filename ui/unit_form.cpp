@@ -36,6 +36,13 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 320));
     drawing->setAlignment(Qt::AlignCenter);
     outer->addWidget(drawing);
+    drawing_ = drawing;
+    // What the field being typed in is: one line under the drawing.
+    help_ = new QLabel(this);
+    help_->setObjectName(prefix + ".help");
+    help_->setWordWrap(true);
+    help_->setStyleSheet("color: #444; font-style: italic;");
+    outer->addWidget(help_);
     sketch_ = new SketchView(this);
     sketch_->setObjectName(prefix + ".sketch");
     outer->addWidget(sketch_);
@@ -43,6 +50,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     outer->addLayout(form);
     // A turned profile's tables and view, under its few fields.
     if (kind.turnedProfile(kind.makeDefault({}))) {
+        drawingWidth_ = 240;
         drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 240));
         profile_ = new ProfileEditor(prefix, this);
         outer->addWidget(profile_);
@@ -209,8 +217,25 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
     return unmatched;
 }
 
+QString UnitForm::helpText() const { return help_->text(); }
+
+void UnitForm::showHelp(int field)
+{
+    const FieldSpec* f = field >= 0 && field < static_cast<int>(fields_.size()) ? &fields_[static_cast<std::size_t>(field)] : nullptr;
+    help_->setText(f && !f->help.isEmpty() ? QCoreApplication::translate("taiwa::ui::FieldSpec", f->help.toUtf8().constData())
+                                           : QString());
+    const QString symbol = f ? f->symbol : QString();
+    if (symbol == highlighted_) return;
+    highlighted_ = symbol;
+    drawing_->setPixmap(moduleDrawing(QString::fromUtf8(kind_.drawing()), drawingWidth_, symbol));
+}
+
 bool UnitForm::eventFilter(QObject* watched, QEvent* event)
 {
+    if (event->type() == QEvent::FocusIn) {
+        for (std::size_t i = 0; i < rows_.size(); ++i)
+            if (watched == rows_[i].edit || watched == rows_[i].combo) showHelp(static_cast<int>(i));
+    }
     if (event->type() == QEvent::KeyPress && qobject_cast<QComboBox*>(watched)) {
         const int key = static_cast<QKeyEvent*>(event)->key();
         if (key == Qt::Key_Return || key == Qt::Key_Enter) {  // Enter moves on, as in the line edits

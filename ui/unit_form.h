@@ -46,6 +46,10 @@ public:
     void setContext(const Job& job, const std::vector<Tool>& library);
     // The editor of a turned profile (module TURN); nullptr for other modules.
     class ProfileEditor* profileEditor() const { return profile_; }
+    // The symbol of the field being typed in, marked in the drawing ("sym-T";
+    // empty: none), and the line of help under the drawing.
+    QString highlightedSymbol() const { return highlighted_; }
+    QString helpText() const;
 
 protected:
     // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
@@ -73,6 +77,11 @@ private:
     void setMessage(int field, const QString& message);
 
     class SketchView* sketch_ = nullptr;
+    class QLabel* drawing_ = nullptr;
+    class QLabel* help_ = nullptr;
+    int drawingWidth_ = 320;
+    QString highlighted_;
+    void showHelp(int field);  // -1: none
     class ProfileEditor* profile_ = nullptr;
     const ModuleKind& kind_;
     ModuleInput current_;  // the unit's module input as last shown

@@ -33,9 +33,32 @@ struct FormField {
     std::vector<std::pair<int, std::string>> codes;  // Code: value and its meaning
     std::function<std::optional<double>(const ModuleInput&)> get;
     std::function<void(ModuleInput&, std::optional<double>)> set;
+    // What the value is, in one line of plain words (source text, context
+    // "taiwa::ui::FieldSpec"), and the id of its symbol in the module's
+    // drawing ("sym-P1"; empty: none), highlighted while the field is typed in.
+    std::string help;
+    std::string symbol;
 };
 
 namespace form {
+
+// The help line and drawing symbol of the fields whose key starts with
+// `keyPrefix` ("P1." for P1 X and P1 Y; "depth" for that field alone).
+struct Help {
+    const char* keyPrefix;
+    const char* symbol;  // "" for none
+    const char* help;
+};
+inline void describe(std::vector<FormField>& fields, std::initializer_list<Help> helps)
+{
+    for (FormField& f : fields)
+        for (const Help& h : helps)
+            if (f.key.rfind(h.keyPrefix, 0) == 0) {
+                f.help = h.help;
+                f.symbol = h.symbol;
+                break;
+            }
+}
 
 // A number of module T read and written by two functions.
 template <class T, class Get, class Set>

@@ -1081,12 +1081,68 @@
             <translation>カスプ高さ</translation>
         </message>
         <message>
+            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
+            <translation>開口が始まる角、上面でのワーク座標</translation>
+        </message>
+        <message>
+            <source>Length of the opening along X, at the top surface</source>
+            <translation>開口の X 方向の長さ (上面)</translation>
+        </message>
+        <message>
+            <source>Width of the opening along Y, at the top surface</source>
+            <translation>開口の Y 方向の幅 (上面)</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>ポケットの深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
+            <translation>L1 の始まり側の壁の傾き (垂直からの角度)</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1</source>
+            <translation>L1 の終わり側の壁の傾き (垂直からの角度)；空欄は θ1 と同じ</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
+        </message>
+        <message>
+            <source>Largest ridge the ball end mill may leave between its passes on the inclined walls</source>
+            <translation>傾斜壁でボールエンドミルのパス間に残ってよい最大のカスプ高さ</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
+        </message>
+        <message>
             <source>S (taper, °/side)</source>
             <translation>S(テーパ、片側 °)</translation>
         </message>
         <message>
             <source>F (wall finish)</source>
             <translation>F(仕上げ区分)</translation>
+        </message>
+        <message>
+            <source>A corner of the pocket at the top surface, in work coordinates</source>
+            <translation>上面でのポケットの角 (ワーク座標)</translation>
+        </message>
+        <message>
+            <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
+            <translation>壁のテーパ (片側、度)；垂直な壁は 0</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
         </message>
         <message>
             <source>Shape</source>
@@ -1137,6 +1193,54 @@
             <translation>測定送り (mm/min)</translation>
         </message>
         <message>
+            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
+            <translation>丸形 (ボスまたは穴) か角形 (ブロックまたはポケット)</translation>
+        </message>
+        <message>
+            <source>Whether the probe touches the part from outside or from inside</source>
+            <translation>プローブが外側から触れるか内側から触れるか</translation>
+        </message>
+        <message>
+            <source>Where the first touch is, in machine coordinates</source>
+            <translation>最初の測定点の位置 (機械座標)</translation>
+        </message>
+        <message>
+            <source>A touch, relative to the first one; empty until it is measured</source>
+            <translation>最初の点からの相対位置の測定点；測定するまで空欄</translation>
+        </message>
+        <message>
+            <source>Height of a touch on the top face, in machine coordinates; empty if not touched</source>
+            <translation>上面の測定点の高さ (機械座標)；測定しない場合は空欄</translation>
+        </message>
+        <message>
+            <source>Largest distance a touch may lie from the fitted shape</source>
+            <translation>測定点が当てはめた形状から離れてよい最大距離</translation>
+        </message>
+        <message>
+            <source>Diameter of the round part, or its width along X</source>
+            <translation>丸形の直径、または X 方向の幅</translation>
+        </message>
+        <message>
+            <source>Length of the rectangular part along Y</source>
+            <translation>角形の Y 方向の長さ</translation>
+        </message>
+        <message>
+            <source>How far below the top face the probe touches the sides</source>
+            <translation>側面を測定する上面からの深さ</translation>
+        </message>
+        <message>
+            <source>Distance kept from the part while the probe moves between touches</source>
+            <translation>測定点間を移動するときに部品から離す距離</translation>
+        </message>
+        <message>
+            <source>How far past the expected surface the probe looks for it before giving up</source>
+            <translation>予想面を越えてどこまで探すか (見つからなければ停止)</translation>
+        </message>
+        <message>
+            <source>Feed of the probing moves, in mm per minute</source>
+            <translation>測定移動の送り (mm/min)</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>形状</translation>
         </message>
@@ -1147,6 +1251,18 @@
         <message>
             <source>Start Z</source>
             <translation>始点 Z</translation>
+        </message>
+        <message>
+            <source>Outer profile (the outside diameter) or inner profile (a bore)</source>
+            <translation>外径の輪郭か内径 (穴) の輪郭か</translation>
+        </message>
+        <message>
+            <source>Diameter where the profile starts, at its front end</source>
+            <translation>輪郭の始点の直径 (前端)</translation>
+        </message>
+        <message>
+            <source>Z where the profile starts; 0 is the finished front face</source>
+            <translation>輪郭の始点の Z；0 は仕上げ後の前端面</translation>
         </message>
     </context>
     <context>

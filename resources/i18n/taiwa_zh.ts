@@ -1081,12 +1081,68 @@
             <translation>残留高度</translation>
         </message>
         <message>
+            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
+            <translation>开口起始的角点，位于上表面，工件坐标</translation>
+        </message>
+        <message>
+            <source>Length of the opening along X, at the top surface</source>
+            <translation>开口沿 X 的长度（上表面）</translation>
+        </message>
+        <message>
+            <source>Width of the opening along Y, at the top surface</source>
+            <translation>开口沿 Y 的宽度（上表面）</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>型腔深度，从上表面向下</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
+            <translation>L1 起始端侧壁的倾角（相对竖直方向，度）</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1</source>
+            <translation>L1 末端侧壁的倾角（相对竖直方向，度）；空表示与 θ1 相同</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
+        </message>
+        <message>
+            <source>Largest ridge the ball end mill may leave between its passes on the inclined walls</source>
+            <translation>球头铣刀在斜壁上两道刀路之间允许留下的最大残留高度</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
+        </message>
+        <message>
             <source>S (taper, °/side)</source>
             <translation>S(斜度,单边 °)</translation>
         </message>
         <message>
             <source>F (wall finish)</source>
             <translation>F(侧壁精加工)</translation>
+        </message>
+        <message>
+            <source>A corner of the pocket at the top surface, in work coordinates</source>
+            <translation>型腔在上表面的角点（工件坐标）</translation>
+        </message>
+        <message>
+            <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
+            <translation>侧壁斜度（单边，度）；竖直侧壁为 0</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
         </message>
         <message>
             <source>Shape</source>
@@ -1137,6 +1193,54 @@
             <translation>测量进给 (mm/min)</translation>
         </message>
         <message>
+            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
+            <translation>圆形（凸台或孔）或矩形（块或型腔）</translation>
+        </message>
+        <message>
+            <source>Whether the probe touches the part from outside or from inside</source>
+            <translation>测头从外侧还是内侧接触工件</translation>
+        </message>
+        <message>
+            <source>Where the first touch is, in machine coordinates</source>
+            <translation>第一个测量点的位置（机床坐标）</translation>
+        </message>
+        <message>
+            <source>A touch, relative to the first one; empty until it is measured</source>
+            <translation>相对第一个点的测量点；测量前为空</translation>
+        </message>
+        <message>
+            <source>Height of a touch on the top face, in machine coordinates; empty if not touched</source>
+            <translation>顶面测量点的高度（机床坐标）；不测量则为空</translation>
+        </message>
+        <message>
+            <source>Largest distance a touch may lie from the fitted shape</source>
+            <translation>测量点离拟合形状允许的最大距离</translation>
+        </message>
+        <message>
+            <source>Diameter of the round part, or its width along X</source>
+            <translation>圆形工件的直径，或沿 X 的宽度</translation>
+        </message>
+        <message>
+            <source>Length of the rectangular part along Y</source>
+            <translation>矩形工件沿 Y 的长度</translation>
+        </message>
+        <message>
+            <source>How far below the top face the probe touches the sides</source>
+            <translation>测量侧面时距顶面的深度</translation>
+        </message>
+        <message>
+            <source>Distance kept from the part while the probe moves between touches</source>
+            <translation>测量点之间移动时与工件保持的距离</translation>
+        </message>
+        <message>
+            <source>How far past the expected surface the probe looks for it before giving up</source>
+            <translation>越过预期表面继续寻找的距离，找不到则停止</translation>
+        </message>
+        <message>
+            <source>Feed of the probing moves, in mm per minute</source>
+            <translation>测量移动的进给（mm/min）</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>轮廓</translation>
         </message>
@@ -1147,6 +1251,18 @@
         <message>
             <source>Start Z</source>
             <translation>起点 Z</translation>
+        </message>
+        <message>
+            <source>Outer profile (the outside diameter) or inner profile (a bore)</source>
+            <translation>外轮廓（外径）或内轮廓（孔）</translation>
+        </message>
+        <message>
+            <source>Diameter where the profile starts, at its front end</source>
+            <translation>轮廓起点的直径（前端）</translation>
+        </message>
+        <message>
+            <source>Z where the profile starts; 0 is the finished front face</source>
+            <translation>轮廓起点的 Z；0 为精加工后的前端面</translation>
         </message>
     </context>
     <context>

@@ -152,6 +152,20 @@ protected:
         fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
                                        {"scallop"}, &M2DPocket::scallop));
         fs.push_back(form::stepOver<M2DPocket>());
+        form::describe(fs, {
+            {"X1", "sym-X1Y1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates")},
+            {"Y1", "sym-X1Y1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates")},
+            {"L1", "sym-L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the opening along X, at the top surface")},
+            {"L2", "sym-L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Width of the opening along Y, at the top surface")},
+            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
+            {"theta1", "sym-theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the wall at the start of L1, in degrees from the vertical")},
+            {"theta2", "sym-theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1")},
+            {"r1", "sym-r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius of the pocket's corners; the finishing end mill must fit in it")},
+            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
+            {"H", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether a hole is drilled first for the roughing end mill to go down into")},
+            {"scallop", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Largest ridge the ball end mill may leave between its passes on the inclined walls")},
+            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
+        });
         return fs;
     }
 };

@@ -123,6 +123,19 @@ protected:
         fs.push_back(form::code<M4Pocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
                                           {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole));
         fs.push_back(form::stepOver<M4Pocket>());
+        form::describe(fs, {
+            {"P1.", "sym-P1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
+            {"P2.", "sym-P2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
+            {"P3.", "sym-P3", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
+            {"P4.", "sym-P4", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
+            {"r1", "sym-r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius of the pocket's corners; the finishing end mill must fit in it")},
+            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
+            {"taper", "sym-S", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the walls in degrees per side; 0 for vertical walls")},
+            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
+            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the walls are finished: at full depth, in several depths, or in two stages")},
+            {"H", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether a hole is drilled first for the roughing end mill to go down into")},
+            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
+        });
         return fs;
     }
 };

@@ -236,6 +236,23 @@ protected:
                                        &ProbeUnit::search));
         fs.push_back(member<ProbeUnit>("feed", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Probing feed (mm/min)"),
                                        {"feed"}, &ProbeUnit::feed));
+        form::describe(fs, {
+            {"shape", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Round (a boss or a bore) or rectangular (a block or a pocket)")},
+            {"where", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether the probe touches the part from outside or from inside")},
+            {"origin.", "sym-P1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Where the first touch is, in machine coordinates")},
+            {"P2.", "sym-P2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
+            {"P3.", "sym-P3", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
+            {"P4.", "sym-P4", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
+            {"P", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
+            {"top", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Height of a touch on the top face, in machine coordinates; empty if not touched")},
+            {"tolerance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Largest distance a touch may lie from the fitted shape")},
+            {"sizeX", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of the round part, or its width along X")},
+            {"sizeY", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the rectangular part along Y")},
+            {"touchDepth", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far below the top face the probe touches the sides")},
+            {"clearance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance kept from the part while the probe moves between touches")},
+            {"search", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far past the expected surface the probe looks for it before giving up")},
+            {"feed", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Feed of the probing moves, in mm per minute")},
+        });
         return fs;
     }
 };

@@ -327,6 +327,11 @@ protected:
         fs.push_back(number<TurnUnit>("start.z", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start Z"), {"start.z"},
                                       [](const TurnUnit& t) { return t.profile.startZ; },
                                       [](TurnUnit& t, double v) { t.profile.startZ = v; }));
+        form::describe(fs, {
+            {"side", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outer profile (the outside diameter) or inner profile (a bore)")},
+            {"start.x", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter where the profile starts, at its front end")},
+            {"start.z", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Z where the profile starts; 0 is the finished front face")},
+        });
         return fs;
     }
 
