@@ -11,6 +11,8 @@
 #include "support/gui_fields.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
+#include "ui/language.h"
+#include "ui/core_texts.h"
 #include "ui/job_document.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
@@ -35,6 +37,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QTranslator>
 #include <QSplitter>
 #include <QtTest>
 
@@ -275,6 +278,32 @@ private slots:
         QCOMPARE(w.planRunner()->fullPlan().get(), before.get());
         QVERIFY2(w.ncView()->text()->toPlainText().startsWith("%\nO1000"),
                  qPrintable(w.ncView()->text()->toPlainText().left(40)));
+    }
+
+    // The core's words the station shows, step kinds and code meanings,
+    // are in the station's language: each has its Japanese and Chinese.
+    void coreWordsAreTranslated()
+    {
+        for (const char* language : {"ja", "zh"}) {
+            qputenv("TAIWA_LANG", language);
+            QVERIFY(installTranslator(*QCoreApplication::instance()));
+            for (const QString& s : coreTextSources())
+                QVERIFY2(QCoreApplication::translate("taiwa::CoreTexts", s.toUtf8().constData()) != s,
+                         qPrintable(QString("%1: %2").arg(language, s)));
+            Step rough;
+            rough.kind = StepKind::Roughing;
+            rough.number = 2;
+            QCOMPARE(stepLabel(rough), QString(language == std::string("ja") ? "荒加工 II" : "粗加工 II"));
+            QVERIFY(codeMeaning("roughing only") != "roughing only");
+            for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
+                QCoreApplication::removeTranslator(t);
+                delete t;
+            }
+        }
+        qunsetenv("TAIWA_LANG");
+        Step rough;
+        rough.kind = StepKind::Roughing;
+        QCOMPARE(stepLabel(rough), QString("Roughing I"));
     }
 
     // Help on every field: the field being typed in has its line of help

@@ -22,9 +22,7 @@ FieldSpec toSpec(const FormField& f)
     s.kind = f.kind == FormFieldKind::Code             ? FieldKind::Code
              : f.kind == FormFieldKind::OptionalNumber ? FieldKind::OptionalNumber
                                                        : FieldKind::Number;
-    // "1 – roughing, floor finishing and wall finishing": the code first, as on the drawing.
-    for (const auto& [value, meaning] : f.codes)
-        s.codes.emplace_back(value, QStringLiteral("%1 – %2").arg(value).arg(text(meaning)));
+    for (const auto& [value, meaning] : f.codes) s.codes.emplace_back(value, text(meaning));
     s.get = [get = f.get](const MachiningUnit& u) { return get(u.module); };
     s.set = [set = f.set](MachiningUnit& u, std::optional<double> v) { set(u.module, v); };
     return s;

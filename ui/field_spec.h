@@ -27,7 +27,7 @@ struct FieldSpec {
     QString symbol;              // its symbol's id in the module drawing ("sym-P1"); empty: none
     QStringList diagFields;      // checkJob field names shown on this widget
     FieldKind kind = FieldKind::Number;
-    std::vector<std::pair<int, QString>> codes;  // Code: value and "1 – roughing, ..."
+    std::vector<std::pair<int, QString>> codes;  // Code: value and its meaning (source text: codeMeaning translates it)
     std::function<std::optional<double>(const MachiningUnit&)> get;
     std::function<void(MachiningUnit&, std::optional<double>)> set;
 };

@@ -2,6 +2,7 @@
 #include "ui/step_panel.h"
 
 #include "ui/number_text.h"
+#include "ui/core_texts.h"
 #include "ui/step_table.h"
 
 #include <QCheckBox>
@@ -184,7 +185,7 @@ void StepPanel::showDetails(int index)
     const LengthUnit u = plan_->job.lengthUnit;
     QStringList lines;
     lines << tr("<b>%1</b> of unit %2 (%3), machining type %4")
-                 .arg(QString::fromStdString(s.label()))
+                 .arg(stepLabel(s))
                  .arg(s.unit + 1)
                  .arg(QString::fromStdString(s.module))
                  .arg(static_cast<int>(s.machiningType));

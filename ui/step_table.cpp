@@ -1,6 +1,7 @@
 // The step list table.
 #include "ui/step_table.h"
 
+#include "ui/core_texts.h"
 #include "ui/number_text.h"
 
 #include "tools/cutting.h"
@@ -109,7 +110,7 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         auto round = [toJob](double mm) { return formatNumber(std::round(mm * toJob * 1e4) / 1e4); };
         setItem(r, No, fixed(QString::number(r + 1)));
         setItem(r, Unit, fixed(unit));
-        setItem(r, StepName, fixed(QString::fromStdString(s.label())));
+        setItem(r, StepName, fixed(stepLabel(s)));
         // The tool by its number (its name in the tooltip and the step's details): the columns fit.
         auto* tool = fixed(s.tool ? QStringLiteral("T%1").arg(s.tool->toolId) : QStringLiteral("–"));
         if (const Tool* t = s.tool ? plan->tool(s.tool->toolId) : nullptr) tool->setToolTip(QString::fromStdString(t->name));

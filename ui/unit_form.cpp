@@ -2,6 +2,8 @@
 // display of check diagnostics.
 #include "ui/unit_form.h"
 
+#include "ui/core_texts.h"
+
 #include "ui/sketch_view.h"
 
 #include "modules/registry.h"
@@ -84,7 +86,9 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
         Row& row = rows_[i];
         if (f.kind == FieldKind::Code) {
             row.combo = new QComboBox(cell);
-            for (const auto& [value, text] : f.codes) {
+            for (const auto& [value, meaning] : f.codes) {
+                // "1 – roughing, floor finishing and wall finishing": the code first, as on the drawing.
+                const QString text = QStringLiteral("%1 – %2").arg(value).arg(codeMeaning(meaning.toStdString()));
                 row.combo->addItem(text, value);
                 row.combo->setItemData(row.combo->count() - 1, text, Qt::ToolTipRole);
             }

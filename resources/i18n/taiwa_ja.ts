@@ -1031,6 +1031,121 @@
         </message>
     </context>
     <context>
+        <name>taiwa::CoreTexts</name>
+        <message>
+            <source>Pilot hole</source>
+            <translation>下穴</translation>
+        </message>
+        <message>
+            <source>Roughing</source>
+            <translation>荒加工</translation>
+        </message>
+        <message>
+            <source>Floor finishing</source>
+            <translation>底面仕上げ</translation>
+        </message>
+        <message>
+            <source>Wall finishing</source>
+            <translation>側壁仕上げ</translation>
+        </message>
+        <message>
+            <source>Inclined-face finishing</source>
+            <translation>傾斜面仕上げ</translation>
+        </message>
+        <message>
+            <source>Facing</source>
+            <translation>端面削り</translation>
+        </message>
+        <message>
+            <source>Centre drilling</source>
+            <translation>センタ穴加工</translation>
+        </message>
+        <message>
+            <source>Drilling</source>
+            <translation>穴あけ</translation>
+        </message>
+        <message>
+            <source>Grooving</source>
+            <translation>溝入れ</translation>
+        </message>
+        <message>
+            <source>Finishing</source>
+            <translation>仕上げ</translation>
+        </message>
+        <message>
+            <source>Parting off</source>
+            <translation>突切り</translation>
+        </message>
+        <message>
+            <source>roughing, floor finishing and wall finishing</source>
+            <translation>荒加工、底面仕上げ、側壁仕上げ</translation>
+        </message>
+        <message>
+            <source>roughing and floor finishing, walls left as roughed</source>
+            <translation>荒加工と底面仕上げ、側壁は荒加工のまま</translation>
+        </message>
+        <message>
+            <source>floor and wall finishing of a pocket already cored</source>
+            <translation>下加工済みポケットの底面・側壁仕上げ</translation>
+        </message>
+        <message>
+            <source>wall finishing only</source>
+            <translation>側壁仕上げのみ</translation>
+        </message>
+        <message>
+            <source>roughing only</source>
+            <translation>荒加工のみ</translation>
+        </message>
+        <message>
+            <source>walls finished to full depth in one incision</source>
+            <translation>側壁を全深さで一度に仕上げ</translation>
+        </message>
+        <message>
+            <source>walls finished in several Z incisions down to the floor</source>
+            <translation>側壁を Z 方向に数回に分けて底まで仕上げ</translation>
+        </message>
+        <message>
+            <source>walls semi-finished leaving alpha3, then finished</source>
+            <translation>側壁を α3 残して中仕上げ後、仕上げ</translation>
+        </message>
+        <message>
+            <source>drill a pilot hole first</source>
+            <translation>先に下穴をあける</translation>
+        </message>
+        <message>
+            <source>no pilot hole, the roughing tool ramps in</source>
+            <translation>下穴なし、荒加工工具が斜めに切り込む</translation>
+        </message>
+        <message>
+            <source>round (boss or bore)</source>
+            <translation>丸形 (ボスまたは穴)</translation>
+        </message>
+        <message>
+            <source>rectangular (block or pocket)</source>
+            <translation>角形 (ブロックまたはポケット)</translation>
+        </message>
+        <message>
+            <source>outside (boss, block)</source>
+            <translation>外側 (ボス、ブロック)</translation>
+        </message>
+        <message>
+            <source>inside (bore, pocket)</source>
+            <translation>内側 (穴、ポケット)</translation>
+        </message>
+        <message>
+            <source>(round: none)</source>
+            <translation>(丸形：なし)</translation>
+        </message>
+        <message>
+            <source>outer (OD)</source>
+            <translation>外径 (OD)</translation>
+        </message>
+        <message>
+            <source>inner (ID, a bore)</source>
+            <translation>内径 (ID、穴)</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
             <source>Step-over (× D)</source>

@@ -1031,6 +1031,121 @@
         </message>
     </context>
     <context>
+        <name>taiwa::CoreTexts</name>
+        <message>
+            <source>Pilot hole</source>
+            <translation>预钻孔</translation>
+        </message>
+        <message>
+            <source>Roughing</source>
+            <translation>粗加工</translation>
+        </message>
+        <message>
+            <source>Floor finishing</source>
+            <translation>底面精加工</translation>
+        </message>
+        <message>
+            <source>Wall finishing</source>
+            <translation>侧壁精加工</translation>
+        </message>
+        <message>
+            <source>Inclined-face finishing</source>
+            <translation>斜面精加工</translation>
+        </message>
+        <message>
+            <source>Facing</source>
+            <translation>车端面</translation>
+        </message>
+        <message>
+            <source>Centre drilling</source>
+            <translation>中心钻孔</translation>
+        </message>
+        <message>
+            <source>Drilling</source>
+            <translation>钻孔</translation>
+        </message>
+        <message>
+            <source>Grooving</source>
+            <translation>切槽</translation>
+        </message>
+        <message>
+            <source>Finishing</source>
+            <translation>精加工</translation>
+        </message>
+        <message>
+            <source>Parting off</source>
+            <translation>切断</translation>
+        </message>
+        <message>
+            <source>roughing, floor finishing and wall finishing</source>
+            <translation>粗加工、底面精加工和侧壁精加工</translation>
+        </message>
+        <message>
+            <source>roughing and floor finishing, walls left as roughed</source>
+            <translation>粗加工和底面精加工，侧壁保持粗加工状态</translation>
+        </message>
+        <message>
+            <source>floor and wall finishing of a pocket already cored</source>
+            <translation>已预加工型腔的底面和侧壁精加工</translation>
+        </message>
+        <message>
+            <source>wall finishing only</source>
+            <translation>仅侧壁精加工</translation>
+        </message>
+        <message>
+            <source>roughing only</source>
+            <translation>仅粗加工</translation>
+        </message>
+        <message>
+            <source>walls finished to full depth in one incision</source>
+            <translation>侧壁一次切入全深精加工</translation>
+        </message>
+        <message>
+            <source>walls finished in several Z incisions down to the floor</source>
+            <translation>侧壁分多次 Z 向切入精加工到底面</translation>
+        </message>
+        <message>
+            <source>walls semi-finished leaving alpha3, then finished</source>
+            <translation>侧壁半精加工留 α3 后精加工</translation>
+        </message>
+        <message>
+            <source>drill a pilot hole first</source>
+            <translation>先钻预钻孔</translation>
+        </message>
+        <message>
+            <source>no pilot hole, the roughing tool ramps in</source>
+            <translation>无预钻孔，粗加工刀具斜线下刀</translation>
+        </message>
+        <message>
+            <source>round (boss or bore)</source>
+            <translation>圆形（凸台或孔）</translation>
+        </message>
+        <message>
+            <source>rectangular (block or pocket)</source>
+            <translation>矩形（块或型腔）</translation>
+        </message>
+        <message>
+            <source>outside (boss, block)</source>
+            <translation>外侧（凸台、块）</translation>
+        </message>
+        <message>
+            <source>inside (bore, pocket)</source>
+            <translation>内侧（孔、型腔）</translation>
+        </message>
+        <message>
+            <source>(round: none)</source>
+            <translation>（圆形：无）</translation>
+        </message>
+        <message>
+            <source>outer (OD)</source>
+            <translation>外轮廓（外径）</translation>
+        </message>
+        <message>
+            <source>inner (ID, a bore)</source>
+            <translation>内轮廓（内径，孔）</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
             <source>Step-over (× D)</source>
