@@ -315,16 +315,7 @@ private slots:
             if (table->item(r, ToolLibraryDialog::Id)->text() == "27") row = r;
         QVERIFY(row >= 0);
         const auto type = [&](ToolLibraryDialog::Column column, const QString& text) {
-            table->setFocus();
-            table->setCurrentCell(row, column);
-            QTest::keyClick(table, Qt::Key_F2);
-            auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());
-            QVERIFY(editor && table->isAncestorOf(editor));
-            editor->selectAll();
-            QTest::keyClick(editor, Qt::Key_Backspace);
-            QTest::keyClicks(editor, text);
-            QTest::keyClick(editor, Qt::Key_Return);
-            for (int turn = 0; turn < 3; ++turn) QCoreApplication::processEvents();
+            QVERIFY(Fields::typeIntoCell(table, row, column, text));
         };
         const auto t27 = [] {
             const auto tools = readToolLibrary(defaultToolLibraryPath());

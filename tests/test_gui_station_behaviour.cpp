@@ -395,18 +395,7 @@ private slots:
         const QString toolSpeed = table->item(row, StepTable::Speed)->text();
         QVERIFY(!toolSpeed.isEmpty() && toolSpeed != "7100");
         const auto type = [&](StepTable::Column column, const QString& text) {
-            table->setFocus();
-            table->setCurrentCell(row, column);
-            QTest::keyClick(table, Qt::Key_F2);
-            auto* editor = qobject_cast<QLineEdit*>(QApplication::focusWidget());  // the cell's editor
-            QVERIFY(editor && table->isAncestorOf(editor));
-            editor->selectAll();
-            QTest::keyClick(editor, Qt::Key_Backspace);
-            QTest::keyClicks(editor, text);
-            QTest::keyClick(editor, Qt::Key_Return);
-            // Return commits on the next turn of the event loop, and the
-            // table tells the edit on the one after (once its editor has closed).
-            for (int turn = 0; turn < 3; ++turn) QCoreApplication::processEvents();
+            QVERIFY(Fields::typeIntoCell(table, row, column, text));
             w.planRunner()->flush();
         };
         type(StepTable::Speed, "7100");

@@ -157,6 +157,16 @@ int ToolLibraryDialog::selectedRow() const
     return rows.isEmpty() ? -1 : rows.first().row();
 }
 
+std::optional<Tool> ToolLibraryDialog::selectedTool()
+{
+    const int row = selectedRow();
+    if (row < 0 || row >= static_cast<int>(tools_.size())) {
+        fail(tr("Select a tool first."));
+        return std::nullopt;
+    }
+    return tools_[static_cast<std::size_t>(row)];
+}
+
 bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
 {
     auto lib = ToolLibrary::open(defaultToolLibraryPath());
@@ -243,12 +253,9 @@ void ToolLibraryDialog::onItemChanged(QTableWidgetItem* item)
 
 void ToolLibraryDialog::copySelected()
 {
-    const int row = selectedRow();
-    if (row < 0) {
-        fail(tr("Select a tool first."));
-        return;
-    }
-    Tool copy = tools_[static_cast<std::size_t>(row)];
+    const auto selected = selectedTool();
+    if (!selected) return;
+    Tool copy = *selected;
     int id = 1;
     for (const Tool& t : tools_) id = std::max(id, t.id + 1);
     if (id > kMaxToolNumber) {
@@ -258,31 +265,21 @@ void ToolLibraryDialog::copySelected()
     copy.id = id;
     copy.name += " (copy)";
     copy.usedMinutes = 0.0;
-    change(std::nullopt, copy, tr("T%1 copied to T%2").arg(tools_[static_cast<std::size_t>(row)].id).arg(id));
+    change(std::nullopt, copy, tr("T%1 copied to T%2").arg(selected->id).arg(id));
 }
 
 void ToolLibraryDialog::retireSelected()
 {
-    const int row = selectedRow();
-    if (row < 0) {
-        fail(tr("Select a tool first."));
-        return;
-    }
-    const Tool t = tools_[static_cast<std::size_t>(row)];
-    change(t, std::nullopt, tr("T%1 retired (Undo brings it back)").arg(t.id));
+    if (const auto t = selectedTool()) change(*t, std::nullopt, tr("T%1 retired (Undo brings it back)").arg(t->id));
 }
 
 void ToolLibraryDialog::resetWear()
 {
-    const int row = selectedRow();
-    if (row < 0) {
-        fail(tr("Select a tool first."));
-        return;
-    }
-    const Tool before = tools_[static_cast<std::size_t>(row)];
-    Tool after = before;
+    const auto before = selectedTool();
+    if (!before) return;
+    Tool after = *before;
     after.usedMinutes = 0.0;
-    change(before, after, tr("T%1: wear reset").arg(before.id));
+    change(before, after, tr("T%1: wear reset").arg(before->id));
 }
 
 bool ToolLibraryDialog::exportToolTable(const QString& path, bool fanuc)

@@ -61,6 +61,8 @@ private:
     bool apply(const std::optional<Tool>& tool, int id);
     void fail(const QString& message);
     int selectedRow() const;
+    // The selected tool; none, with "Select a tool first." shown, when no row is.
+    std::optional<Tool> selectedTool();
 
     QTableWidget* table_;
     QLabel* status_;
