@@ -37,6 +37,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QScrollBar>
 #include <QTranslator>
 #include <QSplitter>
 #include <QtTest>

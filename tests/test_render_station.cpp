@@ -11,6 +11,7 @@
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
 #include "ui/station_window.h"
+#include "ui/step_table.h"
 #include "ui/step_panel.h"
 #include "viz/palette.h"
 #include "viz/scene.h"
@@ -19,6 +20,7 @@
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QTextBlock>
+#include <QScrollBar>
 #include <QtTest>
 
 #include <cmath>
@@ -134,6 +136,24 @@ private slots:
         QVERIFY(!before->isEnabled());
         stock->click();
         QVERIFY(before->isEnabled());
+    }
+
+    // The step list's columns fit without scrolling sideways in the window
+    // opened on a 1600-pixel screen: No., unit, step, tool, S, F, depths,
+    // time (here, with the X server's fonts and the 3-D view in its place).
+    void stepColumnsFitAt1600()
+    {
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.resize(1600, 940);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.planRunner()->flush();
+        QCoreApplication::processEvents();
+        StepTable* table = w.stepTable();
+        int columns = 0;
+        for (int c = 0; c < table->columnCount(); ++c) columns += table->columnWidth(c);
+        QVERIFY2(columns <= table->viewport()->width() && !table->horizontalScrollBar()->isVisible(),
+                 qPrintable(QString("columns %1 px in a %2 px view").arg(columns).arg(table->viewport()->width())));
     }
 
     void ncBlockHighlightsItsMove()

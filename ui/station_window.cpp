@@ -76,7 +76,7 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
         resize(std::min(1600, free.width()), std::min(940, free.height()));
     }
     if (!main->restoreState(settings.value("station/split").toByteArray()))
-        main->setSizes({width() * 22 / 100, width() * 26 / 100, width() * 52 / 100});
+        main->setSizes({width() * 22 / 100, width() * 24 / 100, width() * 54 / 100});
     if (!runner_->libraryError().isEmpty())
         statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)").arg(runner_->libraryError()));
 
@@ -169,8 +169,10 @@ QWidget* StationWindow::buildRight()
     auto* lower = new QSplitter(Qt::Horizontal);
     lower->addWidget(steps_);
     lower->addWidget(nc_);
-    lower->setStretchFactor(0, 3);
-    lower->setStretchFactor(1, 2);
+    // The step list's columns (No., unit, step, tool, S, F, depths, time)
+    // fit without scrolling sideways on a 1600-pixel screen.
+    lower->setStretchFactor(0, 13);
+    lower->setStretchFactor(1, 7);
     right->addWidget(lower);
     right->setSizes({500, 440});
     auto* box = new QWidget;
