@@ -912,6 +912,10 @@
             <translation>工具ライブラリを読めません: %1</translation>
         </message>
         <message>
+            <source>Select a tool first.</source>
+            <translation>先に工具を選んでください。</translation>
+        </message>
+        <message>
             <source>Cannot open the tool library: %1</source>
             <translation>工具ライブラリを開けません: %1</translation>
         </message>
@@ -934,10 +938,6 @@
         <message>
             <source>T%1: %2 changed</source>
             <translation>T%1: %2 を変更しました</translation>
-        </message>
-        <message>
-            <source>Select a tool first.</source>
-            <translation>先に工具を選んでください。</translation>
         </message>
         <message>
             <source>No free T number: the library uses T%1</source>

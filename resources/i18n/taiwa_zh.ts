@@ -912,6 +912,10 @@
             <translation>无法读取刀具库:%1</translation>
         </message>
         <message>
+            <source>Select a tool first.</source>
+            <translation>请先选择一把刀具。</translation>
+        </message>
+        <message>
             <source>Cannot open the tool library: %1</source>
             <translation>无法打开刀具库：%1</translation>
         </message>
@@ -934,10 +938,6 @@
         <message>
             <source>T%1: %2 changed</source>
             <translation>T%1：%2 已修改</translation>
-        </message>
-        <message>
-            <source>Select a tool first.</source>
-            <translation>请先选择一把刀具。</translation>
         </message>
         <message>
             <source>No free T number: the library uses T%1</source>
