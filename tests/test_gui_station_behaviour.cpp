@@ -239,6 +239,21 @@ private slots:
         QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m2d.X1")));
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
         QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m4.P1.x")));
+        // Enter in a unit's last field: the next unit's first field; after
+        // the last unit, the step list.
+        w.unitList()->selectUnit(0);
+        edit(w, "m4.stepOver")->setFocus();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+        QCOMPARE(w.unitList()->currentUnit(), 1);
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m2d.X1")));
+        w.unitList()->selectUnit(2);
+        edit(w, "m4.stepOver")->setFocus();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(w.stepTable()));
+        // Enter in any other field moves to the field below it.
+        edit(w, "m4.depth")->setFocus();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Return);
+        QCOMPARE(QApplication::focusWidget(), static_cast<QWidget*>(edit(w, "m4.taper")));
     }
 
     void separateVisitsToAFieldAreSeparateUndoSteps()

@@ -266,6 +266,17 @@ void StationWindow::wire()
         connect(f, &UnitForm::edited, this,
                 [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
         connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
+        // Enter in a unit's last field: the next unit's first field, or after
+        // the last unit the step list.
+        connect(f, &UnitForm::lastFieldDone, this, [this] {
+            const int next = units_->currentUnit() + 1;
+            if (next < static_cast<int>(doc_->job().units.size())) {
+                units_->selectUnit(next);
+                if (UnitForm* form = currentForm()) form->focusFirstField();
+            } else {
+                steps_->table()->setFocus(Qt::OtherFocusReason);
+            }
+        });
         connect(f, &UnitForm::unitEdited, this, [this](const ModuleInput& after, const QString& text, const QString& key) {
             const int u = units_->currentUnit();
             if (u < 0) return;

@@ -106,7 +106,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
                 row.edit->setPlaceholderText(
                     QCoreApplication::translate("taiwa::ui::FieldSpec", f.placeholder.toUtf8().constData()));
             connect(row.edit, &QLineEdit::textEdited, this, [this, index](const QString& t) { onTextEdited(index, t); });
-            connect(row.edit, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
+            connect(row.edit, &QLineEdit::returnPressed, this, [this, index] { enterPressed(index); });
             connect(row.edit, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
             row.edit->installEventFilter(this);
             editor = row.edit;
@@ -223,6 +223,13 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
 
 QString UnitForm::helpText() const { return help_->text(); }
 
+void UnitForm::enterPressed(int field)
+{
+    // The last field: the operator is done with this unit.
+    if (field + 1 == static_cast<int>(rows_.size())) emit lastFieldDone();
+    else focusNextChild();
+}
+
 void UnitForm::showHelp(int field)
 {
     const FieldSpec* f = field >= 0 && field < static_cast<int>(fields_.size()) ? &fields_[static_cast<std::size_t>(field)] : nullptr;
@@ -243,7 +250,8 @@ bool UnitForm::eventFilter(QObject* watched, QEvent* event)
     if (event->type() == QEvent::KeyPress && qobject_cast<QComboBox*>(watched)) {
         const int key = static_cast<QKeyEvent*>(event)->key();
         if (key == Qt::Key_Return || key == Qt::Key_Enter) {  // Enter moves on, as in the line edits
-            focusNextChild();
+            for (std::size_t r = 0; r < rows_.size(); ++r)
+                if (rows_[r].combo == watched) enterPressed(static_cast<int>(r));
             return true;
         }
     }

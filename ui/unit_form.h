@@ -63,6 +63,8 @@ signals:
     void nameEdited(const QString& name);
     // The operator left a field (Tab, Enter, click elsewhere).
     void fieldLeft();
+    // Enter in the last field: on to the next unit, or the step list.
+    void lastFieldDone();
     // The unit's module input as a whole after an edit of the profile editor.
     void unitEdited(const taiwa::ModuleInput& after, const QString& text, const QString& mergeKey);
 
@@ -82,6 +84,7 @@ private:
     int drawingWidth_ = 320;
     QString highlighted_;
     void showHelp(int field);  // -1: none
+    void enterPressed(int field);
     class ProfileEditor* profile_ = nullptr;
     const ModuleKind& kind_;
     ModuleInput current_;  // the unit's module input as last shown
