@@ -1,0 +1,253 @@
+// Turning steps: the finishing insert and the finishing contour (turn_planner.h).
+#include "turning/turn_planner.h"
+
+namespace taiwa::turning::planner {
+
+const Tool* Planner::chooseFinishing()
+{
+    if (skipped(kFinish)) return nullptr;
+    if (const Tool* t = pinned(kFinish)) {
+        if (!insertGeometry(*t) || t->turning.inside != inner_) {
+            problem(std::string("tools.") + kFinish, fmt::format("{} is not an {} turning insert", toolWords(*t), inner_ ? "inside" : "outside"));
+            return nullptr;
+        }
+        finishReason_ = "pinned";
+        finishReach_ = reachedBy(*t);
+        finishTool_ = t;
+        return t;
+    }
+    // The insert that reaches every element; of those the smallest nose
+    // radius (the finest finish), then the lowest number. Failing that,
+    // the one reaching most, the rest left for a grooving blade.
+    // Of equal reach over the part, the one that also follows more of
+    // the allowance's relief grooves (fewer left).
+    const Tool* best = nullptr;
+    int bestMissing = 1 << 30, bestGrooves = 1 << 30;
+    for (const Tool* t : inserts()) {
+        const auto ok = reachedBy(*t);
+        const int missing = static_cast<int>(std::count(ok.begin() + static_cast<long>(first_), ok.end(), false));
+        int grooves = 0;
+        for (std::size_t i = first_; i < last_; ++i) grooves += !mustReach(i) && firstUnreached(*t, i, i + 1) >= 0;
+        if (!best || missing < bestMissing || (missing == bestMissing && grooves < bestGrooves) ||
+            (missing == bestMissing && grooves == bestGrooves && t->cornerRadius < best->cornerRadius - kTol)) {
+            best = t;
+            bestMissing = missing;
+            bestGrooves = grooves;
+        }
+    }
+    if (!best) {
+        problem("rows", fmt::format("the tool library has no {} turning insert", inner_ ? "inside (boring)" : "outside"));
+        return nullptr;
+    }
+    finishReach_ = reachedBy(*best);
+    finishTool_ = best;
+    finishReason_ = bestMissing == 0
+                        ? "reaches every element; smallest nose radius of those that do"
+                        : fmt::format("reaches all but {} element(s); smallest nose radius of those that reach most", bestMissing);
+    return best;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> Planner::unreachedRuns() const
+{
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t i = first_; i < last_;) {
+        if (finishReach_.empty() || finishReach_[i]) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j < last_ && !finishReach_[j]) ++j;
+        // A wall the insert cannot go down opens a groove: the run goes
+        // on to where the profile comes back up to its mouth (within
+        // kGrooveReach), the bottom in the insert's shadow too.
+        const double mouth = chain_[i].a.r;
+        if (s_ * (chain_[j - 1].b.r - mouth) < -1e-6) {
+            std::size_t k = j;
+            while (k < last_ && s_ * (chain_[k].b.r - mouth) < -1e-6 && chain_[i].a.z - chain_[k].b.z <= kGrooveReach) ++k;
+            if (k < last_ && chain_[i].a.z - chain_[k].b.z <= kGrooveReach) j = k + 1;
+        }
+        runs.emplace_back(i, j);  // [i, j)
+        i = j;
+    }
+    return runs;
+}
+
+void Planner::planFinishing(const Tool& tool)
+{
+    const auto cutting = cuttingOf(tool, kFinish, true);
+    if (!cutting) return;
+    checkSpindleLimit(tool, *cutting, kFinish);
+    const auto g = *insertGeometry(tool);
+    const double rn = g.noseRadius;
+    TurnStep ts;
+    ts.side = side_;
+    ts.orientation = insertOrientation(inner_);
+    ts.tipFromCentre = tipFromCentre(rn, inner_);
+    ts.cutting = *cutting;
+    ts.region = fmt::format("the deformed profile from Z{} to Z{}", len(zFront_), len(zEnd_));
+    // The contour as cut: the profile, each groove the insert cannot
+    // enter bridged by a line across its mouth (the blade cuts it after).
+    std::vector<Segment> contour;
+    const auto runs = unreachedRuns();
+    for (std::size_t i = first_; i < last_;) {
+        const auto run = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == i; });
+        if (run == runs.end()) {
+            contour.push_back(chain_[i]);
+            ++i;
+            continue;
+        }
+        const ZR a = chain_[run->first].a, b = chain_[run->second - 1].b;
+        if (dist(a, b) > kTol) contour.push_back(lineSegment(a, b));
+        i = run->second;
+    }
+    crossGrindingStockRuns(contour, tool);
+    reachableCorners(contour, rn);
+    TurnPath& p = ts.path;
+    const ZR first = contour.front().a;
+    const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};
+    p.start = {entry.z, safeR()};
+    // To the entry point with the nose clear, then compensation on along -Z onto the contour.
+    p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
+    p.moves.push_back({TurnMove::Rapid, entry, {}, FeedKind::Cut});
+    p.comp = inner_ ? NoseCompensation::Left : NoseCompensation::Right;
+    p.compFrom = static_cast<int>(p.moves.size());
+    p.moves.push_back({TurnMove::Feed, first, {}, FeedKind::Cut});
+    for (const auto& s : contour) {
+        if (s.arc) p.moves.push_back({s.ccw ? TurnMove::ArcCCW : TurnMove::ArcCW, s.b, s.centre, FeedKind::Cut});
+        else p.moves.push_back({TurnMove::Feed, s.b, {}, FeedKind::Cut});
+    }
+    p.compTo = static_cast<int>(p.moves.size());
+    // Off the part with compensation cancelled: up and forward.
+    const ZR last = contour.back().b;
+    p.moves.push_back({TurnMove::Feed, {last.z + t_.clearance, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
+    p.moves.push_back({TurnMove::Rapid, {last.z + t_.clearance, safeR()}, {}, FeedKind::Cut});
+    // Out of a bore along the axis before the turret moves on.
+    if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
+    addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));
+}
+
+void Planner::crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& tool)
+{
+    const auto g = *insertGeometry(tool);
+    const double rn = g.noseRadius;
+    std::vector<std::string> left;
+    for (std::size_t i = first_; i < last_;) {
+        if (mustReach(i) || firstUnreached(tool, i, i + 1) < 0) {
+            ++i;
+            continue;
+        }
+        // The whole run of the allowance's edges around it (a relief
+        // groove is several), from one edge of the part to the next.
+        std::size_t j = i;
+        while (j < last_ && !mustReach(j)) ++j;
+        while (i > first_ && !mustReach(i - 1)) --i;
+        const ZR a = chain_[i].a, b = chain_[j - 1].b;
+        // The run in the contour: the element starting at a, the one ending at b.
+        std::size_t ka = contour.size(), kb = contour.size();
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            if (ka == contour.size() && dist(contour[k].a, a) < 1e-9) ka = k;
+            if (dist(contour[k].b, b) < 1e-9) kb = k;
+        }
+        if (ka >= contour.size() || kb >= contour.size() || kb < ka || ka == 0 || kb + 1 >= contour.size()) {
+            i = j;
+            continue;
+        }
+        for (double reach = 2.0 * rn; reach <= 16.0 * rn; reach *= 2.0) {
+            const Segment& before = contour[ka - 1];
+            const Segment& after = contour[kb + 1];
+            if (length(before) < reach || length(after) < reach) break;
+            const ZR p = pointAt(before, length(before) - reach), q = pointAt(after, reach);
+            const Segment chord = lineSegment(p, q);
+            if (!reaches(g, chord, side_)) continue;
+            bool clear = true;
+            for (const auto& e : chain_)
+                for (const ZR x : crossings(e, chord))
+                    clear = clear && (dist(x, p) < 1e-7 || dist(x, q) < 1e-7);
+            if (!clear) continue;
+            const Segment head = piece(before, before.a, p), tail = piece(after, q, after.b);
+            contour.erase(contour.begin() + static_cast<long>(ka) - 1, contour.begin() + static_cast<long>(kb) + 2);
+            contour.insert(contour.begin() + static_cast<long>(ka) - 1, {head, chord, tail});
+            left.push_back(d_.edges[i].id + (j - i > 1 ? "…" + d_.edges[j - 1].id : ""));
+            break;
+        }
+        i = j;
+    }
+    if (!left.empty())
+        note(fmt::format("{} of the grinding allowance cannot be followed by {} and is left (the finishing contour "
+                         "crosses it); cut it with a form tool or grind it out",
+                         fmt::join(left, ", "), toolWords(tool)));
+}
+
+void Planner::reachableCorners(std::vector<Segment>& contour, double rn)
+{
+    // A line shorter than two nose radii into a concave corner: the
+    // contour runs from its start straight to the point two nose radii
+    // on (through whatever lines and arcs follow), or to the first
+    // outside corner before it.
+    for (std::size_t k = 0; k + 1 < contour.size(); ++k) {
+        const Segment& A = contour[k];
+        if (A.arc || length(A) >= 2.0 * rn) continue;
+        const ZR ta = tangentAtEnd(A), tb = tangentAtStart(contour[k + 1]);
+        if (cross(ta, tb) * (inner_ ? -1.0 : 1.0) >= -1e-9) continue;  // a left turn (outer) goes round the material: convex
+        // Two nose radii on, or the first outside corner before that: a
+        // chord past an outside corner would cut through the material
+        // the corner holds.
+        const auto convexAfter = [&](std::size_t e) {
+            return e + 1 < contour.size() &&
+                   cross(tangentAtEnd(contour[e]), tangentAtStart(contour[e + 1])) * (inner_ ? -1.0 : 1.0) > 1e-9;
+        };
+        double left = 2.0 * rn;
+        std::size_t m = k + 1;
+        while (m < contour.size() && length(contour[m]) <= left && !convexAfter(m)) left -= length(contour[m++]);
+        if (m >= contour.size()) break;
+        const bool corner = length(contour[m]) <= left && convexAfter(m);
+        const ZR q = corner ? contour[m].b : pointAt(contour[m], left);
+        const Segment chord = lineSegment(A.a, q);
+        if (corner) {
+            contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
+            contour.insert(contour.begin() + static_cast<long>(k), chord);
+        } else {
+            const Segment rest = piece(contour[m], q, contour[m].b);
+            contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
+            contour.insert(contour.begin() + static_cast<long>(k), {chord, rest});
+        }
+    }
+    for (int guard = 0; guard < 1000; ++guard) {
+        bool changed = false;
+        for (std::size_t k = 0; k + 1 < contour.size() && !changed; ++k) {
+            Segment& A = contour[k];
+            Segment& B = contour[k + 1];
+            if (A.arc || B.arc) continue;
+            const ZR ta = unit(A.b - A.a), tb = unit(B.b - B.a);
+            const double turn = cross(ta, tb) * (inner_ ? -1.0 : 1.0);
+            if (turn >= -1e-9) continue;  // straight on or convex: concave turns toward the air
+            // Where the nose centre sits against both lines.
+            const Curve ca = lineThrough(A.a + rn * airNormal(ta), ta), cb = lineThrough(B.a + rn * airNormal(tb), tb);
+            const auto hit = intersections(ca, cb);
+            if (hit.empty()) continue;
+            const double onA = dot(hit.front() - (A.a + rn * airNormal(ta)), ta);
+            const double onB = dot(hit.front() - (B.a + rn * airNormal(tb)), tb);
+            const double lenA = dist(A.a, A.b), lenB = dist(B.a, B.b);
+            if (onA >= -1e-9 && onB <= lenB + 1e-9) continue;
+            if (onA < -1e-9) {
+                // A is too short: from A's start to where the nose touches B, a little further on.
+                const double along = std::min(lenB, std::max(onB, 0.0) + 0.05);
+                const ZR q = B.a + along * tb;
+                A = lineSegment(A.a, q);
+                if (along >= lenB - 1e-9) contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                else B = lineSegment(q, B.b);
+            } else {
+                // B is too short: from where the nose touches A straight to B's end.
+                const double along = std::max(0.0, std::min(lenA, onA) - 0.05);
+                const ZR q = A.a + along * ta;
+                B = lineSegment(q, B.b);
+                if (along <= 1e-9) contour.erase(contour.begin() + static_cast<long>(k));
+                else A = lineSegment(A.a, q);
+            }
+            changed = true;
+            }
+        if (!changed) break;
+    }
+}
+
+}  // namespace taiwa::turning::planner

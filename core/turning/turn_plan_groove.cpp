@@ -1,0 +1,170 @@
+// Turning steps: grooves and parting off (turn_planner.h).
+#include "turning/turn_planner.h"
+
+namespace taiwa::turning::planner {
+
+void Planner::planGrooves()
+{
+    const auto runs = unreachedRuns();
+    if (runs.empty()) return;
+    for (const auto& [i, j] : runs) {
+        const ZR a = chain_[i].a, b = chain_[j - 1].b;
+        const double zHi = std::max(a.z, b.z), zLo = std::min(a.z, b.z);
+        const double width = zHi - zLo;
+        // The deepest point of the run: the blade must get there.
+        double deepest = inner_ ? -1e300 : 1e300;
+        for (std::size_t k = i; k < j; ++k)
+            for (const ZR p : {chain_[k].a, chain_[k].b}) deepest = inner_ ? std::max(deepest, p.r) : std::min(deepest, p.r);
+        const std::string elements = d_.edges[i].id + (j - i > 1 ? "…" + d_.edges[j - 1].id : "");
+        // A wall that does not come back up is a shoulder facing the
+        // chuck: no blade finishes the surface behind it.
+        const bool groove = s_ * (b.r - a.r) >= -1e-6;
+        bool own = false;
+        for (std::size_t k = i; k < j; ++k) own = own || mustReach(k);
+        if (!groove && own) {
+            problem("rows", fmt::format("{} cannot be turned: {}; it is a shoulder facing the chuck, which needs a left-hand "
+                                        "tool the library does not have (or turn the part round and make it a second job)",
+                                        elements, whyNot(*finishingTool(), i)));
+            continue;
+        }
+        // The widest blade not wider than the groove (fewer plunges);
+        // for a narrower groove or a step, the narrowest (it may cut a
+        // step from the air beside it).
+        std::vector<const Tool*> blades;
+        if (const Tool* pin = pinned(kGroove)) blades.push_back(pin);
+        else
+            for (const auto& t : lib_)
+                if (t.type == ToolType::Grooving && t.turning.inside == inner_ && t.turning.maxDiameter <= 0) blades.push_back(&t);
+        std::sort(blades.begin(), blades.end(), [&](const Tool* x, const Tool* y) {
+            const bool fx = x->turning.width <= width + kTol, fy = y->turning.width <= width + kTol;
+            if (fx != fy) return fx;
+            return fx ? x->turning.width > y->turning.width : x->turning.width < y->turning.width;
+        });
+        if (blades.empty()) {
+            problem("rows", fmt::format("{} cannot be turned: {}; and the tool library has no {} grooving blade", elements,
+                                        whyNot(*finishingTool(), i), inner_ ? "inside" : "outside"));
+            continue;
+        }
+        if (skipped(kGroove)) {
+            note(fmt::format("{} is left: grooving is turned off", elements));
+            continue;
+        }
+        const Tool* blade = blades.front();
+        const double w = blade->turning.width;
+        const double mouth = inner_ ? std::min(a.r, b.r) : std::max(a.r, b.r);
+        const double rTop = mouth + s_ * t_.clearance;
+        const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, bladeShape(w, 50.0, inner_), 0.0, 0.0, 0.0, 0.0002);
+        // Plunges from the front wall back, less than a blade width apart.
+        const double eps = 1e-4, span = std::max(width - w, 0.0);  // off the walls, inside the blade's own narrowing
+        const int n = span <= kTol ? 1 : static_cast<int>(std::ceil(span / (0.8 * w) - 1e-9)) + 1;
+        std::vector<ZR> bottoms;
+        for (int k = 0; k < n; ++k) {
+            const double z = zHi - eps - (n > 1 ? span * k / (n - 1) : 0.0);
+            double bottom = rTop;
+            for (const auto& f : F.freeAlongR(z, inner_ ? rTop - 1.0 : -1.0, inner_ ? R_ + 100.0 : rTop + 1.0))
+                if (f.first <= rTop + 1e-6 && f.second >= rTop - 1e-6) bottom = inner_ ? f.second : f.first;
+            bottoms.push_back({z, bottom});
+        }
+        double reached = bottoms.front().r;
+        for (const ZR p : bottoms) reached = inner_ ? std::max(reached, p.r) : std::min(reached, p.r);
+        if (s_ * (reached - deepest) > 0.01) {
+            problem("rows", fmt::format("{} cannot be turned: {}; as a groove it is {} wide and {} deep, and the blade {} ({} wide) "
+                                        "gets no deeper than {} into it",
+                                        elements, whyNot(*finishingTool(), i), len(width), len(std::abs(mouth - deepest)),
+                                        toolWords(*blade), len(w), len(std::abs(mouth - reached))));
+            continue;
+        }
+        const auto cutting = cuttingOf(*blade, kGroove, true);
+        if (!cutting) continue;
+        TurnStep ts;
+        ts.side = side_;
+        ts.orientation = inner_ ? 4 : 1;  // the blade's front corner
+        ts.withdrawal = t_.withdrawal;
+        ts.cutting = *cutting;
+        ts.region = fmt::format("{}, Z{} to Z{}", elements, len(zLo), len(zHi));
+        PathWriter wr{{}, {}};
+        wr.begin({zHi, rTop});
+        for (std::size_t k = 0; k < bottoms.size(); ++k) {
+            wr.rapid({bottoms[k].z, rTop});
+            wr.feed(bottoms[k], FeedKind::Plunge);
+            if (k + 1 < bottoms.size()) wr.rapid({bottoms[k].z, rTop});
+        }
+        // Seed 002: withdrawn along the surface's normal at the end point by da.
+        const ZR end = bottoms.back();
+        const ZR normal = surfaceNormal(end, first_, chain_.size(), w);
+        wr.feed(end + t_.withdrawal * normal);
+        wr.rapid({wr.path.moves.back().end.z, rTop});
+        if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
+        ts.path = std::move(wr.path);
+        addStep(StepKind::Grooving, MachiningType::Grooving, *blade,
+                blade == pinned(kGroove) ? "pinned"
+                : w <= width + kTol ? fmt::format("widest grooving blade not wider than the groove ({})", len(width))
+                                    : fmt::format("narrowest grooving blade; it reaches {} from the air beside it", elements),
+                std::move(ts));
+    }
+}
+
+ZR Planner::surfaceNormal(ZR corner, std::size_t i, std::size_t j, double w) const
+{
+    const ZR mid{corner.z - 0.5 * w, corner.r};
+    double best = 1e300;
+    ZR n{0.0, s_};
+    for (std::size_t k = i; k < j; ++k) {
+        const Segment& s = chain_[k];
+        ZR p;
+        if (s.arc) {
+            p = s.centre + s.radius * unit(mid - s.centre);
+            if (!contains(s, p)) continue;
+        } else {
+            const ZR t = s.b - s.a;
+            const double u = std::clamp(dot(mid - s.a, t) / std::max(dot(t, t), 1e-18), 0.0, 1.0);
+            p = s.a + u * t;
+        }
+        const double d = dist(p, mid);
+        if (d < best) {
+            best = d;
+            const ZR t = tangentAt(s, p);
+            // Air is right of the travel for an outer profile, left for an inner one.
+            n = inner_ ? leftNormal(t) : ZR{t.r, -t.z};
+        }
+    }
+    return n;
+}
+
+void Planner::planParting()
+{
+    if (!q_.parting || skipped(kPart)) return;
+    const Tool* blade = pinned(kPart);
+    if (!blade)
+        for (const auto& t : lib_)
+            if (t.type == ToolType::Grooving && t.turning.maxDiameter >= q_.bar.diameter - kTol && (!blade || t.turning.width < blade->turning.width))
+                blade = &t;
+    if (!blade) {
+        note(fmt::format("no parting off: no blade of the tool library parts off the bar's {} (saw it off, or add a blade)", dia(R_)));
+        return;
+    }
+    const double width = blade->turning.width;
+    if (zEnd_ - width < zBarEnd_ - kTol) {
+        note(fmt::format("no parting off: the part ends {} from the bar's end, less than the blade's width", len(zEnd_ - zBarEnd_)));
+        return;
+    }
+    const auto cutting = cuttingOf(*blade, kPart, true);
+    if (!cutting) return;
+    TurnStep ts;
+    ts.side = ProfileSide::Outer;
+    ts.orientation = 1;
+    ts.cutting = *cutting;
+    ts.region = fmt::format("at Z{}", len(zEnd_));
+    PathWriter w{{}, {}};
+    const double rTop = R_ + t_.clearance;
+    const double rBottom = q_.boreBefore > 0 ? q_.boreBefore / 2.0 - 0.5 : -0.5;
+    w.begin({zEnd_, rTop});
+    w.rapid({zEnd_, rTop});
+    w.feed({zEnd_, rBottom}, FeedKind::Plunge);
+    w.rapid({zEnd_, rTop});
+    ts.path = std::move(w.path);
+    addStep(StepKind::Parting, MachiningType::Parting, *blade,
+            blade == pinned(kPart) ? "pinned" : fmt::format("narrowest parting blade for {}", dia(R_)), std::move(ts));
+}
+
+}  // namespace taiwa::turning::planner

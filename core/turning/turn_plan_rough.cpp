@@ -1,0 +1,141 @@
+// Turning steps: roughing, as passes and as the control's cycle (turn_planner.h).
+#include "turning/turn_planner.h"
+
+namespace taiwa::turning::planner {
+
+void Planner::planRoughing()
+{
+    if (skipped(kRough)) return;
+    const Tool* tool = pinned(kRough);
+    std::string reason = "pinned";
+    if (tool) {
+        if (!insertGeometry(*tool) || tool->turning.inside != inner_) {
+            problem(std::string("tools.") + kRough, fmt::format("{} is not an {} turning insert", toolWords(*tool), inner_ ? "inside" : "outside"));
+            return;
+        }
+    } else {
+        tool = roughingInsert(inner_);
+        if (!tool) return;  // chooseFinishing said it
+        reason = "largest nose radius for its side (the strongest edge)";
+    }
+    const auto cutting = cuttingOf(*tool, kRough, true);
+    if (!cutting) return;
+    checkSpindleLimit(*tool, *cutting, kRough);
+    const auto g = *insertGeometry(*tool);
+    const double rn = g.noseRadius;
+    TurnStep ts;
+    ts.side = side_;
+    ts.orientation = insertOrientation(inner_);
+    ts.tipFromCentre = tipFromCentre(rn, inner_);
+    ts.depthOfCut = t_.depthOfCut;
+    ts.allowanceX = t_.allowanceX;
+    ts.allowanceZ = t_.allowanceZ;
+    ts.cutting = *cutting;
+    const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, insertShape(g), t_.allowanceX, t_.allowanceZ);
+
+    // Levels of the nose's cutting point (outer: its lowest, inner: its
+    // highest point) from the stock's surface to the profile's extreme.
+    const double surface = inner_ ? std::max(q_.boreBefore, drilled_) / 2.0 : R_;
+    double extreme = inner_ ? -1e300 : 1e300;
+    for (std::size_t i = first_; i < last_; ++i)
+        for (const ZR p : {chain_[i].a, chain_[i].b}) extreme = inner_ ? std::max(extreme, p.r) : std::min(extreme, p.r);
+    for (std::size_t i = first_; i < last_; ++i)
+        if (chain_[i].arc) {
+            const ZR c = chain_[i].centre;
+            const ZR ext{c.z, c.r - s_ * chain_[i].radius};
+            if (contains(chain_[i], ext)) extreme = inner_ ? std::max(extreme, ext.r) : std::min(extreme, ext.r);
+        }
+    extreme += s_ * t_.allowanceX;
+    const double depth = s_ * (surface - extreme);
+    if (depth <= kTol) {
+        note(fmt::format("no roughing: the stock is already within the finishing allowance", q_.unit + 1));
+        return;
+    }
+    const int levels = std::max(1, static_cast<int>(std::ceil(depth / t_.depthOfCut - 1e-9)));
+    const double zApproach = std::max(zFront_, q_.facing ? zFront_ : q_.bar.face) + t_.clearance + rn;
+    const double zLo = std::min(zBarEnd_, zEnd_) - 1.0;
+    const double rSafe = safeR() + s_ * rn;
+    PathWriter w{{}, ts.tipFromCentre};
+    w.begin({zApproach, rSafe});
+    std::vector<std::pair<double, double>> open{{zLo, zApproach}};
+    double rPrev = surface + s_ * rn;  // nose centre on the stock surface
+    bool left = false;
+    for (int k = 1; k <= levels; ++k) {
+        const double cut = surface - s_ * depth * k / levels;  // the cutting point's radius
+        const double rc = cut + s_ * rn;
+        // Free at this level and at every level above (the part's shadow).
+        std::vector<std::pair<double, double>> here;
+        for (const auto& f : F.freeAlongZ(rc, zLo, zApproach))
+            for (const auto& o : open) {
+                const double a = std::max(f.first, o.first), b = std::min(f.second, o.second);
+                if (b - a > 1e-6) here.emplace_back(a, b);
+            }
+        std::vector<std::pair<double, double>> kept;
+        for (auto it = here.rbegin(); it != here.rend(); ++it) {
+            const auto [a, b] = *it;
+            if (b <= zLo + 0.5) continue;
+            if (a - rn >= zFront_ - 1e-6) continue;  // in front of the face: air
+            const bool front = b >= zApproach - 1e-9;
+            if (!front) {
+                // A pocket: plunge at its front end from the level above.
+                if (!F.segmentFree({b, rPrev}, {b, rc})) {
+                    left = true;
+                    continue;
+                }
+                w.rapid({currentZ(w), rSafe});
+                w.rapid({b, rSafe});
+                w.rapid({b, rPrev});
+                w.feed({b, rc}, FeedKind::Plunge);
+            } else {
+                w.rapid({zApproach, rc});
+            }
+            w.feed({a, rc});
+            const ZR back{a + t_.retract, rc + s_ * t_.retract};
+            if (F.segmentFree({a, rc}, back)) w.feed(back);
+            else w.feed({a, rc + s_ * t_.retract});
+            if (front) w.rapid({zApproach, rc + s_ * t_.retract});
+            else w.rapid({currentZ(w), rSafe});
+            kept.emplace_back(a, b);
+        }
+        std::reverse(kept.begin(), kept.end());
+        open = kept;
+        rPrev = rc;
+    }
+    w.rapid({zApproach, rSafe});
+    if (left) note(fmt::format("roughing with {} leaves pockets its insert cannot enter for the finishing tool", toolWords(*tool)));
+    ts.region = fmt::format("{} to {}, Z{} to Z{}", dia(surface), dia(extreme), len(zFront_), len(zEnd_));
+    ts.path = std::move(w.path);
+
+    // The control's own cycle where the profile allows it: the contour
+    // monotone (one element after the other outward and toward the
+    // chuck), reached by the insert everywhere. Then the nose runs
+    // clear of every element with the tip on the contour plus the
+    // allowance (docs/turning.md).
+    if (const auto cycle = roughingCycle(*tool, surface)) ts.path.cycle = *cycle;
+    addStep(StepKind::TurnRoughing, MachiningType::TurnRoughing, *tool, reason, std::move(ts));
+}
+
+std::optional<TurnCycle> Planner::roughingCycle(const Tool& tool, double surface) const
+{
+    for (std::size_t i = first_; i < last_; ++i) {
+        const Segment& s = chain_[i];
+        const double th0 = riseDegrees(tangentAtStart(s), side_), th1 = riseDegrees(tangentAtEnd(s), side_);
+        if (th0 < -1e-6 || th1 < -1e-6 || th0 > 90.0 + 1e-6 || th1 > 90.0 + 1e-6) return std::nullopt;
+    }
+    if (firstUnreached(tool, first_, last_) >= 0) return std::nullopt;
+    TurnCycle c;
+    c.inner = inner_;
+    c.contour.assign(chain_.begin() + static_cast<long>(first_), chain_.begin() + static_cast<long>(last_));
+    // Out of the part at the end: the cycle's last element leaves along X.
+    const ZR end = chain_[last_ - 1].b;
+    const ZR out{end.z, surface + s_ * t_.clearance};
+    if (s_ * (out.r - end.r) > kTol) c.contour.push_back(lineSegment(end, out));
+    c.start = {zFront_ + t_.clearance, surface + s_ * t_.clearance};
+    c.depthOfCut = t_.depthOfCut;
+    c.allowanceX = t_.allowanceX;
+    c.allowanceZ = t_.allowanceZ;
+    c.retract = t_.retract;
+    return c;
+}
+
+}  // namespace taiwa::turning::planner

@@ -1,0 +1,231 @@
+// The turning planner's parts shared by its files (internal to
+// core/turning/): the step keys, the planner's constants and the Planner
+// class, whose steps are planned in turn_plan.cpp (what they share),
+// turn_plan_drill.cpp (facing, drilling), turn_plan_rough.cpp (roughing),
+// turn_plan_finish.cpp (finishing) and turn_plan_groove.cpp (grooves,
+// parting off). The one door outside is turn_plan.h.
+#pragma once
+
+#include "turning/turn_plan.h"
+
+#include "check/messages.h"
+#include "model/turned_geometry.h"
+#include "tools/cutting.h"
+#include "turning/turn_region.h"
+#include "turning/turn_tools.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace taiwa::turning::planner {
+
+inline constexpr double kTol = 1e-7;
+// The share of a tool's surface speed the spindle limit must still give at
+// the smallest diameter a roughing or finishing step turns.
+inline constexpr double kMinSpeedShare = 0.5;
+// The widest groove a wall the finishing insert cannot go down may open
+// (beyond it the wall is a shoulder facing the chuck) [mm].
+inline constexpr double kGrooveReach = 30.0;
+
+inline constexpr const char* kFacing = "facing";
+inline constexpr const char* kCentreDrill = "centre-drill";
+inline constexpr const char* kDrill = "drill";
+inline constexpr const char* kRough = "turn-rough";
+inline constexpr const char* kFinish = "turn-finish";
+inline constexpr const char* kGroove = "groove";
+inline constexpr const char* kPart = "part";
+
+inline std::string toolWords(const Tool& t) { return msg::toolName(t); }
+
+// The whole plan of one unit, built step by step.
+class Planner {
+public:
+    explicit Planner(const TurnPlanRequest& q) : q_(q), d_(*q.deformed), lib_(*q.library), t_(q.tech)
+    {
+        side_ = d_.side;
+        inner_ = side_ == ProfileSide::Inner;
+        s_ = inner_ ? -1.0 : 1.0;
+        R_ = q.bar.diameter / 2.0;
+        zBarEnd_ = q.bar.face - q.bar.length;
+        for (const auto& e : d_.edges) chain_.push_back(e.geometry);
+        zFront_ = -1e300;
+        for (const auto& s : chain_) zFront_ = std::max({zFront_, s.a.z, s.b.z});
+        zEnd_ = chain_.back().b.z;
+        rEnd_ = chain_.back().b.r;
+        // Leading edges on the front plane (a face from the axis, or out of
+        // the bore) are the facing step's; the turned contour starts after them.
+        while (first_ < chain_.size() && std::abs(chain_[first_].a.z - zFront_) < 1e-6 && std::abs(chain_[first_].b.z - zFront_) < 1e-6)
+            ++first_;
+        // Trailing edges on the back plane (an outer profile's back face
+        // down toward the axis) are parting off's.
+        last_ = chain_.size();
+        while (last_ > first_ + 1 && std::abs(chain_[last_ - 1].a.z - zEnd_) < 1e-6 && std::abs(chain_[last_ - 1].b.z - zEnd_) < 1e-6 &&
+               s_ * (chain_[last_ - 1].b.r - chain_[last_ - 1].a.r) < 0)
+            --last_;
+        partLoop_ = makePartLoop();
+    }
+
+    TurnPlanResult run()
+    {
+        if (first_ >= chain_.size()) {
+            problem("rows", "the profile has no element to turn: every row lies on the front face");
+            return std::move(out_);
+        }
+        planFacing();
+        if (inner_) planDrilling();
+        if (drilledToSize_ || !out_.problems.empty()) return std::move(out_);
+        const Tool* finishing = chooseFinishing();
+        planRoughing();
+        if (finishing) planFinishing(*finishing);
+        planGrooves();
+        if (!inner_) planParting();
+        return std::move(out_);
+    }
+
+private:
+    // ---- what the steps share --------------------------------------------
+
+    void problem(std::string field, std::string message) { out_.problems.push_back({std::move(field), std::move(message)}); }
+    void note(std::string text) { out_.notes.push_back(std::move(text)); }
+    bool skipped(const char* key) const { return q_.skip.count(key) > 0; }
+    std::string len(double mm) const { return msg::quote({mm, q_.shown}); }
+    std::string dia(double r) const { return "Ø" + len(2.0 * r); }
+
+    // The part for the forbidden regions: the deformed profile closed toward
+    // the axis (outer) or out to the bar (inner), with the bar that stays
+    // behind the profile's end (it is parted off after, or held).
+    std::vector<Segment> makePartLoop() const;
+
+    const Tool* pinned(const char* key) const;
+
+    // The cutting data of a tool; nullopt (with a problem) when it has none for the material.
+    std::optional<TurnCutting> cuttingOf(const Tool& tool, const char* key, bool css);
+
+    Step& addStep(StepKind kind, MachiningType type, const Tool& tool, std::string reason, TurnStep turn);
+
+    // A path under construction in nose-centre coordinates, written as the
+    // programmed point.
+    struct PathWriter {
+        TurnPath path;
+        ZR tip;
+        bool started = false;
+        void begin(ZR centre) { path.start = centre + tip; started = true; }
+        void rapid(ZR c) { path.moves.push_back({TurnMove::Rapid, c + tip, {}, FeedKind::Cut}); }
+        void feed(ZR c, FeedKind k = FeedKind::Cut) { path.moves.push_back({TurnMove::Feed, c + tip, {}, k}); }
+    };
+
+    // Clear of the stock: above the bar, or inside the hole that is there.
+    double safeR() const;
+
+    // ---- the turning inserts ---------------------------------------------
+
+    std::vector<const Tool*> inserts() const;
+
+    // The first element (from the turned contour on) an insert cannot cut,
+    // or -1: its holder's angles (no back-cut beyond the clearance) and its
+    // nose in concave arcs.
+    int firstUnreached(const Tool& t, std::size_t from, std::size_t to) const;
+
+    // The part's own surfaces (as drawn, and the moved edges the grinder
+    // finishes) must be turned; the allowance's sides and relief grooves
+    // are grinding stock's shape, whose corners an insert may leave or
+    // touch (the note says which).
+    bool mustReach(std::size_t i) const;
+
+    std::vector<bool> reachedBy(const Tool& t) const;
+
+    std::string whyNot(const Tool& t, std::size_t i) const;
+
+    // ---- facing ------------------------------------------------------------
+
+    void planFacing();
+
+    const Tool* roughingInsert(bool inside) const;
+
+    // ---- drilling (a bore in a bar without one big enough) ----------------
+
+    void planDrilling();
+
+    // ---- finishing tool ----------------------------------------------------
+
+    const Tool* chooseFinishing();
+
+    // ---- roughing ------------------------------------------------------------
+
+    void planRoughing();
+
+    static double currentZ(const PathWriter& w) { return w.path.moves.empty() ? w.path.start.z : w.path.moves.back().end.z - w.tip.z; }
+
+    std::optional<TurnCycle> roughingCycle(const Tool& tool, double surface) const;
+
+    void checkSpindleLimit(const Tool& tool, const TurnCutting& c, const char* key);
+
+    // ---- finishing -----------------------------------------------------------
+
+    // Runs of elements the finishing insert cannot reach: grooves for a blade.
+    std::vector<std::pair<std::size_t, std::size_t>> unreachedRuns() const;
+
+    void planFinishing(const Tool& tool);
+
+    // The air side's unit normal of a line's direction.
+    ZR airNormal(ZR t) const { return inner_ ? leftNormal(t) : ZR{t.r, -t.z}; }
+
+    // Runs of the allowance's own edges (relief grooves) the finishing
+    // insert cannot follow: followed with compensation, the nose would cut
+    // them but the insert's edges would cut what stands beside them, which
+    // may be the finished part. The contour crosses such a run on a chord
+    // the insert can follow, from before the run to after it, clear of the
+    // part; the groove is left (a note says so). Where no such chord is
+    // found within a few nose radii, the run is followed as drawn.
+    void crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& tool);
+
+    // A concave corner the nose can sit in only if both lines are long
+    // enough to hold it (the control refuses the move otherwise: "concave
+    // corner cannot be reached by the tool without gouging"). Where a line
+    // is shorter (the step at a grinding allowance's end, lower than the
+    // nose), the contour runs from the short line's start straight to where
+    // the nose touches the next line, as far along it as needed: what the
+    // nose leaves there is the fillet it cannot help leaving.
+    void reachableCorners(std::vector<Segment>& contour, double rn);
+
+    // ---- grooving --------------------------------------------------------
+
+    void planGrooves();
+
+    const Tool* finishingTool() const { return finishTool_; }
+
+    // The unit normal into the air of the profile where the blade's corner
+    // ends (its bottom under the blade): of the groove's elements the one
+    // nearest the corner's contact.
+    ZR surfaceNormal(ZR corner, std::size_t i, std::size_t j, double w) const;
+
+    // ---- parting off -----------------------------------------------------
+
+    void planParting();
+
+    const TurnPlanRequest& q_;
+    const DeformedProfile& d_;
+    const std::vector<Tool>& lib_;
+    TurningTechnology t_;
+    ProfileSide side_ = ProfileSide::Outer;
+    bool inner_ = false;
+    double s_ = 1.0;          // +1 outer, -1 inner: toward the air from the material
+    double R_ = 0.0;          // bar radius
+    double zBarEnd_ = 0.0;
+    double zFront_ = 0.0, zEnd_ = 0.0, rEnd_ = 0.0;
+    double drilled_ = 0.0;
+    bool drilledToSize_ = false;
+    std::vector<Segment> chain_;
+    std::size_t first_ = 0, last_ = 0;  // the turned contour: chain_[first_, last_)
+    std::vector<Segment> partLoop_;
+    std::vector<bool> finishReach_;
+    const Tool* finishTool_ = nullptr;
+    std::string finishReason_;
+    TurnPlanResult out_;
+};
+
+}  // namespace taiwa::turning::planner
