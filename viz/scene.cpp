@@ -437,11 +437,9 @@ void Scene::updateTool()
     }
     if (!tool || !step.path) return;
     Point3 at = step.path->start;
-    if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(step.path->moves.size())) {
-        const Move& m = step.path->moves[static_cast<std::size_t>(highlighted_.move)];
-        // A drilling cycle ends back up at its R plane (or higher): drawn at the hole's bottom.
-        at = m.end;
-    }
+    // A drilling cycle's end is the hole's bottom: the tool is drawn there.
+    if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(step.path->moves.size()))
+        at = step.path->moves[static_cast<std::size_t>(highlighted_.move)].end;
     tool_ = actorFor(toolSolid(*tool), palette::kTool);
     tool_->SetPosition(at.x, at.y, at.z);
     toolAt_ = at;

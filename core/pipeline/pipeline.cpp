@@ -80,22 +80,12 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         for (const int i : orderSteps(unordered)) plan.steps.push_back(std::move(unordered[static_cast<std::size_t>(i)]));
     }
 
-    // The operator's speeds and feeds, by step key; a turning step carries
-    // its cutting data, so it takes them (and its time) at once.
+    // The operator's speeds and feeds, by step key: a milling step's are
+    // applied where its speeds and feeds are asked for (stepSpeedsFeeds);
+    // a turning step's cutting data has them already (turn_plan).
     for (auto& step : plan.steps) {
         const auto& cutting = plan.mmJob.units[static_cast<std::size_t>(step.unit)].cutting;
-        const auto it = cutting.find(toKey(step.kind));
-        if (it == cutting.end()) continue;
-        step.cutting = it->second;
-        if (!step.turn) continue;
-        TurnCutting& c = step.turn->cutting;
-        if (it->second.speed) (c.constantSurfaceSpeed ? c.surfaceSpeed : c.rpm) = *it->second.speed;
-        if (it->second.feed) {
-            if (c.feedPerRev > 0) c.plungeFeedPerRev *= *it->second.feed / c.feedPerRev;
-            c.feedPerRev = *it->second.feed;
-        }
-        const double rapid = machine && machine->slowestRapid() > 0 ? machine->slowestRapid() : 10000.0;
-        step.minutes = turnMinutes(step.turn->path, c, rapid);
+        if (const auto it = cutting.find(toKey(step.kind)); it != cutting.end()) step.cutting = it->second;
     }
 
     int currentTool = 0;

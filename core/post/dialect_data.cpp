@@ -71,16 +71,13 @@ public:
         d.preamble = templates("preamble", d.preamble);
         d.plainWorkOffsets = whole("plainWorkOffsets", d.plainWorkOffsets, 1, 6);
         d.moreWorkOffsets = texts("moreWorkOffsets", d.moreWorkOffsets);
+        static const std::regex offsetOrRange(R"(G[0-9]+(\.[0-9])?|G[0-9]+\.\.G[0-9]+)");
         for (const auto& w : d.moreWorkOffsets)
-            if (!std::regex_match(w, std::regex(R"(G[0-9]+(\.[0-9])?|G[0-9]+\.\.G[0-9]+)")))
+            if (!std::regex_match(w, offsetOrRange))
                 fail("moreWorkOffsets", "'" + w + "' is neither a G code (\"G59.1\") nor a range (\"G505..G599\")");
         d.extendedWorkOffsets = whole("extendedWorkOffsets", d.extendedWorkOffsets, 0, 300);
         d.extendedWorkOffset = text("extendedWorkOffset", d.extendedWorkOffset);
-        try {
-            static_cast<void>(fmt::format(fmt::runtime(d.extendedWorkOffset), fmt::arg("n", 1)));
-        } catch (const fmt::format_error& e) {
-            fail("extendedWorkOffset", std::string("not a template this program can fill: ") + e.what() + " (field: {n})");
-        }
+        mustFill("extendedWorkOffset", d.extendedWorkOffset, "{n}", fmt::arg("n", 1));
         d.retract = templates("retract", d.retract);
         d.toolChange = templ("toolChange", d.toolChange);
         d.lengthOffset = templ("lengthOffset", d.lengthOffset);
@@ -139,16 +136,26 @@ private:
     }
     // A template with the named fields the writer fills in; a broken one is
     // refused now rather than at the first export.
+    // Refuses `t` unless fmt can fill it with `args` (the fields `fields` names).
+    template <class... Args>
+    void mustFill(const char* key, const std::string& t, const char* fields, const Args&... args) const
+    {
+        try {
+            static_cast<void>(fmt::format(fmt::runtime(t), args...));
+        } catch (const fmt::format_error& e) {
+            fail(key, std::string("not a template this program can fill: ") + e.what() + " (fields: " + fields + ")");
+        }
+    }
+    // A template of the program's frame: {units} {workOffset} {tool} {number} {name}.
+    void mustFillFrame(const char* key, const std::string& t) const
+    {
+        mustFill(key, t, "{units} {workOffset} {tool} {number} {name}", fmt::arg("units", "G21"), fmt::arg("workOffset", "G54"),
+                 fmt::arg("tool", 1), fmt::arg("number", 1000), fmt::arg("name", "JOB"));
+    }
     std::string templ(const char* key, const std::string& fallback) const
     {
         const std::string t = text(key, fallback);
-        try {
-            static_cast<void>(fmt::format(fmt::runtime(t), fmt::arg("units", "G21"), fmt::arg("workOffset", "G54"),
-                                          fmt::arg("tool", 1), fmt::arg("number", 1000), fmt::arg("name", "JOB")));
-        } catch (const fmt::format_error& e) {
-            fail(key, std::string("not a template this program can fill: ") + e.what() +
-                          " (fields: {units} {workOffset} {tool} {number} {name})");
-        }
+        mustFillFrame(key, t);
         return t;
     }
     std::vector<std::string> texts(const char* key, const std::vector<std::string>& fallback) const
@@ -162,14 +169,7 @@ private:
     std::vector<std::string> templates(const char* key, const std::vector<std::string>& fallback) const
     {
         const std::vector<std::string> ts = texts(key, fallback);
-        for (const auto& t : ts) {
-            try {
-                static_cast<void>(fmt::format(fmt::runtime(t), fmt::arg("units", "G21"), fmt::arg("workOffset", "G54"),
-                                              fmt::arg("tool", 1), fmt::arg("number", 1000), fmt::arg("name", "JOB")));
-            } catch (const fmt::format_error& e) {
-                fail(key, std::string("not a template this program can fill: ") + e.what());
-            }
-        }
+        for (const auto& t : ts) mustFillFrame(key, t);
         return ts;
     }
     Decimals decimals(const char* key, Decimals fallback) const

@@ -88,10 +88,10 @@ void KlartextWriter::flushMFunctions()
     block(takeMFunctions().substr(1));
 }
 
-void KlartextWriter::toolCallDue()
+void KlartextWriter::toolCallDue(const std::string& speed)
 {
     if (toolDue_ == 0) return;
-    block(fmt::format(fmt::runtime(dialect_.toolChange), fmt::arg("tool", toolDue_)));
+    block(fmt::format(fmt::runtime(dialect_.toolChange), fmt::arg("tool", toolDue_)) + speed);
     toolDue_ = 0;
 }
 
@@ -148,9 +148,9 @@ void KlartextWriter::spindle(SpindleDirection direction, double rpm)
         return;
     }
     // The speed is the tool call's (a call without a number changes only the speed).
-    if (toolDue_ != 0) block(fmt::format("{} S{}", fmt::format(fmt::runtime(dialect_.toolChange), fmt::arg("tool", toolDue_)), formatInteger(rpm)));
-    else block(fmt::format("TOOL CALL Z S{}", formatInteger(rpm)));
-    toolDue_ = 0;
+    const std::string speed = " S" + formatInteger(rpm);
+    if (toolDue_ != 0) toolCallDue(speed);
+    else block("TOOL CALL Z" + speed);
     mFunctions_.push_back(direction == SpindleDirection::Clockwise ? dialect_.spindleClockwise : dialect_.spindleCounterClockwise);
 }
 

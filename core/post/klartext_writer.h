@@ -57,7 +57,7 @@ private:
     std::string feedWords(double feedRate);
     std::string takeMFunctions();  // " M3 M8" waiting for the next block, or ""
     void flushMFunctions();        // as a block of their own
-    void toolCallDue();            // the tool call without a speed, when one waits
+    void toolCallDue(const std::string& speed = {});  // the tool call (with " S..." if given), when one waits
     void requirePosition(const char* what) const;
 
     const Dialect& dialect_;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <functional>
 
@@ -97,10 +98,8 @@ std::string latheSetup(const Plan& plan, const std::function<std::string(double)
                        limit > 0 ? fmt::format("; vc in m/min up to {:.0f} rpm", limit) : "");
 }
 
-}  // namespace
-
 // The dialect by name and by the control it speaks.
-static std::string dialectWords(const std::string& name)
+std::string dialectWords(const std::string& name)
 {
     const post::Dialect* d = post::findDialect(name);
     return d && !d->description.empty() ? name + " (" + d->description + ")" : name;
@@ -108,7 +107,7 @@ static std::string dialectWords(const std::string& name)
 
 // The program as the control knows it: its O-number where the dialect has
 // one, else the tape's file name (Siemens, HEIDENHAIN, LinuxCNC).
-static std::string programWords(const SheetOptions& o)
+std::string programWords(const SheetOptions& o)
 {
     const post::Dialect* d = post::findDialect(o.dialect);
     if (d && !d->programNumberLine.empty()) {
@@ -118,9 +117,10 @@ static std::string programWords(const SheetOptions& o)
         return fmt::format(fmt::runtime(number), fmt::arg("number", o.programNumber), fmt::arg("name", ""));
     }
     if (!d || o.jobFile.empty()) return {};
-    const std::string file = o.jobFile.substr(o.jobFile.find_last_of("/\\") == std::string::npos ? 0 : o.jobFile.find_last_of("/\\") + 1);
-    return file.substr(0, file.rfind('.')) + "." + d->fileExtension;
+    return std::filesystem::path(o.jobFile).stem().string() + "." + d->fileExtension;
 }
+
+}  // namespace
 
 Content content(const Plan& plan, const SheetOptions& o)
 {

@@ -50,6 +50,15 @@ std::optional<TurnCutting> Planner::cuttingOf(const Tool& tool, const char* key,
         c.rpm = std::min(q_.maxRpm, std::round(1000.0 * cd->surfaceSpeed / (std::numbers::pi * std::max(tool.diameter, 0.1))));
         c.plungeFeedPerRev = cd->feedPerTooth;
     }
+    // The operator's S and F for this kind of step (the plunge feed in
+    // proportion): the spindle limit's check and the time see them too.
+    if (const auto it = q_.cutting.find(key); it != q_.cutting.end()) {
+        if (it->second.speed) (css ? c.surfaceSpeed : c.rpm) = *it->second.speed;
+        if (it->second.feed) {
+            c.plungeFeedPerRev *= *it->second.feed / c.feedPerRev;
+            c.feedPerRev = *it->second.feed;
+        }
+    }
     return c;
 }
 

@@ -15,6 +15,7 @@
 #include "model/turned.h"
 #include "turning/profile_resolve.h"
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@ struct TurnPlanRequest {
     const std::vector<Tool>* library = nullptr;
     std::string material;
     ToolPins pins;                   // by turnStepKeys()
+    std::map<std::string, CuttingOverride> cutting;  // the operator's S (m/min; drills rpm) and F [mm/rev], by turnStepKeys()
     std::set<std::string> skip;      // steps turned off
     TurningTechnology tech;
     bool facing = true;              // this unit faces the bar (the job's first turned unit)

@@ -284,6 +284,7 @@ protected:
         q.library = &ctx.library;
         q.material = ctx.material;
         q.pins = t.tools;
+        q.cutting = ctx.job->units[static_cast<std::size_t>(ctx.unit)].cutting;
         q.skip = {t.skip.begin(), t.skip.end()};
         q.tech = ctx.tech.turning;
         q.boreBefore = q.bar.bore;
