@@ -15,6 +15,9 @@
 #include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
+#include "verify/verify.h"
+
+#include <nlohmann/json.hpp>
 
 #if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
 #define TAIWA_WITH_RENDER 1
@@ -39,7 +42,7 @@ namespace taiwa::app {
 
 namespace {
 
-constexpr int kOk = 0, kInternal = 1, kInputErrors = 2;
+constexpr int kOk = 0, kInternal = 1, kInputErrors = 2, kFindings = 3;
 
 const char* const kHelp = R"(taiwa - conversational NC programming station
 
@@ -53,7 +56,18 @@ Usage:
                                    STEM.sheet.html, STEM.sheet.pdf and
                                    STEM.steps.json into DIR (and each probing
                                    unit's programs); the dialect (--list-dialects):
-                                   --dialect, else the job's, else linuxcnc
+                                   --dialect, else the job's, else linuxcnc;
+                                   verifies first (--resolution) and writes
+                                   nothing when a gouge, collision or travel
+                                   limit is found (exit 3), unless --force,
+                                   which writes them into the sheet in red
+  taiwa verify JOB [--resolution MM] [--json]
+                                   cuts every step into the stock on a grid of
+                                   MM (default 0.05) and prints each gouge,
+                                   collision, rapid into stock, travel limit
+                                   and material left, with its step, move and
+                                   tape line; exit 3 when a gouge, collision
+                                   or travel limit is found
   taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
                [--view iso|top|front|profile]
                                    the 3-D preview of step K (1-based, in
@@ -75,7 +89,8 @@ Common options:
   --tools DB    the tool library (SQLite); default $TAIWA_TOOL_DB or
                 ~/.local/share/taiwa/tools.sqlite, created on first use
 
-Exit status: 0 ok, 2 input errors (nothing written), 1 internal failure.
+Exit status: 0 ok, 2 input errors (nothing written), 3 the verification found
+a gouge, a collision or a travel limit, 1 internal failure.
 )";
 
 int printDiagnostics(const std::string& jobName, const Diagnostics& ds)
@@ -165,6 +180,77 @@ int check(const Options& o)
     return load(o, false).exit;
 }
 
+// The dialect asked for, else the job's own, else LinuxCNC's.
+std::string dialectFor(const Options& o, const Plan& plan)
+{
+    return !o.dialect.empty() ? o.dialect : !plan.job.dialect.empty() ? plan.job.dialect : "linuxcnc";
+}
+
+// The plan verified, its findings placed on the tape of `dialect`.
+verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect)
+{
+    verify::Options v;
+    v.resolution = o.resolution;
+    verify::Report report = verify::verifyPlan(plan, v);
+    if (!report.findings.empty() && !plan.mmJob.bar) {
+        try {
+            verify::placeOnTape(report, postProcess(plan.steps, plan.tools, postOptions(plan, dialect)));
+        } catch (const std::invalid_argument&) {
+            // A dialect that cannot post this job: the findings keep their moves.
+        }
+    }
+    return report;
+}
+
+std::string summary(const verify::Report& r)
+{
+    using K = verify::FindingKind;
+    return std::to_string(r.count(K::Gouge)) + " gouges, " + std::to_string(r.count(K::Collision)) + " collisions, " +
+           std::to_string(r.count(K::RapidIntoStock)) + " rapids into stock, " + std::to_string(r.count(K::TravelLimit)) +
+           " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left";
+}
+
+int verifyJob(const Options& o)
+{
+    const Loaded l = load(o, true);
+    if (l.exit != kOk) return l.exit;
+    const std::string name = fileName(o.job);
+    const verify::Report r = verified(l.plan, o, dialectFor(o, l.plan));
+    if (o.json) {
+        nlohmann::ordered_json j;
+        j["job"] = name;
+        j["resolution"] = r.resolution;
+        j["grid"] = {r.columns, r.rows};
+        if (!r.skipped.empty()) j["skipped"] = r.skipped;
+        j["findings"] = nlohmann::ordered_json::array();
+        for (const auto& f : r.findings) {
+            nlohmann::ordered_json e;
+            e["kind"] = verify::toKey(f.kind);
+            if (!f.part.empty()) e["part"] = f.part;
+            e["fatal"] = f.fatal();
+            e["step"] = f.step >= 0 ? nlohmann::ordered_json(f.step + 1) : nlohmann::ordered_json();
+            e["unit"] = f.step >= 0 ? nlohmann::ordered_json(l.plan.steps[static_cast<std::size_t>(f.step)].unit + 1)
+                                    : nlohmann::ordered_json();
+            e["move"] = f.move >= 0 ? nlohmann::ordered_json(f.move + 1) : nlohmann::ordered_json();
+            e["line"] = f.line > 0 ? nlohmann::ordered_json(f.line) : nlohmann::ordered_json();
+            e["position"] = {f.position.x, f.position.y, f.position.z};
+            e["size"] = f.size;
+            e["area"] = f.area;
+            e["message"] = verify::describe(f, l.plan);
+            j["findings"].push_back(e);
+        }
+        j["fatal"] = r.fatal();
+        std::cout << j.dump(2) << '\n';
+    } else {
+        for (const auto& f : r.findings) std::cout << name << ": " << verify::describe(f, l.plan) << '\n';
+        if (!r.skipped.empty()) std::cout << name << ": not verified: " << r.skipped << '\n';
+        else
+            std::cout << name << ": verified at " << r.resolution << " mm (" << r.columns << " x " << r.rows
+                      << " cells): " << summary(r) << '\n';
+    }
+    return r.fatal() ? kFindings : kOk;
+}
+
 int exportJob(const Options& o, int& argc, char** argv)
 {
     // A file size limit (ulimit -f) makes a write fail with EFBIG, which the
@@ -175,8 +261,20 @@ int exportJob(const Options& o, int& argc, char** argv)
     // The dialect asked for, else the job's own, else LinuxCNC's. Whether its
     // controller has the job's work offset is an input error of the job,
     // known only now that the dialect is.
-    const std::string dialect = !o.dialect.empty() ? o.dialect : !l.plan.job.dialect.empty() ? l.plan.job.dialect : "linuxcnc";
+    const std::string dialect = dialectFor(o, l.plan);
     if (auto why = workOffsetProblem(dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
+    // A tape with a gouge, a collision or beyond the travel is not written
+    // unless the operator forces it; then its sheet says why in red.
+    const verify::Report checked = verified(l.plan, o, dialect);
+    std::vector<std::string> faults;
+    for (const auto& f : checked.findings)
+        if (f.fatal()) faults.push_back(verify::describe(f, l.plan));
+    if (!faults.empty() && !o.force) {
+        for (const auto& f : faults) std::cerr << fileName(o.job) << ": " << f << '\n';
+        std::cerr << "taiwa: export: the verification found " << faults.size()
+                  << " faults; nothing was written (--force writes them into the sheet)\n";
+        return kFindings;
+    }
     // The PDF writer needs a QGuiApplication; no window is ever shown.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QGuiApplication qapp(argc, argv);
@@ -184,6 +282,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.dialect = dialect;
     e.units = o.units;
     e.jobFile = fileName(o.job);
+    e.verificationFaults = faults;
     const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
     if (!written) {
         std::cerr << "taiwa: export: " << written.error() << '\n';
@@ -258,6 +357,7 @@ int run(int argc, char** argv)
         case Command::Version: std::cout << "taiwa " << TAIWA_VERSION << '\n'; return kOk;
         case Command::Check: return check(o);
         case Command::Export: return exportJob(o, argc, argv);
+        case Command::Verify: return verifyJob(o);
         case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);
         case Command::ListMachines: return listMachines();

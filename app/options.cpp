@@ -50,6 +50,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         if (first == "check") o.command = Command::Check, i = 1;
         else if (first == "export") o.command = Command::Export, i = 1;
         else if (first == "render") o.command = Command::Render, i = 1;
+        else if (first == "verify") o.command = Command::Verify, i = 1;
         else if (first == "import") o.command = Command::Import, i = 1;
     }
     auto value = [&]() -> std::optional<std::string_view> {
@@ -66,10 +67,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             continue;
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
-                                a == "--size" || a == "--view" || a == "--material";
-        if (a == "--stock") {
-            if (o.command != Command::Render) return std::string("option --stock does not go with this command");
-            o.stock = true;
+                                a == "--size" || a == "--view" || a == "--material" || a == "--resolution";
+        if (a == "--stock" || a == "--json" || a == "--force") {
+            const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
+            if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";
+            (a == "--stock" ? o.stock : a == "--json" ? o.json : o.force) = true;
             continue;
         }
         if (!takesValue) return "unknown option '" + std::string(a) + "'";
@@ -102,6 +104,12 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             else return "--step wants a step number or 'all', not '" + std::string(*v) + "'";
         } else if (a == "--size" && forRender) {
             if (auto err = parseSize(*v, o)) return err;
+        } else if (a == "--resolution" && (forExport || o.command == Command::Verify)) {
+            double r = 0.0;
+            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), r);
+            if (ec != std::errc() || end != v->data() + v->size() || !(r >= 0.005) || r > 5.0)
+                return "--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(*v) + "'";
+            o.resolution = r;
         } else if (a == "--view" && forRender) {
             if (*v != "iso" && *v != "top" && *v != "front" && *v != "profile")
                 return "--view is iso, top, front or profile, not '" + std::string(*v) + "'";

@@ -8,7 +8,7 @@
 
 namespace taiwa::app {
 
-enum class Command { Station, Check, Export, Render, Import, ListMachines, ListDialects, Help, Version };
+enum class Command { Station, Check, Export, Verify, Render, Import, ListMachines, ListDialects, Help, Version };
 
 struct Options {
     Command command = Command::Station;
@@ -22,6 +22,9 @@ struct Options {
     int width = 800, height = 600;    // --size WxH
     std::string view = "iso";         // --view
     std::string material = "steel-s45c";  // --material (import)
+    double resolution = 0.05;         // --resolution (verify, export) [mm]
+    bool json = false;                // --json (verify)
+    bool force = false;               // --force (export): write a tape the verification finds fault with
 };
 
 // Fills `o`; returns a message naming the bad argument, or nothing.

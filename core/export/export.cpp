@@ -222,6 +222,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.dialect = options.dialect;
     sheet.jobFile = options.jobFile;
     sheet.programNumber = options.programNumber;
+    sheet.faults = options.verificationFaults;
     auto pdf = sheetPdf(plan, sheet);
     if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
 

@@ -18,6 +18,9 @@ struct ExportOptions {
     std::optional<LengthUnit> units;  // default: the job's own unit
     std::string jobFile;              // shown on the sheet
     int programNumber = 1000;
+    // What the verification found wrong with a tape written anyway (taiwa
+    // export --force), one sentence each: the sheet shows them in red.
+    std::vector<std::string> verificationFaults;
 };
 
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in

@@ -108,10 +108,13 @@ public:
         }
     }
 
-    void paragraph(const std::string& text)
+    void paragraph(const std::string& text, const QColor& colour = Qt::black)
     {
         ensure(line_);
+        const QPen pen = p_.pen();
+        p_.setPen(colour);
         p_.drawText(QRectF(0, y_, area_.width(), line_), Qt::AlignLeft | Qt::AlignVCenter, elide(q(text), area_.width()));
+        p_.setPen(pen);
         y_ += line_;
     }
 
@@ -190,6 +193,11 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     page.title(c.title);
     page.fields(c.fields);
     page.paragraph(c.setup);
+    if (!c.faults.empty()) {
+        const QColor red(192, 0, 0);
+        page.paragraph("Verification: written with faults (--force)", red);
+        for (const auto& f : c.faults) page.paragraph("- " + f, red);
+    }
     if (!c.allowances.rows.empty()) {
         page.heading("Grinding allowances");
         page.table(c.allowances);

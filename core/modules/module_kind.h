@@ -10,6 +10,7 @@
 
 #include "check/unit_checks.h"
 #include "machine/machine.h"
+#include "model/cavity.h"
 #include "io/json_fields.h"
 #include "model/diagnostic.h"
 #include "model/geometry.h"
@@ -95,6 +96,14 @@ public:
     // The steps whose S is a surface speed in m/min (constant surface
     // speed on a lathe), not rpm.
     virtual bool surfaceSpeedStep(const std::string& /*key*/) const { return false; }
+
+    // The finished shape the unit cuts into the stock (model/cavity.h), from
+    // its geometry, for the verification; nothing for a unit that cuts no
+    // cavity from the top (probing, turning). Inputs are checked and in mm.
+    virtual std::optional<Cavity> cavity(const ModuleInput& /*mm*/, const TechnologyData& /*tech*/) const
+    {
+        return std::nullopt;
+    }
 
     // The kind of machine the module runs on: milling modules on a mill,
     // turning modules on a lathe.

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace taiwa {
 
@@ -18,6 +19,9 @@ struct SheetOptions {
     std::string jobFile;                        // file name shown in the header
     int programNumber = 0;                      // O-number of the tape; 0 = not shown
     std::string date;                           // printed date; empty = none (tests)
+    // What the verification found wrong with a tape written anyway (taiwa
+    // export --force): shown first, in red.
+    std::vector<std::string> faults;
 };
 
 // A self-contained HTML document (inline CSS, no external resources).

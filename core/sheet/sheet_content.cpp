@@ -248,6 +248,7 @@ Content content(const Plan& plan, const SheetOptions& o)
                                      std::to_string(orientation), t->holder});
     }
     c.notes = plan.notes();
+    c.faults = o.faults;
     if (std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return !s.cutting.empty(); }))
         c.notes.push_back("* S or F set by the operator for the step, in place of the tool's cutting data.");
     double cutting = 0.0;

@@ -29,6 +29,7 @@ struct Content {
     Table tools;
     Table latheTools;  // lathe jobs: each tool's turret station, insert or blade, nose radius and tip orientation
     std::vector<std::string> notes;
+    std::vector<std::string> faults;  // the verification's, for a tape written anyway (red, before the steps)
     std::string total;
 };
 

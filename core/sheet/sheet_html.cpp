@@ -32,6 +32,7 @@ h2 { font-size: 11pt; margin: 10pt 0 3pt 0; }
 table { border-collapse: collapse; }
 th, td { border: 1px solid #555; padding: 2pt 4pt; }
 th { background: #ddd; text-align: left; }
+.fault { color: #c00000; }
 td.n { text-align: right; }
 table.head td { border: none; padding: 1pt 8pt 1pt 0; }
 )css";
@@ -62,6 +63,11 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
         h += "<td><b>" + escape(c.fields[i].first) + "</b></td><td>" + escape(c.fields[i].second) + "</td>";
     }
     h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n";
+    if (!c.faults.empty()) {
+        h += "<h2 class=\"fault\">Verification: written with faults (--force)</h2>\n<ul class=\"fault\">";
+        for (const auto& f : c.faults) h += "<li>" + escape(f) + "</li>";
+        h += "</ul>\n";
+    }
     if (!c.workCentre.rows.empty()) h += "<h2>Work centre</h2>\n" + table(c.workCentre);
     if (!c.allowances.rows.empty())
         h += "<h2>Grinding allowances</h2>\n" + table(c.allowances) + "<h2>Turned profile as cut</h2>\n" + table(c.turned);

@@ -7,6 +7,7 @@
 #include "io/json_write.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace taiwa {
 
@@ -96,6 +97,41 @@ protected:
     }
 
     std::optional<Quad> outline(const M2DPocket& mm) const override { return m2dCrossSection(mm, 0.0); }
+
+public:
+    // The cross-section at depth d is the rounded rectangle whose left and
+    // right sides have moved in by d tan θ1 and d tan θ2, its radius kept
+    // (m2dCrossSection): a point lies in it while d stays under the bound
+    // each inclined side sets, in closed form. Grown (or shrunk) by a slack,
+    // the rectangle's sides move out by it and its radius grows with it.
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData& /*tech*/) const override
+    {
+        const M2DPocket& p = mm.as<M2DPocket>();
+        Cavity c;
+        c.min = p.corner;
+        c.max = p.corner + Point2{p.lengthX, p.lengthY};
+        c.depth = p.depth;
+        c.wallAngle = std::max(p.theta1, p.rightAngle());
+        c.surfaceTolerance = p.scallop;
+        const double t1 = tanDeg(p.theta1), t2 = tanDeg(p.rightAngle());
+        c.depthAt = [p, t1, t2](Point2 q, double slack) {
+            const double rho = std::max(p.cornerRadius + slack, 0.0);
+            const double y0 = p.corner.y - slack + rho, y1 = p.corner.y + p.lengthY + slack - rho;
+            const double dy = std::max({y0 - q.y, q.y - y1, 0.0});
+            if (dy > rho) return 0.0;
+            const double w = std::sqrt(rho * rho - dy * dy);
+            const double left = q.x - p.corner.x + slack - rho + w;                // d tan θ1 may grow to this
+            const double right = p.corner.x + p.lengthX + slack - rho + w - q.x;   // d tan θ2 to this
+            if (left < 0.0 || right < 0.0) return 0.0;
+            double d = p.depth;
+            if (t1 > 0.0) d = std::min(d, left / t1);
+            if (t2 > 0.0) d = std::min(d, right / t2);
+            return d;
+        };
+        return c;
+    }
+
+protected:
 
     void move(M2DPocket& m, Point2 delta) const override { m.corner = m.corner + delta; }
 

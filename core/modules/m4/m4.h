@@ -36,6 +36,11 @@ struct M4Pocket {
     friend bool operator==(const M4Pocket&, const M4Pocket&) = default;
 };
 
+// The outline roughing and floor finishing share: the cross-section at the
+// roughing depth T - β2 less α2, cut with vertical walls (so that roughing
+// never touches a tapered wall). Inputs in mm.
+Quad m4RoughOutline(const M4Pocket& pocket, const TechnologyData& tech);
+
 // The process steps of one M4 unit (inputs in mm and checked; tools, paths
 // and times not yet chosen). `unit` is the 0-based unit index stored in each step.
 std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech, int unit);

@@ -50,6 +50,12 @@ std::vector<WallPass> wallPasses(WallFinish f, bool tapered, const TechnologyDat
 
 }  // namespace
 
+Quad m4RoughOutline(const M4Pocket& pocket, const TechnologyData& tech)
+{
+    const Quad top{counterClockwise(pocket.corners), pocket.cornerRadius};
+    return offsetInward(section(top, pocket.taper, pocket.depth - tech.beta2), tech.alpha2);
+}
+
 std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech, int unit)
 {
     const ToolUse use = toolUseFromCode(pocket.toolUse).value();
@@ -69,11 +75,8 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
         steps.push_back(s);
     }
 
-    // Roughing and floor finishing share one vertical-walled outline: the
-    // cross-section at the roughing depth, less the wall allowance, so that
-    // roughing never touches a tapered wall.
     const double roughDepth = T - tech.beta2;
-    const Quad roughOutline = offsetInward(section(top, pocket.taper, roughDepth), tech.alpha2);
+    const Quad roughOutline = m4RoughOutline(pocket, tech);
     if (hasRoughing(use)) {
         Step s = makeStep(unit, "M4", StepKind::Roughing, 1, MachiningType::Roughing);
         s.outline = roughOutline;

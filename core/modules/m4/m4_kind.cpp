@@ -3,9 +3,13 @@
 #include "modules/m4/m4.h"
 #include "modules/m4/m4_kind.h"
 #include "modules/pocket_plan.h"
+#include "paths/contour.h"
 
 #include "io/job_messages.h"
 #include "io/json_write.h"
+#include "model/codes.h"
+
+#include <algorithm>
 
 namespace taiwa {
 
@@ -20,6 +24,40 @@ public:
     const char* drawing() const override { return ":/modules/m4.svg"; }
     const char* outlineField() const override { return "corners"; }
     std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
+
+    // The rounded outline at the top, its walls leaning inward by S: the
+    // cross-section at depth d is the outline moved in by d tan S (exact for
+    // a convex outline), so a point at distance e inside the outline lies
+    // on the wall at depth e / tan S.
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData& tech) const override
+    {
+        const M4Pocket& p = mm.as<M4Pocket>();
+        Cavity c;
+        const Quad top{counterClockwise(p.corners), p.cornerRadius};
+        c.min = c.max = top.corners[0];
+        for (const Point2& q : top.corners) {
+            c.min = {std::min(c.min.x, q.x), std::min(c.min.y, q.y)};
+            c.max = {std::max(c.max.x, q.x), std::max(c.max.y, q.y)};
+        }
+        c.depth = p.depth;
+        c.wallAngle = p.taper;
+        const double t = tanDeg(p.taper), depth = p.depth;
+        c.depthAt = [top, t, depth](Point2 q, double slack) {
+            const double inside = slack - paths::signedDistance(top, q);
+            if (inside < 0.0) return 0.0;
+            return t > 0.0 ? std::min(depth, inside / t) : depth;
+        };
+        // Cored (U7): open to the roughing depth within the roughing outline,
+        // as roughing would leave it; wall finishing only (U8): floor
+        // finished there too.
+        const ToolUse use = toolUseFromCode(p.toolUse).value_or(ToolUse::Standard);
+        if (use == ToolUse::Cored || use == ToolUse::WallOnly) {
+            const Quad rough = m4RoughOutline(p, tech);
+            const double open = use == ToolUse::Cored ? p.depth - tech.beta2 : p.depth;
+            c.openAt = [rough, open](Point2 q) { return paths::signedDistance(rough, q) <= 0.0 ? open : 0.0; };
+        }
+        return c;
+    }
 
     ModuleInput makeDefault(const Stock& s) const override
     {

@@ -1,0 +1,93 @@
+// The verification's findings: their keys, their place on the tape and
+// their words.
+#include "verify/verify.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace taiwa::verify {
+
+const char* toKey(FindingKind k)
+{
+    switch (k) {
+    case FindingKind::Gouge: return "gouge";
+    case FindingKind::Collision: return "collision";
+    case FindingKind::RapidIntoStock: return "rapid-into-stock";
+    case FindingKind::TravelLimit: return "travel-limit";
+    case FindingKind::RestMaterial: return "rest-material";
+    }
+    return "?";
+}
+
+bool Report::fatal() const
+{
+    return std::any_of(findings.begin(), findings.end(), [](const Finding& f) { return f.fatal(); });
+}
+
+int Report::count(FindingKind k) const
+{
+    return static_cast<int>(std::count_if(findings.begin(), findings.end(), [k](const Finding& f) { return f.kind == k; }));
+}
+
+void placeOnTape(Report& report, const PostedProgram& program)
+{
+    // The first line of each move, and of each step.
+    std::map<std::pair<int, int>, int> first;
+    for (std::size_t i = 0; i < program.lines.size(); ++i) {
+        const BlockSource& s = program.lines[i];
+        if (s.step < 0) continue;
+        first.try_emplace({s.step, s.move}, static_cast<int>(i) + 1);
+        first.try_emplace({s.step, -1}, static_cast<int>(i) + 1);
+    }
+    for (Finding& f : report.findings) {
+        const auto it = first.find({f.step, f.move});
+        f.line = it != first.end() ? it->second : 0;
+    }
+}
+
+std::string describe(const Finding& f, const Plan& plan)
+{
+    const LengthUnit u = plan.job.lengthUnit;
+    const int digits = u == LengthUnit::Inch ? 4 : 3;
+    const auto len = [&](double mm) { return fmt::format("{:.{}f} {}", fromMm(mm, u), digits, unitSymbol(u)); };
+    const auto at = [&](Point3 p) {
+        return fmt::format("X{:.{}f} Y{:.{}f} Z{:.{}f}", fromMm(p.x, u), digits, fromMm(p.y, u), digits, fromMm(p.z, u),
+                           digits);
+    };
+    std::string where = "the job";
+    if (f.step >= 0 && f.step < static_cast<int>(plan.steps.size())) {
+        const Step& s = plan.steps[static_cast<std::size_t>(f.step)];
+        const std::string& name = s.unit < static_cast<int>(plan.job.units.size()) ? plan.job.units[s.unit].name : "";
+        where = fmt::format("step {} ({}, unit {}{})", f.step + 1, s.label(), s.unit + 1,
+                            name.empty() ? "" : " '" + name + "'");
+    }
+    std::string what;
+    switch (f.kind) {
+    case FindingKind::Gouge:
+        what = fmt::format("gouge {} deep into the finished part at {}, over {:.3f} mm²", len(f.size), at(f.position), f.area);
+        break;
+    case FindingKind::Collision:
+        what = fmt::format("the tool's {} runs {} into stock at {}", f.part, len(f.size), at(f.position));
+        break;
+    case FindingKind::RapidIntoStock:
+        what = fmt::format("rapid (G0) {} into stock at {}", len(f.size), at(f.position));
+        break;
+    case FindingKind::TravelLimit:
+        what = fmt::format("the paths span {} more along {} than the machine '{}' travels", len(f.size), f.part,
+                           plan.job.machine);
+        break;
+    case FindingKind::RestMaterial:
+        what = fmt::format("material left up to {} above what it should leave, highest at {}, over {:.3f} mm²", len(f.size),
+                           at(f.position), f.area);
+        break;
+    }
+    std::string block;
+    if (f.move >= 0) block += fmt::format(", move {}", f.move + 1);
+    if (f.line > 0) block += fmt::format(", tape line {}", f.line);
+    return fmt::format("{}: {}{}", where, what, block);
+}
+
+}  // namespace taiwa::verify

@@ -1,0 +1,389 @@
+// The verifying simulation: the steps cut in machining order into a height
+// field of the operator's resolution, every cell checked as it is lowered
+// (gouge, rapid into stock, shank or holder in stock) and after each step
+// and at the end (material left). The grid is cut in bands of rows, one per
+// core: each band runs every move in order over its own rows, so the order
+// of the cuts (which a rapid into stock depends on) is kept without locks.
+#include "verify/verify.h"
+
+#include "machine/machine.h"
+#include "modules/registry.h"
+#include "sim/cutter_profile.h"
+#include "sim/height_field.h"
+#include "sim/path_samples.h"
+#include "sim/sweep.h"
+#include "tools/holder_shape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <future>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <tuple>
+
+namespace taiwa::verify {
+
+namespace {
+
+constexpr double kGougeTolerance = 0.001;  // material removed inside the part beyond this (and the resolution) [mm]
+constexpr double kTouch = 0.001;           // a rapid, a shank or a holder nearer than this touches nothing [mm]
+
+// What one step hands the bands.
+struct StepData {
+    bool cuts = false;
+    std::vector<sim::PathPiece> pieces;
+    std::optional<sim::CutterProfile> cutter;
+    double cornerRadius = 0.0;
+    double flute = 0.0;      // the flutes' length above the tip: the shank above it
+    double holderZ = 0.0;    // the stick-out: the holder's nose above it (0: no holder check)
+    double holderR = 0.0;    // the nose's radius
+};
+
+// A unit's cavity and what its finishing steps (walls, inclined faces) are
+// meant to leave of it: the least allowances of those steps, the largest
+// corner radius of their tools (a corner the tool cannot reach), the last.
+struct UnitData {
+    std::optional<Cavity> cavity;
+    double wallAllowance = std::numeric_limits<double>::infinity();
+    double floorAllowance = std::numeric_limits<double>::infinity();
+    double cornerRadius = 0.0;
+    int lastFinish = -1;
+};
+
+// The worst cell per kind, step, move and part found by one band.
+class Collector {
+public:
+    Finding& at(FindingKind kind, int step, int move, const char* part)
+    {
+        const Key key{static_cast<int>(kind), step, move, part};
+        if (last_ && key == lastKey_) return *last_;
+        auto [it, fresh] = worst_.try_emplace(key);
+        if (fresh) {
+            it->second.kind = kind;
+            it->second.step = step;
+            it->second.move = move;
+            it->second.part = part;
+        }
+        lastKey_ = key;
+        last_ = &it->second;
+        return it->second;
+    }
+    void add(FindingKind kind, int step, int move, const char* part, Point3 where, double size, double area = 0.0)
+    {
+        Finding& f = at(kind, step, move, part);
+        f.area += area;
+        if (size > f.size) {
+            f.size = size;
+            f.position = where;
+        }
+    }
+    void mergeInto(std::map<std::tuple<int, int, int, std::string>, Finding>& all) const
+    {
+        for (const auto& [key, f] : worst_) {
+            auto [it, fresh] = all.try_emplace({std::get<0>(key), std::get<1>(key), std::get<2>(key), f.part}, f);
+            if (fresh) continue;
+            it->second.area += f.area;
+            if (f.size > it->second.size) {
+                it->second.size = f.size;
+                it->second.position = f.position;
+            }
+        }
+    }
+
+private:
+    using Key = std::tuple<int, int, int, const char*>;
+    std::map<Key, Finding> worst_;
+    Key lastKey_{};
+    Finding* last_ = nullptr;
+};
+
+class Verifier {
+public:
+    Verifier(const Plan& plan, double resolution)
+        : plan_(plan), res_(resolution), zStep_(std::min(0.02, resolution / 5.0)), field_(plan.mmJob.stock, resolution),
+          limit_(field_.heights().size(), 0.0f)
+    {
+        units_.resize(plan.mmJob.units.size());
+        for (std::size_t u = 0; u < units_.size(); ++u) {
+            const ModuleInput& m = plan.mmJob.units[u].module;
+            if (!m.empty()) units_[u].cavity = moduleKind(m).cavity(m, plan.technology);
+        }
+        steps_.resize(plan.steps.size());
+        for (std::size_t k = 0; k < plan.steps.size(); ++k) {
+            const Step& s = plan.steps[k];
+            const Tool* tool = s.tool ? plan.tool(s.tool->toolId) : nullptr;
+            if (!s.path || !tool || tool->type == ToolType::Probe) continue;
+            StepData& d = steps_[k];
+            d.cuts = true;
+            d.pieces = sim::flattenPath(*s.path, std::min(0.01, resolution / 10.0));
+            d.cutter.emplace(*tool);
+            d.cornerRadius = tool->type == ToolType::BallEndMill ? tool->radius() : tool->cornerRadius;
+            d.flute = d.cutter->cuttingLength();
+            const tools::HolderShape h = tools::holderShape(*tool);
+            d.holderZ = std::max(tool->stickout, d.flute);
+            d.holderR = h.noseDiameter / 2.0;
+            const bool finishing = s.kind == StepKind::WallFinishing || s.kind == StepKind::InclinedFaceFinishing;
+            if (s.unit >= 0 && s.unit < static_cast<int>(units_.size()) && finishing) {
+                UnitData& u = units_[s.unit];
+                u.lastFinish = static_cast<int>(k);
+                u.wallAllowance = std::min(u.wallAllowance, s.wallAllowance);
+                u.floorAllowance = std::min(u.floorAllowance, s.floorAllowance);
+                u.cornerRadius = std::max(u.cornerRadius, d.cornerRadius);
+            }
+        }
+    }
+
+    Report run(unsigned threads)
+    {
+        Report r;
+        r.resolution = res_;
+        r.columns = field_.columns();
+        r.rows = field_.rows();
+        const int bands = static_cast<int>(std::clamp<unsigned>(threads, 1u, static_cast<unsigned>(field_.rows())));
+        std::vector<Collector> found(static_cast<std::size_t>(bands));
+        std::vector<std::vector<double>> removed(static_cast<std::size_t>(bands), std::vector<double>(steps_.size(), 0.0));
+        std::vector<std::future<void>> running;
+        for (int b = 0; b < bands; ++b) {
+            const int row0 = field_.rows() * b / bands, row1 = field_.rows() * (b + 1) / bands - 1;
+            const auto k = static_cast<std::size_t>(b);
+            running.push_back(std::async(std::launch::async, [this, row0, row1, &c = found[k], &v = removed[k]] {
+                band(row0, row1, c, v);
+            }));
+        }
+        for (auto& f : running) f.get();
+        r.removed.assign(steps_.size(), 0.0);
+        for (const auto& v : removed)
+            for (std::size_t k = 0; k < v.size(); ++k) r.removed[k] += v[k] * cellArea();
+        std::map<std::tuple<int, int, int, std::string>, Finding> all;
+        for (const Collector& c : found) c.mergeInto(all);
+        travel(all);
+        for (auto& [key, f] : all) r.findings.push_back(f);
+        std::stable_sort(r.findings.begin(), r.findings.end(), [](const Finding& a, const Finding& b) {
+            return std::tie(a.step, a.kind, a.move) < std::tie(b.step, b.kind, b.move);
+        });
+        r.stock = std::move(field_);
+        return r;
+    }
+
+private:
+    double cellArea() const { return res_ * res_; }
+
+    // The gouge limit of every cell of the band: the deepest the finished
+    // part goes within one cell of its centre, less the tolerance.
+    void limits(int row0, int row1)
+    {
+        for (int j = row0; j <= row1; ++j)
+            for (int i = 0; i < field_.columns(); ++i) limit_[field_.indexOf(i, j)] = static_cast<float>(-kGougeTolerance);
+        for (const UnitData& u : units_) {
+            if (!u.cavity) continue;
+            forCells(*u.cavity, res_, row0, row1, [&](int i, int j, Point2 p) {
+                const double z = -u.cavity->depthAt(p, res_) - kGougeTolerance;
+                float& l = limit_[field_.indexOf(i, j)];
+                l = std::min(l, static_cast<float>(z));
+            });
+        }
+    }
+
+    // Visits the band's cells within `margin` of the cavity's box.
+    template <class Visit>
+    void forCells(const Cavity& c, double margin, int row0, int row1, Visit&& visit) const
+    {
+        const Stock& s = field_.stock();
+        const auto col = [&](double x) { return static_cast<int>(std::floor((x - s.x) / res_)); };
+        const auto row = [&](double y) { return static_cast<int>(std::floor((y - s.y) / res_)); };
+        const int i0 = std::max(0, col(c.min.x - margin)), i1 = std::min(field_.columns() - 1, col(c.max.x + margin));
+        const int j0 = std::max(row0, row(c.min.y - margin)), j1 = std::min(row1, row(c.max.y + margin));
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) visit(i, j, field_.centre(i, j));
+    }
+
+    // Openings the units start with (a cored pocket) taken out of the stock.
+    void open(int row0, int row1)
+    {
+        float* h = field_.data();
+        for (const UnitData& u : units_) {
+            if (!u.cavity || !u.cavity->openAt) continue;
+            forCells(*u.cavity, 0.0, row0, row1, [&](int i, int j, Point2 p) {
+                float& z = h[field_.indexOf(i, j)];
+                z = std::min(z, static_cast<float>(std::max(-u.cavity->openAt(p), field_.bottom())));
+            });
+        }
+    }
+
+    void band(int row0, int row1, Collector& out, std::vector<double>& removed)
+    {
+        limits(row0, row1);
+        open(row0, row1);
+        for (std::size_t k = 0; k < steps_.size(); ++k) {
+            if (!steps_[k].cuts) continue;
+            removed[k] = cutStep(static_cast<int>(k), row0, row1, out);
+            restAfterStep(static_cast<int>(k), row0, row1, out);
+        }
+        restAtEnd(row0, row1, out);
+    }
+
+    // Cuts step k into the band's rows; the sum of the heights it took off.
+    double cutStep(int k, int row0, int row1, Collector& out)
+    {
+        double removed = 0.0;
+        const StepData& d = steps_[static_cast<std::size_t>(k)];
+        const sim::CutterProfile& cutter = *d.cutter;
+        const double reach = cutter.reach();
+        float* h = field_.data();
+        const double bottom = field_.bottom();
+        for (const sim::PathPiece& piece : d.pieces) {
+            if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
+            sim::forEachLevel(piece.from, piece.to, zStep_, [&](Point2 a, Point2 b, double z) {
+                if (z >= 0.0) return;
+                const bool shankLow = z + d.flute < -kTouch;
+                const bool holderLow = z + d.holderZ < -kTouch;
+                const double radius = holderLow ? std::max(reach, d.holderR) : reach;
+                sim::forEachCellNear(field_, a, b, radius, row0, row1, [&](int i, int j, double r) {
+                    const std::size_t c = field_.indexOf(i, j);
+                    const double before = h[c];
+                    const auto where = [&](double zz) {
+                        const Point2 p = field_.centre(i, j);
+                        return Point3{p.x, p.y, zz};
+                    };
+                    if (holderLow && before > z + d.holderZ + kTouch)
+                        out.add(FindingKind::Collision, k, piece.move, "holder", where(before), before - (z + d.holderZ));
+                    if (r > reach) return;
+                    if (shankLow && before > z + d.flute + kTouch && before <= z + d.holderZ + kTouch)
+                        out.add(FindingKind::Collision, k, piece.move, "shank", where(before), before - (z + d.flute));
+                    const double after = std::max(z + cutter.height(r), bottom);
+                    if (after >= before) return;
+                    if (piece.rapid && before - after > kTouch)
+                        out.add(FindingKind::RapidIntoStock, k, piece.move, "", where(after), before - after);
+                    h[c] = static_cast<float>(after);
+                    removed += before - h[c];
+                    if (h[c] < limit_[c]) {
+                        const double area = before >= limit_[c] ? cellArea() : 0.0;  // each cell counted once
+                        out.add(FindingKind::Gouge, k, piece.move, "", where(after), limit_[c] + kGougeTolerance - after, area);
+                    }
+                });
+            });
+        }
+        return removed;
+    }
+
+    // A roughing layer or a floor finish clears its unit's cross-section at
+    // its depth, less the walls' allowance (and its tool's corner radius);
+    // a pilot hole reaches its depth at its centre.
+    void restAfterStep(int k, int row0, int row1, Collector& out)
+    {
+        const Step& s = plan_.steps[static_cast<std::size_t>(k)];
+        const StepData& d = steps_[static_cast<std::size_t>(k)];
+        const float* h = field_.data();
+        const double tolerance = kGougeTolerance + zStep_;
+        if (s.kind == StepKind::PilotHole) {
+            const Stock& st = field_.stock();
+            const int i = static_cast<int>(std::floor((s.position.x - st.x) / res_));
+            const int j = static_cast<int>(std::floor((s.position.y - st.y) / res_));
+            if (i < 0 || j < row0 || i >= field_.columns() || j > row1) return;
+            const double allowed = -s.cutDepth + tolerance + d.cutter->height(distance(field_.centre(i, j), s.position));
+            if (h[field_.indexOf(i, j)] > allowed)
+                out.add(FindingKind::RestMaterial, k, -1, "", {s.position.x, s.position.y, h[field_.indexOf(i, j)]},
+                        h[field_.indexOf(i, j)] - allowed + tolerance, cellArea());
+            return;
+        }
+        if (s.kind != StepKind::Roughing && s.kind != StepKind::FloorFinishing) return;
+        if (s.unit < 0 || s.unit >= static_cast<int>(units_.size()) || !units_[s.unit].cavity) return;
+        const Cavity& cav = *units_[s.unit].cavity;
+        const double slack = -(s.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + d.cornerRadius);
+        forCells(cav, 0.0, row0, row1, [&](int i, int j, Point2 p) {
+            const double z = h[field_.indexOf(i, j)];
+            if (z <= -s.cutDepth + tolerance) return;
+            if (cav.depthAt(p, slack) < s.cutDepth - 1e-9) return;
+            out.add(FindingKind::RestMaterial, k, -1, "", {p.x, p.y, z}, z + s.cutDepth, cellArea());
+        });
+    }
+
+    // After the last step, a unit whose walls (or inclined faces) are
+    // finished is cut down to its whole cavity, less what its finishing
+    // steps leave. (A unit roughed only keeps its stairs: its layers are
+    // checked one by one.)
+    void restAtEnd(int row0, int row1, Collector& out)
+    {
+        const float* h = field_.data();
+        for (const UnitData& ud : units_) {
+            if (!ud.cavity || ud.lastFinish < 0) continue;
+            const Cavity& cav = *ud.cavity;
+            const int lastStep = ud.lastFinish;
+            const double slack =
+                -(ud.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + ud.cornerRadius);
+            const double tolerance = kGougeTolerance + zStep_ + cav.surfaceTolerance;
+            forCells(cav, 0.0, row0, row1, [&](int i, int j, Point2 p) {
+                const double z = h[field_.indexOf(i, j)];
+                const double depth = cav.depthAt(p, slack);
+                if (depth <= 0.0) return;
+                const double excess = z - (-depth + ud.floorAllowance);
+                if (excess > tolerance) out.add(FindingKind::RestMaterial, lastStep, -1, "", {p.x, p.y, z}, excess, cellArea());
+            });
+        }
+    }
+
+    // The tip's extent over every path against the machine's travel.
+    void travel(std::map<std::tuple<int, int, int, std::string>, Finding>& all) const
+    {
+        const Machine* m = findMachine(plan_.mmJob.machine);
+        if (!m) return;
+        Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+        for (const StepData& d : steps_)
+            for (const sim::PathPiece& p : d.pieces)
+                for (const Point3& q : {p.from, p.to}) {
+                    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
+                    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
+                }
+        if (lo.x > hi.x) return;
+        const std::pair<const char*, std::pair<double, double>> axes[] = {
+            {"x", {lo.x, hi.x}}, {"y", {lo.y, hi.y}}, {"z", {lo.z, hi.z}}};
+        for (const auto& [axis, span] : axes) {
+            const auto t = m->travel.find(axis);
+            if (t == m->travel.end()) continue;
+            const double excess = (span.second - span.first) - (t->second.max - t->second.min);
+            if (excess <= 0.0) continue;
+            Finding f;
+            f.kind = FindingKind::TravelLimit;
+            f.part = axis;
+            f.size = excess;
+            f.position = hi;
+            all.try_emplace({static_cast<int>(f.kind), -1, -1, f.part}, f);
+        }
+    }
+
+    const Plan& plan_;
+    double res_;
+    double zStep_;
+    sim::HeightField field_;
+    std::vector<float> limit_;
+    std::vector<UnitData> units_;
+    std::vector<StepData> steps_;
+};
+
+}  // namespace
+
+Report verifyPlan(const Plan& plan, const Options& options)
+{
+    if (!(options.resolution >= kFinestResolution) || !std::isfinite(options.resolution))
+        throw std::invalid_argument("the resolution must be at least " + std::to_string(kFinestResolution) + " mm");
+    if (plan.mmJob.bar) {
+        Report r;
+        r.resolution = options.resolution;
+        r.skipped = "a lathe job is not simulated yet: its paths are proved by the rs274 turning oracle of the tests only";
+        return r;
+    }
+    const Stock& s = plan.mmJob.stock;
+    const double cells = std::ceil(s.width / options.resolution) * std::ceil(s.length / options.resolution);
+    if (cells > kMaxCells)
+        throw std::invalid_argument("a " + std::to_string(options.resolution) + " mm grid over this stock has " +
+                                    std::to_string(static_cast<long long>(cells)) + " cells, more than " +
+                                    std::to_string(static_cast<long long>(kMaxCells)) + ": choose a coarser resolution");
+    const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    return Verifier(plan, options.resolution).run(threads);
+}
+
+}  // namespace taiwa::verify

@@ -1,0 +1,81 @@
+// Verification by simulation: every step's path cut into the stock with the
+// tool's real shape, on a height field finer than the preview's (default
+// 0.05 mm), and what a verifier finds on the way: gouges into the finished
+// part (the job's geometry, model/cavity.h, not the paths), material left
+// where a step was meant to clear it, rapids into stock, the shank or the
+// holder running into stock, and paths longer than the machine's travel.
+// `taiwa verify` prints the report, `taiwa export` refuses a tape with a
+// gouge, a collision or beyond the travel. docs/verification.md tells how and why.
+#pragma once
+
+#include "model/plan.h"
+#include "post/post.h"
+#include "sim/height_field.h"
+
+#include <string>
+#include <vector>
+
+namespace taiwa::verify {
+
+enum class FindingKind {
+    Gouge,           // material removed inside the finished part
+    Collision,       // the shank or the holder in stock (`part` says which)
+    RapidIntoStock,  // a G0 that cuts
+    TravelLimit,     // the paths span more than an axis travels
+    RestMaterial,    // material left where the step (or the unit) should have cleared it
+};
+const char* toKey(FindingKind k);  // "gouge", "collision", "rapid-into-stock", "travel-limit", "rest-material"
+
+struct Finding {
+    FindingKind kind = FindingKind::Gouge;
+    int step = -1;      // index into plan.steps (machining order); -1: the whole job
+    int move = -1;      // index into the step's path; -1: the step as a whole
+    int line = 0;       // 1-based line of the tape where the move is written; 0: not placed (placeOnTape)
+    Point3 position{};  // the worst point: a cell's centre and its height after the move [mm]
+    double size = 0.0;  // gouge depth, height of material, depth of the rapid into stock, overlap, excess [mm]
+    double area = 0.0;  // rest material and gouges: the plan-view area of the cells found [mm²]
+    std::string part;   // collisions: "shank" or "holder"; travel limits: the axis "x", "y", "z"
+    // A gouge, a collision (a rapid into stock is one, at rapid speed) or a
+    // travel limit: the tape must not run. Material left is reported only.
+    bool fatal() const { return kind != FindingKind::RestMaterial; }
+    friend bool operator==(const Finding&, const Finding&) = default;
+};
+
+struct Options {
+    double resolution = 0.05;  // the cell size [mm]
+    unsigned threads = 0;      // 0: every core
+};
+
+struct Report {
+    std::vector<Finding> findings;  // by step, then kind, then move
+    double resolution = 0.0;        // the cell size used
+    int columns = 0, rows = 0;      // of the height field
+    std::vector<double> removed;    // per step: the volume it cut [mm³]
+    sim::HeightField stock;         // after the last step
+    // Not every job is simulated: a lathe job is not yet (then `skipped`
+    // says why and there are no findings).
+    std::string skipped;
+    bool fatal() const;
+    int count(FindingKind k) const;
+};
+
+// The smallest cell the verification takes [mm], and the most cells (a
+// 200 x 200 mm stock at 0.02 mm; past it the command asks for a coarser
+// resolution instead of running out of memory).
+constexpr double kFinestResolution = 0.005;
+constexpr double kMaxCells = 100e6;
+
+// Simulates the plan's steps in order and checks them. The plan must have
+// its paths (PlanOptions::withToolPaths). Throws std::invalid_argument for
+// a resolution out of range or a grid beyond kMaxCells.
+Report verifyPlan(const Plan& plan, const Options& options = {});
+
+// Fills each finding's tape line from a program posted from the same plan.
+void placeOnTape(Report& report, const PostedProgram& program);
+
+// One finding in words, lengths in the job's unit: "step 3 (Roughing II,
+// unit 2): gouge 0.520 mm deep at X12.300 Y4.100 Z-10.520, move 57, tape
+// line 312".
+std::string describe(const Finding& f, const Plan& plan);
+
+}  // namespace taiwa::verify
