@@ -20,6 +20,13 @@
 
 using namespace taiwa::test;
 
+namespace {
+// The export verifies each tape first; at its default 0.05 mm that is most
+// of an export's time, and the verification has tests of its own
+// (test_verify): the goldens are exported verified on a coarser grid.
+const QString kVerifyCell = QStringLiteral("0.25");
+}  // namespace
+
 class TestGolden : public QObject {
     Q_OBJECT
 private slots:
@@ -49,7 +56,7 @@ private slots:
         QFETCH(QString, dialect);
         QTemporaryDir out;
         if (dialect == "turned") {
-            const auto r = runTaiwa({"export", job, "--out", out.path()});
+            const auto r = runTaiwa({"export", job, "--out", out.path(), "--resolution", kVerifyCell});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             const QString stem = QFileInfo(job).completeBaseName();
             const auto steps = nlohmann::json::parse(readFile(QDir(out.path()).filePath(stem + ".steps.json")));
@@ -63,7 +70,7 @@ private slots:
             }
             return;
         }
-        const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect});
+        const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect, "--resolution", kVerifyCell});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString stem = QFileInfo(job).completeBaseName();
         const auto written = QDir(out.path()).entryList({"*.nc", "*.mpf", "*.h"}, QDir::Files, QDir::Name);

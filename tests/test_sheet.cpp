@@ -49,6 +49,14 @@ private slots:
             QVERIFY2(html.contains(row), qPrintable(row));
         }
         for (const auto& t : plan.tools) QVERIFY(html.contains(QString::fromStdString(t.holder)));
+        // A mill has no turret (the lathe's table was once shown for every job),
+        // and a tape verified clean has no faults shown.
+        QVERIFY(!html.contains("<h2>Turret</h2>"));
+        QVERIFY(!html.contains("class=\"fault\""));
+        SheetOptions forced;
+        forced.faults = {"step 3 (Roughing I, unit 1): gouge 0.500 mm deep <here>"};
+        const QString red = QString::fromStdString(sheetHtml(plan, forced));
+        QVERIFY(red.contains("<ul class=\"fault\"><li>step 3 (Roughing I, unit 1): gouge 0.500 mm deep &lt;here&gt;</li></ul>"));
         double cutting = 0;
         for (const auto& s : plan.steps) cutting += *s.minutes;
         QVERIFY(html.contains(QString::fromStdString(fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all",

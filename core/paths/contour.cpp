@@ -70,23 +70,32 @@ void appendContour(PathBuilder& b, const Quad& centre, double z, bool ccw)
     b.feed(at(mid, z));
 }
 
-double signedDistance(const Quad& q, Point2 p)
+double signedDistance(const Quad& q, Point2 p) { return QuadDistance(q)(p); }
+
+QuadDistance::QuadDistance(const Quad& q)
+{
+    const Geometry g = geometryOf(q);
+    core_ = g.core;
+    out_ = g.out;
+    rho_ = g.rho;
+}
+
+double QuadDistance::operator()(Point2 p) const
 {
     // The rounded quad is its sharp core (sides moved in by the radius)
     // grown by the radius.
-    const Geometry g = geometryOf(q);
     bool inside = true;
     double nearestSide = 1e300, outside = 1e300;
     for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 a = g.core[i], ab = g.core[(i + 1) % 4] - a;
-        const double out = dot(p - a, g.out[i]);
+        const Point2 a = core_[i], ab = core_[(i + 1) % 4] - a;
+        const double out = dot(p - a, out_[i]);
         if (out > 0) inside = false;
         nearestSide = std::min(nearestSide, -out);
         const double len2 = dot(ab, ab);
         const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
         outside = std::min(outside, distance(p, a + t * ab));
     }
-    return (inside ? -nearestSide : outside) - g.rho;
+    return (inside ? -nearestSide : outside) - rho_;
 }
 
 bool offsetExists(const Quad& outline, double d)

@@ -22,6 +22,18 @@ ContourStart contourStart(const Quad& centre, bool ccw);
 // Signed distance of a point to a rounded convex quad: negative inside.
 double signedDistance(const Quad& q, Point2 p);
 
+// The same for many points of one quad, its geometry worked out once.
+class QuadDistance {
+public:
+    explicit QuadDistance(const Quad& q);
+    double operator()(Point2 p) const;
+
+private:
+    std::array<Point2, 4> core_{};  // the sharp core (the arc centres)
+    std::array<Point2, 4> out_{};   // outward normals of the sides
+    double rho_ = 0.0;
+};
+
 // Appends the closed contour at height z; the builder must already be at
 // contourStart(centre, ccw).point.
 void appendContour(PathBuilder& b, const Quad& centre, double z, bool ccw);

@@ -235,7 +235,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     c.latheTools.headers = {"Station", "T", "Tool", "Insert / blade", "Nose R " + us, "Tip orientation", "Holder"};
     c.latheTools.numeric = {true, true, false, false, true, true, false};
     c.latheTools.widths = {4, 3, 22, 12, 6, 6, 12};
-    for (const auto& [station, id] : latheStations(plan.steps)) {
+    for (const auto& [station, id] : plan.mmJob.bar ? latheStations(plan.steps) : std::vector<std::pair<int, int>>{}) {
         const Tool* t = plan.tool(id);
         if (!t) continue;
         int orientation = 0;

@@ -28,9 +28,13 @@ CutterProfile::CutterProfile(const Tool& tool)
     default: cornerRadius_ = std::clamp(tool.cornerRadius, 0.0, radius_); break;
     }
     reach_ = shape_ == Shape::Taper ? radius_ + length_ * flankSlope_ : radius_;
+    if (shape_ != Shape::Drill) {
+        flatUpTo_ = radius_ - cornerRadius_;
+        flatUpTo2_ = flatUpTo_ * flatUpTo_;
+    }
 }
 
-double CutterProfile::height(double r) const
+double CutterProfile::curvedHeight(double r) const
 {
     if (shape_ == Shape::Drill) return r * pointSlope_;
     if (shape_ == Shape::Taper && r > radius_) return flankSlope_ > 0 ? (r - radius_) / flankSlope_ : 0.0;

@@ -5,6 +5,7 @@
 
 #include "model/tool.h"
 
+#include <cmath>
 #include <vector>
 
 namespace taiwa::sim {
@@ -18,7 +19,9 @@ public:
     // Height above the tip of the cutting surface at distance r from the
     // axis (0 <= r <= reach()): 0 on a flat bottom, growing on a corner
     // radius, a ball, a drill point or a taper flank.
-    double height(double r) const;
+    double height(double r) const { return r <= flatUpTo_ ? 0.0 : curvedHeight(r); }
+    // The same from the square of the distance (no root on the flat bottom).
+    double heightSquared(double r2) const { return r2 <= flatUpTo2_ ? 0.0 : curvedHeight(std::sqrt(r2)); }
     // Length of the cutting part above the tip (flute length, or 3 x D when
     // the library does not say).
     double cuttingLength() const { return length_; }
@@ -27,6 +30,7 @@ public:
     std::vector<std::pair<double, double>> outline(int samplesPerCurve = 8) const;
 
 private:
+    double curvedHeight(double r) const;
     enum class Shape { Flat, Drill, Taper };
     Shape shape_ = Shape::Flat;
     double radius_ = 0.0;        // tip radius (flat, ball, taper) or drill radius
@@ -35,6 +39,8 @@ private:
     double flankSlope_ = 0.0;    // taper: radius per mm of height (tan of the taper angle)
     double length_ = 0.0;
     double reach_ = 0.0;
+    double flatUpTo_ = -1.0;     // the flat bottom's radius (none: -1)
+    double flatUpTo2_ = -1.0;    // its square (none: -1)
 };
 
 }  // namespace taiwa::sim

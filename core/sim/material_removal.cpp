@@ -26,7 +26,7 @@ void cut(HeightField& field, const ToolPath& path, const Tool& tool)
         forEachLevel(piece.from, piece.to, kZStep, [&](Point2 a, Point2 b, double z) {
             if (z >= 0.0) return;
             forEachCellNear(field, a, b, reach, 0, field.rows() - 1,
-                            [&](int i, int j, double r) { field.lower(i, j, z + cutter.height(r)); });
+                            [&](int i, int j, double r2) { field.lower(i, j, z + cutter.heightSquared(r2)); });
         });
     }
 }

@@ -57,6 +57,27 @@ std::vector<PathPiece> flattenPath(const ToolPath& path, double chordTolerance)
     return out;
 }
 
+std::vector<SweptPiece> sweptPieces(const ToolPath& path)
+{
+    std::vector<SweptPiece> out;
+    out.reserve(path.moves.size());
+    // The straight pieces as flattenPath makes them (drill cycles unrolled),
+    // arcs replaced by one piece each.
+    Point3 at = path.start;
+    for (int i = 0; i < static_cast<int>(path.moves.size()); ++i) {
+        const Move& m = path.moves[i];
+        if (m.kind == MoveKind::ArcCW || m.kind == MoveKind::ArcCCW) {
+            out.push_back({at, m.end, i, false, true, m.centre, arcSweep(at, m)});
+            at = m.end;
+            continue;
+        }
+        ToolPath one{at, {m}};
+        for (const PathPiece& p : flattenPath(one)) out.push_back({p.from, p.to, i, p.rapid, false, {}, 0.0});
+        at = positionAfter(one, 0);
+    }
+    return out;
+}
+
 Point3 positionAfter(const ToolPath& path, int index)
 {
     Point3 at = path.start;

@@ -16,6 +16,22 @@ struct PathPiece {
     bool rapid = false;  // G0 travel (also the approach and retract of a drill cycle)
 };
 
+// A piece of path as the verification sweeps it: straight, or an arc (a
+// helix when its ends differ in Z) kept exact.
+struct SweptPiece {
+    Point3 from{};
+    Point3 to{};
+    int move = 0;
+    bool rapid = false;
+    bool arc = false;
+    Point2 centre{};     // arcs: the centre
+    double sweep = 0.0;  // arcs: signed angle, counter-clockwise positive [rad]
+};
+
+// The path's pieces in order, arcs whole (drill cycles unrolled as in
+// flattenPath).
+std::vector<SweptPiece> sweptPieces(const ToolPath& path);
+
 // Straight pieces of the path in order; consecutive pieces join end to start.
 // Arcs are sampled so that no chord is further than `chordTolerance` [mm]
 // from the true arc; a full circle (end == start) is swept once.

@@ -33,8 +33,9 @@ void forEachLevel(Point3 a, Point3 b, double zStep, Level&& level)
     level(b2, b2, b.z);
 }
 
-// Calls visit(i, j, r) for every cell of `f` in rows rowMin..rowMax whose
-// centre lies within `reach` of the segment a -> b, r being that distance.
+// Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
+// centre lies within `reach` of the segment a -> b, r2 being the square of
+// that distance (a flat end mill needs no root).
 template <class Visit>
 void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int rowMin, int rowMax, Visit&& visit)
 {
@@ -47,13 +48,110 @@ void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int
     const Point2 d = b - a;
     const double len2 = dot(d, d);
     const double reach2 = reach * reach;
+    const double len = std::sqrt(len2);
+    const Point2 u = len > 0 ? (1.0 / len) * d : Point2{1.0, 0.0};
+    for (int j = j0; j <= j1; ++j) {
+        // The capsule cut by the row's line is one interval of X: the hull
+        // of the two end discs' chords and the band's.
+        const double y = f.centre(0, j).y;
+        double lo = 1e300, hi = -1e300;
+        for (const Point2 e : {a, b}) {
+            const double dy = y - e.y;
+            if (dy * dy > reach2) continue;
+            const double w = std::sqrt(reach2 - dy * dy);
+            lo = std::min(lo, e.x - w);
+            hi = std::max(hi, e.x + w);
+        }
+        if (len > 0 && u.y != 0.0) {
+            // |n . (p - a)| <= reach and 0 <= u . (p - a) <= len, n = (-u.y, u.x), p = (x, y).
+            const double dy = y - a.y;
+            double x0 = -1e300, x1 = 1e300;
+            const auto clip = [&](double coef, double constant, double from, double to) {  // from <= coef x + constant <= to
+                if (coef == 0.0) {
+                    if (constant < from || constant > to) x0 = 1e300;
+                    return;
+                }
+                double l = (from - constant) / coef, h = (to - constant) / coef;
+                if (l > h) std::swap(l, h);
+                x0 = std::max(x0, l);
+                x1 = std::min(x1, h);
+            };
+            clip(-u.y, u.y * a.x + u.x * dy, -reach, reach);
+            clip(u.x, -u.x * a.x + u.y * dy, 0.0, len);
+            if (x0 <= x1) {
+                lo = std::min(lo, x0);
+                hi = std::max(hi, x1);
+            }
+        } else if (len > 0 && std::abs(y - a.y) <= reach) {  // along X: the band spans the segment
+            lo = std::min(lo, std::min(a.x, b.x));
+            hi = std::max(hi, std::max(a.x, b.x));
+        }
+        if (lo > hi) continue;
+        const int from = std::max(i0, static_cast<int>(std::floor((lo - s.x) / c - 0.5)));
+        const int to = std::min(i1, static_cast<int>(std::ceil((hi - s.x) / c - 0.5)));
+        const double inverse = len2 > 0 ? 1.0 / len2 : 0.0;
+        const double py = y - a.y;
+        for (int i = from; i <= to; ++i) {
+            const double px = f.centre(i, j).x - a.x;
+            const double t = std::clamp((px * d.x + py * d.y) * inverse, 0.0, 1.0);
+            const double qx = px - t * d.x, qy = py - t * d.y;
+            const double r2 = qx * qx + qy * qy;
+            if (r2 <= reach2) visit(i, j, r2);
+        }
+    }
+}
+
+// Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
+// centre lies within `reach` of the arc of radius `radius` around `c` from
+// angle a0 [rad] over `sweep` (signed, |sweep| <= 2π), r2 being the square
+// of that distance: exact, no chords.
+template <class Visit>
+void forEachCellNearArc(const HeightField& f, Point2 c, double radius, double a0, double sweep, double reach, int rowMin,
+                        int rowMax, Visit&& visit)
+{
+    constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+    const bool full = std::abs(sweep) >= kTwoPi - 1e-12;
+    // Counter-clockwise from direction `lo` to `hi` over `span`: a direction
+    // is within when it lies left of lo and right of hi (span up to π), or
+    // not strictly inside the rest of the turn (span over π).
+    const double lo = sweep >= 0 ? a0 : a0 + sweep, span = std::abs(sweep);
+    const Point2 uLo{std::cos(lo), std::sin(lo)}, uHi{std::cos(lo + span), std::sin(lo + span)};
+    const auto withinDir = [&](Point2 v) {
+        if (full) return true;
+        if (span <= kTwoPi / 2) return cross(uLo, v) >= 0.0 && cross(v, uHi) >= 0.0;
+        return !(cross(uHi, v) > 0.0 && cross(v, uLo) > 0.0);
+    };
+    const auto within = [&](double a) { return withinDir({std::cos(a), std::sin(a)}); };
+    const Point2 p0 = c + radius * Point2{std::cos(a0), std::sin(a0)};
+    const Point2 p1 = c + radius * Point2{std::cos(a0 + sweep), std::sin(a0 + sweep)};
+    // The arc's box: its ends and the axis points it passes.
+    double x0 = std::min(p0.x, p1.x), x1 = std::max(p0.x, p1.x), y0 = std::min(p0.y, p1.y), y1 = std::max(p0.y, p1.y);
+    if (within(0.0)) x1 = c.x + radius;
+    if (within(kTwoPi / 4)) y1 = c.y + radius;
+    if (within(kTwoPi / 2)) x0 = c.x - radius;
+    if (within(3 * kTwoPi / 4)) y0 = c.y - radius;
+    const double cell = f.cellSize();
+    const Stock& s = f.stock();
+    const int i0 = std::max(0, static_cast<int>(std::floor((x0 - reach - s.x) / cell)));
+    const int i1 = std::min(f.columns() - 1, static_cast<int>(std::floor((x1 + reach - s.x) / cell)));
+    const int j0 = std::max(rowMin, static_cast<int>(std::floor((y0 - reach - s.y) / cell)));
+    const int j1 = std::min(rowMax, static_cast<int>(std::floor((y1 + reach - s.y) / cell)));
+    const double inner = std::max(0.0, radius - reach), outer = radius + reach;
+    const double inner2 = inner * inner, outer2 = outer * outer, reach2 = reach * reach;
     for (int j = j0; j <= j1; ++j) {
         for (int i = i0; i <= i1; ++i) {
             const Point2 p = f.centre(i, j);
-            const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
-            const Point2 q = p - (a + t * d);
-            const double r2 = dot(q, q);
-            if (r2 <= reach2) visit(i, j, std::sqrt(r2));
+            const Point2 v = p - c;
+            const double d2 = dot(v, v);
+            if (d2 > outer2 || d2 < inner2) continue;  // farther than the reach from the whole circle
+            double r;
+            if (d2 > 0.0 && withinDir(v)) {
+                r = std::abs(std::sqrt(d2) - radius);
+            } else {
+                const Point2 e0 = p - p0, e1 = p - p1;
+                r = std::sqrt(std::min(dot(e0, e0), dot(e1, e1)));
+            }
+            if (r * r <= reach2) visit(i, j, r * r);
         }
     }
 }

@@ -15,6 +15,8 @@
 #include "tools/holder_shape.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <future>
 #include <limits>
@@ -31,11 +33,12 @@ namespace {
 
 constexpr double kGougeTolerance = 0.001;  // material removed inside the part beyond this (and the resolution) [mm]
 constexpr double kTouch = 0.001;           // a rapid, a shank or a holder nearer than this touches nothing [mm]
+constexpr int kBandsPerThread = 8;
 
 // What one step hands the bands.
 struct StepData {
     bool cuts = false;
-    std::vector<sim::PathPiece> pieces;
+    std::vector<sim::SweptPiece> pieces;
     std::optional<sim::CutterProfile> cutter;
     double cornerRadius = 0.0;
     double flute = 0.0;      // the flutes' length above the tip: the shank above it
@@ -119,7 +122,7 @@ public:
             if (!s.path || !tool || tool->type == ToolType::Probe) continue;
             StepData& d = steps_[k];
             d.cuts = true;
-            d.pieces = sim::flattenPath(*s.path, std::min(0.01, resolution / 10.0));
+            d.pieces = sim::sweptPieces(*s.path);
             d.cutter.emplace(*tool);
             d.cornerRadius = tool->type == ToolType::BallEndMill ? tool->radius() : tool->cornerRadius;
             d.flute = d.cutter->cuttingLength();
@@ -143,18 +146,25 @@ public:
         r.resolution = res_;
         r.columns = field_.columns();
         r.rows = field_.rows();
-        const int bands = static_cast<int>(std::clamp<unsigned>(threads, 1u, static_cast<unsigned>(field_.rows())));
+        // More bands than threads, taken in turn: the work lies where the
+        // units are, not evenly over the rows.
+        const int bands = std::clamp(static_cast<int>(threads) * kBandsPerThread, 1, field_.rows());
         std::vector<Collector> found(static_cast<std::size_t>(bands));
         std::vector<std::vector<double>> removed(static_cast<std::size_t>(bands), std::vector<double>(steps_.size(), 0.0));
+        std::vector<double> visits(static_cast<std::size_t>(bands), 0.0);
+        std::atomic<int> next{0};
+        const auto work = [&] {
+            for (int b = next++; b < bands; b = next++) {
+                const int row0 = field_.rows() * b / bands, row1 = field_.rows() * (b + 1) / bands - 1;
+                const auto k = static_cast<std::size_t>(b);
+                visits[k] = band(row0, row1, found[k], removed[k]);
+            }
+        };
         std::vector<std::future<void>> running;
-        for (int b = 0; b < bands; ++b) {
-            const int row0 = field_.rows() * b / bands, row1 = field_.rows() * (b + 1) / bands - 1;
-            const auto k = static_cast<std::size_t>(b);
-            running.push_back(std::async(std::launch::async, [this, row0, row1, &c = found[k], &v = removed[k]] {
-                band(row0, row1, c, v);
-            }));
-        }
+        for (unsigned t = 1; t < threads; ++t) running.push_back(std::async(std::launch::async, work));
+        work();
         for (auto& f : running) f.get();
+        for (double n : visits) r.cellVisits += n;
         r.removed.assign(steps_.size(), 0.0);
         for (const auto& v : removed)
             for (std::size_t k = 0; k < v.size(); ++k) r.removed[k] += v[k] * cellArea();
@@ -214,8 +224,10 @@ private:
         }
     }
 
-    void band(int row0, int row1, Collector& out, std::vector<double>& removed)
+    // Runs every step over the band's rows; the cells visited.
+    double band(int row0, int row1, Collector& out, std::vector<double>& removed)
     {
+        visits_ = 0;
         limits(row0, row1);
         open(row0, row1);
         for (std::size_t k = 0; k < steps_.size(); ++k) {
@@ -224,6 +236,7 @@ private:
             restAfterStep(static_cast<int>(k), row0, row1, out);
         }
         restAtEnd(row0, row1, out);
+        return static_cast<double>(visits_);
     }
 
     // Cuts step k into the band's rows; the sum of the heights it took off.
@@ -232,18 +245,22 @@ private:
         double removed = 0.0;
         const StepData& d = steps_[static_cast<std::size_t>(k)];
         const sim::CutterProfile& cutter = *d.cutter;
-        const double reach = cutter.reach();
+        const double reach = cutter.reach(), reach2 = reach * reach;
         float* h = field_.data();
         const double bottom = field_.bottom();
-        for (const sim::PathPiece& piece : d.pieces) {
+        std::uint64_t visits = 0;
+        for (const sim::SweptPiece& piece : d.pieces) {
             if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
-            sim::forEachLevel(piece.from, piece.to, zStep_, [&](Point2 a, Point2 b, double z) {
+            // The cells near one horizontal sweep at tip height z: a
+            // straight piece from a to b, or the part [t0, t1] of the arc.
+            const auto level = [&](double z, const auto& cellsWithin) {
                 if (z >= 0.0) return;
                 const bool shankLow = z + d.flute < -kTouch;
                 const bool holderLow = z + d.holderZ < -kTouch;
                 const double radius = holderLow ? std::max(reach, d.holderR) : reach;
-                sim::forEachCellNear(field_, a, b, radius, row0, row1, [&](int i, int j, double r) {
+                cellsWithin(radius, [&](int i, int j, double r2) {
                     const std::size_t c = field_.indexOf(i, j);
+                    ++visits;
                     const double before = h[c];
                     const auto where = [&](double zz) {
                         const Point2 p = field_.centre(i, j);
@@ -251,10 +268,10 @@ private:
                     };
                     if (holderLow && before > z + d.holderZ + kTouch)
                         out.add(FindingKind::Collision, k, piece.move, "holder", where(before), before - (z + d.holderZ));
-                    if (r > reach) return;
+                    if (r2 > reach2) return;
                     if (shankLow && before > z + d.flute + kTouch && before <= z + d.holderZ + kTouch)
                         out.add(FindingKind::Collision, k, piece.move, "shank", where(before), before - (z + d.flute));
-                    const double after = std::max(z + cutter.height(r), bottom);
+                    const double after = std::max(z + cutter.heightSquared(r2), bottom);
                     if (after >= before) return;
                     if (piece.rapid && before - after > kTouch)
                         out.add(FindingKind::RapidIntoStock, k, piece.move, "", where(after), before - after);
@@ -265,8 +282,32 @@ private:
                         out.add(FindingKind::Gouge, k, piece.move, "", where(after), limit_[c] + kGougeTolerance - after, area);
                     }
                 });
-            });
+            };
+            const auto line = [&](Point2 a, Point2 b, double z) {
+                level(z, [&](double radius, const auto& visit) { sim::forEachCellNear(field_, a, b, radius, row0, row1, visit); });
+            };
+            if (!piece.arc) {
+                sim::forEachLevel(piece.from, piece.to, zStep_, line);
+                continue;
+            }
+            // An arc exactly; a helix in parts at most zStep apart in Z, each
+            // at its higher end, then its end point at its own height.
+            const Point2 c = piece.centre;
+            const double radius = std::hypot(piece.from.x - c.x, piece.from.y - c.y);
+            const double a0 = std::atan2(piece.from.y - c.y, piece.from.x - c.x);
+            const double dz = piece.to.z - piece.from.z;
+            const int n = std::max(1, static_cast<int>(std::ceil(std::abs(dz) / zStep_)));
+            for (int part = 0; part < n; ++part) {
+                const double t0 = static_cast<double>(part) / n, t1 = static_cast<double>(part + 1) / n;
+                const double z = std::max(piece.from.z + t0 * dz, piece.from.z + t1 * dz);
+                level(z, [&](double reachOf, const auto& visit) {
+                    sim::forEachCellNearArc(field_, c, radius, a0 + t0 * piece.sweep, (t1 - t0) * piece.sweep, reachOf, row0,
+                                            row1, visit);
+                });
+            }
+            if (dz != 0.0) line({piece.to.x, piece.to.y}, {piece.to.x, piece.to.y}, piece.to.z);
         }
+        visits_ += visits;
         return removed;
     }
 
@@ -333,7 +374,7 @@ private:
         if (!m) return;
         Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
         for (const StepData& d : steps_)
-            for (const sim::PathPiece& p : d.pieces)
+            for (const sim::SweptPiece& p : d.pieces)
                 for (const Point3& q : {p.from, p.to}) {
                     lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
                     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
@@ -362,7 +403,10 @@ private:
     std::vector<float> limit_;
     std::vector<UnitData> units_;
     std::vector<StepData> steps_;
+    static thread_local std::uint64_t visits_;
 };
+
+thread_local std::uint64_t Verifier::visits_ = 0;
 
 }  // namespace
 

@@ -51,6 +51,7 @@ struct Report {
     double resolution = 0.0;        // the cell size used
     int columns = 0, rows = 0;      // of the height field
     std::vector<double> removed;    // per step: the volume it cut [mm³]
+    double cellVisits = 0.0;        // cells the tool's shapes were swept over (the benchmark's count)
     sim::HeightField stock;         // after the last step
     // Not every job is simulated: a lathe job is not yet (then `skipped`
     // says why and there are no findings).

@@ -42,8 +42,8 @@ public:
         c.depth = p.depth;
         c.wallAngle = p.taper;
         const double t = tanDeg(p.taper), depth = p.depth;
-        c.depthAt = [top, t, depth](Point2 q, double slack) {
-            const double inside = slack - paths::signedDistance(top, q);
+        c.depthAt = [distance = paths::QuadDistance(top), t, depth](Point2 q, double slack) {
+            const double inside = slack - distance(q);
             if (inside < 0.0) return 0.0;
             return t > 0.0 ? std::min(depth, inside / t) : depth;
         };
@@ -54,7 +54,7 @@ public:
         if (use == ToolUse::Cored || use == ToolUse::WallOnly) {
             const Quad rough = m4RoughOutline(p, tech);
             const double open = use == ToolUse::Cored ? p.depth - tech.beta2 : p.depth;
-            c.openAt = [rough, open](Point2 q) { return paths::signedDistance(rough, q) <= 0.0 ? open : 0.0; };
+            c.openAt = [distance = paths::QuadDistance(rough), open](Point2 q) { return distance(q) <= 0.0 ? open : 0.0; };
         }
         return c;
     }
