@@ -157,6 +157,12 @@ void PreviewWidget::highlightMove(int step, int move)
     update();
 }
 
+void PreviewWidget::markPoint(std::optional<Point3> p)
+{
+    scene_.markPoint(p);
+    update();
+}
+
 QImage PreviewWidget::grabImage() { return grabFramebuffer(); }
 
 void PreviewWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent)

@@ -38,6 +38,9 @@ public:
     // Camera preset, fitted to the stock and the paths.
     void setView(viz::ViewPreset view);
     void highlightMove(int step, int move);
+    // A red ball at a point (a verification finding), the view moved to it;
+    // nothing removes it.
+    void markPoint(std::optional<taiwa::Point3> p);
     // The current frame (rendered now if needed).
     QImage grabImage();
 

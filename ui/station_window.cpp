@@ -22,6 +22,7 @@
 #include "ui/tool_library_dialog.h"
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
+#include "ui/verification_panel.h"
 
 #include "ui/preview_widget.h"
 
@@ -54,7 +55,8 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     : QMainWindow(parent), doc_(new JobDocument(this)), runner_(new PlanRunner(this)),
       autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, autosave_, this)),
       palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
-      forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView)
+      forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
+      verify_(new VerificationPanel)
 {
     for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
     auto* main = new QSplitter(Qt::Horizontal);
@@ -168,7 +170,13 @@ QWidget* StationWindow::buildRight()
     }
     auto* lower = new QSplitter(Qt::Horizontal);
     lower->addWidget(steps_);
-    lower->addWidget(nc_);
+    // The tape over the verification's findings.
+    auto* tape = new QSplitter(Qt::Vertical);
+    tape->addWidget(nc_);
+    tape->addWidget(verify_);
+    tape->setStretchFactor(0, 3);
+    tape->setStretchFactor(1, 1);
+    lower->addWidget(tape);
     // The step list's columns (No., unit, step, tool, S, F, depths, time)
     // fit without scrolling sideways on a 1600-pixel screen.
     lower->setStretchFactor(0, 13);
@@ -319,6 +327,16 @@ void StationWindow::wire()
         doc_->edit(after, tr("Dialect %1").arg(d));
     });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
+    // A finding chosen: its step in the list, its block in the tape, its
+    // point marked in the 3-D view.
+    connect(verify_, &VerificationPanel::findingSelected, this, [this](int step, int move, Point3 where) {
+        if (step >= 0) steps_->selectStep(step);
+        if (step >= 0 && move >= 0) nc_->selectMove(step, move);
+        else if (step >= 0) nc_->showStep(step);
+        if (!preview_) return;
+        preview_->highlightMove(step, move);
+        preview_->markPoint(where);
+    });
     // S or F typed in the step list: the unit's speed or feed for steps of
     // that kind, an edit of the job (undoable); an emptied cell removes it.
     connect(steps_->table(), &StepTable::cuttingEdited, this,
@@ -417,7 +435,11 @@ void StationWindow::onFieldEdited(UnitForm* form, int field, std::optional<doubl
 void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
 {
     if (!plan) return;
-    if (preview_) preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
+    verify_->setPlan(plan);  // the findings of the plan before are gone with it
+    if (preview_) {
+        preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
+        preview_->markPoint(std::nullopt);
+    }
     steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
 }
 

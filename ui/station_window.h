@@ -31,6 +31,7 @@ class StepPanel;
 class StepTable;
 class UnitForm;
 class UnitListPanel;
+class VerificationPanel;
 
 class StationWindow : public QMainWindow {
     Q_OBJECT
@@ -47,6 +48,7 @@ public:
     StepPanel* stepPanel() const { return steps_; }
     StepTable* stepTable() const;
     NcView* ncView() const { return nc_; }
+    VerificationPanel* verificationPanel() const { return verify_; }
     PreviewWidget* preview() const { return preview_; }
 
 protected:
@@ -87,6 +89,7 @@ private:
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;
     NcView* nc_;
+    VerificationPanel* verify_;
     Diagnostics diagnostics_;
 };
 

@@ -71,6 +71,11 @@ public:
     MoveRef highlightedMove() const { return highlighted_; }
     // Where the tool is drawn (its tip), if it is.
     std::optional<Point3> toolPosition() const { return toolAt_; }
+    // A marker (a small red ball) at a point of interest, a verification
+    // finding, the camera moved (not turned) to put it in the middle of the
+    // view; nothing removes it. viz/scene_marker.cpp.
+    void markPoint(std::optional<Point3> p);
+    std::optional<Point3> markedPoint() const { return marked_; }
     // Camera preset fitted to the stock and the paths for a viewport of
     // width / height = aspect.
     void setView(ViewPreset preset, double aspect);
@@ -120,7 +125,8 @@ private:
     MergedPaths merged_;  // merged mode only
     vtkSmartPointer<vtkActor> allFeeds_, allRapids_;
     int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
-    vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_;
+    vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_;
+    std::optional<Point3> marked_;
     vtkSmartPointer<vtkAxesActor> axes_;
     vtkSmartPointer<vtkTextActor> scaleNote_;
     int selected_ = -1;

@@ -1031,6 +1031,41 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::VerificationPanel</name>
+        <message>
+            <source>&amp;Verify</source>
+            <translation>検証(&amp;V)</translation>
+        </message>
+        <message>
+            <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
+            <translation>全工程を %1 mm の格子で素材に削り込み、削り込み過ぎ・干渉・早送りでの素材への突入・ストローク超過・削り残しを一覧にします</translation>
+        </message>
+        <message>
+            <source>Not verified since the last change.</source>
+            <translation>最後の変更以降、未検証です。</translation>
+        </message>
+        <message>
+            <source>No plan to verify.</source>
+            <translation>検証する加工計画がありません。</translation>
+        </message>
+        <message>
+            <source>Verifying…</source>
+            <translation>検証中…</translation>
+        </message>
+        <message>
+            <source>Not verified: %1</source>
+            <translation>未検証: %1</translation>
+        </message>
+        <message>
+            <source>Verified at %1 mm: clean.</source>
+            <translation>%1 mm で検証済み: 問題なし。</translation>
+        </message>
+        <message>
+            <source>Verified at %1 mm: %2 faults, %3 with material left.</source>
+            <translation>%1 mm で検証済み: 不具合 %2 件、削り残し %3 件。</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::CoreTexts</name>
         <message>
             <source>Pilot hole</source>

@@ -1031,6 +1031,41 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::VerificationPanel</name>
+        <message>
+            <source>&amp;Verify</source>
+            <translation>验证(&amp;V)</translation>
+        </message>
+        <message>
+            <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
+            <translation>以 %1 mm 网格将所有工步切入毛坯，列出过切、碰撞、快移撞入毛坯、超出行程和残料</translation>
+        </message>
+        <message>
+            <source>Not verified since the last change.</source>
+            <translation>自上次修改后尚未验证。</translation>
+        </message>
+        <message>
+            <source>No plan to verify.</source>
+            <translation>没有可验证的加工计划。</translation>
+        </message>
+        <message>
+            <source>Verifying…</source>
+            <translation>正在验证…</translation>
+        </message>
+        <message>
+            <source>Not verified: %1</source>
+            <translation>未验证：%1</translation>
+        </message>
+        <message>
+            <source>Verified at %1 mm: clean.</source>
+            <translation>已按 %1 mm 验证：无问题。</translation>
+        </message>
+        <message>
+            <source>Verified at %1 mm: %2 faults, %3 with material left.</source>
+            <translation>已按 %1 mm 验证：%2 处故障，%3 处残料。</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::CoreTexts</name>
         <message>
             <source>Pilot hole</source>

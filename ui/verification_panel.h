@@ -1,0 +1,62 @@
+// The verification in the station: a Verify button that cuts the current
+// plan on the verification's grid (core/verify) on a worker thread, the
+// findings listed one a line (faults in red), and a finding chosen in the
+// list announced with its step, move and position, which the window passes
+// to the step list, the NC view and the 3-D view. A new plan makes the list
+// stale until verified again.
+#pragma once
+
+#include "model/plan.h"
+#include "verify/verify.h"
+
+#include <QThreadPool>
+#include <QWidget>
+
+#include <memory>
+
+class QLabel;
+class QListWidget;
+class QPushButton;
+
+namespace taiwa::ui {
+
+class VerificationPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit VerificationPanel(QWidget* parent = nullptr);
+    ~VerificationPanel() override;
+
+    // The plan the button verifies (nullptr: none; the button is disabled).
+    // Findings of an earlier plan are cleared.
+    void setPlan(std::shared_ptr<const Plan> plan);
+    // Starts the verification on the worker thread (the button does this).
+    void verify();
+    // Verifies on the calling thread and shows the result (tests).
+    void verifyNow();
+    bool isBusy() const { return busy_; }
+    // The last report shown (empty findings before any).
+    const verify::Report& report() const { return report_; }
+    QListWidget* list() const { return list_; }
+
+signals:
+    // The operator chose a finding: its step (-1: the whole job), move (-1:
+    // the step as a whole) and worst point.
+    void findingSelected(int step, int move, taiwa::Point3 where);
+    // A verification finished (its report is report()).
+    void verified();
+
+private:
+    void show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r);
+    void onRowChanged(int row);
+
+    QPushButton* run_;
+    QLabel* summary_;
+    QListWidget* list_;
+    std::shared_ptr<const Plan> plan_;
+    verify::Report report_;
+    std::uint64_t generation_ = 0;  // of setPlan: a result for an older plan is dropped
+    bool busy_ = false;
+    QThreadPool pool_;
+};
+
+}  // namespace taiwa::ui
