@@ -4,7 +4,8 @@
 // With TAIWA_SCREENSHOTS_DIR set (run under `xvfb-run -a` so that the 3-D
 // view renders) it also writes the PNGs of docs/screenshots/: the whole
 // window, the window with single steps selected, and a contact sheet of the
-// 3-D view with each step selected in turn (simulated stock after it).
+// 3-D view with each step selected in turn (simulated stock after it), and
+// a verification finding chosen (station-verification.png).
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 #include "support/support.h"
@@ -14,6 +15,7 @@
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
 #include "ui/station_window.h"
+#include "ui/verification_panel.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
 #include "ui/unit_list_panel.h"
@@ -27,6 +29,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTranslator>
+#include <QListWidget>
 #include <QtTest>
 
 using namespace taiwa;
@@ -145,6 +148,34 @@ private slots:
         w.stepPanel()->selectStep(-1);
         settle(w);
         save(w, "station-plate-m2d.png");
+    }
+
+    // A verification finding chosen: a floor pass put 0.3 mm too deep by
+    // the test (no real job gouges), listed in red, its step selected, its
+    // block in the tape, its point marked in the 3-D view.
+    void verificationFinding()
+    {
+        StationWindow w(sample("m4-standard.taiwa"));
+        w.resize(1600, 940);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        settle(w);
+        auto plan = std::make_shared<Plan>(*w.planRunner()->fullPlan());
+        for (Step& s : plan->steps) {
+            if (s.kind != StepKind::FloorFinishing) continue;
+            for (std::size_t i = 2; i < s.path->moves.size(); ++i)
+                if (s.path->moves[i].kind == MoveKind::Feed) {
+                    s.path->moves[i].end.z -= 0.3;
+                    break;
+                }
+            break;
+        }
+        w.verificationPanel()->setPlan(plan);
+        w.verificationPanel()->verifyNow();
+        QVERIFY(w.verificationPanel()->list()->count() > 0);
+        w.verificationPanel()->list()->setCurrentRow(0);
+        settle(w);
+        save(w, "station-verification.png");
     }
 
     void japanese()

@@ -22,7 +22,7 @@ void Scene::markPoint(std::optional<Point3> p)
     const double size = std::max({b[1] - b[0], b[3] - b[2], b[5] - b[4], 1.0});
     auto ball = vtkSmartPointer<vtkSphereSource>::New();
     ball->SetCenter(p->x, p->y, p->z);
-    ball->SetRadius(size * 0.012);
+    ball->SetRadius(size * 0.02);
     ball->SetThetaResolution(24);
     ball->SetPhiResolution(16);
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
