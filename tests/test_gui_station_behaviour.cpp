@@ -213,7 +213,7 @@ private slots:
         w.document()->undoStack()->undo();  // the whole name typed at once is one step
         QCOMPARE(w.document()->job().units[0].name, std::string("Pocket A"));
         w.document()->undoStack()->redo();
-        QVERIFY(w.findChild<QListWidget*>()->item(0)->text().endsWith("Cover recess"));
+        QVERIFY(w.unitList()->findChild<QListWidget*>()->item(0)->text().endsWith("Cover recess"));
         w.planRunner()->flush();
         const auto plan = w.planRunner()->fullPlan();
         QVERIFY(plan);

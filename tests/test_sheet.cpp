@@ -93,10 +93,13 @@ private slots:
         path.moves = {{MoveKind::Feed, {0, 0, -2}}, {MoveKind::Feed, {30, 0, -2}}, {MoveKind::Rapid, {30, 0, 5}}};
         s.path = path;
         s.minutes = 12.5;
+        s.machineMinutes = 13.25;
         plan.steps = {s};
         plan.diagnostics.push_back({Severity::Warning, 1, "M4", "tools.roughing", "T27 <worn> & chipped"});
         plan.toolChanges = 1;
         plan.totalMinutes = 12.63;
+        plan.totalMachineMinutes = 13.38;
+        plan.job.machine = "vmc";
         SheetOptions o;
         o.jobFile = "jig&fixture.taiwa";
         o.date = "2026-11-23";
@@ -107,14 +110,14 @@ private slots:
                                  "steel-s45c", "120.000 x 80.000 x 25.000 mm", "G54",
                                  "origin X0 Y0 at the stock's front-left corner, Z0 on the top face",
                                  "End mill &lt;10&gt; &amp; co", "ER32 &quot;short&quot;", "T27 &lt;worn&gt; &amp; chipped",
-                                 "12.5 min of machining, 1 tool changes, 12.6 min in all"})
+                                 "12.5 min of machining, 1 tool changes, 12.6 min in all (13.4 min as the machine 'vmc' moves"})
             QVERIFY2(html.contains(text), text);
         // The row: no. 1, unit 3, T/H 27, 3820 rpm (1000 x 120 / (pi x 10)), 573 mm/min (x 0.05 x 3 flutes),
-        // depths 4 to 7.5, allowances, 37 mm of cutting path (7 down + 30 across), 12.5 min.
+        // depths 4 to 7.5, allowances, 37 mm of cutting path (7 down + 30 across), 12.5 min, as the machine moves 13.25.
         QVERIFY2(html.contains("<tr><td class=n>1</td><td class=n>3</td><td>M4</td><td>Roughing II</td><td class=n>27</td>"
                                "<td class=n>27</td><td>End mill &lt;10&gt; &amp; co</td><td class=n>3820</td>"
                                "<td class=n>573</td><td class=n>4.000</td><td class=n>7.500</td><td class=n>0.300</td>"
-                               "<td class=n>0.200</td><td class=n>37.000</td><td class=n>12.50</td></tr>"),
+                               "<td class=n>0.200</td><td class=n>37.000</td><td class=n>12.50</td><td class=n>13.25</td></tr>"),
                  qPrintable(html));
         // The tool list: life 120, used 30, left 90.
         QVERIFY(html.contains("<td class=n>120</td><td class=n>30.0</td><td class=n>90.0</td>"));

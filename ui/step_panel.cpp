@@ -214,7 +214,11 @@ void StepPanel::showDetails(int index)
                      .arg(t ? QString::fromStdString(t->name) : QString())
                      .arg(QString::fromStdString(s.tool->reason));
     }
-    if (s.minutes) lines << tr("Estimated %1 min").arg(QString::number(*s.minutes, 'f', 2));
+    if (s.minutes && s.machineMinutes)
+        lines << tr("Estimated %1 min; as the machine moves (acceleration, corners) %2 min")
+                     .arg(QString::number(*s.minutes, 'f', 2), QString::number(*s.machineMinutes, 'f', 2));
+    else if (s.minutes)
+        lines << tr("Estimated %1 min").arg(QString::number(*s.minutes, 'f', 2));
     details_->setText(lines.join("<br>"));
 }
 

@@ -98,6 +98,7 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         j["turning"] = tj;
     }
     if (s.minutes) j["minutes"] = *s.minutes;
+    if (s.machineMinutes) j["machineMinutes"] = *s.machineMinutes;
     return j;
 }
 

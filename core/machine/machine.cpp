@@ -88,6 +88,18 @@ public:
         } else {
             m.toolPockets = static_cast<int>(positive(at(j_, "toolChanger", "toolChanger"), "pockets", "toolChanger.pockets"));
         }
+        if (j_.contains("acceleration")) {
+            const json& acc = j_["acceleration"];
+            if (!acc.is_object()) fail("acceleration", "must be an object of axes");
+            for (const auto& a : axes) m.acceleration[a] = positive(acc, a, "acceleration." + a);
+        }
+        if (j_.contains("lookAhead")) {
+            const json& v = j_["lookAhead"];
+            if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 10000)
+                fail("lookAhead", "must be a whole number of blocks from 1 to 10000");
+            m.lookAhead = v.get<int>();
+        }
+        if (j_.contains("cornerTolerance")) m.cornerTolerance = positive(j_, "cornerTolerance", "cornerTolerance");
         if (j_.contains("coolant")) {
             m.coolantOn = string(j_["coolant"], "flood", "coolant.flood");
             m.coolantOff = string(j_["coolant"], "off", "coolant.off");

@@ -39,6 +39,13 @@ struct Machine {
     double maxBarDiameter = 0.0;               // lathes: the largest bar through the spindle [mm]
     double jawLength = 0.0;                    // lathes: how far the jaws grip along Z [mm]
     std::string coolantOn = "M8", coolantOff = "M9";
+    // Motion (machine/motion_time.h): each axis' acceleration [mm/s²] (none:
+    // the machine time is not modelled), how many blocks the control looks
+    // ahead to keep its speed through corners (1: it stops at each block's
+    // end), and how far it may leave a corner to round it [mm] (G64 P).
+    std::map<std::string, double> acceleration;
+    int lookAhead = 1;
+    double cornerTolerance = 0.01;
     // The slowest axis' rapid rate [mm/min]; 0 when none is given.
     double slowestRapid() const
     {

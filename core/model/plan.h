@@ -11,6 +11,7 @@
 #include "model/tool.h"
 #include "model/turned.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct Plan {
     std::vector<Step> steps;         // job-wide machining order, tool/path/minutes filled
     std::vector<Tool> tools;         // the library tools the steps use, by first use
     double totalMinutes = 0.0;       // cutting + rapid + tool changes
+    std::optional<double> totalMachineMinutes;  // the same as the machine moves (Step::machineMinutes), when known
     int toolChanges = 0;
     bool ok() const { return !hasErrors(diagnostics); }
     const Tool* tool(int id) const;

@@ -97,7 +97,10 @@ struct Step {
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;
     std::optional<ToolPath> path;
-    std::optional<double> minutes;  // estimated machining time
+    std::optional<double> minutes;  // estimated machining time: length over feed, rapids at one rate
+    // The time as the machine moves (acceleration, corners, look-ahead;
+    // machine/motion_time.h), when the job's machine says how it moves.
+    std::optional<double> machineMinutes;
     // The operator's S and F for this step (its unit's `cutting` for its
     // kind; F in mm per minute, or per revolution on a lathe), in place of
     // the tool's cutting data.

@@ -4,6 +4,8 @@
 // ordered, and each step given its path and time.
 #include "pipeline/pipeline.h"
 
+#include "machine/motion_time.h"
+
 #include "job/job_check.h"
 #include "machine/machine.h"
 #include "modules/registry.h"
@@ -122,13 +124,16 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
 
     // The paths of the steps are independent of each other: compute them on
     // every core (at most kMaxPathThreads).
+    const bool motion = machine && hasMotionModel(*machine);
     const auto work = [&](std::size_t first, std::size_t stride) {
         for (std::size_t i = first; i < plan.steps.size(); i += stride) {
             Step& step = plan.steps[i];
             if (step.turn) continue;  // turning steps come with their paths and times
             const Tool& tool = *findTool(library, step.tool->toolId);
             step.path = makeToolPath(step, tool, plan.technology, options.path);
-            step.minutes = estimateMinutes(*step.path, *stepSpeedsFeeds(step, tool, plan.mmJob.material));
+            const SpeedsFeeds sf = *stepSpeedsFeeds(step, tool, plan.mmJob.material);
+            step.minutes = estimateMinutes(*step.path, sf);
+            if (motion) step.machineMinutes = machineMinutes(*step.path, {sf.feed, sf.plungeFeed}, *machine);
         }
     };
     const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxPathThreads);
@@ -138,6 +143,11 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     for (auto& r : running) r.get();  // rethrows a worker's exception here
     for (const auto& step : plan.steps) plan.totalMinutes += *step.minutes;
     plan.totalMinutes += plan.toolChanges * options.toolChangeSeconds / 60.0;
+    if (motion && std::all_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.machineMinutes.has_value(); })) {
+        double total = plan.toolChanges * options.toolChangeSeconds / 60.0;
+        for (const auto& step : plan.steps) total += *step.machineMinutes;
+        plan.totalMachineMinutes = total;
+    }
     // Tool life: a warning on the step's unit, not an error.
     for (const auto& note : planToolLife(plan.steps, library)) {
         const Step& step = plan.steps[static_cast<std::size_t>(note.stepIndex)];

@@ -190,9 +190,10 @@ Content content(const Plan& plan, const SheetOptions& o)
              !w.round && m.rotationMeasured ? fmt::format("{:.4f}", m.rotation) : "-", residuals});
     }
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
-                       "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min"};
-    c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true};
-    c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 19, 5, 6, 5.5, 5.5, 5, 5, 7, 4};
+                       "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min",
+                       "Machine min"};
+    c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true, true};
+    c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 17, 5, 6, 5.5, 5.5, 5, 5, 6, 4, 5.5};
     // A turning step's speed: constant surface speed with its spindle
     // limit, or the drill's rpm; its feed per revolution.
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
@@ -222,7 +223,8 @@ Content content(const Plan& plan, const SheetOptions& o)
                                 speedText(s, sf), feedText(s, sf), s.turn ? "-" : len(s.startDepth),
                                 s.turn ? "-" : len(s.cutDepth), s.turn ? len(s.turn->allowanceX) : len(s.wallAllowance),
                                 s.turn ? len(s.turn->allowanceZ) : len(s.floorAllowance),
-                                s.path || s.turn ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-"});
+                                s.path || s.turn ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-",
+                                s.machineMinutes ? fmt::format("{:.2f}", *s.machineMinutes) : "-"});
     }
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
     c.tools.numeric = {true, false, false, true, true, false, true, true, true};
@@ -255,6 +257,9 @@ Content content(const Plan& plan, const SheetOptions& o)
     for (const auto& s : plan.steps) cutting += s.minutes.value_or(0.0);
     c.total = fmt::format("{:.1f} min of machining, {} tool changes, {:.1f} min in all", cutting, plan.toolChanges,
                           plan.totalMinutes);
+    if (plan.totalMachineMinutes)
+        c.total += fmt::format(" ({:.1f} min as the machine '{}' moves: acceleration, corners, look-ahead)",
+                               *plan.totalMachineMinutes, job.machine);
     return c;
 }
 

@@ -741,6 +741,10 @@
             <translation>T%1 %2: %3</translation>
         </message>
         <message>
+            <source>Estimated %1 min; as the machine moves (acceleration, corners) %2 min</source>
+            <translation>見積り %1 分、機械の動き(加減速・コーナー)で %2 分</translation>
+        </message>
+        <message>
             <source>Estimated %1 min</source>
             <translation>予想 %1 分</translation>
         </message>

@@ -741,6 +741,10 @@
             <translation>T%1 %2:%3</translation>
         </message>
         <message>
+            <source>Estimated %1 min; as the machine moves (acceleration, corners) %2 min</source>
+            <translation>估计 %1 分钟；按机床运动（加减速、拐角）%2 分钟</translation>
+        </message>
+        <message>
             <source>Estimated %1 min</source>
             <translation>预计 %1 分钟</translation>
         </message>
