@@ -7,6 +7,7 @@
 // under a pixel; no display is an error message. The same scene inside the
 // Qt widget: test_render_preview_widget. Needs an X display (xvfb-run -a).
 #include "job/job_file.h"
+#include "sim/stock_simulation.h"
 #include "support/hand_plan.h"
 #include "support/images.h"
 #include "support/support.h"
@@ -169,6 +170,46 @@ private slots:
         o.step = 0;
         const QImage before = render(o, "stock0.png");
         QVERIFY(near(before.pixel(int(floor[0]), int(floor[1])), palette::kStock, 20));
+    }
+
+    // The selected step's own cut in its colour (floor and wall finishing
+    // no longer look alike); played block by block, only the blocks played.
+    void selectedStepCutInItsColourAndPlayedByBlock()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        o.showStock = true;
+        o.step = kRoughing;
+        const QImage whole = render(o, "step-removed.png");
+        const auto floor = pixelOf(plan_, o.view, {27.5, 40, -5});
+        const auto slot = pixelOf(plan_, o.view, {50, 44, -5});
+        QVERIFY2(near(whole.pixel(int(floor[0]), int(floor[1])), palette::kRemoved, 30), qPrintable(QColor(whole.pixel(int(floor[0]), int(floor[1]))).name()));
+        QVERIFY(near(whole.pixel(int(slot[0]), int(slot[1])), palette::kRemoved, 30));
+        // After the slot (40,40) -> (60,40) only: the slot cut, the rest uncut.
+        o.move = kSlotMove;
+        const QImage played = render(o, "step-played.png");
+        QVERIFY(near(played.pixel(int(slot[0]), int(slot[1])), palette::kRemoved, 30));
+        QVERIFY(near(played.pixel(int(floor[0]), int(floor[1])), palette::kStock, 20));
+        // The scene puts the tool at that block's end and simulates the stock under it.
+        Scene s;
+        auto plan = std::make_shared<Plan>(plan_);
+        auto sim = std::make_shared<sim::StockSimulation>(*plan);
+        s.setPlan(plan, sim);
+        s.setShowStock(true);
+        s.setPlayhead(kRoughing, kSlotMove);
+        QCOMPARE(s.playhead(), (MoveRef{kRoughing, kSlotMove}));
+        QCOMPARE(s.selectedStep(), kRoughing);
+        QVERIFY(s.toolPosition() && *s.toolPosition() == (Point3{60, 40, -5}));
+        const auto under = sim->afterMove(kRoughing, kSlotMove);
+        QCOMPARE(under->atPoint(60, 40), -5.0);
+        QCOMPARE(under->atPoint(27.5, 40), 0.0);
+        // Playing on cuts the rest; the last block equals the whole step, cell for cell.
+        QVERIFY(*sim->afterMove(kRoughing, 1000) == *sim->after(kRoughing));
+        QCOMPARE(sim->afterMove(kRoughing, kSlotMove + 3)->atPoint(70, 48), -5.0);
+        // And back: before the slot the stock there is the pilot hole's only.
+        QCOMPARE(sim->afterMove(kRoughing, 0)->atPoint(50, 40), 0.0);
+        s.setPlayhead(-1, -1);
+        QCOMPARE(s.playhead(), MoveRef{});
     }
 
     // The simulated stock's surface is closed (its vector area sums to

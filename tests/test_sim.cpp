@@ -259,6 +259,28 @@ private slots:
         StockSimulation again(plan);
         QVERIFY(*again.finished() == *sim.after(299));
     }
+
+    // Block by block: each move's stock is the step's prefix cut; played
+    // onward it cuts only the moves between; the last move is the whole
+    // step, and going back starts again from the stock before the step.
+    void afterMoveCutsTheBlocksPlayed()
+    {
+        const auto read = readJobFile(test::sourcePath("resources/samples/m4-standard.taiwa").toStdString());
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+        StockSimulation played(plan), fresh(plan);
+        const int k = 1;
+        const ToolPath& path = *plan.steps[k].path;
+        const int n = static_cast<int>(path.moves.size());
+        QVERIFY(*played.afterMove(k, -1) == *played.before(k));
+        for (int m : {0, 3, n / 2, n - 2}) {
+            HeightField expected = *fresh.before(k);
+            cut(expected, ToolPath{path.start, {path.moves.begin(), path.moves.begin() + m + 1}}, *plan.tool(plan.steps[k].tool->toolId));
+            QVERIFY2(*played.afterMove(k, m) == expected, qPrintable(QString::number(m)));
+        }
+        QVERIFY(*played.afterMove(k, n + 5) == *fresh.after(k));
+        QVERIFY(*played.afterMove(k, 2) == *StockSimulation(plan).afterMove(k, 2));  // back
+        QVERIFY_THROWS_EXCEPTION(std::out_of_range, played.afterMove(99, 0));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestSim)

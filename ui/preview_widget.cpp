@@ -157,6 +157,12 @@ void PreviewWidget::highlightMove(int step, int move)
     update();
 }
 
+void PreviewWidget::setPlayhead(int step, int move)
+{
+    scene_.setPlayhead(step, move);
+    update();
+}
+
 void PreviewWidget::markPoint(std::optional<Point3> p)
 {
     scene_.markPoint(p);

@@ -41,6 +41,8 @@ public:
     // A red ball at a point (a verification finding), the view moved to it;
     // nothing removes it.
     void markPoint(std::optional<taiwa::Point3> p);
+    // Viz::Scene::setPlayhead: the stock after moves 0..move of the step.
+    void setPlayhead(int step, int move);
     // The current frame (rendered now if needed).
     QImage grabImage();
 

@@ -327,6 +327,12 @@ void StationWindow::wire()
         doc_->edit(after, tr("Dialect %1").arg(d));
     });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
+    // The block played in the tape: its line, or (a move the tape writes
+    // with the one before it) the last line written up to it.
+    connect(steps_, &StepPanel::playheadMoved, nc_, [this](int step, int move) {
+        for (int m = move; step >= 0 && m >= 0; --m)
+            if (nc_->selectMove(step, m)) break;
+    });
     // A finding chosen: its step in the list, its block in the tape, its
     // point marked in the 3-D view.
     connect(verify_, &VerificationPanel::findingSelected, this, [this](int step, int move, Point3 where) {
@@ -364,6 +370,9 @@ void StationWindow::wire()
                                                    : viz::ViewPreset::Iso);
     });
     connect(nc_, &NcView::moveSelected, preview_, &PreviewWidget::highlightMove);
+    // Play block by block: the material coming off in the preview, the
+    // block in the tape.
+    connect(steps_, &StepPanel::playheadMoved, preview_, &PreviewWidget::setPlayhead);
     connect(preview_, &PreviewWidget::moveClicked, nc_, &NcView::selectMove);
     connect(preview_, &PreviewWidget::moveClicked, preview_, &PreviewWidget::highlightMove);
 }

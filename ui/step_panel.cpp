@@ -8,10 +8,12 @@
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSpinBox>
 #include <QToolButton>
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace taiwa::ui {
@@ -27,7 +29,7 @@ QString length(double mm, LengthUnit u)
 StepPanel::StepPanel(QWidget* parent)
     : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QToolButton(this)),
       stock_(new QCheckBox(tr("&Stock"), this)), before_(new QCheckBox(tr("&Before step"), this)),
-      timer_(new QTimer(this))
+      timer_(new QTimer(this)), speed_(new QSpinBox(this))
 {
     details_->setObjectName("step.details");
     details_->setWordWrap(true);
@@ -67,6 +69,25 @@ StepPanel::StepPanel(QWidget* parent)
     switches->addWidget(stock_);
     switches->addWidget(before_);
     switches->addStretch(1);
+    // Single blocks and the blocks a tick of Play moves on.
+    auto* back = new QToolButton(this);
+    back->setText(QStringLiteral("◀"));
+    back->setObjectName("step.blockBack");
+    back->setToolTip(tr("One block back in the selected step"));
+    auto* forward = new QToolButton(this);
+    forward->setText(QStringLiteral("▶|"));
+    forward->setObjectName("step.blockForward");
+    forward->setToolTip(tr("One block on in the selected step, the material coming off"));
+    speed_->setObjectName("step.speed");
+    speed_->setRange(1, 1000);
+    speed_->setValue(1);
+    speed_->setSuffix(tr(" blocks/tick"));
+    speed_->setToolTip(tr("How many blocks Play moves on ten times a second with a step selected"));
+    switches->addWidget(back);
+    switches->addWidget(forward);
+    switches->addWidget(speed_);
+    connect(back, &QToolButton::clicked, this, [this] { stepBlock(-1); });
+    connect(forward, &QToolButton::clicked, this, [this] { stepBlock(1); });
 
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
@@ -130,8 +151,16 @@ void StepPanel::setPlaying(bool on)
         return;
     }
     if (on) {
-        selectStep(0);
-        timer_->start();
+        // A step selected (with a path): its blocks from where they stand;
+        // none: every step in turn from the first.
+        const int k = selectedStep();
+        if (k >= 0 && moveCount(k) > 0) {
+            if (playStep_ != k || playMove_ >= moveCount(k) - 1) setPlayhead(k, -1);
+            timer_->start(kBlockInterval);
+        } else {
+            selectStep(0);
+            timer_->start(stepInterval_);
+        }
     } else {
         timer_->stop();
     }
@@ -140,10 +169,61 @@ void StepPanel::setPlaying(bool on)
     play_->setText(on ? tr("■ Stop (&Y)") : tr("▶ Pla&y"));
 }
 
-void StepPanel::setPlayInterval(int ms) { timer_->setInterval(ms); }
+void StepPanel::setPlayInterval(int ms)
+{
+    stepInterval_ = ms;
+    if (playStep_ < 0) timer_->setInterval(ms);
+}
+
+void StepPanel::setBlocksPerTick(int n) { speed_->setValue(n); }
+
+int StepPanel::moveCount(int step) const
+{
+    if (!plan_ || step < 0 || step >= static_cast<int>(plan_->steps.size())) return 0;
+    const Step& s = plan_->steps[static_cast<std::size_t>(step)];
+    return s.path ? static_cast<int>(s.path->moves.size()) : 0;
+}
+
+void StepPanel::setPlayhead(int step, int move)
+{
+    playStep_ = step;
+    playMove_ = move;
+    emit playheadMoved(step, move);
+}
+
+void StepPanel::stepBlock(int delta)
+{
+    const int k = playStep_ >= 0 ? playStep_ : selectedStep();
+    if (k < 0 || moveCount(k) == 0) return;
+    const int from = playStep_ == k ? playMove_ : -1;
+    setPlayhead(k, std::clamp(from + delta, -1, moveCount(k) - 1));
+}
 
 void StepPanel::advance()
 {
+    if (playStep_ >= 0) {
+        // Blocks: on by the speed; past the step's last, the next step's
+        // first (a step without a path passed over); after the last, stop.
+        int k = playStep_, move = playMove_ + speed_->value();
+        while (k >= 0 && move >= moveCount(k)) {
+            if (playMove_ < moveCount(k) - 1) {
+                move = moveCount(k) - 1;  // show the step's last block before going on
+                break;
+            }
+            do ++k;
+            while (k < table_->rowCount() && moveCount(k) == 0);
+            if (k >= table_->rowCount()) {
+                setPlaying(false);
+                return;
+            }
+            move = 0;
+            advancing_ = true;
+            selectStep(k);
+            advancing_ = false;
+        }
+        setPlayhead(k, move);
+        return;
+    }
     const int next = selectedStep() + 1;
     if (next >= table_->rowCount()) {
         setPlaying(false);
@@ -156,6 +236,14 @@ void StepPanel::advance()
 void StepPanel::onSelectionChanged()
 {
     const int index = selectedStep();
+    // Another step chosen (not by the play itself): the blocks played end.
+    if (playStep_ >= 0 && !advancing_ && index != playStep_) {
+        timer_->stop();
+        const QSignalBlocker block(play_);
+        play_->setChecked(false);
+        play_->setText(tr("▶ Pla&y"));
+        setPlayhead(-1, -1);
+    }
     showDetails(index);
     if (index == lastEmitted_) return;
     lastEmitted_ = index;

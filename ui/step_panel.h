@@ -1,5 +1,7 @@
 // The step list with what goes with it: the numbers of the selected step, a
-// play button that walks through the steps on a timer, the iso/top/front
+// play button that walks through the steps on a timer (with a step
+// selected: through its blocks, the material coming off, with a speed and
+// single blocks back and forward), the iso/top/front
 // view buttons and the stock switches (simulated stock; before or after
 // the step). It only emits what the operator asked
 // for; the window passes that on to the 3-D preview.
@@ -14,6 +16,7 @@
 
 class QCheckBox;
 class QLabel;
+class QSpinBox;
 class QToolButton;
 class QTimer;
 
@@ -40,14 +43,25 @@ public:
     bool stockBefore() const;
     bool isPlaying() const;
     void setPlaying(bool on);
-    // Milliseconds per step while playing.
+    // Milliseconds per step while playing (blocks: per tick, see blockInterval).
     void setPlayInterval(int ms);
+    // Block by block: the move last shown of the step being played (-1:
+    // before its first), and the blocks each tick moves on.
+    int playStep() const { return playStep_; }
+    int playMove() const { return playMove_; }
+    void setBlocksPerTick(int n);
+    // One block back or forward (starts at the selected step).
+    void stepBlock(int delta);
+    static constexpr int kBlockInterval = 100;  // ms between ticks while playing blocks
 
 signals:
     void stepSelected(int index);  // -1 = all
     void viewRequested(taiwa::ui::ViewButton view);
     void showStockToggled(bool on);
     void stockBeforeToggled(bool before);
+    // Playing block by block: the stock after moves 0..move of step; (-1, -1)
+    // when it ends (the selection changed, all steps).
+    void playheadMoved(int step, int move);
 
 private:
     void onSelectionChanged();
@@ -60,6 +74,12 @@ private:
     QCheckBox* stock_;
     QCheckBox* before_;
     QTimer* timer_;
+    QSpinBox* speed_;
+    int playStep_ = -1, playMove_ = -1;
+    bool advancing_ = false;  // the panel itself moves the selection
+    int stepInterval_ = 1200;
+    int moveCount(int step) const;
+    void setPlayhead(int step, int move);
     std::shared_ptr<const Plan> plan_;
     std::optional<double> lastMinutes_;  // total time of the last plan with times
     int lastEmitted_ = -2;

@@ -20,6 +20,7 @@ inline constexpr Rgb kHighlight{255, 0, 220};    // the move picked in the NC vi
 inline constexpr Rgb kTool{235, 190, 40};        // the tool glyph
 inline constexpr Rgb kStock{176, 182, 194};      // uncut stock faces
 inline constexpr Rgb kMachined{120, 200, 160};   // faces the simulation has cut
+inline constexpr Rgb kRemoved{245, 160, 60};     // faces the selected step (or the blocks played) cut
 inline constexpr Rgb kStockEdges{150, 158, 172}; // the stock's box when the stock is hidden
 inline constexpr Rgb kPartEdges{236, 238, 244};  // the finished pockets' outlines, top and floor
 inline constexpr Rgb kText{220, 224, 232};

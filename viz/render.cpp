@@ -110,6 +110,7 @@ Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::st
     scene.setPlan(std::make_shared<const Plan>(plan));
     scene.setSelectedStep(o.step);
     scene.setShowStock(o.showStock);  // last: the stock is simulated once, for the right step
+    if (o.step >= 0 && o.move >= 0) scene.setPlayhead(o.step, o.move);
     scene.setView(o.view, static_cast<double>(o.width) / o.height);
     window->AddRenderer(scene.renderer());
     window->Render();

@@ -18,6 +18,7 @@ enum class ViewPreset { Iso, Top, Front };
 
 struct RenderOptions {
     int step = -1;           // 0-based index into plan.steps; -1 = all
+    int move = -1;           // with a step: the stock after its moves 0..move, the tool at that block (Scene::setPlayhead); -1: the whole step
     bool showStock = false;  // the simulated stock after the step (after all: the finished part)
     int width = 800, height = 600;
     ViewPreset view = ViewPreset::Iso;

@@ -130,6 +130,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     if (stock && stock->stepCount() == n) simulation_ = std::move(stock);
     if (selected_ >= n) selected_ = -1;
     if (highlighted_.step >= n) highlighted_ = {};
+    if (playhead_.step >= n) playhead_ = {};
     lathe_ = plan_->mmJob.bar.has_value();
     if (lathe_) {
         buildLathe();
@@ -372,6 +373,18 @@ void Scene::updateLatheStep()
     }
 }
 
+void Scene::setPlayhead(int step, int move)
+{
+    if (!plan_ || step >= static_cast<int>(plan_->steps.size())) step = -1;
+    playhead_ = step < 0 ? MoveRef{} : MoveRef{step, move};
+    if (step >= 0 && step != selected_) {
+        selected_ = step;
+        updateEmphasis();
+    }
+    highlightMove(step, step < 0 ? -1 : move);
+    updateStock();
+}
+
 void Scene::updateStock()
 {
     if (!plan_) return;
@@ -382,10 +395,21 @@ void Scene::updateStock()
     if (stock_) renderer_->RemoveActor(stock_);
     if (showStock_) {
         if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
-        const sim::StockSimulation::Snapshot field = selected_ < 0 ? (stockBefore_ ? simulation_->initial() : simulation_->finished())
-                                                     : stockBefore_ ? simulation_->before(selected_)
-                                                                    : simulation_->after(selected_);
-        stock_ = actorFor(heightFieldSurface(*field), palette::kStock);
+        // A step's own cut in its colour: after the step (or the blocks
+        // played of it) against the stock before it.
+        sim::StockSimulation::Snapshot field, before;
+        if (playhead_.step >= 0) {
+            field = simulation_->afterMove(playhead_.step, playhead_.move);
+            before = simulation_->before(playhead_.step);
+        } else if (selected_ < 0) {
+            field = stockBefore_ ? simulation_->initial() : simulation_->finished();
+        } else if (stockBefore_) {
+            field = simulation_->before(selected_);
+        } else {
+            field = simulation_->after(selected_);
+            before = simulation_->before(selected_);
+        }
+        stock_ = actorFor(heightFieldSurface(*field, before.get()), palette::kStock);
         stock_->GetMapper()->ScalarVisibilityOn();
         stock_->GetMapper()->SetColorModeToDirectScalars();
         stock_->GetProperty()->SetAmbient(0.25);

@@ -69,6 +69,12 @@ public:
     // end; (-1, -1) for none (the tool back at the selected step's start).
     void highlightMove(int step, int move);
     MoveRef highlightedMove() const { return highlighted_; }
+    // Play block by block: the stock as it is after moves 0..move of step
+    // `step` (what they cut in palette::kRemoved), the step selected, the
+    // move highlighted with the tool at its end; step -1 ends it (the
+    // stock as the selection says again).
+    void setPlayhead(int step, int move);
+    MoveRef playhead() const { return playhead_; }
     // Where the tool is drawn (its tip), if it is.
     std::optional<Point3> toolPosition() const { return toolAt_; }
     // A marker (a small red ball) at a point of interest, a verification
@@ -130,6 +136,7 @@ private:
     vtkSmartPointer<vtkAxesActor> axes_;
     vtkSmartPointer<vtkTextActor> scaleNote_;
     int selected_ = -1;
+    MoveRef playhead_;
     bool showStock_ = false;
     bool stockBefore_ = false;
     bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane

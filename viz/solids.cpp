@@ -97,8 +97,11 @@ private:
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f)
+vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const sim::HeightField* before)
 {
+    if (before && !(before->columns() == f.columns() && before->rows() == f.rows())) before = nullptr;
+    // Cut by the step: lower than before it.
+    const auto removed = [&](int i, int j) { return before && f.at(i, j) < before->at(i, j) - 1e-4; };
     const int nx = f.columns(), ny = f.rows();
     const Stock& s = f.stock();
     const std::vector<float>& z = f.heights();
@@ -112,7 +115,7 @@ vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f)
         vtkIdType& id = ids[static_cast<std::size_t>(j) * nx + i];
         if (id < 0) {
             const double h = f.at(i, j);
-            id = out.point(vx(i), vy(j), h, h > -1e-4 ? palette::kStock : palette::kMachined);
+            id = out.point(vx(i), vy(j), h, removed(i, j) ? palette::kRemoved : h > -1e-4 ? palette::kStock : palette::kMachined);
         }
         return id;
     };
@@ -122,10 +125,11 @@ vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f)
     // finer quads beside it meet it without a gap.
     auto flat = [&](int i0, int i1, int j0, int j1) {
         const float h = z[static_cast<std::size_t>(j0) * nx + i0];
+        const bool cut = removed(i0, j0);  // one colour too
         for (int j = j0; j <= j1; ++j) {
             const float* row = z.data() + static_cast<std::size_t>(j) * nx;
             for (int i = i0; i <= i1; ++i)
-                if (row[i] != h) return false;
+                if (row[i] != h || (before && removed(i, j) != cut)) return false;
         }
         return true;
     };

@@ -20,8 +20,10 @@ namespace taiwa::viz {
 // vertex per cell centre; rectangles of vertices at one height merged into
 // one quad), its four side walls and the bottom, with a normal per quad
 // (flat shading) and RGB point colours: palette::kStock where the top is
-// uncut, palette::kMachined where the simulation lowered it.
-vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& field);
+// uncut, palette::kMachined where the simulation lowered it; given the
+// stock `before` a step (the same grid), palette::kRemoved where the step
+// lowered it further.
+vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& field, const sim::HeightField* before = nullptr);
 
 // The uncut stock block.
 vtkSmartPointer<vtkPolyData> stockBlock(const Stock& stock);

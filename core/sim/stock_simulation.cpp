@@ -2,6 +2,7 @@
 #include "sim/stock_simulation.h"
 
 #include "sim/material_removal.h"
+#include "sim/path_samples.h"
 
 #include <algorithm>
 #include <future>
@@ -77,6 +78,30 @@ StockSimulation::Snapshot StockSimulation::finished()
     HeightField field = *after(half - 1);  // on this thread, keeping its checkpoints
     field.meet(secondHalf.get());
     return keep(n - 1, std::move(field));
+}
+
+StockSimulation::Snapshot StockSimulation::afterMove(int k, int move)
+{
+    if (k < 0 || k >= stepCount())
+        throw std::out_of_range("StockSimulation::afterMove: step " + std::to_string(k) + " of " + std::to_string(stepCount()));
+    const Cut& c = cuts_[static_cast<std::size_t>(k)];
+    const int last = c.hasPath ? static_cast<int>(c.path.moves.size()) - 1 : -1;
+    move = std::clamp(move, -1, last);
+    if (move < 0) return before(k);
+    // From the last one asked for when it is earlier in this step, else
+    // from the stock before the step. Each move cuts from where the one
+    // before it left the tool: cutting the moves in runs is cutting them at once.
+    const bool onward = playStep_ == k && played_ && playMove_ <= move;
+    HeightField field = onward ? *played_ : *before(k);
+    const int from = onward ? playMove_ + 1 : 0;
+    if (from <= move) {
+        ToolPath part{positionAfter(c.path, from - 1), {c.path.moves.begin() + from, c.path.moves.begin() + move + 1}};
+        cut(field, part, c.tool);
+    }
+    playStep_ = k;
+    playMove_ = move;
+    played_ = std::make_shared<const HeightField>(std::move(field));
+    return played_;
 }
 
 StockSimulation::Snapshot StockSimulation::before(int k)

@@ -51,6 +51,11 @@ public:
     // only lowers cells, so the order of the cuts does not matter: the
     // result is the same, cell for cell, as cutting them in order).
     Snapshot finished();
+    // The stock after moves 0..move of step k (move -1: before the step; a
+    // move past the last: after it): the material coming off block by
+    // block. The last one asked for is kept, so that asking for a later
+    // move of the same step cuts only the moves between.
+    Snapshot afterMove(int k, int move);
     // How many snapshots are kept now (at most kCheckpoints + kRecent).
     std::size_t snapshotCount() const { return snapshots_.size(); }
 
@@ -68,6 +73,8 @@ private:
     std::vector<Cut> cuts_;
     int stride_ = 1;
     std::map<int, Snapshot> snapshots_;
+    int playStep_ = -1, playMove_ = -1;  // the last afterMove
+    Snapshot played_;
     std::deque<int> recent_;  // snapshots that are not checkpoints, oldest first
 };
 

@@ -693,6 +693,22 @@
             <translation>正面(&amp;R)</translation>
         </message>
         <message>
+            <source>One block back in the selected step</source>
+            <translation>選択した工程で1ブロック戻る</translation>
+        </message>
+        <message>
+            <source>One block on in the selected step, the material coming off</source>
+            <translation>選択した工程で1ブロック進む(素材が削られる様子を表示)</translation>
+        </message>
+        <message>
+            <source> blocks/tick</source>
+            <translation> ブロック/刻み</translation>
+        </message>
+        <message>
+            <source>How many blocks Play moves on ten times a second with a step selected</source>
+            <translation>工程を選択して再生するとき、1秒に10回進めるブロック数</translation>
+        </message>
+        <message>
             <source>■ Stop (&amp;Y)</source>
             <translation>■ 停止(&amp;Y)</translation>
         </message>

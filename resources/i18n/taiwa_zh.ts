@@ -693,6 +693,22 @@
             <translation>正视(&amp;R)</translation>
         </message>
         <message>
+            <source>One block back in the selected step</source>
+            <translation>在所选工步中后退一个程序段</translation>
+        </message>
+        <message>
+            <source>One block on in the selected step, the material coming off</source>
+            <translation>在所选工步中前进一个程序段（显示材料被切除）</translation>
+        </message>
+        <message>
+            <source> blocks/tick</source>
+            <translation> 段/节拍</translation>
+        </message>
+        <message>
+            <source>How many blocks Play moves on ten times a second with a step selected</source>
+            <translation>选中工步播放时，每秒十次各前进的程序段数</translation>
+        </message>
+        <message>
             <source>■ Stop (&amp;Y)</source>
             <translation>■ 停止(&amp;Y)</translation>
         </message>
