@@ -81,7 +81,7 @@ StepPanel::StepPanel(QWidget* parent)
     speed_->setObjectName("step.speed");
     speed_->setRange(1, 1000);
     speed_->setValue(1);
-    speed_->setSuffix(tr(" blocks/tick"));
+    speed_->setPrefix(QStringLiteral("×"));
     speed_->setToolTip(tr("How many blocks Play moves on ten times a second with a step selected"));
     switches->addWidget(back);
     switches->addWidget(forward);
@@ -303,7 +303,7 @@ void StepPanel::showDetails(int index)
                      .arg(QString::fromStdString(s.tool->reason));
     }
     if (s.minutes && s.machineMinutes)
-        lines << tr("Estimated %1 min; as the machine moves (acceleration, corners) %2 min")
+        lines << tr("Estimated %1 min (%2 min as the machine moves)")
                      .arg(QString::number(*s.minutes, 'f', 2), QString::number(*s.machineMinutes, 'f', 2));
     else if (s.minutes)
         lines << tr("Estimated %1 min").arg(QString::number(*s.minutes, 'f', 2));

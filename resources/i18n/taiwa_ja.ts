@@ -701,10 +701,6 @@
             <translation>選択した工程で1ブロック進む(素材が削られる様子を表示)</translation>
         </message>
         <message>
-            <source> blocks/tick</source>
-            <translation> ブロック/刻み</translation>
-        </message>
-        <message>
             <source>How many blocks Play moves on ten times a second with a step selected</source>
             <translation>工程を選択して再生するとき、1秒に10回進めるブロック数</translation>
         </message>
@@ -757,8 +753,8 @@
             <translation>T%1 %2: %3</translation>
         </message>
         <message>
-            <source>Estimated %1 min; as the machine moves (acceleration, corners) %2 min</source>
-            <translation>見積り %1 分、機械の動き(加減速・コーナー)で %2 分</translation>
+            <source>Estimated %1 min (%2 min as the machine moves)</source>
+            <translation>見積り %1 分(機械の動きで %2 分)</translation>
         </message>
         <message>
             <source>Estimated %1 min</source>

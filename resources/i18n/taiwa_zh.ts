@@ -701,10 +701,6 @@
             <translation>在所选工步中前进一个程序段（显示材料被切除）</translation>
         </message>
         <message>
-            <source> blocks/tick</source>
-            <translation> 段/节拍</translation>
-        </message>
-        <message>
             <source>How many blocks Play moves on ten times a second with a step selected</source>
             <translation>选中工步播放时，每秒十次各前进的程序段数</translation>
         </message>
@@ -757,8 +753,8 @@
             <translation>T%1 %2:%3</translation>
         </message>
         <message>
-            <source>Estimated %1 min; as the machine moves (acceleration, corners) %2 min</source>
-            <translation>估计 %1 分钟；按机床运动（加减速、拐角）%2 分钟</translation>
+            <source>Estimated %1 min (%2 min as the machine moves)</source>
+            <translation>估计 %1 分钟（按机床运动 %2 分钟）</translation>
         </message>
         <message>
             <source>Estimated %1 min</source>
