@@ -50,7 +50,7 @@ Usage:
   taiwa [JOB]                      open the station window (with JOB loaded)
   taiwa check JOB                  input processing only; one line per error:
                                    JOB: unit N (MODULE) field: message
-  taiwa export JOB --out DIR [--dialect NAME] [--units mm|inch]
+  taiwa export JOB --out DIR [--dialect NAME] [--units mm|inch] [--no-pictures]
                                    the whole pipeline; writes STEM.nc (.mpf for
                                    sinumerik, .h for heidenhain), STEM.tape.txt,
                                    STEM.sheet.html, STEM.sheet.pdf and
@@ -60,7 +60,9 @@ Usage:
                                    verifies first (--resolution) and writes
                                    nothing when a gouge, collision or travel
                                    limit is found (exit 3), unless --force,
-                                   which writes them into the sheet in red
+                                   which writes them into the sheet in red;
+                                   the sheet shows each step's stock in a
+                                   picture (drawn offscreen: needs a display)
   taiwa verify JOB [--resolution MM] [--json]
                                    cuts every step into the stock on a grid of
                                    MM (default 0.05) and prints each gouge,
@@ -251,6 +253,29 @@ int verifyJob(const Options& o)
     return r.fatal() ? kFindings : kOk;
 }
 
+// The sheet's pictures of the steps, drawn offscreen by the 3-D view's
+// renderer; without a display (or a build without the view) the sheet says
+// why there are none. At most kMaxPictures: a very large job's sheet stays
+// small and quick.
+constexpr int kMaxPictures = 200;
+void stepPicturesFor(const Plan& plan, ExportOptions& e)
+{
+    if (plan.steps.empty()) return;
+#ifdef TAIWA_WITH_RENDER
+    auto pictures = viz::stepPictures(plan, 320, 240, kMaxPictures);
+    if (!pictures) {
+        e.picturesNote = "No pictures: " + pictures.error() + ".";
+        return;
+    }
+    e.stepPictures = std::move(*pictures);
+    if (plan.steps.size() > e.stepPictures.size())
+        e.picturesNote = "Pictures of the first " + std::to_string(e.stepPictures.size()) + " of " +
+                         std::to_string(plan.steps.size()) + " steps.";
+#else
+    e.picturesNote = "No pictures: this build has no 3-D view.";
+#endif
+}
+
 int exportJob(const Options& o, int& argc, char** argv)
 {
     // A file size limit (ulimit -f) makes a write fail with EFBIG, which the
@@ -283,6 +308,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.units = o.units;
     e.jobFile = fileName(o.job);
     e.verificationFaults = faults;
+    if (o.pictures) stepPicturesFor(l.plan, e);
     const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
     if (!written) {
         std::cerr << "taiwa: export: " << written.error() << '\n';

@@ -68,10 +68,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
                                 a == "--size" || a == "--view" || a == "--material" || a == "--resolution";
-        if (a == "--stock" || a == "--json" || a == "--force") {
+        if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
             if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";
-            (a == "--stock" ? o.stock : a == "--json" ? o.json : o.force) = true;
+            if (a == "--no-pictures") o.pictures = false;
+            else (a == "--stock" ? o.stock : a == "--json" ? o.json : o.force) = true;
             continue;
         }
         if (!takesValue) return "unknown option '" + std::string(a) + "'";

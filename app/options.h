@@ -25,6 +25,7 @@ struct Options {
     double resolution = 0.05;         // --resolution (verify, export) [mm]
     bool json = false;                // --json (verify)
     bool force = false;               // --force (export): write a tape the verification finds fault with
+    bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)
 };
 
 // Fills `o`; returns a message naming the bad argument, or nothing.

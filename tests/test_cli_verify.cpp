@@ -82,6 +82,38 @@ private slots:
         QVERIFY(QFileInfo(QDir(out).filePath("wide.sheet.pdf")).size() > 0);
     }
 
+    // The sheet shows each step's stock in a picture, in the HTML inlined and
+    // in the PDF; without a display it says why there are none; none at all
+    // with --no-pictures.
+    void sheetHasAPictureOfEveryStep()
+    {
+        QTemporaryDir dir;
+        const QString job = sourcePath("resources/samples/m4-standard.taiwa");
+        const QString out = dir.filePath("pics");
+        const auto r = runTaiwa({"export", job, "--out", out, "--resolution", "0.25"});
+        QCOMPARE(r.exitCode, 0);
+        const std::string html = readFile(QDir(out).filePath("m4-standard.sheet.html"));
+        const json steps = json::parse(readFile(QDir(out).filePath("m4-standard.steps.json")));
+        const std::size_t n = steps["steps"].size();
+        QVERIFY(n >= 4);
+        std::size_t images = 0;
+        for (std::size_t at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1)) ++images;
+        if (qEnvironmentVariableIsEmpty("DISPLAY")) {
+            QCOMPARE(images, std::size_t{0});
+            QVERIFY(html.find("No pictures: ") != std::string::npos);
+        } else {
+            QCOMPARE(images, n);
+            QVERIFY(html.find("src=\"data:image/png;base64,iVBORw0KGgo") != std::string::npos);  // PNG's signature
+            QVERIFY(html.find("<figcaption>3. Floor finishing I, unit 1 Pocket A</figcaption>") != std::string::npos);
+        }
+        const auto bare = runTaiwa({"export", job, "--out", dir.filePath("bare"), "--resolution", "0.25", "--no-pictures"});
+        QCOMPARE(bare.exitCode, 0);
+        const std::string plain = readFile(QDir(dir.filePath("bare")).filePath("m4-standard.sheet.html"));
+        QVERIFY(plain.find("The steps in pictures") == std::string::npos);
+        QVERIFY(QFileInfo(QDir(out).filePath("m4-standard.sheet.pdf")).size() >
+                QFileInfo(QDir(dir.filePath("bare")).filePath("m4-standard.sheet.pdf")).size() + (images > 0 ? 10000 : -1000000));
+    }
+
     void optionsRefused()
     {
         const QString job = sourcePath("resources/samples/m4-standard.taiwa");
@@ -94,6 +126,7 @@ private slots:
         QVERIFY(force.err.contains("option --force does not go with this command"));
         QCOMPARE(runTaiwa({"check", job, "--json"}).exitCode, 2);
         QCOMPARE(runTaiwa({"verify"}).exitCode, 2);
+        QCOMPARE(runTaiwa({"verify", job, "--no-pictures"}).exitCode, 2);
     }
 
     void latheJobNotSimulated()

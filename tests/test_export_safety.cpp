@@ -52,10 +52,11 @@ QString sampleAs(const QString& dir, const QString& sample, const QString& as)
     return path;
 }
 
-// Verified on a coarse grid: the verification has tests of its own (test_verify).
+// Verified on a coarse grid and without the sheet's pictures: both have
+// tests of their own (test_verify, test_cli_verify).
 QStringList exportArgs(const QString& job, const QString& out)
 {
-    return {"export", job, "--out", out, "--resolution", "0.25"};
+    return {"export", job, "--out", out, "--resolution", "0.25", "--no-pictures"};
 }
 
 }  // namespace
@@ -181,7 +182,7 @@ private slots:
         const QStringList env{"TAIWA_TOOL_DB=" + db};
         const QString out = dir.filePath("out");
         for (const char* dialect : {"fanuc", "linuxcnc"}) {
-            const auto r = runTaiwa({"export", file, "--out", out, "--dialect", dialect, "--resolution", "0.25"}, env);
+            const auto r = runTaiwa({"export", file, "--out", out, "--dialect", dialect, "--resolution", "0.25", "--no-pictures"}, env);
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             const std::string nc = readFile(QDir(out).filePath("ctl.nc"));
             std::size_t percents = 0, from = 0;

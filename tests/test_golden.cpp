@@ -23,7 +23,8 @@ using namespace taiwa::test;
 namespace {
 // The export verifies each tape first; at its default 0.05 mm that is most
 // of an export's time, and the verification has tests of its own
-// (test_verify): the goldens are exported verified on a coarser grid.
+// (test_verify): the goldens are exported verified on a coarser grid, and
+// without the sheet's pictures (test_cli_verify draws those).
 const QString kVerifyCell = QStringLiteral("0.25");
 }  // namespace
 
@@ -56,7 +57,7 @@ private slots:
         QFETCH(QString, dialect);
         QTemporaryDir out;
         if (dialect == "turned") {
-            const auto r = runTaiwa({"export", job, "--out", out.path(), "--resolution", kVerifyCell});
+            const auto r = runTaiwa({"export", job, "--out", out.path(), "--resolution", kVerifyCell, "--no-pictures"});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             const QString stem = QFileInfo(job).completeBaseName();
             const auto steps = nlohmann::json::parse(readFile(QDir(out.path()).filePath(stem + ".steps.json")));
@@ -70,7 +71,7 @@ private slots:
             }
             return;
         }
-        const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect, "--resolution", kVerifyCell});
+        const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", dialect, "--resolution", kVerifyCell, "--no-pictures"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString stem = QFileInfo(job).completeBaseName();
         const auto written = QDir(out.path()).entryList({"*.nc", "*.mpf", "*.h"}, QDir::Files, QDir::Name);

@@ -64,10 +64,15 @@ private slots:
         w.setView(ViewPreset::Iso);
         img = w.grabImage().convertToFormat(QImage::Format_RGB32);
         if (!shots.isEmpty()) img.save(shots + "/preview-widget.png");
-        // The pocket floor, lit obliquely: darker than the palette, still green.
+        // The pocket floor, lit obliquely: darker than the palette; cut by
+        // the selected step, in its orange; with all steps, machined green.
         const auto floor = scene.toPixel({27.5, 40, -5}, kW, kH);
         const QRgb c = img.pixel(int(floor[0]), int(floor[1]));
-        QVERIFY2(qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10, qPrintable(QString::number(c, 16)));
+        QVERIFY2(qRed(c) > qGreen(c) + 30 && qGreen(c) > qBlue(c) + 30, qPrintable(QString::number(c, 16)));
+        w.setSelectedStep(-1);
+        img = w.grabImage().convertToFormat(QImage::Format_RGB32);
+        const QRgb g = img.pixel(int(floor[0]), int(floor[1]));
+        QVERIFY2(qGreen(g) > qRed(g) + 30 && qGreen(g) > qBlue(g) + 10, qPrintable(QString::number(g, 16)));
     }
 
     // An edit of the job (a new plan on the same stock) keeps the camera the

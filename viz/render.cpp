@@ -91,6 +91,50 @@ const std::optional<std::string>& OffscreenWindow::problem() const { return impl
 
 vtkRenderWindow* OffscreenWindow::window() const { return impl_->window; }
 
+namespace {
+
+// The window's picture as PNG bytes; empty when it cannot be encoded.
+std::string pngOf(vtkRenderWindow* window)
+{
+    auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+    grab->SetInput(window);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->WriteToMemoryOn();
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->Write();
+    vtkUnsignedCharArray* png = writer->GetResult();
+    if (writer->GetErrorCode() != 0 || !png || png->GetNumberOfValues() == 0) return {};
+    return std::string(reinterpret_cast<const char*>(png->GetPointer(0)), static_cast<std::size_t>(png->GetNumberOfValues()));
+}
+
+}  // namespace
+
+Result<std::vector<std::string>> stepPictures(const Plan& plan, int width, int height, int limit)
+{
+    std::vector<std::string> out;
+    const int n = std::min(static_cast<int>(plan.steps.size()), limit);
+    if (n <= 0) return out;
+    const OffscreenWindow offscreen(width, height);
+    if (offscreen.problem()) return Failure{*offscreen.problem()};
+    vtkRenderWindow* window = offscreen.window();
+    Scene scene;
+    scene.setPlan(std::make_shared<const Plan>(plan));
+    scene.setShowStock(true);
+    scene.setView(ViewPreset::Iso, static_cast<double>(width) / height);
+    window->AddRenderer(scene.renderer());
+    for (int k = 0; k < n; ++k) {
+        scene.setSelectedStep(k);
+        window->Render();
+        std::string png = pngOf(window);
+        if (png.empty()) return Failure{"cannot encode the picture of step " + std::to_string(k + 1)};
+        out.push_back(std::move(png));
+    }
+    return out;
+}
+
 Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::string& pngPath)
 {
     if (o.width < 16 || o.height < 16 || o.width > kMaxRenderSide || o.height > kMaxRenderSide)
@@ -115,19 +159,10 @@ Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::st
     window->AddRenderer(scene.renderer());
     window->Render();
 
-    auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->WriteToMemoryOn();  // written like every other file: whole, synced, renamed
-    writer->SetInputConnection(grab->GetOutputPort());
-    writer->Write();
-    vtkUnsignedCharArray* png = writer->GetResult();
-    if (writer->GetErrorCode() != 0 || !png || png->GetNumberOfValues() == 0) return Failure{"cannot encode " + pngPath};
-    return writeFileAtomically(pngPath, std::string_view(reinterpret_cast<const char*>(png->GetPointer(0)),
-                                                         static_cast<std::size_t>(png->GetNumberOfValues())));
+    // Written like every other file: whole, synced, renamed.
+    const std::string png = pngOf(window);
+    if (png.empty()) return Failure{"cannot encode " + pngPath};
+    return writeFileAtomically(pngPath, png);
 }
 
 }  // namespace taiwa::viz

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 class vtkRenderWindow;
 
@@ -29,6 +30,12 @@ struct RenderOptions {
 constexpr int kMaxRenderSide = 4096;
 
 Result<void> renderToPng(const Plan& plan, const RenderOptions& options, const std::string& pngPath);
+
+// The instruction sheet's pictures: the stock after each step with the
+// step's path and tool (iso view, width x height pixels), PNG bytes per
+// step for the first `limit` steps, drawn one after the other in one
+// offscreen window. The error when there is no display to draw on.
+Result<std::vector<std::string>> stepPictures(const Plan& plan, int width, int height, int limit);
 
 // An offscreen render window on a connection to the X display of its own,
 // closed after the window: VTK opens no connection itself, so none is left

@@ -224,6 +224,8 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.jobFile = options.jobFile;
     sheet.programNumber = options.programNumber;
     sheet.faults = options.verificationFaults;
+    sheet.stepPictures = options.stepPictures;
+    sheet.picturesNote = options.picturesNote;
     auto pdf = sheetPdf(plan, sheet);
     if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
 

@@ -21,6 +21,10 @@ struct ExportOptions {
     // What the verification found wrong with a tape written anyway (taiwa
     // export --force), one sentence each: the sheet shows them in red.
     std::vector<std::string> verificationFaults;
+    // The sheet's pictures of the steps (viz::stepPictures, made by the
+    // caller: the core draws nothing) and why some are missing.
+    std::vector<std::string> stepPictures;
+    std::string picturesNote;
 };
 
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in

@@ -8,6 +8,7 @@
 #include "sheet/sheet_content.h"
 
 #include <QBuffer>
+#include <QImage>
 #include <QFile>
 #include <QFontMetricsF>
 #include <QGuiApplication>
@@ -118,6 +119,30 @@ public:
         y_ += line_;
     }
 
+    // The pictures four to a row, each with its caption under it; a row
+    // that does not fit goes on the next page.
+    void pictures(const std::vector<sheet::Content::Picture>& pics)
+    {
+        constexpr int kPerRow = 4;
+        const double gap = line_ * 0.5;
+        const double w = (area_.width() - gap * (kPerRow - 1)) / kPerRow, h = w * 0.75;
+        for (std::size_t i = 0; i < pics.size(); ++i) {
+            const int col = static_cast<int>(i % kPerRow);
+            if (col == 0) {
+                if (i > 0) y_ += h + line_ + gap;
+                ensure(h + line_);
+            }
+            const QRectF box(col * (w + gap), y_, w, h);
+            const QImage image = QImage::fromData(reinterpret_cast<const uchar*>(pics[i].png.data()),
+                                                  static_cast<int>(pics[i].png.size()), "PNG");
+            if (!image.isNull()) p_.drawImage(box, image);
+            p_.drawRect(box);
+            p_.drawText(QRectF(box.left(), box.bottom(), w, line_), Qt::AlignLeft | Qt::AlignVCenter,
+                        elide(q(pics[i].caption), w));
+        }
+        if (!pics.empty()) y_ += h + line_ + gap;
+    }
+
     void finish() { footer(); }
 
 private:
@@ -210,6 +235,11 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     }
     page.heading("Process steps");
     page.table(c.steps);
+    if (!c.pictures.empty() || !c.picturesNote.empty()) {
+        page.heading("The steps in pictures");
+        if (!c.picturesNote.empty()) page.paragraph(c.picturesNote);
+        page.pictures(c.pictures);
+    }
     page.heading("Tools");
     page.table(c.tools);
     if (!c.latheTools.rows.empty()) {

@@ -22,6 +22,11 @@ struct SheetOptions {
     // What the verification found wrong with a tape written anyway (taiwa
     // export --force): shown first, in red.
     std::vector<std::string> faults;
+    // Pictures of the stock after each step (PNG bytes, in step order; the
+    // steps past the last have none), and when there are none or too few,
+    // why (no display to draw on, a job too large).
+    std::vector<std::string> stepPictures;
+    std::string picturesNote;
 };
 
 // A self-contained HTML document (inline CSS, no external resources).

@@ -193,7 +193,7 @@ Content content(const Plan& plan, const SheetOptions& o)
                        "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min",
                        "Machine min"};
     c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true, true};
-    c.steps.widths = {3, 3, 5.3, 14.7, 2.6, 2.6, 17, 5, 6, 5.5, 5.5, 5, 5, 6, 4, 5.5};
+    c.steps.widths = {3, 3.5, 5.3, 13.5, 2.6, 2.6, 15, 5, 6, 5.5, 5.5, 5, 5, 7, 4, 6.5};
     // A turning step's speed: constant surface speed with its spindle
     // limit, or the drill's rpm; its feed per revolution.
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
@@ -218,6 +218,8 @@ Content content(const Plan& plan, const SheetOptions& o)
         std::string unit = std::to_string(s.unit + 1);
         if (s.unit >= 0 && static_cast<std::size_t>(s.unit) < job.units.size() && !job.units[s.unit].name.empty())
             unit += " " + job.units[static_cast<std::size_t>(s.unit)].name;
+        if (i < o.stepPictures.size() && !o.stepPictures[i].empty())
+            c.pictures.push_back({fmt::format("{}. {}, unit {}", i + 1, s.label(), unit), o.stepPictures[i]});
         c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
                                 speedText(s, sf), feedText(s, sf), s.turn ? "-" : len(s.startDepth),
@@ -251,6 +253,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     }
     c.notes = plan.notes();
     c.faults = o.faults;
+    c.picturesNote = o.picturesNote;
     if (std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return !s.cutting.empty(); }))
         c.notes.push_back("* S or F set by the operator for the step, in place of the tool's cutting data.");
     double cutting = 0.0;

@@ -30,6 +30,12 @@ struct Content {
     Table latheTools;  // lathe jobs: each tool's turret station, insert or blade, nose radius and tip orientation
     std::vector<std::string> notes;
     std::vector<std::string> faults;  // the verification's, for a tape written anyway (red, before the steps)
+    struct Picture {
+        std::string caption;  // "3. Roughing I, unit 1 Locator pocket"
+        std::string png;      // PNG bytes
+    };
+    std::vector<Picture> pictures;  // the steps', in order
+    std::string picturesNote;       // why there are none or too few
     std::string total;
 };
 

@@ -7,6 +7,29 @@ namespace taiwa {
 
 namespace {
 
+// RFC 4648 base64, for the pictures inlined as data: URLs.
+std::string base64(const std::string& bytes)
+{
+    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 | static_cast<unsigned char>(bytes[i + 1]) << 8 |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        for (int s = 18; s >= 0; s -= 6) out += kAlphabet[(v >> s) & 63];
+    }
+    if (i < bytes.size()) {
+        unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+        out += kAlphabet[(v >> 18) & 63];
+        out += kAlphabet[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
 std::string escape(const std::string& s)
 {
     std::string out;
@@ -33,6 +56,10 @@ table { border-collapse: collapse; }
 th, td { border: 1px solid #555; padding: 2pt 4pt; }
 th { background: #ddd; text-align: left; }
 .fault { color: #c00000; }
+.pictures { display: flex; flex-wrap: wrap; gap: 6pt; }
+.pictures figure { margin: 0; width: 240px; }
+.pictures img { width: 240px; height: 180px; border: 1px solid #555; }
+.pictures figcaption { font-size: 8pt; }
 td.n { text-align: right; }
 table.head td { border: none; padding: 1pt 8pt 1pt 0; }
 )css";
@@ -71,7 +98,17 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
     if (!c.workCentre.rows.empty()) h += "<h2>Work centre</h2>\n" + table(c.workCentre);
     if (!c.allowances.rows.empty())
         h += "<h2>Grinding allowances</h2>\n" + table(c.allowances) + "<h2>Turned profile as cut</h2>\n" + table(c.turned);
-    h += "<h2>Process steps</h2>\n" + table(c.steps) + "<h2>Tools</h2>\n" + table(c.tools);
+    h += "<h2>Process steps</h2>\n" + table(c.steps);
+    if (!c.pictures.empty() || !c.picturesNote.empty()) {
+        h += "<h2>The steps in pictures</h2>\n";
+        if (!c.picturesNote.empty()) h += "<p>" + escape(c.picturesNote) + "</p>\n";
+        h += "<div class=\"pictures\">";
+        for (const auto& p : c.pictures)
+            h += "<figure><img alt=\"" + escape(p.caption) + "\" src=\"data:image/png;base64," + base64(p.png) +
+                 "\"><figcaption>" + escape(p.caption) + "</figcaption></figure>";
+        h += "</div>\n";
+    }
+    h += "<h2>Tools</h2>\n" + table(c.tools);
     if (!c.latheTools.rows.empty()) h += "<h2>Turret</h2>\n" + table(c.latheTools);
     if (!c.notes.empty()) {
         h += "<h2>Notes</h2>\n<ul>";
