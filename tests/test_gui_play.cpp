@@ -4,6 +4,7 @@
 // block, then the next step's first; another step chosen ends it. The
 // preview's side (the stock cut to the block, the tool at its end) is
 // test_render_scene's selectedStepCutInItsColourAndPlayedByBlock.
+#include "support/station_fixture.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/nc_view.h"
@@ -33,11 +34,7 @@ private slots:
     void playsTheBlocksOfTheSelectedStep()
     {
         StationWindow w;
-        w.show();
-        QVERIFY(w.fileActions()->openPath(test::sourcePath("resources/samples/m4-standard.taiwa")));
-        w.planRunner()->flush();
-        QTRY_VERIFY(!w.planRunner()->isBusy());
-        QCoreApplication::sendPostedEvents();
+        QVERIFY(test::showSettled(w, "resources/samples/m4-standard.taiwa"));
         StepPanel* p = w.stepPanel();
         const auto plan = w.planRunner()->fullPlan();
         QVERIFY(plan && plan->steps.size() >= 3);
@@ -97,11 +94,7 @@ private slots:
     void withoutAStepPlaysTheSteps()
     {
         StationWindow w;
-        w.show();
-        QVERIFY(w.fileActions()->openPath(test::sourcePath("resources/samples/m4-standard.taiwa")));
-        w.planRunner()->flush();
-        QTRY_VERIFY(!w.planRunner()->isBusy());
-        QCoreApplication::sendPostedEvents();
+        QVERIFY(test::showSettled(w, "resources/samples/m4-standard.taiwa"));
         StepPanel* p = w.stepPanel();
         p->selectStep(-1);
         p->setPlayInterval(20);

@@ -10,6 +10,7 @@
 // docs/screenshots/station-turning.png (the sample lathe-shaft-grinding).
 #include "modules/registry.h"
 #include "support/gui_fields.h"
+#include "support/station_fixture.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -36,6 +37,7 @@
 using namespace taiwa;
 using namespace taiwa::ui;
 using taiwa::test::GuiFields;
+using taiwa::test::settle;
 
 namespace {
 
@@ -43,13 +45,6 @@ const turning::TurnedProfile& profileOf(StationWindow& w, int unit = 0)
 {
     const ModuleInput& m = w.document()->job().units[static_cast<std::size_t>(unit)].module;
     return *moduleKind(m).turnedProfile(m);
-}
-
-void settle(StationWindow& w)
-{
-    w.planRunner()->flush();
-    QTRY_VERIFY(!w.planRunner()->isBusy());
-    QCoreApplication::sendPostedEvents();
 }
 
 // Types into a table cell with the keyboard as an operator does: the cell's

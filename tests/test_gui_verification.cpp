@@ -5,6 +5,7 @@
 // makes the list stale; a result that arrives for a plan replaced
 // meanwhile is dropped.
 #include "support/hand_plan.h"
+#include "support/station_fixture.h"
 #include "support/support.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -29,13 +30,6 @@ using namespace taiwa::ui;
 
 namespace {
 
-void settle(StationWindow& w)
-{
-    w.planRunner()->flush();
-    QTRY_VERIFY(!w.planRunner()->isBusy());
-    QCoreApplication::sendPostedEvents();
-}
-
 QString summary(VerificationPanel* p) { return p->findChild<QLabel*>("verify.summary")->text(); }
 
 }  // namespace
@@ -54,9 +48,7 @@ private slots:
     void sampleVerifiesCleanWithTheButton()
     {
         StationWindow w;
-        w.show();
-        QVERIFY(w.fileActions()->openPath(test::sourcePath("resources/samples/m4-standard.taiwa")));
-        settle(w);
+        QVERIFY(test::showSettled(w, "resources/samples/m4-standard.taiwa"));
         VerificationPanel* v = w.verificationPanel();
         QCOMPARE(summary(v), QString("Not verified since the last change."));
         auto* run = v->findChild<QPushButton*>("verify.run");
@@ -83,7 +75,7 @@ private slots:
         StationWindow w;
         w.show();
         QVERIFY(w.fileActions()->openPath(path));
-        settle(w);
+        test::settle(w);
         VerificationPanel* v = w.verificationPanel();
         v->verifyNow();
         QCOMPARE(v->list()->count(), 1);
@@ -95,7 +87,7 @@ private slots:
         Job edited = w.document()->job();
         edited.units.pop_back();
         w.document()->edit(edited, "drop the far pocket");
-        settle(w);
+        test::settle(w);
         QCOMPARE(v->list()->count(), 0);
         QCOMPARE(summary(v), QString("Not verified since the last change."));
     }
@@ -106,9 +98,7 @@ private slots:
     void chosenFindingSelectsStepAndBlock()
     {
         StationWindow w;
-        w.show();
-        QVERIFY(w.fileActions()->openPath(test::sourcePath("resources/samples/m4-standard.taiwa")));
-        settle(w);
+        QVERIFY(test::showSettled(w, "resources/samples/m4-standard.taiwa"));
         auto plan = std::make_shared<Plan>(*w.planRunner()->fullPlan());
         int floor = -1;
         for (std::size_t i = 0; i < plan->steps.size(); ++i)

@@ -12,6 +12,22 @@
 
 namespace taiwa::ui {
 
+namespace {
+
+// The plan verified; a verification that cannot run says why in `skipped`.
+verify::Report reportOf(const Plan& plan)
+{
+    try {
+        return verify::verifyPlan(plan);
+    } catch (const std::exception& e) {
+        verify::Report r;
+        r.skipped = e.what();
+        return r;
+    }
+}
+
+}  // namespace
+
 VerificationPanel::VerificationPanel(QWidget* parent)
     : QWidget(parent), run_(new QPushButton(tr("&Verify"), this)), summary_(new QLabel(this)), list_(new QListWidget(this))
 {
@@ -57,12 +73,7 @@ void VerificationPanel::verify()
     run_->setEnabled(false);
     summary_->setText(tr("Verifying…"));
     pool_.start([this, generation = generation_, plan = plan_] {
-        verify::Report r;
-        try {
-            r = verify::verifyPlan(*plan);
-        } catch (const std::exception& e) {
-            r.skipped = e.what();
-        }
+        const verify::Report r = reportOf(*plan);
         QMetaObject::invokeMethod(this, [this, generation, plan, r] { show(generation, plan, r); }, Qt::QueuedConnection);
     });
 }
@@ -70,14 +81,8 @@ void VerificationPanel::verify()
 void VerificationPanel::verifyNow()
 {
     if (!plan_) return;
-    verify::Report r;
-    try {
-        r = verify::verifyPlan(*plan_);
-    } catch (const std::exception& e) {
-        r.skipped = e.what();
-    }
     busy_ = true;
-    show(generation_, plan_, r);
+    show(generation_, plan_, reportOf(*plan_));
 }
 
 void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r)
