@@ -120,6 +120,8 @@ private slots:
             Tool t = defaultToolLibrary()[5];
             t.id = 0;
             t.name = "Drill 5 mm, regrind";
+            t.holderDiameter = 42;  // the holder's nose, measured
+            t.holderLength = 35;
             const auto id = lib->save(t);
             QVERIFY(id && *id > 60);
             QVERIFY(lib->remove(21));
@@ -137,6 +139,9 @@ private slots:
         QCOMPARE(t27->usedMinutes, 12.5);
         QCOMPARE(tools->back().name, std::string("Drill 5 mm, regrind"));
         QCOMPARE(tools->back().cutting, defaultToolLibrary()[5].cutting);
+        QCOMPARE(tools->back().holderDiameter, 42.0);
+        QCOMPARE(tools->back().holderLength, 35.0);
+        QCOMPARE(t27->holderDiameter, 0.0);  // the default library's: read from the holder's name
     }
 
     void badFilesAreReportedAndLeftAlone_data()
@@ -190,6 +195,8 @@ private slots:
                                          << ": tool T27 (Flat end mill 10 mm carbide): cutting speed for pom 0 m/min must be greater than zero";
         QTest::newRow("negative feed") << "UPDATE cutting_data SET feed_per_tooth = -0.05 WHERE tool_id = 27 AND material = 'pom'"
                                        << ": tool T27 (Flat end mill 10 mm carbide): feed per tooth for pom -0.05 mm must be greater than zero";
+        QTest::newRow("holder narrower than the tool") << "UPDATE tools SET holder_diameter = 6 WHERE id = 27"
+                                                       << ": tool T27 (Flat end mill 10 mm carbide): holder Ø 6 mm is narrower than the tool (Ø 10 mm)";
     }
     void impossibleToolValuesAreNamed()
     {
@@ -248,7 +255,7 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 4);
+        QCOMPARE(sqlite3_column_int(version, 0), 5);
         sqlite3_finalize(version);
         sqlite3_close(db);
     }

@@ -5,6 +5,7 @@
 // sample's paths.
 #include "modules/m4/m4.h"
 #include "post/post.h"
+#include "tools/holder_shape.h"
 #include "support/hand_plan.h"
 #include "support/support.h"
 #include "verify/verify.h"
@@ -222,6 +223,14 @@ private slots:
         QVERIFY(shortHolder.fatal());
         const Report longHolder = withTool(55, 70);  // (flutes past the depth: no shank in stock)
         QVERIFY2(longHolder.findings.empty(), kinds(longHolder, Plan{}).c_str());
+
+        // The library's own holder measure before the name's rule: a Ø10
+        // nose on the same short stick-out keeps clear of the walls.
+        Tool slim = endMill(1, ToolType::FlatEndMill, 10, 44, 45);
+        slim.holderDiameter = 10;
+        QCOMPARE(tools::holderShape(slim).noseDiameter, 10.0);
+        QCOMPARE(tools::holderShape(endMill(1, ToolType::FlatEndMill, 10, 44, 45)).noseDiameter, 24.0);  // shrink-fit, Ø10 shank
+        QCOMPARE(verifyPlan(planOf(25, 35, 75, 50, 5, 50, slim, p, StepKind::Roughing, 60)).count(FindingKind::Collision), 0);
 
         ToolPath plunge = line({50, 42, -30}, {50, 42, -30});
         const Report shortFlutes = verifyPlan(

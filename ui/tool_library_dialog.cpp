@@ -62,7 +62,7 @@ ToolLibraryDialog::ToolLibraryDialog(QWidget* parent)
     table_->setObjectName("tools");
     table_->setColumnCount(ColumnCount);
     table_->setHorizontalHeaderLabels({tr("T"), tr("Name"), tr("Type"), tr("Ø mm"), tr("Corner r"), tr("Taper °"),
-                                       tr("Flutes"), tr("Flute mm"), tr("Stick-out mm"), tr("Holder"), tr("Life min"),
+                                       tr("Flutes"), tr("Flute mm"), tr("Stick-out mm"), tr("Holder"), tr("Holder Ø mm"), tr("Life min"),
                                        tr("Used min")});
     table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                             QAbstractItemView::AnyKeyPressed);
@@ -132,6 +132,7 @@ void ToolLibraryDialog::load(bool keepStatus)
                                 num(t.fluteLength),
                                 num(t.stickout),
                                 QString::fromStdString(t.holder),
+                                num(t.holderDiameter),
                                 num(t.lifeMinutes),
                                 num(t.usedMinutes)};
         for (int c = 0; c < cells.size(); ++c) {
@@ -227,6 +228,7 @@ void ToolLibraryDialog::onItemChanged(QTableWidgetItem* item)
     case Taper: ok = number.has_value(), after.taperAngle = number.value_or(0); break;
     case FluteLength: ok = number.has_value(), after.fluteLength = number.value_or(0); break;
     case Stickout: ok = number.has_value(), after.stickout = number.value_or(0); break;
+    case HolderDiameter: ok = number.has_value(), after.holderDiameter = number.value_or(0); break;
     case Life: ok = number.has_value(), after.lifeMinutes = number.value_or(0); break;
     case Flutes:
         ok = number && *number == std::floor(*number) && std::abs(*number) < 1000;

@@ -27,7 +27,7 @@ namespace taiwa::ui {
 class ToolLibraryDialog : public QDialog {
     Q_OBJECT
 public:
-    enum Column { Id, Name, Type, Diameter, Corner, Taper, Flutes, FluteLength, Stickout, Holder, Life, Used, ColumnCount };
+    enum Column { Id, Name, Type, Diameter, Corner, Taper, Flutes, FluteLength, Stickout, Holder, HolderDiameter, Life, Used, ColumnCount };
 
     explicit ToolLibraryDialog(QWidget* parent = nullptr);
     QTableWidget* table() const { return table_; }

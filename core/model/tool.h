@@ -62,6 +62,11 @@ struct Tool {
     double fluteLength = 0.0;    // [mm]
     double stickout = 0.0;       // length out of the holder [mm]
     std::string holder;
+    // The holder's nose (collet nut, shrink-fit sleeve) the verification
+    // keeps clear of the stock [mm]; 0: read from the holder's name
+    // (tools/holder_shape.h).
+    double holderDiameter = 0.0;
+    double holderLength = 0.0;
     int flutes = 2;
     bool centreCutting = true;   // end mills: can ramp or plunge into solid material (face mills cannot)
     double lifeMinutes = 0.0;    // cutting time a fresh tool lasts

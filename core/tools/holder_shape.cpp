@@ -38,6 +38,12 @@ HolderShape holderShape(const Tool& tool)
     HolderShape h;
     const double d = tool.diameter;
     h.shankDiameter = d;
+    if (tool.holderDiameter > 0) {  // the library's own measure first
+        h.noseDiameter = tool.holderDiameter;
+        h.noseLength = tool.holderLength > 0 ? tool.holderLength : 50;
+        h.known = true;
+        return h;
+    }
     const std::string name = lower(tool.holder);
     constexpr std::pair<const char*, double> kColletNuts[] = {{"er11", 19}, {"er16", 28}, {"er20", 34},
                                                                {"er25", 42}, {"er32", 50}, {"er40", 63}};

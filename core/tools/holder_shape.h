@@ -1,11 +1,11 @@
 // The shapes above a milling tool's flutes that must not touch the stock:
 // the shank (the tool's own body between the flutes and the holder) and the
 // holder's nose (collet nut, shrink-fit sleeve, side-lock body), each as a
-// cylinder, for the verification's collision check (verify/). The library
-// keeps a holder's name; its nose is read from the name by the rules of
-// docs/verification.md, and a name the rules do not know gets a nose wide
-// enough to hold any such holder (so a collision is never missed for
-// want of data).
+// cylinder, for the verification's collision check (verify/). The library's
+// holder diameter and length when it has them; else the nose is read from
+// the holder's name by the rules of docs/verification.md, and a name the
+// rules do not know gets a nose wide enough to hold any such holder (so a
+// collision is never missed for want of data).
 #pragma once
 
 #include "model/tool.h"

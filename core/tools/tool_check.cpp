@@ -28,6 +28,12 @@ std::vector<ToolProblem> toolProblems(const Tool& t)
         bad("taperAngle", fmt::format("taper {:g}° per side must be 0 to less than 45°", t.taperAngle));
     if (!(t.fluteLength >= 0) || !finite(t.fluteLength))
         bad("fluteLength", fmt::format("flute length {:g} mm must not be negative", t.fluteLength));
+    if (!(t.holderDiameter >= 0) || !finite(t.holderDiameter))
+        bad("holderDiameter", fmt::format("holder Ø {:g} mm must not be negative", t.holderDiameter));
+    else if (t.holderDiameter > 0 && t.holderDiameter + 1e-9 < t.diameter)
+        bad("holderDiameter", fmt::format("holder Ø {:g} mm is narrower than the tool (Ø {:g} mm)", t.holderDiameter, t.diameter));
+    if (!(t.holderLength >= 0) || !finite(t.holderLength))
+        bad("holderLength", fmt::format("holder length {:g} mm must not be negative", t.holderLength));
     if (!(t.stickout >= 0) || !finite(t.stickout))
         bad("stickout", fmt::format("stick-out {:g} mm must not be negative", t.stickout));
     else if (t.stickout > 0 && t.stickout + 1e-9 < t.fluteLength)

@@ -19,7 +19,7 @@ namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 4;
+constexpr int kSchemaVersion = 5;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -28,12 +28,13 @@ CREATE TABLE tools (
   corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
   flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
   flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0,
-  centre_cutting INTEGER NOT NULL DEFAULT 1, turning TEXT NOT NULL DEFAULT '');
+  centre_cutting INTEGER NOT NULL DEFAULT 1, turning TEXT NOT NULL DEFAULT '',
+  holder_diameter REAL NOT NULL DEFAULT 0, holder_length REAL NOT NULL DEFAULT 0);
 CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 4;
+PRAGMA user_version = 5;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
@@ -49,6 +50,10 @@ constexpr const char* kMigrations[] = {
     // `turning`); the default lathe tools are added after it where their ids
     // are free (addLatheTools).
     "ALTER TABLE tools ADD COLUMN turning TEXT NOT NULL DEFAULT ''; PRAGMA user_version = 4;",
+    // 4 -> 5: the holder's nose, for the verification's collision check (0:
+    // read from the holder's name, as before).
+    "ALTER TABLE tools ADD COLUMN holder_diameter REAL NOT NULL DEFAULT 0; "
+    "ALTER TABLE tools ADD COLUMN holder_length REAL NOT NULL DEFAULT 0; PRAGMA user_version = 5;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
@@ -145,8 +150,8 @@ std::optional<TurningSpec> turningFrom(const std::string& text)
 bool insert(sqlite3* db, const Tool& t)
 {
     Statement s(db, "INSERT OR REPLACE INTO tools (id, name, type, diameter, corner_radius, taper_angle, point_angle, "
-                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting, turning) "
-                    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting, turning, "
+                    "holder_diameter, holder_length) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
     if (!s.ok()) return false;
     s.bind(1, t.id);
     s.bind(2, t.name);
@@ -163,6 +168,8 @@ bool insert(sqlite3* db, const Tool& t)
     s.bind(13, t.usedMinutes);
     s.bind(14, t.centreCutting ? 1 : 0);
     s.bind(15, turningText(t.turning));
+    s.bind(16, t.holderDiameter);
+    s.bind(17, t.holderLength);
     if (s.step() != SQLITE_DONE) return false;
     Statement del(db, "DELETE FROM cutting_data WHERE tool_id = ?");
     del.bind(1, t.id);
@@ -251,7 +258,8 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
 {
     sqlite3* db = db_->handle;
     Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
-                    "holder, flutes, life_minutes, used_minutes, centre_cutting, turning FROM tools ORDER BY id");
+                    "holder, flutes, life_minutes, used_minutes, centre_cutting, turning, holder_diameter, holder_length "
+                    "FROM tools ORDER BY id");
     if (!s.ok()) {
         return Failure{describe(db, path_)};
     }
@@ -280,6 +288,8 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         const auto turning = turningFrom(s.text(14));
         if (!turning) return Failure{path_ + ": tool " + std::to_string(t.id) + " has unreadable lathe data '" + s.text(14) + "'"};
         t.turning = *turning;
+        t.holderDiameter = s.real(15);
+        t.holderLength = s.real(16);
         out.push_back(std::move(t));
     }
     if (rc != SQLITE_DONE) {

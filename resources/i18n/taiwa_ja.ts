@@ -894,6 +894,10 @@
             <translation>ホルダ</translation>
         </message>
         <message>
+            <source>Holder Ø mm</source>
+            <translation>ホルダ Ø mm</translation>
+        </message>
+        <message>
             <source>Life min</source>
             <translation>寿命 分</translation>
         </message>

@@ -894,6 +894,10 @@
             <translation>刀柄</translation>
         </message>
         <message>
+            <source>Holder Ø mm</source>
+            <translation>刀柄 Ø mm</translation>
+        </message>
+        <message>
             <source>Life min</source>
             <translation>寿命 分钟</translation>
         </message>
