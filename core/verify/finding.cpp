@@ -53,7 +53,10 @@ std::string describe(const Finding& f, const Plan& plan)
     const LengthUnit u = plan.job.lengthUnit;
     const int digits = u == LengthUnit::Inch ? 4 : 3;
     const auto len = [&](double mm) { return fmt::format("{:.{}f} {}", fromMm(mm, u), digits, unitSymbol(u)); };
+    // A lathe's position is X (a diameter) and Z, as its tape writes them.
+    const bool lathe = plan.mmJob.bar.has_value();
     const auto at = [&](Point3 p) {
+        if (lathe) return fmt::format("X{:.{}f} Z{:.{}f}", fromMm(p.x, u), digits, fromMm(p.z, u), digits);
         return fmt::format("X{:.{}f} Y{:.{}f} Z{:.{}f}", fromMm(p.x, u), digits, fromMm(p.y, u), digits, fromMm(p.z, u),
                            digits);
     };
@@ -67,7 +70,8 @@ std::string describe(const Finding& f, const Plan& plan)
     std::string what;
     switch (f.kind) {
     case FindingKind::Gouge:
-        what = fmt::format("gouge {} deep into the finished part at {}, over {:.3f} mm²", len(f.size), at(f.position), f.area);
+        what = fmt::format("gouge {} deep into the finished part at {}, over {:.3f} mm²{}", len(f.size), at(f.position),
+                           f.area, lathe ? " of the half-section" : "");
         break;
     case FindingKind::Collision:
         what = fmt::format("the tool's {} runs {} into stock at {}", f.part, len(f.size), at(f.position));
@@ -80,8 +84,11 @@ std::string describe(const Finding& f, const Plan& plan)
                            plan.job.machine);
         break;
     case FindingKind::RestMaterial:
-        what = fmt::format("material left up to {} above what it should leave, highest at {}, over {:.3f} mm²", len(f.size),
-                           at(f.position), f.area);
+        what = lathe ? fmt::format("material left up to {} thicker than it should leave, thickest at {}, "
+                                   "over {:.3f} mm² of the half-section",
+                                   len(f.size), at(f.position), f.area)
+                     : fmt::format("material left up to {} above what it should leave, highest at {}, over {:.3f} mm²",
+                                   len(f.size), at(f.position), f.area);
         break;
     }
     std::string block;

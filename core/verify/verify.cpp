@@ -4,7 +4,9 @@
 // and at the end (material left). The grid is cut in bands of rows, one per
 // core: each band runs every move in order over its own rows, so the order
 // of the cuts (which a rapid into stock depends on) is kept without locks.
+// A lathe job is cut into its bar's half-section instead (verify_turning.h).
 #include "verify/verify.h"
+#include "verify/verify_turning.h"
 
 #include "machine/machine.h"
 #include "modules/registry.h"
@@ -414,12 +416,7 @@ Report verifyPlan(const Plan& plan, const Options& options)
 {
     if (!(options.resolution >= kFinestResolution) || !std::isfinite(options.resolution))
         throw std::invalid_argument("the resolution must be at least " + std::to_string(kFinestResolution) + " mm");
-    if (plan.mmJob.bar) {
-        Report r;
-        r.resolution = options.resolution;
-        r.skipped = "a lathe job is not simulated yet: its paths are proved by the rs274 turning oracle of the tests only";
-        return r;
-    }
+    if (plan.mmJob.bar) return verifyTurning(plan, options);
     const Stock& s = plan.mmJob.stock;
     const double cells = std::ceil(s.width / options.resolution) * std::ceil(s.length / options.resolution);
     if (cells > kMaxCells)

@@ -1,6 +1,7 @@
 // Verification by simulation: every step's path cut into the stock with the
 // tool's real shape, on a height field finer than the preview's (default
-// 0.05 mm), and what a verifier finds on the way: gouges into the finished
+// 0.05 mm) for a milling job, on the bar's exact half-section for a lathe
+// job (the insert's outline; verify_turning.h), and what a verifier finds on the way: gouges into the finished
 // part (the job's geometry, model/cavity.h, not the paths), material left
 // where a step was meant to clear it, rapids into stock, the shank or the
 // holder running into stock, and paths longer than the machine's travel.
@@ -31,9 +32,15 @@ struct Finding {
     int step = -1;      // index into plan.steps (machining order); -1: the whole job
     int move = -1;      // index into the step's path; -1: the step as a whole
     int line = 0;       // 1-based line of the tape where the move is written; 0: not placed (placeOnTape)
-    Point3 position{};  // the worst point: a cell's centre and its height after the move [mm]
-    double size = 0.0;  // gouge depth, height of material, depth of the rapid into stock, overlap, excess [mm]
-    double area = 0.0;  // rest material and gouges: the plan-view area of the cells found [mm²]
+    // The worst point [mm]: milling, a cell's centre and its height after
+    // the move; a lathe job, {x: the diameter (as the tape writes X), y: 0, z}.
+    Point3 position{};
+    // Gouge depth, height of material (lathe: its thickness), depth of the
+    // rapid into stock, overlap, excess [mm].
+    double size = 0.0;
+    // Rest material and gouges: the plan-view area of the cells found
+    // (lathe: the area of the half-section) [mm²].
+    double area = 0.0;
     std::string part;   // collisions: "shank" or "holder"; travel limits: the axis "x", "y", "z"
     // A gouge, a collision (a rapid into stock is one, at rapid speed) or a
     // travel limit: the tape must not run. Material left is reported only.
@@ -42,19 +49,26 @@ struct Finding {
 };
 
 struct Options {
-    double resolution = 0.05;  // the cell size [mm]
-    unsigned threads = 0;      // 0: every core
+    // The cell size [mm]; a lathe job: arcs and the nose flattened within a
+    // tenth of it, outlines sampled at it, a gouge deeper than 1 µm and it.
+    double resolution = 0.05;
+    unsigned threads = 0;      // 0: every core (a lathe job runs on one: it takes milliseconds)
 };
 
 struct Report {
     std::vector<Finding> findings;  // by step, then kind, then move
     double resolution = 0.0;        // the cell size used
-    int columns = 0, rows = 0;      // of the height field
-    std::vector<double> removed;    // per step: the volume it cut [mm³]
-    double cellVisits = 0.0;        // cells the tool's shapes were swept over (the benchmark's count)
-    sim::HeightField stock;         // after the last step
-    // Not every job is simulated: a lathe job is not yet (then `skipped`
-    // says why and there are no findings).
+    int columns = 0, rows = 0;      // of the height field (0 for a lathe job)
+    // Per step: the volume it cut [mm³] (lathe: the half-section it took
+    // off, turned about the axis).
+    std::vector<double> removed;
+    double cellVisits = 0.0;        // cells the tool's shapes were swept over (the benchmark's count; 0 on a lathe)
+    sim::HeightField stock;         // after the last step (empty for a lathe job)
+    // A lathe job: the bar's half-section after the last step, closed loops
+    // in (z, r), holes clockwise.
+    std::vector<std::vector<turning::ZR>> section;
+    // Not every job is simulated: a lathe job without a turning step is
+    // not (then `skipped` says why and there are no findings).
     std::string skipped;
     bool fatal() const;
     int count(FindingKind k) const;
@@ -76,7 +90,7 @@ void placeOnTape(Report& report, const PostedProgram& program);
 
 // One finding in words, lengths in the job's unit: "step 3 (Roughing II,
 // unit 2): gouge 0.520 mm deep at X12.300 Y4.100 Z-10.520, move 57, tape
-// line 312".
+// line 312"; on a lathe "at X24.600 Z-10.520", X a diameter.
 std::string describe(const Finding& f, const Plan& plan);
 
 }  // namespace taiwa::verify

@@ -1,0 +1,586 @@
+// The verifying simulation of a lathe job (verify_turning.h): the bar's
+// half-section in (z, r) as polygons on the core's 0.1 µm grid (Clipper),
+// every move of every step taking off what its tool's outline sweeps (an
+// insert's nose and the edge above it, a blade's rectangle, a drill's body;
+// along the finishing contour the nose runs where the control's
+// compensation puts it), and the checks on the way: a feed or an arc whose
+// tool enters its unit's finished part (a gouge), a rapid whose tool meets
+// stock still there, material left after roughing and after a unit's
+// finishing, the machine's travel. Arcs are flattened and the nose drawn
+// within a tenth of the resolution; outlines are sampled at the resolution.
+#include "verify/verify_turning.h"
+
+#include "machine/machine.h"
+#include "model/turned_geometry.h"
+#include "sim/turned_clipper.h"
+#include "sim/turned_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <tuple>
+
+namespace taiwa::verify {
+
+namespace {
+
+using ClipperLib::Path;
+using ClipperLib::Paths;
+using sim::zrOf;
+using turning::ZR;
+
+constexpr double kGougeTolerance = 0.001;  // a tool this far inside the part touches it [mm]
+constexpr double kTouch = 0.001;           // a rapid this far into stock touches it [mm]
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kFar = 1000.0;  // beyond any bar [mm]
+
+Path box(double z0, double z1, double r0, double r1)
+{
+    return sim::clipperPolygon({{z0, r0}, {z1, r0}, {z1, r1}, {z0, r1}});
+}
+
+Paths boolean(ClipperLib::ClipType op, const Paths& a, const Paths& b)
+{
+    ClipperLib::Clipper c;
+    c.AddPaths(a, ClipperLib::ptSubject, true);
+    c.AddPaths(b, ClipperLib::ptClip, true);
+    Paths out;
+    c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return out;
+}
+
+// Polygons grown by d [mm] (shrunk for a negative d), round corners within tol.
+Paths grown(const Paths& p, double d, double tol)
+{
+    ClipperLib::ClipperOffset o(2.0, tol * kClipperScale);
+    o.AddPaths(p, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    Paths out;
+    o.Execute(out, d * kClipperScale);
+    return out;
+}
+
+// The area of polygons [mm²], holes taken off.
+double areaOf(const Paths& p)
+{
+    double a = 0.0;
+    for (const Path& q : p) a += ClipperLib::Area(q);
+    return a / (kClipperScale * kClipperScale);
+}
+
+// The volume a region of the half-section is when turned about the axis
+// [mm³]: 2π times its first moment about the axis (Pappus).
+double volumeOf(const Paths& p)
+{
+    double m = 0.0;
+    for (const Path& q : p)
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const ZR a = zrOf(q[i]), b = zrOf(q[(i + 1) % q.size()]);
+            m += (a.r + b.r) * turning::cross(a, b) / 6.0;
+        }
+    return 2.0 * std::numbers::pi * m;
+}
+
+double distanceToSegment(ZR p, ZR a, ZR b)
+{
+    const ZR d = b - a;
+    const double l2 = turning::dot(d, d);
+    const double t = l2 > 0.0 ? std::clamp(turning::dot(p - a, d) / l2, 0.0, 1.0) : 0.0;
+    return turning::dist(p, a + t * d);
+}
+
+// The edges of polygons, for the distance of a point to their outline.
+class Outline {
+public:
+    explicit Outline(const Paths& polys)
+    {
+        for (const Path& q : polys)
+            for (std::size_t i = 0; i < q.size(); ++i) edges_.emplace_back(zrOf(q[i]), zrOf(q[(i + 1) % q.size()]));
+    }
+    double distance(ZR p) const
+    {
+        double best = kInf;
+        for (const auto& [a, b] : edges_) {
+            if (p.z < std::min(a.z, b.z) - best || p.z > std::max(a.z, b.z) + best || p.r < std::min(a.r, b.r) - best ||
+                p.r > std::max(a.r, b.r) + best)
+                continue;
+            best = std::min(best, distanceToSegment(p, a, b));
+        }
+        return best;
+    }
+
+private:
+    std::vector<std::pair<ZR, ZR>> edges_;
+};
+
+// The point of a region's outline farthest from an outline, the outline
+// sampled every `spacing` mm: how deep a tool's sweep went into the part or
+// the stock (the region being their overlap), how thick material left is.
+struct Deepest {
+    double depth = -kInf;
+    ZR at{};
+};
+Deepest deepest(const Paths& region, const Outline& from, double spacing)
+{
+    Deepest d;
+    for (const Path& q : region)
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const ZR a = zrOf(q[i]), b = zrOf(q[(i + 1) % q.size()]);
+            const int n = std::max(1, static_cast<int>(std::ceil(turning::dist(a, b) / spacing)));
+            for (int k = 0; k < n; ++k) {
+                const ZR p = a + (static_cast<double>(k) / n) * (b - a);
+                const double v = from.distance(p);
+                if (v > d.depth) d = {v, p};
+            }
+        }
+    return d;
+}
+
+// The region under polygons as seen from the stock's surface: swept toward
+// the axis (outer) or away from it (inner), the part's shadow that a
+// roughing pass along Z cannot reach.
+Paths shadowOf(const Paths& polys, bool inner)
+{
+    const double h = inner ? kFar : -kFar;
+    Paths all = polys;
+    for (const Path& q : polys)
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const ZR a = zrOf(q[i]), b = zrOf(q[(i + 1) % q.size()]);
+            if (a.z == b.z) continue;
+            all.push_back(sim::clipperPolygon({a, b, b + ZR{0.0, h}, a + ZR{0.0, h}}));
+        }
+    return boolean(ClipperLib::ctUnion, all, {});
+}
+
+// A TURN unit's finished part and what its steps are meant to leave of the stock.
+struct UnitData {
+    Paths part;  // the deformed profile's material (sim::partOf, closed at its ends)
+    std::optional<Outline> outline;
+    bool inner = false;
+    double zLo = 0.0, zHi = 0.0;  // the profile's extent along Z
+    int lastFinish = -1;          // the unit's last finishing step
+    int lastCheck = -1;           // the step after which it is finished (its grooves cut too)
+    double allowance = kInf;      // the least its finishing steps leave
+    double nose = 0.0;            // the largest nose radius they finish with
+    Paths bridged;                // what the finishing leaves on purpose (bridgedOf)
+};
+
+// What the finishing contour bridges on purpose (the planner's note says
+// so): each run of the deformed profile's edges it need not follow (an
+// edge of the grinding allowance its insert cannot follow, a line shorter
+// than two nose radii into a concave corner: anything but an edge of the
+// part, original or moved, longer than two nose radii), as the hull of the
+// run and two nose radii of its neighbours.
+Paths bridgedOf(const turning::DeformedProfile& d, double nose)
+{
+    const auto follows = [&](const turning::DeformedEdge& e) {
+        return (e.origin == turning::Origin::Original || e.origin == turning::Origin::Moved) &&
+               turning::length(e.geometry) > 2.0 * nose;
+    };
+    Paths out;
+    const std::size_t n = d.edges.size();
+    for (std::size_t i = 0; i < n;) {
+        if (follows(d.edges[i])) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        std::vector<turning::Segment> run;
+        while (j < n && !follows(d.edges[j])) run.push_back(d.edges[j++].geometry);
+        std::vector<ZR> pts = turning::flatten(run);
+        pts.push_back(run.back().b);
+        if (i > 0) {
+            const turning::Segment& before = d.edges[i - 1].geometry;
+            const double l = turning::length(before);
+            pts.push_back(turning::pointAt(before, std::max(0.0, l - 2.0 * nose)));
+        }
+        if (j < n)
+            pts.push_back(
+                turning::pointAt(d.edges[j].geometry, std::min(turning::length(d.edges[j].geometry), 2.0 * nose)));
+        out.push_back(sim::clipperPolygon(turning::convexHull(std::move(pts))));
+        i = j;
+    }
+    return out;
+}
+
+// Where a finding is on a lathe: X a diameter, as the tape writes it.
+Point3 onLathe(ZR p)
+{
+    return {2.0 * p.r, 0.0, p.z};
+}
+
+class TurningVerifier {
+public:
+    TurningVerifier(const Plan& plan, double resolution)
+        : plan_(plan), bar_(*plan.mmJob.bar), res_(resolution), tol_(resolution / 10.0)
+    {
+        const double R = bar_.diameter / 2.0;
+        stock_ = {box(bar_.face - bar_.length, bar_.face, bar_.bore / 2.0, R)};
+        units_.resize(plan.mmJob.units.size());
+        for (const TurnedPart& p : plan.turned) {
+            if (p.unit < 0 || p.unit >= static_cast<int>(units_.size()) || p.deformed.edges.empty()) continue;
+            UnitData& u = units_[static_cast<std::size_t>(p.unit)];
+            u.part = {sim::clipperPolygon(sim::partOf(plan, p.unit, R + 5.0, std::nullopt))};
+            u.outline.emplace(u.part);
+            u.inner = p.deformed.side == turning::ProfileSide::Inner;
+            u.zLo = kInf;
+            u.zHi = -kInf;
+            for (const auto& e : p.deformed.edges)
+                for (const ZR q : {e.geometry.a, e.geometry.b}) {
+                    u.zLo = std::min(u.zLo, q.z);
+                    u.zHi = std::max(u.zHi, q.z);
+                }
+        }
+        for (std::size_t k = 0; k < plan.steps.size(); ++k) {
+            const Step& s = plan.steps[k];
+            const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
+            if (!s.turn || !t || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) continue;
+            UnitData& u = units_[static_cast<std::size_t>(s.unit)];
+            if (s.kind == StepKind::TurnFinishing) {
+                u.lastFinish = static_cast<int>(k);
+                u.allowance = std::min({u.allowance, s.turn->allowanceX, s.turn->allowanceZ});
+                u.nose = std::max(u.nose, t->cornerRadius);
+            }
+            if (u.lastFinish >= 0 && (s.kind == StepKind::TurnFinishing || s.kind == StepKind::Grooving))
+                u.lastCheck = static_cast<int>(k);
+        }
+        // What the finishing bridges, and a nose radius about it: the cusps
+        // the nose leaves where a bridging chord meets the profile.
+        for (const TurnedPart& p : plan.turned) {
+            if (p.unit < 0 || p.unit >= static_cast<int>(units_.size())) continue;
+            UnitData& u = units_[static_cast<std::size_t>(p.unit)];
+            if (u.lastFinish >= 0) u.bridged = grown(bridgedOf(p.deformed, u.nose), u.nose, tol_);
+        }
+    }
+
+    Report run()
+    {
+        Report r;
+        r.resolution = res_;
+        r.removed.assign(plan_.steps.size(), 0.0);
+        for (std::size_t k = 0; k < plan_.steps.size(); ++k) {
+            const Step& s = plan_.steps[k];
+            const Tool* t = s.tool ? plan_.tool(s.tool->toolId) : nullptr;
+            if (!s.turn || !t) continue;
+            const double before = volumeOf(stock_);
+            cutStep(static_cast<int>(k), *t);
+            r.removed[k] = before - volumeOf(stock_);
+            restAfterRoughing(static_cast<int>(k), *t);
+            restAfterFinishing(static_cast<int>(k));
+        }
+        travel();
+        for (auto& [key, f] : found_) r.findings.push_back(f);
+        std::stable_sort(r.findings.begin(), r.findings.end(), [](const Finding& a, const Finding& b) {
+            return std::tie(a.step, a.kind, a.move) < std::tie(b.step, b.kind, b.move);
+        });
+        for (const Path& q : stock_) {
+            std::vector<ZR> loop;
+            for (const auto& v : q) loop.push_back(zrOf(v));
+            r.section.push_back(std::move(loop));
+        }
+        return r;
+    }
+
+private:
+    // Sides of a polygon that holds a nose of radius r within the flattening tolerance.
+    int sidesFor(double r) const
+    {
+        const double half = std::acos(1.0 / (1.0 + tol_ / std::max(r, tol_)));
+        return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / half)), 8, 720);
+    }
+
+    // The programmed point's path of every move of a step, arcs as chords;
+    // along the compensated stretch the point where the tool would be
+    // programmed without compensation for its nose to be where the
+    // control puts it (the nose centre offset by its radius from the
+    // contour, round about outside corners, at the offsets' crossing inside).
+    std::vector<std::vector<ZR>> traces(const TurnStep& ts, double nose) const
+    {
+        const TurnPath& p = ts.path;
+        std::vector<std::vector<ZR>> out(p.moves.size());
+        ZR at = p.start;
+        const bool comp = p.comp != NoseCompensation::Off && p.compFrom >= 0 && p.compTo > p.compFrom &&
+                          p.compTo < static_cast<int>(p.moves.size());
+        for (int m = 0; m < static_cast<int>(p.moves.size()); ++m) {
+            const TurnMove& mv = p.moves[static_cast<std::size_t>(m)];
+            if (comp && m == p.compFrom) compensated(ts, nose, at, out);
+            if (!comp || m < p.compFrom || m > p.compTo)
+                out[static_cast<std::size_t>(m)] = sim::movePoints(at, mv, tol_);
+            at = mv.end;
+        }
+        return out;
+    }
+
+    // The compensated stretch: the entry (from `at`), the contour and the
+    // exit. Each element offset exactly (a line shifted, an arc concentric),
+    // joined round about the vertex at an outside corner and trimmed where
+    // the two offsets cross at an inside one, then flattened.
+    void compensated(const TurnStep& ts, double r, ZR at, std::vector<std::vector<ZR>>& out) const
+    {
+        const TurnPath& p = ts.path;
+        const ZR tip = ts.tipFromCentre;
+        const int side = p.comp == NoseCompensation::Left ? 1 : -1;  // G41: the nose left of the contour
+        std::vector<turning::Segment> contour, off;
+        std::vector<int> owner;  // the move of each element
+        ZR from = at;
+        for (int m = p.compFrom; m < p.compTo; ++m) {
+            const TurnMove& mv = p.moves[static_cast<std::size_t>(m)];
+            if (turning::dist(from, mv.end) > 1e-9) {
+                const bool arc = mv.kind == TurnMove::ArcCW || mv.kind == TurnMove::ArcCCW;
+                contour.push_back(arc ? turning::arcSegment(from, mv.end, mv.centre, mv.kind == TurnMove::ArcCCW)
+                                      : turning::lineSegment(from, mv.end));
+                owner.push_back(m);
+            }
+            from = mv.end;
+        }
+        const std::size_t n = contour.size();
+        if (n == 0) return;
+        const auto normal = [&](ZR t) { return static_cast<double>(side) * turning::leftNormal(t); };
+        for (const turning::Segment& e : contour) {
+            const auto o = turning::offset(e, r, side);
+            // An arc tighter than the nose (no plan has one): its chord's offset.
+            off.push_back(o ? *o
+                            : turning::lineSegment(e.a + r * normal(turning::tangentAtStart(e)),
+                                                   e.b + r * normal(turning::tangentAtEnd(e))));
+        }
+        std::vector<std::vector<ZR>> corner(n);  // round about the outside corner before element i
+        for (std::size_t i = 1; i < n; ++i) {
+            const ZR t1 = turning::tangentAtEnd(contour[i - 1]), t2 = turning::tangentAtStart(contour[i]);
+            const double turn = static_cast<double>(side) * turning::cross(t1, t2);
+            if (turn < -1e-9) {
+                const ZR a = normal(t1), b = normal(t2);
+                const double angle = std::atan2(turning::cross(a, b), turning::dot(a, b));
+                const double step = 2.0 * std::acos(std::max(-1.0, 1.0 - tol_ / std::max(r, tol_)));
+                const int k = std::max(1, static_cast<int>(std::ceil(std::abs(angle) / std::max(step, 1e-6))));
+                for (int j = 1; j < k; ++j) {
+                    const double t = angle * j / k, c = std::cos(t), s = std::sin(t);
+                    corner[i].push_back(contour[i].a + r * ZR{c * a.z - s * a.r, s * a.z + c * a.r});
+                }
+            } else if (turn > 1e-9) {
+                const auto x = turning::nearest(
+                    turning::intersections(turning::curveOf(off[i - 1]), turning::curveOf(off[i])), contour[i].a);
+                if (x && turning::contains(off[i - 1], *x) && turning::contains(off[i], *x)) {
+                    off[i - 1] = turning::piece(off[i - 1], off[i - 1].a, *x);
+                    off[i] = turning::piece(off[i], *x, off[i].b);
+                }
+            }
+        }
+        if (!off[0].arc) off[0] = turning::lineSegment(at - tip, off[0].b);  // the entry starts uncompensated
+        for (std::size_t i = 0; i < n; ++i) {
+            std::vector<ZR>& t = out[static_cast<std::size_t>(owner[i])];
+            if (t.empty() && i > 0) t.push_back(off[i - 1].b + tip);
+            for (const ZR q : corner[i]) t.push_back(q + tip);
+            for (const ZR q : turning::flatten({off[i]}, tol_)) t.push_back(q + tip);
+            t.push_back(off[i].b + tip);
+        }
+        // The exit: compensation cancelled on the way off the part.
+        out[static_cast<std::size_t>(p.compTo)] = {off[n - 1].b + tip, p.moves[static_cast<std::size_t>(p.compTo)].end};
+    }
+
+    // What a shape sweeps along a trace: one convex hull per piece.
+    static Paths swept(const std::vector<ZR>& shape, const std::vector<ZR>& trace)
+    {
+        Paths out;
+        for (std::size_t i = 0; i + 1 < trace.size(); ++i) {
+            std::vector<ZR> two;
+            two.reserve(2 * shape.size());
+            for (const ZR q : shape) {
+                two.push_back(trace[i] + q);
+                two.push_back(trace[i + 1] + q);
+            }
+            out.push_back(sim::clipperPolygon(turning::convexHull(std::move(two))));
+        }
+        return out;
+    }
+
+    // The cuts not yet taken out of the stock, taken out.
+    void flush()
+    {
+        if (pending_.empty()) return;
+        stock_ = boolean(ClipperLib::ctDifference, stock_, pending_);
+        pending_.clear();
+        stockOutline_.reset();
+    }
+
+    void add(FindingKind kind, int step, int move, Deepest d, double size, double area, const std::string& part = "")
+    {
+        Finding& f = found_[{static_cast<int>(kind), step, move, part}];
+        f.kind = kind;
+        f.step = step;
+        f.move = move;
+        f.part = part;
+        f.area += area;
+        if (size > f.size) {
+            f.size = size;
+            f.position = onLathe(d.at);
+        }
+    }
+
+    void cutStep(int k, const Tool& t)
+    {
+        const Step& s = plan_.steps[static_cast<std::size_t>(k)];
+        const TurnStep& ts = *s.turn;
+        const bool insert = t.type == ToolType::TurningInsert;
+        const int sides = sidesFor(t.cornerRadius);
+        const std::vector<ZR> shape = sim::shapeOf(s, t, sides);
+        // The gouge is judged with the nose alone (the edge above it is chip).
+        const std::vector<ZR> nose =
+            insert ? turning::circumscribedCircle(ZR{} - ts.tipFromCentre, std::max(t.cornerRadius, 0.01), sides)
+                   : shape;
+        const UnitData* unit =
+            s.unit >= 0 && s.unit < static_cast<int>(units_.size()) && units_[static_cast<std::size_t>(s.unit)].outline
+                ? &units_[static_cast<std::size_t>(s.unit)]
+                : nullptr;
+        const auto all = traces(ts, t.cornerRadius);
+        for (int m = 0; m < static_cast<int>(all.size()); ++m) {
+            const std::vector<ZR>& trace = all[static_cast<std::size_t>(m)];
+            if (trace.size() < 2) continue;
+            Paths cut = swept(shape, trace);
+            if (ts.path.moves[static_cast<std::size_t>(m)].kind == TurnMove::Rapid) {
+                flush();
+                const Paths into = boolean(ClipperLib::ctIntersection, cut, stock_);
+                if (!into.empty()) {
+                    if (!stockOutline_) stockOutline_.emplace(stock_);
+                    const Deepest d = deepest(into, *stockOutline_, res_);
+                    if (d.depth > kTouch) add(FindingKind::RapidIntoStock, k, m, d, d.depth, areaOf(into));
+                }
+            } else if (unit) {
+                const Paths into = boolean(ClipperLib::ctIntersection, swept(nose, trace), unit->part);
+                if (!into.empty()) {
+                    const Deepest d = deepest(into, *unit->outline, res_);
+                    if (d.depth > kGougeTolerance + res_) add(FindingKind::Gouge, k, m, d, d.depth, areaOf(into));
+                }
+            }
+            pending_.insert(pending_.end(), std::make_move_iterator(cut.begin()), std::make_move_iterator(cut.end()));
+        }
+        flush();
+    }
+
+    // The unit's region: the profile's extent along Z, from the axis out past the bar.
+    Path regionOf(const UnitData& u) const { return box(u.zLo, u.zHi, 0.0, bar_.diameter / 2.0 + 1.0); }
+
+    // Material left where it should not be: reported on `step`, its size
+    // how far its farthest point is from the part, less what the step
+    // leaves. What an opening by two flattening tolerances and 1 µm takes
+    // away does not count: slivers, the polygons' own error along a cut.
+    void rest(int step, const UnitData& u, const Paths& found, double allowance)
+    {
+        const double sliver = 2.0 * tol_ + kGougeTolerance;
+        const Paths left = grown(grown(found, -sliver, tol_), sliver, tol_);
+        const double area = areaOf(left);
+        if (area <= res_ * res_) return;
+        const Deepest d = deepest(left, *u.outline, res_);
+        if (d.depth - allowance > kGougeTolerance + res_)
+            add(FindingKind::RestMaterial, step, -1, d, d.depth - allowance, area);
+    }
+
+    // Roughing clears the unit's region down to its allowance, except
+    // within one depth of cut and two nose radii of it (the stairs between
+    // its passes and the nose's cusps) and in the part's shadow (pockets
+    // its passes along Z do not enter; the finishing takes them).
+    void restAfterRoughing(int k, const Tool& t)
+    {
+        const Step& s = plan_.steps[static_cast<std::size_t>(k)];
+        if (s.kind != StepKind::TurnRoughing || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) return;
+        const UnitData& u = units_[static_cast<std::size_t>(s.unit)];
+        if (!u.outline) return;
+        const TurnStep& ts = *s.turn;
+        const double allowance = std::max(ts.allowanceX, ts.allowanceZ);
+        const double near = allowance + std::max(ts.depthOfCut, t.cornerRadius) + t.cornerRadius + res_;
+        const Paths reach =
+            boolean(ClipperLib::ctDifference, {regionOf(u)}, shadowOf(grown(u.part, near, tol_), u.inner));
+        rest(k, u, boolean(ClipperLib::ctIntersection, stock_, reach), allowance);
+    }
+
+    // Once a unit's finishing (and the grooves after it) is cut, nothing is
+    // left in its region but the finishing allowance, the inside corners
+    // its nose cannot reach and what its contour bridges on purpose.
+    void restAfterFinishing(int k)
+    {
+        for (const UnitData& u : units_) {
+            if (u.lastCheck != k || !u.outline) continue;
+            const Paths air = boolean(ClipperLib::ctDifference, {regionOf(u)}, u.part);
+            const Paths reached = grown(grown(air, -u.nose, tol_), u.nose, tol_);
+            Paths kept = grown(u.part, u.allowance + kGougeTolerance + res_, tol_);
+            const Paths corners = boolean(ClipperLib::ctDifference, air, reached);
+            kept.insert(kept.end(), corners.begin(), corners.end());
+            kept.insert(kept.end(), u.bridged.begin(), u.bridged.end());
+            const Paths left =
+                boolean(ClipperLib::ctDifference, boolean(ClipperLib::ctIntersection, stock_, air), kept);
+            rest(u.lastFinish, u, left, u.allowance);
+        }
+    }
+
+    // The programmed points against the machine's travel, as milling does:
+    // their span along each axis (X a diameter when the machine programs
+    // it so) against the axis' travel, on the step and move of the
+    // extreme farther out (X: from the spindle axis; Z: from the bar's face).
+    void travel()
+    {
+        const Machine* machine = findMachine(plan_.mmJob.machine);
+        if (!machine) return;
+        const double xScale = machine->xDiameter ? 2.0 : 1.0;
+        struct Extreme {
+            double value;
+            int step, move;
+            ZR at;
+        };
+        Extreme xLo{kInf, -1, -1, {}}, xHi{-kInf, -1, -1, {}}, zLo{kInf, -1, -1, {}}, zHi{-kInf, -1, -1, {}};
+        for (std::size_t k = 0; k < plan_.steps.size(); ++k) {
+            const Step& s = plan_.steps[k];
+            if (!s.turn) continue;
+            const TurnPath& p = s.turn->path;
+            const auto see = [&](ZR q, int m) {
+                const int step = static_cast<int>(k);
+                if (xScale * q.r < xLo.value) xLo = {xScale * q.r, step, m, q};
+                if (xScale * q.r > xHi.value) xHi = {xScale * q.r, step, m, q};
+                if (q.z < zLo.value) zLo = {q.z, step, m, q};
+                if (q.z > zHi.value) zHi = {q.z, step, m, q};
+            };
+            see(p.start, -1);
+            for (std::size_t m = 0; m < p.moves.size(); ++m) see(p.moves[m].end, static_cast<int>(m));
+        }
+        if (xLo.value > xHi.value) return;
+        const auto check = [&](const char* axis, const Extreme& lo, const Extreme& hi, double from) {
+            const auto t = machine->travel.find(axis);
+            if (t == machine->travel.end()) return;
+            const double excess = (hi.value - lo.value) - (t->second.max - t->second.min);
+            if (excess <= 0.0) return;
+            const Extreme& far = std::abs(lo.value - from) > std::abs(hi.value - from) ? lo : hi;
+            add(FindingKind::TravelLimit, far.step, far.move, {0.0, far.at}, excess, 0.0, axis);
+        };
+        check("x", xLo, xHi, 0.0);
+        check("z", zLo, zHi, bar_.face);
+    }
+
+    const Plan& plan_;
+    const BarStock& bar_;
+    double res_;
+    double tol_;  // chords and the nose's polygon within it [mm]
+    Paths stock_;
+    Paths pending_;
+    std::optional<Outline> stockOutline_;  // of stock_, made when a rapid meets it
+    std::vector<UnitData> units_;
+    std::map<std::tuple<int, int, int, std::string>, Finding> found_;  // by kind, step, move, part
+};
+
+}  // namespace
+
+Report verifyTurning(const Plan& plan, const Options& options)
+{
+    const bool cuts = std::any_of(plan.steps.begin(), plan.steps.end(), [&](const Step& s) {
+        return s.turn && s.tool && plan.tool(s.tool->toolId) && !s.turn->path.moves.empty();
+    });
+    if (!cuts) {
+        Report r;
+        r.resolution = options.resolution;
+        r.skipped = "a lathe job with no turning step: nothing to cut";
+        return r;
+    }
+    return TurningVerifier(plan, options.resolution).run();
+}
+
+}  // namespace taiwa::verify
