@@ -5,7 +5,8 @@
 // view renders) it also writes the PNGs of docs/screenshots/: the whole
 // window, the window with single steps selected, and a contact sheet of the
 // 3-D view with each step selected in turn (simulated stock after it), and
-// a verification finding chosen (station-verification.png).
+// a verification finding chosen (station-verification.png) and its colour
+// map with the stock cut open (station-colour-map.png).
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 #include "support/support.h"
@@ -14,13 +15,18 @@
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
+#include "ui/section_bar.h"
 #include "ui/station_window.h"
 #include "ui/verification_panel.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
 #include "ui/unit_list_panel.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
+#include <QSlider>
+#include <QToolButton>
 #include <QMenuBar>
 #include <QPainter>
 #include <QPlainTextEdit>
@@ -176,6 +182,21 @@ private slots:
         w.verificationPanel()->list()->setCurrentRow(0);
         settle(w);
         save(w, "station-verification.png");
+
+        // The same verification's colour map, the stock cut open across Y
+        // through the gouge and seen from the front side (the gouge red,
+        // the finished floors and walls green, the face cut in violet).
+        w.verificationPanel()->colourMapBox()->click();
+        QVERIFY(w.verificationPanel()->colourMapBox()->isChecked());
+        if (SectionBar* bar = w.sectionBar()) {
+            const Stock& st = plan->mmJob.stock;
+            const double y = w.verificationPanel()->report().findings.front().position.y;
+            bar->axisChooser()->setCurrentIndex(2);
+            bar->slider()->setValue(static_cast<int>(std::lround((y - st.y) / st.length * bar->slider()->maximum())));
+            bar->flip()->click();
+        }
+        settle(w);
+        save(w, "station-colour-map.png");
     }
 
     void japanese()

@@ -3,7 +3,7 @@
 // machine's travel lists its fault in red; a finding chosen in the list
 // selects its step in the step list and its block in the NC view; an edit
 // makes the list stale; a result that arrives for a plan replaced
-// meanwhile is dropped.
+// meanwhile is dropped; the colour map is offered after a verification.
 #include "support/hand_plan.h"
 #include "support/station_fixture.h"
 #include "support/support.h"
@@ -15,6 +15,7 @@
 #include "ui/step_panel.h"
 #include "ui/verification_panel.h"
 
+#include <QCheckBox>
 #include <QLabel>
 #include <QListWidget>
 #include <QPlainTextEdit>
@@ -24,6 +25,9 @@
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <vector>
 
 using namespace taiwa;
 using namespace taiwa::ui;
@@ -90,6 +94,54 @@ private slots:
         test::settle(w);
         QCOMPARE(v->list()->count(), 0);
         QCOMPARE(summary(v), QString("Not verified since the last change."));
+    }
+
+    // After a verification the Colour map box offers the finished part's
+    // map: ticked, the map goes to the 3-D view and the legend shows;
+    // cleared, no map; an edit drops it and greys the box until verified
+    // again. A lathe job has none.
+    void colourMapOfferedAfterVerifying()
+    {
+        StationWindow w;
+        QVERIFY(test::showSettled(w, "resources/samples/m4-standard.taiwa"));
+        VerificationPanel* v = w.verificationPanel();
+        QCheckBox* box = v->colourMapBox();
+        auto* legend = v->findChild<QLabel*>("verify.legend");
+        QVERIFY(!box->isEnabled());
+        std::vector<std::shared_ptr<const verify::DeviationMap>> shown;
+        connect(v, &VerificationPanel::colourMapChanged, this,
+                [&](std::shared_ptr<const verify::DeviationMap> m) { shown.push_back(std::move(m)); });
+        v->verifyNow();
+        QVERIFY(box->isEnabled());
+        const auto map = v->deviationMap();
+        QVERIFY(map);
+        QCOMPARE(std::count(map->band.begin(), map->band.end(), verify::DeviationBand::Gouge), 0);
+        QVERIFY(std::count(map->band.begin(), map->band.end(), verify::DeviationBand::AtSize) > 1000);
+        QVERIFY(v->report().stock.heights().empty());  // the map keeps what is drawn; the fine grid is let go
+        QVERIFY(!legend->isVisibleTo(&w));
+        box->click();
+        QVERIFY(!shown.empty() && shown.back() == map);
+        QVERIFY(legend->isVisibleTo(&w));
+        QVERIFY(legend->text().contains("gouge") && legend->text().contains("up to 0.1 mm left"));
+        box->click();
+        QVERIFY(!shown.back());
+        QVERIFY(!legend->isVisibleTo(&w));
+        box->click();
+        QVERIFY(shown.back() == map);
+
+        Job edited = w.document()->job();
+        edited.units.front().name = "renamed";
+        w.document()->edit(edited, "rename");
+        test::settle(w);
+        QVERIFY(!shown.back());
+        QVERIFY(!box->isEnabled());
+        QVERIFY(!v->deviationMap());
+
+        StationWindow lathe;
+        QVERIFY(test::showSettled(lathe, "resources/samples/lathe-turned-shaft.taiwa"));
+        lathe.verificationPanel()->verifyNow();
+        QVERIFY(!lathe.verificationPanel()->deviationMap());
+        QVERIFY(!lathe.verificationPanel()->colourMapBox()->isEnabled());
     }
 
     // A finding chosen in the list: its step selected, its block the NC

@@ -5,13 +5,15 @@
 // change the image; the simulated stock is cut after its step and not
 // before; the stock surface is closed and merged; picking finds the move
 // under a pixel; no display is an error message. The same scene inside the
-// Qt widget: test_render_preview_widget. Needs an X display (xvfb-run -a).
+// Qt widget: test_render_preview_widget. A section plane shows the face it
+// cuts; the verification's colour map shows gouges and what is at size. Needs an X display (xvfb-run -a).
 #include "job/job_file.h"
 #include "sim/stock_simulation.h"
 #include "support/hand_plan.h"
 #include "support/images.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
+#include "verify/deviation.h"
 #include "ui/preview_widget.h"
 #include "viz/palette.h"
 #include "viz/render.h"
@@ -294,6 +296,81 @@ private slots:
         QCOMPARE(s.highlightedMove(), (MoveRef{kRoughing + 4, kSlotMove}));
         const auto b = s.bounds();
         QVERIFY(b[4] < -5 && b[5] >= 5);  // the paths' depth and clearance height, from the merged points
+    }
+
+    // A section across Y at Y40, the material in front of it taken away,
+    // seen from the front: the face the plane cuts in the section colour,
+    // with the pocket's hollow (Z 0 to -5 from X20 to X80) open in it; no
+    // section: the stock's front face there. Flipped, the plane keeps the
+    // front half: its face at Y0 hides the section.
+    void sectionShowsTheFaceItCuts()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Front;
+        o.showStock = true;
+        const QImage whole = render(o, "front-stock.png");
+        o.section = SectionPlane{{50, 40, -15}, {0, -1, 0}};
+        const QImage cut = render(o, "front-section.png");
+        const auto solid = pixelOf(plan_, o.view, {10, 40, -15}), below = pixelOf(plan_, o.view, {50, 40, -15});
+        const auto hollow = pixelOf(plan_, o.view, {50, 40, -2.5});
+        const auto colourAt = [](const QImage& img, std::array<double, 2> p) { return img.pixel(int(p[0]), int(p[1])); };
+        QVERIFY2(near(colourAt(cut, solid), palette::kSection, 4), qPrintable(QColor(colourAt(cut, solid)).name()));
+        QVERIFY(near(colourAt(cut, below), palette::kSection, 4));
+        QVERIFY2(!near(colourAt(cut, hollow), palette::kSection, 40), qPrintable(QColor(colourAt(cut, hollow)).name()));
+        QVERIFY(!near(colourAt(whole, solid), palette::kSection, 40));
+        o.section->normal = {0, 1, 0};
+        const QImage back = render(o, "front-section-flipped.png");
+        QVERIFY(!near(colourAt(back, solid), palette::kSection, 40));
+        QVERIFY(differingPixels(back, whole) < kW * kH / 200);
+        // A level section at Z-2.5: seen from above, the face at that height
+        // over the stock, the pocket a hole in it.
+        o.view = ViewPreset::Top;
+        o.section = SectionPlane{{50, 40, -2.5}, {0, 0, 1}};
+        const QImage level = render(o, "top-section.png");
+        QVERIFY(near(colourAt(level, pixelOf(plan_, o.view, {8, 8, -2.5})), palette::kSection, 4));
+        QVERIFY(!near(colourAt(level, pixelOf(plan_, o.view, {27.5, 40, -5})), palette::kSection, 40));
+        // The face itself: a quad a run of samples, covering the stock's section.
+        sim::HeightField field(plan_.mmJob.stock, 0.5);
+        const auto cap = sectionCap(field, SectionPlane{{50, 40, 0}, {0, 0, 1}});
+        double bounds[6];
+        cap->GetBounds(bounds);
+        QVERIFY(std::abs(bounds[0]) < 1e-9 && std::abs(bounds[1] - 100) < 1e-9 && std::abs(bounds[3] - 80) < 1e-9);
+        QCOMPARE(cap->GetNumberOfPolys(), vtkIdType(160));  // one run per row of 0.5 mm
+    }
+
+    // The verification's colour map: the hand plan has no unit, so every
+    // cut is into the part (red) and the uncut top is the stock's colour;
+    // m4-standard.taiwa's pocket is at size (green) and gouged nowhere.
+    void colourMapOfTheFinishedPart()
+    {
+        RenderOptions o;
+        o.view = ViewPreset::Top;
+        o.deviation = true;
+        const QImage img = render(o, "deviation-hand.png");
+        const auto floor = pixelOf(plan_, o.view, {27.5, 40, -5}), top = pixelOf(plan_, o.view, {8, 8, 0});
+        QVERIFY2(near(img.pixel(int(floor[0]), int(floor[1])), palette::kGouge, 30), qPrintable(QColor(img.pixel(int(floor[0]), int(floor[1]))).name()));
+        QVERIFY(near(img.pixel(int(top[0]), int(top[1])), palette::kStock, 20));
+
+        const Plan plan = samplePlan("m4-standard.taiwa");
+        const QString path = dir_.filePath("deviation-m4.png");
+        QVERIFY(renderToPng(plan, o, path.toStdString()));
+        const QImage m4 = QImage(path).convertToFormat(QImage::Format_RGB32);
+        int green = 0, red = 0;
+        for (int y = 0; y < m4.height(); ++y)
+            for (int x = 0; x < m4.width(); ++x) {
+                green += near(m4.pixel(x, y), palette::kAtSize, 30) ? 1 : 0;
+                red += near(m4.pixel(x, y), palette::kGouge, 30) ? 1 : 0;
+            }
+        QVERIFY2(green > kW * kH / 50, qPrintable(QString::number(green)));
+        QCOMPARE(red, 0);
+        // The scene drops a map with its plan.
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan));
+        const verify::Report r = verify::verifyPlan(plan, {0.25, 0});
+        s.setDeviationMap(std::make_shared<const verify::DeviationMap>(verify::deviationMap(plan, r)));
+        QVERIFY(s.showsDeviation());
+        s.setPlan(std::make_shared<const Plan>(plan));
+        QVERIFY(!s.showsDeviation());
     }
 
     void missingDisplayIsAnError()

@@ -3,20 +3,25 @@
 // stock switches show the part after and before the selected step, a click
 // on an NC block highlights its move in 3-D (pixels checked at the move's
 // projected midpoint), and a click on a move in 3-D puts the NC view's
-// cursor on the block posted from it. The GUI tests (test_gui_*) run
+// cursor on the block posted from it; the section bar cuts the stock open
+// and the verification's colour map shows on the part. The GUI tests (test_gui_*) run
 // offscreen without OpenGL and cannot see any of this.
 #include "support/images.h"
 #include "support/support.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
+#include "ui/section_bar.h"
 #include "ui/station_window.h"
 #include "ui/step_table.h"
 #include "ui/step_panel.h"
+#include "ui/verification_panel.h"
 #include "viz/palette.h"
 #include "viz/scene.h"
 
 #include <QCheckBox>
+#include <QComboBox>
+#include <QSlider>
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QTextBlock>
@@ -138,6 +143,47 @@ private slots:
         QVERIFY(before->isEnabled());
     }
 
+    // The section bar under the view: off at first; across X it cuts the
+    // stock open at the slider's place and the face it cuts shows; off
+    // again, the picture is what it was. The colour map ticked after a
+    // verification colours the finished part; cleared, the stock is back.
+    void sectionAndColourMapInTheView()
+    {
+        w_->findChild<QAbstractButton*>("step.all")->click();
+        SectionBar* bar = w_->sectionBar();
+        QVERIFY(bar && bar->isEnabled());
+        QVERIFY(!preview()->scene().section());
+        const QImage plain = frame();
+        bar->axisChooser()->setCurrentIndex(1);
+        QVERIFY(preview()->scene().section());
+        const Stock& st = plan().mmJob.stock;
+        QVERIFY(std::abs(preview()->scene().section()->origin.x - (st.x + st.width / 2)) < 0.2);
+        bar->slider()->setValue(bar->slider()->maximum() / 4);
+        QVERIFY(std::abs(preview()->scene().section()->origin.x - (st.x + st.width / 4)) < 0.2);
+        const QImage cut = frame();
+        int face = 0;
+        for (int y = 0; y < cut.height(); ++y)
+            for (int x = 0; x < cut.width(); ++x) face += test::near(cut.pixel(x, y), viz::palette::kSection, 6) ? 1 : 0;
+        QVERIFY2(face > 2000, qPrintable(QString::number(face)));
+        bar->axisChooser()->setCurrentIndex(0);
+        QVERIFY(!preview()->scene().section());
+        QCOMPARE(differingPixels(plain, frame()), 0);
+
+        VerificationPanel* v = w_->verificationPanel();
+        v->verifyNow();
+        QVERIFY(v->colourMapBox()->isEnabled());
+        v->colourMapBox()->click();
+        QVERIFY(preview()->scene().showsDeviation());
+        const QImage map = frame();
+        int green = 0;
+        for (int y = 0; y < map.height(); ++y)
+            for (int x = 0; x < map.width(); ++x) green += test::near(map.pixel(x, y), viz::palette::kAtSize, 30) ? 1 : 0;
+        QVERIFY2(green > 2000, qPrintable(QString::number(green)));
+        v->colourMapBox()->click();
+        QVERIFY(!preview()->scene().showsDeviation());
+        QCOMPARE(differingPixels(plain, frame()), 0);
+    }
+
     // The step list's columns fit without scrolling sideways in the window
     // opened on a 1600-pixel screen: No., unit, step, tool, S, F, depths,
     // time (here, with the X server's fonts and the 3-D view in its place).
@@ -198,7 +244,9 @@ private slots:
         w_->stepPanel()->selectStep(k);
         w_->findChild<QAbstractButton*>("view.top")->click();
         const viz::Scene& scene = preview()->scene();
-        const auto at = scene.toPixel(midpoint(k, m), preview()->width(), preview()->height());
+        const auto mid = scene.toPixel(midpoint(k, m), preview()->width(), preview()->height());
+        // The pixel the click lands on (passes of one step lie close together in the top view).
+        const std::array<double, 2> at{std::round(mid[0]), std::round(mid[1])};
         const auto picked = scene.pickMove(at[0], at[1], preview()->width(), preview()->height());
         QVERIFY(picked);
         QCOMPARE(picked->step, k);

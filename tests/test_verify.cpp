@@ -2,12 +2,13 @@
 // a ball's scallop, a gouge at its block, a rapid through stock, a short
 // holder and too short flutes in a deep pocket, the travel), every milling
 // sample clean, and each fault class caught when a test puts it into a
-// sample's paths.
+// sample's paths; the colour map of gouges and material left.
 #include "modules/m4/m4.h"
 #include "post/post.h"
 #include "tools/holder_shape.h"
 #include "support/hand_plan.h"
 #include "support/support.h"
+#include "verify/deviation.h"
 #include "verify/verify.h"
 
 #include <QtTest>
@@ -78,6 +79,15 @@ const Finding* first(const Report& r, FindingKind k)
     const auto it = std::find_if(r.findings.begin(), r.findings.end(), [k](const Finding& f) { return f.kind == k; });
     return it == r.findings.end() ? nullptr : &*it;
 }
+
+DeviationBand bandAt(const DeviationMap& m, double x, double y)
+{
+    const int i = static_cast<int>(std::floor((x - m.stock.stock().x) / m.stock.cellSize()));
+    const int j = static_cast<int>(std::floor((y - m.stock.stock().y) / m.stock.cellSize()));
+    return m.band[m.stock.indexOf(i, j)];
+}
+
+long count(const DeviationMap& m, DeviationBand b) { return static_cast<long>(std::count(m.band.begin(), m.band.end(), b)); }
 
 std::string kinds(const Report& r, const Plan& plan)
 {
@@ -298,13 +308,17 @@ private slots:
         double removed = 0;
         for (double v : r.removed) removed += v;
         if (!plan.steps.empty() && sample != "probe-bore.taiwa" && sample != "probe-vise-block.taiwa") QVERIFY(removed > 0);
+        // Its colour map agrees: no gouge anywhere.
+        QCOMPARE(count(deviationMap(plan, r), DeviationBand::Gouge), 0L);
     }
 
-    void latheJobSkippedWithReason()
+    // A lathe job is simulated on its half-section (tests/test_verify_turning.cpp).
+    void latheJobVerified()
     {
         const Report r = verifyPlan(test::samplePlan("lathe-turned-shaft.taiwa"));
-        QVERIFY(!r.skipped.empty());
-        QVERIFY(r.findings.empty());
+        QVERIFY(r.skipped.empty());
+        QVERIFY(!r.section.empty());
+        QCOMPARE(r.columns, 0);
     }
 
     // Each fault class put into the paths of m4-standard.taiwa is found on
@@ -383,6 +397,64 @@ private slots:
             QVERIFY2(r.count(FindingKind::Gouge) > 0, kinds(r, p).c_str());
             QCOMPARE(first(r, FindingKind::Gouge)->step, wall);
         }
+    }
+
+    // The colour map (verify/deviation.h) of a D10 slot in a pocket that is
+    // its own outline: at size in the slot and along its edge, the stock
+    // around it untouched, nothing else; 3.2 M verification cells drawn on
+    // a grid of at most a million.
+    void colourMapOfACleanSlot()
+    {
+        const Tool mill = endMill(1, ToolType::FlatEndMill, 10, 25, 45);
+        const Plan plan = planOf(25, 35, 75, 45, 5, 5, mill, line({30, 40, -5}, {70, 40, -5}));
+        const Report r = verifyPlan(plan);
+        const DeviationMap m = deviationMap(plan, r);
+        QCOMPARE(m.factor, 2);
+        QCOMPARE(m.stock.columns(), 1000);
+        QCOMPARE(m.band.size(), m.amount.size());
+        QCOMPARE(bandAt(m, 50, 40), DeviationBand::AtSize);
+        QCOMPARE(bandAt(m, 26, 40), DeviationBand::AtSize);
+        QCOMPARE(bandAt(m, 10, 10), DeviationBand::Untouched);
+        QCOMPARE(bandAt(m, 50, 46), DeviationBand::Untouched);
+        for (const DeviationBand b : {DeviationBand::Gouge, DeviationBand::RestThin, DeviationBand::RestMedium, DeviationBand::RestThick})
+            QCOMPARE(count(m, b), 0);
+        QCOMPARE(m.stock.atPoint(50, 40), -5.0);
+        // A lathe job's report has no stock: no map.
+        Report none;
+        none.skipped = "lathe";
+        QVERIFY(deviationMap(plan, none).empty());
+    }
+
+    // A floor 0.5 mm too deep is a gouge of 0.5 mm where the verification
+    // found it, on the fine map and on one 30 times coarser (the worst cell
+    // of each block shown); material left by a floor too high is banded by
+    // its thickness, and the uncut end of a short path is thick.
+    void colourMapShowsGougesAndMaterialLeft()
+    {
+        const Tool mill = endMill(1, ToolType::FlatEndMill, 10, 25, 45);
+        ToolPath p = line({30, 40, -5}, {50, 40, -5});
+        p.moves.insert(p.moves.begin() + 3, Move{MoveKind::Feed, {60, 40, -5.5}});
+        p.moves.insert(p.moves.begin() + 4, Move{MoveKind::Feed, {70, 40, -5}});
+        const Plan gouged = planOf(25, 35, 75, 45, 5, 5, mill, p);
+        const Report r = verifyPlan(gouged);
+        for (const std::size_t cells : {std::size_t{4'000'000}, std::size_t{4'000}}) {
+            const DeviationMap m = deviationMap(gouged, r, cells);
+            QCOMPARE(bandAt(m, 60, 40), DeviationBand::Gouge);
+            QVERIFY2(std::abs(*std::min_element(m.amount.begin(), m.amount.end()) + 0.5) < 0.01,
+                     qPrintable(QString::number(*std::min_element(m.amount.begin(), m.amount.end()))));
+            QCOMPARE(bandAt(m, 10, 10), DeviationBand::Untouched);
+        }
+        QCOMPARE(deviationMap(gouged, r, 4'000).factor, 29);  // ceil(sqrt(3.2 M / 4,000))
+        const auto floorAt = [&](double z) {
+            const Plan plan = planOf(25, 35, 75, 45, 5, 5, mill, line({30, 40, z}, {60, 40, z}));
+            return deviationMap(plan, verifyPlan(plan));
+        };
+        const DeviationMap thin = floorAt(-4.95), medium = floorAt(-4.7);
+        QCOMPARE(bandAt(thin, 45, 40), DeviationBand::RestThin);
+        QVERIFY(std::abs(thin.amount[thin.stock.indexOf(450, 400)] - 0.05) < 1e-4);
+        QCOMPARE(bandAt(medium, 45, 40), DeviationBand::RestMedium);
+        QCOMPARE(bandAt(medium, 68, 40), DeviationBand::RestThick);  // past the path's reach: 5 mm left
+        QVERIFY(std::abs(medium.amount[medium.stock.indexOf(680, 400)] - 5.0) < 1e-4);
     }
 };
 

@@ -144,6 +144,18 @@ void PreviewWidget::setStockBefore(bool before)
     update();
 }
 
+void PreviewWidget::setSection(std::optional<viz::SectionPlane> plane)
+{
+    scene_.setSection(plane);
+    update();
+}
+
+void PreviewWidget::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
+{
+    scene_.setDeviationMap(std::move(map));
+    update();
+}
+
 void PreviewWidget::setView(viz::ViewPreset view)
 {
     view_ = view;

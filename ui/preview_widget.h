@@ -35,6 +35,10 @@ public:
     void setShowStock(bool show);
     // The stock before the selected step rather than after it.
     void setStockBefore(bool before);
+    // viz::Scene::setSection: the stock cut open by a plane.
+    void setSection(std::optional<viz::SectionPlane> plane);
+    // viz::Scene::setDeviationMap: the verification's colour map.
+    void setDeviationMap(std::shared_ptr<const verify::DeviationMap> map);
     // Camera preset, fitted to the stock and the paths.
     void setView(viz::ViewPreset view);
     void highlightMove(int step, int move);

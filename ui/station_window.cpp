@@ -25,6 +25,7 @@
 #include "ui/verification_panel.h"
 
 #include "ui/preview_widget.h"
+#include "ui/section_bar.h"
 
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -160,7 +161,15 @@ QWidget* StationWindow::buildRight()
         preview_ = new PreviewWidget;
         preview_->setObjectName("preview");
         preview_->setMinimumSize(320, 240);
-        right->addWidget(preview_);
+        section_ = new SectionBar;
+        section_->setObjectName("section");
+        auto* view = new QWidget;
+        auto* box = new QVBoxLayout(view);
+        box->setContentsMargins(0, 0, 0, 0);
+        box->setSpacing(2);
+        box->addWidget(preview_, 1);
+        box->addWidget(section_);
+        right->addWidget(view);
     } else {  // e.g. a remote display or the offscreen platform: everything else still works
         auto* noGl = new QLabel(tr("No 3-D preview: this display has no OpenGL."));
         noGl->setObjectName("preview.unavailable");
@@ -375,6 +384,8 @@ void StationWindow::wire()
     connect(steps_, &StepPanel::playheadMoved, preview_, &PreviewWidget::setPlayhead);
     connect(preview_, &PreviewWidget::moveClicked, nc_, &NcView::selectMove);
     connect(preview_, &PreviewWidget::moveClicked, preview_, &PreviewWidget::highlightMove);
+    connect(section_, &SectionBar::sectionChanged, preview_, &PreviewWidget::setSection);
+    connect(verify_, &VerificationPanel::colourMapChanged, preview_, &PreviewWidget::setDeviationMap);
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }
@@ -448,6 +459,8 @@ void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
     if (preview_) {
         preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
         preview_->markPoint(std::nullopt);
+        // A lathe job's view is a section already.
+        section_->setStock(plan->mmJob.bar ? std::nullopt : std::optional<Stock>(plan->mmJob.stock), plan->job.lengthUnit);
     }
     steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
 }

@@ -27,6 +27,7 @@ class ModulePalette;
 class NcView;
 class PlanRunner;
 class PreviewWidget;
+class SectionBar;
 class StepPanel;
 class StepTable;
 class UnitForm;
@@ -50,6 +51,7 @@ public:
     NcView* ncView() const { return nc_; }
     VerificationPanel* verificationPanel() const { return verify_; }
     PreviewWidget* preview() const { return preview_; }
+    SectionBar* sectionBar() const { return section_; }
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -88,6 +90,7 @@ private:
     QLabel* unitMessages_;
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;
+    SectionBar* section_ = nullptr;  // under the preview, when there is one
     NcView* nc_;
     VerificationPanel* verify_;
     Diagnostics diagnostics_;

@@ -1,7 +1,12 @@
 // The station's verification list.
 #include "ui/verification_panel.h"
 
+#include "viz/palette.h"
+
 #include <QBrush>
+#include <QCheckBox>
+#include <QColor>
+#include <QLocale>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -26,10 +31,26 @@ verify::Report reportOf(const Plan& plan)
     }
 }
 
+// The report's colour map, when it has a stock to colour.
+std::shared_ptr<const verify::DeviationMap> mapOf(const Plan& plan, const verify::Report& r)
+{
+    if (!r.skipped.empty()) return nullptr;
+    auto map = std::make_shared<const verify::DeviationMap>(verify::deviationMap(plan, r));
+    return map->empty() ? nullptr : map;
+}
+
+// A swatch of the colour map's legend.
+QString swatch(viz::Rgb c, const QString& text)
+{
+    return QStringLiteral("<span style=\"background-color: %1;\">&nbsp;&nbsp;&nbsp;</span>&nbsp;%2")
+        .arg(QColor(c.r, c.g, c.b).name(), text.toHtmlEscaped());
+}
+
 }  // namespace
 
 VerificationPanel::VerificationPanel(QWidget* parent)
-    : QWidget(parent), run_(new QPushButton(tr("&Verify"), this)), summary_(new QLabel(this)), list_(new QListWidget(this))
+    : QWidget(parent), run_(new QPushButton(tr("&Verify"), this)), summary_(new QLabel(this)), list_(new QListWidget(this)),
+      colourMap_(new QCheckBox(tr("Colour &map"), this)), legend_(new QLabel(this))
 {
     pool_.setMaxThreadCount(1);
     run_->setObjectName("verify.run");
@@ -40,14 +61,29 @@ VerificationPanel::VerificationPanel(QWidget* parent)
     summary_->setWordWrap(true);
     list_->setObjectName("verify.findings");
     list_->setWordWrap(true);
+    colourMap_->setObjectName("verify.colourMap");
+    colourMap_->setToolTip(tr("Show the finished part in the 3-D view coloured by what the verification found"));
+    legend_->setObjectName("verify.legend");
+    legend_->setWordWrap(true);
+    legend_->setTextFormat(Qt::RichText);
+    const QString mm = QLocale().toString(verify::kThinRest), mm2 = QLocale().toString(verify::kMediumRest);
+    legend_->setText(QStringList{swatch(viz::palette::kGouge, tr("gouge")), swatch(viz::palette::kAtSize, tr("at size")),
+                                 swatch(viz::palette::kRestThin, tr("up to %1 mm left").arg(mm)),
+                                 swatch(viz::palette::kRestMedium, tr("up to %1 mm left").arg(mm2)),
+                                 swatch(viz::palette::kRestThick, tr("more left"))}
+                         .join(QStringLiteral(" &nbsp; ")));
+    legend_->hide();
     auto* top = new QHBoxLayout;
     top->addWidget(run_);
     top->addWidget(summary_, 1);
+    top->addWidget(colourMap_);
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addLayout(top);
+    box->addWidget(legend_);
     box->addWidget(list_, 1);
     connect(run_, &QPushButton::clicked, this, &VerificationPanel::verify);
+    connect(colourMap_, &QCheckBox::toggled, this, &VerificationPanel::showColourMap);
     connect(list_, &QListWidget::currentRowChanged, this, &VerificationPanel::onRowChanged);
     setPlan(nullptr);
 }
@@ -60,6 +96,9 @@ void VerificationPanel::setPlan(std::shared_ptr<const Plan> plan)
     plan_ = std::move(plan);
     ++generation_;
     report_ = {};
+    map_ = nullptr;
+    colourMap_->setEnabled(false);
+    showColourMap();
     list_->clear();
     run_->setEnabled(plan_ && !busy_);
     summary_->setText(plan_ ? tr("Not verified since the last change.") : tr("No plan to verify."));
@@ -73,8 +112,11 @@ void VerificationPanel::verify()
     run_->setEnabled(false);
     summary_->setText(tr("Verifying…"));
     pool_.start([this, generation = generation_, plan = plan_] {
-        const verify::Report r = reportOf(*plan);
-        QMetaObject::invokeMethod(this, [this, generation, plan, r] { show(generation, plan, r); }, Qt::QueuedConnection);
+        auto r = std::make_shared<verify::Report>(reportOf(*plan));
+        auto map = mapOf(*plan, *r);
+        r->stock = {};  // the map keeps what is drawn of it
+        QMetaObject::invokeMethod(
+            this, [this, generation, plan, r, map] { show(generation, plan, *r, map); }, Qt::QueuedConnection);
     });
 }
 
@@ -82,15 +124,22 @@ void VerificationPanel::verifyNow()
 {
     if (!plan_) return;
     busy_ = true;
-    show(generation_, plan_, reportOf(*plan_));
+    verify::Report r = reportOf(*plan_);
+    auto map = mapOf(*plan_, r);
+    r.stock = {};
+    show(generation_, plan_, r, map);
 }
 
-void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r)
+void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r,
+                             std::shared_ptr<const verify::DeviationMap> map)
 {
     busy_ = false;
     run_->setEnabled(plan_ != nullptr);
     if (generation != generation_) return;  // the plan changed meanwhile: that result is for the old one
     report_ = r;
+    map_ = std::move(map);
+    colourMap_->setEnabled(map_ != nullptr);
+    showColourMap();
     list_->clear();
     for (const verify::Finding& f : r.findings) {
         auto* item = new QListWidgetItem(QString::fromStdString(verify::describe(f, *plan)), list_);
@@ -111,6 +160,13 @@ void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Pla
         summary_->setStyleSheet(faults > 0 ? "color: #c00000; font-weight: bold;" : "");
     }
     emit verified();
+}
+
+void VerificationPanel::showColourMap()
+{
+    const bool on = colourMap_->isChecked() && map_;
+    legend_->setVisible(on);
+    emit colourMapChanged(on ? map_ : nullptr);
 }
 
 void VerificationPanel::onRowChanged(int row)

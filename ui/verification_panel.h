@@ -3,10 +3,13 @@
 // findings listed one a line (faults in red), and a finding chosen in the
 // list announced with its step, move and position, which the window passes
 // to the step list, the NC view and the 3-D view. A new plan makes the list
-// stale until verified again.
+// stale until verified again. After a milling job's verification the
+// Colour map box shows the finished part coloured by what was found
+// (verify/deviation.h) in the 3-D view, its legend beside it.
 #pragma once
 
 #include "model/plan.h"
+#include "verify/deviation.h"
 #include "verify/verify.h"
 
 #include <QThreadPool>
@@ -14,6 +17,7 @@
 
 #include <memory>
 
+class QCheckBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
@@ -37,6 +41,10 @@ public:
     // The last report shown (empty findings before any).
     const verify::Report& report() const { return report_; }
     QListWidget* list() const { return list_; }
+    QCheckBox* colourMapBox() const { return colourMap_; }
+    // The last verification's colour map (nullptr before any, for a lathe
+    // job and after a new plan).
+    const std::shared_ptr<const verify::DeviationMap>& deviationMap() const { return map_; }
 
 signals:
     // The operator chose a finding: its step (-1: the whole job), move (-1:
@@ -44,16 +52,24 @@ signals:
     void findingSelected(int step, int move, taiwa::Point3 where);
     // A verification finished (its report is report()).
     void verified();
+    // The colour map to show in the 3-D view, or nullptr for none: the box
+    // ticked or cleared, a new verification with the box ticked, a new plan.
+    void colourMapChanged(std::shared_ptr<const taiwa::verify::DeviationMap> map);
 
 private:
-    void show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r);
+    void show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r,
+              std::shared_ptr<const verify::DeviationMap> map);
+    void showColourMap();
     void onRowChanged(int row);
 
     QPushButton* run_;
     QLabel* summary_;
     QListWidget* list_;
+    QCheckBox* colourMap_;
+    QLabel* legend_;
     std::shared_ptr<const Plan> plan_;
     verify::Report report_;
+    std::shared_ptr<const verify::DeviationMap> map_;
     std::uint64_t generation_ = 0;  // of setPlan: a result for an older plan is dropped
     bool busy_ = false;
     QThreadPool pool_;

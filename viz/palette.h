@@ -9,6 +9,7 @@ struct Rgb {
     double red() const { return r / 255.0; }
     double green() const { return g / 255.0; }
     double blue() const { return b / 255.0; }
+    friend bool operator==(const Rgb&, const Rgb&) = default;
 };
 
 namespace palette {
@@ -24,6 +25,16 @@ inline constexpr Rgb kRemoved{245, 160, 60};     // faces the selected step (or 
 inline constexpr Rgb kStockEdges{150, 158, 172}; // the stock's box when the stock is hidden
 inline constexpr Rgb kPartEdges{236, 238, 244};  // the finished pockets' outlines, top and floor
 inline constexpr Rgb kText{220, 224, 232};
+inline constexpr Rgb kClamp{70, 130, 235};       // the setup picture's vice or chuck jaws, translucent
+inline constexpr Rgb kChuck{84, 92, 106};        // the setup picture's chuck body
+// The face a section plane cuts through the stock.
+inline constexpr Rgb kSection{180, 120, 200};
+// The verification's colour map of the finished part (verify::DeviationBand).
+inline constexpr Rgb kGouge{230, 40, 40};        // cut below the part
+inline constexpr Rgb kAtSize{70, 190, 90};       // within the tolerance
+inline constexpr Rgb kRestThin{150, 210, 255};   // material left up to 0.1 mm
+inline constexpr Rgb kRestMedium{60, 130, 240};  // up to 0.5 mm
+inline constexpr Rgb kRestThick{40, 50, 170};    // more
 }  // namespace palette
 
 }  // namespace taiwa::viz

@@ -8,6 +8,7 @@
 
 #include "io/job_io.h"
 
+#include "verify/deviation.h"
 #include "viz/scene.h"
 
 #include <X11/Xlib.h>
@@ -20,6 +21,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 namespace taiwa::viz {
@@ -91,9 +93,6 @@ const std::optional<std::string>& OffscreenWindow::problem() const { return impl
 
 vtkRenderWindow* OffscreenWindow::window() const { return impl_->window; }
 
-namespace {
-
-// The window's picture as PNG bytes; empty when it cannot be encoded.
 std::string pngOf(vtkRenderWindow* window)
 {
     auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
@@ -109,8 +108,6 @@ std::string pngOf(vtkRenderWindow* window)
     if (writer->GetErrorCode() != 0 || !png || png->GetNumberOfValues() == 0) return {};
     return std::string(reinterpret_cast<const char*>(png->GetPointer(0)), static_cast<std::size_t>(png->GetNumberOfValues()));
 }
-
-}  // namespace
 
 Result<std::vector<std::string>> stepPictures(const Plan& plan, int width, int height, int limit)
 {
@@ -155,6 +152,20 @@ Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::st
     scene.setSelectedStep(o.step);
     scene.setShowStock(o.showStock);  // last: the stock is simulated once, for the right step
     if (o.step >= 0 && o.move >= 0) scene.setPlayhead(o.step, o.move);
+    scene.setSection(o.section);
+    if (o.deviation) {
+        verify::Options v;
+        v.resolution = o.resolution;
+        try {
+            const verify::Report report = verify::verifyPlan(plan, v);
+            if (!report.skipped.empty()) return Failure{"no colour map: " + report.skipped};
+            auto map = std::make_shared<const verify::DeviationMap>(verify::deviationMap(plan, report));
+            if (map->empty()) return Failure{"no colour map: a lathe job's view is its half-section"};
+            scene.setDeviationMap(std::move(map));
+        } catch (const std::invalid_argument& e) {
+            return Failure{std::string("no colour map: ") + e.what()};
+        }
+    }
     scene.setView(o.view, static_cast<double>(o.width) / o.height);
     window->AddRenderer(scene.renderer());
     window->Render();

@@ -7,6 +7,7 @@
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
 #include "viz/solids.h"
+#include "verify/deviation.h"
 #include "model/turned_geometry.h"
 
 #include <vtkAxesActor.h>
@@ -18,6 +19,7 @@
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOutlineSource.h>
+#include <vtkPlane.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkTextActor.h>
@@ -114,7 +116,8 @@ void Scene::clear()
     allFeeds_ = allRapids_ = nullptr;
     shownStep_ = -1;
     simulation_.reset();
-    stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = nullptr;
+    stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = cap_ = nullptr;
+    deviation_.reset();  // a map is of one plan
     latheParts_.clear();
     latheStep_.clear();
     axes_ = nullptr;
@@ -393,7 +396,15 @@ void Scene::updateStock()
         return;
     }
     if (stock_) renderer_->RemoveActor(stock_);
-    if (showStock_) {
+    if (cap_) renderer_->RemoveActor(cap_);
+    cap_ = nullptr;
+    // The solid a section cuts open: the colour map, or the simulated stock.
+    std::shared_ptr<const sim::HeightField> shown;
+    const bool solid = deviation_ || showStock_ || section_;
+    if (deviation_) {
+        stock_ = actorFor(deviationSurface(*deviation_), palette::kStock);
+        shown = std::shared_ptr<const sim::HeightField>(deviation_, &deviation_->stock);
+    } else if (solid) {
         if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
         // A step's own cut in its colour: after the step (or the blocks
         // played of it) against the stock before it.
@@ -410,18 +421,46 @@ void Scene::updateStock()
             before = simulation_->before(selected_);
         }
         stock_ = actorFor(heightFieldSurface(*field, before.get()), palette::kStock);
-        stock_->GetMapper()->ScalarVisibilityOn();
-        stock_->GetMapper()->SetColorModeToDirectScalars();
-        stock_->GetProperty()->SetAmbient(0.25);
-        stock_->GetProperty()->SetDiffuse(0.75);
+        shown = field;
     } else {
         stock_ = actorFor(stockBlock(plan_->mmJob.stock), palette::kStock);
         // Only the far faces: a glass tray behind the paths, which keep their colours.
         stock_->GetProperty()->SetOpacity(0.12);
         stock_->GetProperty()->FrontfaceCullingOn();
     }
+    if (shown) {  // the surface's own colours
+        stock_->GetMapper()->ScalarVisibilityOn();
+        stock_->GetMapper()->SetColorModeToDirectScalars();
+        stock_->GetProperty()->SetAmbient(0.25);
+        stock_->GetProperty()->SetDiffuse(0.75);
+    }
+    if (section_ && shown) {
+        // VTK keeps the side its plane's normal points to: ours points away.
+        const SectionPlane& p = *section_;
+        auto clip = vtkSmartPointer<vtkPlane>::New();
+        clip->SetOrigin(p.origin.x, p.origin.y, p.origin.z);
+        clip->SetNormal(-p.normal.x, -p.normal.y, -p.normal.z);
+        stock_->GetMapper()->AddClippingPlane(clip);
+        cap_ = lineActor(sectionCap(*shown, p), palette::kSection, 1.0);  // unlit: one flat colour
+        renderer_->AddActor(cap_);
+    }
     renderer_->AddActor(stock_);
-    stockEdges_->SetVisibility(!showStock_);
+    stockEdges_->SetVisibility(!solid);
+}
+
+void Scene::setSection(std::optional<SectionPlane> plane)
+{
+    if (plane == section_) return;
+    section_ = plane;
+    updateStock();
+}
+
+void Scene::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
+{
+    if (map && map->empty()) map = nullptr;
+    if (map == deviation_) return;
+    deviation_ = std::move(map);
+    updateStock();
 }
 
 void Scene::updateTool()

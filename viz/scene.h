@@ -4,7 +4,8 @@
 // of every step (feeds and rapids in their colours, the selected step
 // emphasised, the others dimmed), the tool at the selected path's
 // start or at the end of the highlighted move (the NC block the operator
-// is on), one highlighted move, axes with a scale note, camera presets. The
+// is on), one highlighted move, axes with a scale note, camera presets,
+// a section plane through the stock and the verification's colour map. The
 // offscreen renderer and the preview widget both show this scene; it is the
 // one door between the core's types and VTK.
 #pragma once
@@ -23,7 +24,11 @@
 #include <vector>
 
 namespace taiwa::sim {
+class HeightField;
 class StockSimulation;
+}
+namespace taiwa::verify {
+struct DeviationMap;
 }
 
 class vtkAxesActor;
@@ -82,6 +87,17 @@ public:
     // view; nothing removes it. viz/scene_marker.cpp.
     void markPoint(std::optional<Point3> p);
     std::optional<Point3> markedPoint() const { return marked_; }
+    // A section through the stock (nothing: none): the simulated stock, or
+    // the colour map, shown cut open by the plane, the face it cuts in
+    // palette::kSection; the paths stay whole. A lathe job's view is a
+    // section already: there it changes nothing.
+    void setSection(std::optional<SectionPlane> plane);
+    const std::optional<SectionPlane>& section() const { return section_; }
+    // The verification's colour map (verify/deviation.h) on the finished
+    // part in place of the stock, whatever step is selected; nullptr: the
+    // stock again. A new plan (setPlan) drops it.
+    void setDeviationMap(std::shared_ptr<const verify::DeviationMap> map);
+    bool showsDeviation() const { return deviation_ != nullptr; }
     // Camera preset fitted to the stock and the paths for a viewport of
     // width / height = aspect.
     void setView(ViewPreset preset, double aspect);
@@ -131,7 +147,9 @@ private:
     MergedPaths merged_;  // merged mode only
     vtkSmartPointer<vtkActor> allFeeds_, allRapids_;
     int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
-    vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_;
+    vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_, cap_;
+    std::optional<SectionPlane> section_;
+    std::shared_ptr<const verify::DeviationMap> deviation_;
     std::optional<Point3> marked_;
     vtkSmartPointer<vtkAxesActor> axes_;
     vtkSmartPointer<vtkTextActor> scaleNote_;

@@ -5,6 +5,7 @@
 #include "model/turned_geometry.h"
 #include "sim/cutter_profile.h"
 #include "turning/turn_tools.h"
+#include "verify/deviation.h"
 #include "viz/palette.h"
 
 #include <vtkCellArray.h>
@@ -95,13 +96,11 @@ private:
     vtkNew<vtkCellArray> polys_;
 };
 
-}  // namespace
-
-vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const sim::HeightField* before)
+// The closed surface of a height field, each top vertex in the colour
+// colourOf(i, j) gives its cell.
+template <class ColourOf>
+vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf& colourOf)
 {
-    if (before && !(before->columns() == f.columns() && before->rows() == f.rows())) before = nullptr;
-    // Cut by the step: lower than before it.
-    const auto removed = [&](int i, int j) { return before && f.at(i, j) < before->at(i, j) - 1e-4; };
     const int nx = f.columns(), ny = f.rows();
     const Stock& s = f.stock();
     const std::vector<float>& z = f.heights();
@@ -114,8 +113,7 @@ vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const
     auto top = [&](int i, int j) {
         vtkIdType& id = ids[static_cast<std::size_t>(j) * nx + i];
         if (id < 0) {
-            const double h = f.at(i, j);
-            id = out.point(vx(i), vy(j), h, removed(i, j) ? palette::kRemoved : h > -1e-4 ? palette::kStock : palette::kMachined);
+            id = out.point(vx(i), vy(j), f.at(i, j), colourOf(i, j));
         }
         return id;
     };
@@ -125,11 +123,11 @@ vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const
     // finer quads beside it meet it without a gap.
     auto flat = [&](int i0, int i1, int j0, int j1) {
         const float h = z[static_cast<std::size_t>(j0) * nx + i0];
-        const bool cut = removed(i0, j0);  // one colour too
+        const Rgb colour = colourOf(i0, j0);  // one colour too
         for (int j = j0; j <= j1; ++j) {
             const float* row = z.data() + static_cast<std::size_t>(j) * nx;
             for (int i = i0; i <= i1; ++i)
-                if (row[i] != h || (before && removed(i, j) != cut)) return false;
+                if (row[i] != h || !(colourOf(i, j) == colour)) return false;
         }
         return true;
     };
@@ -175,6 +173,101 @@ vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const
     }
     out.quad(front[0], back[0], back[nx - 1], front[nx - 1]);  // bottom, facing down
     return out.polyData();
+}
+
+Rgb bandColour(verify::DeviationBand b)
+{
+    using B = verify::DeviationBand;
+    switch (b) {
+    case B::Untouched: return palette::kStock;
+    case B::Gouge: return palette::kGouge;
+    case B::AtSize: return palette::kAtSize;
+    case B::RestThin: return palette::kRestThin;
+    case B::RestMedium: return palette::kRestMedium;
+    case B::RestThick: return palette::kRestThick;
+    }
+    return palette::kStock;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const sim::HeightField* before)
+{
+    if (before && !(before->columns() == f.columns() && before->rows() == f.rows())) before = nullptr;
+    return surfaceOf(f, [&](int i, int j) {
+        const double h = f.at(i, j);
+        if (before && h < before->at(i, j) - 1e-4) return palette::kRemoved;  // cut by the step: lower than before it
+        return h > -1e-4 ? palette::kStock : palette::kMachined;
+    });
+}
+
+vtkSmartPointer<vtkPolyData> deviationSurface(const verify::DeviationMap& map)
+{
+    const int nx = map.stock.columns();
+    return surfaceOf(map.stock, [&](int i, int j) { return bandColour(map.band[static_cast<std::size_t>(j) * nx + i]); });
+}
+
+vtkSmartPointer<vtkPolyData> sectionCap(const sim::HeightField& f, const SectionPlane& plane, std::size_t maxSamples)
+{
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    const double nl = std::hypot(plane.normal.x, plane.normal.y, plane.normal.z);
+    if (!(nl > 0.0) || f.columns() <= 0) return pd;
+    const double n[3] = {plane.normal.x / nl, plane.normal.y / nl, plane.normal.z / nl};
+    // u across the plane, level where it can be; v = n x u.
+    double u[3] = {-n[1], n[0], 0.0};
+    double ul = std::hypot(u[0], u[1]);
+    if (ul < 1e-9) {  // a level plane: u along X
+        u[0] = 1.0;
+        u[1] = 0.0;
+        ul = 1.0;
+    }
+    for (double& c : u) c /= ul;
+    const double v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};
+    const Stock& s = f.stock();
+    const double o[3] = {plane.origin.x, plane.origin.y, plane.origin.z};
+    // The stock's box seen in the plane's (a, b) coordinates.
+    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
+    for (const double x : {s.x, s.x + s.width})
+        for (const double y : {s.y, s.y + s.length})
+            for (const double z : {-s.height, 0.0}) {
+                const double d[3] = {x - o[0], y - o[1], z - o[2]};
+                const double a = d[0] * u[0] + d[1] * u[1] + d[2] * u[2], b = d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
+                a0 = std::min(a0, a);
+                a1 = std::max(a1, a);
+                b0 = std::min(b0, b);
+                b1 = std::max(b1, b);
+            }
+    const double step =
+        std::max(f.cellSize(), std::sqrt((a1 - a0) * (b1 - b0) / static_cast<double>(std::max<std::size_t>(maxSamples, 1))));
+    const int na = std::max(1, static_cast<int>(std::ceil((a1 - a0) / step)));
+    const int nb = std::max(1, static_cast<int>(std::ceil((b1 - b0) / step)));
+    // A sample is in the material when it lies over the stock, above its
+    // bottom and not above the stock's top there.
+    const auto inside = [&](double a, double b) {
+        const double x = o[0] + a * u[0] + b * v[0], y = o[1] + a * u[1] + b * v[1], z = o[2] + a * u[2] + b * v[2];
+        return f.contains(x, y) && z >= f.bottom() - 1e-9 && z <= f.atPoint(x, y) + 1e-9;
+    };
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    const auto at = [&](double a, double b) {
+        return points->InsertNextPoint(o[0] + a * u[0] + b * v[0], o[1] + a * u[1] + b * v[1], o[2] + a * u[2] + b * v[2]);
+    };
+    // Each row's runs of samples in the material, one quad a run.
+    for (int jb = 0; jb < nb; ++jb) {
+        const double b = b0 + (jb + 0.5) * step;
+        int start = -1;
+        for (int ia = 0; ia <= na; ++ia) {
+            const bool in = ia < na && inside(a0 + (ia + 0.5) * step, b);
+            if (in && start < 0) start = ia;
+            if (in || start < 0) continue;
+            const double aFrom = a0 + start * step, aTo = a0 + ia * step, bFrom = b - step / 2, bTo = b + step / 2;
+            addQuad(polys, at(aFrom, bFrom), at(aTo, bFrom), at(aTo, bTo), at(aFrom, bTo));
+            start = -1;
+        }
+    }
+    pd->SetPoints(points);
+    pd->SetPolys(polys);
+    return pd;
 }
 
 vtkSmartPointer<vtkPolyData> stockBlock(const Stock& s)

@@ -8,10 +8,13 @@
 #include "model/turned.h"
 #include "model/tool.h"
 #include "sim/height_field.h"
+#include "verify/deviation.h"
+#include "viz/render.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace taiwa::viz {
@@ -24,6 +27,18 @@ namespace taiwa::viz {
 // stock `before` a step (the same grid), palette::kRemoved where the step
 // lowered it further.
 vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& field, const sim::HeightField* before = nullptr);
+
+// The verification's colour map on the finished part: the map's stock
+// surface (as heightFieldSurface) coloured by band: palette::kGouge,
+// kAtSize, kRestThin, kRestMedium, kRestThick, and kStock where the job
+// leaves the stock as it is.
+vtkSmartPointer<vtkPolyData> deviationSurface(const verify::DeviationMap& map);
+
+// The face a section plane cuts through the stock the height field holds:
+// the plane sampled at the field's cell size (coarser when that takes more
+// than `maxSamples`), a quad for each run of samples inside the material.
+vtkSmartPointer<vtkPolyData> sectionCap(const sim::HeightField& field, const SectionPlane& plane,
+                                        std::size_t maxSamples = 1'000'000);
 
 // The uncut stock block.
 vtkSmartPointer<vtkPolyData> stockBlock(const Stock& stock);

@@ -456,6 +456,45 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::SectionBar</name>
+        <message>
+            <source>No section</source>
+            <translation>断面なし</translation>
+        </message>
+        <message>
+            <source>Section across X</source>
+            <translation>X 方向の断面</translation>
+        </message>
+        <message>
+            <source>Section across Y</source>
+            <translation>Y 方向の断面</translation>
+        </message>
+        <message>
+            <source>Section across Z</source>
+            <translation>Z 方向の断面</translation>
+        </message>
+        <message>
+            <source>Cut the stock open along a plane to see inside it</source>
+            <translation>素材を平面で切って内部を見る</translation>
+        </message>
+        <message>
+            <source>Where the plane cuts the stock</source>
+            <translation>平面が素材を切る位置</translation>
+        </message>
+        <message>
+            <source>A plane across X or Y turned about Z</source>
+            <translation>X または Y 方向の平面を Z 軸まわりに回す角度</translation>
+        </message>
+        <message>
+            <source>Flip</source>
+            <translation>反転</translation>
+        </message>
+        <message>
+            <source>Take away the material on the other side of the plane</source>
+            <translation>平面の反対側の材料を取り除く</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::StationWindow</name>
         <message>
             <source>Tool library: %1 (using the built-in library)</source>
@@ -1057,8 +1096,32 @@
             <translation>検証(&amp;V)</translation>
         </message>
         <message>
+            <source>Colour &amp;map</source>
+            <translation>カラーマップ(&amp;M)</translation>
+        </message>
+        <message>
             <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
             <translation>全工程を %1 mm の格子で素材に削り込み、削り込み過ぎ・干渉・早送りでの素材への突入・ストローク超過・削り残しを一覧にします</translation>
+        </message>
+        <message>
+            <source>Show the finished part in the 3-D view coloured by what the verification found</source>
+            <translation>検証の結果で色分けした仕上がり形状を 3D ビューに表示</translation>
+        </message>
+        <message>
+            <source>gouge</source>
+            <translation>削り込み</translation>
+        </message>
+        <message>
+            <source>at size</source>
+            <translation>寸法どおり</translation>
+        </message>
+        <message>
+            <source>up to %1 mm left</source>
+            <translation>%1 mm 以下の削り残し</translation>
+        </message>
+        <message>
+            <source>more left</source>
+            <translation>それ以上の削り残し</translation>
         </message>
         <message>
             <source>Not verified since the last change.</source>

@@ -456,6 +456,45 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::SectionBar</name>
+        <message>
+            <source>No section</source>
+            <translation>无剖面</translation>
+        </message>
+        <message>
+            <source>Section across X</source>
+            <translation>X 向剖面</translation>
+        </message>
+        <message>
+            <source>Section across Y</source>
+            <translation>Y 向剖面</translation>
+        </message>
+        <message>
+            <source>Section across Z</source>
+            <translation>Z 向剖面</translation>
+        </message>
+        <message>
+            <source>Cut the stock open along a plane to see inside it</source>
+            <translation>用平面剖开毛坯查看内部</translation>
+        </message>
+        <message>
+            <source>Where the plane cuts the stock</source>
+            <translation>平面剖切毛坯的位置</translation>
+        </message>
+        <message>
+            <source>A plane across X or Y turned about Z</source>
+            <translation>X 或 Y 向平面绕 Z 轴转过的角度</translation>
+        </message>
+        <message>
+            <source>Flip</source>
+            <translation>翻转</translation>
+        </message>
+        <message>
+            <source>Take away the material on the other side of the plane</source>
+            <translation>去掉平面另一侧的材料</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::StationWindow</name>
         <message>
             <source>Tool library: %1 (using the built-in library)</source>
@@ -1057,8 +1096,32 @@
             <translation>验证(&amp;V)</translation>
         </message>
         <message>
+            <source>Colour &amp;map</source>
+            <translation>色彩图(&amp;M)</translation>
+        </message>
+        <message>
             <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
             <translation>以 %1 mm 网格将所有工步切入毛坯，列出过切、碰撞、快移撞入毛坯、超出行程和残料</translation>
+        </message>
+        <message>
+            <source>Show the finished part in the 3-D view coloured by what the verification found</source>
+            <translation>在三维视图中按验证结果着色显示成品零件</translation>
+        </message>
+        <message>
+            <source>gouge</source>
+            <translation>过切</translation>
+        </message>
+        <message>
+            <source>at size</source>
+            <translation>尺寸合格</translation>
+        </message>
+        <message>
+            <source>up to %1 mm left</source>
+            <translation>残留不超过 %1 mm</translation>
+        </message>
+        <message>
+            <source>more left</source>
+            <translation>残留更多</translation>
         </message>
         <message>
             <source>Not verified since the last change.</source>
