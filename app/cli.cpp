@@ -1,9 +1,12 @@
 // The command line of docs/command-line.md: `taiwa [JOB]`, `taiwa check JOB`,
-// `taiwa export JOB --out DIR ...`, `taiwa render JOB --out PNG ...`,
-// `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 1 internal failure.
+// `taiwa export JOB --out DIR ...`, `taiwa verify JOB ...` (its report in
+// app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `--version`,
+// `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
+// internal failure.
 #include "app/cli.h"
 
 #include "app/options.h"
+#include "app/verify_command.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "job/step_job.h"
@@ -15,9 +18,6 @@
 #include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
-#include "verify/verify.h"
-
-#include <nlohmann/json.hpp>
 
 #if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
 #define TAIWA_WITH_RENDER 1
@@ -188,92 +188,11 @@ std::string dialectFor(const Options& o, const Plan& plan)
     return !o.dialect.empty() ? o.dialect : !plan.job.dialect.empty() ? plan.job.dialect : "linuxcnc";
 }
 
-// The plan verified, its findings placed on the tape of `dialect`.
-verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect)
-{
-    verify::Options v;
-    v.resolution = o.resolution;
-    verify::Report report = verify::verifyPlan(plan, v);
-    if (!report.findings.empty() && !plan.mmJob.bar) {
-        try {
-            verify::placeOnTape(report, postProcess(plan.steps, plan.tools, postOptions(plan, dialect)));
-        } catch (const std::invalid_argument&) {
-            // A dialect that cannot post this job: the findings keep their moves.
-        }
-    }
-    return report;
-}
-
-std::string summary(const verify::Report& r)
-{
-    using K = verify::FindingKind;
-    return std::to_string(r.count(K::Gouge)) + " gouges, " + std::to_string(r.count(K::Collision)) + " collisions, " +
-           std::to_string(r.count(K::RapidIntoStock)) + " rapids into stock, " + std::to_string(r.count(K::TravelLimit)) +
-           " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left";
-}
-
 int verifyJob(const Options& o)
 {
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
-    const std::string name = fileName(o.job);
-    const verify::Report r = verified(l.plan, o, dialectFor(o, l.plan));
-    if (o.json) {
-        nlohmann::ordered_json j;
-        j["job"] = name;
-        j["resolution"] = r.resolution;
-        j["grid"] = {r.columns, r.rows};
-        if (!r.skipped.empty()) j["skipped"] = r.skipped;
-        j["findings"] = nlohmann::ordered_json::array();
-        for (const auto& f : r.findings) {
-            nlohmann::ordered_json e;
-            e["kind"] = verify::toKey(f.kind);
-            if (!f.part.empty()) e["part"] = f.part;
-            e["fatal"] = f.fatal();
-            e["step"] = f.step >= 0 ? nlohmann::ordered_json(f.step + 1) : nlohmann::ordered_json();
-            e["unit"] = f.step >= 0 ? nlohmann::ordered_json(l.plan.steps[static_cast<std::size_t>(f.step)].unit + 1)
-                                    : nlohmann::ordered_json();
-            e["move"] = f.move >= 0 ? nlohmann::ordered_json(f.move + 1) : nlohmann::ordered_json();
-            e["line"] = f.line > 0 ? nlohmann::ordered_json(f.line) : nlohmann::ordered_json();
-            e["position"] = {f.position.x, f.position.y, f.position.z};
-            e["size"] = f.size;
-            e["area"] = f.area;
-            e["message"] = verify::describe(f, l.plan);
-            j["findings"].push_back(e);
-        }
-        j["fatal"] = r.fatal();
-        std::cout << j.dump(2) << '\n';
-    } else {
-        for (const auto& f : r.findings) std::cout << name << ": " << verify::describe(f, l.plan) << '\n';
-        if (!r.skipped.empty()) std::cout << name << ": not verified: " << r.skipped << '\n';
-        else
-            std::cout << name << ": verified at " << r.resolution << " mm (" << r.columns << " x " << r.rows
-                      << " cells): " << summary(r) << '\n';
-    }
-    return r.fatal() ? kFindings : kOk;
-}
-
-// The sheet's pictures of the steps, drawn offscreen by the 3-D view's
-// renderer; without a display (or a build without the view) the sheet says
-// why there are none. At most kMaxPictures: a very large job's sheet stays
-// small and quick.
-constexpr int kMaxPictures = 200;
-void stepPicturesFor(const Plan& plan, ExportOptions& e)
-{
-    if (plan.steps.empty()) return;
-#ifdef TAIWA_WITH_RENDER
-    auto pictures = viz::stepPictures(plan, 320, 240, kMaxPictures);
-    if (!pictures) {
-        e.picturesNote = "No pictures: " + pictures.error() + ".";
-        return;
-    }
-    e.stepPictures = std::move(*pictures);
-    if (plan.steps.size() > e.stepPictures.size())
-        e.picturesNote = "Pictures of the first " + std::to_string(e.stepPictures.size()) + " of " +
-                         std::to_string(plan.steps.size()) + " steps.";
-#else
-    e.picturesNote = "No pictures: this build has no 3-D view.";
-#endif
+    return printVerification(l.plan, o, fileName(o.job), dialectFor(o, l.plan)) ? kFindings : kOk;
 }
 
 int exportJob(const Options& o, int& argc, char** argv)
@@ -309,6 +228,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.jobFile = fileName(o.job);
     e.verificationFaults = faults;
     if (o.pictures) stepPicturesFor(l.plan, e);
+    if (o.pictures) setupPictureFor(l.plan, e);
     const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
     if (!written) {
         std::cerr << "taiwa: export: " << written.error() << '\n';

@@ -2,7 +2,7 @@
 // processes: a clean sample (words and JSON), a job beyond the machine's
 // travel (exit 3, the export refused with nothing written, written with
 // --force and the faults red on the sheet), options refused, a lathe job
-// not simulated and saying so.
+// verified clean.
 #include "support/support.h"
 
 #include <QDir>
@@ -82,9 +82,9 @@ private slots:
         QVERIFY(QFileInfo(QDir(out).filePath("wide.sheet.pdf")).size() > 0);
     }
 
-    // The sheet shows each step's stock in a picture, in the HTML inlined and
-    // in the PDF; without a display it says why there are none; none at all
-    // with --no-pictures.
+    // The sheet shows the setup and each step's stock in a picture, in the
+    // HTML inlined and in the PDF; without a display it says why there are
+    // none; none at all with --no-pictures.
     void sheetHasAPictureOfEveryStep()
     {
         QTemporaryDir dir;
@@ -102,8 +102,10 @@ private slots:
             QCOMPARE(images, std::size_t{0});
             QVERIFY(html.find("No pictures: ") != std::string::npos);
         } else {
-            QCOMPARE(images, n);
+            QCOMPARE(images, n + 1);  // and the setup's
             QVERIFY(html.find("src=\"data:image/png;base64,iVBORw0KGgo") != std::string::npos);  // PNG's signature
+            QVERIFY(html.find("<figure class=\"setup\"><img alt=\"The stock; G54 at the origin\" src=\"data:image/png;base64,iVBORw0KGgo") !=
+                    std::string::npos);
             QVERIFY(html.find("<figcaption>3. Floor finishing I, unit 1 Pocket A</figcaption>") != std::string::npos);
         }
         const auto bare = runTaiwa({"export", job, "--out", dir.filePath("bare"), "--resolution", "0.25", "--no-pictures"});
@@ -129,11 +131,12 @@ private slots:
         QCOMPARE(runTaiwa({"verify", job, "--no-pictures"}).exitCode, 2);
     }
 
-    void latheJobNotSimulated()
+    void latheJobVerified()
     {
         const auto r = runTaiwa({"verify", sourcePath("resources/samples/lathe-turned-shaft.taiwa")});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.contains("not verified: a lathe job is not simulated yet"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("lathe-turned-shaft.taiwa: verified at 0.05 mm (half-section)"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("0 gouges") && !r.out.contains("not verified"), qPrintable(r.out));
     }
 };
 

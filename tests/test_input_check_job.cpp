@@ -108,6 +108,26 @@ private slots:
         EXPECT_ONLY(check(j), 1, "tools.roughing", "r1 − α2 = 0.2882 in");  // 7.62 mm - 0.3 mm
     }
 
+    // The vice's jaws grip the block from its bottom, below its top; a lathe
+    // has no vice. The units are checked as without a clamping.
+    void theClampingIsChecked()
+    {
+        Job j = job({m4()});
+        j.clamping = Clamping{Clamping::Grip::Y, 12};
+        QVERIFY2(check(j).empty(), dump(check(j)));
+        j.clamping->height = 0;
+        EXPECT_ONLY(check(j), 0, "clamping.height", "the jaws' height is 0 mm");
+        j.clamping->height = 40;
+        EXPECT_ONLY(check(j), 0, "clamping.height", "the jaws reach 40 mm up the block, its top or beyond (the stock is 40 mm high)");
+        j.clamping->height = std::nan("");
+        EXPECT_ONLY(check(j), 0, "clamping.height", "");
+        j.clamping->height = 12;
+        j.machine = "lathe";
+        j.bar = BarStock{};
+        j.units.clear();
+        EXPECT_ONLY(check(j), 0, "clamping", "a lathe holds its bar in the chuck");
+    }
+
     void technologyInForce()
     {
         Job j = job({m4()});

@@ -235,6 +235,50 @@ private slots:
         QVERIFY(lathe >= 5 && milling >= 15);
     }
 
+    // The block's clamping: version 4, written after the stock, read back
+    // the same, converted with the job's lengths; a bad value refused
+    // naming its field.
+    void theClampingIsVersionFourAndRoundTrips()
+    {
+        Job j = handBuilt();
+        j.clamping = Clamping{Clamping::Grip::X, 12.5};
+        const std::string text = writeJob(j);
+        QVERIFY(text.find("\"version\": 4,") != std::string::npos);
+        QVERIFY2(text.find("  \"clamping\": {\n    \"fixture\": \"vice\",\n    \"grip\": \"x\",\n    \"height\": 12.5\n  },\n") !=
+                     std::string::npos,
+                 text.c_str());
+        QVERIFY(text.find("\"stock\"") < text.find("\"clamping\""));
+        const JobReadResult back = readJob(text);
+        QVERIFY2(back.job, qPrintable(QString::fromStdString(diagnosticLines("job", back.diagnostics))));
+        QVERIFY(*back.job == j);
+        QCOMPARE(writeJob(*back.job), text);
+        j.clamping->grip = Clamping::Grip::Y;
+        QCOMPARE(readJob(writeJob(j)).job->clamping->grip, Clamping::Grip::Y);
+        j.lengthUnit = LengthUnit::Inch;
+        QCOMPARE(toMillimetres(j).clamping->height, 12.5 * 25.4);
+        j.clamping.reset();
+        QVERIFY(writeJob(j).find("clamping") == std::string::npos);
+
+        const std::string good = "\"clamping\": {\"fixture\": \"vice\", \"grip\": \"x\", \"height\": 12.5}";
+        const std::pair<std::string, std::string> bad[] = {
+            {"\"clamping\": {\"fixture\": \"vice\", \"grip\": \"z\", \"height\": 12.5}", "job clamping.grip: "},
+            {"\"clamping\": {\"fixture\": \"vice\", \"grip\": \"x\", \"height\": \"12\"}", "job clamping.height: must be a number"},
+            {"\"clamping\": {\"fixture\": \"vice\", \"grip\": \"x\"}", "job clamping.height: "},
+            {"\"clamping\": {\"fixture\": \"clamp\", \"grip\": \"x\", \"height\": 12.5}", "job clamping.fixture: "},
+            {"\"clamping\": {\"fixture\": \"vice\", \"grip\": \"x\", \"height\": 12.5, \"depth\": 5}", "job clamping.depth: "},
+            {"\"clamping\": true", "job clamping: must be an object"},
+        };
+        const std::string base = writeJob(*back.job);
+        const std::size_t at = base.find("\"clamping\"");
+        const std::size_t end = base.find("},\n", at) + 1;
+        QVERIFY(readJob(std::string(base).replace(at, end - at, good)).job);
+        for (const auto& [clamping, expected] : bad) {
+            const JobReadResult r = readJob(std::string(base).replace(at, end - at, clamping));
+            const std::string lines = diagnosticLines("j", r.diagnostics);
+            QVERIFY2(!r.job && lines.starts_with("j: " + expected), lines.c_str());
+        }
+    }
+
     void handBuiltJobsRoundTrip()
     {
         Job inch = handBuilt();

@@ -1,29 +1,86 @@
 // The machining instruction sheet of a planned sample job: every step's row
 // with its numbers, the tool list, escaping of job text, and a PDF that
-// poppler reads as A4 landscape pages.
+// poppler reads as A4 landscape pages; the setup's clamping and picture and
+// the tools' drawings (their geometry, the SVG and the PDF painted from it).
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "export/sheet_pdf.h"
 #include "sheet/sheet.h"
+#include "sheet/tool_drawing.h"
 #include "support/support.h"
 #include "tools/cutting.h"
 #include "tools/tool_library.h"
 
+#include <QBuffer>
+#include <QDir>
 #include <QGuiApplication>
+#include <QImage>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <fmt/format.h>
 
+#include <regex>
+
 using namespace taiwa;
 
 namespace {
-Plan samplePlan(const std::string& name)
+Plan samplePlan(const std::string& name, std::optional<Clamping> clamping = std::nullopt)
 {
     auto read = readJobFile(test::sourcePath("resources/samples/m4-standard.taiwa").toStdString());
     read.job->name = name;
+    read.job->clamping = clamping;
     return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+}
+
+// A stand-in for the setup picture: one colour, to be found again in the PDF.
+constexpr QRgb kSetupColour = qRgb(255, 0, 220);
+std::string setupPng()
+{
+    QImage image(320, 240, QImage::Format_RGB32);
+    image.fill(kSetupColour);
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    return bytes.toStdString();
+}
+
+// The sheet's pages as pictures (pdftoppm at 50 dpi).
+std::vector<QImage> pages(const QString& pdf)
+{
+    QTemporaryDir dir;
+    QProcess p;
+    p.start("pdftoppm", {"-r", "50", "-png", pdf, dir.filePath("page")});
+    p.waitForFinished();
+    std::vector<QImage> out;
+    for (const QString& f : QDir(dir.path()).entryList({"page*.png"}, QDir::Files, QDir::Name))
+        out.push_back(QImage(dir.filePath(f)).convertToFormat(QImage::Format_RGB32));
+    return out;
+}
+
+int pixelsOf(const QImage& image, QRgb colour)
+{
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            n += std::abs(qRed(p) - qRed(colour)) + std::abs(qGreen(p) - qGreen(colour)) + std::abs(qBlue(p) - qBlue(colour)) < 12;
+        }
+    return n;
+}
+
+// The extent of a drawing's shape in mm: its width along the tool and its height across.
+std::pair<double, double> extentMm(const sheet::ToolDrawing& d, sheet::ToolDrawing::Part part)
+{
+    for (const auto& s : d.shapes) {
+        if (s.part != part) continue;
+        double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+        for (const auto& p : s.points) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        return {(x1 - x0) / d.scale, (y1 - y0) / d.scale};
+    }
+    return {-1, -1};
 }
 }  // namespace
 
@@ -122,6 +179,103 @@ private slots:
         // The tool list: life 120, used 30, left 90.
         QVERIFY(html.contains("<td class=n>120</td><td class=n>30.0</td><td class=n>90.0</td>"));
         for (const char* raw : {"<rev B>", "<10>", "<worn>", "& spare", "& co"}) QVERIFY2(!html.contains(raw), raw);
+    }
+
+    // A tool's drawing: the holder's nose as the library gives it (else as
+    // its name says), the flutes, the stick-out dimensioned with its value;
+    // the SVG has the same shapes; lathe tools have none.
+    void toolDrawingHasTheLibrarysHolderAndStickOut()
+    {
+        const auto library = defaultToolLibrary();
+        Tool t = *std::find_if(library.begin(), library.end(), [](const Tool& x) { return x.id == 27; });  // 10 mm end mill
+        t.holderDiameter = 40;
+        t.holderLength = 30;
+        t.stickout = 45;
+        t.fluteLength = 22;
+        const auto len = [](double mm) { return fmt::format("{:.3f} mm", mm); };
+        const auto d = sheet::toolDrawing(t, len);
+        QVERIFY(d);
+        using Part = sheet::ToolDrawing::Part;
+        const auto near = [](std::pair<double, double> got, double w, double h) {
+            return std::abs(got.first - w) < 1e-9 && std::abs(got.second - h) < 1e-9;
+        };
+        QVERIFY(near(extentMm(*d, Part::Holder), 30, 40));
+        QVERIFY(near(extentMm(*d, Part::Shank), 45 - 22, 10));
+        QVERIFY(near(extentMm(*d, Part::Flutes), 22, 10));
+        // The dimension line: from the holder's face to the tip, 45 mm, and its text.
+        const auto dimension = std::find_if(d->lines.begin(), d->lines.end(), [](const auto& l) {
+            return !l.dashed && l.from.y == l.to.y;
+        });
+        QVERIFY(dimension != d->lines.end());
+        QCOMPARE(dimension->from.x, 4 + 30 * d->scale);
+        QVERIFY(std::abs((dimension->to.x - dimension->from.x) / d->scale - 45) < 1e-9);
+        QCOMPARE(d->texts.size(), std::size_t{1});
+        QCOMPARE(d->texts[0].text, std::string("stick-out 45.000 mm"));
+        // Everything on the canvas.
+        for (const auto& s : d->shapes)
+            for (const auto& p : s.points)
+                QVERIFY(p.x >= 0 && p.x <= sheet::ToolDrawing::kWidth && p.y >= 0 && p.y <= sheet::ToolDrawing::kHeight);
+        // The SVG: the holder's polygon at the same points, the text.
+        const std::string svg = sheet::toolDrawingSvg(*d);
+        std::smatch m;
+        const std::regex holderPolygon("<polygon points=\"([^\"]*)\" fill=\"#9aa3b2\"");
+        QVERIFY(std::regex_search(svg, m, holderPolygon));
+        std::string expected;
+        for (const auto& p : d->shapes[0].points) expected += fmt::format("{}{:.2f},{:.2f}", expected.empty() ? "" : " ", p.x, p.y);
+        QCOMPARE(m[1].str(), expected);
+        QVERIFY(svg.find(">stick-out 45.000 mm</text>") != std::string::npos);
+        QVERIFY(svg.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\"") && svg.ends_with("</svg>"));
+        // Without the library's measure, the holder's name: an ER32 collet nut is 50 mm across.
+        t.holderDiameter = t.holderLength = 0;
+        t.holder = "ER32 collet chuck";
+        QVERIFY(near(extentMm(*sheet::toolDrawing(t, len), Part::Holder), 30, 50));
+        t.type = ToolType::TurningInsert;
+        QVERIFY(!sheet::toolDrawing(t, len));
+    }
+
+    // The setup: the clamping in words (or that the job does not say), the
+    // picture inlined in the HTML and painted near the top of the PDF's
+    // first page; every tool drawn in both.
+    void sheetShowsTheSetupAndEveryToolDrawn()
+    {
+        const Plan loose = samplePlan("Loose");
+        QVERIFY(QString::fromStdString(sheetHtml(loose, {})).contains("<p>Clamping not given.</p>"));
+        const Plan plan = samplePlan("Held", Clamping{Clamping::Grip::X, 12});
+        SheetOptions o;
+        o.setupPicture = setupPng();
+        const std::string html = sheetHtml(plan, o);
+        QVERIFY(html.find("<p>Clamping: vice, the jaws on the stock's X faces (left and right), gripping 12.000 mm up from its "
+                          "bottom.</p>") != std::string::npos);
+        const std::string base64 = QByteArray::fromStdString(o.setupPicture).toBase64().toStdString();
+        QVERIFY(html.find("<figure class=\"setup\"><img alt=\"The stock in the vice; G54 at the origin\" src=\"data:image/png;base64," +
+                          base64 + "\"><figcaption>") != std::string::npos);
+        QVERIFY(html.find("<figure class=\"setup\">") < html.find("<h2>Process steps</h2>"));
+        std::size_t svgs = 0;
+        for (std::size_t at = html.find("<svg "); at != std::string::npos; at = html.find("<svg ", at + 1)) ++svgs;
+        QVERIFY(!plan.tools.empty());
+        QCOMPARE(svgs, plan.tools.size());
+        for (const auto& t : plan.tools) {
+            const std::string figure = sheet::toolDrawingSvg(*sheet::toolDrawing(t, [](double mm) { return fmt::format("{:.3f} mm", mm); })) +
+                                       fmt::format("<figcaption>T{} {}</figcaption>", t.id, t.name);
+            QVERIFY2(html.find(figure) != std::string::npos, figure.c_str());
+        }
+
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath("held.pdf");
+        QVERIFY(writeSheetPdf(plan, o, pdf.toStdString()));
+        const std::vector<QImage> shown = pages(pdf);
+        if (shown.empty()) QSKIP("pdftoppm is not installed");
+        // The picture at a quarter of the page's width (A4 landscape at 50 dpi: 584 px wide), in its upper half.
+        const int setup = pixelsOf(shown[0], kSetupColour);
+        QVERIFY2(setup > 110 * 80 && setup < 140 * 105, qPrintable(QString::number(setup)));
+        QVERIFY(pixelsOf(shown[0].copy(0, 0, shown[0].width(), shown[0].height() / 2), kSetupColour) == setup);
+        // The tools' flutes, in the drawings' colour.
+        int flutes = 0;
+        for (const QImage& page : shown) flutes += pixelsOf(page, qRgb(0xf5, 0xa0, 0x3c));
+        QVERIFY2(flutes > 20 * static_cast<int>(plan.tools.size()), qPrintable(QString::number(flutes)));
+        // No picture given, none painted.
+        QVERIFY(writeSheetPdf(loose, {}, dir.filePath("loose.pdf").toStdString()));
+        QCOMPARE(pixelsOf(pages(dir.filePath("loose.pdf")).at(0), kSetupColour), 0);
     }
 
     void inchSheetShowsInches()

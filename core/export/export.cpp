@@ -226,6 +226,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.faults = options.verificationFaults;
     sheet.stepPictures = options.stepPictures;
     sheet.picturesNote = options.picturesNote;
+    sheet.setupPicture = options.setupPicture;
     auto pdf = sheetPdf(plan, sheet);
     if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
 

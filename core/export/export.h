@@ -25,6 +25,8 @@ struct ExportOptions {
     // caller: the core draws nothing) and why some are missing.
     std::vector<std::string> stepPictures;
     std::string picturesNote;
+    // The sheet's picture of the setup (viz::setupPicture), PNG bytes; empty: none.
+    std::string setupPicture;
 };
 
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in

@@ -17,6 +17,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 
+#include <functional>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -119,33 +120,83 @@ public:
         y_ += line_;
     }
 
-    // The pictures four to a row, each with its caption under it; a row
-    // that does not fit goes on the next page.
+    // Pictures four to a row, each with its caption under it.
     void pictures(const std::vector<sheet::Content::Picture>& pics)
     {
-        constexpr int kPerRow = 4;
-        const double gap = line_ * 0.5;
-        const double w = (area_.width() - gap * (kPerRow - 1)) / kPerRow, h = w * 0.75;
-        for (std::size_t i = 0; i < pics.size(); ++i) {
-            const int col = static_cast<int>(i % kPerRow);
-            if (col == 0) {
-                if (i > 0) y_ += h + line_ + gap;
-                ensure(h + line_);
-            }
-            const QRectF box(col * (w + gap), y_, w, h);
+        std::vector<std::string> captions;
+        for (const auto& p : pics) captions.push_back(p.caption);
+        grid(captions, 4, 0.75, [&](std::size_t i, const QRectF& box) {
             const QImage image = QImage::fromData(reinterpret_cast<const uchar*>(pics[i].png.data()),
                                                   static_cast<int>(pics[i].png.size()), "PNG");
             if (!image.isNull()) p_.drawImage(box, image);
-            p_.drawRect(box);
-            p_.drawText(QRectF(box.left(), box.bottom(), w, line_), Qt::AlignLeft | Qt::AlignVCenter,
-                        elide(q(pics[i].caption), w));
-        }
-        if (!pics.empty()) y_ += h + line_ + gap;
+        });
+    }
+
+    // The tools' drawings six to a row, each painted from the shapes the
+    // HTML's SVG is written from.
+    void drawings(const std::vector<sheet::Content::Drawing>& ds)
+    {
+        std::vector<std::string> captions;
+        for (const auto& d : ds) captions.push_back(d.caption);
+        grid(captions, 6, sheet::ToolDrawing::kHeight / sheet::ToolDrawing::kWidth,
+             [&](std::size_t i, const QRectF& box) { drawing(ds[i].drawing, box); });
     }
 
     void finish() { footer(); }
 
 private:
+    // `captions.size()` cells `perRow` to a row, each `aspect` as high as
+    // wide with its caption under it and a frame, drawn by `paint`; a row
+    // that does not fit goes on the next page.
+    void grid(const std::vector<std::string>& captions, int perRow, double aspect,
+              const std::function<void(std::size_t, const QRectF&)>& paint)
+    {
+        const double gap = line_ * 0.5;
+        const double w = (area_.width() - gap * (perRow - 1)) / perRow, h = w * aspect;
+        for (std::size_t i = 0; i < captions.size(); ++i) {
+            const int col = static_cast<int>(i % static_cast<std::size_t>(perRow));
+            if (col == 0) {
+                if (i > 0) y_ += h + line_ + gap;
+                ensure(h + line_);
+            }
+            const QRectF box(col * (w + gap), y_, w, h);
+            paint(i, box);
+            p_.drawRect(box);
+            p_.drawText(QRectF(box.left(), box.bottom(), w, line_), Qt::AlignLeft | Qt::AlignVCenter,
+                        elide(q(captions[i]), w));
+        }
+        if (!captions.empty()) y_ += h + line_ + gap;
+    }
+
+    // A tool's drawing scaled from its canvas into `box`.
+    void drawing(const sheet::ToolDrawing& d, const QRectF& box)
+    {
+        const double k = box.width() / sheet::ToolDrawing::kWidth;
+        const auto at = [&](const Point2& p) { return QPointF(box.left() + p.x * k, box.top() + p.y * k); };
+        p_.save();
+        p_.setRenderHint(QPainter::Antialiasing);
+        for (const auto& shape : d.shapes) {
+            QPolygonF polygon;
+            for (const auto& p : shape.points) polygon << at(p);
+            p_.setPen(shape.part == sheet::ToolDrawing::Part::Arrow ? QPen(Qt::NoPen) : QPen(Qt::black, 0.6 * k));
+            p_.setBrush(QColor(q(shape.fill)));
+            p_.drawPolygon(polygon);
+        }
+        for (const auto& l : d.lines) {
+            QPen pen(Qt::black, 0.5 * k);
+            if (l.dashed) pen.setDashPattern({12, 4, 2, 4});  // the SVG's "6 2 1 2", in pen widths
+            p_.setPen(pen);
+            p_.drawLine(at(l.from), at(l.to));
+        }
+        QFont font = normal_;
+        font.setPointSizeF(sheet::ToolDrawing::kTextSize * k * 72.0 / pdf_.resolution());
+        p_.setFont(font);
+        p_.setPen(Qt::black);
+        const QFontMetricsF metrics(font, &pdf_);
+        for (const auto& t : d.texts) p_.drawText(at(t.at) - QPointF(metrics.horizontalAdvance(q(t.text)) / 2, 0), q(t.text));
+        p_.restore();
+    }
+
     // A body cell's text, elided to the cell and aligned right (numbers) or
     // left, on the cell's middle line. Cells repeat (modules, tools, labels,
     // numbers): each text is elided and measured once per column width, and
@@ -218,6 +269,8 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     page.title(c.title);
     page.fields(c.fields);
     page.paragraph(c.setup);
+    if (!c.clamping.empty()) page.paragraph(c.clamping);
+    if (c.setupPicture) page.pictures({*c.setupPicture});
     if (!c.faults.empty()) {
         const QColor red(192, 0, 0);
         page.paragraph("Verification: written with faults (--force)", red);
@@ -242,6 +295,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     }
     page.heading("Tools");
     page.table(c.tools);
+    page.drawings(c.toolDrawings);
     if (!c.latheTools.rows.empty()) {
         page.heading("Turret");
         page.table(c.latheTools);

@@ -83,6 +83,21 @@ bool checkBar(const BarStock& mm, const Machine* machine, LengthUnit shown, Diag
     return ok;
 }
 
+// The vice's jaws: a height above 0 and, on a usable block, below its top,
+// so that the top face and what is cut from it stand clear of the jaws.
+void checkClamping(const Clamping& mm, const Stock* stock, LengthUnit shown, Diagnostics& out)
+{
+    if (!std::isfinite(mm.height)) out.push_back(jobError("clamping.height", msg::notFinite("the jaws' height")));
+    else if (mm.height <= 0.0)
+        out.push_back(jobError("clamping.height", "the jaws' height is " + msg::quote({mm.height, shown}) +
+                                                      "; the vice must grip the block: give a height above 0"));
+    else if (stock && mm.height >= stock->height)
+        out.push_back(jobError("clamping.height", "the jaws reach " + msg::quote({mm.height, shown}) +
+                                                      " up the block, its top or beyond (the stock is " +
+                                                      msg::quote({stock->height, shown}) +
+                                                      " high): the top must stand out of the vice"));
+}
+
 // The technology values in force, each within a range that keeps the work
 // bounded (γ sets the layer count, the allowances the passes): docs/input-checks.md.
 struct TechnologyRange {
@@ -212,6 +227,12 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         if (lathe)
             out.push_back(jobError("stock.shape", "machine " + machine->id + " is a lathe: its stock is a bar "
                                                   "(\"shape\": \"bar\" with its diameter and length)"));
+    }
+    if (mm.clamping) {
+        if (mm.bar || lathe)
+            out.push_back(jobError("clamping", "a lathe holds its bar in the chuck; the clamping is for a block in a vice"));
+        else
+            checkClamping(*mm.clamping, stockOk ? &mm.stock : nullptr, shown, out);
     }
     // A work offset some controller has; whether the chosen one has it is
     // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).

@@ -24,11 +24,12 @@ using nlohmann::json;
 using io::ObjectFields;
 using io::Place;
 
-const std::vector<std::string> kJobKeys{"format",     "version", "name",  "lengthUnit", "material", "machine",
-                                        "workOffset", "dialect", "stock", "technology", "latheRoughing", "units"};
+const std::vector<std::string> kJobKeys{"format",  "version", "name",     "lengthUnit", "material",      "machine", "workOffset",
+                                        "dialect", "stock",   "clamping", "technology", "latheRoughing", "units"};
 const std::vector<std::string> kStockShapes{"block", "bar"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kBarKeys{"shape", "diameter", "length", "face", "bore"};
+const std::vector<std::string> kClampingKeys{"fixture", "grip", "height"};
 const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma", "stepOver"};
 bool isBlank(std::string_view text)
 {
@@ -131,6 +132,24 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
     s.length = f.number("length").value_or(0.0);
     s.height = f.number("height").value_or(0.0);
     return s;
+}
+
+// "clamping": {"fixture": "vice", "grip": "y", "height": 10}; absent: not given.
+std::optional<Clamping> readClamping(const ObjectFields& job)
+{
+    const json* v = job.find("clamping");
+    if (!v) return std::nullopt;
+    if (!v->is_object()) {
+        job.error("clamping", msg::io::wrongType("an object", *v));
+        return std::nullopt;
+    }
+    const ObjectFields f(*v, Place{std::nullopt, "", "clamping."}, job.sink());
+    f.rejectUnknown("the clamping", kClampingKeys);
+    f.choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
+    Clamping c;
+    c.grip = f.choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
+    c.height = f.number("height").value_or(0.0);
+    return c;
 }
 
 TechnologyOverrides readTechnology(const ObjectFields& job)
@@ -244,6 +263,7 @@ JobReadResult readJob(std::string_view text)
     job.dialect = f.string("dialect", "");
     if (f.find("latheRoughing")) job.latheRoughingCycles = f.choice("latheRoughing", {"cycle", "passes"}).value_or(0) == 0;
     job.stock = readStock(f, job.bar);
+    job.clamping = readClamping(f);
     job.technology = readTechnology(f);
     const json* units = f.find("units");
     if (!units) f.error("units", msg::io::missing("an array of machining units"));

@@ -60,6 +60,10 @@ ordered jobJson(const Job& job)
     else
         j["stock"] = {{"shape", "block"},         {"x", number(s.x)},           {"y", number(s.y)},
                       {"width", number(s.width)}, {"length", number(s.length)}, {"height", number(s.height)}};
+    if (job.clamping)
+        j["clamping"] = {{"fixture", "vice"},
+                         {"grip", job.clamping->grip == Clamping::Grip::X ? "x" : "y"},
+                         {"height", number(job.clamping->height)}};
     if (!job.technology.empty()) {
         ordered t = ordered::object();
         const TechnologyOverrides& o = job.technology;

@@ -13,6 +13,7 @@ Job withLengths(const Job& job, LengthUnit unit, const LengthMap& f)
     out.lengthUnit = unit;
     out.stock = {f(job.stock.x), f(job.stock.y), f(job.stock.width), f(job.stock.length), f(job.stock.height)};
     if (job.bar) out.bar = BarStock{f(job.bar->diameter), f(job.bar->length), f(job.bar->face), f(job.bar->bore)};
+    if (job.clamping) out.clamping->height = f(job.clamping->height);
     for (auto* v : {&out.technology.alpha1, &out.technology.alpha2, &out.technology.alpha3, &out.technology.beta2})
         if (*v) *v = f(**v);
     for (auto& u : out.units) {
@@ -25,6 +26,7 @@ Job withLengths(const Job& job, LengthUnit unit, const LengthMap& f)
 
 int formatVersionFor(const Job& job)
 {
+    if (job.clamping) return 4;
     if (job.bar) return 3;
     for (const auto& u : job.units)
         if (std::string(u.module.name()) == "TURN") return 3;

@@ -42,6 +42,17 @@ struct BarStock {
     friend bool operator==(const BarStock&, const BarStock&) = default;
 };
 
+// How a milling job's block is held, as the operator sets it up: a vice
+// whose jaws grip two opposite side faces of the block from its bottom up to
+// `height`. The sheet draws and states it; planning and the verification do
+// not depend on it.
+struct Clamping {
+    enum class Grip { X, Y };  // the jaws on the faces at X min and X max, or at Y min and Y max
+    Grip grip = Grip::Y;
+    double height = 10.0;      // how far up the block's sides the jaws reach, from its bottom
+    friend bool operator==(const Clamping&, const Clamping&) = default;
+};
+
 // Tool ids the operator pinned for some steps of a unit; any step kind not
 // named here has its tool chosen automatically. Keys: "pilot", "roughing",
 // "floor", "wall", "inclined".
@@ -59,10 +70,10 @@ struct MachiningUnit {
 
 struct Job {
     // Version 2 added `dialect`, version 3 lathe jobs (bar stock, turned
-    // profiles). A job is written in the oldest version that holds it, so
-    // that a program reading version 1 still reads every milling job
-    // without a dialect.
-    static constexpr int kFormatVersion = 3;
+    // profiles), version 4 the block's `clamping`. A job is written in the
+    // oldest version that holds it, so that a program reading version 1
+    // still reads every milling job without a dialect.
+    static constexpr int kFormatVersion = 4;
     static constexpr int kOldestFormatVersion = 1;
     std::string name;
     LengthUnit lengthUnit = LengthUnit::Millimetre;
@@ -75,6 +86,7 @@ struct Job {
     std::string dialect;
     Stock stock;                   // milling jobs
     std::optional<BarStock> bar;   // lathe jobs: the stock is a bar (then `stock` is not used)
+    std::optional<Clamping> clamping;  // milling jobs: how the block is held; absent: not given
     TechnologyOverrides technology;
     // Lathe jobs: roughing as the control's own cycle (G71) where a profile
     // allows it, or always as explicit passes (controls without cycles).

@@ -27,7 +27,15 @@ struct SheetOptions {
     // why (no display to draw on, a job too large).
     std::vector<std::string> stepPictures;
     std::string picturesNote;
+    // The setup in a picture (viz::setupPicture: the stock, the vice's jaws
+    // or the chuck's, the work offset's origin), PNG bytes; empty: none.
+    std::string setupPicture;
 };
+
+// How far a lathe job's bar must stand out of the chuck's jaws: the part
+// (from its face stock to the deepest Z of its profiles), the parting
+// blade's width and 2 mm [mm].
+double barStickOut(const Plan& plan);
 
 // A self-contained HTML document (inline CSS, no external resources).
 std::string sheetHtml(const Plan& plan, const SheetOptions& options);

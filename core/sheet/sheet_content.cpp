@@ -80,13 +80,6 @@ namespace {
 std::string latheSetup(const Plan& plan, const std::function<std::string(double)>& len)
 {
     const Job& job = plan.mmJob;
-    double zMin = 0.0;
-    for (const TurnedPart& part : plan.turned)
-        for (const auto& e : part.deformed.edges) zMin = std::min({zMin, e.geometry.a.z, e.geometry.b.z});
-    double blade = 0.0;
-    for (const auto& s : plan.steps)
-        if (s.kind == StepKind::Parting && s.tool)
-            if (const Tool* t = plan.tool(s.tool->toolId)) blade = t->turning.width;
     std::string chuck;
     if (const Machine* m = findMachine(job.machine); m && m->chuckDiameter > 0)
         chuck = fmt::format(" in chuck Ø{}", len(m->chuckDiameter));
@@ -94,7 +87,7 @@ std::string latheSetup(const Plan& plan, const std::function<std::string(double)
     for (const auto& s : plan.steps)
         if (s.turn && s.turn->cutting.constantSurfaceSpeed) limit = s.turn->cutting.maxRpm;
     return fmt::format("Setup: bar Ø{}{}, out of the jaws ≥ {}; {}: X0 spindle axis (X as Ø), Z0 finished face{}.",
-                       len(job.bar->diameter), chuck, len(job.bar->face - zMin + blade + 2.0), plan.job.workOffset,
+                       len(job.bar->diameter), chuck, len(barStickOut(plan)), plan.job.workOffset,
                        limit > 0 ? fmt::format("; vc in m/min up to {:.0f} rpm", limit) : "");
 }
 
@@ -155,6 +148,19 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.setup = fmt::format("Setup: work offset {} at the centre of the workpiece, found by probing (unit {}); Z0 on "
                               "its top face.",
                               job.workOffset, plan.setups.front().unit + 1);
+    if (!job.bar)
+        c.clamping = !job.clamping ? "Clamping not given."
+                                   : fmt::format("Clamping: vice, the jaws on the stock's {} faces ({}), gripping {} {} up "
+                                                 "from its bottom.",
+                                                 job.clamping->grip == Clamping::Grip::X ? "X" : "Y",
+                                                 job.clamping->grip == Clamping::Grip::X ? "left and right" : "front and back",
+                                                 len(job.clamping->height), us);
+    if (!o.setupPicture.empty()) {
+        const std::string caption =
+            job.bar ? fmt::format("The bar in the chuck; {} on the finished face", job.workOffset)
+                    : fmt::format("The stock{}; {} at the origin", job.clamping ? " in the vice" : "", job.workOffset);
+        c.setupPicture = Content::Picture{caption, o.setupPicture};
+    }
     if (job.bar) {
         c.setup = latheSetup(plan, len);
         if (plan.steps.empty())  // nothing to cut: no tape, no dialect, no program number
@@ -235,6 +241,9 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.tools.rows.push_back({std::to_string(t.id), t.name, toString(t.type), len(t.diameter), len(t.stickout), t.holder,
                                 fmt::format("{:.0f}", t.lifeMinutes), fmt::format("{:.1f}", t.usedMinutes),
                                 fmt::format("{:.1f}", t.remainingLife())});
+    for (const auto& t : plan.tools)
+        if (auto d = toolDrawing(t, [&](double mm) { return len(mm) + " " + us; }))
+            c.toolDrawings.push_back({fmt::format("T{} {}", t.id, t.name), std::move(*d)});
     // Lathe tools by turret station: what the control's tool table needs.
     c.latheTools.headers = {"Station", "T", "Tool", "Insert / blade", "Nose R " + us, "Tip orientation", "Holder"};
     c.latheTools.numeric = {true, true, false, false, true, true, false};
@@ -267,3 +276,19 @@ Content content(const Plan& plan, const SheetOptions& o)
 }
 
 }  // namespace taiwa::sheet
+
+namespace taiwa {
+
+double barStickOut(const Plan& plan)
+{
+    double zMin = 0.0;
+    for (const TurnedPart& part : plan.turned)
+        for (const auto& e : part.deformed.edges) zMin = std::min({zMin, e.geometry.a.z, e.geometry.b.z});
+    double blade = 0.0;
+    for (const auto& s : plan.steps)
+        if (s.kind == StepKind::Parting && s.tool)
+            if (const Tool* t = plan.tool(s.tool->toolId)) blade = t->turning.width;
+    return (plan.mmJob.bar ? plan.mmJob.bar->face : 0.0) - zMin + blade + 2.0;
+}
+
+}  // namespace taiwa

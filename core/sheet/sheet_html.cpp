@@ -2,6 +2,7 @@
 #include "sheet/sheet.h"
 
 #include "sheet/sheet_content.h"
+#include "sheet/tool_drawing.h"
 
 namespace taiwa {
 
@@ -59,7 +60,12 @@ th { background: #ddd; text-align: left; }
 .pictures { display: flex; flex-wrap: wrap; gap: 6pt; }
 .pictures figure { margin: 0; width: 240px; }
 .pictures img { width: 240px; height: 180px; border: 1px solid #555; }
-.pictures figcaption { font-size: 8pt; }
+.pictures figcaption, .drawings figcaption { font-size: 8pt; }
+.setup { margin: 0; }
+.setup img { width: 320px; height: 240px; border: 1px solid #555; }
+.drawings { display: flex; flex-wrap: wrap; gap: 6pt; }
+.drawings figure { margin: 0; }
+svg.tool { border: 1px solid #555; background: #fff; }
 td.n { text-align: right; }
 table.head td { border: none; padding: 1pt 8pt 1pt 0; }
 )css";
@@ -77,6 +83,13 @@ std::string table(const sheet::Table& t)
     return h + "</table>\n";
 }
 
+// A picture inlined as a PNG data: URL, with its caption under it.
+std::string image(const sheet::Content::Picture& p)
+{
+    return "<img alt=\"" + escape(p.caption) + "\" src=\"data:image/png;base64," + base64(p.png) + "\"><figcaption>" +
+           escape(p.caption) + "</figcaption>";
+}
+
 }  // namespace
 
 std::string sheetHtml(const Plan& plan, const SheetOptions& options)
@@ -90,6 +103,8 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
         h += "<td><b>" + escape(c.fields[i].first) + "</b></td><td>" + escape(c.fields[i].second) + "</td>";
     }
     h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n";
+    if (!c.clamping.empty()) h += "<p>" + escape(c.clamping) + "</p>\n";
+    if (c.setupPicture) h += "<figure class=\"setup\">" + image(*c.setupPicture) + "</figure>\n";
     if (!c.faults.empty()) {
         h += "<h2 class=\"fault\">Verification: written with faults (--force)</h2>\n<ul class=\"fault\">";
         for (const auto& f : c.faults) h += "<li>" + escape(f) + "</li>";
@@ -103,12 +118,16 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
         h += "<h2>The steps in pictures</h2>\n";
         if (!c.picturesNote.empty()) h += "<p>" + escape(c.picturesNote) + "</p>\n";
         h += "<div class=\"pictures\">";
-        for (const auto& p : c.pictures)
-            h += "<figure><img alt=\"" + escape(p.caption) + "\" src=\"data:image/png;base64," + base64(p.png) +
-                 "\"><figcaption>" + escape(p.caption) + "</figcaption></figure>";
+        for (const auto& p : c.pictures) h += "<figure>" + image(p) + "</figure>";
         h += "</div>\n";
     }
     h += "<h2>Tools</h2>\n" + table(c.tools);
+    if (!c.toolDrawings.empty()) {
+        h += "<div class=\"drawings\">";
+        for (const auto& d : c.toolDrawings)
+            h += "<figure>" + sheet::toolDrawingSvg(d.drawing) + "<figcaption>" + escape(d.caption) + "</figcaption></figure>";
+        h += "</div>\n";
+    }
     if (!c.latheTools.rows.empty()) h += "<h2>Turret</h2>\n" + table(c.latheTools);
     if (!c.notes.empty()) {
         h += "<h2>Notes</h2>\n<ul>";

@@ -1,0 +1,117 @@
+// taiwa verify's report, the verification before an export, the sheet's
+// pictures of the steps and of the setup (verify_command.h).
+#include "app/verify_command.h"
+
+#include "pipeline/pipeline.h"
+#include "post/post.h"
+
+#if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
+#define TAIWA_WITH_RENDER 1
+#include "viz/render.h"
+#include "viz/setup_picture.h"
+#endif
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <stdexcept>
+
+namespace taiwa::app {
+
+// The plan verified, its findings placed on the tape of `dialect`.
+verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect)
+{
+    verify::Options v;
+    v.resolution = o.resolution;
+    verify::Report report = verify::verifyPlan(plan, v);
+    if (!report.findings.empty()) {
+        try {
+            verify::placeOnTape(report, postProcess(plan.steps, plan.tools, postOptions(plan, dialect)));
+        } catch (const std::invalid_argument&) {
+            // A dialect that cannot post this job: the findings keep their moves.
+        }
+    }
+    return report;
+}
+
+namespace {
+
+// "0 gouges, 1 collisions, …"
+std::string summary(const verify::Report& r)
+{
+    using K = verify::FindingKind;
+    return std::to_string(r.count(K::Gouge)) + " gouges, " + std::to_string(r.count(K::Collision)) + " collisions, " +
+           std::to_string(r.count(K::RapidIntoStock)) + " rapids into stock, " + std::to_string(r.count(K::TravelLimit)) +
+           " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left";
+}
+
+}  // namespace
+
+bool printVerification(const Plan& plan, const Options& o, const std::string& name, const std::string& dialect)
+{
+    const verify::Report r = verified(plan, o, dialect);
+    if (o.json) {
+        nlohmann::ordered_json j;
+        j["job"] = name;
+        j["resolution"] = r.resolution;
+        j["grid"] = {r.columns, r.rows};
+        if (!r.skipped.empty()) j["skipped"] = r.skipped;
+        j["findings"] = nlohmann::ordered_json::array();
+        for (const auto& f : r.findings) {
+            nlohmann::ordered_json e;
+            e["kind"] = verify::toKey(f.kind);
+            if (!f.part.empty()) e["part"] = f.part;
+            e["fatal"] = f.fatal();
+            e["step"] = f.step >= 0 ? nlohmann::ordered_json(f.step + 1) : nlohmann::ordered_json();
+            e["unit"] = f.step >= 0 ? nlohmann::ordered_json(plan.steps[static_cast<std::size_t>(f.step)].unit + 1)
+                                    : nlohmann::ordered_json();
+            e["move"] = f.move >= 0 ? nlohmann::ordered_json(f.move + 1) : nlohmann::ordered_json();
+            e["line"] = f.line > 0 ? nlohmann::ordered_json(f.line) : nlohmann::ordered_json();
+            e["position"] = {f.position.x, f.position.y, f.position.z};
+            e["size"] = f.size;
+            e["area"] = f.area;
+            e["message"] = verify::describe(f, plan);
+            j["findings"].push_back(e);
+        }
+        j["fatal"] = r.fatal();
+        std::cout << j.dump(2) << '\n';
+    } else {
+        for (const auto& f : r.findings) std::cout << name << ": " << verify::describe(f, plan) << '\n';
+        if (!r.skipped.empty()) std::cout << name << ": not verified: " << r.skipped << '\n';
+        else if (plan.mmJob.bar)  // the exact half-section: no grid
+            std::cout << name << ": verified at " << r.resolution << " mm (half-section): " << summary(r) << '\n';
+        else
+            std::cout << name << ": verified at " << r.resolution << " mm (" << r.columns << " x " << r.rows
+                      << " cells): " << summary(r) << '\n';
+    }
+    return r.fatal();
+}
+
+// At most kMaxPictures: a very large job's sheet stays small and quick.
+constexpr int kMaxPictures = 200;
+void stepPicturesFor(const Plan& plan, ExportOptions& e)
+{
+    if (plan.steps.empty()) return;
+#ifdef TAIWA_WITH_RENDER
+    auto pictures = viz::stepPictures(plan, 320, 240, kMaxPictures);
+    if (!pictures) {
+        e.picturesNote = "No pictures: " + pictures.error() + ".";
+        return;
+    }
+    e.stepPictures = std::move(*pictures);
+    if (plan.steps.size() > e.stepPictures.size())
+        e.picturesNote = "Pictures of the first " + std::to_string(e.stepPictures.size()) + " of " +
+                         std::to_string(plan.steps.size()) + " steps.";
+#else
+    e.picturesNote = "No pictures: this build has no 3-D view.";
+#endif
+}
+
+void setupPictureFor([[maybe_unused]] const Plan& plan, [[maybe_unused]] ExportOptions& e)
+{
+#ifdef TAIWA_WITH_RENDER
+    if (auto picture = viz::setupPicture(plan, 320, 240)) e.setupPicture = std::move(*picture);
+#endif
+}
+
+}  // namespace taiwa::app
