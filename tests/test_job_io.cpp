@@ -219,7 +219,8 @@ private slots:
     }
 
     // Version 3 only for lathe jobs: every milling sample is still version 1
-    // or 2 on disk and when written, so older programs read them as before.
+    // or 2 on disk and when written, so older programs read them as before,
+    // but for one that gives its clamping (version 4: plate.taiwa).
     void latheJobsAreVersionThreeAndOnlyThey()
     {
         int lathe = 0, milling = 0;
@@ -230,7 +231,8 @@ private slots:
             (isLathe ? lathe : milling)++;
             const bool three = text.find("\"version\": 3,") != std::string::npos;
             QVERIFY2(three == isLathe, qPrintable(f));
-            QCOMPARE(formatVersionFor(job), isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
+            QCOMPARE(formatVersionFor(job), job.clamping ? 4 : isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
+            QVERIFY2(job.clamping.has_value() == (text.find("\"version\": 4,") != std::string::npos), qPrintable(f));
         }
         QVERIFY(lathe >= 5 && milling >= 15);
     }
