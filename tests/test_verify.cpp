@@ -74,6 +74,16 @@ ToolPath line(Point3 from, Point3 to)
     return p;
 }
 
+// The slot from (30,40) to (70,40) 5 deep in its own pocket, dipping to
+// Z-5.5 at (60,40): a gouge of 0.5 mm on move 3 (down) and 4 (back up).
+Plan gougedSlot(const Tool& mill)
+{
+    ToolPath p = line({30, 40, -5}, {50, 40, -5});
+    p.moves.insert(p.moves.begin() + 3, Move{MoveKind::Feed, {60, 40, -5.5}});
+    p.moves.insert(p.moves.begin() + 4, Move{MoveKind::Feed, {70, 40, -5}});
+    return planOf(25, 35, 75, 45, 5, 5, mill, p);
+}
+
 const Finding* first(const Report& r, FindingKind k)
 {
     const auto it = std::find_if(r.findings.begin(), r.findings.end(), [k](const Finding& f) { return f.kind == k; });
@@ -158,10 +168,7 @@ private slots:
     void gougeFoundAtItsBlock()
     {
         const Tool mill = endMill(1, ToolType::FlatEndMill, 10, 25, 45);
-        ToolPath p = line({30, 40, -5}, {50, 40, -5});
-        p.moves.insert(p.moves.begin() + 3, Move{MoveKind::Feed, {60, 40, -5.5}});
-        p.moves.insert(p.moves.begin() + 4, Move{MoveKind::Feed, {70, 40, -5}});
-        const Plan plan = planOf(25, 35, 75, 45, 5, 5, mill, p);
+        const Plan plan = gougedSlot(mill);
         Report r = verifyPlan(plan);
         QCOMPARE(r.count(FindingKind::Gouge), 2);  // down to (60,40,-5.5) and back up from it
         const Finding* g = first(r, FindingKind::Gouge);
@@ -432,10 +439,7 @@ private slots:
     void colourMapShowsGougesAndMaterialLeft()
     {
         const Tool mill = endMill(1, ToolType::FlatEndMill, 10, 25, 45);
-        ToolPath p = line({30, 40, -5}, {50, 40, -5});
-        p.moves.insert(p.moves.begin() + 3, Move{MoveKind::Feed, {60, 40, -5.5}});
-        p.moves.insert(p.moves.begin() + 4, Move{MoveKind::Feed, {70, 40, -5}});
-        const Plan gouged = planOf(25, 35, 75, 45, 5, 5, mill, p);
+        const Plan gouged = gougedSlot(mill);
         const Report r = verifyPlan(gouged);
         for (const std::size_t cells : {std::size_t{4'000'000}, std::size_t{4'000}}) {
             const DeviationMap m = deviationMap(gouged, r, cells);
