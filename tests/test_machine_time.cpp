@@ -2,14 +2,19 @@
 // trapezoid, a short line's triangle, collinear blocks run through with
 // look-ahead and stopped at without it, corners slowed by the tolerance,
 // rapids at each axis' rate, drill cycles; the samples' steps and totals;
-// machine definitions whose motion keys are wrong, refused by key.
+// machine definitions whose motion keys are wrong, refused by key. Turning
+// (turnMachineMinutes): a long feed along Z at a fixed rpm and at G96, a
+// rapid across the axis, a face under G96 reaching the spindle limit; the
+// lathe samples' steps against their feed time.
 #include "machine/machine.h"
 #include "machine/motion_time.h"
+#include "model/turn_path.h"
 #include "support/hand_plan.h"
 
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace taiwa;
 
@@ -37,6 +42,51 @@ ToolPath line(double length, int pieces = 1)
     ToolPath p{{0, 0, 0}, {}};
     for (int k = 1; k <= pieces; ++k) p.moves.push_back({MoveKind::Feed, {length * k / pieces, 0, 0}});
     return p;
+}
+
+// A lathe: X (the radius) 2,000 mm/s², Z 1,000 mm/s²; rapids 12 m/min in
+// X, 24 m/min in Z.
+Machine lathe()
+{
+    Machine m;
+    m.id = "test-lathe";
+    m.kind = MachineKind::Lathe;
+    m.xDiameter = true;
+    m.maxFeed = 5000;
+    m.maxSpindleSpeed = 4000;
+    m.rapid = {{"x", 12000}, {"z", 24000}};
+    m.acceleration = {{"x", 2000}, {"z", 1000}};
+    m.lookAhead = 100;
+    return m;
+}
+
+TurnStep turnStep(turning::ZR start, std::vector<TurnMove> moves, TurnCutting c)
+{
+    TurnStep t;
+    t.cutting = c;
+    t.path.start = start;
+    t.path.moves = std::move(moves);
+    return t;
+}
+
+TurnCutting fixedRpm(double rpm, double feedPerRev)
+{
+    TurnCutting c;
+    c.constantSurfaceSpeed = false;
+    c.rpm = rpm;
+    c.feedPerRev = feedPerRev;
+    c.plungeFeedPerRev = feedPerRev / 2;
+    return c;
+}
+
+TurnCutting surfaceSpeed(double vc, double maxRpm, double feedPerRev)
+{
+    TurnCutting c;
+    c.surfaceSpeed = vc;
+    c.maxRpm = maxRpm;
+    c.feedPerRev = feedPerRev;
+    c.plungeFeedPerRev = feedPerRev / 2;
+    return c;
 }
 
 }  // namespace
@@ -115,8 +165,74 @@ private slots:
                          qPrintable(QString("%1 %2: %3 vs %4").arg(name).arg(QString::fromStdString(s.label())).arg(*s.machineMinutes).arg(*s.minutes)));
             }
         }
-        // A lathe's steps keep their own times.
-        QVERIFY(!test::samplePlan("lathe-turned-shaft.taiwa").steps.front().machineMinutes);
+    }
+
+    // 100 mm along Z at 2,000 rpm and 0.25 mm/rev: 500 mm/min, a trapezoid
+    // at Z's 1,000 mm/s²: L / V + V / a. Under G96 at 150 m/min on Ø40 the
+    // same with V = 0.25 · 1000 · 150 / (π 40) mm/min.
+    void turningFeedAlongZIsATrapezoid()
+    {
+        const std::vector<TurnMove> along{{TurnMove::Feed, {-100, 20}}};
+        const double v = 500.0 / 60;
+        const double fixed = turnMachineMinutes(turnStep({0, 20}, along, fixedRpm(2000, 0.25)), lathe()) * 60;
+        QVERIFY2(std::abs(fixed - (100 / v + v / 1000)) < 1e-9, qPrintable(QString::number(fixed)));
+        const double w = 0.25 * 1000 * 150 / (std::numbers::pi * 40) / 60;
+        const double css = turnMachineMinutes(turnStep({0, 20}, along, surfaceSpeed(150, 4000, 0.25)), lathe()) * 60;
+        QVERIFY2(std::abs(css - (100 / w + w / 1000)) < 1e-9, qPrintable(QString::number(css)));
+        // A rapid of 50 mm across the axis (the radius: X's 12 m/min move
+        // the tool 50 mm, not 25) at X's rate and acceleration, with a stop.
+        const std::vector<TurnMove> rapid{{TurnMove::Rapid, {0, 70}}};
+        const double r = turnMachineMinutes(turnStep({0, 20}, rapid, fixedRpm(2000, 0.25)), lathe()) * 60;
+        QVERIFY2(std::abs(r - (50.0 / 200 + 200.0 / 2000)) < 1e-9, qPrintable(QString::number(r)));
+    }
+
+    // Facing from r = 25 to the axis at 200 m/min, 0.2 mm/rev, at most
+    // 2,000 rpm: the limit holds below r_c = 1000 vc / (2π n_max) = 15.9 mm.
+    // The feed time is ∫ dr / (f n(r)) = π (R² + r_c²) / (1000 vc f) min;
+    // without the limit π R² / (1000 vc f), all at the limit R / (f n_max).
+    // The planner's pieces (1 % in radius, each at its smaller diameter)
+    // may be up to 1 % quicker; accelerating adds at most 2 V / a.
+    void facingReachesTheSpindleLimit()
+    {
+        const double R = 25, vc = 200, f = 0.2, nMax = 2000;
+        const double rc = 1000 * vc / (2 * std::numbers::pi * nMax);
+        const double limited = std::numbers::pi * (R * R + rc * rc) / (1000 * vc * f) * 60;
+        const double unlimited = std::numbers::pi * R * R / (1000 * vc * f) * 60;
+        const double allAtLimit = R / (f * nMax) * 60;
+        const double t = turnMachineMinutes(turnStep({0, R}, {{TurnMove::Feed, {0, 0}}}, surfaceSpeed(vc, nMax, f)), lathe()) * 60;
+        const QString figures = QString("%1 s; limited %2, unlimited %3, all at the limit %4").arg(t).arg(limited).arg(unlimited).arg(allAtLimit);
+        QVERIFY2(t > unlimited && t > allAtLimit, qPrintable(figures));
+        QVERIFY2(t >= 0.99 * limited && t <= limited + 2 * (f * nMax / 60) / 2000, qPrintable(figures));
+        // Without the limit it would be the unlimited time, give or take.
+        const double free = turnMachineMinutes(turnStep({0, R}, {{TurnMove::Feed, {0, 0}}}, surfaceSpeed(vc, 1e6, f)), lathe()) * 60;
+        QVERIFY2(free < limited && free >= 0.99 * unlimited - 1e-3, qPrintable(QString::number(free)));
+    }
+
+    // Every lathe sample's steps: a machine time, no less than its feed
+    // time (feed per revolution at each move's mean diameter, rapids left
+    // out: the machine cannot cut faster than its feeds) less the 1 % the
+    // pieces at their smaller diameter may gain; the total covers them.
+    void latheSamplesHaveMachineTimes()
+    {
+        for (const char* name : {"lathe-angle-cases.taiwa", "lathe-bore-grinding.taiwa", "lathe-both-ground.taiwa", "lathe-bushing.taiwa",
+                                 "lathe-grooved-shaft.taiwa", "lathe-shaft-grinding.taiwa", "lathe-tangent-nose.taiwa",
+                                 "lathe-turned-shaft.taiwa"}) {
+            const Plan plan = test::samplePlan(name);
+            QVERIFY2(plan.ok(), name);
+            QVERIFY2(plan.totalMachineMinutes, name);
+            double sum = 0;
+            for (const Step& s : plan.steps) {
+                QVERIFY(s.turn);
+                QVERIFY(s.machineMinutes && *s.machineMinutes > 0);
+                const double feedOnly = turnMinutes(s.turn->path, s.turn->cutting, 1e12);
+                const QString figures = QString("%1 %2: %3 vs %4 (feed only %5)").arg(name).arg(QString::fromStdString(s.label()))
+                                            .arg(*s.machineMinutes).arg(*s.minutes).arg(feedOnly);
+                QVERIFY2(*s.machineMinutes >= 0.99 * feedOnly, qPrintable(figures));
+                QVERIFY2(*s.machineMinutes < 3 * *s.minutes, qPrintable(figures));
+                sum += *s.machineMinutes;
+            }
+            QVERIFY(*plan.totalMachineMinutes >= sum);
+        }
     }
 
     void badMotionKeysRefused()

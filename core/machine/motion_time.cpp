@@ -4,9 +4,13 @@
 // time from its entry, top and exit speeds.
 #include "machine/motion_time.h"
 
+#include "model/turn_path.h"
+#include "model/turned_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 namespace taiwa {
@@ -33,9 +37,9 @@ public:
     {
         for (const char* a : {"x", "y", "z"}) {
             const auto acc = m.acceleration.find(a);
-            accel_[axis(a)] = acc != m.acceleration.end() ? acc->second : 0.0;
+            accel_[axis(a[0])] = acc != m.acceleration.end() ? acc->second : 0.0;
             const auto r = m.rapid.find(a);
-            rapid_[axis(a)] = (r != m.rapid.end() ? r->second : m.maxFeed) / 60.0;
+            rapid_[axis(a[0])] = (r != m.rapid.end() ? r->second : m.maxFeed) / 60.0;
         }
         // A lathe's X and Z are the tool path's X and Z here; its Y never moves.
     }
@@ -65,18 +69,23 @@ public:
         const double r = std::hypot(from.x - m.centre.x, from.y - m.centre.y);
         const double sweep = arcSweep(from, m);
         const double planar = std::abs(sweep) * r, dz = m.end.z - from.z;
-        const double l = std::hypot(planar, dz);
-        if (l <= 0.0) return;
         const double a0 = std::atan2(from.y - m.centre.y, from.x - m.centre.x), a1 = a0 + sweep;
         const double s = sweep > 0 ? 1.0 : -1.0;
         const Point3 in = unit({-std::sin(a0) * s * planar, std::cos(a0) * s * planar, dz});
         const Point3 out = unit({-std::sin(a1) * s * planar, std::cos(a1) * s * planar, dz});
-        const double a = std::min(accel_[0], accel_[1]);
-        // Around the arc the tool accelerates towards its centre by v² / r.
-        const double centripetal = r > 0 ? std::sqrt(0.5 * a * r) : std::numeric_limits<double>::infinity();
-        // Half the acceleration goes along the arc, half towards its centre.
-        blocks_.push_back({l, std::min(std::min(perMinute, m_.maxFeed) / 60.0, centripetal), 0.5 * a, in, out, false});
+        arcBlock(std::hypot(planar, dz), r, in, out, perMinute, std::min(accel_[0], accel_[1]));
     }
+    // An arc of `length` and `radius` with the tangents `in` and `out`, in
+    // the plane of two axes whose lower acceleration is `a`.
+    void arcBlock(double length, double radius, Point3 in, Point3 out, double perMinute, double a)
+    {
+        if (length <= 0.0) return;
+        // Around the arc the tool accelerates towards its centre by v² / r.
+        const double centripetal = radius > 0 ? std::sqrt(0.5 * a * radius) : std::numeric_limits<double>::infinity();
+        // Half the acceleration goes along the arc, half towards its centre.
+        blocks_.push_back({length, std::min(std::min(perMinute, m_.maxFeed) / 60.0, centripetal), 0.5 * a, in, out, false});
+    }
+    double accel(char a) const { return accel_[axis(a)]; }
     void stop()
     {
         if (!blocks_.empty()) blocks_.back().stopAfter = true;
@@ -126,7 +135,7 @@ public:
     }
 
 private:
-    static int axis(const char* a) { return a[0] - 'x'; }
+    static int axis(char a) { return a - 'x'; }
     static double along(Point3 d, const double (&limit)[3])
     {
         double best = std::numeric_limits<double>::infinity();
@@ -190,6 +199,89 @@ double machineMinutes(const ToolPath& path, const MotionFeeds& feeds, const Mach
             p.rapid(r, above);
             at = above;
             continue;
+        }
+        }
+        at = m.end;
+    }
+    p.stop();
+    return p.seconds() / 60.0;
+}
+
+
+namespace {
+
+// A lathe's point (z, r) on the machine: the radius along X, z along Z.
+Point3 onLathe(turning::ZR p) { return {p.r, 0.0, p.z}; }
+
+// The spindle speed at radius r [rpm]: G97's, or G96's surface speed at the
+// diameter 2r capped by the spindle limit.
+double rpmAt(const TurnCutting& c, double limit, double r)
+{
+    if (!c.constantSurfaceSpeed) return c.rpm;
+    const double d = 2.0 * std::abs(r);
+    const double free = d > 0 ? 1000.0 * c.surfaceSpeed / (std::numbers::pi * d) : std::numeric_limits<double>::infinity();
+    return std::min(limit, free);
+}
+
+}  // namespace
+
+double turnMachineMinutes(const TurnStep& step, const Machine& machine)
+{
+    const TurnCutting& c = step.cutting;
+    const double limit = c.maxRpm > 0 ? c.maxRpm : machine.maxSpindleSpeed > 0 ? machine.maxSpindleSpeed
+                                                                                 : std::numeric_limits<double>::infinity();
+    // Under G96 the spindle speed changes with the radius: a feed across
+    // the axis is cut into pieces over which the radius changes by at most
+    // 1 % (none below the radius where the spindle limit holds it), each
+    // at the speed of its smaller diameter; collinear, the planner runs
+    // through them.
+    constexpr double kRatio = 1.01;
+    const double capped = c.constantSurfaceSpeed && std::isfinite(limit) && limit > 0
+                              ? 1000.0 * c.surfaceSpeed / (std::numbers::pi * 2.0 * limit)
+                              : 0.0;
+    Planner p(machine);
+    const double planeAccel = std::min(p.accel('x'), p.accel('z'));
+    turning::ZR at = step.path.start;
+    for (const TurnMove& m : step.path.moves) {
+        const double perRev = m.feed == FeedKind::Plunge ? c.plungeFeedPerRev : c.feedPerRev;
+        switch (m.kind) {
+        case TurnMove::Rapid: p.rapid(onLathe(at), onLathe(m.end)); break;
+        case TurnMove::Feed: {
+            const double r0 = std::abs(at.r), r1 = std::abs(m.end.r);
+            const double lo = std::min(r0, r1), hi = std::max(r0, r1);
+            std::vector<double> radii{hi};  // the piece ends, from the larger radius down
+            if (c.constantSurfaceSpeed && hi - lo > 1e-9) {
+                const double floor = std::max({lo, capped, hi * 1e-4});
+                for (double r = hi / kRatio; r > floor && radii.size() < 100000; r /= kRatio) radii.push_back(r);
+            }
+            radii.push_back(lo);
+            if (r0 < r1) std::reverse(radii.begin(), radii.end());
+            // The pieces in the direction of travel, by where their radius falls.
+            turning::ZR from = at;
+            for (std::size_t k = 1; k < radii.size(); ++k) {
+                const double t = hi - lo > 1e-9 ? (radii[k] - r0) / (r1 - r0) : 1.0;
+                const turning::ZR to = k + 1 == radii.size() ? m.end
+                                                             : turning::ZR{at.z + t * (m.end.z - at.z), at.r + t * (m.end.r - at.r)};
+                p.feed(onLathe(from), onLathe(to), perRev * rpmAt(c, limit, std::min(radii[k - 1], radii[k])));
+                from = to;
+            }
+            break;
+        }
+        case TurnMove::ArcCW:
+        case TurnMove::ArcCCW: {
+            const turning::Segment s = turning::arcSegment(at, m.end, m.centre, m.kind == TurnMove::ArcCCW);
+            const double sweep = turning::sweep(s), sense = s.ccw ? 1.0 : -1.0;
+            // Angles in the profile view (Z right, X up); the tangent of
+            // a counter-clockwise arc at angle φ is (-sin φ, cos φ) in (z, r).
+            const double a0 = std::atan2(at.r - m.centre.r, at.z - m.centre.z), a1 = a0 + sense * sweep;
+            const auto tangent = [&](double a) { return onLathe({-std::sin(a) * sense, std::cos(a) * sense}); };
+            // Its smallest radius: an end's, or its lowest point if it passes it.
+            double lowest = std::min(std::abs(at.r), std::abs(m.end.r));
+            const double toBottom = std::remainder(sense * (-std::numbers::pi / 2 - a0), 2 * std::numbers::pi);
+            if ((toBottom < 0 ? toBottom + 2 * std::numbers::pi : toBottom) <= sweep)
+                lowest = std::min(lowest, std::abs(m.centre.r - s.radius));
+            p.arcBlock(turning::length(s), s.radius, tangent(a0), tangent(a1), perRev * rpmAt(c, limit, lowest), planeAccel);
+            break;
         }
         }
         at = m.end;

@@ -15,6 +15,8 @@
 
 namespace taiwa {
 
+struct TurnStep;  // model/turn_path.h
+
 // The feeds of a step [mm/min]: cutting and plunging (ramps, plunges).
 struct MotionFeeds {
     double feed = 0.0;
@@ -24,6 +26,13 @@ struct MotionFeeds {
 // The minutes the machine takes for the path; 0 for an empty path. Needs
 // the machine's acceleration (hasMotionModel).
 double machineMinutes(const ToolPath& path, const MotionFeeds& feeds, const Machine& machine);
+
+// The minutes a lathe takes for a turning step's path: each move a block in
+// the XZ plane (the radius along X, Z along Z), fed at its feed per
+// revolution times the spindle speed there (G97's rpm, or under G96 the
+// surface speed at the block's smaller diameter, no more than the spindle
+// limit), rapids at the axes' rates. The same planner as machineMinutes.
+double turnMachineMinutes(const TurnStep& step, const Machine& machine);
 
 // Whether the machine definition says enough to model its motion.
 bool hasMotionModel(const Machine& machine);

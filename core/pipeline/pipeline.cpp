@@ -128,7 +128,10 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     const auto work = [&](std::size_t first, std::size_t stride) {
         for (std::size_t i = first; i < plan.steps.size(); i += stride) {
             Step& step = plan.steps[i];
-            if (step.turn) continue;  // turning steps come with their paths and times
+            if (step.turn) {  // turning steps come with their paths and plain times
+                if (motion) step.machineMinutes = turnMachineMinutes(*step.turn, *machine);
+                continue;
+            }
             const Tool& tool = *findTool(library, step.tool->toolId);
             step.path = makeToolPath(step, tool, plan.technology, options.path);
             const SpeedsFeeds sf = *stepSpeedsFeeds(step, tool, plan.mmJob.material);
