@@ -37,6 +37,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 namespace taiwa::app {
 
@@ -192,7 +193,12 @@ int verifyJob(const Options& o)
 {
     const Loaded l = load(o, true);
     if (l.exit != kOk) return l.exit;
-    return printVerification(l.plan, o, fileName(o.job), dialectFor(o, l.plan)) ? kFindings : kOk;
+    try {
+        return printVerification(l.plan, o, fileName(o.job), dialectFor(o, l.plan)) ? kFindings : kOk;
+    } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
+        std::cerr << "taiwa: verify: " << e.what() << '\n';
+        return kInputErrors;
+    }
 }
 
 int exportJob(const Options& o, int& argc, char** argv)
@@ -209,7 +215,13 @@ int exportJob(const Options& o, int& argc, char** argv)
     if (auto why = workOffsetProblem(dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
     // A tape with a gouge, a collision or beyond the travel is not written
     // unless the operator forces it; then its sheet says why in red.
-    const verify::Report checked = verified(l.plan, o, dialect);
+    verify::Report checked;
+    try {
+        checked = verified(l.plan, o, dialect);
+    } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
+        std::cerr << "taiwa: export: " << e.what() << '\n';
+        return kInputErrors;
+    }
     std::vector<std::string> faults;
     for (const auto& f : checked.findings)
         if (f.fatal()) faults.push_back(verify::describe(f, l.plan));

@@ -22,7 +22,7 @@ struct Options {
     int width = 800, height = 600;    // --size WxH
     std::string view = "iso";         // --view
     std::string material = "steel-s45c";  // --material (import)
-    double resolution = 0.05;         // --resolution (verify, export) [mm]
+    std::optional<double> resolution;  // --resolution (verify, export) [mm]; none: verify::defaultResolution
     bool json = false;                // --json (verify)
     bool force = false;               // --force (export): write a tape the verification finds fault with
     bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)

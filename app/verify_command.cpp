@@ -22,7 +22,7 @@ namespace taiwa::app {
 verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect)
 {
     verify::Options v;
-    v.resolution = o.resolution;
+    v.resolution = o.resolution.value_or(verify::defaultResolution(plan));
     verify::Report report = verify::verifyPlan(plan, v);
     if (!report.findings.empty()) {
         try {

@@ -82,6 +82,29 @@ private slots:
         QVERIFY(QFileInfo(QDir(out).filePath("wide.sheet.pdf")).size() > 0);
     }
 
+    // A large stock is verified on the finest grid within 16 M cells unless
+    // the operator asks for one: the 1,000 x 90 mm plate at 0.08 mm; a
+    // --resolution whose grid would pass 100 M cells is an input error
+    // (exit 2), nothing written.
+    void largeStockOnACoarserGrid()
+    {
+        QTemporaryDir dir;
+        const QString job = writeWideJob(dir);
+        const auto v = runTaiwa({"verify", job});
+        QCOMPARE(v.exitCode, 3);
+        QVERIFY2(v.out.contains("verified at 0.08 mm (12500 x 1125 cells)"), qPrintable(v.out));
+        const auto fine = runTaiwa({"verify", job, "--resolution", "0.005"});
+        QCOMPARE(fine.exitCode, 2);
+        QVERIFY2(fine.err.contains("taiwa: verify: a 0.005000 mm grid over this stock has 3600000000 cells, more than "
+                                   "100000000: choose a coarser resolution"),
+                 qPrintable(fine.err));
+        const QString out = dir.filePath("out");
+        const auto e = runTaiwa({"export", job, "--out", out, "--resolution", "0.005", "--force"});
+        QCOMPARE(e.exitCode, 2);
+        QVERIFY2(e.err.contains("taiwa: export: a 0.005000 mm grid"), qPrintable(e.err));
+        QVERIFY(!QFileInfo::exists(out) || QDir(out).isEmpty());
+    }
+
     // The sheet shows the setup and each step's stock in a picture, in the
     // HTML inlined and in the PDF; without a display it says why there are
     // none; none at all with --no-pictures.

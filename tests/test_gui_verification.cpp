@@ -85,7 +85,8 @@ private slots:
         QCOMPARE(v->list()->count(), 1);
         QVERIFY(v->list()->item(0)->text().contains("more along x than the machine 'vmc' travels"));
         QCOMPARE(v->list()->item(0)->foreground().color(), QColor(192, 0, 0));
-        QCOMPARE(summary(v), QString("Verified at 0.05 mm: 1 faults, 0 with material left."));
+        // A 1,000 x 90 mm stock: the finest grid within 16 M cells (0.075 -> 0.08 mm).
+        QCOMPARE(summary(v), QString("Verified at 0.08 mm: 1 faults, 0 with material left."));
 
         // An edit: a new plan, the findings gone until verified again.
         Job edited = w.document()->job();

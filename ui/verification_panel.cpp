@@ -23,7 +23,9 @@ namespace {
 verify::Report reportOf(const Plan& plan)
 {
     try {
-        return verify::verifyPlan(plan);
+        verify::Options o;
+        o.resolution = verify::defaultResolution(plan);
+        return verify::verifyPlan(plan, o);
     } catch (const std::exception& e) {
         verify::Report r;
         r.skipped = e.what();

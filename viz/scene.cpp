@@ -219,6 +219,12 @@ void Scene::setSelectedStep(int index)
     updateTool();
 }
 
+void Scene::setOtherPathsHidden(bool hidden)
+{
+    othersHidden_ = hidden;
+    updateEmphasis();
+}
+
 void Scene::setShowStock(bool show)
 {
     showStock_ = show;
@@ -245,6 +251,7 @@ void Scene::updateEmphasis()
         // over it with its own.
         setColour(allFeeds_, selected_ < 0 ? palette::kFeed : palette::kDimmed);
         allFeeds_->GetProperty()->SetLineWidth(selected_ < 0 ? 2.0f : 1.0f);
+        allFeeds_->SetVisibility(selected_ < 0 || !othersHidden_);
         allRapids_->SetVisibility(selected_ < 0);
         if (shownStep_ >= 0 && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
             renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].feeds);
@@ -265,6 +272,7 @@ void Scene::updateEmphasis()
         StepActors& a = steps_[k];
         if (!a.feeds) continue;
         const bool emphasised = selected_ < 0 || selected_ == k;
+        a.feeds->SetVisibility(emphasised || !othersHidden_);
         setColour(a.feeds, emphasised ? palette::kFeed : palette::kDimmed);
         a.feeds->GetProperty()->SetLineWidth(selected_ == k ? 3.0f : emphasised ? 2.0f : 1.0f);
         a.rapids->SetVisibility(emphasised);

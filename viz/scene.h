@@ -63,6 +63,10 @@ public:
     // the stock (when shown) as it is after step k.
     void setSelectedStep(int index);
     int selectedStep() const { return selected_; }
+    // With a step selected, only its paths: the other steps' are hidden,
+    // not dimmed (the sheet's pictures; a large job's other paths cost the
+    // renderer more than the picture shows of them).
+    void setOtherPathsHidden(bool hidden);
     // The simulated stock instead of the translucent block.
     void setShowStock(bool show);
     // The simulated stock as it is before the selected step instead of
@@ -156,6 +160,7 @@ private:
     int selected_ = -1;
     MoveRef playhead_;
     bool showStock_ = false;
+    bool othersHidden_ = false;
     bool stockBefore_ = false;
     bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;

@@ -412,6 +412,14 @@ thread_local std::uint64_t Verifier::visits_ = 0;
 
 }  // namespace
 
+double defaultResolution(const Plan& plan)
+{
+    if (plan.mmJob.bar) return kDefaultResolution;
+    const Stock& s = plan.mmJob.stock;
+    const double fits = std::sqrt(std::max(s.width, 0.0) * std::max(s.length, 0.0) / kDefaultCells);
+    return std::max(kDefaultResolution, std::ceil(fits * 100.0 - 1e-9) / 100.0);
+}
+
 Report verifyPlan(const Plan& plan, const Options& options)
 {
     if (!(options.resolution >= kFinestResolution) || !std::isfinite(options.resolution))

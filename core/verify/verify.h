@@ -48,10 +48,17 @@ struct Finding {
     friend bool operator==(const Finding&, const Finding&) = default;
 };
 
+// The verification's cell size unless the operator chooses one [mm], and
+// the most cells it takes by default: a larger stock is verified on the
+// finest grid within that many cells (defaultResolution), so that a job
+// of a thousand pockets on a 1.2 m plate verifies in seconds, not minutes.
+constexpr double kDefaultResolution = 0.05;
+constexpr double kDefaultCells = 16e6;
+
 struct Options {
     // The cell size [mm]; a lathe job: arcs and the nose flattened within a
     // tenth of it, outlines sampled at it, a gouge deeper than 1 µm and it.
-    double resolution = 0.05;
+    double resolution = kDefaultResolution;
     unsigned threads = 0;      // 0: every core (a lathe job runs on one: it takes milliseconds)
 };
 
@@ -79,6 +86,12 @@ struct Report {
 // resolution instead of running out of memory).
 constexpr double kFinestResolution = 0.005;
 constexpr double kMaxCells = 100e6;
+
+// The cell size the verification takes for this plan unless the operator
+// chooses one: kDefaultResolution, or for a stock that would need more than
+// kDefaultCells of them the finest cell (in whole hundredths of a mm) that
+// stays within that many. A lathe job: kDefaultResolution.
+double defaultResolution(const Plan& plan);
 
 // Simulates the plan's steps in order and checks them. The plan must have
 // its paths (PlanOptions::withToolPaths). Throws std::invalid_argument for
