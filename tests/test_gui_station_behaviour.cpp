@@ -227,6 +227,47 @@ private slots:
         QVERIFY(w.ncView()->text()->toPlainText().contains("UNIT 1 \"Recess  B  50 \" M4"));
     }
 
+    // The block's clamping set in the job's panel: the vice on the Y faces
+    // at a third of the block's height, the height typed over, one undo
+    // step each, a height above the block marked red with the check's
+    // message; the sheet says where the jaws grip; none on a lathe job.
+    void clampingIsSetInTheJobPanel()
+    {
+        StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        auto* vice = w.findChild<QComboBox*>("job.clamping");
+        QLineEdit* jaws = edit(w, "clamping.height");
+        QVERIFY(vice && jaws);
+        QCOMPARE(vice->currentIndex(), 0);
+        QVERIFY(!jaws->isEnabled());
+        vice->setFocus();
+        vice->setCurrentIndex(2);
+        emit vice->activated(2);
+        QVERIFY(w.document()->job().clamping);
+        QCOMPARE(w.document()->job().clamping->grip, Clamping::Grip::Y);
+        QCOMPARE(w.document()->job().clamping->height, 10.0);  // a third of 30 mm
+        QVERIFY(jaws->isEnabled());
+        QCOMPARE(jaws->text(), QString("10"));
+        retype(jaws, "12.5");
+        QCOMPARE(w.document()->job().clamping->height, 12.5);
+        w.planRunner()->flush();
+        QVERIFY(QString::fromStdString(sheetHtml(*w.planRunner()->fullPlan(), {})).contains("gripping 12.500 mm up from its bottom"));
+        retype(jaws, "31");
+        w.planRunner()->flush();
+        QTRY_VERIFY(Fields::isRed(jaws));
+        QVERIFY2(jaws->toolTip().contains("the top must stand out of the vice"), qPrintable(jaws->toolTip()));
+        w.document()->undoStack()->undo();  // the height typed: one step
+        QCOMPARE(w.document()->job().clamping->height, 10.0);
+        w.document()->undoStack()->undo();  // the vice chosen
+        QVERIFY(!w.document()->job().clamping);
+        QCOMPARE(vice->currentIndex(), 0);
+
+        StationWindow lathe(test::sourcePath("resources/samples/lathe-turned-shaft.taiwa"));
+        lathe.show();
+        QVERIFY(!lathe.findChild<QComboBox*>("job.clamping")->isVisible());
+    }
+
     void focusGoesToTheNewUnitsFirstField()
     {
         StationWindow w(test::sourcePath("resources/samples/m4-standard.taiwa"));

@@ -12,6 +12,9 @@
 #include <QLabel>
 #include <QLineEdit>
 
+#include <algorithm>
+#include <cmath>
+
 namespace taiwa::ui {
 namespace {
 // The stock's fields: a block's, or a lathe job's bar.
@@ -74,6 +77,34 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
         connect(stock_[i], &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
         connect(stock_[i], &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
     }
+    // How the block is held: the sheet draws the jaws and says where they grip.
+    vice_ = new QComboBox(this);
+    vice_->setObjectName("job.clamping");
+    vice_->addItem(tr("not given"));
+    vice_->addItem(tr("vice on the X faces"));
+    vice_->addItem(tr("vice on the Y faces"));
+    vice_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    vice_->setMinimumContentsLength(12);
+    vice_->setToolTip(tr("How the block is held, for the instruction sheet's setup picture"));
+    jaws_ = new QLineEdit(this);
+    jaws_->setObjectName("clamping.height");
+    jaws_->setToolTip(tr("How far up the block's sides the jaws grip, from its bottom"));
+    form->addRow(tr("Clamping"), vice_);
+    form->addRow(tr("Jaws' height"), jaws_);
+    connect(vice_, &QComboBox::activated, this, [this](int i) {
+        Job j = doc_->job();
+        if (i == 0) {
+            j.clamping.reset();
+        } else {
+            // A third of the block's height at first, in tenths of the job's unit.
+            if (!j.clamping) j.clamping = Clamping{Clamping::Grip::Y, std::max(0.1, std::round(j.stock.height / 3.0 * 10.0) / 10.0)};
+            j.clamping->grip = i == 1 ? Clamping::Grip::X : Clamping::Grip::Y;
+        }
+        doc_->edit(j, tr("Change clamping"));
+    });
+    connect(jaws_, &QLineEdit::textEdited, this, &JobProperties::editJaws);
+    connect(jaws_, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
+    connect(jaws_, &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
     connect(name_, &QLineEdit::editingFinished, doc_, &JobDocument::breakMerge);
     connect(name_, &QLineEdit::textEdited, this, [this](const QString& t) {
         Job j = doc_->job();
@@ -105,6 +136,21 @@ void JobProperties::editStock(int which, const QString& text)
     doc_->edit(j, tr("Edit %1").arg(stockKey(j, which)), stockKey(j, which));
 }
 
+void JobProperties::editJaws(const QString& text)
+{
+    const auto v = parseNumber(text);
+    badJaws_ = !v;
+    if (!v) {
+        jaws_->setStyleSheet("background: #ffd0d0;");
+        jaws_->setToolTip(tr("not a number"));
+        return;
+    }
+    Job j = doc_->job();
+    if (!j.clamping) return;  // the field is off without a vice
+    j.clamping->height = *v;
+    doc_->edit(j, tr("Edit %1").arg("clamping.height"), "clamping.height");
+}
+
 void JobProperties::refresh(bool force)
 {
     const Job& j = doc_->job();
@@ -133,6 +179,22 @@ void JobProperties::refresh(bool force)
             label->setVisible(shown);
         }
     }
+    // A lathe holds its bar in the chuck: no vice.
+    vice_->setVisible(!j.bar);
+    jaws_->setVisible(!j.bar);
+    for (QWidget* w : {static_cast<QWidget*>(vice_), static_cast<QWidget*>(jaws_)})
+        if (QWidget* label = form_->labelForField(w)) label->setVisible(!j.bar);
+    vice_->setCurrentIndex(!j.clamping ? 0 : j.clamping->grip == Clamping::Grip::X ? 1 : 2);
+    jaws_->setEnabled(j.clamping.has_value());
+    if (!j.clamping) {
+        jaws_->clear();
+        badJaws_ = false;
+    } else if (const auto typed = parseNumber(jaws_->text());
+               !(typed && (*typed == j.clamping->height || jaws_->text() == formatShown(j.clamping->height))) &&
+               (force || !badJaws_)) {
+        jaws_->setText(formatShown(j.clamping->height));
+        badJaws_ = false;
+    }
     for (int i = 0; i < 4; ++i) {
         if (!j.bar && i == 3) continue;
         const double v = stockValue(j, i);
@@ -153,6 +215,11 @@ void JobProperties::showDiagnostics(const Diagnostics& jobLevel)
         stock_[i]->setStyleSheet(msg.isEmpty() ? QString() : QStringLiteral("background: #ffd0d0;"));
         stock_[i]->setToolTip(msg);
     }
+    QString jaws = badJaws_ ? tr("not a number") : QString();
+    for (const Diagnostic& d : jobLevel)
+        if (d.field == "clamping.height" || d.field == "clamping") jaws = QString::fromStdString(d.message);
+    jaws_->setStyleSheet(jaws.isEmpty() ? QString() : QStringLiteral("background: #ffd0d0;"));
+    jaws_->setToolTip(jaws.isEmpty() ? tr("How far up the block's sides the jaws grip, from its bottom") : jaws);
     bool badMaterial = false;
     for (const Diagnostic& d : jobLevel) badMaterial |= d.field == "material";
     material_->setStyleSheet(badMaterial ? QStringLiteral("background: #ffd0d0;") : QString());

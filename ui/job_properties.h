@@ -1,7 +1,8 @@
 // The job's own inputs: name, material, length unit (switching converts
 // every length), the machine and its stock (a block: width, length, height;
-// a lathe's bar: diameter, length, face stock, bore); each change is one
-// undoable edit, numbers parsed as in the unit forms.
+// a lathe's bar: diameter, length, face stock, bore), how a block is held
+// (the vice's jaws on its X or Y faces up to a height: the sheet's setup);
+// each change is one undoable edit, numbers parsed as in the unit forms.
 #pragma once
 
 #include "model/diagnostic.h"
@@ -27,6 +28,7 @@ public:
 
 private:
     void editStock(int which, const QString& text);
+    void editJaws(const QString& text);
     JobDocument* doc_;
     QLineEdit* name_;
     QComboBox* material_;
@@ -34,6 +36,9 @@ private:
     QLineEdit* stock_[4];  // block: width, length, height; bar: diameter, length, face, bore
     bool bad_[4] = {false, false, false, false};
     QComboBox* machine_ = nullptr;
+    QComboBox* vice_;       // no clamping given, jaws on the X faces, on the Y faces
+    QLineEdit* jaws_;       // the jaws' height from the block's bottom
+    bool badJaws_ = false;
     QFormLayout* form_ = nullptr;
 };
 

@@ -146,6 +146,38 @@
             <translation>機械 %1</translation>
         </message>
         <message>
+            <source>not given</source>
+            <translation>指定なし</translation>
+        </message>
+        <message>
+            <source>vice on the X faces</source>
+            <translation>バイスで X 面をつかむ</translation>
+        </message>
+        <message>
+            <source>vice on the Y faces</source>
+            <translation>バイスで Y 面をつかむ</translation>
+        </message>
+        <message>
+            <source>How the block is held, for the instruction sheet's setup picture</source>
+            <translation>素材の保持方法（作業指示書の段取り図用）</translation>
+        </message>
+        <message>
+            <source>How far up the block's sides the jaws grip, from its bottom</source>
+            <translation>ジョーが素材の側面をつかむ高さ（底面から）</translation>
+        </message>
+        <message>
+            <source>Clamping</source>
+            <translation>保持</translation>
+        </message>
+        <message>
+            <source>Jaws' height</source>
+            <translation>ジョーの高さ</translation>
+        </message>
+        <message>
+            <source>Change clamping</source>
+            <translation>保持の変更</translation>
+        </message>
+        <message>
             <source>Edit job name</source>
             <translation>ジョブ名の編集</translation>
         </message>

@@ -146,6 +146,38 @@
             <translation>机床 %1</translation>
         </message>
         <message>
+            <source>not given</source>
+            <translation>未指定</translation>
+        </message>
+        <message>
+            <source>vice on the X faces</source>
+            <translation>虎钳夹持 X 面</translation>
+        </message>
+        <message>
+            <source>vice on the Y faces</source>
+            <translation>虎钳夹持 Y 面</translation>
+        </message>
+        <message>
+            <source>How the block is held, for the instruction sheet's setup picture</source>
+            <translation>毛坯的装夹方式（用于工艺卡的装夹图）</translation>
+        </message>
+        <message>
+            <source>How far up the block's sides the jaws grip, from its bottom</source>
+            <translation>钳口夹持毛坯侧面的高度（自底面起）</translation>
+        </message>
+        <message>
+            <source>Clamping</source>
+            <translation>装夹</translation>
+        </message>
+        <message>
+            <source>Jaws' height</source>
+            <translation>钳口高度</translation>
+        </message>
+        <message>
+            <source>Change clamping</source>
+            <translation>更改装夹</translation>
+        </message>
+        <message>
             <source>Edit job name</source>
             <translation>编辑作业名称</translation>
         </message>
