@@ -350,7 +350,10 @@ void StationWindow::wire()
         else if (step >= 0) nc_->showStep(step);
         if (!preview_) return;
         preview_->highlightMove(step, move);
-        preview_->markPoint(where);
+        // A lathe finding's X is a diameter; the lathe view has the spindle
+        // along its X and the radius up, in the section's plane.
+        const Plan* shown = preview_->scene().plan();
+        preview_->markPoint(shown && shown->mmJob.bar ? Point3{where.z, 0.0, where.x / 2.0} : where);
     });
     // S or F typed in the step list: the unit's speed or feed for steps of
     // that kind, an edit of the job (undoable); an emptied cell removes it.
