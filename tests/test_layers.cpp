@@ -15,8 +15,8 @@
 namespace {
 
 // Lowest first. A folder may include itself and any folder before it.
-const QStringList kCoreLayers{"model", "io",      "machine", "tools", "check",   "occt", "turning",  "decompose",
-                              "paths", "post",    "sim",  "sheet", "modules", "verify", "job",  "pipeline", "export"};
+const QStringList kCoreLayers{"model", "figure", "io",   "machine", "tools",   "check",  "occt", "turning", "decompose",
+                              "paths", "post",   "sim",  "sheet",   "modules", "verify", "job",  "pipeline", "export"};
 const QStringList kTopLayers{"core", "viz", "ui", "app"};
 
 struct Include {

@@ -1,0 +1,334 @@
+// Figure evaluation (figure_eval.h): the geometry of every definition
+// method, in plain doubles, with the refusals of definitions that give no
+// element or more than the modifiers can choose between.
+#include "figure/figure_eval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <stdexcept>
+
+namespace taiwa::figure {
+
+const Element* Evaluation::find(const std::string& name) const
+{
+    for (const auto& e : elements)
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+namespace {
+
+Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
+Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
+Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
+double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
+double cross(Vec a, Vec b) { return a.x * b.y - a.y * b.x; }
+double norm(Vec a) { return std::hypot(a.x, a.y); }
+Vec left(Vec a) { return {-a.y, a.x}; }  // a turned +90°
+
+// A refusal of the element being evaluated; caught per definition.
+struct Refused {
+    std::string message;
+};
+
+std::string num(double v) { return formatNumber(v); }
+
+// Of two candidates, the one the modifier names; a tie is refused.
+Vec choose(Vec a, Vec b, Modifier m, const std::string& what)
+{
+    const bool byX = m == Modifier::XLarge || m == Modifier::XSmall;
+    const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
+    const double ka = byX ? a.x : a.y;
+    const double kb = byX ? b.x : b.y;
+    if (std::abs(ka - kb) <= kTolerance) {
+        if (norm(a - b) <= kTolerance) return a;  // one candidate (touching): nothing to choose
+        throw Refused{std::string(keyword(m)) + " cannot choose between the two " + what + ": both have the same " +
+                      (byX ? "x" : "y") + "; use " + (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL")};
+    }
+    return ((ka > kb) == large) ? a : b;
+}
+
+// The unit normal of `l` pointing to the side the modifier names (XLARGE:
+// towards +x...); refused for a line along the axis the modifier compares.
+Vec sideNormal(const Line& l, Modifier m, const std::string& lineName)
+{
+    const Vec n = left(l.dir);
+    const bool byX = m == Modifier::XLarge || m == Modifier::XSmall;
+    const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
+    const double k = byX ? n.x : n.y;
+    if (std::abs(k) <= 1e-12)
+        throw Refused{std::string(keyword(m)) + " names no side of " + lineName + ": it is parallel to the " +
+                      (byX ? "X" : "Y") + " axis; use " + (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL")};
+    return ((k > 0) == large) ? n : -1.0 * n;
+}
+
+Vec intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
+{
+    const double det = cross(a.dir, b.dir);
+    if (std::abs(det) <= 1e-12) throw Refused{an + " and " + bn + " are parallel: they do not intersect"};
+    const double t = cross(b.point - a.point, b.dir) / det;
+    return a.point + t * a.dir;
+}
+
+// Both intersections of a line and a circle (equal when it touches).
+std::pair<Vec, Vec> intersectLineCircle(const Line& l, const Circle& c, const std::string& what)
+{
+    const Vec foot = l.point + dot(c.centre - l.point, l.dir) * l.dir;
+    const double h = norm(c.centre - foot);
+    if (h > c.radius + kTolerance) throw Refused{what};
+    const double half = std::sqrt(std::max(0.0, c.radius * c.radius - h * h));
+    return {foot + half * l.dir, foot - half * l.dir};
+}
+
+std::pair<Vec, Vec> intersectCircles(const Circle& a, const Circle& b, const std::string& an, const std::string& bn)
+{
+    const Vec d = b.centre - a.centre;
+    const double dist = norm(d);
+    if (dist <= kTolerance) throw Refused{an + " and " + bn + " are concentric: they do not intersect"};
+    if (dist > a.radius + b.radius + kTolerance || dist < std::abs(a.radius - b.radius) - kTolerance)
+        throw Refused{an + " and " + bn + " do not meet"};
+    const Vec e = (1.0 / dist) * d;
+    const double along = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
+    const double h = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
+    const Vec base = a.centre + along * e;
+    return {base + h * left(e), base - h * left(e)};
+}
+
+// The direction at `deg` degrees from +X, exact at multiples of 90°.
+Vec direction(double deg)
+{
+    const double r = std::fmod(deg, 360.0);
+    const double a = r < 0 ? r + 360.0 : r;
+    if (a == 0) return {1, 0};
+    if (a == 90) return {0, 1};
+    if (a == 180) return {-1, 0};
+    if (a == 270) return {0, -1};
+    const double rad = a * std::numbers::pi / 180.0;
+    return {std::cos(rad), std::sin(rad)};
+}
+
+class Evaluator {
+public:
+    Element element(const Definition& d)
+    {
+        Element e;
+        e.name = d.name;
+        e.kind = d.kind();
+        switch (d.method) {
+        case Method::PointXY: e.point = {d.numbers.at(0), d.numbers.at(1)}; break;
+        case Method::PointCenter: e.point = circle(d.refs.at(0)).centre; break;
+        case Method::PointIntof: e.point = intof(d); break;
+        case Method::LineTwoPoints: {
+            const Vec a = point(d.refs.at(0));
+            const Vec b = point(d.refs.at(1));
+            const double len = norm(b - a);
+            if (len <= kTolerance)
+                throw Refused{d.refs[0] + " and " + d.refs[1] + " coincide: no line through them"};
+            e.line = {a, (1.0 / len) * (b - a)};
+            break;
+        }
+        case Method::LineAtAngle: e.line = {point(d.refs.at(0)), direction(d.numbers.at(0))}; break;
+        case Method::LineParallel: {
+            const Line& l = line(d.refs.at(0));
+            const Vec n = sideNormal(l, d.modifiers.at(0), d.refs[0]);
+            e.line = {l.point + d.numbers.at(0) * n, l.dir};
+            break;
+        }
+        case Method::LinePointTangent: e.line = tangentFromPoint(d); break;
+        case Method::LineTwoCircles: e.line = tangentToCircles(d); break;
+        case Method::CircleCenterRadius: e.circle = {point(d.refs.at(0)), d.numbers.at(0)}; break;
+        case Method::CircleThreePoints: e.circle = throughThree(d); break;
+        case Method::CircleTwoLines: {
+            const double r = d.numbers.at(0);
+            const Line a = offset(line(d.refs.at(0)), d.modifiers.at(0), d.refs[0], r);
+            const Line b = offset(line(d.refs.at(1)), d.modifiers.at(1), d.refs[1], r);
+            e.circle = {intersectLines(a, b, d.refs[0], d.refs[1]), r};
+            break;
+        }
+        case Method::CircleLineCircle: e.circle = tangentLineCircle(d); break;
+        }
+        return e;
+    }
+
+    void keep(Element e) { known_[e.name] = std::move(e); }
+
+private:
+    const Element& get(const std::string& n) const
+    {
+        const auto it = known_.find(n);
+        if (it == known_.end()) throw std::logic_error("figure: element not evaluated: " + n);
+        return it->second;
+    }
+    Vec point(const std::string& n) const { return get(n).point; }
+    const Line& line(const std::string& n) const { return get(n).line; }
+    const Circle& circle(const std::string& n) const { return get(n).circle; }
+
+    static Line offset(const Line& l, Modifier m, const std::string& name, double dist)
+    {
+        return {l.point + dist * sideNormal(l, m, name), l.dir};
+    }
+
+    Vec intof(const Definition& d) const
+    {
+        const Element& a = get(d.refs.at(0));
+        const Element& b = get(d.refs.at(1));
+        const std::string both = d.refs[0] + " and " + d.refs[1];
+        if (a.kind == Kind::Line && b.kind == Kind::Line) return intersectLines(a.line, b.line, d.refs[0], d.refs[1]);
+        std::pair<Vec, Vec> two;
+        if (a.kind == Kind::Circle && b.kind == Kind::Circle)
+            two = intersectCircles(a.circle, b.circle, d.refs[0], d.refs[1]);
+        else if (a.kind == Kind::Line)
+            two = intersectLineCircle(a.line, b.circle, both + " do not meet");
+        else
+            two = intersectLineCircle(b.line, a.circle, both + " do not meet");
+        return choose(two.first, two.second, d.modifiers.at(0), "intersections of " + both);
+    }
+
+    // LINE/P, LEFT|RIGHT, TANTO, C: looking from P to the centre, the tangent
+    // touching the circle's left (right) side; its direction from P to the
+    // point of contact. The ray to the centre turned by asin(r/D).
+    Line tangentFromPoint(const Definition& d) const
+    {
+        const Vec p = point(d.refs.at(0));
+        const Circle& c = circle(d.refs.at(1));
+        const Vec toC = c.centre - p;
+        const double dist = norm(toC);
+        if (dist < c.radius - kTolerance || dist <= kTolerance)
+            throw Refused{d.refs[0] + " is inside " + d.refs[1] + ": no tangent from it"};
+        const Vec u = (1.0 / dist) * toC;
+        const double t = std::sqrt(std::max(0.0, dist * dist - c.radius * c.radius));
+        const double s = d.modifiers.at(0) == Modifier::Left ? 1.0 : -1.0;
+        const double cosA = t / dist;
+        const double sinA = c.radius / dist;
+        return {p, cosA * u + (s * sinA) * left(u)};
+    }
+
+    // LINE/S1, TANTO, C1, S2, TANTO, C2: looking from C1's centre to C2's,
+    // the tangent touching C1 on side S1 and C2 on side S2. With m the unit
+    // normal from C1's centre to its point of contact, m·u = (r1 ∓ r2)/D
+    // (same sides / opposite sides), m's component along u's left normal
+    // signed by S1. Directed from C1 towards C2.
+    Line tangentToCircles(const Definition& d) const
+    {
+        const Circle& c1 = circle(d.refs.at(0));
+        const Circle& c2 = circle(d.refs.at(1));
+        const std::string both = d.refs[0] + " and " + d.refs[1];
+        const Vec between = c2.centre - c1.centre;
+        const double dist = norm(between);
+        if (dist <= kTolerance) throw Refused{both + " are concentric: no common tangent"};
+        const bool same = d.modifiers.at(0) == d.modifiers.at(1);
+        const double a = (same ? c1.radius - c2.radius : c1.radius + c2.radius) / dist;
+        if (std::abs(a) > 1.0 + 1e-12)
+            throw Refused{same ? both + " lie one inside the other: no tangent on the same side of both"
+                               : both + " overlap: no tangent crossing between them"};
+        const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
+        const double s = d.modifiers[0] == Modifier::Left ? 1.0 : -1.0;
+        const Vec u = (1.0 / dist) * between;
+        const Vec m = a * u + (s * b) * left(u);
+        return {c1.centre + c1.radius * m, s * Vec{m.y, -m.x}};
+    }
+
+    static Circle throughThreeCheck(Vec a, Vec b, Vec c, const Definition& d)
+    {
+        const std::string& n0 = d.refs[0];
+        const std::string& n1 = d.refs[1];
+        const std::string& n2 = d.refs[2];
+        if (norm(b - a) <= kTolerance) throw Refused{n0 + " and " + n1 + " coincide: no circle through three points"};
+        if (norm(c - a) <= kTolerance) throw Refused{n0 + " and " + n2 + " coincide: no circle through three points"};
+        if (norm(c - b) <= kTolerance) throw Refused{n1 + " and " + n2 + " coincide: no circle through three points"};
+        const Vec ab = b - a;
+        const Vec ac = c - a;
+        const double det = 2 * cross(ab, ac);
+        if (std::abs(det) <= 1e-12 * norm(ab) * norm(ac))
+            throw Refused{n0 + ", " + n1 + " and " + n2 + " lie on one line: no circle through them"};
+        // Centre relative to a: solves 2 ab·o = |ab|², 2 ac·o = |ac|².
+        const double ab2 = dot(ab, ab);
+        const double ac2 = dot(ac, ac);
+        const Vec o{(ac.y * ab2 - ab.y * ac2) / det, (ab.x * ac2 - ac.x * ab2) / det};
+        return {a + o, norm(o)};
+    }
+
+    Circle throughThree(const Definition& d) const
+    {
+        return throughThreeCheck(point(d.refs.at(0)), point(d.refs.at(1)), point(d.refs.at(2)), d);
+    }
+
+    // CIRCLE/S1, L, S2, OUT|IN, C, RADIUS, r: the centre lies on L's
+    // parallel at r on side S1 and on the circle about C's centre of radius
+    // rc + r (OUT: touching C from outside) or rc − r (IN: inside C); of the
+    // two such centres, the one S2 names.
+    Circle tangentLineCircle(const Definition& d) const
+    {
+        const double r = d.numbers.at(0);
+        const Line l = offset(line(d.refs.at(0)), d.modifiers.at(0), d.refs[0], r);
+        const Circle& c = circle(d.refs.at(1));
+        const bool out = d.modifiers.at(2) == Modifier::Out;
+        if (!out && r >= c.radius - kTolerance)
+            throw Refused{"radius " + num(r) + " is not smaller than " + d.refs[1] + "'s radius " + num(c.radius) +
+                          ": no circle inside it"};
+        const Circle locus{c.centre, out ? c.radius + r : c.radius - r};
+        const auto two = intersectLineCircle(
+            l, locus,
+            "no circle of radius " + num(r) + " on the " + keyword(d.modifiers[0]) + " side of " + d.refs[0] +
+                " touches " + d.refs[1] + (out ? " from outside" : " from inside") +
+                " (the radius is too small or the side is wrong)");
+        return {choose(two.first, two.second, d.modifiers.at(1), "centres"), r};
+    }
+
+    std::map<std::string, Element> known_;
+};
+
+bool finite(const Element& e)
+{
+    const auto ok = [](Vec v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+    switch (e.kind) {
+    case Kind::Point: return ok(e.point);
+    case Kind::Line: return ok(e.line.point) && ok(e.line.dir);
+    case Kind::Circle: return ok(e.circle.centre) && std::isfinite(e.circle.radius);
+    }
+    return false;
+}
+
+}  // namespace
+
+Evaluation evaluate(const std::vector<Definition>& definitions)
+{
+    Evaluation out;
+    Evaluator ev;
+    std::set<std::string> missing;  // refused, or defined from a refused element
+    for (const auto& d : definitions) {
+        if (std::any_of(d.refs.begin(), d.refs.end(), [&](const std::string& r) { return missing.count(r) > 0; })) {
+            missing.insert(d.name);
+            continue;
+        }
+        try {
+            Element e = ev.element(d);
+            if (!finite(e)) throw Refused{"its coordinates cannot be computed (a degenerate definition)"};
+            ev.keep(e);
+            out.elements.push_back(std::move(e));
+        } catch (const Refused& r) {
+            missing.insert(d.name);
+            out.errors.push_back(FigureError{d.line, d.column, d.name + ": " + r.message});
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> definedFrom(const std::vector<Definition>& definitions, const std::string& name)
+{
+    std::set<std::string> changed{name};
+    std::vector<std::string> out;
+    for (const auto& d : definitions) {
+        if (d.name == name) continue;
+        if (std::any_of(d.refs.begin(), d.refs.end(), [&](const std::string& r) { return changed.count(r) > 0; })) {
+            changed.insert(d.name);
+            out.push_back(d.name);
+        }
+    }
+    return out;
+}
+
+}  // namespace taiwa::figure

@@ -1,0 +1,67 @@
+// Evaluation of figure definitions (figure_text.h) into coordinates for
+// display and picking: points, lines (a point and a unit direction), circles
+// (centre and radius). Definitions are evaluated in order, each from the
+// elements before it, so evaluating again after a change gives everything
+// defined from the changed element anew. Geometric refusals (parallel lines
+// intersected, a tangent that does not exist...) name the element.
+#pragma once
+
+#include "figure/figure_text.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa::figure {
+
+struct Vec {
+    double x = 0;
+    double y = 0;
+    friend bool operator==(const Vec&, const Vec&) = default;
+};
+
+// An infinite line: a point on it and its unit direction. Its left normal is
+// (-dir.y, dir.x); the line is normal·p = normal·point.
+struct Line {
+    Vec point;
+    Vec dir;
+};
+
+struct Circle {
+    Vec centre;
+    double radius = 0;
+};
+
+struct Element {
+    std::string name;
+    Kind kind = Kind::Point;
+    Vec point;      // Kind::Point
+    Line line;      // Kind::Line
+    Circle circle;  // Kind::Circle
+};
+
+// Every element that could be evaluated, in definition order, and the
+// refusals (at the refused statement's line and column, the message starting
+// with the element's name). An element defined from a refused one is not
+// evaluated and not reported again: the first refusal is its cause.
+struct Evaluation {
+    std::vector<Element> elements;
+    std::vector<FigureError> errors;
+    bool ok() const { return errors.empty(); }
+    const Element* find(const std::string& name) const;
+};
+
+// Distances below this are zero (mm): coincident points, a point on a circle,
+// a tangent touching.
+constexpr double kTolerance = 1e-9;
+
+// The definitions must be as parseFigure gives them (every name defined once
+// and before use, each argument of the kind its place needs); definitions
+// built otherwise that break this are a bug (std::logic_error).
+Evaluation evaluate(const std::vector<Definition>& definitions);
+
+// The names of every element defined, directly or through others, from
+// `name`: what changes when it changes.
+std::vector<std::string> definedFrom(const std::vector<Definition>& definitions, const std::string& name);
+
+}  // namespace taiwa::figure
