@@ -7,7 +7,9 @@
 // oracle (support/turning_oracle.h) judges it too. The arcs are where the
 // two tapes differ most: Siemens' by their radius (CR=, negative beyond a
 // half turn), LinuxCNC's by I K; rs274 reading the radius form (R) must find
-// the same centre, so a wrong sign or radius fails here.
+// the same centre, so a wrong sign or radius fails here. A threading step's
+// passes, written out as G33 (K the lead, the same word in LinuxCNC), must
+// be the moves LinuxCNC's G76 makes.
 #include "support/rs274.h"
 #include "support/support.h"
 #include "support/turning_oracle.h"
@@ -52,6 +54,8 @@ std::string translated(const std::string& mpf, QString* error)
             else if (word.startsWith('T') && w + 1 < words.size() && words[w + 1] == "D1") {
                 ngc << word << "M6" << "G43";                         // turret station and its offset D1
                 ++w;
+            } else if (word.startsWith('K') && ngc.contains("G33") && plain.match("X" + word.mid(1)).hasMatch()) {
+                ngc << word;                                          // G33's lead along Z: the same word in LinuxCNC
             } else if (plain.match(word).hasMatch()) ngc << word;
             else {
                 *error = QString("line %1: '%2' is not a word this test translates: %3").arg(l + 1).arg(word, line);
@@ -89,8 +93,20 @@ QString describe(const CanonMove& m)
 }
 
 // The first difference between two runs' moves beyond `tol`; empty when none.
-QString firstDifference(const std::vector<CanonMove>& a, const std::vector<CanonMove>& b, double tol)
+// Moves that go nowhere (LinuxCNC's G76 ends with a traverse to where its
+// last pass left the tool, which the written-out passes need not say) are
+// left out on both sides.
+std::vector<CanonMove> moving(const std::vector<CanonMove>& moves)
 {
+    std::vector<CanonMove> out;
+    for (const auto& m : moves)
+        if (m.kind == CanonMove::Arc || std::abs(m.end.x - m.start.x) > 1e-9 || std::abs(m.end.z - m.start.z) > 1e-9) out.push_back(m);
+    return out;
+}
+
+QString firstDifference(const std::vector<CanonMove>& all, const std::vector<CanonMove>& allOther, double tol)
+{
+    const std::vector<CanonMove> a = moving(all), b = moving(allOther);
     if (a.size() != b.size()) return QString("%1 moves against %2").arg(a.size()).arg(b.size());
     for (std::size_t i = 0; i < a.size(); ++i) {
         const CanonMove &p = a[i], &q = b[i];

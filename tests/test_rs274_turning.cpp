@@ -13,7 +13,10 @@
 // - roughing leaves at least its finishing allowance,
 // - no rapid runs through stock not yet cut (a stock simulation of the bar),
 // - a groove's blade leaves along the profile's outward normal by the
-//   step's withdrawal.
+//   step's withdrawal,
+// - a threading insert (LinuxCNC's G76) goes no deeper than the thread's
+//   root: the profile less the thread's depth over the threaded row (a
+//   K made deeper is seen).
 // Where a turning insert's edges (not its nose) reach into the part, the
 // run says so (QINFO "insert body"), without failing.
 // The inch tape of two samples describes the same moves as the mm tape
@@ -430,6 +433,20 @@ private slots:
         QVERIFY2(r.ok, qPrintable(r.errors));
         const LatheVerdict v = judgeLatheTape(plan, r);
         QVERIFY2(!v.problems.filter("the withdrawal").isEmpty(), qPrintable("nothing seen after " + lines[last] + "\n" + firstProblems(v)));
+    }
+
+    void oracleSeesAThreadCutTooDeep()
+    {
+        // The threading insert may go below the finished row by the
+        // thread's depth, and no further: K 0.07 mm deeper on the radius.
+        const Plan& plan = planned("lathe-threaded-shaft", true);
+        QStringList lines = tapeLines(tape(plan, "lathe-threaded-shaft"));
+        const int at = static_cast<int>(lines.indexOf(QRegularExpression("G76 .*")));
+        QVERIFY(at > 0);
+        QVERIFY2(judgeAltered(plan, lines).problems.isEmpty(), "the tape as written is judged wrong");
+        lines[at].replace(QRegularExpression(R"(K[0-9.]+)"), QString("K%1").arg(number(word(lines[at], 'K', 0) + 0.14)));
+        const LatheVerdict v = judgeAltered(plan, lines);
+        QVERIFY2(!v.problems.filter(QRegularExpression("gouge of 0.0[67]\\d+ mm .*Threading I")).isEmpty(), qPrintable("nothing seen after " + lines[at] + "\n" + firstProblems(v)));
     }
 
 };

@@ -2,8 +2,9 @@
 // turned profile gets and in what order, the tools chosen and why, roughing
 // as the control's G71 cycle or explicit passes, grooving's plunges and its
 // withdrawal along the surface normal, the FANUC G71 P/Q numbers pointing at
-// the contour's first and last block, pins and steps turned off kept in the
-// job file, and every refusal with its message. The paths themselves are
+// the contour's first and last block, threading (its passes, speed and
+// feed, the G76 words), pins and steps turned off kept in the job file, and
+// every refusal with its message. The paths themselves are
 // judged by LinuxCNC and an oracle in test_rs274_turning.
 #include "job/job_file.h"
 #include "modules/registry.h"
@@ -22,6 +23,8 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 using namespace taiwa;
 using turning::ZR;
@@ -243,6 +246,156 @@ private slots:
         QVERIFY2(e.find("E3…E5 cannot be turned") != std::string::npos && e.find("as a groove it is 2 mm wide and 2 mm deep") != std::string::npos &&
                      e.find("T105") != std::string::npos,
                  e.c_str());
+    }
+
+    void threadIsCutAfterFinishingInDecreasingPasses()
+    {
+        const Job j = sample("lathe-threaded-shaft");
+        const Plan p = plan(j);
+        QVERIFY2(p.ok(), firstError(p).c_str());
+        QCOMPARE(kinds(p), (std::vector<StepKind>{StepKind::Facing, StepKind::TurnRoughing, StepKind::TurnFinishing, StepKind::Grooving,
+                                                  StepKind::Threading, StepKind::Parting}));
+        const Step& s = *find(p, StepKind::Threading);
+        QCOMPARE(s.tool->toolId, 107);
+        QCOMPARE(s.label(), std::string("Threading I"));
+        const TurnStep& ts = *s.turn;
+        QVERIFY(ts.thread);
+        const TurnThread& th = *ts.thread;
+        // M20×2.5: ISO depth 0.6134 P on the radius, fixed rpm from the
+        // insert's surface speed at Ø20, the pitch as the feed.
+        QCOMPARE(th.pitch, 2.5);
+        QVERIFY(std::abs(th.depth - 0.6134 * 2.5) < 1e-9);
+        QCOMPARE(th.crestR, 10.0);
+        QVERIFY(!ts.cutting.constantSurfaceSpeed);
+        QCOMPARE(ts.cutting.feedPerRev, 2.5);
+        const Tool& tool = *findTool(defaultToolLibrary(), 107);
+        const double vc = tool.cuttingFor(j.material)->surfaceSpeed;
+        // The lathe's feed limit (5000 mm/min) holds it below the 3979 rpm
+        // the insert's surface speed asks for at Ø20.
+        QVERIFY(1000.0 * vc / (std::numbers::pi * 20.0) > 2000.0);
+        QCOMPARE(ts.cutting.rpm, 2000.0);
+        // Constant chip area: depth_k = first × √k, increments decreasing,
+        // then the full depth and a spring pass; the increments sum to the depth.
+        const auto& d = th.passDepths;
+        QVERIFY(d.size() >= 5);
+        QCOMPARE(d.front(), th.firstDepth);
+        QCOMPARE(d.back(), th.depth);
+        QCOMPARE(d[d.size() - 2], th.depth);
+        double sum = 0.0, previous = 1e9;
+        for (std::size_t k = 0; k + 1 < d.size(); ++k) {
+            const double step = d[k] - (k ? d[k - 1] : 0.0);
+            QVERIFY2(step > 0 && step <= previous + 1e-12, qPrintable(QString("pass %1 cuts %2 after %3").arg(k + 1).arg(step).arg(previous)));
+            if (k + 2 < d.size()) QVERIFY(std::abs(d[k] - th.firstDepth * std::sqrt(static_cast<double>(k + 1))) < 1e-12);
+            previous = step;
+            sum += step;
+        }
+        QVERIFY(std::abs(sum - th.depth) < 1e-12);
+        // The path: one synchronised feed along Z per pass at its depth,
+        // from the run-in in front of the thread to its end in the relief.
+        std::vector<TurnMove> feeds;
+        for (const auto& m : ts.path.moves)
+            if (m.kind != TurnMove::Rapid) feeds.push_back(m);
+        QCOMPARE(feeds.size(), d.size());
+        for (std::size_t k = 0; k < d.size(); ++k) QVERIFY(std::abs(feeds[k].end.r - (10.0 - d[k])) < 1e-12);
+        QCOMPARE(feeds.back().end.z, th.zEnd);
+        QVERIFY(th.zEnd < -25.0 && th.zEnd > -31.0 + 2.5);  // into the relief, a pitch clear of its far wall
+        QVERIFY(ts.path.start.z > 0.0 && ts.path.start.r > 10.0);
+        // The tapes' cycles (docs/turning.md "Threading").
+        const auto nc = [&](const char* dialect) {
+            return QString::fromStdString(postProcess(p.steps, p.tools, postOptions(p, dialect, LengthUnit::Millimetre, 1000, "T")).nc);
+        };
+        QVERIFY2(nc("linuxcnc").contains("G76 P2.5 Z-26.25 I-4 J0.97 R2 K3.067 Q29.5 H1"), qPrintable(nc("linuxcnc")));
+        QVERIFY2(nc("fanuc").contains(QRegularExpression(R"(N\d+ G76 P020060 Q50 R0\.\nN\d+ G76 X16\.933 Z-26\.25 P153[34] Q485 F2\.5\n)")),
+                 qPrintable(nc("fanuc")));
+        QVERIFY2(nc("haas").contains(QRegularExpression(R"(G76 X16\.933 Z-26\.25 K1\.53[34] D0\.485 F2\.5 A60 P1)")), qPrintable(nc("haas")));
+        QVERIFY2(nc("sinumerik").contains(QRegularExpression(R"(G33 X16\.933 Z-26\.25 K2\.5)")), qPrintable(nc("sinumerik")));
+        // The job file keeps the attribute.
+        const std::string text = writeJob(j);
+        QVERIFY(text.find("\"thread\": {\n") != std::string::npos);
+        QCOMPARE(*readJob(text).job, j);
+    }
+
+    void threadRefusals_data()
+    {
+        QTest::addColumn<int>("row");       // 0-based row of the sample to change
+        QTest::addColumn<QString>("change");
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<QString>("words");
+        QTest::newRow("arc") << 5 << "arc" << "rows[6].thread" << "E6 is an arc";
+        QTest::newRow("face") << 2 << "face" << "rows[3].thread" << "E3 is not a cylinder";
+        QTest::newRow("pitch") << 1 << "pitch 10" << "rows[2].thread.pitch" << "a pitch of 10 mm is out of range";
+        QTest::newRow("depth") << 1 << "depth 3" << "rows[2].thread.depth" << "a thread 3 mm deep does not fit Ø20 mm";
+        QTest::newRow("no tool") << 1 << "pitch 4" << "rows[2].thread.pitch" << "no external threading insert";
+        QTest::newRow("shoulder") << 2 << "shoulder" << "rows" << "the thread on E2 ends at a shoulder";
+    }
+    void threadRefusals()
+    {
+        QFETCH(int, row);
+        QFETCH(QString, change);
+        QFETCH(QString, field);
+        QFETCH(QString, words);
+        Job j = sample("lathe-threaded-shaft");
+        auto& t = j.units[0];
+        turning::TurnedProfile p = *moduleKind(t.module).turnedProfile(t.module);
+        auto& r = p.rows[static_cast<std::size_t>(row)];
+        auto& thread = p.rows[1].attributes.thread;  // the sample's M20×2.5
+        if (change == "arc" || change == "face") {  // the thread moved to another row
+            r.attributes.thread = thread;
+            thread.reset();
+        }
+        if (change == "arc") {
+            r.kind = turning::ElementKind::ArcCCW;
+            r.radius = 40.0;
+        }
+        if (change == "pitch 10") thread->pitch = 10;
+        if (change == "pitch 4") thread->pitch = 4;
+        if (change == "depth 3") thread->depth = 3;
+        if (change == "shoulder") {  // a collar right behind the thread: no relief
+            p.rows.resize(4);
+            p.rows[2].x = p.rows[3].x = 30.0;
+            p.rows[3].z = -55.0;
+        }
+        moduleKind(t.module).setTurnedProfile(t.module, p);
+        const Plan pl = plan(j);
+        QVERIFY(!pl.ok());
+        const std::string e = firstError(pl);
+        QVERIFY2(e.starts_with(field.toStdString() + ": ") && e.find(words.toStdString()) != std::string::npos, e.c_str());
+    }
+
+    void innerThreadIsRefused()
+    {
+        // The bushing's bore, its first row along the axis asked for a thread.
+        Job j = sample("lathe-bushing");
+        for (auto& t : j.units) {
+            turning::TurnedProfile p = *moduleKind(t.module).turnedProfile(t.module);
+            if (p.side != turning::ProfileSide::Inner) continue;
+            double x = p.startX;
+            for (std::size_t i = 0; i < p.rows.size(); ++i) {
+                if (p.rows[i].kind == turning::ElementKind::Line && p.rows[i].x == x) {
+                    p.rows[i].attributes.thread = turning::ThreadSpec{1.5, std::nullopt};
+                    moduleKind(t.module).setTurnedProfile(t.module, p);
+                    const Plan pl = plan(j);
+                    QVERIFY(!pl.ok());
+                    const std::string e = firstError(pl);
+                    QVERIFY2(e.starts_with("rows[" + std::to_string(i + 1) + "].thread: ") && e.find("internal threads are not cut yet") != std::string::npos,
+                             e.c_str());
+                    return;
+                }
+                x = p.rows[i].x;
+            }
+        }
+        QFAIL("the bushing has no straight bore row");
+    }
+
+    void noThreadingToolIsRefused()
+    {
+        std::vector<Tool> library = defaultToolLibrary();
+        std::erase_if(library, [](const Tool& t) { return t.type == ToolType::Threading; });
+        const Plan p = plan(sample("lathe-threaded-shaft"), library);
+        QVERIFY(!p.ok());
+        QVERIFY2(firstError(p).find("rows[2].thread.pitch: no external threading insert of the tool library cuts a pitch of 2.5 mm") !=
+                     std::string::npos,
+                 firstError(p).c_str());
     }
 
     void noBladeForAGrooveIsRefused()

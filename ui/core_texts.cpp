@@ -24,6 +24,7 @@ constexpr std::array kSources{
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Drilling"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Grooving"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Finishing"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Threading"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Parting off"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing, floor finishing and wall finishing"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing and floor finishing, walls left as roughed"),

@@ -19,6 +19,7 @@ const char* toString(StepKind k)
     case StepKind::TurnRoughing: return "roughing";
     case StepKind::Grooving: return "grooving";
     case StepKind::TurnFinishing: return "finishing";
+    case StepKind::Threading: return "threading";
     case StepKind::Parting: return "parting off";
     }
     return "";
@@ -38,6 +39,7 @@ const char* toKey(StepKind k)
     case StepKind::TurnRoughing: return "turn-rough";
     case StepKind::Grooving: return "groove";
     case StepKind::TurnFinishing: return "turn-finish";
+    case StepKind::Threading: return "thread";
     case StepKind::Parting: return "part";
     }
     return "";

@@ -27,18 +27,19 @@ enum class StepKind {
     TurnRoughing,
     TurnFinishing,
     Grooving,
+    Threading,
     Parting,
 };
 const char* toString(StepKind k);  // "roughing"
 const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
-                                   // turning: "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "part")
+                                   // turning: "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "thread", "part")
 
 // Machining-type code attached to every step for the post-processor
 // (seed: "attached with a predetermined machining type code"):
 // 10 pilot hole, 20 roughing, 30 floor finishing, 40 wall finishing,
 // 41 wall semi-finish, 42 taper-wall middle pass, 50 inclined-face finishing;
 // turning: 60 facing, 61 centre drilling, 62 drilling, 70 roughing,
-// 71 finishing, 72 grooving, 73 parting.
+// 71 finishing, 72 grooving, 73 parting, 74 threading.
 enum class MachiningType : int {
     PilotHole = 10,
     Roughing = 20,
@@ -54,6 +55,7 @@ enum class MachiningType : int {
     TurnFinishing = 71,
     Grooving = 72,
     Parting = 73,
+    Threading = 74,
 };
 
 // An inclined face of module M2D: a plane strip between its edge at the top

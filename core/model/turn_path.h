@@ -71,6 +71,28 @@ struct TurnCutting {
     friend bool operator==(const TurnCutting&, const TurnCutting&) = default;
 };
 
+// A threading step's cycle (docs/turning.md "Threading"), what the tapes'
+// G76 say: the drive line (the programmed point before the cycle, above
+// the thread's crest by `clearance`), the thread's end, pitch and depth,
+// the first pass's depth and the passes the depths make. Depths are on the
+// radius, from the crest; pass k (1-based) cuts to min(firstDepth √k, depth)
+// (constant chip area), the passes while that is below the depth, then one
+// at the full depth and `springPasses` more there. Each pass enters along
+// the compound angle (Z shifted by its depth × tan(compoundAngle)).
+struct TurnThread {
+    double pitch = 0.0;          // [mm], the feed per revolution of every pass
+    double depth = 0.0;          // on the radius [mm]
+    double firstDepth = 0.0;     // the first pass's [mm]
+    double crestR = 0.0;         // the thread's crest (the row's radius) [mm]
+    double clearance = 0.0;      // drive line above the crest [mm]
+    double zStart = 0.0;         // the drive point's Z, the run-in in front of the thread
+    double zEnd = 0.0;           // where the thread ends (the run-out included)
+    double compoundAngle = 29.5; // [deg]
+    int springPasses = 1;
+    std::vector<double> passDepths;  // cumulative depth of each pass, the last ones at `depth`
+    friend bool operator==(const TurnThread&, const TurnThread&) = default;
+};
+
 // What a turning step adds to a step (model/step.h).
 struct TurnStep {
     turning::ProfileSide side = turning::ProfileSide::Outer;
@@ -83,6 +105,7 @@ struct TurnStep {
     std::string region;           // what the step cuts, in words ("E3.groove1", "Ø30-Ø46 front")
     TurnCutting cutting;
     TurnPath path;
+    std::optional<TurnThread> thread;  // threading: the cycle the path runs
     friend bool operator==(const TurnStep&, const TurnStep&) = default;
 };
 

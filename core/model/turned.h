@@ -36,11 +36,28 @@ enum class ProfileSide { Outer, Inner };           // OD: material toward the ax
 enum class ElementKind { Line, ArcCW, ArcCCW };    // as seen in the profile view (G2 / G3 in G18)
 enum class CornerKind { None, Chamfer, Rounding };  // at the end of a row, toward the next row
 
+// An external thread cut on a straight row along the axis
+// (docs/turning.md "Threading"): its pitch and, when the drawing gives it,
+// its depth on the radius (none: ISO metric, kIsoThreadDepth × pitch).
+struct ThreadSpec {
+    double pitch = 0.0;            // [mm]
+    std::optional<double> depth;   // on the radius [mm]
+    friend bool operator==(const ThreadSpec&, const ThreadSpec&) = default;
+};
+// The depth of an ISO metric external thread on the radius, per pitch
+// (ISO 68-1: h3 = 0.61343 P).
+inline constexpr double kIsoThreadDepth = 0.6134;
+// The pitches a thread may have [mm] (ISO metric coarse and fine: 0.2 to 6).
+inline constexpr double kMinThreadPitch = 0.2, kMaxThreadPitch = 6.0;
+
 // What an edge must meet once turned and ground.
 struct EdgeAttributes {
     std::optional<double> roughness;  // Ra [µm]
     std::string tolerance;            // an ISO 286 fit ("h6", "H7") or limits ("+0.01/-0.02"); empty: none
-    bool empty() const { return !roughness && tolerance.empty(); }
+    std::optional<ThreadSpec> thread; // a thread cut on the edge
+    bool empty() const { return !roughness && tolerance.empty() && !thread; }
+    // The thread's depth on the radius: as given, or ISO metric's.
+    double threadDepth() const { return thread ? thread->depth.value_or(kIsoThreadDepth * thread->pitch) : 0.0; }
     friend bool operator==(const EdgeAttributes&, const EdgeAttributes&) = default;
 };
 
@@ -98,6 +115,10 @@ struct TurnedProfile {
             if (r.centreX) r.centreX = f(*r.centreX);
             if (r.centreZ) r.centreZ = f(*r.centreZ);
             r.cornerSize = f(r.cornerSize);
+            if (r.attributes.thread) {
+                r.attributes.thread->pitch = f(r.attributes.thread->pitch);
+                if (r.attributes.thread->depth) r.attributes.thread->depth = f(*r.attributes.thread->depth);
+            }
             // roughness stays in µm Ra, tolerance as typed
         }
         for (auto& a : allowances) {

@@ -24,6 +24,9 @@ namespace {
 
 using turning::ZR;
 
+// FANUC's G76 Q: the smallest cut a pass of the cycle takes (radius) [mm].
+constexpr double kThreadMinCut = 0.05;
+
 // What the two families of controls write differently on a lathe.
 struct LatheWords {
     bool fanuc = false;
@@ -288,6 +291,10 @@ public:
             cycle(index, *p.cycle, c);
             return;
         }
+        if (ts.thread && !w_.words().siemens) {
+            threadCycle(*ts.thread);
+            return;
+        }
         for (std::size_t m = 0; m < p.moves.size(); ++m) {
             w_.source({static_cast<int>(index), static_cast<int>(m)});
             const TurnMove& mv = p.moves[m];
@@ -300,7 +307,11 @@ public:
                 if (!prefix.empty()) w_.move("G0", mv.end, std::nullopt, prefix);
                 else w_.rapid(mv.end);
                 break;
-            case TurnMove::Feed: w_.linear(mv.end, f, prefix); break;
+            case TurnMove::Feed:
+                // A threading pass: synchronised with the spindle, K the lead along Z.
+                if (ts.thread) w_.move("G33", mv.end, std::nullopt, {}, "K" + w_.num(ts.thread->pitch));
+                else w_.linear(mv.end, f, prefix);
+                break;
             case TurnMove::ArcCW:
             case TurnMove::ArcCCW: w_.arc(mv.kind == TurnMove::ArcCW, mv.end, mv.centre, f); break;
             }
@@ -382,6 +393,33 @@ private:
         }
         w_.forget();
         w_.rapid(c.start);
+    }
+
+    // The control's threading cycle from the drive point (the path's start),
+    // docs/turning.md "Threading". LinuxCNC 2.9: G76 P Z I J R K Q H with
+    // I, J, K as diameters under G7 (interp_convert.cc halves them); FANUC
+    // 0i: G76 P(m)(r)(a) Q(dmin) R(d) then G76 X Z P(k) Q(Δd) F, P and Q in
+    // the least input increment; the one-block form (Haas, FANUC 10/11):
+    // G76 X Z K D F A P1.
+    void threadCycle(const TurnThread& th)
+    {
+        const double root = th.crestR - th.depth;
+        const auto increments = [&](double mm) { return post::formatInteger(w_.units(mm) * (w_.inch() ? 10000.0 : 1000.0)); };
+        if (w_.words().fanuc && w_.dialect().oneBlockRoughingCycle) {
+            w_.block(fmt::format("G76 {} {} K{} D{} {} A60 P1", w_.x(root), w_.z(th.zEnd), w_.num(th.depth), w_.num(th.firstDepth),
+                                 w_.feedWord(th.pitch)));
+        } else if (w_.words().fanuc) {
+            // m: the passes at full depth; r: no chamfer out (the relief);
+            // a: the insert's 60°; no finishing allowance.
+            w_.block(fmt::format("G76 P{:02d}0060 Q{} R{}", th.springPasses + 1, increments(kThreadMinCut), w_.num(0.0)));
+            w_.block(fmt::format("G76 {} {} P{} Q{} {}", w_.x(root), w_.z(th.zEnd), increments(th.depth), increments(th.firstDepth),
+                                 w_.feedWord(th.pitch)));
+        } else {
+            w_.block(fmt::format("G76 P{} {} I{} J{} R2 K{} Q{:g} H{}", w_.num(th.pitch), w_.z(th.zEnd), w_.num(-2.0 * th.clearance),
+                                 w_.num(2.0 * th.firstDepth), w_.num(2.0 * th.depth), th.compoundAngle, th.springPasses));
+        }
+        w_.forget();
+        w_.setAt({th.zEnd, th.crestR + th.clearance});
     }
 
     LatheWriter& w_;

@@ -150,7 +150,7 @@ using namespace planner;
 
 const std::vector<std::string>& turnStepKeys()
 {
-    static const std::vector<std::string> keys{kFacing, kCentreDrill, kDrill, kRough, kFinish, kGroove, kPart};
+    static const std::vector<std::string> keys{kFacing, kCentreDrill, kDrill, kRough, kFinish, kGroove, kThread, kPart};
     return keys;
 }
 

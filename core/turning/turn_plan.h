@@ -3,7 +3,8 @@
 // centre drilling and drilling (a bore in a solid bar), roughing that leaves
 // the finishing allowance in X and Z, finishing with nose-radius
 // compensation, grooving where the finishing insert cannot reach (withdrawn
-// along the surface normal at the end, seed 002) and parting off; the tool
+// along the surface normal at the end, seed 002), threading the rows that
+// ask for a thread (G76) and parting off; the tool
 // of each from the library with the reason; every path in the XZ half-plane.
 // Inputs in mm, checked.
 #pragma once
@@ -23,7 +24,7 @@
 namespace taiwa::turning {
 
 // The step keys a unit's "skip" list and "tools" pins name.
-const std::vector<std::string>& turnStepKeys();  // "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "part"
+const std::vector<std::string>& turnStepKeys();  // "facing", "centre-drill", "drill", "turn-rough", "turn-finish", "groove", "thread", "part"
 
 struct TurnPlanRequest {
     int unit = 0;
@@ -31,6 +32,7 @@ struct TurnPlanRequest {
     BarStock bar;
     double maxRpm = 4000.0;         // the machine's spindle limit
     double rapid = 10000.0;         // the machine's slowest rapid [mm/min]
+    double maxFeed = 0.0;           // the machine's feed limit [mm/min] (threading: pitch × rpm); 0: none
     const std::vector<Tool>* library = nullptr;
     std::string material;
     ToolPins pins;                   // by turnStepKeys()

@@ -2,8 +2,9 @@
 // core/turning/): the step keys, the planner's constants and the Planner
 // class, whose steps are planned in turn_plan.cpp (what they share),
 // turn_plan_drill.cpp (facing, drilling), turn_plan_rough.cpp (roughing),
-// turn_plan_finish.cpp (finishing) and turn_plan_groove.cpp (grooves,
-// parting off). The one door outside is turn_plan.h.
+// turn_plan_finish.cpp (finishing), turn_plan_groove.cpp (grooves,
+// parting off) and turn_plan_thread.cpp (threads). The one door outside
+// is turn_plan.h.
 #pragma once
 
 #include "turning/turn_plan.h"
@@ -37,6 +38,7 @@ inline constexpr const char* kDrill = "drill";
 inline constexpr const char* kRough = "turn-rough";
 inline constexpr const char* kFinish = "turn-finish";
 inline constexpr const char* kGroove = "groove";
+inline constexpr const char* kThread = "thread";
 inline constexpr const char* kPart = "part";
 
 inline std::string toolWords(const Tool& t) { return msg::toolName(t); }
@@ -82,6 +84,7 @@ public:
         planRoughing();
         if (finishing) planFinishing(*finishing);
         planGrooves();
+        planThreading();
         if (!inner_) planParting();
         return std::move(out_);
     }
@@ -202,6 +205,15 @@ private:
     // ends (its bottom under the blade): of the groove's elements the one
     // nearest the corner's contact.
     ZR surfaceNormal(ZR corner, std::size_t i, std::size_t j, double w) const;
+
+    // ---- threading -------------------------------------------------------
+
+    void planThreading();
+    // The passes of the control's G76 for the thread, as the programmed point.
+    static TurnPath threadPath(const TurnThread& th);
+    // The highest radius the part's chain reaches for zLo <= z <= zHi,
+    // element `skip` left out (-1e300 where it has none there).
+    double highestIn(double zLo, double zHi, std::size_t skip) const;
 
     // ---- parting off -----------------------------------------------------
 

@@ -6,8 +6,10 @@
 // compensation puts it), and the checks on the way: a feed or an arc whose
 // tool enters its unit's finished part (a gouge), a rapid whose tool meets
 // stock still there, material left after roughing and after a unit's
-// finishing, the machine's travel. Arcs are flattened and the nose drawn
-// within a tenth of the resolution; outlines are sampled at the resolution.
+// finishing, the machine's travel. A threading step is judged against
+// the part less the thread's depth along its passes. Arcs are flattened
+// and the nose drawn within a tenth of the resolution; outlines are sampled
+// at the resolution.
 #include "verify/verify_turning.h"
 
 #include "machine/machine.h"
@@ -434,6 +436,19 @@ private:
             s.unit >= 0 && s.unit < static_cast<int>(units_.size()) && units_[static_cast<std::size_t>(s.unit)].outline
                 ? &units_[static_cast<std::size_t>(s.unit)]
                 : nullptr;
+        // A threading insert cuts the thread into the finished row by
+        // design: it is judged against the part less the thread's depth
+        // over the stretch its passes run.
+        std::optional<Paths> threaded;
+        if (unit && ts.thread) {
+            double zLo = kInf, zHi = -kInf;
+            for (const TurnMove& mv : ts.path.moves) {
+                zLo = std::min(zLo, mv.end.z);
+                zHi = std::max(zHi, mv.end.z);
+            }
+            const double root = ts.thread->crestR - ts.thread->depth - kGougeTolerance;
+            threaded = boolean(ClipperLib::ctDifference, unit->part, {box(zLo, zHi, root, kFar)});
+        }
         const auto all = traces(ts, t.cornerRadius);
         for (int m = 0; m < static_cast<int>(all.size()); ++m) {
             const std::vector<ZR>& trace = all[static_cast<std::size_t>(m)];
@@ -448,7 +463,7 @@ private:
                     if (d.depth > kTouch) add(FindingKind::RapidIntoStock, k, m, d, d.depth, areaOf(into));
                 }
             } else if (unit) {
-                const Paths into = boolean(ClipperLib::ctIntersection, swept(nose, trace), unit->part);
+                const Paths into = boolean(ClipperLib::ctIntersection, swept(nose, trace), threaded ? *threaded : unit->part);
                 if (!into.empty()) {
                     const Deepest d = deepest(into, *unit->outline, res_);
                     if (d.depth > kGougeTolerance + res_) add(FindingKind::Gouge, k, m, d, d.depth, areaOf(into));

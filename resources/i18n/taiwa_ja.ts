@@ -1223,6 +1223,10 @@
             <translation>仕上げ</translation>
         </message>
         <message>
+            <source>Threading</source>
+            <translation>ねじ切り</translation>
+        </message>
+        <message>
             <source>Parting off</source>
             <translation>突切り</translation>
         </message>

@@ -1223,6 +1223,10 @@
             <translation>精加工</translation>
         </message>
         <message>
+            <source>Threading</source>
+            <translation>车螺纹</translation>
+        </message>
+        <message>
             <source>Parting off</source>
             <translation>切断</translation>
         </message>

@@ -142,6 +142,12 @@ public:
                 loop_.push_back(e);
             }
         for (const auto& e : loop_) flattenInto(e, 5e-5, poly_);
+        if (!drawn)
+            for (const auto& d : part.deformed.edges)
+                if (d.attributes.thread) {
+                    const double pitch = d.attributes.thread->pitch;
+                    threads_.push_back({std::min(d.geometry.a.z, d.geometry.b.z) - pitch, kInf, d.geometry.a.r - d.attributes.threadDepth()});
+                }
         for (const auto& p : poly_) {
             lo_.x = std::min(lo_.x, p.x);
             lo_.y = std::min(lo_.y, p.y);
@@ -190,6 +196,18 @@ public:
         return inside(p) ? -d : d;
     }
 
+    // A threading insert's signed distance: the material is cut down to
+    // the thread's root over the threaded edge and everything in front of
+    // it, and over a pitch behind it (the run-out into the relief), as the
+    // thread attribute of the deformed profile's edge says.
+    double threadedDistance(P p) const
+    {
+        double d = signedDistance(p);
+        for (const auto& t : threads_)
+            if (p.x >= t.zFrom && p.x <= t.zTo + 1e-9) d = std::max(d, p.y - t.root);
+        return d;
+    }
+
     double profileDistance(P p) const
     {
         double d = kInf;
@@ -209,6 +227,10 @@ public:
 private:
     bool inner_ = false;
     std::vector<Elem> profile_, loop_;
+    struct Thread {
+        double zFrom, zTo, root;  // Z from a pitch behind the threaded edge on; the root's radius
+    };
+    std::vector<Thread> threads_;
     std::vector<P> poly_;
     P lo_{kInf, kInf}, hi_{-kInf, -kInf};
     double zFront_ = 0.0;
@@ -249,6 +271,12 @@ Shape shapeOf(const Tool& t, int orientation)
             const auto it = shapes.find(t.turning.insertCode.front());
             if (it != shapes.end()) s.tipAngle = it->second;
         }
+        break;
+    case ToolType::Threading:  // its nose as an insert's (its flanks are not modelled)
+        s.kind = Shape::Insert;
+        s.inner = t.turning.inside;
+        s.nose = t.cornerRadius;
+        s.tip = orientationOffset(orientation, t.cornerRadius);
         break;
     case ToolType::Grooving:
         s.kind = Shape::Blade;
@@ -667,11 +695,12 @@ LatheVerdict judgeLatheTape(const Plan& plan, const Rs274Result& run, const Lath
             const Material& part = mat->second;
             const bool roughing = step.kind == StepKind::TurnRoughing;
             const bool finishing = step.kind == StepKind::TurnFinishing;
+            const bool threading = step.kind == StepKind::Threading;
             const double allowance = roughing && step.turn ? std::min(step.turn->allowanceX, step.turn->allowanceZ) : 0.0;
             double worst = -kInf, closest = kInf, nearest = kInf;
             P worstAt{}, closestAt{}, nearestAt{};
             for (const P& c : pts) {
-                const double sd = part.signedDistance(c);
+                const double sd = threading ? part.threadedDistance(c) : part.signedDistance(c);
                 if (s.nose - sd > worst) {
                     worst = s.nose - sd;
                     worstAt = c;

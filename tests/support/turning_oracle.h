@@ -37,6 +37,12 @@
 //   the nose circle and everything above it, outside, or below it, inside;
 //   a blade its rectangle; a drill its body); a rapid's tool shape may not
 //   overlap what is left of any column by more than `tolerance` in radius.
+// - Threading: a threading insert is judged by its nose like an insert's
+//   (its flanks are not modelled), against the part less the thread: the
+//   deformed profile cut down to the thread's root (the edge's radius less
+//   its thread depth, the edge's thread attribute) from a pitch behind
+//   the threaded edge (the run-out into its relief) to the front, since
+//   the insert goes below the finished profile there by design.
 // - Grooving: the last feed before the rapid retract is the withdrawal:
 //   turn->withdrawal long and along the profile's outward normal where the
 //   blade ended, both within the tolerance.

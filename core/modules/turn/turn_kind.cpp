@@ -29,7 +29,7 @@ constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowance
 
 const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances", "tools", "skip", "cutting"};
 const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
-                                        "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance"};
+                                        "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance", "thread"};
 const std::vector<std::string> kAllowanceKeys{"edge", "allowance", "adjustment", "groove", "grooveWidth", "grooveDepth"};
 const std::vector<std::string> kSides{"outer", "inner"};
 const std::vector<std::string> kKinds{"line", "cw", "ccw"};
@@ -149,6 +149,15 @@ protected:
                 row.cornerSize = r.number("cornerSize", 0.0);
                 row.attributes.roughness = r.optionalNumber("roughness");
                 row.attributes.tolerance = r.string("tolerance", "");
+                if (const auto* thread = r.find("thread")) {
+                    if (!thread->is_object()) {
+                        r.error("thread", msg::io::wrongType("an object {\"pitch\": mm, \"depth\": mm}", *thread));
+                    } else {
+                        const io::ObjectFields th = r.nested(*thread, "thread.");
+                        th.rejectUnknown("a thread", {"pitch", "depth"});
+                        row.attributes.thread = ThreadSpec{th.number("pitch").value_or(0.0), th.optionalNumber("depth")};
+                    }
+                }
                 p.rows.push_back(row);
             }
         }
@@ -208,6 +217,12 @@ protected:
             if (r.corner != CornerKind::None || r.cornerSize != 0.0) j["cornerSize"] = number(r.cornerSize);
             if (r.attributes.roughness) j["roughness"] = number(*r.attributes.roughness);
             if (!r.attributes.tolerance.empty()) j["tolerance"] = r.attributes.tolerance;
+            if (const auto& th = r.attributes.thread) {
+                ordered spec;
+                spec["pitch"] = number(th->pitch);
+                if (th->depth) spec["depth"] = number(*th->depth);
+                j["thread"] = std::move(spec);
+            }
             u["rows"].push_back(std::move(j));
         }
         if (!t.tools.empty()) u["tools"] = io::pins(t.tools);
@@ -256,6 +271,7 @@ protected:
         const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
         for (const auto& p : r.problems) add(p);
         if (!r.ok()) return report;
+        checkThreads(t.profile, r.profile, ctx.library, ctx.shownUnit, add);
         static const std::vector<Tool> none;
         const Deformation d =
             applyAllowances(r.profile, t.profile.allowances, allowanceOptions(t.profile, ctx.library ? *ctx.library : none, ctx.shownUnit));
@@ -292,6 +308,7 @@ protected:
         if (ctx.machine) {
             q.maxRpm = ctx.machine->maxSpindleSpeed > 0 ? ctx.machine->maxSpindleSpeed : q.maxRpm;
             if (const double rapid = ctx.machine->slowestRapid(); rapid > 0) q.rapid = rapid;
+            q.maxFeed = ctx.machine->maxFeed;
         }
         // The job's first turned unit faces the bar; its last outer unit parts it off.
         int firstTurn = -1, lastOuter = -1;
@@ -343,6 +360,63 @@ private:
     // The profile, allowances included, lies within the bar: an outer
     // profile no larger than the bar's diameter, an inner one inside it,
     // every Z between the face stock and the bar's end.
+    // The rows' threads (docs/turning.md "Threading"): on a straight outer
+    // row along the axis, cut toward the chuck, not ground; a pitch the
+    // library's threading inserts cut; a depth the row's diameter holds.
+    template <class Add>
+    static void checkThreads(const TurnedProfile& p, const ResolvedProfile& resolved, const std::vector<Tool>* library, LengthUnit shown,
+                             Add add)
+    {
+        for (std::size_t i = 0; i < p.rows.size(); ++i) {
+            const ProfileRow& row = p.rows[i];
+            if (!row.attributes.thread) continue;
+            const std::string field = fmt::format("rows[{}].thread", i + 1);
+            const std::string id = edgeId(row.id);
+            const ThreadSpec& th = *row.attributes.thread;
+            const auto len = [&](double mm) { return msg::quote({mm, shown}); };
+            if (p.side == ProfileSide::Inner) {
+                add({field, fmt::format("{} is on an inner profile: internal threads are not cut yet (only external ones)", id)});
+                continue;
+            }
+            const Edge* e = resolved.find(id);
+            if (!e) continue;
+            if (row.kind != ElementKind::Line || e->geometry.arc) {
+                add({field, fmt::format("{} is an arc: a thread is cut on a straight row along the axis", id)});
+                continue;
+            }
+            if (std::abs(e->geometry.a.r - e->geometry.b.r) > 1e-6 || e->geometry.b.z >= e->geometry.a.z) {
+                add({field, fmt::format("{} is not a cylinder cut toward the chuck (a taper or a face): a thread is cut on a straight "
+                                        "row along the axis, from the front back",
+                                        id)});
+                continue;
+            }
+            for (const auto& a : p.allowances)
+                if (a.edge == id) add({field, fmt::format("{} has a grinding allowance: a thread is not ground", id)});
+            if (th.pitch < kMinThreadPitch || th.pitch > kMaxThreadPitch) {
+                add({field + ".pitch", fmt::format("a pitch of {} is out of range: {} to {}", len(th.pitch), len(kMinThreadPitch), len(kMaxThreadPitch))});
+                continue;
+            }
+            const double depth = row.attributes.threadDepth(), diameter = 2.0 * e->geometry.a.r;
+            // A 60° thread is no deeper than its sharp V (0.866 P); the core
+            // keeps at least half the row's diameter.
+            const double deepest = std::min(0.866 * th.pitch, diameter / 4.0);
+            if (!(depth > 0.0) || depth > deepest + 1e-9) {
+                add({field + ".depth", fmt::format("a thread {} deep does not fit Ø{} with pitch {}: at most {} (the sharp V's height, and "
+                                                   "a core of half the diameter)",
+                                                   len(depth), len(diameter), len(th.pitch), len(deepest))});
+                continue;
+            }
+            if (library) {
+                bool tool = false;
+                for (const Tool& t : *library)
+                    tool = tool || (t.type == ToolType::Threading && !t.turning.inside && th.pitch >= t.turning.pitchMin - 1e-9 &&
+                                    th.pitch <= t.turning.pitchMax + 1e-9);
+                if (!tool)
+                    add({field + ".pitch", fmt::format("no external threading insert of the tool library cuts a pitch of {}", len(th.pitch))});
+            }
+        }
+    }
+
     template <class Report>
     static void checkInBar(const DeformedProfile& d, const TurnedProfile& p, const BarStock& bar, LengthUnit shown, Report report)
     {
