@@ -49,7 +49,7 @@ const turning::TurnedProfile& profileOf(StationWindow& w, int unit = 0)
 
 // Types into a table cell with the keyboard as an operator does: the cell's
 // editor opened, the text typed over what it holds, then `key` (Tab: on to
-// the next cell; Return: done).
+// the next cell; Return: done); an empty text deletes what it holds.
 void typeInto(QTableWidget* t, int row, int col, const QString& text, Qt::Key key = Qt::Key_Return)
 {
     t->setCurrentCell(row, col);
@@ -57,6 +57,7 @@ void typeInto(QTableWidget* t, int row, int col, const QString& text, Qt::Key ke
     QWidget* editor = QApplication::focusWidget();
     QVERIFY(editor && editor != t);
     if (auto* e = qobject_cast<QLineEdit*>(editor)) e->selectAll();
+    if (text.isEmpty()) QTest::keyClick(editor, Qt::Key_Backspace);
     QTest::keyClicks(editor, text);
     QTest::keyClick(editor, key);
     QCoreApplication::processEvents();  // the delegate commits Return and Tab queued
@@ -180,6 +181,45 @@ private slots:
         settle(w);
         QCOMPARE(profileOf(w).rows[2].x, 60.0);
         QVERIFY(rows->item(2, ProfileEditor::XCol)->toolTip().isEmpty());
+    }
+
+    // The thread's pitch in the profile table: emptied, the row has no
+    // thread and the plan no threading step; 2 typed, a 2 mm thread cut
+    // after the groove; 9 typed, refused on the cell with the check's words.
+    void typeAThreadPitch()
+    {
+        StationWindow w;
+        w.resize(1600, 1000);
+        QVERIFY(test::showSettled(w, "resources/samples/lathe-threaded-shaft.taiwa"));
+        w.activateWindow();  // the keyboard goes to the active window
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.unitList()->selectUnit(0);  // its form with the profile table
+        auto* rows = w.findChild<QTableWidget*>("turn.rows");
+        QVERIFY(rows);
+        QCOMPARE(rows->horizontalHeaderItem(ProfileEditor::PitchCol)->text(), QString("Thread pitch"));
+        QCOMPARE(rows->item(1, ProfileEditor::PitchCol)->text(), QString("2.5"));
+        const auto threading = [&] {
+            settle(w);
+            const auto plan = w.planRunner()->fullPlan();
+            if (!plan || !plan->ok()) return -1;
+            return static_cast<int>(std::count_if(plan->steps.begin(), plan->steps.end(),
+                                                  [](const Step& s) { return s.kind == StepKind::Threading; }));
+        };
+        QCOMPARE(threading(), 1);
+        typeInto(rows, 1, ProfileEditor::PitchCol, "");
+        QVERIFY(!profileOf(w).rows[1].attributes.thread);
+        QCOMPARE(threading(), 0);
+        typeInto(rows, 1, ProfileEditor::PitchCol, "2");
+        QVERIFY(profileOf(w).rows[1].attributes.thread);
+        QCOMPARE(profileOf(w).rows[1].attributes.thread->pitch, 2.0);
+        QCOMPARE(threading(), 1);
+        typeInto(rows, 1, ProfileEditor::PitchCol, "9");
+        settle(w);
+        QTableWidgetItem* bad = rows->item(1, ProfileEditor::PitchCol);
+        QVERIFY2(bad->toolTip().contains("pitch"), qPrintable(bad->toolTip() + " / " + w.findChild<QLabel*>("turn.messages")->text()));
+        QCOMPARE(bad->background().color(), QColor("#ffd0d0"));
+        w.document()->undoStack()->undo();
+        QCOMPARE(profileOf(w).rows[1].attributes.thread->pitch, 2.0);
     }
 
     // Corner revision (seed 002): every chamfer highlighted, one picked with

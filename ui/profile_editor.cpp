@@ -71,7 +71,7 @@ QTableWidgetItem* cell(const QString& text, bool editable = true)
 // Which cell a check field names: "rows[3].radius" -> row 2, R.
 std::optional<std::pair<int, int>> rowCell(const QString& field)
 {
-    static const QRegularExpression re(QStringLiteral(R"(^rows\[(\d+)\]\.(\w+)$)"));
+    static const QRegularExpression re(QStringLiteral(R"(^rows\[(\d+)\]\.(\w+)(\.\w+)?$)"));
     const auto m = re.match(field);
     if (!m.hasMatch()) return std::nullopt;
     const int row = m.captured(1).toInt() - 1;
@@ -79,7 +79,7 @@ std::optional<std::pair<int, int>> rowCell(const QString& field)
     const int col = key == "x" ? ProfileEditor::XCol : key == "z" ? ProfileEditor::ZCol
                   : key == "radius" ? ProfileEditor::RCol : key == "centre" ? ProfileEditor::CXCol
                   : key == "corner" ? ProfileEditor::CornerCol : key == "cornerSize" ? ProfileEditor::SizeCol
-                  : key == "id" ? ProfileEditor::EdgeCol : ProfileEditor::XCol;
+                  : key == "id" ? ProfileEditor::EdgeCol : key == "thread" ? ProfileEditor::PitchCol : ProfileEditor::XCol;
     return std::make_pair(row, col);
 }
 
@@ -108,7 +108,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     rows_ = new Table(0, RowColumns, this);
     rows_->setObjectName(prefix + ".rows");
     rows_->setHorizontalHeaderLabels({tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"), tr("R"), tr("Centre X"),
-                                      tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance")});
+                                      tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")});
     rows_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     rows_->verticalHeader()->setVisible(false);
     rows_->setEditTriggers(QAbstractItemView::AllEditTriggers);
@@ -314,6 +314,7 @@ void ProfileEditor::fill(bool force)
         set(rows_, i, SizeCol, row.corner == CornerKind::None && row.cornerSize == 0 ? QString() : shown(row.cornerSize));
         set(rows_, i, RaCol, shown(row.attributes.roughness));
         set(rows_, i, TolCol, QString::fromStdString(row.attributes.tolerance));
+        set(rows_, i, PitchCol, row.attributes.thread ? shown(row.attributes.thread->pitch) : QString());
     }
     const int m = static_cast<int>(profile_.allowances.size());
     if (force || allowances_->rowCount() != m) allowances_->setRowCount(m);
@@ -356,7 +357,8 @@ void ProfileEditor::onRowItem(QTableWidgetItem* item)
     if (c == TolCol) {
         row.attributes.tolerance = text.toStdString();
     } else {
-        const bool optional = c == RCol || c == CXCol || c == CZCol || c == RaCol || (c == SizeCol && text.isEmpty());
+        const bool optional =
+            c == RCol || c == CXCol || c == CZCol || c == RaCol || c == PitchCol || (c == SizeCol && text.isEmpty());
         const std::optional<double> v = parseNumber(text);
         if (!(optional && text.isEmpty()) && !v) {
             notANumber_.emplace_back(r, c);
@@ -374,6 +376,11 @@ void ProfileEditor::onRowItem(QTableWidgetItem* item)
         case CZCol: row.centreZ = v; break;
         case SizeCol: row.cornerSize = v.value_or(0.0); break;
         case RaCol: row.attributes.roughness = v; break;
+        case PitchCol:  // a pitch typed cuts a thread (its depth kept, else ISO's); emptied, none
+            if (!v) row.attributes.thread.reset();
+            else if (row.attributes.thread) row.attributes.thread->pitch = *v;
+            else row.attributes.thread = ThreadSpec{*v, std::nullopt};
+            break;
         default: return;
         }
     }

@@ -54,7 +54,7 @@ public:
     void pickCorner(const QString& id);
 
     // Columns of the profile table and of the allowance table.
-    enum RowColumn { EdgeCol, KindCol, XCol, ZCol, RCol, CXCol, CZCol, CornerCol, SizeCol, RaCol, TolCol, RowColumns };
+    enum RowColumn { EdgeCol, KindCol, XCol, ZCol, RCol, CXCol, CZCol, CornerCol, SizeCol, RaCol, TolCol, PitchCol, RowColumns };
     enum AllowanceColumn { AEdgeCol, AAllowCol, AAdjustCol, AGrooveCol, AWidthCol, ADepthCol, AllowanceColumns };
 
 signals:

@@ -297,6 +297,10 @@
             <translation>許容差</translation>
         </message>
         <message>
+            <source>Thread pitch</source>
+            <translation>ねじピッチ</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>形状(切削順、X は直径。円弧は R または中心で指定)</translation>
         </message>

@@ -297,6 +297,10 @@
             <translation>公差</translation>
         </message>
         <message>
+            <source>Thread pitch</source>
+            <translation>螺距</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>轮廓,按切削顺序(X 为直径;圆弧:R 或圆心)</translation>
         </message>
