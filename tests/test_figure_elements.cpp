@@ -13,6 +13,7 @@
 #include <string_view>
 
 using namespace taiwa::figure;
+using taiwa::Point2;
 
 namespace QTest {
 // Compared strings printed when they differ.
@@ -48,7 +49,7 @@ bool isPoint(const Evaluation& ev, const std::string& name, double x, double y)
 }
 
 // A line given by its point and direction, both exact.
-bool isLine(const Evaluation& ev, const std::string& name, Vec p, Vec dir)
+bool isLine(const Evaluation& ev, const std::string& name, Point2 p, Point2 dir)
 {
     const Element* e = ev.find(name);
     if (!e || e->kind != Kind::Line) return false;
@@ -170,7 +171,7 @@ private slots:
         QVERIFY(isLine(ev, "T2", {5, 0}, {-0.8, 0.6}));
         // The contact point (5,0) + 4·(−0.8,−0.6) = (1.8,−2.4) lies on C3: 1.8² + 2.4² = 9.
         const Line& t1 = ev.find("T1")->line;
-        const Vec contact{t1.point.x + 4 * t1.dir.x, t1.point.y + 4 * t1.dir.y};
+        const Point2 contact{t1.point.x + 4 * t1.dir.x, t1.point.y + 4 * t1.dir.y};
         QVERIFY(near(contact.x, 1.8) && near(contact.y, -2.4));
     }
     void tangentToTwoCircles()

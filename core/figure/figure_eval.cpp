@@ -21,13 +21,7 @@ const Element* Evaluation::find(const std::string& name) const
 
 namespace {
 
-Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
-Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
-Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
-double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
-double cross(Vec a, Vec b) { return a.x * b.y - a.y * b.x; }
-double norm(Vec a) { return std::hypot(a.x, a.y); }
-Vec left(Vec a) { return {-a.y, a.x}; }  // a turned +90°
+Point2 left(Point2 a) { return {-a.y, a.x}; }  // a turned +90°
 
 // A refusal of the element being evaluated; caught per definition.
 struct Refused {
@@ -37,14 +31,14 @@ struct Refused {
 std::string num(double v) { return formatNumber(v); }
 
 // Of two candidates, the one the modifier names; a tie is refused.
-Vec choose(Vec a, Vec b, Modifier m, const std::string& what)
+Point2 choose(Point2 a, Point2 b, Modifier m, const std::string& what)
 {
     const bool byX = m == Modifier::XLarge || m == Modifier::XSmall;
     const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
     const double ka = byX ? a.x : a.y;
     const double kb = byX ? b.x : b.y;
     if (std::abs(ka - kb) <= kTolerance) {
-        if (norm(a - b) <= kTolerance) return a;  // one candidate (touching): nothing to choose
+        if (length(a - b) <= kTolerance) return a;  // one candidate (touching): nothing to choose
         throw Refused{std::string(keyword(m)) + " cannot choose between the two " + what + ": both have the same " +
                       (byX ? "x" : "y") + "; use " + (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL")};
     }
@@ -53,9 +47,9 @@ Vec choose(Vec a, Vec b, Modifier m, const std::string& what)
 
 // The unit normal of `l` pointing to the side the modifier names (XLARGE:
 // towards +x...); refused for a line along the axis the modifier compares.
-Vec sideNormal(const Line& l, Modifier m, const std::string& lineName)
+Point2 sideNormal(const Line& l, Modifier m, const std::string& lineName)
 {
-    const Vec n = left(l.dir);
+    const Point2 n = left(l.dir);
     const bool byX = m == Modifier::XLarge || m == Modifier::XSmall;
     const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
     const double k = byX ? n.x : n.y;
@@ -65,7 +59,7 @@ Vec sideNormal(const Line& l, Modifier m, const std::string& lineName)
     return ((k > 0) == large) ? n : -1.0 * n;
 }
 
-Vec intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
+Point2 intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
 {
     const double det = cross(a.dir, b.dir);
     if (std::abs(det) <= 1e-12) throw Refused{an + " and " + bn + " are parallel: they do not intersect"};
@@ -74,31 +68,31 @@ Vec intersectLines(const Line& a, const Line& b, const std::string& an, const st
 }
 
 // Both intersections of a line and a circle (equal when it touches).
-std::pair<Vec, Vec> intersectLineCircle(const Line& l, const Circle& c, const std::string& what)
+std::pair<Point2, Point2> intersectLineCircle(const Line& l, const Circle& c, const std::string& what)
 {
-    const Vec foot = l.point + dot(c.centre - l.point, l.dir) * l.dir;
-    const double h = norm(c.centre - foot);
+    const Point2 foot = l.point + dot(c.centre - l.point, l.dir) * l.dir;
+    const double h = length(c.centre - foot);
     if (h > c.radius + kTolerance) throw Refused{what};
     const double half = std::sqrt(std::max(0.0, c.radius * c.radius - h * h));
     return {foot + half * l.dir, foot - half * l.dir};
 }
 
-std::pair<Vec, Vec> intersectCircles(const Circle& a, const Circle& b, const std::string& an, const std::string& bn)
+std::pair<Point2, Point2> intersectCircles(const Circle& a, const Circle& b, const std::string& an, const std::string& bn)
 {
-    const Vec d = b.centre - a.centre;
-    const double dist = norm(d);
+    const Point2 d = b.centre - a.centre;
+    const double dist = length(d);
     if (dist <= kTolerance) throw Refused{an + " and " + bn + " are concentric: they do not intersect"};
     if (dist > a.radius + b.radius + kTolerance || dist < std::abs(a.radius - b.radius) - kTolerance)
         throw Refused{an + " and " + bn + " do not meet"};
-    const Vec e = (1.0 / dist) * d;
+    const Point2 e = (1.0 / dist) * d;
     const double along = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
     const double h = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
-    const Vec base = a.centre + along * e;
+    const Point2 base = a.centre + along * e;
     return {base + h * left(e), base - h * left(e)};
 }
 
 // The direction at `deg` degrees from +X, exact at multiples of 90°.
-Vec direction(double deg)
+Point2 direction(double deg)
 {
     const double r = std::fmod(deg, 360.0);
     const double a = r < 0 ? r + 360.0 : r;
@@ -122,9 +116,9 @@ public:
         case Method::PointCenter: e.point = circle(d.refs.at(0)).centre; break;
         case Method::PointIntof: e.point = intof(d); break;
         case Method::LineTwoPoints: {
-            const Vec a = point(d.refs.at(0));
-            const Vec b = point(d.refs.at(1));
-            const double len = norm(b - a);
+            const Point2 a = point(d.refs.at(0));
+            const Point2 b = point(d.refs.at(1));
+            const double len = length(b - a);
             if (len <= kTolerance)
                 throw Refused{d.refs[0] + " and " + d.refs[1] + " coincide: no line through them"};
             e.line = {a, (1.0 / len) * (b - a)};
@@ -133,7 +127,7 @@ public:
         case Method::LineAtAngle: e.line = {point(d.refs.at(0)), direction(d.numbers.at(0))}; break;
         case Method::LineParallel: {
             const Line& l = line(d.refs.at(0));
-            const Vec n = sideNormal(l, d.modifiers.at(0), d.refs[0]);
+            const Point2 n = sideNormal(l, d.modifiers.at(0), d.refs[0]);
             e.line = {l.point + d.numbers.at(0) * n, l.dir};
             break;
         }
@@ -162,7 +156,7 @@ private:
         if (it == known_.end()) throw std::logic_error("figure: element not evaluated: " + n);
         return it->second;
     }
-    Vec point(const std::string& n) const { return get(n).point; }
+    Point2 point(const std::string& n) const { return get(n).point; }
     const Line& line(const std::string& n) const { return get(n).line; }
     const Circle& circle(const std::string& n) const { return get(n).circle; }
 
@@ -171,13 +165,13 @@ private:
         return {l.point + dist * sideNormal(l, m, name), l.dir};
     }
 
-    Vec intof(const Definition& d) const
+    Point2 intof(const Definition& d) const
     {
         const Element& a = get(d.refs.at(0));
         const Element& b = get(d.refs.at(1));
         const std::string both = d.refs[0] + " and " + d.refs[1];
         if (a.kind == Kind::Line && b.kind == Kind::Line) return intersectLines(a.line, b.line, d.refs[0], d.refs[1]);
-        std::pair<Vec, Vec> two;
+        std::pair<Point2, Point2> two;
         if (a.kind == Kind::Circle && b.kind == Kind::Circle)
             two = intersectCircles(a.circle, b.circle, d.refs[0], d.refs[1]);
         else if (a.kind == Kind::Line)
@@ -192,13 +186,13 @@ private:
     // point of contact. The ray to the centre turned by asin(r/D).
     Line tangentFromPoint(const Definition& d) const
     {
-        const Vec p = point(d.refs.at(0));
+        const Point2 p = point(d.refs.at(0));
         const Circle& c = circle(d.refs.at(1));
-        const Vec toC = c.centre - p;
-        const double dist = norm(toC);
+        const Point2 toC = c.centre - p;
+        const double dist = length(toC);
         if (dist < c.radius - kTolerance || dist <= kTolerance)
             throw Refused{d.refs[0] + " is inside " + d.refs[1] + ": no tangent from it"};
-        const Vec u = (1.0 / dist) * toC;
+        const Point2 u = (1.0 / dist) * toC;
         const double t = std::sqrt(std::max(0.0, dist * dist - c.radius * c.radius));
         const double s = d.modifiers.at(0) == Modifier::Left ? 1.0 : -1.0;
         const double cosA = t / dist;
@@ -216,8 +210,8 @@ private:
         const Circle& c1 = circle(d.refs.at(0));
         const Circle& c2 = circle(d.refs.at(1));
         const std::string both = d.refs[0] + " and " + d.refs[1];
-        const Vec between = c2.centre - c1.centre;
-        const double dist = norm(between);
+        const Point2 between = c2.centre - c1.centre;
+        const double dist = length(between);
         if (dist <= kTolerance) throw Refused{both + " are concentric: no common tangent"};
         const bool same = d.modifiers.at(0) == d.modifiers.at(1);
         const double a = (same ? c1.radius - c2.radius : c1.radius + c2.radius) / dist;
@@ -226,29 +220,29 @@ private:
                                : both + " overlap: no tangent crossing between them"};
         const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
         const double s = d.modifiers[0] == Modifier::Left ? 1.0 : -1.0;
-        const Vec u = (1.0 / dist) * between;
-        const Vec m = a * u + (s * b) * left(u);
-        return {c1.centre + c1.radius * m, s * Vec{m.y, -m.x}};
+        const Point2 u = (1.0 / dist) * between;
+        const Point2 m = a * u + (s * b) * left(u);
+        return {c1.centre + c1.radius * m, s * Point2{m.y, -m.x}};
     }
 
-    static Circle throughThreeCheck(Vec a, Vec b, Vec c, const Definition& d)
+    static Circle throughThreeCheck(Point2 a, Point2 b, Point2 c, const Definition& d)
     {
         const std::string& n0 = d.refs[0];
         const std::string& n1 = d.refs[1];
         const std::string& n2 = d.refs[2];
-        if (norm(b - a) <= kTolerance) throw Refused{n0 + " and " + n1 + " coincide: no circle through three points"};
-        if (norm(c - a) <= kTolerance) throw Refused{n0 + " and " + n2 + " coincide: no circle through three points"};
-        if (norm(c - b) <= kTolerance) throw Refused{n1 + " and " + n2 + " coincide: no circle through three points"};
-        const Vec ab = b - a;
-        const Vec ac = c - a;
+        if (length(b - a) <= kTolerance) throw Refused{n0 + " and " + n1 + " coincide: no circle through three points"};
+        if (length(c - a) <= kTolerance) throw Refused{n0 + " and " + n2 + " coincide: no circle through three points"};
+        if (length(c - b) <= kTolerance) throw Refused{n1 + " and " + n2 + " coincide: no circle through three points"};
+        const Point2 ab = b - a;
+        const Point2 ac = c - a;
         const double det = 2 * cross(ab, ac);
-        if (std::abs(det) <= 1e-12 * norm(ab) * norm(ac))
+        if (std::abs(det) <= 1e-12 * length(ab) * length(ac))
             throw Refused{n0 + ", " + n1 + " and " + n2 + " lie on one line: no circle through them"};
         // Centre relative to a: solves 2 ab·o = |ab|², 2 ac·o = |ac|².
         const double ab2 = dot(ab, ab);
         const double ac2 = dot(ac, ac);
-        const Vec o{(ac.y * ab2 - ab.y * ac2) / det, (ab.x * ac2 - ac.x * ab2) / det};
-        return {a + o, norm(o)};
+        const Point2 o{(ac.y * ab2 - ab.y * ac2) / det, (ab.x * ac2 - ac.x * ab2) / det};
+        return {a + o, length(o)};
     }
 
     Circle throughThree(const Definition& d) const
@@ -283,7 +277,7 @@ private:
 
 bool finite(const Element& e)
 {
-    const auto ok = [](Vec v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+    const auto ok = [](Point2 v) { return std::isfinite(v.x) && std::isfinite(v.y); };
     switch (e.kind) {
     case Kind::Point: return ok(e.point);
     case Kind::Line: return ok(e.line.point) && ok(e.line.dir);

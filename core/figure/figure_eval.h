@@ -7,6 +7,7 @@
 #pragma once
 
 #include "figure/figure_text.h"
+#include "model/geometry.h"
 
 #include <optional>
 #include <string>
@@ -14,28 +15,23 @@
 
 namespace taiwa::figure {
 
-struct Vec {
-    double x = 0;
-    double y = 0;
-    friend bool operator==(const Vec&, const Vec&) = default;
-};
 
 // An infinite line: a point on it and its unit direction. Its left normal is
 // (-dir.y, dir.x); the line is normal·p = normal·point.
 struct Line {
-    Vec point;
-    Vec dir;
+    Point2 point;
+    Point2 dir;
 };
 
 struct Circle {
-    Vec centre;
+    Point2 centre;
     double radius = 0;
 };
 
 struct Element {
     std::string name;
     Kind kind = Kind::Point;
-    Vec point;      // Kind::Point
+    Point2 point;      // Kind::Point
     Line line;      // Kind::Line
     Circle circle;  // Kind::Circle
 };
