@@ -14,7 +14,6 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
-#include <vtkCaptionActor2D.h>
 #include <vtkCoordinate.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
@@ -173,14 +172,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     }
 
     const double axisLength = niceLength(std::max(s.width, s.length));
-    axes_ = vtkSmartPointer<vtkAxesActor>::New();
-    axes_->SetTotalLength(axisLength, axisLength, axisLength);
-    axes_->SetShaftTypeToLine();
-    for (vtkCaptionActor2D* c : {axes_->GetXAxisCaptionActor2D(), axes_->GetYAxisCaptionActor2D(), axes_->GetZAxisCaptionActor2D()}) {
-        c->GetTextActor()->SetTextScaleModeToNone();
-        c->GetCaptionTextProperty()->SetFontSize(14);
-        c->GetCaptionTextProperty()->ShadowOff();
-    }
+    axes_ = labelledAxes(axisLength, 14);
     renderer_->AddActor(axes_);
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
     scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
@@ -317,17 +309,7 @@ void Scene::buildLathe()
     stock_->GetProperty()->SetOpacity(0.15);
     renderer_->AddActor(stock_);
     const double axisLength = niceLength(bar.diameter);
-    axes_ = vtkSmartPointer<vtkAxesActor>::New();
-    axes_->SetTotalLength(axisLength, axisLength, axisLength);
-    axes_->SetShaftTypeToLine();
-    axes_->SetXAxisLabelText("Z");  // the spindle axis runs along the view's X
-    axes_->SetYAxisLabelText("");
-    axes_->SetZAxisLabelText("X");
-    for (vtkCaptionActor2D* c : {axes_->GetXAxisCaptionActor2D(), axes_->GetYAxisCaptionActor2D(), axes_->GetZAxisCaptionActor2D()}) {
-        c->GetTextActor()->SetTextScaleModeToNone();
-        c->GetCaptionTextProperty()->SetFontSize(14);
-        c->GetCaptionTextProperty()->ShadowOff();
-    }
+    axes_ = labelledAxes(axisLength, 14, "Z", "", "X");  // the spindle axis runs along the view's X
     renderer_->AddActor(axes_);
 }
 

@@ -10,16 +10,13 @@
 #include "viz/solids.h"
 
 #include <vtkActor.h>
-#include <vtkAxesActor.h>
 #include <vtkBillboardTextActor3D.h>
-#include <vtkCaptionActor2D.h>
 #include <vtkCubeSource.h>
 #include <vtkCylinderSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
@@ -52,18 +49,7 @@ vtkSmartPointer<vtkActor> box(const std::array<double, 6>& bounds, Rgb colour, d
 void markOrigin(vtkRenderer* renderer, double length, const char* x, const char* y, const char* z, const std::string& name,
                 bool below)
 {
-    auto axes = vtkSmartPointer<vtkAxesActor>::New();
-    axes->SetTotalLength(length, length, length);
-    axes->SetShaftTypeToLine();
-    axes->SetXAxisLabelText(x);
-    axes->SetYAxisLabelText(y);
-    axes->SetZAxisLabelText(z);
-    for (vtkCaptionActor2D* c : {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(), axes->GetZAxisCaptionActor2D()}) {
-        c->GetTextActor()->SetTextScaleModeToNone();
-        c->GetCaptionTextProperty()->SetFontSize(13);
-        c->GetCaptionTextProperty()->ShadowOff();
-    }
-    renderer->AddActor(axes);
+    renderer->AddActor(labelledAxes(length, 13, x, y, z));
     auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
     label->SetInput(name.c_str());
     label->SetPosition(0, 0, 0);

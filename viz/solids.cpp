@@ -1,5 +1,6 @@
 // The stock surface from the height field, the stock block, the tool solid,
-// the pocket outlines, and a lathe job's surfaces of revolution.
+// the pocket outlines, a lathe job's surfaces of revolution, the section
+// face, the colour map and the labelled axes.
 #include "viz/solids.h"
 
 #include "model/turned_geometry.h"
@@ -8,6 +9,7 @@
 #include "verify/deviation.h"
 #include "viz/palette.h"
 
+#include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCubeSource.h>
@@ -16,6 +18,8 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -268,6 +272,22 @@ vtkSmartPointer<vtkPolyData> sectionCap(const sim::HeightField& f, const Section
     pd->SetPoints(points);
     pd->SetPolys(polys);
     return pd;
+}
+
+vtkSmartPointer<vtkAxesActor> labelledAxes(double length, int fontSize, const char* x, const char* y, const char* z)
+{
+    auto axes = vtkSmartPointer<vtkAxesActor>::New();
+    axes->SetTotalLength(length, length, length);
+    axes->SetShaftTypeToLine();
+    axes->SetXAxisLabelText(x);
+    axes->SetYAxisLabelText(y);
+    axes->SetZAxisLabelText(z);
+    for (vtkCaptionActor2D* c : {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(), axes->GetZAxisCaptionActor2D()}) {
+        c->GetTextActor()->SetTextScaleModeToNone();
+        c->GetCaptionTextProperty()->SetFontSize(fontSize);
+        c->GetCaptionTextProperty()->ShadowOff();
+    }
+    return axes;
 }
 
 vtkSmartPointer<vtkPolyData> stockBlock(const Stock& s)

@@ -11,6 +11,7 @@
 #include "verify/deviation.h"
 #include "viz/render.h"
 
+#include <vtkAxesActor.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -39,6 +40,12 @@ vtkSmartPointer<vtkPolyData> deviationSurface(const verify::DeviationMap& map);
 // than `maxSamples`), a quad for each run of samples inside the material.
 vtkSmartPointer<vtkPolyData> sectionCap(const sim::HeightField& field, const SectionPlane& plane,
                                         std::size_t maxSamples = 1'000'000);
+
+// Axes at the origin, `length` long each, drawn as lines, labelled x, y, z
+// (the machine's names of the view's X, Y, Z) in captions of `fontSize`
+// pixels that keep their size however the camera zooms.
+vtkSmartPointer<vtkAxesActor> labelledAxes(double length, int fontSize, const char* x = "X", const char* y = "Y",
+                                           const char* z = "Z");
 
 // The uncut stock block.
 vtkSmartPointer<vtkPolyData> stockBlock(const Stock& stock);
