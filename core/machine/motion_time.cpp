@@ -207,21 +207,10 @@ double machineMinutes(const ToolPath& path, const MotionFeeds& feeds, const Mach
     return p.seconds() / 60.0;
 }
 
-
 namespace {
 
 // A lathe's point (z, r) on the machine: the radius along X, z along Z.
 Point3 onLathe(turning::ZR p) { return {p.r, 0.0, p.z}; }
-
-// The spindle speed at radius r [rpm]: G97's, or G96's surface speed at the
-// diameter 2r capped by the spindle limit.
-double rpmAt(const TurnCutting& c, double limit, double r)
-{
-    if (!c.constantSurfaceSpeed) return c.rpm;
-    const double d = 2.0 * std::abs(r);
-    const double free = d > 0 ? 1000.0 * c.surfaceSpeed / (std::numbers::pi * d) : std::numeric_limits<double>::infinity();
-    return std::min(limit, free);
-}
 
 }  // namespace
 
@@ -262,7 +251,7 @@ double turnMachineMinutes(const TurnStep& step, const Machine& machine)
                 const double t = hi - lo > 1e-9 ? (radii[k] - r0) / (r1 - r0) : 1.0;
                 const turning::ZR to = k + 1 == radii.size() ? m.end
                                                              : turning::ZR{at.z + t * (m.end.z - at.z), at.r + t * (m.end.r - at.r)};
-                p.feed(onLathe(from), onLathe(to), perRev * rpmAt(c, limit, std::min(radii[k - 1], radii[k])));
+                p.feed(onLathe(from), onLathe(to), perRev * c.rpmAt(2.0 * std::min(radii[k - 1], radii[k]), limit));
                 from = to;
             }
             break;
@@ -280,7 +269,7 @@ double turnMachineMinutes(const TurnStep& step, const Machine& machine)
             const double toBottom = std::remainder(sense * (-std::numbers::pi / 2 - a0), 2 * std::numbers::pi);
             if ((toBottom < 0 ? toBottom + 2 * std::numbers::pi : toBottom) <= sweep)
                 lowest = std::min(lowest, std::abs(m.centre.r - s.radius));
-            p.arcBlock(turning::length(s), s.radius, tangent(a0), tangent(a1), perRev * rpmAt(c, limit, lowest), planeAccel);
+            p.arcBlock(turning::length(s), s.radius, tangent(a0), tangent(a1), perRev * c.rpmAt(2.0 * lowest, limit), planeAccel);
             break;
         }
         }

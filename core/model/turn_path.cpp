@@ -21,6 +21,12 @@ turning::Segment segmentOf(turning::ZR from, const TurnMove& m)
 
 }  // namespace
 
+double TurnCutting::rpmAt(double diameter, double limit) const
+{
+    if (!constantSurfaceSpeed) return rpm;
+    return diameter > 0 ? std::min(limit, 1000.0 * surfaceSpeed / (std::numbers::pi * diameter)) : limit;
+}
+
 PathLength turnPathLength(const TurnPath& p)
 {
     PathLength l;
@@ -45,11 +51,7 @@ double turnMinutes(const TurnPath& p, const TurnCutting& c, double rapidMmPerMin
         } else {
             // The spindle speed at the move's mean diameter (exact for
             // moves along Z; under G96 the speed changes along a face).
-            double rpm = c.rpm;
-            if (c.constantSurfaceSpeed) {
-                const double d = std::max(std::abs(at.r) + std::abs(m.end.r), 1e-3);
-                rpm = std::min(c.maxRpm, 1000.0 * c.surfaceSpeed / (std::numbers::pi * d));
-            }
+            const double rpm = c.rpmAt(std::max(std::abs(at.r) + std::abs(m.end.r), 1e-3), c.maxRpm);
             const double f = m.feed == FeedKind::Plunge ? c.plungeFeedPerRev : c.feedPerRev;
             minutes += len / std::max(f * rpm, 1e-6);
         }

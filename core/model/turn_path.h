@@ -68,6 +68,10 @@ struct TurnCutting {
     double rpm = 0.0;            // G97 [rpm]
     double feedPerRev = 0.0;     // [mm/rev]
     double plungeFeedPerRev = 0.0;
+    // The spindle speed where the tool cuts at `diameter` [mm] [rpm]: G97's
+    // `rpm`, or under G96 the surface speed there, no more than `limit`
+    // (at the axis: `limit`).
+    double rpmAt(double diameter, double limit) const;
     friend bool operator==(const TurnCutting&, const TurnCutting&) = default;
 };
 

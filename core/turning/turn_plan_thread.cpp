@@ -102,8 +102,8 @@ void Planner::planThreading()
         // A fixed speed (G97): the surface speed at the thread's diameter,
         // within the machine's spindle limit and its feed limit (the feed
         // is the pitch per revolution).
+        double rpm = cutting->rpmAt(2.0 * crest, q_.maxRpm);
         cutting->constantSurfaceSpeed = false;
-        double rpm = std::min(q_.maxRpm, 1000.0 * cutting->surfaceSpeed / (std::numbers::pi * 2.0 * crest));
         if (q_.maxFeed > 0) rpm = std::min(rpm, q_.maxFeed / spec.pitch);
         cutting->rpm = std::floor(rpm);
         cutting->feedPerRev = cutting->plungeFeedPerRev = spec.pitch;
