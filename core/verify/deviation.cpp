@@ -25,16 +25,17 @@ float worse(float a, float b)
     return std::max(a, b);
 }
 
-}  // namespace
-
-DeviationBand bandOf(double amount, double tolerance)
+// The band of a cell's deviation (already 0 within the tolerances).
+DeviationBand bandOf(double amount)
 {
-    if (amount < -tolerance) return DeviationBand::Gouge;
-    if (amount <= tolerance) return DeviationBand::AtSize;
+    if (amount < 0.0) return DeviationBand::Gouge;
+    if (amount == 0.0) return DeviationBand::AtSize;
     if (amount <= kThinRest) return DeviationBand::RestThin;
     if (amount <= kMediumRest) return DeviationBand::RestMedium;
     return DeviationBand::RestThick;
 }
+
+}  // namespace
 
 DeviationMap deviationMap(const Plan& plan, const Report& report, std::size_t maxCells)
 {
@@ -96,7 +97,7 @@ DeviationMap deviationMap(const Plan& plan, const Report& report, std::size_t ma
 
     map.band.resize(mapCells);
     for (std::size_t m = 0; m < mapCells; ++m)
-        map.band[m] = touched[m] ? bandOf(map.amount[m], 0.0) : DeviationBand::Untouched;
+        map.band[m] = touched[m] ? bandOf(map.amount[m]) : DeviationBand::Untouched;
     return map;
 }
 

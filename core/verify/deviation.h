@@ -48,7 +48,4 @@ struct DeviationMap {
 // skipped verification). Uses every core.
 DeviationMap deviationMap(const Plan& plan, const Report& report, std::size_t maxCells = 1'000'000);
 
-// The band of a deviation (gouges and material left beyond `tolerance` mm).
-DeviationBand bandOf(double amount, double tolerance);
-
 }  // namespace taiwa::verify
