@@ -15,7 +15,7 @@
 namespace {
 
 // Lowest first. A folder may include itself and any folder before it.
-const QStringList kCoreLayers{"model", "figure", "io",   "machine", "tools",   "check",  "occt", "turning", "decompose",
+const QStringList kCoreLayers{"model", "dxf", "figure", "io",   "machine", "tools",   "check",  "occt", "turning", "decompose",
                               "paths", "post",   "sim",  "sheet",   "modules", "verify", "job",  "pipeline", "export"};
 const QStringList kTopLayers{"core", "viz", "ui", "app"};
 

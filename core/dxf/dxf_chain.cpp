@@ -1,0 +1,249 @@
+// Chaining pieces into contours (see dxf_chain.h): a hash grid on the ends,
+// the nearest pairs within the tolerance matched first, chains walked from a
+// free end (open) or round (closed), the joins closed and measured, and the
+// ends left open reported when another is near.
+#include "dxf/dxf_chain.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+
+namespace taiwa::dxf::detail {
+
+namespace {
+
+constexpr std::size_t kMaxScan = 4096;  // ends looked at around one end: beyond, a crowd
+constexpr double kExactJoin = 1e-9;     // mm: joins this close are not counted as gaps
+
+std::string at(Point2 p) { return fmt::format("({:.3f}, {:.3f})", p.x, p.y); }
+
+// The ends of the pieces (end e: piece e / 2, its start if e is even) in a
+// grid of cells as wide as the largest distance asked about.
+class EndGrid {
+public:
+    EndGrid(const std::vector<Piece>& pieces, const std::vector<bool>& used, double cell) : cell_(cell)
+    {
+        ends_.resize(2 * pieces.size());
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            ends_[2 * i] = pieces[i].segments.front().start;
+            ends_[2 * i + 1] = pieces[i].segments.back().end;
+            if (!used[i]) continue;
+            cells_[key(ends_[2 * i])].push_back(static_cast<int>(2 * i));
+            cells_[key(ends_[2 * i + 1])].push_back(static_cast<int>(2 * i + 1));
+        }
+    }
+    Point2 end(int e) const { return ends_[static_cast<std::size_t>(e)]; }
+    // Calls f(other end, distance) for the ends within `radius` of end e;
+    // false when there were too many to look at.
+    template <class F>
+    bool near(int e, double radius, const F& f) const
+    {
+        const Point2 p = end(e);
+        const auto [cx, cy] = cellOf(p);
+        std::size_t seen = 0;
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy) {
+                const auto it = cells_.find(pack(cx + dx, cy + dy));
+                if (it == cells_.end()) continue;
+                for (int o : it->second) {
+                    if (++seen > kMaxScan) return false;
+                    const double d = distance(p, end(o));
+                    if (o != e && d <= radius) f(o, d);
+                }
+            }
+        return true;
+    }
+
+private:
+    std::pair<long long, long long> cellOf(Point2 p) const
+    {
+        const auto c = [&](double v) { return static_cast<long long>(std::clamp(std::floor(v / cell_), -1e15, 1e15)); };
+        return {c(p.x), c(p.y)};
+    }
+    static unsigned long long pack(long long x, long long y)
+    {
+        return static_cast<unsigned long long>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<unsigned long long>(y);
+    }
+    unsigned long long key(Point2 p) const
+    {
+        const auto [x, y] = cellOf(p);
+        return pack(x, y);
+    }
+    double cell_;
+    std::vector<Point2> ends_;
+    std::unordered_map<unsigned long long, std::vector<int>> cells_;
+};
+
+// Closes the join of a (ending) and b (starting): a line end moves to an
+// arc's end so that arcs stay exact; two arcs meet half-way.
+void closeJoin(ContourSegment& a, ContourSegment& b)
+{
+    if (a.end == b.start) return;
+    if (!b.isArc()) b.start = a.end;
+    else if (!a.isArc()) a.end = b.start;
+    else a.end = b.start = 0.5 * (a.end + b.start);
+}
+
+int findRoot(std::vector<int>& parent, int x)
+{
+    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    return x;
+}
+
+}  // namespace
+
+ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double reportDistance)
+{
+    ChainResult out;
+    const std::size_t n = pieces.size();
+    std::vector<bool> chained(n);
+    for (std::size_t i = 0; i < n; ++i) chained[i] = !pieces[i].closedByItself;
+    const EndGrid grid(pieces, chained, reportDistance);
+    const auto pieceOf = [](int e) { return static_cast<std::size_t>(e / 2); };
+    const auto selfClosable = [&](std::size_t i) { return pieces[i].segments.size() > 1 || pieces[i].segments.front().isArc(); };
+
+    // The pairs of ends within the tolerance, nearest first, matched greedily.
+    struct Candidate {
+        double d;
+        int a, b;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<bool> crowded(2 * n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int e = static_cast<int>(2 * i); chained[i] && e <= static_cast<int>(2 * i + 1); ++e)
+            crowded[static_cast<std::size_t>(e)] = !grid.near(e, tolerance, [&](int o, double d) {
+                if (o > e && (pieceOf(o) != i || selfClosable(i))) candidates.push_back({d, e, o});
+            });
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& x, const Candidate& y) { return std::tie(x.d, x.a, x.b) < std::tie(y.d, y.a, y.b); });
+    std::vector<int> partner(2 * n, -1);
+    std::vector<int> parent(2 * n);
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const Candidate& c : candidates) {
+        parent[static_cast<std::size_t>(findRoot(parent, c.a))] = findRoot(parent, c.b);
+        if (partner[static_cast<std::size_t>(c.a)] < 0 && partner[static_cast<std::size_t>(c.b)] < 0) {
+            partner[static_cast<std::size_t>(c.a)] = c.b;
+            partner[static_cast<std::size_t>(c.b)] = c.a;
+        }
+    }
+
+    // Three or more ends within the tolerance of each other: a branch.
+    std::unordered_map<int, std::vector<int>> clusters;
+    for (std::size_t e = 0; e < 2 * n; ++e)
+        if (chained[pieceOf(static_cast<int>(e))]) clusters[findRoot(parent, static_cast<int>(e))].push_back(static_cast<int>(e));
+    for (std::size_t e = 0; e < 2 * n; ++e) {
+        auto it = clusters.find(findRoot(parent, static_cast<int>(e)));
+        if (it == clusters.end()) continue;
+        const std::vector<int>& ends = it->second;
+        const bool crowd = std::any_of(ends.begin(), ends.end(), [&](int x) { return crowded[static_cast<std::size_t>(x)]; });
+        if (ends.size() >= 3 || crowd) {
+            DxfBranch b{grid.end(ends.front()), static_cast<int>(ends.size()), {}, {}};
+            std::string names;
+            for (int x : ends) {
+                b.entities.push_back(pieces[pieceOf(x)].source);
+                if (b.entities.size() <= 4) names += (names.empty() ? "" : ", ") + b.entities.back().text();
+            }
+            b.message = fmt::format("{} ends meet at {}{}: {}{}; the nearest were joined, the rest left open",
+                                    crowd ? "more than " + std::to_string(kMaxScan) : std::to_string(ends.size()),
+                                    at(b.at), crowd ? " or near it" : "", names, ends.size() > 4 ? ", …" : "");
+            out.branches.push_back(std::move(b));
+        }
+        clusters.erase(it);
+    }
+
+    // Walk the chains in the file's order, closing and measuring the joins.
+    const auto join = [&](ContourSegment& a, ContourSegment& b) {
+        const double d = distance(a.end, b.start);
+        if (d > kExactJoin) {
+            ++out.joinsOverZero;
+            if (d > out.largestJoin) {
+                out.largestJoin = d;
+                out.largestJoinAt = a.end;
+            }
+        }
+        closeJoin(a, b);
+    };
+    std::vector<bool> visited(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (visited[i]) continue;
+        DxfContour c;
+        if (!chained[i]) {
+            visited[i] = true;
+            c.contour = {pieces[i].segments, true};
+            c.sources.assign(pieces[i].segments.size(), pieces[i].source);
+            out.contours.push_back(std::move(c));
+            continue;
+        }
+        // Back to the chain's head: the piece whose entering end is free, or
+        // round to i again (a closed chain).
+        int enter = static_cast<int>(2 * i);
+        for (std::size_t steps = 0; steps < n; ++steps) {
+            const int q = partner[static_cast<std::size_t>(enter)];
+            if (q < 0) break;
+            if (pieceOf(q) == i) {
+                enter = static_cast<int>(2 * i);
+                break;
+            }
+            enter = q ^ 1;
+        }
+        const std::size_t head = pieceOf(enter);
+        bool closed = false;
+        for (std::size_t steps = 0; steps <= n; ++steps) {
+            const std::size_t p = pieceOf(enter);
+            visited[p] = true;
+            const bool forward = enter % 2 == 0;
+            const std::size_t first = c.contour.segments.size();
+            if (forward) c.contour.segments.insert(c.contour.segments.end(), pieces[p].segments.begin(), pieces[p].segments.end());
+            else
+                for (auto s = pieces[p].segments.rbegin(); s != pieces[p].segments.rend(); ++s)
+                    c.contour.segments.push_back(s->reversed());
+            c.sources.resize(c.contour.segments.size(), pieces[p].source);
+            if (first > 0) {
+                join(c.contour.segments[first - 1], c.contour.segments[first]);
+            }
+            const int next = partner[static_cast<std::size_t>(enter ^ 1)];
+            if (next < 0) break;
+            if (pieceOf(next) == head) {
+                closed = true;
+                break;
+            }
+            if (visited[pieceOf(next)]) break;  // cannot happen with a matching; kept as a guard
+            enter = next;
+        }
+        if (closed) {
+            join(c.contour.segments.back(), c.contour.segments.front());
+        }
+        c.contour.closed = closed;
+        out.contours.push_back(std::move(c));
+    }
+
+    // Gaps: each free end and the nearest other free end within the report
+    // distance (never closer than the tolerance: they would have been joined).
+    std::set<std::pair<int, int>> gapPairs;
+    for (std::size_t e = 0; e < 2 * n; ++e) {
+        const std::size_t i = pieceOf(static_cast<int>(e));
+        if (!chained[i] || partner[e] >= 0 || crowded[e]) continue;
+        int best = -1;
+        double bestD = 0;
+        grid.near(static_cast<int>(e), reportDistance, [&](int o, double d) {
+            if (partner[static_cast<std::size_t>(o)] >= 0 || (pieceOf(o) == i && !selfClosable(i))) return;
+            if (best < 0 || d < bestD) best = o, bestD = d;
+        });
+        if (best >= 0 && bestD > tolerance) gapPairs.insert(std::minmax(static_cast<int>(e), best));
+    }
+    for (const auto& [a, b] : gapPairs) {
+        DxfGap g{grid.end(a), grid.end(b), distance(grid.end(a), grid.end(b)), pieces[pieceOf(a)].source,
+                 pieces[pieceOf(b)].source, {}};
+        g.message = fmt::format("gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm",
+                                g.size, at(g.at), g.a.text(), g.b.text(), at(g.other), tolerance);
+        out.gaps.push_back(std::move(g));
+    }
+    std::stable_sort(out.gaps.begin(), out.gaps.end(), [](const DxfGap& x, const DxfGap& y) { return x.size > y.size; });
+    return out;
+}
+
+}  // namespace taiwa::dxf::detail

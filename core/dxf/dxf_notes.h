@@ -1,0 +1,30 @@
+// The warnings a DXF import collects, kept to a readable number: after the
+// first hundred only a count of the rest. Internal to core/dxf/.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace taiwa::dxf::detail {
+
+class Notes {
+public:
+    void add(std::string text)
+    {
+        if (list_.size() < kMax) list_.push_back(std::move(text));
+        else ++suppressed_;
+    }
+    std::vector<std::string> take()
+    {
+        if (suppressed_ > 0) list_.push_back("… and " + std::to_string(suppressed_) + " more warnings like these");
+        suppressed_ = 0;
+        return std::move(list_);
+    }
+
+private:
+    static constexpr std::size_t kMax = 100;
+    std::vector<std::string> list_;
+    std::size_t suppressed_ = 0;
+};
+
+}  // namespace taiwa::dxf::detail
