@@ -266,7 +266,7 @@ private slots:
         QCOMPARE(parseError("LINE = POINT/1, 2"),
                  std::string("1:1: 'LINE' is a word of the language and cannot name an element"));
         QCOMPARE(parseError("P1 = PIONT/1, 2"),
-                 std::string("1:6: expected POINT, LINE or CIRCLE after '=', found 'PIONT'"));
+                 std::string("1:6: expected POINT, LINE, CIRCLE or CONTOUR after '=', found 'PIONT'"));
         QCOMPARE(parseError("P1 POINT/1, 2"), std::string("1:4: expected '=' after 'P1', found 'POINT'"));
         QCOMPARE(parseError("P1 = POINT/0, 0\nC1 = CIRCLE/CENTER, P1, RADIUS, -2"),
                  std::string("2:33: the radius must be greater than 0, found '-2'"));

@@ -19,6 +19,13 @@ const Element* Evaluation::find(const std::string& name) const
     return nullptr;
 }
 
+const EvaluatedContour* Evaluation::findContour(const std::string& name) const
+{
+    for (const auto& c : contours)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
 namespace {
 
 Point2 left(Point2 a) { return {-a.y, a.x}; }  // a turned +90°
@@ -143,6 +150,7 @@ public:
             break;
         }
         case Method::CircleLineCircle: e.circle = tangentLineCircle(d); break;
+        case Method::Contour: throw std::logic_error("figure: a contour is not an element");
         }
         return e;
     }
@@ -282,6 +290,7 @@ bool finite(const Element& e)
     case Kind::Point: return ok(e.point);
     case Kind::Line: return ok(e.line.point) && ok(e.line.dir);
     case Kind::Circle: return ok(e.circle.centre) && std::isfinite(e.circle.radius);
+    case Kind::Contour: return false;
     }
     return false;
 }
@@ -296,6 +305,12 @@ Evaluation evaluate(const std::vector<Definition>& definitions)
     for (const auto& d : definitions) {
         if (std::any_of(d.refs.begin(), d.refs.end(), [&](const std::string& r) { return missing.count(r) > 0; })) {
             missing.insert(d.name);
+            continue;
+        }
+        if (d.method == Method::Contour) {
+            auto c = evaluateContour(d, out);
+            if (auto* error = std::get_if<FigureError>(&c)) out.errors.push_back(std::move(*error));
+            else out.contours.push_back(std::move(std::get<EvaluatedContour>(c)));
             continue;
         }
         try {

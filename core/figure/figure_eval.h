@@ -3,14 +3,17 @@
 // (centre and radius). Definitions are evaluated in order, each from the
 // elements before it, so evaluating again after a change gives everything
 // defined from the changed element anew. Geometric refusals (parallel lines
-// intersected, a tangent that does not exist...) name the element.
+// intersected, a tangent that does not exist...) name the element. Contours
+// evaluate to exact line/arc chains (figure_contour.h).
 #pragma once
 
+#include "figure/figure_contour.h"
 #include "figure/figure_text.h"
 #include "model/geometry.h"
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace taiwa::figure {
@@ -40,11 +43,15 @@ struct Element {
 // refusals (at the refused statement's line and column, the message starting
 // with the element's name). An element defined from a refused one is not
 // evaluated and not reported again: the first refusal is its cause.
+// Contours are not elements (nothing is defined from them): they are kept
+// apart, in definition order.
 struct Evaluation {
     std::vector<Element> elements;
+    std::vector<EvaluatedContour> contours;
     std::vector<FigureError> errors;
     bool ok() const { return errors.empty(); }
     const Element* find(const std::string& name) const;
+    const EvaluatedContour* findContour(const std::string& name) const;
 };
 
 // Distances below this are zero (mm): coincident points, a point on a circle,
@@ -55,6 +62,12 @@ constexpr double kTolerance = 1e-9;
 // and before use, each argument of the kind its place needs); definitions
 // built otherwise that break this are a bug (std::logic_error).
 Evaluation evaluate(const std::vector<Definition>& definitions);
+
+// The contour `d` (Method::Contour) from the elements evaluated before it
+// (`before`, every element it uses present), or its refusal: the message
+// starts with the contour's name and is placed at the item it concerns.
+// Used by evaluate(); defined in figure_contour.cpp.
+std::variant<EvaluatedContour, FigureError> evaluateContour(const Definition& d, const Evaluation& before);
 
 // The names of every element defined, directly or through others, from
 // `name`: what changes when it changes.

@@ -1,7 +1,9 @@
 // The figure language's lexer, recursive-descent parser and writer
 // (figure_text.h). The parser also checks what text alone can check: names
 // defined once and before use, each argument of the kind its place needs,
-// positive radii and distances. Geometry is figure_eval.cpp's.
+// positive radii and distances; for contours, a direction before every circle,
+// modifiers only where two elements may meet twice, corners only between two
+// elements. Geometry is figure_eval.cpp's and figure_contour.cpp's.
 #include "figure/figure_text.h"
 
 #include <array>
@@ -29,6 +31,7 @@ Kind kindOf(Method m)
     case Method::CircleThreePoints:
     case Method::CircleTwoLines:
     case Method::CircleLineCircle: return Kind::Circle;
+    case Method::Contour: return Kind::Contour;
     }
     throw std::logic_error("figure: unknown method");
 }
@@ -39,6 +42,7 @@ const char* keyword(Kind k)
     case Kind::Point: return "POINT";
     case Kind::Line: return "LINE";
     case Kind::Circle: return "CIRCLE";
+    case Kind::Contour: return "CONTOUR";
     }
     throw std::logic_error("figure: unknown kind");
 }
@@ -49,6 +53,7 @@ const char* noun(Kind k)
     case Kind::Point: return "a point";
     case Kind::Line: return "a line";
     case Kind::Circle: return "a circle";
+    case Kind::Contour: return "a contour";
     }
     throw std::logic_error("figure: unknown kind");
 }
@@ -203,8 +208,9 @@ const std::map<std::string, Modifier, std::less<>>& modifierWords()
 
 bool isReserved(std::string_view w)
 {
-    static const std::array<std::string_view, 10> words{"POINT", "LINE",  "CIRCLE", "INTOF", "CENTER",
-                                                        "ATANGL", "PARLEL", "TANTO", "RADIUS", "ON"};
+    static const std::array<std::string_view, 15> words{"POINT",  "LINE",   "CIRCLE", "INTOF",   "CENTER",
+                                                        "ATANGL", "PARLEL", "TANTO",  "RADIUS",  "ON",
+                                                        "CONTOUR", "CLW",   "CCLW",   "ROUND",   "CHAMF"};
     for (const auto r : words)
         if (w == r) return true;
     return modifierWords().count(w) > 0;
@@ -270,6 +276,11 @@ private:
     }
 
     [[noreturn]] void fail(const Token& at, std::string message) const
+    {
+        throw Refusal{FigureError{at.line, at.column, std::move(message)}};
+    }
+
+    [[noreturn]] static void failAt(const Place& at, std::string message)
     {
         throw Refusal{FigureError{at.line, at.column, std::move(message)}};
     }
@@ -353,8 +364,9 @@ private:
         const auto it = defined_.find(cur_.text);
         if (it == defined_.end())
             fail(cur_, "in " + name_ + ", " + cur_.text + " is not defined: an element must be defined before it is used");
-        if (it->second.kind == Kind::Point)
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is a point where a line or a circle is needed");
+        if (it->second.kind != Kind::Line && it->second.kind != Kind::Circle)
+            fail(cur_, "in " + name_ + ", " + cur_.text + " is " + noun(it->second.kind) +
+                           " where a line or a circle is needed");
         kind = it->second.kind;
         std::string n = cur_.text;
         advance();
@@ -389,8 +401,12 @@ private:
             advance();
             slash();
             circle(d);
+        } else if (atWord("CONTOUR")) {
+            advance();
+            slash();
+            contour(d);
         } else {
-            expected("POINT, LINE or CIRCLE");
+            expected("POINT, LINE, CIRCLE or CONTOUR");
         }
         if (cur_.tok != Tok::EndOfLine && cur_.tok != Tok::EndOfText) expected("the end of the statement");
         defined_[d.name] = Defined{d.kind(), nameToken.line};
@@ -540,6 +556,134 @@ private:
         d.numbers.push_back(number("a number (the radius)", "the radius"));
     }
 
+    static Place placeOf(const Token& t) { return {t.line, t.column, static_cast<int>(t.text.size())}; }
+
+    // The kind of an element already defined, or a refusal naming it.
+    Kind definedKind() const
+    {
+        if (!atName()) return Kind::Point;  // not reached: callers check atName()
+        const auto it = defined_.find(cur_.text);
+        if (it == defined_.end())
+            fail(cur_, "in " + name_ + ", " + cur_.text + " is not defined: an element must be defined before it is used");
+        return it->second.kind;
+    }
+
+    // CONTOUR/[P1,] step, step... [, P2] with step = [XLARGE,] [CLW|CCLW,] NAME [, ROUND|CHAMF, value].
+    void contour(Definition& d)
+    {
+        d.method = Method::Contour;
+        ContourText& c = d.contour;
+        std::vector<Kind> kinds;         // of each step's element
+        std::optional<Token> firstMod;   // the first step's modifier (a closed contour's closing junction)
+        std::optional<Token> lastCorner; // the last step's ROUND or CHAMF
+        if (atName() && definedKind() == Kind::Point) {
+            c.start = cur_.text;
+            c.startAt = placeOf(cur_);
+            d.refs.push_back(c.start);
+            advance();
+            comma();
+        }
+        for (;;) {
+            ContourStep s;
+            std::optional<Token> modTok;
+            std::optional<Token> turnTok;
+            if (const auto m = atModifier(); m && isXY(*m)) {
+                modTok = cur_;
+                s.junction = *m;
+                advance();
+                comma();
+            }
+            if (atWord("CLW") || atWord("CCLW")) {
+                turnTok = cur_;
+                s.turn = atWord("CLW") ? Turn::Clockwise : Turn::CounterClockwise;
+                advance();
+                comma();
+            }
+            if (!atName())
+                expected(turnTok ? "a circle name"
+                         : modTok ? "a line or circle name, CLW or CCLW"
+                                  : "an element name, XLARGE/XSMALL/YLARGE/YSMALL, CLW or CCLW");
+            const Kind k = definedKind();
+            if (k == Kind::Point && !c.steps.empty() && !modTok && !turnTok) {  // the end of an open contour
+                if (c.closed())
+                    fail(cur_, "in " + name_ + ", " + cur_.text + " ends the contour but no point starts it: an open "
+                                   "contour runs from a point to a point");
+                if (lastCorner)
+                    fail(*lastCorner, "in " + name_ + ", " + lastCorner->text + " after " + c.steps.back().element +
+                                          " is not between two elements: the contour ends at " + cur_.text);
+                c.end = cur_.text;
+                c.endAt = placeOf(cur_);
+                d.refs.push_back(c.end);
+                advance();
+                if (cur_.tok == Tok::Comma)
+                    fail(prev_, "in " + name_ + ", " + c.end + " is a point: only the first and the last item of a "
+                                    "contour may be points");
+                return;
+            }
+            if (k != Kind::Line && k != Kind::Circle)
+                fail(cur_, "in " + name_ + ", " + cur_.text + " is " + noun(k) +
+                               (turnTok ? " where a circle is needed" : " where a line or a circle is needed"));
+            if (k == Kind::Circle && !turnTok)
+                fail(cur_, "in " + name_ + ", " + cur_.text + " is a circle: write CLW or CCLW before it");
+            if (k == Kind::Line && turnTok)
+                fail(*turnTok, "in " + name_ + ", " + cur_.text + " is a line: no " + turnTok->text +
+                                   " before it (CLW and CCLW are for circles)");
+            if (!c.steps.empty() && c.steps.back().element == cur_.text)
+                fail(cur_, "in " + name_ + ", " + cur_.text + " follows itself: the same element twice in a row");
+            if (modTok && c.steps.empty() && !c.closed())
+                fail(*modTok, "in " + name_ + ", " + cur_.text + " starts at " + c.start + ": no " + modTok->text +
+                                  " before it");
+            if (modTok && !c.steps.empty() && k == Kind::Line && kinds.back() == Kind::Line)
+                fail(*modTok, "in " + name_ + ", two lines meet once: no " + modTok->text + " before " + cur_.text);
+            if (c.steps.empty()) firstMod = modTok;
+            s.element = cur_.text;
+            s.at = placeOf(cur_);
+            d.refs.push_back(s.element);
+            kinds.push_back(k);
+            advance();
+            lastCorner.reset();
+            bool more = false;
+            if (cur_.tok == Tok::Comma) {
+                advance();
+                more = true;
+                if (atWord("ROUND") || atWord("CHAMF")) {
+                    lastCorner = cur_;
+                    const bool round = atWord("ROUND");
+                    s.corner = round ? CornerKind::Round : CornerKind::Chamfer;
+                    advance();
+                    comma();
+                    s.valueAt = placeOf(cur_);
+                    s.value = number(round ? "a number (the radius)" : "a number (the chamfer)",
+                                     round ? "the radius" : "the chamfer");
+                    more = cur_.tok == Tok::Comma;
+                    if (more) advance();
+                }
+            }
+            c.steps.push_back(std::move(s));
+            if (!more) break;
+        }
+        if (!c.closed())
+            fail(cur_, "in " + name_ + ", the contour starts at " + c.start + " and needs a point at its end, on " +
+                           c.steps.back().element);
+        const ContourStep& first = c.steps.front();
+        if (c.steps.size() == 1) {
+            if (kinds.front() == Kind::Line)
+                failAt(first.at, "in " + name_ + ", a closed contour needs two elements or more, or a single circle");
+            if (firstMod)
+                fail(*firstMod, "in " + name_ + ", " + first.element + " alone is a full circle: no " + firstMod->text +
+                                    " before it");
+            if (lastCorner)
+                fail(*lastCorner, "in " + name_ + ", " + first.element + " alone is a full circle: no " +
+                                      lastCorner->text + " on it");
+            return;
+        }
+        if (c.steps.back().element == first.element)
+            failAt(c.steps.back().at, "in " + name_ + ", " + first.element + " follows itself: the same element twice in a row (the last "
+                                                        "element joins the first)");
+        if (firstMod && kinds.front() == Kind::Line && kinds.back() == Kind::Line)
+            fail(*firstMod, "in " + name_ + ", two lines meet once: no " + firstMod->text + " before " + first.element);
+    }
+
     Lexer lex_;
     Token cur_;
     Token prev_;
@@ -601,6 +745,20 @@ std::string writeDefinition(const Definition& d)
     case Method::CircleLineCircle:
         s += m(0) + ", " + r(0) + ", " + m(1) + ", " + m(2) + ", " + r(1) + ", RADIUS, " + n(0);
         break;
+    case Method::Contour: {
+        const ContourText& c = d.contour;
+        std::string items = c.start.empty() ? "" : c.start + ", ";
+        for (const auto& st : c.steps) {
+            if (st.junction) items += std::string(keyword(*st.junction)) + ", ";
+            if (st.turn != Turn::None) items += st.turn == Turn::Clockwise ? "CLW, " : "CCLW, ";
+            items += st.element + ", ";
+            if (st.corner != CornerKind::None)
+                items += (st.corner == CornerKind::Round ? "ROUND, " : "CHAMF, ") + formatNumber(st.value) + ", ";
+        }
+        if (!c.end.empty()) items += c.end + ", ";
+        s += items.substr(0, items.size() >= 2 ? items.size() - 2 : 0);
+        break;
+    }
     }
     return s;
 }

@@ -2,8 +2,10 @@
 // edits (`P1 = POINT/10, 20`, `L1 = LINE/P1, P2`, `C1 = CIRCLE/CENTER, P3,
 // RADIUS, 5`), their definitions as values, the parser that reads them back
 // with line and column in every refusal, and the writer of canonical text.
-// The language is described in docs/figure-elements.md; evaluation into
-// coordinates is figure_eval.h.
+// Contours (`K1 = CONTOUR/L1, ROUND, 2, XLARGE, CCLW, C1, L2`) are chains of
+// lines and circles in tool-motion order. The language is described in
+// docs/figure-elements.md; evaluation into coordinates is figure_eval.h (the
+// contours' figure_contour.h).
 #pragma once
 
 #include <optional>
@@ -13,7 +15,7 @@
 
 namespace taiwa::figure {
 
-enum class Kind { Point, Line, Circle };
+enum class Kind { Point, Line, Circle, Contour };
 
 // Every way an element can be defined; the comment shows the statement.
 enum class Method {
@@ -29,24 +31,72 @@ enum class Method {
     CircleThreePoints,   // CIRCLE/P1, P2, P3
     CircleTwoLines,      // CIRCLE/XLARGE, L1, YSMALL, L2, RADIUS, 5
     CircleLineCircle,    // CIRCLE/XLARGE, L1, YLARGE, OUT, C1, RADIUS, 5
+    Contour,             // CONTOUR/L1, ROUND, 2, XLARGE, CCLW, C1, L2   (Definition::contour)
 };
 
 enum class Modifier { XLarge, XSmall, YLarge, YSmall, Left, Right, Out, In };
 
 Kind kindOf(Method m);
-const char* keyword(Kind k);      // "POINT", "LINE", "CIRCLE"
+const char* keyword(Kind k);      // "POINT", "LINE", "CIRCLE", "CONTOUR"
 const char* keyword(Modifier m);  // "XLARGE", ..., "IN"
-const char* noun(Kind k);         // "a point", "a line", "a circle"
+const char* noun(Kind k);         // "a point", "a line", "a circle", "a contour"
+
+// Where something is written: 1-based line and column, length in bytes.
+struct Place {
+    int line = 0;
+    int column = 0;
+    int length = 0;
+};
+
+// A circle's direction in a contour (CLW, CCLW); None for a line.
+enum class Turn { None, Clockwise, CounterClockwise };
+enum class CornerKind { None, Round, Chamfer };
+
+// One element of a contour as written: `[XLARGE,] [CLW|CCLW,] NAME [, ROUND|CHAMF, value]`.
+struct ContourStep {
+    std::string element;              // a line or a circle
+    std::optional<Modifier> junction; // XLARGE...: which junction with the element before it
+    Turn turn = Turn::None;           // circles: CLW or CCLW
+    CornerKind corner = CornerKind::None;  // the corner with the next element (closed: the last's with the first)
+    double value = 0;                 // the corner's radius (ROUND) or distance (CHAMF)
+    // Where the name and the corner's value are written; not part of equality.
+    Place at;
+    Place valueAt;
+    friend bool operator==(const ContourStep& a, const ContourStep& b)
+    {
+        return a.element == b.element && a.junction == b.junction && a.turn == b.turn && a.corner == b.corner &&
+               a.value == b.value;
+    }
+};
+
+// A contour statement's items. Open: from `start` (a point on the first
+// element) to `end` (a point on the last); closed (no points): the last
+// element joins the first.
+struct ContourText {
+    std::string start;
+    std::string end;
+    std::vector<ContourStep> steps;
+    Place startAt;  // not part of equality
+    Place endAt;
+    bool closed() const { return start.empty(); }
+    friend bool operator==(const ContourText& a, const ContourText& b)
+    {
+        return a.start == b.start && a.end == b.end && a.steps == b.steps;
+    }
+};
 
 // One statement: `name = KIND/args`. The referenced elements, modifiers and
 // numbers are kept in the order they are written, so the method and these
-// three lists say everything the text says.
+// three lists say everything the text says (a contour's items: `contour`).
 struct Definition {
     std::string name;
     Method method = Method::PointXY;
     std::vector<std::string> refs;
     std::vector<Modifier> modifiers;
     std::vector<double> numbers;
+    // Method::Contour only: its items (refs then lists every name it uses, in
+    // order, for definedFrom; modifiers and numbers stay empty).
+    ContourText contour;
     // Where the statement starts (its name), 1-based; not part of equality:
     // the same definitions written elsewhere are the same definitions.
     int line = 0;
@@ -56,7 +106,7 @@ struct Definition {
     friend bool operator==(const Definition& a, const Definition& b)
     {
         return a.name == b.name && a.method == b.method && a.refs == b.refs && a.modifiers == b.modifiers &&
-               a.numbers == b.numbers;
+               a.numbers == b.numbers && a.contour == b.contour;
     }
 };
 
