@@ -1,12 +1,14 @@
 // The command line of docs/command-line.md: `taiwa [JOB]`, `taiwa check JOB`,
 // `taiwa export JOB --out DIR ...`, `taiwa verify JOB ...` (its report in
-// app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `--version`,
-// `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
+// app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `taiwa
+// figure-from-dxf FILE.dxf ...`, `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
 // internal failure.
 #include "app/cli.h"
 
 #include "app/options.h"
 #include "app/verify_command.h"
+#include "dxf/dxf_import.h"
+#include "job/dxf_figure.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "job/step_job.h"
@@ -81,6 +83,14 @@ Usage:
                                    a lathe job from a STEP solid of revolution:
                                    its outer profile (and bore) as turned-profile
                                    units, a bar that holds it; JOB must not exist
+  taiwa figure-from-dxf FILE.dxf [--layers A,B] [--gap MM] [--units mm|inch]
+                                   the contours of a DXF drawing (on the
+                                   layers given; ends within MM, default 0.01,
+                                   joined; lengths in the unit given, else the
+                                   file's) as figure elements on stdout; what
+                                   was read, gaps, branches and contours left
+                                   out on stderr; exit 2 when the file is
+                                   refused, has gaps or a contour is left out
   taiwa --list-machines | --list-dialects
                                    the machines and dialects this program knows
                                    (shipped, and the shop's own in
@@ -157,6 +167,38 @@ int importStep(const Options& o)
               << (job->units.size() == 1 ? "" : "s") << " on a bar D" << job->bar->diameter << " x " << job->bar->length
               << " mm\n";
     return kOk;
+}
+
+// A DXF drawing's contours as figure text on stdout (job/dxf_figure.h), and
+// on stderr what was read and what is wrong with it.
+int figureFromDxf(const Options& o)
+{
+    const std::string name = fileName(o.job);
+    dxf::DxfOptions d;
+    d.layers = o.layers;
+    if (o.gap) d.gapTolerance = *o.gap;
+    if (o.units) d.units = *o.units == LengthUnit::Inch ? dxf::Units::Inches : dxf::Units::Millimetres;
+    const dxf::DxfReadResult r = dxf::readDxf(o.job, d);
+    for (const auto& w : r.warnings) std::cerr << name << ": " << w << '\n';
+    if (!r.ok()) {
+        std::cerr << name << ": " << *r.error << '\n';
+        return kInputErrors;
+    }
+    std::vector<Contour> contours;
+    for (const auto& c : r.contours) contours.push_back(c.contour);
+    const FigureFromContours f = figureFromContours(contours);
+    std::cout << f.text;
+    std::string layers;
+    for (const auto& l : r.layers)
+        if (l.selected) layers += (layers.empty() ? "" : ", ") + l.name;
+    std::cerr << name << ": " << r.contours.size() << " contours (" << r.closedCount() << " closed, " << r.openCount()
+              << " open) on " << (layers.empty() ? "no layer" : "layers " + layers) << ", drawn in " << r.units
+              << ", written in mm; " << r.gaps.size() << " gaps, " << r.branches.size() << " branches\n";
+    for (const auto& g : r.gaps) std::cerr << name << ": " << g.message << '\n';
+    for (const auto& b : r.branches) std::cerr << name << ": " << b.message << '\n';
+    for (const auto& n : f.notes) std::cerr << name << ": " << n << '\n';
+    for (const auto& x : f.refusals) std::cerr << name << ": " << x << '\n';
+    return r.gaps.empty() && f.refusals.empty() ? kOk : kInputErrors;
 }
 
 // One line per machine: id, kind, name and where it was read from; the
@@ -318,6 +360,7 @@ int run(int argc, char** argv)
         case Command::Verify: return verifyJob(o);
         case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);
+        case Command::FigureFromDxf: return figureFromDxf(o);
         case Command::ListMachines: return listMachines();
         case Command::ListDialects: return listDialects();
         case Command::Station:

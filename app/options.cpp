@@ -52,6 +52,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         else if (first == "render") o.command = Command::Render, i = 1;
         else if (first == "verify") o.command = Command::Verify, i = 1;
         else if (first == "import") o.command = Command::Import, i = 1;
+        else if (first == "figure-from-dxf") o.command = Command::FigureFromDxf, i = 1;
     }
     auto value = [&]() -> std::optional<std::string_view> {
         if (i + 1 >= args.size()) return std::nullopt;
@@ -67,7 +68,8 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             continue;
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
-                                a == "--size" || a == "--view" || a == "--material" || a == "--resolution";
+                                a == "--size" || a == "--view" || a == "--material" || a == "--resolution" ||
+                                a == "--layers" || a == "--gap";
         if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
             if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";
@@ -84,8 +86,8 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         seen.push_back(a);
         if (v->empty()) return "option " + std::string(a) + " needs a value, not an empty one";
         const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render,
-                   forImport = o.command == Command::Import;
-        if (a == "--tools" && !forImport) o.tools = *v;
+                   forImport = o.command == Command::Import, forDxf = o.command == Command::FigureFromDxf;
+        if (a == "--tools" && !forImport && !forDxf) o.tools = *v;
         else if (a == "--out" && (forExport || forRender || forImport)) o.out = *v;
         else if (a == "--material" && forImport) o.material = *v;
         else if (a == "--dialect" && forExport) {
@@ -95,7 +97,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
                 return "unknown dialect '" + std::string(*v) + "'; known: " + names;
             }
             o.dialect = *v;
-        } else if (a == "--units" && forExport) {
+        } else if (a == "--units" && (forExport || forDxf)) {
             if (*v == "mm") o.units = LengthUnit::Millimetre;
             else if (*v == "inch") o.units = LengthUnit::Inch;
             else return "--units is mm or inch, not '" + std::string(*v) + "'";
@@ -111,6 +113,19 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             if (ec != std::errc() || end != v->data() + v->size() || !(r >= 0.005) || r > 5.0)
                 return "--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(*v) + "'";
             o.resolution = r;
+        } else if (a == "--layers" && forDxf) {
+            for (std::size_t from = 0; from <= v->size();) {
+                const std::size_t comma = std::min(v->find(',', from), v->size());
+                if (comma == from) return "--layers wants layer names separated by commas, not '" + std::string(*v) + "'";
+                o.layers.emplace_back(v->substr(from, comma - from));
+                from = comma + 1;
+            }
+        } else if (a == "--gap" && forDxf) {
+            double g = 0.0;
+            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), g);
+            if (ec != std::errc() || end != v->data() + v->size())
+                return "--gap wants a distance in mm, not '" + std::string(*v) + "'";
+            o.gap = g;  // its range is the DXF import's to check
         } else if (a == "--view" && forRender) {
             if (*v != "iso" && *v != "top" && *v != "front" && *v != "profile")
                 return "--view is iso, top, front or profile, not '" + std::string(*v) + "'";
@@ -120,6 +135,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         }
     }
     if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
+    if (o.command == Command::FigureFromDxf && o.job.empty()) return std::string("no DXF file given");
     if (o.command != Command::Station && o.job.empty()) return std::string("no job file given");
     if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
         return std::string("--out is required");

@@ -5,17 +5,18 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace taiwa::app {
 
-enum class Command { Station, Check, Export, Verify, Render, Import, ListMachines, ListDialects, Help, Version };
+enum class Command { Station, Check, Export, Verify, Render, Import, FigureFromDxf, ListMachines, ListDialects, Help, Version };
 
 struct Options {
     Command command = Command::Station;
-    std::string job;                  // JOB argument (import: the STEP file)
+    std::string job;                  // JOB argument (import: the STEP file; figure-from-dxf: the DXF file)
     std::string out;                  // --out
     std::string dialect;              // --dialect; empty: the job's, else linuxcnc
-    std::optional<LengthUnit> units;  // --units
+    std::optional<LengthUnit> units;  // --units (figure-from-dxf: the drawing's)
     std::string tools;                // --tools
     std::optional<int> step;          // --step K (1-based); empty = all
     bool stock = false;               // --stock
@@ -26,6 +27,8 @@ struct Options {
     bool json = false;                // --json (verify)
     bool force = false;               // --force (export): write a tape the verification finds fault with
     bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)
+    std::vector<std::string> layers;  // --layers A,B (figure-from-dxf); empty: all
+    std::optional<double> gap;        // --gap MM (figure-from-dxf): the gap tolerance
 };
 
 // Fills `o`; returns a message naming the bad argument, or nothing.
