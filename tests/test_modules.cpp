@@ -29,6 +29,7 @@ Job jobWith(const ModuleKind& kind)
         j.stock = {};  // a lathe job's file holds its bar, not a block
     }
     j.units.push_back({"u", kind.makeDefault(j.stock)});
+    j.figure = kind.defaultFigure(j.stock);  // contour units: the contours their default unit names
     return j;
 }
 
@@ -116,7 +117,7 @@ private slots:
             QVERIFY2(ds[0].message.find("the step-over") != std::string::npos && ds[0].message.find("0.9") != std::string::npos,
                      ds[0].message.c_str());
         }
-        QCOMPARE(pockets, 2);  // M4 and M2D
+        QCOMPARE(pockets, 3);  // M4, M2D and CP
     }
 
     void everyFormFieldReadsBackWhatItSets()
@@ -125,7 +126,13 @@ private slots:
             QVERIFY(!k->fields().empty());
             ModuleInput m = k->makeDefault({});
             for (const FormField& f : k->fields()) {
-                const double v = f.kind == FormFieldKind::Code ? f.codes.back().first : 3.25;
+                if (f.isText()) {  // contour names: text, not numbers
+                    f.setText(m, "K9");
+                    QCOMPARE(f.getText(m), std::string("K9"));
+                    QVERIFY(!f.label.empty() && !f.diagFields.empty());
+                    continue;
+                }
+                const double v = f.kind == FormFieldKind::Code ? f.codes.back().first : f.whole ? 3.0 : 3.25;
                 f.set(m, v);
                 QVERIFY2(f.get(m) && *f.get(m) == v, f.key.c_str());
                 QVERIFY(!f.label.empty() && !f.diagFields.empty());

@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 
 #include "ui/autosave.h"
+#include "ui/figure_panel.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/job_properties.h"
@@ -47,6 +48,7 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -157,6 +159,10 @@ QWidget* StationWindow::buildRight()
     stale_->setWordWrap(true);
     stale_->setStyleSheet("background: #fff3c4; color: #5a4500; padding: 4px; border: 1px solid #e0c060;");
     stale_->hide();
+    // The 3-D view, and beside it (a milling job's) figure elements.
+    views_ = new QTabWidget;
+    views_->setObjectName("station.views");
+    views_->setDocumentMode(true);
     if (QOpenGLContext().create()) {
         preview_ = new PreviewWidget;
         preview_->setObjectName("preview");
@@ -169,14 +175,18 @@ QWidget* StationWindow::buildRight()
         box->setSpacing(2);
         box->addWidget(preview_, 1);
         box->addWidget(section_);
-        right->addWidget(view);
+        views_->addTab(view, tr("3-D view"));
     } else {  // e.g. a remote display or the offscreen platform: everything else still works
         auto* noGl = new QLabel(tr("No 3-D preview: this display has no OpenGL."));
         noGl->setObjectName("preview.unavailable");
         noGl->setAlignment(Qt::AlignCenter);
         noGl->setFrameShape(QFrame::StyledPanel);
-        right->addWidget(noGl);
+        views_->addTab(noGl, tr("3-D view"));
     }
+    figure_ = new FigurePanel(doc_);
+    figure_->setObjectName("figure");
+    views_->addTab(figure_, tr("Figure"));
+    right->addWidget(views_);
     auto* lower = new QSplitter(Qt::Horizontal);
     lower->addWidget(steps_);
     // The tape over the verification's findings.
@@ -282,6 +292,14 @@ void StationWindow::wire()
     for (const auto& [name, f] : unitForms_) {
         connect(f, &UnitForm::edited, this,
                 [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
+        connect(f, &UnitForm::textEdited, this, [this, form = f](int field, const QString& typed) {
+            const int u = units_->currentUnit();
+            if (u < 0 || form != currentForm()) return;
+            const FieldSpec& spec = form->fields()[static_cast<std::size_t>(field)];
+            Job j = doc_->job();
+            spec.setText(j.units[static_cast<std::size_t>(u)], typed);
+            doc_->edit(j, tr("Edit %1 of unit %2").arg(spec.label).arg(u + 1), QStringLiteral("%1:%2").arg(u).arg(spec.key));
+        });
         connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
         // Enter in a unit's last field: the next unit's first field, or after
         // the last unit the step list.
@@ -393,6 +411,12 @@ void StationWindow::wire()
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }
 
+void StationWindow::showFigure(bool figure)
+{
+    if (figure && views_->isTabVisible(views_->indexOf(figure_))) views_->setCurrentWidget(figure_);
+    else views_->setCurrentIndex(0);
+}
+
 void StationWindow::addUnit(const QString& module)
 {
     units_->addUnit(module);
@@ -419,6 +443,10 @@ void StationWindow::onDocumentChanged(bool fromTyping)
     jobProps_->refresh(!fromTyping);
     const Machine* machine = findMachine(doc_->job().machine);
     palette_->setMachineKind(machine ? machine->kind : MachineKind::Mill);
+    // Figure elements are for milling jobs; a lathe job's profiles are in its units.
+    const bool lathe = doc_->job().bar.has_value();
+    if (lathe && views_->currentWidget() == figure_) views_->setCurrentIndex(0);
+    views_->setTabVisible(views_->indexOf(figure_), !lathe);
     if (UnitForm* f = currentForm()) {
         const MachiningUnit& unit = doc_->job().units[static_cast<std::size_t>(units_->currentUnit())];
         f->setContext(doc_->job(), runner_->library());

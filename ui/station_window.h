@@ -16,10 +16,12 @@
 
 class QLabel;
 class QStackedWidget;
+class QTabWidget;
 
 namespace taiwa::ui {
 
 class Autosaver;
+class FigurePanel;
 class FileActions;
 class JobDocument;
 class JobProperties;
@@ -52,6 +54,10 @@ public:
     VerificationPanel* verificationPanel() const { return verify_; }
     PreviewWidget* preview() const { return preview_; }
     SectionBar* sectionBar() const { return section_; }
+    // The figure elements of a milling job, in a tab beside the 3-D view.
+    FigurePanel* figurePanel() const { return figure_; }
+    // Shows the figure tab (true) or the 3-D view.
+    void showFigure(bool figure);
 
 protected:
     void closeEvent(QCloseEvent* e) override;
@@ -91,6 +97,8 @@ private:
     StepPanel* steps_;
     PreviewWidget* preview_ = nullptr;
     SectionBar* section_ = nullptr;  // under the preview, when there is one
+    QTabWidget* views_ = nullptr;     // the 3-D view, the figure
+    FigurePanel* figure_ = nullptr;
     NcView* nc_;
     VerificationPanel* verify_;
     Diagnostics diagnostics_;

@@ -101,11 +101,16 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
             row.combo->installEventFilter(this);
             editor = row.combo;
         } else {
-            row.edit = new QLineEdit(cell);
+            row.edit = f.isText() ? makeNameEdit(f, cell) : new QLineEdit(cell);
             if (!f.placeholder.isEmpty())
                 row.edit->setPlaceholderText(
                     QCoreApplication::translate("taiwa::ui::FieldSpec", f.placeholder.toUtf8().constData()));
-            connect(row.edit, &QLineEdit::textEdited, this, [this, index](const QString& t) { onTextEdited(index, t); });
+            if (f.isText())  // typed, or a name the completer put in
+                connect(row.edit, &QLineEdit::textChanged, this, [this, index](const QString& t) {
+                    if (!updating_) emit textEdited(index, t);
+                });
+            else
+                connect(row.edit, &QLineEdit::textEdited, this, [this, index](const QString& t) { onTextEdited(index, t); });
             connect(row.edit, &QLineEdit::returnPressed, this, [this, index] { enterPressed(index); });
             connect(row.edit, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
             row.edit->installEventFilter(this);
@@ -130,6 +135,13 @@ void UnitForm::setSketch(std::optional<Sketch> sketch) { sketch_->setSketch(std:
 void UnitForm::setContext(const Job& job, const std::vector<Tool>& library)
 {
     if (profile_) profile_->setContext(job.bar, library);
+    QStringList contours;
+    bool read = false;
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        if (!fields_[i].isText()) continue;
+        if (!read) contours = figureContourNames(job.figure), read = true;
+        setCompletionNames(rows_[i].edit, contours);
+    }
 }
 
 void UnitForm::setUnit(const MachiningUnit& unit, bool force)
@@ -141,6 +153,11 @@ void UnitForm::setUnit(const MachiningUnit& unit, bool force)
     if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));
     for (std::size_t i = 0; i < fields_.size(); ++i) {
         Row& row = rows_[i];
+        if (fields_[i].isText()) {  // contour names: kept as typed while they say the same
+            if (force ? row.edit->text() != fields_[i].getText(unit) : !fields_[i].sameText(unit, row.edit->text()))
+                row.edit->setText(fields_[i].getText(unit));
+            continue;
+        }
         const std::optional<double> v = fields_[i].get(unit);
         if (row.combo) {
             const int code = v ? static_cast<int>(std::lround(*v)) : 0;
@@ -174,9 +191,11 @@ void UnitForm::onTextEdited(int field, const QString& text)
         return;
     }
     const std::optional<double> v = parseNumber(text);
-    row.notANumber = !v;
-    if (!v) {
-        setMessage(field, tr("not a number"));
+    const bool fraction = v && fields_[static_cast<std::size_t>(field)].whole && *v != std::round(*v);
+    row.notANumber = !v || fraction;
+    row.fraction = fraction;
+    if (!v || fraction) {
+        setMessage(field, fraction ? tr("not a whole number") : tr("not a number"));
         return;
     }
     emit edited(field, v);
@@ -214,7 +233,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
     }
     for (std::size_t i = 0; i < fields_.size(); ++i) {
         const int index = static_cast<int>(i);
-        if (rows_[i].notANumber) setMessage(index, tr("not a number"));
+        if (rows_[i].notANumber) setMessage(index, rows_[i].fraction ? tr("not a whole number") : tr("not a number"));
         else if (red[i]) setMessage(index, messages[i].isEmpty() ? QStringLiteral("") : messages[i]);
         else setMessage(index, QString());
     }

@@ -59,6 +59,8 @@ protected:
 signals:
     // A field got a valid value (from typing or from a combo box).
     void edited(int field, std::optional<double> value);
+    // A text field (contour names) as typed.
+    void textEdited(int field, const QString& text);
     // The unit's name as typed.
     void nameEdited(const QString& name);
     // The operator left a field (Tab, Enter, click elsewhere).
@@ -74,6 +76,7 @@ private:
         QComboBox* combo = nullptr;
         QLabel* message = nullptr;
         bool notANumber = false;
+        bool fraction = false;  // a whole-number field holds a fraction
     };
     void onTextEdited(int field, const QString& text);
     void setMessage(int field, const QString& message);

@@ -70,6 +70,8 @@ void UnitListPanel::addUnit(const QString& module)
     ModuleInput unit = kind->makeDefault(toMillimetres(j).stock);
     const LengthUnit lu = j.lengthUnit;
     unit.convertLengths([lu](double v) { return fromMm(v, lu); });
+    // A contour unit in a job without figure elements: a first contour for it.
+    if (j.figure.empty()) j.figure = kind->defaultFigure(j.stock);
     const auto placed = place(j, unit);
     if (!placed) return;
     j.units.push_back(MachiningUnit{"", *placed});

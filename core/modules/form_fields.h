@@ -13,6 +13,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -22,7 +23,10 @@
 
 namespace taiwa {
 
-enum class FormFieldKind { Number, OptionalNumber, Code };
+// ContourName: the name of one contour of the job's figure ("K1");
+// ContourNames: a list of them, typed separated by commas or blanks
+// ("K2, K3"). Both are text (getText/setText), not numbers.
+enum class FormFieldKind { Number, OptionalNumber, Code, ContourName, ContourNames };
 
 struct FormField {
     std::string key;                      // widget objectName suffix: "P1.x", "depth", "U"
@@ -33,11 +37,19 @@ struct FormField {
     std::vector<std::pair<int, std::string>> codes;  // Code: value and its meaning
     std::function<std::optional<double>(const ModuleInput&)> get;
     std::function<void(ModuleInput&, std::optional<double>)> set;
+    // ContourName, ContourNames: the value as the form shows it ("K2, K3")
+    // and set from what is typed (get/set then read nothing and set nothing).
+    std::function<std::string(const ModuleInput&)> getText;
+    std::function<void(ModuleInput&, const std::string&)> setText;
+    bool isText() const { return kind == FormFieldKind::ContourName || kind == FormFieldKind::ContourNames; }
     // What the value is, in one line of plain words (source text, context
     // "taiwa::ui::FieldSpec"), and the id of its symbol in the module's
     // drawing ("sym-P1"; empty: none), highlighted while the field is typed in.
     std::string help;
     std::string symbol;
+    // Number fields that hold a count: the form refuses a fraction instead
+    // of rounding what was typed.
+    bool whole = false;
 };
 
 namespace form {
@@ -123,6 +135,79 @@ FormField code(std::string key, std::string label, std::initializer_list<Code> a
                             [m](T& t, double v) { t.*m = static_cast<int>(std::lround(v)); });
     f.kind = FormFieldKind::Code;
     for (Code c : allowed) f.codes.emplace_back(static_cast<int>(c), std::string(meaning(c)));
+    return f;
+}
+
+// The names typed in a list field: separated by commas or blanks, empty
+// pieces dropped ("K2, K3" and "K2 K3" alike).
+inline std::vector<std::string> splitNames(std::string_view text)
+{
+    std::vector<std::string> names;
+    std::string name;
+    for (const char c : text) {
+        if (c == ',' || c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+            if (!name.empty()) names.push_back(std::move(name));
+            name.clear();
+        } else {
+            name += c;
+        }
+    }
+    if (!name.empty()) names.push_back(std::move(name));
+    return names;
+}
+inline std::string joinNames(const std::vector<std::string>& names)
+{
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+namespace detail {
+inline FormField textField(std::string key, std::string label, std::vector<std::string> diag, FormFieldKind kind)
+{
+    FormField f;
+    f.key = std::move(key);
+    f.label = std::move(label);
+    f.diagFields = std::move(diag);
+    f.kind = kind;
+    f.get = [](const ModuleInput&) -> std::optional<double> { return std::nullopt; };
+    f.set = [](ModuleInput&, std::optional<double>) {};
+    return f;
+}
+}  // namespace detail
+
+// The name of one contour of the job's figure: a string member of module T
+// (blanks around it dropped).
+template <class T>
+FormField contourName(std::string key, std::string label, std::vector<std::string> diag, std::string T::*m)
+{
+    FormField f = detail::textField(std::move(key), std::move(label), std::move(diag), FormFieldKind::ContourName);
+    f.getText = [m](const ModuleInput& in) -> std::string {
+        if (const T* v = in.getIf<T>()) return v->*m;
+        return {};
+    };
+    f.setText = [m](ModuleInput& in, const std::string& text) {
+        if (T* p = in.getIf<T>()) {
+            const auto first = text.find_first_not_of(" \t");
+            p->*m = first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t") + 1 - first);
+        }
+    };
+    return f;
+}
+
+// A list of contour names: a member of module T shown as "K2, K3".
+template <class T>
+FormField contourNames(std::string key, std::string label, std::vector<std::string> diag,
+                       std::vector<std::string> T::*m)
+{
+    FormField f = detail::textField(std::move(key), std::move(label), std::move(diag), FormFieldKind::ContourNames);
+    f.getText = [m](const ModuleInput& in) -> std::string {
+        if (const T* v = in.getIf<T>()) return joinNames(v->*m);
+        return {};
+    };
+    f.setText = [m](ModuleInput& in, const std::string& text) {
+        if (T* p = in.getIf<T>()) p->*m = splitNames(text);
+    };
     return f;
 }
 

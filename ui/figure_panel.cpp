@@ -1,0 +1,454 @@
+// The figure panel: the figure text's editor, its refusals, the 2-D view and
+// the corner revision (figure_panel.h).
+#include "ui/figure_panel.h"
+
+#include "figure/figure_contour.h"
+#include "figure/figure_text.h"
+#include "ui/job_document.h"
+
+#include <QDoubleSpinBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QTextBlock>
+#include <QTextCursor>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace taiwa::ui {
+
+using figure::ContourCorner;
+
+namespace {
+
+const QColor kRefusedLine(0xff, 0xe4, 0xe4);
+const QColor kRefusal(0xc0, 0x00, 0x00);
+const QColor kStatement(0xff, 0xe8, 0xc8);
+
+// The first `lines` lines of `text`.
+std::string firstLines(const std::string& text, int lines)
+{
+    std::size_t end = 0;
+    for (int i = 0; i < lines && end != std::string::npos; ++i) {
+        end = text.find('\n', end);
+        if (end != std::string::npos) ++end;
+    }
+    return end == std::string::npos ? text : text.substr(0, end);
+}
+
+// Where the word (a name, a number) or the one character at `at` of `s` ends.
+int tokenEnd(const QString& s, int at)
+{
+    const auto wordChar = [](QChar ch) { return ch.isLetterOrNumber() || ch == '.'; };
+    int to = std::min(at + 1, static_cast<int>(s.size()));
+    if (at < s.size() && (wordChar(s[at]) || s[at] == '-'))
+        while (to < s.size() && wordChar(s[to])) ++to;
+    return to;
+}
+
+// The corner's value as the text writes it ("3", "2.5"), not "3.0000".
+class ValueBox : public QDoubleSpinBox {
+public:
+    using QDoubleSpinBox::QDoubleSpinBox;
+    QString textFromValue(double v) const override { return QString::fromStdString(figure::formatNumber(v)); }
+};
+
+}  // namespace
+
+namespace {
+
+// The corner `ref` names, or nullptr.
+const ContourCorner* pickedCornerOf(const figure::Evaluation& e, const std::optional<CornerRef>& ref)
+{
+    if (!ref) return nullptr;
+    const figure::EvaluatedContour* c = e.findContour(ref->contour.toStdString());
+    if (!c || ref->index < 0 || ref->index >= static_cast<int>(c->corners.size())) return nullptr;
+    return &c->corners[static_cast<std::size_t>(ref->index)];
+}
+
+}  // namespace
+
+FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), doc_(doc)
+{
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->setObjectName("figure.split");
+    split->setChildrenCollapsible(false);
+    outer->addWidget(split);
+
+    // The text and its refusals.
+    auto* left = new QWidget(split);
+    auto* textBox = new QVBoxLayout(left);
+    textBox->setContentsMargins(0, 0, 0, 0);
+    textBox->setSpacing(2);
+    auto* title = new QLabel(tr("Figure elements, one statement a line"), left);
+    title->setWordWrap(true);
+    textBox->addWidget(title);
+    editor_ = new QPlainTextEdit(left);
+    editor_->setObjectName("figure.text");
+    editor_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    editor_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    editor_->setUndoRedoEnabled(false);  // the job's undo stack undoes the text
+    editor_->setTabChangesFocus(true);
+    editor_->setPlaceholderText(tr("P1 = POINT/10, 20\nL1 = LINE/P1, ATANGL, 90\nK1 = CONTOUR/L1, ROUND, 5, L2, …"));
+    editor_->installEventFilter(this);
+    textBox->addWidget(editor_, 1);
+    refusals_ = new QListWidget(left);
+    refusals_->setObjectName("figure.refusals");
+    refusals_->setWordWrap(true);
+    refusals_->setToolTip(tr("What the text refuses; click one to go to its place"));
+    refusals_->setMaximumHeight(QFontMetrics(refusals_->font()).lineSpacing() * 3 + 8);
+    textBox->addWidget(refusals_);
+
+    // The view with the corner revision above it.
+    auto* right = new QWidget(split);
+    auto* viewBox = new QVBoxLayout(right);
+    viewBox->setContentsMargins(0, 0, 0, 0);
+    viewBox->setSpacing(2);
+    auto* buttons = new QHBoxLayout;
+    const auto toolButton = [&](const QString& name, const QString& text, bool checkable) {
+        auto* b = new QToolButton(right);
+        b->setObjectName(name);
+        b->setText(text);
+        b->setCheckable(checkable);
+        b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        buttons->addWidget(b);
+        return b;
+    };
+    reviseChamfer_ = toolButton("figure.reviseChamfer", tr("Revise chamfer"), true);
+    reviseRounding_ = toolButton("figure.reviseRounding", tr("Revise rounding"), true);
+    buttons->addStretch(1);
+    QToolButton* fit = toolButton("figure.fit", tr("Fit"), false);
+    fit->setToolTip(tr("Frame the stock, the points and the contours"));
+    viewBox->addLayout(buttons);
+    revision_ = new QWidget(right);
+    revision_->setObjectName("figure.revision");
+    auto* rev = new QHBoxLayout(revision_);
+    rev->setContentsMargins(0, 0, 0, 0);
+    revisionText_ = new QLabel(revision_);
+    revisionText_->setObjectName("figure.revisionText");
+    revisionText_->setWordWrap(true);
+    value_ = new ValueBox(revision_);
+    value_->setObjectName("figure.cornerValue");
+    value_->setLocale(QLocale::c());  // '.' as in the text, whatever the system's locale
+    value_->setKeyboardTracking(false);  // one edit when the value is entered, not one a keystroke
+    value_->setRange(0.0001, figure::kMaxNumber);
+    value_->setDecimals(4);
+    value_->setEnabled(false);
+    rev->addWidget(revisionText_, 1);
+    rev->addWidget(value_);
+    revision_->hide();
+    viewBox->addWidget(revision_);
+    view_ = new FigureView(right);
+    view_->setObjectName("figure.view");
+    viewBox->addWidget(view_, 1);
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 1);
+
+    connect(editor_, &QPlainTextEdit::textChanged, this, &FigurePanel::onTextChanged);
+    connect(editor_, &QPlainTextEdit::cursorPositionChanged, this, &FigurePanel::onCursorMoved);
+    connect(refusals_, &QListWidget::itemClicked, this, &FigurePanel::goToRefusal);
+    connect(refusals_, &QListWidget::itemActivated, this, &FigurePanel::goToRefusal);
+    connect(view_, &FigureView::elementPicked, this, &FigurePanel::select);
+    connect(view_, &FigureView::cornerPicked, this, &FigurePanel::pickCorner);
+    connect(fit, &QToolButton::clicked, view_, &FigureView::fitAll);
+    connect(reviseChamfer_, &QToolButton::clicked, this, [this](bool on) {
+        reviseCorners(on ? std::optional(ContourCorner::Kind::Chamfer) : std::nullopt);
+    });
+    connect(reviseRounding_, &QToolButton::clicked, this, [this](bool on) {
+        reviseCorners(on ? std::optional(ContourCorner::Kind::Round) : std::nullopt);
+    });
+    connect(value_, &QDoubleSpinBox::valueChanged, this, &FigurePanel::reviseValue);
+    connect(doc_, &JobDocument::changed, this, &FigurePanel::refresh);
+    refresh();
+}
+
+// The job's text in the editor (unless it is what the editor holds: the
+// operator is typing), evaluated again.
+void FigurePanel::refresh()
+{
+    const QString text = QString::fromStdString(doc_->job().figure);
+    if (editor_->toPlainText() != text) {
+        updating_ = true;
+        const int at = editor_->textCursor().position();
+        const int scrolled = editor_->verticalScrollBar()->value();
+        editor_->setPlainText(text);
+        QTextCursor c = editor_->textCursor();
+        c.setPosition(std::clamp(at, 0, static_cast<int>(text.size())));
+        editor_->setTextCursor(c);
+        editor_->verticalScrollBar()->setValue(scrolled);
+        updating_ = false;
+    }
+    value_->setSuffix(QStringLiteral(" ") + QString::fromUtf8(unitSymbol(doc_->job().lengthUnit)));
+    evaluateText();
+}
+
+void FigurePanel::onTextChanged()
+{
+    if (updating_) return;
+    Job j = doc_->job();
+    j.figure = editor_->toPlainText().toStdString();
+    doc_->edit(j, tr("Edit figure"), QStringLiteral("figure"));
+}
+
+void FigurePanel::evaluateText()
+{
+    const Job& job = doc_->job();
+    // A job opened or its stock changed: framed anew; typing keeps the frame.
+    const bool fit = !evaluatedOnce_ || job.stock != shownStock_ || doc_->path() != shownPath_;
+    if (!fit && job.figure == shownText_) return;
+    evaluatedOnce_ = true;
+    shownText_ = job.figure;
+    shownStock_ = job.stock;
+    shownPath_ = doc_->path();
+    const figure::ParseResult parsed = figure::parseFigure(job.figure);
+    errors_.clear();
+    if (parsed.ok()) {
+        definitions_ = parsed.definitions;
+    } else {
+        // What can be drawn: the statements before the refused one.
+        errors_.push_back(*parsed.error);
+        definitions_ = figure::parseFigure(firstLines(job.figure, parsed.error->line - 1)).definitions;
+    }
+    figure::Evaluation evaluated = figure::evaluate(definitions_);
+    if (parsed.ok()) errors_ = evaluated.errors;
+    view_->setFigure(std::move(evaluated), job.stock, fit);
+    refusals_->clear();
+    for (const figure::FigureError& e : errors_) {
+        auto* item = new QListWidgetItem(QString::fromStdString(e.text()), refusals_);
+        item->setData(Qt::UserRole, e.line);
+        item->setData(Qt::UserRole + 1, e.column);
+        item->setForeground(kRefusal);
+    }
+    markLines();
+    if (revising_) showRevision();
+}
+
+int FigurePanel::positionOf(int line, int column) const
+{
+    const QTextBlock b = editor_->document()->findBlockByNumber(line - 1);
+    if (!b.isValid()) return editor_->document()->characterCount() - 1;
+    const QByteArray bytes = b.text().toUtf8();  // columns count bytes
+    const auto n = std::clamp<qsizetype>(column - 1, 0, bytes.size());
+    return b.position() + static_cast<int>(QString::fromUtf8(bytes.left(n)).size());
+}
+
+// The refused lines in red, the refused word underlined; the picked
+// element's statement in the selection's colour (also when the editor has
+// not the focus).
+void FigurePanel::markLines()
+{
+    QList<QTextEdit::ExtraSelection> marks;
+    QTextDocument* text = editor_->document();
+    for (const figure::FigureError& e : errors_) {
+        QTextBlock b = text->findBlockByNumber(e.line - 1);
+        if (!b.isValid()) b = text->lastBlock();
+        QTextEdit::ExtraSelection line;
+        line.format.setBackground(kRefusedLine);
+        line.format.setProperty(QTextFormat::FullWidthSelection, true);
+        line.cursor = QTextCursor(b);
+        marks << line;
+        // The refused word (a name, a number) or character, underlined.
+        QTextEdit::ExtraSelection word;
+        const QString s = b.text();
+        const int last = std::max(0, static_cast<int>(s.size()) - 1);
+        const int at = std::clamp(positionOf(e.line, e.column) - b.position(), 0, last);
+        word.cursor = QTextCursor(text);
+        word.cursor.setPosition(b.position() + at);
+        word.cursor.setPosition(b.position() + tokenEnd(s, at), QTextCursor::KeepAnchor);
+        word.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
+        word.format.setUnderlineColor(kRefusal);
+        marks << word;
+    }
+    const QString picked = view_->selected();
+    for (const figure::Definition& d : definitions_) {
+        if (QString::fromStdString(d.name) != picked) continue;
+        QTextEdit::ExtraSelection statement;
+        statement.format.setBackground(kStatement);
+        statement.format.setProperty(QTextFormat::FullWidthSelection, true);
+        statement.cursor = QTextCursor(text->findBlockByNumber(d.line - 1));
+        marks << statement;
+    }
+    // The value of the corner under revision.
+    if (const figure::ContourCorner* corner = pickedCornerOf(evaluation(), picked_)) {
+        QTextEdit::ExtraSelection value;
+        value.format.setBackground(kStatement);
+        value.cursor = valueCursor(*corner);
+        marks << value;
+    }
+    editor_->setExtraSelections(marks);
+}
+
+// The corner's value in the text, selected.
+QTextCursor FigurePanel::valueCursor(const figure::ContourCorner& corner) const
+{
+    const QTextBlock b = editor_->document()->findBlockByNumber(corner.line - 1);
+    QTextCursor c(editor_->document());
+    if (!b.isValid()) return c;
+    const int at = positionOf(corner.line, corner.column) - b.position();
+    c.setPosition(b.position() + at);
+    c.setPosition(b.position() + tokenEnd(b.text(), at), QTextCursor::KeepAnchor);
+    return c;
+}
+
+void FigurePanel::goToRefusal(QListWidgetItem* item)
+{
+    if (!item) return;
+    QTextCursor c = editor_->textCursor();
+    c.setPosition(positionOf(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt()));
+    editor_->setTextCursor(c);
+    editor_->setFocus(Qt::OtherFocusReason);
+}
+
+void FigurePanel::select(const QString& name)
+{
+    view_->setSelected(name);
+    selectStatement(name);
+    markLines();
+    emit selectionChanged(name);
+}
+
+// The statement of `name` selected in the editor, from its name to the end
+// of the line (without a trailing comment or blanks).
+void FigurePanel::selectStatement(const QString& name)
+{
+    const auto d = std::find_if(definitions_.begin(), definitions_.end(),
+                                [&](const figure::Definition& x) { return QString::fromStdString(x.name) == name; });
+    if (d == definitions_.end()) return;
+    const QTextBlock b = editor_->document()->findBlockByNumber(d->line - 1);
+    if (!b.isValid()) return;
+    QString s = b.text();
+    if (const auto comment = s.indexOf(QStringLiteral("$$")); comment >= 0) s.truncate(comment);
+    while (!s.isEmpty() && s.back().isSpace()) s.chop(1);
+    QTextCursor c(editor_->document());
+    c.setPosition(positionOf(d->line, d->column));
+    c.setPosition(b.position() + static_cast<int>(s.size()), QTextCursor::KeepAnchor);
+    updating_ = true;
+    editor_->setTextCursor(c);
+    updating_ = false;
+}
+
+// The cursor on a statement picks its element in the view.
+void FigurePanel::onCursorMoved()
+{
+    if (updating_) return;
+    const int line = editor_->textCursor().blockNumber() + 1;
+    QString name;
+    for (const figure::Definition& d : definitions_)
+        if (d.line == line) name = QString::fromStdString(d.name);
+    if (name == view_->selected()) return;
+    view_->setSelected(name);
+    markLines();
+    emit selectionChanged(name);
+}
+
+void FigurePanel::reviseCorners(std::optional<ContourCorner::Kind> kind)
+{
+    revising_ = kind;
+    picked_.reset();
+    reviseChamfer_->setChecked(kind == ContourCorner::Kind::Chamfer);
+    reviseRounding_->setChecked(kind == ContourCorner::Kind::Round);
+    showRevision();
+}
+
+void FigurePanel::pickCorner(const QString& contour, int index)
+{
+    if (!revising_) return;
+    const figure::EvaluatedContour* c = evaluation().findContour(contour.toStdString());
+    if (!c || index < 0 || index >= static_cast<int>(c->corners.size()) ||
+        c->corners[static_cast<std::size_t>(index)].kind != *revising_)
+        return;
+    picked_ = CornerRef{contour, index};
+    showRevision();
+    // Its value selected in the text: the number the spin box rewrites.
+    updating_ = true;
+    editor_->setTextCursor(valueCursor(c->corners[static_cast<std::size_t>(index)]));
+    updating_ = false;
+    markLines();
+    value_->setFocus(Qt::OtherFocusReason);
+    value_->selectAll();
+}
+
+// Every corner of the kind under revision highlighted, or the one picked
+// with its value in the spin box.
+void FigurePanel::showRevision()
+{
+    if (!revising_) {
+        view_->setHighlightedCorners({});
+        revision_->hide();
+        return;
+    }
+    std::vector<CornerRef> all;
+    for (const figure::EvaluatedContour& c : evaluation().contours)
+        for (std::size_t i = 0; i < c.corners.size(); ++i)
+            if (c.corners[i].kind == *revising_) all.push_back({QString::fromStdString(c.name), static_cast<int>(i)});
+    if (picked_ && std::find(all.begin(), all.end(), *picked_) == all.end()) picked_.reset();
+    view_->setHighlightedCorners(picked_ ? std::vector<CornerRef>{*picked_} : all);
+    revision_->show();
+    const bool chamfer = *revising_ == ContourCorner::Kind::Chamfer;
+    if (!picked_) {
+        value_->setEnabled(false);
+        if (all.empty()) revisionText_->setText(chamfer ? tr("The figure's contours have no chamfer.")
+                                                        : tr("The figure's contours have no rounding."));
+        else revisionText_->setText((chamfer ? tr("Click a chamfer in the view to change it (%1 in the figure).")
+                                             : tr("Click a rounding in the view to change it (%1 in the figure)."))
+                                        .arg(all.size()));
+        return;
+    }
+    const ContourCorner& corner =
+        evaluation().findContour(picked_->contour.toStdString())->corners[static_cast<std::size_t>(picked_->index)];
+    revisionText_->setText((chamfer ? tr("%1: chamfer between %2 and %3, length") : tr("%1: rounding between %2 and %3, radius"))
+                               .arg(picked_->contour, QString::fromStdString(corner.between[0]),
+                                    QString::fromStdString(corner.between[1])));
+    updating_ = true;
+    value_->setValue(corner.value);
+    updating_ = false;
+    value_->setEnabled(true);
+}
+
+// The picked corner's value rewritten in the text, every other byte kept:
+// one undoable edit.
+void FigurePanel::reviseValue(double value)
+{
+    if (updating_ || !picked_) return;
+    const Job& job = doc_->job();
+    const auto revised = figure::reviseCorner(job.figure, picked_->contour.toStdString(), picked_->index, value);
+    if (!revised) {
+        revisionText_->setText(tr("The text has a refusal: correct it before revising a corner."));
+        return;
+    }
+    if (*revised == job.figure) return;
+    Job j = job;
+    j.figure = *revised;
+    doc_->breakMerge();
+    doc_->edit(j, tr("Revise corner %1 of %2").arg(picked_->index + 1).arg(picked_->contour));
+    doc_->breakMerge();
+}
+
+bool FigurePanel::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == editor_) {
+        // Leaving the editor ends its undo step; Ctrl+Z and Ctrl+Shift+Z go
+        // to the job's undo stack.
+        if (event->type() == QEvent::FocusOut) doc_->breakMerge();
+        if (event->type() == QEvent::ShortcutOverride) {
+            auto* key = static_cast<QKeyEvent*>(event);
+            if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
+                key->keyCombination() == QKeyCombination(Qt::ControlModifier | Qt::ShiftModifier, Qt::Key_Z))
+                return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+}  // namespace taiwa::ui
