@@ -5,6 +5,8 @@
 // Refusals are in test_job_refusals.cpp. TAIWA_UPDATE_GOLDEN=1 rewrites the
 // samples canonically (review the diff before committing).
 #include "modules/m2d/m2d.h"
+#include "modules/cp/cp.h"
+#include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
 #include "modules/probe/probe.h"
 #include "modules/turn/turn.h"
@@ -162,6 +164,12 @@ private slots:
                     seen.insert(p->x[1] ? "PROBE touches" : "PROBE cycle only");
                 } else if (const auto* t = (u.module).getIf<TurnUnit>()) {
                     seen.insert(t->profile.side == turning::ProfileSide::Inner ? "TURN inner" : "TURN outer");
+                } else if (const auto* c = (u.module).getIf<ContourPocket>()) {
+                    seen.insert("CP U" + std::to_string(c->toolUse));
+                    if (!c->islands.empty()) seen.insert("CP islands");
+                } else if (const auto* h = (u.module).getIf<HolePattern>()) {
+                    seen.insert("HOLES " + h->pattern);
+                    seen.insert("HOLES " + h->hole);
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -172,7 +180,9 @@ private slots:
         QVERIFY(inch);
         for (const char* want : {"M4 U1", "M4 U6", "M4 U7", "M4 U8", "M4 U9", "M4 F1", "M4 F2", "M4 F3", "M4 H0", "M4 H9",
                                  "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
-                                 "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner"})
+                                 "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner",
+                                 "CP U1", "CP islands", "HOLES single", "HOLES grid", "HOLES bolt circle", "HOLES drilled",
+                                 "HOLES tapped", "HOLES reamed", "HOLES bored"})
             QVERIFY2(seen.count(want), want);
     }
 
@@ -231,7 +241,12 @@ private slots:
             (isLathe ? lathe : milling)++;
             const bool three = text.find("\"version\": 3,") != std::string::npos;
             QVERIFY2(three == isLathe, qPrintable(f));
-            QCOMPARE(formatVersionFor(job), job.clamping ? 4 : isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
+            // Figure elements and the contour and hole units are version 5.
+            const bool five = !job.figure.empty() || std::any_of(job.units.begin(), job.units.end(), [](const MachiningUnit& u) {
+                return std::string(u.module.name()) == "CP" || std::string(u.module.name()) == "HOLES";
+            });
+            QCOMPARE(formatVersionFor(job), five ? 5 : job.clamping ? 4 : isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
+            QVERIFY2(five == (text.find("\"version\": 5,") != std::string::npos), qPrintable(f));
             QVERIFY2(job.clamping.has_value() == (text.find("\"version\": 4,") != std::string::npos), qPrintable(f));
         }
         QVERIFY(lathe >= 5 && milling >= 15);

@@ -144,7 +144,7 @@ private slots:
                 QVERIFY2(g <= kTol, qPrintable(QString("gouge of %1 mm: ").arg(g) + where(m, s)));
                 deepest[m.step] = std::min(deepest.count(m.step) ? deepest[m.step] : 0.0, p.z);
                 if (s.kind == StepKind::Roughing && p.z < 0) {
-                    const double d = signedDistance(pocketSection(module, -p.z), {p.x, p.y}) + tool.radius();
+                    const double d = wallDistance(module, p) + tool.radius();
                     reach[m.step] = std::max(reach.count(m.step) ? reach[m.step] : -1e9, d);
                 }
             }

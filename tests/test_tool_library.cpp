@@ -14,6 +14,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <set>
 
 using namespace taiwa;
@@ -240,11 +241,15 @@ private slots:
             QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
             // The shop's end mill, the touch probe version 3 brings (T90 was
             // free) and the lathe tools of version 4 (T101-T107 were free).
-            QCOMPARE(tools->size(), std::size_t(2) + defaultLatheTools().size());
-            QCOMPARE((*tools)[1].id, 90);
-            QCOMPARE((*tools)[1].type, ToolType::Probe);
-            QVERIFY((*tools)[1].cutting.empty());
+            // And the hole tools of version 6 (their ids were free).
+            QCOMPARE(tools->size(), std::size_t(2) + defaultLatheTools().size() + defaultHoleTools().size());
+            const auto probe = std::find_if(tools->begin(), tools->end(), [](const Tool& x) { return x.id == 90; });
+            QVERIFY(probe != tools->end());
+            QCOMPARE(probe->type, ToolType::Probe);
+            QVERIFY(probe->cutting.empty());
             QCOMPARE(tools->back(), defaultLatheTools().back());
+            const auto tap = std::find_if(tools->begin(), tools->end(), [](const Tool& x) { return x.type == ToolType::Tap; });
+            QVERIFY(tap != tools->end() && tap->turning.pitchMin > 0);  // the pitch kept in the lathe data's column
             const Tool& t = tools->front();
             QCOMPARE(t.id, 7);
             QCOMPARE(t.usedMinutes, 12.0);
@@ -255,7 +260,7 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 5);
+        QCOMPARE(sqlite3_column_int(version, 0), 6);
         sqlite3_finalize(version);
         sqlite3_close(db);
     }

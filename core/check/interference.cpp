@@ -41,9 +41,22 @@ struct Figure {
     }
 };
 
-Figure figure(const Quad& q, int unit)
+Figure figure(const Quad& q, const std::vector<Point2>& polygon, int unit)
 {
     Figure f;
+    if (!polygon.empty()) {  // any outline (contour units): its polygon, no quad to shortcut with
+        f.unit = unit;
+        f.outline = q;
+        f.path = toClipper(polygon);
+        f.minX = f.maxX = polygon[0].x;
+        f.minY = f.maxY = polygon[0].y;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            f.perimeter += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
+            f.minX = std::min(f.minX, polygon[i].x), f.maxX = std::max(f.maxX, polygon[i].x);
+            f.minY = std::min(f.minY, polygon[i].y), f.maxY = std::max(f.maxY, polygon[i].y);
+        }
+        return f;
+    }
     f.unit = unit;
     f.outline = q;
     f.perimeter = 0.0;
@@ -178,7 +191,7 @@ Diagnostics interferences(std::vector<UnitFigure> units, LengthUnit shownUnit)
     std::sort(units.begin(), units.end(), [](const UnitFigure& a, const UnitFigure& b) { return a.unit < b.unit; });
     std::vector<Figure> figures;
     figures.reserve(units.size());
-    for (const auto& u : units) figures.push_back(figure(u.outline, u.unit));
+    for (const auto& u : units) figures.push_back(figure(u.outline, u.polygon, u.unit));
     FigureGrid grid(figures);
     Diagnostics out;
     for (std::size_t j = 0; j < figures.size() && out.size() < kMaxDiagnostics; ++j) {

@@ -2,6 +2,7 @@
 #include "check/messages.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace taiwa::msg {
 
@@ -126,6 +127,52 @@ std::string duplicateCorner(int first, int second, Len x, Len y)
 {
     return fmt::format("P{} and P{} are the same point ({}, {}); the outline needs four distinct corners", first, second,
                        quote(x), quote(y));
+}
+
+std::string contourNotNamed(const std::string& role)
+{
+    return fmt::format("name the contour of the pocket's {} (a CONTOUR of the job's figure elements)", role);
+}
+
+std::string contourUnknown(const std::string& name, const std::vector<std::string>& known)
+{
+    if (known.empty()) return fmt::format("{} is not a contour of the job's figure elements, which define no contour", name);
+    return fmt::format("{} is not a contour of the job's figure elements (its contours: {})", name, fmt::join(known, ", "));
+}
+
+std::string contourOpen(const std::string& name, const std::string& role)
+{
+    return fmt::format("{} is an open contour; a pocket's {} must be closed (a contour without a start and end point)",
+                       name, role);
+}
+
+std::string contourCrossesItself(const std::string& name)
+{
+    return fmt::format("{} crosses itself; check the order of its elements and the side chosen at each junction", name);
+}
+
+std::string islandOutside(const std::string& island, const std::string& outline)
+{
+    return fmt::format("the island {} reaches outside the pocket's outline {}", island, outline);
+}
+
+std::string islandsOverlap(const std::string& a, const std::string& b)
+{
+    return fmt::format("the islands {} and {} overlap; make them one contour", a, b);
+}
+
+std::string sharpInsideCorner(const std::string& name, Len x, Len y)
+{
+    return fmt::format("{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius "
+                       "there; round the corner (ROUND) in the contour",
+                       name, quote(x), quote(y));
+}
+
+std::string toolUseNotForContours(int code)
+{
+    return fmt::format("U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls "
+                       "only) or 9 (roughing only)",
+                       code);
 }
 
 std::string selfIntersecting()

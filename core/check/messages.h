@@ -74,6 +74,16 @@ std::string noRoomForTool(const std::string& label, Len available, const Tool& s
 std::string pinnedToolTooBig(const std::string& step, const Tool& pinned, const std::string& label, Len available,
                              const Tool* fitting);
 
+// Contour units (CP): their contours, named from the job's figure.
+std::string contourNotNamed(const std::string& role);                 // role: "outline"
+std::string contourUnknown(const std::string& name, const std::vector<std::string>& known);
+std::string contourOpen(const std::string& name, const std::string& role);
+std::string contourCrossesItself(const std::string& name);
+std::string islandOutside(const std::string& island, const std::string& outline);
+std::string islandsOverlap(const std::string& a, const std::string& b);
+std::string sharpInsideCorner(const std::string& name, Len x, Len y);
+std::string toolUseNotForContours(int code);
+
 // Interference of two figures.
 std::string overlap(int unitNo, int otherUnitNo, double areaMm2, LengthUnit unit);
 

@@ -98,6 +98,9 @@ struct UnitFigure {
     std::string module;           // "M4"
     std::string field;            // where an overlap is reported ("corners")
     Quad outline;                 // in mm
+    // A figure of any outline (contour units): the outline flattened, in
+    // mm; `outline` is then the box around it. Empty for a quad.
+    std::vector<Point2> polygon{};
 };
 // One diagnostic per overlapping pair (on the later unit, naming both), in
 // the order of the later unit; at most kMaxDiagnostics of them, then a line

@@ -50,6 +50,12 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
     if (s.kind == StepKind::PilotHole) {
         j["position"] = point(s.position, u);
     }
+    if (!s.holes.empty()) {  // hole patterns: every hole the step's cycle runs at
+        j["holeDiameter"] = out(s.holeDiameter, u);
+        if (s.threadPitch > 0) j["threadPitch"] = s.threadPitch;  // mm whatever the job's unit (metric threads)
+        j["holes"] = nlohmann::ordered_json::array();
+        for (const Point2& h : s.holes) j["holes"].push_back(point(h, u));
+    }
     if (s.outline) {
         nlohmann::ordered_json o;
         o["corners"] = nlohmann::ordered_json::array();

@@ -3,6 +3,7 @@
 // the interference check, collecting all diagnostics (capped);
 // jobTechnology gives the technology data in force.
 #include "job/job_check.h"
+#include "job/figure_contours.h"
 
 #include "check/messages.h"
 #include "check/unit_checks.h"
@@ -199,6 +200,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     const Job& mm = c.mmJob;
     const LengthUnit shown = job.lengthUnit;
     Diagnostics& out = c.diagnostics;
+    resolveContours(c.mmJob, figureContours(job, out));
 
     std::optional<TechnologyData> tech = jobTechnology(mm, table);
     if (!tech) {
@@ -282,7 +284,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
         out.insert(out.end(), report.diagnostics.begin(), report.diagnostics.end());
         if (!report.figureValid) continue;
         if (const auto outline = kind->topOutline(module))
-            figures.push_back({static_cast<int>(u), kind->name(), kind->outlineField(), *outline});
+            figures.push_back({static_cast<int>(u), kind->name(), kind->outlineField(), *outline, kind->topPolygon(module)});
     }
     const Diagnostics overlaps = check::interferences(std::move(figures), shown);
     out.insert(out.end(), overlaps.begin(), overlaps.end());

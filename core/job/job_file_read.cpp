@@ -25,7 +25,7 @@ using io::ObjectFields;
 using io::Place;
 
 const std::vector<std::string> kJobKeys{"format",  "version", "name",     "lengthUnit", "material",      "machine", "workOffset",
-                                        "dialect", "stock",   "clamping", "technology", "latheRoughing", "units"};
+                                        "dialect", "stock",   "clamping", "technology", "figure", "latheRoughing", "units"};
 const std::vector<std::string> kStockShapes{"block", "bar"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kBarKeys{"shape", "diameter", "length", "face", "bore"};
@@ -132,6 +132,36 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
     s.length = f.number("length").value_or(0.0);
     s.height = f.number("height").value_or(0.0);
     return s;
+}
+
+// "figure": ["P1 = POINT/0, 0", "L1 = LINE/P1, P2", ...], one statement (or
+// comment) a line; joined with line feeds into the text the figure language
+// reads. Absent: no figure elements. The text's own refusals come from
+// checking the job, with their line and column.
+std::string readFigure(const ObjectFields& job)
+{
+    const json* v = job.find("figure");
+    if (!v) return {};
+    if (!v->is_array()) {
+        job.error("figure", msg::io::wrongType("an array of lines of figure-element text", *v));
+        return {};
+    }
+    std::string text;
+    for (std::size_t i = 0; i < v->size(); ++i) {
+        const json& line = (*v)[i];
+        if (!line.is_string()) {
+            job.error("figure[" + std::to_string(i) + "]", msg::io::wrongType("a line of text", line));
+            continue;
+        }
+        const auto& l = line.get_ref<const std::string&>();
+        if (l.find('\n') != std::string::npos || l.find('\r') != std::string::npos) {
+            job.error("figure[" + std::to_string(i) + "]", "a line of the figure holds a line break; give each line as its own string");
+            continue;
+        }
+        text += l;
+        if (i + 1 < v->size()) text += '\n';
+    }
+    return text;
 }
 
 // "clamping": {"fixture": "vice", "grip": "y", "height": 10}; absent: not given.
@@ -265,6 +295,7 @@ JobReadResult readJob(std::string_view text)
     job.stock = readStock(f, job.bar);
     job.clamping = readClamping(f);
     job.technology = readTechnology(f);
+    job.figure = readFigure(f);
     const json* units = f.find("units");
     if (!units) f.error("units", msg::io::missing("an array of machining units"));
     else if (!units->is_array()) f.error("units", msg::io::wrongType("an array of machining units", *units));

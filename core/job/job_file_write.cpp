@@ -1,6 +1,7 @@
 // Writing the canonical text of a job (writeJob of job_file.h): keys in a
 // fixed order (a unit's own keys in the order its module's door writes them),
-// two-space indentation with points and other short number lists on one line,
+// two-space indentation with points and other short lists on one line (text
+// lines such as the figure's one a line),
 // whole numbers without ".0", other numbers in nlohmann's shortest round-trip
 // form, a final newline.
 #include "job/job_file.h"
@@ -75,6 +76,17 @@ ordered jobJson(const Job& job)
         if (o.stepOver) t["stepOver"] = number(*o.stepOver);
         j["technology"] = std::move(t);
     }
+    if (!job.figure.empty()) {
+        ordered lines = ordered::array();
+        std::size_t from = 0;
+        for (;;) {
+            const std::size_t to = job.figure.find('\n', from);
+            lines.push_back(job.figure.substr(from, to == std::string::npos ? std::string::npos : to - from));
+            if (to == std::string::npos) break;
+            from = to + 1;
+        }
+        j["figure"] = std::move(lines);
+    }
     j["units"] = ordered::array();
     for (const auto& unit : job.units) j["units"].push_back(unitJson(unit));
     return j;
@@ -93,7 +105,14 @@ void emit(const ordered& v, std::size_t indent, std::string& out)
         out += container ? (v.is_object() ? "{}" : "[]") : scalar(v);
         return;
     }
-    if (v.is_array() && std::none_of(v.begin(), v.end(), [](const ordered& e) { return e.is_structured(); })) {
+    // Short lists of numbers or names on one line; text lines (the figure)
+    // one a line.
+    const auto longText = [&] {
+        std::size_t chars = 0;
+        for (const auto& e : v) chars += e.is_string() ? e.get_ref<const std::string&>().size() + 4 : 0;
+        return chars > 80;
+    };
+    if (v.is_array() && std::none_of(v.begin(), v.end(), [](const ordered& e) { return e.is_structured(); }) && !longText()) {
         out += '[';
         for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + scalar(v[i]);
         out += ']';

@@ -3,6 +3,7 @@
 #include "job/placement.h"
 
 #include "check/unit_checks.h"
+#include "job/figure_contours.h"
 #include "modules/registry.h"
 
 #include <algorithm>
@@ -32,7 +33,7 @@ std::optional<ModuleInput> placeInFreeStock(const Job& typed, ModuleInput typedU
 {
     // Work in mm (the interference check's tolerances are in mm); move the
     // unit as typed by the same distance in its own unit.
-    const Job job = toMillimetres(typed);
+    const Job job = millimetreJob(typed);
     ModuleInput unit = typedUnit;
     const LengthUnit lu = typed.lengthUnit;
     unit.convertLengths([lu](double v) { return toMm(v, lu); });
@@ -43,7 +44,8 @@ std::optional<ModuleInput> placeInFreeStock(const Job& typed, ModuleInput typedU
     for (std::size_t u = 0; u < job.units.size(); ++u) {
         const ModuleInput& m = job.units[u].module;
         if (const ModuleKind* k = findModuleKind(m.name()))
-            if (const auto o = k->topOutline(m)) others.push_back({static_cast<int>(u), k->name(), k->outlineField(), *o});
+            if (const auto o = k->topOutline(m))
+                others.push_back({static_cast<int>(u), k->name(), k->outlineField(), *o, k->topPolygon(m)});
     }
     const Box box = boxOf(*outline);
     const Stock& s = job.stock;
@@ -62,7 +64,7 @@ std::optional<ModuleInput> placeInFreeStock(const Job& typed, ModuleInput typedU
         ModuleInput moved = unit;
         kind.moveBy(moved, d);
         auto figures = others;
-        figures.push_back({self, kind.name(), kind.outlineField(), *kind.topOutline(moved)});
+        figures.push_back({self, kind.name(), kind.outlineField(), *kind.topOutline(moved), kind.topPolygon(moved)});
         if (!check::interferences(std::move(figures), LengthUnit::Millimetre).empty()) continue;
         kind.moveBy(typedUnit, {fromMm(d.x, lu), fromMm(d.y, lu)});
         return typedUnit;

@@ -178,10 +178,10 @@ double distanceTo(const Contour& c, Point2 p)
     return d;
 }
 
-bool contains(const Contour& c, Point2 p)
+namespace {
+
+int windingNumber(const std::vector<Point2>& pts, Point2 p)
 {
-    // Winding number of the polygon within 0.1 µm of the arcs.
-    const auto pts = flatten(c, 1e-4);
     int winding = 0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const Point2 a = pts[i], b = pts[(i + 1) % pts.size()];
@@ -192,7 +192,15 @@ bool contains(const Contour& c, Point2 p)
             --winding;
         }
     }
-    return winding != 0;
+    return winding;
+}
+
+}  // namespace
+
+bool contains(const Contour& c, Point2 p)
+{
+    // Winding number of the polygon within 0.1 µm of the arcs.
+    return windingNumber(flatten(c, 1e-4), p) != 0;
 }
 
 double largestGap(const Contour& c)
@@ -236,6 +244,26 @@ double signedDistance(const Region& r, Point2 p)
         d = std::min(d, distanceTo(i, p));
         if (inside && contains(i, p)) inside = false;
     }
+    return inside ? -d : d;
+}
+
+RegionDistance::RegionDistance(const Region& r)
+{
+    polygons_.push_back(flatten(r.outer, 1e-4));
+    segments_ = r.outer.segments;
+    for (const auto& i : r.islands) {
+        polygons_.push_back(flatten(i, 1e-4));
+        segments_.insert(segments_.end(), i.segments.begin(), i.segments.end());
+    }
+}
+
+double RegionDistance::operator()(Point2 p) const
+{
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& s : segments_) d = std::min(d, distance(p, s.nearest(p)));
+    bool inside = windingNumber(polygons_[0], p) != 0;
+    for (std::size_t i = 1; inside && i < polygons_.size(); ++i)
+        if (windingNumber(polygons_[i], p) != 0) inside = false;
     return inside ? -d : d;
 }
 

@@ -6,7 +6,9 @@
 
 #include "model/geometry.h"
 
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace taiwa {
@@ -83,6 +85,9 @@ double largestGap(const Contour& c);
 // The contour's segments of zero length (shorter than 1e-9 mm) left out.
 Contour withoutDegenerateSegments(const Contour& c);
 
+// The contours of a job's figure elements by name, evaluated in mm.
+using ContourTable = std::map<std::string, Contour>;
+
 // A pocket's plan: the area inside `outer` and outside every island. The
 // outer boundary runs counter-clockwise, islands clockwise (normalise()
 // makes them so), so that the material side is always on the right.
@@ -100,5 +105,16 @@ double area(const Region& r);
 // Signed distance from p to the region's boundary: negative inside the
 // region (in the pocket), positive in the material outside it or in an island.
 double signedDistance(const Region& r, Point2 p);
+
+// signedDistance for many points of one region, its polygons flattened once.
+class RegionDistance {
+public:
+    explicit RegionDistance(const Region& r);
+    double operator()(Point2 p) const;
+
+private:
+    std::vector<ContourSegment> segments_;
+    std::vector<std::vector<Point2>> polygons_;  // outer, then islands
+};
 
 }  // namespace taiwa

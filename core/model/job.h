@@ -70,10 +70,11 @@ struct MachiningUnit {
 
 struct Job {
     // Version 2 added `dialect`, version 3 lathe jobs (bar stock, turned
-    // profiles), version 4 the block's `clamping`. A job is written in the
+    // profiles), version 4 the block's `clamping`, version 5 the `figure`
+    // elements and the contour units that use them. A job is written in the
     // oldest version that holds it, so that a program reading version 1
     // still reads every milling job without a dialect.
-    static constexpr int kFormatVersion = 4;
+    static constexpr int kFormatVersion = 5;
     static constexpr int kOldestFormatVersion = 1;
     std::string name;
     LengthUnit lengthUnit = LengthUnit::Millimetre;
@@ -88,6 +89,10 @@ struct Job {
     std::optional<BarStock> bar;   // lathe jobs: the stock is a bar (then `stock` is not used)
     std::optional<Clamping> clamping;  // milling jobs: how the block is held; absent: not given
     TechnologyOverrides technology;
+    // The figure elements (points, lines, circles, contours) as the APT-like
+    // text the operator reads and edits (docs/figure-elements.md), in the
+    // job's length unit; contour units name its contours. Empty: none.
+    std::string figure;
     // Lathe jobs: roughing as the control's own cycle (G71) where a profile
     // allows it, or always as explicit passes (controls without cycles).
     bool latheRoughingCycles = true;

@@ -21,6 +21,9 @@ const char* toString(StepKind k)
     case StepKind::TurnFinishing: return "finishing";
     case StepKind::Threading: return "threading";
     case StepKind::Parting: return "parting off";
+    case StepKind::Tapping: return "tapping";
+    case StepKind::Reaming: return "reaming";
+    case StepKind::Boring: return "boring";
     }
     return "";
 }
@@ -41,6 +44,9 @@ const char* toKey(StepKind k)
     case StepKind::TurnFinishing: return "turn-finish";
     case StepKind::Threading: return "thread";
     case StepKind::Parting: return "part";
+    case StepKind::Tapping: return "tap";
+    case StepKind::Reaming: return "ream";
+    case StepKind::Boring: return "bore";
     }
     return "";
 }
@@ -62,7 +68,8 @@ std::string Step::label() const
     std::string s = toString(kind);
     s[0] = static_cast<char>(s[0] - 'a' + 'A');
     if (kind == StepKind::PilotHole || kind == StepKind::Facing || kind == StepKind::CentreDrilling ||
-        kind == StepKind::Drilling || kind == StepKind::Parting)
+        kind == StepKind::Drilling || kind == StepKind::Parting || kind == StepKind::Tapping ||
+        kind == StepKind::Reaming || kind == StepKind::Boring)
         return s;
     return s + " " + roman(number);
 }

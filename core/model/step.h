@@ -3,6 +3,7 @@
 // its tool path and its time by the tool-choice and CL stages.
 #pragma once
 
+#include "model/contour.h"
 #include "model/geometry.h"
 #include "model/technology.h"
 #include "model/tool.h"
@@ -29,6 +30,11 @@ enum class StepKind {
     Grooving,
     Threading,
     Parting,
+    // Hole patterns (module HOLES) besides CentreDrilling and Drilling: the
+    // finishing of a hole after its drill.
+    Tapping,
+    Reaming,
+    Boring,
 };
 const char* toString(StepKind k);  // "roughing"
 const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
@@ -39,7 +45,9 @@ const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins 
 // 10 pilot hole, 20 roughing, 30 floor finishing, 40 wall finishing,
 // 41 wall semi-finish, 42 taper-wall middle pass, 50 inclined-face finishing;
 // turning: 60 facing, 61 centre drilling, 62 drilling, 70 roughing,
-// 71 finishing, 72 grooving, 73 parting, 74 threading.
+// 71 finishing, 72 grooving, 73 parting, 74 threading; hole patterns: 61
+// centre drilling, 62 drilling as on the lathe, 63 tapping, 64 reaming,
+// 65 boring.
 enum class MachiningType : int {
     PilotHole = 10,
     Roughing = 20,
@@ -56,6 +64,9 @@ enum class MachiningType : int {
     Grooving = 72,
     Parting = 73,
     Threading = 74,
+    Tapping = 63,
+    Reaming = 64,
+    Boring = 65,
 };
 
 // An inclined face of module M2D: a plane strip between its edge at the top
@@ -79,8 +90,21 @@ struct Step {
     // vertical walls; for tapered wall steps (wallTaper > 0) the outline at the
     // top surface, the wall leaning inward by depth x tan(wallTaper) below it.
     std::optional<Quad> outline;
+    // Steps of contour units (any outline, islands): the region whose
+    // boundary the tool edge reaches, instead of `outline`; and the largest
+    // tool radius that reaches every part of it (its narrowest channel and
+    // smallest inside corner radius).
+    std::optional<Region> region;
+    double reach = 0.0;
+    double inscribed = 0.0;  // the radius of the largest circle in the region
+
     Point2 position{};            // pilot hole centre; otherwise the outline's centroid
-    double holeDiameter = 0.0;    // pilot hole only: the smallest diameter it must have (0 = not yet known)
+    double holeDiameter = 0.0;    // pilot hole: the smallest diameter it must have (0 = not yet known); hole patterns: the diameter the step's tool makes
+    // Hole patterns (module HOLES): the centres of the unit's holes in the
+    // order they are machined (each gets the step's cycle, down to
+    // cutDepth), and a tapping step's thread pitch [mm].
+    std::vector<Point2> holes;
+    double threadPitch = 0.0;
     double startDepth = 0.0;      // above this depth everything is air (rapid)
     double cutDepth = 0.0;        // deepest point the step cuts
     double wallTaper = 0.0;       // degrees per side of the wall this step cuts

@@ -7,7 +7,7 @@
 namespace taiwa {
 
 namespace {
-constexpr std::array<std::pair<const char*, const char*>, 10> kToolTypeNames{{
+constexpr std::array<std::pair<const char*, const char*>, 13> kToolTypeNames{{
     {"centre drill", "centre_drill"},
     {"drill", "drill"},
     {"flat end mill", "flat_end_mill"},
@@ -18,6 +18,9 @@ constexpr std::array<std::pair<const char*, const char*>, 10> kToolTypeNames{{
     {"grooving tool", "grooving"},
     {"threading tool", "threading"},
     {"probe", "probe"},
+    {"tap", "tap"},
+    {"reamer", "reamer"},
+    {"boring bar", "boring_bar"},
 }};
 }  // namespace
 

@@ -18,6 +18,12 @@ enum class ToolType {
     Grooving,
     Threading,
     Probe,
+    // Hole patterns (module HOLES): a machine tap (its pitch is the
+    // TurningSpec's pitchMin = pitchMax), a reamer, a boring tool set to
+    // its bore (the diameter).
+    Tap,
+    Reamer,
+    BoringBar,
 };
 const char* toString(ToolType t);                     // "flat end mill"
 const char* toKey(ToolType t);                        // "flat_end_mill" (database, JSON)
@@ -45,7 +51,7 @@ struct TurningSpec {
     double width = 0.0;          // grooving and parting blades [mm]
     double maxDepth = 0.0;       // grooving blades: the deepest groove [mm]
     double maxDiameter = 0.0;    // parting blades: the largest diameter parted off [mm]
-    double pitchMin = 0.0, pitchMax = 0.0;  // threading inserts [mm]
+    double pitchMin = 0.0, pitchMax = 0.0;  // threading inserts [mm]; a tap (milling): its pitch, both the same
     double threadAngle = 0.0;    // threading inserts: 60 (metric), 55 (Whitworth) [deg]
     bool empty() const { return *this == TurningSpec{}; }
     friend bool operator==(const TurningSpec&, const TurningSpec&) = default;

@@ -24,6 +24,12 @@ enum class MoveKind {
 
 enum class FeedKind { Cut, Plunge, Ramp };
 
+// What a DrillCycle move does at its hole (G98 each: back to the level it
+// started from, or R when that is higher): drill (G81, or G83 pecking when
+// `peck` > 0), tap right-hand at `pitch` per revolution (G84), ream (feed in,
+// feed out: G85), bore (feed in, spindle stopped, out: G86).
+enum class CycleKind { Drill, Tap, Ream, Bore };
+
 struct Move {
     MoveKind kind = MoveKind::Rapid;
     Point3 end{};
@@ -31,6 +37,8 @@ struct Move {
     FeedKind feed = FeedKind::Cut;
     double retractZ = 0.0; // drill cycles: R plane
     double peck = 0.0;     // drill cycles: peck depth, 0 = straight drilling
+    CycleKind cycle = CycleKind::Drill;  // drill cycles: what the cycle does
+    double pitch = 0.0;    // tapping cycles: the thread's pitch [mm per revolution]
     friend bool operator==(const Move&, const Move&) = default;
 };
 

@@ -11,6 +11,7 @@
 #include "check/unit_checks.h"
 #include "machine/machine.h"
 #include "model/cavity.h"
+#include "model/contour.h"
 #include "io/json_fields.h"
 #include "model/diagnostic.h"
 #include "model/geometry.h"
@@ -69,6 +70,10 @@ public:
     // Top-view outline at the stock top for the interference check, the unit
     // order and the preview; nullopt for a unit with no figure in the XY plane.
     virtual std::optional<Quad> topOutline(const ModuleInput& mm) const = 0;
+    // A figure of any outline (contour units) gives the box around it as
+    // its topOutline and the outline itself here, flattened to 1 µm; empty
+    // for a figure that is its quad.
+    virtual std::vector<Point2> topPolygon(const ModuleInput& /*mm*/) const { return {}; }
     // The field an overlap is reported on ("corners").
     virtual const char* outlineField() const = 0;
     // The same unit moved by `delta` in XY (the station places a new or
@@ -82,6 +87,14 @@ public:
 
     // The station's form, top to bottom (the tab order).
     virtual const std::vector<FormField>& fields() const = 0;
+    // Contour units: the contours the unit names are given to it from the
+    // job's evaluated figure (name -> contour in mm, closed or open), before
+    // it is checked and planned. Nothing for other modules.
+    virtual void resolveContours(ModuleInput& /*mm*/, const ContourTable& /*contours*/) const {}
+    // Contour units: figure-element text defining the contours makeDefault's
+    // unit names, inside `stock` (in the job's unit: the text is in it too),
+    // for a job that has no figure yet. Empty for other modules.
+    virtual std::string defaultFigure(const Stock& /*stock*/) const { return {}; }
     // What a setup unit hands on besides steps (probing: the measured centre
     // and the probing cycle); nothing for machining units. Inputs are checked
     // and in mm.

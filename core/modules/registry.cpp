@@ -9,7 +9,9 @@
     X(m4)                \
     X(m2d)               \
     X(probe)             \
-    X(turn)
+    X(turn)              \
+    X(cp)                \
+    X(holes)
 
 namespace taiwa {
 

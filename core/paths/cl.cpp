@@ -11,6 +11,17 @@ namespace taiwa {
 
 ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
+    if (!step.holes.empty()) return paths::holeCycles(step, tool, params);  // hole patterns (module HOLES)
+    if (step.region) {
+        switch (step.kind) {
+        case StepKind::Roughing:
+            if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+            return paths::regionRoughing(step, tool, tech, params);
+        case StepKind::FloorFinishing: return paths::regionFloorFinishing(step, tool, tech, params);
+        case StepKind::WallFinishing: return paths::regionWallFinishing(step, tool, tech, params);
+        default: break;
+        }
+    }
     switch (step.kind) {
     case StepKind::PilotHole: return paths::pilotHole(step, tool, params);
     case StepKind::Roughing:
@@ -60,8 +71,10 @@ double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapid
             // at the feed; each peck retracts to the R plane and rapids back
             // to its depth; rapid out to R and back to the initial level.
             const double drilled = m.retractZ - m.end.z;
-            rapid += std::hypot(m.end.x - at.x, m.end.y - at.y) + 2 * std::abs(at.z - m.retractZ) + drilled;
-            cut += drilled;
+            // Tapping and reaming come out at the feed, the others rapid.
+            const bool fedOut = m.cycle == CycleKind::Tap || m.cycle == CycleKind::Ream;
+            rapid += std::hypot(m.end.x - at.x, m.end.y - at.y) + 2 * std::abs(at.z - m.retractZ) + (fedOut ? 0.0 : drilled);
+            cut += fedOut ? 2 * drilled : drilled;
             if (m.peck > 0.0)
                 for (double reached = m.peck; reached < drilled - 1e-9; reached += m.peck) rapid += 2 * reached;
             at = {m.end.x, m.end.y, at.z};
@@ -75,11 +88,23 @@ double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapid
 
 double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
+    if (!step.holes.empty()) return static_cast<double>(step.holes.size()) + 2;  // a cycle a hole
     const double D = std::max(tool.diameter, 1e-3);
     const double layers = std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
     const double rings =
-        step.outline ? std::ceil(inscribedRadius(step.outline->corners) / std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1
-                     : 1;
+        std::ceil((step.region ? step.inscribed : step.outline ? inscribedRadius(step.outline->corners) : 0.0) /
+                  std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1;
+    if (step.region) {  // a ring of a contour has about as many moves as the flattened region has points
+        double points = static_cast<double>(flatten(step.region->outer, 1e-4).size());
+        for (const auto& i : step.region->islands) points += static_cast<double>(flatten(i, 1e-4).size());
+        if (step.kind == StepKind::Roughing) return layers * rings * points;
+        if (step.kind == StepKind::FloorFinishing) return rings * points;
+        if (step.kind == StepKind::WallFinishing) {  // exact lines and arcs: about two moves a segment, a lead each loop
+            double segments = static_cast<double>(step.region->outer.segments.size());
+            for (const auto& i : step.region->islands) segments += static_cast<double>(i.segments.size()) + 6;
+            return (step.multiIncision ? layers : 1) * (2 * segments + 10);
+        }
+    }
     constexpr double kMovesPerRing = 12;  // four sides, four corners, links
     switch (step.kind) {
     case StepKind::PilotHole: return 10;

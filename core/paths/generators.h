@@ -1,6 +1,7 @@
 // The tool-path generators of the step kinds, one source file each:
 // pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
-// inclined_face.cpp, pilot_hole.cpp. makeToolPath dispatches to them.
+// inclined_face.cpp, pilot_hole.cpp; steps of contour units (Step::region)
+// region_pocket.cpp and region_walls.cpp. makeToolPath dispatches to them.
 #pragma once
 
 #include "model/step.h"
@@ -15,6 +16,10 @@ ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& p);
+ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
+ToolPath regionFloorFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
+ToolPath regionWallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p);
+ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p);  // holes.cpp: hole patterns
 
 }  // namespace taiwa::paths

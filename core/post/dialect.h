@@ -80,6 +80,16 @@ struct Dialect {
     std::string peckDrill = "G83";      // peck depth in Q
     std::string cycleCancel = "G80";
     std::string cycleRetract = "G98";   // back to the initial level after each hole
+    // Hole patterns' cycles: right-hand tapping (F = pitch x S; "G33.1":
+    // LinuxCNC's spindle-synchronised motion, written as moves to R, the
+    // G33.1 with K, and back up), what comes before it (FANUC's rigid
+    // tapping "M29 S{rpm}"), reaming (feed in and out), boring (spindle
+    // stopped at the bottom, rapid out; LinuxCNC's G86 wants P, the dwell).
+    std::string tap = "G84";
+    std::string rigidTapping;
+    std::string ream = "G85";
+    std::string bore = "G86";
+    bool boreDwell = false;             // "P0" with the boring cycle
     char dwellWord = 'P';               // G4 P<seconds> (LinuxCNC), G4 X<seconds> (FANUC), G4 F<seconds> (Siemens)
     // The lathe's stock removal cycle: FANUC 0i's two blocks (G71 U R, then
     // G71 P Q U W F) or the one block with the depth in D (Haas, FANUC 10/11).

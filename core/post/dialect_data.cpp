@@ -86,8 +86,12 @@ public:
                  {"spindleClockwise", &d.spindleClockwise}, {"spindleCounterClockwise", &d.spindleCounterClockwise},
                  {"spindleStop", &d.spindleStop}, {"coolantOn", &d.coolantOn}, {"coolantOff", &d.coolantOff},
                  {"drill", &d.drill}, {"peckDrill", &d.peckDrill}, {"cycleCancel", &d.cycleCancel},
-                 {"cycleRetract", &d.cycleRetract}, {"programEnd", &d.programEnd}})
+                 {"cycleRetract", &d.cycleRetract}, {"programEnd", &d.programEnd}, {"tap", &d.tap},
+                 {"ream", &d.ream}, {"bore", &d.bore}})
             *field = text(key, *field);
+        d.rigidTapping = text("rigidTapping", d.rigidTapping);
+        mustFill("rigidTapping", d.rigidTapping, "{rpm}", fmt::arg("rpm", 100));
+        d.boreDwell = flag("boreDwell", d.boreDwell);
         const std::string dwell = text("dwellWord", std::string(1, d.dwellWord));
         if (dwell != "P" && dwell != "X" && dwell != "F") fail("dwellWord", "must be \"P\", \"X\" or \"F\"");
         d.dwellWord = dwell[0];
@@ -104,7 +108,7 @@ private:
         "lengthDecimals", "feedDecimals", "upperCaseComments", "preamble", "moreWorkOffsets", "extendedWorkOffsets",
         "retract", "toolChange", "lengthOffset", "lengthOffsetWithZ", "spindleClockwise", "spindleCounterClockwise",
         "spindleStop", "coolantOn", "coolantOff", "drill", "peckDrill", "cycleCancel", "cycleRetract", "dwellWord",
-        "programEnd"};
+        "programEnd", "tap", "rigidTapping", "ream", "bore", "boreDwell"};
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const
     {

@@ -88,6 +88,7 @@ private:
     void requirePosition(const char* what) const;
     void cancelCycle();
     void sinumerikDrillCycle(const DrillCycle& cycle);
+    void synchronisedTap(const DrillCycle& cycle);  // LinuxCNC's G33.1: explicit moves
     void forgetModalState();
 
     const Dialect& dialect_;
@@ -109,6 +110,7 @@ private:
     std::string cycleWords_;                       // " Z.. R.. Q.." of the active cycle
     std::string pendingLengthOffset_;              // "G43 H1" waiting for the first Z move (FANUC)
     bool workOffsetDue_ = false;                   // restate the work offset with the next XY move
+    double rpm_ = 0.0;                             // the spindle speed last set (tapping cycles state it)
 };
 
 }  // namespace taiwa::post

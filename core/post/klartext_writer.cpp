@@ -247,6 +247,10 @@ void KlartextWriter::drillCycle(const DrillCycle& c)
     const double rtp = std::max(*axis_[Z], c.retractZ);
     const double depth = c.bottom.z - c.retractZ;
     const std::string feed = formatNumber(c.feed, feedDecimals_, false);
+    if (c.cycle != CycleKind::Drill) {
+        holeCycle(c, rtp);
+        return;
+    }
     const std::string q[] = {
         "Q200=+0 ;SET-UP CLEARANCE ~",
         fmt::format("Q201={} ;DEPTH ~", number(depth)),
@@ -261,6 +265,43 @@ void KlartextWriter::drillCycle(const DrillCycle& c)
     for (const auto& l : q) all += l + "\n";
     if (all != cycle_) {
         block(c.peck > 0 ? dialect_.peckDrill + " ~" : dialect_.drill + " ~");
+        for (const auto& l : q) continuation(l);
+        cycle_ = all;
+    }
+    block(fmt::format("L X{} Y{} R0 FMAX", number(c.bottom.x), number(c.bottom.y)) + takeMFunctions() + " M99");
+    axis_ = {asRead(c.bottom.x), asRead(c.bottom.y), asRead(rtp)};
+    exact_ = {c.bottom.x, c.bottom.y, rtp};
+}
+
+void KlartextWriter::holeCycle(const DrillCycle& c, double rtp)
+{
+    // Cycles 207 (rigid tapping: the pitch in Q239, the speed the TOOL
+    // CALL's), 201 (reaming: in and out at the feed) and 202 (boring: the
+    // spindle stopped at 0°, no lift off the wall, out at the feed).
+    const double depth = c.bottom.z - c.retractZ;
+    const std::string feed = "+" + formatNumber(c.feed, feedDecimals_, false);
+    std::vector<std::string> q{"Q200=+0 ;SET-UP CLEARANCE ~", fmt::format("Q201={} ;DEPTH ~", number(depth))};
+    std::string head;
+    if (c.cycle == CycleKind::Tap) {
+        head = dialect_.tap;
+        q.push_back(fmt::format("Q239={} ;THREAD PITCH ~", number(c.pitch)));
+    } else {
+        head = c.cycle == CycleKind::Ream ? dialect_.ream : dialect_.bore;
+        q.push_back(fmt::format("Q206={} ;FEED RATE FOR PLNGNG ~", feed));
+        q.push_back("Q211=+0 ;DWELL TIME AT DEPTH ~");
+        q.push_back(fmt::format("Q208={} ;RETRACTION FEED RATE ~", feed));
+    }
+    q.push_back(fmt::format("Q203={} ;SURFACE COORDINATE ~", number(c.retractZ)));
+    q.push_back(fmt::format("Q204={} ;2ND SET-UP CLEARANCE", number(rtp - c.retractZ)));
+    if (c.cycle == CycleKind::Bore) {
+        q.back() += " ~";
+        q.push_back("Q214=+0 ;DISENGAGING DIRECTN ~");
+        q.push_back("Q336=+0 ;ANGLE OF SPINDLE");
+    }
+    std::string all = head + "\n";
+    for (const auto& l : q) all += l + "\n";
+    if (all != cycle_) {
+        block(head + " ~");
         for (const auto& l : q) continuation(l);
         cycle_ = all;
     }

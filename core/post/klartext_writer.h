@@ -40,6 +40,7 @@ public:
     void feed(const Point3& to, double feedRate) override;
     void arc(const Point3& to, Point2 centre, bool clockwise, double feedRate) override;
     void drillCycle(const DrillCycle& cycle) override;
+    void holeCycle(const DrillCycle& cycle, double rtp);  // tapping, reaming, boring
     void dwell(double seconds) override;
     void programEnd() override;
 

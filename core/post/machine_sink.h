@@ -34,7 +34,9 @@ struct DrillCycle {
     Point3 bottom{};         // hole position and depth
     double retractZ = 0.0;   // R plane
     double peck = 0.0;       // 0: straight drilling (G81), else pecking (G83 Q)
-    double feed = 0.0;
+    double feed = 0.0;       // tapping: pitch x S
+    CycleKind cycle = CycleKind::Drill;  // drill, tap, ream or bore (model/toolpath.h)
+    double pitch = 0.0;      // tapping: the thread's pitch, per revolution
 };
 
 enum class SpindleDirection { Off, Clockwise, CounterClockwise };

@@ -129,7 +129,9 @@ private:
         case MoveKind::ArcCW: sink_.arc(m.end, m.centre, true, f); break;
         case MoveKind::ArcCCW: sink_.arc(m.end, m.centre, false, f); break;
         case MoveKind::DrillCycle:
-            sink_.drillCycle({m.end, m.retractZ, m.peck, sf.feed});
+            // Tapping feeds the pitch a revolution, whatever the tool's data say.
+            sink_.drillCycle({m.end, m.retractZ, m.peck, m.cycle == CycleKind::Tap ? m.pitch * sf.rpm : sf.feed, m.cycle,
+                              m.pitch});
             // G98: back at the initial level, or at R when that is higher.
             at_ = Point3{m.end.x, m.end.y, std::max(at_.z, m.retractZ)};
             return;

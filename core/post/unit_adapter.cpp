@@ -23,7 +23,7 @@ void InchAdapter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
 
 void InchAdapter::drillCycle(const DrillCycle& cycle)
 {
-    next_.drillCycle({inch(cycle.bottom), inch(cycle.retractZ), inch(cycle.peck), inch(cycle.feed)});
+    next_.drillCycle({inch(cycle.bottom), inch(cycle.retractZ), inch(cycle.peck), inch(cycle.feed), cycle.cycle, inch(cycle.pitch)});
 }
 
 }  // namespace taiwa::post

@@ -15,8 +15,9 @@ struct SpeedsFeeds {
     friend bool operator==(const SpeedsFeeds&, const SpeedsFeeds&) = default;
 };
 
-// n = 1000 vc / (pi D), rounded to whole rpm; feed = n * fz * flutes (drills:
-// n * f). Clamped to the machine limits. nullopt when the tool has no cutting
+// n = 1000 vc / (pi D), rounded to whole rpm; feed = n * fz * flutes (drills,
+// reamers, boring bars: n * f; taps: n * pitch exactly, n lowered to keep
+// the feed within its limit). Clamped to the machine limits. nullopt when the tool has no cutting
 // data for the material.
 std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& material, double maxRpm = 12000.0,
                                        double maxFeed = 10000.0);

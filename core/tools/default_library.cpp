@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <tuple>
 
 namespace taiwa {
 
@@ -94,6 +95,63 @@ Tool lathe(int id, ToolType type, std::string name, std::string code, double nos
 
 }  // namespace
 
+// Taps cut at a tenth of a drill's surface speed; their feed is the pitch
+// per revolution. Reamers at half a drill's speed and twice its feed per
+// revolution; boring tools at 0.8 of an end mill's surface speed, 0.05 mm a
+// revolution (speedsFeeds takes all three per revolution, as drills).
+std::vector<Tool> defaultHoleTools()
+{
+    std::vector<Tool> tools;
+    const std::pair<int, double> tapDrills[] = {{17, 2.5}, {18, 3.3}, {19, 4.2}};
+    for (const auto& [id, d] : tapDrills)
+        tools.push_back(make(id, ToolType::Drill, d, fmt::format("Twist drill {} mm carbide 5xD", d), 5 * d + 5, 5 * d + 20,
+                             "ER32 collet chuck", 2, 120));
+    const std::tuple<int, int, double> taps[] = {{61, 3, 0.5}, {62, 4, 0.7}, {63, 5, 0.8}, {64, 6, 1.0},
+                                                 {65, 8, 1.25}, {66, 10, 1.5}, {67, 12, 1.75}};
+    for (const auto& [id, size, pitch] : taps) {
+        Tool t = make(id, ToolType::Tap, size, fmt::format("Machine tap M{}x{} HSS-E form C", size, pitch), 3 * size + 6,
+                      5 * size + 25, "Tapping chuck ER32", 3, 60);
+        t.turning.pitchMin = t.turning.pitchMax = pitch;
+        t.turning.threadAngle = 60;
+        t.pointAngle = 0;
+        t.cutting = cuttingFor(ToolType::Drill, size);
+        for (auto& c : t.cutting) {
+            c.surfaceSpeed /= 10.0;
+            c.feedPerTooth = pitch;
+            c.plungeFactor = 1.0;
+        }
+        tools.push_back(t);
+    }
+    const std::pair<int, double> reamers[] = {{74, 6}, {75, 8}, {76, 10}, {77, 12}};
+    for (const auto& [id, d] : reamers) {
+        tools.push_back(make(id - 4, ToolType::Drill, d - 0.2, fmt::format("Twist drill {} mm carbide 5xD", d - 0.2),
+                             5 * d + 5, 5 * d + 20, "ER32 collet chuck", 2, 120));
+        Tool t = make(id, ToolType::Reamer, d, fmt::format("Machine reamer {} mm H7 carbide", d), 3 * d + 10, 5 * d + 30,
+                      "HSK63 shrink-fit", 6, 120);
+        t.pointAngle = 0;
+        t.cutting = cuttingFor(ToolType::Drill, d);
+        for (auto& c : t.cutting) {
+            c.surfaceSpeed /= 2.0;
+            c.feedPerTooth *= 2.0;
+        }
+        tools.push_back(t);
+    }
+    const std::pair<int, double> bores[] = {{80, 16}, {81, 20}, {82, 25}};
+    for (const auto& [id, d] : bores) {
+        Tool t = make(id, ToolType::BoringBar, d, fmt::format("Fine boring head set to {} mm", d), 3 * d, 4 * d + 20,
+                      "HSK63 boring head", 1, 120);
+        t.cornerRadius = 0.2;
+        t.pointAngle = 0;
+        for (auto& c : t.cutting) {
+            c.surfaceSpeed *= 0.8;
+            c.feedPerTooth = 0.05;
+            c.plungeFactor = 1.0;
+        }
+        tools.push_back(t);
+    }
+    return tools;
+}
+
 // The lathe's tools, T101 on: OD roughing and finishing, ID boring, a
 // grooving and a parting blade, a threading insert.
 std::vector<Tool> defaultLatheTools()
@@ -180,6 +238,10 @@ std::vector<Tool> defaultToolLibrary()
     // T60: face mill.
     tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 240));
     tools.back().centreCutting = false;  // inserts on the rim only: it cannot plunge
+    // T17-T19: the tap drills of M3-M5; T70-T73: the pre-drills of the
+    // reamers (0.2 mm under); T61-T67 taps, T74-T77 reamers, T80-T82
+    // boring tools set to their bore (module HOLES).
+    for (Tool& t : defaultHoleTools()) tools.push_back(std::move(t));
     // T90: touch probe for work-centre probing, 4 mm ruby ball; its length
     // is set to the ball's lowest point. It cuts nothing: no cutting data.
     Tool probe = make(90, ToolType::Probe, 4, "Touch probe, 4 mm ruby ball", 0, 50, "HSK63 probe body", 0, 0);
@@ -187,6 +249,8 @@ std::vector<Tool> defaultToolLibrary()
     probe.centreCutting = false;
     tools.push_back(probe);
     for (Tool& t : defaultLatheTools()) tools.push_back(std::move(t));
+    // In the order of their ids, as the library reads them back.
+    std::stable_sort(tools.begin(), tools.end(), [](const Tool& a, const Tool& b) { return a.id < b.id; });
     return tools;
 }
 

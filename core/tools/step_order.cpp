@@ -14,12 +14,16 @@ namespace {
 
 // Rank of a step within its unit: the pilot hole, then roughing, then the
 // finishing steps (which depend on all roughing, not on each other, except
-// wall passes that follow their number).
+// wall passes that follow their number); holes: centre drilling, drilling,
+// then tapping, reaming or boring.
 int rank(const Step& s)
 {
     switch (s.kind) {
     case StepKind::PilotHole: return 0;
     case StepKind::Roughing: return 1;
+    // Hole patterns: centre drilling, drilling, then tapping, reaming, boring.
+    case StepKind::CentreDrilling: return 0;
+    case StepKind::Drilling: return 1;
     default: return 2;
     }
 }

@@ -40,6 +40,10 @@ std::vector<ToolProblem> toolProblems(const Tool& t)
         bad("stickout", fmt::format("stick-out {:g} mm is shorter than the flutes ({:g} mm)", t.stickout, t.fluteLength));
     if (t.flutes < 1 && t.type != ToolType::Probe)  // a probe cuts nothing
         bad("flutes", "flutes " + std::to_string(t.flutes) + " must be at least 1");
+    if (t.type == ToolType::Tap && (!(t.turning.pitchMin > 0) || !finite(t.turning.pitchMin) || t.turning.pitchMin > 10 ||
+                                    t.turning.pitchMax != t.turning.pitchMin))
+        bad("pitch", fmt::format("a tap's pitch {:g} mm must be greater than zero, at most 10 mm (one pitch)",
+                                 t.turning.pitchMin));
     if (!(t.lifeMinutes >= 0) || !finite(t.lifeMinutes))
         bad("lifeMinutes", fmt::format("life {:g} min must not be negative", t.lifeMinutes));
     if (!(t.usedMinutes >= 0) || !finite(t.usedMinutes))

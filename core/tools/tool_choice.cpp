@@ -29,6 +29,10 @@ Fit fitFor(const Step& s)
         f.cornerRadius = s.outline->cornerRadius;
         f.maxDiameter = inscribedRadius(s.outline->corners);  // at most half the pocket's width
     }
+    if (s.region) {  // a contour: its narrowest channel and smallest inside corner; at most half its widest place
+        f.cornerRadius = s.reach;
+        f.maxDiameter = s.inscribed;
+    }
     if (s.kind == StepKind::InclinedFaceFinishing && s.face) {
         // No corner radius to fit: the ball runs along the face (along Y);
         // its radius at most half the face's length and at most 6 mm.

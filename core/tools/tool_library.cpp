@@ -19,7 +19,7 @@ namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 5;
+constexpr int kSchemaVersion = 6;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -34,7 +34,7 @@ CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 5;
+PRAGMA user_version = 6;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
@@ -54,6 +54,10 @@ constexpr const char* kMigrations[] = {
     // read from the holder's name, as before).
     "ALTER TABLE tools ADD COLUMN holder_diameter REAL NOT NULL DEFAULT 0; "
     "ALTER TABLE tools ADD COLUMN holder_length REAL NOT NULL DEFAULT 0; PRAGMA user_version = 5;",
+    // 5 -> 6: hole patterns' tools (taps, reamers, boring heads, tap drills
+    // and reaming pre-drills), added after it where their ids are free
+    // (addFreeTools).
+    "PRAGMA user_version = 6;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
@@ -98,11 +102,11 @@ bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, 
 
 bool insert(sqlite3* db, const Tool& t);
 
-// Upgrading to version 4: the default lathe tools whose ids the library does
-// not use yet.
-bool addLatheTools(sqlite3* db)
+// Upgrading to version 4 (6): the default lathe (hole) tools whose ids the
+// library does not use yet.
+bool addFreeTools(sqlite3* db, const std::vector<Tool>& tools)
 {
-    for (const Tool& t : defaultLatheTools()) {
+    for (const Tool& t : tools) {
         Statement used(db, "SELECT count(*) FROM tools WHERE id = ?");
         used.bind(1, t.id);
         if (!used.ok() || used.step() != SQLITE_ROW) return false;
@@ -244,7 +248,8 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         // An older library: every migration from its version on, in one transaction.
         bool ok = exec(db, "BEGIN IMMEDIATE");
         for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
-        if (v < 4) ok = ok && addLatheTools(db);
+        if (v < 4) ok = ok && addFreeTools(db, defaultLatheTools());
+        if (v < 6) ok = ok && addFreeTools(db, defaultHoleTools());
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");

@@ -23,6 +23,10 @@ std::vector<Tool> defaultToolLibrary();
 // bar, grooving and parting blades, a threading insert); a library of an
 // older version gets those whose ids are free when it is upgraded.
 std::vector<Tool> defaultLatheTools();
+// Its tools for hole patterns (module HOLES): tap drills T17-T19, taps
+// T61-T67, reaming pre-drills T70-T73, reamers T74-T77, boring heads
+// T80-T82; a library of an older version gets those whose ids are free.
+std::vector<Tool> defaultHoleTools();
 
 // Where the library lives unless configured: $TAIWA_TOOL_DB, else
 // $XDG_DATA_HOME/taiwa/tools.sqlite, else ~/.local/share/taiwa/tools.sqlite.

@@ -3,6 +3,88 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
     <context>
+        <name>taiwa::ui::FigurePanel</name>
+        <message>
+            <source>Figure elements, one statement a line</source>
+            <translation>図形要素 (1 行に 1 文)</translation>
+        </message>
+        <message>
+            <source>P1 = POINT/10, 20
+L1 = LINE/P1, ATANGL, 90
+K1 = CONTOUR/L1, ROUND, 5, L2, …</source>
+            <translation>P1 = POINT/10, 20
+L1 = LINE/P1, ATANGL, 90
+K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
+        </message>
+        <message>
+            <source>What the text refuses; click one to go to its place</source>
+            <translation>テキストのエラー。クリックするとその箇所へ移動します</translation>
+        </message>
+        <message>
+            <source>Revise chamfer</source>
+            <translation>面取りを修正</translation>
+        </message>
+        <message>
+            <source>Revise rounding</source>
+            <translation>丸みを修正</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>全体表示</translation>
+        </message>
+        <message>
+            <source>Frame the stock, the points and the contours</source>
+            <translation>素材・点・輪郭の全体を表示</translation>
+        </message>
+        <message>
+            <source>Edit figure</source>
+            <translation>図形を編集</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no chamfer.</source>
+            <translation>図形の輪郭に面取りはありません。</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no rounding.</source>
+            <translation>図形の輪郭に丸みはありません。</translation>
+        </message>
+        <message>
+            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
+            <translation>変更する面取りをビューでクリックしてください (図形に %1 個)。</translation>
+        </message>
+        <message>
+            <source>Click a rounding in the view to change it (%1 in the figure).</source>
+            <translation>変更する丸みをビューでクリックしてください (図形に %1 個)。</translation>
+        </message>
+        <message>
+            <source>%1: chamfer between %2 and %3, length</source>
+            <translation>%1: %2 と %3 の間の面取り、長さ</translation>
+        </message>
+        <message>
+            <source>%1: rounding between %2 and %3, radius</source>
+            <translation>%1: %2 と %3 の間の丸み、半径</translation>
+        </message>
+        <message>
+            <source>The text has a refusal: correct it before revising a corner.</source>
+            <translation>テキストにエラーがあります。角を修正する前に直してください。</translation>
+        </message>
+        <message>
+            <source>Revise corner %1 of %2</source>
+            <translation>%2 の角 %1 を修正</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::FigureView</name>
+        <message>
+            <source>Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit.</source>
+            <translation>クリック: 要素を選択。ホイール: ズーム。ドラッグ: 移動。ダブルクリック: 全体表示。</translation>
+        </message>
+        <message>
+            <source>X →  Y ↑   wheel: zoom, drag: pan, double click: fit</source>
+            <translation>X →  Y ↑   ホイール: ズーム、ドラッグ: 移動、ダブルクリック: 全体表示</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FileActions</name>
         <message>
             <source>Unsaved changes</source>
@@ -565,8 +647,16 @@
             <translation>ユニット</translation>
         </message>
         <message>
+            <source>3-D view</source>
+            <translation>3D ビュー</translation>
+        </message>
+        <message>
             <source>No 3-D preview: this display has no OpenGL.</source>
             <translation>3D プレビューなし: このディスプレイは OpenGL を使えません。</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>図形</translation>
         </message>
         <message>
             <source>&amp;File</source>
@@ -681,6 +771,10 @@
             <translation>素材グリッド: この素材では %1 mm のセル</translation>
         </message>
         <message>
+            <source>Edit %1 of unit %2</source>
+            <translation>ユニット %2 の %1 を編集</translation>
+        </message>
+        <message>
             <source>%1 of unit %2</source>
             <translation>ユニット %2 の %1</translation>
         </message>
@@ -699,10 +793,6 @@
         <message>
             <source>Feed of %1, unit %2</source>
             <translation>%1の送り (ユニット %2)</translation>
-        </message>
-        <message>
-            <source>Edit %1 of unit %2</source>
-            <translation>ユニット %2 の %1 を編集</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -1082,6 +1172,10 @@
             <translation>ユニット名</translation>
         </message>
         <message>
+            <source>not a whole number</source>
+            <translation>整数ではありません</translation>
+        </message>
+        <message>
             <source>not a number</source>
             <translation>数値ではありません</translation>
         </message>
@@ -1306,6 +1400,50 @@
     <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
+            <source>Outline</source>
+            <translation>輪郭</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>アイランド</translation>
+        </message>
+        <message>
+            <source>T (depth)</source>
+            <translation>T(深さ)</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(工具使用区分)</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(仕上げ区分)</translation>
+        </message>
+        <message>
+            <source>The contour of the figure that is the pocket's edge at the top (e.g. K1)</source>
+            <translation>ポケットの上面での縁となる図形の輪郭 (例: K1)</translation>
+        </message>
+        <message>
+            <source>Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none</source>
+            <translation>ポケット内に残すアイランドとなる図形の輪郭、カンマ区切り (例: K2, K3)。なければ空欄</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>ポケットの深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
+        </message>
+        <message>
             <source>Step-over (× D)</source>
             <translation>ステップオーバ(× D)</translation>
         </message>
@@ -1314,16 +1452,100 @@
             <translation>技術データの値</translation>
         </message>
         <message>
+            <source>Pattern</source>
+            <translation>配置</translation>
+        </message>
+        <message>
+            <source>X (hole, first hole or centre)</source>
+            <translation>X (穴、最初の穴または中心)</translation>
+        </message>
+        <message>
+            <source>Y</source>
+            <translation>Y</translation>
+        </message>
+        <message>
+            <source>Angle (°)</source>
+            <translation>角度 (°)</translation>
+        </message>
+        <message>
+            <source>Pitch</source>
+            <translation>ピッチ</translation>
+        </message>
+        <message>
+            <source>Pitch between rows</source>
+            <translation>行間ピッチ</translation>
+        </message>
+        <message>
+            <source>Radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>Angular pitch (°)</source>
+            <translation>角度ピッチ (°)</translation>
+        </message>
+        <message>
+            <source>Count (grid: columns)</source>
+            <translation>個数 (格子: 列数)</translation>
+        </message>
+        <message>
+            <source>Rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>Hole</source>
+            <translation>穴</translation>
+        </message>
+        <message>
+            <source>Thread (tapped)</source>
+            <translation>ねじ (タップ)</translation>
+        </message>
+        <message>
+            <source>Diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>Depth (full diameter)</source>
+            <translation>深さ (全径部)</translation>
+        </message>
+        <message>
+            <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
+            <translation>穴の配置: 単独、直線、格子、ボルト円、円弧</translation>
+        </message>
+        <message>
+            <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
+            <translation>単独の穴、直線の最初の穴、格子の角、円の中心</translation>
+        </message>
+        <message>
+            <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
+            <translation>直線・格子の行の方向。円では最初の穴の角度</translation>
+        </message>
+        <message>
+            <source>Grid: distance between rows</source>
+            <translation>格子: 行と行の間隔</translation>
+        </message>
+        <message>
+            <source>Distance between neighbouring holes along the row</source>
+            <translation>行に沿って隣り合う穴の間隔</translation>
+        </message>
+        <message>
+            <source>Arc: angle between neighbouring holes</source>
+            <translation>円弧: 隣り合う穴の間の角度</translation>
+        </message>
+        <message>
+            <source>Drilled, tapped, reamed or bored: which steps each hole gets</source>
+            <translation>ドリル、タップ、リーマ、中ぐり: 各穴の加工工程</translation>
+        </message>
+        <message>
+            <source>Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper</source>
+            <translation>全径部 (完全ねじ部) の深さ、上面から下へ。ドリル先端はさらに深くなります</translation>
+        </message>
+        <message>
             <source>L1 (length X)</source>
             <translation>L1(X 方向長さ)</translation>
         </message>
         <message>
             <source>L2 (length Y)</source>
             <translation>L2(Y 方向長さ)</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深さ)</translation>
         </message>
         <message>
             <source>θ1 (left wall, °)</source>
@@ -1340,10 +1562,6 @@
         <message>
             <source>r1 (corner radius)</source>
             <translation>r1(コーナ半径)</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(工具使用区分)</translation>
         </message>
         <message>
             <source>H (pilot hole)</source>
@@ -1366,10 +1584,6 @@
             <translation>開口の Y 方向の幅 (上面)</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>ポケットの深さ (上面から下へ)</translation>
-        </message>
-        <message>
             <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
             <translation>L1 の始まり側の壁の傾き (垂直からの角度)</translation>
         </message>
@@ -1382,10 +1596,6 @@
             <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
         </message>
         <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
-        </message>
-        <message>
             <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
             <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
         </message>
@@ -1394,16 +1604,8 @@
             <translation>傾斜壁でボールエンドミルのパス間に残ってよい最大のカスプ高さ</translation>
         </message>
         <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
-        </message>
-        <message>
             <source>S (taper, °/side)</source>
             <translation>S(テーパ、片側 °)</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(仕上げ区分)</translation>
         </message>
         <message>
             <source>A corner of the pocket at the top surface, in work coordinates</source>
@@ -1412,10 +1614,6 @@
         <message>
             <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
             <translation>壁のテーパ (片側、度)；垂直な壁は 0</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
         </message>
         <message>
             <source>Shape</source>
@@ -1540,6 +1738,14 @@
     </context>
     <context>
         <name>taiwa::ui::ModulePalette</name>
+        <message>
+            <source>Add contour pocket</source>
+            <translation>輪郭ポケットを追加</translation>
+        </message>
+        <message>
+            <source>Add hole pattern</source>
+            <translation>穴パターンを追加</translation>
+        </message>
         <message>
             <source>Add M2D 3-D pocket</source>
             <translation>M2D 立体ポケットを追加</translation>

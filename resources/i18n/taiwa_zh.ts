@@ -3,6 +3,88 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
     <context>
+        <name>taiwa::ui::FigurePanel</name>
+        <message>
+            <source>Figure elements, one statement a line</source>
+            <translation>图形元素（每行一条语句）</translation>
+        </message>
+        <message>
+            <source>P1 = POINT/10, 20
+L1 = LINE/P1, ATANGL, 90
+K1 = CONTOUR/L1, ROUND, 5, L2, …</source>
+            <translation>P1 = POINT/10, 20
+L1 = LINE/P1, ATANGL, 90
+K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
+        </message>
+        <message>
+            <source>What the text refuses; click one to go to its place</source>
+            <translation>文本中被拒绝之处；单击可跳到其位置</translation>
+        </message>
+        <message>
+            <source>Revise chamfer</source>
+            <translation>修改倒角</translation>
+        </message>
+        <message>
+            <source>Revise rounding</source>
+            <translation>修改圆角</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>适合窗口</translation>
+        </message>
+        <message>
+            <source>Frame the stock, the points and the contours</source>
+            <translation>显示毛坯、点和轮廓的全部</translation>
+        </message>
+        <message>
+            <source>Edit figure</source>
+            <translation>编辑图形</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no chamfer.</source>
+            <translation>图形的轮廓中没有倒角。</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no rounding.</source>
+            <translation>图形的轮廓中没有圆角。</translation>
+        </message>
+        <message>
+            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
+            <translation>在视图中单击要修改的倒角（图形中共 %1 个）。</translation>
+        </message>
+        <message>
+            <source>Click a rounding in the view to change it (%1 in the figure).</source>
+            <translation>在视图中单击要修改的圆角（图形中共 %1 个）。</translation>
+        </message>
+        <message>
+            <source>%1: chamfer between %2 and %3, length</source>
+            <translation>%1：%2 与 %3 之间的倒角，长度</translation>
+        </message>
+        <message>
+            <source>%1: rounding between %2 and %3, radius</source>
+            <translation>%1：%2 与 %3 之间的圆角，半径</translation>
+        </message>
+        <message>
+            <source>The text has a refusal: correct it before revising a corner.</source>
+            <translation>文本有错误：请先更正，再修改拐角。</translation>
+        </message>
+        <message>
+            <source>Revise corner %1 of %2</source>
+            <translation>修改 %2 的拐角 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::FigureView</name>
+        <message>
+            <source>Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit.</source>
+            <translation>单击：选取元素。滚轮：缩放。拖动：平移。双击：适合窗口。</translation>
+        </message>
+        <message>
+            <source>X →  Y ↑   wheel: zoom, drag: pan, double click: fit</source>
+            <translation>X →  Y ↑   滚轮：缩放，拖动：平移，双击：适合窗口</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FileActions</name>
         <message>
             <source>Unsaved changes</source>
@@ -565,8 +647,16 @@
             <translation>单元</translation>
         </message>
         <message>
+            <source>3-D view</source>
+            <translation>3D 视图</translation>
+        </message>
+        <message>
             <source>No 3-D preview: this display has no OpenGL.</source>
             <translation>无 3D 预览:此显示器不支持 OpenGL。</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>图形</translation>
         </message>
         <message>
             <source>&amp;File</source>
@@ -681,6 +771,10 @@
             <translation>毛坯网格:此毛坯上为 %1 mm 单元格</translation>
         </message>
         <message>
+            <source>Edit %1 of unit %2</source>
+            <translation>编辑单元 %2 的 %1</translation>
+        </message>
+        <message>
             <source>%1 of unit %2</source>
             <translation>单元 %2 的 %1</translation>
         </message>
@@ -699,10 +793,6 @@
         <message>
             <source>Feed of %1, unit %2</source>
             <translation>%1 的进给（单元 %2）</translation>
-        </message>
-        <message>
-            <source>Edit %1 of unit %2</source>
-            <translation>编辑单元 %2 的 %1</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -1082,6 +1172,10 @@
             <translation>单元名称</translation>
         </message>
         <message>
+            <source>not a whole number</source>
+            <translation>不是整数</translation>
+        </message>
+        <message>
             <source>not a number</source>
             <translation>不是数字</translation>
         </message>
@@ -1306,6 +1400,50 @@
     <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
+            <source>Outline</source>
+            <translation>轮廓</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>岛</translation>
+        </message>
+        <message>
+            <source>T (depth)</source>
+            <translation>T(深度)</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(刀具使用)</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(侧壁精加工)</translation>
+        </message>
+        <message>
+            <source>The contour of the figure that is the pocket's edge at the top (e.g. K1)</source>
+            <translation>作为型腔顶面边缘的图形轮廓（例如 K1）</translation>
+        </message>
+        <message>
+            <source>Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none</source>
+            <translation>型腔中保留的岛的图形轮廓，用逗号分隔（例如 K2, K3）；无则留空</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>型腔深度，从上表面向下</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
+        </message>
+        <message>
             <source>Step-over (× D)</source>
             <translation>行距 (× D)</translation>
         </message>
@@ -1314,16 +1452,100 @@
             <translation>工艺数据的值</translation>
         </message>
         <message>
+            <source>Pattern</source>
+            <translation>排列方式</translation>
+        </message>
+        <message>
+            <source>X (hole, first hole or centre)</source>
+            <translation>X（孔、第一个孔或中心）</translation>
+        </message>
+        <message>
+            <source>Y</source>
+            <translation>Y</translation>
+        </message>
+        <message>
+            <source>Angle (°)</source>
+            <translation>角度 (°)</translation>
+        </message>
+        <message>
+            <source>Pitch</source>
+            <translation>间距</translation>
+        </message>
+        <message>
+            <source>Pitch between rows</source>
+            <translation>行间距</translation>
+        </message>
+        <message>
+            <source>Radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>Angular pitch (°)</source>
+            <translation>角度间距 (°)</translation>
+        </message>
+        <message>
+            <source>Count (grid: columns)</source>
+            <translation>数量（网格：列数）</translation>
+        </message>
+        <message>
+            <source>Rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>Hole</source>
+            <translation>孔</translation>
+        </message>
+        <message>
+            <source>Thread (tapped)</source>
+            <translation>螺纹（攻丝）</translation>
+        </message>
+        <message>
+            <source>Diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>Depth (full diameter)</source>
+            <translation>深度（全直径部分）</translation>
+        </message>
+        <message>
+            <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
+            <translation>孔的排列方式：单孔、直线、网格、螺栓圆或圆弧</translation>
+        </message>
+        <message>
+            <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
+            <translation>单孔、直线的第一个孔、网格的角点、圆的中心</translation>
+        </message>
+        <message>
+            <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
+            <translation>直线或网格各行的方向；圆上第一个孔的角度</translation>
+        </message>
+        <message>
+            <source>Grid: distance between rows</source>
+            <translation>网格：行与行的间距</translation>
+        </message>
+        <message>
+            <source>Distance between neighbouring holes along the row</source>
+            <translation>沿行相邻孔之间的距离</translation>
+        </message>
+        <message>
+            <source>Arc: angle between neighbouring holes</source>
+            <translation>圆弧：相邻孔之间的角度</translation>
+        </message>
+        <message>
+            <source>Drilled, tapped, reamed or bored: which steps each hole gets</source>
+            <translation>钻孔、攻丝、铰孔或镗孔：每个孔的加工工步</translation>
+        </message>
+        <message>
+            <source>Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper</source>
+            <translation>全直径（完整螺纹）部分的深度，从顶面向下；钻尖会更深</translation>
+        </message>
+        <message>
             <source>L1 (length X)</source>
             <translation>L1(X 向长度)</translation>
         </message>
         <message>
             <source>L2 (length Y)</source>
             <translation>L2(Y 向长度)</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深度)</translation>
         </message>
         <message>
             <source>θ1 (left wall, °)</source>
@@ -1340,10 +1562,6 @@
         <message>
             <source>r1 (corner radius)</source>
             <translation>r1(拐角半径)</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(刀具使用)</translation>
         </message>
         <message>
             <source>H (pilot hole)</source>
@@ -1366,10 +1584,6 @@
             <translation>开口沿 Y 的宽度（上表面）</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>型腔深度，从上表面向下</translation>
-        </message>
-        <message>
             <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
             <translation>L1 起始端侧壁的倾角（相对竖直方向，度）</translation>
         </message>
@@ -1382,10 +1596,6 @@
             <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
         </message>
         <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
-        </message>
-        <message>
             <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
             <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
         </message>
@@ -1394,16 +1604,8 @@
             <translation>球头铣刀在斜壁上两道刀路之间允许留下的最大残留高度</translation>
         </message>
         <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
-        </message>
-        <message>
             <source>S (taper, °/side)</source>
             <translation>S(斜度,单边 °)</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(侧壁精加工)</translation>
         </message>
         <message>
             <source>A corner of the pocket at the top surface, in work coordinates</source>
@@ -1412,10 +1614,6 @@
         <message>
             <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
             <translation>侧壁斜度（单边，度）；竖直侧壁为 0</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
         </message>
         <message>
             <source>Shape</source>
@@ -1540,6 +1738,14 @@
     </context>
     <context>
         <name>taiwa::ui::ModulePalette</name>
+        <message>
+            <source>Add contour pocket</source>
+            <translation>添加轮廓型腔</translation>
+        </message>
+        <message>
+            <source>Add hole pattern</source>
+            <translation>添加孔组</translation>
+        </message>
         <message>
             <source>Add M2D 3-D pocket</source>
             <translation>添加 M2D 三维型腔</translation>

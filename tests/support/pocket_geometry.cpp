@@ -1,12 +1,17 @@
 // Geometry oracle for the tests: finished pocket solids and tool gouge depth.
 #include "support/pocket_geometry.h"
 
+#include "modules/cp/cp.h"
 #include "modules/m2d/m2d.h"
+#include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <numbers>
 
 namespace taiwa::test {
@@ -49,6 +54,8 @@ Quad pocketSection(const ModuleInput& m, double depth)
 
 double pocketDepth(const ModuleInput& m)
 {
+    if (const auto* h = m.getIf<HolePattern>()) return h->depth;
+    if (const auto* cp = m.getIf<ContourPocket>()) return cp->depth;
     if (const auto* m4 = m.getIf<M4Pocket>()) return m4->depth;
     return m.as<M2DPocket>().depth;
 }
@@ -74,10 +81,54 @@ double signedDistance(const Quad& q, Point2 p)
     return signedDistanceSharp(core.corners, p) - rho;
 }
 
+namespace {
+
+// The exact region's signed distance of a contour pocket, made once per
+// unit (and again when the unit's region changes).
+std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
+{
+    static std::mutex lock;
+    static std::map<const ContourPocket*, std::pair<Region, std::shared_ptr<RegionDistance>>> known;
+    const std::lock_guard<std::mutex> hold(lock);
+    auto& [region, d] = known[&cp];
+    if (!d || !(region == cp.region.value())) {
+        region = cp.region.value();
+        d = std::make_shared<RegionDistance>(normalised(region));
+    }
+    return d;
+}
+
+}  // namespace
+
+double wallDistance(const ModuleInput& m, Point3 tip)
+{
+    if (const auto* cp = m.getIf<ContourPocket>()) return (*regionDistance(*cp))({tip.x, tip.y});
+    return signedDistance(pocketSection(m, -tip.z), {tip.x, tip.y});
+}
+
 double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
 {
     if (tip.z >= 0.0) return -std::numeric_limits<double>::infinity();
+    if (const auto* h = m.getIf<HolePattern>()) {
+        // Hole patterns: the tool inside the nearest hole's circle (of the
+        // thread's size when tapped: the tap drill is narrower), its tip no
+        // deeper than the drill's point allows (1 mm under the depth for a
+        // pre-drill, 3 pitches for a tap drill, then at most a 90° point).
+        const holes::Thread* thread = holes::findThread(h->thread);
+        const double d = thread ? thread->size : h->diameter;
+        double nearest = std::numeric_limits<double>::infinity();
+        for (const Point2 c : holes::positions(*h)) nearest = std::min(nearest, distance(c, {tip.x, tip.y}));
+        const double below = thread ? 3 * thread->pitch : h->hole == "drilled" ? 0.0 : 1.0;
+        return std::max(nearest + tool.radius() - d / 2, -tip.z - (h->depth + below + d / 2));
+    }
     const double tipDepth = -tip.z;
+    if (const auto* cp = m.getIf<ContourPocket>()) {
+        // A contour pocket: vertical walls round the exact region (outline
+        // and islands, model/contour.h), the tool's widest disc up to the
+        // stock top against them, its tip against the floor.
+        const auto distanceTo = regionDistance(*cp);
+        return std::max(tipDepth - cp->depth, (*distanceTo)({tip.x, tip.y}) + toolRadiusAt(tool, tipDepth));
+    }
     double worst = tipDepth - pocketDepth(m);  // below the floor
     // The tool solid is discs of radius toolRadiusAt(h) at depth tipDepth - h;
     // each must lie inside the pocket section at its depth. Fine steps near

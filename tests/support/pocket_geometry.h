@@ -22,6 +22,10 @@ double toolRadiusAt(const Tool& tool, double h);
 // (minus the distance to the boundary), positive outside.
 double signedDistance(const Quad& outline, Point2 p);
 
+// Signed distance (mm) from the tip's plan position to the finished pocket's
+// wall at the tip's depth: negative inside the pocket.
+double wallDistance(const ModuleInput& mmModule, Point3 tip);
+
 // How far (mm) a tool with its tip at `tip` reaches beyond the finished
 // pocket (walls and floor); <= 0 when it stays inside. Above the stock top
 // (z >= 0) nothing can be gouged.

@@ -122,6 +122,23 @@ Rs274Result runRs274(const std::string& ngc, const std::string& toolTable)
             tool = selected;
         } else if (name == "DWELL") {
             ++r.dwells;
+        } else if (name == "RIGID_TAP") {
+            // RIGID_TAP(x, y, z): G33.1 down to z at the spindle's pitch and
+            // back up to where it began: two feeds.
+            const auto v = numbers(args);
+            CanonMove down;
+            down.kind = CanonMove::Feed;
+            down.start = at;
+            down.end = {v.at(0), v.at(1), v.at(2)};
+            down.step = step;
+            down.tool = tool;
+            down.plane = plane;
+            down.feed = feed;
+            CanonMove up = down;
+            up.start = down.end;
+            up.end = at;
+            r.moves.push_back(down);
+            r.moves.push_back(up);
         } else if (name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED" || name == "ARC_FEED") {
             // STRAIGHT_*(x, y, z, a, b, c);
             // ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end_point, a, b, c)

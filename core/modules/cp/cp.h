@@ -1,0 +1,66 @@
+// Module CP: the contour pocket, a 2.5-D pocket of any outline of lines and
+// arcs with any number of islands, its walls vertical. The outline and the
+// islands are contours of the job's figure elements (core/figure/), named in
+// the unit; the job layer resolves the names into the unit's region in mm
+// (job/figure_contours.h) before it is checked and planned. Its decomposition
+// is cp_decompose.cpp; everything else is behind its door (cp_kind.cpp).
+#pragma once
+
+#include "check/unit_checks.h"
+#include "model/contour.h"
+#include "model/job.h"
+#include "model/step.h"
+#include "model/technology.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct ContourPocket {
+    static constexpr const char* kName = "CP";
+    std::string outline;               // the contour of the pocket's edge at the top ("K1")
+    std::vector<std::string> islands;  // contours of the islands left standing in it
+    double depth = 0.0;                // T, measured down from the top surface
+    int toolUse = 1;                   // U (Table 1): 1, 6, 8 or 9
+    int wallFinish = 1;                // F (Table 2)
+    std::optional<double> stepOver;    // roughing's step-over (fraction of D); the technology's when absent
+    ToolPins tools;
+
+    // Not in the job file: the named contours as the job's figure evaluates
+    // them (mm), set by the job layer. `region` is absent until then, or
+    // when a name is not a contour of the figure (listed in `unknown`).
+    std::optional<Region> region;
+    std::vector<std::string> unknown;
+    std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages
+    std::vector<bool> closedContours;         // outline, then islands: closed or open
+    bool resolved = false;
+
+    void convertLengths(const LengthMap& f)
+    {
+        depth = f(depth);
+        if (!region) return;
+        const auto scale = [&](Contour& c) {
+            for (auto& s : c.segments) {
+                s.start = {f(s.start.x), f(s.start.y)};
+                s.end = {f(s.end.x), f(s.end.y)};
+                s.centre = {f(s.centre.x), f(s.centre.y)};
+            }
+        };
+        scale(region->outer);
+        for (auto& i : region->islands) scale(i);
+    }
+    friend bool operator==(const ContourPocket&, const ContourPocket&) = default;
+};
+
+// The input checks of one CP unit (in mm).
+check::UnitReport checkContourPocket(const ContourPocket& mm, int unitNo, const check::Context& ctx);
+
+// The process steps of one CP unit (inputs in mm, checked and resolved;
+// tools, paths and times not yet chosen): roughing to T - β2 leaving α2 on
+// the walls and islands, floor finishing, and the wall passes of code F
+// around the outline and every island.
+std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const TechnologyData& tech, int unit);
+
+}  // namespace taiwa

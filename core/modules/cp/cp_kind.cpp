@@ -1,0 +1,211 @@
+// The door of module CP (contour pocket of any outline, with islands): its
+// job-file keys, checks, outline, planning and form, as module_kind.h asks.
+// Registered in modules/registry.cpp.
+#include "modules/cp/cp.h"
+#include "modules/module_kind.h"
+#include "modules/pocket_plan.h"
+
+#include "figure/figure_text.h"
+#include "io/job_messages.h"
+#include "io/json_write.h"
+#include "model/codes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name", "outline", "islands",  "depth",
+                                     "U",      "F",    "stepOver", "tools", "cutting"};
+
+constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
+
+class CpKind final : public ModuleKindOf<ContourPocket> {
+public:
+    const char* paletteText() const override
+    {
+        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add contour pocket");
+    }
+    const char* drawing() const override { return ":/modules/cp.svg"; }
+    const char* outlineField() const override { return "outline"; }
+    std::vector<std::string> stepKeys() const override { return {"roughing", "floor", "wall"}; }
+
+    void resolveContours(ModuleInput& mm, const ContourTable& table) const override
+    {
+        ContourPocket& p = mm.as<ContourPocket>();
+        p.resolved = true;
+        p.unknown.clear();
+        p.figureContours.clear();
+        p.closedContours.clear();
+        p.region.reset();
+        for (const auto& [name, contour] : table) p.figureContours.push_back(name);
+        Region r;
+        bool all = true;
+        const auto take = [&](const std::string& name, Contour& into) {
+            const auto it = table.find(name);
+            if (it == table.end()) {
+                if (!name.empty()) p.unknown.push_back(name);
+                all = false;
+                return;
+            }
+            into = it->second;
+            p.closedContours.push_back(it->second.closed);
+        };
+        take(p.outline, r.outer);
+        r.islands.resize(p.islands.size());
+        for (std::size_t i = 0; i < p.islands.size(); ++i) take(p.islands[i], r.islands[i]);
+        if (all) p.region = std::move(r);
+    }
+
+    std::vector<Point2> topPolygon(const ModuleInput& mm) const override
+    {
+        const ContourPocket& p = mm.as<ContourPocket>();
+        if (!p.region) return {};
+        return flatten(normalised(*p.region).outer, kPolygonChord);
+    }
+
+    // Vertical walls: the full depth wherever the point is in the region.
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData& tech) const override
+    {
+        const ContourPocket& p = mm.as<ContourPocket>();
+        if (!p.region) return std::nullopt;
+        const Region region = normalised(*p.region);
+        Cavity c;
+        const Box2 box = bounds(region.outer);
+        c.min = box.min;
+        c.max = box.max;
+        c.depth = p.depth;
+        c.depthAt = [distance = std::make_shared<RegionDistance>(region), depth = p.depth](Point2 q, double slack) {
+            return (*distance)(q) <= slack ? depth : 0.0;
+        };
+        // Walls only (U8): the pocket is open to the floor within α2 of its walls.
+        if (toolUseFromCode(p.toolUse).value_or(ToolUse::Standard) == ToolUse::WallOnly)
+            c.openAt = [distance = std::make_shared<RegionDistance>(region), depth = p.depth,
+                        a2 = tech.alpha2](Point2 q) { return (*distance)(q) <= -a2 ? depth : 0.0; };
+        return c;
+    }
+
+    // A rectangle rounded at its corners over the middle of the stock.
+    std::string defaultFigure(const Stock& s) const override
+    {
+        const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
+        const double x0 = s.x + 0.2 * s.width, x1 = s.x + 0.6 * s.width;
+        const double y0 = s.y + 0.2 * s.length, y1 = s.y + 0.6 * s.length;
+        const double r = 0.05 * std::min(s.width, s.length);
+        return "$$ The contour pocket's outline: a rectangle rounded at its corners\n"
+               "P1 = POINT/" + n(x0) + ", " + n(y0) + "\n" +
+               "P2 = POINT/" + n(x1) + ", " + n(y1) + "\n" +
+               "L1 = LINE/P1, ATANGL, 0\n"
+               "L2 = LINE/P2, ATANGL, 90\n"
+               "L3 = LINE/P2, ATANGL, 180\n"
+               "L4 = LINE/P1, ATANGL, 270\n"
+               "K1 = CONTOUR/L1, ROUND, " + n(r) + ", L2, ROUND, " + n(r) + ", L3, ROUND, " + n(r) + ", L4, ROUND, " + n(r);
+    }
+
+    ModuleInput makeDefault(const Stock&) const override
+    {
+        ContourPocket p;
+        p.outline = "K1";
+        p.depth = 10;
+        return p;
+    }
+
+protected:
+    ContourPocket readInput(const io::ObjectFields& f) const override
+    {
+        ContourPocket m;
+        f.rejectUnknown("module CP", kKeys);
+        m.outline = f.string("outline").value_or("");
+        if (const nlohmann::json* islands = f.find("islands")) {
+            if (!islands->is_array()) {
+                f.error("islands", msg::io::wrongType("an array of contour names", *islands));
+            } else {
+                for (std::size_t i = 0; i < islands->size(); ++i) {
+                    const auto& v = (*islands)[i];
+                    if (v.is_string()) m.islands.push_back(v.get<std::string>());
+                    else f.error("islands[" + std::to_string(i) + "]", msg::io::wrongType("a contour name", v));
+                }
+            }
+        }
+        m.depth = f.number("depth").value_or(0.0);
+        m.toolUse = f.whole("U", 1);
+        m.wallFinish = f.whole("F", 1);
+        m.stepOver = f.optionalNumber("stepOver");
+        m.tools = f.wholeMap("tools");
+        return m;
+    }
+
+    void writeInput(const ContourPocket& m, nlohmann::ordered_json& u) const override
+    {
+        u["outline"] = m.outline;
+        if (!m.islands.empty()) u["islands"] = m.islands;
+        u["depth"] = io::number(m.depth);
+        u["U"] = m.toolUse;
+        u["F"] = m.wallFinish;
+        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
+        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
+    }
+
+    check::UnitReport checkInput(const ContourPocket& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkContourPocket(mm, unitNo, ctx);
+    }
+
+    // The box around the outline (its polygon is topPolygon).
+    std::optional<Quad> outline(const ContourPocket& mm) const override
+    {
+        if (!mm.region || mm.region->outer.empty()) return std::nullopt;
+        const Box2 b = bounds(mm.region->outer);
+        return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
+    }
+
+    // The contours belong to the job's figure: moving the unit alone cannot
+    // move them, so a contour pocket stays where its contours are.
+    void move(ContourPocket&, Point2) const override {}
+
+    std::vector<Step> planInput(const ContourPocket& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        std::vector<Step> steps = decomposeContourPocket(mm, ctx.tech, ctx.unit);
+        setStepOver(steps, mm.stepOver);
+        choosePocketTools(steps, mm.tools, ctx, ContourPocket::kName, out);
+        return steps;
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        std::vector<FormField> fs;
+        // The contours by name, first: the figure's CONTOUR statements.
+        fs.push_back(form::contourName<ContourPocket>("outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
+                                                      {"outline"}, &ContourPocket::outline));
+        fs.push_back(form::contourNames<ContourPocket>("islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"),
+                                                       {"islands"}, &ContourPocket::islands));
+        fs.push_back(member<ContourPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                           &ContourPocket::depth));
+        fs.push_back(form::code<ContourPocket>(
+            "U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly}, &ContourPocket::toolUse));
+        fs.push_back(form::code<ContourPocket>(
+            "F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+            {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage}, &ContourPocket::wallFinish));
+        fs.push_back(form::stepOver<ContourPocket>());
+        form::describe(fs, {
+            {"outline", "sym-outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure that is the pocket's edge at the top (e.g. K1)")},
+            {"islands", "sym-islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")},
+            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
+            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
+            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the walls are finished: at full depth, in several depths, or in two stages")},
+            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
+        });
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& cpModule() { return moduleInstance<CpKind>(); }
+
+}  // namespace taiwa

@@ -1,0 +1,194 @@
+// The steps of a HOLES unit and their tools: the drill first (its diameter
+// sets the others), then the centre drill that spots for it, then the tap,
+// reamer or boring tool. Every step holds all the unit's holes; a pinned
+// tool must be of the step's type and size, an unpinned one is the
+// library's best fit. A missing tool is a diagnostic naming what to add.
+#include "modules/holes/holes.h"
+
+#include "check/messages.h"
+#include "decompose/make_step.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+
+namespace taiwa {
+
+namespace {
+
+constexpr double kSame = 1e-3;  // mm: a tool "of" a diameter
+
+// Reamers take 0.1-0.5 mm on the diameter, boring tools 0.5-4 mm: the
+// pre-drill is the largest library drill within that much under the hole.
+constexpr double kReamUnderMin = 0.1, kReamUnderMax = 0.5;
+constexpr double kBoreUnderMin = 0.5, kBoreUnderMax = 4.0;
+
+std::string mm(double v) { return fmt::format("{:g} mm", std::round(v * 1000.0) / 1000.0); }
+
+struct Planner {
+    const HolePattern& h;
+    int unit;
+    const std::vector<Tool>& library;
+    const std::string& material;
+    Diagnostics& out;
+    bool failed = false;
+
+    void problem(const std::string& key, const std::string& message)
+    {
+        out.push_back({Severity::Error, unit + 1, HolePattern::kName, "tools." + key, message});
+        failed = true;
+    }
+
+    // The pinned tool for `key` when it `fits`, else the fitting library
+    // tool that `better` prefers (tools with cutting data for the material
+    // first, then the lowest id). `wanted` says what it must be.
+    const Tool* pick(const std::string& key, const std::function<bool(const Tool&)>& fits,
+                     const std::function<bool(const Tool&, const Tool&)>& better, const std::string& wanted)
+    {
+        if (const auto pin = h.tools.find(key); pin != h.tools.end()) {
+            const Tool* t = findTool(library, pin->second);
+            if (!t) {
+                problem(key, msg::toolNotInLibrary(pin->second));
+                return nullptr;
+            }
+            if (!fits(*t)) {
+                problem(key, fmt::format("T{} ({}) is pinned for \"{}\" but is not a {}", t->id, t->name, key, wanted));
+                return nullptr;
+            }
+            return t;
+        }
+        const Tool* best = nullptr;
+        for (const Tool& t : library) {
+            if (!fits(t)) continue;
+            if (!best) {
+                best = &t;
+                continue;
+            }
+            const bool data = t.cuttingFor(material) != nullptr, bestData = best->cuttingFor(material) != nullptr;
+            if (data != bestData ? data : better(t, *best)) best = &t;
+        }
+        if (!best) problem(key, fmt::format("no {} in the tool library; add one", wanted));
+        return best;
+    }
+};
+
+bool reaches(const Tool& t, double depth) { return !(t.fluteLength > 0.0) || t.fluteLength + 1e-9 >= depth; }
+bool lowerId(const Tool& a, const Tool& b) { return a.id < b.id; }
+
+}  // namespace
+
+std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vector<Tool>& library,
+                                  const std::string& material, LengthUnit shown, Diagnostics& out)
+{
+    (void)shown;
+    using decompose::makeStep;
+    Planner p{h, unit, library, material, out};
+    const holes::Depths d = holes::depths(h);
+    const holes::Thread* thread = holes::findThread(h.thread);
+    const std::vector<Point2> at = holes::positions(h);
+    Point2 middle{};
+    for (const Point2& q : at) middle = middle + (1.0 / static_cast<double>(at.size())) * q;
+    const auto tipOf = [&](const Tool& drill) { return d.drillFull + holes::pointLength(drill.diameter, drill.pointAngle); };
+
+    // The drill: of the hole's (or the tap drill's) diameter, or the largest
+    // pre-drill within the reamer's or boring tool's allowance.
+    const Tool* drill = nullptr;
+    std::string drillReason;
+    if (d.drillDiameter > 0.0) {
+        const std::string what = thread ? fmt::format("the tap drill of {}", thread->name) : std::string("the hole's");
+        drill = p.pick(
+            "drill",
+            [&](const Tool& t) { return t.type == ToolType::Drill && std::abs(t.diameter - d.drillDiameter) <= kSame && reaches(t, tipOf(t)); },
+            lowerId, fmt::format("drill of Ø{} ({}) whose flutes reach {}", mm(d.drillDiameter), what, mm(d.drillFull + d.drillDiameter / 2)));
+        drillReason = fmt::format("drill of Ø{}: {}", mm(d.drillDiameter), what);
+    } else {
+        const bool ream = h.hole == "reamed";
+        const double lo = h.diameter - (ream ? kReamUnderMax : kBoreUnderMax);
+        const double hi = h.diameter - (ream ? kReamUnderMin : kBoreUnderMin);
+        drill = p.pick(
+            "drill",
+            [&](const Tool& t) {
+                return t.type == ToolType::Drill && t.diameter >= lo - 1e-9 && t.diameter <= hi + 1e-9 && reaches(t, tipOf(t));
+            },
+            [](const Tool& a, const Tool& b) { return a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id); },
+            fmt::format("drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}", mm(lo), mm(hi),
+                        ream ? "ream" : "bore", mm(h.diameter), mm(ream ? kReamUnderMin : kBoreUnderMin),
+                        mm(ream ? kReamUnderMax : kBoreUnderMax), mm(d.drillFull + hi / 2)));
+        if (drill)
+            drillReason = fmt::format("largest drill {} to {} under Ø{} to {}", mm(ream ? kReamUnderMin : kBoreUnderMin),
+                                      mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? "ream" : "bore");
+    }
+
+    // The centre drill: the largest no wider than the drill (else the
+    // smallest), spotting a cone as wide as the drill or itself.
+    const double drillD = drill ? drill->diameter : (d.drillDiameter > 0 ? d.drillDiameter : h.diameter);
+    bool narrowOne = false;
+    for (const Tool& t : library)
+        if (t.type == ToolType::CentreDrill && t.diameter <= drillD + 1e-9) narrowOne = true;
+    const Tool* centre = p.pick(
+        "centre-drill",
+        [&](const Tool& t) { return t.type == ToolType::CentreDrill && (!narrowOne || t.diameter <= drillD + 1e-9 || h.tools.count("centre-drill")); },
+        [&](const Tool& a, const Tool& b) {
+            return narrowOne ? a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id)
+                             : a.diameter < b.diameter || (a.diameter == b.diameter && a.id < b.id);
+        },
+        "centre drill");
+
+    // The finishing tool.
+    const Tool* finish = nullptr;
+    StepKind finishKind = StepKind::Tapping;
+    MachiningType finishType = MachiningType::Tapping;
+    std::string finishReason;
+    if (h.hole == "tapped" && thread) {
+        finish = p.pick(
+            "tap",
+            [&](const Tool& t) {
+                return t.type == ToolType::Tap && std::abs(t.diameter - thread->size) <= kSame &&
+                       std::abs(t.turning.pitchMin - thread->pitch) <= 1e-6 && reaches(t, d.finish);
+            },
+            lowerId,
+            fmt::format("tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}", thread->name, thread->pitch,
+                        mm(thread->size), mm(thread->pitch), mm(d.finish)));
+        finishReason = fmt::format("tap {}x{:g}", thread->name, thread->pitch);
+    } else if (h.hole == "reamed" || h.hole == "bored") {
+        const bool ream = h.hole == "reamed";
+        finishKind = ream ? StepKind::Reaming : StepKind::Boring;
+        finishType = ream ? MachiningType::Reaming : MachiningType::Boring;
+        const ToolType type = ream ? ToolType::Reamer : ToolType::BoringBar;
+        finish = p.pick(
+            ream ? "ream" : "bore",
+            [&](const Tool& t) { return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish); },
+            lowerId,
+            fmt::format("{} of Ø{} whose flutes reach {}", ream ? "reamer" : "boring bar (set to the bore)", mm(h.diameter),
+                        mm(d.finish)));
+        finishReason = fmt::format("{} of the hole's Ø{}", ream ? "reamer" : "boring tool", mm(h.diameter));
+    }
+    if (p.failed || !drill || !centre) return {};
+
+    const auto step = [&](StepKind kind, MachiningType type, const Tool& tool, double depth, double diameter,
+                          std::string reason) {
+        Step s = makeStep(unit, HolePattern::kName, kind, 1, type);
+        s.holes = at;
+        s.position = middle;
+        s.startDepth = 0.0;
+        s.cutDepth = depth;
+        s.holeDiameter = diameter;
+        s.tool = ToolChoice{tool.id, h.tools.count(toKey(kind)) ? "pinned by the operator" : std::move(reason)};
+        return s;
+    };
+    std::vector<Step> steps;
+    const double spot = std::min(centre->diameter, drill->diameter);
+    steps.push_back(step(StepKind::CentreDrilling, MachiningType::CentreDrilling, *centre,
+                         holes::pointLength(spot, centre->pointAngle), spot,
+                         fmt::format("centre drill spotting Ø{} for the Ø{} drill", mm(spot), mm(drill->diameter))));
+    steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(*drill), drill->diameter, drillReason));
+    if (finish) {
+        Step s = step(finishKind, finishType, *finish, d.finish, d.finishDiameter, finishReason);
+        if (finishKind == StepKind::Tapping) s.threadPitch = thread->pitch;
+        steps.push_back(s);
+    }
+    return steps;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,214 @@
+// The door of module HOLES (a pattern of identical holes): its job-file
+// keys, checks, figure, cavity, planning and form, as module_kind.h asks.
+// Registered in modules/registry.cpp.
+#include "modules/holes/holes.h"
+#include "modules/module_kind.h"
+
+#include "io/json_write.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name",  "pattern", "x",        "y",      "angle", "pitch",
+                                     "pitchY", "radius", "angularPitch", "count", "rows", "hole",  "diameter",
+                                     "thread", "depth", "tools",   "cutting"};
+const std::vector<std::string> kPatternNames{"single", "line", "grid", "bolt circle", "arc"};
+const std::vector<std::string> kHoleNames{"drilled", "tapped", "reamed", "bored"};
+
+// The depth of the finished hole at distance r from its centre: the
+// finishing tool's flat tip within its radius, the drill's full depth and
+// its point (taken as 90°, the longest usual; the pre-drill of a reamed or
+// bored hole as wide as the hole) within the drill's.
+double profile(const holes::Depths& d, double r)
+{
+    double depth = 0.0;
+    if (r <= d.finishDiameter / 2.0 && d.finish > 0.0) depth = d.finish;
+    const double drill = d.drillDiameter > 0.0 ? d.drillDiameter : d.finishDiameter;
+    if (r <= drill / 2.0) depth = std::max(depth, d.drillFull + (drill / 2.0 - r));
+    return depth;
+}
+
+class HolesKind final : public ModuleKindOf<HolePattern> {
+public:
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add hole pattern"); }
+    const char* drawing() const override { return ":/modules/holes.svg"; }
+    const char* outlineField() const override { return "pattern"; }
+    std::vector<std::string> stepKeys() const override { return {"centre-drill", "drill", "tap", "ream", "bore"}; }
+
+    std::vector<Point2> topPolygon(const ModuleInput& mm) const override { return holes::topPolygon(mm.as<HolePattern>()); }
+
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData&) const override
+    {
+        const HolePattern& h = mm.as<HolePattern>();
+        const holes::Depths d = holes::depths(h);
+        auto at = std::make_shared<std::vector<Point2>>(holes::positions(h));
+        if (at->empty() || !(d.finishDiameter > 0.0)) return std::nullopt;
+        std::sort(at->begin(), at->end(), [](Point2 a, Point2 b) { return a.x < b.x; });
+        const double r = d.finishDiameter / 2.0;
+        Cavity c;
+        c.min = {at->front().x - r, 1e300};
+        c.max = {at->back().x + r, -1e300};
+        for (const Point2& p : *at) c.min.y = std::min(c.min.y, p.y - r), c.max.y = std::max(c.max.y, p.y + r);
+        c.depth = profile(d, 0.0);
+        // Deepest within `slack` (> 0): the profile nearer the centre; shallowest
+        // within |slack|: farther out. The holes lie apart, so the nearest decides.
+        c.depthAt = [at, d, r](Point2 q, double slack) {
+            const double reach = r + std::abs(slack);
+            auto it = std::lower_bound(at->begin(), at->end(), q.x - reach, [](Point2 p, double x) { return p.x < x; });
+            double deepest = 0.0;
+            for (; it != at->end() && it->x <= q.x + reach; ++it)
+                deepest = std::max(deepest, profile(d, std::max(distance(q, *it) - slack, 0.0)));
+            return deepest;
+        };
+        return c;
+    }
+
+    ModuleInput makeDefault(const Stock& stock) const override
+    {
+        HolePattern h;
+        h.x = stock.x + stock.width / 2;
+        h.y = stock.y + stock.length / 2;
+        h.diameter = 8;
+        h.depth = std::min(10.0, std::floor(stock.height / 2));
+        return h;
+    }
+
+protected:
+    HolePattern readInput(const io::ObjectFields& f) const override
+    {
+        HolePattern h;
+        f.rejectUnknown("module HOLES", kKeys);
+        h.pattern = f.string("pattern").value_or("");
+        h.x = f.number("x").value_or(0.0);
+        h.y = f.number("y").value_or(0.0);
+        h.angle = f.number("angle", 0.0);
+        h.pitch = f.number("pitch", 0.0);
+        h.pitchY = f.number("pitchY", 0.0);
+        h.radius = f.number("radius", 0.0);
+        h.angularPitch = f.number("angularPitch", 0.0);
+        h.count = f.whole("count", 1);
+        h.rows = f.whole("rows", 1);
+        h.hole = f.string("hole").value_or("");
+        h.diameter = f.number("diameter", 0.0);
+        if (f.find("thread")) h.thread = f.string("thread").value_or("");
+        h.depth = f.number("depth").value_or(0.0);
+        h.tools = f.wholeMap("tools");
+        return h;
+    }
+
+    void writeInput(const HolePattern& h, nlohmann::ordered_json& u) const override
+    {
+        const bool known = std::find(kPatternNames.begin(), kPatternNames.end(), h.pattern) != kPatternNames.end();
+        const auto uses = [&](std::initializer_list<const char*> patterns) {
+            return !known || std::any_of(patterns.begin(), patterns.end(), [&](const char* p) { return h.pattern == p; });
+        };
+        u["pattern"] = h.pattern;
+        u["x"] = io::number(h.x);
+        u["y"] = io::number(h.y);
+        if (uses({"bolt circle", "arc"})) u["radius"] = io::number(h.radius);
+        if (uses({"line", "grid", "bolt circle", "arc"})) u["angle"] = io::number(h.angle);
+        if (uses({"line", "grid"})) u["pitch"] = io::number(h.pitch);
+        if (uses({"grid"})) u["pitchY"] = io::number(h.pitchY);
+        if (uses({"arc"})) u["angularPitch"] = io::number(h.angularPitch);
+        if (uses({"line", "grid", "bolt circle", "arc"})) u["count"] = h.count;
+        if (uses({"grid"})) u["rows"] = h.rows;
+        u["hole"] = h.hole;
+        if (h.hole != "tapped" || h.diameter != 0.0) u["diameter"] = io::number(h.diameter);
+        if (!h.thread.empty() || h.hole == "tapped") u["thread"] = h.thread;
+        u["depth"] = io::number(h.depth);
+        if (!h.tools.empty()) u["tools"] = io::pins(h.tools);
+    }
+
+    check::UnitReport checkInput(const HolePattern& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkHolePattern(mm, unitNo, ctx);
+    }
+
+    // The box around the figure (its polygon is topPolygon).
+    std::optional<Quad> outline(const HolePattern& mm) const override
+    {
+        const std::vector<Point2> poly = holes::topPolygon(mm);
+        if (poly.empty()) return std::nullopt;
+        Point2 lo = poly.front(), hi = poly.front();
+        for (const Point2& p : poly) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        return Quad{{lo, Point2{hi.x, lo.y}, hi, Point2{lo.x, hi.y}}, 0.0};
+    }
+
+    void move(HolePattern& h, Point2 delta) const override
+    {
+        h.x += delta.x;
+        h.y += delta.y;
+    }
+
+    std::vector<Step> planInput(const HolePattern& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        return planHolePattern(mm, ctx.unit, ctx.library, ctx.material, ctx.shownUnit, out);
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        std::vector<FormField> fs;
+        const auto named = [](std::string key, std::string label, const std::vector<std::string>& names,
+                              std::string HolePattern::*m) {
+            FormField f = form::number<HolePattern>(
+                key, std::move(label), {key},
+                [names, m](const HolePattern& h) {
+                    const auto it = std::find(names.begin(), names.end(), h.*m);
+                    return it == names.end() ? -1.0 : static_cast<double>(it - names.begin());
+                },
+                [names, m](HolePattern& h, double v) {
+                    const auto i = static_cast<long>(std::lround(v));
+                    if (i >= 0 && i < static_cast<long>(names.size())) h.*m = names[static_cast<std::size_t>(i)];
+                });
+            f.kind = FormFieldKind::Code;
+            for (std::size_t i = 0; i < names.size(); ++i) f.codes.emplace_back(static_cast<int>(i), names[i]);
+            return f;
+        };
+        const auto whole = [](std::string key, std::string label, int HolePattern::*m) {
+            FormField f = form::number<HolePattern>(
+                key, std::move(label), {key}, [m](const HolePattern& h) { return static_cast<double>(h.*m); },
+                [m](HolePattern& h, double v) { h.*m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+            f.whole = true;
+            return f;
+        };
+        fs.push_back(named("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"), kPatternNames, &HolePattern::pattern));
+        fs.push_back(member<HolePattern>("x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "X (hole, first hole or centre)"), {"x"}, &HolePattern::x));
+        fs.push_back(member<HolePattern>("y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y"), {"y"}, &HolePattern::y));
+        fs.push_back(member<HolePattern>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle (°)"), {"angle"}, &HolePattern::angle));
+        fs.push_back(member<HolePattern>("pitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch"), {"pitch"}, &HolePattern::pitch));
+        fs.push_back(member<HolePattern>("pitchY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch between rows"), {"pitchY"}, &HolePattern::pitchY));
+        fs.push_back(member<HolePattern>("radius", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius"), {"radius"}, &HolePattern::radius));
+        fs.push_back(member<HolePattern>("angularPitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angular pitch (°)"), {"angularPitch"}, &HolePattern::angularPitch));
+        fs.push_back(whole("count", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Count (grid: columns)"), &HolePattern::count));
+        fs.push_back(whole("rows", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Rows"), &HolePattern::rows));
+        fs.push_back(named("hole", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Hole"), kHoleNames, &HolePattern::hole));
+        std::vector<std::string> threads{""};
+        for (const auto& t : holes::threadTable()) threads.emplace_back(t.name);
+        fs.push_back(named("thread", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Thread (tapped)"), threads, &HolePattern::thread));
+        fs.push_back(member<HolePattern>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter"), {"diameter"}, &HolePattern::diameter));
+        fs.push_back(member<HolePattern>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth (full diameter)"), {"depth"}, &HolePattern::depth));
+        form::describe(fs, {
+            {"pattern", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc")},
+            {"x", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The hole, the first hole of a line, the corner of a grid, the centre of a circle")},
+            {"angle", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction of a line's or grid's rows; angle of a circle's first hole")},
+            {"pitchY", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: distance between rows")},
+            {"pitch", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance between neighbouring holes along the row")},
+            {"angularPitch", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Arc: angle between neighbouring holes")},
+            {"hole", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Drilled, tapped, reamed or bored: which steps each hole gets")},
+            {"depth", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper")},
+        });
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& holesModule() { return moduleInstance<HolesKind>(); }
+
+}  // namespace taiwa

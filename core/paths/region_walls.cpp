@@ -1,0 +1,119 @@
+// Wall finishing of a pocket of any outline with islands (contour units):
+// the exact tool-centre loops of the outline and of every island
+// (paths/region_offset.h: lines stay lines, arcs stay arcs on the tape), one
+// or several Z incisions each, entered and left on a quarter circle tangent
+// to the wall at the middle of the loop's longest piece.
+#include "paths/generators.h"
+
+#include "paths/region_offset.h"
+#include "paths/path_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace taiwa::paths {
+
+namespace {
+
+Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
+Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
+
+// The loop started at the middle of its longest piece (a line when it has
+// one): that piece split in two, its second half first.
+Contour fromMiddle(const Contour& loop)
+{
+    std::size_t best = 0;
+    double bestLength = -1.0;
+    for (std::size_t i = 0; i < loop.segments.size(); ++i) {
+        const ContourSegment& s = loop.segments[i];
+        const double l = s.length() * (s.isArc() ? 0.5 : 1.0);  // lines first
+        if (l > bestLength) bestLength = l, best = i;
+    }
+    const ContourSegment& s = loop.segments[best];
+    const Point2 middle = s.at(0.5);
+    ContourSegment first = s, second = s;
+    first.end = middle;
+    second.start = middle;
+    Contour out;
+    out.closed = true;
+    out.segments.push_back(second);
+    for (std::size_t k = 1; k < loop.segments.size(); ++k) out.segments.push_back(loop.segments[(best + k) % loop.segments.size()]);
+    out.segments.push_back(first);
+    return out;
+}
+
+void appendLoop(PathBuilder& b, const Contour& loop, double z)
+{
+    for (const ContourSegment& s : loop.segments) {
+        if (s.isArc()) b.arc(s.kind == ContourSegment::Kind::ArcCCW, at(s.end, z), s.centre);
+        else b.feed(at(s.end, z));
+    }
+}
+
+}  // namespace
+
+ToolPath regionWallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
+{
+    if (!step.region) throw std::logic_error("contour wall step without a region");
+    const double R = tool.radius();
+    const double d = R + step.wallAllowance;
+    const Region region = normalised(*step.region);
+    auto pieces = offsetRegion(region, d);
+    if (!pieces) throw std::logic_error("contour wall offset failed: " + pieces.error());
+    if (pieces->empty()) throw std::logic_error("the tool does not fit into the contour region");
+
+    std::vector<double> depths{step.cutDepth};
+    if (step.multiIncision) {
+        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+        const double range = step.cutDepth - step.startDepth;
+        const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
+        depths.clear();
+        for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
+        depths.push_back(step.cutDepth);
+    }
+
+    // Loops are run with the material on the right (climb milling with M3),
+    // or reversed; the cleared side is then on the left, or on the right.
+    const RegionDistance distanceTo(region);
+    const double wanted = p.leadRadius > 0 ? p.leadRadius : R;
+    const double approachZ = -step.startDepth + p.clearance;
+    std::optional<PathBuilder> b;
+    for (Contour loop : loopsOf(*pieces)) {
+        if (loop.segments.empty()) continue;
+        if (!p.climb) loop = reversed(loop);
+        loop = fromMiddle(loop);
+        const Point2 start = loop.start(), dir = loop.segments.front().startDirection();
+        const Point2 inward = p.climb ? leftOf(dir) : -1.0 * leftOf(dir);
+        // The largest lead circle, at most `wanted`, that stays where the
+        // tool centre may go: its centre at least its radius inside that.
+        const auto fits = [&](double l) { return distanceTo(start + l * inward) <= -(d + l) + 1e-9; };
+        double lead = wanted;
+        if (!fits(lead)) {
+            double lo = 0.0, hi = wanted;
+            for (int it = 0; it < 50; ++it) {
+                const double mid = 0.5 * (lo + hi);
+                (fits(mid) ? lo : hi) = mid;
+            }
+            lead = lo;
+        }
+        const Point2 c = start + lead * inward;
+        const Point2 from = c - lead * dir, to = c + lead * dir;
+        if (!b) b.emplace(at(from, p.safeZ));
+        b->rapid(at({b->at().x, b->at().y}, p.safeZ));
+        b->rapid(at(from, p.safeZ));
+        b->rapid(at(from, approachZ));
+        for (const double depth : depths) {
+            b->feed(at(from, b->at().z));  // after an incision: back across the lead circle
+            b->feed(at(from, -depth), FeedKind::Plunge);
+            if (lead > 0) b->arc(p.climb, at(start, -depth), c);
+            appendLoop(*b, loop, -depth);
+            if (lead > 0) b->arc(p.climb, at(to, -depth), c);
+        }
+    }
+    if (!b) throw std::logic_error("contour wall step without a loop");
+    b->rapid(at({b->at().x, b->at().y}, p.safeZ));
+    return b->take();
+}
+
+}  // namespace taiwa::paths
