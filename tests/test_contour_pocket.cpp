@@ -10,6 +10,7 @@
 #include "support/support.h"
 #include "test_toolpaths_support.h"
 
+#include "figure/figure_units.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "model/contour.h"
@@ -195,6 +196,29 @@ private slots:
         QVERIFY(*back.job == job);
         QCOMPARE(writeJob(*back.job), text);
         QVERIFY(text.find("\"version\": 5") != std::string::npos);
+    }
+
+    // A job switched to inch keeps its contours: the figure's lengths are
+    // converted with the job's, its angles and comments left alone.
+    void figureConvertsWithTheJobsUnit()
+    {
+        const Job mm = sampleJob();
+        const auto toInch = [](double v) { return v / 25.4; };
+        Job inch = withLengths(mm, LengthUnit::Inch, toInch);
+        inch.figure = figure::convertFigureLengths(mm.figure, toInch);
+        QVERIFY(inch.figure.starts_with("$$ An arched outline"));
+        QVERIFY(inch.figure.find("ATANGL, 90") != std::string::npos);
+        QVERIFY(inch.figure.find("RADIUS, 60\n") == std::string::npos);
+        PlanOptions stepsOnly;
+        stepsOnly.withToolPaths = false;
+        const Plan a = planJob(mm, TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
+        const Plan b = planJob(inch, TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
+        QVERIFY2(b.ok(), messages(b.diagnostics).c_str());
+        const Region ra = normalised(*a.steps[0].region), rb = normalised(*b.steps[0].region);
+        QCOMPARE(rb.outer.segments.size(), ra.outer.segments.size());
+        for (std::size_t i = 0; i < ra.outer.segments.size(); ++i)
+            QVERIFY(distance(ra.outer.segments[i].end, rb.outer.segments[i].end) < 1e-9);
+        QVERIFY(std::abs(area(ra) - area(rb)) < 1e-6);
     }
 
     void refusals_data()

@@ -350,14 +350,21 @@ private slots:
         };
         row("haas unknown word", "haas", "G1 X20. F150.", "G1 X20. W3. F150.", "'W3.' is not understood");
         row("haas no decimal point", "haas", "N170 X40.", "N170 X40", "without a decimal point");
-        row("haas G83", "haas", "G98 G81", "G98 G83", "G83");
+        row("haas G83 without Q", "haas", "G98 G81", "G98 G83", "G83 needs Q");
         row("haas G18", "haas", "N190 G0 Z10.", "N190 G18 G0 Z10.", "G18 is not understood");
         row("haas wrong H", "haas", "G43 H1 Z5.", "G43 H2 Z5.", "G43 H2 with T1");
         row("haas Z before G43", "haas", "N70 G43 H1 Z5.", "N70 Z5.", "length offset");
         row("haas M0", "haas", "N200 M5", "N200 M0", "M0 is not understood");
         row("sinumerik unknown word", "sinumerik",
             "N140 G1 X20 F150", "N140 G1 X20 F150 TRANS", "'TRANS' is not understood");
-        row("sinumerik CYCLE83", "sinumerik", "CYCLE81(5,1,0,-4)", "CYCLE83(5,1,0,-4,,-2,,2,0,0,1,1)", "CYCLE83");
+        row("haas Q without G83", "haas", "G98 G81 X30. Y30. Z-4. R1. F80.", "G98 G81 X30. Y30. Z-4. R1. Q2. F80.",
+            "Q without G83");
+        row("haas G76", "haas", "G98 G81", "G98 G76", "G76 is not understood");
+        row("sinumerik CYCLE83 chip breaking", "sinumerik", "CYCLE81(5,1,0,-4)", "CYCLE83(5,1,0,-4,,-2,,2,0,0,1,0)", "CYCLE83 with VARI");
+        row("sinumerik CYCLE84 left hand", "sinumerik", "CYCLE81(5,1,0,-4)", "CYCLE84(5,1,0,-4,,0,3,,-1.25,0,500,500)",
+            "left-hand tapping is not supported");
+        row("sinumerik CYCLE86 lift off", "sinumerik", "CYCLE81(5,1,0,-4)", "CYCLE86(5,1,0,-4,,0,3,0.1,0,0,0)", "RPA");
+        row("sinumerik CYCLE87", "sinumerik", "CYCLE81(5,1,0,-4)", "CYCLE87(5,1,0,-4,,3)", "is not understood");
         row("sinumerik parenthesis comment", "sinumerik",
             "N150 G4 F0.5", "N150 G4 F0.5 (WAIT)", "'(WAIT)' is not understood");
         row("sinumerik G91", "sinumerik", "N220 G0 Z10", "N220 G91 G0 Z10", "G91 is not understood");
@@ -365,7 +372,11 @@ private slots:
         row("klartext unknown block", "heidenhain", "1 ; STEP 1: hand", "1 LBL 1", "block not understood");
         row("klartext block number", "heidenhain", "15 L Z+5", "16 L Z+5", "block number 16, expected 15");
         row("klartext unsigned", "heidenhain", "20 L Z+10", "20 L Z10", "a signed number expected");
-        row("klartext pecking", "heidenhain", "Q202=+5", "Q202=+2", "pecking is not supported");
+        row("klartext dwell at depth", "heidenhain", "Q211=+0 ;DWELL TIME AT DEPTH", "Q211=+1 ;DWELL TIME AT DEPTH",
+            "dwells in cycle 200 are not supported");
+        row("klartext no plunging depth", "heidenhain", "Q202=+5", "Q202=+0", "Q202 (plunging depth) must be positive");
+        row("klartext cycle 203", "heidenhain", "16 CYCL DEF 200 DRILLING ~", "16 CYCL DEF 203 UNIVERSAL DRILLING ~",
+            "continuation lines after a block");
         row("klartext continued comment", "heidenhain",
             "16 CYCL DEF 200 DRILLING ~", "16 ; no cycle ~", "continuation lines after a block");
         row("klartext M99 on an arc", "heidenhain",

@@ -109,8 +109,10 @@ private slots:
         auto steps = decomposeM4(pocket(6), tech(), 0);
         steps[0].holeDiameter = 11;
         QVERIFY(chooseTools(steps, {}, lib(), "aluminium-6061").empty());
-        QCOMPARE(tool(steps[0].tool->toolId).diameter, 12.0);
-        QCOMPARE(steps[0].holeDiameter, 12.0);
+        // The smallest library drill not smaller than asked: the 11.8 mm
+        // pre-drill of the reamers (the hole tools of schema 6).
+        QCOMPARE(tool(steps[0].tool->toolId).diameter, 11.8);
+        QCOMPARE(steps[0].holeDiameter, 11.8);
     }
 
     void deepRoughingFallsBackToShortFlutesThatReach()
@@ -218,14 +220,14 @@ private slots:
     void thePilotDrillStaysWellBelowThePocketWidth()
     {
         M4Pocket slot = pocket(2);
-        slot.corners = {{{0, 0}, {40, 0}, {40, 5}, {0, 5}}};  // roughed width 4.4 mm: a 2 mm end mill, no drill below 3 mm
+        slot.corners = {{{0, 0}, {40, 0}, {40, 5}, {0, 5}}};  // roughed width 4.4 mm: a 2 mm end mill, no drill below 2.5 mm (the M3 tap drill)
         slot.depth = 5;
         auto steps = decomposeM4(slot, tech(), 0);
         const auto problems = chooseTools(steps, {}, lib(), "aluminium-6061");
         QCOMPARE(tool(steps[1].tool->toolId).diameter, 2.0);
         QCOMPARE(problems.size(), std::size_t(1));
         QVERIFY2(QString::fromStdString(problems[0]).startsWith("Pilot hole: no drill in the tool library fits the pilot hole") &&
-                     QString::fromStdString(problems[0]).contains("its diameter 3 mm is too large for the pocket"),
+                     QString::fromStdString(problems[0]).contains("its diameter 2.5 mm is too large for the pocket"),
                  problems[0].c_str());
         slot.pilotHole = 9;  // the operator's way out: ramp in
         auto ramped = decomposeM4(slot, tech(), 0);

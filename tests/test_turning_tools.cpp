@@ -153,7 +153,10 @@ private slots:
         QVERIFY2(lib, lib.ok() ? "" : lib.error().c_str());
         const auto tools = lib->tools();
         QVERIFY2(tools, tools.ok() ? "" : tools.error().c_str());
-        QCOMPARE(tools->size(), defaultLatheTools().size());  // the shop's tool, and every lathe tool but T102
+        // The shop's tool, every lathe tool but T102 (schema 4), and the hole
+        // tools (schema 6: taps, reamers, boring heads, their drills).
+        QCOMPARE(tools->size(), defaultLatheTools().size() + defaultHoleTools().size());
+        for (const Tool& t : defaultHoleTools()) QCOMPARE(*findTool(*tools, t.id), t);
         const Tool* shop = findTool(*tools, 102);
         QVERIFY(shop);
         QCOMPARE(shop->name, std::string("Shop end mill 11 mm"));

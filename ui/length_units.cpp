@@ -1,6 +1,8 @@
 // Conversion of a whole job between mm and inch.
 #include "ui/length_units.h"
 
+#include "figure/figure_units.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,11 +17,16 @@ Job convertLengthUnit(const Job& job, LengthUnit to)
     // round trip mm -> inch -> mm adds (6.000000000000001) are taken off, so
     // the values typed come back.
     const LengthUnit from = job.lengthUnit;
-    return withLengths(job, to, [from, to](double v) {
+    const auto convert = [from, to](double v) {
         const double x = fromMm(toMm(v, from), to);
         const double snapped = std::round(x * 1e9) / 1e9;
         return std::abs(snapped - x) <= 1e-12 * std::max(1.0, std::abs(x)) ? snapped : x;
-    });
+    };
+    Job out = withLengths(job, to, convert);
+    // The figure's text is in the job's unit too (its contours are the
+    // contour units' geometry).
+    out.figure = figure::convertFigureLengths(job.figure, convert);
+    return out;
 }
 
 }  // namespace taiwa::ui

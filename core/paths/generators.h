@@ -19,6 +19,9 @@ ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& 
 ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath regionFloorFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath regionWallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
+// The depths a wall pass cuts at: the step's full depth, or (multiIncision,
+// F2) equal incisions of at most gamma x D down to it (wall_finishing.cpp).
+std::vector<double> incisionDepths(const Step& step, const Tool& tool, const TechnologyData& tech);
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p);  // holes.cpp: hole patterns
 

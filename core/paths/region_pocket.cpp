@@ -147,8 +147,14 @@ ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& t
 
     // The rings by level, the outermost (level 0) exactly at the allowance.
     std::vector<Loop> loops;
+    // Each inner ring from the one outside it: a small offset of a smooth
+    // ring is fast where one large offset of a detailed outline is not (a
+    // 2,000-element gear took minutes). Only the first ring sets the
+    // allowance; the inner ones may each lose the chords' sliver, far
+    // inside the 0.1 R the step-over keeps in hand.
+    Paths ring = domain;
     for (int level = 0;; ++level) {
-        const Paths ring = level == 0 ? domain : inset(region, first + level * s);
+        if (level > 0) ring = inset(ring, s, kSizingChord);
         if (ring.empty()) break;
         for (const auto& path : ring) {
             Loop l;
@@ -248,10 +254,16 @@ double reachRadius(const Region& r)
         c.Execute(ClipperLib::ctDifference, lost, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
         return inset(lost, kLost, kSizingChord).empty();
     };
-    const Box2 box = bounds(r.outer);
-    double lo = 0.0, hi = 0.5 * std::min(box.max.x - box.min.x, box.max.y - box.min.y);
-    if (!(hi > 0.0)) return 0.0;
-    if (reaches(hi)) return hi;
+    // Small radii first, doubling: a large offset of a detailed outline is
+    // slow, and most contours are limited by a small corner or channel.
+    const double most = inscribedRadius(r);
+    if (!(most > 0.0)) return 0.0;
+    double lo = 0.0, hi = std::min(0.125, most);
+    while (reaches(hi)) {
+        lo = hi;
+        if (hi >= most) return most;
+        hi = std::min(2.0 * hi, most);
+    }
     for (int it = 0; it < 32 && hi - lo > 1e-3; ++it) {
         const double mid = 0.5 * (lo + hi);
         (reaches(mid) ? lo : hi) = mid;
@@ -261,15 +273,23 @@ double reachRadius(const Region& r)
 
 double inscribedRadius(const Region& r)
 {
-    const Paths region = regionPaths(r, kSizingChord);
+    // Step in by a tenth of the box at a time from the last non-empty inset
+    // (small offsets of smooth outlines), then halve the last step.
+    Paths region = regionPaths(r, kSizingChord);
     const Box2 box = bounds(r.outer);
-    double lo = 0.0, hi = 0.5 * std::min(box.max.x - box.min.x, box.max.y - box.min.y);
-    if (!(hi > 0.0)) return 0.0;
-    for (int it = 0; it < 40 && hi - lo > 1e-3; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (inset(region, mid, kSizingChord).empty() ? hi : lo) = mid;
+    double step = 0.05 * std::min(box.max.x - box.min.x, box.max.y - box.min.y);
+    if (!(step > 0.0) || region.empty()) return 0.0;
+    double reached = 0.0;
+    while (step > 1e-3) {
+        Paths in = inset(region, step, kSizingChord);
+        if (in.empty()) {
+            step *= 0.5;
+            continue;
+        }
+        region = std::move(in);
+        reached += step;
     }
-    return lo;
+    return reached;
 }
 
 ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)

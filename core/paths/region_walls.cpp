@@ -63,15 +63,7 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
     if (!pieces) throw std::logic_error("contour wall offset failed: " + pieces.error());
     if (pieces->empty()) throw std::logic_error("the tool does not fit into the contour region");
 
-    std::vector<double> depths{step.cutDepth};
-    if (step.multiIncision) {
-        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
-        const double range = step.cutDepth - step.startDepth;
-        const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
-        depths.clear();
-        for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
-        depths.push_back(step.cutDepth);
-    }
+    const std::vector<double> depths = incisionDepths(step, tool, tech);
 
     // Loops are run with the material on the right (climb milling with M3),
     // or reversed; the cleared side is then on the left, or on the right.

@@ -59,6 +59,20 @@ void incision(PathBuilder& b, const Quad& centre, double z, bool ccw, double wan
 
 }  // namespace
 
+std::vector<double> incisionDepths(const Step& step, const Tool& tool, const TechnologyData& tech)
+{
+    // One at full depth, or equal steps of at most gamma x D.
+    std::vector<double> depths{step.cutDepth};
+    if (!step.multiIncision) return depths;
+    if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+    const double range = step.cutDepth - step.startDepth;
+    const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
+    depths.clear();
+    for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
+    depths.push_back(step.cutDepth);
+    return depths;
+}
+
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     if (!step.outline) throw std::logic_error("wall step without an outline");
@@ -72,16 +86,7 @@ ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData&
         throw std::logic_error("wall corner radius smaller than the tool radius");
     if (!offsetExists(outline, R + step.cutDepth * t)) throw std::logic_error("pocket narrower than the tool");
 
-    // Incision depths: one at full depth, or equal steps of at most gamma x D.
-    std::vector<double> depths{step.cutDepth};
-    if (step.multiIncision) {
-        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
-        const double range = step.cutDepth - step.startDepth;
-        const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
-        depths.clear();
-        for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
-        depths.push_back(step.cutDepth);
-    }
+    const std::vector<double> depths = incisionDepths(step, tool, tech);
     // The tip runs on the wall's cross-section at its own depth d moved in
     // by R (vertical walls: the outline itself); for a tapered wall that is
     // the top outline moved in by R + d tan(S), and the flank of a taper end

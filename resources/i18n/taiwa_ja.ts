@@ -1516,6 +1516,30 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>単独の穴、直線の最初の穴、格子の角、円の中心</translation>
         </message>
         <message>
+            <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
+            <translation>穴、列の最初の穴、格子の角、円の中心の Y</translation>
+        </message>
+        <message>
+            <source>Bolt circle or arc: the radius the hole centres lie on</source>
+            <translation>ボルト円・円弧:穴の中心が並ぶ半径</translation>
+        </message>
+        <message>
+            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
+            <translation>穴の数:直線上、円周上、円弧上。格子では列数</translation>
+        </message>
+        <message>
+            <source>Grid: how many rows of holes</source>
+            <translation>格子:穴の行数</translation>
+        </message>
+        <message>
+            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
+            <translation>タップ穴:ISO メートル並目ねじ M3〜M20</translation>
+        </message>
+        <message>
+            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
+            <translation>ドリル・リーマ・ボーリング穴の直径(タップ穴はねじの径)</translation>
+        </message>
+        <message>
             <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
             <translation>直線・格子の行の方向。円では最初の穴の角度</translation>
         </message>

@@ -1516,6 +1516,30 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>单孔、直线的第一个孔、网格的角点、圆的中心</translation>
         </message>
         <message>
+            <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
+            <translation>孔、直线第一个孔、网格角点或圆心的 Y</translation>
+        </message>
+        <message>
+            <source>Bolt circle or arc: the radius the hole centres lie on</source>
+            <translation>螺栓圆或圆弧:孔中心所在的半径</translation>
+        </message>
+        <message>
+            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
+            <translation>孔数:沿直线、圆周或圆弧;网格为列数</translation>
+        </message>
+        <message>
+            <source>Grid: how many rows of holes</source>
+            <translation>网格:孔的行数</translation>
+        </message>
+        <message>
+            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
+            <translation>螺纹孔:ISO 公制粗牙螺纹 M3 至 M20</translation>
+        </message>
+        <message>
+            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
+            <translation>钻孔、铰孔或镗孔的直径(螺纹孔取螺纹的直径)</translation>
+        </message>
+        <message>
             <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
             <translation>直线或网格各行的方向；圆上第一个孔的角度</translation>
         </message>

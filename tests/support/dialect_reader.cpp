@@ -22,6 +22,13 @@ namespace {
 
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
+// How far above the last peck's bottom a pecking cycle comes back down in
+// rapid: rs274's G83_RAPID_DELTA, 0.010 inch (0.254 mm). The real controls
+// take it from a machine setting (Haas setting 22, SINUMERIK's anticipation
+// distance, HEIDENHAIN's advanced stop distance), never from the tape, so the
+// readers take LinuxCNC's.
+double peckReturn(bool inches) { return inches ? 0.010 : 0.254; }
+
 struct Refusal {
     std::string what;
 };
@@ -200,7 +207,17 @@ public:
     }
 
 private:
-    enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Drill };
+    // Drill..Bore: the canned cycles G81, G83, G84, G85, G86 (Haas).
+    enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Drill, Peck, Tap, Ream, Bore };
+
+    // A SINUMERIK cycle called modally: CYCLE81, 83, 84, 85 or 86.
+    struct ModalCycle {
+        int number = 81;
+        double rtp = 0, rfp = 0, sdis = 0, dp = 0;
+        double fdep = 0, dam = 0;          // CYCLE83: the first depth (absolute), each further peck
+        double pit = 0, sst = 0, sst1 = 0; // CYCLE84: the pitch, the speeds in and out
+        double ffr = 0, rff = 0;           // CYCLE85: the feeds in and out
+    };
 
     struct Block {
         std::vector<int> g, m;
@@ -277,7 +294,7 @@ private:
                 (letter == 'G' ? b.g : b.m).push_back(*n);
                 continue;
             }
-            const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJRFPSTH";
+            const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJRFPQSTH";
             if (letters.find(letter) == std::string::npos || number.empty()) refuse("'" + t + "' is not understood");
             if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
             if (letter == 'S' || letter == 'T' || letter == 'D' || letter == 'H') {
@@ -337,7 +354,10 @@ private:
             else if (g == 90) incremental_ = false;
             else if (g == 4) g4 = true;
             else if (!sinumerik_ && g == 81) setMotion(Mode::Drill);
-            else if (!sinumerik_ && g == 83) refuse("G83 (peck drilling) is not supported by this reader");
+            else if (!sinumerik_ && g == 83) setMotion(Mode::Peck);
+            else if (!sinumerik_ && g == 84) setMotion(Mode::Tap);
+            else if (!sinumerik_ && g == 85) setMotion(Mode::Ream);
+            else if (!sinumerik_ && g == 86) setMotion(Mode::Bore);
             else if (!sinumerik_ && g == 80) {
                 if (motion) refuse("two motion codes in one block");
                 g80 = true;
@@ -366,6 +386,7 @@ private:
         if (g154) {
             if (!b.has('P') || b.point.at('P') || b.v.at('P') < 1 || b.v.at('P') > 99) refuse("G154 needs P1 to P99");
         }
+        if (b.has('Q') && (motion ? *motion : mode_) != Mode::Peck) refuse("Q without G83");
         if (b.has('T')) selected_ = static_cast<int>(b.v.at('T'));
         for (const int mf : b.m) {
             if (mf == 6) {
@@ -400,6 +421,7 @@ private:
             mode_ = Mode::None;
             cycleZ_.reset();
             cycleR_.reset();
+            cycleQ_.reset();
         }
         if (motion) mode_ = *motion;
 
@@ -423,7 +445,7 @@ private:
                 return;
             }
             if (axes || !b.g.empty() || !b.m.empty() || !b.v.empty()) refuse("MCALL with other words");
-            mcall_ = cycle81(b.cycle);
+            mcall_ = modalCycle(b.cycle);
             return;
         }
         if (!b.cycle.empty()) refuse("a cycle called without MCALL");
@@ -438,20 +460,17 @@ private:
         Point3 to = m_.at;
         if (b.has('X')) to.x = b.v.at('X');
         if (b.has('Y')) to.y = b.v.at('Y');
-        if (mode_ != Mode::Drill && b.has('Z')) to.z = b.v.at('Z');
+        const bool cycle = mode_ >= Mode::Drill;
+        if (!cycle && b.has('Z')) to.z = b.v.at('Z');
         const bool centre = b.has('I') || b.has('J');
-        if (mode_ != Mode::Drill && b.has('R')) refuse("R without G81 (radius arcs are not supported)");
+        if (!cycle && b.has('R')) refuse("R without a canned cycle (radius arcs are not supported)");
 
         if (mcall_) {
             // SINUMERIK: the modal call runs after each positioning block.
             if (mode_ != Mode::Rapid || b.has('Z') || centre)
                 refuse("under MCALL only G0 X Y positioning blocks are understood");
             m_.traverse(to);
-            const auto& [rtp, rfp, sdis, dp] = *mcall_;
-            if (dp > rfp) refuse("CYCLE81's depth above its reference plane");
-            m_.traverse({to.x, to.y, rfp + sdis});
-            m_.feedTo({to.x, to.y, dp}, m_.feed);
-            m_.traverse({to.x, to.y, rtp});
+            calledCycle(*mcall_, to);
             return;
         }
         if (centre && mode_ != Mode::Clockwise && mode_ != Mode::CounterClockwise) refuse("I or J without G2 or G3");
@@ -471,22 +490,42 @@ private:
             m_.arc(to, {m_.at.x + b.v.at('I'), m_.at.y + b.v.at('J')}, mode_ == Mode::Clockwise ? -1 : 1, m_.feed);
             return;
         case Mode::Drill:
+        case Mode::Peck:
+        case Mode::Tap:
+        case Mode::Ream:
+        case Mode::Bore:
             drill(b, to);
             return;
         }
     }
 
-    // G98 G81 as rs274 expands it: up to R first when below it, across at
-    // the initial level, down to R, feed to Z, back to the initial level.
+    // G98 G81/G83/G84/G85/G86 as rs274 expands G81, G83, G85 and G86: up to
+    // R first when below it, across at the initial level, down to R, then
+    // - G81: feed to Z;
+    // - G83: pecks of Q from R, each back up to R and down again in rapid to
+    //   peckReturn() above its bottom, the last one to Z;
+    // - G84 (rigid tapping, as the linuxcnc tape's G33.1): feed to Z and
+    //   back out to R at F (F = pitch x S);
+    // - G85: feed to Z and back out to R;
+    // - G86: feed to Z (the spindle stops there);
+    // then back to the initial level in rapid.
     void drill(const Block& b, const Point3& hole)
     {
-        if (!g98_) refuse("G81 without G98 (only the return to the initial level is understood)");
+        const std::string code = mode_ == Mode::Drill ? "G81"
+                                 : mode_ == Mode::Peck ? "G83"
+                                 : mode_ == Mode::Tap  ? "G84"
+                                 : mode_ == Mode::Ream ? "G85"
+                                                       : "G86";
+        if (!g98_) refuse(code + " without G98 (only the return to the initial level is understood)");
         if (b.has('Z')) cycleZ_ = b.v.at('Z');
         if (b.has('R')) cycleR_ = b.v.at('R');
-        if (!cycleZ_ || !cycleR_) refuse("G81 needs Z and R");
+        if (b.has('Q')) cycleQ_ = b.v.at('Q');
+        if (!cycleZ_ || !cycleR_) refuse(code + " needs Z and R");
+        if (mode_ == Mode::Peck && !cycleQ_) refuse("G83 needs Q (the peck)");
+        if (mode_ == Mode::Peck && !(*cycleQ_ > 0)) refuse("G83's Q must be positive");
         const double r = *cycleR_, bottom = *cycleZ_;
-        if (bottom > r) refuse("G81's Z above its R");
-        if (!known(m_.at)) refuse("a drilling cycle from an unknown position");
+        if (bottom > r) refuse(code + "'s Z above its R");
+        if (!known(m_.at)) refuse("a canned cycle from an unknown position");
         double initial = m_.at.z;
         if (initial < r) {
             m_.traverse({m_.at.x, m_.at.y, r});
@@ -494,27 +533,154 @@ private:
         }
         m_.traverse({hole.x, hole.y, initial});
         m_.traverse({hole.x, hole.y, r});
+        if (mode_ == Mode::Peck) {
+            // rs274's loop, to the same arithmetic.
+            const double q = *cycleQ_;
+            for (double depth = r - q; depth > bottom; depth -= q) {
+                m_.feedTo({hole.x, hole.y, depth}, m_.feed);
+                m_.traverse({hole.x, hole.y, r});
+                m_.traverse({hole.x, hole.y, depth + peckReturn(m_.out.inches)});
+            }
+        }
         m_.feedTo({hole.x, hole.y, bottom}, m_.feed);
+        if (mode_ == Mode::Tap || mode_ == Mode::Ream) m_.feedTo({hole.x, hole.y, r}, m_.feed);
         m_.traverse({hole.x, hole.y, initial});
     }
 
-    static std::array<double, 4> cycle81(const std::string& call)
+    // SINUMERIK: the modally called cycle at the position just reached (the
+    // tool at its height there): down to RFP + SDIS in rapid, then
+    // - CYCLE81: feed to DP at F;
+    // - CYCLE83 (VARI=1, chip removal): pecks to FDEP, then DAM deeper each
+    //   time, each back up to RFP + SDIS and down again in rapid to
+    //   peckReturn() above its bottom, the last one to DP, at F (as G83);
+    // - CYCLE84 (rigid tapping): to DP at PIT x SST, out to RFP + SDIS at
+    //   PIT x SST1;
+    // - CYCLE85: to DP at FFR, out to RFP + SDIS at RFF;
+    // - CYCLE86: to DP at F, the spindle stopped, out in rapid;
+    // then up to RTP in rapid (CYCLE86: its two rapids up the hole's axis as
+    // the one straight move they make).
+    void calledCycle(const ModalCycle& c, const Point3& to)
     {
-        if (call.starts_with("CYCLE83")) refuse("CYCLE83 (deep-hole drilling) is not supported by this reader");
-        if (!call.starts_with("CYCLE81(") || !call.ends_with(")")) refuse("'" + call + "' is not understood");
-        const std::string inside = call.substr(8, call.size() - 9);
-        std::array<double, 4> p{};
+        const double top = c.rfp + c.sdis;
+        if (c.dp > c.rfp) refuse("CYCLE" + std::to_string(c.number) + "'s depth above its reference plane");
+        m_.traverse({to.x, to.y, top});
+        switch (c.number) {
+        case 81:
+        case 86:
+            m_.feedTo({to.x, to.y, c.dp}, m_.feed);
+            break;
+        case 83:
+            for (double depth = c.fdep; depth > c.dp; depth -= c.dam) {
+                m_.feedTo({to.x, to.y, depth}, m_.feed);
+                m_.traverse({to.x, to.y, top});
+                m_.traverse({to.x, to.y, depth + peckReturn(m_.out.inches)});
+            }
+            m_.feedTo({to.x, to.y, c.dp}, m_.feed);
+            break;
+        case 84:
+            m_.feedTo({to.x, to.y, c.dp}, c.pit * c.sst);
+            m_.feedTo({to.x, to.y, top}, c.pit * c.sst1);
+            break;
+        case 85:
+            m_.feedTo({to.x, to.y, c.dp}, c.ffr);
+            m_.feedTo({to.x, to.y, top}, c.rff);
+            break;
+        }
+        m_.traverse({to.x, to.y, c.rtp});
+    }
+
+    // The parameters of "NAME(p1,p2,...)", an empty one as nothing.
+    static std::vector<std::optional<double>> cycleParameters(const std::string& call, const std::string& name)
+    {
+        if (!call.ends_with(")")) refuse("'" + call + "' is not understood");
+        const std::string inside = call.substr(name.size() + 1, call.size() - name.size() - 2);
+        std::vector<std::optional<double>> p;
         std::size_t from = 0;
-        for (std::size_t k = 0; k < 4; ++k) {
+        for (int k = 1;; ++k) {
             const auto comma = inside.find(',', from);
-            if ((k < 3) != (comma != std::string::npos)) refuse("CYCLE81 needs exactly RTP, RFP, SDIS and DP");
             const std::size_t size = comma == std::string::npos ? std::string::npos : comma - from;
-            const auto value = decimal(std::string_view(inside).substr(from, size), false);
-            if (!value) refuse("CYCLE81's parameter " + std::to_string(k + 1) + " is not a number");
-            p[k] = *value;
+            const std::string_view part = std::string_view(inside).substr(from, size);
+            if (part.empty()) {
+                p.emplace_back();
+            } else {
+                const auto value = decimal(part, false);
+                if (!value) refuse(name + "'s parameter " + std::to_string(k) + " is not a number");
+                p.emplace_back(*value);
+            }
+            if (comma == std::string::npos) break;
             from = comma + 1;
         }
         return p;
+    }
+
+    // CYCLE81(RTP,RFP,SDIS,DP); CYCLE83(RTP,RFP,SDIS,DP,,FDEP,,DAM,0,0,1,1);
+    // CYCLE84(RTP,RFP,SDIS,DP,,0,3,,PIT,POSS,SST,SST1);
+    // CYCLE85(RTP,RFP,SDIS,DP,,0,FFR,RFF); CYCLE86(RTP,RFP,SDIS,DP,,0,3,0,0,0,POSS).
+    // Any other value of the fixed parameters (dwells, relative depths,
+    // degression, chip breaking, left-hand tapping, lift off the wall) is
+    // refused.
+    static ModalCycle modalCycle(const std::string& call)
+    {
+        const auto paren = call.find('(');
+        const std::string name = call.substr(0, paren == std::string::npos ? call.size() : paren);
+        if (paren == std::string::npos || !(name == "CYCLE81" || name == "CYCLE83" || name == "CYCLE84" ||
+                                            name == "CYCLE85" || name == "CYCLE86"))
+            refuse("'" + call + "' is not understood");
+        ModalCycle c;
+        c.number = std::stoi(name.substr(5));
+        const auto p = cycleParameters(call, name);
+        const auto need = [&](std::size_t k, const char* what) {
+            if (k > p.size() || !p[k - 1]) refuse(name + " needs " + what + " (parameter " + std::to_string(k) + ")");
+            return *p[k - 1];
+        };
+        const auto empty = [&](std::size_t k, const char* what) {
+            if (k <= p.size() && p[k - 1])
+                refuse(name + "'s " + what + " (parameter " + std::to_string(k) + ") is not supported by this reader");
+        };
+        const auto only = [&](std::size_t k, double value, const char* what) {
+            if (need(k, what) != value) refuse(name + " with " + what + " other than " + show(value) + " is not supported by this reader");
+        };
+        const std::size_t counts[] = {4, 0, 12, 12, 8, 11};  // CYCLE81, -, 83, 84, 85, 86
+        if (c.number == 81 && p.size() != 4) refuse("CYCLE81 needs exactly RTP, RFP, SDIS and DP");
+        if (p.size() != counts[c.number - 81]) refuse(name + " needs " + std::to_string(counts[c.number - 81]) + " parameters");
+        c.rtp = need(1, "RTP");
+        c.rfp = need(2, "RFP");
+        c.sdis = need(3, "SDIS");
+        c.dp = need(4, "DP (the depth, absolute)");
+        if (c.number != 81) empty(5, "DPR (a relative depth)");
+        if (c.number == 83) {
+            c.fdep = need(6, "FDEP (the first depth, absolute)");
+            empty(7, "FDPR (a relative first depth)");
+            c.dam = need(8, "DAM (the peck)");
+            if (!(c.dam > 0)) refuse("CYCLE83's DAM must be positive (a degression is not supported by this reader)");
+            only(9, 0, "DTB (a dwell at depth)");
+            only(10, 0, "DTS (a dwell at the start)");
+            only(11, 1, "FRF (the first feed's factor)");
+            only(12, 1, "VARI (1: chip removal)");
+        } else if (c.number == 84) {
+            only(6, 0, "DTB (a dwell at depth)");
+            only(7, 3, "SDAC (the spindle after the cycle)");
+            empty(8, "MPIT (a thread size)");
+            c.pit = need(9, "PIT (the pitch)");
+            if (!(c.pit > 0)) refuse("CYCLE84's PIT must be positive (left-hand tapping is not supported by this reader)");
+            need(10, "POSS (the spindle's stop angle)");
+            c.sst = need(11, "SST (the tapping speed)");
+            c.sst1 = need(12, "SST1 (the speed out)");
+            if (!(c.sst > 0 && c.sst1 > 0)) refuse("CYCLE84's SST and SST1 must be positive");
+        } else if (c.number == 85) {
+            only(6, 0, "DTB (a dwell at depth)");
+            c.ffr = need(7, "FFR (the feed in)");
+            c.rff = need(8, "RFF (the feed out)");
+            if (!(c.ffr > 0 && c.rff > 0)) refuse("CYCLE85's FFR and RFF must be positive");
+        } else if (c.number == 86) {
+            only(6, 0, "DTB (a dwell at depth)");
+            only(7, 3, "SDIR (the spindle's direction)");
+            only(8, 0, "RPA (a lift off the wall)");
+            only(9, 0, "RPO (a lift off the wall)");
+            only(10, 0, "RPAP (a lift off the wall)");
+            need(11, "POSS (the spindle's stop angle)");
+        }
+        return c;
     }
 
     bool sinumerik_;
@@ -527,8 +693,8 @@ private:
     bool programNumber_ = false;
     int percents_ = 0;
     int selected_ = 0;
-    std::optional<double> cycleZ_, cycleR_;
-    std::optional<std::array<double, 4>> mcall_;  // RTP, RFP, SDIS, DP
+    std::optional<double> cycleZ_, cycleR_, cycleQ_;
+    std::optional<ModalCycle> mcall_;
 };
 
 // ---------------------------------------------------------------- Klartext
@@ -618,7 +784,8 @@ private:
             if (!ended_) refuse("END PGM with no M30 before it");
             return;
         }
-        if (!b.more.empty() && !h.starts_with("CYCL DEF 247 ") && !h.starts_with("CYCL DEF 200 "))
+        if (!b.more.empty() && !h.starts_with("CYCL DEF 247 ") && !h.starts_with("CYCL DEF 200 ") &&
+            !h.starts_with("CYCL DEF 201 ") && !h.starts_with("CYCL DEF 202 ") && !h.starts_with("CYCL DEF 207 "))
             refuse("continuation lines after a block that has none");
         if (dwellDue_ != h.starts_with("CYCL DEF 9.1 ")) refuse("CYCL DEF 9.0 and 9.1 go together");
         if (ended_) refuse("a block after M30 other than END PGM");
@@ -633,7 +800,13 @@ private:
         } else if (h == "CYCL DEF 247 DATUM SETTING ~") {
             if (b.more.size() != 1 || !std::regex_match(b.more[0].second, datum)) refuse("cycle 247 needs Q339 alone");
         } else if (h == "CYCL DEF 200 DRILLING ~") {
-            drilling(b);
+            holeCycle(b, 200);
+        } else if (h == "CYCL DEF 201 REAMING ~") {
+            holeCycle(b, 201);
+        } else if (h == "CYCL DEF 202 BORING ~") {
+            holeCycle(b, 202);
+        } else if (h == "CYCL DEF 207 RIGID TAPPING NEW ~") {
+            holeCycle(b, 207);
         } else if (h == "CYCL DEF 9.0 DWELL TIME") {
             dwellDue_ = true;
         } else if (h.starts_with("CYCL DEF 9.1 ")) {
@@ -743,15 +916,31 @@ private:
         }
         if (i >= t.size() || t[i] != "Z") refuse("TOOL CALL needs the tool axis Z");
         ++i;
-        if (i < t.size() && t[i].starts_with("S") && decimal(std::string_view(t[i]).substr(1), false)) ++i;
+        if (i < t.size() && t[i].starts_with("S") && decimal(std::string_view(t[i]).substr(1), false)) {
+            rpm_ = *decimal(std::string_view(t[i]).substr(1), false);
+            ++i;
+        }
         if (i != t.size()) refuse("'" + t[i] + "' is not understood in TOOL CALL");
     }
 
-    void drilling(const Block& b)
+    // Cycles 200 (drilling), 201 (reaming), 202 (boring) and 207 (rigid
+    // tapping), their Q parameters in the order the TNC writes them. Dwells,
+    // a lift off the wall (Q214) and left-hand tapping are refused.
+    void holeCycle(const Block& b, int number)
     {
-        static const std::regex q(R"(Q([0-9]+)=([-+][0-9.]+) ;[A-Z0-9 -]+?( ~)?)");
-        static const int order[] = {200, 201, 206, 202, 210, 203, 204, 211};
-        if (b.more.size() != std::size(order)) refuse("cycle 200 needs Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211");
+        static const std::regex q(R"(Q([0-9]+)=([-+][0-9.]+|FMAX) ;[A-Z0-9 -]+?( ~)?)");
+        static const std::map<int, std::vector<int>> orders{
+            {200, {200, 201, 206, 202, 210, 203, 204, 211}},
+            {201, {200, 201, 206, 211, 208, 203, 204}},
+            {202, {200, 201, 206, 211, 208, 203, 204, 214, 336}},
+            {207, {200, 201, 239, 203, 204}},
+        };
+        const std::vector<int>& order = orders.at(number);
+        if (b.more.size() != order.size()) {
+            std::string all;
+            for (const int n : order) all += " Q" + std::to_string(n);
+            refuse("cycle " + std::to_string(number) + " needs" + all);
+        }
         std::map<int, double> v;
         for (std::size_t i = 0; i < b.more.size(); ++i) {
             m_.line = b.more[i].first;
@@ -759,17 +948,23 @@ private:
             const int n = order[i];
             if (!std::regex_match(b.more[i].second, match, q) || std::stoi(match[1].str()) != n)
                 refuse("Q" + std::to_string(n) + " expected");
-            const auto value = decimal(match[2].str(), true);
+            // Q208=FMAX: out at rapid (kept as -1, a feed no cycle writes).
+            if (match[2].str() == "FMAX" && n != 208) refuse("FMAX is only a retraction feed (Q208)");
+            const auto value = match[2].str() == "FMAX" ? std::optional<double>(-1.0) : decimal(match[2].str(), true);
             if (!value) refuse("Q" + std::to_string(n) + " is not a number");
             v[n] = *value;
             if ((n == 200 || n == 204) && *value < 0) refuse("a negative set-up clearance");
             if (n == 201 && *value >= 0) refuse("Q201 (depth) must be negative");
             if (n == 206 && !(*value > 0)) refuse("Q206 (plunge feed) must be positive");
-            if (n == 202 && *value != -v[201])
-                refuse("Q202 (plunging depth) other than |Q201|: pecking is not supported by this reader");
-            if ((n == 210 || n == 211) && *value != 0) refuse("dwells in cycle 200 are not supported by this reader");
+            if (n == 202 && !(*value > 0)) refuse("Q202 (plunging depth) must be positive");
+            if (n == 208 && *value < 0 && match[2].str() != "FMAX") refuse("Q208 (retraction feed) must not be negative");
+            if (n == 239 && !(*value > 0)) refuse("Q239 (pitch) must be positive: left-hand tapping is not supported by this reader");
+            if (n == 214 && *value != 0) refuse("Q214 (a lift off the wall) is not supported by this reader");
+            if ((n == 210 || n == 211) && *value != 0)
+                refuse("dwells in cycle " + std::to_string(number) + " are not supported by this reader");
         }
         m_.line = b.line;
+        cycleNumber_ = number;
         cycle_ = v;
     }
 
@@ -826,15 +1021,51 @@ private:
         m_.arc(to, c, rotation, m_.feed);
     }
 
-    // Cycle 200 at the position just reached: to the set-up clearance, one
-    // plunge to depth at Q206, out to the 2nd set-up clearance.
+    // The cycle in force at the position just reached: to the set-up
+    // clearance (Q203 + Q200) in rapid, then
+    // - 200: plunges of Q202 from the surface at Q206, each but the last
+    //   back up to the set-up clearance and down again in rapid to
+    //   peckReturn() above its bottom, the last one to the depth (Q202 at
+    //   least |Q201|: one plunge);
+    // - 201: to the depth at Q206, out to the set-up clearance at Q208 (0:
+    //   at Q206);
+    // - 202: to the depth at Q206, the spindle stopped at Q336, out to the
+    //   set-up clearance at Q208 (0: at Q206);
+    // - 207: to the depth and out to the set-up clearance at Q239 x S (the
+    //   TOOL CALL's speed);
+    // then out to the 2nd set-up clearance (Q203 + Q204) in rapid.
     void cycleCall()
     {
         if (cycle_.empty()) refuse("M99 with no cycle defined");
         const double surface = cycle_.at(203);
+        const double clearance = surface + cycle_.at(200);
+        const double bottom = surface + cycle_.at(201);
         const Point3 at = m_.at;
-        m_.traverse({at.x, at.y, surface + cycle_.at(200)});
-        m_.feedTo({at.x, at.y, surface + cycle_.at(201)}, cycle_.at(206));
+        m_.traverse({at.x, at.y, clearance});
+        switch (cycleNumber_) {
+        case 200: {
+            const double plunge = cycle_.at(202);
+            for (double depth = surface - plunge; depth > bottom; depth -= plunge) {
+                m_.feedTo({at.x, at.y, depth}, cycle_.at(206));
+                m_.traverse({at.x, at.y, clearance});
+                m_.traverse({at.x, at.y, depth + peckReturn(m_.out.inches)});
+            }
+            m_.feedTo({at.x, at.y, bottom}, cycle_.at(206));
+            break;
+        }
+        case 201:
+        case 202: {
+            m_.feedTo({at.x, at.y, bottom}, cycle_.at(206));
+            if (cycle_.at(208) < 0) break;  // FMAX: straight out at rapid to the 2nd set-up clearance, below
+            m_.feedTo({at.x, at.y, clearance}, cycle_.at(208) > 0 ? cycle_.at(208) : cycle_.at(206));
+            break;
+        }
+        case 207:
+            if (!(rpm_ > 0)) refuse("cycle 207 with no spindle speed (TOOL CALL ... S)");
+            m_.feedTo({at.x, at.y, bottom}, cycle_.at(239) * rpm_);
+            m_.feedTo({at.x, at.y, clearance}, cycle_.at(239) * rpm_);
+            break;
+        }
         m_.traverse({at.x, at.y, surface + std::max(cycle_.at(200), cycle_.at(204))});
     }
 
@@ -845,7 +1076,9 @@ private:
     bool dwellDue_ = false;
     bool blankDue_ = false;
     std::optional<Point2> pole_;
-    std::map<int, double> cycle_;  // the CYCL DEF 200 in force: Q number -> value
+    int cycleNumber_ = 0;          // the CYCL DEF 200, 201, 202 or 207 in force
+    std::map<int, double> cycle_;  // its Q parameters: Q number -> value
+    double rpm_ = 0.0;             // the spindle speed of the last TOOL CALL with S
 };
 
 }  // namespace

@@ -91,6 +91,7 @@ Rs274Result runRs274(const std::string& ngc, const std::string& toolTable)
     // The tool starts at machine zero: in program coordinates, minus the work offset.
     Point3 at{};
     double feed = 0.0;
+    double rpm = 0.0, syncPitch = 0.0;  // the spindle speed; G33.1's pitch (K)
     int step = 0, tool = 0, selected = 0, plane = 17;
     for (const auto& line : r.out.split('\n')) {
         const auto m = call.match(line);
@@ -120,11 +121,20 @@ Rs274Result runRs274(const std::string& ngc, const std::string& toolTable)
             selected = args.toInt();
         } else if (name == "CHANGE_TOOL") {
             tool = selected;
+        } else if (name == "SET_SPINDLE_SPEED") {
+            // SET_SPINDLE_SPEED(spindle, rpm)
+            const auto v = numbers(args);
+            rpm = v.empty() ? 0.0 : v.back();
+        } else if (name == "START_SPEED_FEED_SYNC") {
+            // START_SPEED_FEED_SYNC(pitch, velocity mode)
+            syncPitch = numbers(args).at(0);
         } else if (name == "DWELL") {
-            ++r.dwells;
+            // G86's mandatory P0 is DWELL(0): no pause, no dwell.
+            if (numbers(args).at(0) > 0) ++r.dwells;
         } else if (name == "RIGID_TAP") {
             // RIGID_TAP(x, y, z): G33.1 down to z at the spindle's pitch and
-            // back up to where it began: two feeds.
+            // back up to where it began: two feeds, at the pitch x the
+            // spindle speed (not the F word in force: G33.1 has none).
             const auto v = numbers(args);
             CanonMove down;
             down.kind = CanonMove::Feed;
@@ -133,7 +143,7 @@ Rs274Result runRs274(const std::string& ngc, const std::string& toolTable)
             down.step = step;
             down.tool = tool;
             down.plane = plane;
-            down.feed = feed;
+            down.feed = syncPitch * rpm;
             CanonMove up = down;
             up.start = down.end;
             up.end = at;

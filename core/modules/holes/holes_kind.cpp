@@ -196,6 +196,12 @@ protected:
         form::describe(fs, {
             {"pattern", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc")},
             {"x", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The hole, the first hole of a line, the corner of a grid, the centre of a circle")},
+            {"y", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle")},
+            {"radius", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Bolt circle or arc: the radius the hole centres lie on")},
+            {"count", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How many holes: along a line, around a circle or an arc; a grid's columns")},
+            {"rows", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: how many rows of holes")},
+            {"thread", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tapped holes: the ISO metric coarse thread, M3 to M20")},
+            {"diameter", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)")},
             {"angle", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction of a line's or grid's rows; angle of a circle's first hole")},
             {"pitchY", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: distance between rows")},
             {"pitch", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance between neighbouring holes along the row")},
