@@ -122,8 +122,8 @@ void BM_Reach(benchmark::State& state)
 {
     double reach = 0, inscribed = 0;
     for (auto _ : state) {
-        reach = paths::reachRadius(gearPocket());
         inscribed = paths::inscribedRadius(gearPocket());
+        reach = paths::reachRadius(gearPocket(), inscribed);
     }
     state.counters["reach_mm"] = reach;
     state.counters["inscribed_mm"] = inscribed;

@@ -236,16 +236,7 @@ double area(const Region& r)
     return a;
 }
 
-double signedDistance(const Region& r, Point2 p)
-{
-    double d = distanceTo(r.outer, p);
-    bool inside = contains(r.outer, p);
-    for (const auto& i : r.islands) {
-        d = std::min(d, distanceTo(i, p));
-        if (inside && contains(i, p)) inside = false;
-    }
-    return inside ? -d : d;
-}
+double signedDistance(const Region& r, Point2 p) { return RegionDistance(r)(p); }
 
 RegionDistance::RegionDistance(const Region& r)
 {

@@ -7,17 +7,19 @@
 
 namespace taiwa::paths {
 
+// The radius of the largest circle inside the region: stepping in from
+// the last non-empty inset by halving steps, with Clipper on the region
+// flattened to 1 µm chords (to about 1 µm a step): the widest a pocket tool
+// may be is about this much, as for a four-cornered pocket (half its width).
+double inscribedRadius(const Region& region);
+
 // The largest tool radius whose round cutter, kept inside the region, still
 // sweeps all of it: limited by the narrowest channel (half its width) and the
-// smallest inside corner radius. Found by bisection with Clipper on the
-// region flattened to 1 µm: a radius reaches everywhere when shrinking the
-// region by it and growing it back loses no more than the chords' sliver.
-// 0 when the region is empty or has a sharp inside corner.
-double reachRadius(const Region& region);
-
-// The radius of the largest circle inside the region (bisection with
-// Clipper, to 0.1 µm): the widest a pocket tool may be is about this much,
-// as for a four-cornered pocket (half its width).
-double inscribedRadius(const Region& region);
+// smallest inside corner radius, at most `inscribed` (inscribedRadius of the
+// same region). Small radii are tried first, doubling, then bisection to
+// 1 µm: a radius reaches everywhere when shrinking the region by it and
+// growing it back leaves out nothing thicker than 4 µm. 0 when the region is
+// empty or has a sharp inside corner.
+double reachRadius(const Region& region, double inscribed);
 
 }  // namespace taiwa::paths

@@ -215,8 +215,10 @@ ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& t
                     const Point2 to = middle + Point2{k % 2 ? -helix : helix, 0.0};
                     b.arc(p.climb, at(to, approach - drop * k / halves), middle, FeedKind::Ramp);
                 }
-                b.arc(p.climb, at(middle + Point2{halves % 2 ? helix : -helix, 0.0}, z), middle);  // a level half turn
-                b.arc(p.climb, at(b.at().x == start.x ? middle - Point2{helix, 0.0} : start, z), middle);
+                // A level turn at the depth, in two halves, back to where the ramp ended.
+                const Point2 ended = middle + Point2{halves % 2 ? -helix : helix, 0.0};
+                b.arc(p.climb, at(2.0 * middle - ended, z), middle);
+                b.arc(p.climb, at(ended, z), middle);
                 b.feed(at(target, z));
                 runLoop(b, l, from, z, 0.0);
             } else {
@@ -233,7 +235,7 @@ ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& t
 
 }  // namespace
 
-double reachRadius(const Region& r)
+double reachRadius(const Region& r, double inscribed)
 {
     const Paths region = regionPaths(r, kSizingChord);
     // A radius reaches everywhere when shrinking the region by it and
@@ -256,7 +258,7 @@ double reachRadius(const Region& r)
     };
     // Small radii first, doubling: a large offset of a detailed outline is
     // slow, and most contours are limited by a small corner or channel.
-    const double most = inscribedRadius(r);
+    const double most = inscribed;
     if (!(most > 0.0)) return 0.0;
     double lo = 0.0, hi = std::min(0.125, most);
     while (reaches(hi)) {

@@ -36,10 +36,16 @@ struct ContourPocket {
     std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages
     std::vector<bool> closedContours;         // outline, then islands: closed or open
     bool resolved = false;
+    // Of the region, worked out once when it is resolved (paths/region.h):
+    // the check's tool room and the decomposition's steps both use them.
+    double reach = 0.0;
+    double inscribed = 0.0;
 
     void convertLengths(const LengthMap& f)
     {
         depth = f(depth);
+        reach = f(reach);
+        inscribed = f(inscribed);
         if (!region) return;
         const auto scale = [&](Contour& c) {
             for (auto& s : c.segments) {

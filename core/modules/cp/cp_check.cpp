@@ -7,7 +7,6 @@
 #include "check/messages.h"
 #include "model/clipper_scale.h"
 #include "model/codes.h"
-#include "paths/region.h"
 
 #include <algorithm>
 #include <cmath>
@@ -176,7 +175,7 @@ check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const c
     const ToolUse use = *toolUseFromCode(p.toolUse);
     if (!check::checkDepthAllowances(p.depth, *ctx.tech, false, hasRoughing(use) || hasFloorFinishing(use), r))
         return report;
-    checkRooms(p, paths::reachRadius(normalised(*p.region)), r);
+    checkRooms(p, p.reach, r);
     return report;
 }
 

@@ -5,7 +5,6 @@
 
 #include "decompose/make_step.h"
 #include "model/codes.h"
-#include "paths/region.h"
 
 namespace taiwa {
 
@@ -15,7 +14,7 @@ std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const Tech
     const ToolUse use = toolUseFromCode(pocket.toolUse).value();
     const WallFinish finish = wallFinishFromCode(pocket.wallFinish).value();
     const Region region = normalised(pocket.region.value());
-    const double reach = paths::reachRadius(region), inscribed = paths::inscribedRadius(region);
+    const double reach = pocket.reach, inscribed = pocket.inscribed;
     const Box2 box = bounds(region.outer);
     const Point2 middle = 0.5 * (box.min + box.max);
     const double T = pocket.depth, roughDepth = T - tech.beta2;

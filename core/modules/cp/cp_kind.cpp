@@ -4,6 +4,7 @@
 #include "modules/cp/cp.h"
 #include "modules/module_kind.h"
 #include "modules/pocket_plan.h"
+#include "paths/region.h"
 
 #include "figure/figure_text.h"
 #include "io/job_messages.h"
@@ -57,7 +58,12 @@ public:
         take(p.outline, r.outer);
         r.islands.resize(p.islands.size());
         for (std::size_t i = 0; i < p.islands.size(); ++i) take(p.islands[i], r.islands[i]);
-        if (all) p.region = std::move(r);
+        p.reach = p.inscribed = 0.0;
+        if (!all) return;
+        const Region normal = normalised(r);
+        p.inscribed = paths::inscribedRadius(normal);
+        p.reach = paths::reachRadius(normal, p.inscribed);
+        p.region = std::move(r);
     }
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override
@@ -78,13 +84,11 @@ public:
         c.min = box.min;
         c.max = box.max;
         c.depth = p.depth;
-        c.depthAt = [distance = std::make_shared<RegionDistance>(region), depth = p.depth](Point2 q, double slack) {
-            return (*distance)(q) <= slack ? depth : 0.0;
-        };
+        const auto distance = std::make_shared<RegionDistance>(region);
+        c.depthAt = [distance, depth = p.depth](Point2 q, double slack) { return (*distance)(q) <= slack ? depth : 0.0; };
         // Walls only (U8): the pocket is open to the floor within α2 of its walls.
         if (toolUseFromCode(p.toolUse).value_or(ToolUse::Standard) == ToolUse::WallOnly)
-            c.openAt = [distance = std::make_shared<RegionDistance>(region), depth = p.depth,
-                        a2 = tech.alpha2](Point2 q) { return (*distance)(q) <= -a2 ? depth : 0.0; };
+            c.openAt = [distance, depth = p.depth, a2 = tech.alpha2](Point2 q) { return (*distance)(q) <= -a2 ? depth : 0.0; };
         return c;
     }
 
