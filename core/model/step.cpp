@@ -24,6 +24,9 @@ const char* toString(StepKind k)
     case StepKind::Tapping: return "tapping";
     case StepKind::Reaming: return "reaming";
     case StepKind::Boring: return "boring";
+    case StepKind::FaceMilling: return "face milling";
+    case StepKind::SideMilling: return "side milling";
+    case StepKind::AreaClearing: return "area clearing";
     }
     return "";
 }
@@ -47,6 +50,9 @@ const char* toKey(StepKind k)
     case StepKind::Tapping: return "tap";
     case StepKind::Reaming: return "ream";
     case StepKind::Boring: return "bore";
+    case StepKind::FaceMilling: return "face";
+    case StepKind::SideMilling: return "side";
+    case StepKind::AreaClearing: return "area";
     }
     return "";
 }

@@ -35,6 +35,12 @@ enum class StepKind {
     Tapping,
     Reaming,
     Boring,
+    // Contour units besides the contour pocket: face milling of the stock
+    // top (module FACE), side milling along a contour (module SIDE), area
+    // clearing along passes the operator drew (module AREA).
+    FaceMilling,
+    SideMilling,
+    AreaClearing,
 };
 const char* toString(StepKind k);  // "roughing"
 const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
@@ -47,7 +53,8 @@ const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins 
 // turning: 60 facing, 61 centre drilling, 62 drilling, 70 roughing,
 // 71 finishing, 72 grooving, 73 parting, 74 threading; hole patterns: 61
 // centre drilling, 62 drilling as on the lathe, 63 tapping, 64 reaming,
-// 65 boring.
+// 65 boring; 80 face milling, 81 face finishing, 85 side milling, 86 side
+// finishing, 90 area clearing by drawn passes.
 enum class MachiningType : int {
     PilotHole = 10,
     Roughing = 20,
@@ -67,6 +74,11 @@ enum class MachiningType : int {
     Tapping = 63,
     Reaming = 64,
     Boring = 65,
+    FaceMilling = 80,
+    FaceFinishing = 81,
+    SideMilling = 85,
+    SideFinishing = 86,
+    AreaClearing = 90,
 };
 
 // An inclined face of module M2D: a plane strip between its edge at the top
@@ -116,6 +128,22 @@ struct Step {
     // Roughing: the unit's radial step-over as a fraction of the tool
     // diameter, when the unit overrides the technology data's.
     std::optional<double> stepOver;
+    // Side milling (module SIDE): the contour the tool's edge runs along, open
+    // or closed, in the direction the tool travels; the tool on its left
+    // (true) or its right; and the distances of the tool's edge from the
+    // contour of the step's radial passes in the order cut (the last is the
+    // nearest; 0 on a finishing pass).
+    std::optional<Contour> sideContour;
+    bool toolOnLeft = true;
+    std::vector<double> sideOffsets;
+    // Face milling (module FACE): `outline` is the face to mill; the passes
+    // run at passAngle degrees from +X, one way or back and forth (zigzag).
+    double passAngle = 0.0;
+    bool zigzag = false;
+    // Area clearing by drawn passes (module AREA): the points the tool centre
+    // goes through in the order the operator drew them (each pass runs from
+    // one point to the next), within `region`.
+    std::vector<Point2> drawnPoints;
     // Turning steps: side, speeds, the path in XZ (then `path` stays empty:
     // milling's stages pass such a step by).
     std::optional<TurnStep> turn;

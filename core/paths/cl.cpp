@@ -30,6 +30,9 @@ ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& 
     case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
     case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
     case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
+    case StepKind::FaceMilling: return paths::faceMilling(step, tool, tech, params);
+    case StepKind::SideMilling: return paths::sideMilling(step, tool, tech, params);
+    case StepKind::AreaClearing: return paths::areaClearing(step, tool, tech, params);
     default: break;  // turning steps (Step::turn) get their paths from core/turning/
     }
     throw std::logic_error("no milling tool path for step " + step.label());

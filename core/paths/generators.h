@@ -1,7 +1,8 @@
 // The tool-path generators of the step kinds, one source file each:
 // pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
 // inclined_face.cpp, pilot_hole.cpp; steps of contour units (Step::region)
-// region_pocket.cpp and region_walls.cpp. makeToolPath dispatches to them.
+// region_pocket.cpp and region_walls.cpp; face_milling.cpp, side_milling.cpp,
+// area_clearing.cpp. makeToolPath dispatches to them.
 #pragma once
 
 #include "model/step.h"
@@ -24,5 +25,8 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
 std::vector<double> incisionDepths(const Step& step, const Tool& tool, const TechnologyData& tech);
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p);  // holes.cpp: hole patterns
+ToolPath faceMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);   // face_milling.cpp
+ToolPath sideMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);   // side_milling.cpp
+ToolPath areaClearing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);  // area_clearing.cpp
 
 }  // namespace taiwa::paths
