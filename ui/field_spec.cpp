@@ -31,6 +31,7 @@ FieldSpec toSpec(const FormField& f)
              : f.kind == FormFieldKind::OptionalNumber ? FieldKind::OptionalNumber
              : f.kind == FormFieldKind::ContourName    ? FieldKind::ContourName
              : f.kind == FormFieldKind::ContourNames   ? FieldKind::ContourNames
+             : f.kind == FormFieldKind::Points         ? FieldKind::Points
                                                        : FieldKind::Number;
     s.whole = f.whole;
     for (const auto& [value, meaning] : f.codes) s.codes.emplace_back(value, text(meaning));
@@ -86,7 +87,8 @@ bool FieldSpec::sameText(const MachiningUnit& unit, const QString& typed) const
 QLineEdit* makeNameEdit(const FieldSpec& field, QWidget* parent)
 {
     auto* edit = new QLineEdit(parent);
-    edit->setCompleter(new NameCompleter(edit, field.kind == FieldKind::ContourNames));
+    if (field.kind != FieldKind::Points)
+        edit->setCompleter(new NameCompleter(edit, field.kind == FieldKind::ContourNames));
     return edit;
 }
 

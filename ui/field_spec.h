@@ -22,8 +22,9 @@ class QWidget;
 namespace taiwa::ui {
 
 // ContourName, ContourNames: text naming contours of the job's figure
-// (one name; several, separated by commas or blanks).
-enum class FieldKind { Number, OptionalNumber, Code, ContourName, ContourNames };
+// (one name; several, separated by commas or blanks); Points: points typed
+// as "x, y; x, y" (AREA's drawn passes).
+enum class FieldKind { Number, OptionalNumber, Code, ContourName, ContourNames, Points };
 
 struct FieldSpec {
     QString key;                 // widget objectName suffix: "P1.x", "depth", "U"
@@ -40,7 +41,10 @@ struct FieldSpec {
     // ContourName, ContourNames: the value as text ("K2, K3") and set from text.
     std::function<QString(const MachiningUnit&)> getText;
     std::function<void(MachiningUnit&, const QString&)> setText;
-    bool isText() const { return kind == FieldKind::ContourName || kind == FieldKind::ContourNames; }
+    bool isText() const
+    {
+        return kind == FieldKind::ContourName || kind == FieldKind::ContourNames || kind == FieldKind::Points;
+    }
     // Whether `typed` says the same as the unit's value (the form keeps it then).
     bool sameText(const MachiningUnit& unit, const QString& typed) const;
 };

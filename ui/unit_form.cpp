@@ -138,7 +138,7 @@ void UnitForm::setContext(const Job& job, const std::vector<Tool>& library)
     QStringList contours;
     bool read = false;
     for (std::size_t i = 0; i < fields_.size(); ++i) {
-        if (!fields_[i].isText()) continue;
+        if (!fields_[i].isText() || fields_[i].kind == FieldKind::Points) continue;
         if (!read) contours = figureContourNames(job.figure), read = true;
         setCompletionNames(rows_[i].edit, contours);
     }

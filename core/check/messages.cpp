@@ -129,6 +129,73 @@ std::string duplicateCorner(int first, int second, Len x, Len y)
                        quote(x), quote(y));
 }
 
+std::string pointsUnreadable(const std::string& typed)
+{
+    return fmt::format("'{}' is not a list of points; type each point as X, Y and separate the points with ';' "
+                       "(10, 20; 60, 20), or draw the passes in the Figure tab",
+                       typed);
+}
+
+std::string tooFewPoints(std::size_t count)
+{
+    return fmt::format("{} drawn; a pass runs from a start point to an end point: draw at least two points",
+                       count == 0 ? std::string("no point is") : std::string("only one point is"));
+}
+
+std::string pointOutsideStock(std::size_t index, Len x, Len y)
+{
+    return fmt::format("point {} ({}, {}) lies outside the stock", index, quote(x), quote(y));
+}
+
+std::string passSamePoint(int pass)
+{
+    return fmt::format("pass {} ends where it starts; remove the repeated point", pass);
+}
+
+std::string passLeavesArea(int pass, Len x, Len y, Len by, const std::string& outline)
+{
+    if (pass == 0)
+        return fmt::format("the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; "
+                           "start at least a tool radius inside",
+                           quote(x), quote(y), quote(by), outline);
+    return fmt::format("pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre "
+                       "at ({}, {}); keep each pass a tool radius from the walls",
+                       pass, quote(by), outline, quote(x), quote(y));
+}
+
+std::string diameterNotPositive(Len d)
+{
+    return fmt::format("the tool diameter is {}; it must be positive: the passes are strips one tool wide", quote(d));
+}
+
+std::string noToolOfDiameter(Len d, const std::vector<double>& diametersMm, LengthUnit unit)
+{
+    std::vector<std::string> shown;
+    for (const double v : diametersMm) shown.push_back(quote({v, unit}));
+    if (shown.empty())
+        return fmt::format("the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn "
+                           "passes", quote(d));
+    return fmt::format("the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; "
+                       "its flat end mills: {}",
+                       quote(d), fmt::join(shown, ", "));
+}
+
+std::string pinnedDiameterDiffers(const Tool& pinned, Len d)
+{
+    return fmt::format("{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or "
+                       "change the diameter and redraw",
+                       toolName(pinned), quote(d));
+}
+
+std::string unswept(double areaMm2, int pieces, double largestMm2, Len x, Len y, LengthUnit unit)
+{
+    const double f = unit == LengthUnit::Inch ? 1.0 / (25.4 * 25.4) : 1.0;
+    const char* u = unit == LengthUnit::Inch ? "in²" : "mm²";
+    return fmt::format("the passes leave {:.{}f} {} of the area unswept in {} place{}; the largest, {:.{}f} {}, near ({}, {})",
+                       areaMm2 * f, unit == LengthUnit::Inch ? 4 : 1, u, pieces, pieces == 1 ? "" : "s", largestMm2 * f,
+                       unit == LengthUnit::Inch ? 4 : 1, u, quote(x), quote(y));
+}
+
 std::string contourNotNamed(const std::string& role)
 {
     return fmt::format("name the contour of the pocket's {} (a CONTOUR of the job's figure elements)", role);
@@ -140,10 +207,10 @@ std::string contourUnknown(const std::string& name, const std::vector<std::strin
     return fmt::format("{} is not a contour of the job's figure elements (its contours: {})", name, fmt::join(known, ", "));
 }
 
-std::string contourOpen(const std::string& name, const std::string& role)
+std::string contourOpen(const std::string& name, const std::string& what, const std::string& role)
 {
-    return fmt::format("{} is an open contour; a pocket's {} must be closed (a contour without a start and end point)",
-                       name, role);
+    return fmt::format("{} is an open contour; a{} {}'s {} must be closed (a contour without a start and end point)",
+                       name, what.starts_with("a") ? "n" : "", what, role);
 }
 
 std::string contourCrossesItself(const std::string& name)
@@ -151,9 +218,9 @@ std::string contourCrossesItself(const std::string& name)
     return fmt::format("{} crosses itself; check the order of its elements and the side chosen at each junction", name);
 }
 
-std::string islandOutside(const std::string& island, const std::string& outline)
+std::string islandOutside(const std::string& island, const std::string& what, const std::string& outline)
 {
-    return fmt::format("the island {} reaches outside the pocket's outline {}", island, outline);
+    return fmt::format("the island {} reaches outside the {}'s outline {}", island, what, outline);
 }
 
 std::string islandsOverlap(const std::string& a, const std::string& b)

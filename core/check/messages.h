@@ -36,6 +36,17 @@ std::string alpha3NotBelowAlpha2(Len a3, Len a2);
 std::string alpha1NotBelowDepth(int unitNo, Len a1, Len depth);
 std::string beta2NotBelowDepth(int unitNo, Len b2, Len depth);
 
+// Area clearing by drawn passes (AREA).
+std::string pointsUnreadable(const std::string& typed);
+std::string tooFewPoints(std::size_t count);
+std::string pointOutsideStock(std::size_t index, Len x, Len y);
+std::string passSamePoint(int pass);
+std::string passLeavesArea(int pass, Len x, Len y, Len by, const std::string& outline);  // pass 0: the start point
+std::string diameterNotPositive(Len d);
+std::string noToolOfDiameter(Len d, const std::vector<double>& diametersMm, LengthUnit unit);
+std::string pinnedDiameterDiffers(const Tool& pinned, Len d);
+std::string unswept(double areaMm2, int pieces, double largestMm2, Len x, Len y, LengthUnit unit);
+
 // Dimensions and codes of a unit.
 std::string depthNotPositive(Len depth);
 std::string deeperThanStock(Len depth, Len stockHeight);
@@ -77,9 +88,9 @@ std::string pinnedToolTooBig(const std::string& step, const Tool& pinned, const 
 // Contour units (CP): their contours, named from the job's figure.
 std::string contourNotNamed(const std::string& role);                 // role: "outline"
 std::string contourUnknown(const std::string& name, const std::vector<std::string>& known);
-std::string contourOpen(const std::string& name, const std::string& role);
+std::string contourOpen(const std::string& name, const std::string& what, const std::string& role);  // what: "pocket"
 std::string contourCrossesItself(const std::string& name);
-std::string islandOutside(const std::string& island, const std::string& outline);
+std::string islandOutside(const std::string& island, const std::string& what, const std::string& outline);
 std::string islandsOverlap(const std::string& a, const std::string& b);
 std::string sharpInsideCorner(const std::string& name, Len x, Len y);
 std::string toolUseNotForContours(int code);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "model/codes.h"
+#include "model/geometry.h"
 #include "model/module.h"
 
 #include <cmath>
@@ -25,8 +26,9 @@ namespace taiwa {
 
 // ContourName: the name of one contour of the job's figure ("K1");
 // ContourNames: a list of them, typed separated by commas or blanks
-// ("K2, K3"). Both are text (getText/setText), not numbers.
-enum class FormFieldKind { Number, OptionalNumber, Code, ContourName, ContourNames };
+// ("K2, K3"); Points: points in the job's length unit, "10, 20; 60, 20"
+// (AREA's drawn passes). All three are text (getText/setText), not numbers.
+enum class FormFieldKind { Number, OptionalNumber, Code, ContourName, ContourNames, Points };
 
 struct FormField {
     std::string key;                      // widget objectName suffix: "P1.x", "depth", "U"
@@ -41,7 +43,10 @@ struct FormField {
     // and set from what is typed (get/set then read nothing and set nothing).
     std::function<std::string(const ModuleInput&)> getText;
     std::function<void(ModuleInput&, const std::string&)> setText;
-    bool isText() const { return kind == FormFieldKind::ContourName || kind == FormFieldKind::ContourNames; }
+    bool isText() const
+    {
+        return kind == FormFieldKind::ContourName || kind == FormFieldKind::ContourNames || kind == FormFieldKind::Points;
+    }
     // What the value is, in one line of plain words (source text, context
     // "taiwa::ui::FieldSpec"), and the id of its symbol in the module's
     // drawing ("sym-P1"; empty: none), highlighted while the field is typed in.
@@ -176,37 +181,63 @@ inline FormField textField(std::string key, std::string label, std::vector<std::
 }
 }  // namespace detail
 
-// The name of one contour of the job's figure: a string member of module T
-// (blanks around it dropped).
-template <class T>
-FormField contourName(std::string key, std::string label, std::vector<std::string> diag, std::string T::*m)
+// The name of one contour of the job's figure: a string of module T, reached
+// by `m` (a member pointer, or a function of T& returning the string's
+// reference); blanks around it dropped.
+template <class T, class Access>
+FormField contourName(std::string key, std::string label, std::vector<std::string> diag, Access m)
 {
     FormField f = detail::textField(std::move(key), std::move(label), std::move(diag), FormFieldKind::ContourName);
     f.getText = [m](const ModuleInput& in) -> std::string {
-        if (const T* v = in.getIf<T>()) return v->*m;
+        if (const T* v = in.getIf<T>()) return std::invoke(m, *v);
         return {};
     };
     f.setText = [m](ModuleInput& in, const std::string& text) {
         if (T* p = in.getIf<T>()) {
             const auto first = text.find_first_not_of(" \t");
-            p->*m = first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t") + 1 - first);
+            std::invoke(m, *p) =
+                first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t") + 1 - first);
         }
     };
     return f;
 }
 
-// A list of contour names: a member of module T shown as "K2, K3".
-template <class T>
-FormField contourNames(std::string key, std::string label, std::vector<std::string> diag,
-                       std::vector<std::string> T::*m)
+// A list of contour names of module T (reached as contourName's), shown as "K2, K3".
+template <class T, class Access>
+FormField contourNames(std::string key, std::string label, std::vector<std::string> diag, Access m)
 {
     FormField f = detail::textField(std::move(key), std::move(label), std::move(diag), FormFieldKind::ContourNames);
     f.getText = [m](const ModuleInput& in) -> std::string {
-        if (const T* v = in.getIf<T>()) return joinNames(v->*m);
+        if (const T* v = in.getIf<T>()) return joinNames(std::invoke(m, *v));
         return {};
     };
     f.setText = [m](ModuleInput& in, const std::string& text) {
-        if (T* p = in.getIf<T>()) p->*m = splitNames(text);
+        if (T* p = in.getIf<T>()) std::invoke(m, *p) = splitNames(text);
+    };
+    return f;
+}
+
+// Points of module T shown and typed as text by `format` and `parse`; what
+// does not parse is kept in the member `bad` (for the check to refuse) and
+// the points stay as they were.
+template <class T, class Format, class Parse>
+FormField points(std::string key, std::string label, std::vector<std::string> diag, std::vector<Point2> T::*m,
+                 std::string T::*bad, Format format, Parse parse)
+{
+    FormField f = detail::textField(std::move(key), std::move(label), std::move(diag), FormFieldKind::Points);
+    f.getText = [m, bad, format](const ModuleInput& in) -> std::string {
+        if (const T* v = in.getIf<T>()) return (v->*bad).empty() ? format(v->*m) : v->*bad;
+        return {};
+    };
+    f.setText = [m, bad, parse](ModuleInput& in, const std::string& text) {
+        if (T* p = in.getIf<T>()) {
+            if (const auto read = parse(text)) {
+                p->*m = *read;
+                (p->*bad).clear();
+            } else {
+                p->*bad = text;
+            }
+        }
     };
     return f;
 }

@@ -121,6 +121,8 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
         const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
         return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
     }
+    case StepKind::AreaClearing:  // a ramp and the drawn passes a layer
+        return layers * (static_cast<double>(step.drawnPoints.size()) + 20);
     default: break;  // turning steps (Step::turn) come with their moves
     }
     if (step.turn) return static_cast<double>(step.turn->path.moves.size());

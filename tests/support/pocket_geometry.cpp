@@ -1,6 +1,7 @@
 // Geometry oracle for the tests: finished pocket solids and tool gouge depth.
 #include "support/pocket_geometry.h"
 
+#include "modules/area/area.h"
 #include "modules/cp/cp.h"
 #include "modules/m2d/m2d.h"
 #include "modules/holes/holes.h"
@@ -56,6 +57,7 @@ double pocketDepth(const ModuleInput& m)
 {
     if (const auto* h = m.getIf<HolePattern>()) return h->depth;
     if (const auto* cp = m.getIf<ContourPocket>()) return cp->depth;
+    if (const auto* a = m.getIf<AreaClearing>()) return a->depth;
     if (const auto* m4 = m.getIf<M4Pocket>()) return m4->depth;
     return m.as<M2DPocket>().depth;
 }
@@ -103,6 +105,7 @@ std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
 double wallDistance(const ModuleInput& m, Point3 tip)
 {
     if (const auto* cp = m.getIf<ContourPocket>()) return (*regionDistance(*cp))({tip.x, tip.y});
+    if (const auto* a = m.getIf<AreaClearing>()) return RegionDistance(normalised(a->area.region.value()))({tip.x, tip.y});
     return signedDistance(pocketSection(m, -tip.z), {tip.x, tip.y});
 }
 
@@ -128,6 +131,16 @@ double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
         // stock top against them, its tip against the floor.
         const auto distanceTo = regionDistance(*cp);
         return std::max(tipDepth - cp->depth, (*distanceTo)({tip.x, tip.y}) + toolRadiusAt(tool, tipDepth));
+    }
+    if (const auto* a = m.getIf<AreaClearing>()) {
+        // Drawn passes: the tool inside the area (outline and islands, exact),
+        // its tip no deeper than T.
+        static thread_local std::pair<Region, std::shared_ptr<RegionDistance>> known;
+        if (!known.second || !(known.first == a->area.region.value())) {
+            known.first = a->area.region.value();
+            known.second = std::make_shared<RegionDistance>(normalised(known.first));
+        }
+        return std::max(tipDepth - a->depth, (*known.second)({tip.x, tip.y}) + toolRadiusAt(tool, tipDepth));
     }
     double worst = tipDepth - pocketDepth(m);  // below the floor
     // The tool solid is discs of radius toolRadiusAt(h) at depth tipDepth - h;

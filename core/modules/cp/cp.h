@@ -11,6 +11,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "modules/named_region.h"
 
 #include <optional>
 #include <string>
@@ -46,16 +47,7 @@ struct ContourPocket {
         depth = f(depth);
         reach = f(reach);
         inscribed = f(inscribed);
-        if (!region) return;
-        const auto scale = [&](Contour& c) {
-            for (auto& s : c.segments) {
-                s.start = {f(s.start.x), f(s.start.y)};
-                s.end = {f(s.end.x), f(s.end.y)};
-                s.centre = {f(s.centre.x), f(s.centre.y)};
-            }
-        };
-        scale(region->outer);
-        for (auto& i : region->islands) scale(i);
+        if (region) convertRegionLengths(*region, f);
     }
     friend bool operator==(const ContourPocket&, const ContourPocket&) = default;
 };

@@ -3,6 +3,7 @@
 // Registered in modules/registry.cpp.
 #include "modules/cp/cp.h"
 #include "modules/module_kind.h"
+#include "modules/named_region.h"
 #include "modules/pocket_plan.h"
 #include "paths/region.h"
 
@@ -37,33 +38,21 @@ public:
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
     {
         ContourPocket& p = mm.as<ContourPocket>();
+        NamedRegion n;
+        n.outline = p.outline;
+        n.islands = p.islands;
+        n.resolve(table);
         p.resolved = true;
-        p.unknown.clear();
-        p.figureContours.clear();
-        p.closedContours.clear();
+        p.unknown = std::move(n.unknown);
+        p.figureContours = std::move(n.figureContours);
+        p.closedContours = std::move(n.closedContours);
         p.region.reset();
-        for (const auto& [name, contour] : table) p.figureContours.push_back(name);
-        Region r;
-        bool all = true;
-        const auto take = [&](const std::string& name, Contour& into) {
-            const auto it = table.find(name);
-            if (it == table.end()) {
-                if (!name.empty()) p.unknown.push_back(name);
-                all = false;
-                return;
-            }
-            into = it->second;
-            p.closedContours.push_back(it->second.closed);
-        };
-        take(p.outline, r.outer);
-        r.islands.resize(p.islands.size());
-        for (std::size_t i = 0; i < p.islands.size(); ++i) take(p.islands[i], r.islands[i]);
         p.reach = p.inscribed = 0.0;
-        if (!all) return;
-        const Region normal = normalised(r);
+        if (!n.region) return;
+        const Region normal = normalised(*n.region);
         p.inscribed = paths::inscribedRadius(normal);
         p.reach = paths::reachRadius(normal, p.inscribed);
-        p.region = std::move(r);
+        p.region = std::move(n.region);
     }
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override

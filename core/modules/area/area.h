@@ -1,0 +1,59 @@
+// Module AREA: area clearing by drawn passes (seed 002, seventh abstract).
+// The area is a closed contour of the job's figure with islands, as CP's
+// pocket; the operator draws the passes in it as points the tool centre goes
+// through in order, each pass a straight strip one tool wide, and names the
+// tool's diameter the strips were drawn for. The tape follows the passes in
+// their order, layer by layer down to the depth; what the strips leave
+// unswept is shown and reported (paths/drawn_passes.h). Door: area_kind.cpp;
+// checks area_check.cpp; steps and tool area_plan.cpp.
+#pragma once
+
+#include "check/unit_checks.h"
+#include "model/contour.h"
+#include "model/job.h"
+#include "model/step.h"
+#include "model/technology.h"
+#include "modules/named_region.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct AreaClearing {
+    static constexpr const char* kName = "AREA";
+    NamedRegion area;             // outline and islands, from the figure
+    std::vector<Point2> points;   // the passes: the tool centre goes from each point to the next
+    double depth = 0.0;           // T, down from the top surface
+    double diameter = 0.0;        // the tool diameter the passes were drawn for (the strips' width)
+    ToolPins tools;               // key "area": a flat end mill of that diameter
+    // Not in the job file: the form's text of the points when it did not
+    // read as points (the check refuses it; `points` keeps the last good ones).
+    std::string badPoints;
+
+    void convertLengths(const LengthMap& f)
+    {
+        for (Point2& p : points) p = {f(p.x), f(p.y)};
+        depth = f(depth);
+        diameter = f(diameter);
+        if (area.region) convertRegionLengths(*area.region, f);
+    }
+    friend bool operator==(const AreaClearing&, const AreaClearing&) = default;
+};
+
+// The points as the form shows and reads them: "10, 20; 60, 20; 60, 35".
+std::string formatPoints(const std::vector<Point2>& points);
+// Nothing when `text` is not pairs of numbers separated by ';'.
+std::optional<std::vector<Point2>> parsePoints(const std::string& text);
+
+// The input checks of one AREA unit (in mm).
+check::UnitReport checkAreaClearing(const AreaClearing& mm, int unitNo, const check::Context& ctx);
+
+// The step of one AREA unit (checked, in mm): the passes in layers of at
+// most γ·D down to T; then its tool, a centre-cutting flat end mill of the
+// unit's diameter (a pin may name it). Problems become diagnostics.
+std::vector<Step> planAreaClearing(const AreaClearing& mm, const TechnologyData& tech, const std::vector<Tool>& library,
+                                   const std::string& material, int unit, Diagnostics& out);
+
+}  // namespace taiwa

@@ -1,0 +1,109 @@
+// Input checks of one AREA unit (area clearing by drawn passes): the area's
+// contours, the drawn points (readable, at least one pass, on the stock, no
+// empty pass), every strip inside the area, the depth, the diameter and a
+// tool of it; and, as a warning, what the strips leave unswept.
+#include "modules/area/area.h"
+
+#include "check/messages.h"
+#include "paths/drawn_passes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa {
+
+namespace {
+
+using check::Reporter;
+
+// A tool the passes can be cut with: a centre-cutting flat end mill of the
+// diameter they were drawn for.
+bool drawnFor(const Tool& t, double diameter)
+{
+    return t.type == ToolType::FlatEndMill && t.centreCutting && std::abs(t.diameter - diameter) <= kFitTolerance;
+}
+
+bool checkPoints(const AreaClearing& a, Reporter& r)
+{
+    if (!a.badPoints.empty()) {
+        r.unit("points", msg::pointsUnreadable(a.badPoints));
+        return false;
+    }
+    if (a.points.size() < 2) {
+        r.unit("points", msg::tooFewPoints(a.points.size()));
+        return false;
+    }
+    bool ok = true;
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+        const Point2 p = a.points[i];
+        if (!check::checkLength(p.x, "points", "a point's X", r) || !check::checkLength(p.y, "points", "a point's Y", r))
+            return false;
+        if (const Stock* st = r.ctx.stock) {
+            constexpr double e = 1e-9;
+            if (p.x < st->x - e || p.y < st->y - e || p.x > st->x + st->width + e || p.y > st->y + st->length + e) {
+                r.unit("points", msg::pointOutsideStock(i + 1, r.len(p.x), r.len(p.y)));
+                ok = false;
+            }
+        }
+        if (i > 0 && distance(p, a.points[i - 1]) < 1e-6) {
+            r.unit("points", msg::passSamePoint(static_cast<int>(i)));
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+bool checkTool(const AreaClearing& a, Reporter& r)
+{
+    if (!r.ctx.library) return true;
+    const auto& library = *r.ctx.library;
+    if (const auto pin = a.tools.find("area"); pin != a.tools.end()) {
+        const Tool* t = findTool(library, pin->second);
+        if (t && !drawnFor(*t, a.diameter)) {
+            r.unit("tools", msg::pinnedDiameterDiffers(*t, r.len(a.diameter)));
+            return false;
+        }
+        return true;  // an unknown id is checkPins's
+    }
+    if (std::any_of(library.begin(), library.end(), [&](const Tool& t) { return drawnFor(t, a.diameter); })) return true;
+    std::vector<double> diameters;
+    for (const Tool& t : library)
+        if (t.type == ToolType::FlatEndMill && t.centreCutting) diameters.push_back(t.diameter);
+    std::sort(diameters.begin(), diameters.end());
+    diameters.erase(std::unique(diameters.begin(), diameters.end()), diameters.end());
+    r.unit("diameter", msg::noToolOfDiameter(r.len(a.diameter), diameters, r.ctx.shownUnit));
+    return false;
+}
+
+}  // namespace
+
+check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const check::Context& ctx)
+{
+    check::UnitReport report;
+    Reporter r{unitNo, AreaClearing::kName, ctx, report.diagnostics};
+    check::checkPins(a.tools, unitNo, AreaClearing::kName, ctx, report.diagnostics);
+    check::checkLength(a.depth, "depth", "the depth", r) && check::checkDepth(a.depth, r);
+    bool diameter = check::checkLength(a.diameter, "diameter", "the tool diameter", r);
+    if (diameter && !(a.diameter > 0.0)) {
+        r.unit("diameter", msg::diameterNotPositive(r.len(a.diameter)));
+        diameter = false;
+    }
+    const bool region = checkNamedRegion(a.area, r, "area", false);
+    report.figureValid = region;
+    const bool points = checkPoints(a, r);
+    if (diameter) checkTool(a, r);
+    if (!region || !points || !diameter) return report;
+    const double radius = a.diameter / 2;
+    if (const auto out = paths::firstExcursion(*a.area.region, a.points, radius)) {
+        r.unit("points", msg::passLeavesArea(out->pass, r.len(out->at.x), r.len(out->at.y), r.len(out->by), a.area.outline));
+        return report;
+    }
+    const paths::Unswept left = paths::unsweptArea(*a.area.region, a.points, radius);
+    if (left.pieces > 0)
+        report.diagnostics.push_back({Severity::Warning, unitNo, AreaClearing::kName, "points",
+                                      msg::unswept(left.area, left.pieces, left.largest, r.len(left.largestAt.x),
+                                                   r.len(left.largestAt.y), ctx.shownUnit)});
+    return report;
+}
+
+}  // namespace taiwa

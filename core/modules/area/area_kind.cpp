@@ -1,0 +1,204 @@
+// The door of module AREA (area clearing by drawn passes): its job-file
+// keys, checks, outline, planning, cavity and form, as module_kind.h asks.
+// Registered in modules/registry.cpp.
+#include "modules/area/area.h"
+#include "modules/module_kind.h"
+
+#include "figure/figure_text.h"
+#include "io/job_messages.h"
+#include "io/json_write.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name",     "outline", "islands", "points",
+                                     "depth",  "diameter", "tools",   "cutting"};
+
+constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
+
+// Distance from p to the polyline through `points`.
+double polylineDistance(const std::vector<Point2>& points, Point2 p)
+{
+    double d = points.empty() ? std::numeric_limits<double>::infinity() : distance(p, points.front());
+    for (std::size_t k = 1; k < points.size(); ++k) {
+        const Point2 a = points[k - 1], e = points[k] - a;
+        const double l2 = dot(e, e);
+        const double t = l2 > 0.0 ? std::clamp(dot(p - a, e) / l2, 0.0, 1.0) : 0.0;
+        d = std::min(d, distance(p, a + t * e));
+    }
+    return d;
+}
+
+class AreaKind final : public ModuleKindOf<AreaClearing> {
+public:
+    const char* paletteText() const override
+    {
+        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add area by drawn passes");
+    }
+    const char* drawing() const override { return ":/modules/area.svg"; }
+    const char* outlineField() const override { return "outline"; }
+    std::vector<std::string> stepKeys() const override { return {"area"}; }
+
+    void resolveContours(ModuleInput& mm, const ContourTable& table) const override
+    {
+        mm.as<AreaClearing>().area.resolve(table);
+    }
+
+    std::vector<Point2> topPolygon(const ModuleInput& mm) const override
+    {
+        const AreaClearing& a = mm.as<AreaClearing>();
+        if (!a.area.region) return {};
+        return flatten(normalised(*a.area.region).outer, kPolygonChord);
+    }
+
+    // What the passes were drawn to sweep: the strips one tool wide inside
+    // the area, at depth T (the parts left unswept are reported by the
+    // check, not cut).
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData&) const override
+    {
+        const AreaClearing& a = mm.as<AreaClearing>();
+        if (!a.area.region || a.points.empty()) return std::nullopt;
+        const Region region = normalised(*a.area.region);
+        Cavity c;
+        const Box2 box = bounds(region.outer);
+        c.min = box.min;
+        c.max = box.max;
+        c.depth = a.depth;
+        const auto inside = std::make_shared<RegionDistance>(region);
+        c.depthAt = [inside, points = a.points, r = a.diameter / 2, depth = a.depth](Point2 q, double slack) {
+            return (*inside)(q) <= slack && polylineDistance(points, q) <= r + slack ? depth : 0.0;
+        };
+        return c;
+    }
+
+    // A rectangle over the middle of the stock.
+    std::string defaultFigure(const Stock& s) const override
+    {
+        const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
+        return "$$ The area of the drawn passes: a rectangle\n"
+               "P1 = POINT/" + n(s.x + 0.2 * s.width) + ", " + n(s.y + 0.2 * s.length) + "\n" +
+               "P2 = POINT/" + n(s.x + 0.6 * s.width) + ", " + n(s.y + 0.6 * s.length) + "\n" +
+               "L1 = LINE/P1, ATANGL, 0\n"
+               "L2 = LINE/P2, ATANGL, 90\n"
+               "L3 = LINE/P2, ATANGL, 180\n"
+               "L4 = LINE/P1, ATANGL, 270\n"
+               "K1 = CONTOUR/L1, L2, L3, L4";
+    }
+
+    ModuleInput makeDefault(const Stock&) const override
+    {
+        AreaClearing a;
+        a.area.outline = "K1";
+        a.depth = 5;
+        a.diameter = 10;
+        return a;
+    }
+
+protected:
+    AreaClearing readInput(const io::ObjectFields& f) const override
+    {
+        AreaClearing m;
+        f.rejectUnknown("module AREA", kKeys);
+        m.area.outline = f.string("outline").value_or("");
+        if (const nlohmann::json* islands = f.find("islands")) {
+            if (!islands->is_array()) {
+                f.error("islands", msg::io::wrongType("an array of contour names", *islands));
+            } else {
+                for (std::size_t i = 0; i < islands->size(); ++i) {
+                    const auto& v = (*islands)[i];
+                    if (v.is_string()) m.area.islands.push_back(v.get<std::string>());
+                    else f.error("islands[" + std::to_string(i) + "]", msg::io::wrongType("a contour name", v));
+                }
+            }
+        }
+        if (const nlohmann::json* points = f.find("points")) {
+            const auto isPoint = [](const nlohmann::json& v) {
+                return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
+            };
+            if (!points->is_array()) {
+                f.error("points", msg::io::wrongType("an array of points [x, y]", *points));
+            } else {
+                for (std::size_t i = 0; i < points->size(); ++i) {
+                    const auto& v = (*points)[i];
+                    if (isPoint(v)) m.points.push_back({v[0].get<double>(), v[1].get<double>()});
+                    else f.error("points[" + std::to_string(i) + "]", msg::io::wrongType("a point [x, y]", v));
+                }
+            }
+        }
+        m.depth = f.number("depth").value_or(0.0);
+        m.diameter = f.number("diameter").value_or(0.0);
+        m.tools = f.wholeMap("tools");
+        return m;
+    }
+
+    void writeInput(const AreaClearing& m, nlohmann::ordered_json& u) const override
+    {
+        u["outline"] = m.area.outline;
+        if (!m.area.islands.empty()) u["islands"] = m.area.islands;
+        auto points = nlohmann::ordered_json::array();
+        for (const Point2 p : m.points) points.push_back({io::number(p.x), io::number(p.y)});
+        u["points"] = points;
+        u["depth"] = io::number(m.depth);
+        u["diameter"] = io::number(m.diameter);
+        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
+    }
+
+    check::UnitReport checkInput(const AreaClearing& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkAreaClearing(mm, unitNo, ctx);
+    }
+
+    std::optional<Quad> outline(const AreaClearing& mm) const override
+    {
+        if (!mm.area.region || mm.area.region->outer.empty()) return std::nullopt;
+        const Box2 b = bounds(mm.area.region->outer);
+        return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
+    }
+
+    // The area belongs to the job's figure; the drawn points to the area.
+    void move(AreaClearing&, Point2) const override {}
+
+    std::vector<Step> planInput(const AreaClearing& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        return planAreaClearing(mm, ctx.tech, ctx.library, ctx.material, ctx.unit, out);
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        std::vector<FormField> fs;
+        fs.push_back(form::contourName<AreaClearing>(
+            "outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"), {"outline"},
+            [](auto& a) -> auto& { return a.area.outline; }));
+        fs.push_back(form::contourNames<AreaClearing>(
+            "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
+            [](auto& a) -> auto& { return a.area.islands; }));
+        fs.push_back(member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                          &AreaClearing::depth));
+        fs.push_back(member<AreaClearing>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "D (tool diameter)"),
+                                          {"diameter", "tools"}, &AreaClearing::diameter));
+        fs.push_back(form::points<AreaClearing>("points", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Passes (points)"),
+                                                {"points"}, &AreaClearing::points, &AreaClearing::badPoints,
+                                                formatPoints, parsePoints));
+        form::describe(fs, {
+            {"outline", "sym-outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure around the area to clear (e.g. K1)")},
+            {"islands", "sym-islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contours of the figure left standing in the area, separated by commas; empty for none")},
+            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth the passes cut to, down from the top surface")},
+            {"diameter", "sym-D", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of the end mill: each pass is a strip this wide")},
+            {"points", "sym-passes", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab")},
+        });
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& areaModule() { return moduleInstance<AreaKind>(); }
+
+}  // namespace taiwa

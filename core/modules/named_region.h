@@ -1,0 +1,44 @@
+// An area of a contour unit given by names of the job's figure: a closed
+// outline and the closed islands in it (CP's pocket, AREA's area). Resolving
+// the names against the evaluated figure and checking the contours (known,
+// closed, not crossing themselves, inside the stock, islands inside the
+// outline and apart, optionally no sharp inside corner) are shared here.
+#pragma once
+
+#include "check/unit_checks.h"
+#include "model/contour.h"
+#include "model/module.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+struct NamedRegion {
+    std::string outline;               // "K1"
+    std::vector<std::string> islands;  // "K2", "K3"
+
+    // Not in the job file: what resolve() finds in the figure (mm). `region`
+    // is absent until then, or when a name is not a contour of the figure
+    // (listed in `unknown`).
+    std::optional<Region> region;
+    std::vector<std::string> unknown;
+    std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages
+    std::vector<bool> closedContours;         // outline, then islands
+    bool resolved = false;
+
+    // Takes the named contours from the figure's table.
+    void resolve(const ContourTable& table);
+    friend bool operator==(const NamedRegion&, const NamedRegion&) = default;
+};
+
+// Scales a region's points and centres (mm <-> inch).
+void convertRegionLengths(Region& region, const LengthMap& f);
+
+// The checks of the named contours on fields "outline" and "islands"; `what`
+// names the outline in messages ("pocket", "area"). True when the region is
+// well-formed.
+bool checkNamedRegion(const NamedRegion& n, check::Reporter& r, const char* what, bool refuseSharpInsideCorners);
+
+}  // namespace taiwa
