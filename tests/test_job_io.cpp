@@ -5,6 +5,7 @@
 // Refusals are in test_job_refusals.cpp. TAIWA_UPDATE_GOLDEN=1 rewrites the
 // samples canonically (review the diff before committing).
 #include "modules/m2d/m2d.h"
+#include "modules/area/area.h"
 #include "modules/cp/cp.h"
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
@@ -141,7 +142,11 @@ private slots:
             const JobReadResult r = readJobFile(f.toStdString());
             QVERIFY(r.job);
             const Diagnostics ds = checkJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary());
-            QVERIFY2(ds.empty(), qPrintable(QString::fromStdString(diagnosticLines(QFileInfo(f).fileName(), ds))));
+            // Nothing but the report of what drawn passes leave unswept (a warning, shown on purpose).
+            const bool onlyUnswept = std::all_of(ds.begin(), ds.end(), [](const Diagnostic& d) {
+                return d.severity == Severity::Warning && d.module == "AREA" && d.field == "points";
+            });
+            QVERIFY2(onlyUnswept, qPrintable(QString::fromStdString(diagnosticLines(QFileInfo(f).fileName(), ds))));
             QVERIFY2(TechnologyTable::builtIn().find(r.job->material), qPrintable(f));
         }
     }
@@ -167,6 +172,8 @@ private slots:
                 } else if (const auto* c = (u.module).getIf<ContourPocket>()) {
                     seen.insert("CP U" + std::to_string(c->toolUse));
                     if (!c->islands.empty()) seen.insert("CP islands");
+                } else if (const auto* a = (u.module).getIf<AreaClearing>()) {
+                    seen.insert(a->area.islands.empty() ? "AREA" : "AREA islands");
                 } else if (const auto* h = (u.module).getIf<HolePattern>()) {
                     seen.insert("HOLES " + h->pattern);
                     seen.insert("HOLES " + h->hole);
@@ -182,7 +189,7 @@ private slots:
                                  "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
                                  "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner",
                                  "CP U1", "CP islands", "HOLES single", "HOLES grid", "HOLES bolt circle", "HOLES drilled",
-                                 "HOLES tapped", "HOLES reamed", "HOLES bored"})
+                                 "HOLES tapped", "HOLES reamed", "HOLES bored", "AREA islands"})
             QVERIFY2(seen.count(want), want);
     }
 

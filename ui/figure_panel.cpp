@@ -5,6 +5,7 @@
 #include "figure/figure_contour.h"
 #include "figure/figure_text.h"
 #include "ui/job_document.h"
+#include "ui/passes_bar.h"
 
 #include <QDoubleSpinBox>
 #include <QFontDatabase>
@@ -149,6 +150,8 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     viewBox->addWidget(revision_);
     view_ = new FigureView(right);
     view_->setObjectName("figure.view");
+    passes_ = new PassesBar(doc_, view_, right);
+    viewBox->addWidget(passes_);
     viewBox->addWidget(view_, 1);
     split->addWidget(left);
     split->addWidget(right);
@@ -191,7 +194,10 @@ void FigurePanel::refresh()
     }
     value_->setSuffix(QStringLiteral(" ") + QString::fromUtf8(unitSymbol(doc_->job().lengthUnit)));
     evaluateText();
+    passes_->refresh();
 }
+
+void FigurePanel::setCurrentUnit(int unit) { passes_->setUnit(unit); }
 
 void FigurePanel::onTextChanged()
 {

@@ -8,7 +8,9 @@
 // every corner of that kind in their own colour, a click leaves one, and
 // its value changed in the spin box rewrites that number in the text
 // (figure::reviseCorner). Every change of the text is an undoable edit of
-// the job (typing in one visit of the editor is one undo step).
+// the job (typing in one visit of the editor is one undo step). For a unit
+// that clears an area by drawn passes, the passes are drawn in the view
+// (passes_bar.h).
 #pragma once
 
 #include "figure/figure_eval.h"
@@ -43,6 +45,9 @@ public:
     QListWidget* refusalList() const { return refusals_; }
     FigureView* view() const { return view_; }
     QDoubleSpinBox* cornerValue() const { return value_; }
+    // The drawing of passes for the current unit (passes_bar.h).
+    class PassesBar* passesBar() const { return passes_; }
+    void setCurrentUnit(int unit);
     // What the view draws: the text evaluated (when the text is refused,
     // the statements before the refused one), and every refusal listed.
     const figure::Evaluation& evaluation() const { return view_->evaluation(); }
@@ -85,6 +90,7 @@ private:
     QWidget* revision_ = nullptr;
     QLabel* revisionText_ = nullptr;
     QDoubleSpinBox* value_ = nullptr;
+    class PassesBar* passes_ = nullptr;
     std::vector<figure::Definition> definitions_;  // of what the view draws
     std::vector<figure::FigureError> errors_;
     std::optional<figure::ContourCorner::Kind> revising_;

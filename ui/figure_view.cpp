@@ -27,6 +27,10 @@ const QColor kPoint(0x2c, 0x3e, 0x50);
 const QColor kContour(0x1d, 0x35, 0x57);
 const QColor kSelected(0xff, 0x8c, 0x00);
 const QColor kCorner(0xb0, 0x30, 0xc0);
+const QColor kPaint(0xf2, 0xb8, 0xb8);      // the area before the passes take the paint away
+const QColor kStrip(0xff, 0xff, 0xff, 235);  // what a strip sweeps
+const QColor kPass(0x1d, 0x35, 0x57);
+const QColor kUnswept(0xd0, 0x10, 0x10);
 
 double length(QPointF v) { return std::hypot(v.x(), v.y()); }
 
@@ -76,6 +80,20 @@ void FigureView::setSelected(const QString& name)
 {
     if (name == selected_) return;
     selected_ = name;
+    update();
+}
+
+void FigureView::setPasses(std::optional<PassesOverlay> passes)
+{
+    passes_ = std::move(passes);
+    update();
+}
+
+void FigureView::setDrawing(bool drawing)
+{
+    drawing_ = drawing;
+    setToolTip(drawing ? tr("Click: the next point of the passes. Wheel: zoom. Drag: pan. Double click: fit.")
+                       : tr("Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit."));
     update();
 }
 
@@ -222,6 +240,62 @@ void FigureView::drawCorner(QPainter& p, const figure::EvaluatedContour& c, int 
     p.drawText(toPixel(s.at(0.5)) + QPointF(6, -6), text);
 }
 
+// The area painted, the strips taking the paint away, the passes with their
+// numbers and direction, what stays unswept outlined in red.
+void FigureView::drawPasses(QPainter& p) const
+{
+    const PassesOverlay& o = *passes_;
+    QPainterPath area;
+    area.setFillRule(Qt::OddEvenFill);
+    for (const auto& ring : o.area) {
+        QPolygonF poly;
+        for (const Point2 q : ring) poly << toPixel(q);
+        area.addPolygon(poly);
+        area.closeSubpath();
+    }
+    p.fillPath(area, kPaint);
+    QPolygonF centre;
+    for (const Point2 q : o.points) centre << toPixel(q);
+    const double width = 2 * o.radius * scale();
+    if (centre.size() == 1) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(kStrip);
+        p.drawEllipse(centre.front(), width / 2, width / 2);
+    } else if (centre.size() > 1) {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(kStrip, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolyline(centre);
+    }
+    for (const auto& ring : o.unswept) {
+        QPolygonF poly;
+        for (const Point2 q : ring) poly << toPixel(q);
+        p.setPen(QPen(kUnswept, 1.5));
+        p.setBrush(QBrush(kUnswept, Qt::BDiagPattern));
+        p.drawPolygon(poly);
+    }
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(kPass, 1.2, Qt::DashLine));
+    p.drawPolyline(centre);
+    for (int i = 0; i < centre.size(); ++i) {
+        p.setPen(Qt::NoPen);
+        p.setBrush(i == 0 ? QColor(0x27, 0xae, 0x60) : kPass);
+        p.drawEllipse(centre[i], 3.5, 3.5);
+        if (i == 0) continue;
+        // The pass's number at its middle, an arrow at its end.
+        const QPointF a = centre[i - 1], b = centre[i], d = (b - a) / std::max(1e-9, length(b - a));
+        const QPointF n(-d.y(), d.x());
+        QPainterPath arrow;
+        arrow.moveTo(b - 4 * d);
+        arrow.lineTo(b - 12 * d + 4 * n);
+        arrow.lineTo(b - 12 * d - 4 * n);
+        arrow.closeSubpath();
+        p.fillPath(arrow, kPass);
+        p.setPen(kPass);
+        p.drawText((a + b) / 2 + 8 * n, QString::number(i));
+    }
+    p.setBrush(Qt::NoBrush);
+}
+
 void FigureView::paintEvent(QPaintEvent*)
 {
     QPainter p(this);
@@ -269,6 +343,7 @@ void FigureView::paintEvent(QPaintEvent*)
             p.drawText(c + QPointF(r * 0.72 + 3, -r * 0.72 - 3), name);
         }
     }
+    if (passes_) drawPasses(p);
     // Contours, thick, with an arrow in the direction of travel on each
     // piece long enough to carry one.
     QFont bold = small;
@@ -317,7 +392,8 @@ void FigureView::paintEvent(QPaintEvent*)
         p.drawText(at + QPointF(5, -5), name);
     }
     // How to move about, on a white band over the drawing.
-    const QString hint = tr("X →  Y ↑   wheel: zoom, drag: pan, double click: fit");
+    const QString hint = drawing_ ? tr("Drawing passes: click the start, then the end of each pass; wheel: zoom, drag: pan")
+                                  : tr("X →  Y ↑   wheel: zoom, drag: pan, double click: fit");
     const QRectF band(0, height() - p.fontMetrics().height() - 6, p.fontMetrics().horizontalAdvance(hint) + 12,
                       p.fontMetrics().height() + 6);
     p.fillRect(band, QColor(255, 255, 255, 220));
@@ -356,6 +432,10 @@ void FigureView::mouseReleaseEvent(QMouseEvent* e)
         return;
     }
     if (e->button() != Qt::LeftButton) return;
+    if (drawing_) {
+        emit pointDrawn(toWork(e->position()));
+        return;
+    }
     if (!corners_.empty())
         if (const auto corner = cornerAt(e->position())) {
             emit cornerPicked(corner->contour, corner->index);

@@ -4,7 +4,11 @@
 // circles thin, contours thick with arrows in their direction. The mouse
 // wheel zooms about the pointer, a drag pans, a double click fits the
 // figure again; a click picks the nearest element or contour (within a few
-// pixels), or while corners are under revision the nearest of them.
+// pixels), or while corners are under revision the nearest of them. An
+// area cleared by drawn passes (seed 002, seventh abstract) is shown over it:
+// the area painted, the strips one tool wide taking the paint away, the
+// passes numbered, and what stays unswept outlined in red; while passes are
+// being drawn a click adds a point instead of picking.
 // Painted with QPainter, as the profile view (ui/profile_view.h).
 #pragma once
 
@@ -28,6 +32,14 @@ struct CornerRef {
     friend bool operator==(const CornerRef&, const CornerRef&) = default;
 };
 
+// What the view shows of an area cleared by drawn passes, in the job's unit.
+struct PassesOverlay {
+    std::vector<std::vector<Point2>> area;      // the area's rings (outline, islands), painted even-odd
+    std::vector<Point2> points;                 // the passes: from each point to the next
+    double radius = 0.0;                        // half a strip's width
+    std::vector<std::vector<Point2>> unswept;   // rings of what the strips leave
+};
+
 class FigureView : public QWidget {
     Q_OBJECT
 public:
@@ -46,6 +58,13 @@ public:
     // being edited, drawn highlighted.
     void setHighlightedCorners(std::vector<CornerRef> corners);
     const std::vector<CornerRef>& highlightedCorners() const { return corners_; }
+
+    // The drawn passes shown (nullopt: none); drawing: a click adds a
+    // point (pointDrawn) instead of picking an element.
+    void setPasses(std::optional<PassesOverlay> passes);
+    const std::optional<PassesOverlay>& passes() const { return passes_; }
+    void setDrawing(bool drawing);
+    bool drawing() const { return drawing_; }
 
     // Where a point in work coordinates is drawn, in widget pixels, and back.
     QPointF toPixel(Point2 work) const;
@@ -69,6 +88,8 @@ signals:
     void elementPicked(const QString& name);
     // A click on a highlighted corner.
     void cornerPicked(const QString& contour, int index);
+    // A click while drawing passes: where, in work coordinates.
+    void pointDrawn(Point2 at);
 
 protected:
     void paintEvent(QPaintEvent* e) override;
@@ -84,11 +105,14 @@ private:
     // The part of an infinite line inside the widget, or nothing.
     std::optional<QLineF> clipped(const figure::Line& l) const;
     void drawCorner(class QPainter& p, const figure::EvaluatedContour& c, int index, const QColor& colour) const;
+    void drawPasses(class QPainter& p) const;
 
     figure::Evaluation evaluation_;
     Stock stock_;
     QString selected_;
     std::vector<CornerRef> corners_;
+    std::optional<PassesOverlay> passes_;
+    bool drawing_ = false;
     Point2 fitMin_{0, 0}, fitMax_{100, 100};  // the framed box
     double zoom_ = 1.0;
     QPointF pan_;  // pixels

@@ -458,6 +458,7 @@ void StationWindow::onDocumentChanged(bool fromTyping)
 
 void StationWindow::onUnitSelected(int unit)
 {
+    figure_->setCurrentUnit(unit);
     UnitForm* f = currentForm();
     forms_->setCurrentWidget(f ? static_cast<QWidget*>(f) : forms_->widget(0));
     if (f) {

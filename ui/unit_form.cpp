@@ -201,12 +201,14 @@ void UnitForm::onTextEdited(int field, const QString& text)
     emit edited(field, v);
 }
 
-void UnitForm::setMessage(int field, const QString& message)
+void UnitForm::setMessage(int field, const QString& message, bool warning)
 {
     Row& row = rows_[static_cast<std::size_t>(field)];
     QWidget* editor = row.edit ? static_cast<QWidget*>(row.edit) : row.combo;
-    editor->setStyleSheet(message.isNull() ? QString() : QString(kRed));
+    editor->setStyleSheet(message.isNull() || warning ? QString() : QString(kRed));
     editor->setToolTip(message);
+    // A warning (the plan goes on: an area left unswept) in amber, an error in red.
+    row.message->setStyleSheet(warning ? QStringLiteral("color: #8a5a00;") : QStringLiteral("color: #a00000;"));
     row.message->setText(message);
     row.message->setVisible(!message.isEmpty());
 }
@@ -215,7 +217,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
 {
     const Diagnostics ofThisUnit = profile_ ? profile_->showDiagnostics(all) : all;
     std::vector<QString> messages(fields_.size());
-    std::vector<bool> red(fields_.size(), false);
+    std::vector<bool> red(fields_.size(), false), error(fields_.size(), false);
     Diagnostics unmatched;
     for (const Diagnostic& d : ofThisUnit) {
         const QString field = QString::fromStdString(d.field);
@@ -223,6 +225,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
         for (std::size_t i = 0; i < fields_.size(); ++i) {
             if (!fields_[i].diagFields.contains(field)) continue;
             red[i] = true;
+            if (d.severity == Severity::Error) error[i] = true;
             if (!shown) {  // the message once, under the first widget it names
                 const QString m = QString::fromStdString(d.message);
                 messages[i] = messages[i].isEmpty() ? m : messages[i] + "\n" + m;
@@ -234,7 +237,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
     for (std::size_t i = 0; i < fields_.size(); ++i) {
         const int index = static_cast<int>(i);
         if (rows_[i].notANumber) setMessage(index, rows_[i].fraction ? tr("not a whole number") : tr("not a number"));
-        else if (red[i]) setMessage(index, messages[i].isEmpty() ? QStringLiteral("") : messages[i]);
+        else if (red[i]) setMessage(index, messages[i].isEmpty() ? QStringLiteral("") : messages[i], !error[i]);
         else setMessage(index, QString());
     }
     return unmatched;

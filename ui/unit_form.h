@@ -79,7 +79,7 @@ private:
         bool fraction = false;  // a whole-number field holds a fraction
     };
     void onTextEdited(int field, const QString& text);
-    void setMessage(int field, const QString& message);
+    void setMessage(int field, const QString& message, bool warning = false);
 
     class SketchView* sketch_ = nullptr;
     class QLabel* drawing_ = nullptr;

@@ -45,6 +45,16 @@ struct UnitPlanContext {
     const TurnedPart* turned = nullptr;  // a turning unit: what its turned() made, for plan() to cut
 };
 
+// Area clearing by drawn passes (AREA): what the station's Figure tab draws
+// and edits of such a unit, lengths in the job's unit. The area is named by
+// contours of the job's figure, which the tab evaluates itself.
+struct DrawnPasses {
+    std::vector<Point2> points;  // the tool centre goes from each to the next
+    double radius = 0.0;         // half the strips' width (the tool's radius)
+    std::string outline;
+    std::vector<std::string> islands;
+};
+
 class ModuleKind {
 public:
     virtual ~ModuleKind() = default;
@@ -95,6 +105,10 @@ public:
     // unit names, inside `stock` (in the job's unit: the text is in it too),
     // for a job that has no figure yet. Empty for other modules.
     virtual std::string defaultFigure(const Stock& /*stock*/) const { return {}; }
+    // Drawn passes (AREA): the unit's points and strip radius for the Figure
+    // tab, and the points set from the tab (false: the module has none).
+    virtual std::optional<DrawnPasses> drawnPasses(const ModuleInput& /*unit*/) const { return std::nullopt; }
+    virtual bool setDrawnPoints(ModuleInput& /*unit*/, std::vector<Point2> /*points*/) const { return false; }
     // What a setup unit hands on besides steps (probing: the measured centre
     // and the probing cycle); nothing for machining units. Inputs are checked
     // and in mm.

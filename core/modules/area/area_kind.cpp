@@ -50,6 +50,19 @@ public:
         mm.as<AreaClearing>().area.resolve(table);
     }
 
+    std::optional<DrawnPasses> drawnPasses(const ModuleInput& unit) const override
+    {
+        const AreaClearing& a = unit.as<AreaClearing>();
+        return DrawnPasses{a.points, a.diameter / 2, a.area.outline, a.area.islands};
+    }
+    bool setDrawnPoints(ModuleInput& unit, std::vector<Point2> points) const override
+    {
+        AreaClearing& a = unit.as<AreaClearing>();
+        a.points = std::move(points);
+        a.badPoints.clear();
+        return true;
+    }
+
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override
     {
         const AreaClearing& a = mm.as<AreaClearing>();
@@ -91,12 +104,33 @@ public:
                "K1 = CONTOUR/L1, L2, L3, L4";
     }
 
-    ModuleInput makeDefault(const Stock&) const override
+    // The default figure's rectangle cleared back and forth in rows 0.8 D
+    // apart, with the largest of the usual end mill sizes a quarter of its
+    // narrower side allows.
+    ModuleInput makeDefault(const Stock& s) const override
     {
         AreaClearing a;
         a.area.outline = "K1";
         a.depth = 5;
-        a.diameter = 10;
+        const double r3 = 1000.0;
+        const auto round3 = [r3](double v) { return std::round(v * r3) / r3; };
+        const double x0 = round3(s.x + 0.2 * s.width), x1 = round3(s.x + 0.6 * s.width);
+        const double y0 = round3(s.y + 0.2 * s.length), y1 = round3(s.y + 0.6 * s.length);
+        const double side = std::min(x1 - x0, y1 - y0);
+        a.diameter = side / 4;
+        for (const double d : {25.0, 20.0, 16.0, 12.0, 10.0, 8.0, 6.0, 5.0, 4.0, 3.0, 2.0})
+            if (d <= side / 4) {
+                a.diameter = d;
+                break;
+            }
+        const double r = a.diameter / 2;
+        const int rows = std::max(1, static_cast<int>(std::ceil((y1 - y0 - 2 * r) / (0.8 * a.diameter)))) + 1;
+        for (int i = 0; i < rows; ++i) {
+            const double y = round3(y0 + r + (y1 - y0 - 2 * r) * i / (rows - 1));
+            const bool back = i % 2 == 1;
+            a.points.push_back({back ? x1 - r : x0 + r, y});
+            a.points.push_back({back ? x0 + r : x1 - r, y});
+        }
         return a;
     }
 
