@@ -9,6 +9,7 @@
 #include <QCoreApplication>
 
 #include "ui/autosave.h"
+#include "ui/dxf_import_dialog.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -218,6 +219,7 @@ void StationWindow::buildMenus()
     QMenu* recent = file->addMenu(tr("Open &recent"));
     connect(recent, &QMenu::aboutToShow, this, [this, recent] { files_->fillRecentMenu(recent); });
     file->addAction(tr("&Import turned part (STEP)…"), files_, &FileActions::importStep);
+    file->addAction(tr("Import &DXF contours…"), this, &StationWindow::importDxf)->setObjectName("action.importDxf");
     file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);
     file->addSeparator();
@@ -410,6 +412,27 @@ void StationWindow::wire()
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }
+
+void StationWindow::importDxf()
+{
+    if (doc_->job().bar) {
+        statusBar()->showMessage(tr("DXF contours become figure elements, which a lathe job does not use."), 8000);
+        return;
+    }
+    DxfImportDialog dialog(doc_->job(), this);
+    dialog.show();
+    QMetaObject::invokeMethod(dialog.findChild<QPushButton*>("dxf.choose"), "click", Qt::QueuedConnection);
+    if (dialog.exec() == QDialog::Accepted) replaceFigure(dialog.appendedTo(doc_->job().figure), tr("Import DXF contours"));
+}
+
+void StationWindow::replaceFigure(const std::string& figure, const QString& what)
+{
+    if (figure == doc_->job().figure) return;
+    Job job = doc_->job();
+    job.figure = figure;
+    doc_->edit(job, what);
+    showFigure(true);
+}
 
 void StationWindow::showFigure(bool figure)
 {

@@ -58,6 +58,11 @@ public:
     FigurePanel* figurePanel() const { return figure_; }
     // Shows the figure tab (true) or the 3-D view.
     void showFigure(bool figure);
+    // File > Import DXF contours: the dialog (ui/dxf_import_dialog.h); what
+    // it gives is appended to the job's figure by replaceFigure, one
+    // undoable edit that shows the Figure tab.
+    void importDxf();
+    void replaceFigure(const std::string& figure, const QString& what);
 
 protected:
     void closeEvent(QCloseEvent* e) override;
