@@ -29,6 +29,8 @@ int formatVersionFor(const Job& job)
     if (!job.figure.empty()) return 5;
     for (const auto& u : job.units)
         if (std::string(u.module.name()) == "CP" || std::string(u.module.name()) == "HOLES") return 5;
+    for (const auto& u : job.units)  // face milling (module FACE) came with version 5 too
+        if (std::string(u.module.name()) == "FACE") return 5;
     if (job.clamping) return 4;
     if (job.bar) return 3;
     for (const auto& u : job.units)

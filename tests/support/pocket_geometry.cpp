@@ -2,6 +2,8 @@
 #include "support/pocket_geometry.h"
 
 #include "modules/cp/cp.h"
+#include "modules/face/face.h"
+#include "support/face_oracle.h"
 #include "modules/m2d/m2d.h"
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
@@ -54,6 +56,7 @@ Quad pocketSection(const ModuleInput& m, double depth)
 
 double pocketDepth(const ModuleInput& m)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceDepth(*f);
     if (const auto* h = m.getIf<HolePattern>()) return h->depth;
     if (const auto* cp = m.getIf<ContourPocket>()) return cp->depth;
     if (const auto* m4 = m.getIf<M4Pocket>()) return m4->depth;
@@ -102,12 +105,14 @@ std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
 
 double wallDistance(const ModuleInput& m, Point3 tip)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceWallDistance(*f, tip);
     if (const auto* cp = m.getIf<ContourPocket>()) return (*regionDistance(*cp))({tip.x, tip.y});
     return signedDistance(pocketSection(m, -tip.z), {tip.x, tip.y});
 }
 
 double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceGouge(*f, tool, tip);
     if (tip.z >= 0.0) return -std::numeric_limits<double>::infinity();
     if (const auto* h = m.getIf<HolePattern>()) {
         // Hole patterns: the tool inside the nearest hole's circle (of the
