@@ -18,7 +18,9 @@ const std::vector<std::string> kKeys{"module", "name",     "depth",  "U",     "f
                                      "pattern", "stepOver", "margin", "tools", "cutting"};
 
 // A code field of FaceUnit with the module's own meanings (U and the
-// pattern mean other things here than in a pocket's tables).
+// pattern mean other things here than in a pocket's tables); the form puts
+// the code before them and translates them as the core's texts
+// (ui/core_texts.cpp).
 FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes,
                     int FaceUnit::*m)
 {
@@ -124,8 +126,8 @@ protected:
         std::vector<FormField> fs;
         fs.push_back(member<FaceUnit>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth"), {"depth"}, &FaceUnit::depth));
         fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                               {{face::kStandard, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "1 – roughing layers and a finishing pass")},
-                                {face::kRoughOnly, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "9 – roughing only, the finishing allowance left")}},
+                               {{face::kStandard, "roughing layers and a finishing pass"},
+                                {face::kRoughOnly, "roughing only, the finishing pass left"}},
                                &FaceUnit::toolUse));
         fs.push_back(optionalMember<FaceUnit>("finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Finishing pass"),
                                               TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's β2"), {"finish"},
@@ -133,8 +135,8 @@ protected:
         fs.push_back(member<FaceUnit>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle of the passes (°)"), {"angle"},
                                       &FaceUnit::angle));
         fs.push_back(codeField("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"),
-                               {{face::kOneWay, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "1 – one way, climb")},
-                                {face::kZigzag, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "2 – zigzag, back and forth")}},
+                               {{face::kOneWay, "one way, every pass climb"},
+                                {face::kZigzag, "zigzag, back and forth"}},
                                &FaceUnit::pattern));
         fs.push_back(optionalMember<FaceUnit>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
                                               TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "0.75 (face mill), else technology data's"),
