@@ -43,12 +43,6 @@ constexpr std::array kSources{
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "(round: none)"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "outer (OD)"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "inner (ID, a bore)"),
-    // Face milling (module FACE): its step and its codes U and pattern.
-    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Face milling"),
-    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing layers and a finishing pass"),
-    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing only, the finishing pass left"),
-    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "one way, every pass climb"),
-    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "zigzag, back and forth"),
 };
 
 QString translated(const std::string& text) { return QCoreApplication::translate(kContext, text.c_str()); }

@@ -19,8 +19,8 @@ const std::vector<std::string> kKeys{"module", "name",     "depth",  "U",     "f
 
 // A code field of FaceUnit with the module's own meanings (U and the
 // pattern mean other things here than in a pocket's tables); the form puts
-// the code before them and translates them as the core's texts
-// (ui/core_texts.cpp).
+// the code before them and translates them in the core texts' context
+// (ui/core_texts.cpp: they go into its sources with their translations).
 FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes,
                     int FaceUnit::*m)
 {
