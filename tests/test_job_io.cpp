@@ -7,6 +7,7 @@
 #include "modules/m2d/m2d.h"
 #include "modules/area/area.h"
 #include "modules/cp/cp.h"
+#include "modules/face/face.h"
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
 #include "modules/probe/probe.h"
@@ -177,6 +178,10 @@ private slots:
                 } else if (const auto* h = (u.module).getIf<HolePattern>()) {
                     seen.insert("HOLES " + h->pattern);
                     seen.insert("HOLES " + h->hole);
+                } else if (const auto* fa = (u.module).getIf<FaceUnit>()) {
+                    seen.insert("FACE pattern" + std::to_string(fa->pattern));
+                    if (fa->margin > 0) seen.insert("FACE margin");
+                    if (fa->tools.count("face")) seen.insert("FACE pinned");
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -189,7 +194,8 @@ private slots:
                                  "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
                                  "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner",
                                  "CP U1", "CP islands", "HOLES single", "HOLES grid", "HOLES bolt circle", "HOLES drilled",
-                                 "HOLES tapped", "HOLES reamed", "HOLES bored", "AREA islands"})
+                                 "HOLES tapped", "HOLES reamed", "HOLES bored", "AREA islands", "FACE pattern1", "FACE pattern2",
+                                 "FACE margin", "FACE pinned"})
             QVERIFY2(seen.count(want), want);
     }
 
@@ -248,9 +254,10 @@ private slots:
             (isLathe ? lathe : milling)++;
             const bool three = text.find("\"version\": 3,") != std::string::npos;
             QVERIFY2(three == isLathe, qPrintable(f));
-            // Figure elements and the contour and hole units are version 5.
+            // Figure elements and the contour, hole and face units are version 5.
             const bool five = !job.figure.empty() || std::any_of(job.units.begin(), job.units.end(), [](const MachiningUnit& u) {
-                return std::string(u.module.name()) == "CP" || std::string(u.module.name()) == "HOLES";
+                const std::string name = u.module.name();
+                return name == "CP" || name == "HOLES" || name == "FACE" || name == "AREA";
             });
             QCOMPARE(formatVersionFor(job), five ? 5 : job.clamping ? 4 : isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
             QVERIFY2(five == (text.find("\"version\": 5,") != std::string::npos), qPrintable(f));

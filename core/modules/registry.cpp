@@ -12,7 +12,8 @@
     X(turn)              \
     X(cp)                \
     X(holes)             \
-    X(area)
+    X(area)              \
+    X(face)
 
 namespace taiwa {
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace taiwa {
@@ -114,6 +115,16 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
     case StepKind::Roughing: return layers * rings * kMovesPerRing;
     case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
     case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
+    case StepKind::FaceMilling: {  // passes across the face, four moves each
+        if (!step.outline) return 10;
+        const double a = step.passAngle * std::numbers::pi / 180.0;
+        double lo = 1e300, hi = -1e300;
+        for (const Point2 c : step.outline->corners) {
+            const double v = -std::sin(a) * c.x + std::cos(a) * c.y;
+            lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        return (std::ceil((hi - lo) / std::max(step.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
+    }
     case StepKind::InclinedFaceFinishing: {
         if (!step.face) return 10;
         const double R = D / 2, h = std::clamp(step.scallop, 1e-6, R);

@@ -1,6 +1,6 @@
 // Job-wide step order: a topological order of the steps that keeps the
 // spindle on the same tool as long as any step ready to run uses it, and
-// otherwise follows the units' machining order.
+// otherwise follows the units' machining order; a faced top comes first.
 #include "tools/tool_choice.h"
 
 #include <algorithm>
@@ -32,8 +32,11 @@ bool dependsOn(const Step& later, const Step& earlier)
 {
     if (later.unit != earlier.unit) return false;
     if (rank(earlier) < rank(later)) return true;
-    // Roughing layers in order; wall passes (semi-finish, middle, final) in order.
-    return later.kind == earlier.kind && (later.kind == StepKind::Roughing || later.kind == StepKind::WallFinishing) &&
+    // Roughing layers in order; wall passes (semi-finish, middle, final) in
+    // order; face-milling layers, then the finishing pass, in order.
+    return later.kind == earlier.kind &&
+           (later.kind == StepKind::Roughing || later.kind == StepKind::WallFinishing ||
+            later.kind == StepKind::FaceMilling) &&
            earlier.number < later.number;
 }
 
@@ -60,6 +63,20 @@ std::vector<int> orderSteps(const std::vector<Step>& steps)
                     next[static_cast<std::size_t>(a)].push_back(b);
                     ++waiting[static_cast<std::size_t>(b)];
                 }
+    // The top is faced before anything else is cut: every other unit's steps
+    // wait for the last face-milling step of each facing unit (module FACE;
+    // the others' depths are measured from Z0 either way).
+    for (const auto& members : byUnit) {
+        int lastFace = -1;
+        for (const int a : members)
+            if (at(a).kind == StepKind::FaceMilling && (lastFace < 0 || at(a).number > at(lastFace).number)) lastFace = a;
+        if (lastFace < 0) continue;
+        for (int b = 0; b < n; ++b)
+            if (at(b).unit != at(lastFace).unit && at(b).kind != StepKind::FaceMilling) {
+                next[static_cast<std::size_t>(lastFace)].push_back(b);
+                ++waiting[static_cast<std::size_t>(b)];
+            }
+    }
     // The ready steps, lowest index first: all of them, and those of each
     // tool. A step taken through one heap stays in the other until it comes
     // to the top there and is seen to be taken.

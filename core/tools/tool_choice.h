@@ -38,7 +38,8 @@ std::vector<std::string> chooseTools(std::vector<Step>& unitSteps, const ToolPin
 
 // Job-wide order: a permutation of indices into `steps` that groups steps by
 // tool to save tool changes, never putting a pilot hole after the roughing
-// that plunges into it, nor a unit's finishing before its roughing.
+// that plunges into it, nor a unit's finishing before its roughing, nor any
+// other unit's step before the face milling of the stock top.
 std::vector<int> orderSteps(const std::vector<Step>& steps);
 
 // Tool life: walks the ordered steps adding each step's minutes to its tool's

@@ -313,8 +313,9 @@ private:
         return removed;
     }
 
-    // A roughing layer or a floor finish clears its unit's cross-section at
-    // its depth, less the walls' allowance (and its tool's corner radius);
+    // A roughing layer, a floor finish or a face-milling layer clears its
+    // unit's cross-section at its depth, less the walls' allowance (and its
+    // tool's corner radius);
     // a pilot hole reaches its depth at its centre.
     void restAfterStep(int k, int row0, int row1, Collector& out)
     {
@@ -333,7 +334,7 @@ private:
                         h[field_.indexOf(i, j)] - allowed + tolerance, cellArea());
             return;
         }
-        if (s.kind != StepKind::Roughing && s.kind != StepKind::FloorFinishing) return;
+        if (s.kind != StepKind::Roughing && s.kind != StepKind::FloorFinishing && s.kind != StepKind::FaceMilling) return;
         if (s.unit < 0 || s.unit >= static_cast<int>(units_.size()) || !units_[s.unit].cavity) return;
         const Cavity& cav = *units_[s.unit].cavity;
         const double slack = -(s.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + d.cornerRadius);

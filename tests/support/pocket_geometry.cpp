@@ -3,6 +3,8 @@
 
 #include "modules/area/area.h"
 #include "modules/cp/cp.h"
+#include "modules/face/face.h"
+#include "support/face_oracle.h"
 #include "modules/m2d/m2d.h"
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
@@ -55,6 +57,7 @@ Quad pocketSection(const ModuleInput& m, double depth)
 
 double pocketDepth(const ModuleInput& m)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceDepth(*f);
     if (const auto* h = m.getIf<HolePattern>()) return h->depth;
     if (const auto* cp = m.getIf<ContourPocket>()) return cp->depth;
     if (const auto* a = m.getIf<AreaClearing>()) return a->depth;
@@ -104,6 +107,7 @@ std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
 
 double wallDistance(const ModuleInput& m, Point3 tip)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceWallDistance(*f, tip);
     if (const auto* cp = m.getIf<ContourPocket>()) return (*regionDistance(*cp))({tip.x, tip.y});
     if (const auto* a = m.getIf<AreaClearing>()) return RegionDistance(normalised(a->area.region.value()))({tip.x, tip.y});
     return signedDistance(pocketSection(m, -tip.z), {tip.x, tip.y});
@@ -111,6 +115,7 @@ double wallDistance(const ModuleInput& m, Point3 tip)
 
 double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
 {
+    if (const auto* f = m.getIf<FaceUnit>()) return faceGouge(*f, tool, tip);
     if (tip.z >= 0.0) return -std::numeric_limits<double>::infinity();
     if (const auto* h = m.getIf<HolePattern>()) {
         // Hole patterns: the tool inside the nearest hole's circle (of the

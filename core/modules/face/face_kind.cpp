@@ -1,0 +1,163 @@
+// The door of module FACE (face milling of the stock top): its job-file
+// keys, checks, planning, cavity and form, as module_kind.h asks.
+// Registered in modules/registry.cpp.
+#include "modules/face/face.h"
+#include "modules/module_kind.h"
+
+#include "check/unit_checks.h"
+#include "io/json_write.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name",     "depth",  "U",     "finish", "angle",
+                                     "pattern", "stepOver", "margin", "tools", "cutting"};
+
+// A code field of FaceUnit with the module's own meanings (U and the
+// pattern mean other things here than in a pocket's tables); the form puts
+// the code before them and translates them in the core texts' context
+// (ui/core_texts.cpp: they go into its sources with their translations).
+FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes,
+                    int FaceUnit::*m)
+{
+    FormField f = form::number<FaceUnit>(
+        key, std::move(label), {key}, [m](const FaceUnit& u) { return static_cast<double>(u.*m); },
+        [m](FaceUnit& u, double v) { u.*m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+    f.kind = FormFieldKind::Code;
+    f.codes = std::move(codes);
+    return f;
+}
+
+class FaceKind final : public ModuleKindOf<FaceUnit> {
+public:
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add face milling"); }
+    const char* drawing() const override { return ":/modules/face.svg"; }
+    const char* outlineField() const override { return "depth"; }
+    std::vector<std::string> stepKeys() const override { return {face::kStepKey}; }
+
+    // The face is the whole stock top (grown by the margin, beyond the
+    // stock where there is nothing to cut): the finished surface lies at
+    // the depth wherever the stock is. The unit does not know the stock, so
+    // its box reaches as far as any length may; the verification keeps to
+    // the stock's cells.
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData&) const override
+    {
+        const FaceUnit& f = mm.as<FaceUnit>();
+        Cavity c;
+        c.min = {-check::kMaxLength, -check::kMaxLength};
+        c.max = {check::kMaxLength, check::kMaxLength};
+        c.depth = f.depth;
+        c.depthAt = [depth = f.depth](Point2, double) { return depth; };
+        return c;
+    }
+
+    ModuleInput makeDefault(const Stock& stock) const override
+    {
+        FaceUnit f;
+        f.depth = std::min(1.0, stock.height / 10.0);
+        return f;
+    }
+
+protected:
+    FaceUnit readInput(const io::ObjectFields& f) const override
+    {
+        FaceUnit u;
+        f.rejectUnknown("module FACE", kKeys);
+        u.depth = f.number("depth").value_or(0.0);
+        u.toolUse = f.whole("U", face::kStandard);
+        u.finish = f.optionalNumber("finish");
+        u.angle = f.number("angle", 0.0);
+        u.pattern = f.whole("pattern", face::kOneWay);
+        u.stepOver = f.optionalNumber("stepOver");
+        u.margin = f.number("margin", 0.0);
+        u.tools = f.wholeMap("tools");
+        return u;
+    }
+
+    void writeInput(const FaceUnit& u, nlohmann::ordered_json& j) const override
+    {
+        j["depth"] = io::number(u.depth);
+        j["U"] = u.toolUse;
+        if (u.finish) j["finish"] = io::number(*u.finish);
+        j["angle"] = io::number(u.angle);
+        j["pattern"] = u.pattern;
+        if (u.stepOver) j["stepOver"] = io::number(*u.stepOver);
+        if (u.margin != 0.0) j["margin"] = io::number(u.margin);
+        if (!u.tools.empty()) j["tools"] = io::pins(u.tools);
+    }
+
+    check::UnitReport checkInput(const FaceUnit& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkFace(mm, unitNo, ctx);
+    }
+
+    // No figure for the interference check: a face covers the whole top,
+    // and every other unit lies under it (their depths are measured from
+    // Z0 either way). Overlapping them all is what a face does, not a
+    // conflict; the step order (tools/step_order.cpp) faces the top before
+    // any other unit's steps instead.
+    std::optional<Quad> outline(const FaceUnit&) const override { return std::nullopt; }
+
+    // The face follows the stock, not a position of its own.
+    void move(FaceUnit&, Point2) const override {}
+
+    std::vector<Step> planInput(const FaceUnit& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        const auto problem = [&](std::string field, std::string message) {
+            out.push_back({Severity::Error, ctx.unit + 1, FaceUnit::kName, std::move(field), std::move(message)});
+            return std::vector<Step>{};
+        };
+        if (!ctx.job) return problem("", "face milling needs the job's stock to plan");
+        const face::ToolPick pick = face::chooseTool(mm, ctx.tech, ctx.library, ctx.material, ctx.shownUnit);
+        if (!pick.tool) return problem("tools.face", pick.problem);
+        std::vector<Step> steps = decomposeFace(mm, ctx.job->stock, ctx.tech, *pick.tool, ctx.unit);
+        for (Step& s : steps) s.tool = ToolChoice{pick.tool->id, pick.reason};
+        return steps;
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        using form::optionalMember;
+        std::vector<FormField> fs;
+        fs.push_back(member<FaceUnit>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth"), {"depth"}, &FaceUnit::depth));
+        fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                               {{face::kStandard, "roughing layers and a finishing pass"},
+                                {face::kRoughOnly, "roughing only, the finishing pass left"}},
+                               &FaceUnit::toolUse));
+        fs.push_back(optionalMember<FaceUnit>("finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Finishing pass"),
+                                              TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's β2"), {"finish"},
+                                              &FaceUnit::finish));
+        fs.push_back(member<FaceUnit>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle of the passes (°)"), {"angle"},
+                                      &FaceUnit::angle));
+        fs.push_back(codeField("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"),
+                               {{face::kOneWay, "one way, every pass climb"},
+                                {face::kZigzag, "zigzag, back and forth"}},
+                               &FaceUnit::pattern));
+        fs.push_back(optionalMember<FaceUnit>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
+                                              TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "0.75 (face mill), else technology data's"),
+                                              {"stepOver"}, &FaceUnit::stepOver));
+        fs.push_back(member<FaceUnit>("margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Margin beyond the stock"), {"margin"},
+                                      &FaceUnit::margin));
+        form::describe(fs, {
+            {"depth", "sym-depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Stock taken off the top, down from Z0; less than the stock's height")},
+            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)")},
+            {"finish", "sym-finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the finishing pass, less than the depth; empty for the technology data's β2")},
+            {"angle", "sym-angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction of the passes in degrees, counter-clockwise from +X")},
+            {"pattern", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)")},
+            {"stepOver", "sym-stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance between passes as a share of the tool's diameter, above 0 and at most 0.9")},
+            {"margin", "sym-margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far the face reaches beyond the stock's sides; 0 for exactly the top")},
+        });
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& faceModule() { return moduleInstance<FaceKind>(); }
+
+}  // namespace taiwa
