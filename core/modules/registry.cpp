@@ -11,7 +11,8 @@
     X(probe)             \
     X(turn)              \
     X(cp)                \
-    X(holes)
+    X(holes)             \
+    X(side)
 
 namespace taiwa {
 
