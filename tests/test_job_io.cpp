@@ -9,6 +9,7 @@
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
 #include "modules/probe/probe.h"
+#include "modules/side/side.h"
 #include "modules/turn/turn.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
@@ -170,6 +171,8 @@ private slots:
                 } else if (const auto* h = (u.module).getIf<HolePattern>()) {
                     seen.insert("HOLES " + h->pattern);
                     seen.insert("HOLES " + h->hole);
+                } else if (const auto* sm = (u.module).getIf<SideMill>()) {
+                    seen.insert(std::string("SIDE ") + (sm->side == 1 ? "left" : "right") + (sm->direction == 1 ? " climb" : " conventional") + " F" + std::to_string(sm->wallFinish));
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -182,7 +185,7 @@ private slots:
                                  "M4 taper F1", "M4 taper F3", "M2D U1 H0", "M2D U9 H9", "M2D theta2", "PROBE shape1 where1",
                                  "PROBE shape1 where2", "PROBE shape2 where1", "PROBE touches", "PROBE cycle only", "TURN outer", "TURN inner",
                                  "CP U1", "CP islands", "HOLES single", "HOLES grid", "HOLES bolt circle", "HOLES drilled",
-                                 "HOLES tapped", "HOLES reamed", "HOLES bored"})
+                                 "HOLES tapped", "HOLES reamed", "HOLES bored", "SIDE left climb F1", "SIDE right conventional F2"})
             QVERIFY2(seen.count(want), want);
     }
 

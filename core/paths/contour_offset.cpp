@@ -93,9 +93,12 @@ double place(const ContourSegment& s, Point2 p)
     return kTwoPi - angle < angle - sweep ? -(kTwoPi - angle) / sweep : angle / sweep;
 }
 
-// Appends the parallel `e` to the chain, joined to the chain's last piece
-// round the contour's corner `corner` (the rounding of a convex joint is an
-// arc of radius d about it).
+// Appends the parallel `e` to the chain, joined to the chain's last piece.
+// Where the two cross within both (the chain's last piece before its end,
+// e after its start) the joint is concave: both are trimmed there (a piece
+// the crossing reverses is left out). Otherwise it is convex: an arc of
+// radius d about `corner`, the contour point e's parallel starts from, from
+// where the last piece meets that circle to e's start.
 Result<void> join(std::vector<ContourSegment>& out, ContourSegment e, Point2 corner, double side, double d)
 {
     for (;;) {
@@ -109,27 +112,38 @@ Result<void> join(std::vector<ContourSegment>& out, ContourSegment e, Point2 cor
             out.push_back(e);
             return {};
         }
-        const Point2 a = last.endDirection(), b = e.startDirection();
-        const double turn = cross(a, b) * side;  // < 0: the contour turns away from the tool's side
-        const bool onCircle = std::abs(distance(last.end, corner) - d) < 1e-6 && std::abs(distance(e.start, corner) - d) < 1e-6;
-        if (onCircle && (turn < -1e-12 || (std::abs(turn) <= 1e-12 && dot(a, b) < 0))) {
-            out.push_back(ContourSegment::arc(last.end, e.start, corner, side < 0));
-            out.push_back(e);
-            return {};
-        }
-        // A concave joint: the crossing of the two parallels nearest the gap.
         const Point2 gap = 0.5 * (last.end + e.start);
-        const std::vector<Point2> xs = crossings(last, e);
-        if (xs.empty()) return Failure{"the parallels of a concave joint do not cross"};
-        const Point2 x = *std::min_element(xs.begin(), xs.end(),
-                                           [&](Point2 p, Point2 q) { return distance(p, gap) < distance(q, gap); });
-        if (place(e, x) > 1.0 + 1e-9) return {};  // the trimming reverses e: leave it out
-        if (place(last, x) < -1e-9) {             // it reverses the last piece: leave that out
-            out.pop_back();
-            continue;
+        const auto nearest = [](const std::vector<Point2>& xs, Point2 to) {
+            return *std::min_element(xs.begin(), xs.end(), [&](Point2 p, Point2 q) { return distance(p, to) < distance(q, to); });
+        };
+        if (const std::vector<Point2> xs = crossings(last, e); !xs.empty()) {
+            const Point2 x = nearest(xs, gap);
+            const double inLast = place(last, x), inE = place(e, x);
+            if (inLast <= 1.0 + 1e-9 && inE >= -1e-9) {  // concave
+                if (inE > 1.0 + 1e-9) return {};         // the trimming reverses e: leave it out
+                if (inLast < -1e-9) {                     // it reverses the last piece: leave that out
+                    out.pop_back();
+                    continue;
+                }
+                last.end = x;
+                e.start = x;
+                out.push_back(e);
+                return {};
+            }
         }
-        last.end = x;
-        e.start = x;
+        // Convex: round the corner.
+        if (std::abs(distance(last.end, corner) - d) > 1e-7) {
+            const ContourSegment circle = ContourSegment::arc(corner + Point2{d, 0.0}, corner + Point2{d, 0.0}, corner, true);
+            const std::vector<Point2> xs = crossings(last, circle);
+            if (xs.empty()) return Failure{"a convex joint's rounding does not meet the piece before it"};
+            const Point2 x = nearest(xs, last.end);
+            if (place(last, x) < -1e-9) {
+                out.pop_back();
+                continue;
+            }
+            last.end = x;
+        }
+        out.push_back(ContourSegment::arc(last.end, e.start, corner, side < 0));
         out.push_back(e);
         return {};
     }
