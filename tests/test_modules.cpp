@@ -96,18 +96,22 @@ private slots:
             Job fine = plain;
             field->set(fine.units[0].module, 0.1);
             QCOMPARE(field->get(fine.units[0].module), std::optional<double>(0.1));
-            const auto roughingMoves = [](const Plan& p) {
+            // Roughing: a pocket's, face milling's layers, or side milling's roughing passes.
+            const auto roughing = [](const Step& s) {
+                return s.kind == StepKind::Roughing || s.kind == StepKind::FaceMilling ||
+                       s.machiningType == MachiningType::SideMilling;
+            };
+            const auto roughingMoves = [&](const Plan& p) {
                 std::size_t n = 0;
                 for (const Step& s : p.steps)
-                    if (s.kind == StepKind::Roughing || s.kind == StepKind::FaceMilling) n += s.path->moves.size();
+                    if (roughing(s)) n += s.path->moves.size();
                 return n;
             };
             const Plan a = planJob(plain, TechnologyTable::builtIn(), defaultToolLibrary());
             const Plan b = planJob(fine, TechnologyTable::builtIn(), defaultToolLibrary());
             QVERIFY2(a.ok() && b.ok(), k->name());
             for (const Step& s : b.steps)
-                if (s.kind == StepKind::Roughing || s.kind == StepKind::FaceMilling)
-                    QCOMPARE(s.stepOver, std::optional<double>(0.1));
+                if (roughing(s)) QCOMPARE(s.stepOver, std::optional<double>(0.1));
             QVERIFY2(roughingMoves(b) > roughingMoves(a), k->name());
             const JobReadResult back = readJob(writeJob(fine));
             QVERIFY(back.job && *back.job == fine);
@@ -118,7 +122,7 @@ private slots:
             QVERIFY2(ds[0].message.find("the step-over") != std::string::npos && ds[0].message.find("0.9") != std::string::npos,
                      ds[0].message.c_str());
         }
-        QCOMPARE(pockets, 4);  // M4, M2D, CP, and FACE (its passes, not rings)
+        QCOMPARE(pockets, 5);  // M4, M2D, CP, FACE (its passes, not rings) and SIDE
     }
 
     void everyFormFieldReadsBackWhatItSets()

@@ -381,4 +381,38 @@ std::string overlap(int unitNo, int otherUnitNo, double areaMm2, LengthUnit unit
                        unitNo, otherUnitNo, trimmed(shown, unit == LengthUnit::Inch ? 6 : 4), unitSymbol(unit));
 }
 
+std::string sideContourNotNamed()
+{
+    return "name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)";
+}
+
+std::string sideCodeUnknown(const std::string& code, int value, const std::string& allowed)
+{
+    return fmt::format("{} {} is not a code of side milling; use {}", code, value, allowed);
+}
+
+std::string sideWidthNotAboveAllowance(Len width, Len alpha2)
+{
+    return fmt::format("the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that", quote(width),
+                       quote(alpha2));
+}
+
+std::string sidePinKeyUnknown(const std::string& key)
+{
+    return fmt::format("\"{}\" is not a step of side milling; pin its end mill under \"side\" (roughing and finishing)",
+                       key);
+}
+
+std::string sideNoTool(const std::string& step, const std::string& why)
+{
+    return fmt::format("{}: {}", step, why);
+}
+
+std::string sideChannelTooNarrow(const std::string& name, const std::string& tool, Len x, Len y)
+{
+    return fmt::format("{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; "
+                       "pin a smaller end mill or widen the channel",
+                       tool, name, quote(x), quote(y));
+}
+
 }  // namespace taiwa::msg

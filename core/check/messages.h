@@ -95,6 +95,14 @@ std::string islandsOverlap(const std::string& a, const std::string& b);
 std::string sharpInsideCorner(const std::string& name, Len x, Len y);
 std::string toolUseNotForContours(int code);
 
+// Side milling (SIDE): its contour, codes, width and room.
+std::string sideContourNotNamed();
+std::string sideCodeUnknown(const std::string& code, int value, const std::string& allowed);
+std::string sideWidthNotAboveAllowance(Len width, Len alpha2);
+std::string sidePinKeyUnknown(const std::string& key);
+std::string sideNoTool(const std::string& step, const std::string& why);
+std::string sideChannelTooNarrow(const std::string& name, const std::string& tool, Len x, Len y);
+
 // Interference of two figures.
 std::string overlap(int unitNo, int otherUnitNo, double areaMm2, LengthUnit unit);
 

@@ -13,7 +13,8 @@
     X(cp)                \
     X(holes)             \
     X(area)              \
-    X(face)
+    X(face)              \
+    X(side)
 
 namespace taiwa {
 

@@ -109,6 +109,10 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
             return (step.multiIncision ? layers : 1) * (2 * segments + 10);
         }
     }
+    if (step.kind == StepKind::SideMilling && step.sideContour) {  // each pass: about a move a segment, two a joint, leads
+        const double passes = static_cast<double>(std::max<std::size_t>(step.sideOffsets.size(), 1));
+        return (step.multiIncision ? layers : 1) * passes * (2 * static_cast<double>(step.sideContour->segments.size()) + 8);
+    }
     constexpr double kMovesPerRing = 12;  // four sides, four corners, links
     switch (step.kind) {
     case StepKind::PilotHole: return 10;

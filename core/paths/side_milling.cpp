@@ -1,13 +1,149 @@
-// Tool path of the side milling of module SIDE (a placeholder until the module lands).
+// Tool path of side milling (module SIDE): for each Z layer (roughing: at
+// most γ·D deep; finishing: full depth or F2's incisions) and each radial
+// pass of the step (the tool edge `o` from the contour, outermost first),
+// the tool centre runs the exact offset of the contour by R + o on the
+// tool's side (paths/contour_offset.h: lines and arcs, G1/G2/G3), in the
+// direction the step travels. Rapids stay at the safe height; the tool
+// goes down at the feed beside the part:
+//  - an open contour is entered and left along the tangents of its first
+//    and last elements, R + clearance beyond its ends;
+//  - a closed contour's loop starts at the middle of its longest piece and
+//    is entered and left on quarter circles from the tool's side whose
+//    start lies a pass's spacing beyond the outermost pass (W + R +
+//    clearance out for the first roughing pass), made smaller when the
+//    contour bends back towards it.
 #include "paths/generators.h"
 
+#include "paths/contour_offset.h"
+#include "paths/path_builder.h"
+
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace taiwa::paths {
 
-ToolPath sideMilling(const Step& step, const Tool&, const TechnologyData&, const PathParameters&)
+namespace {
+
+Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
+Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
+
+void appendChain(PathBuilder& b, const Contour& chain, double z)
 {
-    throw std::logic_error("no tool path yet for step " + step.label());
+    for (const ContourSegment& s : chain.segments) {
+        if (s.isArc()) b.arc(s.kind == ContourSegment::Kind::ArcCCW, at(s.end, z), s.centre);
+        else b.feed(at(s.end, z));
+    }
+}
+
+// The loop started at the middle of its longest piece (lines first).
+Contour fromMiddle(const Contour& loop)
+{
+    std::size_t best = 0;
+    double bestLength = -1.0;
+    for (std::size_t i = 0; i < loop.segments.size(); ++i) {
+        const ContourSegment& s = loop.segments[i];
+        const double l = s.length() * (s.isArc() ? 0.5 : 1.0);
+        if (l > bestLength) bestLength = l, best = i;
+    }
+    const ContourSegment& s = loop.segments[best];
+    if (s.isArc() && s.start == s.end) {  // a full circle: start where it starts
+        return loop;
+    }
+    const Point2 middle = s.at(0.5);
+    ContourSegment first = s, second = s;
+    first.end = middle;
+    second.start = middle;
+    Contour out;
+    out.closed = true;
+    out.segments.push_back(second);
+    for (std::size_t k = 1; k < loop.segments.size(); ++k) out.segments.push_back(loop.segments[(best + k) % loop.segments.size()]);
+    out.segments.push_back(first);
+    return out;
+}
+
+}  // namespace
+
+ToolPath sideMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
+{
+    if (!step.sideContour || step.sideContour->empty()) throw std::logic_error("side milling step without a contour");
+    if (step.sideOffsets.empty()) throw std::logic_error("side milling step without passes");
+    const Contour& contour = *step.sideContour;
+    const double R = tool.radius();
+    const bool left = step.toolOnLeft;
+    const std::vector<double> depths = incisionDepths(step, tool, tech);
+    // The spacing of the step's passes: beyond the outermost lies what the
+    // unit clears (W) or air; a single pass takes at most the tool's width.
+    const double outermost = step.sideOffsets.front();
+    const double spacing = step.sideOffsets.size() > 1 ? step.sideOffsets[0] - step.sideOffsets[1]
+                          : step.sideOffsets.front() > 0.0 ? 2 * R : R;
+
+    // The chains of each pass, made once for all layers.
+    std::vector<std::vector<Contour>> passes;
+    for (const double o : step.sideOffsets) {
+        auto chains = offsetSide(contour, left, R + o);
+        if (!chains) throw std::logic_error("side milling offset failed: " + chains.error());
+        if (chains->empty()) throw std::logic_error("the tool does not fit beside the contour");
+        passes.push_back(std::move(*chains));
+    }
+
+    const double approachZ = -step.startDepth + p.clearance;
+    std::optional<PathBuilder> b;
+    const auto enter = [&](Point2 from, double z) {
+        if (!b) b.emplace(at(from, p.safeZ));
+        b->rapid(at({b->at().x, b->at().y}, p.safeZ));
+        b->rapid(at(from, p.safeZ));
+        b->rapid(at(from, approachZ));
+        b->feed(at(from, z), FeedKind::Plunge);
+    };
+    for (const double depth : depths) {
+        for (std::size_t k = 0; k < passes.size(); ++k) {
+            const double o = step.sideOffsets[k];
+            for (const Contour& raw : passes[k]) {
+                if (raw.segments.empty()) continue;
+                const double z = -depth;
+                if (!contour.closed) {
+                    // Along the end tangents, R + clearance beyond the ends.
+                    const Point2 d0 = raw.segments.front().startDirection(), d1 = raw.segments.back().endDirection();
+                    const Point2 from = raw.start() - (R + p.clearance) * d0, to = raw.end() + (R + p.clearance) * d1;
+                    enter(from, z);
+                    b->feed(at(raw.start(), z));
+                    appendChain(*b, raw, z);
+                    b->feed(at(to, z));
+                    b->rapid(at(to, p.safeZ));
+                    continue;
+                }
+                const Contour loop = fromMiddle(raw);
+                const Point2 start = loop.start(), dir = loop.segments.front().startDirection();
+                const Point2 out = left ? leftOf(dir) : -1.0 * leftOf(dir);  // towards the tool's side
+                // The lead circle: its start a spacing beyond the outermost
+                // pass, at most as large as keeps its centre R + o + lead
+                // from the contour.
+                const double wanted = (outermost - o) + spacing + p.clearance;
+                const auto fits = [&](double l) { return distanceTo(contour, start + l * out) >= R + o + l - 1e-9; };
+                double lead = wanted;
+                if (!fits(lead)) {
+                    double lo = 0.0, hi = wanted;
+                    for (int it = 0; it < 50; ++it) {
+                        const double mid = 0.5 * (lo + hi);
+                        (fits(mid) ? lo : hi) = mid;
+                    }
+                    lead = lo;
+                }
+                const Point2 c = start + lead * out;
+                const Point2 from = c - lead * dir, to = c + lead * dir;
+                // Round the circle onto the loop: counter-clockwise with the
+                // tool on the left of the travel, clockwise on the right.
+                enter(from, z);
+                if (lead > 0) b->arc(left, at(start, z), c);
+                appendChain(*b, loop, z);
+                if (lead > 0) b->arc(left, at(to, z), c);
+                b->rapid(at(to, p.safeZ));
+            }
+        }
+    }
+    if (!b) throw std::logic_error("side milling step without a pass");
+    return b->take();
 }
 
 }  // namespace taiwa::paths

@@ -33,10 +33,11 @@ bool dependsOn(const Step& later, const Step& earlier)
     if (later.unit != earlier.unit) return false;
     if (rank(earlier) < rank(later)) return true;
     // Roughing layers in order; wall passes (semi-finish, middle, final) in
-    // order; face-milling layers, then the finishing pass, in order.
+    // order; face-milling layers, then the finishing pass, in order; side
+    // milling's roughing before its finishing pass.
     return later.kind == earlier.kind &&
            (later.kind == StepKind::Roughing || later.kind == StepKind::WallFinishing ||
-            later.kind == StepKind::FaceMilling) &&
+            later.kind == StepKind::FaceMilling || later.kind == StepKind::SideMilling) &&
            earlier.number < later.number;
 }
 

@@ -8,6 +8,7 @@
 #include "modules/m2d/m2d.h"
 #include "modules/holes/holes.h"
 #include "modules/m4/m4.h"
+#include "support/side_oracle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,7 @@ Quad pocketSection(const ModuleInput& m, double depth)
 double pocketDepth(const ModuleInput& m)
 {
     if (const auto* f = m.getIf<FaceUnit>()) return faceDepth(*f);
+    if (const auto t = sideDepth(m)) return *t;
     if (const auto* h = m.getIf<HolePattern>()) return h->depth;
     if (const auto* cp = m.getIf<ContourPocket>()) return cp->depth;
     if (const auto* a = m.getIf<AreaClearing>()) return a->depth;
@@ -108,6 +110,7 @@ std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
 double wallDistance(const ModuleInput& m, Point3 tip)
 {
     if (const auto* f = m.getIf<FaceUnit>()) return faceWallDistance(*f, tip);
+    if (const auto d = sideWallDistance(m, tip)) return *d;
     if (const auto* cp = m.getIf<ContourPocket>()) return (*regionDistance(*cp))({tip.x, tip.y});
     if (const auto* a = m.getIf<AreaClearing>()) return RegionDistance(normalised(a->area.region.value()))({tip.x, tip.y});
     return signedDistance(pocketSection(m, -tip.z), {tip.x, tip.y});
@@ -116,6 +119,7 @@ double wallDistance(const ModuleInput& m, Point3 tip)
 double gouge(const ModuleInput& m, const Tool& tool, Point3 tip)
 {
     if (const auto* f = m.getIf<FaceUnit>()) return faceGouge(*f, tool, tip);
+    if (const auto g = sideGouge(m, tool, tip)) return *g;
     if (tip.z >= 0.0) return -std::numeric_limits<double>::infinity();
     if (const auto* h = m.getIf<HolePattern>()) {
         // Hole patterns: the tool inside the nearest hole's circle (of the

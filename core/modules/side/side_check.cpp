@@ -1,0 +1,135 @@
+// Input checks of one SIDE unit (side milling along a contour): the
+// contour named and known, not crossing itself, no sharp corner turning
+// towards the tool's side; the side, direction, U and F codes; depth, width
+// and step-over; the pins; the room for the end mill (the smallest concave
+// radius on the tool's side, and with the tool inside a closed contour its
+// reach).
+#include "modules/side/side.h"
+
+#include "check/messages.h"
+#include "model/clipper_scale.h"
+
+#include <cmath>
+
+namespace taiwa {
+
+namespace {
+
+using check::Reporter;
+
+constexpr double kChord = 1e-3;  // mm
+
+bool segmentsCross(Point2 a, Point2 b, Point2 c, Point2 d)
+{
+    const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+    const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+    return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+}
+
+bool crossesItself(const Contour& c)
+{
+    const std::vector<Point2> p = flatten(c, kChord);
+    if (c.closed) {  // Clipper's union of the polygon is one piece of the same area
+        auto path = toClipper(p);
+        ClipperLib::Paths simple;
+        ClipperLib::SimplifyPolygon(path, simple, ClipperLib::pftNonZero);
+        if (simple.size() != 1) return true;
+        return std::abs(std::abs(ClipperLib::Area(simple[0])) - std::abs(ClipperLib::Area(path))) >
+               1e-6 * std::abs(ClipperLib::Area(path)) + 100.0;
+    }
+    // An open chain: no two pieces that are not neighbours cross.
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+        for (std::size_t j = i + 2; j + 1 < p.size(); ++j)
+            if (segmentsCross(p[i], p[i + 1], p[j], p[j + 1])) return true;
+    return false;
+}
+
+bool checkCodes(const SideMill& m, Reporter& r)
+{
+    bool ok = true;
+    const auto code = [&](const char* field, int v, bool allowed, const char* list) {
+        if (allowed) return;
+        r.unit(field, msg::sideCodeUnknown(field, v, list));
+        ok = false;
+    };
+    code("side", m.side, m.side == 1 || m.side == 2, "1 (the tool on the left of the contour) or 2 (on its right)");
+    code("direction", m.direction, m.direction == 1 || m.direction == 2, "1 (climb) or 2 (conventional)");
+    code("U", m.toolUse, m.toolUse == 1 || m.toolUse == 8 || m.toolUse == 9,
+         "1 (roughing and finishing), 8 (finishing only) or 9 (roughing only)");
+    code("F", m.wallFinish, m.wallFinish == 1 || m.wallFinish == 2,
+         "1 (finishing at full depth at once) or 2 (in several incisions)");
+    return ok;
+}
+
+bool checkContour(const SideMill& m, Reporter& r)
+{
+    if (m.contour.empty()) {
+        r.unit("contour", msg::sideContourNotNamed());
+        return false;
+    }
+    if (!m.resolved) return false;  // no figure evaluated (a unit checked on its own)
+    if (!m.path) {
+        r.unit("contour", msg::contourUnknown(m.contour, m.figureContours));
+        return false;
+    }
+    if (m.path->segments.empty() || crossesItself(*m.path)) {
+        r.unit("contour", msg::contourCrossesItself(m.contour));
+        return false;
+    }
+    return true;
+}
+
+void checkPins(const SideMill& m, Reporter& r)
+{
+    for (const auto& [key, id] : m.tools) {
+        if (key != "side") r.unit("tools." + key, msg::sidePinKeyUnknown(key));
+        else if (r.ctx.library && !findTool(*r.ctx.library, id)) r.unit("tools." + key, msg::toolNotInLibrary(id));
+    }
+}
+
+}  // namespace
+
+check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Context& ctx)
+{
+    check::UnitReport report;
+    Reporter r{unitNo, SideMill::kName, ctx, report.diagnostics};
+    checkPins(m, r);
+    const bool codes = checkCodes(m, r);
+    const bool depth = check::checkLength(m.depth, "depth", "the depth", r) && check::checkDepth(m.depth, r);
+    bool width = check::checkLength(m.width, "width", "the width", r);
+    if (width && !(m.width > 0.0)) {
+        r.unit("width", msg::lengthNotPositive("the width W", r.len(m.width)));
+        width = false;
+    }
+    const bool roughs = m.toolUse != 8;
+    if (width && codes && roughs && ctx.tech && m.width <= ctx.tech->alpha2 + 1e-9) {
+        r.unit("width", msg::sideWidthNotAboveAllowance(r.len(m.width), r.len(ctx.tech->alpha2)));
+        width = false;
+    }
+    check::checkStepOver(m.stepOver, r);
+    const bool contour = checkContour(m, r);
+    // A side milling unit works along another shape's wall: its band may
+    // touch and surround other units' figures (a pocket in the boss it
+    // mills round), so it takes no part in the interference check.
+    report.figureValid = false;
+    if (!codes || !contour) return report;
+    const side::Travel t = side::travel(m);
+    if (const auto corner = side::sharpConcaveCorner(t.contour, t.toolOnLeft)) {
+        r.unit("contour", msg::sharpInsideCorner(m.contour, r.len(corner->x), r.len(corner->y)));
+        return report;
+    }
+    if (!depth || !width || !ctx.tech || !ctx.library) return report;
+    const double room = side::toolRoom(m);
+    if (room >= 1e299) return report;  // nothing on the tool's side limits the end mill
+    check::RoomQuery q;
+    q.stepKeys = {"side"};
+    const bool finishes = m.toolUse != 9;
+    q.label = finishes ? "the contour's smallest inside radius on the tool's side"
+                       : "the contour's smallest inside radius on the tool's side + α2";
+    q.available = finishes ? room : room + ctx.tech->alpha2;
+    q.cornerRadius = room;
+    check::checkRoom(q, m.tools, unitNo, SideMill::kName, ctx, report.diagnostics);
+    return report;
+}
+
+}  // namespace taiwa

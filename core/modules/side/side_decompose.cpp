@@ -1,0 +1,170 @@
+// The steps of a SIDE unit and their end mill: roughing (Z layers of at
+// most γ·D down to T, each with radial passes from W in to α2, at most
+// stepOver·D apart) and the finishing pass at the contour (full depth, or
+// F2's incisions). One flat end mill for both, pinned under "side" or the
+// largest of the library that fits: its radius within the room the
+// contour leaves on the tool's side, and every pass's tool-centre chain
+// proved to keep its distance from the contour (a narrow channel the
+// trimming of neighbours does not see makes the next smaller end mill).
+#include "modules/side/side.h"
+
+#include "check/messages.h"
+#include "decompose/make_step.h"
+#include "paths/contour_offset.h"
+#include "tools/tool_fit.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa {
+
+namespace {
+
+constexpr double kProofSpacing = 0.05;  // mm between the points of a chain proved against the contour
+constexpr double kProofTolerance = 1e-6;
+
+std::string mm(double v) { return fmt::format("{:g} mm", std::round(v * 1000.0) / 1000.0); }
+
+// The offsets of each step for an end mill of diameter D.
+struct Passes {
+    std::vector<double> roughing;
+    bool finishing = false;
+};
+
+Passes passesFor(const SideMill& m, const TechnologyData& tech, double D)
+{
+    Passes p;
+    if (m.toolUse != 8) p.roughing = roughingOffsets(m.width, tech.alpha2, m.stepOver.value_or(tech.stepOver) * D);
+    p.finishing = m.toolUse != 9;
+    return p;
+}
+
+// The first place where a pass of the end mill of radius R would come
+// nearer the contour than its offset; nothing when every pass keeps off.
+std::optional<Point2> tooNarrow(const side::Travel& t, const Passes& p, double R)
+{
+    std::vector<double> offsets = p.roughing;
+    if (p.finishing) offsets.push_back(0.0);
+    for (const double o : offsets) {
+        const auto chains = paths::offsetSide(t.contour, t.toolOnLeft, R + o);
+        if (!chains || chains->empty()) return t.contour.start();
+        const paths::Clearance c = paths::chainClearance(t.contour, *chains, kProofSpacing);
+        if (c.nearest < R + o - kProofTolerance) return c.where;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<double> roughingOffsets(double width, double alpha2, double maxStep)
+{
+    const double span = width - alpha2;
+    const int n = std::max(1, static_cast<int>(std::ceil(span / maxStep - 1e-9)));
+    std::vector<double> out;
+    for (int i = n - 1; i >= 0; --i) out.push_back(alpha2 + span * i / n);
+    return out;
+}
+
+std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, const std::vector<Tool>& library,
+                               const std::string& material, int unit, LengthUnit shown, Diagnostics& out)
+{
+    using decompose::makeStep;
+    const side::Travel t = side::travel(m);
+    const double room = side::toolRoom(m);
+    const bool finishes = m.toolUse != 9;
+    const auto problem = [&](const std::string& field, const std::string& message) {
+        out.push_back({Severity::Error, unit + 1, SideMill::kName, field, message});
+    };
+
+    // What the end mill must be: flat, within the room (the finishing pass
+    // runs at the contour; roughing alone stays α2 off it), flutes over T.
+    tools::Fit fit;
+    fit.type = ToolType::FlatEndMill;
+    if (room < 1e299) fit.cornerRadius = finishes ? room : room + tech.alpha2;
+    fit.depth = m.depth;
+    fit.reach = m.depth;
+
+    const Tool* tool = nullptr;
+    std::string reason;
+    if (const auto pin = m.tools.find("side"); pin != m.tools.end()) {
+        tool = findTool(library, pin->second);
+        if (!tool) {
+            problem("tools.side", msg::toolNotInLibrary(pin->second));
+            return {};
+        }
+        tools::Fit pinned = fit;
+        pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
+        if (!tools::fits(*tool, pinned, material)) {
+            problem("tools.side", msg::sideNoTool("side milling", fmt::format("pinned tool T{} ({}) does not fit: {}", tool->id,
+                                                                              tool->name, tools::whyNot(*tool, pinned, material))));
+            return {};
+        }
+        if (const auto at = tooNarrow(t, passesFor(m, tech, tool->diameter), tool->radius())) {
+            problem("contour", msg::sideChannelTooNarrow(m.contour, msg::toolName(*tool), {at->x, shown}, {at->y, shown}));
+            return {};
+        }
+        reason = "pinned by the operator";
+    } else {
+        // The largest that fits, flutes reaching T first, then shorter
+        // flutes (F2 and roughing cut in layers); each proved along the contour.
+        std::vector<const Tool*> candidates;
+        for (const bool fullFlutes : {true, false}) {
+            tools::Fit f = fit;
+            if (!fullFlutes) f.depth = 0.0;
+            for (const Tool& c : library)
+                if (tools::fits(c, f, material) && std::find(candidates.begin(), candidates.end(), &c) == candidates.end())
+                    candidates.push_back(&c);
+            std::stable_sort(candidates.begin(), candidates.end(), [](const Tool* a, const Tool* b) { return a->diameter > b->diameter; });
+            for (const Tool* c : candidates) {
+                if (tooNarrow(t, passesFor(m, tech, c->diameter), c->radius())) continue;
+                tool = c;
+                break;
+            }
+            if (tool) break;
+            candidates.clear();
+        }
+        if (!tool) {
+            problem("tools.side", msg::sideNoTool("side milling", tools::noFitMessage(library, fit, material, "side milling") +
+                                                                      " along " + m.contour));
+            return {};
+        }
+        reason = fmt::format("largest flat end mill ({})", mm(tool->diameter));
+        if (room < 1e299) reason += fmt::format(" whose radius {} fits the contour's smallest inside radius {}", mm(tool->radius()), mm(room));
+        reason += " and whose passes keep off the contour";
+        if (tool->fluteLength > 0 && tool->fluteLength + 1e-9 < m.depth) reason += fmt::format("; its flutes ({}) are shorter than T: it cuts in layers", mm(tool->fluteLength));
+    }
+
+    const Passes passes = passesFor(m, tech, tool->diameter);
+    const Point2 middle = t.contour.segments[t.contour.segments.size() / 2].at(0.5);
+    std::vector<Step> steps;
+    const auto step = [&](int number, MachiningType type) {
+        Step s = makeStep(unit, SideMill::kName, StepKind::SideMilling, number, type);
+        s.sideContour = t.contour;
+        s.toolOnLeft = t.toolOnLeft;
+        s.position = middle;
+        s.startDepth = 0.0;
+        s.cutDepth = m.depth;
+        s.stepOver = m.stepOver;
+        s.tool = ToolChoice{tool->id, reason};
+        return s;
+    };
+    if (!passes.roughing.empty()) {
+        Step s = step(1, MachiningType::SideMilling);
+        s.sideOffsets = passes.roughing;
+        s.wallAllowance = tech.alpha2;
+        s.multiIncision = true;  // Z layers of at most γ·D
+        steps.push_back(std::move(s));
+    }
+    if (passes.finishing) {
+        Step s = step(static_cast<int>(steps.size()) + 1, MachiningType::SideFinishing);
+        s.sideOffsets = {0.0};
+        s.wallAllowance = 0.0;
+        s.multiIncision = m.wallFinish == 2;
+        steps.push_back(std::move(s));
+    }
+    return steps;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,141 @@
+// The geometry of a SIDE unit: the direction the tool travels along its
+// contour, the contour's concave radii and sharp corners on the tool's side,
+// the two sides of an open contour (continued along its end tangents), and
+// the finished shape the verification measures against.
+#include "modules/side/side.h"
+
+#include "model/codes.h"
+#include "paths/contour_offset.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace taiwa {
+
+namespace side {
+
+Travel travel(const SideMill& mm)
+{
+    // M3: climb milling keeps the tool on the left of its travel (G41).
+    const bool climb = mm.direction != 2;
+    const bool leftOfContour = mm.side != 2;
+    Travel t;
+    t.contour = leftOfContour == climb ? mm.path.value() : reversed(mm.path.value());
+    t.toolOnLeft = climb;
+    return t;
+}
+
+double smallestConcaveRadius(const Contour& c, bool toolOnLeft)
+{
+    double smallest = 1e300;
+    for (const ContourSegment& s : c.segments)
+        if (s.isArc() && (s.kind == ContourSegment::Kind::ArcCCW) == toolOnLeft) smallest = std::min(smallest, s.radius());
+    return smallest;
+}
+
+std::optional<Point2> sharpConcaveCorner(const Contour& c, bool toolOnLeft)
+{
+    const std::size_t n = c.segments.size();
+    const std::size_t joints = c.closed ? n : (n > 0 ? n - 1 : 0);
+    for (std::size_t i = 0; i < joints; ++i) {
+        const ContourSegment& a = c.segments[i];
+        const ContourSegment& b = c.segments[(i + 1) % n];
+        const Point2 d0 = a.endDirection(), d1 = b.startDirection();
+        const double turn = cross(d0, d1) * (toolOnLeft ? 1.0 : -1.0);
+        if (turn > 1e-9 || (dot(d0, d1) < 0.0 && std::abs(turn) <= 1e-9)) return a.end;
+    }
+    return std::nullopt;
+}
+
+double toolRoom(const SideMill& mm)
+{
+    const Travel t = travel(mm);
+    double room = smallestConcaveRadius(t.contour, t.toolOnLeft);
+    if (t.contour.closed && paths::toolInside(t.contour, t.toolOnLeft)) room = std::min(room, mm.reach);
+    return room;
+}
+
+namespace {
+
+// Where the ray from p along the unit direction d leaves the circle (m, r)
+// that p lies in.
+Point2 leave(Point2 p, Point2 d, Point2 m, double r)
+{
+    const Point2 f = p - m;
+    const double b = dot(f, d), c = dot(f, f) - r * r;
+    return p + (-b + std::sqrt(std::max(b * b - c, 0.0))) * d;
+}
+
+}  // namespace
+
+Sides::Sides(const Contour& c, bool toolOnLeft) : contour_(c)
+{
+    polygon_ = flatten(c, 1e-4);
+    if (c.closed) {
+        inside_ = paths::toolInside(c, toolOnLeft);
+        return;
+    }
+    // The open contour continued along its end tangents to a circle well
+    // round it, closed by that circle's arc on the tool's side (in 64
+    // chords: it lies a kilometre off, where nothing is cut).
+    const Box2 b = bounds(c);
+    const Point2 m = 0.5 * (b.min + b.max);
+    const double r = taiwa::distance(b.min, b.max) + 1000.0;
+    const Point2 a = leave(c.start(), -1.0 * c.segments.front().startDirection(), m, r);
+    const Point2 e = leave(c.end(), c.segments.back().endDirection(), m, r);
+    polygon_.insert(polygon_.begin(), a);
+    polygon_.push_back(e);
+    const ContourSegment closing = ContourSegment::arc(e, a, m, toolOnLeft);
+    for (int k = 1; k < 64; ++k) polygon_.push_back(closing.at(k / 64.0));
+    inside_ = true;
+}
+
+bool Sides::onToolSide(Point2 p) const
+{
+    // Crossing number of the polygon.
+    bool in = false;
+    for (std::size_t i = 0, j = polygon_.size() - 1; i < polygon_.size(); j = i++) {
+        const Point2 u = polygon_[i], v = polygon_[j];
+        if ((u.y > p.y) != (v.y > p.y) && p.x < (v.x - u.x) * (p.y - u.y) / (v.y - u.y) + u.x) in = !in;
+    }
+    return in == inside_;
+}
+
+double Sides::distance(Point2 p) const { return distanceTo(contour_, p); }
+
+}  // namespace side
+
+Cavity sideCavity(const SideMill& mm, const TechnologyData& tech)
+{
+    const side::Travel t = side::travel(mm);
+    const auto sides = std::make_shared<side::Sides>(t.contour, t.toolOnLeft);
+    Cavity c;
+    const Box2 b = bounds(t.contour);
+    // The tool's side may be cut anywhere (beyond W too: the passes reach
+    // past it); the box holds what the widest end mill can reach.
+    const bool inside = t.contour.closed && paths::toolInside(t.contour, t.toolOnLeft);
+    const double grow = inside ? 0.0 : mm.width + 100.0;
+    c.min = {b.min.x - grow, b.min.y - grow};
+    c.max = {b.max.x + grow, b.max.y + grow};
+    c.depth = mm.depth;
+    // Deepest within s > 0: T on the tool's side grown by s. Shallowest
+    // within |s|: T where the whole disc of radius |s| lies on the tool's
+    // side within W of the contour (what the unit must remove).
+    c.depthAt = [sides, T = mm.depth, W = mm.width](Point2 p, double slack) {
+        const double d = sides->distance(p);
+        const bool tool = sides->onToolSide(p);
+        if (slack >= 0.0) return tool || d <= slack ? T : 0.0;
+        return tool && d >= -slack && d <= W + slack ? T : 0.0;
+    };
+    // Finishing only (U8): the wall was roughed elsewhere, the band from α2
+    // to W is open before the unit's steps.
+    if (mm.toolUse == 8)
+        c.openAt = [sides, T = mm.depth, W = mm.width, a2 = tech.alpha2](Point2 p) {
+            const double d = sides->distance(p);
+            return sides->onToolSide(p) && d >= a2 && d <= W ? T : 0.0;
+        };
+    return c;
+}
+
+}  // namespace taiwa

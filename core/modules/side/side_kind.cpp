@@ -1,0 +1,188 @@
+// The door of module SIDE (side milling along an open or closed contour):
+// its job-file keys, checks, figure, cavity, planning and form, as
+// module_kind.h asks. Registered in modules/registry.cpp.
+#include "modules/side/side.h"
+#include "modules/module_kind.h"
+
+#include "figure/figure_text.h"
+#include "io/json_write.h"
+#include "paths/contour_offset.h"
+#include "paths/region.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name", "contour", "side", "direction", "depth", "width",
+                                     "U",      "F",    "stepOver", "tools", "cutting"};
+
+template <class Get, class Set>
+FormField codeField(const char* key, const char* label, std::vector<std::pair<int, std::string>> codes, Get get, Set set)
+{
+    FormField f = form::number<SideMill>(key, label, {key}, get, set);
+    f.kind = FormFieldKind::Code;
+    f.codes = std::move(codes);
+    return f;
+}
+
+class SideKind final : public ModuleKindOf<SideMill> {
+public:
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add side milling"); }
+    const char* drawing() const override { return ":/modules/side.svg"; }
+    const char* outlineField() const override { return "contour"; }
+    // One end mill for roughing and finishing: pins and speeds under "side".
+    std::vector<std::string> stepKeys() const override { return {"side"}; }
+
+    void resolveContours(ModuleInput& mm, const ContourTable& table) const override
+    {
+        SideMill& m = mm.as<SideMill>();
+        m.resolved = true;
+        m.figureContours.clear();
+        m.path.reset();
+        m.reach = 0.0;
+        for (const auto& [name, contour] : table) m.figureContours.push_back(name);
+        const auto it = table.find(m.contour);
+        if (it == table.end() || it->second.segments.empty()) return;
+        m.path = withoutDegenerateSegments(it->second);
+        if (m.path->segments.empty()) {
+            m.path.reset();
+            return;
+        }
+        // With the tool inside a closed contour, its reach limits the end mill as CP's does.
+        const side::Travel t = side::travel(m);
+        if (t.contour.closed && paths::toolInside(t.contour, t.toolOnLeft)) {
+            const Region r = normalised(Region{t.contour, {}});
+            m.reach = paths::reachRadius(r, paths::inscribedRadius(r));
+        }
+    }
+
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData& tech) const override
+    {
+        const SideMill& m = mm.as<SideMill>();
+        if (!m.path) return std::nullopt;
+        return sideCavity(m, tech);
+    }
+
+    // An open contour along the stock's far side in Y, run in +X with the
+    // stock edge on its left, starting and ending beyond the stock.
+    std::string defaultFigure(const Stock& s) const override
+    {
+        const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
+        const double y = s.y + 0.9 * s.length;
+        const double x0 = s.x - 10.0, x1 = s.x + s.width + 10.0;
+        return "$$ The side milling's contour: a line along the far side of the stock, past both ends\n"
+               "P1 = POINT/" + n(x0) + ", " + n(y) + "\n" +
+               "P2 = POINT/" + n(x1) + ", " + n(y) + "\n" +
+               "L1 = LINE/P1, P2\n"
+               "K1 = CONTOUR/P1, L1, P2";
+    }
+
+    ModuleInput makeDefault(const Stock& s) const override
+    {
+        SideMill m;
+        m.contour = "K1";
+        m.depth = std::min(10.0, std::floor(s.height / 2));
+        m.width = std::round(0.1 * s.length * 1000.0) / 1000.0;
+        return m;
+    }
+
+protected:
+    SideMill readInput(const io::ObjectFields& f) const override
+    {
+        SideMill m;
+        f.rejectUnknown("module SIDE", kKeys);
+        m.contour = f.string("contour").value_or("");
+        m.side = f.whole("side", 1);
+        m.direction = f.whole("direction", 1);
+        m.depth = f.number("depth").value_or(0.0);
+        m.width = f.number("width").value_or(0.0);
+        m.toolUse = f.whole("U", 1);
+        m.wallFinish = f.whole("F", 1);
+        m.stepOver = f.optionalNumber("stepOver");
+        m.tools = f.wholeMap("tools");
+        return m;
+    }
+
+    void writeInput(const SideMill& m, nlohmann::ordered_json& u) const override
+    {
+        u["contour"] = m.contour;
+        u["side"] = m.side;
+        u["direction"] = m.direction;
+        u["depth"] = io::number(m.depth);
+        u["width"] = io::number(m.width);
+        u["U"] = m.toolUse;
+        u["F"] = m.wallFinish;
+        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
+        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
+    }
+
+    check::UnitReport checkInput(const SideMill& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkSideMill(mm, unitNo, ctx);
+    }
+
+    // The box round the contour grown by W (the unit order, the preview).
+    std::optional<Quad> outline(const SideMill& mm) const override
+    {
+        if (!mm.path || mm.path->empty()) return std::nullopt;
+        const Box2 b = bounds(*mm.path);
+        const double w = std::max(mm.width, 0.0);
+        const Point2 lo{b.min.x - w, b.min.y - w}, hi{b.max.x + w, b.max.y + w};
+        return Quad{{lo, Point2{hi.x, lo.y}, hi, Point2{lo.x, hi.y}}, 0.0};
+    }
+
+    // The contour belongs to the job's figure: the unit stays where it is.
+    void move(SideMill&, Point2) const override {}
+
+    std::vector<Step> planInput(const SideMill& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        return planSideMill(mm, ctx.tech, ctx.library, ctx.material, ctx.unit, ctx.shownUnit, out);
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        std::vector<FormField> fs;
+        fs.push_back(form::contourName<SideMill>("contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contour"),
+                                                 {"contour"}, &SideMill::contour));
+        fs.push_back(codeField("side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tool side"),
+                               {{1, "left of the contour"}, {2, "right of the contour"}},
+                               [](const SideMill& m) { return static_cast<double>(m.side); },
+                               [](SideMill& m, double v) { m.side = static_cast<int>(std::lround(v)); }));
+        fs.push_back(codeField("direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction"),
+                               {{1, "climb"}, {2, "conventional"}},
+                               [](const SideMill& m) { return static_cast<double>(m.direction); },
+                               [](SideMill& m, double v) { m.direction = static_cast<int>(std::lround(v)); }));
+        fs.push_back(member<SideMill>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"}, &SideMill::depth));
+        fs.push_back(member<SideMill>("width", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "W (width)"), {"width"}, &SideMill::width));
+        fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                               {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}},
+                               [](const SideMill& m) { return static_cast<double>(m.toolUse); },
+                               [](SideMill& m, double v) { m.toolUse = static_cast<int>(std::lround(v)); }));
+        fs.push_back(codeField("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+                               {{1, "full depth at once"}, {2, "several incisions"}},
+                               [](const SideMill& m) { return static_cast<double>(m.wallFinish); },
+                               [](SideMill& m, double v) { m.wallFinish = static_cast<int>(std::lround(v)); }));
+        fs.push_back(form::stepOver<SideMill>());
+        form::describe(fs, {
+            {"contour", "sym-contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure that is the finished wall, open or closed (e.g. K1)")},
+            {"side", "sym-side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which side of the contour, looking along its direction, the tool and the material to remove are on")},
+            {"direction", "sym-direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Climb or conventional milling (with M3, climb runs the tool on the left of its travel)")},
+            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the wall, down from the top surface")},
+            {"width", "sym-W", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Width of the material to remove, measured from the contour on the tool's side")},
+            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the wall gets: roughing and finishing, or one of them")},
+            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the wall is finished: at full depth, or in several depths")},
+            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
+        });
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& sideModule() { return moduleInstance<SideKind>(); }
+
+}  // namespace taiwa
