@@ -43,6 +43,22 @@ constexpr std::array kSources{
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "(round: none)"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "outer (OD)"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "inner (ID, a bore)"),
+    // Face milling, side milling, area clearing (their steps and the codes of their forms).
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Face milling"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Side milling"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "Area clearing"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing layers and a finishing pass"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing only, the finishing pass left"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "one way, every pass climb"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "zigzag, back and forth"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "left of the contour"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "right of the contour"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "climb"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "conventional"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "roughing and finishing"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "finishing only"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "full depth at once"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "several incisions"),
 };
 
 QString translated(const std::string& text) { return QCoreApplication::translate(kContext, text.c_str()); }

@@ -238,12 +238,21 @@ double area(const Region& r)
 
 double signedDistance(const Region& r, Point2 p) { return RegionDistance(r)(p); }
 
+namespace {
+// A point farther than this from the boundary lies on the same side of the
+// coarse polygons as of the exact contours; nearer, the fine ones decide.
+constexpr double kCoarse = 0.02;  // mm
+constexpr double kFine = 1e-4;    // mm
+}  // namespace
+
 RegionDistance::RegionDistance(const Region& r)
 {
-    polygons_.push_back(flatten(r.outer, 1e-4));
+    polygons_.push_back(flatten(r.outer, kFine));
+    coarse_.push_back(flatten(r.outer, kCoarse));
     segments_ = r.outer.segments;
     for (const auto& i : r.islands) {
-        polygons_.push_back(flatten(i, 1e-4));
+        polygons_.push_back(flatten(i, kFine));
+        coarse_.push_back(flatten(i, kCoarse));
         segments_.insert(segments_.end(), i.segments.begin(), i.segments.end());
     }
 }
@@ -252,9 +261,10 @@ double RegionDistance::operator()(Point2 p) const
 {
     double d = std::numeric_limits<double>::infinity();
     for (const auto& s : segments_) d = std::min(d, distance(p, s.nearest(p)));
-    bool inside = windingNumber(polygons_[0], p) != 0;
-    for (std::size_t i = 1; inside && i < polygons_.size(); ++i)
-        if (windingNumber(polygons_[i], p) != 0) inside = false;
+    const auto& polygons = d > 2 * kCoarse ? coarse_ : polygons_;
+    bool inside = windingNumber(polygons[0], p) != 0;
+    for (std::size_t i = 1; inside && i < polygons.size(); ++i)
+        if (windingNumber(polygons[i], p) != 0) inside = false;
     return inside ? -d : d;
 }
 

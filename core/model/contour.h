@@ -114,7 +114,8 @@ public:
 
 private:
     std::vector<ContourSegment> segments_;
-    std::vector<std::vector<Point2>> polygons_;  // outer, then islands
+    std::vector<std::vector<Point2>> polygons_;  // outer, then islands, within 0.1 µm
+    std::vector<std::vector<Point2>> coarse_;    // the same within 20 µm, for points farther away
 };
 
 }  // namespace taiwa

@@ -3,6 +3,81 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
     <context>
+        <name>taiwa::ui::DxfImportDialog</name>
+        <message>
+            <source>Import DXF</source>
+            <translation>DXF のインポート</translation>
+        </message>
+        <message>
+            <source>No drawing chosen</source>
+            <translation>図面が選ばれていません</translation>
+        </message>
+        <message>
+            <source>Choose…</source>
+            <translation>選択…</translation>
+        </message>
+        <message>
+            <source>The layers whose lines, arcs, circles, polylines and splines are imported</source>
+            <translation>線・円弧・円・ポリライン・スプラインを取り込むレイヤ</translation>
+        </message>
+        <message>
+            <source>Layers</source>
+            <translation>レイヤ</translation>
+        </message>
+        <message>
+            <source>Ends at most this far apart are joined into one contour; wider gaps are reported</source>
+            <translation>この距離以内の端点はつないで一つの輪郭にします。これより広い隙間は報告します</translation>
+        </message>
+        <message>
+            <source>Gap tolerance</source>
+            <translation>隙間の許容値</translation>
+        </message>
+        <message>
+            <source>What the drawing gives</source>
+            <translation>図面から得られたもの</translation>
+        </message>
+        <message>
+            <source>Figure elements to add</source>
+            <translation>追加する図形要素</translation>
+        </message>
+        <message>
+            <source>Import</source>
+            <translation>インポート</translation>
+        </message>
+        <message>
+            <source>DXF drawings (*.dxf *.DXF)</source>
+            <translation>DXF 図面 (*.dxf *.DXF)</translation>
+        </message>
+        <message>
+            <source>%1 entities</source>
+            <translation>%1 個の要素</translation>
+        </message>
+        <message>
+            <source>Refused: %1</source>
+            <translation>読み込めません: %1</translation>
+        </message>
+        <message>
+            <source>No layer is ticked.</source>
+            <translation>レイヤが選ばれていません。</translation>
+        </message>
+        <message>
+            <source>%1 closed and %2 open contours, drawn in %3.</source>
+            <translation>閉じた輪郭 %1 個、開いた輪郭 %2 個 (図面の単位 %3)。</translation>
+        </message>
+        <message>
+            <source>%1 ends joined over gaps within the tolerance; the largest %2 mm.</source>
+            <translation>許容値以内の隙間で端点を %1 か所つなぎました。最大 %2 mm。</translation>
+        </message>
+        <message>
+            <source>Gap: %1</source>
+            <translation>隙間: %1</translation>
+        </message>
+        <message>
+            <source>Branch: %1</source>
+            <translation>分岐: %1</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
             <source>Figure elements, one statement a line</source>
@@ -78,6 +153,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit.</source>
             <translation>クリック: 要素を選択。ホイール: ズーム。ドラッグ: 移動。ダブルクリック: 全体表示。</translation>
+        </message>
+        <message>
+            <source>Click: the next point of the passes. Wheel: zoom. Drag: pan. Double click: fit.</source>
+            <translation>クリック: パスの次の点。ホイール: ズーム。ドラッグ: 移動。ダブルクリック: 全体表示。</translation>
+        </message>
+        <message>
+            <source>Drawing passes: click the start, then the end of each pass; wheel: zoom, drag: pan</source>
+            <translation>パスの描画: 始点、続いて各パスの終点をクリック。ホイール: ズーム、ドラッグ: 移動</translation>
         </message>
         <message>
             <source>X →  Y ↑   wheel: zoom, drag: pan, double click: fit</source>
@@ -323,6 +406,89 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>
                 <numerusform>%n ブロック</numerusform>
             </translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::PassesBar</name>
+        <message>
+            <source>Draw passes</source>
+            <translation>パスを描く</translation>
+        </message>
+        <message>
+            <source>Click in the view: the first point is where the tool starts, each next one ends a pass</source>
+            <translation>ビューをクリック: 最初の点が工具の開始位置、以降の点がそれぞれパスの終点</translation>
+        </message>
+        <message>
+            <source>Remove last point</source>
+            <translation>最後の点を削除</translation>
+        </message>
+        <message>
+            <source>Take back the last point drawn</source>
+            <translation>最後に描いた点を取り消す</translation>
+        </message>
+        <message>
+            <source>Clear</source>
+            <translation>クリア</translation>
+        </message>
+        <message>
+            <source>Remove every pass of this unit</source>
+            <translation>このユニットのパスをすべて削除</translation>
+        </message>
+        <message>
+            <source>Remove the last point of the passes</source>
+            <translation>パスの最後の点を削除</translation>
+        </message>
+        <message>
+            <source>Clear the passes</source>
+            <translation>パスをクリア</translation>
+        </message>
+        <message>
+            <source>Draw the start point of the passes</source>
+            <translation>パスの始点を描く</translation>
+        </message>
+        <message>
+            <source>Draw a pass</source>
+            <translation>パスを描く</translation>
+        </message>
+        <message>
+            <source>No pass drawn: press Draw passes and click where the tool starts.</source>
+            <translation>パスがありません: 「パスを描く」を押し、工具の開始位置をクリックしてください。</translation>
+        </message>
+        <message>
+            <source>The start point is drawn: click where the first pass ends.</source>
+            <translation>始点を描きました: 最初のパスの終点をクリックしてください。</translation>
+        </message>
+        <message>
+            <source>1 pass drawn.</source>
+            <translation>パス 1 本。</translation>
+        </message>
+        <message>
+            <source>%1 passes drawn.</source>
+            <translation>パス %1 本。</translation>
+        </message>
+        <message>
+            <source>The area %1 is not a closed contour of the figure.</source>
+            <translation>領域 %1 は図形の閉じた輪郭ではありません。</translation>
+        </message>
+        <message>
+            <source>The start point is too near the walls.</source>
+            <translation>始点が壁に近すぎます。</translation>
+        </message>
+        <message>
+            <source>Pass %1 leaves the area.</source>
+            <translation>パス %1 が領域からはみ出します。</translation>
+        </message>
+        <message>
+            <source>The strips sweep the whole area.</source>
+            <translation>帯が領域全体を削ります。</translation>
+        </message>
+        <message>
+            <source>Unswept: %1 in one place.</source>
+            <translation>未切削: 1 か所で %1。</translation>
+        </message>
+        <message>
+            <source>Unswept: %1 in %2 places.</source>
+            <translation>未切削: %2 か所で %1。</translation>
         </message>
     </context>
     <context>
@@ -679,6 +845,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>旋削部品をインポート (STEP)(&amp;I)…</translation>
         </message>
         <message>
+            <source>Import &amp;DXF contours…</source>
+            <translation>DXF 輪郭をインポート(&amp;D)…</translation>
+        </message>
+        <message>
             <source>&amp;Save</source>
             <translation>保存(&amp;S)</translation>
         </message>
@@ -793,6 +963,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Feed of %1, unit %2</source>
             <translation>%1の送り (ユニット %2)</translation>
+        </message>
+        <message>
+            <source>DXF contours become figure elements, which a lathe job does not use.</source>
+            <translation>DXF の輪郭は図形要素になりますが、旋削ジョブでは使いません。</translation>
+        </message>
+        <message>
+            <source>Import DXF contours</source>
+            <translation>DXF 輪郭のインポート</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -1396,12 +1574,72 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>inner (ID, a bore)</source>
             <translation>内径 (ID、穴)</translation>
         </message>
+        <message>
+            <source>Face milling</source>
+            <translation>正面フライス削り</translation>
+        </message>
+        <message>
+            <source>Side milling</source>
+            <translation>側面削り</translation>
+        </message>
+        <message>
+            <source>Area clearing</source>
+            <translation>領域加工</translation>
+        </message>
+        <message>
+            <source>roughing layers and a finishing pass</source>
+            <translation>荒加工層と仕上げパス</translation>
+        </message>
+        <message>
+            <source>roughing only, the finishing pass left</source>
+            <translation>荒加工のみ、仕上げ分を残す</translation>
+        </message>
+        <message>
+            <source>one way, every pass climb</source>
+            <translation>一方向、全パスをダウンカット</translation>
+        </message>
+        <message>
+            <source>zigzag, back and forth</source>
+            <translation>ジグザグ、往復</translation>
+        </message>
+        <message>
+            <source>left of the contour</source>
+            <translation>輪郭の左側</translation>
+        </message>
+        <message>
+            <source>right of the contour</source>
+            <translation>輪郭の右側</translation>
+        </message>
+        <message>
+            <source>climb</source>
+            <translation>ダウンカット</translation>
+        </message>
+        <message>
+            <source>conventional</source>
+            <translation>アップカット</translation>
+        </message>
+        <message>
+            <source>roughing and finishing</source>
+            <translation>荒加工と仕上げ</translation>
+        </message>
+        <message>
+            <source>finishing only</source>
+            <translation>仕上げのみ</translation>
+        </message>
+        <message>
+            <source>full depth at once</source>
+            <translation>全深さで一度に</translation>
+        </message>
+        <message>
+            <source>several incisions</source>
+            <translation>深さを分けて数回</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
-            <source>Outline</source>
-            <translation>輪郭</translation>
+            <source>Area</source>
+            <translation>領域</translation>
         </message>
         <message>
             <source>Islands</source>
@@ -1410,6 +1648,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>T (depth)</source>
             <translation>T(深さ)</translation>
+        </message>
+        <message>
+            <source>D (tool diameter)</source>
+            <translation>D(工具径)</translation>
+        </message>
+        <message>
+            <source>Passes (points)</source>
+            <translation>パス(点)</translation>
+        </message>
+        <message>
+            <source>The contour of the figure around the area to clear (e.g. K1)</source>
+            <translation>除去する領域を囲む図形の輪郭 (例: K1)</translation>
+        </message>
+        <message>
+            <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
+            <translation>領域内に残す図形の輪郭、カンマ区切り。なければ空欄</translation>
+        </message>
+        <message>
+            <source>Depth the passes cut to, down from the top surface</source>
+            <translation>パスが削る深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>Diameter of the end mill: each pass is a strip this wide</source>
+            <translation>エンドミルの直径: 各パスはこの幅の帯になります</translation>
+        </message>
+        <message>
+            <source>The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab</source>
+            <translation>パスを点 X, Y で ';' 区切りに入力 (工具は点から次の点へ進む)。図形タブで描くこともできます</translation>
+        </message>
+        <message>
+            <source>Outline</source>
+            <translation>輪郭</translation>
         </message>
         <message>
             <source>U (tool use)</source>
@@ -1444,16 +1714,68 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
         </message>
         <message>
-            <source>Step-over (× D)</source>
-            <translation>ステップオーバ(× D)</translation>
+            <source>Depth</source>
+            <translation>深さ</translation>
         </message>
         <message>
-            <source>technology data's</source>
-            <translation>技術データの値</translation>
+            <source>Finishing pass</source>
+            <translation>仕上げパス</translation>
+        </message>
+        <message>
+            <source>technology data's β2</source>
+            <translation>加工技術データの β2</translation>
+        </message>
+        <message>
+            <source>Angle of the passes (°)</source>
+            <translation>パスの角度 (°)</translation>
         </message>
         <message>
             <source>Pattern</source>
             <translation>配置</translation>
+        </message>
+        <message>
+            <source>Step-over (× D)</source>
+            <translation>ステップオーバ(× D)</translation>
+        </message>
+        <message>
+            <source>0.75 (face mill), else technology data's</source>
+            <translation>0.75 (正面フライス)、それ以外は加工技術データの値</translation>
+        </message>
+        <message>
+            <source>Margin beyond the stock</source>
+            <translation>素材外側の余裕</translation>
+        </message>
+        <message>
+            <source>Stock taken off the top, down from Z0; less than the stock's height</source>
+            <translation>上面から削り取る量 (Z0 から下へ)。素材高さ未満</translation>
+        </message>
+        <message>
+            <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
+            <translation>荒加工層と仕上げパス (1)、または荒加工のみで仕上げ分を残す (9)</translation>
+        </message>
+        <message>
+            <source>Depth of the finishing pass, less than the depth; empty for the technology data's β2</source>
+            <translation>仕上げパスの深さ (深さ未満)。空欄は加工技術データの β2</translation>
+        </message>
+        <message>
+            <source>Direction of the passes in degrees, counter-clockwise from +X</source>
+            <translation>パスの方向 (+X から反時計回りの角度)</translation>
+        </message>
+        <message>
+            <source>One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)</source>
+            <translation>一方向 (全パスをダウンカット、部品の上を戻る) またはジグザグ (往復、部品の外でつなぐ)</translation>
+        </message>
+        <message>
+            <source>Distance between passes as a share of the tool's diameter, above 0 and at most 0.9</source>
+            <translation>パス間隔 (工具径に対する割合、0 より大きく 0.9 以下)</translation>
+        </message>
+        <message>
+            <source>How far the face reaches beyond the stock's sides; 0 for exactly the top</source>
+            <translation>面削り範囲が素材側面を越える量。0 は上面ちょうど</translation>
+        </message>
+        <message>
+            <source>technology data's</source>
+            <translation>技術データの値</translation>
         </message>
         <message>
             <source>X (hole, first hole or centre)</source>
@@ -1736,6 +2058,50 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>測定移動の送り (mm/min)</translation>
         </message>
         <message>
+            <source>Contour</source>
+            <translation>輪郭</translation>
+        </message>
+        <message>
+            <source>Tool side</source>
+            <translation>工具側</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>方向</translation>
+        </message>
+        <message>
+            <source>W (width)</source>
+            <translation>W(幅)</translation>
+        </message>
+        <message>
+            <source>The contour of the figure that is the finished wall, open or closed (e.g. K1)</source>
+            <translation>仕上がり壁となる図形の輪郭、開いていても閉じていてもよい (例: K1)</translation>
+        </message>
+        <message>
+            <source>Which side of the contour, looking along its direction, the tool and the material to remove are on</source>
+            <translation>輪郭の方向に見て、工具と除去する材料がどちら側にあるか</translation>
+        </message>
+        <message>
+            <source>Climb or conventional milling (with M3, climb runs the tool on the left of its travel)</source>
+            <translation>ダウンカットかアップカット (M3 では、ダウンカットは工具が進行方向の左側)</translation>
+        </message>
+        <message>
+            <source>Depth of the wall, down from the top surface</source>
+            <translation>壁の深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>Width of the material to remove, measured from the contour on the tool's side</source>
+            <translation>除去する材料の幅 (工具側で輪郭から測る)</translation>
+        </message>
+        <message>
+            <source>Which steps the wall gets: roughing and finishing, or one of them</source>
+            <translation>壁の工程: 荒加工と仕上げ、またはその一方</translation>
+        </message>
+        <message>
+            <source>How the wall is finished: at full depth, or in several depths</source>
+            <translation>壁の仕上げ方: 全深さで一度に、または深さを分けて</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>形状</translation>
         </message>
@@ -1763,8 +2129,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::ModulePalette</name>
         <message>
+            <source>Add area by drawn passes</source>
+            <translation>描いたパスで領域加工を追加</translation>
+        </message>
+        <message>
             <source>Add contour pocket</source>
             <translation>輪郭ポケットを追加</translation>
+        </message>
+        <message>
+            <source>Add face milling</source>
+            <translation>正面フライス削りを追加</translation>
         </message>
         <message>
             <source>Add hole pattern</source>
@@ -1781,6 +2155,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Add work-centre probing</source>
             <translation>ワーク中心の測定を追加</translation>
+        </message>
+        <message>
+            <source>Add side milling</source>
+            <translation>側面削りを追加</translation>
         </message>
         <message>
             <source>Add turned profile</source>

@@ -3,6 +3,81 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
     <context>
+        <name>taiwa::ui::DxfImportDialog</name>
+        <message>
+            <source>Import DXF</source>
+            <translation>导入 DXF</translation>
+        </message>
+        <message>
+            <source>No drawing chosen</source>
+            <translation>未选择图纸</translation>
+        </message>
+        <message>
+            <source>Choose…</source>
+            <translation>选择…</translation>
+        </message>
+        <message>
+            <source>The layers whose lines, arcs, circles, polylines and splines are imported</source>
+            <translation>导入其直线、圆弧、圆、多段线和样条的图层</translation>
+        </message>
+        <message>
+            <source>Layers</source>
+            <translation>图层</translation>
+        </message>
+        <message>
+            <source>Ends at most this far apart are joined into one contour; wider gaps are reported</source>
+            <translation>相距不超过此距离的端点连成一个轮廓；更大的间隙将报告</translation>
+        </message>
+        <message>
+            <source>Gap tolerance</source>
+            <translation>间隙容差</translation>
+        </message>
+        <message>
+            <source>What the drawing gives</source>
+            <translation>图纸中得到的内容</translation>
+        </message>
+        <message>
+            <source>Figure elements to add</source>
+            <translation>要添加的图形元素</translation>
+        </message>
+        <message>
+            <source>Import</source>
+            <translation>导入</translation>
+        </message>
+        <message>
+            <source>DXF drawings (*.dxf *.DXF)</source>
+            <translation>DXF 图纸 (*.dxf *.DXF)</translation>
+        </message>
+        <message>
+            <source>%1 entities</source>
+            <translation>%1 个实体</translation>
+        </message>
+        <message>
+            <source>Refused: %1</source>
+            <translation>无法导入: %1</translation>
+        </message>
+        <message>
+            <source>No layer is ticked.</source>
+            <translation>未勾选任何图层。</translation>
+        </message>
+        <message>
+            <source>%1 closed and %2 open contours, drawn in %3.</source>
+            <translation>闭合轮廓 %1 个，开放轮廓 %2 个（图纸单位 %3）。</translation>
+        </message>
+        <message>
+            <source>%1 ends joined over gaps within the tolerance; the largest %2 mm.</source>
+            <translation>在容差内连接了 %1 处端点间隙；最大 %2 mm。</translation>
+        </message>
+        <message>
+            <source>Gap: %1</source>
+            <translation>间隙: %1</translation>
+        </message>
+        <message>
+            <source>Branch: %1</source>
+            <translation>分支: %1</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
             <source>Figure elements, one statement a line</source>
@@ -78,6 +153,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit.</source>
             <translation>单击：选取元素。滚轮：缩放。拖动：平移。双击：适合窗口。</translation>
+        </message>
+        <message>
+            <source>Click: the next point of the passes. Wheel: zoom. Drag: pan. Double click: fit.</source>
+            <translation>单击：路径的下一个点。滚轮：缩放。拖动：平移。双击：适应窗口。</translation>
+        </message>
+        <message>
+            <source>Drawing passes: click the start, then the end of each pass; wheel: zoom, drag: pan</source>
+            <translation>绘制路径：先单击起点，再单击每条路径的终点；滚轮：缩放，拖动：平移</translation>
         </message>
         <message>
             <source>X →  Y ↑   wheel: zoom, drag: pan, double click: fit</source>
@@ -323,6 +406,89 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>
                 <numerusform>%n 个程序段</numerusform>
             </translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::PassesBar</name>
+        <message>
+            <source>Draw passes</source>
+            <translation>绘制路径</translation>
+        </message>
+        <message>
+            <source>Click in the view: the first point is where the tool starts, each next one ends a pass</source>
+            <translation>在视图中单击：第一个点为刀具起点，之后每个点为一条路径的终点</translation>
+        </message>
+        <message>
+            <source>Remove last point</source>
+            <translation>删除最后一点</translation>
+        </message>
+        <message>
+            <source>Take back the last point drawn</source>
+            <translation>撤回最后绘制的点</translation>
+        </message>
+        <message>
+            <source>Clear</source>
+            <translation>清除</translation>
+        </message>
+        <message>
+            <source>Remove every pass of this unit</source>
+            <translation>删除此单元的所有路径</translation>
+        </message>
+        <message>
+            <source>Remove the last point of the passes</source>
+            <translation>删除路径的最后一点</translation>
+        </message>
+        <message>
+            <source>Clear the passes</source>
+            <translation>清除路径</translation>
+        </message>
+        <message>
+            <source>Draw the start point of the passes</source>
+            <translation>绘制路径起点</translation>
+        </message>
+        <message>
+            <source>Draw a pass</source>
+            <translation>绘制一条路径</translation>
+        </message>
+        <message>
+            <source>No pass drawn: press Draw passes and click where the tool starts.</source>
+            <translation>尚未绘制路径：按“绘制路径”并单击刀具起点。</translation>
+        </message>
+        <message>
+            <source>The start point is drawn: click where the first pass ends.</source>
+            <translation>已绘制起点：请单击第一条路径的终点。</translation>
+        </message>
+        <message>
+            <source>1 pass drawn.</source>
+            <translation>已绘制 1 条路径。</translation>
+        </message>
+        <message>
+            <source>%1 passes drawn.</source>
+            <translation>已绘制 %1 条路径。</translation>
+        </message>
+        <message>
+            <source>The area %1 is not a closed contour of the figure.</source>
+            <translation>区域 %1 不是图形中的闭合轮廓。</translation>
+        </message>
+        <message>
+            <source>The start point is too near the walls.</source>
+            <translation>起点离壁太近。</translation>
+        </message>
+        <message>
+            <source>Pass %1 leaves the area.</source>
+            <translation>路径 %1 超出区域。</translation>
+        </message>
+        <message>
+            <source>The strips sweep the whole area.</source>
+            <translation>条带覆盖整个区域。</translation>
+        </message>
+        <message>
+            <source>Unswept: %1 in one place.</source>
+            <translation>未切削：1 处，共 %1。</translation>
+        </message>
+        <message>
+            <source>Unswept: %1 in %2 places.</source>
+            <translation>未切削：%2 处，共 %1。</translation>
         </message>
     </context>
     <context>
@@ -679,6 +845,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>导入车削零件 (STEP)(&amp;I)…</translation>
         </message>
         <message>
+            <source>Import &amp;DXF contours…</source>
+            <translation>导入 DXF 轮廓(&amp;D)…</translation>
+        </message>
+        <message>
             <source>&amp;Save</source>
             <translation>保存(&amp;S)</translation>
         </message>
@@ -793,6 +963,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Feed of %1, unit %2</source>
             <translation>%1 的进给（单元 %2）</translation>
+        </message>
+        <message>
+            <source>DXF contours become figure elements, which a lathe job does not use.</source>
+            <translation>DXF 轮廓会成为图形元素，而车削作业不使用图形元素。</translation>
+        </message>
+        <message>
+            <source>Import DXF contours</source>
+            <translation>导入 DXF 轮廓</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -1396,12 +1574,72 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>inner (ID, a bore)</source>
             <translation>内轮廓（内径，孔）</translation>
         </message>
+        <message>
+            <source>Face milling</source>
+            <translation>面铣</translation>
+        </message>
+        <message>
+            <source>Side milling</source>
+            <translation>侧铣</translation>
+        </message>
+        <message>
+            <source>Area clearing</source>
+            <translation>区域加工</translation>
+        </message>
+        <message>
+            <source>roughing layers and a finishing pass</source>
+            <translation>粗加工层和精加工刀路</translation>
+        </message>
+        <message>
+            <source>roughing only, the finishing pass left</source>
+            <translation>仅粗加工，留出精加工余量</translation>
+        </message>
+        <message>
+            <source>one way, every pass climb</source>
+            <translation>单向，每条刀路顺铣</translation>
+        </message>
+        <message>
+            <source>zigzag, back and forth</source>
+            <translation>之字形，往复</translation>
+        </message>
+        <message>
+            <source>left of the contour</source>
+            <translation>轮廓左侧</translation>
+        </message>
+        <message>
+            <source>right of the contour</source>
+            <translation>轮廓右侧</translation>
+        </message>
+        <message>
+            <source>climb</source>
+            <translation>顺铣</translation>
+        </message>
+        <message>
+            <source>conventional</source>
+            <translation>逆铣</translation>
+        </message>
+        <message>
+            <source>roughing and finishing</source>
+            <translation>粗加工和精加工</translation>
+        </message>
+        <message>
+            <source>finishing only</source>
+            <translation>仅精加工</translation>
+        </message>
+        <message>
+            <source>full depth at once</source>
+            <translation>全深度一次完成</translation>
+        </message>
+        <message>
+            <source>several incisions</source>
+            <translation>分多次切入</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
-            <source>Outline</source>
-            <translation>轮廓</translation>
+            <source>Area</source>
+            <translation>区域</translation>
         </message>
         <message>
             <source>Islands</source>
@@ -1410,6 +1648,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>T (depth)</source>
             <translation>T(深度)</translation>
+        </message>
+        <message>
+            <source>D (tool diameter)</source>
+            <translation>D（刀具直径）</translation>
+        </message>
+        <message>
+            <source>Passes (points)</source>
+            <translation>路径（点）</translation>
+        </message>
+        <message>
+            <source>The contour of the figure around the area to clear (e.g. K1)</source>
+            <translation>围绕待清除区域的图形轮廓（例如 K1）</translation>
+        </message>
+        <message>
+            <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
+            <translation>区域内保留的图形轮廓，用逗号分隔；无则留空</translation>
+        </message>
+        <message>
+            <source>Depth the passes cut to, down from the top surface</source>
+            <translation>路径切削的深度（自上表面向下）</translation>
+        </message>
+        <message>
+            <source>Diameter of the end mill: each pass is a strip this wide</source>
+            <translation>立铣刀直径：每条路径为此宽度的条带</translation>
+        </message>
+        <message>
+            <source>The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab</source>
+            <translation>以 ';' 分隔的点 X, Y 表示路径（刀具从一点走到下一点）；也可在图形页中绘制</translation>
+        </message>
+        <message>
+            <source>Outline</source>
+            <translation>轮廓</translation>
         </message>
         <message>
             <source>U (tool use)</source>
@@ -1444,16 +1714,68 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
         </message>
         <message>
-            <source>Step-over (× D)</source>
-            <translation>行距 (× D)</translation>
+            <source>Depth</source>
+            <translation>深度</translation>
         </message>
         <message>
-            <source>technology data's</source>
-            <translation>工艺数据的值</translation>
+            <source>Finishing pass</source>
+            <translation>精加工刀路</translation>
+        </message>
+        <message>
+            <source>technology data's β2</source>
+            <translation>工艺数据的 β2</translation>
+        </message>
+        <message>
+            <source>Angle of the passes (°)</source>
+            <translation>刀路角度（°）</translation>
         </message>
         <message>
             <source>Pattern</source>
             <translation>排列方式</translation>
+        </message>
+        <message>
+            <source>Step-over (× D)</source>
+            <translation>行距 (× D)</translation>
+        </message>
+        <message>
+            <source>0.75 (face mill), else technology data's</source>
+            <translation>0.75（面铣刀），否则为工艺数据值</translation>
+        </message>
+        <message>
+            <source>Margin beyond the stock</source>
+            <translation>超出毛坯的余量</translation>
+        </message>
+        <message>
+            <source>Stock taken off the top, down from Z0; less than the stock's height</source>
+            <translation>从顶面去除的量（自 Z0 向下）；小于毛坯高度</translation>
+        </message>
+        <message>
+            <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
+            <translation>粗加工层加精加工刀路（1），或仅粗加工并留出精加工余量（9）</translation>
+        </message>
+        <message>
+            <source>Depth of the finishing pass, less than the depth; empty for the technology data's β2</source>
+            <translation>精加工刀路的深度，小于总深度；留空则为工艺数据的 β2</translation>
+        </message>
+        <message>
+            <source>Direction of the passes in degrees, counter-clockwise from +X</source>
+            <translation>刀路方向，自 +X 逆时针的角度</translation>
+        </message>
+        <message>
+            <source>One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)</source>
+            <translation>单向（每条刀路顺铣，在工件上方返回）或之字形（往复，在工件外侧连接）</translation>
+        </message>
+        <message>
+            <source>Distance between passes as a share of the tool's diameter, above 0 and at most 0.9</source>
+            <translation>刀路间距占刀具直径的比例，大于 0 且不超过 0.9</translation>
+        </message>
+        <message>
+            <source>How far the face reaches beyond the stock's sides; 0 for exactly the top</source>
+            <translation>面铣范围超出毛坯侧面的距离；0 表示恰好为顶面</translation>
+        </message>
+        <message>
+            <source>technology data's</source>
+            <translation>工艺数据的值</translation>
         </message>
         <message>
             <source>X (hole, first hole or centre)</source>
@@ -1736,6 +2058,50 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>测量移动的进给（mm/min）</translation>
         </message>
         <message>
+            <source>Contour</source>
+            <translation>轮廓</translation>
+        </message>
+        <message>
+            <source>Tool side</source>
+            <translation>刀具侧</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>方向</translation>
+        </message>
+        <message>
+            <source>W (width)</source>
+            <translation>W（宽度）</translation>
+        </message>
+        <message>
+            <source>The contour of the figure that is the finished wall, open or closed (e.g. K1)</source>
+            <translation>作为完成壁面的图形轮廓，可开放或闭合（例如 K1）</translation>
+        </message>
+        <message>
+            <source>Which side of the contour, looking along its direction, the tool and the material to remove are on</source>
+            <translation>沿轮廓方向看，刀具和待去除材料位于哪一侧</translation>
+        </message>
+        <message>
+            <source>Climb or conventional milling (with M3, climb runs the tool on the left of its travel)</source>
+            <translation>顺铣或逆铣（M3 时，顺铣刀具位于行进方向左侧）</translation>
+        </message>
+        <message>
+            <source>Depth of the wall, down from the top surface</source>
+            <translation>壁深度（自上表面向下）</translation>
+        </message>
+        <message>
+            <source>Width of the material to remove, measured from the contour on the tool's side</source>
+            <translation>待去除材料的宽度，从刀具一侧的轮廓量起</translation>
+        </message>
+        <message>
+            <source>Which steps the wall gets: roughing and finishing, or one of them</source>
+            <translation>壁的工序：粗加工和精加工，或其中之一</translation>
+        </message>
+        <message>
+            <source>How the wall is finished: at full depth, or in several depths</source>
+            <translation>壁的精加工方式：全深度一次，或分几层深度</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>轮廓</translation>
         </message>
@@ -1763,8 +2129,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::ModulePalette</name>
         <message>
+            <source>Add area by drawn passes</source>
+            <translation>添加绘制路径区域加工</translation>
+        </message>
+        <message>
             <source>Add contour pocket</source>
             <translation>添加轮廓型腔</translation>
+        </message>
+        <message>
+            <source>Add face milling</source>
+            <translation>添加面铣</translation>
         </message>
         <message>
             <source>Add hole pattern</source>
@@ -1781,6 +2155,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Add work-centre probing</source>
             <translation>添加工件中心测量</translation>
+        </message>
+        <message>
+            <source>Add side milling</source>
+            <translation>添加侧铣</translation>
         </message>
         <message>
             <source>Add turned profile</source>
