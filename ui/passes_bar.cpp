@@ -10,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 #include <cmath>
 
@@ -40,8 +41,13 @@ std::vector<Point2> scaled(std::vector<Point2> points, double f)
 PassesBar::PassesBar(JobDocument* doc, FigureView* view, QWidget* parent) : QWidget(parent), doc_(doc), view_(view)
 {
     setObjectName("figure.passes");
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(0, 0, 0, 0);
+    // The buttons, and under them the line (so that the bar is no wider
+    // than the figure panel's other rows).
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(0, 0, 0, 0);
+    rows->setSpacing(2);
+    auto* row = new QHBoxLayout;
+    rows->addLayout(row);
     const auto button = [&](const QString& name, const QString& text, const QString& tip) {
         auto* b = new QToolButton(this);
         b->setObjectName(name);
@@ -59,7 +65,8 @@ PassesBar::PassesBar(JobDocument* doc, FigureView* view, QWidget* parent) : QWid
     text_ = new QLabel(this);
     text_->setObjectName("figure.passesText");
     text_->setWordWrap(true);
-    row->addWidget(text_, 1);
+    row->addStretch(1);
+    rows->addWidget(text_);
     hide();
 
     connect(draw_, &QToolButton::toggled, view_, &FigureView::setDrawing);

@@ -2129,7 +2129,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::ModulePalette</name>
         <message>
-            <source>Add area by drawn passes</source>
+            <source>Add drawn-pass area</source>
             <translation>添加绘制路径区域加工</translation>
         </message>
         <message>

@@ -39,7 +39,7 @@ class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
     const char* paletteText() const override
     {
-        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add area by drawn passes");
+        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add drawn-pass area");
     }
     const char* drawing() const override { return ":/modules/area.svg"; }
     const char* outlineField() const override { return "outline"; }
