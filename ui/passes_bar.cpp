@@ -2,6 +2,7 @@
 #include "ui/passes_bar.h"
 
 #include "figure/figure_eval.h"
+#include "modules/named_region.h"
 #include "modules/registry.h"
 #include "paths/drawn_passes.h"
 #include "ui/figure_view.h"
@@ -19,16 +20,6 @@ namespace taiwa::ui {
 namespace {
 
 constexpr double kChord = 1e-3;  // mm: rings drawn from the exact contours
-
-Contour scaled(Contour c, double f)
-{
-    for (auto& s : c.segments) {
-        s.start = f * s.start;
-        s.end = f * s.end;
-        s.centre = f * s.centre;
-    }
-    return c;
-}
 
 std::vector<Point2> scaled(std::vector<Point2> points, double f)
 {
@@ -162,9 +153,8 @@ void PassesBar::refresh()
         for (const auto& i : region.islands) overlay.area.push_back(flatten(i, kChord));
         // Measured in mm (the unswept threshold is in mm²), shown in the job's unit.
         const double toMm = job.lengthUnit == LengthUnit::Inch ? 25.4 : 1.0;
-        Region mm;
-        mm.outer = scaled(region.outer, toMm);
-        for (const auto& i : region.islands) mm.islands.push_back(scaled(i, toMm));
+        Region mm = region;
+        convertRegionLengths(mm, [toMm](double v) { return v * toMm; });
         const auto points = scaled(passes.points, toMm);
         const double r = passes.radius * toMm;
         if (r > 0.0 && !points.empty()) {

@@ -27,6 +27,13 @@ Point2 foot(Point2 a, Point2 b, Point2 p)
 
 }  // namespace
 
+double distanceToPasses(const std::vector<Point2>& points, Point2 p)
+{
+    double d = points.empty() ? std::numeric_limits<double>::infinity() : distance(p, points.front());
+    for (std::size_t k = 1; k < points.size(); ++k) d = std::min(d, distance(p, foot(points[k - 1], points[k], p)));
+    return d;
+}
+
 Approach nearestApproach(Point2 a, Point2 b, const ContourSegment& s)
 {
     std::vector<Point2> candidates{a, b, foot(a, b, s.start), foot(a, b, s.end)};

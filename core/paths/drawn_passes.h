@@ -40,6 +40,9 @@ struct Excursion {
 };
 std::optional<Excursion> firstExcursion(const Region& region, const std::vector<Point2>& points, double radius);
 
+// The distance from p to the passes through `points` (the polyline).
+double distanceToPasses(const std::vector<Point2>& points, Point2 p);
+
 // The nearest the segment a-b comes to the contour segment s, and the point
 // of a-b where it does: exact (every place the distance can be least is
 // tried: the ends, the feet of s's ends and centre, the crossings).

@@ -47,6 +47,10 @@ std::string formatPoints(const std::vector<Point2>& points);
 // Nothing when `text` is not pairs of numbers separated by ';'.
 std::optional<std::vector<Point2>> parsePoints(const std::string& text);
 
+// A tool the passes can be cut with: a centre-cutting flat end mill of the
+// diameter they were drawn for (the check and the tool choice alike).
+bool cutsDrawnPasses(const Tool& t, double diameter);
+
 // The input checks of one AREA unit (in mm).
 check::UnitReport checkAreaClearing(const AreaClearing& mm, int unitNo, const check::Context& ctx);
 

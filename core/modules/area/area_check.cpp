@@ -16,13 +16,6 @@ namespace {
 
 using check::Reporter;
 
-// A tool the passes can be cut with: a centre-cutting flat end mill of the
-// diameter they were drawn for.
-bool drawnFor(const Tool& t, double diameter)
-{
-    return t.type == ToolType::FlatEndMill && t.centreCutting && std::abs(t.diameter - diameter) <= kFitTolerance;
-}
-
 bool checkPoints(const AreaClearing& a, Reporter& r)
 {
     if (!a.badPoints.empty()) {
@@ -59,13 +52,13 @@ bool checkTool(const AreaClearing& a, Reporter& r)
     const auto& library = *r.ctx.library;
     if (const auto pin = a.tools.find("area"); pin != a.tools.end()) {
         const Tool* t = findTool(library, pin->second);
-        if (t && !drawnFor(*t, a.diameter)) {
+        if (t && !cutsDrawnPasses(*t, a.diameter)) {
             r.unit("tools", msg::pinnedDiameterDiffers(*t, r.len(a.diameter)));
             return false;
         }
         return true;  // an unknown id is checkPins's
     }
-    if (std::any_of(library.begin(), library.end(), [&](const Tool& t) { return drawnFor(t, a.diameter); })) return true;
+    if (std::any_of(library.begin(), library.end(), [&](const Tool& t) { return cutsDrawnPasses(t, a.diameter); })) return true;
     std::vector<double> diameters;
     for (const Tool& t : library)
         if (t.type == ToolType::FlatEndMill && t.centreCutting) diameters.push_back(t.diameter);
@@ -76,6 +69,11 @@ bool checkTool(const AreaClearing& a, Reporter& r)
 }
 
 }  // namespace
+
+bool cutsDrawnPasses(const Tool& t, double diameter)
+{
+    return t.type == ToolType::FlatEndMill && t.centreCutting && std::abs(t.diameter - diameter) <= kFitTolerance;
+}
 
 check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const check::Context& ctx)
 {

@@ -3,6 +3,7 @@
 // Registered in modules/registry.cpp.
 #include "modules/area/area.h"
 #include "modules/module_kind.h"
+#include "paths/drawn_passes.h"
 
 #include "figure/figure_text.h"
 #include "io/job_messages.h"
@@ -21,19 +22,6 @@ const std::vector<std::string> kKeys{"module", "name",     "outline", "islands",
                                      "depth",  "diameter", "tools",   "cutting"};
 
 constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
-
-// Distance from p to the polyline through `points`.
-double polylineDistance(const std::vector<Point2>& points, Point2 p)
-{
-    double d = points.empty() ? std::numeric_limits<double>::infinity() : distance(p, points.front());
-    for (std::size_t k = 1; k < points.size(); ++k) {
-        const Point2 a = points[k - 1], e = points[k] - a;
-        const double l2 = dot(e, e);
-        const double t = l2 > 0.0 ? std::clamp(dot(p - a, e) / l2, 0.0, 1.0) : 0.0;
-        d = std::min(d, distance(p, a + t * e));
-    }
-    return d;
-}
 
 class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
@@ -85,7 +73,7 @@ public:
         c.depth = a.depth;
         const auto inside = std::make_shared<RegionDistance>(region);
         c.depthAt = [inside, points = a.points, r = a.diameter / 2, depth = a.depth](Point2 q, double slack) {
-            return (*inside)(q) <= slack && polylineDistance(points, q) <= r + slack ? depth : 0.0;
+            return (*inside)(q) <= slack && paths::distanceToPasses(points, q) <= r + slack ? depth : 0.0;
         };
         return c;
     }

@@ -59,9 +59,7 @@ std::vector<Step> planAreaClearing(const AreaClearing& a, const TechnologyData&,
     s.position = a.points.front();
     s.startDepth = 0.0;
     s.cutDepth = a.depth;
-    const auto fits = [&](const Tool& t) {
-        return t.type == ToolType::FlatEndMill && t.centreCutting && std::abs(t.diameter - a.diameter) <= kFitTolerance;
-    };
+    const auto fits = [&](const Tool& t) { return cutsDrawnPasses(t, a.diameter); };
     const auto problem = [&](std::string message) {
         out.push_back({Severity::Error, unit + 1, AreaClearing::kName, "tools", std::move(message)});
     };
