@@ -3,9 +3,11 @@
 #include "paths/coverage.h"
 
 #include "model/clipper_scale.h"
+#include "paths/contour.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace taiwa::paths {
 
@@ -103,6 +105,35 @@ double uncutArea(const Quad& region, const ToolPath& path, double radius, double
     double a = 0;
     for (const auto& p : leftover(region, path, radius, band)) a += clipperAreaMm2(p);
     return a;
+}
+
+// Why the rule of ringsClearRectangle holds. K_d is the outline offset inward
+// by d, ring d its boundary. (1) The outline's corners are rounded to at
+// least R, so the outline is K_R grown by R: every point within R of the
+// outline's edge is within R of ring R. (2) Between neighbour rings d < d',
+// gap g = d' - d: a point p of K_d at depth s in it is s from ring d. K_d is
+// a rectangle C grown by a radius rho (rho may be 0), and K_d' is C grown by
+// rho - g, or C shrunk by g - rho: either way p is at most sqrt 2 (g - s)
+// from K_d' (C shrunk by t lies within sqrt 2 t of every point of C, the
+// corner's diagonal), so from ring d'. min(s, sqrt 2 (g - s)) <= R for every
+// s when g <= (1 + 1/sqrt 2) R, the worst p being on a corner's bisector.
+// (3) Inside the last ring, which is within 1e-4 of collapsing, every point
+// is within 1e-4 of it.
+bool ringsClearRectangle(const Quad& outline, double radius, const std::vector<double>& offsets)
+{
+    std::vector<double> d = offsets;
+    std::sort(d.begin(), d.end());
+    if (d.empty() || outline.cornerRadius < radius || std::abs(d.front() - radius) > 1e-12) return false;
+    const auto& c = outline.corners;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 a = c[(i + 1) % 4] - c[i], b = c[(i + 2) % 4] - c[(i + 1) % 4];
+        if (std::abs(dot(a, b)) > 1e-12 * dot(a, a) + 1e-12 * dot(b, b)) return false;  // not a right angle
+    }
+    if (maxOffset(outline) - d.back() > 1e-4 + 1e-9) return false;
+    const double widest = (1 + std::numbers::sqrt2 / 2) * radius * (1 - 1e-9);
+    for (std::size_t k = 0; k + 1 < d.size(); ++k)
+        if (!(d[k + 1] - d[k] <= widest)) return false;
+    return true;
 }
 
 std::vector<Point2> cleanupPoints(const Quad& region, const Quad& allowedCentres, const ToolPath& path, double radius,

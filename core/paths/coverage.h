@@ -24,4 +24,13 @@ double uncutArea(const Quad& region, const ToolPath& path, double radius, double
 std::vector<Point2> cleanupPoints(const Quad& region, const Quad& allowedCentres, const ToolPath& path, double radius,
                                   double tolerance = 1e-3);
 
+// True when the rings alone are known to clear a rectangular outline (any
+// rotation, corners rounded to at least R): the centre rings are the inward
+// offsets of the outline by `offsets` (in any order: the least R, the
+// greatest within 1e-4 of the deepest), and no two neighbours are more than
+// (1 + 1/sqrt 2) R apart. Then every point of the outline lies within R of
+// a ring, and cleanupPoints would find nothing: planning skips the proof.
+// False says nothing (the proof must be made).
+bool ringsClearRectangle(const Quad& outline, double radius, const std::vector<double>& offsets);
+
 }  // namespace taiwa::paths

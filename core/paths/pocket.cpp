@@ -128,8 +128,13 @@ std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Po
     if (!known) {
         // Proved outside the lock: two threads may prove one shape at once,
         // and get the same answer.
-        const Entry entry = chooseEntry(key.outline, R, hole, key.position);
-        known = proveLayer(key.outline, R, entry, ringOffsets(key.outline, R, stepOver), p);
+        const auto offsets = ringOffsets(key.outline, R, stepOver);
+        if (ringsClearRectangle(key.outline, R, offsets)) {
+            known.emplace();  // proved by geometry (coverage.cpp): no visits
+        } else {
+            const Entry entry = chooseEntry(key.outline, R, hole, key.position);
+            known = proveLayer(key.outline, R, entry, offsets, p);
+        }
         std::lock_guard lock(provedMutex);
         if (proved.size() >= kRemembered) proved.clear();
         proved.emplace(key, *known);
