@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <future>
 #include <system_error>
 
 namespace taiwa {
@@ -222,8 +223,6 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     if (ec) return Failure{"cannot create folder " + outDir + ": " + ec.message()};
     const LengthUnit units = options.units.value_or(plan.job.lengthUnit);
 
-    const PostedProgram program =
-        postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
     SheetOptions sheet;
     sheet.units = units;
     sheet.dialect = options.dialect;
@@ -233,12 +232,18 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.stepPictures = options.stepPictures;
     sheet.picturesNote = options.picturesNote;
     sheet.setupPicture = options.setupPicture;
-    auto pdf = sheetPdf(plan, sheet);
+    // The PDF (most of an export's time after planning: shaping and
+    // compressing every page's text) is drawn on a thread of its own while
+    // this one posts the tape and writes the HTML sheet and steps.json.
+    auto drawing = std::async(std::launch::async, [&plan, &sheet] { return sheetPdf(plan, sheet); });
+    const PostedProgram program =
+        postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
+    const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
+    auto pdf = drawing.get();
     if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
 
     auto set = FileSet::open(outDir, stem);
     if (!set) return Failure{set.error() + "; nothing was changed in " + outDir};
-    const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     std::vector<std::pair<std::string, std::string>> files = {
         {tape, program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
