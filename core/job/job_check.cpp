@@ -254,8 +254,10 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
             out.push_back(*why);
         } else if (const post::Dialect* d = post::findDialect(job.dialect)) {
             // Lathe tapes and probing cycles are written in the G-code dialects.
-            const bool probing = std::any_of(mm.units.begin(), mm.units.end(),
-                                             [](const auto& u) { return u.module.name() == "PROBE"; });
+            const bool probing = std::any_of(mm.units.begin(), mm.units.end(), [](const auto& u) {
+                const ModuleKind* k = findModuleKind(u.module.name());
+                return k && k->setsWorkOffset();
+            });
             if (auto refusal = lathe ? post::cannotPost(*d, post::Task::LatheTape)
                                : probing ? post::cannotPost(*d, post::Task::ProbingPrograms)
                                          : std::nullopt)

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 namespace taiwa {
@@ -132,6 +134,18 @@ void emit(const ordered& v, std::size_t indent, std::string& out)
 }
 
 }  // namespace
+
+int formatVersionFor(const Job& job)
+{
+    int v = Job::kOldestFormatVersion;
+    for (const auto& u : job.units)
+        if (const ModuleKind* k = findModuleKind(u.module.name())) v = std::max(v, k->formatVersion());
+    if (!job.figure.empty()) v = std::max(v, 5);
+    if (job.clamping) v = std::max(v, 4);
+    if (job.bar) v = std::max(v, 3);
+    if (!job.dialect.empty()) v = std::max(v, 2);
+    return v;
+}
 
 std::string writeJob(const Job& job)
 {

@@ -24,21 +24,6 @@ Job withLengths(const Job& job, LengthUnit unit, const LengthMap& f)
     return out;
 }
 
-int formatVersionFor(const Job& job)
-{
-    if (!job.figure.empty()) return 5;
-    // Every module after the first four (CP, HOLES, AREA, ...) came with version 5.
-    for (const auto& u : job.units) {
-        const std::string n = u.module.name();
-        if (n != "M4" && n != "M2D" && n != "PROBE" && n != "TURN") return 5;
-    }
-    if (job.clamping) return 4;
-    if (job.bar) return 3;
-    for (const auto& u : job.units)
-        if (std::string(u.module.name()) == "TURN") return 3;
-    return job.dialect.empty() ? Job::kOldestFormatVersion : 2;
-}
-
 Job toMillimetres(const Job& job)
 {
     if (job.lengthUnit == LengthUnit::Millimetre) return job;

@@ -103,9 +103,6 @@ struct Job {
 // The same job with every length (stock, technology overrides, module
 // inputs) passed through `convert` and marked as being in `unit`; angles,
 // codes and gamma unchanged.
-// The oldest job format version that holds everything of `job`.
-int formatVersionFor(const Job& job);
-
 Job withLengths(const Job& job, LengthUnit unit, const LengthMap& convert);
 
 // The same job with every length in mm (lengthUnit = Millimetre); angles,

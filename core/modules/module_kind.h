@@ -66,6 +66,12 @@ public:
     virtual const char* paletteText() const = 0;
     // The module's drawing as a Qt resource path (":/modules/m4.svg").
     virtual const char* drawing() const = 0;
+    // The job file format version that brought the module: a job holding a
+    // unit of it is written in that version or a later one.
+    virtual int formatVersion() const = 0;
+    // True for a setup unit that sets the job's work offset (probing): its
+    // programs must be posted in a dialect that writes probing programs.
+    virtual bool setsWorkOffset() const { return false; }
 
     // A new unit of this kind for the station's "Add", inside the stock.
     virtual ModuleInput makeDefault(const Stock& stock) const = 0;
@@ -161,6 +167,7 @@ template <class T>
 class ModuleKindOf : public ModuleKind {
 public:
     const char* name() const final { return T::kName; }
+    int formatVersion() const final { return T::kSinceFormatVersion; }
     ModuleInput read(const io::ObjectFields& unit) const final { return readInput(unit); }
     void write(const ModuleInput& m, nlohmann::ordered_json& unit) const final { writeInput(m.as<T>(), unit); }
     check::UnitReport check(const ModuleInput& mm, int unitNo, const check::Context& ctx) const final

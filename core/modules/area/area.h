@@ -23,6 +23,7 @@ namespace taiwa {
 
 struct AreaClearing {
     static constexpr const char* kName = "AREA";
+    static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
     NamedRegion area;             // outline and islands, from the figure
     std::vector<Point2> points;   // the passes: the tool centre goes from each point to the next
     double depth = 0.0;           // T, down from the top surface

@@ -21,6 +21,7 @@ namespace taiwa {
 
 struct ContourPocket {
     static constexpr const char* kName = "CP";
+    static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
     std::string outline;               // the contour of the pocket's edge at the top ("K1")
     std::vector<std::string> islands;  // contours of the islands left standing in it
     double depth = 0.0;                // T, measured down from the top surface

@@ -22,6 +22,7 @@ namespace taiwa {
 
 struct FaceUnit {
     static constexpr const char* kName = "FACE";
+    static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
     double depth = 0.0;              // stock removed from the top, down from Z0
     int toolUse = 1;                 // U: 1 roughing layers and a finishing pass, 9 roughing only
     std::optional<double> finish;    // the finishing pass's depth (U9: the allowance left); the technology's β2 when absent

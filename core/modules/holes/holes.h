@@ -22,6 +22,7 @@ namespace taiwa {
 
 struct HolePattern {
     static constexpr const char* kName = "HOLES";
+    static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
     std::string pattern = "single";  // "single", "line", "grid", "bolt circle", "arc"
     // single: the hole; line: the first hole; grid: the corner hole (first
     // column, first row); bolt circle, arc: the centre of the circle.

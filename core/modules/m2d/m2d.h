@@ -19,6 +19,7 @@ namespace taiwa {
 
 struct M2DPocket {
     static constexpr const char* kName = "M2D";
+    static constexpr int kSinceFormatVersion = 1;  // the job format that brought it
     Point2 corner{};               // (X1, Y1): reference corner of the top opening
     double lengthX = 0.0;          // L1, top opening along X
     double lengthY = 0.0;          // L2, top opening along Y

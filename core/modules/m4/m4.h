@@ -17,6 +17,7 @@ namespace taiwa {
 
 struct M4Pocket {
     static constexpr const char* kName = "M4";
+    static constexpr int kSinceFormatVersion = 1;  // the job format that brought it
     std::array<Point2, 4> corners{};  // P1..P4 of the final outline at the top
     double cornerRadius = 0.0;        // r1
     double depth = 0.0;               // T, measured down from the top surface

@@ -17,6 +17,7 @@ namespace taiwa {
 
 struct ProbeUnit {
     static constexpr const char* kName = "PROBE";
+    static constexpr int kSinceFormatVersion = 1;  // the job format that brought it
     static constexpr std::size_t kMaxTouches = 8;
     int shape = 1;   // 1 round (boss or bore), 2 rectangular (block or pocket)
     int where = 1;   // 1 touched from outside (boss, block), 2 from inside (bore, pocket)

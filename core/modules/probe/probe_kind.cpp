@@ -36,6 +36,7 @@ public:
         return p;
     }
 
+    bool setsWorkOffset() const override { return true; }
     std::optional<WorkSetup> setup(const ModuleInput& mm, const UnitPlanContext& ctx) const override
     {
         const ProbeUnit& p = mm.as<ProbeUnit>();

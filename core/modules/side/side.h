@@ -24,6 +24,7 @@ namespace taiwa {
 
 struct SideMill {
     static constexpr const char* kName = "SIDE";
+    static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
     std::string contour;   // the contour of the finished wall ("K1")
     int side = 1;          // 1: the tool on the left of the contour's direction, 2: on its right
     int direction = 1;     // 1: climb, 2: conventional (M3: climb runs the tool on the left of its travel)

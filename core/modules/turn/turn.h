@@ -16,6 +16,7 @@ namespace taiwa {
 
 struct TurnUnit {
     static constexpr const char* kName = "TURN";
+    static constexpr int kSinceFormatVersion = 3;  // the job format that brought it
     turning::TurnedProfile profile;
     ToolPins tools;                 // pinned tools by step key (turning::turnStepKeys())
     std::vector<std::string> skip;  // steps turned off, by step key
