@@ -95,6 +95,25 @@ bool posts(const Dialect& d, Task task)
     return false;
 }
 
+// Why a language gets no probing programs: what the manual pages read for it
+// (docs/probing.md, a section per dialect) did not confirm. A probing
+// program written from memory can drive the stylus into the part.
+std::string whyNoProbing(Syntax syntax)
+{
+    switch (syntax) {
+    case Syntax::Sinumerik:
+        return "the SINUMERIK manual pages at hand do not say which probe edge MEAS=1 and MEAS=-1 take, how "
+               "$AC_MEA reports a touch not made, nor that STOPRE must come before $AA_MW is read; "
+               "see docs/probing.md";
+    case Syntax::Klartext:
+        return "the TNC manual pages at hand do not say what TCH PROBE 0 does when nothing is touched, and the "
+               "one way found to write a preset from a program, FN 17: SYSWRITE, is locked behind the machine "
+               "maker's code number; see docs/probing.md";
+    case Syntax::Iso: break;
+    }
+    return "see docs/probing.md";
+}
+
 }  // namespace
 
 std::optional<std::string> cannotPost(const Dialect& d, Task task)
@@ -105,7 +124,8 @@ std::optional<std::string> cannotPost(const Dialect& d, Task task)
         if (posts(other, task)) can += (can.empty() ? "" : ", ") + other.name;
     if (task == Task::LatheTape)
         return fmt::format("the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can", d.name, can);
-    return fmt::format("the {} dialect writes no probing unit's programs; {} can", d.name, can);
+    return fmt::format("the {} dialect writes no probing unit's programs; {} can ({})", d.name, can,
+                       whyNoProbing(d.syntax));
 }
 
 const Dialect* findDialect(const std::string& name)

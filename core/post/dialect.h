@@ -115,10 +115,12 @@ const std::vector<std::string>& dialectLibraryProblems();
 
 // What a dialect may not write beside milling tapes: a lathe tape (not in
 // Klartext: HEIDENHAIN's lathe controls do not speak it) and a probing
-// unit's programs (the G-code dialects with FANUC or LinuxCNC macros).
+// unit's programs (the G-code dialects with FANUC or LinuxCNC macros; not
+// SINUMERIK nor Klartext, whose probing constructs the manual pages at hand
+// do not confirm: docs/probing.md).
 enum class Task { LatheTape, ProbingPrograms };
 // Nothing when `d` writes `task`; else the sentence refusing it, naming the
-// dialects that can.
+// dialects that can (for probing, and why this one cannot).
 std::optional<std::string> cannotPost(const Dialect& d, Task task);
 
 const Dialect& fanucDialect();
