@@ -94,7 +94,7 @@ public:
                 p_.drawRect(cell);
                 const QRectF text = cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0);
                 if (header) {
-                    p_.drawText(text, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, q(cells[i]));
+                    headerText(text, cells[i]);
                 } else {
                     cellText(text, cells[i], t.numeric[i]);
                 }
@@ -224,6 +224,34 @@ private:
         const double baseline = cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
         for (const QGlyphRun& run : f.glyphs) p_.drawGlyphRun(QPointF(x, baseline - f.ascent), run);
     }
+    // A header cell's text, wrapped in the cell and centred on its height,
+    // in bold: laid out once per text and column width, drawn from its
+    // glyphs on every page the table reaches.
+    void headerText(const QRectF& cell, const std::string& text)
+    {
+        auto& laid = headers_[cell.width()];
+        auto it = laid.find(text);
+        if (it == laid.end()) {
+            Fitted f;
+            QTextLayout layout(q(text), bold_, &pdf_);
+            QTextOption wrap;
+            wrap.setWrapMode(QTextOption::WordWrap);  // as drawText with Qt::TextWordWrap
+            layout.setTextOption(wrap);
+            layout.beginLayout();
+            double height = 0;
+            for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+                line.setLineWidth(cell.width());
+                line.setPosition(QPointF(0, height));
+                height += line.height();
+            }
+            layout.endLayout();
+            f.glyphs = layout.glyphRuns();
+            f.ascent = height;  // here: the text's height
+            it = laid.emplace(text, std::move(f)).first;
+        }
+        const QPointF at(cell.left(), cell.center().y() - it->second.ascent / 2);
+        for (const QGlyphRun& run : it->second.glyphs) p_.drawGlyphRun(at, run);
+    }
     QString elide(const QString& s, double width) const
     {
         return QFontMetricsF(p_.font(), &pdf_).elidedText(s, Qt::ElideRight, width);
@@ -254,7 +282,8 @@ private:
         QList<QGlyphRun> glyphs;  // the elided text, shaped
         double advance = 0, ascent = 0;
     };
-    std::map<double, std::unordered_map<std::string, Fitted>> fitted_;  // by column width
+    std::map<double, std::unordered_map<std::string, Fitted>> fitted_;   // by column width
+    std::map<double, std::unordered_map<std::string, Fitted>> headers_;  // the same for header cells
     double line_ = 0, y_ = 0;
     int page_ = 1;
 };
