@@ -22,7 +22,6 @@
 #include <vtkPlane.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkShaderProperty.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -428,19 +427,8 @@ void Scene::updateStock()
         // Only the far faces: a glass tray behind the paths, which keep their colours.
         stock_->GetProperty()->SetOpacity(0.12);
         stock_->GetProperty()->FrontfaceCullingOn();
-        // Drawn as a backdrop: in the opaque pass (where VTK blends all the
-        // same: the 12 % comes out as before) and at the far plane's depth,
-        // so it hides nothing drawn before or after it. As translucent
-        // geometry it made VTK run its order-independent translucency pass
-        // every frame (textures the window's size, a depth copy, a
-        // compositing pass): a third of a 10,000-segment frame on llvmpipe
-        // (docs/preview.md). Lines on or behind the far faces (the stock's
-        // three hidden edges) are no longer tinted by it.
-        stock_->ForceOpaqueOn();
-        stock_->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Coincident::Impl", true,
-                                                                  "//VTK::Coincident::Impl\n  gl_FragDepth = 1.0;\n", false);
-        // While the camera moves the stock's edges alone show it (a third
-        // of the window less to fill: docs/preview.md).
+        drawAsBackdrop(stock_);  // not as translucent geometry (scene_lod.cpp)
+        // While the camera moves the stock's edges alone show it.
         stock_->SetVisibility(!moving_);
     }
     if (shown) {  // the surface's own colours

@@ -105,11 +105,12 @@ public:
     bool showsDeviation() const { return deviation_ != nullptr; }
     // While the operator turns, pans or zooms the camera (the preview
     // widget's interaction start and end): the path lines one pixel wide,
-    // the glass tray hidden (the stock's edges show it) and, above kLodAbove path segments, each path actor of kLodMin
-    // segments or more drawn from its decimated twin (viz/path_lod.h, at
-    // most kLodBudget segments, within a thousandth of the scene's
-    // diagonal), made on the first motion and kept with the plan. Full
-    // detail and widths again when it stops. viz/scene_lod.cpp.
+    // the glass tray hidden (the stock's edges show it) and, above
+    // kLodAbove path segments, each path actor of kLodMin segments or more
+    // drawn from its decimated twin (viz/path_lod.h, at most kLodBudget
+    // segments, within a thousandth of the scene's diagonal), made on the
+    // first motion and kept with the plan. Full detail and widths again
+    // when it stops. viz/scene_lod.cpp.
     void setMoving(bool moving);
     bool moving() const { return moving_; }
     // Path segments drawn now (the decimated twins' while moving).
@@ -145,6 +146,8 @@ private:
     // Each path actor drawn from its full or decimated geometry as
     // moving_ says (scene_lod.cpp).
     void updateLod();
+    // The glass tray drawn in the opaque pass at the far plane's depth.
+    static void drawAsBackdrop(vtkActor* actor);
     // A path line's width: `still`, or 1 while the camera moves.
     float pathWidth(float still) const { return moving_ ? 1.0f : still; }
     void clear();

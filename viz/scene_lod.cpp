@@ -1,5 +1,5 @@
-// The scene while the camera moves: path lines one pixel wide, the glass
-// tray hidden and, for a
+// What the scene does to draw fast: the glass tray as a backdrop; while the
+// camera moves, path lines one pixel wide, the tray hidden and, for a
 // large plan, the paths drawn from decimated twins of their geometry
 // (viz/path_lod.h). Each twin has a mapper of its own, so switching between
 // full detail and the twin uploads nothing: both stay on the GPU.
@@ -7,10 +7,26 @@
 #include "viz/scene.h"
 
 #include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkShaderProperty.h>
 
 #include <cmath>
 
 namespace taiwa::viz {
+
+// In the opaque pass (where VTK blends all the same: the tray's 12 % comes
+// out as before) and at the far plane's depth, so that it hides nothing
+// drawn before or after it. As translucent geometry it made VTK 9.1 run its
+// order-independent translucency pass every frame (window-sized textures, a
+// depth copy, a compositing pass): ~9 ms of a 10,000-segment frame's 42 on
+// llvmpipe (docs/preview.md). Lines on or behind the far faces (the stock's
+// three hidden edges) are no longer tinted by it.
+void Scene::drawAsBackdrop(vtkActor* actor)
+{
+    actor->ForceOpaqueOn();
+    actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Coincident::Impl", true,
+                                                             "//VTK::Coincident::Impl\n  gl_FragDepth = 1.0;\n", false);
+}
 
 std::vector<vtkActor*> Scene::pathActors() const
 {
