@@ -45,6 +45,10 @@ PreviewWidget::PreviewWidget(QWidget* parent)
     interactor_->AddObserver(vtkCommand::RenderEvent, this, &PreviewWidget::onInteractorRender);
     auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
     style->SetDefaultRenderer(scene_.renderer());
+    // While the operator drags, the scene draws its level of detail
+    // (viz::Scene::setMoving); full detail again in the frame after.
+    style->AddObserver(vtkCommand::StartInteractionEvent, this, &PreviewWidget::onInteraction);
+    style->AddObserver(vtkCommand::EndInteractionEvent, this, &PreviewWidget::onInteraction);
     interactor_->SetInteractorStyle(style);
     interactor_->Initialize();
 }
@@ -70,6 +74,12 @@ void PreviewWidget::onIsCurrent(vtkObject*, unsigned long, void* callData)
 }
 
 void PreviewWidget::onInteractorRender(vtkObject*, unsigned long, void*) { update(); }
+
+void PreviewWidget::onInteraction(vtkObject*, unsigned long event, void*)
+{
+    scene_.setMoving(event == vtkCommand::StartInteractionEvent);
+    update();
+}
 
 void PreviewWidget::initializeGL()
 {

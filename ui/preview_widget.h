@@ -69,6 +69,7 @@ private:
     void onMakeCurrent(vtkObject*, unsigned long, void*);
     void onIsCurrent(vtkObject*, unsigned long, void* callData);
     void onInteractorRender(vtkObject*, unsigned long, void*);
+    void onInteraction(vtkObject*, unsigned long event, void*);
     void forwardMouse(QMouseEvent* e, unsigned long vtkEvent);
 
     viz::Scene scene_;

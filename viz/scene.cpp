@@ -6,6 +6,7 @@
 #include "sim/turned_stock.h"
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
+#include "viz/path_lod.h"
 #include "viz/solids.h"
 #include "verify/deviation.h"
 #include "model/turned_geometry.h"
@@ -38,6 +39,7 @@ vtkSmartPointer<vtkActor> actorFor(vtkPolyData* pd, Rgb colour)
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->SetInputData(pd);
     mapper->ScalarVisibilityOff();
+    mapper->StaticOn();  // its data never changes: no pipeline update per frame
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->GetProperty()->SetColor(colour.red(), colour.green(), colour.blue());
@@ -114,6 +116,8 @@ void Scene::clear()
     merged_ = {};
     allFeeds_ = allRapids_ = nullptr;
     shownStep_ = -1;
+    twins_.clear();
+    pathSegments_ = 0;
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = cap_ = nullptr;
     deviation_.reset();  // a map is of one plan
@@ -154,6 +158,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
         paths.reserve(steps_.size());
         for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
         merged_ = makeMergedPaths(paths);
+        pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
         allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
         allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
         renderer_->AddActor(allFeeds_);
@@ -162,6 +167,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
         for (int k = 0; k < n; ++k) {
             const StepActors& a = stepActors(k);
             if (!a.feeds) continue;
+            pathSegments_ += lineSegmentCount(a.geometry.feeds) + lineSegmentCount(a.geometry.rapids);
             // Added without AddActor's search of every prop already there (it
             // made a large job's scene quadratic: 33 s for 3,000 units).
             for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
@@ -242,7 +248,7 @@ void Scene::updateEmphasis()
         // Merged: everything in one pair of actors, the selected step drawn
         // over it with its own.
         setColour(allFeeds_, selected_ < 0 ? palette::kFeed : palette::kDimmed);
-        allFeeds_->GetProperty()->SetLineWidth(selected_ < 0 ? 2.0f : 1.0f);
+        allFeeds_->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
         allFeeds_->SetVisibility(selected_ < 0 || !othersHidden_);
         allRapids_->SetVisibility(selected_ < 0);
         if (shownStep_ >= 0 && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
@@ -253,11 +259,12 @@ void Scene::updateEmphasis()
         if (selected_ >= 0 && stepActors(selected_).feeds) {
             StepActors& a = stepActors(selected_);
             setColour(a.feeds, palette::kFeed);
-            a.feeds->GetProperty()->SetLineWidth(3.0f);
+            a.feeds->GetProperty()->SetLineWidth(pathWidth(3.0f));
             renderer_->AddActor(a.feeds);
             renderer_->AddActor(a.rapids);
             shownStep_ = selected_;
         }
+        updateLod();
         return;
     }
     for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
@@ -266,9 +273,10 @@ void Scene::updateEmphasis()
         const bool emphasised = selected_ < 0 || selected_ == k;
         a.feeds->SetVisibility(emphasised || !othersHidden_);
         setColour(a.feeds, emphasised ? palette::kFeed : palette::kDimmed);
-        a.feeds->GetProperty()->SetLineWidth(selected_ == k ? 3.0f : emphasised ? 2.0f : 1.0f);
+        a.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ == k ? 3.0f : emphasised ? 2.0f : 1.0f));
         a.rapids->SetVisibility(emphasised);
     }
+    updateLod();
 }
 
 void Scene::buildLathe()
@@ -387,6 +395,7 @@ void Scene::updateStock()
     }
     if (stock_) renderer_->RemoveActor(stock_);
     if (cap_) renderer_->RemoveActor(cap_);
+    tray_ = false;
     cap_ = nullptr;
     // The solid a section cuts open: the colour map, or the simulated stock.
     std::shared_ptr<const sim::HeightField> shown;
@@ -414,9 +423,13 @@ void Scene::updateStock()
         shown = field;
     } else {
         stock_ = actorFor(stockBlock(plan_->mmJob.stock), palette::kStock);
+        tray_ = true;
         // Only the far faces: a glass tray behind the paths, which keep their colours.
         stock_->GetProperty()->SetOpacity(0.12);
         stock_->GetProperty()->FrontfaceCullingOn();
+        drawAsBackdrop(stock_);  // not as translucent geometry (scene_lod.cpp)
+        // While the camera moves the stock's edges alone show it.
+        stock_->SetVisibility(!moving_);
     }
     if (shown) {  // the surface's own colours
         stock_->GetMapper()->ScalarVisibilityOn();

@@ -19,6 +19,7 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -102,6 +103,21 @@ public:
     // stock again. A new plan (setPlan) drops it.
     void setDeviationMap(std::shared_ptr<const verify::DeviationMap> map);
     bool showsDeviation() const { return deviation_ != nullptr; }
+    // While the operator turns, pans or zooms the camera (the preview
+    // widget's interaction start and end): the path lines one pixel wide,
+    // the glass tray hidden (the stock's edges show it) and, above
+    // kLodAbove path segments, each path actor of kLodMin segments or more
+    // drawn from its decimated twin (viz/path_lod.h, at most kLodBudget
+    // segments, within a thousandth of the scene's diagonal), made on the
+    // first motion and kept with the plan. Full detail and widths again
+    // when it stops. viz/scene_lod.cpp.
+    void setMoving(bool moving);
+    bool moving() const { return moving_; }
+    // Path segments drawn now (the decimated twins' while moving).
+    std::size_t drawnPathSegments() const;
+    static constexpr std::size_t kLodAbove = 200'000;
+    static constexpr std::size_t kLodMin = 10'000;
+    static constexpr std::size_t kLodBudget = 100'000;
     // Camera preset fitted to the stock and the paths for a viewport of
     // width / height = aspect.
     void setView(ViewPreset preset, double aspect);
@@ -125,6 +141,15 @@ private:
     // null actors for a step without a path.
     StepActors& stepActors(int k);
     vtkMatrix4x4* worldToView(int width, int height) const;
+    // The path line actors made so far (merged pair, steps' own).
+    std::vector<vtkActor*> pathActors() const;
+    // Each path actor drawn from its full or decimated geometry as
+    // moving_ says (scene_lod.cpp).
+    void updateLod();
+    // The glass tray drawn in the opaque pass at the far plane's depth.
+    static void drawAsBackdrop(vtkActor* actor);
+    // A path line's width: `still`, or 1 while the camera moves.
+    float pathWidth(float still) const { return moving_ ? 1.0f : still; }
     void clear();
     void updateEmphasis();
     void updateStock();
@@ -166,6 +191,14 @@ private:
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;
     MoveRef highlighted_;
     std::optional<Point3> toolAt_;
+    bool moving_ = false;
+    bool tray_ = false;  // stock_ is the glass tray (the stock hidden)
+    std::size_t pathSegments_ = 0;  // of the plan's paths (each once)
+    // A path actor's own mapper and its decimated twin's, once made.
+    struct Twin {
+        vtkSmartPointer<vtkMapper> full, lod;
+    };
+    std::map<vtkActor*, Twin> twins_;
 };
 
 }  // namespace taiwa::viz

@@ -1,0 +1,92 @@
+// What the scene does to draw fast: the glass tray as a backdrop; while the
+// camera moves, path lines one pixel wide, the tray hidden and, for a
+// large plan, the paths drawn from decimated twins of their geometry
+// (viz/path_lod.h). Each twin has a mapper of its own, so switching between
+// full detail and the twin uploads nothing: both stay on the GPU.
+#include "viz/path_lod.h"
+#include "viz/scene.h"
+
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkShaderProperty.h>
+
+#include <cmath>
+
+namespace taiwa::viz {
+
+// In the opaque pass (where VTK blends all the same: the tray's 12 % comes
+// out as before) and at the far plane's depth, so that it hides nothing
+// drawn before or after it. As translucent geometry it made VTK 9.1 run its
+// order-independent translucency pass every frame (window-sized textures, a
+// depth copy, a compositing pass): ~9 ms of a 10,000-segment frame's 42 on
+// llvmpipe (docs/preview.md). Lines on or behind the far faces (the stock's
+// three hidden edges) are no longer tinted by it.
+void Scene::drawAsBackdrop(vtkActor* actor)
+{
+    actor->ForceOpaqueOn();
+    actor->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Coincident::Impl", true,
+                                                             "//VTK::Coincident::Impl\n  gl_FragDepth = 1.0;\n", false);
+}
+
+std::vector<vtkActor*> Scene::pathActors() const
+{
+    std::vector<vtkActor*> actors;
+    for (vtkActor* a : {allFeeds_.Get(), allRapids_.Get()})
+        if (a) actors.push_back(a);
+    for (const StepActors& s : steps_)
+        for (vtkActor* a : {s.feeds.Get(), s.rapids.Get()})
+            if (a) actors.push_back(a);
+    return actors;
+}
+
+void Scene::setMoving(bool moving)
+{
+    if (moving == moving_) return;
+    moving_ = moving;
+    if (tray_ && stock_) stock_->SetVisibility(!moving_);
+    if (plan_ && !lathe_) updateEmphasis();  // the widths; it ends with updateLod()
+}
+
+void Scene::updateLod()
+{
+    const bool lod = moving_ && pathSegments_ > kLodAbove;
+    double tolerance = 0;
+    if (lod) {
+        const auto b = bounds();
+        tolerance = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]) / 1000.0;
+    }
+    for (vtkActor* actor : pathActors()) {
+        auto found = twins_.find(actor);
+        if (!lod) {
+            if (found != twins_.end() && actor->GetMapper() != found->second.full) actor->SetMapper(found->second.full);
+            continue;
+        }
+        if (found == twins_.end()) {
+            auto* full = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+            vtkPolyData* data = full ? full->GetInput() : nullptr;
+            Twin twin{full, nullptr};
+            if (data && lineSegmentCount(data) >= kLodMin) {
+                auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+                mapper->SetInputData(decimateLinesWithin(data, tolerance, kLodBudget));
+                mapper->ScalarVisibilityOff();
+                mapper->StaticOn();
+                twin.lod = mapper;
+            }
+            found = twins_.emplace(actor, std::move(twin)).first;
+        }
+        if (found->second.lod && actor->GetMapper() != found->second.lod) actor->SetMapper(found->second.lod);
+    }
+}
+
+std::size_t Scene::drawnPathSegments() const
+{
+    std::size_t n = 0;
+    for (vtkActor* actor : pathActors()) {
+        if (!actor->GetVisibility() || !renderer_->HasViewProp(actor)) continue;
+        auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+        if (mapper) n += lineSegmentCount(mapper->GetInput());
+    }
+    return n;
+}
+
+}  // namespace taiwa::viz
