@@ -190,6 +190,7 @@ void PlanRunner::flush()
         }
     } else {
         pendingFull_ = false;  // a queued start finds nothing to do
+        inFlight_ = -1;        // the worker is done; its result, still queued, is older than this one
         ++generation_;         // anything still queued is older than this
         publish(run(pending_, settings()));
     }
