@@ -1,51 +1,78 @@
-// Station responsiveness on the largest sample job (resources/samples/
-// plate.taiwa): the time from a changed value (the depth of unit 1, as the
-// form sets it after parsing a keystroke) to
+// Station responsiveness (issue 11): the time from a changed value (the depth
+// of unit 1, as the form sets it after parsing a keystroke) to
 //   StepList: the check messages and the step list updated (on the GUI
 //             thread, before the edit returns), and
-//   FullPlan: the full plan with tool paths and the NC program delivered back
-//             to the GUI thread (what the 3-D preview's setPlan and the NC
-//             view get), debounce included.
-// Offscreen unless a display is set; under `xvfb-run -a` the preview exists
-// and its setPlan is inside FullPlan. Run from the source tree's root, or
-// set TAIWA_BENCH_JOB to the job file.
+//   FullPlan: the full plan with tool paths and the stock delivered back to
+//             the GUI thread and given to the 3-D view, and (with a display)
+//             its first frame rendered: "value typed -> preview updated";
+//   FullPlanNc: the same to the NC view's new text, which the window puts
+//             off until after the 3-D view (and on a large job until the
+//             typing pauses);
+//   Parts:    FullPlan's parts, each timed here by calling the same functions
+//             the runner and the window call, one after the other (counters
+//             in ms; the product has no timers).
+// on two jobs: resources/samples/plate.taiwa (the largest sample; or the job
+// file TAIWA_BENCH_JOB names) and a 200-unit job (bench_job.h's bigJob(200)).
+// Offscreen unless a display is set; under `xvfb-run -a` the preview exists,
+// its setPlan is inside FullPlan and Parts times it and its first render.
+// Run from the source tree's root.
+#include "bench_job.h"
+#include "job/job_check.h"
+#include "job/job_file.h"
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "pipeline/pipeline.h"
+#include "pipeline/plan_cache.h"
+#include "post/post.h"
+#include "sim/stock_cache.h"
+#include "sim/stock_simulation.h"
 #include "ui/job_document.h"
+#include "ui/nc_view.h"
 #include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
 #include "ui/station_window.h"
+#include "ui/step_panel.h"
 #include "ui/step_table.h"
+#include "ui/verification_panel.h"
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFile>
+#include <QPlainTextEdit>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 using namespace taiwa;
 using namespace taiwa::ui;
 
 namespace {
 
-StationWindow* window = nullptr;
 double depth = 10.0;
 
-void changeDepth()
+Job changedDepth(StationWindow* window)
 {
     Job j = window->document()->job();
     depth = depth == 10.0 ? 10.5 : 10.0;
     (j.units[0].module).as<M4Pocket>().depth = depth;
-    window->document()->edit(j, "bench", "bench");
+    return j;
 }
 
-void StepList(benchmark::State& state)
+void changeDepth(StationWindow* window) { window->document()->edit(changedDepth(window), "bench", "bench"); }
+
+void StepList(benchmark::State& state, StationWindow* window)
 {
     for (auto _ : state) {
-        changeDepth();
+        changeDepth(window);
         benchmark::DoNotOptimize(window->stepTable()->rowCount());
         state.PauseTiming();
         window->planRunner()->flush();  // no worker left running into the next edit
@@ -55,28 +82,127 @@ void StepList(benchmark::State& state)
     state.counters["steps"] = window->stepTable()->rowCount();
 }
 
-void FullPlan(benchmark::State& state)
+double moves(const Plan& plan)
+{
+    double n = 0;
+    for (const Step& s : plan.steps)
+        if (s.path) n += static_cast<double>(s.path->moves.size());
+    return n;
+}
+
+void FullPlan(benchmark::State& state, StationWindow* window)
 {
     for (auto _ : state) {
         QEventLoop loop;
         auto c = QObject::connect(window->planRunner(), &PlanRunner::programReady, &loop, &QEventLoop::quit);
-        QTimer::singleShot(10000, &loop, &QEventLoop::quit);
-        changeDepth();
+        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
+        changeDepth(window);
+        loop.exec();
+        QObject::disconnect(c);
+        // The window has given the plan to the 3-D view: its frame.
+        if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());
+        state.PauseTiming();
+        window->planRunner()->flush();  // the NC text and the step list's times
+        QCoreApplication::processEvents();
+        state.ResumeTiming();
+    }
+    state.counters["moves"] = moves(*window->planRunner()->fullPlan());
+}
+
+// The same to the NC view's new text (put off after the 3-D view's frame).
+void FullPlanNc(benchmark::State& state, StationWindow* window)
+{
+    for (auto _ : state) {
+        QEventLoop loop;
+        auto c = QObject::connect(window->ncView()->text(), &QPlainTextEdit::textChanged, &loop, &QEventLoop::quit);
+        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
+        changeDepth(window);
         loop.exec();
         QObject::disconnect(c);
     }
-    state.counters["moves"] = [] {
-        double n = 0;
-        for (const Step& s : window->planRunner()->fullPlan()->steps)
-            if (s.path) n += static_cast<double>(s.path->moves.size());
-        return n;
-    }();
+}
+
+// FullPlan's parts, one after the other on the GUI thread, with the runner's
+// own cache (pipeline/plan_cache.h) where it plans; each counter is the mean
+// of its part in ms.
+void Parts(benchmark::State& state, StationWindow* window)
+{
+    using Clock = std::chrono::steady_clock;
+    std::map<std::string, double> total;
+    const auto lap = [&](const char* name, Clock::time_point& t) {
+        const auto now = Clock::now();
+        total[name] += std::chrono::duration<double, std::milli>(now - t).count();
+        t = now;
+    };
+    PlanRunner* runner = window->planRunner();
+    const std::vector<Tool>& library = runner->library();
+    PlanCache cache;  // as the runner has them: the job before the edit planned and simulated
+    sim::StockCache stockCache;
+    stockCache.finished(std::make_shared<const Plan>(
+                            cache.plan(checkedJob(window->document()->job(), TechnologyTable::builtIn(), library), library)),
+                        runner->stockGrid());
+    for (auto _ : state) {
+        const Job job = changedDepth(window);
+        auto t = Clock::now();
+        {  // the start of the full plan: a call queued at once (no timer)
+            QEventLoop loop;
+            QMetaObject::invokeMethod(&loop, &QEventLoop::quit, Qt::QueuedConnection);
+            loop.exec();
+        }
+        lap("queuedStart", t);
+        const CheckedJob checked = checkedJob(job, TechnologyTable::builtIn(), library);
+        lap("checks", t);
+        PlanOptions fast;
+        fast.withToolPaths = false;
+        const auto stepList = std::make_shared<const Plan>(planJob(checked, library, fast));
+        lap("stepList", t);
+        {
+            Job one = job;
+            one.units.resize(1);
+            benchmark::DoNotOptimize(planJob(one, TechnologyTable::builtIn(), library));
+        }
+        lap("planUnit1", t);
+        const auto fresh = std::make_shared<const Plan>(planJob(checked, library));
+        lap("planAll", t);
+        const auto plan = std::make_shared<const Plan>(cache.plan(checked, library));
+        lap("planCached", t);
+        PostedProgram prog = postProcess(plan->steps, plan->tools, postOptions(*plan, "linuxcnc"));
+        lap("post", t);
+        const QString nc = QString::fromStdString(prog.nc);
+        window->ncView()->setProgram(nc, prog.lines);
+        lap("ncView", t);
+        auto stock = std::make_shared<sim::StockSimulation>(*fresh, runner->stockGrid());
+        stock->finished();
+        lap("stockFresh", t);
+        auto stockCached = stockCache.simulation(plan, runner->stockGrid());
+        lap("stockCached", t);
+        window->stepPanel()->setPlan(plan);
+        lap("stepPanel", t);
+        window->verificationPanel()->setPlan(plan);
+        lap("verifyPanel", t);
+        if (PreviewWidget* p = window->preview()) {
+            p->setPlan(plan, stockCached);
+            lap("previewSetPlan", t);
+            benchmark::DoNotOptimize(p->grabImage());
+            lap("firstRender", t);
+        }
+        QCoreApplication::processEvents();
+        t = Clock::now();
+    }
+    for (const auto& [name, ms] : total) state.counters[name] = ms / static_cast<double>(state.iterations());
+}
+
+// The 200-unit job as a file the window opens.
+QString writeBigJob(const QTemporaryDir& dir)
+{
+    const QString path = dir.filePath("units200.taiwa");
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return {};
+    f.write(QByteArray::fromStdString(writeJob(bench::bigJob(200))));
+    return path;
 }
 
 }  // namespace
-
-BENCHMARK(StepList)->Unit(benchmark::kMillisecond);
-BENCHMARK(FullPlan)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char** argv)
 {
@@ -88,17 +214,37 @@ int main(int argc, char** argv)
     qputenv("TAIWA_NO_PROMPTS", "1");
     QApplication app(argc, argv);
     QStandardPaths::setTestModeEnabled(true);
-    QString job = qEnvironmentVariable("TAIWA_BENCH_JOB", "resources/samples/plate.taiwa");
-    auto w = std::make_unique<StationWindow>(job);
-    if (w->document()->job().units.empty()) {
-        qCritical("bench_gui_update: cannot open %s (run from the source root or set TAIWA_BENCH_JOB)",
-                  qPrintable(job));
-        return 1;
-    }
-    w->show();
-    window = w.get();
-    window->planRunner()->flush();
     benchmark::Initialize(&argc, argv);
+    const std::pair<const char*, QString> jobs[] = {
+        {"plate", qEnvironmentVariable("TAIWA_BENCH_JOB", "resources/samples/plate.taiwa")},
+        {"units200", writeBigJob(dir)},
+    };
+    std::vector<std::unique_ptr<StationWindow>> windows;
+    for (const auto& [name, path] : jobs) {
+        auto w = std::make_unique<StationWindow>(path);
+        if (w->document()->job().units.empty()) {
+            qCritical("bench_gui_update: cannot open %s (run from the source root or set TAIWA_BENCH_JOB)",
+                      qPrintable(path));
+            return 1;
+        }
+        w->show();
+        w->planRunner()->flush();
+        QCoreApplication::processEvents();
+        StationWindow* window = w.get();
+        windows.push_back(std::move(w));
+        const std::string n = name;
+        benchmark::RegisterBenchmark(("StepList/" + n).c_str(), StepList, window)->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("FullPlan/" + n).c_str(), FullPlan, window)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("FullPlanNc/" + n).c_str(), FullPlanNc, window)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("Parts/" + n).c_str(), Parts, window)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->Iterations(n == "plate" ? 10 : 3);
+    }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

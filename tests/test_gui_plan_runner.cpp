@@ -1,7 +1,9 @@
 // The station's plan runner on its asynchronous path, without flush(): an
 // edit made while the worker plans an older one drops the older result and
 // starts the worker again on the newest edit; a burst of edits in one
-// event-loop turn is planned once; a dialect change re-posts the last plan.
+// event-loop turn is published once (the first starts the idle worker at
+// once, only the newest of the rest is planned after it); a dialect change
+// re-posts the last plan.
 #include "job/job_file.h"
 #include "modules/m4/m4.h"
 #include "support/support.h"
@@ -53,7 +55,7 @@ private slots:
         PlanRunner runner;
         QSignalSpy programs(&runner, &PlanRunner::programReady);
         runner.update(plateWithDepth(10));
-        QCoreApplication::processEvents();  // the zero-time debounce fires: the worker starts on depth 10
+        QCoreApplication::processEvents();  // the worker started on depth 10 at the edit
         QVERIFY(runner.isBusy());
         runner.update(plateWithDepth(11));  // while it plans
         runner.update(plateWithDepth(12));  // and another, in the same turn

@@ -5,7 +5,6 @@
 #include "tools/tool_library.h"
 
 #include <QCoreApplication>
-#include <QTimer>
 
 #include <exception>
 
@@ -14,17 +13,14 @@ namespace {
 
 // Posts a plan and, for a 3-D preview, simulates its finished part; runs on
 // the worker thread, so it touches nothing but its arguments.
-PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options, bool simulateStock,
-                                   sim::StockGrid grid)
+PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options,
+                                   sim::StockCache* stock, sim::StockGrid grid)
 {
     PlanRunner::Result r;
     PostedProgram prog = postProcess(plan->steps, plan->tools, options);
     r.nc = QString::fromStdString(prog.nc);
     r.lines = std::move(prog.lines);
-    if (simulateStock) {
-        r.stock = std::make_shared<sim::StockSimulation>(*plan, grid);
-        r.stock->finished();  // the part as the preview first shows it
-    }
+    if (stock) r.stock = stock->simulation(plan, grid);  // the part as the preview first shows it
     r.plan = std::move(plan);
     return r;
 }
@@ -33,21 +29,22 @@ PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostO
 
 PlanRunner::Settings PlanRunner::settings() const
 {
-    return {library_, dialect_.toStdString(), fileStem_.toStdString(), simulateStock_, stockGrid_};
+    return {library_, dialect_.toStdString(), fileStem_.toStdString(), simulateStock_, stockGrid_, planCache_.get(),
+            stockCache_.get()};
 }
 
 PlanRunner::Result PlanRunner::run(const Work& w, const Settings& s)
 {
     try {
         std::shared_ptr<const Plan> plan = w.plan;
-        if (w.job) plan = std::make_shared<const Plan>(planJob(*w.job, s.library));
+        if (w.job) plan = std::make_shared<const Plan>(planJob(*w.job, s.library, {}, s.planCache));
         if (!plan->ok()) {
             Result r;
             r.nc = QObject::tr("(no program: the job has input errors)");
             return r;
         }
-        return postAndSimulate(plan, postOptions(*plan, s.dialect, std::nullopt, 1000, s.fileStem), s.simulateStock,
-                               s.stockGrid);
+        return postAndSimulate(plan, postOptions(*plan, s.dialect, std::nullopt, 1000, s.fileStem),
+                               s.simulateStock ? s.stockCache : nullptr, s.stockGrid);
     } catch (const std::exception& e) {
         Result r;
         r.nc = QObject::tr("(no program: %1)").arg(QString::fromUtf8(e.what()));
@@ -55,13 +52,10 @@ PlanRunner::Result PlanRunner::run(const Work& w, const Settings& s)
     }
 }
 
-PlanRunner::PlanRunner(QObject* parent) : QObject(parent), debounce_(new QTimer(this))
+PlanRunner::PlanRunner(QObject* parent) : QObject(parent)
 {
     pool_.setMaxThreadCount(1);
     reloadLibrary();
-    debounce_->setSingleShot(true);
-    debounce_->setInterval(0);  // next event-loop pass: edits of one batch coalesce
-    connect(debounce_, &QTimer::timeout, this, &PlanRunner::startFull);
 }
 
 PlanRunner::~PlanRunner() { pool_.waitForDone(); }
@@ -84,37 +78,56 @@ void PlanRunner::update(const Job& job)
     auto checkedOnce = std::make_shared<const CheckedJob>(checkedJob(job, TechnologyTable::builtIn(), library_));
     emit checked(checkedOnce->diagnostics);
     if (!checkedOnce->ok()) {
-        debounce_->stop();
         pendingFull_ = false;
         emit stepsPlanned(nullptr);
         emit programReady(nullptr, tr("(no program: the job has input errors)"), {});
         return;
     }
+    std::shared_ptr<const Plan> steps;
     try {
         PlanOptions fastOptions;
         fastOptions.withToolPaths = false;
-        emit stepsPlanned(std::make_shared<const Plan>(planJob(*checkedOnce, library_, fastOptions)));
+        steps = std::make_shared<const Plan>(planJob(*checkedOnce, library_, fastOptions));
     } catch (const std::exception& e) {
         emit checked({Diagnostic{Severity::Error, std::nullopt, "", "", std::string("planning failed: ") + e.what()}});
         return;
     }
-    schedule({std::move(checkedOnce), nullptr});
+    // The worker first: it plans while the step list is shown.
+    schedule({std::move(checkedOnce), nullptr}, true);
+    emit stepsPlanned(std::move(steps));
 }
 
-void PlanRunner::schedule(Work work)
+void PlanRunner::schedule(Work work, bool now)
 {
     pending_ = std::move(work);
     pendingFull_ = true;
-    debounce_->start();
+    if (now && inFlight_ < 0 && !startQueued_) startFull();
+    else queueStart();
+}
+
+void PlanRunner::queueStart()
+{
+    if (startQueued_) return;
+    startQueued_ = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            startQueued_ = false;
+            startFull();
+        },
+        Qt::QueuedConnection);
 }
 
 void PlanRunner::repost()
 {
-    if (!full_) return;
+    if (!full_ && inFlight_ < 0) return;  // a pending edit's start reads the new settings
     ++generation_;
     // The tool paths depend on neither the dialect nor the program name: only
-    // the post runs again (unless an edit is pending, whose plan comes anyway).
-    schedule({pendingFull_ ? pending_.job : nullptr, full_});
+    // the post runs again (unless an edit is pending, whose plan comes anyway,
+    // or one is being planned with the settings before: it is planned again,
+    // its units and paths from the cache, and its result dropped).
+    const auto job = pendingFull_ ? pending_.job : inFlight_ >= 0 ? running_.job : nullptr;
+    schedule({job, job ? nullptr : full_});
 }
 
 void PlanRunner::setDialect(const QString& dialect)
@@ -145,6 +158,7 @@ void PlanRunner::startFull()
     pendingFull_ = false;
     const int generation = generation_;
     inFlight_ = generation;
+    running_ = pending_;
     pool_.start([this, generation, work = pending_, settings = settings()] {
         const Result r = run(work, settings);
         QMetaObject::invokeMethod(this, [this, generation, r] { finished(generation, r); }, Qt::QueuedConnection);
@@ -155,7 +169,7 @@ void PlanRunner::finished(int generation, const Result& r)
 {
     if (generation == inFlight_) inFlight_ = -1;
     if (generation == generation_) publish(r);
-    if (pendingFull_ && !debounce_->isActive()) startFull();
+    if (pendingFull_ && !startQueued_) startFull();
 }
 
 void PlanRunner::publish(const Result& r)
@@ -169,17 +183,18 @@ void PlanRunner::publish(const Result& r)
 
 void PlanRunner::flush()
 {
-    debounce_->stop();
     pool_.waitForDone();
     if (!pendingFull_) {
         if (inFlight_ >= 0) {  // its result is queued: deliver it now
             QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
         }
-        return;
+    } else {
+        pendingFull_ = false;  // a queued start finds nothing to do
+        inFlight_ = -1;        // the worker is done; its result, still queued, is older than this one
+        ++generation_;         // anything still queued is older than this
+        publish(run(pending_, settings()));
     }
-    pendingFull_ = false;
-    ++generation_;  // anything still queued is older than this
-    publish(run(pending_, settings()));
+    emit flushed();
 }
 
 }  // namespace taiwa::ui

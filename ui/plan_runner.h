@@ -2,10 +2,16 @@
 // checked once (checkedJob) on the GUI thread, and the fast step list planned
 // from that checked job (planJob without tool paths; a few milliseconds);
 // the full plan with tool paths and the NC program follow on a worker thread
-// at the next event-loop pass, from the same checked job, newest edit wins:
-// results of an edit that has been superseded are dropped. A change of
+// from the same checked job, started at once when the worker is free (it
+// plans while the GUI thread shows the step list), newest edit wins: results
+// of an edit that has been superseded are dropped, and edits made while the
+// worker plans wait for it and only the newest is planned next. There is no
+// fixed delay to scale with the job's size; a burst of edits in one
+// event-loop turn plans the first and the last. A change of
 // dialect or program name only re-posts the last plan. For a 3-D preview the
-// worker also simulates the stock of the finished part.
+// worker also simulates the stock of the finished part. The worker keeps
+// what it planned and simulated per unit (PlanCache, StockCache): an edit of
+// one unit re-plans and re-cuts that unit only.
 #pragma once
 
 #include "job/job_check.h"
@@ -13,7 +19,9 @@
 #include "model/job.h"
 #include "model/tool.h"
 #include "pipeline/pipeline.h"
+#include "pipeline/plan_cache.h"
 #include "post/post.h"
+#include "sim/stock_cache.h"
 #include "sim/stock_simulation.h"
 
 #include <QObject>
@@ -22,8 +30,6 @@
 
 #include <memory>
 #include <vector>
-
-class QTimer;
 
 namespace taiwa::ui {
 
@@ -51,9 +57,14 @@ public:
     void setFileStem(const QString& stem);
     // The last full plan (nullptr until one ran without errors).
     std::shared_ptr<const Plan> fullPlan() const { return full_; }
-    // Runs a pending full plan at once, on the calling thread (export, tests).
+    // Runs a pending full plan at once, on the calling thread (export,
+    // tests), then emits flushed().
     void flush();
     bool isBusy() const { return inFlight_ >= 0 || pendingFull_; }
+    // What the last full plan reused (pipeline/plan_cache.h, sim/stock_cache.h);
+    // read it only while !isBusy().
+    const PlanCache::Counts& planCounts() const { return planCache_->lastCounts(); }
+    const sim::StockCache::Counts& stockCounts() const { return stockCache_->lastCounts(); }
 
     // Whether the worker also simulates the stock of the finished part (for
     // a 3-D preview; off by default).
@@ -80,6 +91,9 @@ signals:
     // plan nullptr: no program; nc says why.
     void programReady(std::shared_ptr<const taiwa::Plan> plan, const QString& nc,
                       const std::vector<taiwa::BlockSource>& lines);
+    // flush() is done: whatever a view put off (the window's NC text) is
+    // wanted now.
+    void flushed();
 
 private:
     // What the worker does next: plan and post a checked job, or re-post the
@@ -88,7 +102,10 @@ private:
         std::shared_ptr<const CheckedJob> job;  // null: re-post `plan`
         std::shared_ptr<const Plan> plan;
     };
-    void schedule(Work work);
+    // Plans `work` next: `now` (an edit) starts the worker at once when it is
+    // free, else a queued call starts it.
+    void schedule(Work work, bool now = false);
+    void queueStart();
     void repost();
     void startFull();
     void finished(int generation, const Result& r);
@@ -101,6 +118,10 @@ private:
         std::string fileStem;
         bool simulateStock = false;
         sim::StockGrid stockGrid;
+        // The worker's caches: one plan runs at a time (on the worker, or
+        // in flush() after the worker is done).
+        PlanCache* planCache = nullptr;
+        sim::StockCache* stockCache = nullptr;
     };
     Settings settings() const;
     static Result run(const Work& w, const Settings& s);
@@ -112,13 +133,16 @@ private:
     sim::StockGrid stockGrid_;
     QString fileStem_;
     Work pending_;
+    Work running_;  // what the worker was last started on
     bool pendingFull_ = false;
     int generation_ = 0;
     int inFlight_ = -1;  // generation being planned on the worker, -1: none
-    QTimer* debounce_;
+    bool startQueued_ = false;  // a call of startFull is queued
     QThreadPool pool_;
     std::shared_ptr<const Plan> full_;
     std::shared_ptr<sim::StockSimulation> stock_;
+    std::unique_ptr<PlanCache> planCache_ = std::make_unique<PlanCache>();
+    std::unique_ptr<sim::StockCache> stockCache_ = std::make_unique<sim::StockCache>();
 };
 
 }  // namespace taiwa::ui

@@ -31,6 +31,7 @@
 
 #include <QActionGroup>
 #include <QCloseEvent>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QTimer>
 
@@ -337,14 +338,34 @@ void StationWindow::wire()
         showDiagnostics();
         showStale();
     });
-    connect(runner_, &PlanRunner::stepsPlanned, steps_, &StepPanel::setPlan);
+    catchUpTimer_ = new QTimer(this);
+    catchUpTimer_->setSingleShot(true);
+    connect(catchUpTimer_, &QTimer::timeout, this, &StationWindow::catchUp);
+    // An edit: the step list at once; the NC text of an older plan still put
+    // off is not wanted any more.
+    connect(runner_, &PlanRunner::stepsPlanned, this, [this](std::shared_ptr<const Plan> plan) {
+        catchUpTimer_->stop();
+        later_.reset();
+        steps_->setPlan(plan);
+    });
+    // The full plan: the 3-D view first (it renders at the next event-loop
+    // pass), the NC text and the step list's times after it (catchUp), as
+    // soon as the GUI is free when the last catch-up fit in a frame (33 ms);
+    // for a job whose tape takes the GUI longer, once the typing pauses for
+    // twice that long (at most 1 s), so that keystrokes are not kept waiting
+    // for a tape about to be replaced.
     connect(runner_, &PlanRunner::programReady, this,
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
-                if (plan) nc_->setProgram(nc, lines);  // a milling or a lathe tape
-                else if (!hasErrors(diagnostics_)) nc_->setMessage(nc);  // with input errors the last program stays, marked stale
+                if (plan) {
+                    later_ = Later{plan, nc, lines};
+                    catchUpTimer_->start(catchUpMs_ < 33 ? 0 : static_cast<int>(std::min<qint64>(2 * catchUpMs_, 1000)));
+                } else if (!hasErrors(diagnostics_)) {
+                    nc_->setMessage(nc);  // with input errors the last program stays, marked stale
+                }
                 onProgram(plan);
                 showStale();
             });
+    connect(runner_, &PlanRunner::flushed, this, &StationWindow::catchUp);
     // One dialect, the job's (docs/job-format.md `dialect`): the chooser
     // shows it, the program on view is posted in it, the export offers it.
     // Choosing another is an edit of the job (undoable); a new job takes the
@@ -513,11 +534,24 @@ void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
     verify_->setPlan(plan);  // the findings of the plan before are gone with it
     if (preview_) {
         preview_->setPlan(plan, runner_->stockSimulation());  // published together with the plan
+        preview_->setSelectedStep(steps_->selectedStep());     // the step panel gets the plan later
         preview_->markPoint(std::nullopt);
         // A lathe job's view is a section already.
         section_->setStock(plan->mmJob.bar ? std::nullopt : std::optional<Stock>(plan->mmJob.stock), plan->job.lengthUnit);
     }
-    steps_->setPlan(plan);  // the same steps, now with times; re-selects the step in the preview
+}
+
+void StationWindow::catchUp()
+{
+    catchUpTimer_->stop();
+    if (!later_) return;
+    QElapsedTimer took;
+    took.start();
+    const Later l = std::move(*later_);
+    later_.reset();
+    nc_->setProgram(l.nc, l.lines);  // a milling or a lathe tape
+    steps_->setPlan(l.plan);         // the same steps, now with times; re-selects the step in the preview
+    catchUpMs_ = took.elapsed();
 }
 
 void StationWindow::showStale()

@@ -13,9 +13,11 @@
 #include <memory>
 #include <string>
 #include <optional>
+#include <vector>
 
 class QLabel;
 class QStackedWidget;
+class QTimer;
 class QTabWidget;
 
 namespace taiwa::ui {
@@ -77,6 +79,9 @@ private:
     void onUnitSelected(int unit);
     void onFieldEdited(UnitForm* form, int field, std::optional<double> value);
     void onProgram(std::shared_ptr<const Plan> plan);
+    // The NC text and the step list's times of the newest plan, put off
+    // until the 3-D view has it (docs/station.md, "From a keystroke to the views").
+    void catchUp();
     void showDiagnostics();
     void editTechnology();
     void showToolLibrary();
@@ -107,6 +112,14 @@ private:
     NcView* nc_;
     VerificationPanel* verify_;
     Diagnostics diagnostics_;
+    struct Later {
+        std::shared_ptr<const Plan> plan;
+        QString nc;
+        std::vector<BlockSource> lines;
+    };
+    std::optional<Later> later_;  // what catchUp() shows
+    QTimer* catchUpTimer_ = nullptr;
+    qint64 catchUpMs_ = 0;  // how long the last catchUp() took
 };
 
 }  // namespace taiwa::ui

@@ -3,6 +3,7 @@
 // module's door (decomposition and tool choice), the steps of the whole job
 // ordered, and each step given its path and time.
 #include "pipeline/pipeline.h"
+#include "pipeline/plan_cache.h"
 
 #include "machine/motion_time.h"
 
@@ -31,9 +32,35 @@ Diagnostic unitError(const Job& job, int unit, std::string field, std::string me
             std::move(message)};
 }
 
+// One unit through its module's door; a turning unit's deformed profile
+// first: its steps cut it.
+UnitPlan planUnit(const Plan& plan, int u, const std::vector<Tool>& library, const Machine* machine)
+{
+    UnitPlan r;
+    const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
+    UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
+    std::optional<TurnedPart> part = moduleKind(module).turned(module, ctx);
+    if (part) ctx.turned = &*part;
+    r.steps = moduleKind(module).plan(module, ctx, r.diagnostics);
+    if (auto setup = moduleKind(module).setup(module, ctx)) {
+        setup->workOffset = plan.job.workOffset;
+        r.setup = std::move(*setup);
+    }
+    if (part) {
+        part->name = plan.job.units[static_cast<std::size_t>(u)].name;
+        r.turned = std::move(*part);
+    }
+    return r;
+}
+
 }  // namespace
 
 Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options)
+{
+    return planJob(std::move(checked), library, options, nullptr);
+}
+
+Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options, PlanCache* cache)
 {
     Plan plan;
     plan.job = std::move(checked.job);
@@ -48,22 +75,16 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     std::vector<Step> unordered;
     unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
     const Machine* machine = findMachine(plan.mmJob.machine);
+    if (cache) cache->begin(plan, library, options.path);
     for (const int u : plan.unitOrder) {
-        const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
-        UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
-        // A turning unit's deformed profile first: its steps cut it.
-        std::optional<TurnedPart> part = moduleKind(module).turned(module, ctx);
-        if (part) ctx.turned = &*part;
-        auto steps = moduleKind(module).plan(module, ctx, plan.diagnostics);
-        if (auto setup = moduleKind(module).setup(module, ctx)) {
-            setup->workOffset = plan.job.workOffset;
-            plan.setups.push_back(std::move(*setup));
-        }
-        if (part) {
-            part->name = plan.job.units[static_cast<std::size_t>(u)].name;
-            plan.turned.push_back(std::move(*part));
-        }
-        unordered.insert(unordered.end(), std::make_move_iterator(steps.begin()), std::make_move_iterator(steps.end()));
+        const auto compute = [&] { return planUnit(plan, u, library, machine); };
+        UnitPlan fresh;
+        const UnitPlan& done = cache ? cache->unit(plan, u, library, compute) : (fresh = compute());
+        plan.diagnostics.insert(plan.diagnostics.end(), done.diagnostics.begin(), done.diagnostics.end());
+        if (done.setup) plan.setups.push_back(*done.setup);
+        if (done.turned) plan.turned.push_back(*done.turned);
+        if (cache) unordered.insert(unordered.end(), done.steps.begin(), done.steps.end());
+        else unordered.insert(unordered.end(), std::make_move_iterator(fresh.steps.begin()), std::make_move_iterator(fresh.steps.end()));
     }
     std::sort(plan.setups.begin(), plan.setups.end(), [](const WorkSetup& a, const WorkSetup& b) { return a.unit < b.unit; });
     std::sort(plan.turned.begin(), plan.turned.end(), [](const TurnedPart& a, const TurnedPart& b) { return a.unit < b.unit; });
@@ -122,16 +143,28 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         return plan;
     }
 
-    // The paths of the steps are independent of each other: compute them on
-    // every core (at most kMaxPathThreads).
+    // The paths of the steps are independent of each other: those the cache
+    // does not have are computed on every core (at most kMaxPathThreads).
     const bool motion = machine && hasMotionModel(*machine);
+    std::vector<std::size_t> todo;
+    todo.reserve(plan.steps.size());
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        Step& step = plan.steps[i];
+        if (step.turn) {  // turning steps come with their paths and plain times
+            if (motion) step.machineMinutes = turnMachineMinutes(*step.turn, *machine);
+            continue;
+        }
+        if (const StepPath* known = cache ? cache->findPath(step) : nullptr) {
+            step.path = known->path;
+            step.minutes = known->minutes;
+            step.machineMinutes = known->machineMinutes;
+            continue;
+        }
+        todo.push_back(i);
+    }
     const auto work = [&](std::size_t first, std::size_t stride) {
-        for (std::size_t i = first; i < plan.steps.size(); i += stride) {
-            Step& step = plan.steps[i];
-            if (step.turn) {  // turning steps come with their paths and plain times
-                if (motion) step.machineMinutes = turnMachineMinutes(*step.turn, *machine);
-                continue;
-            }
+        for (std::size_t t = first; t < todo.size(); t += stride) {
+            Step& step = plan.steps[todo[t]];
             const Tool& tool = *findTool(library, step.tool->toolId);
             step.path = makeToolPath(step, tool, plan.technology, options.path);
             const SpeedsFeeds sf = *stepSpeedsFeeds(step, tool, plan.mmJob.material);
@@ -139,11 +172,19 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
             if (motion) step.machineMinutes = machineMinutes(*step.path, {sf.feed, sf.plungeFeed}, *machine);
         }
     };
-    const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, kMaxPathThreads);
+    const std::size_t threads =
+        std::clamp<std::size_t>(std::min<std::size_t>(std::thread::hardware_concurrency(), todo.size()), 1, kMaxPathThreads);
     std::vector<std::future<void>> running;
     for (std::size_t t = 1; t < threads; ++t) running.push_back(std::async(std::launch::async, work, t, threads));
     work(0, threads);
     for (auto& r : running) r.get();  // rethrows a worker's exception here
+    if (cache) {
+        for (const std::size_t i : todo) {
+            const Step& step = plan.steps[i];
+            cache->keepPath(step, {*step.path, *step.minutes, step.machineMinutes});
+        }
+        cache->end();
+    }
     for (const auto& step : plan.steps) plan.totalMinutes += *step.minutes;
     plan.totalMinutes += plan.toolChanges * options.toolChangeSeconds / 60.0;
     if (motion && std::all_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.machineMinutes.has_value(); })) {

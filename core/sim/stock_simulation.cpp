@@ -80,6 +80,14 @@ StockSimulation::Snapshot StockSimulation::finished()
     return keep(n - 1, std::move(field));
 }
 
+void StockSimulation::setFinished(Snapshot part)
+{
+    if (stepCount() == 0) return;  // the fresh stock
+    if (!part || part->columns() != initial_->columns() || part->rows() != initial_->rows())
+        throw std::invalid_argument("StockSimulation::setFinished: not a part on this simulation's grid");
+    snapshots_.insert_or_assign(stepCount() - 1, std::move(part));
+}
+
 StockSimulation::Snapshot StockSimulation::afterMove(int k, int move)
 {
     if (k < 0 || k >= stepCount())

@@ -51,6 +51,9 @@ public:
     // only lowers cells, so the order of the cuts does not matter: the
     // result is the same, cell for cell, as cutting them in order).
     Snapshot finished();
+    // The finished part worked out elsewhere (sim/stock_cache.h), which must
+    // be finished()'s, cell for cell: finished() then returns it.
+    void setFinished(Snapshot part);
     // The stock after moves 0..move of step k (move -1: before the step; a
     // move past the last: after it): the material coming off block by
     // block. The last one asked for is kept, so that asking for a later
