@@ -105,6 +105,11 @@ class TestGuiLanguages : public QObject {
         QCOMPARE(coreMessage(depth), QString("深さが 0 mm です。0 より大きくしてください (上面から下へ測ります)"));
         QCOMPARE(coreMessage(msg::contourOpen("K2", "pocket", "outline")),
                  QString("K2 は開いた輪郭です。ポケットの外形は閉じていなければなりません (始点と終点のない輪郭)"));
+        // A verification finding: its step's label, place and kind each translated.
+        QCOMPARE(coreMessage("step 2 (Roughing I, unit 1): rapid (G0) 1.000 mm into stock at X1.000 Y2.000 Z3.000, move 4, "
+                             "tape line 20"),
+                 QString("工程 2 (荒加工 I、ユニット 1): X1.000 Y2.000 Z3.000 で早送り (G0) が素材に 1.000 mm 入ります、"
+                         "移動 4、テープ 20 行目"));
         speak("zh");
         QCOMPARE(coreMessage(depth), QString("深度为 0 mm；必须大于零（自顶面向下测量）"));
     }

@@ -124,7 +124,13 @@ QString translateWord(const QString& text)
     const QString msg = QCoreApplication::translate(kContext, source.constData());
     if (msg != text)
         return msg;
-    return QCoreApplication::translate("taiwa::CoreTexts", source.constData());
+    const QString word = QCoreApplication::translate("taiwa::CoreTexts", source.constData());
+    if (word != text) return word;
+    // A step's label ("Roughing II"): its kind translated, its number as it is (ui/core_texts.h).
+    static const QRegularExpression label(QStringLiteral("^(.+) ([IVXLC]+)$"));
+    if (const auto m = label.match(text); m.hasMatch())
+        if (const QString kind = translateWord(m.captured(1)); kind != m.captured(1)) return kind + " " + m.captured(2);
+    return text;
 }
 
 } // namespace

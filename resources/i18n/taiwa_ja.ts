@@ -2949,6 +2949,66 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>形状が部品を囲む一続きになっていません: {} (行 {}) が閉じる線 {} に X{} Z{} で達します</translation>
         </message>
+        <message>
+            <source>the job</source>
+            <translation>ジョブ</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {})</source>
+            <translation>工程 {} ({}、ユニット {})</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {} '{}')</source>
+            <translation>工程 {} ({}、ユニット {} '{}')</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm² of the half-section</source>
+            <translation>{1} で仕上がり形状に深さ {0} の削り込み、半断面で {2} mm²</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm²</source>
+            <translation>{1} で仕上がり形状に深さ {0} の削り込み、面積 {2} mm²</translation>
+        </message>
+        <message>
+            <source>the tool's {} runs {} into stock at {}</source>
+            <translation>{2} で工具の{0}が素材に {1} 入ります</translation>
+        </message>
+        <message>
+            <source>rapid (G0) {} into stock at {}</source>
+            <translation>{1} で早送り (G0) が素材に {0} 入ります</translation>
+        </message>
+        <message>
+            <source>the paths span {} more along {} than the machine '{}' travels</source>
+            <translation>工具経路が {1} 方向で機械 '{2}' のストロークより {0} 長くなっています</translation>
+        </message>
+        <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残すべき量より最大 {} 厚く削り残しがあります。最も厚いのは {}、半断面で {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残すべき量より最大 {} 高く削り残しがあります。最も高いのは {}、面積 {} mm²</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}, tape line {}</source>
+            <translation>{}: {}、移動 {}、テープ {} 行目</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}</source>
+            <translation>{}: {}、移動 {}</translation>
+        </message>
+        <message>
+            <source>{}: {}, tape line {}</source>
+            <translation>{}: {}、テープ {} 行目</translation>
+        </message>
+        <message>
+            <source>holder</source>
+            <translation>ホルダ</translation>
+        </message>
+        <message>
+            <source>shank</source>
+            <translation>シャンク</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::FieldSpec</name>

@@ -2949,6 +2949,66 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>轮廓不是围绕零件的一条链：{}（第 {} 行）在 X{} Z{} 处到达封闭线 {}</translation>
         </message>
+        <message>
+            <source>the job</source>
+            <translation>作业</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {})</source>
+            <translation>工序 {}（{}，单元 {}）</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {} '{}')</source>
+            <translation>工序 {}（{}，单元 {} '{}'）</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm² of the half-section</source>
+            <translation>在 {1} 处切入成品 {0}，半剖面上面积 {2} mm²</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm²</source>
+            <translation>在 {1} 处切入成品 {0}，面积 {2} mm²</translation>
+        </message>
+        <message>
+            <source>the tool's {} runs {} into stock at {}</source>
+            <translation>刀具的{0}在 {2} 处切入毛坯 {1}</translation>
+        </message>
+        <message>
+            <source>rapid (G0) {} into stock at {}</source>
+            <translation>快速移动（G0）在 {1} 处进入毛坯 {0}</translation>
+        </message>
+        <message>
+            <source>the paths span {} more along {} than the machine '{}' travels</source>
+            <translation>刀路沿 {1} 方向比机床 '{2}' 的行程多出 {0}</translation>
+        </message>
+        <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残留材料比应留量最多厚 {}，最厚处在 {}，半剖面上面积 {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残留材料比应留量最多高 {}，最高处在 {}，面积 {} mm²</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}, tape line {}</source>
+            <translation>{}：{}，移动 {}，程序第 {} 行</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}</source>
+            <translation>{}：{}，移动 {}</translation>
+        </message>
+        <message>
+            <source>{}: {}, tape line {}</source>
+            <translation>{}：{}，程序第 {} 行</translation>
+        </message>
+        <message>
+            <source>holder</source>
+            <translation>刀柄</translation>
+        </message>
+        <message>
+            <source>shank</source>
+            <translation>刀杆</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::FieldSpec</name>
