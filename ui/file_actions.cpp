@@ -1,6 +1,7 @@
 // File menu work: open/save, recent files, unsaved-changes prompt, recovery,
 // export.
 #include "ui/file_actions.h"
+#include "ui/core_messages.h"
 
 #include "job/step_job.h"
 
@@ -94,7 +95,10 @@ bool FileActions::openPath(const QString& path)
     const JobReadResult r = readJobFile(path.toStdString());
     if (!r.job) {
         QString why;
-        for (const Diagnostic& d : r.diagnostics) why += QString::fromStdString(format(path.toStdString(), d)) + "\n";
+        for (Diagnostic d : r.diagnostics) {
+            d.message = coreMessage(d.message).toStdString();
+            why += QString::fromStdString(format(path.toStdString(), d)) + "\n";
+        }
         if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
         else QMessageBox::warning(window_, tr("Cannot open job"), why);
         return false;

@@ -1,5 +1,6 @@
 // The job properties box.
 #include "ui/job_properties.h"
+#include "ui/core_messages.h"
 
 #include "machine/machine.h"
 #include "model/technology.h"
@@ -211,13 +212,14 @@ void JobProperties::showDiagnostics(const Diagnostics& jobLevel)
         QString msg = bad_[i] ? tr("not a number") : QString();
         for (const Diagnostic& d : jobLevel)
             if (d.field == stockKey(doc_->job(), i) || (i == 0 && d.field == "stock.shape") || (i == 0 && d.field == "machine"))
-                msg = QString::fromStdString(d.message);
+                msg = coreMessage(d.message);
         stock_[i]->setStyleSheet(msg.isEmpty() ? QString() : QStringLiteral("background: #ffd0d0;"));
         stock_[i]->setToolTip(msg);
     }
     QString jaws = badJaws_ ? tr("not a number") : QString();
     for (const Diagnostic& d : jobLevel)
-        if (d.field == "clamping.height" || d.field == "clamping") jaws = QString::fromStdString(d.message);
+        if (d.field == "clamping.height" || d.field == "clamping")
+            jaws = coreMessage(d.message);
     jaws_->setStyleSheet(jaws.isEmpty() ? QString() : QStringLiteral("background: #ffd0d0;"));
     jaws_->setToolTip(jaws.isEmpty() ? tr("How far up the block's sides the jaws grip, from its bottom") : jaws);
     bool badMaterial = false;

@@ -2,10 +2,19 @@
 #include "ui/language.h"
 
 #include <QCoreApplication>
+#include <QLibraryInfo>
 #include <QSettings>
 #include <QTranslator>
 
 namespace taiwa::ui {
+
+namespace {
+QString& installed()
+{
+    static QString code;
+    return code;
+}
+} // namespace
 
 std::vector<std::pair<QString, QString>> availableLanguages()
 {
@@ -25,6 +34,7 @@ void saveLanguage(const QString& code) { QSettings().setValue("language", code);
 
 bool installTranslator(QCoreApplication& app)
 {
+    installed().clear();
     const QString code = savedLanguage();
     if (code == "en") return false;
     auto* translator = new QTranslator(&app);
@@ -33,7 +43,25 @@ bool installTranslator(QCoreApplication& app)
         qWarning("taiwa: no translation for language '%s'", qPrintable(code));
         return false;
     }
-    return QCoreApplication::installTranslator(translator);
+    if (!QCoreApplication::installTranslator(translator))
+        return false;
+    installed() = code;
+    // Qt's own texts (QDialogButtonBox's OK, Cancel, Save; the file dialogs).
+    auto* qt = new QTranslator(&app);
+    const QString qtName = QStringLiteral("qtbase_%1").arg(code == "zh" ? QStringLiteral("zh_CN") : code);
+    if (qt->load(qtName, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QCoreApplication::installTranslator(qt);
+    else {
+        delete qt;
+        qWarning("taiwa: no Qt translation %s in %s (package qt6-translations-l10n)", qPrintable(qtName),
+                 qPrintable(QLibraryInfo::path(QLibraryInfo::TranslationsPath)));
+    }
+    return true;
+}
+
+QString installedLanguage()
+{
+    return installed();
 }
 
 }  // namespace taiwa::ui

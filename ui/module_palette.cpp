@@ -1,10 +1,13 @@
 // The module palette and the module drawings (SVG from each module's folder,
-// core/modules/<kind>/<kind>.svg, compiled in as Qt resources).
+// core/modules/<kind>/<kind>.svg, compiled in as Qt resources, their labels
+// in the station's language).
 #include "ui/module_palette.h"
 
 #include "modules/registry.h"
+#include "ui/core_messages.h"
 
 #include <QCoreApplication>
+#include <QFile>
 #include <QGridLayout>
 #include <QPainter>
 #include <QSvgRenderer>
@@ -16,7 +19,8 @@ QPixmap moduleDrawing(const QString& resource, int width) { return moduleDrawing
 
 QPixmap moduleDrawing(const QString& resource, int width, const QString& highlight)
 {
-    QSvgRenderer svg(resource);
+    QFile file(resource);
+    QSvgRenderer svg(file.open(QIODevice::ReadOnly) ? translatedDrawing(file.readAll()) : QByteArray());
     const QSize base = svg.defaultSize().isValid() ? svg.defaultSize() : QSize(420, 220);
     const QSize size(width, width * base.height() / base.width());
     QPixmap pm(size);

@@ -1,5 +1,6 @@
 // The editor of a turned profile (profile_editor.h).
 #include "ui/profile_editor.h"
+#include "ui/core_messages.h"
 
 #include "tools/turning_tools.h"
 #include "turning/allowance.h"
@@ -551,8 +552,9 @@ Diagnostics ProfileEditor::showDiagnostics(const Diagnostics& ofThisUnit)
             unmatched.push_back(d);
             continue;
         }
-        lines << QString::fromStdString(d.message);
-        if (at) red[{table, *at}] = QString::fromStdString(d.message);
+        lines << coreMessage(d.message);
+        if (at)
+            red[{table, *at}] = coreMessage(d.message);
     }
     for (QTableWidget* t : {rows_, allowances_})
         for (int r = 0; r < t->rowCount(); ++r)

@@ -1,6 +1,7 @@
 // The station window: layout and wiring only; the work is done by the
 // document, plan runner, forms, panels and file actions.
 #include "ui/station_window.h"
+#include "ui/core_messages.h"
 
 #include "machine/machine.h"
 
@@ -582,12 +583,12 @@ void StationWindow::showDiagnostics()
     QStringList unitText;
     if (UnitForm* f = currentForm())
         for (const Diagnostic& d : f->showDiagnostics(ofUnit))
-            unitText << QString::fromStdString(d.field.empty() ? d.message : d.field + ": " + d.message);
+            unitText << (d.field.empty() ? QString() : QString::fromStdString(d.field + ": ")) + coreMessage(d.message);
     unitMessages_->setText(unitText.join("\n"));
     jobProps_->showDiagnostics(jobLevel);
     QStringList status;
     for (const Diagnostic& d : jobLevel)
-        status << QString::fromStdString((d.field.empty() ? "" : d.field + ": ") + d.message);
+        status << QString::fromStdString(d.field.empty() ? "" : d.field + ": ") + coreMessage(d.message);
     if (otherUnits > 0) status << tr("%n problem(s) in other units", "", otherUnits);
     if (status.isEmpty()) statusBar()->clearMessage();
     else statusBar()->showMessage(status.join("  •  "));

@@ -1,5 +1,6 @@
 // The step panel: step list, step numbers, play timer and view buttons.
 #include "ui/step_panel.h"
+#include "ui/core_messages.h"
 
 #include "ui/number_text.h"
 #include "ui/core_texts.h"
@@ -300,7 +301,7 @@ void StepPanel::showDetails(int index)
         lines << tr("T%1 %2: %3")
                      .arg(s.tool->toolId)
                      .arg(t ? QString::fromStdString(t->name) : QString())
-                     .arg(QString::fromStdString(s.tool->reason));
+                     .arg(coreMessage(s.tool->reason));
     }
     if (s.minutes && s.machineMinutes)
         lines << tr("Estimated %1 min (%2 min as the machine moves)")

@@ -1,5 +1,6 @@
 // The tool library dialog.
 #include "ui/tool_library_dialog.h"
+#include "ui/core_messages.h"
 
 #include "post/tool_table.h"
 #include "tools/tool_check.h"
@@ -122,18 +123,12 @@ void ToolLibraryDialog::load(bool keepStatus)
     table_->setRowCount(static_cast<int>(tools_.size()));
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         const Tool& t = tools_[i];
-        const QStringList cells{QString::number(t.id),
-                                QString::fromStdString(t.name),
-                                QString::fromUtf8(toString(t.type)),
-                                num(t.diameter),
-                                num(t.cornerRadius),
-                                num(t.taperAngle),
-                                QString::number(t.flutes),
-                                num(t.fluteLength),
-                                num(t.stickout),
-                                QString::fromStdString(t.holder),
-                                num(t.holderDiameter),
-                                num(t.lifeMinutes),
+        const QStringList cells{QString::number(t.id),     QString::fromStdString(t.name),
+                                toolKind(t.type),          num(t.diameter),
+                                num(t.cornerRadius),       num(t.taperAngle),
+                                QString::number(t.flutes), num(t.fluteLength),
+                                num(t.stickout),           QString::fromStdString(t.holder),
+                                num(t.holderDiameter),     num(t.lifeMinutes),
                                 num(t.usedMinutes)};
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
@@ -199,7 +194,7 @@ bool ToolLibraryDialog::change(const std::optional<Tool>& before, const std::opt
 {
     if (after) {
         if (const auto problems = toolProblems(*after); !problems.empty()) {
-            fail(tr("T%1 not saved: %2").arg(after->id).arg(QString::fromStdString(problems.front().message)));
+            fail(tr("T%1 not saved: %2").arg(after->id).arg(coreMessage(problems.front().message)));
             return false;
         }
     }

@@ -1,6 +1,7 @@
 // The generic module form: widgets from FieldSpecs, live parsing and the
 // display of check diagnostics.
 #include "ui/unit_form.h"
+#include "ui/core_messages.h"
 
 #include "ui/core_texts.h"
 
@@ -227,7 +228,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
             red[i] = true;
             if (d.severity == Severity::Error) error[i] = true;
             if (!shown) {  // the message once, under the first widget it names
-                const QString m = QString::fromStdString(d.message);
+                const QString m = coreMessage(d.message);
                 messages[i] = messages[i].isEmpty() ? m : messages[i] + "\n" + m;
                 shown = true;
             }

@@ -1,5 +1,6 @@
 // The station's verification list.
 #include "ui/verification_panel.h"
+#include "ui/core_messages.h"
 
 #include "viz/palette.h"
 
@@ -144,7 +145,7 @@ void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Pla
     showColourMap();
     list_->clear();
     for (const verify::Finding& f : r.findings) {
-        auto* item = new QListWidgetItem(QString::fromStdString(verify::describe(f, *plan)), list_);
+        auto* item = new QListWidgetItem(coreMessage(verify::describe(f, *plan)), list_);
         if (f.fatal()) item->setForeground(QBrush(QColor(192, 0, 0)));
     }
     if (!r.skipped.empty()) {

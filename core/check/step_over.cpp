@@ -2,6 +2,7 @@
 // range as the technology data's, said in the same words.
 #include "check/messages.h"
 #include "check/unit_checks.h"
+#include "model/translate_noop.h"
 
 #include <cmath>
 
@@ -11,10 +12,13 @@ bool checkStepOver(const std::optional<double>& stepOver, Reporter& r)
 {
     if (!stepOver) return true;
     const double v = *stepOver;
-    if (!std::isfinite(v)) r.unit("stepOver", msg::notFinite("the step-over"));
-    else if (v <= 0.0) r.unit("stepOver", msg::technologyNotPositive("the step-over", v, ""));
+    if (!std::isfinite(v))
+        r.unit("stepOver", msg::notFinite(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over")));
+    else if (v <= 0.0)
+        r.unit("stepOver", msg::technologyNotPositive(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over"), v, ""));
     else if (v < kStepOverLow || v > kStepOverHigh)
-        r.unit("stepOver", msg::technologyOutOfRange("the step-over", v, kStepOverLow, kStepOverHigh, "", kStepOverWhy));
+        r.unit("stepOver", msg::technologyOutOfRange(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over"), v,
+                                                     kStepOverLow, kStepOverHigh, "", kStepOverWhy));
     else return true;
     return false;
 }

@@ -1,5 +1,6 @@
 // The job-file reader's messages (see job_messages.h).
 #include "io/job_messages.h"
+#include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
@@ -21,7 +22,9 @@ std::string joined(const std::vector<std::string>& items)
 // What was found: "a string (\"deep\")", "1.5", "true", "an array".
 std::string found(const nlohmann::json& v)
 {
-    if (v.is_string()) return "a string (" + excerpt(v.get_ref<const std::string&>()) + ")";
+    if (v.is_string())
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a string ({})"),
+                           excerpt(v.get_ref<const std::string&>()));
     if (v.is_number() || v.is_boolean()) return v.dump();
     return kindOf(v);
 }
@@ -46,18 +49,24 @@ std::size_t utf8Length(std::string_view s)
 std::string kindOf(const nlohmann::json& v)
 {
     switch (v.type()) {
-    case nlohmann::json::value_t::null: return "null";
-    case nlohmann::json::value_t::object: return "an object";
-    case nlohmann::json::value_t::array: return "an array";
-    case nlohmann::json::value_t::string: return "a string";
-    case nlohmann::json::value_t::boolean: return "a boolean";
+    case nlohmann::json::value_t::null:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "null");
+    case nlohmann::json::value_t::object:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object");
+    case nlohmann::json::value_t::array:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array");
+    case nlohmann::json::value_t::string:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a string");
+    case nlohmann::json::value_t::boolean:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a boolean");
     case nlohmann::json::value_t::number_integer:
     case nlohmann::json::value_t::number_unsigned:
-    case nlohmann::json::value_t::number_float: return "a number";
+    case nlohmann::json::value_t::number_float:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number");
     case nlohmann::json::value_t::binary:
     case nlohmann::json::value_t::discarded: break;
     }
-    return "an unexpected value";
+    return TAIWA_TRANSLATE_NOOP("taiwa::msg", "an unexpected value");
 }
 
 std::string excerpt(std::string_view s)
@@ -93,112 +102,154 @@ std::string oneOf(const std::vector<std::string>& allowed)
 {
     std::vector<std::string> quoted;
     for (const auto& a : allowed) quoted.push_back("\"" + a + "\"");
-    return "one of " + joined(quoted);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "one of {}"), joined(quoted));
 }
 
-std::string fileEmpty() { return "the file is empty"; }
+std::string fileEmpty()
+{
+    return TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file is empty");
+}
 
 std::string fileTooLarge(std::size_t bytes, std::size_t limit)
 {
-    return fmt::format("the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)", bytes,
-                       static_cast<double>(bytes) / (1024.0 * 1024.0), limit, limit / (1024 * 1024));
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                             "the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)"),
+        bytes, static_cast<double>(bytes) / (1024.0 * 1024.0), limit, limit / (1024 * 1024));
 }
 
-std::string fileCannotOpen(const std::string& reason) { return "cannot open: " + reason; }
+std::string fileCannotOpen(const std::string& reason)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot open: {}"), reason);
+}
 
-std::string fileUnreadable(const std::string& reason) { return "cannot read the file: " + reason; }
+std::string fileUnreadable(const std::string& reason)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot read the file: {}"), reason);
+}
 
-std::string notAFile() { return "not a regular file; a job file is a JSON document"; }
+std::string notAFile()
+{
+    return TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a regular file; a job file is a JSON document");
+}
 
 std::string notJson(std::size_t byte, std::size_t line, std::size_t column, const std::string& what)
 {
-    return fmt::format("not a job file: JSON syntax error at byte {} (line {}, column {}): {}", byte, line, column,
-                       what);
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a job file: JSON syntax error at byte {} (line {}, column {}): {}"),
+        byte, line, column, what);
 }
 
 std::string nestedTooDeep(std::size_t byte, std::size_t line, std::size_t column, std::size_t limit)
 {
-    return fmt::format("not a job file: arrays and objects nested more than {} deep at byte {} (line {}, column {})",
-                       limit, byte, line, column);
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP(
+            "taiwa::msg",
+            "not a job file: arrays and objects nested more than {} deep at byte {} (line {}, column {})"),
+        limit, byte, line, column);
 }
 
 std::string numberTooLarge(const std::string& token)
 {
-    return "the number " + excerpt(token) + " is too large for any dimension";
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the number {} is too large for any dimension"),
+                       excerpt(token));
 }
 
 std::string notAnObject(const nlohmann::json& root)
 {
-    return "not a job file: the document is " + kindOf(root) + ", a job is a JSON object";
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a job file: the document is {}, a job is a JSON object"),
+                       kindOf(root));
 }
 
-std::string formatMissing() { return R"(not a job file: it has no "format": "taiwa-job")"; }
+std::string formatMissing()
+{
+    return TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a job file: it has no \"format\": \"taiwa-job\"");
+}
 
 std::string formatWrong(const nlohmann::json& value)
 {
-    return "not a job file: its \"format\" is " + found(value) + R"(, a job has "taiwa-job")";
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a job file: its \"format\" is {}, a job has \"taiwa-job\""),
+        found(value));
 }
 
 std::string versionNewer(long long version, int supported)
 {
-    return fmt::format("written by a newer Taiwa (format version {}); this program reads version {}", version, supported);
+    return fmt::format(TAIWA_TRANSLATE_NOOP(
+                           "taiwa::msg", "written by a newer Taiwa (format version {}); this program reads version {}"),
+                       version, supported);
 }
 
 std::string versionUnknown(long long version, int supported)
 {
-    return fmt::format("format version {} does not exist; this program reads version {}", version, supported);
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg", "format version {} does not exist; this program reads version {}"), version,
+        supported);
 }
 
-std::string missing(const std::string& expected) { return "missing; it must be " + expected; }
+std::string missing(const std::string& expected)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "missing; it must be {}"), expected);
+}
 
 std::string wrongType(const std::string& expected, const nlohmann::json& v)
 {
-    return "must be " + expected + ", found " + found(v);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be {}, found {}"), expected, found(v));
 }
 
-std::string notWhole(const nlohmann::json& v) { return "must be a whole number, found " + found(v); }
+std::string notWhole(const nlohmann::json& v)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be a whole number, found {}"), found(v));
+}
 
 std::string wholeOutOfRange(const nlohmann::json& v)
 {
-    return "must be a whole number from -2147483648 to 2147483647, found " + found(v);
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be a whole number from -2147483648 to 2147483647, found {}"),
+        found(v));
 }
 
 std::string unknownField(const std::string& owner, const std::vector<std::string>& known)
 {
-    return "unknown field; " + owner + " has " + joined(known);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown field; {} has {}"), owner, joined(known));
 }
 
 std::string notOneOf(const std::vector<std::string>& allowed, const nlohmann::json& v)
 {
-    return "must be " + oneOf(allowed) + ", found " + found(v);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be {}, found {}"), oneOf(allowed), found(v));
 }
 
 std::string unknownModule(const std::string& name, const std::vector<std::string>& known)
 {
-    return "unknown module " + excerpt(name) + "; this program knows " + joined(known);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown module {}; this program knows {}"), excerpt(name),
+                       joined(known));
 }
 
 std::string unknownStockShape(const std::string& shape, const std::vector<std::string>& known)
 {
     std::vector<std::string> quoted;
     for (const auto& k : known) quoted.push_back("\"" + k + "\"");
-    return "unknown stock shape " + excerpt(shape) + "; this program knows " + joined(quoted);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown stock shape {}; this program knows {}"),
+                       excerpt(shape), joined(quoted));
 }
 
 std::string cornerCount(std::size_t n)
 {
-    return fmt::format("needs exactly four corner points P1..P4, found {}", n);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "needs exactly four corner points P1..P4, found {}"), n);
 }
 
 std::string notAPoint(const nlohmann::json& v)
 {
-    if (v.is_array()) return fmt::format("must be a point [x, y], found an array of {}", v.size());
-    return "must be a point [x, y], found " + kindOf(v);
+    if (v.is_array())
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be a point [x, y], found an array of {}"),
+                           v.size());
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "must be a point [x, y], found {}"), kindOf(v));
 }
 
 std::string duplicateKey()
 {
-    return "given more than once; say it once so that it is clear which value counts";
+    return TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                "given more than once; say it once so that it is clear which value counts");
 }
 
 }  // namespace taiwa::msg::io

@@ -1,5 +1,6 @@
 // Typed, diagnosing access to the fields of a job document (json_fields.h).
 #include "io/json_fields.h"
+#include "model/translate_noop.h"
 
 #include "io/job_messages.h"
 
@@ -30,7 +31,7 @@ void ObjectFields::error(const std::string& field, const std::string& message) c
 std::optional<double> ObjectFields::numberValue(const json& v, const std::string& field) const
 {
     if (!v.is_number()) {
-        error(field, msg::io::wrongType("a number", v));
+        error(field, msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number"), v));
         return std::nullopt;
     }
     return v.get<double>();
@@ -54,14 +55,14 @@ std::optional<int> ObjectFields::wholeValue(const json& v, const std::string& fi
         else return static_cast<int>(d);
         return std::nullopt;
     }
-    error(field, msg::io::wrongType("a whole number", v));
+    error(field, msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number"), v));
     return std::nullopt;
 }
 
 std::optional<double> ObjectFields::number(const char* key) const
 {
     if (const json* v = find(key)) return numberValue(*v, key);
-    error(key, msg::io::missing("a number"));
+    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number")));
     return std::nullopt;
 }
 
@@ -80,7 +81,7 @@ std::optional<double> ObjectFields::optionalNumber(const char* key) const
 std::optional<int> ObjectFields::whole(const char* key) const
 {
     if (const json* v = find(key)) return wholeValue(*v, key);
-    error(key, msg::io::missing("a whole number"));
+    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number")));
     return std::nullopt;
 }
 
@@ -93,8 +94,10 @@ int ObjectFields::whole(const char* key, int fallback) const
 std::optional<std::string> ObjectFields::string(const char* key) const
 {
     const json* v = find(key);
-    if (!v) error(key, msg::io::missing("a string"));
-    else if (!v->is_string()) error(key, msg::io::wrongType("a string", *v));
+    if (!v)
+        error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a string")));
+    else if (!v->is_string())
+        error(key, msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a string"), *v));
     else return v->get<std::string>();
     return std::nullopt;
 }
@@ -134,7 +137,7 @@ std::optional<Point2> ObjectFields::point(const json& v, const std::string& fiel
 std::optional<Point2> ObjectFields::point(const char* key) const
 {
     if (const json* v = find(key)) return point(*v, key);
-    error(key, msg::io::missing("a point [x, y]"));
+    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]")));
     return std::nullopt;
 }
 
@@ -144,7 +147,7 @@ std::map<std::string, int> ObjectFields::wholeMap(const char* key) const
     const json* v = find(key);
     if (!v) return out;
     if (!v->is_object()) {
-        error(key, msg::io::wrongType("an object", *v));
+        error(key, msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return out;
     }
     for (const auto& [name, value] : v->items()) {

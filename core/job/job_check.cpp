@@ -4,6 +4,7 @@
 // jobTechnology gives the technology data in force.
 #include "job/job_check.h"
 #include "job/figure_contours.h"
+#include "model/translate_noop.h"
 
 #include "check/messages.h"
 #include "check/unit_checks.h"
@@ -88,7 +89,9 @@ bool checkBar(const BarStock& mm, const Machine* machine, LengthUnit shown, Diag
 // so that the top face and what is cut from it stand clear of the jaws.
 void checkClamping(const Clamping& mm, const Stock* stock, LengthUnit shown, Diagnostics& out)
 {
-    if (!std::isfinite(mm.height)) out.push_back(jobError("clamping.height", msg::notFinite("the jaws' height")));
+    if (!std::isfinite(mm.height))
+        out.push_back(
+            jobError("clamping.height", msg::notFinite(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the jaws' height"))));
     else if (mm.height <= 0.0)
         out.push_back(jobError("clamping.height", "the jaws' height is " + msg::quote({mm.height, shown}) +
                                                       "; the vice must grip the block: give a height above 0"));
@@ -109,11 +112,13 @@ struct TechnologyRange {
 };
 constexpr TechnologyRange kTechnologyRanges[] = {
     {"alpha1", "α1", 0.0, 50.0, "the pilot hole stops α1 above the floor"},
-    {"alpha2", "α2", 0.0, 20.0, "the wall allowance roughing leaves"},
-    {"alpha3", "α3", 0.0, 20.0, "the wall allowance semi-finishing leaves"},
-    {"beta2", "β2", 0.0, 20.0, "the floor allowance roughing leaves"},
-    {"gamma", "γ", 0.01, 2.0, "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
-    {"stepOver", "the step-over", check::kStepOverLow, check::kStepOverHigh, check::kStepOverWhy},
+    {"alpha2", "α2", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the wall allowance roughing leaves")},
+    {"alpha3", "α3", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the wall allowance semi-finishing leaves")},
+    {"beta2", "β2", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the floor allowance roughing leaves")},
+    {"gamma", "γ", 0.01, 2.0,
+     "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
+    {"stepOver", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over"), check::kStepOverLow, check::kStepOverHigh,
+     check::kStepOverWhy},
 };
 
 // Overrides finite and within their ranges (lengths quoted in the job's unit, gamma as is).
@@ -169,17 +174,21 @@ void checkCutting(const std::map<std::string, CuttingOverride>& cutting, const M
             const bool vc = kind.surfaceSpeedStep(key);
             const double high = vc ? 2000.0 : maxRpm;
             if (!std::isfinite(*c.speed) || *c.speed < 1.0 || *c.speed > high)
-                error(field + ".S", msg::cuttingValueOutOfRange(vc ? "the surface speed S" : "the spindle speed S", *c.speed,
-                                                               vc ? "m/min" : "rpm", 1.0, high,
-                                                               vc ? "" : machine ? " (the spindle limit of " + machine->id + ")" : ""));
+                error(field + ".S",
+                      msg::cuttingValueOutOfRange(vc ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the surface speed S")
+                                                     : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the spindle speed S"),
+                                                  *c.speed, vc ? "m/min" : "rpm", 1.0, high,
+                                                  vc        ? ""
+                                                  : machine ? " (the spindle limit of " + machine->id + ")"
+                                                            : ""));
         }
         if (c.feed) {
             // Per revolution on a lathe (at most 5 mm), per minute on a mill up to the machine's feed.
             const double low = lathe ? 0.001 : 1.0, high = lathe ? 5.0 : maxFeed;
             if (!std::isfinite(*c.feed) || *c.feed < low || *c.feed > high)
                 error(field + ".F", msg::cuttingValueOutOfRange(
-                                        "the feed F", fromMm(*c.feed, shown), length + (lathe ? "/rev" : "/min"),
-                                        fromMm(low, shown), fromMm(high, shown),
+                                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "the feed F"), fromMm(*c.feed, shown),
+                                        length + (lathe ? "/rev" : "/min"), fromMm(low, shown), fromMm(high, shown),
                                         lathe || !machine ? "" : " (the feed limit of " + machine->id + ")"));
         }
     }

@@ -4,6 +4,7 @@
 // Values are kept as typed: whether they make sense (a code in its table, a
 // pocket inside the stock) is input processing.
 #include "job/job_file.h"
+#include "model/translate_noop.h"
 
 #include "io/job_io.h"
 #include "io/job_messages.h"
@@ -56,17 +57,18 @@ std::map<std::string, CuttingOverride> readCutting(const ObjectFields& unit)
     const json* v = unit.find("cutting");
     if (!v) return out;
     if (!v->is_object()) {
-        unit.error("cutting", msg::io::wrongType("an object", *v));
+        unit.error("cutting", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return out;
     }
     for (const auto& [key, value] : v->items()) {
         const std::string prefix = "cutting." + msg::io::fieldKey(key) + ".";
         if (!value.is_object()) {
-            unit.error("cutting." + msg::io::fieldKey(key), msg::io::wrongType("an object with S and/or F", value));
+            unit.error("cutting." + msg::io::fieldKey(key),
+                       msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object with S and/or F"), value));
             continue;
         }
         const ObjectFields c = unit.nested(value, prefix);
-        c.rejectUnknown("a step's speed and feed", {"S", "F"});
+        c.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a step's speed and feed"), {"S", "F"});
         CuttingOverride o;
         o.speed = c.optionalNumber("S");
         o.feed = c.optionalNumber("F");
@@ -83,13 +85,14 @@ std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSi
     const ObjectFields f(unit.is_object() ? unit : kNoFields, Place{number, module.empty() ? "?" : module, ""},
                          sink);
     if (!unit.is_object()) {
-        f.error("", msg::io::wrongType("an object", unit));
+        f.error("", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), unit));
         return std::nullopt;
     }
     if (module.empty()) {
         const json* name = f.find("module");
         if (!name) f.error("module", msg::io::missing(msg::io::oneOf(moduleNames())));
-        else if (!name->is_string()) f.error("module", msg::io::wrongType("a string", *name));
+        else if (!name->is_string())
+            f.error("module", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a string"), *name));
         else f.error("module", msg::io::unknownModule(name->get<std::string>(), moduleNames()));
         return std::nullopt;
     }
@@ -105,7 +108,8 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
     Stock s;
     const json* v = job.find("stock");
     if (!v || !v->is_object()) {
-        job.error("stock", v ? msg::io::wrongType("an object", *v) : msg::io::missing("an object"));
+        job.error("stock", v ? msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v)
+                             : msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object")));
         return s;
     }
     const ObjectFields f(*v, Place{std::nullopt, "", "stock."}, job.sink());
@@ -116,7 +120,7 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
         return s;
     }
     if (f.choice("shape", kStockShapes).value_or(0) == 1) {
-        f.rejectUnknown("a bar stock", kBarKeys);
+        f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a bar stock"), kBarKeys);
         BarStock b;
         b.diameter = f.number("diameter").value_or(0.0);
         b.length = f.number("length").value_or(0.0);
@@ -125,7 +129,7 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
         bar = b;
         return s;
     }
-    f.rejectUnknown("a block stock", kBlockKeys);
+    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a block stock"), kBlockKeys);
     s.x = f.number("x", 0.0);
     s.y = f.number("y", 0.0);
     s.width = f.number("width").value_or(0.0);
@@ -143,14 +147,16 @@ std::string readFigure(const ObjectFields& job)
     const json* v = job.find("figure");
     if (!v) return {};
     if (!v->is_array()) {
-        job.error("figure", msg::io::wrongType("an array of lines of figure-element text", *v));
+        job.error("figure", msg::io::wrongType(
+                                TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of lines of figure-element text"), *v));
         return {};
     }
     std::string text;
     for (std::size_t i = 0; i < v->size(); ++i) {
         const json& line = (*v)[i];
         if (!line.is_string()) {
-            job.error("figure[" + std::to_string(i) + "]", msg::io::wrongType("a line of text", line));
+            job.error("figure[" + std::to_string(i) + "]",
+                      msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line of text"), line));
             continue;
         }
         const auto& l = line.get_ref<const std::string&>();
@@ -170,11 +176,11 @@ std::optional<Clamping> readClamping(const ObjectFields& job)
     const json* v = job.find("clamping");
     if (!v) return std::nullopt;
     if (!v->is_object()) {
-        job.error("clamping", msg::io::wrongType("an object", *v));
+        job.error("clamping", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return std::nullopt;
     }
     const ObjectFields f(*v, Place{std::nullopt, "", "clamping."}, job.sink());
-    f.rejectUnknown("the clamping", kClampingKeys);
+    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys);
     f.choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
     Clamping c;
     c.grip = f.choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
@@ -188,11 +194,11 @@ TechnologyOverrides readTechnology(const ObjectFields& job)
     const json* v = job.find("technology");
     if (!v) return t;
     if (!v->is_object()) {
-        job.error("technology", msg::io::wrongType("an object", *v));
+        job.error("technology", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return t;
     }
     const ObjectFields f(*v, Place{std::nullopt, "", "technology."}, job.sink());
-    f.rejectUnknown("the technology overrides", kTechnologyKeys);
+    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys);
     t.alpha1 = f.optionalNumber("alpha1");
     t.alpha2 = f.optionalNumber("alpha2");
     t.alpha3 = f.optionalNumber("alpha3");
@@ -235,12 +241,15 @@ std::optional<Diagnostic> refuseFormat(const json& root)
     if (format == root.end()) return fileProblem(msg::io::formatMissing());
     if (*format != "taiwa-job") return fileProblem(msg::io::formatWrong(*format));
     const auto version = root.find("version");
-    if (version == root.end()) return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::missing("a whole number")};
+    if (version == root.end())
+        return Diagnostic{Severity::Error, std::nullopt, "", "version",
+                          msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number"))};
     // The one rule for whole numbers (as for "U": 1.0): 1.0 is the whole number 1.
     if (version->is_number_float() && version->get<double>() != std::floor(version->get<double>()))
         return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::notWhole(*version)};
     if (!version->is_number())
-        return Diagnostic{Severity::Error, std::nullopt, "", "version", msg::io::wrongType("a whole number", *version)};
+        return Diagnostic{Severity::Error, std::nullopt, "", "version",
+                          msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number"), *version)};
     if ((version->is_number_unsigned() && version->get<std::uint64_t>() > std::uint64_t{INT64_MAX}) ||
         (version->is_number_float() && version->get<double>() > 9.2e18))
         return fileProblem(msg::io::versionNewer(INT64_MAX, Job::kFormatVersion));
@@ -283,7 +292,7 @@ JobReadResult readJob(std::string_view text)
     DiagnosticSink sink;
     for (const auto& path : doc.repeatedKeys) reportRepeated(path, root, sink);
     const ObjectFields f(root, Place{}, sink);
-    f.rejectUnknown("a job", kJobKeys);
+    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a job"), kJobKeys);
     Job job;
     job.name = f.string("name", "");
     job.lengthUnit = f.choice("lengthUnit", {"mm", "inch"}).value_or(0) == 1 ? LengthUnit::Inch : LengthUnit::Millimetre;
@@ -297,8 +306,10 @@ JobReadResult readJob(std::string_view text)
     job.technology = readTechnology(f);
     job.figure = readFigure(f);
     const json* units = f.find("units");
-    if (!units) f.error("units", msg::io::missing("an array of machining units"));
-    else if (!units->is_array()) f.error("units", msg::io::wrongType("an array of machining units", *units));
+    if (!units)
+        f.error("units", msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of machining units")));
+    else if (!units->is_array())
+        f.error("units", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of machining units"), *units));
     else
         for (std::size_t i = 0; i < units->size(); ++i)
             if (auto unit = readUnit((*units)[i], static_cast<int>(i + 1), sink)) job.units.push_back(std::move(*unit));

@@ -1,5 +1,8 @@
 // Formatting diagnostics the way `taiwa check` prints them.
 #include "model/diagnostic.h"
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
 
 #include <string>
 
@@ -62,7 +65,8 @@ Diagnostics DiagnosticSink::finish() &&
         // The last kept one makes room for the line that counts the rest.
         kept_.pop_back();
         kept_.push_back({Severity::Error, std::nullopt, "", "",
-                         std::to_string(dropped_ + 1) + " more errors not listed; correct the ones above first"});
+                         fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} more errors not listed; correct the ones above first"),
+                                     dropped_ + 1)});
     }
     return std::move(kept_);
 }

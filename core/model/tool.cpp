@@ -1,5 +1,6 @@
-// Tool types by name and key; a tool's cutting data for a material.
+// Tool types by name (sources of the station's translation) and key; a tool's cutting data for a material.
 #include "model/tool.h"
+#include "model/translate_noop.h"
 
 #include <array>
 #include <utility>
@@ -8,19 +9,19 @@ namespace taiwa {
 
 namespace {
 constexpr std::array<std::pair<const char*, const char*>, 13> kToolTypeNames{{
-    {"centre drill", "centre_drill"},
-    {"drill", "drill"},
-    {"flat end mill", "flat_end_mill"},
-    {"ball end mill", "ball_end_mill"},
-    {"taper end mill", "taper_end_mill"},
-    {"face mill", "face_mill"},
-    {"turning insert", "turning_insert"},
-    {"grooving tool", "grooving"},
-    {"threading tool", "threading"},
-    {"probe", "probe"},
-    {"tap", "tap"},
-    {"reamer", "reamer"},
-    {"boring bar", "boring_bar"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drill"), "centre_drill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill"), "drill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "flat end mill"), "flat_end_mill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "ball end mill"), "ball_end_mill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "taper end mill"), "taper_end_mill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "face mill"), "face_mill"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "turning insert"), "turning_insert"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "grooving tool"), "grooving"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "threading tool"), "threading"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "probe"), "probe"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap"), "tap"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer"), "reamer"},
+    {TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring bar"), "boring_bar"},
 }};
 }  // namespace
 

@@ -18,9 +18,8 @@
 #include <utility>
 #include <vector>
 
-// Marks a source text for lupdate (run with
-// -tr-function-alias QT_TRANSLATE_NOOP+=TAIWA_TRANSLATE_NOOP) without Qt.
-#define TAIWA_TRANSLATE_NOOP(context, text) text
+// TAIWA_TRANSLATE_NOOP marks a source text for lupdate without Qt.
+#include "model/translate_noop.h"
 
 namespace taiwa {
 

@@ -1,6 +1,7 @@
 // Resolving and checking the named contours of a contour unit's area
 // (modules/named_region.h).
 #include "modules/named_region.h"
+#include "model/translate_noop.h"
 
 #include "check/messages.h"
 #include "model/clipper_scale.h"
@@ -101,13 +102,15 @@ std::optional<Point2> sharpInsideCorner(const Contour& c)
 bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what, bool refuseSharpInsideCorners)
 {
     if (p.outline.empty()) {
-        r.unit("outline", msg::contourNotNamed("outline"));
+        r.unit(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
+               msg::contourNotNamed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")));
         return false;
     }
     if (!p.resolved) return false;  // no figure evaluated (a unit checked on its own)
     bool ok = true;
     for (const auto& name : p.unknown) {
-        r.unit(name == p.outline ? "outline" : "islands", msg::contourUnknown(name, p.figureContours));
+        r.unit(name == p.outline ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline") : "islands",
+               msg::contourUnknown(name, p.figureContours));
         ok = false;
     }
     if (!ok || !p.region) return false;
@@ -116,9 +119,11 @@ bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what
     for (std::size_t i = 0; i < region.islands.size() && i < p.islands.size(); ++i)
         all.push_back({p.islands[i], &region.islands[i]});
     for (std::size_t k = 0; k < all.size(); ++k) {
-        const char* field = k == 0 ? "outline" : "islands";
+        const char* field = k == 0 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline") : "islands";
         if (k < p.closedContours.size() && !p.closedContours[k]) {
-            r.unit(field, msg::contourOpen(all[k].first, what, k == 0 ? "outline" : "island"));
+            r.unit(field, msg::contourOpen(all[k].first, what,
+                                           k == 0 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")
+                                                  : TAIWA_TRANSLATE_NOOP("taiwa::msg", "island")));
             ok = false;
         } else if (crossesItself(*all[k].second)) {
             r.unit(field, msg::contourCrossesItself(all[k].first));
@@ -130,7 +135,8 @@ bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what
         const Box2 b = bounds(region.outer);
         constexpr double e = 1e-9;
         if (b.min.x < st->x - e || b.min.y < st->y - e || b.max.x > st->x + st->width + e || b.max.y > st->y + st->length + e) {
-            r.unit("outline", msg::outsideStock(std::string(what) + "'s outline " + p.outline));
+            r.unit(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
+                   msg::outsideStock(std::string(what) + "'s outline " + p.outline));
             ok = false;
         }
     }
@@ -150,7 +156,8 @@ bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what
     }
     for (std::size_t k = 0; ok && refuseSharpInsideCorners && k < all.size(); ++k)
         if (const auto corner = sharpInsideCorner(*all[k].second)) {
-            r.unit(k == 0 ? "outline" : "islands", msg::sharpInsideCorner(all[k].first, r.len(corner->x), r.len(corner->y)));
+            r.unit(k == 0 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline") : "islands",
+                   msg::sharpInsideCorner(all[k].first, r.len(corner->x), r.len(corner->y)));
             ok = false;
         }
     return ok;

@@ -1,5 +1,6 @@
 // Matching library tools to what a step asks of them.
 #include "tools/tool_fit.h"
+#include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
@@ -33,18 +34,35 @@ std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
 {
     switch (misfit(t, f, material)) {
     case Misfit::None: return {};
-    case Misfit::Type: return fmt::format("it is a {}, the step needs a {}", toString(t.type), toString(f.type));
+    case Misfit::Type:
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it is a {}, the step needs a {}"), toString(t.type),
+                           toString(f.type));
     case Misfit::Material: return "it has no cutting data for " + material;
-    case Misfit::Taper: return fmt::format("its taper is {:g} deg per side, the wall's is {:g}", t.taperAngle, f.taperAngle);
+    case Misfit::Taper:
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its taper is {:g} deg per side, the wall's is {:g}"),
+                           t.taperAngle, f.taperAngle);
     case Misfit::CornerRadius:
-        return fmt::format("its radius {:g} mm is larger than the corner radius {:g} mm", t.radius(), f.cornerRadius);
-    case Misfit::CentreCutting: return "it does not cut at its centre, so it cannot ramp in without a pilot hole";
-    case Misfit::TooLarge: return fmt::format("its diameter {:g} mm is too large for the pocket", t.diameter);
+        return fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "its radius {:g} mm is larger than the corner radius {:g} mm"),
+            t.radius(), f.cornerRadius);
+    case Misfit::CentreCutting:
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                    "it does not cut at its centre, so it cannot ramp in without a pilot hole");
+    case Misfit::TooLarge:
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its diameter {:g} mm is too large for the pocket"),
+                           t.diameter);
     case Misfit::TooSmall:
-        return fmt::format("its diameter {:g} mm is smaller than the {:g} mm needed", t.diameter, f.minDiameter);
-    case Misfit::Flutes: return fmt::format("its flutes ({:g} mm) are shorter than the depth {:g} mm", t.fluteLength, f.depth);
+        return fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "its diameter {:g} mm is smaller than the {:g} mm needed"), t.diameter,
+            f.minDiameter);
+    case Misfit::Flutes:
+        return fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "its flutes ({:g} mm) are shorter than the depth {:g} mm"),
+            t.fluteLength, f.depth);
     case Misfit::Stickout:
-        return fmt::format("its stick-out ({:g} mm) is shorter than the depth {:g} mm", t.stickout, f.reach);
+        return fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "its stick-out ({:g} mm) is shorter than the depth {:g} mm"), t.stickout,
+            f.reach);
     }
     return {};
 }
@@ -77,11 +95,16 @@ std::string noFitMessage(const std::vector<Tool>& library, const Fit& f, const s
             smallest = &t;
     if (!smallest) {
         if (f.type == ToolType::TaperEndMill)
-            return fmt::format("no taper end mill of {:g} deg per side in the tool library for the {}", f.taperAngle, what);
-        return fmt::format("no {} in the tool library for the {}", toString(f.type), what);
+            return fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                     "no taper end mill of {:g} deg per side in the tool library for the {}"),
+                f.taperAngle, what);
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no {} in the tool library for the {}"), toString(f.type),
+                           what);
     }
-    return fmt::format("no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}", toString(f.type), what,
-                       smallest->id, smallest->name, whyNot(*smallest, f, material));
+    return fmt::format(
+        TAIWA_TRANSLATE_NOOP("taiwa::msg", "no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}"),
+        toString(f.type), what, smallest->id, smallest->name, whyNot(*smallest, f, material));
 }
 
 }  // namespace taiwa::tools

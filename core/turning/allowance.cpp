@@ -1,6 +1,7 @@
 // The grinding allowance (allowance.h): allowance shapes per row, relief
 // grooves, the union and the reading back of the deformed chain.
 #include "turning/allowance.h"
+#include "model/translate_noop.h"
 
 #include "check/messages.h"
 #include "occt/profile_boolean.h"
@@ -111,23 +112,39 @@ private:
             for (std::size_t i = 0; i < p_.edges.size(); ++i)
                 if (p_.edges[i].id == r.edge) found = static_cast<int>(i);
             if (found < 0) {
-                problem(k, "edge", fmt::format("allowance row {}: there is no edge {} in the profile", k + 1,
-                                               r.edge.empty() ? "(none given)" : r.edge));
+                problem(k, "edge",
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "allowance row {}: there is no edge {} in the profile"),
+                            k + 1, r.edge.empty() ? "(none given)" : r.edge));
                 continue;
             }
             if (edgeRow_[found] >= 0) {
-                problem(k, "edge", fmt::format("allowance row {}: {} already has an allowance in row {}", k + 1, r.edge,
-                                               edgeRow_[found] + 1));
+                problem(k, "edge",
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "allowance row {}: {} already has an allowance in row {}"),
+                                    k + 1, r.edge, edgeRow_[found] + 1));
                 continue;
             }
             if (!(r.allowance > 0.0) || !std::isfinite(r.allowance))
-                problem(k, "allowance", fmt::format("allowance row {}: the allowance must be above zero", k + 1));
+                problem(k, "allowance",
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "allowance row {}: the allowance must be above zero"),
+                            k + 1));
             if (r.adjustment && !(*r.adjustment >= 0.0))
-                problem(k, "adjustment", fmt::format("allowance row {}: the adjustment cannot be below zero", k + 1));
+                problem(k, "adjustment",
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "allowance row {}: the adjustment cannot be below zero"),
+                            k + 1));
             if (r.grooveWidth && !(*r.grooveWidth > 0.0))
-                problem(k, "grooveWidth", fmt::format("allowance row {}: a groove width must be above zero", k + 1));
+                problem(k, "grooveWidth",
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "allowance row {}: a groove width must be above zero"),
+                            k + 1));
             if (r.grooveDepth && !(*r.grooveDepth > 0.0))
-                problem(k, "grooveDepth", fmt::format("allowance row {}: a groove depth must be above zero", k + 1));
+                problem(k, "grooveDepth",
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "allowance row {}: a groove depth must be above zero"),
+                            k + 1));
             edgeRow_[found] = static_cast<int>(k);
             rowEdge_[k] = found;
         }
@@ -166,8 +183,10 @@ private:
             const auto nm = moved(ni, rows_[nRow].allowance);
             const auto x = nm ? nearest(intersections(movedCurve, curveOf(*nm)), e.onMoved) : std::nullopt;
             if (!x) {
-                problem(k, "allowance", fmt::format("allowance row {}: the moved {} and the moved {} do not meet", k + 1,
-                                                    p_.edges[i].id, oc.neighbour));
+                problem(k, "allowance",
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "allowance row {}: the moved {} and the moved {} do not meet"),
+                                    k + 1, p_.edges[i].id, oc.neighbour));
                 return e;
             }
             e.onMoved = *x;
@@ -186,16 +205,22 @@ private:
                     oc.adjustmentFrom = "nose radius of " + o_.toolName;
                 } else {
                     problem(k, "adjustment",
-                            fmt::format("allowance row {}: {} meets {} at a tangent joint, where the tool's nose radius "
-                                        "leaves a ridge; give the adjustment, or add a finishing turning tool to the "
-                                        "library so that its nose radius is taken",
-                                        k + 1, p_.edges[i].id, oc.neighbour));
+                            fmt::format(
+                                TAIWA_TRANSLATE_NOOP(
+                                    "taiwa::msg",
+                                    "allowance row {}: {} meets {} at a tangent joint, where the tool's nose radius "
+                                    "leaves a ridge; give the adjustment, or add a finishing turning tool to the "
+                                    "library so that its nose radius is taken"),
+                                k + 1, p_.edges[i].id, oc.neighbour));
                     return e;
                 }
                 if (adj >= length(P) - kPointTol) {
-                    problem(k, "adjustment", fmt::format("allowance row {}: an adjustment of {} is not shorter than {} "
-                                                         "({} long)",
-                                                         k + 1, len(adj), p_.edges[i].id, len(length(P))));
+                    problem(
+                        k, "adjustment",
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "allowance row {}: an adjustment of {} is not shorter than {} "
+                                                         "({} long)"),
+                                    k + 1, len(adj), p_.edges[i].id, len(length(P))));
                     return e;
                 }
                 oc.adjustment = adj;
@@ -214,8 +239,11 @@ private:
                 if (dot(x - v, dir) > 0.0) ahead.push_back(x);
             const auto x = nearest(ahead, v);
             if (!x) {
-                problem(k, "allowance", fmt::format("allowance row {}: the tangent of {} does not reach the moved {}",
-                                                    k + 1, oc.neighbour, p_.edges[i].id));
+                problem(
+                    k, "allowance",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "allowance row {}: the tangent of {} does not reach the moved {}"),
+                                k + 1, oc.neighbour, p_.edges[i].id));
                 return e;
             }
             e.onMoved = *x;
@@ -228,8 +256,10 @@ private:
             const auto x = nearest(onN, v);
             if (!x) {
                 problem(k, "allowance",
-                        fmt::format("allowance row {}: an allowance of {} on {} reaches past the end of its "
-                                    "neighbour {} ({} long); the edges would cross",
+                        fmt::format(TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::msg",
+                                        "allowance row {}: an allowance of {} on {} reaches past the end of its "
+                                        "neighbour {} ({} long); the edges would cross"),
                                     k + 1, len(a), p_.edges[i].id, oc.neighbour, len(length(N))));
                 return e;
             }
@@ -257,9 +287,11 @@ private:
         AllowanceOutcome oc{edge.id, a, {}, {}};
         const auto pmFull = moved(i, a);
         if (!pmFull) {
-            problem(k, "allowance", fmt::format("allowance row {}: {} is an arc of radius {}; an allowance of {} "
-                                                "leaves it no radius",
-                                                k + 1, edge.id, len(P.radius), len(a)));
+            problem(k, "allowance",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "allowance row {}: {} is an arc of radius {}; an allowance of {} "
+                                                     "leaves it no radius"),
+                                k + 1, edge.id, len(P.radius), len(a)));
             return;
         }
         const std::size_t before = out_.problems.size();
@@ -269,9 +301,11 @@ private:
         oc.end = e.outcome;
         if (out_.problems.size() != before) return;
         if (signedParameter(*pmFull, s.onMoved) >= signedParameter(*pmFull, e.onMoved) - kPointTol) {
-            problem(k, "allowance", fmt::format("allowance row {}: with an allowance of {} the moved {} vanishes "
-                                                "between its neighbours; the edges would cross",
-                                                k + 1, len(a), edge.id));
+            problem(k, "allowance",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "allowance row {}: with an allowance of {} the moved {} vanishes "
+                                                     "between its neighbours; the edges would cross"),
+                                k + 1, len(a), edge.id));
             return;
         }
         const Segment movedEdge = piece(*pmFull, s.onMoved, e.onMoved);
@@ -279,9 +313,12 @@ private:
             const int ji = static_cast<int>(j);
             if (ji == i || ji == s.neighbour || ji == e.neighbour) continue;
             if (!crossings(movedEdge, p_.edges[j].geometry).empty()) {
-                problem(k, "allowance", fmt::format("allowance row {}: an allowance of {} moves {} into {}; the edges "
-                                                    "would cross",
-                                                    k + 1, len(a), edge.id, p_.edges[j].id));
+                problem(
+                    k, "allowance",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "allowance row {}: an allowance of {} moves {} into {}; the edges "
+                                                     "would cross"),
+                                k + 1, len(a), edge.id, p_.edges[j].id));
                 return;
             }
         }
@@ -290,8 +327,10 @@ private:
                                             ? movedEdge.centre.r - movedEdge.radius
                                             : movedEdge.a.r});
         if (lowest < -kPointTol) {
-            problem(k, "allowance", fmt::format("allowance row {}: an allowance of {} moves {} past the axis", k + 1,
-                                                len(a), edge.id));
+            problem(k, "allowance",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "allowance row {}: an allowance of {} moves {} past the axis"),
+                                k + 1, len(a), edge.id));
             return;
         }
         shapes_.push_back({piece(P, s.foot, e.foot), e.side, reversed(movedEdge), reversed(s.side)});
@@ -366,10 +405,11 @@ private:
         std::vector<Loop> loops;
         for (const Frame* f : frames) {
             if (w + d > f->room + kPointTol) {
-                problem(k, "grooveWidth", fmt::format("allowance row {}: a {} groove {} wide and {} deep takes {} of "
-                                                      "{}, which is {} long",
-                                                      k + 1, toKey(g.kind), len(w), len(d), len(w + d), f->edge->id,
-                                                      len(f->room)));
+                problem(k, "grooveWidth",
+                        fmt::format(TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::msg", "allowance row {}: a {} groove {} wide and {} deep takes {} of "
+                                                      "{}, which is {} long"),
+                                    k + 1, toKey(g.kind), len(w), len(d), len(w + d), f->edge->id, len(f->room)));
                 return;
             }
             const ZR p1 = q + (w + d) * f->u, p2 = q + w * f->u + d * f->m, p3 = q + d * f->m;
@@ -388,16 +428,20 @@ private:
                     const int ji = static_cast<int>(j);
                     if (ji == i || ji == end.neighbour) continue;
                     if (!crossings(s, p_.edges[j].geometry).empty()) {
-                        problem(k, "grooveDepth", fmt::format("allowance row {}: a groove {} deep at {} reaches {}; "
-                                                              "it is deeper than the part allows",
-                                                              k + 1, len(d), pe.id, p_.edges[j].id));
+                        problem(k, "grooveDepth",
+                                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                 "allowance row {}: a groove {} deep at {} reaches {}; "
+                                                                 "it is deeper than the part allows"),
+                                            k + 1, len(d), pe.id, p_.edges[j].id));
                         return;
                     }
                 }
                 if (p_.side == ProfileSide::Outer && std::min(s.a.r, s.b.r) < kPointTol) {
-                    problem(k, "grooveDepth", fmt::format("allowance row {}: a groove {} deep at {} reaches the axis; "
-                                                          "it is deeper than the part allows",
-                                                          k + 1, len(d), pe.id));
+                    problem(k, "grooveDepth",
+                            fmt::format(TAIWA_TRANSLATE_NOOP(
+                                            "taiwa::msg", "allowance row {}: a groove {} deep at {} reaches the axis; "
+                                                          "it is deeper than the part allows"),
+                                        k + 1, len(d), pe.id));
                     return;
                 }
             }
@@ -427,7 +471,10 @@ private:
         }
         if (boundary->size() != 1) {
             out_.problems.push_back(
-                {"allowances", fmt::format("the allowances and grooves split the part into {} pieces", boundary->size())});
+                {"allowances",
+                 fmt::format(
+                     TAIWA_TRANSLATE_NOOP("taiwa::msg", "the allowances and grooves split the part into {} pieces"),
+                     boundary->size())});
             return;
         }
         // Preference: moved, side, untouched edges, grooves, picked edges, closure.
@@ -462,9 +509,11 @@ private:
                     contains(order[s].s, piece.b, 1e-6))
                     tag[j] = static_cast<int>(s);
             if (tag[j] < 0) {
-                out_.problems.push_back({"allowances", fmt::format("internal: a piece of the deformed profile at Z{} X{} "
-                                                                   "lies on no edge; please report this job",
-                                                                   len(mid.z), len(2.0 * mid.r))});
+                out_.problems.push_back(
+                    {"allowances", fmt::format(TAIWA_TRANSLATE_NOOP(
+                                                   "taiwa::msg", "internal: a piece of the deformed profile at Z{} X{} "
+                                                                 "lies on no edge; please report this job"),
+                                               len(mid.z), len(2.0 * mid.r))});
                 return;
             }
         }

@@ -1,5 +1,6 @@
 // From the profile table to exact edges (profile_resolve.h).
 #include "turning/profile_resolve.h"
+#include "model/translate_noop.h"
 
 #include "check/messages.h"
 #include "model/turned_geometry.h"
@@ -34,9 +35,11 @@ public:
         std::set<int> ids;
         for (std::size_t i = 0; i < p_.rows.size(); ++i)
             if (!ids.insert(p_.rows[i].id).second || p_.rows[i].id <= 0)
-                problem(rowField(i, "id"), fmt::format("row {} has the edge id {}, which is not a positive number "
-                                                       "of its own; every row needs one",
-                                                       i + 1, p_.rows[i].id));
+                problem(rowField(i, "id"),
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "row {} has the edge id {}, which is not a positive number "
+                                                         "of its own; every row needs one"),
+                                    i + 1, p_.rows[i].id));
         if (p_.rows.empty()) problem("rows", "the profile has no rows: enter at least one element");
         buildElements();
         cutCorners();
@@ -59,7 +62,10 @@ private:
         if (!std::isfinite(p_.startX) || !std::isfinite(p_.startZ))
             problem("start", "the start point is not a number");
         else if (p_.startX < 0.0)
-            problem("start.x", fmt::format("the start diameter is {}; a diameter cannot be below zero", len(p_.startX)));
+            problem("start.x",
+                    fmt::format(
+                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "the start diameter is {}; a diameter cannot be below zero"),
+                        len(p_.startX)));
     }
 
     void buildElements()
@@ -68,18 +74,26 @@ private:
         for (std::size_t i = 0; i < p_.rows.size(); ++i) {
             const ProfileRow& row = p_.rows[i];
             if (!std::isfinite(row.x) || !std::isfinite(row.z)) {
-                problem(rowField(i, "x"), fmt::format("row {}: the end point is not a number", i + 1));
+                problem(
+                    rowField(i, "x"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: the end point is not a number"), i + 1));
                 continue;
             }
             if (row.x < 0.0) {
-                problem(rowField(i, "x"), fmt::format("row {}: the end diameter is {}; a diameter cannot be below zero",
-                                                      i + 1, len(row.x)));
+                problem(
+                    rowField(i, "x"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "row {}: the end diameter is {}; a diameter cannot be below zero"),
+                                i + 1, len(row.x)));
                 continue;
             }
             const ZR end{row.z, row.x / 2.0};
             if (dist(prev, end) < kMinElement) {
-                problem(rowField(i, "z"), fmt::format("row {} ends where it starts (X{} Z{}): an element needs a length",
-                                                      i + 1, len(row.x), len(row.z)));
+                problem(
+                    rowField(i, "z"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP(
+                                    "taiwa::msg", "row {} ends where it starts (X{} Z{}): an element needs a length"),
+                                i + 1, len(row.x), len(row.z)));
                 continue;
             }
             std::optional<Segment> s = row.kind == ElementKind::Line ? lineSegment(prev, end) : arc(i, prev, end);
@@ -98,28 +112,37 @@ private:
             const double ra = dist(centre, a), rb = dist(centre, b);
             if (std::abs(ra - rb) > 1e-3) {
                 problem(rowField(i, "centre"),
-                        fmt::format("row {}: the centre is {} from the start and {} from the end point; an arc's "
-                                    "centre is equally far from both",
+                        fmt::format(TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::msg",
+                                        "row {}: the centre is {} from the start and {} from the end point; an arc's "
+                                        "centre is equally far from both"),
                                     i + 1, len(ra), len(rb)));
                 return std::nullopt;
             }
             if (row.radius && std::abs(*row.radius - ra) > 1e-3) {
-                problem(rowField(i, "radius"), fmt::format("row {}: the radius {} does not match the centre, which is {} "
-                                                           "from the start",
-                                                           i + 1, len(*row.radius), len(ra)));
+                problem(rowField(i, "radius"),
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "row {}: the radius {} does not match the centre, which is {} "
+                                                         "from the start"),
+                                    i + 1, len(*row.radius), len(ra)));
                 return std::nullopt;
             }
         } else if (row.radius) {
             const double r = *row.radius, chord = dist(a, b);
             if (!(r > 0.0)) {
-                problem(rowField(i, "radius"), fmt::format("row {}: an arc's radius must be above zero", i + 1));
+                problem(rowField(i, "radius"),
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: an arc's radius must be above zero"),
+                                    i + 1));
                 return std::nullopt;
             }
             if (chord > 2.0 * r + 1e-9) {
-                problem(rowField(i, "radius"),
-                        fmt::format("row {}: a radius of {} cannot reach the end point, which is {} from the start; "
-                                    "the radius must be at least {}",
-                                    i + 1, len(r), len(chord), len(chord / 2.0)));
+                problem(
+                    rowField(i, "radius"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP(
+                                    "taiwa::msg",
+                                    "row {}: a radius of {} cannot reach the end point, which is {} from the start; "
+                                    "the radius must be at least {}"),
+                                i + 1, len(r), len(chord), len(chord / 2.0)));
                 return std::nullopt;
             }
             // The arc of less than half a turn: its centre lies left of the
@@ -127,16 +150,20 @@ private:
             const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
             centre = 0.5 * (a + b) + (ccw ? h : -h) * leftNormal(unit(b - a));
         } else {
-            problem(rowField(i, "radius"), fmt::format("row {}: an arc needs its radius or its centre", i + 1));
+            problem(rowField(i, "radius"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: an arc needs its radius or its centre"),
+                                i + 1));
             return std::nullopt;
         }
         Segment s = arcSegment(a, b, centre, ccw);
         // The arc's lowest point, when the arc passes it, must not be below the axis.
         const ZR bottom{centre.z, centre.r - s.radius};
         if (bottom.r < -1e-9 && contains(s, bottom, 1e-9)) {
-            problem(rowField(i, "radius"), fmt::format("row {}: the arc dips below the axis (to Ø{}); a turned "
-                                                       "profile stays at or above it",
-                                                       i + 1, len(2.0 * bottom.r)));
+            problem(
+                rowField(i, "radius"),
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: the arc dips below the axis (to Ø{}); a turned "
+                                                               "profile stays at or above it"),
+                            i + 1, len(2.0 * bottom.r)));
             return std::nullopt;
         }
         return s;
@@ -151,27 +178,33 @@ private:
             const char* what = row.corner == CornerKind::Chamfer ? "chamfer" : "rounding";
             if (k + 1 >= raw_.size() || raw_[k + 1].row != raw_[k].row + 1) {
                 problem(rowField(raw_[k].row, "corner"),
-                        fmt::format("row {}: a {} needs a next row to meet; there is none", raw_[k].row + 1, what));
+                        fmt::format(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: a {} needs a next row to meet; there is none"),
+                            raw_[k].row + 1, what));
                 continue;
             }
             Segment& s1 = raw_[k].s;
             Segment& s2 = raw_[k + 1].s;
             if (s1.arc || s2.arc) {
                 problem(rowField(raw_[k].row, "corner"),
-                        fmt::format("row {}: a {} is made between two lines; row {} is an arc", raw_[k].row + 1, what,
-                                    s1.arc ? raw_[k].row + 1 : raw_[k + 1].row + 1));
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                         "row {}: a {} is made between two lines; row {} is an arc"),
+                                    raw_[k].row + 1, what, s1.arc ? raw_[k].row + 1 : raw_[k + 1].row + 1));
                 continue;
             }
             if (!(row.cornerSize > 0.0)) {
-                problem(field, fmt::format("row {}: the {} size must be above zero", raw_[k].row + 1, what));
+                problem(field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "row {}: the {} size must be above zero"),
+                                           raw_[k].row + 1, what));
                 continue;
             }
             const ZR d1 = unit(s1.b - s1.a), d2 = unit(s2.b - s2.a);
             const double turn = turnDegrees(d1, d2);
             if (std::abs(turn) < 1e-3 || std::abs(turn) > 180.0 - 1e-3) {
-                problem(rowField(raw_[k].row, "corner"),
-                        fmt::format("row {}: rows {} and {} are in line; there is no corner for a {}", raw_[k].row + 1,
-                                    raw_[k].row + 1, raw_[k + 1].row + 1, what));
+                problem(
+                    rowField(raw_[k].row, "corner"),
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "row {}: rows {} and {} are in line; there is no corner for a {}"),
+                                raw_[k].row + 1, raw_[k].row + 1, raw_[k + 1].row + 1, what));
                 continue;
             }
             const double t = row.corner == CornerKind::Chamfer
@@ -179,9 +212,12 @@ private:
                                  : row.cornerSize * std::tan(std::abs(turn) * std::numbers::pi / 360.0);
             const double room1 = length(s1) - raw_[k].consumedAtStart, room2 = length(s2);
             if (t > room1 + 1e-9 || t > room2 + 1e-9) {
-                problem(field, fmt::format("row {}: a {} of {} takes {} of both lines; row {} has {} and row {} has {}",
-                                           raw_[k].row + 1, what, len(row.cornerSize), len(t), raw_[k].row + 1,
-                                           len(room1), raw_[k + 1].row + 1, len(room2)));
+                problem(field,
+                        fmt::format(TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::msg",
+                                        "row {}: a {} of {} takes {} of both lines; row {} has {} and row {} has {}"),
+                                    raw_[k].row + 1, what, len(row.cornerSize), len(t), raw_[k].row + 1, len(room1),
+                                    raw_[k + 1].row + 1, len(room2)));
                 continue;
             }
             const ZR v = s1.b, t1 = v - t * d1, t2 = v + t * d2;
@@ -212,7 +248,9 @@ private:
                     const bool shared = j == i + 1 && dist(x, edges[i].geometry.b) < 1e-6;
                     if (shared) continue;
                     problem(rowField(rowOf(edges[j]), "x"),
-                            fmt::format("the profile is not one chain: {} (row {}) meets {} (row {}) at X{} Z{}",
+                            fmt::format(TAIWA_TRANSLATE_NOOP(
+                                            "taiwa::msg",
+                                            "the profile is not one chain: {} (row {}) meets {} (row {}) at X{} Z{}"),
                                         edges[j].id, rowOf(edges[j]) + 1, edges[i].id, rowOf(edges[i]) + 1,
                                         len(2.0 * x.r), len(x.z)));
                     return;
@@ -223,12 +261,15 @@ private:
             for (const auto& e : edges)
                 for (ZR x : crossings(c, e.geometry)) {
                     if (dist(x, start) < 1e-6 || dist(x, end) < 1e-6) continue;
-                    problem(rowField(rowOf(e), "x"),
-                            fmt::format("the profile is not one chain around the part: {} (row {}) reaches the line "
-                                        "closing it {} at X{} Z{}",
-                                        e.id, rowOf(e) + 1,
-                                        p_.side == ProfileSide::Outer ? "along the axis" : "outside the bore",
-                                        len(2.0 * x.r), len(x.z)));
+                    problem(
+                        rowField(rowOf(e), "x"),
+                        fmt::format(TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::msg",
+                                        "the profile is not one chain around the part: {} (row {}) reaches the line "
+                                        "closing it {} at X{} Z{}"),
+                                    e.id, rowOf(e) + 1,
+                                    p_.side == ProfileSide::Outer ? "along the axis" : "outside the bore",
+                                    len(2.0 * x.r), len(x.z)));
                     return;
                 }
     }

@@ -1,6 +1,7 @@
 // The verification's findings: their keys, their place on the tape and
-// their words.
+// their words (templates the station translates, model/translate_noop.h).
 #include "verify/verify.h"
+#include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
@@ -60,41 +61,51 @@ std::string describe(const Finding& f, const Plan& plan)
         return fmt::format("X{:.{}f} Y{:.{}f} Z{:.{}f}", fromMm(p.x, u), digits, fromMm(p.y, u), digits, fromMm(p.z, u),
                            digits);
     };
-    std::string where = "the job";
+    std::string where = TAIWA_TRANSLATE_NOOP("taiwa::msg", "the job");
     if (f.step >= 0 && f.step < static_cast<int>(plan.steps.size())) {
         const Step& s = plan.steps[static_cast<std::size_t>(f.step)];
         const std::string& name = s.unit < static_cast<int>(plan.job.units.size()) ? plan.job.units[s.unit].name : "";
-        where = fmt::format("step {} ({}, unit {}{})", f.step + 1, s.label(), s.unit + 1,
-                            name.empty() ? "" : " '" + name + "'");
+        where = name.empty() ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "step {} ({}, unit {})"), f.step + 1,
+                                           s.label(), s.unit + 1)
+                             : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "step {} ({}, unit {} '{}')"), f.step + 1,
+                                           s.label(), s.unit + 1, name);
     }
     std::string what;
     switch (f.kind) {
     case FindingKind::Gouge:
-        what = fmt::format("gouge {} deep into the finished part at {}, over {:.3f} mm²{}", len(f.size), at(f.position),
-                           f.area, lathe ? " of the half-section" : "");
+        what = lathe ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                                      "{:.3f} mm² of the half-section"),
+                                   len(f.size), at(f.position), f.area)
+                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                                      "{:.3f} mm²"),
+                                   len(f.size), at(f.position), f.area);
         break;
     case FindingKind::Collision:
-        what = fmt::format("the tool's {} runs {} into stock at {}", f.part, len(f.size), at(f.position));
+        what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool's {} runs {} into stock at {}"), f.part, len(f.size), at(f.position));
         break;
     case FindingKind::RapidIntoStock:
-        what = fmt::format("rapid (G0) {} into stock at {}", len(f.size), at(f.position));
+        what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "rapid (G0) {} into stock at {}"), len(f.size), at(f.position));
         break;
     case FindingKind::TravelLimit:
-        what = fmt::format("the paths span {} more along {} than the machine '{}' travels", len(f.size), f.part,
+        what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the paths span {} more along {} than the machine '{}' travels"), len(f.size), f.part,
                            plan.job.machine);
         break;
     case FindingKind::RestMaterial:
-        what = lathe ? fmt::format("material left up to {} thicker than it should leave, thickest at {}, "
-                                   "over {:.3f} mm² of the half-section",
+        what = lathe ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} thicker than it should leave, thickest "
+                                                                      "at {}, over {:.3f} mm² of the half-section"),
                                    len(f.size), at(f.position), f.area)
-                     : fmt::format("material left up to {} above what it should leave, highest at {}, over {:.3f} mm²",
+                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
+                                                                      "at {}, over {:.3f} mm²"),
                                    len(f.size), at(f.position), f.area);
         break;
     }
-    std::string block;
-    if (f.move >= 0) block += fmt::format(", move {}", f.move + 1);
-    if (f.line > 0) block += fmt::format(", tape line {}", f.line);
-    return fmt::format("{}: {}{}", where, what, block);
+    // Where on the tape, when known: one template for each case, so that the station translates the whole.
+    if (f.move >= 0 && f.line > 0)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, move {}, tape line {}"), where, what, f.move + 1,
+                           f.line);
+    if (f.move >= 0) return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, move {}"), where, what, f.move + 1);
+    if (f.line > 0) return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, tape line {}"), where, what, f.line);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), where, what);
 }
 
 }  // namespace taiwa::verify

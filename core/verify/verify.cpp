@@ -9,6 +9,7 @@
 #include "verify/verify_turning.h"
 
 #include "machine/machine.h"
+#include "model/translate_noop.h"
 #include "modules/registry.h"
 #include "sim/cutter_profile.h"
 #include "sim/height_field.h"
@@ -269,10 +270,10 @@ private:
                         return Point3{p.x, p.y, zz};
                     };
                     if (holderLow && before > z + d.holderZ + kTouch)
-                        out.add(FindingKind::Collision, k, piece.move, "holder", where(before), before - (z + d.holderZ));
+                        out.add(FindingKind::Collision, k, piece.move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "holder"), where(before), before - (z + d.holderZ));
                     if (r2 > reach2) return;
                     if (shankLow && before > z + d.flute + kTouch && before <= z + d.holderZ + kTouch)
-                        out.add(FindingKind::Collision, k, piece.move, "shank", where(before), before - (z + d.flute));
+                        out.add(FindingKind::Collision, k, piece.move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "shank"), where(before), before - (z + d.flute));
                     const double after = std::max(z + cutter.heightSquared(r2), bottom);
                     if (after >= before) return;
                     if (piece.rapid && before - after > kTouch)

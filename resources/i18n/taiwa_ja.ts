@@ -1,5 +1,5 @@
 <?xml version="1.0" encoding="utf-8"?>
-<!-- Texts of the station window (lupdate from ui/ and core/modules/ by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
+<!-- Texts of the station window (lupdate from ui/ and core/, and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
     <context>
@@ -1636,6 +1636,1381 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         </message>
     </context>
     <context>
+        <name>taiwa::msg</name>
+        <message>
+            <source>T{} ({} {}, nose R{} mm)</source>
+            <translation>T{} ({} {}, ノーズR{} mm)</translation>
+        </message>
+        <message>
+            <source>T{} ({} Ø{} mm, {} per side)</source>
+            <translation>T{} ({} Ø{} mm, 片側 {})</translation>
+        </message>
+        <message>
+            <source>T{} ({} Ø{} mm)</source>
+            <translation>T{} ({} Ø{} mm)</translation>
+        </message>
+        <message>
+            <source>{} is not a finite number; type a number</source>
+            <translation>{} が有限の数ではありません。数値を入力してください</translation>
+        </message>
+        <message>
+            <source>material "{}" is not in the technology table; known materials: {}</source>
+            <translation>材質「{}」は加工条件表にありません。登録済みの材質: {}</translation>
+        </message>
+        <message>
+            <source>the stock {} is {}; it must be greater than zero</source>
+            <translation>素材の{}が {} です。0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>{} = {}{} must be greater than zero</source>
+            <translation>{} = {}{} は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
+            <translation>壁の最終仕上げ代 α3 = {} は荒加工の壁仕上げ代 α2 = {} より小さくしてください</translation>
+        </message>
+        <message>
+            <source>the pilot-hole remainder α1 = {} is not smaller than the depth {} of unit {}: the pilot hole would have no depth; use H = 9 or a smaller α1</source>
+            <translation>下穴の残し α1 = {0} がユニット {2} の深さ {1} より小さくありません。下穴の深さがなくなります。H = 9 にするか α1 を小さくしてください</translation>
+        </message>
+        <message>
+            <source>the floor allowance β2 = {} is not smaller than the depth {} of unit {}: roughing would not cut at all</source>
+            <translation>底の仕上げ代 β2 = {0} がユニット {2} の深さ {1} より小さくありません。荒加工でまったく削れません</translation>
+        </message>
+        <message>
+            <source>{} is {}; every length and coordinate must lie within ±{} of the origin (beyond it a micrometre is no longer exact on the tape)</source>
+            <translation>{} が {} です。長さと座標はすべて原点から ±{} 以内にしてください (それを超えるとテープ上で 1 µm が正確に表せません)</translation>
+        </message>
+        <message>
+            <source>{} is {:g}{}; it must lie between {:g} and {:g}{} ({})</source>
+            <translation>{} が {}{} です。{} から {}{} の間にしてください ({})</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
+            <translation>カスプ高さが {} です。{} 以上にしてください (これより小さいと傾斜面のパスが増えるだけで、機械が保てる以上に細かい面にはなりません)</translation>
+        </message>
+        <message>
+            <source>the stock {} is {}; a stock of more than {} a side is not a part for this station</source>
+            <translation>素材の{}が {} です。一辺が {} を超える素材はこのステーションでは扱いません</translation>
+        </message>
+        <message>
+            <source>the depth is {}; it must be greater than zero (measured down from the top face)</source>
+            <translation>深さが {} です。0 より大きくしてください (上面から下へ測ります)</translation>
+        </message>
+        <message>
+            <source>the depth {} is deeper than the stock, which is {} high</source>
+            <translation>深さ {} が素材の高さ {} より深くなっています</translation>
+        </message>
+        <message>
+            <source>{} is {}; it must be greater than zero</source>
+            <translation>{} が {} です。0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>the corner radius is {}; it cannot be negative</source>
+            <translation>コーナ半径が {} です。負の値にはできません</translation>
+        </message>
+        <message>
+            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
+            <translation>{}が素材の外にはみ出しています。移動するか素材を大きくしてください</translation>
+        </message>
+        <message>
+            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
+            <translation>P{} と P{} が同じ点 ({}, {}) です。輪郭には異なる 4 つの角が必要です</translation>
+        </message>
+        <message>
+            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
+            <translation>「{}」は点の並びではありません。各点を X, Y で入力し、点どうしを ';' で区切るか (10, 20; 60, 20)、図形タブでパスを描いてください</translation>
+        </message>
+        <message>
+            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>点が描かれていません。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
+        </message>
+        <message>
+            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>描かれた点が 1 つだけです。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
+        </message>
+        <message>
+            <source>point {} ({}, {}) lies outside the stock</source>
+            <translation>点 {} ({}, {}) が素材の外にあります</translation>
+        </message>
+        <message>
+            <source>pass {} ends where it starts; remove the repeated point</source>
+            <translation>パス {} が始点で終わっています。重複した点を削除してください</translation>
+        </message>
+        <message>
+            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
+            <translation>始点 ({0}, {1}) では工具の刃先が領域 {3} の外または島の中に {2} 入ります。少なくとも工具半径だけ内側から始めてください</translation>
+        </message>
+        <message>
+            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
+            <translation>パス {0} では工具中心が ({3}, {4}) のとき刃先が領域 {2} の外 (または島の中) に {1} 入ります。各パスを壁から工具半径だけ離してください</translation>
+        </message>
+        <message>
+            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
+            <translation>工具径が {} です。正の値にしてください。パスは工具 1 本分の幅の帯です</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
+            <translation>描いたパス用の {} の (どの径の) センターカット付きフラットエンドミルも工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
+            <translation>パスを描いた幅 {} のセンターカット付きフラットエンドミルが工具ライブラリにありません。登録済みのフラットエンドミル: {}</translation>
+        </message>
+        <message>
+            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
+            <translation>{} が指定されていますが、パスは {} の工具用に描かれています。その径の工具を指定するか、径を変えて描き直してください</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
+            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
+            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
+        </message>
+        <message>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>ポケットの{}の輪郭を指定してください (ジョブの図形要素の CONTOUR)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭が一つも定義されていません)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭: {})</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} が自分自身と交差しています。要素の順序と各接続点で選んだ側を確認してください</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>島 {0} が{1}の外形 {2} の外にはみ出しています</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>島 {} と {} が重なっています。一つの輪郭にしてください</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} の ({}, {}) に鋭い内角があります。エンドミルでは削れず、工具の半径が残ります。輪郭でその角を丸めてください (ROUND)</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} は輪郭ポケットでは使えません。1 (全工程)、6 (壁仕上げなし)、8 (壁のみ)、9 (荒加工のみ) のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外形が自分自身と交差しています。角 P1..P4 をポケットの周りに順に入力してください</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外形が凸ではありません (内向きの角があるか、3 つの角が一直線上にあります)</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>コーナ半径 {} が最短辺 (長さ {}) の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>コーナ半径 {} が入りません。外形に内接する最大の円の半径は {} です</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>コーナ半径 {} が L2 = {} の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>片側テーパ {} が 0° ～ 30° の範囲外です</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>片側テーパ {} では壁どうしが底より上の深さ {} で交わります</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} が 0° 以上 60° 未満の範囲外です (垂直から測ります)</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>傾斜壁によって L1 方向の底の幅が {} になります。2 × r1 = {} より広くなければなりません ({} 不足)。角度か深さを小さくするか、L1 を長くしてください</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
+            <translation>カスプ高さが {} です。0 より大きくしてください (通常 0.01 mm)</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
+            <translation>工具使用コード U = {} は定義されていません (2 ～ 5 は予約)。1、6、7、8、9 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
+            <translation>工具使用コード U = {} はありません。1、6、7、8、9 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
+            <translation>工具使用コード U = {} は M2D では使えません。1 (荒加工と仕上げ) か 9 (荒加工のみ) にしてください</translation>
+        </message>
+        <message>
+            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
+            <translation>仕上げコード F = {} はありません。1、2、3 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
+            <translation>下穴コード H = {} はありません。0 (下穴をあける) か 9 (なし) にしてください</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
+            <translation>「{}」は工程の種類ではありません。工具を指定できるのは pilot、roughing、floor、wall、inclined です</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of module {}; its steps are {}</source>
+            <translation>「{}」はモジュール {} の工程ではありません。工程は {} です</translation>
+        </message>
+        <message>
+            <source>module {} has no cutting steps to set a speed or feed for</source>
+            <translation>モジュール {} には回転数や送りを設定する切削工程がありません</translation>
+        </message>
+        <message>
+            <source>{} {:g} {} is out of range: give {:g} to {:g} {}{}</source>
+            <translation>{} {} {} が範囲外です。{} ～ {} {} にしてください{}</translation>
+        </message>
+        <message>
+            <source>tool T{} is not in the tool library</source>
+            <translation>工具 T{} が工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no {}; add one to machine this pocket</source>
+            <translation>工具ライブラリに{}がありません。このポケットを加工するには追加してください</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {} per side in the tool library (it has none)</source>
+            <translation>片側 {} のテーパエンドミルが工具ライブラリにありません (テーパエンドミルは 1 本もありません)</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {} per side in the tool library (it has {})</source>
+            <translation>片側 {} のテーパエンドミルが工具ライブラリにありません (あるのは {})</translation>
+        </message>
+        <message>
+            <source>{} = {} is smaller than the radius of the smallest suitable tool, {}; no tool of the library fits: a corner radius of at least {} would let it fit</source>
+            <translation>{} = {} が使える最小の工具 {} の半径より小さくなっています。ライブラリのどの工具も入りません。コーナ半径を {} 以上にすれば入ります</translation>
+        </message>
+        <message>
+            <source>{} would fit</source>
+            <translation>{} なら入ります</translation>
+        </message>
+        <message>
+            <source>no tool of that kind in the library fits</source>
+            <translation>ライブラリにはその種類で入る工具がありません</translation>
+        </message>
+        <message>
+            <source>the {} tool {} is too big for {} = {}; {}</source>
+            <translation>{}の工具 {} は {} = {} に対して大きすぎます。{}</translation>
+        </message>
+        <message>
+            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
+            <translation>ユニット {} の図形がユニット {} の図形と {} {}² 重なっています。同じジョブの図形は接してもよいが重なってはいけません</translation>
+        </message>
+        <message>
+            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
+            <translation>側面削りがたどる輪郭を指定してください (ジョブの図形要素の CONTOUR、開いていても閉じていてもよい)</translation>
+        </message>
+        <message>
+            <source>{} {} is not a code of side milling; use {}</source>
+            <translation>{} {} は側面削りのコードではありません。{} にしてください</translation>
+        </message>
+        <message>
+            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
+            <translation>幅 W が {} です。荒加工は壁に α2 = {} を残すので、W はそれより大きくしてください</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
+            <translation>「{}」は側面削りの工程ではありません。エンドミルは "side" で指定してください (荒加工と仕上げ)</translation>
+        </message>
+        <message>
+            <source>{}: {}</source>
+            <translation>{}: {}</translation>
+        </message>
+        <message>
+            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
+            <translation>{0} は {1} が狭くなる ({2}, {3}) 付近に入りません。そこで輪郭に食い込みます。小さいエンドミルを指定するか溝を広げてください</translation>
+        </message>
+        <message>
+            <source>the step-over</source>
+            <translation>横送り</translation>
+        </message>
+        <message>
+            <source>a string ({})</source>
+            <translation>文字列 ({})</translation>
+        </message>
+        <message>
+            <source>null</source>
+            <translation>null</translation>
+        </message>
+        <message>
+            <source>an object</source>
+            <translation>オブジェクト</translation>
+        </message>
+        <message>
+            <source>an array</source>
+            <translation>配列</translation>
+        </message>
+        <message>
+            <source>a string</source>
+            <translation>文字列</translation>
+        </message>
+        <message>
+            <source>a boolean</source>
+            <translation>真偽値</translation>
+        </message>
+        <message>
+            <source>a number</source>
+            <translation>数値</translation>
+        </message>
+        <message>
+            <source>an unexpected value</source>
+            <translation>想定外の値</translation>
+        </message>
+        <message>
+            <source>one of {}</source>
+            <translation>{} のいずれか</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>ファイルが空です</translation>
+        </message>
+        <message>
+            <source>the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)</source>
+            <translation>ファイルが {} バイト ({} MB) です。ジョブファイルは最大 {} バイト ({} MB) です</translation>
+        </message>
+        <message>
+            <source>cannot open: {}</source>
+            <translation>開けません: {}</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {}</source>
+            <translation>ファイルを読めません: {}</translation>
+        </message>
+        <message>
+            <source>not a regular file; a job file is a JSON document</source>
+            <translation>通常のファイルではありません。ジョブファイルは JSON 文書です</translation>
+        </message>
+        <message>
+            <source>not a job file: JSON syntax error at byte {} (line {}, column {}): {}</source>
+            <translation>ジョブファイルではありません: {} バイト目 ({} 行 {} 列) に JSON の構文エラー: {}</translation>
+        </message>
+        <message>
+            <source>not a job file: arrays and objects nested more than {} deep at byte {} (line {}, column {})</source>
+            <translation>ジョブファイルではありません: {1} バイト目 ({2} 行 {3} 列) で配列とオブジェクトが {0} 段より深く入れ子になっています</translation>
+        </message>
+        <message>
+            <source>the number {} is too large for any dimension</source>
+            <translation>数値 {} はどの寸法としても大きすぎます</translation>
+        </message>
+        <message>
+            <source>not a job file: the document is {}, a job is a JSON object</source>
+            <translation>ジョブファイルではありません: 文書が{}です。ジョブは JSON オブジェクトです</translation>
+        </message>
+        <message>
+            <source>not a job file: it has no "format": "taiwa-job"</source>
+            <translation>ジョブファイルではありません: "format": "taiwa-job" がありません</translation>
+        </message>
+        <message>
+            <source>not a job file: its "format" is {}, a job has "taiwa-job"</source>
+            <translation>ジョブファイルではありません: "format" が{}です。ジョブは "taiwa-job" です</translation>
+        </message>
+        <message>
+            <source>written by a newer Taiwa (format version {}); this program reads version {}</source>
+            <translation>新しい Taiwa で書かれています (形式バージョン {})。このプログラムが読めるのはバージョン {} です</translation>
+        </message>
+        <message>
+            <source>format version {} does not exist; this program reads version {}</source>
+            <translation>形式バージョン {} はありません。このプログラムが読めるのはバージョン {} です</translation>
+        </message>
+        <message>
+            <source>missing; it must be {}</source>
+            <translation>ありません。{}が必要です</translation>
+        </message>
+        <message>
+            <source>must be {}, found {}</source>
+            <translation>{}でなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>must be a whole number, found {}</source>
+            <translation>整数でなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>must be a whole number from -2147483648 to 2147483647, found {}</source>
+            <translation>-2147483648 ～ 2147483647 の整数でなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>unknown field; {} has {}</source>
+            <translation>不明な項目です。{}にあるのは {} です</translation>
+        </message>
+        <message>
+            <source>unknown module {}; this program knows {}</source>
+            <translation>不明なモジュール {} です。このプログラムが知っているのは {} です</translation>
+        </message>
+        <message>
+            <source>unknown stock shape {}; this program knows {}</source>
+            <translation>不明な素材形状 {} です。このプログラムが知っているのは {} です</translation>
+        </message>
+        <message>
+            <source>needs exactly four corner points P1..P4, found {}</source>
+            <translation>角の点 P1..P4 がちょうど 4 つ必要ですが、{} 個あります</translation>
+        </message>
+        <message>
+            <source>must be a point [x, y], found an array of {}</source>
+            <translation>点 [x, y] でなければなりませんが、要素 {} 個の配列です</translation>
+        </message>
+        <message>
+            <source>must be a point [x, y], found {}</source>
+            <translation>点 [x, y] でなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>given more than once; say it once so that it is clear which value counts</source>
+            <translation>2 回以上指定されています。どの値が有効か明らかになるよう 1 回だけ指定してください</translation>
+        </message>
+        <message>
+            <source>a whole number</source>
+            <translation>整数</translation>
+        </message>
+        <message>
+            <source>a point [x, y]</source>
+            <translation>点 [x, y]</translation>
+        </message>
+        <message>
+            <source>the jaws' height</source>
+            <translation>バイスの口金の高さ</translation>
+        </message>
+        <message>
+            <source>the wall allowance roughing leaves</source>
+            <translation>荒加工が残す壁の仕上げ代</translation>
+        </message>
+        <message>
+            <source>the wall allowance semi-finishing leaves</source>
+            <translation>中仕上げが残す壁の仕上げ代</translation>
+        </message>
+        <message>
+            <source>the floor allowance roughing leaves</source>
+            <translation>荒加工が残す底の仕上げ代</translation>
+        </message>
+        <message>
+            <source>the surface speed S</source>
+            <translation>切削速度 S</translation>
+        </message>
+        <message>
+            <source>the spindle speed S</source>
+            <translation>主軸回転数 S</translation>
+        </message>
+        <message>
+            <source>the feed F</source>
+            <translation>送り F</translation>
+        </message>
+        <message>
+            <source>an object with S and/or F</source>
+            <translation>S と F (どちらか一方でも可) を持つオブジェクト</translation>
+        </message>
+        <message>
+            <source>a step's speed and feed</source>
+            <translation>工程の回転数と送り</translation>
+        </message>
+        <message>
+            <source>a bar stock</source>
+            <translation>棒材の素材</translation>
+        </message>
+        <message>
+            <source>a block stock</source>
+            <translation>ブロックの素材</translation>
+        </message>
+        <message>
+            <source>an array of lines of figure-element text</source>
+            <translation>図形要素のテキスト行の配列</translation>
+        </message>
+        <message>
+            <source>a line of text</source>
+            <translation>テキスト 1 行</translation>
+        </message>
+        <message>
+            <source>the clamping</source>
+            <translation>クランプ</translation>
+        </message>
+        <message>
+            <source>the technology overrides</source>
+            <translation>加工条件の上書き</translation>
+        </message>
+        <message>
+            <source>a job</source>
+            <translation>ジョブ</translation>
+        </message>
+        <message>
+            <source>an array of machining units</source>
+            <translation>加工ユニットの配列</translation>
+        </message>
+        <message>
+            <source>{} more errors not listed; correct the ones above first</source>
+            <translation>ほかに {} 件のエラーがあります。まず上のものを直してください</translation>
+        </message>
+        <message>
+            <source>centre drill</source>
+            <translation>センタードリル</translation>
+        </message>
+        <message>
+            <source>drill</source>
+            <translation>ドリル</translation>
+        </message>
+        <message>
+            <source>flat end mill</source>
+            <translation>フラットエンドミル</translation>
+        </message>
+        <message>
+            <source>ball end mill</source>
+            <translation>ボールエンドミル</translation>
+        </message>
+        <message>
+            <source>taper end mill</source>
+            <translation>テーパエンドミル</translation>
+        </message>
+        <message>
+            <source>face mill</source>
+            <translation>正面フライス</translation>
+        </message>
+        <message>
+            <source>turning insert</source>
+            <translation>旋削チップ</translation>
+        </message>
+        <message>
+            <source>grooving tool</source>
+            <translation>溝入れバイト</translation>
+        </message>
+        <message>
+            <source>threading tool</source>
+            <translation>ねじ切りバイト</translation>
+        </message>
+        <message>
+            <source>probe</source>
+            <translation>タッチプローブ</translation>
+        </message>
+        <message>
+            <source>tap</source>
+            <translation>タップ</translation>
+        </message>
+        <message>
+            <source>reamer</source>
+            <translation>リーマ</translation>
+        </message>
+        <message>
+            <source>boring bar</source>
+            <translation>ボーリングバー</translation>
+        </message>
+        <message>
+            <source>a point's X</source>
+            <translation>点の X</translation>
+        </message>
+        <message>
+            <source>a point's Y</source>
+            <translation>点の Y</translation>
+        </message>
+        <message>
+            <source>the depth</source>
+            <translation>深さ</translation>
+        </message>
+        <message>
+            <source>the tool diameter</source>
+            <translation>工具径</translation>
+        </message>
+        <message>
+            <source>outline</source>
+            <translation>外形</translation>
+        </message>
+        <message>
+            <source>an array of contour names</source>
+            <translation>輪郭名の配列</translation>
+        </message>
+        <message>
+            <source>a contour name</source>
+            <translation>輪郭名</translation>
+        </message>
+        <message>
+            <source>an array of points [x, y]</source>
+            <translation>点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>pocket</source>
+            <translation>ポケット</translation>
+        </message>
+        <message>
+            <source>the contour's narrowest reach</source>
+            <translation>輪郭の最も狭い箇所</translation>
+        </message>
+        <message>
+            <source>U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) or 9 (roughing only, the finishing allowance left)</source>
+            <translation>U {} は正面フライス削りの工具使用ではありません。1 (荒加工層と仕上げパス) か 9 (荒加工のみ、仕上げ代を残す) にしてください</translation>
+        </message>
+        <message>
+            <source>pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in the same direction) or 2 (zigzag: back and forth)</source>
+            <translation>パターン {} は正面フライス削りのパターンではありません。1 (一方向、ダウンカット: 全パス同じ向き) か 2 (ジグザグ: 往復) にしてください</translation>
+        </message>
+        <message>
+            <source>the depth {} is not less than the stock's height {}: facing takes a layer off the top, it does not mill the whole block away</source>
+            <translation>深さ {} が素材の高さ {} 以上です。正面削りは上面の層を取るもので、ブロック全体を削り取るものではありません</translation>
+        </message>
+        <message>
+            <source>the finishing pass</source>
+            <translation>仕上げパス</translation>
+        </message>
+        <message>
+            <source>the finishing pass is {}; it must be greater than zero (leave the field empty for the technology data's β2)</source>
+            <translation>仕上げパスが {} です。0 より大きくしてください (加工条件の β2 を使うときは空欄のままに)</translation>
+        </message>
+        <message>
+            <source>the finishing pass {}{} is not less than the depth {}: roughing would have nothing to take; give a smaller finishing pass</source>
+            <translation>仕上げパス {}{} が深さ {} 以上です。荒加工で削るものがなくなります。仕上げパスを小さくしてください</translation>
+        </message>
+        <message>
+            <source>the angle</source>
+            <translation>角度</translation>
+        </message>
+        <message>
+            <source>the angle {} lies beyond ±360°; give the passes' direction from +X, e.g. 0 or 90</source>
+            <translation>角度 {} が ±360° を超えています。パスの方向を +X から指定してください (例: 0 または 90)</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D must be greater than 0: passes that do not step sideways never cover the face</source>
+            <translation>横送り {} × D は 0 より大きくしてください。横にずれないパスでは面全体を削れません</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D is less than {:g} × D: the face would take more than a hundred passes a tool diameter</source>
+            <translation>横送り {} × D が {} × D 未満です。工具径 1 つ分あたり 100 を超えるパスが必要になります</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D is more than {:g} × D: neighbouring passes would overlap by less than a tenth of the diameter, and the inserts' corners and the tool's run-out leave ridges between them</source>
+            <translation>横送り {} × D が {} × D を超えています。隣り合うパスの重なりが径の 1/10 未満になり、チップの角と工具の振れでパスの間に筋が残ります</translation>
+        </message>
+        <message>
+            <source>the margin</source>
+            <translation>はみ出し量</translation>
+        </message>
+        <message>
+            <source>the margin is {}; it must be 0 (the face is the stock's top) or more (the face reaches beyond the stock's sides): less would leave the top's edges unfaced</source>
+            <translation>はみ出し量が {} です。0 (面は素材の上面) 以上 (面は素材の側面の外まで) にしてください。それより小さいと上面の縁が削り残されます</translation>
+        </message>
+        <message>
+            <source>a face-milling unit has no step "{}"; its steps are "face"</source>
+            <translation>正面フライス削りのユニットには工程「{}」がありません。工程は "face" です</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but is not a face mill or a flat end mill: a face is cut flat by the tool's flat bottom</source>
+            <translation>{} が "face" に指定されていますが、正面フライスでもフラットエンドミルでもありません。面は工具の平らな底で平らに削ります</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but is not a face mill or a flat end mill with a corner radius under 0.4 D: a face is cut flat by the tool's flat bottom</source>
+            <translation>{} が "face" に指定されていますが、正面フライスでもコーナ半径 0.4 D 未満のフラットエンドミルでもありません。面は工具の平らな底で平らに削ります</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but cuts {} at most, less than the finishing pass {}; give a smaller finishing pass or another tool</source>
+            <translation>{} が "face" に指定されていますが、最大切込み {} は仕上げパス {} より小さくなっています。仕上げパスを小さくするか別の工具にしてください</translation>
+        </message>
+        <message>
+            <source>the tool library has no face mill or flat end mill that cuts the finishing pass {} in one cut; add one or give a smaller finishing pass</source>
+            <translation>仕上げパス {} を一度で削れる正面フライスもフラットエンドミルも工具ライブラリにありません。追加するか仕上げパスを小さくしてください</translation>
+        </message>
+        <message>
+            <source>largest {} in the library (Ø{}), cutting {} a layer</source>
+            <translation>ライブラリで最大の{} (Ø{})、1 層 {} の切込み</translation>
+        </message>
+        <message>
+            <source>{} {} must be 1 to {}</source>
+            <translation>{} {} は 1 ～ {} にしてください</translation>
+        </message>
+        <message>
+            <source>the columns</source>
+            <translation>列数</translation>
+        </message>
+        <message>
+            <source>the number of holes</source>
+            <translation>穴数</translation>
+        </message>
+        <message>
+            <source>the rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>{} columns by {} rows are {} holes, more than the {} a unit may have</source>
+            <translation>{} 列 × {} 行で {} 穴になり、1 ユニットの上限 {} を超えます</translation>
+        </message>
+        <message>
+            <source>the angle {:g}° must be from -360° to 360°</source>
+            <translation>角度 {}° は -360° ～ 360° にしてください</translation>
+        </message>
+        <message>
+            <source>{} {} must be greater than zero</source>
+            <translation>{} {} は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>the pitch</source>
+            <translation>ピッチ</translation>
+        </message>
+        <message>
+            <source>the pitch between rows</source>
+            <translation>行間のピッチ</translation>
+        </message>
+        <message>
+            <source>the radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>the angular pitch {:g}° must not be 0 and lie within ±360°</source>
+            <translation>角度ピッチ {}° は 0 以外で ±360° 以内にしてください</translation>
+        </message>
+        <message>
+            <source>thread "{}" is not one this program taps: ISO metric coarse {}</source>
+            <translation>ねじ「{}」はこのプログラムでタップを立てられません。ISO メートル並目: {}</translation>
+        </message>
+        <message>
+            <source>a tapped hole's diameter is its thread's: leave out "diameter"</source>
+            <translation>タップ穴の径はねじの径です。"diameter" は省いてください</translation>
+        </message>
+        <message>
+            <source>the diameter</source>
+            <translation>径</translation>
+        </message>
+        <message>
+            <source>the diameter {} must be {} to {}</source>
+            <translation>径 {} は {} ～ {} にしてください</translation>
+        </message>
+        <message>
+            <source>the depth {} must be greater than zero</source>
+            <translation>深さ {} は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>{} {} is not more than the hole's diameter {}: the holes would cut into each other</source>
+            <translation>{} {} が穴径 {} 以下です。穴どうしが食い込みます</translation>
+        </message>
+        <message>
+            <source>the distance between neighbouring holes</source>
+            <translation>隣り合う穴の間隔</translation>
+        </message>
+        <message>
+            <source>holes {} and {} lie {} apart, not more than the diameter {}: the arc closes on itself; fewer holes or a smaller angular pitch</source>
+            <translation>穴 {} と {} の間隔が {} で、径 {} 以下です。円弧が一周して重なります。穴数を減らすか角度ピッチを小さくしてください</translation>
+        </message>
+        <message>
+            <source>hole {} (X {}, Y {}) reaches outside the stock; move the pattern or enlarge the stock</source>
+            <translation>穴 {} (X {}, Y {}) が素材の外にはみ出しています。パターンを移動するか素材を大きくしてください</translation>
+        </message>
+        <message>
+            <source>the hole goes down to {} with its drill point (its tools go deeper than the depth {}; docs/holes.md), below the stock's height {}: through holes are not made; make it shallower</source>
+            <translation>穴はドリル先端で {} まで達し (工具は深さ {} より深く入ります。docs/holes.md)、素材の高さ {} より下になります。通し穴は作りません。浅くしてください</translation>
+        </message>
+        <message>
+            <source>a {} hole has no step "{}"; its steps are {}</source>
+            <translation>{}穴には工程「{}」がありません。工程は {} です</translation>
+        </message>
+        <message>
+            <source>pattern "{}" is not one of {}</source>
+            <translation>パターン「{}」は {} のいずれでもありません</translation>
+        </message>
+        <message>
+            <source>hole "{}" is not one of {}</source>
+            <translation>穴「{}」は {} のいずれでもありません</translation>
+        </message>
+        <message>
+            <source>T{} ({}) is pinned for "{}" but is not a {}</source>
+            <translation>T{} ({}) が「{}」に指定されていますが、{}ではありません</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library; add one</source>
+            <translation>工具ライブラリに{}がありません。追加してください</translation>
+        </message>
+        <message>
+            <source>the tap drill of {}</source>
+            <translation>{} の下穴ドリル</translation>
+        </message>
+        <message>
+            <source>the hole's</source>
+            <translation>穴の</translation>
+        </message>
+        <message>
+            <source>drill of Ø{} ({}) whose flutes reach {}</source>
+            <translation>Ø{} のドリル ({})、刃長 {} まで</translation>
+        </message>
+        <message>
+            <source>drill of Ø{}: {}</source>
+            <translation>Ø{} のドリル: {}</translation>
+        </message>
+        <message>
+            <source>drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}</source>
+            <translation>Ø{} ～ Ø{} のドリル ({} Ø{} に対して {} ～ {} 小さい)、刃長 {} まで</translation>
+        </message>
+        <message>
+            <source>largest drill {} to {} under Ø{} to {}</source>
+            <translation>Ø{2} より {0} ～ {1} 小さい最大のドリル ({3} 用)</translation>
+        </message>
+        <message>
+            <source>tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}</source>
+            <translation>タップ {}x{} (種類 tap、Ø{}、ピッチ {})、刃長 {} まで</translation>
+        </message>
+        <message>
+            <source>tap {}x{:g}</source>
+            <translation>タップ {}x{}</translation>
+        </message>
+        <message>
+            <source>{} of Ø{} whose flutes reach {}</source>
+            <translation>Ø{1} の{0}、刃長 {2} まで</translation>
+        </message>
+        <message>
+            <source>{} of the hole's Ø{}</source>
+            <translation>穴径 Ø{1} の{0}</translation>
+        </message>
+        <message>
+            <source>centre drill spotting Ø{} for the Ø{} drill</source>
+            <translation>Ø{1} ドリル用に Ø{0} をもみ付けるセンタードリル</translation>
+        </message>
+        <message>
+            <source>the corner radius</source>
+            <translation>コーナ半径</translation>
+        </message>
+        <message>
+            <source>the scallop height</source>
+            <translation>カスプ高さ</translation>
+        </message>
+        <message>
+            <source>pocket opening</source>
+            <translation>ポケットの開口</translation>
+        </message>
+        <message>
+            <source>the cornerRadius</source>
+            <translation>コーナ半径</translation>
+        </message>
+        <message>
+            <source>the taper</source>
+            <translation>テーパ</translation>
+        </message>
+        <message>
+            <source>an array of 4 points [x, y]</source>
+            <translation>4 つの点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>island</source>
+            <translation>島</translation>
+        </message>
+        <message>
+            <source>shape {} is not defined: 1 round (boss or bore), 2 rectangular (block or pocket)</source>
+            <translation>形状 {} は定義されていません: 1 円形 (ボスまたは穴)、2 矩形 (ブロックまたはポケット)</translation>
+        </message>
+        <message>
+            <source>where {} is not defined: 1 touched from outside (boss, block), 2 from inside (bore, pocket)</source>
+            <translation>測定側 {} は定義されていません: 1 外側から (ボス、ブロック)、2 内側から (穴、ポケット)</translation>
+        </message>
+        <message>
+            <source>point {}: its {} is missing</source>
+            <translation>点 {}: {} がありません</translation>
+        </message>
+        <message>
+            <source>point {}: say which side it touches: 1 -X, 2 +X, 3 -Y, 4 +Y</source>
+            <translation>点 {}: どの面に触れるか指定してください: 1 -X、2 +X、3 -Y、4 +Y</translation>
+        </message>
+        <message>
+            <source>point 1 is the measuring origin: it is at 0, 0 and the others are measured from it</source>
+            <translation>点 1 は測定原点です。0, 0 にあり、他の点はそこから測ります</translation>
+        </message>
+        <message>
+            <source>the machine Z of the top face</source>
+            <translation>上面の機械座標 Z</translation>
+        </message>
+        <message>
+            <source>{} must be above 0 and at most {:g} mm, not {:g}</source>
+            <translation>{} は 0 より大きく {} mm 以下にしてください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>the nominal width along X</source>
+            <translation>X 方向の呼び幅</translation>
+        </message>
+        <message>
+            <source>the nominal diameter</source>
+            <translation>呼び径</translation>
+        </message>
+        <message>
+            <source>the nominal length along Y</source>
+            <translation>Y 方向の呼び長さ</translation>
+        </message>
+        <message>
+            <source>the depth of the side touches</source>
+            <translation>側面測定の深さ</translation>
+        </message>
+        <message>
+            <source>the clearance</source>
+            <translation>逃げ</translation>
+        </message>
+        <message>
+            <source>the search distance</source>
+            <translation>探索距離</translation>
+        </message>
+        <message>
+            <source>the probing feed must be above 0 and at most 5000 mm/min, not {:g}</source>
+            <translation>測定送りは 0 より大きく 5000 mm/min 以下にしてください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>the tolerance must lie between 0.001 and 1 mm, not {:g}</source>
+            <translation>公差は 0.001 ～ 1 mm にしてください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>T{} is not a probe in the tool library</source>
+            <translation>T{} は工具ライブラリのタッチプローブではありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no probe, or several: add one of type "probe" or say which (T)</source>
+            <translation>工具ライブラリにタッチプローブがないか、複数あります。種類 "probe" を 1 つ追加するか、どれを使うか指定してください (T)</translation>
+        </message>
+        <message>
+            <source>an array of 1 to 8 points [x, y], the first [0, 0]</source>
+            <translation>1 ～ 8 個の点 [x, y] の配列 (最初は [0, 0])</translation>
+        </message>
+        <message>
+            <source>a point [x, y] or null</source>
+            <translation>点 [x, y] または null</translation>
+        </message>
+        <message>
+            <source>an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)</source>
+            <translation>最大 8 個の面コードの配列 (1 -X、2 +X、3 -Y、4 +Y)</translation>
+        </message>
+        <message>
+            <source>the width</source>
+            <translation>幅</translation>
+        </message>
+        <message>
+            <source>the width W</source>
+            <translation>幅 W</translation>
+        </message>
+        <message>
+            <source>the contour's smallest inside radius on the tool's side</source>
+            <translation>工具側の輪郭の最小内側半径</translation>
+        </message>
+        <message>
+            <source>side milling</source>
+            <translation>側面削り</translation>
+        </message>
+        <message>
+            <source>pinned tool T{} ({}) does not fit: {}</source>
+            <translation>指定された工具 T{} ({}) は使えません: {}</translation>
+        </message>
+        <message>
+            <source>a TURN unit</source>
+            <translation>TURN ユニット</translation>
+        </message>
+        <message>
+            <source>the start point</source>
+            <translation>始点</translation>
+        </message>
+        <message>
+            <source>an array of profile rows</source>
+            <translation>形状の行の配列</translation>
+        </message>
+        <message>
+            <source>a profile row</source>
+            <translation>形状の行</translation>
+        </message>
+        <message>
+            <source>a thread</source>
+            <translation>ねじ</translation>
+        </message>
+        <message>
+            <source>an array of grinding-allowance rows</source>
+            <translation>研削代の行の配列</translation>
+        </message>
+        <message>
+            <source>a grinding-allowance row</source>
+            <translation>研削代の行</translation>
+        </message>
+        <message>
+            <source>an array of step names</source>
+            <translation>工程名の配列</translation>
+        </message>
+        <message>
+            <source>a step name</source>
+            <translation>工程名</translation>
+        </message>
+        <message>
+            <source>the {} has {} rows; a turned profile has at most {} (split the part into several units)</source>
+            <translation>{}が {} 行あります。旋削形状は最大 {} 行です (部品を複数のユニットに分けてください)</translation>
+        </message>
+        <message>
+            <source>"{}" is not a turning step; steps are {}</source>
+            <translation>「{}」は旋削の工程ではありません。工程は {} です</translation>
+        </message>
+        <message>
+            <source>"{}" is not a turning step; tools can be pinned for {}</source>
+            <translation>「{}」は旋削の工程ではありません。工具を指定できるのは {} です</translation>
+        </message>
+        <message>
+            <source>{} is on an inner profile: internal threads are not cut yet (only external ones)</source>
+            <translation>{} は内径形状上にあります。内ねじはまだ切れません (外ねじのみ)</translation>
+        </message>
+        <message>
+            <source>{} is an arc: a thread is cut on a straight row along the axis</source>
+            <translation>{} は円弧です。ねじは軸に沿った直線の行に切ります</translation>
+        </message>
+        <message>
+            <source>{} is not a cylinder cut toward the chuck (a taper or a face): a thread is cut on a straight row along the axis, from the front back</source>
+            <translation>{} はチャック側へ削る円筒ではありません (テーパか端面)。ねじは軸に沿った直線の行に、前から奥へ切ります</translation>
+        </message>
+        <message>
+            <source>{} has a grinding allowance: a thread is not ground</source>
+            <translation>{} に研削代があります。ねじは研削しません</translation>
+        </message>
+        <message>
+            <source>a pitch of {} is out of range: {} to {}</source>
+            <translation>ピッチ {} が範囲外です: {} ～ {}</translation>
+        </message>
+        <message>
+            <source>a thread {} deep does not fit Ø{} with pitch {}: at most {} (the sharp V's height, and a core of half the diameter)</source>
+            <translation>深さ {0} のねじはピッチ {2} で Ø{1} に入りません。最大 {3} です (とがった V の高さと、径の半分の芯)</translation>
+        </message>
+        <message>
+            <source>no external threading insert of the tool library cuts a pitch of {}</source>
+            <translation>ピッチ {} を切れる外ねじ用ねじ切りチップが工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the profile reaches Ø{}, more than the bar's Ø{}</source>
+            <translation>形状が Ø{} に達し、棒材の Ø{} を超えています</translation>
+        </message>
+        <message>
+            <source>the profile with its grinding allowances reaches Ø{}, more than the bar's Ø{}</source>
+            <translation>研削代を含めた形状が Ø{} に達し、棒材の Ø{} を超えています</translation>
+        </message>
+        <message>
+            <source>the profile reaches Z{}, beyond the bar's face stock (Z{})</source>
+            <translation>形状が Z{} に達し、棒材の端面取り代 (Z{}) を超えています</translation>
+        </message>
+        <message>
+            <source>the profile reaches Z{}, beyond the bar's end (Z{})</source>
+            <translation>形状が Z{} に達し、棒材の端 (Z{}) を超えています</translation>
+        </message>
+        <message>
+            <source>T number {} must be 1 to {}</source>
+            <translation>T 番号 {} は 1 ～ {} にしてください</translation>
+        </message>
+        <message>
+            <source>diameter {:g} mm is more than 500 mm</source>
+            <translation>径 {} mm が 500 mm を超えています</translation>
+        </message>
+        <message>
+            <source>corner radius {:g} mm must not be negative</source>
+            <translation>コーナ半径 {} mm は負にできません</translation>
+        </message>
+        <message>
+            <source>corner radius {:g} mm is more than half the diameter ({:g} mm)</source>
+            <translation>コーナ半径 {} mm が径の半分 ({} mm) を超えています</translation>
+        </message>
+        <message>
+            <source>taper {:g}° per side must be 0 to less than 45°</source>
+            <translation>片側テーパ {}° は 0 以上 45° 未満にしてください</translation>
+        </message>
+        <message>
+            <source>flute length {:g} mm must not be negative</source>
+            <translation>刃長 {} mm は負にできません</translation>
+        </message>
+        <message>
+            <source>holder Ø {:g} mm must not be negative</source>
+            <translation>ホルダ径 Ø {} mm は負にできません</translation>
+        </message>
+        <message>
+            <source>holder Ø {:g} mm is narrower than the tool (Ø {:g} mm)</source>
+            <translation>ホルダ径 Ø {} mm が工具 (Ø {} mm) より細くなっています</translation>
+        </message>
+        <message>
+            <source>holder length {:g} mm must not be negative</source>
+            <translation>ホルダ長 {} mm は負にできません</translation>
+        </message>
+        <message>
+            <source>stick-out {:g} mm must not be negative</source>
+            <translation>突出し長 {} mm は負にできません</translation>
+        </message>
+        <message>
+            <source>stick-out {:g} mm is shorter than the flutes ({:g} mm)</source>
+            <translation>突出し長 {} mm が刃長 ({} mm) より短くなっています</translation>
+        </message>
+        <message>
+            <source>a tap's pitch {:g} mm must be greater than zero, at most 10 mm (one pitch)</source>
+            <translation>タップのピッチ {} mm は 0 より大きく 10 mm 以下にしてください (1 ピッチ)</translation>
+        </message>
+        <message>
+            <source>life {:g} min must not be negative</source>
+            <translation>寿命 {} 分は負にできません</translation>
+        </message>
+        <message>
+            <source>used {:g} min must not be negative</source>
+            <translation>使用時間 {} 分は負にできません</translation>
+        </message>
+        <message>
+            <source>it is a {}, the step needs a {}</source>
+            <translation>この工具は{}ですが、工程には{}が必要です</translation>
+        </message>
+        <message>
+            <source>its taper is {:g} deg per side, the wall's is {:g}</source>
+            <translation>工具のテーパは片側 {} 度、壁は {} 度です</translation>
+        </message>
+        <message>
+            <source>its radius {:g} mm is larger than the corner radius {:g} mm</source>
+            <translation>工具半径 {} mm がコーナ半径 {} mm より大きくなっています</translation>
+        </message>
+        <message>
+            <source>it does not cut at its centre, so it cannot ramp in without a pilot hole</source>
+            <translation>センターカットがないので、下穴なしではランプで切り込めません</translation>
+        </message>
+        <message>
+            <source>its diameter {:g} mm is too large for the pocket</source>
+            <translation>工具径 {} mm はポケットに対して大きすぎます</translation>
+        </message>
+        <message>
+            <source>its diameter {:g} mm is smaller than the {:g} mm needed</source>
+            <translation>工具径 {} mm が必要な {} mm より小さくなっています</translation>
+        </message>
+        <message>
+            <source>its flutes ({:g} mm) are shorter than the depth {:g} mm</source>
+            <translation>刃長 ({} mm) が深さ {} mm より短くなっています</translation>
+        </message>
+        <message>
+            <source>its stick-out ({:g} mm) is shorter than the depth {:g} mm</source>
+            <translation>突出し長 ({} mm) が深さ {} mm より短くなっています</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {:g} deg per side in the tool library for the {}</source>
+            <translation>{1}用の片側 {0} 度のテーパエンドミルが工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library for the {}</source>
+            <translation>{1}用の{0}が工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
+            <translation>工具ライブラリには{1}に使える{0}がありません。最も近いのは T{2} ({3}) ですが、{4}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: there is no edge {} in the profile</source>
+            <translation>取り代の行 {}: 形状に要素 {} がありません</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} already has an allowance in row {}</source>
+            <translation>取り代の行 {}: {} にはすでに行 {} で取り代があります</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the allowance must be above zero</source>
+            <translation>取り代の行 {}: 取り代は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the adjustment cannot be below zero</source>
+            <translation>取り代の行 {}: 調整量は負にできません</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove width must be above zero</source>
+            <translation>取り代の行 {}: 溝幅は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove depth must be above zero</source>
+            <translation>取り代の行 {}: 溝深さは 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the moved {} and the moved {} do not meet</source>
+            <translation>取り代の行 {}: 移動した {} と移動した {} が交わりません</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} meets {} at a tangent joint, where the tool's nose radius leaves a ridge; give the adjustment, or add a finishing turning tool to the library so that its nose radius is taken</source>
+            <translation>取り代の行 {}: {} と {} が接線でつながり、そこに工具のノーズ半径で段が残ります。調整量を指定するか、ノーズ半径を使えるよう仕上げ用旋削工具をライブラリに追加してください</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an adjustment of {} is not shorter than {} ({} long)</source>
+            <translation>取り代の行 {}: 調整量 {} が {} (長さ {}) より短くありません</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the tangent of {} does not reach the moved {}</source>
+            <translation>取り代の行 {}: {} の接線が移動した {} に届きません</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} on {} reaches past the end of its neighbour {} ({} long); the edges would cross</source>
+            <translation>取り代の行 {0}: {2} の取り代 {1} が隣の {3} (長さ {4}) の端を越えます。要素どうしが交差します</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} is an arc of radius {}; an allowance of {} leaves it no radius</source>
+            <translation>取り代の行 {}: {} は半径 {} の円弧です。取り代 {} では半径がなくなります</translation>
+        </message>
+        <message>
+            <source>allowance row {}: with an allowance of {} the moved {} vanishes between its neighbours; the edges would cross</source>
+            <translation>取り代の行 {}: 取り代 {} では移動した {} が隣どうしの間で消えます。要素どうしが交差します</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} moves {} into {}; the edges would cross</source>
+            <translation>取り代の行 {}: 取り代 {} で {} が {} に食い込みます。要素どうしが交差します</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} moves {} past the axis</source>
+            <translation>取り代の行 {}: 取り代 {} で {} が軸を越えます</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
+            <translation>取り代の行 {0}: 幅 {2}、深さ {3} の{1}溝が長さ {6} の {5} のうち {4} を占めます</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
+            <translation>取り代の行 {0}: {2} の深さ {1} の溝が {3} に達します。部品が許すより深くなっています</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
+            <translation>取り代の行 {0}: {2} の深さ {1} の溝が軸に達します。部品が許すより深くなっています</translation>
+        </message>
+        <message>
+            <source>the allowances and grooves split the part into {} pieces</source>
+            <translation>取り代と溝で部品が {} 個に分かれます</translation>
+        </message>
+        <message>
+            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
+            <translation>内部エラー: 変形した形状の Z{} X{} の部分がどの要素にも乗っていません。このジョブを報告してください</translation>
+        </message>
+        <message>
+            <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>
+            <translation>行 {} の要素番号 {} が固有の正の数ではありません。各行に必要です</translation>
+        </message>
+        <message>
+            <source>the start diameter is {}; a diameter cannot be below zero</source>
+            <translation>始点の径が {} です。径は負にできません</translation>
+        </message>
+        <message>
+            <source>row {}: the end point is not a number</source>
+            <translation>行 {}: 終点が数値ではありません</translation>
+        </message>
+        <message>
+            <source>row {}: the end diameter is {}; a diameter cannot be below zero</source>
+            <translation>行 {}: 終点の径が {} です。径は負にできません</translation>
+        </message>
+        <message>
+            <source>row {} ends where it starts (X{} Z{}): an element needs a length</source>
+            <translation>行 {} が始点 (X{} Z{}) で終わっています。要素には長さが必要です</translation>
+        </message>
+        <message>
+            <source>row {}: the centre is {} from the start and {} from the end point; an arc's centre is equally far from both</source>
+            <translation>行 {}: 中心が始点から {}、終点から {} の距離にあります。円弧の中心は両方から等距離です</translation>
+        </message>
+        <message>
+            <source>row {}: the radius {} does not match the centre, which is {} from the start</source>
+            <translation>行 {}: 半径 {} が中心と合いません。中心は始点から {} の距離です</translation>
+        </message>
+        <message>
+            <source>row {}: an arc's radius must be above zero</source>
+            <translation>行 {}: 円弧の半径は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>row {}: a radius of {} cannot reach the end point, which is {} from the start; the radius must be at least {}</source>
+            <translation>行 {}: 半径 {} では始点から {} 離れた終点に届きません。半径は {} 以上にしてください</translation>
+        </message>
+        <message>
+            <source>row {}: an arc needs its radius or its centre</source>
+            <translation>行 {}: 円弧には半径か中心が必要です</translation>
+        </message>
+        <message>
+            <source>row {}: the arc dips below the axis (to Ø{}); a turned profile stays at or above it</source>
+            <translation>行 {}: 円弧が軸の下 (Ø{} まで) に入ります。旋削形状は軸上かその上にとどまります</translation>
+        </message>
+        <message>
+            <source>row {}: a {} needs a next row to meet; there is none</source>
+            <translation>行 {}: {}には交わる次の行が必要ですが、ありません</translation>
+        </message>
+        <message>
+            <source>row {}: a {} is made between two lines; row {} is an arc</source>
+            <translation>行 {}: {}は 2 本の直線の間に作ります。行 {} は円弧です</translation>
+        </message>
+        <message>
+            <source>row {}: the {} size must be above zero</source>
+            <translation>行 {}: {}の大きさは 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>row {}: rows {} and {} are in line; there is no corner for a {}</source>
+            <translation>行 {}: 行 {} と {} が一直線上にあります。{}を付ける角がありません</translation>
+        </message>
+        <message>
+            <source>row {}: a {} of {} takes {} of both lines; row {} has {} and row {} has {}</source>
+            <translation>行 {0}: {2} の{1}は両方の直線から {3} を取ります。行 {4} は {5}、行 {6} は {7} です</translation>
+        </message>
+        <message>
+            <source>the profile is not one chain: {} (row {}) meets {} (row {}) at X{} Z{}</source>
+            <translation>形状が一続きではありません: {} (行 {}) が {} (行 {}) と X{} Z{} で交わります</translation>
+        </message>
+        <message>
+            <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
+            <translation>形状が部品を囲む一続きになっていません: {} (行 {}) が閉じる線 {} に X{} Z{} で達します</translation>
+        </message>
+        <message>
+            <source>the job</source>
+            <translation>ジョブ</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {})</source>
+            <translation>工程 {} ({}、ユニット {})</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {} '{}')</source>
+            <translation>工程 {} ({}、ユニット {} '{}')</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm² of the half-section</source>
+            <translation>{1} で仕上がり形状に深さ {0} の削り込み、半断面で {2} mm²</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm²</source>
+            <translation>{1} で仕上がり形状に深さ {0} の削り込み、面積 {2} mm²</translation>
+        </message>
+        <message>
+            <source>the tool's {} runs {} into stock at {}</source>
+            <translation>{2} で工具の{0}が素材に {1} 入ります</translation>
+        </message>
+        <message>
+            <source>rapid (G0) {} into stock at {}</source>
+            <translation>{1} で早送り (G0) が素材に {0} 入ります</translation>
+        </message>
+        <message>
+            <source>the paths span {} more along {} than the machine '{}' travels</source>
+            <translation>工具経路が {1} 方向で機械 '{2}' のストロークより {0} 長くなっています</translation>
+        </message>
+        <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残すべき量より最大 {} 厚く削り残しがあります。最も厚いのは {}、半断面で {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残すべき量より最大 {} 高く削り残しがあります。最も高いのは {}、面積 {} mm²</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}, tape line {}</source>
+            <translation>{}: {}、移動 {}、テープ {} 行目</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}</source>
+            <translation>{}: {}、移動 {}</translation>
+        </message>
+        <message>
+            <source>{}: {}, tape line {}</source>
+            <translation>{}: {}、テープ {} 行目</translation>
+        </message>
+        <message>
+            <source>holder</source>
+            <translation>ホルダ</translation>
+        </message>
+        <message>
+            <source>shank</source>
+            <translation>シャンク</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
             <source>Area</source>
@@ -2190,6 +3565,109 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>roughing step-over / tool diameter</source>
             <translation>荒加工のステップオーバ / 工具径</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::Drawing</name>
+        <message>
+            <source>AREA – top view</source>
+            <translation>AREA – 上面図</translation>
+        </message>
+        <message>
+            <source>Pn</source>
+            <translation>Pn</translation>
+        </message>
+        <message>
+            <source>passes</source>
+            <translation>パス</translation>
+        </message>
+        <message>
+            <source>section</source>
+            <translation>断面</translation>
+        </message>
+        <message>
+            <source>CP – top view</source>
+            <translation>CP – 上面図</translation>
+        </message>
+        <message>
+            <source>outline K1, islands K2, K3: CONTOURs</source>
+            <translation>外形 K1、島 K2, K3: CONTOUR</translation>
+        </message>
+        <message>
+            <source>FACE – top view</source>
+            <translation>FACE – 上面図</translation>
+        </message>
+        <message>
+            <source>margin</source>
+            <translation>はみ出し</translation>
+        </message>
+        <message>
+            <source>angle</source>
+            <translation>角度</translation>
+        </message>
+        <message>
+            <source>depth</source>
+            <translation>深さ</translation>
+        </message>
+        <message>
+            <source>finish</source>
+            <translation>仕上げ</translation>
+        </message>
+        <message>
+            <source>HOLES – top view</source>
+            <translation>HOLES – 上面図</translation>
+        </message>
+        <message>
+            <source>M2D – top view</source>
+            <translation>M2D – 上面図</translation>
+        </message>
+        <message>
+            <source>section along L1</source>
+            <translation>L1 方向の断面</translation>
+        </message>
+        <message>
+            <source>M4 – top view</source>
+            <translation>M4 – 上面図</translation>
+        </message>
+        <message>
+            <source>X, Y of P1…P4</source>
+            <translation>P1…P4 の X, Y</translation>
+        </message>
+        <message>
+            <source>round – top view</source>
+            <translation>円形 – 上面図</translation>
+        </message>
+        <message>
+            <source>centre</source>
+            <translation>中心</translation>
+        </message>
+        <message>
+            <source>rectangular – top view</source>
+            <translation>矩形 – 上面図</translation>
+        </message>
+        <message>
+            <source>-Y (twice)</source>
+            <translation>-Y (2 回)</translation>
+        </message>
+        <message>
+            <source>SIDE – top view</source>
+            <translation>SIDE – 上面図</translation>
+        </message>
+        <message>
+            <source>climb</source>
+            <translation>ダウンカット</translation>
+        </message>
+        <message>
+            <source>side 1: the tool left of K1's direction</source>
+            <translation>側 1: 工具は K1 の向きの左</translation>
+        </message>
+        <message>
+            <source>half-section: Z →, X (diameter) ↑</source>
+            <translation>半断面: Z →、X (直径) ↑</translation>
+        </message>
+        <message>
+            <source>start X0 Z0</source>
+            <translation>始点 X0 Z0</translation>
         </message>
     </context>
 </TS>

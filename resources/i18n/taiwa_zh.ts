@@ -1,5 +1,5 @@
 <?xml version="1.0" encoding="utf-8"?>
-<!-- Texts of the station window (lupdate from ui/ and core/modules/ by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
+<!-- Texts of the station window (lupdate from ui/ and core/, and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
     <context>
@@ -1636,6 +1636,1381 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         </message>
     </context>
     <context>
+        <name>taiwa::msg</name>
+        <message>
+            <source>T{} ({} {}, nose R{} mm)</source>
+            <translation>T{} ({} {}，刀尖R{} mm)</translation>
+        </message>
+        <message>
+            <source>T{} ({} Ø{} mm, {} per side)</source>
+            <translation>T{} ({} Ø{} mm，单边 {})</translation>
+        </message>
+        <message>
+            <source>T{} ({} Ø{} mm)</source>
+            <translation>T{} ({} Ø{} mm)</translation>
+        </message>
+        <message>
+            <source>{} is not a finite number; type a number</source>
+            <translation>{} 不是有限数值；请输入数字</translation>
+        </message>
+        <message>
+            <source>material "{}" is not in the technology table; known materials: {}</source>
+            <translation>材料“{}”不在工艺表中；已知材料：{}</translation>
+        </message>
+        <message>
+            <source>the stock {} is {}; it must be greater than zero</source>
+            <translation>毛坯的{}为 {}；必须大于零</translation>
+        </message>
+        <message>
+            <source>{} = {}{} must be greater than zero</source>
+            <translation>{} = {}{} 必须大于零</translation>
+        </message>
+        <message>
+            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
+            <translation>壁最终精加工余量 α3 = {} 必须小于粗加工壁余量 α2 = {}</translation>
+        </message>
+        <message>
+            <source>the pilot-hole remainder α1 = {} is not smaller than the depth {} of unit {}: the pilot hole would have no depth; use H = 9 or a smaller α1</source>
+            <translation>预钻孔余量 α1 = {0} 不小于单元 {2} 的深度 {1}：预钻孔将没有深度；请使用 H = 9 或减小 α1</translation>
+        </message>
+        <message>
+            <source>the floor allowance β2 = {} is not smaller than the depth {} of unit {}: roughing would not cut at all</source>
+            <translation>底面余量 β2 = {0} 不小于单元 {2} 的深度 {1}：粗加工将完全不切削</translation>
+        </message>
+        <message>
+            <source>{} is {}; every length and coordinate must lie within ±{} of the origin (beyond it a micrometre is no longer exact on the tape)</source>
+            <translation>{} 为 {}；所有长度和坐标都必须在原点 ±{} 以内（超出后程序中 1 微米不再精确）</translation>
+        </message>
+        <message>
+            <source>{} is {:g}{}; it must lie between {:g} and {:g}{} ({})</source>
+            <translation>{} 为 {}{}；必须在 {} 到 {}{} 之间（{}）</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
+            <translation>残留高度为 {}；至少应为 {}（更小只会使斜面刀路成倍增加，而机床无法保持更精细的表面）</translation>
+        </message>
+        <message>
+            <source>the stock {} is {}; a stock of more than {} a side is not a part for this station</source>
+            <translation>毛坯的{}为 {}；单边超过 {} 的毛坯不适用于本工作站</translation>
+        </message>
+        <message>
+            <source>the depth is {}; it must be greater than zero (measured down from the top face)</source>
+            <translation>深度为 {}；必须大于零（自顶面向下测量）</translation>
+        </message>
+        <message>
+            <source>the depth {} is deeper than the stock, which is {} high</source>
+            <translation>深度 {} 超过了毛坯高度 {}</translation>
+        </message>
+        <message>
+            <source>{} is {}; it must be greater than zero</source>
+            <translation>{} 为 {}；必须大于零</translation>
+        </message>
+        <message>
+            <source>the corner radius is {}; it cannot be negative</source>
+            <translation>圆角半径为 {}；不能为负</translation>
+        </message>
+        <message>
+            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
+            <translation>{}超出了毛坯；请移动它或加大毛坯</translation>
+        </message>
+        <message>
+            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
+            <translation>P{} 和 P{} 是同一点（{}, {}）；轮廓需要四个不同的角点</translation>
+        </message>
+        <message>
+            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
+            <translation>“{}”不是点列表；请将每个点输入为 X, Y，并用 ';' 分隔各点（10, 20; 60, 20），或在图形选项卡中绘制路径</translation>
+        </message>
+        <message>
+            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>尚未绘制任何点；路径从起点到终点：请至少绘制两个点</translation>
+        </message>
+        <message>
+            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>只绘制了一个点；路径从起点到终点：请至少绘制两个点</translation>
+        </message>
+        <message>
+            <source>point {} ({}, {}) lies outside the stock</source>
+            <translation>点 {}（{}, {}）位于毛坯之外</translation>
+        </message>
+        <message>
+            <source>pass {} ends where it starts; remove the repeated point</source>
+            <translation>路径 {} 的终点与起点相同；请删除重复的点</translation>
+        </message>
+        <message>
+            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
+            <translation>起点（{0}, {1}）使刀具边缘超出区域 {3} 或进入岛屿 {2}；请至少在内侧一个刀具半径处开始</translation>
+        </message>
+        <message>
+            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
+            <translation>路径 {0} 在刀具中心位于（{3}, {4}）时使刀具边缘超出区域 {2}（或进入岛屿）{1}；请使每条路径与壁保持一个刀具半径</translation>
+        </message>
+        <message>
+            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
+            <translation>刀具直径为 {}；必须为正：路径是一个刀具宽的条带</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
+            <translation>刀具库中没有用于所绘路径的 {}（或任何直径）的中心切削平底立铣刀</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
+            <translation>刀具库中没有路径绘制宽度 {} 的中心切削平底立铣刀；已有的平底立铣刀：{}</translation>
+        </message>
+        <message>
+            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
+            <translation>已指定 {}，但路径是为 {} 的刀具绘制的；请指定该直径的刀具，或更改直径后重新绘制</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
+            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
+            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
+        </message>
+        <message>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>请指定型腔{}的轮廓（作业图形元素中的 CONTOUR）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} 不是作业图形元素中的轮廓（图形元素未定义任何轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} 不是作业图形元素中的轮廓（已有轮廓：{}）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} 自相交；请检查其元素顺序以及每个连接处选择的一侧</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>岛屿 {0} 超出了{1}的外轮廓 {2}</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>岛屿 {} 和 {} 重叠；请将它们合并为一个轮廓</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} 在（{}, {}）处有尖锐内角：立铣刀无法切出，会在那里留下自身半径；请在轮廓中将该角倒圆（ROUND）</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} 不适用于轮廓型腔；请使用 1（全部工序）、6（无壁精加工）、8（仅壁）或 9（仅粗加工）</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外轮廓自相交；请沿型腔依次输入角点 P1..P4</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外轮廓不是凸的（有角点朝内，或三个角点共线）</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>圆角半径 {} 大于最短边（长 {}）的一半</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>圆角半径 {} 放不下：外轮廓内最大圆的半径为 {}</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>圆角半径 {} 大于 L2 = {} 的一半</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>单边锥度 {} 超出 0° 到 30° 的范围</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>单边锥度为 {} 时，两壁在底面以上的深度 {} 处相交</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} 超出 0° 到小于 60° 的范围（自竖直方向测量）</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>倾斜壁使沿 L1 方向的底面宽度为 {}；必须宽于 2 × r1 = {}（差 {}）：请减小角度或深度，或加长 L1</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
+            <translation>残留高度为 {}；必须大于零（通常 0.01 mm）</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
+            <translation>刀具使用代码 U = {} 未定义（代码 2 到 5 为保留）；请使用 1、6、7、8 或 9</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
+            <translation>刀具使用代码 U = {} 不存在；请使用 1、6、7、8 或 9</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
+            <translation>刀具使用代码 U = {} 不可用于 M2D；请使用 1（粗加工和精加工）或 9（仅粗加工）</translation>
+        </message>
+        <message>
+            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
+            <translation>精加工代码 F = {} 不存在；请使用 1、2 或 3</translation>
+        </message>
+        <message>
+            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
+            <translation>预钻孔代码 H = {} 不存在；请使用 0（钻预钻孔）或 9（无）</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
+            <translation>“{}”不是工序类型；可指定刀具的工序为 pilot、roughing、floor、wall、inclined</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of module {}; its steps are {}</source>
+            <translation>“{}”不是模块 {} 的工序；其工序为 {}</translation>
+        </message>
+        <message>
+            <source>module {} has no cutting steps to set a speed or feed for</source>
+            <translation>模块 {} 没有可设置转速或进给的切削工序</translation>
+        </message>
+        <message>
+            <source>{} {:g} {} is out of range: give {:g} to {:g} {}{}</source>
+            <translation>{} {} {} 超出范围：请给出 {} 到 {} {}{}</translation>
+        </message>
+        <message>
+            <source>tool T{} is not in the tool library</source>
+            <translation>刀具 T{} 不在刀具库中</translation>
+        </message>
+        <message>
+            <source>the tool library has no {}; add one to machine this pocket</source>
+            <translation>刀具库中没有{}；请添加一把以加工此型腔</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {} per side in the tool library (it has none)</source>
+            <translation>刀具库中没有单边 {} 的锥度立铣刀（一把也没有）</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {} per side in the tool library (it has {})</source>
+            <translation>刀具库中没有单边 {} 的锥度立铣刀（已有 {}）</translation>
+        </message>
+        <message>
+            <source>{} = {} is smaller than the radius of the smallest suitable tool, {}; no tool of the library fits: a corner radius of at least {} would let it fit</source>
+            <translation>{} = {} 小于最小合适刀具 {} 的半径；刀具库中没有能放入的刀具：圆角半径至少为 {} 才能放入</translation>
+        </message>
+        <message>
+            <source>{} would fit</source>
+            <translation>{} 可以放入</translation>
+        </message>
+        <message>
+            <source>no tool of that kind in the library fits</source>
+            <translation>刀具库中没有该类型可放入的刀具</translation>
+        </message>
+        <message>
+            <source>the {} tool {} is too big for {} = {}; {}</source>
+            <translation>{}刀具 {} 对于 {} = {} 过大；{}</translation>
+        </message>
+        <message>
+            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
+            <translation>单元 {} 的图形与单元 {} 的图形重叠 {} {}²；同一作业的图形可以相接但不能重叠</translation>
+        </message>
+        <message>
+            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
+            <translation>请指定侧铣所沿的轮廓（作业图形元素中的 CONTOUR，开放或闭合均可）</translation>
+        </message>
+        <message>
+            <source>{} {} is not a code of side milling; use {}</source>
+            <translation>{} {} 不是侧铣的代码；请使用 {}</translation>
+        </message>
+        <message>
+            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
+            <translation>宽度 W 为 {}；粗加工在壁上留 α2 = {}，因此 W 必须大于该值</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
+            <translation>“{}”不是侧铣的工序；请在 "side" 下指定其立铣刀（粗加工和精加工）</translation>
+        </message>
+        <message>
+            <source>{}: {}</source>
+            <translation>{}：{}</translation>
+        </message>
+        <message>
+            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
+            <translation>{0} 在 {1} 变窄的（{2}, {3}）附近放不下：刀具会切入轮廓；请指定更小的立铣刀或加宽通道</translation>
+        </message>
+        <message>
+            <source>the step-over</source>
+            <translation>行距</translation>
+        </message>
+        <message>
+            <source>a string ({})</source>
+            <translation>字符串（{}）</translation>
+        </message>
+        <message>
+            <source>null</source>
+            <translation>null</translation>
+        </message>
+        <message>
+            <source>an object</source>
+            <translation>对象</translation>
+        </message>
+        <message>
+            <source>an array</source>
+            <translation>数组</translation>
+        </message>
+        <message>
+            <source>a string</source>
+            <translation>字符串</translation>
+        </message>
+        <message>
+            <source>a boolean</source>
+            <translation>布尔值</translation>
+        </message>
+        <message>
+            <source>a number</source>
+            <translation>数字</translation>
+        </message>
+        <message>
+            <source>an unexpected value</source>
+            <translation>意外的值</translation>
+        </message>
+        <message>
+            <source>one of {}</source>
+            <translation>{} 之一</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>文件为空</translation>
+        </message>
+        <message>
+            <source>the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)</source>
+            <translation>文件为 {} 字节（{} MB）；作业文件最多 {} 字节（{} MB）</translation>
+        </message>
+        <message>
+            <source>cannot open: {}</source>
+            <translation>无法打开：{}</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {}</source>
+            <translation>无法读取文件：{}</translation>
+        </message>
+        <message>
+            <source>not a regular file; a job file is a JSON document</source>
+            <translation>不是普通文件；作业文件是 JSON 文档</translation>
+        </message>
+        <message>
+            <source>not a job file: JSON syntax error at byte {} (line {}, column {}): {}</source>
+            <translation>不是作业文件：第 {} 字节（第 {} 行，第 {} 列）处 JSON 语法错误：{}</translation>
+        </message>
+        <message>
+            <source>not a job file: arrays and objects nested more than {} deep at byte {} (line {}, column {})</source>
+            <translation>不是作业文件：第 {1} 字节（第 {2} 行，第 {3} 列）处数组和对象嵌套超过 {0} 层</translation>
+        </message>
+        <message>
+            <source>the number {} is too large for any dimension</source>
+            <translation>数字 {} 对任何尺寸都过大</translation>
+        </message>
+        <message>
+            <source>not a job file: the document is {}, a job is a JSON object</source>
+            <translation>不是作业文件：文档是{}，作业应为 JSON 对象</translation>
+        </message>
+        <message>
+            <source>not a job file: it has no "format": "taiwa-job"</source>
+            <translation>不是作业文件：没有 "format": "taiwa-job"</translation>
+        </message>
+        <message>
+            <source>not a job file: its "format" is {}, a job has "taiwa-job"</source>
+            <translation>不是作业文件：其 "format" 为{}，作业应为 "taiwa-job"</translation>
+        </message>
+        <message>
+            <source>written by a newer Taiwa (format version {}); this program reads version {}</source>
+            <translation>由较新的 Taiwa 写入（格式版本 {}）；本程序读取版本 {}</translation>
+        </message>
+        <message>
+            <source>format version {} does not exist; this program reads version {}</source>
+            <translation>格式版本 {} 不存在；本程序读取版本 {}</translation>
+        </message>
+        <message>
+            <source>missing; it must be {}</source>
+            <translation>缺失；必须是{}</translation>
+        </message>
+        <message>
+            <source>must be {}, found {}</source>
+            <translation>必须是{}，实际为{}</translation>
+        </message>
+        <message>
+            <source>must be a whole number, found {}</source>
+            <translation>必须是整数，实际为{}</translation>
+        </message>
+        <message>
+            <source>must be a whole number from -2147483648 to 2147483647, found {}</source>
+            <translation>必须是 -2147483648 到 2147483647 的整数，实际为{}</translation>
+        </message>
+        <message>
+            <source>unknown field; {} has {}</source>
+            <translation>未知字段；{}包含 {}</translation>
+        </message>
+        <message>
+            <source>unknown module {}; this program knows {}</source>
+            <translation>未知模块 {}；本程序已知 {}</translation>
+        </message>
+        <message>
+            <source>unknown stock shape {}; this program knows {}</source>
+            <translation>未知毛坯形状 {}；本程序已知 {}</translation>
+        </message>
+        <message>
+            <source>needs exactly four corner points P1..P4, found {}</source>
+            <translation>需要恰好四个角点 P1..P4，实际为 {} 个</translation>
+        </message>
+        <message>
+            <source>must be a point [x, y], found an array of {}</source>
+            <translation>必须是点 [x, y]，实际为含 {} 个元素的数组</translation>
+        </message>
+        <message>
+            <source>must be a point [x, y], found {}</source>
+            <translation>必须是点 [x, y]，实际为{}</translation>
+        </message>
+        <message>
+            <source>given more than once; say it once so that it is clear which value counts</source>
+            <translation>指定了不止一次；请只指定一次，以明确哪个值有效</translation>
+        </message>
+        <message>
+            <source>a whole number</source>
+            <translation>整数</translation>
+        </message>
+        <message>
+            <source>a point [x, y]</source>
+            <translation>点 [x, y]</translation>
+        </message>
+        <message>
+            <source>the jaws' height</source>
+            <translation>钳口高度</translation>
+        </message>
+        <message>
+            <source>the wall allowance roughing leaves</source>
+            <translation>粗加工留下的壁余量</translation>
+        </message>
+        <message>
+            <source>the wall allowance semi-finishing leaves</source>
+            <translation>半精加工留下的壁余量</translation>
+        </message>
+        <message>
+            <source>the floor allowance roughing leaves</source>
+            <translation>粗加工留下的底面余量</translation>
+        </message>
+        <message>
+            <source>the surface speed S</source>
+            <translation>切削速度 S</translation>
+        </message>
+        <message>
+            <source>the spindle speed S</source>
+            <translation>主轴转速 S</translation>
+        </message>
+        <message>
+            <source>the feed F</source>
+            <translation>进给 F</translation>
+        </message>
+        <message>
+            <source>an object with S and/or F</source>
+            <translation>含 S 和/或 F 的对象</translation>
+        </message>
+        <message>
+            <source>a step's speed and feed</source>
+            <translation>工序的转速和进给</translation>
+        </message>
+        <message>
+            <source>a bar stock</source>
+            <translation>棒料毛坯</translation>
+        </message>
+        <message>
+            <source>a block stock</source>
+            <translation>块料毛坯</translation>
+        </message>
+        <message>
+            <source>an array of lines of figure-element text</source>
+            <translation>图形元素文本行的数组</translation>
+        </message>
+        <message>
+            <source>a line of text</source>
+            <translation>一行文本</translation>
+        </message>
+        <message>
+            <source>the clamping</source>
+            <translation>装夹</translation>
+        </message>
+        <message>
+            <source>the technology overrides</source>
+            <translation>工艺参数覆盖</translation>
+        </message>
+        <message>
+            <source>a job</source>
+            <translation>作业</translation>
+        </message>
+        <message>
+            <source>an array of machining units</source>
+            <translation>加工单元数组</translation>
+        </message>
+        <message>
+            <source>{} more errors not listed; correct the ones above first</source>
+            <translation>另有 {} 个错误未列出；请先更正上面的错误</translation>
+        </message>
+        <message>
+            <source>centre drill</source>
+            <translation>中心钻</translation>
+        </message>
+        <message>
+            <source>drill</source>
+            <translation>钻头</translation>
+        </message>
+        <message>
+            <source>flat end mill</source>
+            <translation>平底立铣刀</translation>
+        </message>
+        <message>
+            <source>ball end mill</source>
+            <translation>球头立铣刀</translation>
+        </message>
+        <message>
+            <source>taper end mill</source>
+            <translation>锥度立铣刀</translation>
+        </message>
+        <message>
+            <source>face mill</source>
+            <translation>面铣刀</translation>
+        </message>
+        <message>
+            <source>turning insert</source>
+            <translation>车削刀片</translation>
+        </message>
+        <message>
+            <source>grooving tool</source>
+            <translation>切槽刀</translation>
+        </message>
+        <message>
+            <source>threading tool</source>
+            <translation>螺纹车刀</translation>
+        </message>
+        <message>
+            <source>probe</source>
+            <translation>测头</translation>
+        </message>
+        <message>
+            <source>tap</source>
+            <translation>丝锥</translation>
+        </message>
+        <message>
+            <source>reamer</source>
+            <translation>铰刀</translation>
+        </message>
+        <message>
+            <source>boring bar</source>
+            <translation>镗杆</translation>
+        </message>
+        <message>
+            <source>a point's X</source>
+            <translation>点的 X</translation>
+        </message>
+        <message>
+            <source>a point's Y</source>
+            <translation>点的 Y</translation>
+        </message>
+        <message>
+            <source>the depth</source>
+            <translation>深度</translation>
+        </message>
+        <message>
+            <source>the tool diameter</source>
+            <translation>刀具直径</translation>
+        </message>
+        <message>
+            <source>outline</source>
+            <translation>外轮廓</translation>
+        </message>
+        <message>
+            <source>an array of contour names</source>
+            <translation>轮廓名数组</translation>
+        </message>
+        <message>
+            <source>a contour name</source>
+            <translation>轮廓名</translation>
+        </message>
+        <message>
+            <source>an array of points [x, y]</source>
+            <translation>点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>pocket</source>
+            <translation>型腔</translation>
+        </message>
+        <message>
+            <source>the contour's narrowest reach</source>
+            <translation>轮廓最窄处</translation>
+        </message>
+        <message>
+            <source>U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) or 9 (roughing only, the finishing allowance left)</source>
+            <translation>U {} 不是面铣的刀具使用方式；请给出 1（粗加工层和精加工刀路）或 9（仅粗加工，留精加工余量）</translation>
+        </message>
+        <message>
+            <source>pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in the same direction) or 2 (zigzag: back and forth)</source>
+            <translation>模式 {} 不是面铣模式；请给出 1（单向顺铣：每条刀路同一方向）或 2（之字形：往复）</translation>
+        </message>
+        <message>
+            <source>the depth {} is not less than the stock's height {}: facing takes a layer off the top, it does not mill the whole block away</source>
+            <translation>深度 {} 不小于毛坯高度 {}：面铣只切除顶部一层，而不是把整块铣掉</translation>
+        </message>
+        <message>
+            <source>the finishing pass</source>
+            <translation>精加工量</translation>
+        </message>
+        <message>
+            <source>the finishing pass is {}; it must be greater than zero (leave the field empty for the technology data's β2)</source>
+            <translation>精加工量为 {}；必须大于零（留空则使用工艺数据的 β2）</translation>
+        </message>
+        <message>
+            <source>the finishing pass {}{} is not less than the depth {}: roughing would have nothing to take; give a smaller finishing pass</source>
+            <translation>精加工量 {}{} 不小于深度 {}：粗加工将无料可切；请给出更小的精加工量</translation>
+        </message>
+        <message>
+            <source>the angle</source>
+            <translation>角度</translation>
+        </message>
+        <message>
+            <source>the angle {} lies beyond ±360°; give the passes' direction from +X, e.g. 0 or 90</source>
+            <translation>角度 {} 超出 ±360°；请给出从 +X 起算的刀路方向，例如 0 或 90</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D must be greater than 0: passes that do not step sideways never cover the face</source>
+            <translation>行距 {} × D 必须大于 0：不横向移动的刀路永远覆盖不了整个面</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D is less than {:g} × D: the face would take more than a hundred passes a tool diameter</source>
+            <translation>行距 {} × D 小于 {} × D：每个刀具直径将需要一百多条刀路</translation>
+        </message>
+        <message>
+            <source>the step-over {:g} × D is more than {:g} × D: neighbouring passes would overlap by less than a tenth of the diameter, and the inserts' corners and the tool's run-out leave ridges between them</source>
+            <translation>行距 {} × D 大于 {} × D：相邻刀路重叠不到直径的十分之一，刀片角和刀具跳动会在其间留下凸棱</translation>
+        </message>
+        <message>
+            <source>the margin</source>
+            <translation>外延量</translation>
+        </message>
+        <message>
+            <source>the margin is {}; it must be 0 (the face is the stock's top) or more (the face reaches beyond the stock's sides): less would leave the top's edges unfaced</source>
+            <translation>外延量为 {}；必须为 0（面即毛坯顶面）或更大（面超出毛坯侧面）：更小会使顶面边缘未被铣削</translation>
+        </message>
+        <message>
+            <source>a face-milling unit has no step "{}"; its steps are "face"</source>
+            <translation>面铣单元没有工序“{}”；其工序为 "face"</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but is not a face mill or a flat end mill: a face is cut flat by the tool's flat bottom</source>
+            <translation>{} 被指定用于 "face"，但不是面铣刀或平底立铣刀：平面由刀具的平底切出</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but is not a face mill or a flat end mill with a corner radius under 0.4 D: a face is cut flat by the tool's flat bottom</source>
+            <translation>{} 被指定用于 "face"，但不是面铣刀或圆角半径小于 0.4 D 的平底立铣刀：平面由刀具的平底切出</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "face" but cuts {} at most, less than the finishing pass {}; give a smaller finishing pass or another tool</source>
+            <translation>{} 被指定用于 "face"，但最多切削 {}，小于精加工量 {}；请给出更小的精加工量或换一把刀具</translation>
+        </message>
+        <message>
+            <source>the tool library has no face mill or flat end mill that cuts the finishing pass {} in one cut; add one or give a smaller finishing pass</source>
+            <translation>刀具库中没有能一刀切出精加工量 {} 的面铣刀或平底立铣刀；请添加一把或给出更小的精加工量</translation>
+        </message>
+        <message>
+            <source>largest {} in the library (Ø{}), cutting {} a layer</source>
+            <translation>刀具库中最大的{}（Ø{}），每层切削 {}</translation>
+        </message>
+        <message>
+            <source>{} {} must be 1 to {}</source>
+            <translation>{} {} 必须为 1 到 {}</translation>
+        </message>
+        <message>
+            <source>the columns</source>
+            <translation>列数</translation>
+        </message>
+        <message>
+            <source>the number of holes</source>
+            <translation>孔数</translation>
+        </message>
+        <message>
+            <source>the rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>{} columns by {} rows are {} holes, more than the {} a unit may have</source>
+            <translation>{} 列 × {} 行共 {} 个孔，超过单元上限 {} 个</translation>
+        </message>
+        <message>
+            <source>the angle {:g}° must be from -360° to 360°</source>
+            <translation>角度 {}° 必须在 -360° 到 360° 之间</translation>
+        </message>
+        <message>
+            <source>{} {} must be greater than zero</source>
+            <translation>{} {} 必须大于零</translation>
+        </message>
+        <message>
+            <source>the pitch</source>
+            <translation>间距</translation>
+        </message>
+        <message>
+            <source>the pitch between rows</source>
+            <translation>行间距</translation>
+        </message>
+        <message>
+            <source>the radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>the angular pitch {:g}° must not be 0 and lie within ±360°</source>
+            <translation>角度间距 {}° 不能为 0 且必须在 ±360° 以内</translation>
+        </message>
+        <message>
+            <source>thread "{}" is not one this program taps: ISO metric coarse {}</source>
+            <translation>螺纹“{}”不是本程序可攻的螺纹：ISO 公制粗牙 {}</translation>
+        </message>
+        <message>
+            <source>a tapped hole's diameter is its thread's: leave out "diameter"</source>
+            <translation>螺纹孔的直径即其螺纹的直径：请省略 "diameter"</translation>
+        </message>
+        <message>
+            <source>the diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>the diameter {} must be {} to {}</source>
+            <translation>直径 {} 必须为 {} 到 {}</translation>
+        </message>
+        <message>
+            <source>the depth {} must be greater than zero</source>
+            <translation>深度 {} 必须大于零</translation>
+        </message>
+        <message>
+            <source>{} {} is not more than the hole's diameter {}: the holes would cut into each other</source>
+            <translation>{} {} 不大于孔径 {}：孔会相互切入</translation>
+        </message>
+        <message>
+            <source>the distance between neighbouring holes</source>
+            <translation>相邻孔的间距</translation>
+        </message>
+        <message>
+            <source>holes {} and {} lie {} apart, not more than the diameter {}: the arc closes on itself; fewer holes or a smaller angular pitch</source>
+            <translation>孔 {} 和 {} 相距 {}，不大于直径 {}：圆弧首尾相接；请减少孔数或减小角度间距</translation>
+        </message>
+        <message>
+            <source>hole {} (X {}, Y {}) reaches outside the stock; move the pattern or enlarge the stock</source>
+            <translation>孔 {}（X {}, Y {}）超出毛坯；请移动孔阵列或加大毛坯</translation>
+        </message>
+        <message>
+            <source>the hole goes down to {} with its drill point (its tools go deeper than the depth {}; docs/holes.md), below the stock's height {}: through holes are not made; make it shallower</source>
+            <translation>孔连同钻尖深达 {}（刀具比深度 {} 更深；docs/holes.md），低于毛坯高度 {}：不加工通孔；请减小深度</translation>
+        </message>
+        <message>
+            <source>a {} hole has no step "{}"; its steps are {}</source>
+            <translation>{}孔没有工序“{}”；其工序为 {}</translation>
+        </message>
+        <message>
+            <source>pattern "{}" is not one of {}</source>
+            <translation>孔阵列“{}”不是 {} 之一</translation>
+        </message>
+        <message>
+            <source>hole "{}" is not one of {}</source>
+            <translation>孔“{}”不是 {} 之一</translation>
+        </message>
+        <message>
+            <source>T{} ({}) is pinned for "{}" but is not a {}</source>
+            <translation>T{}（{}）被指定用于“{}”，但不是{}</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library; add one</source>
+            <translation>刀具库中没有{}；请添加一把</translation>
+        </message>
+        <message>
+            <source>the tap drill of {}</source>
+            <translation>{} 的底孔钻头</translation>
+        </message>
+        <message>
+            <source>the hole's</source>
+            <translation>孔的</translation>
+        </message>
+        <message>
+            <source>drill of Ø{} ({}) whose flutes reach {}</source>
+            <translation>Ø{} 钻头（{}），刃长达 {}</translation>
+        </message>
+        <message>
+            <source>drill of Ø{}: {}</source>
+            <translation>Ø{} 钻头：{}</translation>
+        </message>
+        <message>
+            <source>drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}</source>
+            <translation>Ø{} 到 Ø{} 的钻头（相对{} Ø{} 小 {} 到 {}），刃长达 {}</translation>
+        </message>
+        <message>
+            <source>largest drill {} to {} under Ø{} to {}</source>
+            <translation>比 Ø{2} 小 {0} 到 {1} 的最大钻头（用于{3}）</translation>
+        </message>
+        <message>
+            <source>tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}</source>
+            <translation>丝锥 {}x{}（类型 tap，Ø{}，螺距 {}），刃长达 {}</translation>
+        </message>
+        <message>
+            <source>tap {}x{:g}</source>
+            <translation>丝锥 {}x{}</translation>
+        </message>
+        <message>
+            <source>{} of Ø{} whose flutes reach {}</source>
+            <translation>Ø{1} 的{0}，刃长达 {2}</translation>
+        </message>
+        <message>
+            <source>{} of the hole's Ø{}</source>
+            <translation>孔径 Ø{1} 的{0}</translation>
+        </message>
+        <message>
+            <source>centre drill spotting Ø{} for the Ø{} drill</source>
+            <translation>为 Ø{1} 钻头点出 Ø{0} 的中心钻</translation>
+        </message>
+        <message>
+            <source>the corner radius</source>
+            <translation>圆角半径</translation>
+        </message>
+        <message>
+            <source>the scallop height</source>
+            <translation>残留高度</translation>
+        </message>
+        <message>
+            <source>pocket opening</source>
+            <translation>型腔开口</translation>
+        </message>
+        <message>
+            <source>the cornerRadius</source>
+            <translation>圆角半径</translation>
+        </message>
+        <message>
+            <source>the taper</source>
+            <translation>锥度</translation>
+        </message>
+        <message>
+            <source>an array of 4 points [x, y]</source>
+            <translation>4 个点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>island</source>
+            <translation>岛屿</translation>
+        </message>
+        <message>
+            <source>shape {} is not defined: 1 round (boss or bore), 2 rectangular (block or pocket)</source>
+            <translation>形状 {} 未定义：1 圆形（凸台或孔），2 矩形（块或型腔）</translation>
+        </message>
+        <message>
+            <source>where {} is not defined: 1 touched from outside (boss, block), 2 from inside (bore, pocket)</source>
+            <translation>测量侧 {} 未定义：1 从外侧触碰（凸台、块），2 从内侧（孔、型腔）</translation>
+        </message>
+        <message>
+            <source>point {}: its {} is missing</source>
+            <translation>点 {}：缺少 {}</translation>
+        </message>
+        <message>
+            <source>point {}: say which side it touches: 1 -X, 2 +X, 3 -Y, 4 +Y</source>
+            <translation>点 {}：请指定触碰哪一面：1 -X，2 +X，3 -Y，4 +Y</translation>
+        </message>
+        <message>
+            <source>point 1 is the measuring origin: it is at 0, 0 and the others are measured from it</source>
+            <translation>点 1 是测量原点：位于 0, 0，其他点均从它测量</translation>
+        </message>
+        <message>
+            <source>the machine Z of the top face</source>
+            <translation>顶面的机床 Z 坐标</translation>
+        </message>
+        <message>
+            <source>{} must be above 0 and at most {:g} mm, not {:g}</source>
+            <translation>{} 必须大于 0 且不超过 {} mm，而不是 {}</translation>
+        </message>
+        <message>
+            <source>the nominal width along X</source>
+            <translation>沿 X 的公称宽度</translation>
+        </message>
+        <message>
+            <source>the nominal diameter</source>
+            <translation>公称直径</translation>
+        </message>
+        <message>
+            <source>the nominal length along Y</source>
+            <translation>沿 Y 的公称长度</translation>
+        </message>
+        <message>
+            <source>the depth of the side touches</source>
+            <translation>侧面触碰深度</translation>
+        </message>
+        <message>
+            <source>the clearance</source>
+            <translation>间隙</translation>
+        </message>
+        <message>
+            <source>the search distance</source>
+            <translation>搜索距离</translation>
+        </message>
+        <message>
+            <source>the probing feed must be above 0 and at most 5000 mm/min, not {:g}</source>
+            <translation>测量进给必须大于 0 且不超过 5000 mm/min，而不是 {}</translation>
+        </message>
+        <message>
+            <source>the tolerance must lie between 0.001 and 1 mm, not {:g}</source>
+            <translation>公差必须在 0.001 到 1 mm 之间，而不是 {}</translation>
+        </message>
+        <message>
+            <source>T{} is not a probe in the tool library</source>
+            <translation>T{} 不是刀具库中的测头</translation>
+        </message>
+        <message>
+            <source>the tool library has no probe, or several: add one of type "probe" or say which (T)</source>
+            <translation>刀具库中没有测头或有多个：请添加一个类型为 "probe" 的测头，或指定使用哪一个（T）</translation>
+        </message>
+        <message>
+            <source>an array of 1 to 8 points [x, y], the first [0, 0]</source>
+            <translation>1 到 8 个点 [x, y] 的数组，第一个为 [0, 0]</translation>
+        </message>
+        <message>
+            <source>a point [x, y] or null</source>
+            <translation>点 [x, y] 或 null</translation>
+        </message>
+        <message>
+            <source>an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)</source>
+            <translation>最多 8 个面代码的数组（1 -X，2 +X，3 -Y，4 +Y）</translation>
+        </message>
+        <message>
+            <source>the width</source>
+            <translation>宽度</translation>
+        </message>
+        <message>
+            <source>the width W</source>
+            <translation>宽度 W</translation>
+        </message>
+        <message>
+            <source>the contour's smallest inside radius on the tool's side</source>
+            <translation>刀具一侧轮廓的最小内侧半径</translation>
+        </message>
+        <message>
+            <source>side milling</source>
+            <translation>侧铣</translation>
+        </message>
+        <message>
+            <source>pinned tool T{} ({}) does not fit: {}</source>
+            <translation>指定的刀具 T{}（{}）不合适：{}</translation>
+        </message>
+        <message>
+            <source>a TURN unit</source>
+            <translation>TURN 单元</translation>
+        </message>
+        <message>
+            <source>the start point</source>
+            <translation>起点</translation>
+        </message>
+        <message>
+            <source>an array of profile rows</source>
+            <translation>轮廓行数组</translation>
+        </message>
+        <message>
+            <source>a profile row</source>
+            <translation>轮廓行</translation>
+        </message>
+        <message>
+            <source>a thread</source>
+            <translation>螺纹</translation>
+        </message>
+        <message>
+            <source>an array of grinding-allowance rows</source>
+            <translation>磨削余量行数组</translation>
+        </message>
+        <message>
+            <source>a grinding-allowance row</source>
+            <translation>磨削余量行</translation>
+        </message>
+        <message>
+            <source>an array of step names</source>
+            <translation>工序名数组</translation>
+        </message>
+        <message>
+            <source>a step name</source>
+            <translation>工序名</translation>
+        </message>
+        <message>
+            <source>the {} has {} rows; a turned profile has at most {} (split the part into several units)</source>
+            <translation>{}有 {} 行；车削轮廓最多 {} 行（请将零件拆分为多个单元）</translation>
+        </message>
+        <message>
+            <source>"{}" is not a turning step; steps are {}</source>
+            <translation>“{}”不是车削工序；工序为 {}</translation>
+        </message>
+        <message>
+            <source>"{}" is not a turning step; tools can be pinned for {}</source>
+            <translation>“{}”不是车削工序；可指定刀具的工序为 {}</translation>
+        </message>
+        <message>
+            <source>{} is on an inner profile: internal threads are not cut yet (only external ones)</source>
+            <translation>{} 位于内轮廓上：尚不能车内螺纹（仅外螺纹）</translation>
+        </message>
+        <message>
+            <source>{} is an arc: a thread is cut on a straight row along the axis</source>
+            <translation>{} 是圆弧：螺纹只在沿轴线的直线行上车削</translation>
+        </message>
+        <message>
+            <source>{} is not a cylinder cut toward the chuck (a taper or a face): a thread is cut on a straight row along the axis, from the front back</source>
+            <translation>{} 不是朝卡盘方向车削的圆柱（而是锥面或端面）：螺纹在沿轴线的直线行上由前向后车削</translation>
+        </message>
+        <message>
+            <source>{} has a grinding allowance: a thread is not ground</source>
+            <translation>{} 有磨削余量：螺纹不进行磨削</translation>
+        </message>
+        <message>
+            <source>a pitch of {} is out of range: {} to {}</source>
+            <translation>螺距 {} 超出范围：{} 到 {}</translation>
+        </message>
+        <message>
+            <source>a thread {} deep does not fit Ø{} with pitch {}: at most {} (the sharp V's height, and a core of half the diameter)</source>
+            <translation>深 {0} 的螺纹在螺距 {2} 下放不进 Ø{1}：最多 {3}（尖 V 形高度，且芯径为直径一半）</translation>
+        </message>
+        <message>
+            <source>no external threading insert of the tool library cuts a pitch of {}</source>
+            <translation>刀具库中没有能车削螺距 {} 的外螺纹刀片</translation>
+        </message>
+        <message>
+            <source>the profile reaches Ø{}, more than the bar's Ø{}</source>
+            <translation>轮廓达到 Ø{}，大于棒料的 Ø{}</translation>
+        </message>
+        <message>
+            <source>the profile with its grinding allowances reaches Ø{}, more than the bar's Ø{}</source>
+            <translation>含磨削余量的轮廓达到 Ø{}，大于棒料的 Ø{}</translation>
+        </message>
+        <message>
+            <source>the profile reaches Z{}, beyond the bar's face stock (Z{})</source>
+            <translation>轮廓达到 Z{}，超出棒料端面余量（Z{}）</translation>
+        </message>
+        <message>
+            <source>the profile reaches Z{}, beyond the bar's end (Z{})</source>
+            <translation>轮廓达到 Z{}，超出棒料末端（Z{}）</translation>
+        </message>
+        <message>
+            <source>T number {} must be 1 to {}</source>
+            <translation>T 号 {} 必须为 1 到 {}</translation>
+        </message>
+        <message>
+            <source>diameter {:g} mm is more than 500 mm</source>
+            <translation>直径 {} mm 超过 500 mm</translation>
+        </message>
+        <message>
+            <source>corner radius {:g} mm must not be negative</source>
+            <translation>圆角半径 {} mm 不能为负</translation>
+        </message>
+        <message>
+            <source>corner radius {:g} mm is more than half the diameter ({:g} mm)</source>
+            <translation>圆角半径 {} mm 大于直径的一半（{} mm）</translation>
+        </message>
+        <message>
+            <source>taper {:g}° per side must be 0 to less than 45°</source>
+            <translation>单边锥度 {}° 必须为 0 到小于 45°</translation>
+        </message>
+        <message>
+            <source>flute length {:g} mm must not be negative</source>
+            <translation>刃长 {} mm 不能为负</translation>
+        </message>
+        <message>
+            <source>holder Ø {:g} mm must not be negative</source>
+            <translation>刀柄直径 Ø {} mm 不能为负</translation>
+        </message>
+        <message>
+            <source>holder Ø {:g} mm is narrower than the tool (Ø {:g} mm)</source>
+            <translation>刀柄直径 Ø {} mm 小于刀具（Ø {} mm）</translation>
+        </message>
+        <message>
+            <source>holder length {:g} mm must not be negative</source>
+            <translation>刀柄长度 {} mm 不能为负</translation>
+        </message>
+        <message>
+            <source>stick-out {:g} mm must not be negative</source>
+            <translation>悬伸长度 {} mm 不能为负</translation>
+        </message>
+        <message>
+            <source>stick-out {:g} mm is shorter than the flutes ({:g} mm)</source>
+            <translation>悬伸长度 {} mm 短于刃长（{} mm）</translation>
+        </message>
+        <message>
+            <source>a tap's pitch {:g} mm must be greater than zero, at most 10 mm (one pitch)</source>
+            <translation>丝锥螺距 {} mm 必须大于零且不超过 10 mm（一个螺距）</translation>
+        </message>
+        <message>
+            <source>life {:g} min must not be negative</source>
+            <translation>寿命 {} 分钟不能为负</translation>
+        </message>
+        <message>
+            <source>used {:g} min must not be negative</source>
+            <translation>已用时间 {} 分钟不能为负</translation>
+        </message>
+        <message>
+            <source>it is a {}, the step needs a {}</source>
+            <translation>它是{}，该工序需要{}</translation>
+        </message>
+        <message>
+            <source>its taper is {:g} deg per side, the wall's is {:g}</source>
+            <translation>其锥度为单边 {} 度，壁的锥度为 {} 度</translation>
+        </message>
+        <message>
+            <source>its radius {:g} mm is larger than the corner radius {:g} mm</source>
+            <translation>其半径 {} mm 大于圆角半径 {} mm</translation>
+        </message>
+        <message>
+            <source>it does not cut at its centre, so it cannot ramp in without a pilot hole</source>
+            <translation>它不能中心切削，因此没有预钻孔就无法斜坡下刀</translation>
+        </message>
+        <message>
+            <source>its diameter {:g} mm is too large for the pocket</source>
+            <translation>其直径 {} mm 对型腔过大</translation>
+        </message>
+        <message>
+            <source>its diameter {:g} mm is smaller than the {:g} mm needed</source>
+            <translation>其直径 {} mm 小于所需的 {} mm</translation>
+        </message>
+        <message>
+            <source>its flutes ({:g} mm) are shorter than the depth {:g} mm</source>
+            <translation>其刃长（{} mm）短于深度 {} mm</translation>
+        </message>
+        <message>
+            <source>its stick-out ({:g} mm) is shorter than the depth {:g} mm</source>
+            <translation>其悬伸长度（{} mm）短于深度 {} mm</translation>
+        </message>
+        <message>
+            <source>no taper end mill of {:g} deg per side in the tool library for the {}</source>
+            <translation>刀具库中没有用于{1}的单边 {0} 度锥度立铣刀</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library for the {}</source>
+            <translation>刀具库中没有用于{1}的{0}</translation>
+        </message>
+        <message>
+            <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
+            <translation>刀具库中没有适合{1}的{0}：最接近的是 T{2}（{3}），但{4}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: there is no edge {} in the profile</source>
+            <translation>余量行 {}：轮廓中没有边 {}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} already has an allowance in row {}</source>
+            <translation>余量行 {}：{} 已在第 {} 行有余量</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the allowance must be above zero</source>
+            <translation>余量行 {}：余量必须大于零</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the adjustment cannot be below zero</source>
+            <translation>余量行 {}：调整量不能小于零</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove width must be above zero</source>
+            <translation>余量行 {}：槽宽必须大于零</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove depth must be above zero</source>
+            <translation>余量行 {}：槽深必须大于零</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the moved {} and the moved {} do not meet</source>
+            <translation>余量行 {}：偏移后的 {} 与偏移后的 {} 不相交</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} meets {} at a tangent joint, where the tool's nose radius leaves a ridge; give the adjustment, or add a finishing turning tool to the library so that its nose radius is taken</source>
+            <translation>余量行 {}：{} 与 {} 相切连接，刀尖半径会在此留下凸棱；请给出调整量，或在刀具库中添加精车刀以采用其刀尖半径</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an adjustment of {} is not shorter than {} ({} long)</source>
+            <translation>余量行 {}：调整量 {} 不短于 {}（长 {}）</translation>
+        </message>
+        <message>
+            <source>allowance row {}: the tangent of {} does not reach the moved {}</source>
+            <translation>余量行 {}：{} 的切线达不到偏移后的 {}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} on {} reaches past the end of its neighbour {} ({} long); the edges would cross</source>
+            <translation>余量行 {0}：{2} 上 {1} 的余量超过相邻边 {3}（长 {4}）的端点；边会相交</translation>
+        </message>
+        <message>
+            <source>allowance row {}: {} is an arc of radius {}; an allowance of {} leaves it no radius</source>
+            <translation>余量行 {}：{} 是半径 {} 的圆弧；余量 {} 使其没有半径</translation>
+        </message>
+        <message>
+            <source>allowance row {}: with an allowance of {} the moved {} vanishes between its neighbours; the edges would cross</source>
+            <translation>余量行 {}：余量为 {} 时偏移后的 {} 在相邻边之间消失；边会相交</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} moves {} into {}; the edges would cross</source>
+            <translation>余量行 {}：余量 {} 使 {} 移入 {}；边会相交</translation>
+        </message>
+        <message>
+            <source>allowance row {}: an allowance of {} moves {} past the axis</source>
+            <translation>余量行 {}：余量 {} 使 {} 越过轴线</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
+            <translation>余量行 {0}：宽 {2}、深 {3} 的{1}槽占去长 {6} 的 {5} 中的 {4}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
+            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到 {3}；比零件允许的更深</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
+            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到轴线；比零件允许的更深</translation>
+        </message>
+        <message>
+            <source>the allowances and grooves split the part into {} pieces</source>
+            <translation>余量和槽将零件分成 {} 块</translation>
+        </message>
+        <message>
+            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
+            <translation>内部错误：变形轮廓在 Z{} X{} 处的一段不在任何边上；请报告此作业</translation>
+        </message>
+        <message>
+            <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>
+            <translation>第 {} 行的边编号 {} 不是唯一的正数；每行都需要一个</translation>
+        </message>
+        <message>
+            <source>the start diameter is {}; a diameter cannot be below zero</source>
+            <translation>起点直径为 {}；直径不能小于零</translation>
+        </message>
+        <message>
+            <source>row {}: the end point is not a number</source>
+            <translation>第 {} 行：终点不是数字</translation>
+        </message>
+        <message>
+            <source>row {}: the end diameter is {}; a diameter cannot be below zero</source>
+            <translation>第 {} 行：终点直径为 {}；直径不能小于零</translation>
+        </message>
+        <message>
+            <source>row {} ends where it starts (X{} Z{}): an element needs a length</source>
+            <translation>第 {} 行终点与起点相同（X{} Z{}）：元素需要有长度</translation>
+        </message>
+        <message>
+            <source>row {}: the centre is {} from the start and {} from the end point; an arc's centre is equally far from both</source>
+            <translation>第 {} 行：圆心距起点 {}、距终点 {}；圆弧圆心到两者距离应相等</translation>
+        </message>
+        <message>
+            <source>row {}: the radius {} does not match the centre, which is {} from the start</source>
+            <translation>第 {} 行：半径 {} 与圆心不符，圆心距起点 {}</translation>
+        </message>
+        <message>
+            <source>row {}: an arc's radius must be above zero</source>
+            <translation>第 {} 行：圆弧半径必须大于零</translation>
+        </message>
+        <message>
+            <source>row {}: a radius of {} cannot reach the end point, which is {} from the start; the radius must be at least {}</source>
+            <translation>第 {} 行：半径 {} 够不到距起点 {} 的终点；半径至少应为 {}</translation>
+        </message>
+        <message>
+            <source>row {}: an arc needs its radius or its centre</source>
+            <translation>第 {} 行：圆弧需要半径或圆心</translation>
+        </message>
+        <message>
+            <source>row {}: the arc dips below the axis (to Ø{}); a turned profile stays at or above it</source>
+            <translation>第 {} 行：圆弧低于轴线（到 Ø{}）；车削轮廓须在轴线上或以上</translation>
+        </message>
+        <message>
+            <source>row {}: a {} needs a next row to meet; there is none</source>
+            <translation>第 {} 行：{}需要与下一行相接；但没有下一行</translation>
+        </message>
+        <message>
+            <source>row {}: a {} is made between two lines; row {} is an arc</source>
+            <translation>第 {} 行：{}须在两条直线之间；第 {} 行是圆弧</translation>
+        </message>
+        <message>
+            <source>row {}: the {} size must be above zero</source>
+            <translation>第 {} 行：{}尺寸必须大于零</translation>
+        </message>
+        <message>
+            <source>row {}: rows {} and {} are in line; there is no corner for a {}</source>
+            <translation>第 {} 行：第 {} 行和第 {} 行共线；没有可加{}的角</translation>
+        </message>
+        <message>
+            <source>row {}: a {} of {} takes {} of both lines; row {} has {} and row {} has {}</source>
+            <translation>第 {0} 行：{2} 的{1}占用两条直线各 {3}；第 {4} 行长 {5}，第 {6} 行长 {7}</translation>
+        </message>
+        <message>
+            <source>the profile is not one chain: {} (row {}) meets {} (row {}) at X{} Z{}</source>
+            <translation>轮廓不是一条链：{}（第 {} 行）与 {}（第 {} 行）在 X{} Z{} 相交</translation>
+        </message>
+        <message>
+            <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
+            <translation>轮廓不是围绕零件的一条链：{}（第 {} 行）在 X{} Z{} 处到达封闭线 {}</translation>
+        </message>
+        <message>
+            <source>the job</source>
+            <translation>作业</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {})</source>
+            <translation>工序 {}（{}，单元 {}）</translation>
+        </message>
+        <message>
+            <source>step {} ({}, unit {} '{}')</source>
+            <translation>工序 {}（{}，单元 {} '{}'）</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm² of the half-section</source>
+            <translation>在 {1} 处切入成品 {0}，半剖面上面积 {2} mm²</translation>
+        </message>
+        <message>
+            <source>gouge {} deep into the finished part at {}, over {:.3f} mm²</source>
+            <translation>在 {1} 处切入成品 {0}，面积 {2} mm²</translation>
+        </message>
+        <message>
+            <source>the tool's {} runs {} into stock at {}</source>
+            <translation>刀具的{0}在 {2} 处切入毛坯 {1}</translation>
+        </message>
+        <message>
+            <source>rapid (G0) {} into stock at {}</source>
+            <translation>快速移动（G0）在 {1} 处进入毛坯 {0}</translation>
+        </message>
+        <message>
+            <source>the paths span {} more along {} than the machine '{}' travels</source>
+            <translation>刀路沿 {1} 方向比机床 '{2}' 的行程多出 {0}</translation>
+        </message>
+        <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残留材料比应留量最多厚 {}，最厚处在 {}，半剖面上面积 {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残留材料比应留量最多高 {}，最高处在 {}，面积 {} mm²</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}, tape line {}</source>
+            <translation>{}：{}，移动 {}，程序第 {} 行</translation>
+        </message>
+        <message>
+            <source>{}: {}, move {}</source>
+            <translation>{}：{}，移动 {}</translation>
+        </message>
+        <message>
+            <source>{}: {}, tape line {}</source>
+            <translation>{}：{}，程序第 {} 行</translation>
+        </message>
+        <message>
+            <source>holder</source>
+            <translation>刀柄</translation>
+        </message>
+        <message>
+            <source>shank</source>
+            <translation>刀杆</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
         <message>
             <source>Area</source>
@@ -2190,6 +3565,109 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>roughing step-over / tool diameter</source>
             <translation>粗加工行距 / 刀具直径</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::Drawing</name>
+        <message>
+            <source>AREA – top view</source>
+            <translation>AREA – 俯视图</translation>
+        </message>
+        <message>
+            <source>Pn</source>
+            <translation>Pn</translation>
+        </message>
+        <message>
+            <source>passes</source>
+            <translation>刀路</translation>
+        </message>
+        <message>
+            <source>section</source>
+            <translation>剖面</translation>
+        </message>
+        <message>
+            <source>CP – top view</source>
+            <translation>CP – 俯视图</translation>
+        </message>
+        <message>
+            <source>outline K1, islands K2, K3: CONTOURs</source>
+            <translation>外轮廓 K1，岛屿 K2, K3：CONTOUR</translation>
+        </message>
+        <message>
+            <source>FACE – top view</source>
+            <translation>FACE – 俯视图</translation>
+        </message>
+        <message>
+            <source>margin</source>
+            <translation>外延</translation>
+        </message>
+        <message>
+            <source>angle</source>
+            <translation>角度</translation>
+        </message>
+        <message>
+            <source>depth</source>
+            <translation>深度</translation>
+        </message>
+        <message>
+            <source>finish</source>
+            <translation>精加工</translation>
+        </message>
+        <message>
+            <source>HOLES – top view</source>
+            <translation>HOLES – 俯视图</translation>
+        </message>
+        <message>
+            <source>M2D – top view</source>
+            <translation>M2D – 俯视图</translation>
+        </message>
+        <message>
+            <source>section along L1</source>
+            <translation>沿 L1 的剖面</translation>
+        </message>
+        <message>
+            <source>M4 – top view</source>
+            <translation>M4 – 俯视图</translation>
+        </message>
+        <message>
+            <source>X, Y of P1…P4</source>
+            <translation>P1…P4 的 X, Y</translation>
+        </message>
+        <message>
+            <source>round – top view</source>
+            <translation>圆形 – 俯视图</translation>
+        </message>
+        <message>
+            <source>centre</source>
+            <translation>中心</translation>
+        </message>
+        <message>
+            <source>rectangular – top view</source>
+            <translation>矩形 – 俯视图</translation>
+        </message>
+        <message>
+            <source>-Y (twice)</source>
+            <translation>-Y（两次）</translation>
+        </message>
+        <message>
+            <source>SIDE – top view</source>
+            <translation>SIDE – 俯视图</translation>
+        </message>
+        <message>
+            <source>climb</source>
+            <translation>顺铣</translation>
+        </message>
+        <message>
+            <source>side 1: the tool left of K1's direction</source>
+            <translation>侧 1：刀具在 K1 方向左侧</translation>
+        </message>
+        <message>
+            <source>half-section: Z →, X (diameter) ↑</source>
+            <translation>半剖面：Z →，X（直径）↑</translation>
+        </message>
+        <message>
+            <source>start X0 Z0</source>
+            <translation>起点 X0 Z0</translation>
         </message>
     </context>
 </TS>

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Brings a translation file up to date with the sources: every tr() of ui/
-and every TAIWA_TRANSLATE_NOOP of core/modules/ (module palette texts, field
-labels), translations kept, texts no longer in the sources dropped.
+"""Brings a translation file up to date with the sources: every tr() of ui/,
+every TAIWA_TRANSLATE_NOOP of core/ (module palette texts, field labels, the
+core's message templates and words in context "taiwa::msg") and every label
+of the module drawings (core/modules/*/*.svg, context "taiwa::Drawing"),
+translations kept, texts no longer in the sources dropped.
 
     python3 resources/i18n/update-ts.py resources/i18n/taiwa_ja.ts
 
@@ -28,6 +30,26 @@ def messages(tree):
             yield name, m
 
 
+def drawing_labels(root: Path):
+    """The labels of the module drawings that have a word (symbols such as P1, r1, T have none), in file order."""
+    seen = []
+    for svg in sorted((root / "core" / "modules").glob("*/*.svg")):
+        for e in ET.parse(svg).iter("{http://www.w3.org/2000/svg}text"):
+            text = "".join(e.itertext()).strip()
+            if re.search(r"[A-Za-z]{2}", text) and text not in seen:
+                seen.append(text)
+    return seen
+
+
+def add_drawing_labels(tree, root: Path):
+    ctx = ET.SubElement(tree.getroot(), "context")
+    ET.SubElement(ctx, "name").text = "taiwa::Drawing"
+    for text in drawing_labels(root):
+        m = ET.SubElement(ctx, "message")
+        ET.SubElement(m, "source").text = text
+        ET.SubElement(m, "translation")
+
+
 def main(ts: str) -> int:
     root = Path(__file__).resolve().parents[2]
     target = Path(ts).resolve()
@@ -38,7 +60,7 @@ def main(ts: str) -> int:
         fresh.write_text(f'<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n<TS version="2.1" language="{language}"></TS>\n',
                          encoding="utf-8")
         run = subprocess.run([LUPDATE, "-no-obsolete", "-locations", "none", "-tr-function-alias",
-                              "QT_TRANSLATE_NOOP+=TAIWA_TRANSLATE_NOOP", str(root / "ui"), str(root / "core" / "modules"),
+                              "QT_TRANSLATE_NOOP+=TAIWA_TRANSLATE_NOOP", str(root / "ui"), str(root / "core"),
                               "-ts", str(fresh)], capture_output=True, text=True)
         if run.returncode != 0:
             sys.stderr.write(run.stdout + run.stderr)
@@ -47,6 +69,7 @@ def main(ts: str) -> int:
                       lambda m: m.group(0) if m.group(1) == "QObject" else f"<name>taiwa::ui::{m.group(1)}</name>",
                       fresh.read_text(encoding="utf-8"))
         new = ET.ElementTree(ET.fromstring(text))
+    add_drawing_labels(new, root)
     known = {(name, m.find("source").text): m.find("translation") for name, m in messages(old)}
     unfinished = 0
     for name, m in messages(new):
@@ -60,8 +83,8 @@ def main(ts: str) -> int:
             unfinished += 1
     ET.indent(new, "    ")
     body = ET.tostring(new.getroot(), encoding="unicode")
-    header = ('<?xml version="1.0" encoding="utf-8"?>\n<!-- Texts of the station window (lupdate from ui/ and core/modules/ '
-              'by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->\n'
+    header = ('<?xml version="1.0" encoding="utf-8"?>\n<!-- Texts of the station window (lupdate from ui/ and core/, and the '
+              'labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->\n'
               '<!DOCTYPE TS>\n')
     target.write_text(header + body + "\n", encoding="utf-8")
     print(f"{target.name}: {sum(1 for _ in messages(new))} texts, {unfinished} untranslated")

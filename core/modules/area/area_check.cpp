@@ -2,6 +2,7 @@
 // contours, the drawn points (readable, at least one pass, on the stock, no
 // empty pass), every strip inside the area, the depth, the diameter and a
 // tool of it; and, as a warning, what the strips leave unswept.
+#include "model/translate_noop.h"
 #include "modules/area/area.h"
 
 #include "check/messages.h"
@@ -29,7 +30,8 @@ bool checkPoints(const AreaClearing& a, Reporter& r)
     bool ok = true;
     for (std::size_t i = 0; i < a.points.size(); ++i) {
         const Point2 p = a.points[i];
-        if (!check::checkLength(p.x, "points", "a point's X", r) || !check::checkLength(p.y, "points", "a point's Y", r))
+        if (!check::checkLength(p.x, "points", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point's X"), r) ||
+            !check::checkLength(p.y, "points", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point's Y"), r))
             return false;
         if (const Stock* st = r.ctx.stock) {
             constexpr double e = 1e-9;
@@ -80,8 +82,10 @@ check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const che
     check::UnitReport report;
     Reporter r{unitNo, AreaClearing::kName, ctx, report.diagnostics};
     check::checkPins(a.tools, unitNo, AreaClearing::kName, ctx, report.diagnostics);
-    check::checkLength(a.depth, "depth", "the depth", r) && check::checkDepth(a.depth, r);
-    bool diameter = check::checkLength(a.diameter, "diameter", "the tool diameter", r);
+    check::checkLength(a.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
+        check::checkDepth(a.depth, r);
+    bool diameter =
+        check::checkLength(a.diameter, "diameter", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool diameter"), r);
     if (diameter && !(a.diameter > 0.0)) {
         r.unit("diameter", msg::diameterNotPositive(r.len(a.diameter)));
         diameter = false;

@@ -1,6 +1,7 @@
 // The door of module AREA (area clearing by drawn passes): its job-file
 // keys, checks, outline, planning, cavity and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
+#include "model/translate_noop.h"
 #include "modules/area/area.h"
 #include "modules/module_kind.h"
 #include "paths/drawn_passes.h"
@@ -18,8 +19,9 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name",     "outline", "islands", "points",
-                                     "depth",  "diameter", "tools",   "cutting"};
+const std::vector<std::string> kKeys{"module",   "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
+                                     "islands",  "points", "depth",
+                                     "diameter", "tools",  "cutting"};
 
 constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
 
@@ -127,15 +129,18 @@ protected:
     {
         AreaClearing m;
         f.rejectUnknown("module AREA", kKeys);
-        m.area.outline = f.string("outline").value_or("");
+        m.area.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
         if (const nlohmann::json* islands = f.find("islands")) {
             if (!islands->is_array()) {
-                f.error("islands", msg::io::wrongType("an array of contour names", *islands));
+                f.error("islands",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of contour names"), *islands));
             } else {
                 for (std::size_t i = 0; i < islands->size(); ++i) {
                     const auto& v = (*islands)[i];
                     if (v.is_string()) m.area.islands.push_back(v.get<std::string>());
-                    else f.error("islands[" + std::to_string(i) + "]", msg::io::wrongType("a contour name", v));
+                    else
+                        f.error("islands[" + std::to_string(i) + "]",
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
                 }
             }
         }
@@ -144,12 +149,15 @@ protected:
                 return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
             };
             if (!points->is_array()) {
-                f.error("points", msg::io::wrongType("an array of points [x, y]", *points));
+                f.error("points",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of points [x, y]"), *points));
             } else {
                 for (std::size_t i = 0; i < points->size(); ++i) {
                     const auto& v = (*points)[i];
                     if (isPoint(v)) m.points.push_back({v[0].get<double>(), v[1].get<double>()});
-                    else f.error("points[" + std::to_string(i) + "]", msg::io::wrongType("a point [x, y]", v));
+                    else
+                        f.error("points[" + std::to_string(i) + "]",
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]"), v));
                 }
             }
         }
@@ -196,8 +204,8 @@ protected:
         using form::member;
         std::vector<FormField> fs;
         fs.push_back(form::contourName<AreaClearing>(
-            "outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"), {"outline"},
-            [](auto& a) -> auto& { return a.area.outline; }));
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
+            {"outline"}, [](auto& a) -> auto& { return a.area.outline; }));
         fs.push_back(form::contourNames<AreaClearing>(
             "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
             [](auto& a) -> auto& { return a.area.islands; }));

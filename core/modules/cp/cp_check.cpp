@@ -2,6 +2,7 @@
 // closed, not crossing themselves, islands inside the outline and apart, no
 // sharp inside corner), the codes, the depth, and the room for the tools in
 // the contour's narrowest place.
+#include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 
 #include "check/messages.h"
@@ -27,7 +28,7 @@ bool checkContours(const ContourPocket& p, Reporter& r)
     n.figureContours = p.figureContours;
     n.closedContours = p.closedContours;
     n.resolved = p.resolved;
-    return checkNamedRegion(n, r, "pocket", true);
+    return checkNamedRegion(n, r, TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket"), true);
 }
 
 bool checkCodes(const ContourPocket& p, Reporter& r)
@@ -65,7 +66,8 @@ void checkRooms(const ContourPocket& p, double reach, Reporter& r)
     const bool twoStage = *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
     check::RoomQuery q;
     q.stepKeys = {"wall"};
-    q.label = twoStage ? "the contour's narrowest reach − α3" : "the contour's narrowest reach";
+    q.label = twoStage ? "the contour's narrowest reach − α3"
+                       : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the contour's narrowest reach");
     q.available = reach - (twoStage ? tech.alpha3 : 0.0);
     q.cornerRadius = reach;
     check::checkRoom(q, p.tools, r.unitNo, ContourPocket::kName, r.ctx, r.out);
@@ -79,7 +81,8 @@ check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const c
     Reporter r{unitNo, ContourPocket::kName, ctx, report.diagnostics};
     check::checkPins(p.tools, unitNo, ContourPocket::kName, ctx, report.diagnostics);
     const bool codes = checkCodes(p, r);
-    const bool depth = check::checkLength(p.depth, "depth", "the depth", r) && check::checkDepth(p.depth, r);
+    const bool depth = check::checkLength(p.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
+                       check::checkDepth(p.depth, r);
     check::checkStepOver(p.stepOver, r);
     const bool contours = checkContours(p, r);
     report.figureValid = contours;

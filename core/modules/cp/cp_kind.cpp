@@ -1,6 +1,7 @@
 // The door of module CP (contour pocket of any outline, with islands): its
 // job-file keys, checks, outline, planning and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
+#include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 #include "modules/module_kind.h"
 #include "modules/named_region.h"
@@ -20,8 +21,9 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name", "outline", "islands",  "depth",
-                                     "U",      "F",    "stepOver", "tools", "cutting"};
+const std::vector<std::string> kKeys{
+    "module", "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), "islands", "depth", "U", "F", "stepOver",
+    "tools",  "cutting"};
 
 constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
 
@@ -111,15 +113,18 @@ protected:
     {
         ContourPocket m;
         f.rejectUnknown("module CP", kKeys);
-        m.outline = f.string("outline").value_or("");
+        m.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
         if (const nlohmann::json* islands = f.find("islands")) {
             if (!islands->is_array()) {
-                f.error("islands", msg::io::wrongType("an array of contour names", *islands));
+                f.error("islands",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of contour names"), *islands));
             } else {
                 for (std::size_t i = 0; i < islands->size(); ++i) {
                     const auto& v = (*islands)[i];
                     if (v.is_string()) m.islands.push_back(v.get<std::string>());
-                    else f.error("islands[" + std::to_string(i) + "]", msg::io::wrongType("a contour name", v));
+                    else
+                        f.error("islands[" + std::to_string(i) + "]",
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
                 }
             }
         }
@@ -172,7 +177,8 @@ protected:
         using form::member;
         std::vector<FormField> fs;
         // The contours by name, first: the figure's CONTOUR statements.
-        fs.push_back(form::contourName<ContourPocket>("outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
+        fs.push_back(form::contourName<ContourPocket>(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
+                                                      TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
                                                       {"outline"}, &ContourPocket::outline));
         fs.push_back(form::contourNames<ContourPocket>("islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"),
                                                        {"islands"}, &ContourPocket::islands));

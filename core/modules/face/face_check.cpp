@@ -2,6 +2,7 @@
 // the depth against the stock's height, the finishing pass against the
 // depth, the angle, step-over and margin, the pins, and a tool that takes
 // the finishing pass in one cut. Every refusal names its field.
+#include "model/translate_noop.h"
 #include "modules/face/face.h"
 
 #include "check/messages.h"
@@ -23,15 +24,21 @@ bool checkCodes(const FaceUnit& f, Reporter& r)
 {
     bool ok = true;
     if (f.toolUse != face::kStandard && f.toolUse != face::kRoughOnly) {
-        r.unit("U", fmt::format("U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) "
-                                "or 9 (roughing only, the finishing allowance left)",
-                                f.toolUse));
+        r.unit("U",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) "
+                               "or 9 (roughing only, the finishing allowance left)"),
+                           f.toolUse));
         ok = false;
     }
     if (f.pattern != face::kOneWay && f.pattern != face::kZigzag) {
-        r.unit("pattern", fmt::format("pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in "
-                                      "the same direction) or 2 (zigzag: back and forth)",
-                                      f.pattern));
+        r.unit("pattern",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in "
+                               "the same direction) or 2 (zigzag: back and forth)"),
+                           f.pattern));
         ok = false;
     }
     return ok;
@@ -39,33 +46,43 @@ bool checkCodes(const FaceUnit& f, Reporter& r)
 
 bool checkDepths(const FaceUnit& f, Reporter& r)
 {
-    if (!check::checkLength(f.depth, "depth", "the depth", r)) return false;
+    if (!check::checkLength(f.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r))
+        return false;
     if (!(f.depth > 0.0)) {
         r.unit("depth", msg::depthNotPositive(r.len(f.depth)));
         return false;
     }
     if (const Stock* st = r.ctx.stock; st && f.depth >= st->height - kEps) {
-        r.unit("depth", fmt::format("the depth {} is not less than the stock's height {}: facing takes a layer off the "
-                                    "top, it does not mill the whole block away",
-                                    quote(r.len(f.depth)), quote(r.len(st->height))));
+        r.unit("depth",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "the depth {} is not less than the stock's height {}: facing takes a layer off the "
+                               "top, it does not mill the whole block away"),
+                           quote(r.len(f.depth)), quote(r.len(st->height))));
         return false;
     }
     if (f.finish) {
-        if (!check::checkLength(*f.finish, "finish", "the finishing pass", r)) return false;
+        if (!check::checkLength(*f.finish, "finish", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the finishing pass"), r))
+            return false;
         if (!(*f.finish > 0.0)) {
-            r.unit("finish", fmt::format("the finishing pass is {}; it must be greater than zero (leave the field empty "
-                                         "for the technology data's β2)",
-                                         quote(r.len(*f.finish))));
+            r.unit("finish",
+                   fmt::format(TAIWA_TRANSLATE_NOOP(
+                                   "taiwa::msg",
+                                   "the finishing pass is {}; it must be greater than zero (leave the field empty "
+                                   "for the technology data's β2)"),
+                               quote(r.len(*f.finish))));
             return false;
         }
     }
     if (!r.ctx.tech) return true;
     const double finish = face::finishDepth(f, *r.ctx.tech);
     if (finish >= f.depth - kEps) {
-        r.unit("finish", fmt::format("the finishing pass {}{} is not less than the depth {}: roughing would have "
-                                     "nothing to take; give a smaller finishing pass",
-                                     quote(r.len(finish)), f.finish ? "" : " (the technology data's β2)",
-                                     quote(r.len(f.depth))));
+        r.unit("finish",
+               fmt::format(
+                   TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                        "the finishing pass {}{} is not less than the depth {}: roughing would have "
+                                        "nothing to take; give a smaller finishing pass"),
+                   quote(r.len(finish)), f.finish ? "" : " (the technology data's β2)", quote(r.len(f.depth))));
         return false;
     }
     return true;
@@ -73,31 +90,47 @@ bool checkDepths(const FaceUnit& f, Reporter& r)
 
 void checkPasses(const FaceUnit& f, Reporter& r)
 {
-    if (!std::isfinite(f.angle)) r.unit("angle", msg::notFinite("the angle"));
+    if (!std::isfinite(f.angle))
+        r.unit("angle", msg::notFinite(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the angle")));
     else if (std::abs(f.angle) > 360.0)
-        r.unit("angle", fmt::format("the angle {} lies beyond ±360°; give the passes' direction from +X, e.g. 0 or 90",
-                                    msg::quoteDeg(f.angle)));
+        r.unit("angle",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "the angle {} lies beyond ±360°; give the passes' direction from +X, e.g. 0 or 90"),
+                           msg::quoteDeg(f.angle)));
     if (f.stepOver) {
         const double s = *f.stepOver;
-        if (!std::isfinite(s)) r.unit("stepOver", msg::notFinite("the step-over"));
+        if (!std::isfinite(s))
+            r.unit("stepOver", msg::notFinite(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over")));
         else if (!(s > 0.0))
-            r.unit("stepOver", fmt::format("the step-over {:g} × D must be greater than 0: passes that do not step "
-                                           "sideways never cover the face",
+            r.unit("stepOver", fmt::format(TAIWA_TRANSLATE_NOOP(
+                                               "taiwa::msg",
+                                               "the step-over {:g} × D must be greater than 0: passes that do not step "
+                                               "sideways never cover the face"),
                                            s));
         else if (s < face::kStepOverLow)
-            r.unit("stepOver", fmt::format("the step-over {:g} × D is less than {:g} × D: the face would take more than "
-                                           "a hundred passes a tool diameter",
-                                           s, face::kStepOverLow));
+            r.unit("stepOver",
+                   fmt::format(TAIWA_TRANSLATE_NOOP(
+                                   "taiwa::msg",
+                                   "the step-over {:g} × D is less than {:g} × D: the face would take more than "
+                                   "a hundred passes a tool diameter"),
+                               s, face::kStepOverLow));
         else if (s > face::kStepOverHigh)
-            r.unit("stepOver", fmt::format("the step-over {:g} × D is more than {:g} × D: neighbouring passes would "
-                                           "overlap by less than a tenth of the diameter, and the inserts' corners "
-                                           "and the tool's run-out leave ridges between them",
-                                           s, face::kStepOverHigh));
+            r.unit("stepOver",
+                   fmt::format(
+                       TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                            "the step-over {:g} × D is more than {:g} × D: neighbouring passes would "
+                                            "overlap by less than a tenth of the diameter, and the inserts' corners "
+                                            "and the tool's run-out leave ridges between them"),
+                       s, face::kStepOverHigh));
     }
-    if (check::checkLength(f.margin, "margin", "the margin", r) && f.margin < 0.0)
-        r.unit("margin", fmt::format("the margin is {}; it must be 0 (the face is the stock's top) or more (the face "
-                                     "reaches beyond the stock's sides): less would leave the top's edges unfaced",
-                                     quote(r.len(f.margin))));
+    if (check::checkLength(f.margin, "margin", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the margin"), r) && f.margin < 0.0)
+        r.unit("margin",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "the margin is {}; it must be 0 (the face is the stock's top) or more (the face "
+                               "reaches beyond the stock's sides): less would leave the top's edges unfaced"),
+                           quote(r.len(f.margin))));
 }
 
 // Pins: "face" only, a tool of the library, a face mill or a flat end mill.
@@ -107,14 +140,18 @@ bool checkPins(const FaceUnit& f, Reporter& r)
     for (const auto& [key, id] : f.tools) {
         std::string message;
         if (key != face::kStepKey)
-            message = fmt::format("a face-milling unit has no step \"{}\"; its steps are \"face\"", key);
+            message = fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "a face-milling unit has no step \"{}\"; its steps are \"face\""),
+                key);
         else if (r.ctx.library) {
             const Tool* t = findTool(*r.ctx.library, id);
             if (!t) message = msg::toolNotInLibrary(id);
             else if (t->type != ToolType::FaceMill && t->type != ToolType::FlatEndMill)
-                message = fmt::format("{} is pinned for \"face\" but is not a face mill or a flat end mill: a face is "
-                                      "cut flat by the tool's flat bottom",
-                                      msg::toolName(*t));
+                message = fmt::format(
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::msg", "{} is pinned for \"face\" but is not a face mill or a flat end mill: a face is "
+                                      "cut flat by the tool's flat bottom"),
+                    msg::toolName(*t));
         }
         if (!message.empty()) {
             r.unit("tools." + key, message);

@@ -2,6 +2,7 @@
 // cutting length set the layers), then roughing layers of equal depth, at
 // most γ·D and no deeper than the tool cuts, down to depth - finish, and
 // the finishing pass at the depth (U1). Every step is the whole face.
+#include "model/translate_noop.h"
 #include "modules/face/face.h"
 
 #include "check/messages.h"
@@ -69,13 +70,17 @@ ToolPick chooseTool(const FaceUnit& f, const TechnologyData& tech, const std::ve
         const Tool* t = findTool(library, pin->second);
         if (!t) pick.problem = msg::toolNotInLibrary(pin->second);
         else if (!flatBottomed(*t))
-            pick.problem = fmt::format("{} is pinned for \"face\" but is not a face mill or a flat end mill with a corner "
-                                       "radius under 0.4 D: a face is cut flat by the tool's flat bottom",
-                                       msg::toolName(*t));
+            pick.problem = fmt::format(
+                TAIWA_TRANSLATE_NOOP(
+                    "taiwa::msg", "{} is pinned for \"face\" but is not a face mill or a flat end mill with a corner "
+                                  "radius under 0.4 D: a face is cut flat by the tool's flat bottom"),
+                msg::toolName(*t));
         else if (!takesPass(*t))
-            pick.problem = fmt::format("{} is pinned for \"face\" but cuts {} at most, less than the finishing pass {}; "
-                                       "give a smaller finishing pass or another tool",
-                                       msg::toolName(*t), quoted(cuttingLength(*t)), quoted(pass));
+            pick.problem = fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                     "{} is pinned for \"face\" but cuts {} at most, less than the finishing pass {}; "
+                                     "give a smaller finishing pass or another tool"),
+                msg::toolName(*t), quoted(cuttingLength(*t)), quoted(pass));
         else {
             pick.tool = t;
             pick.reason = "pinned by the operator";
@@ -88,15 +93,18 @@ ToolPick chooseTool(const FaceUnit& f, const TechnologyData& tech, const std::ve
     for (const Tool& t : library)
         if (flatBottomed(t) && takesPass(t) && (!pick.tool || key(t) > key(*pick.tool))) pick.tool = &t;
     if (!pick.tool) {
-        pick.problem = finishing ? fmt::format("the tool library has no face mill or flat end mill that cuts the "
-                                               "finishing pass {} in one cut; add one or give a smaller finishing pass",
-                                               quoted(pass))
-                                 : std::string("the tool library has no face mill or flat end mill; add one");
+        pick.problem = finishing
+                           ? fmt::format(TAIWA_TRANSLATE_NOOP(
+                                             "taiwa::msg",
+                                             "the tool library has no face mill or flat end mill that cuts the "
+                                             "finishing pass {} in one cut; add one or give a smaller finishing pass"),
+                                         quoted(pass))
+                           : std::string("the tool library has no face mill or flat end mill; add one");
         return pick;
     }
     const Tool& t = *pick.tool;
-    pick.reason = fmt::format("largest {} in the library (Ø{}), cutting {} a layer", toString(t.type), mm(t.diameter),
-                              mm(layerLimit(t, tech)));
+    pick.reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} in the library (Ø{}), cutting {} a layer"),
+                              toString(t.type), mm(t.diameter), mm(layerLimit(t, tech)));
     return pick;
 }
 

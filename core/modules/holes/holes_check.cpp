@@ -3,6 +3,7 @@
 // a diameter between centres), inside the stock and, with their drill
 // points, above its bottom (no through holes: no breakthrough is made),
 // threads from the table only, the tool pins of the unit's steps.
+#include "model/translate_noop.h"
 #include "modules/holes/holes.h"
 
 #include "check/messages.h"
@@ -48,16 +49,22 @@ bool checkCount(const HolePattern& h, Reporter& r)
     bool ok = true;
     const auto bounded = [&](int n, const char* field, const char* what) {
         if (n < 1 || n > holes::kMaxHoles) {
-            r.unit(field, fmt::format("{} {} must be 1 to {}", what, n, holes::kMaxHoles));
+            r.unit(field,
+                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} {} must be 1 to {}"), what, n, holes::kMaxHoles));
             ok = false;
         }
     };
     if (uses(h.pattern, {"line", "grid", "bolt circle", "arc"}))
-        bounded(h.count, "count", h.pattern == "grid" ? "the columns" : "the number of holes");
-    if (h.pattern == "grid") bounded(h.rows, "rows", "the rows");
+        bounded(h.count, "count",
+                h.pattern == "grid" ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the columns")
+                                    : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the number of holes"));
+    if (h.pattern == "grid")
+        bounded(h.rows, "rows", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the rows"));
     if (ok && h.pattern == "grid" && static_cast<long>(h.count) * h.rows > holes::kMaxHoles) {
-        r.unit("rows", fmt::format("{} columns by {} rows are {} holes, more than the {} a unit may have", h.count, h.rows,
-                                   static_cast<long>(h.count) * h.rows, holes::kMaxHoles));
+        r.unit("rows",
+               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "{} columns by {} rows are {} holes, more than the {} a unit may have"),
+                           h.count, h.rows, static_cast<long>(h.count) * h.rows, holes::kMaxHoles));
         ok = false;
     }
     return ok;
@@ -67,33 +74,45 @@ bool checkValues(const HolePattern& h, Reporter& r)
 {
     bool ok = check::checkLength(h.x, "x", "x", r) && check::checkLength(h.y, "y", "y", r);
     if (!std::isfinite(h.angle) || std::abs(h.angle) > 360.0) {
-        r.unit("angle", fmt::format("the angle {:g}° must be from -360° to 360°", h.angle));
+        r.unit("angle",
+               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the angle {:g}° must be from -360° to 360°"), h.angle));
         ok = false;
     }
     const auto positive = [&](double v, const char* field, const char* what) {
         if (!check::checkLength(v, field, what, r)) return ok = false;
         if (!(v > 0.0)) {
-            r.unit(field, fmt::format("{} {} must be greater than zero", what, msg::quote(r.len(v))));
+            r.unit(field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} {} must be greater than zero"), what,
+                                      msg::quote(r.len(v))));
             return ok = false;
         }
         return true;
     };
-    if (uses(h.pattern, {"line", "grid"}) && (h.count > 1 || h.pattern == "line")) positive(h.pitch, "pitch", "the pitch");
-    if (h.pattern == "grid" && h.rows > 1) positive(h.pitchY, "pitchY", "the pitch between rows");
-    if (uses(h.pattern, {"bolt circle", "arc"})) positive(h.radius, "radius", "the radius");
+    if (uses(h.pattern, {"line", "grid"}) && (h.count > 1 || h.pattern == "line"))
+        positive(h.pitch, "pitch", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the pitch"));
+    if (h.pattern == "grid" && h.rows > 1)
+        positive(h.pitchY, "pitchY", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the pitch between rows"));
+    if (uses(h.pattern, {"bolt circle", "arc"}))
+        positive(h.radius, "radius", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the radius"));
     if (h.pattern == "arc" && (!std::isfinite(h.angularPitch) || h.angularPitch == 0.0 || std::abs(h.angularPitch) >= 360.0)) {
-        r.unit("angularPitch", fmt::format("the angular pitch {:g}° must not be 0 and lie within ±360°", h.angularPitch));
+        r.unit("angularPitch",
+               fmt::format(
+                   TAIWA_TRANSLATE_NOOP("taiwa::msg", "the angular pitch {:g}° must not be 0 and lie within ±360°"),
+                   h.angularPitch));
         ok = false;
     }
     if (h.hole == "tapped") {
         if (!holes::findThread(h.thread)) {
             std::string sizes;
             for (const auto& t : holes::threadTable()) sizes += (sizes.empty() ? "" : ", ") + std::string(t.name);
-            r.unit("thread", fmt::format("thread \"{}\" is not one this program taps: ISO metric coarse {}", h.thread, sizes));
+            r.unit("thread",
+                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                    "thread \"{}\" is not one this program taps: ISO metric coarse {}"),
+                               h.thread, sizes));
             ok = false;
         }
         if (h.diameter != 0.0) {
-            r.unit("diameter", "a tapped hole's diameter is its thread's: leave out \"diameter\"");
+            r.unit("diameter", TAIWA_TRANSLATE_NOOP(
+                                   "taiwa::msg", "a tapped hole's diameter is its thread's: leave out \"diameter\""));
             ok = false;
         }
     } else {
@@ -101,14 +120,17 @@ bool checkValues(const HolePattern& h, Reporter& r)
             r.unit("thread", "only a tapped hole has a thread; the hole is " + h.hole);
             ok = false;
         }
-        if (positive(h.diameter, "diameter", "the diameter") && (h.diameter < kMinDiameter || h.diameter > kMaxDiameter)) {
-            r.unit("diameter", fmt::format("the diameter {} must be {} to {}", msg::quote(r.len(h.diameter)),
-                                           msg::quote(r.len(kMinDiameter)), msg::quote(r.len(kMaxDiameter))));
+        if (positive(h.diameter, "diameter", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the diameter")) &&
+            (h.diameter < kMinDiameter || h.diameter > kMaxDiameter)) {
+            r.unit("diameter", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the diameter {} must be {} to {}"),
+                                           msg::quote(r.len(h.diameter)), msg::quote(r.len(kMinDiameter)),
+                                           msg::quote(r.len(kMaxDiameter))));
             ok = false;
         }
     }
-    if (check::checkLength(h.depth, "depth", "the depth", r) && !(h.depth > 0.0)) {
-        r.unit("depth", fmt::format("the depth {} must be greater than zero", msg::quote(r.len(h.depth))));
+    if (check::checkLength(h.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) && !(h.depth > 0.0)) {
+        r.unit("depth", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth {} must be greater than zero"),
+                                    msg::quote(r.len(h.depth))));
         ok = false;
     }
     return ok;
@@ -120,27 +142,38 @@ bool checkApart(const HolePattern& h, const std::vector<Point2>& at, double diam
 {
     const auto tooClose = [&](double spacing, const char* field, const char* what) {
         if (spacing > diameter + kEps) return false;
-        r.unit(field, fmt::format("{} {} is not more than the hole's diameter {}: the holes would cut into each other",
-                                  what, msg::quote(r.len(spacing)), msg::quote(r.len(diameter))));
+        r.unit(field,
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "{} {} is not more than the hole's diameter {}: the holes would cut into each other"),
+                           what, msg::quote(r.len(spacing)), msg::quote(r.len(diameter))));
         return true;
     };
-    if (uses(h.pattern, {"line", "grid"}) && h.count > 1 && tooClose(h.pitch, "pitch", "the pitch")) return false;
-    if (h.pattern == "grid" && h.rows > 1 && tooClose(h.pitchY, "pitchY", "the pitch between rows")) return false;
+    if (uses(h.pattern, {"line", "grid"}) && h.count > 1 &&
+        tooClose(h.pitch, "pitch", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the pitch")))
+        return false;
+    if (h.pattern == "grid" && h.rows > 1 &&
+        tooClose(h.pitchY, "pitchY", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the pitch between rows")))
+        return false;
     if (h.pattern == "bolt circle" && h.count > 1 &&
-        tooClose(2 * h.radius * std::sin(std::numbers::pi / h.count), "count", "the distance between neighbouring holes"))
+        tooClose(2 * h.radius * std::sin(std::numbers::pi / h.count), "count",
+                 TAIWA_TRANSLATE_NOOP("taiwa::msg", "the distance between neighbouring holes")))
         return false;
     if (h.pattern == "arc" && h.count > 1 &&
         tooClose(2 * h.radius * std::sin(std::abs(h.angularPitch) * std::numbers::pi / 360.0), "angularPitch",
-                 "the distance between neighbouring holes"))
+                 TAIWA_TRANSLATE_NOOP("taiwa::msg", "the distance between neighbouring holes")))
         return false;
     if (!uses(h.pattern, {"arc"})) return true;
     for (std::size_t i = 0; i < at.size(); ++i)
         for (std::size_t j = i + 1; j < at.size(); ++j)
             if (distance(at[i], at[j]) <= diameter + kEps) {
-                r.unit("count", fmt::format("holes {} and {} lie {} apart, not more than the diameter {}: the arc closes on "
-                                            "itself; fewer holes or a smaller angular pitch",
-                                            i + 1, j + 1, msg::quote(r.len(distance(at[i], at[j]))),
-                                            msg::quote(r.len(diameter))));
+                r.unit("count",
+                       fmt::format(TAIWA_TRANSLATE_NOOP(
+                                       "taiwa::msg",
+                                       "holes {} and {} lie {} apart, not more than the diameter {}: the arc closes on "
+                                       "itself; fewer holes or a smaller angular pitch"),
+                                   i + 1, j + 1, msg::quote(r.len(distance(at[i], at[j]))),
+                                   msg::quote(r.len(diameter))));
                 return false;
             }
     return true;
@@ -156,17 +189,23 @@ bool checkStock(const HolePattern& h, const std::vector<Point2>& at, double diam
         if (p.x - rad < st->x - kEps || p.y - rad < st->y - kEps || p.x + rad > st->x + st->width + kEps ||
             p.y + rad > st->y + st->length + kEps) {
             r.unit(h.pattern == "single" ? "x" : "pattern",
-                   fmt::format("hole {} (X {}, Y {}) reaches outside the stock; move the pattern or enlarge the stock", i + 1,
-                               msg::quote(r.len(p.x)), msg::quote(r.len(p.y))));
+                   fmt::format(
+                       TAIWA_TRANSLATE_NOOP(
+                           "taiwa::msg",
+                           "hole {} (X {}, Y {}) reaches outside the stock; move the pattern or enlarge the stock"),
+                       i + 1, msg::quote(r.len(p.x)), msg::quote(r.len(p.y))));
             return false;
         }
     }
     const double lowest = holes::lowestPoint(h);
     if (lowest > st->height + kEps) {
-        r.unit("depth", fmt::format("the hole goes down to {} with its drill point (its tools go deeper than the depth {}; "
-                                    "docs/holes.md), below the stock's height {}: through holes are not made; make it "
-                                    "shallower",
-                                    msg::quote(r.len(lowest)), msg::quote(r.len(h.depth)), msg::quote(r.len(st->height))));
+        r.unit("depth",
+               fmt::format(TAIWA_TRANSLATE_NOOP(
+                               "taiwa::msg",
+                               "the hole goes down to {} with its drill point (its tools go deeper than the depth {}; "
+                               "docs/holes.md), below the stock's height {}: through holes are not made; make it "
+                               "shallower"),
+                           msg::quote(r.len(lowest)), msg::quote(r.len(h.depth)), msg::quote(r.len(st->height))));
         return false;
     }
     return true;
@@ -178,7 +217,8 @@ void checkPins(const HolePattern& h, int unitNo, const check::Context& ctx, Diag
     for (const auto& [key, id] : h.tools) {
         std::string message;
         if (std::find(keys.begin(), keys.end(), key) == keys.end())
-            message = fmt::format("a {} hole has no step \"{}\"; its steps are {}", h.hole, key, listed(keys));
+            message = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a {} hole has no step \"{}\"; its steps are {}"),
+                                  h.hole, key, listed(keys));
         else if (ctx.library && !findTool(*ctx.library, id))
             message = msg::toolNotInLibrary(id);
         if (!message.empty()) out.push_back({Severity::Error, unitNo, HolePattern::kName, "tools." + key, message});
@@ -193,11 +233,13 @@ check::UnitReport checkHolePattern(const HolePattern& h, int unitNo, const check
     Reporter r{unitNo, HolePattern::kName, ctx, report.diagnostics};
     bool ok = true;
     if (!known(h.pattern, kPatterns)) {
-        r.unit("pattern", fmt::format("pattern \"{}\" is not one of {}", h.pattern, listed(kPatterns)));
+        r.unit("pattern", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pattern \"{}\" is not one of {}"), h.pattern,
+                                      listed(kPatterns)));
         ok = false;
     }
     if (!known(h.hole, kHoles)) {
-        r.unit("hole", fmt::format("hole \"{}\" is not one of {}", h.hole, listed(kHoles)));
+        r.unit("hole",
+               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "hole \"{}\" is not one of {}"), h.hole, listed(kHoles)));
         ok = false;
     }
     if (!ok) return report;

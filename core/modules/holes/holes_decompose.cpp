@@ -3,6 +3,7 @@
 // reamer or boring tool. Every step holds all the unit's holes; a pinned
 // tool must be of the step's type and size, an unpinned one is the
 // library's best fit. A missing tool is a diagnostic naming what to add.
+#include "model/translate_noop.h"
 #include "modules/holes/holes.h"
 
 #include "check/messages.h"
@@ -53,7 +54,9 @@ struct Planner {
                 return nullptr;
             }
             if (!fits(*t)) {
-                problem(key, fmt::format("T{} ({}) is pinned for \"{}\" but is not a {}", t->id, t->name, key, wanted));
+                problem(key,
+                        fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "T{} ({}) is pinned for \"{}\" but is not a {}"),
+                                    t->id, t->name, key, wanted));
                 return nullptr;
             }
             return t;
@@ -68,7 +71,8 @@ struct Planner {
             const bool data = t.cuttingFor(material) != nullptr, bestData = best->cuttingFor(material) != nullptr;
             if (data != bestData ? data : better(t, *best)) best = &t;
         }
-        if (!best) problem(key, fmt::format("no {} in the tool library; add one", wanted));
+        if (!best)
+            problem(key, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no {} in the tool library; add one"), wanted));
         return best;
     }
 };
@@ -96,12 +100,19 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     const Tool* drill = nullptr;
     std::string drillReason;
     if (d.drillDiameter > 0.0) {
-        const std::string what = thread ? fmt::format("the tap drill of {}", thread->name) : std::string("the hole's");
+        const std::string what =
+            thread ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tap drill of {}"), thread->name)
+                   : std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the hole's"));
         drill = p.pick(
             "drill",
-            [&](const Tool& t) { return t.type == ToolType::Drill && std::abs(t.diameter - d.drillDiameter) <= kSame && reaches(t, tipOf(t)); },
-            lowerId, fmt::format("drill of Ø{} ({}) whose flutes reach {}", mm(d.drillDiameter), what, mm(d.drillFull + d.drillDiameter / 2)));
-        drillReason = fmt::format("drill of Ø{}: {}", mm(d.drillDiameter), what);
+            [&](const Tool& t) {
+                return t.type == ToolType::Drill && std::abs(t.diameter - d.drillDiameter) <= kSame &&
+                       reaches(t, tipOf(t));
+            },
+            lowerId,
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{} ({}) whose flutes reach {}"),
+                        mm(d.drillDiameter), what, mm(d.drillFull + d.drillDiameter / 2)));
+        drillReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{}: {}"), mm(d.drillDiameter), what);
     } else {
         const bool ream = h.hole == "reamed";
         const double lo = h.diameter - (ream ? kReamUnderMax : kBoreUnderMax);
@@ -111,12 +122,17 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
             [&](const Tool& t) {
                 return t.type == ToolType::Drill && t.diameter >= lo - 1e-9 && t.diameter <= hi + 1e-9 && reaches(t, tipOf(t));
             },
-            [](const Tool& a, const Tool& b) { return a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id); },
-            fmt::format("drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}", mm(lo), mm(hi),
-                        ream ? "ream" : "bore", mm(h.diameter), mm(ream ? kReamUnderMin : kBoreUnderMin),
-                        mm(ream ? kReamUnderMax : kBoreUnderMax), mm(d.drillFull + hi / 2)));
+            [](const Tool& a, const Tool& b) {
+                return a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id);
+            },
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                             "drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}"),
+                        mm(lo), mm(hi), ream ? "ream" : "bore", mm(h.diameter),
+                        mm(ream ? kReamUnderMin : kBoreUnderMin), mm(ream ? kReamUnderMax : kBoreUnderMax),
+                        mm(d.drillFull + hi / 2)));
         if (drill)
-            drillReason = fmt::format("largest drill {} to {} under Ø{} to {}", mm(ream ? kReamUnderMin : kBoreUnderMin),
+            drillReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest drill {} to {} under Ø{} to {}"),
+                                      mm(ream ? kReamUnderMin : kBoreUnderMin),
                                       mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? "ream" : "bore");
     }
 
@@ -148,9 +164,10 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
                        std::abs(t.turning.pitchMin - thread->pitch) <= 1e-6 && reaches(t, d.finish);
             },
             lowerId,
-            fmt::format("tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}", thread->name, thread->pitch,
-                        mm(thread->size), mm(thread->pitch), mm(d.finish)));
-        finishReason = fmt::format("tap {}x{:g}", thread->name, thread->pitch);
+            fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}"),
+                thread->name, thread->pitch, mm(thread->size), mm(thread->pitch), mm(d.finish)));
+        finishReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g}"), thread->name, thread->pitch);
     } else if (h.hole == "reamed" || h.hole == "bored") {
         const bool ream = h.hole == "reamed";
         finishKind = ream ? StepKind::Reaming : StepKind::Boring;
@@ -158,11 +175,14 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
         const ToolType type = ream ? ToolType::Reamer : ToolType::BoringBar;
         finish = p.pick(
             ream ? "ream" : "bore",
-            [&](const Tool& t) { return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish); },
+            [&](const Tool& t) {
+                return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish);
+            },
             lowerId,
-            fmt::format("{} of Ø{} whose flutes reach {}", ream ? "reamer" : "boring bar (set to the bore)", mm(h.diameter),
-                        mm(d.finish)));
-        finishReason = fmt::format("{} of the hole's Ø{}", ream ? "reamer" : "boring tool", mm(h.diameter));
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of Ø{} whose flutes reach {}"),
+                        ream ? "reamer" : "boring bar (set to the bore)", mm(h.diameter), mm(d.finish)));
+        finishReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of the hole's Ø{}"),
+                                   ream ? "reamer" : "boring tool", mm(h.diameter));
     }
     if (p.failed || !drill || !centre) return {};
 
@@ -181,7 +201,8 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     const double spot = std::min(centre->diameter, drill->diameter);
     steps.push_back(step(StepKind::CentreDrilling, MachiningType::CentreDrilling, *centre,
                          holes::pointLength(spot, centre->pointAngle), spot,
-                         fmt::format("centre drill spotting Ø{} for the Ø{} drill", mm(spot), mm(drill->diameter))));
+                         fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drill spotting Ø{} for the Ø{} drill"),
+                                     mm(spot), mm(drill->diameter))));
     steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(*drill), drill->diameter, drillReason));
     if (finish) {
         Step s = step(finishKind, finishType, *finish, d.finish, d.finishDiameter, finishReason);

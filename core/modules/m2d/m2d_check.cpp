@@ -2,8 +2,9 @@
 // opening and its inclined walls, the floor they leave, depth against stock
 // and technology data, and tool room.
 #include "check/messages.h"
-#include "modules/m2d/m2d_kind.h"
 #include "model/codes.h"
+#include "model/translate_noop.h"
+#include "modules/m2d/m2d_kind.h"
 
 #include <cmath>
 #include <numbers>
@@ -29,11 +30,11 @@ bool allFinite(const M2DPocket& p, Reporter& r)
     length("corner", p.corner.y, "Y1 of the reference corner");
     length("L1", p.lengthX, "L1");
     length("L2", p.lengthY, "L2");
-    length("depth", p.depth, "the depth");
+    length("depth", p.depth, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"));
     angle("theta1", p.theta1, "θ1");
     if (p.theta2) angle("theta2", *p.theta2, "θ2");
-    length("cornerRadius", p.cornerRadius, "the corner radius");
-    length("scallop", p.scallop, "the scallop height");
+    length("cornerRadius", p.cornerRadius, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the corner radius"));
+    length("scallop", p.scallop, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the scallop height"));
     return ok;
 }
 
@@ -135,7 +136,8 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
     const std::size_t before = report.diagnostics.size();
     report.figureValid = figureValid(p, depthOk, anglesOk, r);
     const bool floorOk = report.diagnostics.size() == before;
-    if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock)) r.unit("corner", msg::outsideStock("pocket opening"));
+    if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock))
+        r.unit("corner", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket opening")));
 
     if (!ctx.tech || !codes || !depthOk) return report;
     const TechnologyData& tech = *ctx.tech;

@@ -1,8 +1,9 @@
 // Input checks of one M4 unit (2.5-D pocket): numbers, codes, the outline's
 // geometry, depth against stock and technology data, and tool room.
 #include "check/messages.h"
-#include "modules/m4/m4_kind.h"
 #include "model/codes.h"
+#include "model/translate_noop.h"
+#include "modules/m4/m4_kind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,10 +26,10 @@ bool allFinite(const M4Pocket& p, Reporter& r)
         ok &= checkLength(p.corners[i].x, field, "the coordinate X of " + point, r) &&
               checkLength(p.corners[i].y, field, "the coordinate Y of " + point, r);
     }
-    ok &= checkLength(p.cornerRadius, "cornerRadius", "the cornerRadius", r);
-    ok &= checkLength(p.depth, "depth", "the depth", r);
+    ok &= checkLength(p.cornerRadius, "cornerRadius", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the cornerRadius"), r);
+    ok &= checkLength(p.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r);
     if (!std::isfinite(p.taper)) {
-        r.unit("taper", msg::notFinite("the taper"));
+        r.unit("taper", msg::notFinite(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the taper")));
         ok = false;
     }
     return ok;
@@ -149,7 +150,8 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
 
     const bool outlineOk = outlineValid(p, r);
     report.figureValid = outlineOk;
-    if (outlineOk && ctx.stock && !insideStock(p.corners, *ctx.stock)) r.unit("corners", msg::outsideStock("pocket"));
+    if (outlineOk && ctx.stock && !insideStock(p.corners, *ctx.stock))
+        r.unit("corners", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket")));
 
     bool taperFits = true;
     if (outlineOk && depthOk && taperOk && p.taper > 0.0) {

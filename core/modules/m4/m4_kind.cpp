@@ -1,7 +1,8 @@
 // The door of module M4 (2.5-D pocket): its job-file keys, checks, outline,
 // planning and form, as module_kind.h asks. Registered in modules/registry.cpp.
-#include "modules/m4/m4.h"
 #include "modules/m4/m4_kind.h"
+#include "model/translate_noop.h"
+#include "modules/m4/m4.h"
 #include "modules/pocket_plan.h"
 #include "paths/contour.h"
 
@@ -76,13 +77,15 @@ protected:
         M4Pocket m;
         f.rejectUnknown("module M4", kKeys);
         if (const json* corners = f.find("corners")) {
-            if (!corners->is_array()) f.error("corners", msg::io::wrongType("an array of 4 points [x, y]", *corners));
+            if (!corners->is_array())
+                f.error("corners", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 4 points [x, y]"),
+                                                      *corners));
             else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
             else
                 for (std::size_t i = 0; i < 4; ++i)
                     m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
         } else {
-            f.error("corners", msg::io::missing("an array of 4 points [x, y]"));
+            f.error("corners", msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 4 points [x, y]")));
         }
         m.cornerRadius = f.number("cornerRadius").value_or(0.0);
         m.depth = f.number("depth").value_or(0.0);

@@ -4,6 +4,7 @@
 // figure in the XY plane and no machining steps. Registered in
 // modules/registry.cpp.
 #include "modules/probe/probe_kind.h"
+#include "model/translate_noop.h"
 
 #include "io/job_messages.h"
 #include "io/json_write.h"
@@ -92,7 +93,10 @@ protected:
         p.where = f.whole("where", 1);
         if (const json* touches = f.find("touches")) {
             if (!touches->is_array() || touches->empty() || touches->size() > ProbeUnit::kMaxTouches) {
-                f.error("touches", msg::io::wrongType("an array of 1 to 8 points [x, y], the first [0, 0]", *touches));
+                f.error("touches",
+                        msg::io::wrongType(
+                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 1 to 8 points [x, y], the first [0, 0]"),
+                            *touches));
             } else {
                 // A touch not (wholly) entered is null, or has null for the
                 // coordinate not yet typed: saved as the operator left it.
@@ -101,7 +105,8 @@ protected:
                     const std::string field = "touches[" + std::to_string(i) + "]";
                     if (t.is_null()) continue;
                     if (!t.is_array() || t.size() != 2) {
-                        f.error(field, msg::io::wrongType("a point [x, y] or null", t));
+                        f.error(field,
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y] or null"), t));
                         continue;
                     }
                     if (!t[0].is_null()) p.x[i] = f.numberValue(t[0], field);
@@ -113,7 +118,10 @@ protected:
         }
         if (const json* sides = f.find("sides")) {
             if (!sides->is_array() || sides->size() > ProbeUnit::kMaxTouches) {
-                f.error("sides", msg::io::wrongType("an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)", *sides));
+                f.error("sides",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP(
+                                               "taiwa::msg", "an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)"),
+                                           *sides));
             } else {
                 for (std::size_t i = 0; i < sides->size(); ++i)
                     p.side[i] = f.wholeValue((*sides)[i], "sides[" + std::to_string(i) + "]").value_or(0);

@@ -4,6 +4,7 @@
 // and step-over; the pins; the room for the end mill (the smallest concave
 // radius on the tool's side, and with the tool inside a closed contour its
 // reach).
+#include "model/translate_noop.h"
 #include "modules/side/side.h"
 
 #include "check/messages.h"
@@ -95,10 +96,11 @@ check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Cont
     Reporter r{unitNo, SideMill::kName, ctx, report.diagnostics};
     checkPins(m, r);
     const bool codes = checkCodes(m, r);
-    const bool depth = check::checkLength(m.depth, "depth", "the depth", r) && check::checkDepth(m.depth, r);
-    bool width = check::checkLength(m.width, "width", "the width", r);
+    const bool depth = check::checkLength(m.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
+                       check::checkDepth(m.depth, r);
+    bool width = check::checkLength(m.width, "width", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the width"), r);
     if (width && !(m.width > 0.0)) {
-        r.unit("width", msg::lengthNotPositive("the width W", r.len(m.width)));
+        r.unit("width", msg::lengthNotPositive(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the width W"), r.len(m.width)));
         width = false;
     }
     const bool roughs = m.toolUse != 8;
@@ -124,7 +126,7 @@ check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Cont
     check::RoomQuery q;
     q.stepKeys = {"side"};
     const bool finishes = m.toolUse != 9;
-    q.label = finishes ? "the contour's smallest inside radius on the tool's side"
+    q.label = finishes ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the contour's smallest inside radius on the tool's side")
                        : "the contour's smallest inside radius on the tool's side + α2";
     q.available = finishes ? room : room + ctx.tech->alpha2;
     q.cornerRadius = room;

@@ -6,6 +6,7 @@
 // contour leaves on the tool's side, and every pass's tool-centre chain
 // proved to keep its distance from the contour (a narrow channel the
 // trimming of neighbours does not see makes the next smaller end mill).
+#include "model/translate_noop.h"
 #include "modules/side/side.h"
 
 #include "check/messages.h"
@@ -97,8 +98,11 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
         tools::Fit pinned = fit;
         pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
         if (!tools::fits(*tool, pinned, material)) {
-            problem("tools.side", msg::sideNoTool("side milling", fmt::format("pinned tool T{} ({}) does not fit: {}", tool->id,
-                                                                              tool->name, tools::whyNot(*tool, pinned, material))));
+            problem(
+                "tools.side",
+                msg::sideNoTool(TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"),
+                                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned tool T{} ({}) does not fit: {}"),
+                                            tool->id, tool->name, tools::whyNot(*tool, pinned, material))));
             return {};
         }
         if (const auto at = tooNarrow(t, passesFor(m, tech, tool->diameter), tool->radius())) {
@@ -126,8 +130,11 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             candidates.clear();
         }
         if (!tool) {
-            problem("tools.side", msg::sideNoTool("side milling", tools::noFitMessage(library, fit, material, "side milling") +
-                                                                      " along " + m.contour));
+            problem("tools.side",
+                    msg::sideNoTool(TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"),
+                                    tools::noFitMessage(library, fit, material,
+                                                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling")) +
+                                        " along " + m.contour));
             return {};
         }
         reason = fmt::format("largest flat end mill ({})", mm(tool->diameter));

@@ -2,6 +2,7 @@
 // the input checks (the profile table, the allowance table, the bar, the
 // pinned tools and the steps turned off), the deformed profile handed to the
 // plan, and the turning steps (core/turning/turn_plan.h).
+#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 #include "modules/turn/turn.h"
 
@@ -113,30 +114,33 @@ protected:
     {
         TurnUnit t;
         TurnedProfile& p = t.profile;
-        f.rejectUnknown("a TURN unit", kUnitKeys);
+        f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a TURN unit"), kUnitKeys);
         p.side = optionalChoice(f, "side", kSides) == 1 ? ProfileSide::Inner : ProfileSide::Outer;
         if (const auto* start = f.find("start")) {
             if (!start->is_object()) {
                 f.error("start", msg::io::wrongType("an object {\"x\": diameter, \"z\": Z}", *start));
             } else {
                 const io::ObjectFields s = f.nested(*start, "start.");
-                s.rejectUnknown("the start point", {"x", "z"});
+                s.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the start point"), {"x", "z"});
                 p.startX = s.number("x", 0.0);
                 p.startZ = s.number("z", 0.0);
             }
         }
         const auto* rows = f.find("rows");
         if (!rows || !rows->is_array()) {
-            f.error("rows", rows ? msg::io::wrongType("an array of profile rows", *rows) : msg::io::missing("an array of profile rows"));
+            f.error("rows",
+                    rows ? msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows"), *rows)
+                         : msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows")));
         } else {
             for (std::size_t i = 0; i < rows->size(); ++i) {
                 const std::string prefix = fmt::format("rows[{}].", i + 1);
                 if (!(*rows)[i].is_object()) {
-                    f.error(prefix.substr(0, prefix.size() - 1), msg::io::wrongType("an object", (*rows)[i]));
+                    f.error(prefix.substr(0, prefix.size() - 1),
+                            msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*rows)[i]));
                     continue;
                 }
                 const io::ObjectFields r = f.nested((*rows)[i], prefix);
-                r.rejectUnknown("a profile row", kRowKeys);
+                r.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a profile row"), kRowKeys);
                 ProfileRow row;
                 row.id = r.whole("id", static_cast<int>(i) + 1);
                 row.kind = static_cast<ElementKind>(optionalChoice(r, "kind", kKinds));
@@ -154,7 +158,7 @@ protected:
                         r.error("thread", msg::io::wrongType("an object {\"pitch\": mm, \"depth\": mm}", *thread));
                     } else {
                         const io::ObjectFields th = r.nested(*thread, "thread.");
-                        th.rejectUnknown("a thread", {"pitch", "depth"});
+                        th.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a thread"), {"pitch", "depth"});
                         row.attributes.thread = ThreadSpec{th.number("pitch").value_or(0.0), th.optionalNumber("depth")};
                     }
                 }
@@ -163,16 +167,19 @@ protected:
         }
         if (const auto* allowances = f.find("allowances")) {
             if (!allowances->is_array()) {
-                f.error("allowances", msg::io::wrongType("an array of grinding-allowance rows", *allowances));
+                f.error("allowances",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of grinding-allowance rows"),
+                                           *allowances));
             } else {
                 for (std::size_t i = 0; i < allowances->size(); ++i) {
                     const std::string prefix = fmt::format("allowances[{}].", i + 1);
                     if (!(*allowances)[i].is_object()) {
-                        f.error(prefix.substr(0, prefix.size() - 1), msg::io::wrongType("an object", (*allowances)[i]));
+                        f.error(prefix.substr(0, prefix.size() - 1),
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*allowances)[i]));
                         continue;
                     }
                     const io::ObjectFields a = f.nested((*allowances)[i], prefix);
-                    a.rejectUnknown("a grinding-allowance row", kAllowanceKeys);
+                    a.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a grinding-allowance row"), kAllowanceKeys);
                     AllowanceRow row;
                     row.edge = a.string("edge").value_or("");
                     row.allowance = a.number("allowance").value_or(0.0);
@@ -187,11 +194,14 @@ protected:
         t.tools = f.wholeMap("tools");
         if (const auto* skip = f.find("skip")) {
             if (!skip->is_array()) {
-                f.error("skip", msg::io::wrongType("an array of step names", *skip));
+                f.error("skip",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of step names"), *skip));
             } else {
                 for (std::size_t i = 0; i < skip->size(); ++i) {
                     if ((*skip)[i].is_string()) t.skip.push_back((*skip)[i].get<std::string>());
-                    else f.error(fmt::format("skip[{}]", i + 1), msg::io::wrongType("a step name", (*skip)[i]));
+                    else
+                        f.error(fmt::format("skip[{}]", i + 1),
+                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a step name"), (*skip)[i]));
                 }
             }
         }
@@ -252,21 +262,30 @@ protected:
         if (t.profile.rows.size() > kMaxRows || t.profile.allowances.size() > kMaxAllowances) {
             const bool rows = t.profile.rows.size() > kMaxRows;
             add({rows ? "rows" : "allowances",
-                 fmt::format("the {} has {} rows; a turned profile has at most {} (split the part into several units)",
-                             rows ? "profile table" : "grinding-allowance table",
-                             rows ? t.profile.rows.size() : t.profile.allowances.size(), rows ? kMaxRows : kMaxAllowances)});
+                 fmt::format(
+                     TAIWA_TRANSLATE_NOOP(
+                         "taiwa::msg",
+                         "the {} has {} rows; a turned profile has at most {} (split the part into several units)"),
+                     rows ? "profile table" : "grinding-allowance table",
+                     rows ? t.profile.rows.size() : t.profile.allowances.size(), rows ? kMaxRows : kMaxAllowances)});
             return report;
         }
         const auto& keys = turnStepKeys();
         const std::string known = fmt::format("{}", fmt::join(keys, ", "));
         for (std::size_t i = 0; i < t.skip.size(); ++i)
             if (std::find(keys.begin(), keys.end(), t.skip[i]) == keys.end())
-                add({fmt::format("skip[{}]", i + 1), fmt::format("\"{}\" is not a turning step; steps are {}", t.skip[i], known)});
+                add({fmt::format("skip[{}]", i + 1),
+                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "\"{}\" is not a turning step; steps are {}"),
+                                 t.skip[i], known)});
         for (const auto& [key, id] : t.tools) {
             if (std::find(keys.begin(), keys.end(), key) == keys.end())
-                add({"tools." + key, fmt::format("\"{}\" is not a turning step; tools can be pinned for {}", key, known)});
+                add({"tools." + key,
+                     fmt::format(
+                         TAIWA_TRANSLATE_NOOP("taiwa::msg", "\"{}\" is not a turning step; tools can be pinned for {}"),
+                         key, known)});
             else if (ctx.library && !findTool(*ctx.library, id))
-                add({"tools." + key, fmt::format("tool T{} is not in the tool library", id)});
+                add({"tools." + key,
+                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool T{} is not in the tool library"), id)});
         }
         const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
         for (const auto& p : r.problems) add(p);
@@ -375,25 +394,39 @@ private:
             const ThreadSpec& th = *row.attributes.thread;
             const auto len = [&](double mm) { return msg::quote({mm, shown}); };
             if (p.side == ProfileSide::Inner) {
-                add({field, fmt::format("{} is on an inner profile: internal threads are not cut yet (only external ones)", id)});
+                add({field, fmt::format(
+                                TAIWA_TRANSLATE_NOOP(
+                                    "taiwa::msg",
+                                    "{} is on an inner profile: internal threads are not cut yet (only external ones)"),
+                                id)});
                 continue;
             }
             const Edge* e = resolved.find(id);
             if (!e) continue;
             if (row.kind != ElementKind::Line || e->geometry.arc) {
-                add({field, fmt::format("{} is an arc: a thread is cut on a straight row along the axis", id)});
+                add({field,
+                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                      "{} is an arc: a thread is cut on a straight row along the axis"),
+                                 id)});
                 continue;
             }
             if (std::abs(e->geometry.a.r - e->geometry.b.r) > 1e-6 || e->geometry.b.z >= e->geometry.a.z) {
-                add({field, fmt::format("{} is not a cylinder cut toward the chuck (a taper or a face): a thread is cut on a straight "
-                                        "row along the axis, from the front back",
-                                        id)});
+                add({field,
+                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not a cylinder cut toward the chuck (a "
+                                                                    "taper or a face): a thread is cut on a straight "
+                                                                    "row along the axis, from the front back"),
+                                 id)});
                 continue;
             }
             for (const auto& a : p.allowances)
-                if (a.edge == id) add({field, fmt::format("{} has a grinding allowance: a thread is not ground", id)});
+                if (a.edge == id)
+                    add({field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                 "{} has a grinding allowance: a thread is not ground"),
+                                            id)});
             if (th.pitch < kMinThreadPitch || th.pitch > kMaxThreadPitch) {
-                add({field + ".pitch", fmt::format("a pitch of {} is out of range: {} to {}", len(th.pitch), len(kMinThreadPitch), len(kMaxThreadPitch))});
+                add({field + ".pitch",
+                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a pitch of {} is out of range: {} to {}"),
+                                 len(th.pitch), len(kMinThreadPitch), len(kMaxThreadPitch))});
                 continue;
             }
             const double depth = row.attributes.threadDepth(), diameter = 2.0 * e->geometry.a.r;
@@ -401,9 +434,13 @@ private:
             // keeps at least half the row's diameter.
             const double deepest = std::min(0.866 * th.pitch, diameter / 4.0);
             if (!(depth > 0.0) || depth > deepest + 1e-9) {
-                add({field + ".depth", fmt::format("a thread {} deep does not fit Ø{} with pitch {}: at most {} (the sharp V's height, and "
-                                                   "a core of half the diameter)",
-                                                   len(depth), len(diameter), len(th.pitch), len(deepest))});
+                add({field + ".depth",
+                     fmt::format(
+                         TAIWA_TRANSLATE_NOOP(
+                             "taiwa::msg",
+                             "a thread {} deep does not fit Ø{} with pitch {}: at most {} (the sharp V's height, and "
+                             "a core of half the diameter)"),
+                         len(depth), len(diameter), len(th.pitch), len(deepest))});
                 continue;
             }
             if (library) {
@@ -412,7 +449,11 @@ private:
                     tool = tool || (t.type == ToolType::Threading && !t.turning.inside && th.pitch >= t.turning.pitchMin - 1e-9 &&
                                     th.pitch <= t.turning.pitchMax + 1e-9);
                 if (!tool)
-                    add({field + ".pitch", fmt::format("no external threading insert of the tool library cuts a pitch of {}", len(th.pitch))});
+                    add({field + ".pitch",
+                         fmt::format(
+                             TAIWA_TRANSLATE_NOOP(
+                                 "taiwa::msg", "no external threading insert of the tool library cuts a pitch of {}"),
+                             len(th.pitch))});
             }
         }
     }
@@ -436,14 +477,22 @@ private:
             }
         }
         if (2.0 * rMax > bar.diameter + 1e-9)
-            report("rows", fmt::format("the profile{} reaches Ø{}, more than the bar's Ø{}",
-                                       p.allowances.empty() ? "" : " with its grinding allowances", len(2.0 * rMax),
-                                       len(bar.diameter)));
+            report("rows", p.allowances.empty()
+                               ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                  "the profile reaches Ø{}, more than the bar's Ø{}"),
+                                             len(2.0 * rMax), len(bar.diameter))
+                               : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                  "the profile with its grinding allowances reaches "
+                                                                  "Ø{}, more than the bar's Ø{}"),
+                                             len(2.0 * rMax), len(bar.diameter)));
         if (zMax > bar.face + 1e-9)
-            report("rows", fmt::format("the profile reaches Z{}, beyond the bar's face stock (Z{})", len(zMax), len(bar.face)));
+            report("rows", fmt::format(TAIWA_TRANSLATE_NOOP(
+                                           "taiwa::msg", "the profile reaches Z{}, beyond the bar's face stock (Z{})"),
+                                       len(zMax), len(bar.face)));
         if (zMin < bar.face - bar.length - 1e-9)
-            report("rows", fmt::format("the profile reaches Z{}, beyond the bar's end (Z{})", len(zMin),
-                                       len(bar.face - bar.length)));
+            report("rows", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                            "the profile reaches Z{}, beyond the bar's end (Z{})"),
+                                       len(zMin), len(bar.face - bar.length)));
     }
 };
 

@@ -1,0 +1,202 @@
+// The station in Japanese and Chinese beyond its own texts: the core's
+// messages (found from their English by their templates, translated, their
+// arguments put back), tool names and kinds, the module drawings' labels and
+// Qt's standard buttons; a check message typed into being in a Japanese form.
+#include "check/messages.h"
+#include "support/gui_fields.h"
+#include "support/support.h"
+#include "ui/core_messages.h"
+#include "ui/language.h"
+#include "ui/station_window.h"
+
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFile>
+#include <QHash>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTranslator>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+namespace {
+
+// The station's translators for `language` ("en": none), in place of those installed before.
+void speak(const char* language)
+{
+    for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
+        QCoreApplication::removeTranslator(t);
+        delete t;
+    }
+    qputenv("TAIWA_LANG", language);
+    installTranslator(*QCoreApplication::instance());
+}
+
+// The message of a line of tests/data/bad-jobs/*.expected, without the file, unit and field before it.
+QString messageOf(const QString& line)
+{
+    static const QRegularExpression prefix(
+        QStringLiteral(R"(^[^:]+\.taiwa: (?:unit \d+ \([^)]*\) \S+: |job \S+: )?)"));
+    QString m = line;
+    return m.remove(prefix);
+}
+
+} // namespace
+
+class TestGuiLanguages : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+  private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        test::isolateStation(dir_.path());
+    }
+    void cleanup() { speak("en"); }
+
+    // The matching alone, on a made-up catalogue: the template with the most
+    // words wins, the translation may put the arguments in another order
+    // ({1} {0}), arguments that are words or messages (a tool's name) are
+    // translated in turn, and a message no template made stays as it is.
+    void templatesAreMatchedAndArgumentsTranslated()
+    {
+        const QStringList sources{"{}: {}",
+                                  "{} is {}; it must be greater than zero",
+                                  "the depth is {}; it must be greater than zero (measured down from the top face)",
+                                  "the {} tool {} is too big for {} = {}; {}",
+                                  "T{} ({} Ø{} mm)",
+                                  "{} would fit"};
+        const QHash<QString, QString> ja{
+            {"{}: {}", "{}：{}"},
+            {"{} is {}; it must be greater than zero", "{}が{}です"},
+            {"the depth is {}; it must be greater than zero (measured down from the top face)", "深さが {} です"},
+            {"the {} tool {} is too big for {} = {}; {}", "{2} = {3} に対して{0}の工具 {1} は大きすぎます。{4}"},
+            {"T{} ({} Ø{} mm)", "T{} ({} Ø{} mm)"},
+            {"{} would fit", "{} なら入ります"},
+            {"flat end mill", "フラットエンドミル"},
+            {"roughing", "荒加工"}};
+        const auto tr = [&ja](const QString& s) { return ja.value(s, s); };
+        QCOMPARE(translateMessage("the depth is 0 mm; it must be greater than zero (measured down from the top face)",
+                                  sources, tr),
+                 QString("深さが 0 mm です"));
+        QCOMPARE(translateMessage("L1 is -2 mm; it must be greater than zero", sources, tr), QString("L1が-2 mmです"));
+        QCOMPARE(translateMessage("the roughing tool T3 (flat end mill Ø10 mm) is too big for r1 = 2 mm; "
+                                  "T4 (flat end mill Ø4 mm) would fit",
+                                  sources, tr),
+                 QString("r1 = 2 mm に対して荒加工の工具 T3 (フラットエンドミル Ø10 mm) は大きすぎます。"
+                         "T4 (フラットエンドミル Ø4 mm) なら入ります"));
+        QCOMPARE(translateMessage("roughing: T3 (flat end mill Ø10 mm)", sources, tr),
+                 QString("荒加工：T3 (フラットエンドミル Ø10 mm)"));
+        QCOMPARE(translateMessage("the file is empty", sources, tr), QString("the file is empty"));
+    }
+
+    // With the real catalogues: a message of the core's own making, in each language.
+    void coreMessagesInJapaneseAndChinese()
+    {
+        const std::string depth = msg::depthNotPositive({0.0, LengthUnit::Millimetre});
+        QCOMPARE(coreMessage(depth), QString::fromStdString(depth)); // English: as the core wrote it
+        speak("ja");
+        QCOMPARE(coreMessage(depth), QString("深さが 0 mm です。0 より大きくしてください (上面から下へ測ります)"));
+        QCOMPARE(coreMessage(msg::contourOpen("K2", "pocket", "outline")),
+                 QString("K2 は開いた輪郭です。ポケットの外形は閉じていなければなりません (始点と終点のない輪郭)"));
+        // A verification finding: its step's label, place and kind each translated.
+        QCOMPARE(coreMessage("step 2 (Roughing I, unit 1): rapid (G0) 1.000 mm into stock at X1.000 Y2.000 Z3.000, move 4, "
+                             "tape line 20"),
+                 QString("工程 2 (荒加工 I、ユニット 1): X1.000 Y2.000 Z3.000 で早送り (G0) が素材に 1.000 mm 入ります、"
+                         "移動 4、テープ 20 行目"));
+        speak("zh");
+        QCOMPARE(coreMessage(depth), QString("深度为 0 mm；必须大于零（自顶面向下测量）"));
+    }
+
+    // Every message the bad jobs of tests/data/bad-jobs draw from the
+    // reader and the checks is one the station shows translated.
+    void everyBadJobMessageIsTranslated()
+    {
+        QStringList messages;
+        for (const QString& name : QDir(test::sourcePath("tests/data/bad-jobs")).entryList({"*.expected"})) {
+            const QString text =
+                QString::fromStdString(test::readFile(test::sourcePath("tests/data/bad-jobs/" + name)));
+            for (const QString& line : text.split('\n', Qt::SkipEmptyParts))
+                messages << messageOf(line);
+        }
+        QVERIFY(messages.size() > 50);
+        for (const char* language : {"ja", "zh"}) {
+            speak(language);
+            QStringList untranslated;
+            for (const QString& m : messages)
+                if (coreMessage(m.toStdString()) == m)
+                    untranslated << m;
+            for (const QString& m : untranslated) qWarning("%s: %s", language, qPrintable(m));
+            QVERIFY2(untranslated.isEmpty(), qPrintable(QString("%1: %2 untranslated").arg(language).arg(untranslated.size())));
+        }
+    }
+
+    // Tools by their names and kinds as the step list and the tool library show them.
+    void toolNamesAndKinds()
+    {
+        Tool t;
+        t.id = 12;
+        t.type = ToolType::FlatEndMill;
+        t.diameter = 6.0;
+        QCOMPARE(toolName(t), QString("T12 (flat end mill Ø6 mm)"));
+        speak("ja");
+        QCOMPARE(toolName(t), QString("T12 (フラットエンドミル Ø6 mm)"));
+        QCOMPARE(toolKind(ToolType::TaperEndMill), QString("テーパエンドミル"));
+        t.type = ToolType::TaperEndMill;
+        t.taperAngle = 5.0;
+        QCOMPARE(toolName(t), QString("T12 (テーパエンドミル Ø6 mm, 片側 5°)"));
+        speak("zh");
+        QCOMPARE(toolKind(ToolType::Drill), QString("钻头"));
+    }
+
+    // A drawing's labels in the station's language, its symbols as drawn.
+    void drawingLabels()
+    {
+        QFile file(":/modules/m4.svg");
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray svg = file.readAll();
+        QCOMPARE(translatedDrawing(svg), svg);
+        speak("ja");
+        const QString ja = QString::fromUtf8(translatedDrawing(svg));
+        QVERIFY2(ja.contains(">M4 – 上面図</text>") && ja.contains(">断面</text>") &&
+                     ja.contains(">P1…P4 の X, Y</text>"),
+                 qPrintable(ja));
+        QVERIFY(!ja.contains("top view"));
+        QVERIFY(ja.contains(R"(id="sym-P1" x="10" y="188">P1</text>)"));
+    }
+
+    // Qt's own buttons come from Qt's translations (qt6-translations-l10n).
+    void standardButtons()
+    {
+        for (const auto& [language, cancel] : {std::pair{"ja", "キャンセル"}, std::pair{"zh", "取消"}}) {
+            speak(language);
+            QDialogButtonBox box(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+            QCOMPARE(box.button(QDialogButtonBox::Cancel)->text(), QString::fromUtf8(cancel));
+        }
+    }
+
+    // The operator types a depth of 0 in a Japanese station: the form says
+    // why in Japanese, with the 0 in its sentence.
+    void checkMessageInTheJapaneseForm()
+    {
+        speak("ja");
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QLineEdit* depth = test::GuiFields::edit(w, "m4.depth");
+        QVERIFY(depth);
+        test::GuiFields::retype(depth, "0");
+        QLabel* message = test::GuiFields::label(w, "m4.depth");
+        QTRY_VERIFY(message->isVisible());
+        QCOMPARE(message->text(), QString("深さが 0 mm です。0 より大きくしてください (上面から下へ測ります)"));
+    }
+};
+
+QTEST_MAIN(TestGuiLanguages)
+#include "test_gui_languages.moc"

@@ -1,0 +1,209 @@
+// The core's messages in the station's language (core_messages.h): the
+// English message matched against the templates of the catalogue, the
+// template translated, the arguments put back in.
+#include "ui/core_messages.h"
+
+#include "check/messages.h"
+#include "ui/language.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QHash>
+#include <QRegularExpression>
+#include <QXmlStreamReader>
+
+#include <algorithm>
+#include <vector>
+
+namespace taiwa::ui {
+
+namespace {
+
+constexpr const char* kContext = "taiwa::msg";
+// A deeper message in an argument (a tool's name in a refusal in a "step: why") is translated too, so far down.
+constexpr int kMaxDepth = 3;
+
+// One of fmt's replacement fields: "{}", "{:g}", "{0}".
+const QRegularExpression& placeholder()
+{
+    static const QRegularExpression re(QStringLiteral(R"(\{[^{}]*\})"));
+    return re;
+}
+
+struct Template {
+    QString source;
+    QRegularExpression pattern; // the English message, its arguments captured
+    int literal = 0;            // characters outside the placeholders: the more, the more specific
+    QString longest;            // its longest run of text, looked for before the expression is tried
+};
+
+Template compile(const QString& source)
+{
+    Template t{source, {}, 0, {}};
+    QString pattern = QStringLiteral("^");
+    qsizetype at = 0;
+    const auto literal = [&](const QString& text) {
+        pattern += QRegularExpression::escape(text);
+        t.literal += static_cast<int>(text.size());
+        if (text.size() > t.longest.size())
+            t.longest = text;
+    };
+    for (auto it = placeholder().globalMatch(source); it.hasNext();) {
+        const auto m = it.next();
+        literal(source.mid(at, m.capturedStart() - at));
+        pattern += QStringLiteral("(.*?)");
+        at = m.capturedEnd();
+    }
+    literal(source.mid(at));
+    t.pattern = QRegularExpression(pattern + QStringLiteral("$"), QRegularExpression::DotMatchesEverythingOption);
+    return t;
+}
+
+// The templates of `sources` that have arguments, the most specific first; compiled once for a list.
+const std::vector<Template>& compiled(const QStringList& sources)
+{
+    static QStringList last;
+    static std::vector<Template> templates;
+    if (sources != last || (templates.empty() && !sources.isEmpty())) {
+        last = sources;
+        templates.clear();
+        for (const QString& s : sources)
+            if (placeholder().match(s).hasMatch())
+                templates.push_back(compile(s));
+        std::stable_sort(templates.begin(), templates.end(),
+                         [](const Template& a, const Template& b) { return a.literal > b.literal; });
+    }
+    return templates;
+}
+
+// The translated template with the arguments in: "{}" takes the next one, "{N}" the N-th (from 0).
+QString substitute(const QString& translated, const QStringList& args)
+{
+    QString out;
+    qsizetype at = 0;
+    int next = 0;
+    for (auto it = placeholder().globalMatch(translated); it.hasNext();) {
+        const auto m = it.next();
+        out += translated.mid(at, m.capturedStart() - at);
+        const QString inside = m.captured().mid(1, m.capturedLength() - 2);
+        bool indexed = false;
+        const int index = inside.toInt(&indexed);
+        const int i = indexed ? index : next++;
+        out += i >= 0 && i < args.size() ? args[i] : m.captured();
+        at = m.capturedEnd();
+    }
+    return out + translated.mid(at);
+}
+
+QString translateText(const QString& text, const QStringList& sources,
+                      const std::function<QString(const QString&)>& translate, int depth)
+{
+    if (text.isEmpty())
+        return text;
+    if (const QString whole = translate(text); whole != text)
+        return whole;
+    for (const Template& t : compiled(sources)) {
+        if (!text.contains(t.longest))
+            continue;
+        const auto m = t.pattern.match(text);
+        if (!m.hasMatch())
+            continue;
+        // A translation the same as its source ("T{} ({} Ø{} mm)") is one too: its arguments may be words.
+        const QString translated = translate(t.source);
+        QStringList args;
+        for (int i = 1; i <= m.lastCapturedIndex(); ++i)
+            args << (depth < kMaxDepth ? translateText(m.captured(i), sources, translate, depth + 1) : m.captured(i));
+        return substitute(translated, args);
+    }
+    return text;
+}
+
+QString translateWord(const QString& text)
+{
+    const QByteArray source = text.toUtf8();
+    const QString msg = QCoreApplication::translate(kContext, source.constData());
+    if (msg != text)
+        return msg;
+    const QString word = QCoreApplication::translate("taiwa::CoreTexts", source.constData());
+    if (word != text) return word;
+    // A step's label ("Roughing II"): its kind translated, its number as it is (ui/core_texts.h).
+    static const QRegularExpression label(QStringLiteral("^(.+) ([IVXLC]+)$"));
+    if (const auto m = label.match(text); m.hasMatch())
+        if (const QString kind = translateWord(m.captured(1)); kind != m.captured(1)) return kind + " " + m.captured(2);
+    return text;
+}
+
+} // namespace
+
+QString translateMessage(const QString& english, const QStringList& sources,
+                         const std::function<QString(const QString&)>& translate)
+{
+    return translateText(english, sources, translate, 0);
+}
+
+const QStringList& messageSources()
+{
+    static QString language;
+    static QStringList sources;
+    if (installedLanguage() == language)
+        return sources;
+    language = installedLanguage();
+    sources.clear();
+    QFile file(QStringLiteral(":/i18n/taiwa_%1.ts").arg(language));
+    if (language.isEmpty() || !file.open(QIODevice::ReadOnly))
+        return sources;
+    QXmlStreamReader xml(&file);
+    QString context;
+    while (!xml.atEnd()) {
+        if (!xml.readNextStartElement())
+            continue;
+        if (xml.name() == QLatin1String("name"))
+            context = xml.readElementText();
+        else if (xml.name() == QLatin1String("source") && context == QLatin1String(kContext))
+            sources << xml.readElementText();
+    }
+    return sources;
+}
+
+QString coreMessage(const std::string& english)
+{
+    const QString text = QString::fromStdString(english);
+    if (messageSources().isEmpty())
+        return text;
+    return translateMessage(text, messageSources(), translateWord);
+}
+
+QString toolName(const Tool& tool)
+{
+    return coreMessage(msg::toolName(tool));
+}
+
+QString toolKind(ToolType type)
+{
+    return coreMessage(toString(type));
+}
+
+QByteArray translatedDrawing(const QByteArray& svg)
+{
+    // Each label is the whole text of a <text> element; symbols (P1, r1, T) have no word to translate.
+    static const QRegularExpression label(QStringLiteral(R"((<text\b[^>]*>)([^<]*)(</text>))"));
+    static const QRegularExpression word(QStringLiteral("[A-Za-z]{2}"));
+    const QString in = QString::fromUtf8(svg);
+    QString out;
+    qsizetype at = 0;
+    for (auto it = label.globalMatch(in); it.hasNext();) {
+        const auto m = it.next();
+        out += in.mid(at, m.capturedStart(2) - at);
+        QString text = m.captured(2).trimmed();
+        text.replace(QLatin1String("&lt;"), QLatin1String("<")).replace(QLatin1String("&gt;"), QLatin1String(">"));
+        text.replace(QLatin1String("&apos;"), QLatin1String("'")).replace(QLatin1String("&quot;"), QLatin1String("\""));
+        text.replace(QLatin1String("&amp;"), QLatin1String("&"));
+        out += word.match(text).hasMatch()
+                   ? QCoreApplication::translate("taiwa::Drawing", text.toUtf8().constData()).toHtmlEscaped()
+                   : m.captured(2);
+        at = m.capturedEnd(2);
+    }
+    return (out + in.mid(at)).toUtf8();
+}
+
+} // namespace taiwa::ui
