@@ -246,10 +246,10 @@ private:
             }
             layout.endLayout();
             f.glyphs = layout.glyphRuns();
-            f.ascent = height;  // here: the text's height
+            f.height = height;
             it = laid.emplace(text, std::move(f)).first;
         }
-        const QPointF at(cell.left(), cell.center().y() - it->second.ascent / 2);
+        const QPointF at(cell.left(), cell.center().y() - it->second.height / 2);
         for (const QGlyphRun& run : it->second.glyphs) p_.drawGlyphRun(at, run);
     }
     QString elide(const QString& s, double width) const
@@ -279,8 +279,9 @@ private:
     QFont normal_, bold_, title_;
     QFontMetricsF normalMetrics_{QFont()};
     struct Fitted {
-        QList<QGlyphRun> glyphs;  // the elided text, shaped
-        double advance = 0, ascent = 0;
+        QList<QGlyphRun> glyphs;  // the text (body cells: elided), shaped
+        double advance = 0, ascent = 0;  // body cells: one line
+        double height = 0;               // header cells: every wrapped line
     };
     std::map<double, std::unordered_map<std::string, Fitted>> fitted_;   // by column width
     std::map<double, std::unordered_map<std::string, Fitted>> headers_;  // the same for header cells
