@@ -47,12 +47,12 @@ std::string setupPng()
     return bytes.toStdString();
 }
 
-// The sheet's pages as pictures (pdftoppm at 50 dpi).
-std::vector<QImage> pages(const QString& pdf)
+// The sheet's pages as pictures (pdftoppm, 50 dpi unless told).
+std::vector<QImage> pages(const QString& pdf, int dpi = 50)
 {
     QTemporaryDir dir;
     QProcess p;
-    p.start("pdftoppm", {"-r", "50", "-png", pdf, dir.filePath("page")});
+    p.start("pdftoppm", {"-r", QString::number(dpi), "-png", pdf, dir.filePath("page")});
     p.waitForFinished();
     std::vector<QImage> out;
     for (const QString& f : QDir(dir.path()).entryList({"page*.png"}, QDir::Files, QDir::Name))
@@ -317,14 +317,55 @@ private slots:
         QProcess info;
         info.start("pdfinfo", {pdf});
         QVERIFY(info.waitForFinished());
-        const auto pages = QRegularExpression("Pages:\\s+(\\d+)").match(QString::fromUtf8(info.readAllStandardOutput()));
-        QVERIFY(pages.hasMatch() && pages.captured(1).toInt() >= 2);
-        for (int page = 1; page <= pages.captured(1).toInt(); ++page) {
+        const auto count = QRegularExpression("Pages:\\s+(\\d+)").match(QString::fromUtf8(info.readAllStandardOutput()));
+        QVERIFY(count.hasMatch() && count.captured(1).toInt() >= 2);
+        for (int page = 1; page <= count.captured(1).toInt(); ++page) {
             QProcess text;
             text.start("pdftotext", {"-f", QString::number(page), "-l", QString::number(page), pdf, "-"});
             QVERIFY(text.waitForFinished());
             const QString words = QString::fromUtf8(text.readAllStandardOutput());
             QVERIFY2(words.contains("S rpm") && words.contains(QString("page %1").arg(page)), qPrintable(words.left(300)));
+        }
+        // Every page's table is ruled: a line under every row, and the table's
+        // left and right rules run unbroken from the header to the last row
+        // (the body's rules are drawn once per page, not cell by cell).
+        const std::vector<QImage> shown = pages(pdf, 100);
+        if (shown.empty()) QSKIP("pdftoppm is not installed");
+        for (std::size_t page = 0; page < shown.size(); ++page) {
+            const QImage& im = shown[page];
+            const auto dark = [&](int x, int y) { return qGray(im.pixel(x, y)) < 160; };
+            // Horizontal rules: rows dark over most of the page's width.
+            std::vector<int> rules;
+            for (int y = 0; y < im.height(); ++y) {
+                int n = 0;
+                for (int x = 0; x < im.width(); ++x) n += dark(x, y);
+                if (n > im.width() * 3 / 4 && (rules.empty() || y > rules.back() + 1)) rules.push_back(y);
+            }
+            QProcess text;
+            text.start("pdftotext", {"-layout", "-f", QString::number(page + 1), "-l", QString::number(page + 1), pdf, "-"});
+            QVERIFY(text.waitForFinished());
+            const auto rows = QString::fromUtf8(text.readAllStandardOutput())
+                                  .split('\n')
+                                  .filter(QRegularExpression("^\\s*\\d+\\s+\\d")).size();
+            QVERIFY2(rows > 0 && static_cast<int>(rules.size()) >= rows + 1,
+                     qPrintable(QString("page %1: %2 step rows, %3 rules").arg(page + 1).arg(rows).arg(rules.size())));
+            // The outer rules: on a page the steps fill (all but the last), a
+            // column dark from the first horizontal rule to the last.
+            if (page + 1 == shown.size()) continue;
+            const std::size_t last = rules.size() - 1;
+            const auto unbroken = [&](int x) {
+                for (int y = rules.front(); y <= rules[last]; ++y)
+                    if (!dark(x, y) && !(x > 0 && dark(x - 1, y)) && !(x + 1 < im.width() && dark(x + 1, y))) return false;
+                return true;
+            };
+            int left = -1, right = -1;
+            for (int x = 0; x < im.width() && left < 0; ++x)
+                if (unbroken(x)) left = x;
+            for (int x = im.width() - 1; x >= 0 && right < 0; --x)
+                if (unbroken(x)) right = x;
+            QVERIFY2(left >= 0 && right - left > im.width() / 2,
+                     qPrintable(QString("page %1: outer rules at %2 and %3 between y %4 and %5")
+                                    .arg(page + 1).arg(left).arg(right).arg(rules.front()).arg(rules[last])));
         }
     }
 };

@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 namespace taiwa {
@@ -85,31 +86,49 @@ public:
         std::vector<double> x{0};
         for (const double w : t.widths) x.push_back(x.back() + w / total * area_.width());
         // The header takes two lines, so that "Depth mm" wraps instead of being elided.
-        const auto row = [&](const std::vector<std::string>& cells, bool header) {
-            const double h = header ? 2 * line_ : line_;
-            if (header) p_.fillRect(QRectF(0, y_, area_.width(), h), QColor(221, 221, 221));
-            p_.setFont(header ? bold_ : normal_);
-            for (std::size_t i = 0; i < cells.size(); ++i) {
+        // A header is drawn cell by cell; a body row as one line under it and
+        // one glyph run per font, and the columns' rules once per page from
+        // the header down (a 10,000-unit sheet has 1,000 pages of rows).
+        double top = y_;
+        const auto rules = [&] {
+            for (const double at : x) p_.drawLine(QPointF(at, top), QPointF(at, y_));
+        };
+        const auto header = [&] {
+            const double h = 2 * line_;
+            p_.fillRect(QRectF(0, y_, area_.width(), h), QColor(221, 221, 221));
+            p_.setFont(bold_);
+            for (std::size_t i = 0; i < t.headers.size(); ++i) {
                 const QRectF cell(x[i], y_, x[i + 1] - x[i], h);
                 p_.drawRect(cell);
-                const QRectF text = cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0);
-                if (header) {
-                    headerText(text, cells[i]);
-                } else {
-                    cellText(text, cells[i], t.numeric[i]);
-                }
+                headerText(cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0), t.headers[i]);
             }
             p_.setFont(normal_);
             y_ += h;
+            top = y_;
         };
-        row(t.headers, true);
+        header();
         for (const auto& r : t.rows) {
             if (y_ + line_ > area_.height() - line_) {  // the header repeated on the next page
+                rules();
                 newPage();
-                row(t.headers, true);
+                header();
             }
-            row(r, false);
+            Row row;
+            for (std::size_t i = 0; i < r.size(); ++i) {
+                const QRectF cell(x[i], y_, x[i + 1] - x[i], line_);
+                cellText(row, cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0), r[i], t.numeric[i]);
+            }
+            for (auto& [font, run] : row) {
+                QGlyphRun glyphs;
+                glyphs.setRawFont(font);
+                glyphs.setGlyphIndexes(run.first);
+                glyphs.setPositions(run.second);
+                p_.drawGlyphRun(QPointF(0, 0), glyphs);
+            }
+            y_ += line_;
+            p_.drawLine(QPointF(0, y_), QPointF(area_.width(), y_));
         }
+        rules();
     }
 
     void paragraph(const std::string& text, const QColor& colour = Qt::black)
@@ -199,12 +218,22 @@ private:
         p_.restore();
     }
 
+    // A row's glyphs, gathered by font: indexes and positions on the page,
+    // drawn as one run per font (one PDF text object a row, not one a cell).
+    struct RawFontLess {
+        bool operator()(const QRawFont& a, const QRawFont& b) const
+        {
+            return std::tuple(a.familyName(), a.styleName(), a.pixelSize()) <
+                   std::tuple(b.familyName(), b.styleName(), b.pixelSize());
+        }
+    };
+    using Row = std::map<QRawFont, std::pair<QList<quint32>, QList<QPointF>>, RawFontLess>;
     // A body cell's text, elided to the cell and aligned right (numbers) or
-    // left, on the cell's middle line. Cells repeat (modules, tools, labels,
-    // numbers): each text is elided, shaped and measured once per column
-    // width and drawn from its glyphs (laying a text out in a rectangle,
+    // left, on the cell's middle line, added to its row. Cells repeat
+    // (modules, tools, labels, numbers): each text is elided, shaped and
+    // measured once per column width (laying a text out in a rectangle,
     // then shaping it, were most of a 150-page sheet's time).
-    void cellText(const QRectF& cell, const std::string& text, bool right)
+    void cellText(Row& row, const QRectF& cell, const std::string& text, bool right)
     {
         auto& fitted = fitted_[cell.width()];
         auto it = fitted.find(text);
@@ -222,7 +251,12 @@ private:
         const Fitted& f = it->second;
         const double x = right ? cell.right() - f.advance : cell.left();
         const double baseline = cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
-        for (const QGlyphRun& run : f.glyphs) p_.drawGlyphRun(QPointF(x, baseline - f.ascent), run);
+        const QPointF at(x, baseline - f.ascent);
+        for (const QGlyphRun& run : f.glyphs) {
+            auto& [indexes, positions] = row[run.rawFont()];
+            indexes += run.glyphIndexes();
+            for (const QPointF& p : run.positions()) positions.push_back(p + at);
+        }
     }
     // A header cell's text, wrapped in the cell and centred on its height,
     // in bold: laid out once per text and column width, drawn from its
