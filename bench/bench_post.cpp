@@ -4,6 +4,7 @@
 // dialects in mm and in inch. Reports blocks and MB of G-code written per
 // second (the tape and its tape image list); the path generator is not
 // involved. The anchor: a plain to_chars loop writing lines like the tape's.
+#include "bench_anchor.h"
 #include "post/post.h"
 
 #include <benchmark/benchmark.h>
@@ -92,43 +93,16 @@ void BM_Post(benchmark::State& state, const char* dialect, LengthUnit units)
     state.counters["MB/s"] = benchmark::Counter(static_cast<double>(bytes) / 1e6, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// The anchor: lines like the tape's ("G1 X.. Y.. Z.. F.."), formatted from
-// scaled integers with std::to_chars into one growing buffer, nothing else:
-// the bound for a writer that formats each number once. The post-processor's
-// lines/s over this loop's is the ratio the README reports.
+// The anchor (bench_anchor.h): the bound for a writer that formats each
+// number once. The post-processor's lines/s over this loop's is the ratio
+// the README reports.
 void BM_ToCharsAnchor(benchmark::State& state)
 {
     constexpr int kLines = 1'000'000;
     std::size_t bytes = 0;
     for (auto _ : state) {
-        std::string out;
-        out.reserve(kLines * 30);
-        char buf[32];
-        const auto number = [&](long long scaled) {
-            // Three decimals, the point put in, trailing zeros kept: the
-            // cheapest fixed-point text to_chars allows.
-            const bool negative = scaled < 0;
-            const long long n = negative ? -scaled : scaled;
-            auto [end, ec] = std::to_chars(buf, buf + sizeof buf, n / 1000);
-            if (negative) out += '-';
-            out.append(buf, end);
-            out += '.';
-            const long long frac = n % 1000;
-            out += static_cast<char>('0' + frac / 100);
-            out += static_cast<char>('0' + frac / 10 % 10);
-            out += static_cast<char>('0' + frac % 10);
-        };
-        for (int i = 0; i < kLines; ++i) {
-            out += "G1 X";
-            number(12345 + i * 7);
-            out += " Y";
-            number(-6789 + i * 3);
-            out += " Z";
-            number(-2500);
-            out += " F1200\n";
-        }
-        bytes = out.size();
-        benchmark::DoNotOptimize(out.data());
+        bytes = bench::toCharsLines(kLines);
+        benchmark::DoNotOptimize(bytes);
     }
     state.counters["MB"] = static_cast<double>(bytes) / 1e6;
     state.counters["lines/s"] = benchmark::Counter(static_cast<double>(kLines), benchmark::Counter::kIsIterationInvariantRate);

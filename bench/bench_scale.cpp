@@ -7,6 +7,7 @@
 // alone. Prints time per unit and peak memory; time per unit should stay
 // flat (the overlap check and the unit order go through grids). Last, the
 // export of bench/fine-pocket.taiwa (step-over 2 %, step-down 0.2 mm).
+#include "bench_anchor.h"
 #include "bench_child.h"
 #include "bench_job.h"
 
@@ -51,6 +52,13 @@ int main(int argc, char** argv)
         return writeFileAtomically(argv[3], writeJob(bench::bigJob(std::atoi(argv[2])))) ? 0 : 1;
     const std::vector<Tool> library = defaultToolLibrary();
     QTemporaryDir dir;
+    // The machine's speed in this run (bench_anchor.h): the figures below
+    // scale with it from run to run and machine to machine.
+    const auto anchor = [] {
+        std::printf("anchor: a plain to_chars loop writes %.1f M tape-like lines/s\n", bench::toCharsLinesPerSecond() / 1e6);
+        std::fflush(stdout);
+    };
+    anchor();
     for (const int units : {100, 1'000, 10'000, 100'000}) {
         const std::string file = dir.filePath(QString("job-%1.taiwa").arg(units)).toStdString();
         if (!writeFileAtomically(file, writeJob(bench::bigJob(units)))) return 1;
@@ -96,5 +104,6 @@ int main(int argc, char** argv)
         std::fflush(stdout);
         return exportPlan(plan, dir.filePath("fine").toStdString(), "fine-pocket", {}).ok();
     }));
+    anchor();
     return 0;
 }
