@@ -42,7 +42,10 @@ struct Tape {
 Tape exportTape(const QString& job, const QString& dialect, const QString& units)
 {
     QTemporaryDir out;
-    QStringList args{"export", job, "--out", out.path(), "--dialect", dialect};
+    // The tape is what is judged here: the verification on a coarse grid and
+    // no step pictures (both have tests of their own, and at the default
+    // 0.05 mm the contour samples take seconds each).
+    QStringList args{"export", job, "--out", out.path(), "--dialect", dialect, "--resolution", "0.25", "--no-pictures"};
     if (!units.isEmpty()) args << "--units" << units;
     const RunResult r = runTaiwa(args);
     if (r.exitCode != 0) return {{}, "taiwa " + args.join(' ') + " failed: " + r.err};

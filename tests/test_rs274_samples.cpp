@@ -41,7 +41,11 @@ struct Exported {
 Exported exportSample(const QString& job, const QString& units)
 {
     QTemporaryDir out;
-    const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", "linuxcnc", "--units", units});
+    // The tape is what is judged here: the verification on a coarse grid and
+    // no step pictures (both have tests of their own, and at the default
+    // 0.05 mm the contour samples take seconds each).
+    const auto r = runTaiwa({"export", job, "--out", out.path(), "--dialect", "linuxcnc", "--units", units, "--resolution",
+                             "0.25", "--no-pictures"});
     if (r.exitCode != 0) qFatal("export failed: %s", qPrintable(r.err));
     Exported e;
     e.nc = readFile(QDir(out.path()).filePath(QFileInfo(job).completeBaseName() + ".nc"));

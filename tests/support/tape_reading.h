@@ -1,0 +1,184 @@
+// What the tape readers of dialect_reader.h share: the strict reading of
+// lines, words and numbers, the refusal that names a line, and the machine
+// the readers drive (position, feed, tool, step) recording the moves as
+// rs274 reports them. Internal to tests/support (iso_reader.cpp,
+// klartext_reader.cpp).
+#pragma once
+
+#include "support/dialect_reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace taiwa::test::tape {
+
+inline constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+// How far above the last peck's bottom a pecking cycle comes back down in
+// rapid: rs274's G83_RAPID_DELTA, 0.010 inch (0.254 mm). The real controls
+// take it from a machine setting (Haas setting 22, SINUMERIK's anticipation
+// distance, HEIDENHAIN's advanced stop distance), never from the tape, so the
+// readers take LinuxCNC's.
+inline double peckReturn(bool inches) { return inches ? 0.010 : 0.254; }
+
+struct Refusal {
+    std::string what;
+};
+
+[[noreturn]] inline void refuse(const std::string& what) { throw Refusal{what}; }
+
+// "line 12: why [the line]" (1-based).
+inline std::string lineError(int line, const Refusal& r, const std::vector<std::string>& lines)
+{
+    const std::size_t i = static_cast<std::size_t>(line) - 1;
+    return "line " + std::to_string(line) + ": " + r.what + (i < lines.size() ? " [" + lines[i] + "]" : std::string());
+}
+
+inline std::vector<std::string> splitLines(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::size_t from = 0;
+    while (from < text.size()) {
+        const std::size_t end = text.find('\n', from);
+        if (end == std::string::npos) {
+            lines.push_back(text.substr(from));
+            break;
+        }
+        lines.push_back(text.substr(from, end - from));
+        from = end + 1;
+    }
+    return lines;
+}
+
+inline std::vector<std::string> splitWords(const std::string& s)
+{
+    std::vector<std::string> words;
+    std::istringstream in(s);
+    for (std::string w; in >> w;) words.push_back(w);
+    return words;
+}
+
+inline std::string trim(const std::string& s)
+{
+    const auto b = s.find_first_not_of(' ');
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(' ') - b + 1);
+}
+
+// A decimal number: a sign ('+' only when `plusAllowed`), digits and at most
+// one point; no exponent, no "inf", nothing after it.
+inline std::optional<double> decimal(std::string_view s, bool plusAllowed)
+{
+    std::string_view body = s;
+    if (!body.empty() && (body.front() == '-' || body.front() == '+')) {
+        if (body.front() == '+' && !plusAllowed) return std::nullopt;
+        body.remove_prefix(1);
+    }
+    if (body.empty() || body == ".") return std::nullopt;
+    int points = 0;
+    for (const char c : body) {
+        if (c == '.') ++points;
+        else if (c < '0' || c > '9') return std::nullopt;
+    }
+    if (points > 1) return std::nullopt;
+    const std::string_view digits = s.front() == '+' ? s.substr(1) : s;
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    if (ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+    return v;
+}
+
+// A whole number of digits only (leading zeros allowed: "M06").
+inline std::optional<int> whole(std::string_view s)
+{
+    if (s.empty() || s.size() > 9) return std::nullopt;
+    int v = 0;
+    for (const char c : s) {
+        if (c < '0' || c > '9') return std::nullopt;
+        v = v * 10 + (c - '0');
+    }
+    return v;
+}
+
+inline std::string show(double v)
+{
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+inline bool known(const Point3& p) { return !std::isnan(p.x) && !std::isnan(p.y) && !std::isnan(p.z); }
+
+// The machine the readers drive: the position, feed, tool and step, and the
+// moves as rs274 would report them.
+class Machine {
+public:
+    DialectMoves out;
+    Point3 at{kUnknown, kUnknown, kUnknown};
+    double feed = kUnknown;  // the modal feed rate
+    int tool = 0;
+    int step = 0;
+    int line = 0;
+    bool unitsStated = false;
+
+    void units(bool inches)
+    {
+        if (unitsStated && inches != out.inches) refuse("the units change in the middle of the program");
+        out.inches = inches;
+        unitsStated = true;
+    }
+    void comment(const std::string& text)
+    {
+        static const std::regex stepComment(R"(^\s*STEP (\d+):)", std::regex::icase);
+        std::smatch m;
+        if (std::regex_search(text, m, stepComment)) step = std::stoi(m[1].str());
+    }
+    void traverse(const Point3& to) { record(CanonMove::Traverse, to, 0.0, {}, 0); }
+    void feedTo(const Point3& to, double feedRate)
+    {
+        if (!known(at)) refuse("a feed move from an unknown position");
+        if (!(feedRate > 0)) refuse("a feed move with no feed rate in force");
+        record(CanonMove::Feed, to, feedRate, {}, 0);
+    }
+    void arc(const Point3& to, Point2 centre, int rotation, double feedRate)
+    {
+        if (!known(at)) refuse("an arc from an unknown position");
+        if (!(feedRate > 0)) refuse("an arc with no feed rate in force");
+        // As rs274: the end must lie on the circle through the start.
+        const double r0 = std::hypot(at.x - centre.x, at.y - centre.y);
+        const double r1 = std::hypot(to.x - centre.x, to.y - centre.y);
+        const double tolerance = out.inches ? 0.0005 : 0.005;
+        if (std::abs(r0 - r1) > tolerance)
+            refuse("the arc's end is not on its circle: radius " + show(r0) + " at the start, " + show(r1) + " at the end");
+        if (r0 < tolerance) refuse("an arc of no radius");
+        record(CanonMove::Arc, to, feedRate, centre, rotation);
+    }
+
+private:
+    void record(CanonMove::Kind kind, const Point3& to, double feedRate, Point2 centre, int rotation)
+    {
+        if (!unitsStated) refuse("a move before the units are stated");
+        CanonMove c;
+        c.kind = kind;
+        c.start = at;
+        c.end = to;
+        c.centre = centre;
+        c.rotation = rotation;
+        c.plane = 17;
+        c.feed = kind == CanonMove::Traverse ? 0.0 : feedRate;
+        c.step = step;
+        c.tool = tool;
+        out.moves.push_back(c);
+        out.lines.push_back(line);
+        at = to;
+    }
+};
+
+}  // namespace taiwa::test::tape
