@@ -133,6 +133,30 @@ private slots:
         QVERIFY(std::abs(c.removed[0] - exact) > std::abs(r.removed[0] - exact) - 1e-9);
     }
 
+    // A move cut as 2,000 chords of 0.02 mm removes what the one move
+    // removes, with a flat end mill and with a corner radius (a chord's
+    // start is not visited again within the flat bottom the chord before
+    // cut; skipping out to the corner radius would leave its ring uncut).
+    void shortChordsCutAsOneMove()
+    {
+        for (const double corner : {0.0, 2.0}) {
+            Tool mill = endMill(1, ToolType::FlatEndMill, 10, 25, 45);
+            mill.cornerRadius = corner;  // a bull nose
+            const Plan one = planOf(25, 35, 75, 45, 5, 5, mill, line({30, 40, -5}, {70, 40, -5}));
+            ToolPath chords = line({30, 40, -5}, {70, 40, -5});
+            chords.moves.erase(chords.moves.begin() + 2);  // the move itself, put back in pieces
+            for (int k = 1999; k >= 1; --k)
+                chords.moves.insert(chords.moves.begin() + 2, Move{MoveKind::Feed, {30 + k * 0.02, 40, -5}});
+            chords.moves.insert(chords.moves.begin() + 2 + 1999, Move{MoveKind::Feed, {70, 40, -5}});
+            QCOMPARE(chords.moves.size(), std::size_t{2003});
+            const Plan many = planOf(25, 35, 75, 45, 5, 5, mill, chords);
+            const Report a = verifyPlan(one), b = verifyPlan(many);
+            QVERIFY2(a.findings.empty() && b.findings.empty(), (kinds(a, one) + kinds(b, many)).c_str());
+            QVERIFY2(std::abs(a.removed[0] - b.removed[0]) <= 1e-6 * a.removed[0],
+                     qPrintable(QString("corner %1: one move %2 mm³, chords %3 mm³").arg(corner).arg(a.removed[0]).arg(b.removed[0])));
+        }
+    }
+
     // Two passes of a ball R3 two millimetres apart leave the analytic
     // scallop R - sqrt(R² - (s/2)²) between them.
     void ballLeavesTheScallop()

@@ -22,6 +22,8 @@ public:
     double height(double r) const { return r <= flatUpTo_ ? 0.0 : curvedHeight(r); }
     // The same from the square of the distance (no root on the flat bottom).
     double heightSquared(double r2) const { return r2 <= flatUpTo2_ ? 0.0 : curvedHeight(std::sqrt(r2)); }
+    // The radius of the flat bottom, where height() is 0 (none: -1).
+    double flatRadius() const { return flatUpTo_; }
     // Length of the cutting part above the tip (flute length, or 3 x D when
     // the library does not say).
     double cuttingLength() const { return length_; }

@@ -35,9 +35,14 @@ void forEachLevel(Point3 a, Point3 b, double zStep, Level&& level)
 
 // Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
 // centre lies within `reach` of the segment a -> b, r2 being the square of
-// that distance (a flat end mill needs no root).
+// that distance (a flat end mill needs no root), except the cells whose
+// centre lies within `skipAroundA` of a (none when 0): a caller whose last
+// sweep at the same height ended at a has cut those with the cutter's flat
+// bottom already, and a chain of short moves would otherwise visit a whole
+// disc of cells per move.
 template <class Visit>
-void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int rowMin, int rowMax, Visit&& visit)
+void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int rowMin, int rowMax, Visit&& visit,
+                     double skipAroundA = 0.0)
 {
     const double c = f.cellSize();
     const Stock& s = f.stock();
@@ -91,7 +96,24 @@ void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int
         const int to = std::min(i1, static_cast<int>(std::ceil((hi - s.x) / c - 0.5)));
         const double inverse = len2 > 0 ? 1.0 / len2 : 0.0;
         const double py = y - a.y;
+        // The cells of this row inside the skipped disc: [skipFrom, skipTo],
+        // their centres strictly inside it (by a nanometre, so that rounding
+        // never skips a cell on its rim).
+        int skipFrom = to + 1, skipTo = to;
+        if (skipAroundA > 0.0) {
+            const double inside = skipAroundA - 1e-6;
+            if (py * py < inside * inside) {
+                const double w = std::sqrt(inside * inside - py * py);
+                skipFrom = std::max(from, static_cast<int>(std::ceil((a.x - w - s.x) / c - 0.5)));
+                skipTo = std::min(to, static_cast<int>(std::floor((a.x + w - s.x) / c - 0.5)));
+                if (skipFrom > skipTo) skipFrom = to + 1, skipTo = to;
+            }
+        }
         for (int i = from; i <= to; ++i) {
+            if (i == skipFrom) {
+                i = skipTo;
+                continue;
+            }
             const double px = f.centre(i, j).x - a.x;
             const double t = std::clamp((px * d.x + py * d.y) * inverse, 0.0, 1.0);
             const double qx = px - t * d.x, qy = py - t * d.y;

@@ -252,6 +252,7 @@ private:
         float* h = field_.data();
         const double bottom = field_.bottom();
         std::uint64_t visits = 0;
+        std::optional<Point3> last;  // where the last straight sweep ended, and its height
         for (const sim::SweptPiece& piece : d.pieces) {
             if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
             // The cells near one horizontal sweep at tip height z: a
@@ -286,13 +287,25 @@ private:
                     }
                 });
             };
+            // A straight sweep; when the last one ended where it starts, at
+            // the same height and without the holder low, the cells within
+            // the cutter's flat bottom of its start are at that height
+            // already (or lower) and are not visited again: a contour's
+            // short chords would otherwise each visit a whole disc of cells.
             const auto line = [&](Point2 a, Point2 b, double z) {
-                level(z, [&](double radius, const auto& visit) { sim::forEachCellNear(field_, a, b, radius, row0, row1, visit); });
+                const bool holderLow = z + d.holderZ < -kTouch;
+                const double skip =
+                    !holderLow && last && last->z == z && last->x == a.x && last->y == a.y ? std::max(0.0, cutter.flatRadius()) : 0.0;
+                level(z, [&](double radius, const auto& visit) {
+                    sim::forEachCellNear(field_, a, b, radius, row0, row1, visit, skip);
+                });
+                last = z < 0.0 && !holderLow ? std::optional<Point3>(Point3{b.x, b.y, z}) : std::nullopt;
             };
             if (!piece.arc) {
                 sim::forEachLevel(piece.from, piece.to, zStep_, line);
                 continue;
             }
+            last.reset();
             // An arc exactly; a helix in parts at most zStep apart in Z, each
             // at its higher end, then its end point at its own height.
             const Point2 c = piece.centre;
