@@ -198,8 +198,10 @@ Content content(const Plan& plan, const SheetOptions& o)
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
                        "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min",
                        "Machine min"};
-    c.steps.numeric = {true, true, false, false, true, true, false, true, true, true, true, true, true, true, true, true};
-    c.steps.widths = {3, 3.5, 5.3, 13.5, 2.6, 2.6, 15, 5, 6, 5.5, 5.5, 5, 5, 7, 4, 6.5};
+    // The unit column wide enough for its number and the start of its name
+    // (read left to right); the tool's name is the T column's gloss.
+    c.steps.numeric = {true, false, false, false, true, true, false, true, true, true, true, true, true, true, true, true};
+    c.steps.widths = {3, 9, 5.3, 12, 2.6, 2.6, 11.5, 5, 6, 5.5, 5.5, 5, 5, 7, 4, 6.5};
     // A turning step's speed: constant surface speed with its spindle
     // limit, or the drill's rpm; its feed per revolution.
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
