@@ -217,7 +217,7 @@ private slots:
         w.planRunner()->flush();
         const auto plan = w.planRunner()->fullPlan();
         QVERIFY(plan);
-        QVERIFY(QString::fromStdString(sheetHtml(*plan, {})).contains("<td class=n>1 Cover recess</td>"));
+        QVERIFY(QString::fromStdString(sheetHtml(*plan, {})).contains("<td>1 Cover recess</td>"));
         // And the NC program's step comments, quoted; parentheses and '%'
         // (which a comment cannot hold) become spaces.
         QVERIFY2(w.ncView()->text()->toPlainText().contains("(STEP 1: UNIT 1 \"Cover recess\" M4 PILOT HOLE T"),

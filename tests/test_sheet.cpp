@@ -99,7 +99,7 @@ private slots:
             const Tool& t = *plan.tool(s.tool->toolId);
             const auto sf = speedsFeeds(t, plan.mmJob.material);
             const QString row = QString::fromStdString(fmt::format(
-                "<tr><td class=n>{}</td><td class=n>{} {}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
+                "<tr><td class=n>{}</td><td>{} {}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
                 "<td class=n>{:.0f}</td><td class=n>{:.0f}</td><td class=n>{:.3f}</td><td class=n>{:.3f}</td>",
                 i + 1, s.unit + 1, plan.job.units[static_cast<std::size_t>(s.unit)].name, s.module, s.label(), t.id, t.id,
                 t.name, sf->rpm, sf->feed, s.startDepth, s.cutDepth));
@@ -171,7 +171,7 @@ private slots:
             QVERIFY2(html.contains(text), text);
         // The row: no. 1, unit 3, T/H 27, 3820 rpm (1000 x 120 / (pi x 10)), 573 mm/min (x 0.05 x 3 flutes),
         // depths 4 to 7.5, allowances, 37 mm of cutting path (7 down + 30 across), 12.5 min, as the machine moves 13.25.
-        QVERIFY2(html.contains("<tr><td class=n>1</td><td class=n>3</td><td>M4</td><td>Roughing II</td><td class=n>27</td>"
+        QVERIFY2(html.contains("<tr><td class=n>1</td><td>3</td><td>M4</td><td>Roughing II</td><td class=n>27</td>"
                                "<td class=n>27</td><td>End mill &lt;10&gt; &amp; co</td><td class=n>3820</td>"
                                "<td class=n>573</td><td class=n>4.000</td><td class=n>7.500</td><td class=n>0.300</td>"
                                "<td class=n>0.200</td><td class=n>37.000</td><td class=n>12.50</td><td class=n>13.25</td></tr>"),
