@@ -19,10 +19,10 @@
 #include <QPdfWriter>
 #include <QTextLayout>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <numeric>
-#include <tuple>
 #include <unordered_map>
 
 namespace taiwa {
@@ -118,11 +118,11 @@ public:
                 const QRectF cell(x[i], y_, x[i + 1] - x[i], line_);
                 cellText(row, cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0), r[i], t.numeric[i]);
             }
-            for (auto& [font, run] : row) {
+            for (const RowRun& run : row) {
                 QGlyphRun glyphs;
-                glyphs.setRawFont(font);
-                glyphs.setGlyphIndexes(run.first);
-                glyphs.setPositions(run.second);
+                glyphs.setRawFont(run.font);
+                glyphs.setGlyphIndexes(run.indexes);
+                glyphs.setPositions(run.positions);
                 p_.drawGlyphRun(QPointF(0, 0), glyphs);
             }
             y_ += line_;
@@ -220,14 +220,12 @@ private:
 
     // A row's glyphs, gathered by font: indexes and positions on the page,
     // drawn as one run per font (one PDF text object a row, not one a cell).
-    struct RawFontLess {
-        bool operator()(const QRawFont& a, const QRawFont& b) const
-        {
-            return std::tuple(a.familyName(), a.styleName(), a.pixelSize()) <
-                   std::tuple(b.familyName(), b.styleName(), b.pixelSize());
-        }
+    struct RowRun {
+        QRawFont font;
+        QList<quint32> indexes;
+        QList<QPointF> positions;
     };
-    using Row = std::map<QRawFont, std::pair<QList<quint32>, QList<QPointF>>, RawFontLess>;
+    using Row = std::vector<RowRun>;
     // A body cell's text, elided to the cell and aligned right (numbers) or
     // left, on the cell's middle line, added to its row. Cells repeat
     // (modules, tools, labels, numbers): each text is elided, shaped and
@@ -253,9 +251,11 @@ private:
         const double baseline = cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
         const QPointF at(x, baseline - f.ascent);
         for (const QGlyphRun& run : f.glyphs) {
-            auto& [indexes, positions] = row[run.rawFont()];
-            indexes += run.glyphIndexes();
-            for (const QPointF& p : run.positions()) positions.push_back(p + at);
+            const QRawFont font = run.rawFont();
+            auto same = std::find_if(row.begin(), row.end(), [&](const RowRun& r) { return r.font == font; });
+            if (same == row.end()) same = row.insert(row.end(), RowRun{font, {}, {}});
+            same->indexes += run.glyphIndexes();
+            for (const QPointF& p : run.positions()) same->positions.push_back(p + at);
         }
     }
     // A header cell's text, wrapped in the cell and centred on its height,
