@@ -26,7 +26,9 @@
 #include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
@@ -94,11 +96,22 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
     const int nx = f.columns(), ny = f.rows();
     const Stock& s = f.stock();
     const std::vector<float>& z = f.heights();
-    std::vector<Rgb> colours(static_cast<std::size_t>(nx) * ny);
+    // Each vertex's height and colour as one key: vertices alike have equal
+    // keys (+ 0.0f: -0 is 0).
+    std::vector<std::uint64_t> keys(static_cast<std::size_t>(nx) * ny);
     for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) colours[static_cast<std::size_t>(j) * nx + i] = colourOf(i, j);
+        for (int i = 0; i < nx; ++i) {
+            const std::size_t v = static_cast<std::size_t>(j) * nx + i;
+            const Rgb c = colourOf(i, j);
+            keys[v] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(z[v] + 0.0f)) << 32 |
+                      static_cast<std::uint64_t>(c.r) << 16 | static_cast<std::uint64_t>(c.g) << 8 | c.b;
+        }
     const auto Z = [&](int i, int j) { return z[static_cast<std::size_t>(j) * nx + i]; };
-    const auto C = [&](int i, int j) { return colours[static_cast<std::size_t>(j) * nx + i]; };
+    const auto K = [&](int i, int j) { return keys[static_cast<std::size_t>(j) * nx + i]; };
+    const auto C = [&](int i, int j) {
+        const std::uint64_t k = K(i, j);
+        return Rgb{static_cast<unsigned char>(k >> 16), static_cast<unsigned char>(k >> 8), static_cast<unsigned char>(k)};
+    };
     SurfaceBuilder out;
     auto vx = [&](int i) { return i == 0 ? s.x : i == nx - 1 ? s.x + s.width : f.centre(i, 0).x; };
     auto vy = [&](int j) { return j == 0 ? s.y : j == ny - 1 ? s.y + s.length : f.centre(0, j).y; };
@@ -113,12 +126,8 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
 
     // Vertex (k, j) is like (i, j), and (k, j + 1) like (i, j + 1): quad k
     // continues the row run that quad i starts.
-    const auto likeX = [&](int i, int k, int j) {
-        return Z(k, j) == Z(i, j) && Z(k, j + 1) == Z(i, j + 1) && C(k, j) == C(i, j) && C(k, j + 1) == C(i, j + 1);
-    };
-    const auto likeY = [&](int i, int j, int k) {
-        return Z(i, k) == Z(i, j) && Z(i + 1, k) == Z(i + 1, j) && C(i, k) == C(i, j) && C(i + 1, k) == C(i + 1, j);
-    };
+    const auto likeX = [&](int i, int k, int j) { return K(k, j) == K(i, j) && K(k, j + 1) == K(i, j + 1); };
+    const auto likeY = [&](int i, int j, int k) { return K(i, k) == K(i, j) && K(i + 1, k) == K(i + 1, j); };
     const int qx = nx - 1, qy = ny - 1;  // quads per row and column
     std::vector<char> done(static_cast<std::size_t>(std::max(qx, 0)) * std::max(qy, 0), 0);
     // Flat row runs still growing downward: (i0, i1) -> first row, last row.
@@ -136,10 +145,10 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
             int k = i + 1;  // the run's quads are i..k-1, its vertices i..k
             while (k < qx && likeX(i, k + 1, j)) ++k;
             for (int q = i; q < k; ++q) done[static_cast<std::size_t>(j) * qx + q] = 1;
-            const bool flat = Z(i, j) == Z(i, j + 1) && C(i, j) == C(i, j + 1);
+            const bool flat = K(i, j) == K(i, j + 1);
             const std::pair key{i, k};
             auto it = open.find(key);
-            if (flat && it != open.end() && it->second.last == j - 1 && Z(i, it->second.j0) == Z(i, j) && C(i, it->second.j0) == C(i, j)) {
+            if (flat && it != open.end() && it->second.last == j - 1 && K(i, it->second.j0) == K(i, j)) {
                 it->second.last = j;
             } else if (flat) {
                 if (it != open.end()) close(key, it->second);
@@ -189,7 +198,7 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
         const auto same = [&](int a, int b) {
             const auto [ia, ja] = at(a);
             const auto [ib, jb] = at(b);
-            return Z(ia, ja) == Z(ib, jb) && C(ia, ja) == C(ib, jb);
+            return K(ia, ja) == K(ib, jb);
         };
         for (int k0 = 0; k0 + 1 < n;) {
             int k1 = k0 + 1;
