@@ -4,17 +4,24 @@
 //             thread, before the edit returns), and
 //   FullPlan: the full plan with tool paths and the stock delivered back to
 //             the GUI thread and given to the 3-D view, and (with a display)
-//             its first frame rendered: "value typed -> preview updated";
+//             its first frame rendered: "value typed -> preview updated".
+//             Counters: edit (the edit's own call: checks, step list,
+//             step table), toView (from there to the plan given to the 3-D
+//             view: the worker, then the window's handler), frame (the
+//             view's next frame, grabbed) and again (the same frame
+//             rendered once more: what a frame costs with nothing new);
 //   FullPlanNc: the same to the NC view's new text, which the window puts
 //             off until after the 3-D view (and on a large job until the
 //             typing pauses);
+//   SameFrame: the anchor, the view's frame rendered again and again;
 //   Parts:    FullPlan's parts, each timed here by calling the same functions
 //             the runner and the window call, one after the other (counters
 //             in ms; the product has no timers).
 // on two jobs: resources/samples/plate.taiwa (the largest sample; or the job
 // file TAIWA_BENCH_JOB names) and a 200-unit job (bench_job.h's bigJob(200)).
 // Offscreen unless a display is set; under `xvfb-run -a` the preview exists,
-// its setPlan is inside FullPlan and Parts times it and its first render.
+// its setPlan is inside FullPlan and Parts times it, its first render and
+// the same frame again (sameFrame).
 // Run from the source tree's root.
 #include "bench_job.h"
 #include "job/job_check.h"
@@ -111,13 +118,13 @@ void FullPlan(benchmark::State& state, StationWindow* window)
         // The window has given the plan to the 3-D view: its frame.
         if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());
         const auto framed = Clock::now();
-        if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());
-        again += std::chrono::duration<double, std::milli>(Clock::now() - framed).count();
+        state.PauseTiming();
+        if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());  // not in the time
         const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+        again += ms(framed, Clock::now());
         edit += ms(t0, edited);
         toProgram += ms(edited, ready);
         toFrame += ms(ready, framed);
-        state.PauseTiming();
         window->planRunner()->flush();  // the NC text and the step list's times
         QCoreApplication::processEvents();
         state.ResumeTiming();
