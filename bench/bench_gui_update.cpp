@@ -4,17 +4,24 @@
 //             thread, before the edit returns), and
 //   FullPlan: the full plan with tool paths and the stock delivered back to
 //             the GUI thread and given to the 3-D view, and (with a display)
-//             its first frame rendered: "value typed -> preview updated";
+//             its first frame rendered: "value typed -> preview updated".
+//             Counters: edit (the edit's own call: checks, step list,
+//             step table), toView (from there to the plan given to the 3-D
+//             view: the worker, then the window's handler), frame (the
+//             view's next frame, grabbed) and again (the same frame
+//             rendered once more: what a frame costs with nothing new);
 //   FullPlanNc: the same to the NC view's new text, which the window puts
 //             off until after the 3-D view (and on a large job until the
 //             typing pauses);
+//   SameFrame: the anchor, the view's frame rendered again and again;
 //   Parts:    FullPlan's parts, each timed here by calling the same functions
 //             the runner and the window call, one after the other (counters
 //             in ms; the product has no timers).
 // on two jobs: resources/samples/plate.taiwa (the largest sample; or the job
 // file TAIWA_BENCH_JOB names) and a 200-unit job (bench_job.h's bigJob(200)).
 // Offscreen unless a display is set; under `xvfb-run -a` the preview exists,
-// its setPlan is inside FullPlan and Parts times it and its first render.
+// its setPlan is inside FullPlan and Parts times it, its first render and
+// the same frame again (sameFrame).
 // Run from the source tree's root.
 #include "bench_job.h"
 #include "job/job_check.h"
@@ -92,21 +99,44 @@ double moves(const Plan& plan)
 
 void FullPlan(benchmark::State& state, StationWindow* window)
 {
+    using Clock = std::chrono::steady_clock;
+    double edit = 0, toProgram = 0, toFrame = 0, again = 0;
     for (auto _ : state) {
         QEventLoop loop;
-        auto c = QObject::connect(window->planRunner(), &PlanRunner::programReady, &loop, &QEventLoop::quit);
+        auto t0 = Clock::now();
+        Clock::time_point ready;
+        // After the window's own handler (connected first): the plan is in the 3-D view.
+        auto c = QObject::connect(window->planRunner(), &PlanRunner::programReady, &loop, [&] {
+            ready = Clock::now();
+            loop.quit();
+        });
         QTimer::singleShot(20000, &loop, &QEventLoop::quit);
         changeDepth(window);
+        const auto edited = Clock::now();
         loop.exec();
         QObject::disconnect(c);
         // The window has given the plan to the 3-D view: its frame.
         if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());
+        const auto framed = Clock::now();
         state.PauseTiming();
+        if (PreviewWidget* p = window->preview()) benchmark::DoNotOptimize(p->grabImage());  // not in the time
+        const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+        again += ms(framed, Clock::now());
+        edit += ms(t0, edited);
+        toProgram += ms(edited, ready);
+        toFrame += ms(ready, framed);
         window->planRunner()->flush();  // the NC text and the step list's times
         QCoreApplication::processEvents();
         state.ResumeTiming();
     }
     state.counters["moves"] = moves(*window->planRunner()->fullPlan());
+    // The parts of the time in ms: the edit's own call (checks, step list),
+    // from there to the plan given to the 3-D view, and its frame.
+    const double n = static_cast<double>(state.iterations());
+    state.counters["edit"] = edit / n;
+    state.counters["toView"] = toProgram / n;
+    state.counters["frame"] = toFrame / n;
+    state.counters["again"] = again / n;
 }
 
 // The same to the NC view's new text (put off after the 3-D view's frame).
@@ -185,11 +215,28 @@ void Parts(benchmark::State& state, StationWindow* window)
             lap("previewSetPlan", t);
             benchmark::DoNotOptimize(p->grabImage());
             lap("firstRender", t);
+            // The anchor: the same frame again, nothing changed.
+            benchmark::DoNotOptimize(p->grabImage());
+            lap("sameFrame", t);
         }
         QCoreApplication::processEvents();
         t = Clock::now();
     }
     for (const auto& [name, ms] : total) state.counters[name] = ms / static_cast<double>(state.iterations());
+}
+
+// The anchor of FullPlan's frame: the 3-D view's frame rendered again,
+// nothing changed (with a display only).
+void SameFrame(benchmark::State& state, StationWindow* window)
+{
+    PreviewWidget* p = window->preview();
+    if (!p) {
+        state.SkipWithError("no 3-D view (no display)");
+        return;
+    }
+    for (auto _ : state) benchmark::DoNotOptimize(p->grabImage());
+    state.counters["width"] = p->width();
+    state.counters["height"] = p->height();
 }
 
 // The 200-unit job as a file the window opens.
@@ -238,6 +285,9 @@ int main(int argc, char** argv)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
         benchmark::RegisterBenchmark(("FullPlanNc/" + n).c_str(), FullPlanNc, window)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("SameFrame/" + n).c_str(), SameFrame, window)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
         benchmark::RegisterBenchmark(("Parts/" + n).c_str(), Parts, window)

@@ -216,7 +216,7 @@ private slots:
 
     // The simulated stock's surface is closed (its vector area sums to
     // zero), its upward faces cover the stock exactly once, and flat regions
-    // are merged: far fewer quads than cells.
+    // are merged: far fewer quads than cells (a block is six).
     void stockSurfaceIsClosedAndMerged()
     {
         const Stock stock{0, 0, 200, 150, 30};
@@ -259,6 +259,12 @@ private slots:
         QVERIFY(std::abs(cut[0]) + std::abs(cut[1]) + std::abs(cut[2]) < 1e-6);
         QVERIFY(std::abs(cutUp - 200.0 * 150.0) < 1e-6);
         QVERIFY2(cutCount < cells / 20, qPrintable(QString("%1 quads for %2 cells").arg(cutCount).arg(cells)));
+        // Merged along rows and columns (viz/stock_surface.cpp): the uncut
+        // block is its six faces; the pocket's floor rows, its walls and the
+        // sloped wall's columns (level along y) are a quad each, not one per
+        // cell (the sloped wall alone is 40 x 240 cells).
+        QCOMPARE(freshCount, 6);
+        QVERIFY2(cutCount < 300, qPrintable(QString("%1 quads").arg(cutCount)));
     }
 
     void pickingAndHighlight()

@@ -138,8 +138,12 @@ void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<si
 
 void PreviewWidget::setSelectedStep(int index)
 {
+    // The step list re-announces its selection with every plan: the same
+    // selection draws no frame (a frame of the old plan while the new one is
+    // planned would delay the new one's).
+    const int before = scene_.selectedStep();
     scene_.setSelectedStep(index);
-    update();
+    if (scene_.selectedStep() != before) update();
 }
 
 void PreviewWidget::setShowStock(bool show)
@@ -187,6 +191,7 @@ void PreviewWidget::setPlayhead(int step, int move)
 
 void PreviewWidget::markPoint(std::optional<Point3> p)
 {
+    if (!p && !scene_.markedPoint()) return;  // nothing marked, nothing to take away
     scene_.markPoint(p);
     update();
 }

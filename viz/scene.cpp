@@ -4,6 +4,7 @@
 
 #include "sim/stock_simulation.h"
 #include "sim/turned_stock.h"
+#include "viz/actors.h"
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
 #include "viz/path_lod.h"
@@ -22,6 +23,7 @@
 #include <vtkPlane.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -34,37 +36,7 @@ namespace taiwa::viz {
 
 namespace {
 
-vtkSmartPointer<vtkActor> actorFor(vtkPolyData* pd, Rgb colour)
-{
-    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(pd);
-    mapper->ScalarVisibilityOff();
-    mapper->StaticOn();  // its data never changes: no pipeline update per frame
-    auto actor = vtkSmartPointer<vtkActor>::New();
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetColor(colour.red(), colour.green(), colour.blue());
-    return actor;
-}
-
-vtkSmartPointer<vtkActor> lineActor(vtkPolyData* pd, Rgb colour, double width)
-{
-    auto actor = actorFor(pd, colour);
-    actor->GetProperty()->LightingOff();  // lines show their colour exactly
-    actor->GetProperty()->SetLineWidth(static_cast<float>(width));
-    return actor;
-}
-
 void setColour(vtkActor* a, Rgb c) { a->GetProperty()->SetColor(c.red(), c.green(), c.blue()); }
-
-// 1, 2 or 5 times a power of ten, near a fifth of the size.
-double niceLength(double size)
-{
-    const double target = std::max(size / 5.0, 1.0);
-    const double decade = std::pow(10.0, std::floor(std::log10(target)));
-    for (double f : {1.0, 2.0, 5.0})
-        if (f * decade >= target * 0.7) return f * decade;
-    return 10.0 * decade;
-}
 
 // World point to pixel through the camera's composite matrix.
 std::array<double, 2> project(vtkMatrix4x4* m, double x, double y, double z, int width, int height)
@@ -111,6 +83,12 @@ Scene::~Scene() = default;
 
 void Scene::clear()
 {
+    // Merged mode: the steps' own actors shown before (out of the renderer
+    // now) may hold GPU buffers.
+    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && allFeeds_)
+        for (const StepActors& a : steps_)
+            for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()})
+                if (actor) actor->ReleaseGraphicsResources(window);
     renderer_->RemoveAllViewProps();
     steps_.clear();
     merged_ = {};
@@ -129,6 +107,11 @@ void Scene::clear()
 
 void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
 {
+    if (plan && canUpdateInPlace(*plan)) {
+        updateInPlace(std::move(plan), std::move(stock));
+        return;
+    }
+    lastUpdate_ = {};
     clear();
     plan_ = std::move(plan);
     if (!plan_) return;
@@ -174,12 +157,24 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
                 renderer_->GetViewProps()->AddItem(actor);
                 actor->AddConsumer(renderer_);
             }
+            ++lastUpdate_.pathsMade;
         }
     }
 
-    const double axisLength = niceLength(std::max(s.width, s.length));
-    axes_ = labelledAxes(axisLength, 14);
+    makeAxes(niceLength(std::max(s.width, s.length)));
     renderer_->AddActor(axes_);
+    renderer_->AddActor2D(scaleNote_);
+
+    updateStock();
+    updateEmphasis();
+    updateTool();
+    updateHighlight();
+}
+
+void Scene::makeAxes(double axisLength)
+{
+    axisLength_ = axisLength;
+    axes_ = labelledAxes(axisLength, 14);
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
     scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
@@ -187,12 +182,6 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     scaleNote_->SetPosition(0.99, 0.015);
-    renderer_->AddActor2D(scaleNote_);
-
-    updateStock();
-    updateEmphasis();
-    updateTool();
-    updateHighlight();
 }
 
 Scene::StepActors& Scene::stepActors(int k)
@@ -251,9 +240,9 @@ void Scene::updateEmphasis()
         allFeeds_->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
         allFeeds_->SetVisibility(selected_ < 0 || !othersHidden_);
         allRapids_->SetVisibility(selected_ < 0);
-        if (shownStep_ >= 0 && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
-            renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].feeds);
-            renderer_->RemoveActor(steps_[static_cast<std::size_t>(shownStep_)].rapids);
+        if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
+            detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
+            detach(steps_[static_cast<std::size_t>(shownStep_)].rapids);
         }
         shownStep_ = -1;
         if (selected_ >= 0 && stepActors(selected_).feeds) {

@@ -58,8 +58,22 @@ public:
     // given, is the plan's stock simulation made elsewhere (the station
     // makes it on its planning thread); otherwise the scene makes one when
     // the stock is first shown.
+    //
+    // A plan of the same kind as the one shown (milling, both drawn per step
+    // or both merged) updates the scene in place (viz/scene_update.cpp):
+    // each step whose tool path is unchanged keeps its actors and their GPU
+    // buffers, the stock's edges and the axes stay while the stock does, the
+    // camera is not touched; the picture is the one a new scene would draw
+    // of the plan.
     void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     const Plan* plan() const { return plan_.get(); }
+    // What the last setPlan did: built anew, or updated in place keeping
+    // `pathsKept` steps' path actors and making `pathsMade`.
+    struct PlanUpdate {
+        bool inPlace = false;
+        int pathsKept = 0, pathsMade = 0;
+    };
+    const PlanUpdate& lastPlanUpdate() const { return lastUpdate_; }
     // -1: every step alike; k: step k emphasised, the tool at its start,
     // the stock (when shown) as it is after step k.
     void setSelectedStep(int index);
@@ -151,6 +165,14 @@ private:
     // A path line's width: `still`, or 1 while the camera moves.
     float pathWidth(float still) const { return moving_ ? 1.0f : still; }
     void clear();
+    // setPlan's in-place update, when canUpdateInPlace (scene_update.cpp).
+    bool canUpdateInPlace(const Plan& next) const;
+    void updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock);
+    // The scale note and axes for a stock of this size (made once per length).
+    void makeAxes(double axisLength);
+    // Takes a prop out of the renderer keeping its GPU resources (it is
+    // shown again later); RemoveActor frees them.
+    void detach(vtkProp* prop);
     void updateEmphasis();
     void updateStock();
     void updateTool();
@@ -199,6 +221,8 @@ private:
         vtkSmartPointer<vtkMapper> full, lod;
     };
     std::map<vtkActor*, Twin> twins_;
+    PlanUpdate lastUpdate_;
+    double axisLength_ = 0.0;  // of axes_, milling jobs
 };
 
 }  // namespace taiwa::viz

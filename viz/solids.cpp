@@ -1,6 +1,6 @@
-// The stock surface from the height field, the stock block, the tool solid,
-// the pocket outlines, a lathe job's surfaces of revolution, the section
-// face, the colour map and the labelled axes.
+// The stock block, the tool solid, the pocket outlines, a lathe job's
+// surfaces of revolution, the section face and the labelled axes (the stock
+// surface and the colour map: viz/stock_surface.cpp).
 #include "viz/solids.h"
 
 #include "model/turned_geometry.h"
@@ -26,6 +26,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace taiwa::viz {
@@ -50,166 +51,7 @@ void addQuad(vtkCellArray* cells, vtkIdType a, vtkIdType b, vtkIdType c, vtkIdTy
     cells->InsertNextCell(4, ids);
 }
 
-// Builds the stock surface: points with colours, quads with one normal each
-// (flat shading: no smoothing pass over hundreds of thousands of cells).
-class SurfaceBuilder {
-public:
-    SurfaceBuilder()
-    {
-        colours_->SetName("Colors");
-        colours_->SetNumberOfComponents(3);
-        normals_->SetName("Normals");
-        normals_->SetNumberOfComponents(3);
-    }
-    vtkIdType point(double x, double y, double z, Rgb c)
-    {
-        colours_->InsertNextTuple3(c.r, c.g, c.b);
-        return points_->InsertNextPoint(x, y, z);
-    }
-    // Counter-clockwise seen from outside; the normal from the diagonals.
-    void quad(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
-    {
-        double pa[3], pb[3], pc[3], pd[3];
-        points_->GetPoint(a, pa);
-        points_->GetPoint(b, pb);
-        points_->GetPoint(c, pc);
-        points_->GetPoint(d, pd);
-        const double u[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
-        const double v[3] = {pd[0] - pb[0], pd[1] - pb[1], pd[2] - pb[2]};
-        double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (len > 0)
-            for (double& k : n) k /= len;
-        normals_->InsertNextTuple(n);
-        addQuad(polys_, a, b, c, d);
-    }
-    vtkSmartPointer<vtkPolyData> polyData() const
-    {
-        auto pd = vtkSmartPointer<vtkPolyData>::New();
-        pd->SetPoints(points_);
-        pd->SetPolys(polys_);
-        pd->GetPointData()->SetScalars(colours_);
-        pd->GetCellData()->SetNormals(normals_);
-        return pd;
-    }
-
-private:
-    vtkNew<vtkPoints> points_;
-    vtkNew<vtkUnsignedCharArray> colours_;
-    vtkNew<vtkDoubleArray> normals_;
-    vtkNew<vtkCellArray> polys_;
-};
-
-// The closed surface of a height field, each top vertex in the colour
-// colourOf(i, j) gives its cell.
-template <class ColourOf>
-vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf& colourOf)
-{
-    const int nx = f.columns(), ny = f.rows();
-    const Stock& s = f.stock();
-    const std::vector<float>& z = f.heights();
-    SurfaceBuilder out;
-    // Top: a vertex per cell centre, the outer ones moved onto the stock's
-    // edge, made only where a quad needs it.
-    auto vx = [&](int i) { return i == 0 ? s.x : i == nx - 1 ? s.x + s.width : f.centre(i, 0).x; };
-    auto vy = [&](int j) { return j == 0 ? s.y : j == ny - 1 ? s.y + s.length : f.centre(0, j).y; };
-    std::vector<vtkIdType> ids(static_cast<std::size_t>(nx) * ny, -1);
-    auto top = [&](int i, int j) {
-        vtkIdType& id = ids[static_cast<std::size_t>(j) * nx + i];
-        if (id < 0) {
-            id = out.point(vx(i), vy(j), f.at(i, j), colourOf(i, j));
-        }
-        return id;
-    };
-    // A rectangle of vertices all at one height is one quad: the uncut top
-    // and the pocket floors become a few hundred quads instead of hundreds
-    // of thousands. Its edges are straight lines at that height, so the
-    // finer quads beside it meet it without a gap.
-    auto flat = [&](int i0, int i1, int j0, int j1) {
-        const float h = z[static_cast<std::size_t>(j0) * nx + i0];
-        const Rgb colour = colourOf(i0, j0);  // one colour too
-        for (int j = j0; j <= j1; ++j) {
-            const float* row = z.data() + static_cast<std::size_t>(j) * nx;
-            for (int i = i0; i <= i1; ++i)
-                if (row[i] != h || !(colourOf(i, j) == colour)) return false;
-        }
-        return true;
-    };
-    auto emit = [&](auto&& self, int i0, int i1, int j0, int j1) -> void {
-        if ((i1 - i0 == 1 && j1 - j0 == 1) || flat(i0, i1, j0, j1)) {
-            out.quad(top(i0, j0), top(i1, j0), top(i1, j1), top(i0, j1));
-            return;
-        }
-        const int im = (i0 + i1) / 2, jm = (j0 + j1) / 2;
-        if (i1 - i0 > 1 && j1 - j0 > 1) {
-            self(self, i0, im, j0, jm);
-            self(self, im, i1, j0, jm);
-            self(self, i0, im, jm, j1);
-            self(self, im, i1, jm, j1);
-        } else if (i1 - i0 > 1) {
-            self(self, i0, im, j0, j1);
-            self(self, im, i1, j0, j1);
-        } else {
-            self(self, i0, i1, j0, jm);
-            self(self, i0, i1, jm, j1);
-        }
-    };
-    if (nx > 1 && ny > 1) emit(emit, 0, nx - 1, 0, ny - 1);
-
-    // Side walls from the top's edge down to the bottom, normals outward.
-    const double zb = f.bottom();
-    std::vector<vtkIdType> front(nx), back(nx), left(ny), right(ny);
-    for (int i = 0; i < nx; ++i) {
-        front[i] = out.point(vx(i), s.y, zb, palette::kStock);
-        back[i] = out.point(vx(i), s.y + s.length, zb, palette::kStock);
-    }
-    for (int j = 0; j < ny; ++j) {
-        left[j] = out.point(s.x, vy(j), zb, palette::kStock);
-        right[j] = out.point(s.x + s.width, vy(j), zb, palette::kStock);
-    }
-    for (int i = 0; i + 1 < nx; ++i) {
-        out.quad(front[i], front[i + 1], top(i + 1, 0), top(i, 0));
-        out.quad(back[i + 1], back[i], top(i, ny - 1), top(i + 1, ny - 1));
-    }
-    for (int j = 0; j + 1 < ny; ++j) {
-        out.quad(left[j + 1], left[j], top(0, j), top(0, j + 1));
-        out.quad(right[j], right[j + 1], top(nx - 1, j + 1), top(nx - 1, j));
-    }
-    out.quad(front[0], back[0], back[nx - 1], front[nx - 1]);  // bottom, facing down
-    return out.polyData();
-}
-
-Rgb bandColour(verify::DeviationBand b)
-{
-    using B = verify::DeviationBand;
-    switch (b) {
-    case B::Untouched: return palette::kStock;
-    case B::Gouge: return palette::kGouge;
-    case B::AtSize: return palette::kAtSize;
-    case B::RestThin: return palette::kRestThin;
-    case B::RestMedium: return palette::kRestMedium;
-    case B::RestThick: return palette::kRestThick;
-    }
-    return palette::kStock;
-}
-
 }  // namespace
-
-vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& f, const sim::HeightField* before)
-{
-    if (before && !(before->columns() == f.columns() && before->rows() == f.rows())) before = nullptr;
-    return surfaceOf(f, [&](int i, int j) {
-        const double h = f.at(i, j);
-        if (before && h < before->at(i, j) - 1e-4) return palette::kRemoved;  // cut by the step: lower than before it
-        return h > -1e-4 ? palette::kStock : palette::kMachined;
-    });
-}
-
-vtkSmartPointer<vtkPolyData> deviationSurface(const verify::DeviationMap& map)
-{
-    const int nx = map.stock.columns();
-    return surfaceOf(map.stock, [&](int i, int j) { return bandColour(map.band[static_cast<std::size_t>(j) * nx + i]); });
-}
 
 vtkSmartPointer<vtkPolyData> sectionCap(const sim::HeightField& f, const SectionPlane& plane, std::size_t maxSamples)
 {

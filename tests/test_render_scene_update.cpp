@@ -1,0 +1,203 @@
+// The preview scene updated in place for an edited job (viz/scene_update.cpp)
+// draws the picture a new scene draws of the edited plan, pixel for pixel:
+// the sample plate.taiwa with unit 1's depth changed (or its stock wider),
+// with the simulated stock and the translucent block, all steps or one
+// selected, and a job of 150 pockets (drawn merged). The update keeps the unchanged steps'
+// path actors and makes the changed ones', and the edit shows (the picture
+// before it differs), so a path or stock left stale would fail the
+// comparison. Needs an X display (xvfb-run -a).
+#include "job/job_file.h"
+#include "modules/m4/m4.h"
+#include "pipeline/pipeline.h"
+#include "support/images.h"
+#include "tools/tool_library.h"
+#include "viz/render.h"
+#include "viz/scene.h"
+
+#include <QImage>
+#include <QtTest>
+
+#include <vtkCamera.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <memory>
+#include <string>
+
+using namespace taiwa;
+using namespace taiwa::viz;
+
+namespace {
+
+constexpr int kWidth = 640, kHeight = 400;
+
+std::shared_ptr<const Plan> planOf(const Job& job)
+{
+    return std::make_shared<const Plan>(planJob(job, TechnologyTable::builtIn(), defaultToolLibrary()));
+}
+
+// The sample plate.
+Job plate()
+{
+    const auto read = readJobFile(TAIWA_SOURCE_DIR "/resources/samples/plate.taiwa");
+    return read.job ? *read.job : Job{};
+}
+
+// `units` rectangular pockets on a 30 mm grid, 12 to a row (150 of them
+// make over 400 steps: the scene draws them merged).
+Job grid(int units)
+{
+    Job job;
+    const int columns = 12, rows = (units + columns - 1) / columns;
+    job.stock = {0, 0, columns * 30.0, rows * 30.0, 30};
+    for (int i = 0; i < units; ++i) {
+        const double x = (i % columns) * 30.0 + 5, y = (i / columns) * 30.0 + 5;
+        M4Pocket m;
+        m.corners = {Point2{x, y}, Point2{x + 20, y}, Point2{x + 20, y + 18}, Point2{x, y + 18}};
+        m.cornerRadius = 4;
+        m.depth = 6;
+        m.toolUse = 1;
+        m.wallFinish = 2;
+        m.pilotHole = 0;
+        job.units.push_back({"", m});
+    }
+    return job;
+}
+
+Job deeper(Job job)
+{
+    job.units[0].module.as<M4Pocket>().depth += 0.5;
+    return job;
+}
+
+// The scene's picture through the camera it is given.
+QImage picture(Scene& scene, vtkCamera* camera)
+{
+    OffscreenWindow window(kWidth, kHeight);
+    if (window.problem()) return {};
+    window.window()->AddRenderer(scene.renderer());
+    scene.renderer()->GetActiveCamera()->DeepCopy(camera);
+    scene.renderer()->ResetCameraClippingRange();
+    window.window()->Render();
+    const std::string png = pngOf(window.window());
+    window.window()->RemoveRenderer(scene.renderer());
+    return QImage::fromData(reinterpret_cast<const uchar*>(png.data()), static_cast<int>(png.size()), "PNG")
+        .convertToFormat(QImage::Format_RGB32);
+}
+
+struct Settings {
+    bool stock = false;
+    int step = -1;
+};
+
+void apply(Scene& s, const Settings& o)
+{
+    s.setShowStock(o.stock);
+    s.setSelectedStep(o.step);
+}
+
+}  // namespace
+
+class TestRenderSceneUpdate : public QObject {
+    Q_OBJECT
+
+    // The scene of `before` updated to `after` against a new scene of
+    // `after`, through one camera (the one fitted to `before`).
+    // What the update kept and made.
+    Scene::PlanUpdate compare(const Job& before, const Job& after, const Settings& o, bool merged)
+    {
+        Scene::PlanUpdate u;
+        compareInto(before, after, o, merged, u);
+        return u;
+    }
+    void compareInto(const Job& before, const Job& after, const Settings& o, bool merged, Scene::PlanUpdate& u)
+    {
+        const auto p0 = planOf(before), p1 = planOf(after);
+        QVERIFY2(!p0->steps.empty() && p0->steps.size() == p1->steps.size(), qPrintable(QString("%1 and %2 steps, %3").arg(p0->steps.size()).arg(p1->steps.size()).arg(p0->diagnostics.empty() ? QString() : QString::fromStdString(p0->diagnostics.front().message))));
+        QCOMPARE(p0->steps.size() > 400, merged);
+        Scene updated;
+        updated.setPlan(p0);
+        apply(updated, o);
+        updated.setView(ViewPreset::Iso, static_cast<double>(kWidth) / kHeight);
+        auto camera = vtkSmartPointer<vtkCamera>::New();
+        camera->DeepCopy(updated.renderer()->GetActiveCamera());
+        const QImage old = picture(updated, camera);
+        QVERIFY2(!old.isNull(), "no display");
+
+        updated.setPlan(p1);
+        u = updated.lastPlanUpdate();
+        QVERIFY(u.inPlace);
+        const QImage edited = picture(updated, camera);
+
+        Scene fresh;
+        fresh.setPlan(p1);
+        apply(fresh, o);
+        QVERIFY(!fresh.lastPlanUpdate().inPlace);
+        const QImage want = picture(fresh, camera);
+
+        QCOMPARE(edited.size(), want.size());
+        // The edit shows: a stale picture would not pass the comparison.
+        QVERIFY2(test::differingPixels(old, want) > 20, qPrintable(QString::number(test::differingPixels(old, want))));
+        const int differing = test::differingPixels(edited, want);
+        if (differing != 0 && !qEnvironmentVariableIsEmpty("TAIWA_SCREENSHOTS")) {
+            const QString dir = qEnvironmentVariable("TAIWA_SCREENSHOTS");
+            edited.save(dir + "/scene-updated.png");
+            want.save(dir + "/scene-fresh.png");
+        }
+        QVERIFY2(differing == 0, qPrintable(QString("%1 pixels differ from a new scene's").arg(differing)));
+    }
+
+    // Unit 1's steps are made anew, the other units' kept.
+    static void keptOthers(const Scene::PlanUpdate& u)
+    {
+        QVERIFY2(u.pathsKept > 0 && u.pathsMade > 0, qPrintable(QString("%1 kept, %2 made").arg(u.pathsKept).arg(u.pathsMade)));
+        const Job job = plate();
+        const auto p = planOf(job);
+        int unit1 = 0, withPath = 0;
+        for (const Step& s : p->steps) {
+            unit1 += s.path && s.unit == 0 ? 1 : 0;
+            withPath += s.path ? 1 : 0;
+        }
+        QCOMPARE(u.pathsMade, unit1);
+        QCOMPARE(u.pathsKept, withPath - unit1);
+    }
+
+private slots:
+    void pathsAndBlockAsANewScene()
+    {
+        const auto u = compare(plate(), deeper(plate()), {}, false);
+        keptOthers(u);
+    }
+
+    void simulatedStockAsANewScene()
+    {
+        const auto u = compare(plate(), deeper(plate()), {true, -1}, false);
+        keptOthers(u);
+    }
+
+    void selectedStepAsANewScene()
+    {
+        // The first step of unit 1 (its path changed with the depth), over the stock after it.
+        const auto p = planOf(plate());
+        int first = -1;
+        for (std::size_t k = 0; k < p->steps.size() && first < 0; ++k)
+            if (p->steps[k].unit == 0 && p->steps[k].path) first = static_cast<int>(k);
+        QVERIFY(first >= 0);
+        compare(plate(), deeper(plate()), {true, first}, false);
+    }
+
+    void mergedAsANewScene() { compare(grid(150), deeper(grid(150)), {false, 3}, true); }
+
+    // A wider stock: its edges, block and axes new, the paths kept.
+    void widerStockAsANewScene()
+    {
+        Job other = plate();
+        other.stock.width += 20;
+        const auto u = compare(plate(), other, {true, -1}, false);
+        QCOMPARE(u.pathsMade, 0);
+        QVERIFY(u.pathsKept > 0);
+    }
+};
+
+QTEST_MAIN(TestRenderSceneUpdate)
+#include "test_render_scene_update.moc"

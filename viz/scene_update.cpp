@@ -1,0 +1,195 @@
+// The scene's in-place update for a new plan of the job it shows (an edit
+// of a value): the steps whose tool path is unchanged keep their actors and
+// GPU buffers (the path found by its moves, wherever the step now is in the
+// machining order), only the others are made; the stock's edges and the
+// axes stay while the stock does; the stock surface, the pockets' outlines,
+// the tool and the highlight are made as a new scene makes them. The props
+// are then put in the renderer in a new scene's order, so that what is
+// drawn over what (lines on a floor at the same depth) is the same too.
+#include "viz/scene.h"
+
+#include "sim/stock_simulation.h"
+#include "viz/actors.h"
+#include "viz/palette.h"
+#include "viz/path_lod.h"
+#include "viz/solids.h"
+
+#include <vtkAxesActor.h>
+#include <vtkMapper.h>
+#include <vtkOutlineSource.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderWindow.h>
+#include <vtkTextActor.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <unordered_map>
+
+namespace taiwa::viz {
+
+namespace {
+
+// A cheap key for a tool path; equal paths have equal keys.
+std::size_t pathKey(const ToolPath& p)
+{
+    std::size_t h = std::hash<std::size_t>()(p.moves.size());
+    const auto mix = [&h](double v) { h ^= std::hash<double>()(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
+    mix(p.start.x);
+    mix(p.start.y);
+    mix(p.start.z);
+    if (!p.moves.empty()) {
+        for (const Move* m : {&p.moves.front(), &p.moves[p.moves.size() / 2], &p.moves.back()}) {
+            mix(m->end.x);
+            mix(m->end.y);
+            mix(m->end.z);
+        }
+    }
+    return h;
+}
+
+}  // namespace
+
+bool Scene::canUpdateInPlace(const Plan& next) const
+{
+    if (!plan_ || lathe_ || next.mmJob.bar) return false;
+    // Drawn the same way: per step, or merged.
+    return (steps_.size() > kMergeAbove) == (next.steps.size() > kMergeAbove);
+}
+
+void Scene::detach(vtkProp* prop)
+{
+    if (!prop) return;
+    renderer_->GetViewProps()->RemoveItem(prop);
+    prop->RemoveConsumer(renderer_);
+}
+
+void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
+{
+    const std::shared_ptr<const Plan> old = std::move(plan_);
+    plan_ = std::move(plan);
+    lastUpdate_ = {true, 0, 0};
+    const int n = static_cast<int>(plan_->steps.size());
+    simulation_.reset();
+    if (stock && stock->stepCount() == n) simulation_ = std::move(stock);
+    if (selected_ >= n) selected_ = -1;
+    if (highlighted_.step >= n) highlighted_ = {};
+    if (playhead_.step >= n) playhead_ = {};
+    deviation_.reset();  // a map is of one plan
+
+    vtkRenderWindow* window = renderer_->GetRenderWindow();
+    if (window) window->MakeCurrent();
+    std::vector<vtkSmartPointer<vtkProp>> dropped;  // their GPU resources freed below
+    const auto drop = [&](auto& p) {
+        if (p) dropped.emplace_back(p.Get());
+        p = nullptr;
+    };
+
+    // What a new scene makes anew in any case: out of the renderer.
+    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_, &allFeeds_, &allRapids_}) drop(*p);
+    if (marker_) dropped.emplace_back(marker_.Get());  // a new scene shows no marker; markPoint may
+    const Stock& s = plan_->mmJob.stock;
+    if (!(old->mmJob.stock == s)) {
+        drop(stockEdges_);
+        auto outline = vtkSmartPointer<vtkOutlineSource>::New();
+        outline->SetBounds(s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0);
+        outline->Update();
+        stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
+    }
+    if (const double axisLength = niceLength(std::max(s.width, s.length)); axisLength != axisLength_) {
+        dropped.emplace_back(axes_.Get());
+        dropped.emplace_back(scaleNote_.Get());
+        makeAxes(axisLength);
+    }
+    partEdges_ = lineActor(pocketOutlines(plan_->steps), palette::kPartEdges, 1.5);
+
+    // The steps' path actors: kept where the path is the same.
+    std::vector<StepActors> before = std::move(steps_);
+    steps_.assign(plan_->steps.size(), {});
+    std::unordered_multimap<std::size_t, int> byKey;
+    for (int k = 0; k < static_cast<int>(before.size()); ++k)
+        if (before[k].feeds) byKey.emplace(pathKey(*old->steps[static_cast<std::size_t>(k)].path), k);
+    const auto take = [&](int from, int to) {
+        steps_[static_cast<std::size_t>(to)] = std::move(before[static_cast<std::size_t>(from)]);
+        before[static_cast<std::size_t>(from)] = {};
+        ++lastUpdate_.pathsKept;
+    };
+    for (int k = 0; k < n; ++k) {
+        const Step& step = plan_->steps[static_cast<std::size_t>(k)];
+        if (!step.path) continue;
+        // The same place in the order first, then anywhere.
+        if (k < static_cast<int>(before.size()) && before[k].feeds && *old->steps[static_cast<std::size_t>(k)].path == *step.path) {
+            take(k, k);
+            continue;
+        }
+        const auto [first, last] = byKey.equal_range(pathKey(*step.path));
+        for (auto it = first; it != last; ++it)
+            if (before[static_cast<std::size_t>(it->second)].feeds && *old->steps[static_cast<std::size_t>(it->second)].path == *step.path) {
+                take(it->second, k);
+                break;
+            }
+    }
+    for (StepActors& a : before) {
+        drop(a.feeds);
+        drop(a.rapids);
+    }
+    shownStep_ = -1;
+
+    // The renderer's props in a new scene's order (scene.cpp setPlan).
+    for (const auto& p : dropped) {
+        if (auto* actor = vtkActor::SafeDownCast(p); actor && twins_.count(actor)) {
+            for (vtkMapper* m : {twins_[actor].full.Get(), twins_[actor].lod.Get()})
+                if (m && window) m->ReleaseGraphicsResources(window);
+            twins_.erase(actor);
+        }
+        if (window) p->ReleaseGraphicsResources(window);
+    }
+    for (vtkProp* p : dropped) p->RemoveConsumer(renderer_);
+    dropped.clear();
+    vtkPropCollection* props = renderer_->GetViewProps();
+    {
+        std::vector<vtkProp*> all;
+        props->InitTraversal();
+        while (vtkProp* p = props->GetNextProp()) all.push_back(p);
+        for (vtkProp* p : all) p->RemoveConsumer(renderer_);
+        props->RemoveAllItems();
+    }
+    const auto add = [&](vtkProp* p) {
+        props->AddItem(p);
+        p->AddConsumer(renderer_);
+    };
+    add(stockEdges_);
+    add(partEdges_);
+    pathSegments_ = 0;
+    if (steps_.size() > kMergeAbove) {
+        std::vector<const ToolPath*> paths;
+        paths.reserve(steps_.size());
+        for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
+        merged_ = makeMergedPaths(paths);
+        pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
+        allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
+        allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
+        add(allFeeds_);
+        add(allRapids_);
+    } else {
+        merged_ = {};
+        for (int k = 0; k < n; ++k) {
+            const bool had = steps_[static_cast<std::size_t>(k)].feeds != nullptr;
+            const StepActors& a = stepActors(k);
+            if (!a.feeds) continue;
+            if (!had) ++lastUpdate_.pathsMade;
+            pathSegments_ += lineSegmentCount(a.geometry.feeds) + lineSegmentCount(a.geometry.rapids);
+            add(a.feeds);
+            add(a.rapids);
+        }
+    }
+    add(axes_);
+    add(scaleNote_);
+
+    updateStock();
+    updateEmphasis();
+    updateTool();
+    updateHighlight();
+}
+
+}  // namespace taiwa::viz
