@@ -198,6 +198,11 @@ class TestGuiLanguages : public QObject {
                                  "(端点は (50.200, 0.000)) の間に 0.2 mm の隙間があります。隙間の許容値は 0.01 mm です"),
                  qPrintable(report));
         QVERIFY2(!report.contains(" on layer ") && !report.contains("units"), qPrintable(report));
+        // A list of entities is translated item by item, not misread as one entity.
+        QCOMPARE(coreMessage("3 ends meet at (50.000, 0.000): LINE on layer A (DXF line 5), LINE on layer A (DXF line 37), "
+                             "ARC on layer B (DXF line 53); the nearest were joined, the rest left open"),
+                 QString("(50.000, 0.000) で 3 個の端点が集まっています: レイヤ A の LINE (DXF 5 行目), レイヤ A の LINE (DXF 37 "
+                         "行目), レイヤ B の ARC (DXF 53 行目)。最も近いものをつなぎ、残りは開いたままにしました"));
     }
 
     // Tools by their names and kinds as the step list and the tool library show them.

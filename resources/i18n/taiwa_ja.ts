@@ -1507,6 +1507,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>突切り</translation>
         </message>
         <message>
+            <source>Tapping</source>
+            <translation>タップ立て</translation>
+        </message>
+        <message>
+            <source>Reaming</source>
+            <translation>リーマ加工</translation>
+        </message>
+        <message>
+            <source>Boring</source>
+            <translation>中ぐり</translation>
+        </message>
+        <message>
             <source>roughing, floor finishing and wall finishing</source>
             <translation>荒加工、底面仕上げ、側壁仕上げ</translation>
         </message>
@@ -3026,6 +3038,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点 [x, y] の配列</translation>
         </message>
         <message>
+            <source>the passes were drawn {} mm wide</source>
+            <translation>パスが {} mm 幅で描かれています</translation>
+        </message>
+        <message>
             <source>pocket</source>
             <translation>ポケット</translation>
         </message>
@@ -3230,6 +3246,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{} ～ Ø{} のドリル ({} Ø{} に対して {} ～ {} 小さい)、刃長 {} まで</translation>
         </message>
         <message>
+            <source>ream</source>
+            <translation>リーマ仕上げ</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>中ぐり</translation>
+        </message>
+        <message>
             <source>largest drill {} to {} under Ø{} to {}</source>
             <translation>Ø{2} より {0} ～ {1} 小さい最大のドリル ({3} 用)</translation>
         </message>
@@ -3246,8 +3270,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{1} の{0}、刃長 {2} まで</translation>
         </message>
         <message>
+            <source>boring bar (set to the bore)</source>
+            <translation>中ぐりバー (穴径に合わせる)</translation>
+        </message>
+        <message>
             <source>{} of the hole's Ø{}</source>
             <translation>穴径 Ø{1} の{0}</translation>
+        </message>
+        <message>
+            <source>boring tool</source>
+            <translation>中ぐりバイト</translation>
         </message>
         <message>
             <source>centre drill spotting Ø{} for the Ø{} drill</source>
@@ -3382,6 +3414,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>最大 8 個の面コードの配列 (1 -X、2 +X、3 -Y、4 +Y)</translation>
         </message>
         <message>
+            <source>No probe in the tool library (type "probe"): the ball radius is unknown</source>
+            <translation>工具ライブラリにプローブ (種類 "probe") がありません: 球の半径がわかりません</translation>
+        </message>
+        <message>
+            <source>{} of at least {} touches entered: the probing cycle the export writes makes them on the machine</source>
+            <translation>測定点は {} 点入力済み (最低 {} 点): 出力する測定サイクルが機械上で測定します</translation>
+        </message>
+        <message>
+            <source>Bore: diameter {}</source>
+            <translation>穴: 直径 {}</translation>
+        </message>
+        <message>
+            <source>Boss: diameter {}</source>
+            <translation>ボス: 直径 {}</translation>
+        </message>
+        <message>
+            <source>(not measured: touch one side twice)</source>
+            <translation>(未測定: 一つの面を 2 回測定してください)</translation>
+        </message>
+        <message>
+            <source>Pocket: {} x {}, turned {}</source>
+            <translation>ポケット: {} x {}、回転 {}</translation>
+        </message>
+        <message>
+            <source>Block: {} x {}, turned {}</source>
+            <translation>ブロック: {} x {}、回転 {}</translation>
+        </message>
+        <message>
+            <source>Centre from P1: X {} Y {}</source>
+            <translation>P1 からの中心: X {} Y {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {} Z {}</source>
+            <translation>設定するワーク座標: X {} Y {} Z {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {}</source>
+            <translation>設定するワーク座標: X {} Y {}</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>幅</translation>
         </message>
@@ -3396,6 +3468,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>pinned tool T{} ({}) does not fit: {}</source>
             <translation>指定された工具 T{} ({}) は使えません: {}</translation>
+        </message>
+        <message>
+            <source>{} along {}</source>
+            <translation>{} ({} に沿って)</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>半径 {1} が輪郭の最小内側半径 {2} に入り、パスが輪郭から離れる最大のフラットエンドミル ({0})。刃長 ({3}) が T より短いので層に分けて削ります</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour</source>
+            <translation>半径 {1} が輪郭の最小内側半径 {2} に入り、パスが輪郭から離れる最大のフラットエンドミル ({0})</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>パスが輪郭から離れる最大のフラットエンドミル ({0})。刃長 ({1}) が T より短いので層に分けて削ります</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour</source>
+            <translation>パスが輪郭から離れる最大のフラットエンドミル ({})</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -3830,6 +3922,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>形状が部品を囲む一続きになっていません: {} (行 {}) が閉じる線 {} に X{} Z{} で達します</translation>
         </message>
         <message>
+            <source>pinned</source>
+            <translation>オペレータが指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒材に端面の取り代がありますが、工具ライブラリに端面を削る外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>外径荒加工用チップで端面を削ります (ノーズ半径最大)</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>穴が中ぐりバイトには狭すぎ (バイトは {} から入り、穴径から中ぐり代を除くと {} です)、その寸法にするドリルがライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>中ぐりには {} ～ {} の下穴が必要ですが (中ぐりバイトは {} から入ります)、工具ライブラリにその範囲のドリルがありません</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>中ぐり代を除いた穴径 ({}) 以内で、中ぐりバイトの必要穴径 {} 以上の最大のドリル</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小のセンタドリル</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>工具ライブラリに内径用 (中ぐり) の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>工具ライブラリに外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>すべての要素に届きます。届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>届かない要素が {} 個あります。最も多く届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>溝幅 ({}) を超えない最も広い溝入れバイト</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最も狭い溝入れバイト。横の空間から {} に届きます</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>{} に使える最も狭い突切りバイト</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} は内径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} は外径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>その側で最大のノーズ半径 (最も強い刃先)</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>ピッチ {} 用の外径ねじ切りチップ</translation>
+        </message>
+        <message>
             <source>the job</source>
             <translation>ジョブ</translation>
         </message>
@@ -4217,6 +4381,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>壁のテーパ (片側、度)；垂直な壁は 0</translation>
         </message>
         <message>
+            <source>P1 side</source>
+            <translation>P1 の面</translation>
+        </message>
+        <message>
+            <source>P2 side</source>
+            <translation>P2 の面</translation>
+        </message>
+        <message>
+            <source>P3 side</source>
+            <translation>P3 の面</translation>
+        </message>
+        <message>
+            <source>P4 side</source>
+            <translation>P4 の面</translation>
+        </message>
+        <message>
+            <source>P5 side</source>
+            <translation>P5 の面</translation>
+        </message>
+        <message>
+            <source>P6 side</source>
+            <translation>P6 の面</translation>
+        </message>
+        <message>
+            <source>P7 side</source>
+            <translation>P7 の面</translation>
+        </message>
+        <message>
+            <source>P8 side</source>
+            <translation>P8 の面</translation>
+        </message>
+        <message>
             <source>Shape</source>
             <translation>形状</translation>
         </message>
@@ -4231,6 +4427,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>P1 machine Y</source>
             <translation>P1 機械座標 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未測定</translation>
         </message>
         <message>
             <source>Top face machine Z</source>

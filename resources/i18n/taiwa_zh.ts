@@ -1507,6 +1507,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>切断</translation>
         </message>
         <message>
+            <source>Tapping</source>
+            <translation>攻丝</translation>
+        </message>
+        <message>
+            <source>Reaming</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>Boring</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
             <source>roughing, floor finishing and wall finishing</source>
             <translation>粗加工、底面精加工和侧壁精加工</translation>
         </message>
@@ -3026,6 +3038,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点 [x, y] 的数组</translation>
         </message>
         <message>
+            <source>the passes were drawn {} mm wide</source>
+            <translation>刀路按 {} mm 宽绘制</translation>
+        </message>
+        <message>
             <source>pocket</source>
             <translation>型腔</translation>
         </message>
@@ -3230,6 +3246,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{} 到 Ø{} 的钻头（相对{} Ø{} 小 {} 到 {}），刃长达 {}</translation>
         </message>
         <message>
+            <source>ream</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
             <source>largest drill {} to {} under Ø{} to {}</source>
             <translation>比 Ø{2} 小 {0} 到 {1} 的最大钻头（用于{3}）</translation>
         </message>
@@ -3246,8 +3270,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{1} 的{0}，刃长达 {2}</translation>
         </message>
         <message>
+            <source>boring bar (set to the bore)</source>
+            <translation>镗杆（调至孔径）</translation>
+        </message>
+        <message>
             <source>{} of the hole's Ø{}</source>
             <translation>孔径 Ø{1} 的{0}</translation>
+        </message>
+        <message>
+            <source>boring tool</source>
+            <translation>镗刀</translation>
         </message>
         <message>
             <source>centre drill spotting Ø{} for the Ø{} drill</source>
@@ -3382,6 +3414,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>最多 8 个面代码的数组（1 -X，2 +X，3 -Y，4 +Y）</translation>
         </message>
         <message>
+            <source>No probe in the tool library (type "probe"): the ball radius is unknown</source>
+            <translation>刀具库中没有测头（类型 "probe"）：测球半径未知</translation>
+        </message>
+        <message>
+            <source>{} of at least {} touches entered: the probing cycle the export writes makes them on the machine</source>
+            <translation>已输入 {} 个测点（至少 {} 个）：导出的测量循环将在机床上测量</translation>
+        </message>
+        <message>
+            <source>Bore: diameter {}</source>
+            <translation>孔：直径 {}</translation>
+        </message>
+        <message>
+            <source>Boss: diameter {}</source>
+            <translation>凸台：直径 {}</translation>
+        </message>
+        <message>
+            <source>(not measured: touch one side twice)</source>
+            <translation>（未测量：请在同一面测两次）</translation>
+        </message>
+        <message>
+            <source>Pocket: {} x {}, turned {}</source>
+            <translation>型腔：{} x {}，转角 {}</translation>
+        </message>
+        <message>
+            <source>Block: {} x {}, turned {}</source>
+            <translation>块：{} x {}，转角 {}</translation>
+        </message>
+        <message>
+            <source>Centre from P1: X {} Y {}</source>
+            <translation>相对 P1 的中心：X {} Y {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {} Z {}</source>
+            <translation>要设定的工件坐标偏置：X {} Y {} Z {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {}</source>
+            <translation>要设定的工件坐标偏置：X {} Y {}</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>宽度</translation>
         </message>
@@ -3396,6 +3468,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>pinned tool T{} ({}) does not fit: {}</source>
             <translation>指定的刀具 T{}（{}）不合适：{}</translation>
+        </message>
+        <message>
+            <source>{} along {}</source>
+            <translation>{}（沿 {}）</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>半径 {1} 适合轮廓最小内侧半径 {2}、且刀路不碰轮廓的最大平底立铣刀（{0}）；其刃长（{3}）短于 T：分层切削</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour</source>
+            <translation>半径 {1} 适合轮廓最小内侧半径 {2}、且刀路不碰轮廓的最大平底立铣刀（{0}）</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>刀路不碰轮廓的最大平底立铣刀（{0}）；其刃长（{1}）短于 T：分层切削</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour</source>
+            <translation>刀路不碰轮廓的最大平底立铣刀（{}）</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -3830,6 +3922,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>轮廓不是围绕零件的一条链：{}（第 {} 行）在 X{} Z{} 处到达封闭线 {}</translation>
         </message>
         <message>
+            <source>pinned</source>
+            <translation>由操作员指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒料有端面余量，但刀具库中没有可车端面的外圆车刀片</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>用外圆粗车刀片车端面（刀尖半径最大）</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>孔对镗杆太窄（镗杆需 {}；孔径减去余量为 {}），且刀具库中没有可加工到此尺寸的钻头</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>镗孔需要 {} 到 {} 的预钻孔（镗杆需 {}），但刀具库中没有此范围的钻头</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>在孔径减去镗孔余量（{}）以内、且不小于镗杆所需孔径 {} 的最大钻头</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小的中心钻</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>刀具库中没有内孔（镗孔）车刀片</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>刀具库中没有外圆车刀片</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>可到达所有元素；其中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>有 {} 个元素无法到达；到达最多者中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>不宽于槽宽（{}）的最宽切槽刀</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最窄的切槽刀；从旁边的空处到达 {}</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>适用于 {} 的最窄切断刀</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} 不是内孔车刀片</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} 不是外圆车刀片</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>该侧刀尖半径最大（刃口最强）</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>螺距 {} 的外螺纹车刀片</translation>
+        </message>
+        <message>
             <source>the job</source>
             <translation>作业</translation>
         </message>
@@ -4217,6 +4381,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>侧壁斜度（单边，度）；竖直侧壁为 0</translation>
         </message>
         <message>
+            <source>P1 side</source>
+            <translation>P1 面</translation>
+        </message>
+        <message>
+            <source>P2 side</source>
+            <translation>P2 面</translation>
+        </message>
+        <message>
+            <source>P3 side</source>
+            <translation>P3 面</translation>
+        </message>
+        <message>
+            <source>P4 side</source>
+            <translation>P4 面</translation>
+        </message>
+        <message>
+            <source>P5 side</source>
+            <translation>P5 面</translation>
+        </message>
+        <message>
+            <source>P6 side</source>
+            <translation>P6 面</translation>
+        </message>
+        <message>
+            <source>P7 side</source>
+            <translation>P7 面</translation>
+        </message>
+        <message>
+            <source>P8 side</source>
+            <translation>P8 面</translation>
+        </message>
+        <message>
             <source>Shape</source>
             <translation>形状</translation>
         </message>
@@ -4231,6 +4427,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>P1 machine Y</source>
             <translation>P1 机床坐标 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未测量</translation>
         </message>
         <message>
             <source>Top face machine Z</source>
