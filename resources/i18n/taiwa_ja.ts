@@ -3715,7 +3715,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         </message>
         <message>
             <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
-            <translation>そこに突っ込む {1} のエンドミル以上で最小のドリル ({0})</translation>
+            <translation>{1} のエンドミルがプランジする穴の、それより小さくない最小のドリル ({0})</translation>
         </message>
         <message>
             <source>it is a {}, the step needs a {}</source>
