@@ -6,6 +6,9 @@
 #include "support/gui_fields.h"
 #include "support/support.h"
 #include "ui/core_messages.h"
+#include "ui/dxf_import_dialog.h"
+#include "ui/figure_panel.h"
+#include "ui/job_document.h"
 #include "ui/language.h"
 #include "ui/station_window.h"
 
@@ -15,6 +18,8 @@
 #include <QHash>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -135,6 +140,69 @@ class TestGuiLanguages : public QObject {
             for (const QString& m : untranslated) qWarning("%s: %s", language, qPrintable(m));
             QVERIFY2(untranslated.isEmpty(), qPrintable(QString("%1: %2 untranslated").arg(language).arg(untranslated.size())));
         }
+    }
+
+    // The figure panel of a Japanese station: a statement refused by the
+    // parser, and one refused by the geometry, each listed as "line:column:"
+    // and why in Japanese, the names and words of the text as typed.
+    void figureRefusalsInJapanese()
+    {
+        speak("ja");
+        StationWindow w(test::sourcePath("resources/samples/cp-islands.taiwa"));
+        w.resize(1600, 940);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showFigure(true);
+        QPlainTextEdit* editor = w.findChild<QPlainTextEdit*>("figure.text");
+        QListWidget* refusals = w.findChild<QListWidget*>("figure.refusals");
+        QVERIFY(editor && refusals);
+        editor->moveCursor(QTextCursor::End);
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, "P10 = PIONT/1, 2");
+        const int line = editor->textCursor().blockNumber() + 1;
+        QTRY_COMPARE(refusals->count(), 1);
+        QCOMPARE(refusals->item(0)->text(),
+                 QString("%1:7: '=' の後には POINT、LINE、CIRCLE または CONTOUR が必要ですが、'PIONT' があります").arg(line));
+        // Two points in one place: no line through them, said by the evaluation.
+        for (int i = 0; i < 16; ++i) QTest::keyClick(editor, Qt::Key_Backspace);
+        QTest::keyClicks(editor, "P10 = POINT/1, 2");
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, "P11 = POINT/1, 2");
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTest::keyClicks(editor, "L20 = LINE/P10, P11");
+        QTRY_COMPARE(refusals->count(), 1);
+        QCOMPARE(refusals->item(0)->text(),
+                 QString("%1:1: L20: P10 と P11 が一致しています: 両点を通る直線がありません").arg(line + 2));
+    }
+
+    // The DXF import's report in Japanese: a drawing without its units and
+    // with a gap wider than the tolerance; the entities named as the
+    // messages name them ("レイヤ OPEN の LINE (DXF 9 行目)").
+    void dxfNotesInJapanese()
+    {
+        speak("ja");
+        const QString path = dir_.filePath("gap.dxf");
+        const auto line = [](double x1, double y1, double x2, double y2) {
+            return QString("0\nLINE\n8\nOPEN\n10\n%1\n20\n%2\n30\n0\n11\n%3\n21\n%4\n31\n0\n")
+                .arg(x1).arg(y1).arg(x2).arg(y2);
+        };
+        test::writeFile(path, ("0\nSECTION\n2\nENTITIES\n" + line(0, 0, 50, 0) + line(50.2, 0, 80, 20) +
+                               "0\nENDSEC\n0\nEOF\n").toStdString());
+        StationWindow w(test::sourcePath("resources/samples/cp-islands.taiwa"));
+        DxfImportDialog d(w.document()->job(), &w);
+        d.setPath(path);
+        const QString report = d.findChild<QPlainTextEdit*>("dxf.report")->toPlainText();
+        QVERIFY2(report.contains("図面に単位がありません ($INSUNITS が単位なしまたは未設定): mm として読み込みました"),
+                 qPrintable(report));
+        QVERIFY2(report.contains("隙間: (50.000, 0.000) で レイヤ OPEN の LINE (DXF 5 行目) と レイヤ OPEN の LINE (DXF 21 行目) "
+                                 "(端点は (50.200, 0.000)) の間に 0.2 mm の隙間があります。隙間の許容値は 0.01 mm です"),
+                 qPrintable(report));
+        QVERIFY2(!report.contains(" on layer ") && !report.contains("units"), qPrintable(report));
+        // A list of entities is translated item by item, not misread as one entity.
+        QCOMPARE(coreMessage("3 ends meet at (50.000, 0.000): LINE on layer A (DXF line 5), LINE on layer A (DXF line 37), "
+                             "ARC on layer B (DXF line 53); the nearest were joined, the rest left open"),
+                 QString("(50.000, 0.000) で 3 個の端点が集まっています: レイヤ A の LINE (DXF 5 行目), レイヤ A の LINE (DXF 37 "
+                         "行目), レイヤ B の ARC (DXF 53 行目)。最も近いものをつなぎ、残りは開いたままにしました"));
     }
 
     // Tools by their names and kinds as the step list and the tool library show them.

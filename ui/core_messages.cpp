@@ -35,11 +35,12 @@ struct Template {
     QRegularExpression pattern; // the English message, its arguments captured
     int literal = 0;            // characters outside the placeholders: the more, the more specific
     QString longest;            // its longest run of text, looked for before the expression is tried
+    QStringList separators;     // its runs of text between two arguments, of 4 characters or more
 };
 
 Template compile(const QString& source)
 {
-    Template t{source, {}, 0, {}};
+    Template t{source, {}, 0, {}, {}};
     QString pattern = QStringLiteral("^");
     qsizetype at = 0;
     const auto literal = [&](const QString& text) {
@@ -50,7 +51,9 @@ Template compile(const QString& source)
     };
     for (auto it = placeholder().globalMatch(source); it.hasNext();) {
         const auto m = it.next();
-        literal(source.mid(at, m.capturedStart() - at));
+        const QString text = source.mid(at, m.capturedStart() - at);
+        literal(text);
+        if (at > 0 && text.size() >= 4) t.separators << text;
         pattern += QStringLiteral("(.*?)");
         at = m.capturedEnd();
     }
@@ -107,6 +110,15 @@ QString translateText(const QString& text, const QStringList& sources,
             continue;
         const auto m = t.pattern.match(text);
         if (!m.hasMatch())
+            continue;
+        // An argument holding a separator of its own template is a list the
+        // template misread ("A on layer 0 (DXF line 5), B on layer 0 (DXF line
+        // 9)" read as one entity): another template ("{}, {}") reads it.
+        bool misread = false;
+        for (int i = 1; i <= m.lastCapturedIndex() && !misread; ++i)
+            for (const QString& s : t.separators)
+                misread = misread || m.captured(i).contains(s);
+        if (misread)
             continue;
         // A translation the same as its source ("T{} ({} Ø{} mm)") is one too: its arguments may be words.
         const QString translated = translate(t.source);

@@ -1,6 +1,8 @@
 // The station's DXF import (dxf_import_dialog.h).
 #include "ui/dxf_import_dialog.h"
 
+#include "ui/core_messages.h"
+
 #include "dxf/dxf_import.h"
 #include "figure/figure_units.h"
 #include "job/dxf_figure.h"
@@ -130,33 +132,33 @@ void DxfImportDialog::read(bool layersFromFile)
     QStringList lines;
     text_.clear();
     if (!r.ok()) {
-        lines << tr("Refused: %1").arg(QString::fromStdString(*r.error));
+        lines << tr("Refused: %1").arg(coreMessage(*r.error));
     } else if (none) {
         lines << tr("No layer is ticked.");
     } else {
         lines << tr("%1 closed and %2 open contours, drawn in %3.")
                      .arg(r.closedCount())
                      .arg(r.openCount())
-                     .arg(QString::fromStdString(r.units));
+                     .arg(coreMessage(r.units));
         if (r.smallGapsClosed > 0)
             lines << tr("%1 ends joined over gaps within the tolerance; the largest %2 mm.")
                          .arg(r.smallGapsClosed)
                          .arg(r.largestGapClosed, 0, 'g', 3);
-        for (const auto& g : r.gaps) lines << tr("Gap: %1").arg(QString::fromStdString(g.message));
-        for (const auto& b : r.branches) lines << tr("Branch: %1").arg(QString::fromStdString(b.message));
+        for (const auto& g : r.gaps) lines << tr("Gap: %1").arg(coreMessage(g.message));
+        for (const auto& b : r.branches) lines << tr("Branch: %1").arg(coreMessage(b.message));
         std::vector<Contour> contours;
         for (const auto& c : r.contours) contours.push_back(c.contour);
         FigureNaming naming;
         naming.taken = figureNames(job_.figure);
         const FigureFromContours f = figureFromContours(contours, naming);
-        for (const auto& n : f.notes) lines << QString::fromStdString(n);
-        for (const auto& x : f.refusals) lines << QString::fromStdString(x);
+        for (const auto& n : f.notes) lines << coreMessage(n);
+        for (const auto& x : f.refusals) lines << coreMessage(x);
         // The figure is in mm here; the job's text is in its own unit.
         text_ = job_.lengthUnit == LengthUnit::Inch
                     ? figure::convertFigureLengths(f.text, [](double v) { return v / 25.4; })
                     : f.text;
     }
-    for (const auto& w : r.warnings) lines << QString::fromStdString(w);
+    for (const auto& w : r.warnings) lines << coreMessage(w);
     report_->setPlainText(lines.join('\n'));
     preview_->setPlainText(QString::fromStdString(text_));
     buttons_->button(QDialogButtonBox::Ok)->setEnabled(!text_.empty());

@@ -4,6 +4,7 @@
 
 #include "figure/figure_contour.h"
 #include "figure/figure_text.h"
+#include "ui/core_messages.h"
 #include "ui/job_document.h"
 #include "ui/passes_bar.h"
 
@@ -64,6 +65,12 @@ public:
 }  // namespace
 
 namespace {
+
+// A refusal as the list shows it, "3:12: why", the why in the station's language.
+QString refusalText(const figure::FigureError& e)
+{
+    return QStringLiteral("%1:%2: %3").arg(e.line).arg(e.column).arg(coreMessage(e.message));
+}
 
 // The corner `ref` names, or nullptr.
 const ContourCorner* pickedCornerOf(const figure::Evaluation& e, const std::optional<CornerRef>& ref)
@@ -231,7 +238,7 @@ void FigurePanel::evaluateText()
     view_->setFigure(std::move(evaluated), job.stock, fit);
     refusals_->clear();
     for (const figure::FigureError& e : errors_) {
-        auto* item = new QListWidgetItem(QString::fromStdString(e.text()), refusals_);
+        auto* item = new QListWidgetItem(refusalText(e), refusals_);
         item->setData(Qt::UserRole, e.line);
         item->setData(Qt::UserRole + 1, e.column);
         item->setForeground(kRefusal);

@@ -4,6 +4,7 @@
 // ends left open reported when another is near.
 #include "dxf/dxf_chain.h"
 
+#include "model/translate_noop.h"
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -145,11 +146,21 @@ ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double repo
             std::string names;
             for (int x : ends) {
                 b.entities.push_back(pieces[pieceOf(x)].source);
-                if (b.entities.size() <= 4) names += (names.empty() ? "" : ", ") + b.entities.back().text();
+                if (b.entities.size() <= 4)
+                    names = names.empty() ? b.entities.back().text()
+                                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {}"), names, b.entities.back().text());
             }
-            b.message = fmt::format("{} ends meet at {}{}: {}{}; the nearest were joined, the rest left open",
-                                    crowd ? "more than " + std::to_string(kMaxScan) : std::to_string(ends.size()),
-                                    at(b.at), crowd ? " or near it" : "", names, ends.size() > 4 ? ", …" : "");
+            // One whole sentence for each case, for the station's translation.
+            const bool more = ends.size() > 4;
+            b.message =
+                crowd ? (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}, …; the nearest were joined, the rest left open"),
+                                            kMaxScan, at(b.at), names)
+                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}; the nearest were joined, the rest left open"),
+                                            kMaxScan, at(b.at), names))
+                      : (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}, …; the nearest were joined, the rest left open"),
+                                            ends.size(), at(b.at), names)
+                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}; the nearest were joined, the rest left open"),
+                                            ends.size(), at(b.at), names));
             out.branches.push_back(std::move(b));
         }
         clusters.erase(it);
@@ -238,7 +249,7 @@ ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double repo
     for (const auto& [a, b] : gapPairs) {
         DxfGap g{grid.end(a), grid.end(b), distance(grid.end(a), grid.end(b)), pieces[pieceOf(a)].source,
                  pieces[pieceOf(b)].source, {}};
-        g.message = fmt::format("gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm",
+        g.message = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm"),
                                 g.size, at(g.at), g.a.text(), g.b.text(), at(g.other), tolerance);
         out.gaps.push_back(std::move(g));
     }

@@ -3,6 +3,8 @@
 // algorithm and the adaptive replacement of curves by lines.
 #include "dxf/dxf_geometry.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -89,13 +91,13 @@ public:
         const bool planar = e.type == RawEntity::Type::Line || e.type == RawEntity::Type::Spline ||
                             (e.type == RawEntity::Type::Polyline && (e.flags & 8));
         if (!planar && plane == Plane::Tilted) {
-            skip(fmt::format("its plane is not the XY plane (extrusion {:.4g}, {:.4g}, {:.4g})", e.extrusion[0],
+            skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its plane is not the XY plane (extrusion {:.4g}, {:.4g}, {:.4g})"), e.extrusion[0],
                              e.extrusion[1], e.extrusion[2]));
             return;
         }
         switch (e.type) {
         case RawEntity::Type::Line:
-            if (std::abs(e.a[2] - e.b[2]) > kFlat) return skip("it leaves the XY plane (its ends differ in Z)");
+            if (std::abs(e.a[2] - e.b[2]) > kFlat) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it leaves the XY plane (its ends differ in Z)"));
             return single(ContourSegment::line({scale_ * e.a[0], scale_ * e.a[1]}, {scale_ * e.b[0], scale_ * e.b[1]}));
         case RawEntity::Type::Arc:
         case RawEntity::Type::Circle: return arc(e, plane);
@@ -107,18 +109,18 @@ public:
     }
 
 private:
-    void skip(const std::string& why) { notes_.add(fmt::format("{} not read: {}", ref_.text(), why)); }
+    void skip(const std::string& why) { notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} not read: {}"), ref_.text(), why)); }
 
     void single(const ContourSegment& s, bool closed = false)
     {
-        if (!closed && distance(s.start, s.end) < kMinLength) return skip("it has no length");
+        if (!closed && distance(s.start, s.end) < kMinLength) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no length"));
         out_.push_back({{s}, ref_, closed});
     }
 
     void arc(const RawEntity& e, Plane plane)
     {
         const double r = e.radius;
-        if (!(r * scale_ >= kMinLength)) return skip(fmt::format("its radius {:g} is not positive", r));
+        if (!(r * scale_ >= kMinLength)) return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its radius {:g} is not positive"), r));
         const bool circle = e.type == RawEntity::Type::Circle;
         double sweep = circle ? 360.0 : std::fmod(e.angle2 - e.angle1, 360.0);
         if (sweep <= 0) sweep += 360.0;  // equal angles: a full circle
@@ -135,13 +137,13 @@ private:
         const double ratio = e.radius;
         const Point2 c{scale_ * e.a[0], scale_ * e.a[1]};
         const Point2 major{scale_ * e.b[0], scale_ * e.b[1]};
-        if (std::abs(e.b[2]) > kFlat) return skip("its major axis leaves the XY plane");
+        if (std::abs(e.b[2]) > kFlat) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its major axis leaves the XY plane"));
         if (!(ratio > 1e-9 && ratio <= 1e3) || length(major) < kMinLength)
-            return skip(fmt::format("it is degenerate (axis {:g}, ratio {:g})", length(major), ratio));
+            return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it is degenerate (axis {:g}, ratio {:g})"), length(major), ratio));
         const double s = plane == Plane::Up ? 1.0 : -1.0;
         const Point2 minor = ratio * Point2{-s * major.y, s * major.x};
         double t1 = e.angle1, t2 = e.angle2;
-        if (!(std::abs(t1) < 1e3 && std::abs(t2) < 1e3)) return skip("its parameters are out of range");
+        if (!(std::abs(t1) < 1e3 && std::abs(t2) < 1e3)) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its parameters are out of range"));
         while (t2 <= t1) t2 += 2 * kPi;
         const bool full = t2 - t1 >= 2 * kPi - 1e-12;
         const auto at = [&](double t) { return c + std::cos(t) * major + std::sin(t) * minor; };
@@ -155,7 +157,7 @@ private:
         for (int i = 0; i < parts; ++i) {
             const double a = t1 + (t2 - t1) * i / parts, b = t1 + (t2 - t1) * (i + 1) / parts;
             if (!subdivide(at, a, b, pts.back(), at(b), tol_, 0, pts, budget))
-                return skip(fmt::format("it needs more than {} lines at the spline tolerance", kMaxPerEntity));
+                return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it needs more than {} lines at the spline tolerance"), kMaxPerEntity));
         }
         if (full) pts.back() = pts.front();
         lines(pts, full);
@@ -169,7 +171,7 @@ private:
                 const Point2 from = piece.segments.empty() ? pts[i - 1] : piece.segments.back().end;
                 piece.segments.push_back(ContourSegment::line(from, pts[i]));
             }
-        if (piece.segments.empty()) return skip("it has no length");
+        if (piece.segments.empty()) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no length"));
         out_.push_back(std::move(piece));
     }
 
@@ -180,7 +182,7 @@ private:
         const auto& v = e.vertices;
         if (is3d) {
             const auto [lo, hi] = std::minmax_element(v.begin(), v.end(), [](auto& a, auto& b) { return a.z < b.z; });
-            if (!v.empty() && hi->z - lo->z > kFlat) return skip("it leaves the XY plane (its vertices differ in Z)");
+            if (!v.empty() && hi->z - lo->z > kFlat) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it leaves the XY plane (its vertices differ in Z)"));
         }
         Piece piece{{}, ref_, closed};
         const std::size_t n = v.size(), count = closed ? n : (n == 0 ? 0 : n - 1);
@@ -193,7 +195,7 @@ private:
             if (chord < kMinLength) continue;
             const double bulge = is3d ? 0.0 : va.bulge;
             if (std::abs(bulge) < 1e-12 || std::abs(bulge) > 1e6) {
-                if (std::abs(bulge) > 1e6) notes_.add(fmt::format("{}: a bulge of {:g} read as a straight line", ref_.text(), bulge));
+                if (std::abs(bulge) > 1e6) notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: a bulge of {:g} read as a straight line"), ref_.text(), bulge));
                 piece.segments.push_back(ContourSegment::line(piece.segments.empty() ? p : piece.segments.back().end, q));
                 continue;
             }
@@ -207,7 +209,7 @@ private:
             const Point2 centre = mid + (chord * (1 - b * b) / (4 * b)) * left;
             piece.segments.push_back(ContourSegment::arc(p, q, centre, ccw));
         }
-        if (piece.segments.empty()) return skip(fmt::format("its {} vertices give no segment", n));
+        if (piece.segments.empty()) return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its {} vertices give no segment"), n));
         if (closed && piece.segments.back().end != piece.segments.front().start) piece.closedByItself = false;
         out_.push_back(std::move(piece));
     }
@@ -218,19 +220,19 @@ private:
         const auto& U = e.knots;
         const int p = e.degree;
         const std::size_t n = cp.size();
-        if (n == 0) return skip(e.fitPoints > 0 ? "it is given by fit points only, without control points" : "it has no control points");
-        if (p < 1 || p > 20) return skip(fmt::format("its degree {} is not 1 to 20", p));
+        if (n == 0) return skip(e.fitPoints > 0 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "it is given by fit points only, without control points") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no control points"));
+        if (p < 1 || p > 20) return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its degree {} is not 1 to 20"), p));
         const std::size_t deg = static_cast<std::size_t>(p);
         if (n < deg + 1 || U.size() != n + deg + 1)
-            return skip(fmt::format("{} knots do not fit {} control points of degree {}", U.size(), n, p));
+            return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} knots do not fit {} control points of degree {}"), U.size(), n, p));
         for (std::size_t i = 1; i < U.size(); ++i)
-            if (!(U[i] >= U[i - 1])) return skip("its knots decrease");
-        if (!(U[n] > U[deg])) return skip("its knots span nothing");
+            if (!(U[i] >= U[i - 1])) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its knots decrease"));
+        if (!(U[n] > U[deg])) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its knots span nothing"));
         const auto [lo, hi] = std::minmax_element(cp.begin(), cp.end(), [](auto& a, auto& b) { return a.z < b.z; });
-        if (hi->z - lo->z > kFlat) return skip("it leaves the XY plane (its control points differ in Z)");
+        if (hi->z - lo->z > kFlat) return skip(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it leaves the XY plane (its control points differ in Z)"));
         std::vector<std::array<double, 3>> pw;  // homogeneous: x·w, y·w, w
         for (const RawVertex& v : cp) {
-            if (!(v.bulge > 0 && std::isfinite(v.bulge))) return skip(fmt::format("a weight {:g} is not positive", v.bulge));
+            if (!(v.bulge > 0 && std::isfinite(v.bulge))) return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a weight {:g} is not positive"), v.bulge));
             pw.push_back({scale_ * v.x * v.bulge, scale_ * v.y * v.bulge, v.bulge});
         }
         std::vector<Point2> pts;
@@ -255,7 +257,7 @@ private:
             }
             if (pts.empty()) pts.push_back(first);
             if (!subdivide(at, U[k], U[k + 1], pts.back(), at(U[k + 1]), tol_, 0, pts, budget))
-                return skip(fmt::format("it needs more than {} lines at the spline tolerance", kMaxPerEntity));
+                return skip(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it needs more than {} lines at the spline tolerance"), kMaxPerEntity));
         }
         lines(pts, false);
     }
@@ -292,7 +294,7 @@ std::optional<std::string> buildPieces(const std::vector<RawEntity>& entities, d
         b.add(e);
         for (std::size_t i = before; i < out.size(); ++i) segments += out[i].segments.size();
         if (segments > segmentBudget)
-            return fmt::format("the drawing needs more than {} segments: too large or too fine a spline tolerance", segmentBudget);
+            return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the drawing needs more than {} segments: too large or too fine a spline tolerance"), segmentBudget);
     }
     return std::nullopt;
 }

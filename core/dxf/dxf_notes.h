@@ -2,6 +2,10 @@
 // first hundred only a count of the rest. Internal to core/dxf/.
 #pragma once
 
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
+
 #include <string>
 #include <vector>
 
@@ -16,7 +20,8 @@ public:
     }
     std::vector<std::string> take()
     {
-        if (suppressed_ > 0) list_.push_back("… and " + std::to_string(suppressed_) + " more warnings like these");
+        if (suppressed_ > 0)
+            list_.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "… and {} more warnings like these"), suppressed_));
         suppressed_ = 0;
         return std::move(list_);
     }

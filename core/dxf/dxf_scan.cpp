@@ -3,6 +3,8 @@
 // and rewrites every count.
 #include "dxf/dxf_scan.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -67,7 +69,7 @@ public:
         int code = 0;
         const auto r = std::from_chars(c.data(), c.data() + c.size(), code);
         if (c.empty() || r.ec != std::errc{} || r.ptr != c.data() + c.size() || code < -5 || code > 1071) {
-            error = fmt::format("line {}: '{}' stands where a DXF group code belongs: not a DXF file, or a damaged one",
+            error = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: '{}' stands where a DXF group code belongs: not a DXF file, or a damaged one"),
                                 codeLineNo, shorten(codeLine));
             return false;
         }
@@ -205,12 +207,15 @@ public:
     void finish()
     {
         if (!polyline_.empty()) finishPolyline(false);
-        if (paperSpace_ > 0) notes_.add(fmt::format("{} entities in paper space not read", paperSpace_));
+        if (paperSpace_ > 0) notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} entities in paper space not read"), paperSpace_));
         if (!ignored_.empty()) {
             std::string list;
-            for (const auto& [type, n] : ignored_) list += fmt::format("{}{} {}", list.empty() ? "" : ", ", n, type);
-            notes_.add("not read (no contour geometry): " + list +
-                       (ignored_.count("INSERT") ? " — block references are not expanded: explode them in the CAD program" : ""));
+            for (const auto& [type, n] : ignored_)
+                list = list.empty() ? fmt::format("{} {}", n, type)
+                                    : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {}"), list, fmt::format("{} {}", n, type));
+            notes_.add(ignored_.count("INSERT")
+                           ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not read (no contour geometry): {} — block references are not expanded: explode them in the CAD program"), list)
+                           : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not read (no contour geometry): {}"), list));
         }
         for (auto& [key, info] : layers_) out_.layers.push_back(info);
     }
@@ -232,9 +237,9 @@ private:
     {
         const Entity& head = polyline_.front();
         const int flags = head.intValue(70, 0);
-        if (!sawSeqend) notes_.add(fmt::format("line {}: POLYLINE without SEQEND, read up to its last VERTEX", head.line));
+        if (!sawSeqend) notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: POLYLINE without SEQEND, read up to its last VERTEX"), head.line));
         if (flags & (16 | 64)) {
-            notes_.add(fmt::format("line {}: POLYLINE mesh or polyface (flags {}) is no contour: not read", head.line, flags));
+            notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: POLYLINE mesh or polyface (flags {}) is no contour: not read"), head.line, flags));
         } else {
             std::string text;
             bool ok = clean(head, text);
@@ -265,14 +270,14 @@ private:
             if (isRealCode(p.code)) {
                 const auto d = parseReal(p.value);
                 if (!d) {
-                    notes_.add(fmt::format("line {}: {} not read: '{}' is not a finite number (within ±1e12)", p.line,
+                    notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: {} not read: '{}' is not a finite number (within ±1e12)"), p.line,
                                            e.type, shorten(p.value)));
                     return false;
                 }
                 value = std::string_view(buf, static_cast<std::size_t>(std::to_chars(buf, buf + sizeof buf, *d).ptr - buf));
             } else if (p.code >= 60 && p.code <= 99) {
                 if (!parseInt(p.value)) {
-                    notes_.add(fmt::format("line {}: {} not read: '{}' is not an integer", p.line, e.type, shorten(p.value)));
+                    notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: {} not read: '{}' is not an integer"), p.line, e.type, shorten(p.value)));
                     return false;
                 }
             }
@@ -286,7 +291,7 @@ private:
         if (e.type == "LWPOLYLINE") counts = fmt::format("90\n{}\n", n10);
         if (e.type == "SPLINE") {
             if (n41 != 0 && n41 != n10) {
-                notes_.add(fmt::format("line {}: SPLINE not read: {} weights for {} control points", e.line, n41, n10));
+                notes_.add(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "line {}: SPLINE not read: {} weights for {} control points"), e.line, n41, n10));
                 return false;
             }
             counts = fmt::format("72\n{}\n73\n{}\n74\n{}\n", n40, n10, n11);
@@ -320,11 +325,11 @@ bool sameLayerName(std::string_view a, std::string_view b) { return upper(trim(a
 ScanResult scanDxf(std::string_view bytes, const std::vector<std::string>& selectedLayers, Notes& notes)
 {
     ScanResult out;
-    if (bytes.empty()) return failed("the file is empty");
-    if (bytes.size() > kMaxBytes) return failed(fmt::format("the file is larger than {} MB", kMaxBytes >> 20));
+    if (bytes.empty()) return failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file is empty"));
+    if (bytes.size() > kMaxBytes) return failed(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file is larger than {} MB"), kMaxBytes >> 20));
     if (bytes.substr(0, 18) == "AutoCAD Binary DXF")
-        return failed("a binary DXF: save the drawing as an ASCII DXF (R12 or later)");
-    if (bytes.find('\0') != std::string_view::npos) return failed("not a DXF file: it holds binary data");
+        return failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a binary DXF: save the drawing as an ASCII DXF (R12 or later)"));
+    if (bytes.find('\0') != std::string_view::npos) return failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a DXF file: it holds binary data"));
 
     PairReader reader(bytes);
     Filter filter(out, notes, selectedLayers);
@@ -334,7 +339,7 @@ ScanResult scanDxf(std::string_view bytes, const std::vector<std::string>& selec
     std::optional<Entity> entity;
     while (reader.next(p, out.error)) {
         if (first && p.code != 0 && p.code != 999)
-            return failed(fmt::format("not a DXF file: it starts with '{}'", shorten(p.value)));
+            return failed(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a DXF file: it starts with '{}'"), shorten(p.value)));
         first = false;
         const std::string_view v = trim(p.value);
         if (expectSectionName) {
@@ -376,14 +381,14 @@ ScanResult scanDxf(std::string_view bytes, const std::vector<std::string>& selec
     if (out.error) return failed(*out.error);
     if (entity) filter.entity(std::move(*entity));
     filter.finish();
-    if (!sawSection) return failed("not a DXF file: it has no SECTION");
+    if (!sawSection) return failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a DXF file: it has no SECTION"));
     if (!sawEntities) {
-        ScanResult f = failed("the DXF file has no ENTITIES section");
+        ScanResult f = failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the DXF file has no ENTITIES section"));
         f.layers = std::move(out.layers);
         return f;
     }
-    if (!sawEof) notes.add(reader.truncated ? "the file ends in the middle of a group: it may be cut short"
-                                            : "the file ends without EOF: it may be cut short");
+    if (!sawEof) notes.add(reader.truncated ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file ends in the middle of a group: it may be cut short")
+                                            : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file ends without EOF: it may be cut short"));
     out.entities = "0\nSECTION\n2\nENTITIES\n" + out.entities + "0\nENDSEC\n0\nEOF\n";
     return out;
 }

@@ -5,6 +5,9 @@
 #include "figure/figure_contour.h"
 
 #include "figure/figure_eval.h"
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -92,25 +95,27 @@ std::vector<Point2> crossings(const Run& a, const Run& b)
 // choosing where they meet twice.
 Point2 junction(const Run& a, const Run& b, std::optional<Modifier> m)
 {
-    const std::string both = a.name + " and " + b.name;
     const auto pts = crossings(a, b);
     if (pts.empty()) {
-        if (!a.circle && !b.circle) throw Refused{both + " are parallel: they do not meet", b.at};
+        if (!a.circle && !b.circle) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not meet"), a.name, b.name), b.at};
         if (a.circle && b.circle && distance(a.c.centre, b.c.centre) <= kTolerance)
-            throw Refused{both + " are concentric: they do not meet", b.at};
-        throw Refused{both + " do not meet", b.at};
+            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not meet"), a.name, b.name), b.at};
+        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), a.name, b.name), b.at};
     }
     if (pts.size() == 1) return pts[0];
     if (!m)
-        throw Refused{both + " meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before " + b.name + " to choose", b.at};
+        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before {} to choose"),
+                                  a.name, b.name, b.name),
+                      b.at};
     const bool byX = *m == Modifier::XLarge || *m == Modifier::XSmall;
     const bool large = *m == Modifier::XLarge || *m == Modifier::YLarge;
     const double k0 = byX ? pts[0].x : pts[0].y;
     const double k1 = byX ? pts[1].x : pts[1].y;
     if (std::abs(k0 - k1) <= kTolerance)
-        throw Refused{std::string(keyword(*m)) + " cannot choose between the two junctions of " + both +
-                          ": both have the same " + (byX ? "x" : "y") + "; use " +
-                          (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL"),
+        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two junctions of {} and {}: both have the same x; use YLARGE or YSMALL"),
+                                        keyword(*m), a.name, b.name)
+                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two junctions of {} and {}: both have the same y; use XLARGE or XSMALL"),
+                                        keyword(*m), a.name, b.name),
                       b.at};
     return ((k0 > k1) == large) ? pts[0] : pts[1];
 }
@@ -178,8 +183,8 @@ public:
         }
         if (runs_.empty()) throw std::logic_error("figure: a contour without elements");
         if (!c_.closed()) {
-            start_ = pointOn(before, c_.start, c_.startAt, runs_.front(), "starts on its first");
-            end_ = pointOn(before, c_.end, c_.endAt, runs_.back(), "ends on its last");
+            start_ = pointOn(before, c_.start, c_.startAt, runs_.front(), TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not on {}: an open contour starts on its first element"));
+            end_ = pointOn(before, c_.end, c_.endAt, runs_.back(), TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not on {}: an open contour ends on its last element"));
         }
     }
 
@@ -235,7 +240,7 @@ public:
         for (const auto& s : out.contour.segments)
             for (const Point2 q : {s.start, s.end, s.centre})
                 if (!std::isfinite(q.x) || !std::isfinite(q.y))
-                    throw Refused{"its coordinates cannot be computed (a degenerate definition)", {}};
+                    throw Refused{TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)"), {}};
         return out;
     }
 
@@ -249,7 +254,7 @@ private:
         const Point2 p = e->point;
         const Point2 f = foot(r, p);
         if (!(distance(p, f) <= kOnElement))
-            throw Refused{name + " is not on " + r.name + ": an open contour " + where + " element", at};
+            throw Refused{fmt::format(fmt::runtime(where), name, r.name), at};
         return f;
     }
 
@@ -273,7 +278,8 @@ private:
         if (!p.run->circle) {
             p.len = distance(a, b);
             if (p.len <= kTolerance)
-                throw Refused{p.run->name + " is of zero length between " + before(k) + " and " + after(k), p.run->at};
+                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is of zero length between {} and {}"), p.run->name, before(k), after(k)),
+                              p.run->at};
         } else if (distance(a, b) <= kTolerance) {  // from a point round to the same point: the whole circle
             p.b = p.end = a;
             p.len = kTwoPi * p.run->c.radius;
@@ -290,15 +296,17 @@ private:
         Piece& p2 = pieces_[k];
         const ContourStep& s = c_.steps[i];
         const bool round = s.corner == CornerKind::Round;
-        const std::string what = std::string(round ? "ROUND " : "CHAMF ") + formatNumber(s.value) + " between " +
-                                 p1.run->name + " and " + p2.run->name;
+        const std::string what =
+            round ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "ROUND {} between {} and {}"), formatNumber(s.value), p1.run->name, p2.run->name)
+                  : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "CHAMF {} between {} and {}"), formatNumber(s.value), p1.run->name, p2.run->name);
         const Point2 at = p1.b;
         const Point2 d1 = directionAt(p1, at), d2 = directionAt(p2, at);
         const double turn = cross(d1, d2);
         if (std::abs(turn) <= 1e-9)
-            throw Refused{what + (dot(d1, d2) > 0 ? ": they meet tangentially, there is no corner"
-                                                   : ": " + p2.run->name + " turns back along " + p1.run->name +
-                                                         ", there is no corner"),
+            throw Refused{dot(d1, d2) > 0
+                              ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: they meet tangentially, there is no corner"), what)
+                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {} turns back along {}, there is no corner"), what, p2.run->name,
+                                            p1.run->name),
                           s.valueAt};
         const double side = turn > 0 ? 1.0 : -1.0;
         Point2 t1, t2, centre;
@@ -307,8 +315,8 @@ private:
             const Run o1 = offset(*p1.run, side, s.value, at, d1), o2 = offset(*p2.run, side, s.value, at, d2);
             for (const Run* r : {p1.run, p2.run})
                 if (r->circle && (r == p1.run ? o1 : o2).c.radius <= kTolerance)
-                    throw Refused{what + " does not fit: it is not smaller than " + r->name + "'s radius " +
-                                      formatNumber(r->c.radius),
+                    throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: it is not smaller than {}'s radius {}"), what, r->name,
+                                              formatNumber(r->c.radius)),
                                   s.valueAt};
             double best = HUGE_VAL;
             for (const Point2 c : crossings(o1, o2)) {
@@ -324,8 +332,8 @@ private:
                 centre = c;
             }
             if (best == HUGE_VAL)
-                throw Refused{what + " does not fit: no circle of radius " + formatNumber(s.value) +
-                                  " touches both in the corner",
+                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: no circle of radius {} touches both in the corner"), what,
+                                          formatNumber(s.value)),
                               s.valueAt};
         } else {
             t1 = walk(p1, at, s.value, -1);
@@ -334,12 +342,16 @@ private:
         const double room1 = p1.len - p1.cutStart, room2 = p2.len - p2.cutEnd;
         const bool openStart = i == 0 && !c_.closed(), openEnd = k + 1 == runs_.size() && !c_.closed();
         if (back > room1 + kTolerance)
-            throw Refused{what + " does not fit: " + p1.run->name + " is " + mm(room1) + " mm long " +
-                              (openStart ? "from the start " + c_.start : std::string("from the previous corner")),
+            throw Refused{openStart ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long from the start {}"), what,
+                                                  p1.run->name, mm(room1), c_.start)
+                                    : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long from the previous corner"), what,
+                                                  p1.run->name, mm(room1)),
                           s.valueAt};
         if (fwd > room2 + kTolerance)
-            throw Refused{what + " does not fit: " + p2.run->name + " is " + mm(room2) + " mm long " +
-                              (openEnd ? "to the end " + c_.end : std::string("to the next corner")),
+            throw Refused{openEnd ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long to the end {}"), what,
+                                                p2.run->name, mm(room2), c_.end)
+                                  : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long to the next corner"), what,
+                                                p2.run->name, mm(room2)),
                           s.valueAt};
         p1.end = t1;
         p1.cutEnd = back;

@@ -3,6 +3,10 @@
 // element or more than the modifiers can choose between.
 #include "figure/figure_eval.h"
 
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -37,6 +41,8 @@ struct Refused {
 
 std::string num(double v) { return formatNumber(v); }
 
+constexpr const char* kCoincide = TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no circle through three points");
+
 // Of two candidates, the one the modifier names; a tie is refused.
 Point2 choose(Point2 a, Point2 b, Modifier m, const std::string& what)
 {
@@ -46,8 +52,10 @@ Point2 choose(Point2 a, Point2 b, Modifier m, const std::string& what)
     const double kb = byX ? b.x : b.y;
     if (std::abs(ka - kb) <= kTolerance) {
         if (length(a - b) <= kTolerance) return a;  // one candidate (touching): nothing to choose
-        throw Refused{std::string(keyword(m)) + " cannot choose between the two " + what + ": both have the same " +
-                      (byX ? "x" : "y") + "; use " + (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL")};
+        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two {}: both have the same x; use YLARGE or YSMALL"),
+                                        keyword(m), what)
+                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two {}: both have the same y; use XLARGE or XSMALL"),
+                                        keyword(m), what)};
     }
     return ((ka > kb) == large) ? a : b;
 }
@@ -61,15 +69,17 @@ Point2 sideNormal(const Line& l, Modifier m, const std::string& lineName)
     const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
     const double k = byX ? n.x : n.y;
     if (std::abs(k) <= 1e-12)
-        throw Refused{std::string(keyword(m)) + " names no side of " + lineName + ": it is parallel to the " +
-                      (byX ? "X" : "Y") + " axis; use " + (byX ? "YLARGE or YSMALL" : "XLARGE or XSMALL")};
+        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} names no side of {}: it is parallel to the X axis; use YLARGE or YSMALL"),
+                                        keyword(m), lineName)
+                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} names no side of {}: it is parallel to the Y axis; use XLARGE or XSMALL"),
+                                        keyword(m), lineName)};
     return ((k > 0) == large) ? n : -1.0 * n;
 }
 
 Point2 intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
 {
     const double det = cross(a.dir, b.dir);
-    if (std::abs(det) <= 1e-12) throw Refused{an + " and " + bn + " are parallel: they do not intersect"};
+    if (std::abs(det) <= 1e-12) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not intersect"), an, bn)};
     const double t = cross(b.point - a.point, b.dir) / det;
     return a.point + t * a.dir;
 }
@@ -88,9 +98,9 @@ std::pair<Point2, Point2> intersectCircles(const Circle& a, const Circle& b, con
 {
     const Point2 d = b.centre - a.centre;
     const double dist = length(d);
-    if (dist <= kTolerance) throw Refused{an + " and " + bn + " are concentric: they do not intersect"};
+    if (dist <= kTolerance) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not intersect"), an, bn)};
     if (dist > a.radius + b.radius + kTolerance || dist < std::abs(a.radius - b.radius) - kTolerance)
-        throw Refused{an + " and " + bn + " do not meet"};
+        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), an, bn)};
     const Point2 e = (1.0 / dist) * d;
     const double along = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
     const double h = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
@@ -127,7 +137,7 @@ public:
             const Point2 b = point(d.refs.at(1));
             const double len = length(b - a);
             if (len <= kTolerance)
-                throw Refused{d.refs[0] + " and " + d.refs[1] + " coincide: no line through them"};
+                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no line through them"), d.refs[0], d.refs[1])};
             e.line = {a, (1.0 / len) * (b - a)};
             break;
         }
@@ -177,16 +187,16 @@ private:
     {
         const Element& a = get(d.refs.at(0));
         const Element& b = get(d.refs.at(1));
-        const std::string both = d.refs[0] + " and " + d.refs[1];
         if (a.kind == Kind::Line && b.kind == Kind::Line) return intersectLines(a.line, b.line, d.refs[0], d.refs[1]);
         std::pair<Point2, Point2> two;
         if (a.kind == Kind::Circle && b.kind == Kind::Circle)
             two = intersectCircles(a.circle, b.circle, d.refs[0], d.refs[1]);
         else if (a.kind == Kind::Line)
-            two = intersectLineCircle(a.line, b.circle, both + " do not meet");
+            two = intersectLineCircle(a.line, b.circle, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), d.refs[0], d.refs[1]));
         else
-            two = intersectLineCircle(b.line, a.circle, both + " do not meet");
-        return choose(two.first, two.second, d.modifiers.at(0), "intersections of " + both);
+            two = intersectLineCircle(b.line, a.circle, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), d.refs[0], d.refs[1]));
+        return choose(two.first, two.second, d.modifiers.at(0),
+                      fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "intersections of {} and {}"), d.refs[0], d.refs[1]));
     }
 
     // LINE/P, LEFT|RIGHT, TANTO, C: looking from P to the centre, the tangent
@@ -199,7 +209,7 @@ private:
         const Point2 toC = c.centre - p;
         const double dist = length(toC);
         if (dist < c.radius - kTolerance || dist <= kTolerance)
-            throw Refused{d.refs[0] + " is inside " + d.refs[1] + ": no tangent from it"};
+            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is inside {}: no tangent from it"), d.refs[0], d.refs[1])};
         const Point2 u = (1.0 / dist) * toC;
         const double t = std::sqrt(std::max(0.0, dist * dist - c.radius * c.radius));
         const double s = d.modifiers.at(0) == Modifier::Left ? 1.0 : -1.0;
@@ -217,15 +227,15 @@ private:
     {
         const Circle& c1 = circle(d.refs.at(0));
         const Circle& c2 = circle(d.refs.at(1));
-        const std::string both = d.refs[0] + " and " + d.refs[1];
         const Point2 between = c2.centre - c1.centre;
         const double dist = length(between);
-        if (dist <= kTolerance) throw Refused{both + " are concentric: no common tangent"};
+        if (dist <= kTolerance) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: no common tangent"), d.refs[0], d.refs[1])};
         const bool same = d.modifiers.at(0) == d.modifiers.at(1);
         const double a = (same ? c1.radius - c2.radius : c1.radius + c2.radius) / dist;
         if (std::abs(a) > 1.0 + 1e-12)
-            throw Refused{same ? both + " lie one inside the other: no tangent on the same side of both"
-                               : both + " overlap: no tangent crossing between them"};
+            throw Refused{same ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} lie one inside the other: no tangent on the same side of both"),
+                                             d.refs[0], d.refs[1])
+                               : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} overlap: no tangent crossing between them"), d.refs[0], d.refs[1])};
         const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
         const double s = d.modifiers[0] == Modifier::Left ? 1.0 : -1.0;
         const Point2 u = (1.0 / dist) * between;
@@ -238,14 +248,14 @@ private:
         const std::string& n0 = d.refs[0];
         const std::string& n1 = d.refs[1];
         const std::string& n2 = d.refs[2];
-        if (length(b - a) <= kTolerance) throw Refused{n0 + " and " + n1 + " coincide: no circle through three points"};
-        if (length(c - a) <= kTolerance) throw Refused{n0 + " and " + n2 + " coincide: no circle through three points"};
-        if (length(c - b) <= kTolerance) throw Refused{n1 + " and " + n2 + " coincide: no circle through three points"};
+        if (length(b - a) <= kTolerance) throw Refused{fmt::format(kCoincide, n0, n1)};
+        if (length(c - a) <= kTolerance) throw Refused{fmt::format(kCoincide, n0, n2)};
+        if (length(c - b) <= kTolerance) throw Refused{fmt::format(kCoincide, n1, n2)};
         const Point2 ab = b - a;
         const Point2 ac = c - a;
         const double det = 2 * cross(ab, ac);
         if (std::abs(det) <= 1e-12 * length(ab) * length(ac))
-            throw Refused{n0 + ", " + n1 + " and " + n2 + " lie on one line: no circle through them"};
+            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {} and {} lie on one line: no circle through them"), n0, n1, n2)};
         // Centre relative to a: solves 2 ab·o = |ab|², 2 ac·o = |ac|².
         const double ab2 = dot(ab, ab);
         const double ac2 = dot(ac, ac);
@@ -269,15 +279,16 @@ private:
         const Circle& c = circle(d.refs.at(1));
         const bool out = d.modifiers.at(2) == Modifier::Out;
         if (!out && r >= c.radius - kTolerance)
-            throw Refused{"radius " + num(r) + " is not smaller than " + d.refs[1] + "'s radius " + num(c.radius) +
-                          ": no circle inside it"};
+            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "radius {} is not smaller than {}'s radius {}: no circle inside it"), num(r), d.refs[1],
+                                      num(c.radius))};
         const Circle locus{c.centre, out ? c.radius + r : c.radius - r};
         const auto two = intersectLineCircle(
             l, locus,
-            "no circle of radius " + num(r) + " on the " + keyword(d.modifiers[0]) + " side of " + d.refs[0] +
-                " touches " + d.refs[1] + (out ? " from outside" : " from inside") +
-                " (the radius is too small or the side is wrong)");
-        return {choose(two.first, two.second, d.modifiers.at(1), "centres"), r};
+            out ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no circle of radius {} on the {} side of {} touches {} from outside (the radius is too small or the side is wrong)"),
+                              num(r), keyword(d.modifiers[0]), d.refs[0], d.refs[1])
+                : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no circle of radius {} on the {} side of {} touches {} from inside (the radius is too small or the side is wrong)"),
+                              num(r), keyword(d.modifiers[0]), d.refs[0], d.refs[1]));
+        return {choose(two.first, two.second, d.modifiers.at(1), TAIWA_TRANSLATE_NOOP("taiwa::msg", "centres")), r};
     }
 
     std::map<std::string, Element> known_;
@@ -315,7 +326,7 @@ Evaluation evaluate(const std::vector<Definition>& definitions)
         }
         try {
             Element e = ev.element(d);
-            if (!finite(e)) throw Refused{"its coordinates cannot be computed (a degenerate definition)"};
+            if (!finite(e)) throw Refused{TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)")};
             ev.keep(e);
             out.elements.push_back(std::move(e));
         } catch (const Refused& r) {

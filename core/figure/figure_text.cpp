@@ -6,6 +6,10 @@
 // elements. Geometry is figure_eval.cpp's and figure_contour.cpp's.
 #include "figure/figure_text.h"
 
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -50,10 +54,10 @@ const char* keyword(Kind k)
 const char* noun(Kind k)
 {
     switch (k) {
-    case Kind::Point: return "a point";
-    case Kind::Line: return "a line";
-    case Kind::Circle: return "a circle";
-    case Kind::Contour: return "a contour";
+    case Kind::Point: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point");
+    case Kind::Line: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line");
+    case Kind::Circle: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle");
+    case Kind::Contour: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour");
     }
     throw std::logic_error("figure: unknown kind");
 }
@@ -221,7 +225,7 @@ bool isXY(Modifier m)
     return m == Modifier::XLarge || m == Modifier::XSmall || m == Modifier::YLarge || m == Modifier::YSmall;
 }
 
-constexpr const char* kXY = "XLARGE, XSMALL, YLARGE or YSMALL";
+constexpr const char* kXY = TAIWA_TRANSLATE_NOOP("taiwa::msg", "XLARGE, XSMALL, YLARGE or YSMALL");
 
 // Thrown inside the parser only, caught by parseFigure and turned into the
 // value it returns: the recursive descent stays readable.
@@ -258,9 +262,9 @@ private:
     static std::string describe(const Token& t)
     {
         switch (t.tok) {
-        case Tok::EndOfLine: return "the end of the line";
-        case Tok::EndOfText: return "the end of the text";
-        case Tok::Bad: return "the character '" + printable(t.text) + "'";
+        case Tok::EndOfLine: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "the end of the line");
+        case Tok::EndOfText: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "the end of the text");
+        case Tok::Bad: return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the character '{}'"), printable(t.text));
         default: {
             std::string s = printable(t.text);
             if (s.size() > 24) s = s.substr(0, 24) + "...";
@@ -287,7 +291,7 @@ private:
 
     [[noreturn]] void expected(const std::string& what) const
     {
-        fail(cur_, "expected " + what + " after " + after() + ", found " + describe(cur_));
+        fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "expected {} after {}, found {}"), what, after(), describe(cur_)));
     }
 
     bool atWord(std::string_view w) const { return cur_.tok == Tok::Word && cur_.text == w; }
@@ -325,7 +329,7 @@ private:
     Modifier leftRight()
     {
         const auto m = atModifier();
-        if (!m || (*m != Modifier::Left && *m != Modifier::Right)) expected("LEFT or RIGHT");
+        if (!m || (*m != Modifier::Left && *m != Modifier::Right)) expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "LEFT or RIGHT"));
         advance();
         return *m;
     }
@@ -336,8 +340,8 @@ private:
         if (cur_.tok != Tok::Number) expected(what);
         const double v = cur_.value;
         if (!(std::abs(v) <= kMaxNumber))
-            fail(cur_, "the number " + describe(cur_) + " is out of range (at most 1000000 either way)");
-        if (quantity && !(v > 0)) fail(cur_, std::string(quantity) + " must be greater than 0, found " + describe(cur_));
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the number {} is out of range (at most 1000000 either way)"), describe(cur_)));
+        if (quantity && !(v > 0)) fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} must be greater than 0, found {}"), quantity, describe(cur_)));
         advance();
         return v;
     }
@@ -348,10 +352,10 @@ private:
         if (!atName()) expected(what);
         const auto it = defined_.find(cur_.text);
         if (it == defined_.end())
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is not defined: an element must be defined before it is used");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is not defined: an element must be defined before it is used"), name_, cur_.text));
         if (it->second.kind != wanted)
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is " + noun(it->second.kind) + " where " + noun(wanted) +
-                           " is needed");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is {} where {} is needed"), name_, cur_.text,
+                                   noun(it->second.kind), noun(wanted)));
         std::string n = cur_.text;
         advance();
         return n;
@@ -360,13 +364,13 @@ private:
     // Either a line or a circle (an intersection's arguments).
     std::string curve(Kind& kind)
     {
-        if (!atName()) expected("a line or circle name");
+        if (!atName()) expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line or circle name"));
         const auto it = defined_.find(cur_.text);
         if (it == defined_.end())
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is not defined: an element must be defined before it is used");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is not defined: an element must be defined before it is used"), name_, cur_.text));
         if (it->second.kind != Kind::Line && it->second.kind != Kind::Circle)
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is " + noun(it->second.kind) +
-                           " where a line or a circle is needed");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is {} where a line or a circle is needed"), name_, cur_.text,
+                                   noun(it->second.kind)));
         kind = it->second.kind;
         std::string n = cur_.text;
         advance();
@@ -379,12 +383,13 @@ private:
         d.line = cur_.line;
         d.column = cur_.column;
         if (cur_.tok != Tok::Word)
-            fail(cur_, "expected an element name at the start of a statement, found " + describe(cur_));
-        if (isReserved(cur_.text)) fail(cur_, "'" + cur_.text + "' is a word of the language and cannot name an element");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "expected an element name at the start of a statement, found {}"), describe(cur_)));
+        if (isReserved(cur_.text))
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "'{}' is a word of the language and cannot name an element"), cur_.text));
         d.name = cur_.text;
         name_ = d.name;
         if (const auto it = defined_.find(d.name); it != defined_.end())
-            fail(cur_, d.name + " is already defined on line " + std::to_string(it->second.line));
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is already defined on line {}"), d.name, it->second.line));
         const Token nameToken = cur_;
         advance();
         if (cur_.tok != Tok::Equals) expected("'='");
@@ -406,9 +411,9 @@ private:
             slash();
             contour(d);
         } else {
-            expected("POINT, LINE, CIRCLE or CONTOUR");
+            expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "POINT, LINE, CIRCLE or CONTOUR"));
         }
-        if (cur_.tok != Tok::EndOfLine && cur_.tok != Tok::EndOfText) expected("the end of the statement");
+        if (cur_.tok != Tok::EndOfLine && cur_.tok != Tok::EndOfText) expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the end of the statement"));
         defined_[d.name] = Defined{d.kind(), nameToken.line};
         return d;
     }
@@ -423,14 +428,14 @@ private:
     {
         if (cur_.tok == Tok::Number) {  // POINT/x, y
             d.method = Method::PointXY;
-            d.numbers.push_back(number("a number"));
+            d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number")));
             comma();
-            d.numbers.push_back(number("a number (the y coordinate)"));
+            d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the y coordinate)")));
         } else if (atWord("CENTER")) {  // POINT/CENTER, C1
             advance();
             d.method = Method::PointCenter;
             comma();
-            d.refs.push_back(ref(Kind::Circle, "a circle name"));
+            d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
         } else if (atWord("INTOF") || (atModifier() && isXY(*atModifier()))) {
             d.method = Method::PointIntof;
             Token modTok = cur_;
@@ -449,12 +454,12 @@ private:
             d.refs.push_back(curve(k2));
             const bool circle = k1 == Kind::Circle || k2 == Kind::Circle;
             if (circle && d.modifiers.empty())
-                fail(second, "in " + name_ + ", " + d.refs[0] + " and " + d.refs[1] +
-                                 " may meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before INTOF to choose");
+                fail(second, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} and {} may meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before INTOF to choose"),
+                                         name_, d.refs[0], d.refs[1]));
             if (!circle && !d.modifiers.empty())
-                fail(modTok, "in " + name_ + ", two lines meet once: no " + keyword(d.modifiers[0]) + " before INTOF");
+                fail(modTok, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, two lines meet once: no {} before INTOF"), name_, keyword(d.modifiers[0])));
         } else {
-            expected("a number, CENTER, INTOF or XLARGE/XSMALL/YLARGE/YSMALL");
+            expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number, CENTER, INTOF or XLARGE/XSMALL/YLARGE/YSMALL"));
         }
     }
 
@@ -464,47 +469,47 @@ private:
             advance();
             d.method = Method::LineParallel;
             comma();
-            d.refs.push_back(ref(Kind::Line, "a line name"));
+            d.refs.push_back(ref(Kind::Line, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line name")));
             comma();
             d.modifiers.push_back(modifier(true, kXY));
             comma();
-            d.numbers.push_back(number("a number (the distance)", "the distance"));
+            d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the distance)"), TAIWA_TRANSLATE_NOOP("taiwa::msg", "the distance")));
         } else if (const auto m = atModifier(); m && (*m == Modifier::Left || *m == Modifier::Right)) {
             d.method = Method::LineTwoCircles;  // LINE/LEFT, TANTO, C1, RIGHT, TANTO, C2
             d.modifiers.push_back(leftRight());
             comma();
             word("TANTO");
             comma();
-            d.refs.push_back(ref(Kind::Circle, "a circle name"));
+            d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
             comma();
             d.modifiers.push_back(leftRight());
             comma();
             word("TANTO");
             comma();
-            d.refs.push_back(ref(Kind::Circle, "a circle name"));
+            d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
         } else if (atName()) {
-            d.refs.push_back(ref(Kind::Point, "a point name"));
+            d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
             comma();
             if (atWord("ATANGL")) {  // LINE/P1, ATANGL, 30
                 advance();
                 d.method = Method::LineAtAngle;
                 comma();
-                d.numbers.push_back(number("a number (the angle in degrees)"));
+                d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the angle in degrees)")));
             } else if (atModifier()) {  // LINE/P1, LEFT, TANTO, C1
                 d.method = Method::LinePointTangent;
                 d.modifiers.push_back(leftRight());
                 comma();
                 word("TANTO");
                 comma();
-                d.refs.push_back(ref(Kind::Circle, "a circle name"));
+                d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
             } else if (atName()) {  // LINE/P1, P2
                 d.method = Method::LineTwoPoints;
-                d.refs.push_back(ref(Kind::Point, "a point name"));
+                d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
             } else {
-                expected("a point name, ATANGL, LEFT or RIGHT");
+                expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name, ATANGL, LEFT or RIGHT"));
             }
         } else {
-            expected("a point name, PARLEL, LEFT or RIGHT");
+            expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name, PARLEL, LEFT or RIGHT"));
         }
     }
 
@@ -514,19 +519,19 @@ private:
             advance();
             d.method = Method::CircleCenterRadius;
             comma();
-            d.refs.push_back(ref(Kind::Point, "a point name"));
+            d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
             radius(d);
         } else if (atName()) {  // CIRCLE/P1, P2, P3
             d.method = Method::CircleThreePoints;
-            d.refs.push_back(ref(Kind::Point, "a point name"));
+            d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
             comma();
-            d.refs.push_back(ref(Kind::Point, "a point name"));
+            d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
             comma();
-            d.refs.push_back(ref(Kind::Point, "a point name"));
+            d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
         } else if (const auto m = atModifier(); m && isXY(*m)) {
             d.modifiers.push_back(modifier(true, kXY));
             comma();
-            d.refs.push_back(ref(Kind::Line, "a line name"));
+            d.refs.push_back(ref(Kind::Line, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line name")));
             comma();
             d.modifiers.push_back(modifier(true, kXY));
             comma();
@@ -535,16 +540,16 @@ private:
                 d.modifiers.push_back(*m3);
                 advance();
                 comma();
-                d.refs.push_back(ref(Kind::Circle, "a circle name"));
+                d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
             } else if (atName()) {
                 d.method = Method::CircleTwoLines;  // CIRCLE/XLARGE, L1, YSMALL, L2, RADIUS, 5
-                d.refs.push_back(ref(Kind::Line, "a line name"));
+                d.refs.push_back(ref(Kind::Line, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line name")));
             } else {
-                expected("a line name, OUT or IN");
+                expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line name, OUT or IN"));
             }
             radius(d);
         } else {
-            expected("CENTER, a point name or XLARGE/XSMALL/YLARGE/YSMALL");
+            expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "CENTER, a point name or XLARGE/XSMALL/YLARGE/YSMALL"));
         }
     }
 
@@ -553,7 +558,7 @@ private:
         comma();
         word("RADIUS");
         comma();
-        d.numbers.push_back(number("a number (the radius)", "the radius"));
+        d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the radius)"), TAIWA_TRANSLATE_NOOP("taiwa::msg", "the radius")));
     }
 
     static Place placeOf(const Token& t) { return {t.line, t.column, static_cast<int>(t.text.size())}; }
@@ -564,7 +569,7 @@ private:
         if (!atName()) return Kind::Point;  // not reached: callers check atName()
         const auto it = defined_.find(cur_.text);
         if (it == defined_.end())
-            fail(cur_, "in " + name_ + ", " + cur_.text + " is not defined: an element must be defined before it is used");
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is not defined: an element must be defined before it is used"), name_, cur_.text));
         return it->second.kind;
     }
 
@@ -600,41 +605,42 @@ private:
                 comma();
             }
             if (!atName())
-                expected(turnTok ? "a circle name"
-                         : modTok ? "a line or circle name, CLW or CCLW"
-                                  : "an element name, XLARGE/XSMALL/YLARGE/YSMALL, CLW or CCLW");
+                expected(turnTok  ? TAIWA_TRANSLATE_NOOP("taiwa::msg", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name"))
+                         : modTok ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line or circle name, CLW or CCLW")
+                                  : TAIWA_TRANSLATE_NOOP("taiwa::msg", "an element name, XLARGE/XSMALL/YLARGE/YSMALL, CLW or CCLW"));
             const Kind k = definedKind();
             if (k == Kind::Point && !c.steps.empty() && !modTok && !turnTok) {  // the end of an open contour
                 if (c.closed())
-                    fail(cur_, "in " + name_ + ", " + cur_.text + " ends the contour but no point starts it: an open "
-                                   "contour runs from a point to a point");
+                    fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} ends the contour but no point starts it: an open contour runs from a point to a point"),
+                                           name_, cur_.text));
                 if (lastCorner)
-                    fail(*lastCorner, "in " + name_ + ", " + lastCorner->text + " after " + c.steps.back().element +
-                                          " is not between two elements: the contour ends at " + cur_.text);
+                    fail(*lastCorner, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} after {} is not between two elements: the contour ends at {}"),
+                                                  name_, lastCorner->text, c.steps.back().element, cur_.text));
                 c.end = cur_.text;
                 c.endAt = placeOf(cur_);
                 d.refs.push_back(c.end);
                 advance();
                 if (cur_.tok == Tok::Comma)
-                    fail(prev_, "in " + name_ + ", " + c.end + " is a point: only the first and the last item of a "
-                                    "contour may be points");
+                    fail(prev_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is a point: only the first and the last item of a contour may be points"),
+                                            name_, c.end));
                 return;
             }
             if (k != Kind::Line && k != Kind::Circle)
-                fail(cur_, "in " + name_ + ", " + cur_.text + " is " + noun(k) +
-                               (turnTok ? " where a circle is needed" : " where a line or a circle is needed"));
+                fail(cur_, turnTok ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is {} where a circle is needed"), name_, cur_.text, noun(k))
+                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is {} where a line or a circle is needed"), name_, cur_.text,
+                                                 noun(k)));
             if (k == Kind::Circle && !turnTok)
-                fail(cur_, "in " + name_ + ", " + cur_.text + " is a circle: write CLW or CCLW before it");
+                fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is a circle: write CLW or CCLW before it"), name_, cur_.text));
             if (k == Kind::Line && turnTok)
-                fail(*turnTok, "in " + name_ + ", " + cur_.text + " is a line: no " + turnTok->text +
-                                   " before it (CLW and CCLW are for circles)");
+                fail(*turnTok, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} is a line: no {} before it (CLW and CCLW are for circles)"), name_,
+                                           cur_.text, turnTok->text));
             if (!c.steps.empty() && c.steps.back().element == cur_.text)
-                fail(cur_, "in " + name_ + ", " + cur_.text + " follows itself: the same element twice in a row");
+                fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} follows itself: the same element twice in a row"), name_, cur_.text));
             if (modTok && c.steps.empty() && !c.closed())
-                fail(*modTok, "in " + name_ + ", " + cur_.text + " starts at " + c.start + ": no " + modTok->text +
-                                  " before it");
+                fail(*modTok, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} starts at {}: no {} before it"), name_, cur_.text, c.start,
+                                          modTok->text));
             if (modTok && !c.steps.empty() && k == Kind::Line && kinds.back() == Kind::Line)
-                fail(*modTok, "in " + name_ + ", two lines meet once: no " + modTok->text + " before " + cur_.text);
+                fail(*modTok, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, two lines meet once: no {} before {}"), name_, modTok->text, cur_.text));
             if (c.steps.empty()) firstMod = modTok;
             s.element = cur_.text;
             s.at = placeOf(cur_);
@@ -653,8 +659,8 @@ private:
                     advance();
                     comma();
                     s.valueAt = placeOf(cur_);
-                    s.value = number(round ? "a number (the radius)" : "a number (the chamfer)",
-                                     round ? "the radius" : "the chamfer");
+                    s.value = number(round ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the radius)") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the chamfer)"),
+                                     round ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the radius") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the chamfer"));
                     more = cur_.tok == Tok::Comma;
                     if (more) advance();
                 }
@@ -663,25 +669,26 @@ private:
             if (!more) break;
         }
         if (!c.closed())
-            fail(cur_, "in " + name_ + ", the contour starts at " + c.start + " and needs a point at its end, on " +
-                           c.steps.back().element);
+            fail(cur_, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, the contour starts at {} and needs a point at its end, on {}"), name_,
+                                   c.start, c.steps.back().element));
         const ContourStep& first = c.steps.front();
         if (c.steps.size() == 1) {
             if (kinds.front() == Kind::Line)
-                failAt(first.at, "in " + name_ + ", a closed contour needs two elements or more, or a single circle");
+                failAt(first.at, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, a closed contour needs two elements or more, or a single circle"), name_));
             if (firstMod)
-                fail(*firstMod, "in " + name_ + ", " + first.element + " alone is a full circle: no " + firstMod->text +
-                                    " before it");
+                fail(*firstMod, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} alone is a full circle: no {} before it"), name_,
+                                            first.element, firstMod->text));
             if (lastCorner)
-                fail(*lastCorner, "in " + name_ + ", " + first.element + " alone is a full circle: no " +
-                                      lastCorner->text + " on it");
+                fail(*lastCorner, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} alone is a full circle: no {} on it"), name_,
+                                              first.element, lastCorner->text));
             return;
         }
         if (c.steps.back().element == first.element)
-            failAt(c.steps.back().at, "in " + name_ + ", " + first.element + " follows itself: the same element twice in a row (the last "
-                                                        "element joins the first)");
+            failAt(c.steps.back().at,
+                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, {} follows itself: the same element twice in a row (the last element joins the first)"),
+                               name_, first.element));
         if (firstMod && kinds.front() == Kind::Line && kinds.back() == Kind::Line)
-            fail(*firstMod, "in " + name_ + ", two lines meet once: no " + firstMod->text + " before " + first.element);
+            fail(*firstMod, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "in {}, two lines meet once: no {} before {}"), name_, firstMod->text, first.element));
     }
 
     Lexer lex_;

@@ -5,6 +5,8 @@
 // the check that reads every contour's text back.
 #include "job/dxf_figure.h"
 
+#include "model/translate_noop.h"
+
 #include "figure/figure_eval.h"
 
 #include <fmt/format.h>
@@ -160,9 +162,9 @@ public:
     {
         const auto& s = c_.segments;
         const std::size_t n = s.size();
-        if (n == 0) throw Refusal{"it has no segments"};
+        if (n == 0) throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no segments")};
         if (c_.closed && n == 1 && !s[0].isArc())
-            throw Refusal{"a closed contour of one line"};
+            throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "a closed contour of one line")};
         // Junction k is where segment k starts: from segment k - 1 (closed: the last).
         tangent_.assign(n, false);
         for (std::size_t k = 0; k < n; ++k)
@@ -205,7 +207,7 @@ private:
     std::string point(Point2 p)
     {
         if (!(std::abs(p.x) <= figure::kMaxNumber && std::abs(p.y) <= figure::kMaxNumber))
-            throw Refusal{"it reaches " + at(p) + ", beyond the ±1000000 mm the figure text can write"};
+            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it reaches {}, beyond the ±1000000 mm the figure text can write"), at(p))};
         const Point2 q = rounded(p, scale_);
         const auto key = std::make_pair(std::llround(q.x * scale_), std::llround(q.y * scale_));
         if (const auto it = pointNames_.find(key); it != pointNames_.end()) return it->second;
@@ -237,9 +239,9 @@ private:
         }
         r = rounded(r, scale_);
         if (!(r > 0.0))
-            throw Refusal{fmt::format("the arc around {} has a radius of {:g} mm, which rounds to nothing",
+            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the arc around {} has a radius of {:g} mm, which rounds to nothing"),
                                       at(s.centre), s.radius())};
-        if (r > figure::kMaxNumber) throw Refusal{"an arc's radius is beyond the 1000000 mm the figure text can write"};
+        if (r > figure::kMaxNumber) throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "an arc's radius is beyond the 1000000 mm the figure text can write")};
         Definition d;
         d.name = names_.next('C');
         d.method = Method::CircleCenterRadius;
@@ -289,7 +291,7 @@ private:
         const auto& segs = c_.segments;
         const std::size_t n = segs.size();
         const figure::Evaluation ev = figure::evaluate(elements);
-        if (!ev.ok()) throw Refusal{"its elements cannot be evaluated: " + ev.errors.front().message};
+        if (!ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements cannot be evaluated: {}"), ev.errors.front().message)};
         Definition d;
         d.name = names_.next('K');
         d.method = Method::Contour;
@@ -321,15 +323,14 @@ private:
         if (ea->kind != figure::Kind::Circle && eb->kind != figure::Kind::Circle) return std::nullopt;
         const auto two = crossings(*ea, *eb);
         if (two.empty())
-            throw Refusal{fmt::format("its elements {} and {} no longer meet at {} once written to {:g} mm", a, b,
+            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements {} and {} no longer meet at {} once written to {:g} mm"), a, b,
                                       at(junction), 1.0 / scale_)};
         if (two.size() == 1) return std::nullopt;
         const bool first = distance(two[0], junction) <= distance(two[1], junction);
         const Point2 mine = first ? two[0] : two[1], other = first ? two[1] : two[0];
         const double dx = std::abs(mine.x - other.x), dy = std::abs(mine.y - other.y);
         if (std::max(dx, dy) <= figure::kTolerance)
-            throw Refusal{fmt::format("{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, "
-                                      "YLARGE and YSMALL cannot choose between the two",
+            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two"),
                                       a, b, at(junction), figure::kTolerance)};
         if (dx >= dy) return mine.x > other.x ? Modifier::XLarge : Modifier::XSmall;
         return mine.y > other.y ? Modifier::YLarge : Modifier::YSmall;
@@ -440,7 +441,7 @@ Attempt attempt(Namer& names, const Contour& c, double scale)
     const figure::ParseResult read = figure::parseFigure(a.text);
     if (!read.ok()) throw std::logic_error("dxf figure: written text refused: " + read.error->text());
     const figure::Evaluation ev = figure::evaluate(read.definitions);
-    if (!ev.ok()) throw Refusal{"its text is refused: " + ev.errors.front().message};
+    if (!ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text is refused: {}"), ev.errors.front().message)};
     a.deviation = deviation(ev.contours.at(0).contour, c);
     return a;
 }
@@ -466,8 +467,8 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
             try {
                 Attempt a = attempt(names, c, scale);
                 if (why.empty() && a.deviation > kFigureRoundTrip)
-                    why = std::isinf(a.deviation) ? std::string("its text gives back other segments")
-                                                  : fmt::format("it comes back {:.7f} mm from the drawing", a.deviation);
+                    why = std::isinf(a.deviation) ? std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text gives back other segments"))
+                                                  : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it comes back {:.7f} mm from the drawing"), a.deviation);
                 if (!best || a.deviation < best->deviation) best = std::move(a), bestNames = names;
                 if (best->deviation <= kFigureRoundTrip) break;
             } catch (const Refusal& r) {
@@ -476,7 +477,7 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
         }
         names = before;
         if (!best || !(best->deviation <= kFigureUsable)) {
-            out.refusals.push_back(fmt::format("contour {} is left out: {}", number, why));
+            out.refusals.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} is left out: {}"), number, why));
             out.text += fmt::format("$$ contour {} ({}) left out: {}\n", number, describe(c), why);
             out.names.emplace_back();
             out.deviations.push_back(0.0);
@@ -485,10 +486,10 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
         names = *bestNames;
         const std::string name = best->definitions.back().name;
         if (best->deviation > kFigureRoundTrip)
-            out.notes.push_back(fmt::format("contour {} ({}) comes back {:.7f} mm from the drawing", number, name,
+            out.notes.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} ({}) comes back {:.7f} mm from the drawing"), number, name,
                                             best->deviation));
         else if (best->scale > 1e6)
-            out.notes.push_back(fmt::format("contour {} ({}) is written to {} mm: to 0.000001 mm {}", number, name,
+            out.notes.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} ({}) is written to {} mm: to 0.000001 mm {}"), number, name,
                                             figure::formatNumber(1.0 / best->scale), why));
         out.text += fmt::format("$$ contour {}: {}\n", number, describe(c)) + best->text;
         out.names.push_back(name);

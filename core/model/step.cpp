@@ -1,6 +1,8 @@
 // Step kinds by name, and the label a step shows in lists and on the sheet.
 #include "model/step.h"
 
+#include "model/translate_noop.h"
+
 #include <array>
 
 namespace taiwa {
@@ -8,25 +10,25 @@ namespace taiwa {
 const char* toString(StepKind k)
 {
     switch (k) {
-    case StepKind::PilotHole: return "pilot hole";
-    case StepKind::Roughing: return "roughing";
-    case StepKind::FloorFinishing: return "floor finishing";
-    case StepKind::WallFinishing: return "wall finishing";
-    case StepKind::InclinedFaceFinishing: return "inclined-face finishing";
-    case StepKind::Facing: return "facing";
-    case StepKind::CentreDrilling: return "centre drilling";
-    case StepKind::Drilling: return "drilling";
-    case StepKind::TurnRoughing: return "roughing";
-    case StepKind::Grooving: return "grooving";
-    case StepKind::TurnFinishing: return "finishing";
-    case StepKind::Threading: return "threading";
-    case StepKind::Parting: return "parting off";
-    case StepKind::Tapping: return "tapping";
-    case StepKind::Reaming: return "reaming";
-    case StepKind::Boring: return "boring";
-    case StepKind::FaceMilling: return "face milling";
-    case StepKind::SideMilling: return "side milling";
-    case StepKind::AreaClearing: return "area clearing";
+    case StepKind::PilotHole: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "pilot hole");
+    case StepKind::Roughing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing");
+    case StepKind::FloorFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "floor finishing");
+    case StepKind::WallFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "wall finishing");
+    case StepKind::InclinedFaceFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "inclined-face finishing");
+    case StepKind::Facing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "facing");
+    case StepKind::CentreDrilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drilling");
+    case StepKind::Drilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "drilling");
+    case StepKind::TurnRoughing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing");
+    case StepKind::Grooving: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "grooving");
+    case StepKind::TurnFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "finishing");
+    case StepKind::Threading: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "threading");
+    case StepKind::Parting: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "parting off");
+    case StepKind::Tapping: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "tapping");
+    case StepKind::Reaming: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "reaming");
+    case StepKind::Boring: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring");
+    case StepKind::FaceMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "face milling");
+    case StepKind::SideMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling");
+    case StepKind::AreaClearing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "area clearing");
     }
     return "";
 }

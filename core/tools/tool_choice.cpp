@@ -4,11 +4,15 @@
 #include "model/codes.h"
 #include "tools/tool_fit.h"
 
+#include "model/translate_noop.h"
+
+#include <fmt/args.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 namespace taiwa {
 
@@ -49,30 +53,75 @@ Fit fitFor(const Step& s)
     return f;
 }
 
-// "largest flat end mill (10 mm) whose radius 5 mm fits the corner radius 5.7 mm";
-// shortOf: the depth its flutes do not reach (0 = they do).
-std::string describeEndMill(const Tool& t, const Fit& f, double shortOf = 0.0)
+// How a roughing end mill enters the material, said at the end of its reason.
+enum class Entry { Unsaid, Ramps, PilotHole };
+
+// "largest flat end mill (10 mm) whose radius 5 mm fits the corner radius 5.7 mm",
+// each variant one whole sentence so that a translator reads it whole (the
+// station translates the English back from these templates, ui/core_messages.h).
+// shortOf: the depth its flutes do not reach (0 = they do); `what` the
+// layers it roughs (chooseRoughingTool), `pilot` the hole it enters.
+std::string describeEndMill(const Tool& t, const Fit& f, double shortOf = 0.0, Entry entry = Entry::Unsaid,
+                            double pilot = 0.0, const std::string& what = {})
 {
-    std::string r = fmt::format("largest {} ({}) ", toString(t.type), mm(t.diameter));
-    if (f.cornerRadius > 0) r += fmt::format("whose radius {} fits the corner radius {}", mm(t.radius()), mm(f.cornerRadius));
-    else r += fmt::format("of diameter at most half the pocket's inscribed width {}", mm(2 * f.maxDiameter));
-    if (shortOf > 0)
-        r += fmt::format("; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: "
-                         "it cuts one layer at a time",
-                         mm(t.fluteLength), mm(shortOf));
-    return r;
+    const bool corner = f.cornerRadius > 0;
+    const std::string size = corner ? mm(t.radius()) : mm(2 * f.maxDiameter);
+    const std::string kind = toString(t.type), diameter = mm(t.diameter);
+    if (!what.empty())
+        return corner ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {} of the {}"), kind,
+                                    diameter, size, mm(f.cornerRadius), what)
+                      : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}"),
+                                    kind, diameter, size, what);
+    // [corner][flutes short][entry]
+    static constexpr const char* kTemplates[2][2][3] = {
+        {{TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and "
+                    "ramps in (no pilot hole)"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole")},
+         {TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter "
+                    "than the depth {}, as are those of every end mill that fits: it cuts one layer at a time"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter "
+                    "than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at "
+                    "its centre and ramps in (no pilot hole)"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter "
+                    "than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the "
+                    "{} pilot hole")}},
+        {{TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no "
+                    "pilot hole)"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole")},
+         {TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the "
+                    "depth {}, as are those of every end mill that fits: it cuts one layer at a time"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the "
+                    "depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its "
+                    "centre and ramps in (no pilot hole)"),
+          TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the "
+                    "depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} "
+                    "pilot hole")}}};
+    const char* text = kTemplates[corner ? 1 : 0][shortOf > 0 ? 1 : 0][static_cast<int>(entry)];
+    std::vector<std::string> args{kind, diameter, size};
+    if (corner) args.push_back(mm(f.cornerRadius));
+    if (shortOf > 0) {
+        args.push_back(mm(t.fluteLength));
+        args.push_back(mm(shortOf));
+    }
+    if (entry == Entry::PilotHole) args.push_back(mm(pilot));
+    fmt::dynamic_format_arg_store<fmt::format_context> store;
+    for (const auto& a : args) store.push_back(a);
+    return fmt::vformat(text, store);
 }
 
-std::string describe(const Step& s, const Tool& t, const Fit& f, double shortOf)
+std::string describe(const Step& s, const Tool& t, const Fit& f, double shortOf, Entry entry)
 {
     if (f.type == ToolType::TaperEndMill)
-        return fmt::format("taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the "
-                           "corner radius {} at the floor",
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} "
+                                     "fits the corner radius {} at the floor"),
                            f.taperAngle, mm(t.diameter), mm(t.radius()), mm(f.cornerRadius));
     if (s.kind == StepKind::InclinedFaceFinishing && s.face)
-        return fmt::format("largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}",
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest ball end mill ({}) of radius at most 6 mm and half the inclined face's "
+                                     "length {}"),
                            mm(t.diameter), mm(distance(s.face->topEdge[0], s.face->topEdge[1])));
-    return describeEndMill(t, f, shortOf);
+    return describeEndMill(t, f, shortOf, entry);
 }
 
 // What the roughing layers of a unit need. They share one end mill (a
@@ -117,7 +166,7 @@ ToolPick chooseRoughingTool(const Fit& f, const std::vector<Tool>& library, cons
                             const std::string& what)
 {
     if (const Tool* t = tools::largestFitting(library, f, material))
-        return {ToolChoice{t->id, describeEndMill(*t, f) + " of the " + what}, {}};
+        return {ToolChoice{t->id, describeEndMill(*t, f, 0.0, Entry::Unsaid, 0.0, what)}, {}};
     return {std::nullopt, tools::noFitMessage(library, f, material, "roughing")};
 }
 
@@ -132,21 +181,25 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
     Fit roughing = roughingFit(steps);
     roughing.centreCutting = !hasPilot;  // without a pilot hole it ramps into solid material
 
+    std::vector<double> shortOfs(steps.size(), 0.0);  // a roughing step's depth its flutes do not reach
     const auto pick = [&](Step& s, const Fit& f) {
         const auto pin = pins.find(toKey(s.kind));
         if (pin != pins.end()) {
             const Tool* t = findTool(library, pin->second);
-            if (!t) problems.push_back(fmt::format("{}: pinned tool T{} is not in the tool library", s.label(), pin->second));
+            if (!t) problems.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: pinned tool T{} is not in the tool library"), s.label(), pin->second));
             else if (!tools::fits(*t, f, material))
-                problems.push_back(fmt::format("{}: pinned tool T{} ({}) does not fit: {}", s.label(), t->id, t->name,
+                problems.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: pinned tool T{} ({}) does not fit: {}"), s.label(), t->id, t->name,
                                                tools::whyNot(*t, f, material)));
-            else s.tool = ToolChoice{t->id, "pinned by the operator"};
+            else s.tool = ToolChoice{t->id, TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned by the operator")};
             return;
         }
         double shortOf = 0.0;
         if (const Tool* t = s.kind == StepKind::Roughing ? roughingTool(library, f, material, shortOf)
                                                          : tools::largestFitting(library, f, material)) {
-            s.tool = ToolChoice{t->id, describe(s, *t, f, shortOf)};
+            // Without a pilot hole a roughing end mill ramps in (one with enters it: said once it is chosen, below).
+            const Entry entry = s.kind == StepKind::Roughing && !hasPilot ? Entry::Ramps : Entry::Unsaid;
+            s.tool = ToolChoice{t->id, describe(s, *t, f, shortOf, entry)};
+            shortOfs[static_cast<std::size_t>(&s - steps.data())] = shortOf;
         } else {
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, toString(s.kind)));
         }
@@ -156,8 +209,6 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         if (s.kind == StepKind::PilotHole) continue;
         const Fit f = s.kind == StepKind::Roughing ? roughing : fitFor(s);
         pick(s, f);
-        if (s.tool && s.kind == StepKind::Roughing && !hasPilot && pins.find(toKey(s.kind)) == pins.end())
-            s.tool->reason += "; it cuts at its centre and ramps in (no pilot hole)";
         if (s.tool && plungeDiameter == 0) {
             plungeDiameter = findTool(library, s.tool->toolId)->diameter;
             pocketLimit = f.maxDiameter;
@@ -175,7 +226,7 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         if (pin != pins.end()) {
             pick(s, f);
         } else if (const Tool* t = tools::smallestFitting(library, f, material)) {
-            s.tool = ToolChoice{t->id, fmt::format("smallest drill ({}) not smaller than the {} end mill that plunges into it",
+            s.tool = ToolChoice{t->id, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "smallest drill ({}) not smaller than the {} end mill that plunges into it"),
                                                    mm(t->diameter), mm(plungeDiameter))};
         } else {
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, "pilot hole"));
@@ -184,7 +235,9 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         s.holeDiameter = findTool(library, s.tool->toolId)->diameter;
         for (auto& r : steps)
             if (r.kind == StepKind::Roughing && r.number == 1 && r.tool && pins.find(toKey(r.kind)) == pins.end())
-                r.tool->reason += fmt::format("; enters the {} pilot hole", mm(s.holeDiameter));
+                r.tool->reason = describeEndMill(*findTool(library, r.tool->toolId), roughing,
+                                                 shortOfs[static_cast<std::size_t>(&r - steps.data())], Entry::PilotHole,
+                                                 s.holeDiameter);
     }
     return problems;
 }

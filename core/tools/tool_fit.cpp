@@ -37,7 +37,7 @@ std::string whyNot(const Tool& t, const Fit& f, const std::string& material)
     case Misfit::Type:
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it is a {}, the step needs a {}"), toString(t.type),
                            toString(f.type));
-    case Misfit::Material: return "it has no cutting data for " + material;
+    case Misfit::Material: return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no cutting data for {}"), material);
     case Misfit::Taper:
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its taper is {:g} deg per side, the wall's is {:g}"),
                            t.taperAngle, f.taperAngle);

@@ -2,6 +2,8 @@
 // life runs out, a note for the sheet saying before which step to change it.
 #include "tools/tool_choice.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -22,8 +24,10 @@ std::vector<ToolLifeNote> planToolLife(const std::vector<Step>& orderedSteps, co
         if (!left.count(id)) left[id] = it->remainingLife();
         if (*s.minutes > left[id]) {
             notes.push_back({static_cast<int>(k), id,
-                             fmt::format("T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, "
-                                         "the step needs {:.1f} min; change it for a fresh one before that step",
+                             fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                              "T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): "
+                                                              "{:.1f} min left, the step needs {:.1f} min; change it for a "
+                                                              "fresh one before that step"),
                                          id, it->diameter, toString(it->type), k + 1, s.unit + 1, s.label(),
                                          std::max(0.0, left[id]), *s.minutes)});
             left[id] = it->lifeMinutes;  // the change is planned: a fresh tool

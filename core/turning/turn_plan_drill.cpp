@@ -1,5 +1,6 @@
 // Turning steps: facing the bar, centre drilling and drilling a bore (turn_planner.h).
 #include "turning/turn_planner.h"
+#include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {
 
@@ -13,14 +14,14 @@ void Planner::planFacing()
             problem(std::string("tools.") + kFacing, fmt::format("{} is not an outside turning insert; facing needs one", toolWords(*tool)));
             return;
         }
-        reason = "pinned";
+        reason = TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned");
     } else {
         tool = roughingInsert(false);
         if (!tool) {
-            problem("rows", "the bar has face stock but the tool library has no outside turning insert to face it");
+            problem("rows", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the bar has face stock but the tool library has no outside turning insert to face it"));
             return;
         }
-        reason = "the outside roughing insert faces the bar (largest nose radius)";
+        reason = TAIWA_TRANSLATE_NOOP("taiwa::msg", "the outside roughing insert faces the bar (largest nose radius)");
     }
     const auto cutting = cuttingOf(*tool, kFacing, true);
     if (!cutting) return;
@@ -69,7 +70,7 @@ void Planner::planDrilling()
     if (skipped(kDrill)) return;
     const double maxDrill = 2.0 * (rMin - t_.allowanceX) - 1.0;
     const Tool* drill = pinned(kDrill);
-    std::string reason = "pinned";
+    std::string reason = TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned");
     // A plain bore narrower than the boring bar enters: drilled to size.
     bool plain = true;
     for (std::size_t i = first_; i < last_; ++i)
@@ -88,13 +89,12 @@ void Planner::planDrilling()
                 drill = &t;
         if (!drill) {
             problem("rows", maxDrill < need
-                                ? fmt::format("the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) "
-                                              "and no drill of the library makes it to size", dia(need / 2.0), dia(maxDrill / 2.0))
-                                : fmt::format("the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range",
+                                ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size"), dia(need / 2.0), dia(maxDrill / 2.0))
+                                : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range"),
                                               dia(need / 2.0), dia(maxDrill / 2.0), dia(need / 2.0)));
             return;
         }
-        reason = fmt::format("largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}", dia(maxDrill / 2.0), dia(need / 2.0));
+        reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}"), dia(maxDrill / 2.0), dia(need / 2.0));
     }
     // Centre drill first.
     if (!skipped(kCentreDrill)) {
@@ -114,7 +114,7 @@ void Planner::planDrilling()
                 w.feed({zFront_ - cd->diameter, 0.0}, FeedKind::Plunge);
                 w.rapid({zFront_ + t_.clearance, 0.0});
                 ts.path = std::move(w.path);
-                addStep(StepKind::CentreDrilling, MachiningType::CentreDrilling, *cd, "smallest centre drill", std::move(ts));
+                addStep(StepKind::CentreDrilling, MachiningType::CentreDrilling, *cd, TAIWA_TRANSLATE_NOOP("taiwa::msg", "smallest centre drill"), std::move(ts));
             }
         }
     }

@@ -1,5 +1,6 @@
 // Turning steps: the finishing insert and the finishing contour (turn_planner.h).
 #include "turning/turn_planner.h"
+#include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {
 
@@ -11,7 +12,7 @@ const Tool* Planner::chooseFinishing()
             problem(std::string("tools.") + kFinish, fmt::format("{} is not an {} turning insert", toolWords(*t), inner_ ? "inside" : "outside"));
             return nullptr;
         }
-        finishReason_ = "pinned";
+        finishReason_ = TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned");
         finishReach_ = reachedBy(*t);
         finishTool_ = t;
         return t;
@@ -36,14 +37,16 @@ const Tool* Planner::chooseFinishing()
         }
     }
     if (!best) {
-        problem("rows", fmt::format("the tool library has no {} turning insert", inner_ ? "inside (boring)" : "outside"));
+        problem("rows", inner_ ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool library has no inside (boring) turning insert")
+                                : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool library has no outside turning insert"));
         return nullptr;
     }
     finishReach_ = reachedBy(*best);
     finishTool_ = best;
     finishReason_ = bestMissing == 0
-                        ? "reaches every element; smallest nose radius of those that do"
-                        : fmt::format("reaches all but {} element(s); smallest nose radius of those that reach most", bestMissing);
+                        ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reaches every element; smallest nose radius of those that do")
+                        : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "reaches all but {} element(s); smallest nose radius of those that reach most"),
+                                      bestMissing);
     return best;
 }
 

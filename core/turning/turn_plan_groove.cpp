@@ -1,5 +1,6 @@
 // Turning steps: grooves and parting off (turn_planner.h).
 #include "turning/turn_planner.h"
+#include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {
 
@@ -97,9 +98,10 @@ void Planner::planGrooves()
         if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
         ts.path = std::move(wr.path);
         addStep(StepKind::Grooving, MachiningType::Grooving, *blade,
-                blade == pinned(kGroove) ? "pinned"
-                : w <= width + kTol ? fmt::format("widest grooving blade not wider than the groove ({})", len(width))
-                                    : fmt::format("narrowest grooving blade; it reaches {} from the air beside it", elements),
+                blade == pinned(kGroove) ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned")
+                : w <= width + kTol
+                    ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "widest grooving blade not wider than the groove ({})"), len(width))
+                    : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "narrowest grooving blade; it reaches {} from the air beside it"), elements),
                 std::move(ts));
     }
 }
@@ -164,7 +166,8 @@ void Planner::planParting()
     w.rapid({zEnd_, rTop});
     ts.path = std::move(w.path);
     addStep(StepKind::Parting, MachiningType::Parting, *blade,
-            blade == pinned(kPart) ? "pinned" : fmt::format("narrowest parting blade for {}", dia(R_)), std::move(ts));
+            blade == pinned(kPart) ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned")
+                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "narrowest parting blade for {}"), dia(R_)), std::move(ts));
 }
 
 }  // namespace taiwa::turning::planner

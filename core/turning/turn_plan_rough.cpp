@@ -1,5 +1,6 @@
 // Turning steps: roughing, as passes and as the control's cycle (turn_planner.h).
 #include "turning/turn_planner.h"
+#include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {
 
@@ -7,16 +8,17 @@ void Planner::planRoughing()
 {
     if (skipped(kRough)) return;
     const Tool* tool = pinned(kRough);
-    std::string reason = "pinned";
+    std::string reason = TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned");
     if (tool) {
         if (!insertGeometry(*tool) || tool->turning.inside != inner_) {
-            problem(std::string("tools.") + kRough, fmt::format("{} is not an {} turning insert", toolWords(*tool), inner_ ? "inside" : "outside"));
+            problem(std::string("tools.") + kRough, inner_ ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not an inside turning insert"), toolWords(*tool))
+                                                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not an outside turning insert"), toolWords(*tool)));
             return;
         }
     } else {
         tool = roughingInsert(inner_);
         if (!tool) return;  // chooseFinishing said it
-        reason = "largest nose radius for its side (the strongest edge)";
+        reason = TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest nose radius for its side (the strongest edge)");
     }
     const auto cutting = cuttingOf(*tool, kRough, true);
     if (!cutting) return;

@@ -6,6 +6,7 @@
 // control's G76 as LinuxCNC makes them (interp_convert.cc,
 // convert_threading_cycle), so that the path is what the tape runs.
 #include "turning/turn_planner.h"
+#include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {
 
@@ -138,7 +139,8 @@ void Planner::planThreading()
         ts.path = threadPath(th);
         ts.thread = th;
         addStep(StepKind::Threading, MachiningType::Threading, *tool,
-                tool == pinned(kThread) ? "pinned" : fmt::format("external threading insert for pitch {}", len(spec.pitch)), std::move(ts));
+                tool == pinned(kThread) ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned")
+                                        : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "external threading insert for pitch {}"), len(spec.pitch)), std::move(ts));
     }
 }
 

@@ -1507,6 +1507,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>突切り</translation>
         </message>
         <message>
+            <source>Tapping</source>
+            <translation>タップ立て</translation>
+        </message>
+        <message>
+            <source>Reaming</source>
+            <translation>リーマ加工</translation>
+        </message>
+        <message>
+            <source>Boring</source>
+            <translation>中ぐり</translation>
+        </message>
+        <message>
             <source>roughing, floor finishing and wall finishing</source>
             <translation>荒加工、底面仕上げ、側壁仕上げ</translation>
         </message>
@@ -1950,6 +1962,666 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>横送り</translation>
         </message>
         <message>
+            <source>{}, {}</source>
+            <translation>{}, {}</translation>
+        </message>
+        <message>
+            <source>more than {} ends meet at {} or near it: {}, …; the nearest were joined, the rest left open</source>
+            <translation>{1} またはその付近で {0} を超える端点が集まっています: {2}, …。最も近いものをつなぎ、残りは開いたままにしました</translation>
+        </message>
+        <message>
+            <source>more than {} ends meet at {} or near it: {}; the nearest were joined, the rest left open</source>
+            <translation>{1} またはその付近で {0} を超える端点が集まっています: {2}。最も近いものをつなぎ、残りは開いたままにしました</translation>
+        </message>
+        <message>
+            <source>{} ends meet at {}: {}, …; the nearest were joined, the rest left open</source>
+            <translation>{1} で {0} 個の端点が集まっています: {2}, …。最も近いものをつなぎ、残りは開いたままにしました</translation>
+        </message>
+        <message>
+            <source>{} ends meet at {}: {}; the nearest were joined, the rest left open</source>
+            <translation>{1} で {0} 個の端点が集まっています: {2}。最も近いものをつなぎ、残りは開いたままにしました</translation>
+        </message>
+        <message>
+            <source>gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm</source>
+            <translation>{1} で {2} と {3} (端点は {4}) の間に {0} mm の隙間があります。隙間の許容値は {5} mm です</translation>
+        </message>
+        <message>
+            <source>its plane is not the XY plane (extrusion {:.4g}, {:.4g}, {:.4g})</source>
+            <translation>平面が XY 平面ではありません (押し出し方向 {}, {}, {})</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its ends differ in Z)</source>
+            <translation>XY 平面から外れています (両端の Z が異なります)</translation>
+        </message>
+        <message>
+            <source>{} not read: {}</source>
+            <translation>{} は読み込みません: {}</translation>
+        </message>
+        <message>
+            <source>it has no length</source>
+            <translation>長さがありません</translation>
+        </message>
+        <message>
+            <source>its radius {:g} is not positive</source>
+            <translation>半径 {} が正ではありません</translation>
+        </message>
+        <message>
+            <source>its major axis leaves the XY plane</source>
+            <translation>長軸が XY 平面から外れています</translation>
+        </message>
+        <message>
+            <source>it is degenerate (axis {:g}, ratio {:g})</source>
+            <translation>退化しています (軸 {}、比 {})</translation>
+        </message>
+        <message>
+            <source>its parameters are out of range</source>
+            <translation>パラメータが範囲外です</translation>
+        </message>
+        <message>
+            <source>it needs more than {} lines at the spline tolerance</source>
+            <translation>スプライン許容値では {} 本を超える直線が必要です</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its vertices differ in Z)</source>
+            <translation>XY 平面から外れています (頂点の Z が異なります)</translation>
+        </message>
+        <message>
+            <source>{}: a bulge of {:g} read as a straight line</source>
+            <translation>{}: ふくらみ {} を直線として読み込みました</translation>
+        </message>
+        <message>
+            <source>its {} vertices give no segment</source>
+            <translation>{} 個の頂点から線分ができません</translation>
+        </message>
+        <message>
+            <source>it is given by fit points only, without control points</source>
+            <translation>制御点がなく、フィット点だけで定義されています</translation>
+        </message>
+        <message>
+            <source>it has no control points</source>
+            <translation>制御点がありません</translation>
+        </message>
+        <message>
+            <source>its degree {} is not 1 to 20</source>
+            <translation>次数 {} が 1 ～ 20 ではありません</translation>
+        </message>
+        <message>
+            <source>{} knots do not fit {} control points of degree {}</source>
+            <translation>ノット {0} 個は次数 {2} の制御点 {1} 個に合いません</translation>
+        </message>
+        <message>
+            <source>its knots decrease</source>
+            <translation>ノットが減少しています</translation>
+        </message>
+        <message>
+            <source>its knots span nothing</source>
+            <translation>ノットの範囲が空です</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its control points differ in Z)</source>
+            <translation>XY 平面から外れています (制御点の Z が異なります)</translation>
+        </message>
+        <message>
+            <source>a weight {:g} is not positive</source>
+            <translation>重み {} が正ではありません</translation>
+        </message>
+        <message>
+            <source>the drawing needs more than {} segments: too large or too fine a spline tolerance</source>
+            <translation>図面には {} を超える線分が必要です: 大きすぎるか、スプライン許容値が細かすぎます</translation>
+        </message>
+        <message>
+            <source>inch</source>
+            <translation>インチ</translation>
+        </message>
+        <message>
+            <source>foot</source>
+            <translation>フィート</translation>
+        </message>
+        <message>
+            <source>mile</source>
+            <translation>マイル</translation>
+        </message>
+        <message>
+            <source>microinch</source>
+            <translation>マイクロインチ</translation>
+        </message>
+        <message>
+            <source>mil</source>
+            <translation>ミル</translation>
+        </message>
+        <message>
+            <source>yard</source>
+            <translation>ヤード</translation>
+        </message>
+        <message>
+            <source>ångström</source>
+            <translation>オングストローム</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>なし</translation>
+        </message>
+        <message>
+            <source>the gap tolerance {:g} mm is not between 0.000001 and 10 mm</source>
+            <translation>隙間の許容値 {} mm が 0.000001 ～ 10 mm の範囲外です</translation>
+        </message>
+        <message>
+            <source>the spline tolerance {:g} mm is not between 0.0001 and 10 mm</source>
+            <translation>スプライン許容値 {} mm が 0.0001 ～ 10 mm の範囲外です</translation>
+        </message>
+        <message>
+            <source>the gap report distance {:g} mm is not between 0 and 1000 mm</source>
+            <translation>隙間を報告する距離 {} mm が 0 ～ 1000 mm の範囲外です</translation>
+        </message>
+        <message>
+            <source>{} on layer {} (DXF line {})</source>
+            <translation>レイヤ {1} の {0} (DXF {2} 行目)</translation>
+        </message>
+        <message>
+            <source>{} on layer {}</source>
+            <translation>レイヤ {1} の {0}</translation>
+        </message>
+        <message>
+            <source>cannot read {}: {}</source>
+            <translation>{} を読めません: {}</translation>
+        </message>
+        <message>
+            <source>{} is larger than 256 MB</source>
+            <translation>{} は 256 MB より大きいです</translation>
+        </message>
+        <message>
+            <source>cannot open {}: {}</source>
+            <translation>{} を開けません: {}</translation>
+        </message>
+        <message>
+            <source>cannot read {}</source>
+            <translation>{} を読めません</translation>
+        </message>
+        <message>
+            <source>the drawing has no layer {}</source>
+            <translation>図面にレイヤ {} がありません</translation>
+        </message>
+        <message>
+            <source>the drawing's units ($INSUNITS {}) are not lengths to machine in</source>
+            <translation>図面の単位 ($INSUNITS {}) は加工に使える長さの単位ではありません</translation>
+        </message>
+        <message>
+            <source>the drawing does not say its units ($INSUNITS unitless or absent): read as mm</source>
+            <translation>図面に単位がありません ($INSUNITS が単位なしまたは未設定): mm として読み込みました</translation>
+        </message>
+        <message>
+            <source>the drawing says its units are {}; read as {} as set</source>
+            <translation>図面の単位は {} ですが、設定どおり {} として読み込みました</translation>
+        </message>
+        <message>
+            <source>no lines, arcs, circles, polylines, splines or ellipses on the drawing's layers; the drawing's layers: {}</source>
+            <translation>図面のレイヤに線・円弧・円・ポリライン・スプライン・楕円がありません。図面のレイヤ: {}</translation>
+        </message>
+        <message>
+            <source>no lines, arcs, circles, polylines, splines or ellipses on the selected layers; the drawing's layers: {}</source>
+            <translation>選んだレイヤに線・円弧・円・ポリライン・スプライン・楕円がありません。図面のレイヤ: {}</translation>
+        </message>
+        <message>
+            <source>none of the entities on the selected layers could be read (see the warnings)</source>
+            <translation>選んだレイヤの要素を一つも読み込めませんでした (警告を参照)</translation>
+        </message>
+        <message>
+            <source>{} gaps up to {:.4g} mm closed (the largest at ({:.3f}, {:.3f})); the gap tolerance is {:.4g} mm</source>
+            <translation>最大 {1} mm の隙間を {0} か所閉じました (最大のものは ({2}, {3}))。隙間の許容値は {4} mm です</translation>
+        </message>
+        <message>
+            <source>… and {} more warnings like these</source>
+            <translation>… ほかに同様の警告が {} 件</translation>
+        </message>
+        <message>
+            <source>line {}: '{}' stands where a DXF group code belongs: not a DXF file, or a damaged one</source>
+            <translation>{0} 行目: DXF のグループコードの位置に '{1}' があります。DXF ファイルでないか、壊れています</translation>
+        </message>
+        <message>
+            <source>{} entities in paper space not read</source>
+            <translation>ペーパー空間の要素 {} 個は読み込みません</translation>
+        </message>
+        <message>
+            <source>not read (no contour geometry): {} — block references are not expanded: explode them in the CAD program</source>
+            <translation>読み込みません (輪郭の形状ではありません): {} — ブロック参照は展開しません。CAD で分解してください</translation>
+        </message>
+        <message>
+            <source>not read (no contour geometry): {}</source>
+            <translation>読み込みません (輪郭の形状ではありません): {}</translation>
+        </message>
+        <message>
+            <source>line {}: POLYLINE without SEQEND, read up to its last VERTEX</source>
+            <translation>{} 行目: SEQEND のない POLYLINE。最後の VERTEX まで読み込みました</translation>
+        </message>
+        <message>
+            <source>line {}: POLYLINE mesh or polyface (flags {}) is no contour: not read</source>
+            <translation>{} 行目: POLYLINE のメッシュまたはポリフェース (フラグ {}) は輪郭ではありません。読み込みません</translation>
+        </message>
+        <message>
+            <source>line {}: {} not read: '{}' is not a finite number (within ±1e12)</source>
+            <translation>{} 行目: {} は読み込みません: '{}' は有限の数値 (±1e12 以内) ではありません</translation>
+        </message>
+        <message>
+            <source>line {}: {} not read: '{}' is not an integer</source>
+            <translation>{} 行目: {} は読み込みません: '{}' は整数ではありません</translation>
+        </message>
+        <message>
+            <source>line {}: SPLINE not read: {} weights for {} control points</source>
+            <translation>{0} 行目: SPLINE は読み込みません: 制御点 {2} 個に重みが {1} 個です</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>ファイルが空です</translation>
+        </message>
+        <message>
+            <source>the file is larger than {} MB</source>
+            <translation>ファイルが {} MB より大きいです</translation>
+        </message>
+        <message>
+            <source>a binary DXF: save the drawing as an ASCII DXF (R12 or later)</source>
+            <translation>バイナリ DXF です: 図面を ASCII DXF (R12 以降) で保存してください</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it holds binary data</source>
+            <translation>DXF ファイルではありません: バイナリデータを含んでいます</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it starts with '{}'</source>
+            <translation>DXF ファイルではありません: '{}' で始まっています</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it has no SECTION</source>
+            <translation>DXF ファイルではありません: SECTION がありません</translation>
+        </message>
+        <message>
+            <source>the DXF file has no ENTITIES section</source>
+            <translation>DXF ファイルに ENTITIES セクションがありません</translation>
+        </message>
+        <message>
+            <source>the file ends in the middle of a group: it may be cut short</source>
+            <translation>ファイルがグループの途中で終わっています: 途中で切れている可能性があります</translation>
+        </message>
+        <message>
+            <source>the file ends without EOF: it may be cut short</source>
+            <translation>ファイルが EOF なしで終わっています: 途中で切れている可能性があります</translation>
+        </message>
+        <message>
+            <source>{} and {} are parallel: they do not meet</source>
+            <translation>{} と {} は平行です: 交わりません</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: they do not meet</source>
+            <translation>{} と {} は同心です: 交わりません</translation>
+        </message>
+        <message>
+            <source>{} and {} do not meet</source>
+            <translation>{} と {} は交わりません</translation>
+        </message>
+        <message>
+            <source>{} and {} meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before {} to choose</source>
+            <translation>{0} と {1} は 2 回交わります: 選ぶには {2} の前に XLARGE、XSMALL、YLARGE または YSMALL を書いてください</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two junctions of {} and {}: both have the same x; use YLARGE or YSMALL</source>
+            <translation>{0} では {1} と {2} の 2 つの接続点を選べません: x が同じです。YLARGE か YSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two junctions of {} and {}: both have the same y; use XLARGE or XSMALL</source>
+            <translation>{0} では {1} と {2} の 2 つの接続点を選べません: y が同じです。XLARGE か XSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} is not on {}: an open contour starts on its first element</source>
+            <translation>{} は {} の上にありません: 開いた輪郭は最初の要素の上で始まります</translation>
+        </message>
+        <message>
+            <source>{} is not on {}: an open contour ends on its last element</source>
+            <translation>{} は {} の上にありません: 開いた輪郭は最後の要素の上で終わります</translation>
+        </message>
+        <message>
+            <source>its coordinates cannot be computed (a degenerate definition)</source>
+            <translation>座標を計算できません (退化した定義)</translation>
+        </message>
+        <message>
+            <source>{} is of zero length between {} and {}</source>
+            <translation>{0} は {1} と {2} の間で長さが 0 です</translation>
+        </message>
+        <message>
+            <source>ROUND {} between {} and {}</source>
+            <translation>{1} と {2} の間の ROUND {0}</translation>
+        </message>
+        <message>
+            <source>CHAMF {} between {} and {}</source>
+            <translation>{1} と {2} の間の CHAMF {0}</translation>
+        </message>
+        <message>
+            <source>{}: they meet tangentially, there is no corner</source>
+            <translation>{}: 両者は接して交わり、角がありません</translation>
+        </message>
+        <message>
+            <source>{}: {} turns back along {}, there is no corner</source>
+            <translation>{0}: {1} が {2} に沿って折り返しており、角がありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: it is not smaller than {}'s radius {}</source>
+            <translation>{0} は入りません: {1} の半径 {2} より小さくありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: no circle of radius {} touches both in the corner</source>
+            <translation>{0} は入りません: 角で両方に接する半径 {1} の円がありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long from the start {}</source>
+            <translation>{0} は入りません: {1} は始点 {3} から {2} mm しかありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long from the previous corner</source>
+            <translation>{0} は入りません: {1} は前の角から {2} mm しかありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long to the end {}</source>
+            <translation>{0} は入りません: {1} は終点 {3} まで {2} mm しかありません</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long to the next corner</source>
+            <translation>{0} は入りません: {1} は次の角まで {2} mm しかありません</translation>
+        </message>
+        <message>
+            <source>{} and {} coincide: no circle through three points</source>
+            <translation>{} と {} が一致しています: 3 点を通る円がありません</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two {}: both have the same x; use YLARGE or YSMALL</source>
+            <translation>{0} では 2 つの{1}を選べません: x が同じです。YLARGE か YSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two {}: both have the same y; use XLARGE or XSMALL</source>
+            <translation>{0} では 2 つの{1}を選べません: y が同じです。XLARGE か XSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} names no side of {}: it is parallel to the X axis; use YLARGE or YSMALL</source>
+            <translation>{0} では {1} の側を指定できません: X 軸に平行です。YLARGE か YSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} names no side of {}: it is parallel to the Y axis; use XLARGE or XSMALL</source>
+            <translation>{0} では {1} の側を指定できません: Y 軸に平行です。XLARGE か XSMALL を使ってください</translation>
+        </message>
+        <message>
+            <source>{} and {} are parallel: they do not intersect</source>
+            <translation>{} と {} は平行です: 交点がありません</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: they do not intersect</source>
+            <translation>{} と {} は同心です: 交点がありません</translation>
+        </message>
+        <message>
+            <source>{} and {} coincide: no line through them</source>
+            <translation>{} と {} が一致しています: 両点を通る直線がありません</translation>
+        </message>
+        <message>
+            <source>intersections of {} and {}</source>
+            <translation>{} と {} の交点</translation>
+        </message>
+        <message>
+            <source>{} is inside {}: no tangent from it</source>
+            <translation>{} は {} の内側にあります: そこから接線を引けません</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: no common tangent</source>
+            <translation>{} と {} は同心です: 共通接線がありません</translation>
+        </message>
+        <message>
+            <source>{} and {} lie one inside the other: no tangent on the same side of both</source>
+            <translation>{} と {} は一方が他方の内側にあります: 両方の同じ側に接する接線がありません</translation>
+        </message>
+        <message>
+            <source>{} and {} overlap: no tangent crossing between them</source>
+            <translation>{} と {} は重なっています: 間を横切る接線がありません</translation>
+        </message>
+        <message>
+            <source>{}, {} and {} lie on one line: no circle through them</source>
+            <translation>{}、{}、{} は一直線上にあります: それらを通る円がありません</translation>
+        </message>
+        <message>
+            <source>radius {} is not smaller than {}'s radius {}: no circle inside it</source>
+            <translation>半径 {0} が {1} の半径 {2} より小さくありません: その内側に円は入りません</translation>
+        </message>
+        <message>
+            <source>no circle of radius {} on the {} side of {} touches {} from outside (the radius is too small or the side is wrong)</source>
+            <translation>{2} の {1} 側に、{3} に外側から接する半径 {0} の円がありません (半径が小さすぎるか、側が違います)</translation>
+        </message>
+        <message>
+            <source>no circle of radius {} on the {} side of {} touches {} from inside (the radius is too small or the side is wrong)</source>
+            <translation>{2} の {1} 側に、{3} に内側から接する半径 {0} の円がありません (半径が小さすぎるか、側が違います)</translation>
+        </message>
+        <message>
+            <source>centres</source>
+            <translation>中心</translation>
+        </message>
+        <message>
+            <source>a point</source>
+            <translation>点</translation>
+        </message>
+        <message>
+            <source>a line</source>
+            <translation>直線</translation>
+        </message>
+        <message>
+            <source>a circle</source>
+            <translation>円</translation>
+        </message>
+        <message>
+            <source>a contour</source>
+            <translation>輪郭</translation>
+        </message>
+        <message>
+            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
+            <translation>XLARGE、XSMALL、YLARGE または YSMALL</translation>
+        </message>
+        <message>
+            <source>the end of the line</source>
+            <translation>行末</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>テキストの終わり</translation>
+        </message>
+        <message>
+            <source>the character '{}'</source>
+            <translation>文字 '{}'</translation>
+        </message>
+        <message>
+            <source>expected {} after {}, found {}</source>
+            <translation>{1} の後には {0} が必要ですが、{2} があります</translation>
+        </message>
+        <message>
+            <source>LEFT or RIGHT</source>
+            <translation>LEFT または RIGHT</translation>
+        </message>
+        <message>
+            <source>the number {} is out of range (at most 1000000 either way)</source>
+            <translation>数値 {} が範囲外です (正負とも最大 1000000)</translation>
+        </message>
+        <message>
+            <source>{} must be greater than 0, found {}</source>
+            <translation>{}は 0 より大きくなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>in {}, {} is not defined: an element must be defined before it is used</source>
+            <translation>{0} で、{1} は定義されていません: 要素は使う前に定義してください</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where {} is needed</source>
+            <translation>{0} で、{1} は{2}ですが、ここには{3}が必要です</translation>
+        </message>
+        <message>
+            <source>a line or circle name</source>
+            <translation>直線名または円名</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a line or a circle is needed</source>
+            <translation>{0} で、{1} は{2}ですが、ここには直線か円が必要です</translation>
+        </message>
+        <message>
+            <source>expected an element name at the start of a statement, found {}</source>
+            <translation>文の始めには要素名が必要ですが、{} があります</translation>
+        </message>
+        <message>
+            <source>'{}' is a word of the language and cannot name an element</source>
+            <translation>'{}' は言語の予約語なので要素名にできません</translation>
+        </message>
+        <message>
+            <source>{} is already defined on line {}</source>
+            <translation>{} は {} 行目ですでに定義されています</translation>
+        </message>
+        <message>
+            <source>POINT, LINE, CIRCLE or CONTOUR</source>
+            <translation>POINT、LINE、CIRCLE または CONTOUR</translation>
+        </message>
+        <message>
+            <source>the end of the statement</source>
+            <translation>文の終わり</translation>
+        </message>
+        <message>
+            <source>a number</source>
+            <translation>数値</translation>
+        </message>
+        <message>
+            <source>a number (the y coordinate)</source>
+            <translation>数値 (y 座標)</translation>
+        </message>
+        <message>
+            <source>a circle name</source>
+            <translation>円名</translation>
+        </message>
+        <message>
+            <source>in {}, {} and {} may meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before INTOF to choose</source>
+            <translation>{0} で、{1} と {2} は 2 回交わることがあります: 選ぶには INTOF の前に XLARGE、XSMALL、YLARGE または YSMALL を書いてください</translation>
+        </message>
+        <message>
+            <source>in {}, two lines meet once: no {} before INTOF</source>
+            <translation>{} で、2 本の直線は 1 回しか交わりません: INTOF の前に {} は不要です</translation>
+        </message>
+        <message>
+            <source>a number, CENTER, INTOF or XLARGE/XSMALL/YLARGE/YSMALL</source>
+            <translation>数値、CENTER、INTOF または XLARGE/XSMALL/YLARGE/YSMALL</translation>
+        </message>
+        <message>
+            <source>a line name</source>
+            <translation>直線名</translation>
+        </message>
+        <message>
+            <source>a number (the distance)</source>
+            <translation>数値 (距離)</translation>
+        </message>
+        <message>
+            <source>the distance</source>
+            <translation>距離</translation>
+        </message>
+        <message>
+            <source>a point name</source>
+            <translation>点名</translation>
+        </message>
+        <message>
+            <source>a number (the angle in degrees)</source>
+            <translation>数値 (角度、度)</translation>
+        </message>
+        <message>
+            <source>a point name, ATANGL, LEFT or RIGHT</source>
+            <translation>点名、ATANGL、LEFT または RIGHT</translation>
+        </message>
+        <message>
+            <source>a point name, PARLEL, LEFT or RIGHT</source>
+            <translation>点名、PARLEL、LEFT または RIGHT</translation>
+        </message>
+        <message>
+            <source>a line name, OUT or IN</source>
+            <translation>直線名、OUT または IN</translation>
+        </message>
+        <message>
+            <source>CENTER, a point name or XLARGE/XSMALL/YLARGE/YSMALL</source>
+            <translation>CENTER、点名または XLARGE/XSMALL/YLARGE/YSMALL</translation>
+        </message>
+        <message>
+            <source>a number (the radius)</source>
+            <translation>数値 (半径)</translation>
+        </message>
+        <message>
+            <source>the radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>a line or circle name, CLW or CCLW</source>
+            <translation>直線名または円名、CLW または CCLW</translation>
+        </message>
+        <message>
+            <source>an element name, XLARGE/XSMALL/YLARGE/YSMALL, CLW or CCLW</source>
+            <translation>要素名、XLARGE/XSMALL/YLARGE/YSMALL、CLW または CCLW</translation>
+        </message>
+        <message>
+            <source>in {}, {} ends the contour but no point starts it: an open contour runs from a point to a point</source>
+            <translation>{0} で、{1} が輪郭を終えていますが、始めの点がありません: 開いた輪郭は点から点までです</translation>
+        </message>
+        <message>
+            <source>in {}, {} after {} is not between two elements: the contour ends at {}</source>
+            <translation>{0} で、{2} の後の {1} が 2 つの要素の間にありません: 輪郭は {3} で終わります</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a point: only the first and the last item of a contour may be points</source>
+            <translation>{0} で、{1} は点です: 点にできるのは輪郭の最初と最後の項目だけです</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a circle is needed</source>
+            <translation>{0} で、{1} は{2}ですが、ここには円が必要です</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a circle: write CLW or CCLW before it</source>
+            <translation>{0} で、{1} は円です: その前に CLW か CCLW を書いてください</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a line: no {} before it (CLW and CCLW are for circles)</source>
+            <translation>{0} で、{1} は直線です: その前に {2} は不要です (CLW と CCLW は円に使います)</translation>
+        </message>
+        <message>
+            <source>in {}, {} follows itself: the same element twice in a row</source>
+            <translation>{0} で、{1} が続けて 2 回あります: 同じ要素が連続しています</translation>
+        </message>
+        <message>
+            <source>in {}, {} starts at {}: no {} before it</source>
+            <translation>{0} で、{1} は {2} から始まります: その前に {3} は不要です</translation>
+        </message>
+        <message>
+            <source>in {}, two lines meet once: no {} before {}</source>
+            <translation>{0} で、2 本の直線は 1 回しか交わりません: {2} の前に {1} は不要です</translation>
+        </message>
+        <message>
+            <source>a number (the chamfer)</source>
+            <translation>数値 (面取り)</translation>
+        </message>
+        <message>
+            <source>the chamfer</source>
+            <translation>面取り</translation>
+        </message>
+        <message>
+            <source>in {}, the contour starts at {} and needs a point at its end, on {}</source>
+            <translation>{0} で、輪郭は {1} から始まるので、終わりに {2} の上の点が必要です</translation>
+        </message>
+        <message>
+            <source>in {}, a closed contour needs two elements or more, or a single circle</source>
+            <translation>{} で、閉じた輪郭には 2 つ以上の要素か、円 1 つが必要です</translation>
+        </message>
+        <message>
+            <source>in {}, {} alone is a full circle: no {} before it</source>
+            <translation>{0} で、{1} だけなので全円です: その前に {2} は不要です</translation>
+        </message>
+        <message>
+            <source>in {}, {} alone is a full circle: no {} on it</source>
+            <translation>{0} で、{1} だけなので全円です: {2} は付けられません</translation>
+        </message>
+        <message>
+            <source>in {}, {} follows itself: the same element twice in a row (the last element joins the first)</source>
+            <translation>{0} で、{1} が続けて 2 回あります: 同じ要素が連続しています (最後の要素は最初の要素につながります)</translation>
+        </message>
+        <message>
             <source>a string ({})</source>
             <translation>文字列 ({})</translation>
         </message>
@@ -1974,20 +2646,12 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>真偽値</translation>
         </message>
         <message>
-            <source>a number</source>
-            <translation>数値</translation>
-        </message>
-        <message>
             <source>an unexpected value</source>
             <translation>想定外の値</translation>
         </message>
         <message>
             <source>one of {}</source>
             <translation>{} のいずれか</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>ファイルが空です</translation>
         </message>
         <message>
             <source>the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)</source>
@@ -2090,6 +2754,62 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点 [x, y]</translation>
         </message>
         <message>
+            <source>it has no segments</source>
+            <translation>線分がありません</translation>
+        </message>
+        <message>
+            <source>a closed contour of one line</source>
+            <translation>直線 1 本だけの閉じた輪郭です</translation>
+        </message>
+        <message>
+            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
+            <translation>{} に達し、図形テキストで書ける ±1000000 mm を超えています</translation>
+        </message>
+        <message>
+            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
+            <translation>{} を中心とする円弧の半径 {} mm は丸めると 0 になります</translation>
+        </message>
+        <message>
+            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
+            <translation>円弧の半径が図形テキストで書ける 1000000 mm を超えています</translation>
+        </message>
+        <message>
+            <source>its elements cannot be evaluated: {}</source>
+            <translation>要素を計算できません: {}</translation>
+        </message>
+        <message>
+            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
+            <translation>{3} mm 単位で書くと要素 {0} と {1} が {2} で交わらなくなります</translation>
+        </message>
+        <message>
+            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
+            <translation>{0} と {1} は {2} 付近で x も y も {3} mm 以内の 2 点で交わります: XLARGE、XSMALL、YLARGE、YSMALL ではどちらか選べません</translation>
+        </message>
+        <message>
+            <source>its text is refused: {}</source>
+            <translation>テキストが受け付けられません: {}</translation>
+        </message>
+        <message>
+            <source>its text gives back other segments</source>
+            <translation>テキストから別の線分が戻ります</translation>
+        </message>
+        <message>
+            <source>it comes back {:.7f} mm from the drawing</source>
+            <translation>図面から {} mm ずれて戻ります</translation>
+        </message>
+        <message>
+            <source>contour {} is left out: {}</source>
+            <translation>輪郭 {} は除外しました: {}</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
+            <translation>輪郭 {} ({}) は図面から {} mm ずれて戻ります</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
+            <translation>輪郭 {} ({}) は {} mm 単位で書きました: 0.000001 mm 単位では{}</translation>
+        </message>
+        <message>
             <source>the jaws' height</source>
             <translation>バイスの口金の高さ</translation>
         </message>
@@ -2160,6 +2880,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>{} more errors not listed; correct the ones above first</source>
             <translation>ほかに {} 件のエラーがあります。まず上のものを直してください</translation>
+        </message>
+        <message>
+            <source>pilot hole</source>
+            <translation>下穴</translation>
+        </message>
+        <message>
+            <source>roughing</source>
+            <translation>荒加工</translation>
+        </message>
+        <message>
+            <source>floor finishing</source>
+            <translation>底面仕上げ</translation>
+        </message>
+        <message>
+            <source>wall finishing</source>
+            <translation>側壁仕上げ</translation>
+        </message>
+        <message>
+            <source>inclined-face finishing</source>
+            <translation>傾斜面仕上げ</translation>
+        </message>
+        <message>
+            <source>facing</source>
+            <translation>端面削り</translation>
+        </message>
+        <message>
+            <source>centre drilling</source>
+            <translation>センタ穴加工</translation>
+        </message>
+        <message>
+            <source>drilling</source>
+            <translation>穴あけ</translation>
+        </message>
+        <message>
+            <source>grooving</source>
+            <translation>溝入れ</translation>
+        </message>
+        <message>
+            <source>finishing</source>
+            <translation>仕上げ</translation>
+        </message>
+        <message>
+            <source>threading</source>
+            <translation>ねじ切り</translation>
+        </message>
+        <message>
+            <source>parting off</source>
+            <translation>突切り</translation>
+        </message>
+        <message>
+            <source>tapping</source>
+            <translation>タップ立て</translation>
+        </message>
+        <message>
+            <source>reaming</source>
+            <translation>リーマ加工</translation>
+        </message>
+        <message>
+            <source>boring</source>
+            <translation>中ぐり</translation>
+        </message>
+        <message>
+            <source>face milling</source>
+            <translation>正面フライス削り</translation>
+        </message>
+        <message>
+            <source>side milling</source>
+            <translation>側面削り</translation>
+        </message>
+        <message>
+            <source>area clearing</source>
+            <translation>領域加工</translation>
         </message>
         <message>
             <source>centre drill</source>
@@ -2244,6 +3036,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>the passes were drawn {} mm wide</source>
+            <translation>パスが {} mm 幅で描かれています</translation>
         </message>
         <message>
             <source>pocket</source>
@@ -2366,10 +3162,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>行間のピッチ</translation>
         </message>
         <message>
-            <source>the radius</source>
-            <translation>半径</translation>
-        </message>
-        <message>
             <source>the angular pitch {:g}° must not be 0 and lie within ±360°</source>
             <translation>角度ピッチ {}° は 0 以外で ±360° 以内にしてください</translation>
         </message>
@@ -2454,6 +3246,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{} ～ Ø{} のドリル ({} Ø{} に対して {} ～ {} 小さい)、刃長 {} まで</translation>
         </message>
         <message>
+            <source>ream</source>
+            <translation>リーマ仕上げ</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>中ぐり</translation>
+        </message>
+        <message>
             <source>largest drill {} to {} under Ø{} to {}</source>
             <translation>Ø{2} より {0} ～ {1} 小さい最大のドリル ({3} 用)</translation>
         </message>
@@ -2470,8 +3270,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{1} の{0}、刃長 {2} まで</translation>
         </message>
         <message>
+            <source>boring bar (set to the bore)</source>
+            <translation>中ぐりバー (穴径に合わせる)</translation>
+        </message>
+        <message>
             <source>{} of the hole's Ø{}</source>
             <translation>穴径 Ø{1} の{0}</translation>
+        </message>
+        <message>
+            <source>boring tool</source>
+            <translation>中ぐりバイト</translation>
         </message>
         <message>
             <source>centre drill spotting Ø{} for the Ø{} drill</source>
@@ -2488,6 +3296,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>pocket opening</source>
             <translation>ポケットの開口</translation>
+        </message>
+        <message>
+            <source>roughing layers</source>
+            <translation>荒加工の各層</translation>
+        </message>
+        <message>
+            <source>the coordinate X of {}</source>
+            <translation>{} の X 座標</translation>
+        </message>
+        <message>
+            <source>the coordinate Y of {}</source>
+            <translation>{} の Y 座標</translation>
         </message>
         <message>
             <source>the cornerRadius</source>
@@ -2512,6 +3332,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>where {} is not defined: 1 touched from outside (boss, block), 2 from inside (bore, pocket)</source>
             <translation>測定側 {} は定義されていません: 1 外側から (ボス、ブロック)、2 内側から (穴、ポケット)</translation>
+        </message>
+        <message>
+            <source>the X of {}</source>
+            <translation>{} の X</translation>
+        </message>
+        <message>
+            <source>the Y of {}</source>
+            <translation>{} の Y</translation>
         </message>
         <message>
             <source>point {}: its {} is missing</source>
@@ -2586,6 +3414,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>最大 8 個の面コードの配列 (1 -X、2 +X、3 -Y、4 +Y)</translation>
         </message>
         <message>
+            <source>No probe in the tool library (type "probe"): the ball radius is unknown</source>
+            <translation>工具ライブラリにプローブ (種類 "probe") がありません: 球の半径がわかりません</translation>
+        </message>
+        <message>
+            <source>{} of at least {} touches entered: the probing cycle the export writes makes them on the machine</source>
+            <translation>測定点は {} 点入力済み (最低 {} 点): 出力する測定サイクルが機械上で測定します</translation>
+        </message>
+        <message>
+            <source>Bore: diameter {}</source>
+            <translation>穴: 直径 {}</translation>
+        </message>
+        <message>
+            <source>Boss: diameter {}</source>
+            <translation>ボス: 直径 {}</translation>
+        </message>
+        <message>
+            <source>(not measured: touch one side twice)</source>
+            <translation>(未測定: 一つの面を 2 回測定してください)</translation>
+        </message>
+        <message>
+            <source>Pocket: {} x {}, turned {}</source>
+            <translation>ポケット: {} x {}、回転 {}</translation>
+        </message>
+        <message>
+            <source>Block: {} x {}, turned {}</source>
+            <translation>ブロック: {} x {}、回転 {}</translation>
+        </message>
+        <message>
+            <source>Centre from P1: X {} Y {}</source>
+            <translation>P1 からの中心: X {} Y {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {} Z {}</source>
+            <translation>設定するワーク座標: X {} Y {} Z {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {}</source>
+            <translation>設定するワーク座標: X {} Y {}</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>幅</translation>
         </message>
@@ -2598,12 +3466,28 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>工具側の輪郭の最小内側半径</translation>
         </message>
         <message>
-            <source>side milling</source>
-            <translation>側面削り</translation>
-        </message>
-        <message>
             <source>pinned tool T{} ({}) does not fit: {}</source>
             <translation>指定された工具 T{} ({}) は使えません: {}</translation>
+        </message>
+        <message>
+            <source>{} along {}</source>
+            <translation>{} ({} に沿って)</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>半径 {1} が輪郭の最小内側半径 {2} に入り、パスが輪郭から離れる最大のフラットエンドミル ({0})。刃長 ({3}) が T より短いので層に分けて削ります</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour</source>
+            <translation>半径 {1} が輪郭の最小内側半径 {2} に入り、パスが輪郭から離れる最大のフラットエンドミル ({0})</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>パスが輪郭から離れる最大のフラットエンドミル ({0})。刃長 ({1}) が T より短いので層に分けて削ります</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour</source>
+            <translation>パスが輪郭から離れる最大のフラットエンドミル ({})</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -2754,8 +3638,92 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>使用時間 {} 分は負にできません</translation>
         </message>
         <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
+            <translation>{4}用の、半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
+            <translation>{3}用の、直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。{3} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{5} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。{4} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{6} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
+            <translation>側壁のテーパ片側 {0} 度のテーパエンドミル (先端 {1})。先端半径 {2} が底のコーナー半径 {3} に入ります</translation>
+        </message>
+        <message>
+            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
+            <translation>半径が 6 mm 以下かつ傾斜面の長さ {1} の半分以下で最大のボールエンドミル ({0})</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} is not in the tool library</source>
+            <translation>{}: 指定された工具 T{} が工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
+            <translation>{}: 指定された工具 T{} ({}) は合いません: {}</translation>
+        </message>
+        <message>
+            <source>pinned by the operator</source>
+            <translation>オペレータが指定</translation>
+        </message>
+        <message>
+            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
+            <translation>{1} のエンドミルがプランジする穴の、それより小さくない最小のドリル ({0})</translation>
+        </message>
+        <message>
             <source>it is a {}, the step needs a {}</source>
             <translation>この工具は{}ですが、工程には{}が必要です</translation>
+        </message>
+        <message>
+            <source>it has no cutting data for {}</source>
+            <translation>{} の切削条件がありません</translation>
         </message>
         <message>
             <source>its taper is {:g} deg per side, the wall's is {:g}</source>
@@ -2796,6 +3764,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
             <translation>工具ライブラリには{1}に使える{0}がありません。最も近いのは T{2} ({3}) ですが、{4}</translation>
+        </message>
+        <message>
+            <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
+            <translation>T{0} ({1} mm {2}) は工程 {3} (ユニット {4} {5}) の途中で寿命に達します: 残り {6} 分、工程には {7} 分必要です。その工程の前に新しい工具に交換してください</translation>
         </message>
         <message>
             <source>allowance row {}: there is no edge {} in the profile</source>
@@ -2948,6 +3920,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>形状が部品を囲む一続きになっていません: {} (行 {}) が閉じる線 {} に X{} Z{} で達します</translation>
+        </message>
+        <message>
+            <source>pinned</source>
+            <translation>オペレータが指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒材に端面の取り代がありますが、工具ライブラリに端面を削る外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>外径荒加工用チップで端面を削ります (ノーズ半径最大)</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>穴が中ぐりバイトには狭すぎ (バイトは {} から入り、穴径から中ぐり代を除くと {} です)、その寸法にするドリルがライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>中ぐりには {} ～ {} の下穴が必要ですが (中ぐりバイトは {} から入ります)、工具ライブラリにその範囲のドリルがありません</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>中ぐり代を除いた穴径 ({}) 以内で、中ぐりバイトの必要穴径 {} 以上の最大のドリル</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小のセンタドリル</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>工具ライブラリに内径用 (中ぐり) の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>工具ライブラリに外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>すべての要素に届きます。届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>届かない要素が {} 個あります。最も多く届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>溝幅 ({}) を超えない最も広い溝入れバイト</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最も狭い溝入れバイト。横の空間から {} に届きます</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>{} に使える最も狭い突切りバイト</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} は内径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} は外径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>その側で最大のノーズ半径 (最も強い刃先)</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>ピッチ {} 用の外径ねじ切りチップ</translation>
         </message>
         <message>
             <source>the job</source>
@@ -3337,6 +4381,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>壁のテーパ (片側、度)；垂直な壁は 0</translation>
         </message>
         <message>
+            <source>P1 side</source>
+            <translation>P1 の面</translation>
+        </message>
+        <message>
+            <source>P2 side</source>
+            <translation>P2 の面</translation>
+        </message>
+        <message>
+            <source>P3 side</source>
+            <translation>P3 の面</translation>
+        </message>
+        <message>
+            <source>P4 side</source>
+            <translation>P4 の面</translation>
+        </message>
+        <message>
+            <source>P5 side</source>
+            <translation>P5 の面</translation>
+        </message>
+        <message>
+            <source>P6 side</source>
+            <translation>P6 の面</translation>
+        </message>
+        <message>
+            <source>P7 side</source>
+            <translation>P7 の面</translation>
+        </message>
+        <message>
+            <source>P8 side</source>
+            <translation>P8 の面</translation>
+        </message>
+        <message>
             <source>Shape</source>
             <translation>形状</translation>
         </message>
@@ -3351,6 +4427,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>P1 machine Y</source>
             <translation>P1 機械座標 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未測定</translation>
         </message>
         <message>
             <source>Top face machine Z</source>

@@ -1507,6 +1507,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>切断</translation>
         </message>
         <message>
+            <source>Tapping</source>
+            <translation>攻丝</translation>
+        </message>
+        <message>
+            <source>Reaming</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>Boring</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
             <source>roughing, floor finishing and wall finishing</source>
             <translation>粗加工、底面精加工和侧壁精加工</translation>
         </message>
@@ -1950,6 +1962,666 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>行距</translation>
         </message>
         <message>
+            <source>{}, {}</source>
+            <translation>{}, {}</translation>
+        </message>
+        <message>
+            <source>more than {} ends meet at {} or near it: {}, …; the nearest were joined, the rest left open</source>
+            <translation>超过 {0} 个端点汇集于 {1} 或其附近：{2}, …；已连接最近的端点，其余保持开放</translation>
+        </message>
+        <message>
+            <source>more than {} ends meet at {} or near it: {}; the nearest were joined, the rest left open</source>
+            <translation>超过 {0} 个端点汇集于 {1} 或其附近：{2}；已连接最近的端点，其余保持开放</translation>
+        </message>
+        <message>
+            <source>{} ends meet at {}: {}, …; the nearest were joined, the rest left open</source>
+            <translation>{0} 个端点汇集于 {1}：{2}, …；已连接最近的端点，其余保持开放</translation>
+        </message>
+        <message>
+            <source>{} ends meet at {}: {}; the nearest were joined, the rest left open</source>
+            <translation>{0} 个端点汇集于 {1}：{2}；已连接最近的端点，其余保持开放</translation>
+        </message>
+        <message>
+            <source>gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm</source>
+            <translation>{1} 处 {2} 与 {3}（其端点在 {4}）之间有 {0} mm 的间隙；间隙容差为 {5} mm</translation>
+        </message>
+        <message>
+            <source>its plane is not the XY plane (extrusion {:.4g}, {:.4g}, {:.4g})</source>
+            <translation>其平面不是 XY 平面（拉伸方向 {}, {}, {}）</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its ends differ in Z)</source>
+            <translation>偏离 XY 平面（两端 Z 值不同）</translation>
+        </message>
+        <message>
+            <source>{} not read: {}</source>
+            <translation>未读取 {}：{}</translation>
+        </message>
+        <message>
+            <source>it has no length</source>
+            <translation>长度为零</translation>
+        </message>
+        <message>
+            <source>its radius {:g} is not positive</source>
+            <translation>半径 {} 不是正数</translation>
+        </message>
+        <message>
+            <source>its major axis leaves the XY plane</source>
+            <translation>长轴偏离 XY 平面</translation>
+        </message>
+        <message>
+            <source>it is degenerate (axis {:g}, ratio {:g})</source>
+            <translation>已退化（轴 {}，比率 {}）</translation>
+        </message>
+        <message>
+            <source>its parameters are out of range</source>
+            <translation>参数超出范围</translation>
+        </message>
+        <message>
+            <source>it needs more than {} lines at the spline tolerance</source>
+            <translation>按样条容差需要超过 {} 条直线</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its vertices differ in Z)</source>
+            <translation>偏离 XY 平面（顶点 Z 值不同）</translation>
+        </message>
+        <message>
+            <source>{}: a bulge of {:g} read as a straight line</source>
+            <translation>{}：凸度 {} 按直线读取</translation>
+        </message>
+        <message>
+            <source>its {} vertices give no segment</source>
+            <translation>其 {} 个顶点构不成线段</translation>
+        </message>
+        <message>
+            <source>it is given by fit points only, without control points</source>
+            <translation>只有拟合点，没有控制点</translation>
+        </message>
+        <message>
+            <source>it has no control points</source>
+            <translation>没有控制点</translation>
+        </message>
+        <message>
+            <source>its degree {} is not 1 to 20</source>
+            <translation>次数 {} 不在 1 到 20 之间</translation>
+        </message>
+        <message>
+            <source>{} knots do not fit {} control points of degree {}</source>
+            <translation>{0} 个节点与次数为 {2} 的 {1} 个控制点不符</translation>
+        </message>
+        <message>
+            <source>its knots decrease</source>
+            <translation>节点递减</translation>
+        </message>
+        <message>
+            <source>its knots span nothing</source>
+            <translation>节点范围为空</translation>
+        </message>
+        <message>
+            <source>it leaves the XY plane (its control points differ in Z)</source>
+            <translation>偏离 XY 平面（控制点 Z 值不同）</translation>
+        </message>
+        <message>
+            <source>a weight {:g} is not positive</source>
+            <translation>权重 {} 不是正数</translation>
+        </message>
+        <message>
+            <source>the drawing needs more than {} segments: too large or too fine a spline tolerance</source>
+            <translation>图纸需要超过 {} 条线段：图纸过大或样条容差过细</translation>
+        </message>
+        <message>
+            <source>inch</source>
+            <translation>英寸</translation>
+        </message>
+        <message>
+            <source>foot</source>
+            <translation>英尺</translation>
+        </message>
+        <message>
+            <source>mile</source>
+            <translation>英里</translation>
+        </message>
+        <message>
+            <source>microinch</source>
+            <translation>微英寸</translation>
+        </message>
+        <message>
+            <source>mil</source>
+            <translation>密耳</translation>
+        </message>
+        <message>
+            <source>yard</source>
+            <translation>码</translation>
+        </message>
+        <message>
+            <source>ångström</source>
+            <translation>埃</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>无</translation>
+        </message>
+        <message>
+            <source>the gap tolerance {:g} mm is not between 0.000001 and 10 mm</source>
+            <translation>间隙容差 {} mm 不在 0.000001 到 10 mm 之间</translation>
+        </message>
+        <message>
+            <source>the spline tolerance {:g} mm is not between 0.0001 and 10 mm</source>
+            <translation>样条容差 {} mm 不在 0.0001 到 10 mm 之间</translation>
+        </message>
+        <message>
+            <source>the gap report distance {:g} mm is not between 0 and 1000 mm</source>
+            <translation>间隙报告距离 {} mm 不在 0 到 1000 mm 之间</translation>
+        </message>
+        <message>
+            <source>{} on layer {} (DXF line {})</source>
+            <translation>图层 {1} 上的 {0}（DXF 第 {2} 行）</translation>
+        </message>
+        <message>
+            <source>{} on layer {}</source>
+            <translation>图层 {1} 上的 {0}</translation>
+        </message>
+        <message>
+            <source>cannot read {}: {}</source>
+            <translation>无法读取 {}：{}</translation>
+        </message>
+        <message>
+            <source>{} is larger than 256 MB</source>
+            <translation>{} 大于 256 MB</translation>
+        </message>
+        <message>
+            <source>cannot open {}: {}</source>
+            <translation>无法打开 {}：{}</translation>
+        </message>
+        <message>
+            <source>cannot read {}</source>
+            <translation>无法读取 {}</translation>
+        </message>
+        <message>
+            <source>the drawing has no layer {}</source>
+            <translation>图纸中没有图层 {}</translation>
+        </message>
+        <message>
+            <source>the drawing's units ($INSUNITS {}) are not lengths to machine in</source>
+            <translation>图纸单位（$INSUNITS {}）不是可用于加工的长度单位</translation>
+        </message>
+        <message>
+            <source>the drawing does not say its units ($INSUNITS unitless or absent): read as mm</source>
+            <translation>图纸未指明单位（$INSUNITS 为无单位或缺失）：按 mm 读取</translation>
+        </message>
+        <message>
+            <source>the drawing says its units are {}; read as {} as set</source>
+            <translation>图纸单位为 {}；按设置以 {} 读取</translation>
+        </message>
+        <message>
+            <source>no lines, arcs, circles, polylines, splines or ellipses on the drawing's layers; the drawing's layers: {}</source>
+            <translation>图纸的图层上没有直线、圆弧、圆、多段线、样条或椭圆；图纸的图层：{}</translation>
+        </message>
+        <message>
+            <source>no lines, arcs, circles, polylines, splines or ellipses on the selected layers; the drawing's layers: {}</source>
+            <translation>所选图层上没有直线、圆弧、圆、多段线、样条或椭圆；图纸的图层：{}</translation>
+        </message>
+        <message>
+            <source>none of the entities on the selected layers could be read (see the warnings)</source>
+            <translation>所选图层上的实体均无法读取（见警告）</translation>
+        </message>
+        <message>
+            <source>{} gaps up to {:.4g} mm closed (the largest at ({:.3f}, {:.3f})); the gap tolerance is {:.4g} mm</source>
+            <translation>已闭合 {0} 处最大 {1} mm 的间隙（最大处在 ({2}, {3})）；间隙容差为 {4} mm</translation>
+        </message>
+        <message>
+            <source>… and {} more warnings like these</source>
+            <translation>… 另有 {} 条类似警告</translation>
+        </message>
+        <message>
+            <source>line {}: '{}' stands where a DXF group code belongs: not a DXF file, or a damaged one</source>
+            <translation>第 {0} 行：DXF 组码的位置上是 '{1}'：不是 DXF 文件，或文件已损坏</translation>
+        </message>
+        <message>
+            <source>{} entities in paper space not read</source>
+            <translation>未读取图纸空间中的 {} 个实体</translation>
+        </message>
+        <message>
+            <source>not read (no contour geometry): {} — block references are not expanded: explode them in the CAD program</source>
+            <translation>未读取（非轮廓几何）：{} — 不展开块参照：请在 CAD 程序中将其分解</translation>
+        </message>
+        <message>
+            <source>not read (no contour geometry): {}</source>
+            <translation>未读取（非轮廓几何）：{}</translation>
+        </message>
+        <message>
+            <source>line {}: POLYLINE without SEQEND, read up to its last VERTEX</source>
+            <translation>第 {} 行：POLYLINE 没有 SEQEND，读取到其最后一个 VERTEX</translation>
+        </message>
+        <message>
+            <source>line {}: POLYLINE mesh or polyface (flags {}) is no contour: not read</source>
+            <translation>第 {} 行：POLYLINE 网格或多面网格（标志 {}）不是轮廓：未读取</translation>
+        </message>
+        <message>
+            <source>line {}: {} not read: '{}' is not a finite number (within ±1e12)</source>
+            <translation>第 {} 行：未读取 {}：'{}' 不是有限数字（±1e12 以内）</translation>
+        </message>
+        <message>
+            <source>line {}: {} not read: '{}' is not an integer</source>
+            <translation>第 {} 行：未读取 {}：'{}' 不是整数</translation>
+        </message>
+        <message>
+            <source>line {}: SPLINE not read: {} weights for {} control points</source>
+            <translation>第 {} 行：未读取 SPLINE：{} 个权重对应 {} 个控制点</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>文件为空</translation>
+        </message>
+        <message>
+            <source>the file is larger than {} MB</source>
+            <translation>文件大于 {} MB</translation>
+        </message>
+        <message>
+            <source>a binary DXF: save the drawing as an ASCII DXF (R12 or later)</source>
+            <translation>二进制 DXF：请将图纸另存为 ASCII DXF（R12 或更高版本）</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it holds binary data</source>
+            <translation>不是 DXF 文件：含有二进制数据</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it starts with '{}'</source>
+            <translation>不是 DXF 文件：以 '{}' 开头</translation>
+        </message>
+        <message>
+            <source>not a DXF file: it has no SECTION</source>
+            <translation>不是 DXF 文件：没有 SECTION</translation>
+        </message>
+        <message>
+            <source>the DXF file has no ENTITIES section</source>
+            <translation>DXF 文件没有 ENTITIES 段</translation>
+        </message>
+        <message>
+            <source>the file ends in the middle of a group: it may be cut short</source>
+            <translation>文件在组的中间结束：可能不完整</translation>
+        </message>
+        <message>
+            <source>the file ends without EOF: it may be cut short</source>
+            <translation>文件没有 EOF 就结束：可能不完整</translation>
+        </message>
+        <message>
+            <source>{} and {} are parallel: they do not meet</source>
+            <translation>{} 与 {} 平行：不相交</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: they do not meet</source>
+            <translation>{} 与 {} 同心：不相交</translation>
+        </message>
+        <message>
+            <source>{} and {} do not meet</source>
+            <translation>{} 与 {} 不相交</translation>
+        </message>
+        <message>
+            <source>{} and {} meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before {} to choose</source>
+            <translation>{0} 与 {1} 相交两次：请在 {2} 前写 XLARGE、XSMALL、YLARGE 或 YSMALL 来选择</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two junctions of {} and {}: both have the same x; use YLARGE or YSMALL</source>
+            <translation>{0} 无法在 {1} 与 {2} 的两个连接点中选择：两者 x 相同；请用 YLARGE 或 YSMALL</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two junctions of {} and {}: both have the same y; use XLARGE or XSMALL</source>
+            <translation>{0} 无法在 {1} 与 {2} 的两个连接点中选择：两者 y 相同；请用 XLARGE 或 XSMALL</translation>
+        </message>
+        <message>
+            <source>{} is not on {}: an open contour starts on its first element</source>
+            <translation>{} 不在 {} 上：开放轮廓从其第一个元素上开始</translation>
+        </message>
+        <message>
+            <source>{} is not on {}: an open contour ends on its last element</source>
+            <translation>{} 不在 {} 上：开放轮廓在其最后一个元素上结束</translation>
+        </message>
+        <message>
+            <source>its coordinates cannot be computed (a degenerate definition)</source>
+            <translation>无法计算其坐标（退化的定义）</translation>
+        </message>
+        <message>
+            <source>{} is of zero length between {} and {}</source>
+            <translation>{0} 在 {1} 与 {2} 之间长度为零</translation>
+        </message>
+        <message>
+            <source>ROUND {} between {} and {}</source>
+            <translation>{1} 与 {2} 之间的 ROUND {0}</translation>
+        </message>
+        <message>
+            <source>CHAMF {} between {} and {}</source>
+            <translation>{1} 与 {2} 之间的 CHAMF {0}</translation>
+        </message>
+        <message>
+            <source>{}: they meet tangentially, there is no corner</source>
+            <translation>{}：两者相切，没有拐角</translation>
+        </message>
+        <message>
+            <source>{}: {} turns back along {}, there is no corner</source>
+            <translation>{0}：{1} 沿 {2} 折回，没有拐角</translation>
+        </message>
+        <message>
+            <source>{} does not fit: it is not smaller than {}'s radius {}</source>
+            <translation>{0} 放不下：不小于 {1} 的半径 {2}</translation>
+        </message>
+        <message>
+            <source>{} does not fit: no circle of radius {} touches both in the corner</source>
+            <translation>{0} 放不下：拐角处没有同时与两者相切的半径 {1} 的圆</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long from the start {}</source>
+            <translation>{0} 放不下：{1} 从起点 {3} 起只有 {2} mm 长</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long from the previous corner</source>
+            <translation>{0} 放不下：{1} 从上一个拐角起只有 {2} mm 长</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long to the end {}</source>
+            <translation>{0} 放不下：{1} 到终点 {3} 只有 {2} mm 长</translation>
+        </message>
+        <message>
+            <source>{} does not fit: {} is {} mm long to the next corner</source>
+            <translation>{0} 放不下：{1} 到下一个拐角只有 {2} mm 长</translation>
+        </message>
+        <message>
+            <source>{} and {} coincide: no circle through three points</source>
+            <translation>{} 与 {} 重合：无法作过三点的圆</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two {}: both have the same x; use YLARGE or YSMALL</source>
+            <translation>{0} 无法在两个{1}中选择：两者 x 相同；请用 YLARGE 或 YSMALL</translation>
+        </message>
+        <message>
+            <source>{} cannot choose between the two {}: both have the same y; use XLARGE or XSMALL</source>
+            <translation>{0} 无法在两个{1}中选择：两者 y 相同；请用 XLARGE 或 XSMALL</translation>
+        </message>
+        <message>
+            <source>{} names no side of {}: it is parallel to the X axis; use YLARGE or YSMALL</source>
+            <translation>{0} 无法指定 {1} 的一侧：它平行于 X 轴；请用 YLARGE 或 YSMALL</translation>
+        </message>
+        <message>
+            <source>{} names no side of {}: it is parallel to the Y axis; use XLARGE or XSMALL</source>
+            <translation>{0} 无法指定 {1} 的一侧：它平行于 Y 轴；请用 XLARGE 或 XSMALL</translation>
+        </message>
+        <message>
+            <source>{} and {} are parallel: they do not intersect</source>
+            <translation>{} 与 {} 平行：没有交点</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: they do not intersect</source>
+            <translation>{} 与 {} 同心：没有交点</translation>
+        </message>
+        <message>
+            <source>{} and {} coincide: no line through them</source>
+            <translation>{} 与 {} 重合：无法作过两点的直线</translation>
+        </message>
+        <message>
+            <source>intersections of {} and {}</source>
+            <translation>{} 与 {} 的交点</translation>
+        </message>
+        <message>
+            <source>{} is inside {}: no tangent from it</source>
+            <translation>{} 在 {} 内部：无法由此作切线</translation>
+        </message>
+        <message>
+            <source>{} and {} are concentric: no common tangent</source>
+            <translation>{} 与 {} 同心：没有公切线</translation>
+        </message>
+        <message>
+            <source>{} and {} lie one inside the other: no tangent on the same side of both</source>
+            <translation>{} 与 {} 一个在另一个内部：没有在两者同侧的切线</translation>
+        </message>
+        <message>
+            <source>{} and {} overlap: no tangent crossing between them</source>
+            <translation>{} 与 {} 重叠：没有从两者之间穿过的切线</translation>
+        </message>
+        <message>
+            <source>{}, {} and {} lie on one line: no circle through them</source>
+            <translation>{}、{} 和 {} 在一条直线上：无法作过它们的圆</translation>
+        </message>
+        <message>
+            <source>radius {} is not smaller than {}'s radius {}: no circle inside it</source>
+            <translation>半径 {0} 不小于 {1} 的半径 {2}：其内部放不下圆</translation>
+        </message>
+        <message>
+            <source>no circle of radius {} on the {} side of {} touches {} from outside (the radius is too small or the side is wrong)</source>
+            <translation>在 {2} 的 {1} 侧没有从外侧与 {3} 相切的半径 {0} 的圆（半径太小或侧向错误）</translation>
+        </message>
+        <message>
+            <source>no circle of radius {} on the {} side of {} touches {} from inside (the radius is too small or the side is wrong)</source>
+            <translation>在 {2} 的 {1} 侧没有从内侧与 {3} 相切的半径 {0} 的圆（半径太小或侧向错误）</translation>
+        </message>
+        <message>
+            <source>centres</source>
+            <translation>圆心</translation>
+        </message>
+        <message>
+            <source>a point</source>
+            <translation>点</translation>
+        </message>
+        <message>
+            <source>a line</source>
+            <translation>直线</translation>
+        </message>
+        <message>
+            <source>a circle</source>
+            <translation>圆</translation>
+        </message>
+        <message>
+            <source>a contour</source>
+            <translation>轮廓</translation>
+        </message>
+        <message>
+            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
+            <translation>XLARGE、XSMALL、YLARGE 或 YSMALL</translation>
+        </message>
+        <message>
+            <source>the end of the line</source>
+            <translation>行尾</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>文本结尾</translation>
+        </message>
+        <message>
+            <source>the character '{}'</source>
+            <translation>字符 '{}'</translation>
+        </message>
+        <message>
+            <source>expected {} after {}, found {}</source>
+            <translation>{1} 之后应为{0}，实际为{2}</translation>
+        </message>
+        <message>
+            <source>LEFT or RIGHT</source>
+            <translation>LEFT 或 RIGHT</translation>
+        </message>
+        <message>
+            <source>the number {} is out of range (at most 1000000 either way)</source>
+            <translation>数字 {} 超出范围（正负最多 1000000）</translation>
+        </message>
+        <message>
+            <source>{} must be greater than 0, found {}</source>
+            <translation>{}必须大于 0，实际为 {}</translation>
+        </message>
+        <message>
+            <source>in {}, {} is not defined: an element must be defined before it is used</source>
+            <translation>在 {0} 中，{1} 未定义：元素必须先定义后使用</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where {} is needed</source>
+            <translation>在 {0} 中，{1} 是{2}，而此处需要{3}</translation>
+        </message>
+        <message>
+            <source>a line or circle name</source>
+            <translation>直线名或圆名</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a line or a circle is needed</source>
+            <translation>在 {0} 中，{1} 是{2}，而此处需要直线或圆</translation>
+        </message>
+        <message>
+            <source>expected an element name at the start of a statement, found {}</source>
+            <translation>语句开头应为元素名，实际为{}</translation>
+        </message>
+        <message>
+            <source>'{}' is a word of the language and cannot name an element</source>
+            <translation>'{}' 是语言的保留字，不能用作元素名</translation>
+        </message>
+        <message>
+            <source>{} is already defined on line {}</source>
+            <translation>{} 已在第 {} 行定义</translation>
+        </message>
+        <message>
+            <source>POINT, LINE, CIRCLE or CONTOUR</source>
+            <translation>POINT、LINE、CIRCLE 或 CONTOUR</translation>
+        </message>
+        <message>
+            <source>the end of the statement</source>
+            <translation>语句结尾</translation>
+        </message>
+        <message>
+            <source>a number</source>
+            <translation>数字</translation>
+        </message>
+        <message>
+            <source>a number (the y coordinate)</source>
+            <translation>数字（y 坐标）</translation>
+        </message>
+        <message>
+            <source>a circle name</source>
+            <translation>圆名</translation>
+        </message>
+        <message>
+            <source>in {}, {} and {} may meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before INTOF to choose</source>
+            <translation>在 {0} 中，{1} 与 {2} 可能相交两次：请在 INTOF 前写 XLARGE、XSMALL、YLARGE 或 YSMALL 来选择</translation>
+        </message>
+        <message>
+            <source>in {}, two lines meet once: no {} before INTOF</source>
+            <translation>在 {} 中，两条直线只相交一次：INTOF 前不要写 {}</translation>
+        </message>
+        <message>
+            <source>a number, CENTER, INTOF or XLARGE/XSMALL/YLARGE/YSMALL</source>
+            <translation>数字、CENTER、INTOF 或 XLARGE/XSMALL/YLARGE/YSMALL</translation>
+        </message>
+        <message>
+            <source>a line name</source>
+            <translation>直线名</translation>
+        </message>
+        <message>
+            <source>a number (the distance)</source>
+            <translation>数字（距离）</translation>
+        </message>
+        <message>
+            <source>the distance</source>
+            <translation>距离</translation>
+        </message>
+        <message>
+            <source>a point name</source>
+            <translation>点名</translation>
+        </message>
+        <message>
+            <source>a number (the angle in degrees)</source>
+            <translation>数字（角度，度）</translation>
+        </message>
+        <message>
+            <source>a point name, ATANGL, LEFT or RIGHT</source>
+            <translation>点名、ATANGL、LEFT 或 RIGHT</translation>
+        </message>
+        <message>
+            <source>a point name, PARLEL, LEFT or RIGHT</source>
+            <translation>点名、PARLEL、LEFT 或 RIGHT</translation>
+        </message>
+        <message>
+            <source>a line name, OUT or IN</source>
+            <translation>直线名、OUT 或 IN</translation>
+        </message>
+        <message>
+            <source>CENTER, a point name or XLARGE/XSMALL/YLARGE/YSMALL</source>
+            <translation>CENTER、点名或 XLARGE/XSMALL/YLARGE/YSMALL</translation>
+        </message>
+        <message>
+            <source>a number (the radius)</source>
+            <translation>数字（半径）</translation>
+        </message>
+        <message>
+            <source>the radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>a line or circle name, CLW or CCLW</source>
+            <translation>直线名或圆名、CLW 或 CCLW</translation>
+        </message>
+        <message>
+            <source>an element name, XLARGE/XSMALL/YLARGE/YSMALL, CLW or CCLW</source>
+            <translation>元素名、XLARGE/XSMALL/YLARGE/YSMALL、CLW 或 CCLW</translation>
+        </message>
+        <message>
+            <source>in {}, {} ends the contour but no point starts it: an open contour runs from a point to a point</source>
+            <translation>在 {0} 中，{1} 结束了轮廓，但轮廓没有起点：开放轮廓从一个点到一个点</translation>
+        </message>
+        <message>
+            <source>in {}, {} after {} is not between two elements: the contour ends at {}</source>
+            <translation>在 {0} 中，{2} 之后的 {1} 不在两个元素之间：轮廓在 {3} 结束</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a point: only the first and the last item of a contour may be points</source>
+            <translation>在 {0} 中，{1} 是点：只有轮廓的第一项和最后一项可以是点</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a circle is needed</source>
+            <translation>在 {0} 中，{1} 是{2}，而此处需要圆</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a circle: write CLW or CCLW before it</source>
+            <translation>在 {0} 中，{1} 是圆：请在其前写 CLW 或 CCLW</translation>
+        </message>
+        <message>
+            <source>in {}, {} is a line: no {} before it (CLW and CCLW are for circles)</source>
+            <translation>在 {0} 中，{1} 是直线：其前不要写 {2}（CLW 和 CCLW 用于圆）</translation>
+        </message>
+        <message>
+            <source>in {}, {} follows itself: the same element twice in a row</source>
+            <translation>在 {0} 中，{1} 紧跟自身：同一元素连续出现两次</translation>
+        </message>
+        <message>
+            <source>in {}, {} starts at {}: no {} before it</source>
+            <translation>在 {0} 中，{1} 从 {2} 开始：其前不要写 {3}</translation>
+        </message>
+        <message>
+            <source>in {}, two lines meet once: no {} before {}</source>
+            <translation>在 {0} 中，两条直线只相交一次：{2} 前不要写 {1}</translation>
+        </message>
+        <message>
+            <source>a number (the chamfer)</source>
+            <translation>数字（倒角）</translation>
+        </message>
+        <message>
+            <source>the chamfer</source>
+            <translation>倒角</translation>
+        </message>
+        <message>
+            <source>in {}, the contour starts at {} and needs a point at its end, on {}</source>
+            <translation>在 {0} 中，轮廓从 {1} 开始，需要在结尾处有一个位于 {2} 上的点</translation>
+        </message>
+        <message>
+            <source>in {}, a closed contour needs two elements or more, or a single circle</source>
+            <translation>在 {} 中，闭合轮廓需要两个或更多元素，或单个圆</translation>
+        </message>
+        <message>
+            <source>in {}, {} alone is a full circle: no {} before it</source>
+            <translation>在 {0} 中，只有 {1}，是整圆：其前不要写 {2}</translation>
+        </message>
+        <message>
+            <source>in {}, {} alone is a full circle: no {} on it</source>
+            <translation>在 {0} 中，只有 {1}，是整圆：不能加 {2}</translation>
+        </message>
+        <message>
+            <source>in {}, {} follows itself: the same element twice in a row (the last element joins the first)</source>
+            <translation>在 {0} 中，{1} 紧跟自身：同一元素连续出现两次（最后一个元素与第一个相接）</translation>
+        </message>
+        <message>
             <source>a string ({})</source>
             <translation>字符串（{}）</translation>
         </message>
@@ -1974,20 +2646,12 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>布尔值</translation>
         </message>
         <message>
-            <source>a number</source>
-            <translation>数字</translation>
-        </message>
-        <message>
             <source>an unexpected value</source>
             <translation>意外的值</translation>
         </message>
         <message>
             <source>one of {}</source>
             <translation>{} 之一</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>文件为空</translation>
         </message>
         <message>
             <source>the file is {} bytes ({:.1f} MB); a job file may be at most {} bytes ({} MB)</source>
@@ -2090,6 +2754,62 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点 [x, y]</translation>
         </message>
         <message>
+            <source>it has no segments</source>
+            <translation>没有线段</translation>
+        </message>
+        <message>
+            <source>a closed contour of one line</source>
+            <translation>只有一条直线的闭合轮廓</translation>
+        </message>
+        <message>
+            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
+            <translation>到达 {}，超出图形文本可写的 ±1000000 mm</translation>
+        </message>
+        <message>
+            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
+            <translation>以 {} 为圆心的圆弧半径为 {} mm，舍入后为零</translation>
+        </message>
+        <message>
+            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
+            <translation>圆弧半径超出图形文本可写的 1000000 mm</translation>
+        </message>
+        <message>
+            <source>its elements cannot be evaluated: {}</source>
+            <translation>其元素无法计算：{}</translation>
+        </message>
+        <message>
+            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
+            <translation>按 {3} mm 写出后，其元素 {0} 与 {1} 不再交于 {2}</translation>
+        </message>
+        <message>
+            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
+            <translation>{0} 与 {1} 在 {2} 处两次相交，x 和 y 均相差在 {3} mm 以内：XLARGE、XSMALL、YLARGE 和 YSMALL 无法区分这两点</translation>
+        </message>
+        <message>
+            <source>its text is refused: {}</source>
+            <translation>其文本被拒绝：{}</translation>
+        </message>
+        <message>
+            <source>its text gives back other segments</source>
+            <translation>其文本还原出的线段不同</translation>
+        </message>
+        <message>
+            <source>it comes back {:.7f} mm from the drawing</source>
+            <translation>还原后与图纸偏差 {} mm</translation>
+        </message>
+        <message>
+            <source>contour {} is left out: {}</source>
+            <translation>轮廓 {} 已略去：{}</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
+            <translation>轮廓 {}（{}）还原后与图纸偏差 {} mm</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
+            <translation>轮廓 {}（{}）按 {} mm 写出：按 0.000001 mm 时{}</translation>
+        </message>
+        <message>
             <source>the jaws' height</source>
             <translation>钳口高度</translation>
         </message>
@@ -2160,6 +2880,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>{} more errors not listed; correct the ones above first</source>
             <translation>另有 {} 个错误未列出；请先更正上面的错误</translation>
+        </message>
+        <message>
+            <source>pilot hole</source>
+            <translation>预钻孔</translation>
+        </message>
+        <message>
+            <source>roughing</source>
+            <translation>粗加工</translation>
+        </message>
+        <message>
+            <source>floor finishing</source>
+            <translation>底面精加工</translation>
+        </message>
+        <message>
+            <source>wall finishing</source>
+            <translation>侧壁精加工</translation>
+        </message>
+        <message>
+            <source>inclined-face finishing</source>
+            <translation>斜面精加工</translation>
+        </message>
+        <message>
+            <source>facing</source>
+            <translation>车端面</translation>
+        </message>
+        <message>
+            <source>centre drilling</source>
+            <translation>中心钻孔</translation>
+        </message>
+        <message>
+            <source>drilling</source>
+            <translation>钻孔</translation>
+        </message>
+        <message>
+            <source>grooving</source>
+            <translation>切槽</translation>
+        </message>
+        <message>
+            <source>finishing</source>
+            <translation>精加工</translation>
+        </message>
+        <message>
+            <source>threading</source>
+            <translation>车螺纹</translation>
+        </message>
+        <message>
+            <source>parting off</source>
+            <translation>切断</translation>
+        </message>
+        <message>
+            <source>tapping</source>
+            <translation>攻丝</translation>
+        </message>
+        <message>
+            <source>reaming</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>boring</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
+            <source>face milling</source>
+            <translation>面铣</translation>
+        </message>
+        <message>
+            <source>side milling</source>
+            <translation>侧铣</translation>
+        </message>
+        <message>
+            <source>area clearing</source>
+            <translation>区域加工</translation>
         </message>
         <message>
             <source>centre drill</source>
@@ -2244,6 +3036,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>the passes were drawn {} mm wide</source>
+            <translation>刀路按 {} mm 宽绘制</translation>
         </message>
         <message>
             <source>pocket</source>
@@ -2366,10 +3162,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>行间距</translation>
         </message>
         <message>
-            <source>the radius</source>
-            <translation>半径</translation>
-        </message>
-        <message>
             <source>the angular pitch {:g}° must not be 0 and lie within ±360°</source>
             <translation>角度间距 {}° 不能为 0 且必须在 ±360° 以内</translation>
         </message>
@@ -2454,6 +3246,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{} 到 Ø{} 的钻头（相对{} Ø{} 小 {} 到 {}），刃长达 {}</translation>
         </message>
         <message>
+            <source>ream</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
             <source>largest drill {} to {} under Ø{} to {}</source>
             <translation>比 Ø{2} 小 {0} 到 {1} 的最大钻头（用于{3}）</translation>
         </message>
@@ -2470,8 +3270,16 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>Ø{1} 的{0}，刃长达 {2}</translation>
         </message>
         <message>
+            <source>boring bar (set to the bore)</source>
+            <translation>镗杆（调至孔径）</translation>
+        </message>
+        <message>
             <source>{} of the hole's Ø{}</source>
             <translation>孔径 Ø{1} 的{0}</translation>
+        </message>
+        <message>
+            <source>boring tool</source>
+            <translation>镗刀</translation>
         </message>
         <message>
             <source>centre drill spotting Ø{} for the Ø{} drill</source>
@@ -2488,6 +3296,18 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>pocket opening</source>
             <translation>型腔开口</translation>
+        </message>
+        <message>
+            <source>roughing layers</source>
+            <translation>粗加工各层</translation>
+        </message>
+        <message>
+            <source>the coordinate X of {}</source>
+            <translation>{} 的 X 坐标</translation>
+        </message>
+        <message>
+            <source>the coordinate Y of {}</source>
+            <translation>{} 的 Y 坐标</translation>
         </message>
         <message>
             <source>the cornerRadius</source>
@@ -2512,6 +3332,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>where {} is not defined: 1 touched from outside (boss, block), 2 from inside (bore, pocket)</source>
             <translation>测量侧 {} 未定义：1 从外侧触碰（凸台、块），2 从内侧（孔、型腔）</translation>
+        </message>
+        <message>
+            <source>the X of {}</source>
+            <translation>{} 的 X</translation>
+        </message>
+        <message>
+            <source>the Y of {}</source>
+            <translation>{} 的 Y</translation>
         </message>
         <message>
             <source>point {}: its {} is missing</source>
@@ -2586,6 +3414,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>最多 8 个面代码的数组（1 -X，2 +X，3 -Y，4 +Y）</translation>
         </message>
         <message>
+            <source>No probe in the tool library (type "probe"): the ball radius is unknown</source>
+            <translation>刀具库中没有测头（类型 "probe"）：测球半径未知</translation>
+        </message>
+        <message>
+            <source>{} of at least {} touches entered: the probing cycle the export writes makes them on the machine</source>
+            <translation>已输入 {} 个测点（至少 {} 个）：导出的测量循环将在机床上测量</translation>
+        </message>
+        <message>
+            <source>Bore: diameter {}</source>
+            <translation>孔：直径 {}</translation>
+        </message>
+        <message>
+            <source>Boss: diameter {}</source>
+            <translation>凸台：直径 {}</translation>
+        </message>
+        <message>
+            <source>(not measured: touch one side twice)</source>
+            <translation>（未测量：请在同一面测两次）</translation>
+        </message>
+        <message>
+            <source>Pocket: {} x {}, turned {}</source>
+            <translation>型腔：{} x {}，转角 {}</translation>
+        </message>
+        <message>
+            <source>Block: {} x {}, turned {}</source>
+            <translation>块：{} x {}，转角 {}</translation>
+        </message>
+        <message>
+            <source>Centre from P1: X {} Y {}</source>
+            <translation>相对 P1 的中心：X {} Y {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {} Z {}</source>
+            <translation>要设定的工件坐标偏置：X {} Y {} Z {}</translation>
+        </message>
+        <message>
+            <source>Work offset to set: X {} Y {}</source>
+            <translation>要设定的工件坐标偏置：X {} Y {}</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>宽度</translation>
         </message>
@@ -2598,12 +3466,28 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>刀具一侧轮廓的最小内侧半径</translation>
         </message>
         <message>
-            <source>side milling</source>
-            <translation>侧铣</translation>
-        </message>
-        <message>
             <source>pinned tool T{} ({}) does not fit: {}</source>
             <translation>指定的刀具 T{}（{}）不合适：{}</translation>
+        </message>
+        <message>
+            <source>{} along {}</source>
+            <translation>{}（沿 {}）</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>半径 {1} 适合轮廓最小内侧半径 {2}、且刀路不碰轮廓的最大平底立铣刀（{0}）；其刃长（{3}）短于 T：分层切削</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour</source>
+            <translation>半径 {1} 适合轮廓最小内侧半径 {2}、且刀路不碰轮廓的最大平底立铣刀（{0}）</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers</source>
+            <translation>刀路不碰轮廓的最大平底立铣刀（{0}）；其刃长（{1}）短于 T：分层切削</translation>
+        </message>
+        <message>
+            <source>largest flat end mill ({}) and whose passes keep off the contour</source>
+            <translation>刀路不碰轮廓的最大平底立铣刀（{}）</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -2754,8 +3638,92 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>已用时间 {} 分钟不能为负</translation>
         </message>
         <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
+            <translation>用于{4}的、半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
+            <translation>用于{3}的、直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；从 {3} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；从 {5} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；从 {4} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；从 {6} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
+            <translation>与侧壁锥度单边 {0} 度相同的锥度立铣刀（刀尖 {1}），刀尖半径 {2} 适合底部圆角半径 {3}</translation>
+        </message>
+        <message>
+            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
+            <translation>半径不超过 6 mm 且不超过斜面长度 {1} 一半的最大球头立铣刀（{0}）</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} is not in the tool library</source>
+            <translation>{}：指定的刀具 T{} 不在刀具库中</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
+            <translation>{}：指定的刀具 T{}（{}）不适用：{}</translation>
+        </message>
+        <message>
+            <source>pinned by the operator</source>
+            <translation>由操作员指定</translation>
+        </message>
+        <message>
+            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
+            <translation>不小于由此下刀的 {1} 立铣刀的最小钻头（{0}）</translation>
+        </message>
+        <message>
             <source>it is a {}, the step needs a {}</source>
             <translation>它是{}，该工序需要{}</translation>
+        </message>
+        <message>
+            <source>it has no cutting data for {}</source>
+            <translation>没有 {} 的切削参数</translation>
         </message>
         <message>
             <source>its taper is {:g} deg per side, the wall's is {:g}</source>
@@ -2796,6 +3764,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
             <translation>刀具库中没有适合{1}的{0}：最接近的是 T{2}（{3}），但{4}</translation>
+        </message>
+        <message>
+            <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
+            <translation>T{0}（{1} mm {2}）将在工序 {3}（单元 {4} {5}）中达到寿命：剩余 {6} 分钟，该工序需要 {7} 分钟；请在该工序前换上新刀具</translation>
         </message>
         <message>
             <source>allowance row {}: there is no edge {} in the profile</source>
@@ -2948,6 +3920,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>轮廓不是围绕零件的一条链：{}（第 {} 行）在 X{} Z{} 处到达封闭线 {}</translation>
+        </message>
+        <message>
+            <source>pinned</source>
+            <translation>由操作员指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒料有端面余量，但刀具库中没有可车端面的外圆车刀片</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>用外圆粗车刀片车端面（刀尖半径最大）</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>孔对镗杆太窄（镗杆需 {}；孔径减去余量为 {}），且刀具库中没有可加工到此尺寸的钻头</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>镗孔需要 {} 到 {} 的预钻孔（镗杆需 {}），但刀具库中没有此范围的钻头</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>在孔径减去镗孔余量（{}）以内、且不小于镗杆所需孔径 {} 的最大钻头</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小的中心钻</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>刀具库中没有内孔（镗孔）车刀片</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>刀具库中没有外圆车刀片</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>可到达所有元素；其中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>有 {} 个元素无法到达；到达最多者中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>不宽于槽宽（{}）的最宽切槽刀</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最窄的切槽刀；从旁边的空处到达 {}</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>适用于 {} 的最窄切断刀</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} 不是内孔车刀片</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} 不是外圆车刀片</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>该侧刀尖半径最大（刃口最强）</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>螺距 {} 的外螺纹车刀片</translation>
         </message>
         <message>
             <source>the job</source>
@@ -3337,6 +4381,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>侧壁斜度（单边，度）；竖直侧壁为 0</translation>
         </message>
         <message>
+            <source>P1 side</source>
+            <translation>P1 面</translation>
+        </message>
+        <message>
+            <source>P2 side</source>
+            <translation>P2 面</translation>
+        </message>
+        <message>
+            <source>P3 side</source>
+            <translation>P3 面</translation>
+        </message>
+        <message>
+            <source>P4 side</source>
+            <translation>P4 面</translation>
+        </message>
+        <message>
+            <source>P5 side</source>
+            <translation>P5 面</translation>
+        </message>
+        <message>
+            <source>P6 side</source>
+            <translation>P6 面</translation>
+        </message>
+        <message>
+            <source>P7 side</source>
+            <translation>P7 面</translation>
+        </message>
+        <message>
+            <source>P8 side</source>
+            <translation>P8 面</translation>
+        </message>
+        <message>
             <source>Shape</source>
             <translation>形状</translation>
         </message>
@@ -3351,6 +4427,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>P1 machine Y</source>
             <translation>P1 机床坐标 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未测量</translation>
         </message>
         <message>
             <source>Top face machine Z</source>

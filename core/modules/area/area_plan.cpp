@@ -2,6 +2,7 @@
 // the depth, cut with a centre-cutting flat end mill of the diameter the
 // passes were drawn for; and the points as the form reads and writes them.
 #include "modules/area/area.h"
+#include "model/translate_noop.h"
 
 #include "decompose/make_step.h"
 #include "figure/figure_text.h"
@@ -87,7 +88,7 @@ std::vector<Step> planAreaClearing(const AreaClearing& a, const TechnologyData&,
         problem(fmt::format("no centre-cutting flat end mill of {} mm in the tool library for the drawn passes", a.diameter));
         return {s};
     }
-    s.tool = ToolChoice{best->id, fmt::format("the passes were drawn {} mm wide", figure::formatNumber(a.diameter))};
+    s.tool = ToolChoice{best->id, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the passes were drawn {} mm wide"), figure::formatNumber(a.diameter))};
     return {s};
 }
 

@@ -127,13 +127,13 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
             },
             fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                              "drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}"),
-                        mm(lo), mm(hi), ream ? "ream" : "bore", mm(h.diameter),
+                        mm(lo), mm(hi), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"), mm(h.diameter),
                         mm(ream ? kReamUnderMin : kBoreUnderMin), mm(ream ? kReamUnderMax : kBoreUnderMax),
                         mm(d.drillFull + hi / 2)));
         if (drill)
             drillReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest drill {} to {} under Ø{} to {}"),
                                       mm(ream ? kReamUnderMin : kBoreUnderMin),
-                                      mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? "ream" : "bore");
+                                      mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"));
     }
 
     // The centre drill: the largest no wider than the drill (else the
@@ -174,15 +174,18 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
         finishType = ream ? MachiningType::Reaming : MachiningType::Boring;
         const ToolType type = ream ? ToolType::Reamer : ToolType::BoringBar;
         finish = p.pick(
-            ream ? "ream" : "bore",
+            ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"),
             [&](const Tool& t) {
                 return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish);
             },
             lowerId,
             fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of Ø{} whose flutes reach {}"),
-                        ream ? "reamer" : "boring bar (set to the bore)", mm(h.diameter), mm(d.finish)));
+                        ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer")
+                             : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring bar (set to the bore)"),
+                        mm(h.diameter), mm(d.finish)));
         finishReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of the hole's Ø{}"),
-                                   ream ? "reamer" : "boring tool", mm(h.diameter));
+                                   ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring tool"),
+                                   mm(h.diameter));
     }
     if (p.failed || !drill || !centre) return {};
 

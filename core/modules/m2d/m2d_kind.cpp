@@ -5,6 +5,7 @@
 #include "modules/pocket_plan.h"
 
 #include "io/json_write.h"
+#include "model/translate_noop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, c
     f.maxDiameter = 0.5 * std::min(width, p.lengthY - 2 * tech.alpha2);
     f.reach = bottom;  // the flutes cut one layer at a time
     f.centreCutting = pilotHoleFromCode(p.pilotHole) == PilotHole::None;
-    return chooseRoughingTool(f, library, material, "roughing layers");
+    return chooseRoughingTool(f, library, material, TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing layers"));
 }
 
 namespace {

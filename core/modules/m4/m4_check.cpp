@@ -5,6 +5,8 @@
 #include "model/translate_noop.h"
 #include "modules/m4/m4_kind.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -23,8 +25,8 @@ bool allFinite(const M4Pocket& p, Reporter& r)
     bool ok = true;
     for (std::size_t i = 0; i < 4; ++i) {
         const std::string field = "corners[" + std::to_string(i) + "]", point = "P" + std::to_string(i + 1);
-        ok &= checkLength(p.corners[i].x, field, "the coordinate X of " + point, r) &&
-              checkLength(p.corners[i].y, field, "the coordinate Y of " + point, r);
+        ok &= checkLength(p.corners[i].x, field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the coordinate X of {}"), point), r) &&
+              checkLength(p.corners[i].y, field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the coordinate Y of {}"), point), r);
     }
     ok &= checkLength(p.cornerRadius, "cornerRadius", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the cornerRadius"), r);
     ok &= checkLength(p.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r);

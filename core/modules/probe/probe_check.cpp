@@ -61,8 +61,8 @@ UnitReport checkProbe(const ProbeUnit& p, int unitNo, const Context& ctx)
     bool finite = true;
     for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i) {
         const std::string field = "touches[" + std::to_string(i) + "]", point = "P" + std::to_string(i + 1);
-        if (p.x[i]) finite &= checkLength(*p.x[i], field, "the X of " + point, r);
-        if (p.y[i]) finite &= checkLength(*p.y[i], field, "the Y of " + point, r);
+        if (p.x[i]) finite &= checkLength(*p.x[i], field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the X of {}"), point), r);
+        if (p.y[i]) finite &= checkLength(*p.y[i], field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the Y of {}"), point), r);
         if (static_cast<bool>(p.x[i]) != static_cast<bool>(p.y[i])) {
             r.unit(field, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {}: its {} is missing"), i + 1,
                                       p.x[i] ? "Y" : "X"));

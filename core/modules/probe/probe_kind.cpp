@@ -17,6 +17,17 @@ namespace taiwa {
 
 namespace {
 
+// The label of each touch's side code, one text per point for the form's translation.
+constexpr const char* kSideLabels[ProbeUnit::kMaxTouches] = {
+    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P2 side"),
+    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P3 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P4 side"),
+    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P5 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P6 side"),
+    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P7 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P8 side")};
+
+}  // namespace
+
+namespace {
+
 const std::vector<std::string> kKeys{"module", "name", "shape", "where", "touches", "sides", "origin", "top",
                                      "T", "tolerance", "sizeX", "sizeY", "touchDepth", "clearance", "search", "feed"};
 
@@ -209,7 +220,7 @@ protected:
                 FormField f;
                 f.key = key + (isX ? ".x" : ".y");
                 f.label = key + (isX ? " X" : " Y");
-                f.placeholder = "not touched";
+                f.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "not touched");
                 f.diagFields = diag;
                 f.kind = FormFieldKind::OptionalNumber;
                 f.get = [i, isX](const ModuleInput& m) -> std::optional<double> {
@@ -222,7 +233,7 @@ protected:
                 fs.push_back(std::move(f));
             }
             FormField side = number<ProbeUnit>(
-                key + ".side", key + " side", {"sides[" + std::to_string(i) + "]"},
+                key + ".side", kSideLabels[i], {"sides[" + std::to_string(i) + "]"},
                 [i](const ProbeUnit& p) { return double(p.side[i]); },
                 [i](ProbeUnit& p, double v) { p.side[i] = static_cast<int>(std::lround(v)); });
             side.kind = FormFieldKind::Code;

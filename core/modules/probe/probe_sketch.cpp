@@ -3,6 +3,7 @@
 // rectangle, the centre from P1 and the work offset to set; a refusal in
 // words, with the touch it names flagged.
 #include "modules/probe/probe_kind.h"
+#include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
@@ -33,13 +34,12 @@ Sketch probeSketch(const ProbeUnit& unit, LengthUnit shown, const std::vector<To
     const Tool* tool = probeTool(p, library);
     if (!tool) {
         s.problem = true;
-        s.lines.push_back("No probe in the tool library (type \"probe\"): the ball radius is unknown");
+        s.lines.push_back(TAIWA_TRANSLATE_NOOP("taiwa::msg", "No probe in the tool library (type \"probe\"): the ball radius is unknown"));
         return s;
     }
     const std::size_t needed = p.shape == 1 ? 3 : 4;
     if (touches.size() < needed) {
-        s.lines.push_back(fmt::format("{} of at least {} touches entered: the probing cycle the export writes "
-                                      "makes them on the machine",
+        s.lines.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of at least {} touches entered: the probing cycle the export writes makes them on the machine"),
                                       touches.size(), needed));
         return s;
     }
@@ -70,7 +70,8 @@ Sketch probeSketch(const ProbeUnit& unit, LengthUnit shown, const std::vector<To
                 ring.push_back(c->centre + r * Point2{std::cos(k * std::numbers::pi / 60), std::sin(k * std::numbers::pi / 60)});
             s.outlines.push_back(std::move(ring));
         }
-        s.lines.push_back(fmt::format("{}: diameter {}", p.where == 2 ? "Bore" : "Boss", len(2 * c->radius)));
+        s.lines.push_back(p.where == 2 ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Bore: diameter {}"), len(2 * c->radius))
+                                       : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Boss: diameter {}"), len(2 * c->radius)));
     } else {
         const auto& r = std::get<probe::RectangleFit>(fit);
         centre = r.centre;
@@ -81,14 +82,16 @@ Sketch probeSketch(const ProbeUnit& unit, LengthUnit shown, const std::vector<To
         for (const auto& [u, v] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
             box.push_back(r.centre + (u * r.width / 2) * ex + (v * r.length / 2) * ey);
         s.outlines.push_back(std::move(box));
-        s.lines.push_back(fmt::format("{}: {} x {}, turned {}", p.where == 2 ? "Pocket" : "Block", len(r.width), len(r.length),
-                                      r.rotationMeasured ? fmt::format("{:.4f} deg", r.rotation) : "(not measured: touch one side twice)"));
+        const std::string turned = r.rotationMeasured ? fmt::format("{:.4f} deg", r.rotation)
+                                                      : TAIWA_TRANSLATE_NOOP("taiwa::msg", "(not measured: touch one side twice)");
+        s.lines.push_back(p.where == 2 ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Pocket: {} x {}, turned {}"), len(r.width), len(r.length), turned)
+                                       : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Block: {} x {}, turned {}"), len(r.width), len(r.length), turned));
     }
     s.centre = centre;
     const Point2 machine = p.origin + centre;
-    s.lines.push_back(fmt::format("Centre from P1: X {} Y {}", len(centre.x), len(centre.y)));
-    s.lines.push_back(fmt::format("Work offset to set: X {} Y {}{}", len(machine.x), len(machine.y),
-                                  p.top ? " Z " + len(*p.top) : std::string()));
+    s.lines.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Centre from P1: X {} Y {}"), len(centre.x), len(centre.y)));
+    s.lines.push_back(p.top ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Work offset to set: X {} Y {} Z {}"), len(machine.x), len(machine.y), len(*p.top))
+                            : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "Work offset to set: X {} Y {}"), len(machine.x), len(machine.y)));
     return s;
 }
 

@@ -132,15 +132,25 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
         if (!tool) {
             problem("tools.side",
                     msg::sideNoTool(TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"),
-                                    tools::noFitMessage(library, fit, material,
-                                                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling")) +
-                                        " along " + m.contour));
+                                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} along {}"),
+                                                tools::noFitMessage(library, fit, material,
+                                                                    TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling")),
+                                                m.contour)));
             return {};
         }
-        reason = fmt::format("largest flat end mill ({})", mm(tool->diameter));
-        if (room < 1e299) reason += fmt::format(" whose radius {} fits the contour's smallest inside radius {}", mm(tool->radius()), mm(room));
-        reason += " and whose passes keep off the contour";
-        if (tool->fluteLength > 0 && tool->fluteLength + 1e-9 < m.depth) reason += fmt::format("; its flutes ({}) are shorter than T: it cuts in layers", mm(tool->fluteLength));
+        // One whole sentence for each case, for the station's translation.
+        const bool shortFlutes = tool->fluteLength > 0 && tool->fluteLength + 1e-9 < m.depth;
+        if (room < 1e299)
+            reason = shortFlutes
+                         ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers"),
+                                       mm(tool->diameter), mm(tool->radius()), mm(room), mm(tool->fluteLength))
+                         : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour"),
+                                       mm(tool->diameter), mm(tool->radius()), mm(room));
+        else
+            reason = shortFlutes
+                         ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers"),
+                                       mm(tool->diameter), mm(tool->fluteLength))
+                         : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) and whose passes keep off the contour"), mm(tool->diameter));
     }
 
     const Passes passes = passesFor(m, tech, tool->diameter);
