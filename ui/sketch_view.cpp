@@ -2,6 +2,8 @@
 // widget with a margin, one scale for both axes, y up.
 #include "ui/sketch_view.h"
 
+#include "ui/core_messages.h"
+
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
@@ -106,7 +108,7 @@ void SketchView::setSketch(std::optional<Sketch> sketch)
     setVisible(sketch_.has_value());
     if (!sketch_) return;
     QStringList lines;
-    for (const auto& l : sketch_->lines) lines << QString::fromStdString(l).toHtmlEscaped();
+    for (const auto& l : sketch_->lines) lines << coreMessage(l).toHtmlEscaped();  // in the station's language
     text_->setText(lines.join("<br>"));
     text_->setStyleSheet(sketch_->problem ? "color: #c0392b;" : "");
     figure_->update();
