@@ -96,8 +96,8 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         return;
     }
     // The rows stay and only cells whose text, bold or tooltip changed are
-    // set (an edit changes a few: 600 rows made anew took tens of ms); the
-    // columns are fitted to their contents again only when a cell changed.
+    // set (an edit changes a few: 600 rows made anew took tens of ms); only
+    // the columns that changed are fitted to their contents again.
     const Job& job = plan->job;
     const double toJob = job.lengthUnit == LengthUnit::Inch ? 1.0 / kMillimetresPerInch : 1.0;
     const int rows = static_cast<int>(plan->steps.size());
@@ -148,13 +148,11 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         cell(r, Depth, round(s.cutDepth));
         cell(r, Time, s.minutes ? clockTime(*s.minutes) : QString());
     }
-    // All columns at once when any changed: one column fitted on its own
-    // (resizeColumnToContents) gives the stretched last column a width of its
-    // own, and the sideways scroll bar came back at 1600 pixels.
-    if (newRows || std::find(changed.begin(), changed.end(), true) != changed.end()) {
-        resizeColumnsToContents();
-        updateGeometries();  // the scroll bars for the new widths now (a table made anew got them from the reset)
-    }
+    if (newRows) resizeColumnsToContents();
+    else
+        for (int c = 0; c < ColumnCount; ++c)
+            if (changed[static_cast<std::size_t>(c)]) resizeColumnToContents(c);
+    updateGeometries();  // the scroll bars for the new widths now (a table made anew got them from its reset)
     filling_ = false;
 }
 
