@@ -148,13 +148,11 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         cell(r, Depth, round(s.cutDepth));
         cell(r, Time, s.minutes ? clockTime(*s.minutes) : QString());
     }
-    // The columns fitted together when any cell changed: fitting one column
-    // on its own leaves the stretched last one as wide as it was, and the
-    // table scrolls sideways (test_render_station, stepColumnsFitAt1600).
-    if (newRows || std::find(changed.begin(), changed.end(), true) != changed.end()) {
-        resizeColumnsToContents();
-        updateGeometries();  // the scroll bars follow now, not at some later layout
-    }
+    if (newRows) resizeColumnsToContents();
+    else
+        for (int c = 0; c < ColumnCount; ++c)
+            if (changed[static_cast<std::size_t>(c)]) resizeColumnToContents(c);
+    updateGeometries();  // the scroll bars for the new widths now (a table made anew got them from its reset)
     filling_ = false;
 }
 
