@@ -137,13 +137,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
 
     steps_.resize(plan_->steps.size());
     if (steps_.size() > kMergeAbove) {
-        std::vector<const ToolPath*> paths;
-        paths.reserve(steps_.size());
-        for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
-        merged_ = makeMergedPaths(paths);
-        pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
-        allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
-        allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
+        mergePaths();
         renderer_->AddActor(allFeeds_);
         renderer_->AddActor(allRapids_);
     } else {
@@ -591,6 +585,17 @@ std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height
                  merged_.moveOfPiece.data() + merged_.first[static_cast<std::size_t>(k)]);
     }
     return best;
+}
+
+void Scene::mergePaths()
+{
+    std::vector<const ToolPath*> paths;
+    paths.reserve(steps_.size());
+    for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
+    merged_ = makeMergedPaths(paths);
+    pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
+    allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
+    allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
 }
 
 }  // namespace taiwa::viz

@@ -184,6 +184,9 @@ private:
     // (sim/turned_stock.h), and the step's path in the half-plane drawn
     // over it; the finished part again when no step is selected.
     void updateLatheStep();
+    // Merged mode: every step's path in merged_, allFeeds_ and allRapids_
+    // (not yet in the renderer), and pathSegments_ counted.
+    void mergePaths();
 
     vtkSmartPointer<vtkRenderer> renderer_;
     std::shared_ptr<const Plan> plan_;

@@ -162,13 +162,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     add(partEdges_);
     pathSegments_ = 0;
     if (steps_.size() > kMergeAbove) {
-        std::vector<const ToolPath*> paths;
-        paths.reserve(steps_.size());
-        for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
-        merged_ = makeMergedPaths(paths);
-        pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
-        allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
-        allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
+        mergePaths();
         add(allFeeds_);
         add(allRapids_);
     } else {
