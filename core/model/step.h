@@ -3,6 +3,7 @@
 // its tool path and its time by the tool-choice and CL stages.
 #pragma once
 
+#include "model/boxed.h"
 #include "model/contour.h"
 #include "model/geometry.h"
 #include "model/technology.h"
@@ -145,8 +146,9 @@ struct Step {
     // one point to the next), within `region`.
     std::vector<Point2> drawnPoints;
     // Turning steps: side, speeds, the path in XZ (then `path` stays empty:
-    // milling's stages pass such a step by).
-    std::optional<TurnStep> turn;
+    // milling's stages pass such a step by). On the heap: most steps are not
+    // turned, and in place it would be a third of every step's size.
+    Boxed<TurnStep> turn;
 
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;
