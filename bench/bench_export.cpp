@@ -93,7 +93,8 @@ void BM_Sheet(benchmark::State& state, int part)
     for (auto _ : state) {
         std::string out;
         if (part == 0) out = sheetHtml(plan, o);
-        else if (part == 1) out = *sheetPdf(plan, o);
+        else if (part == 1) out = *sheetPdf(plan, o);  // two writers at once (a large sheet)
+        else if (part == 3) out = *sheetPdf(plan, o, PdfParts::One);  // one writer, the anchor of the above
         else out = stepsJson(plan);
         bytes = out.size();
         benchmark::DoNotOptimize(out.data());
@@ -101,7 +102,8 @@ void BM_Sheet(benchmark::State& state, int part)
     state.counters["bytes"] = static_cast<double>(bytes);
 }
 BENCHMARK_CAPTURE(BM_Sheet, html, 0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Sheet, pdf, 1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Sheet, pdf, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Sheet, pdf_one_writer, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Sheet, steps_json, 2)->Unit(benchmark::kMillisecond);
 
 // The whole export as `taiwa export` does it (plan + five files incl. PDF),

@@ -306,6 +306,41 @@ private slots:
                  qPrintable(words.left(400)));
     }
 
+    // A large steps table is painted by two PDF writers at once, the second
+    // from a page break near its middle, and the parts joined: the pages
+    // must be those one writer paints, page numbers and headers included.
+    void twoWritersPaintTheSamePagesAsOne()
+    {
+        Plan plan = samplePlan("Two writers");
+        const auto one = plan.steps;
+        for (int copy = 0; copy < 60; ++copy) plan.steps.insert(plan.steps.end(), one.begin(), one.end());
+        QTemporaryDir dir;
+        std::vector<QString> files;
+        std::vector<std::string> bytes;
+        for (const PdfParts parts : {PdfParts::One, PdfParts::Two}) {
+            auto pdf = sheetPdf(plan, {}, parts);
+            QVERIFY2(pdf, pdf ? "" : pdf.error().c_str());
+            bytes.push_back(*pdf);
+            files.push_back(dir.filePath(QString("parts-%1.pdf").arg(files.size() + 1)));
+            QFile f(files.back());
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write(pdf->data(), static_cast<qint64>(pdf->size())) == static_cast<qint64>(pdf->size()));
+        }
+        QVERIFY2(bytes[0] != bytes[1], "the two-writer sheet was painted by one");
+        const auto text = [](const QString& pdf) {
+            QProcess p;
+            p.start("pdftotext", {"-layout", pdf, "-"});
+            p.waitForFinished();
+            return QString::fromUtf8(p.readAllStandardOutput());
+        };
+        const QString oneText = text(files[0]), twoText = text(files[1]);
+        QVERIFY2(oneText.count('\f') >= 8, qPrintable(QString("%1 pages").arg(oneText.count('\f'))));
+        QCOMPARE(twoText.split('\f'), oneText.split('\f'));
+        const std::vector<QImage> a = pages(files[0], 40), b = pages(files[1], 40);
+        if (a.empty()) QSKIP("pdftoppm is not installed");
+        QCOMPARE(b.size(), a.size());
+        for (std::size_t i = 0; i < a.size(); ++i) QVERIFY2(a[i] == b[i], qPrintable(QString("page %1 differs").arg(i + 1)));
+    }
+
     void longSheetsRepeatTheTableHeaderOnEveryPage()
     {
         Plan plan = samplePlan("Long");

@@ -10,9 +10,12 @@
 
 namespace taiwa {
 
+// How many PDF writers paint the sheet: two at once for a large steps table
+// (BySize), or as a test asks: one, or two wherever the table spans pages.
+enum class PdfParts { BySize, One, Two };
 // The sheet's PDF, as bytes. Needs a QGuiApplication (the command line runs
 // one on the offscreen platform).
-Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options);
+Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options, PdfParts parts = PdfParts::BySize);
 // The same, written atomically to `path`.
 Result<void> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path);
 
