@@ -163,6 +163,56 @@ private slots:
         QVERIFY(near(s->segments[2].end, {20, 4}));
     }
 
+    // side::Sides looks at the edges of the point's horizontal band only:
+    // every point off the contour must still be on the side the contour's
+    // own direction says (left of the nearest segment's tangent when the
+    // tool is on the left), for a closed contour and an open one (continued
+    // past its ends), both ways round.
+    void toolSideOfEveryPoint()
+    {
+        using S = ContourSegment;
+        const Contour boss = [] {
+            Contour c = chain({S::line({0, 0}, {40, 0}), S::arc({40, 0}, {40, 20}, {40, 10}, true),
+                               S::line({40, 20}, {25, 20}), S::arc({25, 20}, {15, 20}, {20, 20}, false),
+                               S::line({15, 20}, {0, 20}), S::line({0, 20}, {0, 0})});
+            c.closed = true;
+            return c;
+        }();
+        const Contour open = chain({S::line({-10, 5}, {10, 5}), S::arc({10, 5}, {20, 15}, {10, 15}, true),
+                                    S::line({20, 15}, {20, 30})});
+        std::uint32_t seed = 12345;
+        const auto uniform = [&](double a, double b) {
+            seed = seed * 1664525u + 1013904223u;
+            return a + (b - a) * (seed >> 8) / double(1u << 24);
+        };
+        for (const Contour* c : {&boss, &open})
+            for (const bool left : {true, false}) {
+                const side::Sides sides(*c, left);
+                int checked = 0;
+                for (int n = 0; n < 20000; ++n) {
+                    const Point2 p{uniform(-30, 70), uniform(-30, 50)};
+                    // The nearest segment and point; points nearest a vertex
+                    // (or an open end) have no one tangent: skipped.
+                    double best = std::numeric_limits<double>::infinity();
+                    const S* seg = nullptr;
+                    Point2 q{};
+                    for (const S& sg : c->segments)
+                        if (const Point2 at = sg.nearest(p); distance(p, at) < best) best = distance(p, at), seg = &sg, q = at;
+                    if (best < 1e-3 || distance(q, seg->start) < 1e-6 || distance(q, seg->end) < 1e-6) continue;
+                    Point2 t = seg->end - seg->start;
+                    if (seg->isArc()) {
+                        const Point2 r = q - seg->centre;
+                        t = seg->kind == S::Kind::ArcCCW ? Point2{-r.y, r.x} : Point2{r.y, -r.x};
+                    }
+                    const bool onLeft = cross(t, p - q) > 0;
+                    QVERIFY2(sides.onToolSide(p) == (onLeft == left),
+                             qPrintable(QString("(%1, %2), tool on the %3").arg(p.x).arg(p.y).arg(left ? "left" : "right")));
+                    ++checked;
+                }
+                QVERIFY(checked > 10000);
+            }
+    }
+
     void roughingPassesFromWToAlpha2()
     {
         const auto o = roughingOffsets(14, 0.3, 9);

@@ -171,12 +171,28 @@ Box2 bounds(const Contour& c)
     return b;
 }
 
-double distanceTo(const Contour& c, Point2 p)
+namespace {
+
+// The distance from p to the nearest of `segments`, without working out the
+// nearest point of an arc whose whole circle is farther than the best so
+// far, nor the root of a distance whose square is larger (both with a
+// margin, so that the result is the plain minimum to the last bit).
+double nearestDistance(const std::vector<ContourSegment>& segments, Point2 p)
 {
     double d = std::numeric_limits<double>::infinity();
-    for (const auto& s : c.segments) d = std::min(d, distance(p, s.nearest(p)));
+    constexpr double kMargin = 1.0 + 1e-9;
+    for (const auto& s : segments) {
+        if (s.isArc() && std::abs(taiwa::length(p - s.centre) - s.radius()) > d * kMargin) continue;
+        const Point2 q = s.nearest(p);
+        if (dot(p - q, p - q) > d * d * kMargin) continue;
+        d = std::min(d, distance(p, q));
+    }
     return d;
 }
+
+}  // namespace
+
+double distanceTo(const Contour& c, Point2 p) { return nearestDistance(c.segments, p); }
 
 namespace {
 
@@ -259,18 +275,7 @@ RegionDistance::RegionDistance(const Region& r)
 
 double RegionDistance::operator()(Point2 p) const
 {
-    // The nearest segment, without working out the nearest point of an arc
-    // whose whole circle is farther than the best so far, nor the root of a
-    // distance whose square is larger (both with a margin, so that the
-    // result is the plain minimum to the last bit).
-    double d = std::numeric_limits<double>::infinity();
-    constexpr double kMargin = 1.0 + 1e-9;
-    for (const auto& s : segments_) {
-        if (s.isArc() && std::abs(taiwa::length(p - s.centre) - s.radius()) > d * kMargin) continue;
-        const Point2 q = s.nearest(p);
-        if (dot(p - q, p - q) > d * d * kMargin) continue;
-        d = std::min(d, distance(p, q));
-    }
+    const double d = nearestDistance(segments_, p);
     const auto& polygons = d > 2 * kCoarse ? coarse_ : polygons_;
     bool inside = windingNumber(polygons[0], p) != 0;
     for (std::size_t i = 1; inside && i < polygons.size(); ++i)

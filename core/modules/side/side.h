@@ -16,8 +16,11 @@
 #include "model/technology.h"
 #include "model/tool.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+#include <cstdint>
 #include <vector>
 
 namespace taiwa {
@@ -93,11 +96,20 @@ public:
     double distance(Point2 p) const;  // to the contour (not its continuations)
 
 private:
+    void makeBands();
+    std::size_t band(double y) const;
+
     Contour contour_;
     // The contour flattened to 0.1 µm; an open one closed round its tool
     // side. The tool side is inside it (`inside_`) or outside.
     std::vector<Point2> polygon_;
     bool inside_ = true;
+    // The polygon's edges (index of their first point) by horizontal band,
+    // each edge in every band its y range meets: the crossing test of a
+    // point looks at its band's edges only (a contour flattened to 0.1 µm
+    // has thousands of edges; verification asks millions of points).
+    std::vector<std::vector<std::uint32_t>> bands_;
+    double bandsY0_ = 0.0, bandHeight_ = 1.0;
 };
 
 }  // namespace side

@@ -74,6 +74,7 @@ Sides::Sides(const Contour& c, bool toolOnLeft) : contour_(c)
     polygon_ = flatten(c, 1e-4);
     if (c.closed) {
         inside_ = paths::toolInside(c, toolOnLeft);
+        makeBands();
         return;
     }
     // The open contour continued along its end tangents to a circle well
@@ -89,14 +90,36 @@ Sides::Sides(const Contour& c, bool toolOnLeft) : contour_(c)
     const ContourSegment closing = ContourSegment::arc(e, a, m, toolOnLeft);
     for (int k = 1; k < 64; ++k) polygon_.push_back(closing.at(k / 64.0));
     inside_ = true;
+    makeBands();
+}
+
+void Sides::makeBands()
+{
+    double y0 = polygon_.front().y, y1 = y0;
+    for (const Point2& q : polygon_) y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+    const std::size_t n = std::clamp<std::size_t>(polygon_.size() / 8, 1, 4096);
+    bandsY0_ = y0;
+    bandHeight_ = std::max((y1 - y0) / static_cast<double>(n), 1e-9);
+    bands_.assign(n, {});
+    for (std::size_t i = 0, j = polygon_.size() - 1; i < polygon_.size(); j = i++) {
+        const auto [lo, hi] = std::minmax(polygon_[i].y, polygon_[j].y);
+        for (std::size_t k = band(lo), last = band(hi); k <= last; ++k) bands_[k].push_back(static_cast<std::uint32_t>(i));
+    }
+}
+
+std::size_t Sides::band(double y) const
+{
+    const double k = std::floor((y - bandsY0_) / bandHeight_);
+    return static_cast<std::size_t>(std::clamp(k, 0.0, static_cast<double>(bands_.size() - 1)));
 }
 
 bool Sides::onToolSide(Point2 p) const
 {
-    // Crossing number of the polygon.
+    // Crossing number of the polygon, over the edges whose y range meets
+    // the point's band (an edge the test counts spans p.y, so it is there).
     bool in = false;
-    for (std::size_t i = 0, j = polygon_.size() - 1; i < polygon_.size(); j = i++) {
-        const Point2 u = polygon_[i], v = polygon_[j];
+    for (const std::uint32_t e : bands_[band(p.y)]) {
+        const Point2 u = polygon_[e], v = polygon_[e == 0 ? polygon_.size() - 1 : e - 1];
         if ((u.y > p.y) != (v.y > p.y) && p.x < (v.x - u.x) * (p.y - u.y) / (v.y - u.y) + u.x) in = !in;
     }
     return in == inside_;
