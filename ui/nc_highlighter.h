@@ -1,18 +1,39 @@
 // Colours of the NC view: G/M words, axis words (X Y Z I J K R F S T),
-// N sequence numbers and comments in ( ) or after ';'.
+// N sequence numbers and comments in ( ) or after ';'. Only the lines the
+// view shows, and a screenful either side, are coloured; the others when
+// they are scrolled to (a 200-unit tape has tens of thousands of lines:
+// colouring them all through a QSyntaxHighlighter took 200 ms on every new
+// program, and a highlighter visits every line even to leave it as it is).
+// The colours are set on each line's layout as a QSyntaxHighlighter does.
 #pragma once
 
-#include <QSyntaxHighlighter>
+#include <QObject>
+#include <QTextCharFormat>
+#include <QTextLayout>
+
+#include <vector>
+
+class QPlainTextEdit;
 
 namespace taiwa::ui {
 
-class NcHighlighter : public QSyntaxHighlighter {
+class NcHighlighter : public QObject {
     Q_OBJECT
 public:
-    explicit NcHighlighter(QTextDocument* doc);
+    explicit NcHighlighter(QPlainTextEdit* view);
+    // Colours the lines shown now that are not yet.
+    void colourShownLines();
+    // Whether a line (block number) is coloured.
+    bool coloured(int block) const;
 
 protected:
-    void highlightBlock(const QString& text) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    QList<QTextLayout::FormatRange> colours(const QString& text) const;
+    QPlainTextEdit* view_;
+    std::vector<bool> coloured_;  // by block number, for the text shown
+    QTextCharFormat g_, m_, axis_, seq_, other_, rem_;
 };
 
 }  // namespace taiwa::ui

@@ -25,7 +25,7 @@ NcView::NcView(QWidget* parent)
     text_->setLineWrapMode(QPlainTextEdit::NoWrap);
     text_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     text_->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
-    new NcHighlighter(text_->document());
+    highlighter_ = new NcHighlighter(text_);
 
     auto* top = new QHBoxLayout;
     auto* label = new QLabel(tr("&NC program, dialect:"), this);

@@ -15,6 +15,8 @@ class QPlainTextEdit;
 
 namespace taiwa::ui {
 
+class NcHighlighter;
+
 // The dialect last chosen in any window (the settings' "nc/dialect"),
 // which a new job takes; linuxcnc until one is chosen.
 QString lastChosenDialect();
@@ -42,6 +44,7 @@ public:
     // emitting moveSelected; -1 does nothing.
     void showStep(int step);
     QPlainTextEdit* text() const { return text_; }
+    const NcHighlighter* highlighter() const { return highlighter_; }
     // The (step, move) the line under the text cursor was posted from;
     // step -1 for lines that belong to no move (header, comments).
     BlockSource currentSource() const;
@@ -58,6 +61,7 @@ private:
     QComboBox* dialect_;
     QLabel* summary_;
     QPlainTextEdit* text_;
+    NcHighlighter* highlighter_ = nullptr;
     std::vector<BlockSource> lines_;
     bool selecting_ = false;
     int highlightedLine_ = -1;

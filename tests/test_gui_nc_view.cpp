@@ -1,0 +1,77 @@
+// The NC view's colours (ui/nc_highlighter.*): the lines shown are coloured
+// as the tape's words are (G and M bold blue and purple, axis words green,
+// comments grey italic, the words inside a comment too), lines far below
+// are not coloured until scrolled to, and then they are.
+#include "ui/nc_highlighter.h"
+#include "ui/nc_view.h"
+
+#include <QApplication>
+#include <QPlainTextEdit>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextLayout>
+#include <QtTest>
+
+using taiwa::BlockSource;
+using taiwa::ui::NcView;
+
+namespace {
+
+// The colour and weight at a character of a line, as drawn.
+QTextCharFormat formatAt(const QTextBlock& b, int at)
+{
+    QTextCharFormat f;
+    for (const auto& r : b.layout()->formats())
+        if (at >= r.start && at < r.start + r.length) f = r.format;
+    return f;
+}
+
+}  // namespace
+
+class TestGuiNcView : public QObject {
+    Q_OBJECT
+private slots:
+    void coloursTheLinesShownThenTheLinesScrolledTo()
+    {
+        QString nc = "%\n(T1 G43 in a comment)\n";
+        for (int i = 0; i < 20000; ++i) nc += QString("N%1 G1 X%2 Y5. F600 M8\n").arg(i * 10).arg(i);
+        nc += "M30\n%";
+        const std::vector<BlockSource> lines(static_cast<std::size_t>(nc.count('\n') + 1));
+        NcView view;
+        view.resize(600, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.setProgram(nc, lines);
+        QTRY_VERIFY(view.highlighter()->coloured(2));
+        QTextDocument* doc = view.text()->document();
+
+        const QTextBlock move = doc->findBlockByNumber(2);  // "N0 G1 X0 Y5. F600 M8"
+        const QString t = move.text();
+        QCOMPARE(formatAt(move, static_cast<int>(t.indexOf("G1"))).foreground().color(), QColor(0x00, 0x40, 0xc0));
+        QCOMPARE(formatAt(move, static_cast<int>(t.indexOf("G1"))).fontWeight(), int(QFont::Bold));
+        QCOMPARE(formatAt(move, static_cast<int>(t.indexOf("X0"))).foreground().color(), QColor(0x00, 0x60, 0x00));
+        QCOMPARE(formatAt(move, static_cast<int>(t.indexOf("M8"))).foreground().color(), QColor(0xa0, 0x00, 0xa0));
+        QCOMPARE(formatAt(move, 0).foreground().color(), QColor(0x80, 0x80, 0x80));  // N
+        const QTextBlock remark = doc->findBlockByNumber(1);
+        const QTextCharFormat inside = formatAt(remark, static_cast<int>(remark.text().indexOf("G43")));
+        QCOMPARE(inside.foreground().color(), QColor(0x90, 0x90, 0x90));
+        QVERIFY(inside.fontItalic() && inside.fontWeight() != int(QFont::Bold));
+
+        // Far below: not coloured yet; scrolled to, coloured.
+        const int last = doc->blockCount() - 2;
+        QVERIFY(!view.highlighter()->coloured(last));
+        QVERIFY(formatAt(doc->findBlockByNumber(last), 0).foreground().style() == Qt::NoBrush);
+        view.text()->verticalScrollBar()->setValue(view.text()->verticalScrollBar()->maximum());
+        QTRY_VERIFY(view.highlighter()->coloured(last));
+        QCOMPARE(formatAt(doc->findBlockByNumber(last), 0).foreground().color(), QColor(0xa0, 0x00, 0xa0));  // M30
+        QVERIFY(!view.highlighter()->coloured(10000));
+
+        // A new program: its first lines coloured again.
+        view.setProgram("G0 X1\nM30\n", std::vector<BlockSource>(3));
+        QTRY_VERIFY(view.highlighter()->coloured(0));
+        QCOMPARE(formatAt(doc->findBlockByNumber(0), 0).foreground().color(), QColor(0x00, 0x40, 0xc0));
+    }
+};
+
+QTEST_MAIN(TestGuiNcView)
+#include "test_gui_nc_view.moc"
