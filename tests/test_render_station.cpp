@@ -5,10 +5,13 @@
 // projected midpoint), and a click on a move in 3-D puts the NC view's
 // cursor on the block posted from it; the section bar cuts the stock open
 // and the verification's colour map shows on the part; the window's picture
-// (grabWithPreview, as the screenshots are taken) shows the 3-D view. The GUI tests (test_gui_*) run
+// (grabWithPreview, as the screenshots are taken) shows the 3-D view; after
+// an edit the view's frame comes before the NC text. The GUI tests (test_gui_*) run
 // offscreen without OpenGL and cannot see any of this.
+#include "modules/m4/m4.h"
 #include "support/images.h"
 #include "support/support.h"
+#include "ui/job_document.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
@@ -282,6 +285,31 @@ private slots:
         QCOMPARE(w_->ncView()->currentSource().step, picked->step);
         QCOMPARE(w_->ncView()->currentSource().move, picked->move);
         QCOMPARE(scene.highlightedMove(), *picked);
+    }
+
+    // After an edit the 3-D view's frame of the new plan is on screen before
+    // the NC text is laid out (the text waits for it): a 0 ms catch-up used
+    // to run first and hold the frame up by its layout.
+    void frameOfAnEditBeforeTheNcText()
+    {
+        QStringList order;
+        auto c1 = connect(w_->planRunner(), &PlanRunner::programReady, this, [&] { order << "plan"; });
+        auto c2 = connect(preview(), &PreviewWidget::frameShown, this, [&] { order << "frame"; });
+        auto c3 = connect(w_->ncView()->text(), &QPlainTextEdit::textChanged, this, [&] { order << "nc"; });
+        Job j = w_->document()->job();
+        const double depth = j.units[0].module.as<M4Pocket>().depth;
+        j.units[0].module.as<M4Pocket>().depth = depth + 0.5;
+        w_->document()->edit(j, "deeper", "deeper");
+        QTRY_VERIFY_WITH_TIMEOUT(order.contains("nc"), 10'000);
+        disconnect(c1);
+        disconnect(c2);
+        disconnect(c3);
+        const qsizetype plan = order.indexOf("plan");
+        QVERIFY2(plan >= 0 && order.indexOf("frame", plan) > plan && order.indexOf("frame", plan) < order.indexOf("nc", plan),
+                 qPrintable(order.join(", ")));
+        j.units[0].module.as<M4Pocket>().depth = depth;
+        w_->document()->edit(j, "back", "back");
+        w_->planRunner()->flush();
     }
 };
 

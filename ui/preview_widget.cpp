@@ -53,6 +53,7 @@ PreviewWidget::PreviewWidget(QWidget* parent)
 
     gl_ = new PreviewWindow(window_, this);
     connect(gl_, &PreviewWindow::resized, this, &PreviewWidget::onResized);
+    connect(gl_, &QOpenGLWindow::frameSwapped, this, &PreviewWidget::frameShown);
     container_ = QWidget::createWindowContainer(gl_, this);
     container_->setFocusPolicy(Qt::NoFocus);  // the focus stays with this widget
     container_->setMinimumSize(1, 1);
@@ -161,6 +162,8 @@ void PreviewWidget::markPoint(std::optional<Point3> p)
 QImage PreviewWidget::grabImage() { return gl_->grabFrame(); }
 
 QWindow* PreviewWidget::glWindow() const { return gl_; }
+
+bool PreviewWidget::drawsFrames() const { return gl_->isExposed(); }
 
 void PreviewWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent)
 {

@@ -62,8 +62,14 @@ public:
     // The scene, for tests and the NC view's picking.
     const viz::Scene& scene() const { return scene_; }
 
+    // Whether the view draws its frames now (its GL window is exposed): a
+    // frameShown() follows every change then.
+    bool drawsFrames() const;
+
 signals:
     void moveClicked(int step, int move);
+    // A frame of the view is on screen (swapped).
+    void frameShown();
 
 protected:
     void mousePressEvent(QMouseEvent* e) override;
