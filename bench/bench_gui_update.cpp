@@ -10,6 +10,8 @@
 //             view: the worker, then the window's handler), frame (the
 //             view's next frame, grabbed) and again (the same frame
 //             rendered once more: what a frame costs with nothing new);
+//   FullPlanShown: the same to the 3-D view's frame swapped on screen (no
+//             grab: what the operator sees; counters toView and shown);
 //   FullPlanNc: the same to the NC view's new text, which the window puts
 //             off until after the 3-D view (and on a large job until the
 //             typing pauses);
@@ -137,6 +139,50 @@ void FullPlan(benchmark::State& state, StationWindow* window)
     state.counters["toView"] = toProgram / n;
     state.counters["frame"] = toFrame / n;
     state.counters["again"] = again / n;
+}
+
+// The same to the 3-D view's frame on screen (its GL window swapped; with a
+// display only): what the operator sees, no grab. Counters: toView as in
+// FullPlan, shown (from there to the frame swapped).
+void FullPlanShown(benchmark::State& state, StationWindow* window)
+{
+    PreviewWidget* p = window->preview();
+    if (!p) {
+        state.SkipWithError("no 3-D view (no display)");
+        return;
+    }
+    using Clock = std::chrono::steady_clock;
+    double toProgram = 0, toShown = 0;
+    for (auto _ : state) {
+        QEventLoop loop;
+        Clock::time_point edited, ready, shown;
+        bool delivered = false;
+        auto c1 = QObject::connect(window->planRunner(), &PlanRunner::programReady, &loop, [&] {
+            ready = Clock::now();
+            delivered = true;
+        });
+        auto c2 = QObject::connect(p, &PreviewWidget::frameShown, &loop, [&] {
+            if (!delivered) return;  // a frame of the plan before
+            shown = Clock::now();
+            loop.quit();
+        });
+        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
+        changeDepth(window);
+        edited = Clock::now();
+        loop.exec();
+        QObject::disconnect(c1);
+        QObject::disconnect(c2);
+        state.PauseTiming();
+        const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+        toProgram += ms(edited, ready);
+        toShown += ms(ready, shown);
+        window->planRunner()->flush();
+        QCoreApplication::processEvents();
+        state.ResumeTiming();
+    }
+    const double n = static_cast<double>(state.iterations());
+    state.counters["toView"] = toProgram / n;
+    state.counters["shown"] = toShown / n;
 }
 
 // The same to the NC view's new text (put off after the 3-D view's frame).
@@ -282,6 +328,9 @@ int main(int argc, char** argv)
         const std::string n = name;
         benchmark::RegisterBenchmark(("StepList/" + n).c_str(), StepList, window)->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(("FullPlan/" + n).c_str(), FullPlan, window)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+        benchmark::RegisterBenchmark(("FullPlanShown/" + n).c_str(), FullPlanShown, window)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
         benchmark::RegisterBenchmark(("FullPlanNc/" + n).c_str(), FullPlanNc, window)

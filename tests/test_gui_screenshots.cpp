@@ -68,7 +68,7 @@ class TestGuiScreenshots : public QObject {
         QVERIFY2(!w.statusBar()->currentMessage().contains(QDir(test::sourcePath("")).absolutePath()),
                  qPrintable(w.statusBar()->currentMessage()));
         QVERIFY2(!w.windowTitle().contains(QDir(test::sourcePath("")).absolutePath()), qPrintable(w.windowTitle()));
-        const QImage image = w.grab().toImage();
+        const QImage image = grabWithPreview(&w);  // QWidget::grab lacks the GL view
         QVERIFY(!image.isNull());
         QCOMPARE(image.size(), w.size() * w.devicePixelRatio());
         QSet<QRgb> colours;

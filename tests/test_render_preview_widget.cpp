@@ -1,10 +1,12 @@
 // The preview scene inside the station's Qt widget (PreviewWidget, VTK in a
-// QOpenGLWidget) under X: the hand-built plan's path, rapid and tool at
-// their pixels, the selected step and highlighted move; the frame is
-// opaque when grabbed as part of a window (as the station's screenshots
-// are); the sample m4-standard.taiwa shows background and path; a click on
-// a path reports its move and a left drag turns the camera without
-// clicking. Needs an X display (xvfb-run -a).
+// QOpenGLWindow held in a window container) under X: the hand-built plan's
+// path, rapid and tool at their pixels, the selected step and highlighted
+// move; the frame is put, opaque, into a picture of the window holding it
+// (grabWithPreview, as the station's screenshots are taken); the sample
+// m4-standard.taiwa shows background and path; a click on a path reports
+// its move and a left drag turns the camera without clicking, both sent to
+// the widget and to its GL window (as the window system delivers them).
+// Needs an X display (xvfb-run -a).
 #include "support/hand_plan.h"
 #include "support/images.h"
 #include "ui/preview_widget.h"
@@ -99,8 +101,10 @@ private slots:
     }
 
     // Grabbed as part of a window (how the station's screenshots are taken)
-    // the frame is opaque: no alpha is left for the grab to darken the
-    // background and the translucent stock into near-black.
+    // the frame is there, at the widget's place, and opaque: no alpha is left
+    // for the grab to darken the background and the translucent stock into
+    // near-black. (QWidget::grab alone shows the window's grey there: the
+    // GL window is not in the widgets' backing store.)
     void grabbedInAWindowIsOpaque()
     {
         QWidget host;
@@ -113,9 +117,12 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&host));
         // The layout has given the widget its place before the grab.
         QTRY_VERIFY(w->geometry().size() == host.contentsRect().size() - QSize(2 * host.layout()->contentsMargins().left(), 2 * host.layout()->contentsMargins().top()));
-        const QImage img = host.grab().toImage().convertToFormat(QImage::Format_RGB32);
-        const QPoint corner = w->geometry().topLeft() + QPoint(3, 3);
-        QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));
+        const QImage img = ui::grabWithPreview(&host).convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(img.size(), host.size() * host.devicePixelRatio());
+        for (const QPoint corner : {w->geometry().topLeft() + QPoint(3, 3), w->geometry().bottomRight() - QPoint(3, 3)})
+            QVERIFY2(near(img.pixel(corner), palette::kBackground, 0), qPrintable(QString::number(img.pixel(corner), 16)));
+        // Outside the view, the window's own widgets as QWidget::grab has them.
+        QCOMPARE(img.pixel(1, 1), host.grab().toImage().convertToFormat(QImage::Format_RGB32).pixel(1, 1));
     }
 
     void widgetShowsTheSamplePlan()
@@ -167,6 +174,54 @@ private slots:
         cam->GetPosition(after);
         QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[1] - before[1]) + std::abs(after[2] - before[2]) > 1.0);
         QCOMPARE(clicked.size(), 1);
+    }
+
+    // The window system delivers the mouse to the GL window, not to the
+    // widget: a click there picks the same move and takes the keyboard focus
+    // to the widget, a drag there turns the camera, the wheel zooms.
+    void eventsOnTheGlWindowReachTheView()
+    {
+        QWidget host;
+        auto* w = new PreviewWidget(&host);
+        auto* layout = new QVBoxLayout(&host);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->addWidget(w);
+        host.resize(kW, kH);
+        w->setPlan(std::make_shared<const Plan>(plan_));
+        w->setView(ViewPreset::Top);
+        host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&host));
+        QWindow* gl = w->glWindow();
+        QVERIFY(gl && gl != host.windowHandle());
+        QTRY_COMPARE(gl->size(), QSize(kW, kH));
+        QVERIFY(host.focusWidget() != w);
+
+        QSignalSpy clicked(w, &PreviewWidget::moveClicked);
+        const auto at = w->scene().toPixel({55, 40, -5}, kW, kH);
+        QTest::mouseClick(gl, Qt::LeftButton, {}, QPoint(int(at[0]), int(at[1])));
+        QTRY_COMPARE(clicked.size(), 1);
+        QCOMPARE(clicked[0][0].toInt(), kRoughing);
+        QCOMPARE(clicked[0][1].toInt(), kSlotMove);
+        QCOMPARE(host.focusWidget(), w);
+
+        vtkCamera* cam = w->scene().renderer()->GetActiveCamera();
+        double before[3], after[3];
+        cam->GetPosition(before);
+        const QPoint from(400, 300), to(520, 260);
+        QTest::mousePress(gl, Qt::LeftButton, {}, from);
+        for (int k = 1; k <= 6; ++k) QTest::mouseMove(gl, from + (to - from) * k / 6);
+        QTest::mouseRelease(gl, Qt::LeftButton, {}, to);
+        cam->GetPosition(after);
+        QVERIFY(std::abs(after[0] - before[0]) + std::abs(after[1] - before[1]) + std::abs(after[2] - before[2]) > 1.0);
+        QCOMPARE(clicked.size(), 1);
+
+        // The zoom: the view's height in mm (parallel projection) or the distance.
+        const auto zoom = [cam] { return cam->GetParallelProjection() ? cam->GetParallelScale() : cam->GetDistance(); };
+        const double distance = zoom();
+        QWheelEvent wheel(QPointF(from), gl->mapToGlobal(QPointF(from)), {}, QPoint(0, 120), Qt::NoButton, {},
+                          Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(gl, &wheel);
+        QVERIFY2(zoom() < distance * 0.99, qPrintable(QString("%1 then %2").arg(distance).arg(zoom())));
     }
 };
 

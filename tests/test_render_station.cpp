@@ -4,10 +4,14 @@
 // on an NC block highlights its move in 3-D (pixels checked at the move's
 // projected midpoint), and a click on a move in 3-D puts the NC view's
 // cursor on the block posted from it; the section bar cuts the stock open
-// and the verification's colour map shows on the part. The GUI tests (test_gui_*) run
+// and the verification's colour map shows on the part; the window's picture
+// (grabWithPreview, as the screenshots are taken) shows the 3-D view; after
+// an edit the view's frame comes before the NC text. The GUI tests (test_gui_*) run
 // offscreen without OpenGL and cannot see any of this.
+#include "modules/m4/m4.h"
 #include "support/images.h"
 #include "support/support.h"
+#include "ui/job_document.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
 #include "ui/preview_widget.h"
@@ -89,6 +93,31 @@ private slots:
         QCOMPARE(w_->planRunner()->stockSimulation()->stepCount(), static_cast<int>(plan().steps.size()));
     }
     void cleanupTestCase() { w_.reset(); }
+
+    // The window's picture has the 3-D view at the preview's place: its
+    // frame, pixel for pixel, with background and machined-part colours
+    // (QWidget::grab alone leaves that rectangle to the window's grey).
+    void grabbedWindowShowsTheView()
+    {
+        w_->findChild<QAbstractButton*>("step.all")->click();
+        const QImage image = grabWithPreview(w_.get()).convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(image.size(), w_->size() * w_->devicePixelRatio());
+        const QImage view = frame();
+        const QRect at(preview()->mapTo(w_.get(), QPoint(0, 0)), preview()->size());
+        QVERIFY2(at.width() > 300 && at.height() > 200, qPrintable(QString("%1 x %2").arg(at.width()).arg(at.height())));
+        QCOMPARE(view.size(), at.size());
+        int background = 0, green = 0;
+        for (int y = 0; y < at.height(); ++y)
+            for (int x = 0; x < at.width(); ++x) {
+                const QRgb c = image.pixel(at.x() + x, at.y() + y);
+                background += test::near(c, viz::palette::kBackground, 0) ? 1 : 0;
+                green += qGreen(c) > qRed(c) + 30 && qGreen(c) > qBlue(c) + 10 ? 1 : 0;
+            }
+        const int area = at.width() * at.height();
+        QVERIFY2(background > area / 10, qPrintable(QString("%1 of %2").arg(background).arg(area)));
+        QVERIFY2(green > area / 50, qPrintable(QString("%1 of %2").arg(green).arg(area)));
+        QCOMPARE(differingPixels(image.copy(at), view), 0);
+    }
 
     void previewFollowsTheStepList()
     {
@@ -256,6 +285,31 @@ private slots:
         QCOMPARE(w_->ncView()->currentSource().step, picked->step);
         QCOMPARE(w_->ncView()->currentSource().move, picked->move);
         QCOMPARE(scene.highlightedMove(), *picked);
+    }
+
+    // After an edit the 3-D view's frame of the new plan is on screen before
+    // the NC text is laid out (the text waits for it): a 0 ms catch-up used
+    // to run first and hold the frame up by its layout.
+    void frameOfAnEditBeforeTheNcText()
+    {
+        QStringList order;
+        auto c1 = connect(w_->planRunner(), &PlanRunner::programReady, this, [&] { order << "plan"; });
+        auto c2 = connect(preview(), &PreviewWidget::frameShown, this, [&] { order << "frame"; });
+        auto c3 = connect(w_->ncView()->text(), &QPlainTextEdit::textChanged, this, [&] { order << "nc"; });
+        Job j = w_->document()->job();
+        const double depth = j.units[0].module.as<M4Pocket>().depth;
+        j.units[0].module.as<M4Pocket>().depth = depth + 0.5;
+        w_->document()->edit(j, "deeper", "deeper");
+        QTRY_VERIFY_WITH_TIMEOUT(order.contains("nc"), 10'000);
+        disconnect(c1);
+        disconnect(c2);
+        disconnect(c3);
+        const qsizetype plan = order.indexOf("plan");
+        QVERIFY2(plan >= 0 && order.indexOf("frame", plan) > plan && order.indexOf("frame", plan) < order.indexOf("nc", plan),
+                 qPrintable(order.join(", ")));
+        j.units[0].module.as<M4Pocket>().depth = depth;
+        w_->document()->edit(j, "back", "back");
+        w_->planRunner()->flush();
     }
 };
 

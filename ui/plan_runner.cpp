@@ -7,20 +7,28 @@
 #include <QCoreApplication>
 
 #include <exception>
+#include <future>
 
 namespace taiwa::ui {
 namespace {
 
 // Posts a plan and, for a 3-D preview, simulates its finished part; runs on
-// the worker thread, so it touches nothing but its arguments.
+// the worker thread, so it touches nothing but its arguments. The two only
+// read the plan: the stock is simulated on a thread of its own meanwhile
+// (after an edit it re-cuts one unit on one core; on 200 units the post
+// took 7-12 ms and the re-cut 5-10 ms one after the other, before the view
+// got the plan).
 PlanRunner::Result postAndSimulate(std::shared_ptr<const Plan> plan, const PostOptions& options,
                                    sim::StockCache* stock, sim::StockGrid grid)
 {
     PlanRunner::Result r;
+    std::future<std::shared_ptr<sim::StockSimulation>> simulated;
+    if (stock)  // the part as the preview first shows it
+        simulated = std::async(std::launch::async, [stock, plan, grid] { return stock->simulation(plan, grid); });
     PostedProgram prog = postProcess(plan->steps, plan->tools, options);
     r.nc = QString::fromStdString(prog.nc);
     r.lines = std::move(prog.lines);
-    if (stock) r.stock = stock->simulation(plan, grid);  // the part as the preview first shows it
+    if (simulated.valid()) r.stock = simulated.get();  // rethrows what the simulation threw
     r.plan = std::move(plan);
     return r;
 }

@@ -1,22 +1,23 @@
-// PreviewWidget: VTK rendering inside a QOpenGLWidget. The generic render
-// window uses Qt's context: it asks to be made current (WindowMakeCurrentEvent)
-// and whether it is (WindowIsCurrentEvent), renders only inside paintGL
-// (ReadyForRendering), after which its display framebuffer is blitted into
-// the widget's (defaultFramebufferObject()). Frame presentation is Qt's, so
-// WindowFrameEvent needs no answer. Mouse events go to a
-// vtkGenericRenderWindowInteractor with the trackball camera style; its
-// render requests become update() calls.
+// PreviewWidget: the scene, VTK's interactor and the public API of the 3-D
+// view around a PreviewWindow (ui/preview_window.h) that renders it. The
+// window sits in a container filling this widget, so the two share their
+// coordinates: the window's mouse and wheel events arrive here as they are,
+// go to a vtkGenericRenderWindowInteractor with the trackball camera style,
+// and its render requests become frames of the window. This widget, not the
+// window, takes the keyboard focus (StrongFocus, on a click).
 #include "ui/preview_widget.h"
 
+#include "ui/preview_window.h"
+
 #include <QMouseEvent>
-#include <QOpenGLContext>
+#include <QPainter>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkOpenGLState.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,20 +29,18 @@ constexpr int kClickSlop = 3;  // pixels the mouse may move and still click
 }
 
 PreviewWidget::PreviewWidget(QWidget* parent)
-    : QOpenGLWidget(parent), window_(vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New()),
+    : QWidget(parent), window_(vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New()),
       interactor_(vtkSmartPointer<vtkGenericRenderWindowInteractor>::New())
 {
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::StrongFocus);
     window_->SetReadyForRendering(false);
-    window_->SetFrameBlitModeToNoBlit();  // paintGL copies the frame into Qt's framebuffer
+    window_->SetFrameBlitModeToNoBlit();  // PreviewWindow copies the frame into its own buffer
     window_->SetMultiSamples(0);          // VTK's default multisampling costs 2.4-3.5x on software rendering
     window_->AddRenderer(scene_.renderer());
-    window_->AddObserver(vtkCommand::WindowMakeCurrentEvent, this, &PreviewWidget::onMakeCurrent);
-    window_->AddObserver(vtkCommand::WindowIsCurrentEvent, this, &PreviewWidget::onIsCurrent);
 
     interactor_->SetRenderWindow(window_);
-    interactor_->EnableRenderOff();  // we render in paintGL only
+    interactor_->EnableRenderOff();  // the window renders in its paintGL only
     interactor_->AddObserver(vtkCommand::RenderEvent, this, &PreviewWidget::onInteractorRender);
     auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
     style->SetDefaultRenderer(scene_.renderer());
@@ -51,78 +50,42 @@ PreviewWidget::PreviewWidget(QWidget* parent)
     style->AddObserver(vtkCommand::EndInteractionEvent, this, &PreviewWidget::onInteraction);
     interactor_->SetInteractorStyle(style);
     interactor_->Initialize();
+
+    gl_ = new PreviewWindow(window_, this);
+    connect(gl_, &PreviewWindow::resized, this, &PreviewWidget::onResized);
+    connect(gl_, &QOpenGLWindow::frameSwapped, this, &PreviewWidget::frameShown);
+    container_ = QWidget::createWindowContainer(gl_, this);
+    container_->setFocusPolicy(Qt::NoFocus);  // the focus stays with this widget
+    container_->setMinimumSize(1, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(container_);
 }
 
-PreviewWidget::~PreviewWidget()
+// The GL window first (it frees VTK's GL objects in its context), while the
+// scene and the render window are still there.
+PreviewWidget::~PreviewWidget() { delete container_; }
+
+void PreviewWidget::requestFrame()
 {
-    makeCurrent();
-    window_->Finalize();  // frees VTK's GL objects while Qt's context is current
-    doneCurrent();
+    if (gl_) gl_->update();  // none while the constructor initializes the interactor
 }
 
-// The context only: QOpenGLWidget::makeCurrent() would also rebind the
-// widget's framebuffer behind VTK's cached state, and VTK would then attach
-// its own buffers to Qt's framebuffer.
-void PreviewWidget::onMakeCurrent(vtkObject*, unsigned long, void*)
-{
-    if (context() && QOpenGLContext::currentContext() != context()) context()->makeCurrent(context()->surface());
-}
-
-void PreviewWidget::onIsCurrent(vtkObject*, unsigned long, void* callData)
-{
-    *static_cast<bool*>(callData) = context() && QOpenGLContext::currentContext() == context();
-}
-
-void PreviewWidget::onInteractorRender(vtkObject*, unsigned long, void*) { update(); }
+void PreviewWidget::onInteractorRender(vtkObject*, unsigned long, void*) { requestFrame(); }
 
 void PreviewWidget::onInteraction(vtkObject*, unsigned long event, void*)
 {
     scene_.setMoving(event == vtkCommand::StartInteractionEvent);
-    update();
+    requestFrame();
 }
 
-void PreviewWidget::initializeGL()
+void PreviewWidget::onResized(int w, int h)
 {
-    window_->SetOwnContext(false);
-    window_->OpenGLInitContext();
-}
-
-void PreviewWidget::resizeGL(int w, int h)
-{
-    const double dpr = devicePixelRatioF();
-    const int pw = static_cast<int>(std::lround(w * dpr)), ph = static_cast<int>(std::lround(h * dpr));
-    window_->SetSize(pw, ph);
-    interactor_->UpdateSize(pw, ph);
+    const double dpr = gl_->devicePixelRatio();
+    interactor_->UpdateSize(static_cast<int>(std::lround(w * dpr)), static_cast<int>(std::lround(h * dpr)));
     // Fit the view while nothing is shown yet; afterwards a resize keeps the
     // operator's camera.
     if (!fittedStock_) scene_.setView(view_, static_cast<double>(w) / std::max(h, 1));
-}
-
-void PreviewWidget::paintGL()
-{
-    // Qt has bound the widget's framebuffer and set its own GL state: VTK's
-    // cached state is stale. Render, then copy VTK's frame into Qt's buffer.
-    vtkOpenGLState* state = window_->GetState();
-    state->Reset();
-    state->ResetFramebufferBindings();
-    state->Push();
-    state->vtkglDepthFunc(GL_LEQUAL);  // Qt leaves GL_LESS; VTK expects GL_LEQUAL
-    window_->SetReadyForRendering(true);
-    window_->Render();
-    window_->SetReadyForRendering(false);
-    state->PushDrawFramebufferBinding();
-    state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-    state->vtkglDrawBuffer(GL_COLOR_ATTACHMENT0);
-    window_->BlitDisplayFramebuffer();
-    // VTK leaves alpha below 1 where the background and the translucent
-    // stock are; an opaque window ignores it, but grabFramebuffer() (and so
-    // QWidget::grab) would premultiply it into near-black. Make it opaque.
-    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-    state->vtkglClearColor(0.0, 0.0, 0.0, 1.0);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT);
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    state->PopDrawFramebufferBinding();
-    state->Pop();
 }
 
 void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock)
@@ -133,7 +96,7 @@ void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<si
     if (plan && newStock) fittedStock_ = plan->mmJob.stock;
     scene_.setPlan(std::move(plan), std::move(stock));
     if (newStock) scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setSelectedStep(int index)
@@ -143,64 +106,68 @@ void PreviewWidget::setSelectedStep(int index)
     // planned would delay the new one's).
     const int before = scene_.selectedStep();
     scene_.setSelectedStep(index);
-    if (scene_.selectedStep() != before) update();
+    if (scene_.selectedStep() != before) requestFrame();
 }
 
 void PreviewWidget::setShowStock(bool show)
 {
     scene_.setShowStock(show);
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setStockBefore(bool before)
 {
     scene_.setStockBefore(before);
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setSection(std::optional<viz::SectionPlane> plane)
 {
     scene_.setSection(plane);
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
 {
     scene_.setDeviationMap(std::move(map));
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setView(viz::ViewPreset view)
 {
     view_ = view;
     scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::highlightMove(int step, int move)
 {
     scene_.highlightMove(step, move);
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::setPlayhead(int step, int move)
 {
     scene_.setPlayhead(step, move);
-    update();
+    requestFrame();
 }
 
 void PreviewWidget::markPoint(std::optional<Point3> p)
 {
     if (!p && !scene_.markedPoint()) return;  // nothing marked, nothing to take away
     scene_.markPoint(p);
-    update();
+    requestFrame();
 }
 
-QImage PreviewWidget::grabImage() { return grabFramebuffer(); }
+QImage PreviewWidget::grabImage() { return gl_->grabFrame(); }
+
+QWindow* PreviewWidget::glWindow() const { return gl_; }
+
+bool PreviewWidget::drawsFrames() const { return gl_->isExposed(); }
 
 void PreviewWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent)
 {
-    const double dpr = devicePixelRatioF();
+    const double dpr = gl_->devicePixelRatio();
     const QPointF p = e->position();
     interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr),
                                           e->modifiers() & Qt::ControlModifier ? 1 : 0,
@@ -210,6 +177,7 @@ void PreviewWidget::forwardMouse(QMouseEvent* e, unsigned long vtkEvent)
 
 void PreviewWidget::mousePressEvent(QMouseEvent* e)
 {
+    setFocus(Qt::MouseFocusReason);
     pressPos_ = e->position().toPoint();
     dragged_ = false;
     switch (e->button()) {
@@ -242,11 +210,27 @@ void PreviewWidget::mouseReleaseEvent(QMouseEvent* e)
 
 void PreviewWidget::wheelEvent(QWheelEvent* e)
 {
-    const double dpr = devicePixelRatioF();
+    const double dpr = gl_->devicePixelRatio();
     const QPointF p = e->position();
     interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr));
     if (e->angleDelta().y() > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, e);
     else if (e->angleDelta().y() < 0) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent, e);
+}
+
+QImage grabWithPreview(QWidget* widget)
+{
+    QImage image = widget->grab().toImage();
+    QPainter painter(&image);
+    QList<PreviewWidget*> views = widget->findChildren<PreviewWidget*>();
+    if (auto* self = qobject_cast<PreviewWidget*>(widget)) views.push_back(self);
+    for (PreviewWidget* view : views) {
+        if (!view->isVisible()) continue;
+        const QImage frame = view->grabImage();
+        if (frame.isNull()) continue;
+        // Logical coordinates: the painter follows the image's device pixel ratio.
+        painter.drawImage(QRectF(view->mapTo(widget, QPoint(0, 0)), QSizeF(view->size())), frame);
+    }
+    return image;
 }
 
 }  // namespace taiwa::ui

@@ -1,29 +1,34 @@
-// The 3-D preview of the station window: the viz scene of a plan shown in a
-// Qt 6 QOpenGLWidget through vtkGenericOpenGLRenderWindow (VTK renders into
-// the widget's own framebuffer, inside paintGL). Left drag rotates, middle
-// drag or shift + left drag pans, the wheel zooms; a click on a path emits
-// the move under the cursor.
+// The 3-D preview of the station window: the viz scene of a plan shown
+// through vtkGenericOpenGLRenderWindow in a QOpenGLWindow (PreviewWindow)
+// that this widget holds in a window container, so that the view's frames
+// and the other widgets' repaints do not wait for each other. Left drag
+// rotates, middle drag or shift + left drag pans, the wheel zooms; a click
+// on a path emits the move under the cursor. QWidget::grab() of a window
+// holding it lacks the view: grabWithPreview() puts it in.
 #pragma once
 
 #include "viz/render.h"
 #include "viz/scene.h"
 
 #include <QImage>
-#include <QOpenGLWidget>
 #include <QPoint>
+#include <QWidget>
 
 #include <vtkSmartPointer.h>
 
 #include <memory>
 #include <optional>
 
+class QWindow;
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkObject;
 
 namespace taiwa::ui {
 
-class PreviewWidget : public QOpenGLWidget {
+class PreviewWindow;
+
+class PreviewWidget : public QWidget {
     Q_OBJECT
 public:
     explicit PreviewWidget(QWidget* parent = nullptr);
@@ -50,24 +55,31 @@ public:
     // The current frame (rendered now if needed).
     QImage grabImage();
 
+    // The GL window the view is drawn in (for tests: the window system's
+    // mouse events arrive there).
+    QWindow* glWindow() const;
+
     // The scene, for tests and the NC view's picking.
     const viz::Scene& scene() const { return scene_; }
 
+    // Whether the view draws its frames now (its GL window is exposed): a
+    // frameShown() follows every change then.
+    bool drawsFrames() const;
+
 signals:
     void moveClicked(int step, int move);
+    // A frame of the view is on screen (swapped).
+    void frameShown();
 
 protected:
-    void initializeGL() override;
-    void resizeGL(int w, int h) override;
-    void paintGL() override;
     void mousePressEvent(QMouseEvent* e) override;
     void mouseMoveEvent(QMouseEvent* e) override;
     void mouseReleaseEvent(QMouseEvent* e) override;
     void wheelEvent(QWheelEvent* e) override;
 
 private:
-    void onMakeCurrent(vtkObject*, unsigned long, void*);
-    void onIsCurrent(vtkObject*, unsigned long, void* callData);
+    void requestFrame();  // a frame of the GL window at the next event-loop pass
+    void onResized(int w, int h);
     void onInteractorRender(vtkObject*, unsigned long, void*);
     void onInteraction(vtkObject*, unsigned long event, void*);
     void forwardMouse(QMouseEvent* e, unsigned long vtkEvent);
@@ -75,10 +87,17 @@ private:
     viz::Scene scene_;
     vtkSmartPointer<vtkGenericOpenGLRenderWindow> window_;
     vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
+    PreviewWindow* gl_ = nullptr;  // owned by its container
+    QWidget* container_ = nullptr;  // a child of this widget filling it
     viz::ViewPreset view_ = viz::ViewPreset::Iso;
     std::optional<Stock> fittedStock_;  // the stock the camera was last fitted to
     QPoint pressPos_;
     bool dragged_ = false;
 };
+
+// QWidget::grab() of `widget` with the frame of every visible PreviewWidget
+// in it painted at its place (the GL window is not in the widgets' backing
+// store). For screenshots and tests.
+QImage grabWithPreview(QWidget* widget);
 
 }  // namespace taiwa::ui

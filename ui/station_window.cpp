@@ -347,19 +347,25 @@ void StationWindow::wire()
     connect(runner_, &PlanRunner::stepsPlanned, this, [this](std::shared_ptr<const Plan> plan) {
         catchUpTimer_->stop();
         later_.reset();
+        catchUpAfterFrame_ = false;
         steps_->setPlan(plan);
     });
-    // The full plan: the 3-D view first (it renders at the next event-loop
-    // pass), the NC text and the step list's times after it (catchUp), as
+    // The full plan: the 3-D view first, the NC text and the step list's
+    // times after its frame is on screen (catchUp; the view's frame request
+    // waits for the platform's next update, which a 0 ms timer overtook), as
     // soon as the GUI is free when the last catch-up fit in a frame (33 ms);
     // for a job whose tape takes the GUI longer, once the typing pauses for
     // twice that long (at most 1 s), so that keystrokes are not kept waiting
-    // for a tape about to be replaced.
+    // for a tape about to be replaced. A view that draws no frame (hidden
+    // behind the figure tab, minimised) holds nothing up; one whose frame is
+    // lost holds it up for 100 ms at most.
     connect(runner_, &PlanRunner::programReady, this,
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
                 if (plan) {
                     later_ = Later{plan, nc, lines};
-                    catchUpTimer_->start(catchUpMs_ < 33 ? 0 : static_cast<int>(std::min<qint64>(2 * catchUpMs_, 1000)));
+                    catchUpAfterFrame_ = preview_ && preview_->drawsFrames();
+                    if (catchUpAfterFrame_) catchUpTimer_->start(100);
+                    else scheduleCatchUp();
                 } else if (!hasErrors(diagnostics_)) {
                     nc_->setMessage(nc);  // with input errors the last program stays, marked stale
                 }
@@ -367,6 +373,12 @@ void StationWindow::wire()
                 showStale();
             });
     connect(runner_, &PlanRunner::flushed, this, &StationWindow::catchUp);
+    if (preview_)
+        connect(preview_, &PreviewWidget::frameShown, this, [this] {
+            if (!catchUpAfterFrame_) return;
+            catchUpAfterFrame_ = false;
+            scheduleCatchUp();
+        });
     // One dialect, the job's (docs/job-format.md `dialect`): the chooser
     // shows it, the program on view is posted in it, the export offers it.
     // Choosing another is an edit of the job (undoable); a new job takes the
@@ -542,9 +554,15 @@ void StationWindow::onProgram(std::shared_ptr<const Plan> plan)
     }
 }
 
+void StationWindow::scheduleCatchUp()
+{
+    catchUpTimer_->start(catchUpMs_ < 33 ? 0 : static_cast<int>(std::min<qint64>(2 * catchUpMs_, 1000)));
+}
+
 void StationWindow::catchUp()
 {
     catchUpTimer_->stop();
+    catchUpAfterFrame_ = false;
     if (!later_) return;
     QElapsedTimer took;
     took.start();

@@ -82,6 +82,9 @@ private:
     // The NC text and the step list's times of the newest plan, put off
     // until the 3-D view has it (docs/station.md, "From a keystroke to the views").
     void catchUp();
+    // catchUp() at the next pass when the last one fit in a frame, else
+    // once the typing pauses.
+    void scheduleCatchUp();
     void showDiagnostics();
     void editTechnology();
     void showToolLibrary();
@@ -120,6 +123,7 @@ private:
     std::optional<Later> later_;  // what catchUp() shows
     QTimer* catchUpTimer_ = nullptr;
     qint64 catchUpMs_ = 0;  // how long the last catchUp() took
+    bool catchUpAfterFrame_ = false;  // waiting for the 3-D view's frame of the plan
 };
 
 }  // namespace taiwa::ui
