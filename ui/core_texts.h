@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <string>
 #include <string_view>
 
 namespace taiwa::ui {
@@ -19,6 +20,11 @@ QString stepLabel(const Step& step);
 // bore)", a profile's "outer (OD)") translated; as it is when the catalogue
 // has no entry for it (-X, +Y).
 QString codeMeaning(std::string_view meaning);
+// A diagnostic's field key ("stock.height", "figure[3]") in the station's
+// words, part by part; a part with no translation as it is (alpha1, S).
+QString fieldText(const std::string& field);
+// The 3-D view's scale note for axes of `mm` millimetres ("axes 50 mm", "軸 50 mm").
+QString axesNote(int mm);
 // Every text of the core this file translates (a test checks each has a translation).
 QStringList coreTextSources();
 

@@ -28,15 +28,21 @@ NcView::NcView(QWidget* parent)
     new NcHighlighter(text_->document());
 
     auto* top = new QHBoxLayout;
+    // The label and the dialect above the program, its block count under
+    // it: each whole in every language at 1366 px (test_gui_languages).
     auto* label = new QLabel(tr("&NC program, dialect:"), this);
+    label->setObjectName("nc.label");
+    summary_->setObjectName("nc.blocks");
+    summary_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     label->setBuddy(dialect_);
     top->addWidget(label);
     top->addWidget(dialect_);
-    top->addWidget(summary_, 1);
+    top->addStretch(1);
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addLayout(top);
     box->addWidget(text_, 1);
+    box->addWidget(summary_);
 
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);

@@ -56,7 +56,21 @@ double segmentDistance(double px, double py, const double a[2], const double b[2
     return std::hypot(px - a[0] - t * dx, py - a[1] - t * dy);
 }
 
+std::function<std::string(int)>& scaleNoteText()
+{
+    static std::function<std::string(int)> text = [](int mm) { return "axes " + std::to_string(mm) + " mm"; };
+    return text;
+}
+
 }  // namespace
+
+void Scene::setScaleNoteText(std::function<std::string(int mm)> text) { scaleNoteText() = std::move(text); }
+
+std::string Scene::scaleNote() const
+{
+    const char* text = scaleNote_ ? scaleNote_->GetInput() : nullptr;
+    return text ? text : "";
+}
 
 Scene::Scene() : renderer_(vtkSmartPointer<vtkRenderer>::New())
 {
@@ -170,7 +184,7 @@ void Scene::makeAxes(double axisLength)
     axisLength_ = axisLength;
     axes_ = labelledAxes(axisLength, 14);
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
-    scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
+    scaleNote_->SetInput(scaleNoteText()(static_cast<int>(axisLength)).c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
     scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero

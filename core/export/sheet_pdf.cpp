@@ -4,6 +4,7 @@
 #include "export/sheet_pdf.h"
 
 #include "io/job_io.h"
+#include "model/translate_noop.h"
 
 #include "sheet/sheet_content.h"
 
@@ -340,7 +341,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     pdf.setTitle(q(c.title + " – " + plan.job.name));
     pdf.setCreator(QStringLiteral("Taiwa " TAIWA_VERSION));
     QPainter painter;
-    if (!painter.begin(&pdf)) return Failure{"cannot paint the instruction sheet's PDF"};
+    if (!painter.begin(&pdf)) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot paint the instruction sheet's PDF")};
     painter.setPen(QPen(Qt::black, 1));
     PagePainter page(pdf, painter);
     page.title(c.title);
@@ -383,7 +384,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options)
     }
     page.paragraph("Total: " + c.total + ".");
     page.finish();
-    if (!painter.end() || bytes.data().isEmpty()) return Failure{"cannot paint the instruction sheet's PDF"};
+    if (!painter.end() || bytes.data().isEmpty()) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot paint the instruction sheet's PDF")};
     return std::string(bytes.data().constData(), static_cast<std::size_t>(bytes.data().size()));
 }
 
