@@ -34,6 +34,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTranslator>
 #include <QtTest>
@@ -356,6 +357,7 @@ class TestGuiLanguages : public QObject {
     {
         for (const char* language : {"ja", "zh", "en"}) {
             speak(language);
+            QSettings().remove("station"); // the splits as a new station makes them
             StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
             w.resize(1366, 720);
             w.show();

@@ -1,9 +1,13 @@
 // The core's words in the station's language (core_texts.h).
 #include "ui/core_texts.h"
 
+#include "ui/language.h"
+
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <array>
 
 namespace taiwa::ui {
@@ -63,6 +67,16 @@ constexpr std::array kSources{
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "finishing only"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "full depth at once"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "several incisions"),
+    // The hole pattern's patterns and kinds of hole (modules/holes/holes_kind.cpp).
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "single"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "line"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "grid"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "bolt circle"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "arc"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "drilled"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "tapped"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "reamed"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "bored"),
     // The plan runner's note when the tool library is empty (ui/plan_runner.cpp).
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "the library has no tools"),
 };
@@ -118,7 +132,24 @@ QString fieldText(const std::string& field)
     return out + key.mid(at);
 }
 
-QString axesNote(int mm) { return QCoreApplication::translate("taiwa::CoreTexts", "axes %1 mm").arg(mm); }
+QString axesNoteFont()
+{
+    const QString note = QCoreApplication::translate("taiwa::CoreTexts", "axes %1 mm");
+    if (std::all_of(note.begin(), note.end(), [](QChar c) { return c.unicode() < 0x80; })) return {};
+    const QStringList japanese{"/usr/share/fonts/opentype/ipafont-gothic/ipag.ttf",
+                               "/usr/share/fonts/truetype/fonts-japanese-gothic.ttf"};
+    QStringList files = installedLanguage() == "ja" ? japanese : QStringList();
+    files << "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc" << "/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc";
+    for (const QString& f : files)
+        if (QFileInfo::exists(f)) return f;
+    return {};
+}
+
+QString axesNote(int mm)
+{
+    if (axesNoteFont().isEmpty()) return QStringLiteral("axes %1 mm").arg(mm);  // no font to write it with
+    return QCoreApplication::translate("taiwa::CoreTexts", "axes %1 mm").arg(mm);
+}
 
 QStringList coreTextSources()
 {

@@ -23,8 +23,12 @@ QString codeMeaning(std::string_view meaning);
 // A diagnostic's field key ("stock.height", "figure[3]") in the station's
 // words, part by part; a part with no translation as it is (alpha1, S).
 QString fieldText(const std::string& field);
-// The 3-D view's scale note for axes of `mm` millimetres ("axes 50 mm", "軸 50 mm").
+// The 3-D view's scale note for axes of `mm` millimetres ("axes 50 mm", "軸 50 mm")
+// and the font file it is written with (VTK's own fonts have no Japanese or
+// Chinese): IPA Gothic or WenQuanYi Micro Hei (the package recommends both);
+// English, with no font file, when neither is installed.
 QString axesNote(int mm);
+QString axesNoteFont();
 // Every text of the core this file translates (a test checks each has a translation).
 QStringList coreTextSources();
 

@@ -13,6 +13,8 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace taiwa::ui {
 
 NcView::NcView(QWidget* parent)
@@ -46,6 +48,21 @@ NcView::NcView(QWidget* parent)
 
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
+}
+
+QSize NcView::minimumSizeHint() const
+{
+    QSize size = QWidget::minimumSizeHint();
+    const int count = summary_->fontMetrics().horizontalAdvance(tr("%n block(s)", "", 99999));
+    size.setWidth(std::max(size.width(), layout()->itemAt(0)->minimumSize().width() + layout()->spacing() + count));
+    return size;
+}
+
+QSize NcView::sizeHint() const
+{
+    QSize size = QWidget::sizeHint();
+    size.setWidth(std::max({size.width(), minimumSizeHint().width(), fontMetrics().averageCharWidth() * 48}));
+    return size;
 }
 
 QString lastChosenDialect()

@@ -62,9 +62,19 @@ std::function<std::string(int)>& scaleNoteText()
     return text;
 }
 
+std::string& scaleNoteFont()
+{
+    static std::string file;  // empty: VTK's own font
+    return file;
+}
+
 }  // namespace
 
-void Scene::setScaleNoteText(std::function<std::string(int mm)> text) { scaleNoteText() = std::move(text); }
+void Scene::setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile)
+{
+    scaleNoteText() = std::move(text);
+    scaleNoteFont() = std::move(fontFile);
+}
 
 std::string Scene::scaleNote() const
 {
@@ -186,6 +196,10 @@ void Scene::makeAxes(double axisLength)
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
     scaleNote_->SetInput(scaleNoteText()(static_cast<int>(axisLength)).c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
+    if (!scaleNoteFont().empty()) {
+        scaleNote_->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        scaleNote_->GetTextProperty()->SetFontFile(scaleNoteFont().c_str());
+    }
     scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();

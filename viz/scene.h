@@ -150,8 +150,9 @@ public:
 
     // The axes' scale note for axes of `mm` millimetres, in its caller's
     // language: "axes 50 mm" (taiwa render's pictures) unless the station
-    // gives its translation; for every scene made from then on. The note shown.
-    static void setScaleNoteText(std::function<std::string(int mm)> text);
+    // gives its translation, written with `fontFile` (a TrueType font with
+    // its glyphs, "軸") when given; for every scene made from then on. The note shown.
+    static void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
     std::string scaleNote() const;
 
 private:

@@ -1651,6 +1651,42 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>深さを分けて数回</translation>
         </message>
         <message>
+            <source>single</source>
+            <translation>単独穴</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直線配列</translation>
+        </message>
+        <message>
+            <source>grid</source>
+            <translation>格子配列</translation>
+        </message>
+        <message>
+            <source>bolt circle</source>
+            <translation>円周配列 (PCD)</translation>
+        </message>
+        <message>
+            <source>arc</source>
+            <translation>円弧配列</translation>
+        </message>
+        <message>
+            <source>drilled</source>
+            <translation>ドリル穴</translation>
+        </message>
+        <message>
+            <source>tapped</source>
+            <translation>タップ穴</translation>
+        </message>
+        <message>
+            <source>reamed</source>
+            <translation>リーマ穴</translation>
+        </message>
+        <message>
+            <source>bored</source>
+            <translation>中ぐり穴</translation>
+        </message>
+        <message>
             <source>the library has no tools</source>
             <translation>ライブラリに工具がありません</translation>
         </message>

@@ -1651,6 +1651,42 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>分多次切入</translation>
         </message>
         <message>
+            <source>single</source>
+            <translation>单孔</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直线排列</translation>
+        </message>
+        <message>
+            <source>grid</source>
+            <translation>网格排列</translation>
+        </message>
+        <message>
+            <source>bolt circle</source>
+            <translation>圆周分布 (PCD)</translation>
+        </message>
+        <message>
+            <source>arc</source>
+            <translation>圆弧排列</translation>
+        </message>
+        <message>
+            <source>drilled</source>
+            <translation>钻孔</translation>
+        </message>
+        <message>
+            <source>tapped</source>
+            <translation>螺纹孔</translation>
+        </message>
+        <message>
+            <source>reamed</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>bored</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
             <source>the library has no tools</source>
             <translation>刀具库中没有刀具</translation>
         </message>
