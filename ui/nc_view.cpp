@@ -13,8 +13,6 @@
 #include <QTextBlock>
 #include <QVBoxLayout>
 
-#include <algorithm>
-
 namespace taiwa::ui {
 
 NcView::NcView(QWidget* parent)
@@ -30,39 +28,22 @@ NcView::NcView(QWidget* parent)
     new NcHighlighter(text_->document());
 
     auto* top = new QHBoxLayout;
-    // The label and the dialect above the program, its block count under
-    // it: each whole in every language at 1366 px (test_gui_languages).
+    // The label, the dialect and the block count, each whole in every
+    // language at 1366 px (test_gui_languages): the translations are short.
     auto* label = new QLabel(tr("&NC program, dialect:"), this);
     label->setObjectName("nc.label");
     summary_->setObjectName("nc.blocks");
-    summary_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     label->setBuddy(dialect_);
     top->addWidget(label);
     top->addWidget(dialect_);
-    top->addStretch(1);
+    top->addWidget(summary_, 1);
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addLayout(top);
     box->addWidget(text_, 1);
-    box->addWidget(summary_);
 
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
-}
-
-QSize NcView::minimumSizeHint() const
-{
-    QSize size = QWidget::minimumSizeHint();
-    const int count = summary_->fontMetrics().horizontalAdvance(tr("%n block(s)", "", 99999));
-    size.setWidth(std::max(size.width(), layout()->itemAt(0)->minimumSize().width() + layout()->spacing() + count));
-    return size;
-}
-
-QSize NcView::sizeHint() const
-{
-    QSize size = QWidget::sizeHint();
-    size.setWidth(std::max({size.width(), minimumSizeHint().width(), fontMetrics().averageCharWidth() * 48}));
-    return size;
 }
 
 QString lastChosenDialect()

@@ -47,12 +47,6 @@ public:
     BlockSource currentSource() const;
     // The line drawn as the current block (a band across the view), -1 none.
     int highlightedLine() const { return highlightedLine_; }
-    // As wide as the heading and a block count beside it, though the count
-    // sits under the program: the heading has room to spare in every
-    // language, and the verification's summary below keeps its width.
-    QSize minimumSizeHint() const override;
-    // Wider: room for the verification's summary under it too.
-    QSize sizeHint() const override;
 
 signals:
     void dialectChanged(const QString& dialect);
