@@ -1,17 +1,28 @@
 // The station in Japanese and Chinese beyond its own texts: the core's
 // messages (found from their English by their templates, translated, their
 // arguments put back), tool names and kinds, the module drawings' labels and
-// Qt's standard buttons; a check message typed into being in a Japanese form.
+// Qt's standard buttons; a check message typed into being in a Japanese form;
+// the 3-D view's axes note, a refused job file, a broken tool library and the
+// NC panel's heading of a Japanese station.
 #include "check/messages.h"
+#include "io/job_io.h"
+#include "modules/probe/probe_fit.h"
 #include "support/gui_fields.h"
 #include "support/support.h"
 #include "ui/core_messages.h"
 #include "ui/dxf_import_dialog.h"
 #include "ui/figure_panel.h"
+#include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/language.h"
+#include "ui/nc_view.h"
+#include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
 #include "ui/station_window.h"
+#include "ui/tool_library_dialog.h"
+#include "viz/scene.h"
 
+#include <QApplication>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
@@ -19,9 +30,12 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
+#include <QTimer>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTranslator>
 #include <QtTest>
@@ -263,6 +277,111 @@ class TestGuiLanguages : public QObject {
         QLabel* message = test::GuiFields::label(w, "m4.depth");
         QTRY_VERIFY(message->isVisible());
         QCOMPARE(message->text(), QString("深さが 0 mm です。0 より大きくしてください (上面から下へ測ります)"));
+    }
+
+    // The 3-D view's scale note in the station's language; `taiwa render`'s stays English.
+    void axesNoteInJapanese()
+    {
+        speak("ja");
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // The preview's scene where there is OpenGL; a scene of the station's plan everywhere.
+        if (w.preview())
+            QTRY_COMPARE(QString::fromStdString(w.preview()->scene().scaleNote()), QString("軸 50 mm"));
+        QTRY_VERIFY(w.planRunner()->fullPlan());
+        viz::Scene scene;
+        scene.setPlan(w.planRunner()->fullPlan());
+        QCOMPARE(QString::fromStdString(scene.scaleNote()), QString("軸 50 mm"));
+    }
+
+    // A job file the reader refuses, opened in a Japanese station: the
+    // message box lists each problem in Japanese, with where it is.
+    void jobReadErrorInJapanese()
+    {
+        speak("ja");
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QString shown;
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &w, [&] {
+            if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+                shown = box->text();
+                box->close();
+            }
+        });
+        poll.start(20);
+        qunsetenv("TAIWA_NO_PROMPTS");
+        const bool opened = w.fileActions()->openPath(test::sourcePath("tests/data/bad-jobs/bad-corners.taiwa"));
+        qputenv("TAIWA_NO_PROMPTS", "1");
+        QVERIFY(!opened);
+        QVERIFY2(shown.contains("bad-corners.taiwa: ユニット 1 (M4) corners: ") &&
+                     shown.contains("bad-corners.taiwa: ユニット 5 (M4) corners[1]: "),
+                 qPrintable(shown));
+        QVERIFY2(!shown.contains("unit ") && !shown.contains("needs exactly"), qPrintable(shown));
+    }
+
+    // A tool library that is not one (an empty file): the dialog says why in Japanese.
+    void toolLibraryErrorInJapanese()
+    {
+        speak("ja");
+        const QString path = dir_.filePath("empty-tools.sqlite");
+        test::writeFile(path, "");
+        const QByteArray before = qgetenv("TAIWA_TOOL_DB");
+        qputenv("TAIWA_TOOL_DB", path.toUtf8());
+        ToolLibraryDialog d;
+        qputenv("TAIWA_TOOL_DB", before);
+        QCOMPARE(d.status(), QString("工具ライブラリを読めません: %1 は空で、工具ライブラリではありません "
+                                     "(削除すると既定のライブラリが作成されます)").arg(path));
+    }
+
+    // The core's refusals of a probing fit and of a file it cannot write,
+    // as the station shows them (the unit's field, the export's and save's
+    // message boxes): in Japanese, their numbers and paths kept.
+    void probingAndWriteErrorsInJapanese()
+    {
+        speak("ja");
+        const auto fit = probe::fitCircle({{{0, 0}, probe::Side::None}, {{10, 0}, probe::Side::None}}, {});
+        QVERIFY(std::holds_alternative<probe::FitProblem>(fit));
+        QCOMPARE(coreMessage(std::get<probe::FitProblem>(fit).message),
+                 QString("円形のワークには 3 点以上のタッチ点が必要ですが、2 点です"));
+        const auto rect = probe::fitRectangle({{{0, 0}, probe::Side::XMinus}, {{10, 0}, probe::Side::XPlus},
+                                               {{5, -5}, probe::Side::YMinus}},
+                                              {});
+        QCOMPARE(coreMessage(std::get<probe::FitProblem>(rect).message),
+                 QString("長方形のワークには各面にタッチが必要ですが、+Y にありません"));
+        const QString path = dir_.filePath("no-such-folder/job.taiwa");
+        const auto written = writeFileAtomically(path.toStdString(), "{}");
+        QVERIFY(!written);
+        QCOMPARE(coreMessage(written.error()),
+                 QString("%1 にファイルを作成できません: No such file or directory").arg(dir_.filePath("no-such-folder")));
+    }
+
+    // The NC panel's heading at 1366 x 768 in Japanese and Chinese: the
+    // label, the dialect and the block count each whole (their translations
+    // are short; the English heading is as it was).
+    void ncHeadingFitsAt1366()
+    {
+        for (const char* language : {"ja", "zh"}) {
+            speak(language);
+            QSettings().remove("station"); // the splits as a new station makes them
+            StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+            w.resize(1366, 720);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            auto* label = w.ncView()->findChild<QLabel*>("nc.label");
+            auto* blocks = w.ncView()->findChild<QLabel*>("nc.blocks");
+            QVERIFY(label && blocks);
+            QTRY_VERIFY(!blocks->text().isEmpty());
+            QTest::qWait(50); // the layout after the count's text
+            for (QLabel* l : {label, blocks})
+                QVERIFY2(l->fontMetrics().horizontalAdvance(l->text().remove('&')) <= l->contentsRect().width(),
+                         qPrintable(QString("%1: '%2' is %3 px wide in %4 px")
+                                        .arg(language, l->text())
+                                        .arg(l->fontMetrics().horizontalAdvance(l->text().remove('&')))
+                                        .arg(l->contentsRect().width())));
+        }
     }
 };
 

@@ -4,6 +4,7 @@
 #include "ui/core_messages.h"
 
 #include "check/messages.h"
+#include "ui/core_texts.h"
 #include "ui/language.h"
 
 #include <QCoreApplication>
@@ -183,6 +184,40 @@ QString coreMessage(const std::string& english)
     if (messageSources().isEmpty())
         return text;
     return translateMessage(text, messageSources(), translateWord);
+}
+
+QString diagnosticText(const std::string& job, const Diagnostic& d)
+{
+    if (messageSources().isEmpty())
+        return QString::fromStdString(format(job, d));
+    // As format() does: control characters typed into a name cannot forge lines.
+    const auto quoted = [](const QString& s) {
+        QString out;
+        for (const QChar c : s) {
+            if (c == '\n') out += QLatin1String("\\n");
+            else if (c == '\t') out += QLatin1String("\\t");
+            else if (c == '\r') out += QLatin1String("\\r");
+            else if (c.unicode() < 0x20 || c.unicode() == 0x7f)
+                out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+            else out += c;
+        }
+        return out;
+    };
+    const QString file = quoted(QString::fromStdString(job));
+    const QString message = quoted(coreMessage(d.message));
+    if (!d.unit && d.field.empty())
+        return QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: %2").arg(file, message);
+    const QString field = d.field.empty() ? QCoreApplication::translate("taiwa::ui::Diagnostic", "unit")
+                                          : quoted(fieldText(d.field));
+    const bool warning = d.severity == Severity::Warning;
+    if (!d.unit)
+        return (warning ? QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: job %2: warning: %3")
+                        : QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: job %2: %3"))
+            .arg(file, field, message);
+    const QString module = quoted(QString::fromStdString(d.module));
+    return (warning ? QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: unit %2 (%3) %4: warning: %5")
+                    : QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: unit %2 (%3) %4: %5"))
+        .arg(file, QString::number(*d.unit), module, field, message);
 }
 
 QString toolName(const Tool& tool)

@@ -7,6 +7,7 @@
 // messages. docs/station.md, "Languages", explains the design.
 #pragma once
 
+#include "model/diagnostic.h"
 #include "model/tool.h"
 
 #include <QByteArray>
@@ -21,6 +22,10 @@ namespace taiwa::ui {
 // The message in the station's language; as it is when the station speaks
 // English or no template of the catalogue made it.
 QString coreMessage(const std::string& english);
+// A diagnostic as `taiwa check` prints it ("JOB: unit N (MODULE) field:
+// message", model/diagnostic.h format()), in the station's language: its
+// words, field and message translated; byte for byte format() in English.
+QString diagnosticText(const std::string& job, const Diagnostic& d);
 // A tool as the messages name it ("T12 (フラットエンドミル Ø6 mm)") and a tool kind alone.
 QString toolName(const Tool& tool);
 QString toolKind(ToolType type);

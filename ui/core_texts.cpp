@@ -1,8 +1,13 @@
 // The core's words in the station's language (core_texts.h).
 #include "ui/core_texts.h"
 
-#include <QCoreApplication>
+#include "ui/language.h"
 
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+#include <algorithm>
 #include <array>
 
 namespace taiwa::ui {
@@ -62,6 +67,38 @@ constexpr std::array kSources{
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "finishing only"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "full depth at once"),
     QT_TRANSLATE_NOOP("taiwa::CoreTexts", "several incisions"),
+    // The hole pattern's patterns and kinds of hole (modules/holes/holes_kind.cpp).
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "single"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "line"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "grid"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "bolt circle"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "arc"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "drilled"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "tapped"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "reamed"),
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "bored"),
+    // The plan runner's note when the tool library is empty (ui/plan_runner.cpp).
+    QT_TRANSLATE_NOOP("taiwa::CoreTexts", "the library has no tools"),
+};
+
+// The words of a diagnostic's field key ("stock.height", "figure[3]"), as
+// the job file spells them (core/job/job_file_read.cpp, job/job_check.cpp).
+constexpr const char* kFieldContext = "taiwa::Field";
+[[maybe_unused]] constexpr std::array kFieldWords{
+    QT_TRANSLATE_NOOP("taiwa::Field", "figure"),     QT_TRANSLATE_NOOP("taiwa::Field", "workOffset"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "stock"),      QT_TRANSLATE_NOOP("taiwa::Field", "clamping"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "technology"), QT_TRANSLATE_NOOP("taiwa::Field", "name"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "material"),   QT_TRANSLATE_NOOP("taiwa::Field", "machine"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "dialect"),    QT_TRANSLATE_NOOP("taiwa::Field", "lengthUnit"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "format"),     QT_TRANSLATE_NOOP("taiwa::Field", "version"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "units"),      QT_TRANSLATE_NOOP("taiwa::Field", "latheRoughing"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "height"),     QT_TRANSLATE_NOOP("taiwa::Field", "width"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "length"),     QT_TRANSLATE_NOOP("taiwa::Field", "diameter"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "face"),       QT_TRANSLATE_NOOP("taiwa::Field", "bore"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "shape"),      QT_TRANSLATE_NOOP("taiwa::Field", "fixture"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "grip"),       QT_TRANSLATE_NOOP("taiwa::Field", "touches"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "cutting"),    QT_TRANSLATE_NOOP("taiwa::Field", "module"),
+    QT_TRANSLATE_NOOP("taiwa::Field", "unit"),
 };
 
 QString translated(const std::string& text) { return QCoreApplication::translate(kContext, text.c_str()); }
@@ -78,6 +115,41 @@ QString stepLabel(const Step& step)
 }
 
 QString codeMeaning(std::string_view meaning) { return translated(std::string(meaning)); }
+
+QString fieldText(const std::string& field)
+{
+    // Each part of "stock.height" or "figure[3]" translated, its index and the dots kept.
+    static const QRegularExpression part(QStringLiteral("[A-Za-z]+"));
+    const QString key = QString::fromStdString(field);
+    QString out;
+    qsizetype at = 0;
+    for (auto it = part.globalMatch(key); it.hasNext();) {
+        const auto m = it.next();
+        out += key.mid(at, m.capturedStart() - at) +
+               QCoreApplication::translate(kFieldContext, m.captured().toUtf8().constData());
+        at = m.capturedEnd();
+    }
+    return out + key.mid(at);
+}
+
+QString axesNoteFont()
+{
+    const QString note = QCoreApplication::translate("taiwa::CoreTexts", "axes %1 mm");
+    if (std::all_of(note.begin(), note.end(), [](QChar c) { return c.unicode() < 0x80; })) return {};
+    const QStringList japanese{"/usr/share/fonts/opentype/ipafont-gothic/ipag.ttf",
+                               "/usr/share/fonts/truetype/fonts-japanese-gothic.ttf"};
+    QStringList files = installedLanguage() == "ja" ? japanese : QStringList();
+    files << "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc" << "/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc";
+    for (const QString& f : files)
+        if (QFileInfo::exists(f)) return f;
+    return {};
+}
+
+QString axesNote(int mm)
+{
+    if (axesNoteFont().isEmpty()) return QStringLiteral("axes %1 mm").arg(mm);  // no font to write it with
+    return QCoreApplication::translate("taiwa::CoreTexts", "axes %1 mm").arg(mm);
+}
 
 QStringList coreTextSources()
 {

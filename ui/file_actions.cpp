@@ -77,7 +77,7 @@ bool FileActions::importStepPath(const QString& path)
 {
     auto job = latheJobFromStep(path.toStdString(), "steel-s45c");
     if (!job) {
-        const QString why = QString::fromStdString(job.error());
+        const QString why = coreMessage(job.error());
         if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
         else QMessageBox::warning(window_, tr("Cannot import"), why);
         emit message(why);
@@ -95,10 +95,7 @@ bool FileActions::openPath(const QString& path)
     const JobReadResult r = readJobFile(path.toStdString());
     if (!r.job) {
         QString why;
-        for (Diagnostic d : r.diagnostics) {
-            d.message = coreMessage(d.message).toStdString();
-            why += QString::fromStdString(format(path.toStdString(), d)) + "\n";
-        }
+        for (const Diagnostic& d : r.diagnostics) why += diagnosticText(path.toStdString(), d) + "\n";
         if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
         else QMessageBox::warning(window_, tr("Cannot open job"), why);
         return false;
@@ -135,7 +132,7 @@ bool FileActions::saveTo(const QString& path)
                                                   QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
         if (answer != QMessageBox::Save) return false;
     }
-    const QString err = doc_->saveTo(path);
+    const QString err = coreMessage(doc_->saveTo(path).toStdString());
     if (!err.isEmpty()) {
         if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(err));
         else QMessageBox::warning(window_, tr("Cannot save job"), err);
@@ -172,7 +169,7 @@ void FileActions::exportJob()
     eo.dialect = dialect.toStdString();
     eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
     const auto written = exportPlan(*plan, dir.toStdString(), exportStem(doc_->path()).toStdString(), eo);
-    if (!written) QMessageBox::warning(window_, tr("Export failed"), QString::fromStdString(written.error()));
+    if (!written) QMessageBox::warning(window_, tr("Export failed"), coreMessage(written.error()));
     else emit message(tr("Exported %1 files into %2").arg(written->size()).arg(dir));
 }
 

@@ -28,7 +28,11 @@ NcView::NcView(QWidget* parent)
     highlighter_ = new NcHighlighter(text_);
 
     auto* top = new QHBoxLayout;
+    // The label, the dialect and the block count, each whole in every
+    // language at 1366 px (test_gui_languages): the translations are short.
     auto* label = new QLabel(tr("&NC program, dialect:"), this);
+    label->setObjectName("nc.label");
+    summary_->setObjectName("nc.blocks");
     label->setBuddy(dialect_);
     top->addWidget(label);
     top->addWidget(dialect_);

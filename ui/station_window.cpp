@@ -2,6 +2,8 @@
 // document, plan runner, forms, panels and file actions.
 #include "ui/station_window.h"
 #include "ui/core_messages.h"
+#include "ui/core_texts.h"
+#include "viz/scene.h"
 
 #include "machine/machine.h"
 
@@ -64,6 +66,7 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
       forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
       verify_(new VerificationPanel)
 {
+    viz::Scene::setScaleNoteText([](int mm) { return axesNote(mm).toStdString(); }, axesNoteFont().toStdString());
     for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
     auto* main = new QSplitter(Qt::Horizontal);
     main->addWidget(buildLeft());
@@ -86,7 +89,8 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     if (!main->restoreState(settings.value("station/split").toByteArray()))
         main->setSizes({width() * 22 / 100, width() * 24 / 100, width() * 54 / 100});
     if (!runner_->libraryError().isEmpty())
-        statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)").arg(runner_->libraryError()));
+        statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)")
+                                     .arg(coreMessage(runner_->libraryError().toStdString())));
 
     if (!files_->offerRecovery(jobPath) && !(jobPath.isEmpty() ? files_->newJob() : files_->openPath(jobPath)))
         files_->newJob();
@@ -583,9 +587,9 @@ void StationWindow::showStale()
     if (stale)
         stale_->setText(tr("Not up to date: the job has input errors. The 3-D view and the NC program show the last "
                            "valid job. First error: %1")
-                            .arg(QString::fromStdString(format(doc_->path().isEmpty() ? std::string("job")
-                                                                                      : QFileInfo(doc_->path()).fileName().toStdString(),
-                                                               *first))));
+                            .arg(diagnosticText(doc_->path().isEmpty() ? tr("job").toStdString()
+                                                                       : QFileInfo(doc_->path()).fileName().toStdString(),
+                                                *first)));
 }
 
 void StationWindow::showDiagnostics()
@@ -601,12 +605,12 @@ void StationWindow::showDiagnostics()
     QStringList unitText;
     if (UnitForm* f = currentForm())
         for (const Diagnostic& d : f->showDiagnostics(ofUnit))
-            unitText << (d.field.empty() ? QString() : QString::fromStdString(d.field + ": ")) + coreMessage(d.message);
+            unitText << (d.field.empty() ? QString() : fieldText(d.field) + ": ") + coreMessage(d.message);
     unitMessages_->setText(unitText.join("\n"));
     jobProps_->showDiagnostics(jobLevel);
     QStringList status;
     for (const Diagnostic& d : jobLevel)
-        status << QString::fromStdString(d.field.empty() ? "" : d.field + ": ") + coreMessage(d.message);
+        status << (d.field.empty() ? QString() : fieldText(d.field) + ": ") + coreMessage(d.message);
     if (otherUnits > 0) status << tr("%n problem(s) in other units", "", otherUnits);
     if (status.isEmpty()) statusBar()->clearMessage();
     else statusBar()->showMessage(status.join("  •  "));

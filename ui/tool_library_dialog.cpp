@@ -115,7 +115,7 @@ void ToolLibraryDialog::load(bool keepStatus)
     tools_ = tools ? *tools : std::vector<Tool>{};
     if (!keepStatus || !tools) {
         status_->setText(tools ? tr("%1 — %n tool(s)", "", static_cast<int>(tools_.size())).arg(QString::fromStdString(path))
-                               : tr("Cannot read the tool library: %1").arg(QString::fromStdString(tools.error())));
+                               : tr("Cannot read the tool library: %1").arg(coreMessage(tools.error())));
         status_->setStyleSheet(tools ? QString() : QStringLiteral("color: #a00000;"));
     }
     reset_->setEnabled(tools.ok());
@@ -167,16 +167,16 @@ bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
 {
     auto lib = ToolLibrary::open(defaultToolLibraryPath());
     if (!lib) {
-        fail(tr("Cannot open the tool library: %1").arg(QString::fromStdString(lib.error())));
+        fail(tr("Cannot open the tool library: %1").arg(coreMessage(lib.error())));
         return false;
     }
     if (tool) {
         if (const auto saved = lib->save(*tool); !saved) {
-            fail(tr("Cannot save the tool: %1").arg(QString::fromStdString(saved.error())));
+            fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
             return false;
         }
     } else if (const auto removed = lib->remove(id); !removed) {
-        fail(tr("Cannot retire the tool: %1").arg(QString::fromStdString(removed.error())));
+        fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
         return false;
     }
     changed_ = true;

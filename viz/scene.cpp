@@ -56,7 +56,31 @@ double segmentDistance(double px, double py, const double a[2], const double b[2
     return std::hypot(px - a[0] - t * dx, py - a[1] - t * dy);
 }
 
+std::function<std::string(int)>& scaleNoteText()
+{
+    static std::function<std::string(int)> text = [](int mm) { return "axes " + std::to_string(mm) + " mm"; };
+    return text;
+}
+
+std::string& scaleNoteFont()
+{
+    static std::string file;  // empty: VTK's own font
+    return file;
+}
+
 }  // namespace
+
+void Scene::setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile)
+{
+    scaleNoteText() = std::move(text);
+    scaleNoteFont() = std::move(fontFile);
+}
+
+std::string Scene::scaleNote() const
+{
+    const char* text = scaleNote_ ? scaleNote_->GetInput() : nullptr;
+    return text ? text : "";
+}
 
 Scene::Scene() : renderer_(vtkSmartPointer<vtkRenderer>::New())
 {
@@ -170,8 +194,12 @@ void Scene::makeAxes(double axisLength)
     axisLength_ = axisLength;
     axes_ = labelledAxes(axisLength, 14);
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
-    scaleNote_->SetInput(("axes " + std::to_string(static_cast<int>(axisLength)) + " mm").c_str());
+    scaleNote_->SetInput(scaleNoteText()(static_cast<int>(axisLength)).c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
+    if (!scaleNoteFont().empty()) {
+        scaleNote_->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        scaleNote_->GetTextProperty()->SetFontFile(scaleNoteFont().c_str());
+    }
     scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();

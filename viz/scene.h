@@ -19,9 +19,11 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace taiwa::sim {
@@ -145,6 +147,13 @@ public:
     // The move whose drawn path passes nearest to pixel (x, y) within
     // `tolerance` pixels, among the steps shown emphasised; nothing if none.
     std::optional<MoveRef> pickMove(double x, double y, int width, int height, double tolerance = 6.0) const;
+
+    // The axes' scale note for axes of `mm` millimetres, in its caller's
+    // language: "axes 50 mm" (taiwa render's pictures) unless the station
+    // gives its translation, written with `fontFile` (a TrueType font with
+    // its glyphs, "軸") when given; for every scene made from then on. The note shown.
+    static void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
+    std::string scaleNote() const;
 
 private:
     struct StepActors {

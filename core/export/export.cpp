@@ -4,12 +4,14 @@
 
 #include "export/sheet_pdf.h"
 #include "io/job_io.h"
+#include "model/translate_noop.h"
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
 #include "post/probe_program.h"
 #include "post/post.h"
 #include "sheet/sheet.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -182,6 +184,12 @@ nlohmann::ordered_json turnedJson(const TurnedPart& part, LengthUnit u)
     return j;
 }
 
+// An export that failed after writing began: why, and that the folder is as it was.
+std::string nothingChanged(const std::string& why, const std::string& outDir)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was changed in {}"), why, outDir);
+}
+
 }  // namespace
 
 std::string stepsJson(const Plan& plan)
@@ -207,20 +215,20 @@ std::string stepsJson(const Plan& plan)
 Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string& outDir, const std::string& stem,
                                             const ExportOptions& options)
 {
-    if (!plan.ok()) return Failure{"the job did not pass input processing; nothing was written"};
+    if (!plan.ok()) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "the job did not pass input processing; nothing was written")};
     if (auto why = workOffsetProblem(options.dialect, plan.job.workOffset))
-        return Failure{why->message + "; nothing was written"};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), why->message)};
     const post::Dialect* dialect = post::findDialect(options.dialect);
-    if (!dialect) return Failure{"unknown dialect '" + options.dialect + "'; nothing was written"};
+    if (!dialect) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; nothing was written"), options.dialect)};
     if (auto why = plan.mmJob.bar ? post::cannotPost(*dialect, post::Task::LatheTape)
                    : !plan.setups.empty() ? post::cannotPost(*dialect, post::Task::ProbingPrograms)
                                           : std::nullopt)
-        return Failure{*why + "; nothing was written"};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), *why)};
     // The tape's file: STEM.nc, or the control's own kind (STEM.h for HEIDENHAIN).
     const std::string tape = "." + dialect->fileExtension;
     std::error_code ec;
     std::filesystem::create_directories(outDir, ec);
-    if (ec) return Failure{"cannot create folder " + outDir + ": " + ec.message()};
+    if (ec) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create folder {}: {}"), outDir, ec.message())};
     const LengthUnit units = options.units.value_or(plan.job.lengthUnit);
 
     SheetOptions sheet;
@@ -240,10 +248,10 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     auto pdf = drawing.get();
-    if (!pdf) return Failure{pdf.error() + "; nothing was changed in " + outDir};
+    if (!pdf) return Failure{nothingChanged(pdf.error(), outDir)};
 
     auto set = FileSet::open(outDir, stem);
-    if (!set) return Failure{set.error() + "; nothing was changed in " + outDir};
+    if (!set) return Failure{nothingChanged(set.error(), outDir)};
     std::vector<std::pair<std::string, std::string>> files = {
         {tape, program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
@@ -267,9 +275,9 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     }
     for (const auto& [suffix, bytes] : files)
         if (auto written = set->add(stem + suffix, bytes); !written)
-            return Failure{written.error() + "; nothing was changed in " + outDir};
+            return Failure{nothingChanged(written.error(), outDir)};
     auto written = set->commit();
-    if (!written) return Failure{written.error() + "; nothing was changed in " + outDir};
+    if (!written) return Failure{nothingChanged(written.error(), outDir)};
     return written;
 }
 

@@ -1,6 +1,9 @@
 // PDF documents joined into one with qpdf (export/pdf_merge.h).
 #include "export/pdf_merge.h"
 
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
 #include <qpdf/Buffer.hh>
 #include <qpdf/QPDF.hh>
 #include <qpdf/QPDFPageDocumentHelper.hh>
@@ -13,7 +16,7 @@ namespace taiwa {
 
 Result<std::string> joinPdfs(const std::vector<std::string>& parts)
 {
-    if (parts.empty()) return Failure{"no PDF to join"};
+    if (parts.empty()) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "no PDF to join")};
     if (parts.size() == 1) return parts.front();
     try {
         // Every part stays open until the whole is written: the pages
@@ -35,7 +38,7 @@ Result<std::string> joinPdfs(const std::vector<std::string>& parts)
         const std::shared_ptr<Buffer> out = writer.getBufferSharedPointer();
         return std::string(reinterpret_cast<const char*>(out->getBuffer()), out->getSize());
     } catch (const std::exception& e) {
-        return Failure{std::string("cannot join the sheet's PDF parts: ") + e.what()};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot join the sheet's PDF parts: {}"), e.what())};
     }
 }
 

@@ -10,6 +10,7 @@
 #include "export/page_painter.h"
 #include "export/pdf_merge.h"
 #include "io/job_io.h"
+#include "model/translate_noop.h"
 
 #include "sheet/sheet_content.h"
 
@@ -52,9 +53,9 @@ public:
     PagePainter* page() { return page_.get(); }
     Result<std::string> finish()
     {
-        if (!page_) return Failure{"cannot paint the instruction sheet's PDF"};
+        if (!page_) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot paint the instruction sheet's PDF")};
         page_->finish();
-        if (!painter_.end() || bytes_.data().isEmpty()) return Failure{"cannot paint the instruction sheet's PDF"};
+        if (!painter_.end() || bytes_.data().isEmpty()) return Failure{TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot paint the instruction sheet's PDF")};
         return std::string(bytes_.data().constData(), static_cast<std::size_t>(bytes_.data().size()));
     }
 

@@ -5,6 +5,9 @@
 #include "io/job_io.h"
 
 #include "io/job_messages.h"
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
 
 #include <atomic>
 #include <cerrno>
@@ -36,6 +39,12 @@ io::TextReadResult refused(std::string message)
 }
 
 std::string systemError(int error) { return std::generic_category().message(error); }
+
+// "cannot write PATH: why", of every write that failed.
+std::string cannotWrite(const std::string& path, int error)
+{
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot write {}: {}"), path, systemError(error));
+}
 
 // Writes all of `text` to `fd`, retrying short writes; false with errno set on failure.
 bool writeAll(int fd, std::string_view text)
@@ -91,7 +100,7 @@ io::TextReadResult io::readTextFile(const std::string& path, std::size_t maxByte
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     if (in.bad()) return refused(msg::io::fileUnreadable(systemError(errno)));
     text.resize(static_cast<std::size_t>(in.gcount()));
-    if (text.size() > size) return refused(msg::io::fileUnreadable("the file changed while it was read"));
+    if (text.size() > size) return refused(msg::io::fileUnreadable(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file changed while it was read")));
     return {std::move(text), {}};
 }
 
@@ -103,7 +112,7 @@ Result<std::string> writeTemporary(const std::filesystem::path& target, std::str
 {
     std::string temp;
     const int fd = createTemporary(target, temp);
-    if (fd < 0) return Failure{"cannot create a file in " + target.parent_path().string() + ": " + systemError(errno)};
+    if (fd < 0) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create a file in {}: {}"), target.parent_path().string(), systemError(errno))};
     int error = 0;
     struct stat old {};
     const bool replacing = ::stat(target.c_str(), &old) == 0;
@@ -111,7 +120,7 @@ Result<std::string> writeTemporary(const std::filesystem::path& target, std::str
     if (::close(fd) != 0 && error == 0) error = errno;
     if (error != 0) {
         ::unlink(temp.c_str());
-        return Failure{"cannot write " + target.string() + ": " + systemError(error)};
+        return Failure{cannotWrite(target.string(), error)};
     }
     return temp;
 }
@@ -153,7 +162,7 @@ Result<void> writeFileAtomically(const std::string& path, std::string_view text)
     if (::rename(temp->c_str(), target.c_str()) != 0) {
         const int error = errno;
         ::unlink(temp->c_str());
-        return Failure{"cannot write " + target.string() + ": " + systemError(error)};
+        return Failure{cannotWrite(target.string(), error)};
     }
     syncFolder(target.parent_path());
     return {};
@@ -182,12 +191,12 @@ Result<FileSet> FileSet::open(const std::string& folder, const std::string& stem
     const std::filesystem::path dir = std::filesystem::absolute(folder);
     const std::string lockPath = (dir / ("." + stem + ".lock")).string();
     const int fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0) return Failure{"cannot create the lock file " + lockPath + ": " + systemError(errno)};
+    if (fd < 0) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create the lock file {}: {}"), lockPath, systemError(errno))};
     while (::flock(fd, LOCK_EX) != 0) {
         if (errno == EINTR) continue;
         const int error = errno;
         ::close(fd);
-        return Failure{"cannot lock " + lockPath + ": " + systemError(error)};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot lock {}: {}"), lockPath, systemError(error))};
     }
     removeStaleTemporaries(dir, stem);
     return FileSet(dir.string(), stem, fd);
@@ -228,7 +237,7 @@ Result<std::vector<std::string>> FileSet::commit()
             backups[k].clear();
         }
         dropBackups();
-        return Failure{"cannot write " + staged_[i].target + ": " + systemError(error)};
+        return Failure{cannotWrite(staged_[i].target, error)};
     }
     staged_.clear();
     dropBackups();

@@ -72,7 +72,7 @@ std::map<std::string, CuttingOverride> readCutting(const ObjectFields& unit)
         CuttingOverride o;
         o.speed = c.optionalNumber("S");
         o.feed = c.optionalNumber("F");
-        if (o.empty()) unit.error("cutting." + msg::io::fieldKey(key), "give S, F or both");
+        if (o.empty()) unit.error("cutting." + msg::io::fieldKey(key), TAIWA_TRANSLATE_NOOP("taiwa::msg", "give S, F or both"));
         else out[key] = o;
     }
     return out;
@@ -161,7 +161,7 @@ std::string readFigure(const ObjectFields& job)
         }
         const auto& l = line.get_ref<const std::string&>();
         if (l.find('\n') != std::string::npos || l.find('\r') != std::string::npos) {
-            job.error("figure[" + std::to_string(i) + "]", "a line of the figure holds a line break; give each line as its own string");
+            job.error("figure[" + std::to_string(i) + "]", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line of the figure holds a line break; give each line as its own string"));
             continue;
         }
         text += l;

@@ -3,6 +3,7 @@
 #include "post/dialect.h"
 
 #include "post/post.h"
+#include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
@@ -51,7 +52,7 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
     }
     const auto refuse = [&](const std::string& why) {
         return std::invalid_argument(
-            fmt::format("work offset '{}' cannot be posted for {}: {}; {} offers {}", requested, d.name, why, d.name,
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "work offset '{}' cannot be posted for {}: {}; {} offers {}"), requested, d.name, why, d.name,
                         offers));
     };
 
@@ -60,14 +61,15 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
     std::smatch m;
     if (std::regex_match(code, plain)) {
         if (code[2] - '4' < d.plainWorkOffsets) return code;
-        throw refuse(fmt::format("{} has no {}", d.name, code));
+        throw refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no {}"), d.name, code));
     }
     if (std::regex_match(code, m, extended)) {
         if (d.extendedWorkOffsets == 0)
-            throw refuse(fmt::format("{} has no {}", d.name,
-                                     m[1].str() == "154" ? "G154 P (Haas' extended work offsets)" : "G54.1 P (FANUC's extended work offsets)"));
+            throw refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no {}"), d.name,
+                                     m[1].str() == "154" ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "G154 P (Haas' extended work offsets)")
+                                                         : TAIWA_TRANSLATE_NOOP("taiwa::msg", "G54.1 P (FANUC's extended work offsets)")));
         const int p = std::stoi(m[2].str());
-        if (p < 1 || p > d.extendedWorkOffsets) throw refuse(fmt::format("there is no {}", extendedWords(p)));
+        if (p < 1 || p > d.extendedWorkOffsets) throw refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "there is no {}"), extendedWords(p)));
         return extendedWords(p);
     }
     if (std::regex_match(code, other)) {
@@ -79,9 +81,9 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
                 if (g >= range->first && g <= range->second) return code;
             }
         }
-        throw refuse(fmt::format("{} has no {}", d.name, code));
+        throw refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no {}"), d.name, code));
     }
-    throw refuse("not a work offset");
+    throw refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a work offset"));
 }
 
 namespace {
@@ -102,13 +104,13 @@ std::string whyNoProbing(Syntax syntax)
 {
     switch (syntax) {
     case Syntax::Sinumerik:
-        return "the SINUMERIK manual pages at hand do not say which probe edge MEAS=1 and MEAS=-1 take, how "
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "the SINUMERIK manual pages at hand do not say which probe edge MEAS=1 and MEAS=-1 take, how "
                "$AC_MEA reports a touch not made, nor that STOPRE must come before $AA_MW is read; "
-               "see docs/probing.md";
+               "see docs/probing.md");
     case Syntax::Klartext:
-        return "the TNC manual pages at hand do not say what TCH PROBE 0 does when nothing is touched, and the "
+        return TAIWA_TRANSLATE_NOOP("taiwa::msg", "the TNC manual pages at hand do not say what TCH PROBE 0 does when nothing is touched, and the "
                "one way found to write a preset from a program, FN 17: SYSWRITE, is locked behind the machine "
-               "maker's code number; see docs/probing.md";
+               "maker's code number; see docs/probing.md");
     case Syntax::Iso: break;
     }
     return "see docs/probing.md";
@@ -123,8 +125,8 @@ std::optional<std::string> cannotPost(const Dialect& d, Task task)
     for (const Dialect& other : dialectLibrary())
         if (posts(other, task)) can += (can.empty() ? "" : ", ") + other.name;
     if (task == Task::LatheTape)
-        return fmt::format("the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can", d.name, can);
-    return fmt::format("the {} dialect writes no probing unit's programs; {} can ({})", d.name, can,
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can"), d.name, can);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no probing unit's programs; {} can ({})"), d.name, can,
                        whyNoProbing(d.syntax));
 }
 

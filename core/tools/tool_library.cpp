@@ -3,6 +3,7 @@
 #include "tools/tool_library.h"
 
 #include "tools/tool_check.h"
+#include "model/translate_noop.h"
 
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
@@ -90,12 +91,15 @@ private:
 std::string describe(sqlite3* db, const std::string& path)
 {
     const int code = sqlite3_extended_errcode(db) & 0xff;
-    if (code == SQLITE_NOTADB) return path + " is not a tool library (the file is not an SQLite database)";
-    if (code == SQLITE_BUSY || code == SQLITE_LOCKED) return path + " is locked by another program; close it and try again";
+    if (code == SQLITE_NOTADB)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not a tool library (the file is not an SQLite database)"), path);
+    if (code == SQLITE_BUSY || code == SQLITE_LOCKED)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is locked by another program; close it and try again"), path);
     if (code == SQLITE_READONLY || code == SQLITE_CANTOPEN || code == SQLITE_PERM)
-        return path + " cannot be opened for writing (" + sqlite3_errmsg(db) + ")";
-    if (code == SQLITE_CORRUPT) return path + " is damaged (" + std::string(sqlite3_errmsg(db)) + "); restore it from a backup";
-    return path + ": " + sqlite3_errmsg(db);
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot be opened for writing ({})"), path, sqlite3_errmsg(db));
+    if (code == SQLITE_CORRUPT)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is damaged ({}); restore it from a backup"), path, sqlite3_errmsg(db));
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), path, sqlite3_errmsg(db));
 }
 
 bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
@@ -209,11 +213,11 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
     // SQLite would take an empty file for a new database and fill it: the
     // operator's file is never rewritten, so an empty one is refused.
     if (!fresh && std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == 0)
-        return Failure{path + " is empty, not a tool library (delete it to have the default library created)"};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is empty, not a tool library (delete it to have the default library created)"), path)};
     if (fresh && std::filesystem::path(path).has_parent_path()) {
         std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
         if (ec) {
-            return Failure{"cannot create the folder of the tool library " + path + ": " + ec.message()};
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create the folder of the tool library {}: {}"), path, ec.message())};
         }
     }
     if (sqlite3_open_v2(path.c_str(), &lib.db_->handle, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
@@ -228,14 +232,14 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
     }
     const int v = version.integer(0);
     if (v > kSchemaVersion) {
-        return Failure{path + " was written by a newer Taiwa (tool library version " + std::to_string(v) +
-                       "); this program reads version " + std::to_string(kSchemaVersion)};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} was written by a newer Taiwa (tool library version {}); this program reads version {}"),
+                                   path, v, kSchemaVersion)};
     }
     if (v == 0) {
         // A new file: create the schema and the default library in one transaction.
         Statement tables(db, "SELECT count(*) FROM sqlite_master");
         if (!tables.ok() || tables.step() != SQLITE_ROW || tables.integer(0) != 0) {
-            return Failure{path + " is an SQLite database but not a tool library"};
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is an SQLite database but not a tool library"), path)};
         }
         bool ok = exec(db, "BEGIN IMMEDIATE") && exec(db, kSchema);
         for (const auto& t : defaultToolLibrary()) ok = ok && insert(db, t);
@@ -253,7 +257,7 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
-            return Failure{why + " (while upgrading it from tool library version " + std::to_string(v) + ")"};
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} (while upgrading it from tool library version {})"), why, v)};
         }
     }
     return lib;
@@ -276,7 +280,7 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         t.name = s.text(1);
         const auto type = toolTypeFromKey(s.text(2));
         if (!type) {
-            return Failure{path_ + ": tool " + std::to_string(t.id) + " has an unknown type '" + s.text(2) + "'"};
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {} has an unknown type '{}'"), path_, t.id, s.text(2))};
         }
         t.type = *type;
         t.diameter = s.real(3);
@@ -291,7 +295,8 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         t.usedMinutes = s.real(12);
         t.centreCutting = s.integer(13) != 0;
         const auto turning = turningFrom(s.text(14));
-        if (!turning) return Failure{path_ + ": tool " + std::to_string(t.id) + " has unreadable lathe data '" + s.text(14) + "'"};
+        if (!turning)
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {} has unreadable lathe data '{}'"), path_, t.id, s.text(14))};
         t.turning = *turning;
         t.holderDiameter = s.real(15);
         t.holderLength = s.real(16);
@@ -312,7 +317,7 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
     // Values no tool can have would fail deep in planning: named here.
     for (const Tool& t : out)
         if (const auto problems = toolProblems(t); !problems.empty())
-            return Failure{path_ + ": tool T" + std::to_string(t.id) + " (" + t.name + "): " + problems.front().message};
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool T{} ({}): {}"), path_, t.id, t.name, problems.front().message)};
     return out;
 }
 
@@ -340,7 +345,7 @@ namespace {
 Result<void> changeOne(sqlite3* db, Statement& s, int id, const std::string& path)
 {
     if (!s.ok() || s.step() != SQLITE_DONE) return Failure{describe(db, path)};
-    if (sqlite3_changes(db) == 0) return Failure{path + " has no tool T" + std::to_string(id)};
+    if (sqlite3_changes(db) == 0) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no tool T{}"), path, id)};
     return {};
 }
 

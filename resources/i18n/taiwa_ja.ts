@@ -399,7 +399,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <name>taiwa::ui::NcView</name>
         <message>
             <source>&amp;NC program, dialect:</source>
-            <translation>NC プログラム(&amp;N)、NC 形式:</translation>
+            <translation>NC 形式(&amp;N):</translation>
         </message>
         <message numerus="yes">
             <source>%n block(s)</source>
@@ -975,6 +975,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
             <translation>最新ではありません: ジョブに入力エラーがあります。3D 表示と NC プログラムは最後に有効だったジョブを表示しています。最初のエラー: %1</translation>
+        </message>
+        <message>
+            <source>job</source>
+            <translation>ジョブ</translation>
         </message>
         <message numerus="yes">
             <source>%n problem(s) in other units</source>
@@ -1646,6 +1650,161 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>several incisions</source>
             <translation>深さを分けて数回</translation>
         </message>
+        <message>
+            <source>single</source>
+            <translation>単独穴</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直線配列</translation>
+        </message>
+        <message>
+            <source>grid</source>
+            <translation>格子配列</translation>
+        </message>
+        <message>
+            <source>bolt circle</source>
+            <translation>円周配列 (PCD)</translation>
+        </message>
+        <message>
+            <source>arc</source>
+            <translation>円弧配列</translation>
+        </message>
+        <message>
+            <source>drilled</source>
+            <translation>ドリル穴</translation>
+        </message>
+        <message>
+            <source>tapped</source>
+            <translation>タップ穴</translation>
+        </message>
+        <message>
+            <source>reamed</source>
+            <translation>リーマ穴</translation>
+        </message>
+        <message>
+            <source>bored</source>
+            <translation>中ぐり穴</translation>
+        </message>
+        <message>
+            <source>the library has no tools</source>
+            <translation>ライブラリに工具がありません</translation>
+        </message>
+        <message>
+            <source>axes %1 mm</source>
+            <translation>軸 %1 mm</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::Field</name>
+        <message>
+            <source>figure</source>
+            <translation>図形</translation>
+        </message>
+        <message>
+            <source>workOffset</source>
+            <translation>ワーク座標系</translation>
+        </message>
+        <message>
+            <source>stock</source>
+            <translation>素材</translation>
+        </message>
+        <message>
+            <source>clamping</source>
+            <translation>クランプ</translation>
+        </message>
+        <message>
+            <source>technology</source>
+            <translation>加工条件</translation>
+        </message>
+        <message>
+            <source>name</source>
+            <translation>名前</translation>
+        </message>
+        <message>
+            <source>material</source>
+            <translation>材質</translation>
+        </message>
+        <message>
+            <source>machine</source>
+            <translation>機械</translation>
+        </message>
+        <message>
+            <source>dialect</source>
+            <translation>NC 形式</translation>
+        </message>
+        <message>
+            <source>lengthUnit</source>
+            <translation>長さの単位</translation>
+        </message>
+        <message>
+            <source>format</source>
+            <translation>形式</translation>
+        </message>
+        <message>
+            <source>version</source>
+            <translation>バージョン</translation>
+        </message>
+        <message>
+            <source>units</source>
+            <translation>ユニット</translation>
+        </message>
+        <message>
+            <source>latheRoughing</source>
+            <translation>旋削荒加工</translation>
+        </message>
+        <message>
+            <source>height</source>
+            <translation>高さ</translation>
+        </message>
+        <message>
+            <source>width</source>
+            <translation>幅</translation>
+        </message>
+        <message>
+            <source>length</source>
+            <translation>長さ</translation>
+        </message>
+        <message>
+            <source>diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>face</source>
+            <translation>端面</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>内径</translation>
+        </message>
+        <message>
+            <source>shape</source>
+            <translation>形状</translation>
+        </message>
+        <message>
+            <source>fixture</source>
+            <translation>治具</translation>
+        </message>
+        <message>
+            <source>grip</source>
+            <translation>つかみ方向</translation>
+        </message>
+        <message>
+            <source>touches</source>
+            <translation>タッチ点</translation>
+        </message>
+        <message>
+            <source>cutting</source>
+            <translation>切削条件</translation>
+        </message>
+        <message>
+            <source>module</source>
+            <translation>モジュール</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>ユニット</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::msg</name>
@@ -2246,6 +2405,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>ファイルが EOF なしで終わっています: 途中で切れている可能性があります</translation>
         </message>
         <message>
+            <source>{}; nothing was changed in {}</source>
+            <translation>{0}。{1} の中は何も変更していません</translation>
+        </message>
+        <message>
+            <source>the job did not pass input processing; nothing was written</source>
+            <translation>ジョブが入力処理を通りませんでした。何も書き出していません</translation>
+        </message>
+        <message>
+            <source>{}; nothing was written</source>
+            <translation>{}。何も書き出していません</translation>
+        </message>
+        <message>
+            <source>unknown dialect '{}'; nothing was written</source>
+            <translation>不明な NC 形式 '{}' です。何も書き出していません</translation>
+        </message>
+        <message>
+            <source>cannot create folder {}: {}</source>
+            <translation>フォルダ {} を作成できません: {}</translation>
+        </message>
+        <message>
+            <source>no PDF to join</source>
+            <translation>結合する PDF がありません</translation>
+        </message>
+        <message>
+            <source>cannot join the sheet's PDF parts: {}</source>
+            <translation>作業指示書の PDF の部分を結合できません: {}</translation>
+        </message>
+        <message>
+            <source>cannot paint the instruction sheet's PDF</source>
+            <translation>作業指示書の PDF を描画できません</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} と {} は平行です: 交わりません</translation>
         </message>
@@ -2622,6 +2813,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{0} で、{1} が続けて 2 回あります: 同じ要素が連続しています (最後の要素は最初の要素につながります)</translation>
         </message>
         <message>
+            <source>cannot write {}: {}</source>
+            <translation>{} に書き込めません: {}</translation>
+        </message>
+        <message>
+            <source>the file changed while it was read</source>
+            <translation>読み込み中にファイルが変更されました</translation>
+        </message>
+        <message>
+            <source>cannot create a file in {}: {}</source>
+            <translation>{} にファイルを作成できません: {}</translation>
+        </message>
+        <message>
+            <source>cannot create the lock file {}: {}</source>
+            <translation>ロックファイル {} を作成できません: {}</translation>
+        </message>
+        <message>
+            <source>cannot lock {}: {}</source>
+            <translation>{} をロックできません: {}</translation>
+        </message>
+        <message>
             <source>a string ({})</source>
             <translation>文字列 ({})</translation>
         </message>
@@ -2846,6 +3057,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>工程の回転数と送り</translation>
         </message>
         <message>
+            <source>give S, F or both</source>
+            <translation>S、F またはその両方を指定してください</translation>
+        </message>
+        <message>
             <source>a bar stock</source>
             <translation>棒材の素材</translation>
         </message>
@@ -2860,6 +3075,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>a line of text</source>
             <translation>テキスト 1 行</translation>
+        </message>
+        <message>
+            <source>a line of the figure holds a line break; give each line as its own string</source>
+            <translation>図形の 1 行に改行が含まれています。各行を別々の文字列で指定してください</translation>
         </message>
         <message>
             <source>the clamping</source>
@@ -3402,6 +3621,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>工具ライブラリにタッチプローブがないか、複数あります。種類 "probe" を 1 つ追加するか、どれを使うか指定してください (T)</translation>
         </message>
         <message>
+            <source>point {} coincides with point {}: touch the outline elsewhere</source>
+            <translation>点 {} が点 {} と一致しています。外形の別の場所をタッチしてください</translation>
+        </message>
+        <message>
+            <source>point {} is {} off the fitted {} (tolerance {}): touch it again, or check the shape and the order of the points</source>
+            <translation>点 {0} が当てはめた{2}から {1} 外れています (許容値 {3})。タッチし直すか、形状と点の順序を確認してください</translation>
+        </message>
+        <message>
+            <source>a round workpiece needs at least 3 touch points, {} given</source>
+            <translation>円形のワークには 3 点以上のタッチ点が必要ですが、{} 点です</translation>
+        </message>
+        <message>
+            <source>point {} lies on the line of points 1 to {} (within {}): a circle needs touches spread around it</source>
+            <translation>点 {0} が点 1 ～ {1} の直線上にあります ({2} 以内)。円には周囲に散らばったタッチが必要です</translation>
+        </message>
+        <message>
+            <source>circle</source>
+            <translation>円</translation>
+        </message>
+        <message>
+            <source>the touches lie on a circle of radius {}, no larger than the stylus ball's radius {}: is the workpiece a bore rather than a boss?</source>
+            <translation>タッチ点は半径 {} の円上にあり、スタイラス球の半径 {} より大きくありません。ワークはボスではなく穴ではありませんか?</translation>
+        </message>
+        <message>
+            <source>point {}: the side it touches is not given</source>
+            <translation>点 {}: タッチする面が指定されていません</translation>
+        </message>
+        <message>
+            <source>a rectangular workpiece needs a touch on every side: none on {}</source>
+            <translation>長方形のワークには各面にタッチが必要ですが、{} にありません</translation>
+        </message>
+        <message>
+            <source>the points on -X and +X are swapped: the +X side (point {}) lies at or left of the -X side (point {})</source>
+            <translation>-X と +X の点が入れ替わっています。+X 面 (点 {}) が -X 面 (点 {}) と同じ位置かその左にあります</translation>
+        </message>
+        <message>
+            <source>the points on -Y and +Y are swapped: the +Y side (point {}) lies at or below the -Y side (point {})</source>
+            <translation>-Y と +Y の点が入れ替わっています。+Y 面 (点 {}) が -Y 面 (点 {}) と同じ位置かその下にあります</translation>
+        </message>
+        <message>
+            <source>rectangle</source>
+            <translation>長方形</translation>
+        </message>
+        <message>
+            <source>the touches span {} x {}, no more than the stylus ball: is the workpiece a pocket rather than a block?</source>
+            <translation>タッチ点の範囲は {} x {} で、スタイラス球より大きくありません。ワークはブロックではなくポケットではありませんか?</translation>
+        </message>
+        <message>
             <source>an array of 1 to 8 points [x, y], the first [0, 0]</source>
             <translation>1 ～ 8 個の点 [x, y] の配列 (最初は [0, 0])</translation>
         </message>
@@ -3580,6 +3847,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile reaches Z{}, beyond the bar's end (Z{})</source>
             <translation>形状が Z{} に達し、棒材の端 (Z{}) を超えています</translation>
+        </message>
+        <message>
+            <source>work offset '{}' cannot be posted for {}: {}; {} offers {}</source>
+            <translation>ワーク座標系 '{0}' は {1} に出力できません: {2}。{3} で使えるのは {4} です</translation>
+        </message>
+        <message>
+            <source>{} has no {}</source>
+            <translation>{} には {} がありません</translation>
+        </message>
+        <message>
+            <source>G154 P (Haas' extended work offsets)</source>
+            <translation>G154 P (Haas の追加ワーク座標系)</translation>
+        </message>
+        <message>
+            <source>G54.1 P (FANUC's extended work offsets)</source>
+            <translation>G54.1 P (FANUC の追加ワーク座標系)</translation>
+        </message>
+        <message>
+            <source>there is no {}</source>
+            <translation>{} はありません</translation>
+        </message>
+        <message>
+            <source>not a work offset</source>
+            <translation>ワーク座標系ではありません</translation>
+        </message>
+        <message>
+            <source>the SINUMERIK manual pages at hand do not say which probe edge MEAS=1 and MEAS=-1 take, how $AC_MEA reports a touch not made, nor that STOPRE must come before $AA_MW is read; see docs/probing.md</source>
+            <translation>手元の SINUMERIK マニュアルには、MEAS=1 と MEAS=-1 がどちらのプローブエッジを取るか、タッチしなかったときに $AC_MEA がどう報告するか、$AA_MW を読む前に STOPRE が必要かどうかが書かれていません。docs/probing.md を参照してください</translation>
+        </message>
+        <message>
+            <source>the TNC manual pages at hand do not say what TCH PROBE 0 does when nothing is touched, and the one way found to write a preset from a program, FN 17: SYSWRITE, is locked behind the machine maker's code number; see docs/probing.md</source>
+            <translation>手元の TNC マニュアルには、何もタッチしなかったときに TCH PROBE 0 がどう動くかが書かれていません。また、プログラムからプリセットを書き込む唯一の方法 FN 17: SYSWRITE は機械メーカーのコード番号で保護されています。docs/probing.md を参照してください</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can</source>
+            <translation>NC 形式 {} は旋盤のテープを出力しません (Klartext はフライス盤制御の言語です)。出力できるのは {} です</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no probing unit's programs; {} can ({})</source>
+            <translation>NC 形式 {} は測定ユニットのプログラムを出力しません。出力できるのは {} です ({})</translation>
         </message>
         <message>
             <source>T number {} must be 1 to {}</source>
@@ -3764,6 +4071,58 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
             <translation>工具ライブラリには{1}に使える{0}がありません。最も近いのは T{2} ({3}) ですが、{4}</translation>
+        </message>
+        <message>
+            <source>{} is not a tool library (the file is not an SQLite database)</source>
+            <translation>{} は工具ライブラリではありません (SQLite データベースではありません)</translation>
+        </message>
+        <message>
+            <source>{} is locked by another program; close it and try again</source>
+            <translation>{} は別のプログラムがロックしています。そのプログラムを閉じてからやり直してください</translation>
+        </message>
+        <message>
+            <source>{} cannot be opened for writing ({})</source>
+            <translation>{} を書き込み用に開けません ({})</translation>
+        </message>
+        <message>
+            <source>{} is damaged ({}); restore it from a backup</source>
+            <translation>{} は破損しています ({})。バックアップから復元してください</translation>
+        </message>
+        <message>
+            <source>{} is empty, not a tool library (delete it to have the default library created)</source>
+            <translation>{} は空で、工具ライブラリではありません (削除すると既定のライブラリが作成されます)</translation>
+        </message>
+        <message>
+            <source>cannot create the folder of the tool library {}: {}</source>
+            <translation>工具ライブラリ {} のフォルダを作成できません: {}</translation>
+        </message>
+        <message>
+            <source>{} was written by a newer Taiwa (tool library version {}); this program reads version {}</source>
+            <translation>{} は新しい Taiwa で書かれています (工具ライブラリのバージョン {})。このプログラムが読めるのはバージョン {} です</translation>
+        </message>
+        <message>
+            <source>{} is an SQLite database but not a tool library</source>
+            <translation>{} は SQLite データベースですが、工具ライブラリではありません</translation>
+        </message>
+        <message>
+            <source>{} (while upgrading it from tool library version {})</source>
+            <translation>{} (工具ライブラリをバージョン {} から更新中)</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}: 工具 {} の旋削データ '{}' を読めません</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}: 工具 T{} ({}): {}</translation>
+        </message>
+        <message>
+            <source>{} has no tool T{}</source>
+            <translation>{} に工具 T{} がありません</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
@@ -4052,6 +4411,33 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>shank</source>
             <translation>シャンク</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::Diagnostic</name>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>ユニット</translation>
+        </message>
+        <message>
+            <source>%1: job %2: warning: %3</source>
+            <translation>%1: ジョブ %2: 警告: %3</translation>
+        </message>
+        <message>
+            <source>%1: job %2: %3</source>
+            <translation>%1: ジョブ %2: %3</translation>
+        </message>
+        <message>
+            <source>%1: unit %2 (%3) %4: warning: %5</source>
+            <translation>%1: ユニット %2 (%3) %4: 警告: %5</translation>
+        </message>
+        <message>
+            <source>%1: unit %2 (%3) %4: %5</source>
+            <translation>%1: ユニット %2 (%3) %4: %5</translation>
         </message>
     </context>
     <context>

@@ -399,7 +399,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <name>taiwa::ui::NcView</name>
         <message>
             <source>&amp;NC program, dialect:</source>
-            <translation>NC 程序(&amp;N),数控系统:</translation>
+            <translation>数控系统(&amp;N):</translation>
         </message>
         <message numerus="yes">
             <source>%n block(s)</source>
@@ -975,6 +975,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
             <translation>不是最新:作业有输入错误。3D 视图和 NC 程序显示的是最后一个有效作业。第一个错误:%1</translation>
+        </message>
+        <message>
+            <source>job</source>
+            <translation>作业</translation>
         </message>
         <message numerus="yes">
             <source>%n problem(s) in other units</source>
@@ -1646,6 +1650,161 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>several incisions</source>
             <translation>分多次切入</translation>
         </message>
+        <message>
+            <source>single</source>
+            <translation>单孔</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直线排列</translation>
+        </message>
+        <message>
+            <source>grid</source>
+            <translation>网格排列</translation>
+        </message>
+        <message>
+            <source>bolt circle</source>
+            <translation>圆周分布 (PCD)</translation>
+        </message>
+        <message>
+            <source>arc</source>
+            <translation>圆弧排列</translation>
+        </message>
+        <message>
+            <source>drilled</source>
+            <translation>钻孔</translation>
+        </message>
+        <message>
+            <source>tapped</source>
+            <translation>螺纹孔</translation>
+        </message>
+        <message>
+            <source>reamed</source>
+            <translation>铰孔</translation>
+        </message>
+        <message>
+            <source>bored</source>
+            <translation>镗孔</translation>
+        </message>
+        <message>
+            <source>the library has no tools</source>
+            <translation>刀具库中没有刀具</translation>
+        </message>
+        <message>
+            <source>axes %1 mm</source>
+            <translation>坐标轴 %1 mm</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::Field</name>
+        <message>
+            <source>figure</source>
+            <translation>图形</translation>
+        </message>
+        <message>
+            <source>workOffset</source>
+            <translation>工件坐标系</translation>
+        </message>
+        <message>
+            <source>stock</source>
+            <translation>毛坯</translation>
+        </message>
+        <message>
+            <source>clamping</source>
+            <translation>装夹</translation>
+        </message>
+        <message>
+            <source>technology</source>
+            <translation>工艺参数</translation>
+        </message>
+        <message>
+            <source>name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>material</source>
+            <translation>材料</translation>
+        </message>
+        <message>
+            <source>machine</source>
+            <translation>机床</translation>
+        </message>
+        <message>
+            <source>dialect</source>
+            <translation>数控系统</translation>
+        </message>
+        <message>
+            <source>lengthUnit</source>
+            <translation>长度单位</translation>
+        </message>
+        <message>
+            <source>format</source>
+            <translation>格式</translation>
+        </message>
+        <message>
+            <source>version</source>
+            <translation>版本</translation>
+        </message>
+        <message>
+            <source>units</source>
+            <translation>单元</translation>
+        </message>
+        <message>
+            <source>latheRoughing</source>
+            <translation>车削粗加工</translation>
+        </message>
+        <message>
+            <source>height</source>
+            <translation>高度</translation>
+        </message>
+        <message>
+            <source>width</source>
+            <translation>宽度</translation>
+        </message>
+        <message>
+            <source>length</source>
+            <translation>长度</translation>
+        </message>
+        <message>
+            <source>diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>face</source>
+            <translation>端面</translation>
+        </message>
+        <message>
+            <source>bore</source>
+            <translation>内孔</translation>
+        </message>
+        <message>
+            <source>shape</source>
+            <translation>形状</translation>
+        </message>
+        <message>
+            <source>fixture</source>
+            <translation>夹具</translation>
+        </message>
+        <message>
+            <source>grip</source>
+            <translation>夹持方向</translation>
+        </message>
+        <message>
+            <source>touches</source>
+            <translation>触碰点</translation>
+        </message>
+        <message>
+            <source>cutting</source>
+            <translation>切削参数</translation>
+        </message>
+        <message>
+            <source>module</source>
+            <translation>模块</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>单元</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::msg</name>
@@ -2246,6 +2405,38 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>文件没有 EOF 就结束：可能不完整</translation>
         </message>
         <message>
+            <source>{}; nothing was changed in {}</source>
+            <translation>{0}；{1} 中未做任何更改</translation>
+        </message>
+        <message>
+            <source>the job did not pass input processing; nothing was written</source>
+            <translation>作业未通过输入处理；未写入任何文件</translation>
+        </message>
+        <message>
+            <source>{}; nothing was written</source>
+            <translation>{}；未写入任何文件</translation>
+        </message>
+        <message>
+            <source>unknown dialect '{}'; nothing was written</source>
+            <translation>未知的数控系统 '{}'；未写入任何文件</translation>
+        </message>
+        <message>
+            <source>cannot create folder {}: {}</source>
+            <translation>无法创建文件夹 {}：{}</translation>
+        </message>
+        <message>
+            <source>no PDF to join</source>
+            <translation>没有要合并的 PDF</translation>
+        </message>
+        <message>
+            <source>cannot join the sheet's PDF parts: {}</source>
+            <translation>无法合并工艺单的 PDF 各部分: {}</translation>
+        </message>
+        <message>
+            <source>cannot paint the instruction sheet's PDF</source>
+            <translation>无法绘制工艺单的 PDF</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} 与 {} 平行：不相交</translation>
         </message>
@@ -2622,6 +2813,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>在 {0} 中，{1} 紧跟自身：同一元素连续出现两次（最后一个元素与第一个相接）</translation>
         </message>
         <message>
+            <source>cannot write {}: {}</source>
+            <translation>无法写入 {}：{}</translation>
+        </message>
+        <message>
+            <source>the file changed while it was read</source>
+            <translation>读取过程中文件被更改</translation>
+        </message>
+        <message>
+            <source>cannot create a file in {}: {}</source>
+            <translation>无法在 {} 中创建文件：{}</translation>
+        </message>
+        <message>
+            <source>cannot create the lock file {}: {}</source>
+            <translation>无法创建锁文件 {}：{}</translation>
+        </message>
+        <message>
+            <source>cannot lock {}: {}</source>
+            <translation>无法锁定 {}：{}</translation>
+        </message>
+        <message>
             <source>a string ({})</source>
             <translation>字符串（{}）</translation>
         </message>
@@ -2846,6 +3057,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>工序的转速和进给</translation>
         </message>
         <message>
+            <source>give S, F or both</source>
+            <translation>请给出 S、F 或两者</translation>
+        </message>
+        <message>
             <source>a bar stock</source>
             <translation>棒料毛坯</translation>
         </message>
@@ -2860,6 +3075,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>a line of text</source>
             <translation>一行文本</translation>
+        </message>
+        <message>
+            <source>a line of the figure holds a line break; give each line as its own string</source>
+            <translation>图形的一行中含有换行符；请将每行作为单独的字符串给出</translation>
         </message>
         <message>
             <source>the clamping</source>
@@ -3402,6 +3621,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>刀具库中没有测头或有多个：请添加一个类型为 "probe" 的测头，或指定使用哪一个（T）</translation>
         </message>
         <message>
+            <source>point {} coincides with point {}: touch the outline elsewhere</source>
+            <translation>点 {} 与点 {} 重合：请在轮廓的其他位置触碰</translation>
+        </message>
+        <message>
+            <source>point {} is {} off the fitted {} (tolerance {}): touch it again, or check the shape and the order of the points</source>
+            <translation>点 {0} 偏离拟合的{2} {1}（公差 {3}）：请重新触碰，或检查形状和点的顺序</translation>
+        </message>
+        <message>
+            <source>a round workpiece needs at least 3 touch points, {} given</source>
+            <translation>圆形工件至少需要 3 个触碰点，当前为 {} 个</translation>
+        </message>
+        <message>
+            <source>point {} lies on the line of points 1 to {} (within {}): a circle needs touches spread around it</source>
+            <translation>点 {0} 位于点 1 至 {1} 的直线上（{2} 以内）：圆需要分布在四周的触碰点</translation>
+        </message>
+        <message>
+            <source>circle</source>
+            <translation>圆</translation>
+        </message>
+        <message>
+            <source>the touches lie on a circle of radius {}, no larger than the stylus ball's radius {}: is the workpiece a bore rather than a boss?</source>
+            <translation>触碰点位于半径 {} 的圆上，不大于测球半径 {}：工件是否是孔而不是凸台？</translation>
+        </message>
+        <message>
+            <source>point {}: the side it touches is not given</source>
+            <translation>点 {}：未给出其触碰的面</translation>
+        </message>
+        <message>
+            <source>a rectangular workpiece needs a touch on every side: none on {}</source>
+            <translation>矩形工件每个面都需要触碰：{} 面没有</translation>
+        </message>
+        <message>
+            <source>the points on -X and +X are swapped: the +X side (point {}) lies at or left of the -X side (point {})</source>
+            <translation>-X 与 +X 的点颠倒了：+X 面（点 {}）位于 -X 面（点 {}）处或其左侧</translation>
+        </message>
+        <message>
+            <source>the points on -Y and +Y are swapped: the +Y side (point {}) lies at or below the -Y side (point {})</source>
+            <translation>-Y 与 +Y 的点颠倒了：+Y 面（点 {}）位于 -Y 面（点 {}）处或其下方</translation>
+        </message>
+        <message>
+            <source>rectangle</source>
+            <translation>矩形</translation>
+        </message>
+        <message>
+            <source>the touches span {} x {}, no more than the stylus ball: is the workpiece a pocket rather than a block?</source>
+            <translation>触碰点范围为 {} x {}，不大于测球：工件是否是型腔而不是块？</translation>
+        </message>
+        <message>
             <source>an array of 1 to 8 points [x, y], the first [0, 0]</source>
             <translation>1 到 8 个点 [x, y] 的数组，第一个为 [0, 0]</translation>
         </message>
@@ -3580,6 +3847,46 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile reaches Z{}, beyond the bar's end (Z{})</source>
             <translation>轮廓达到 Z{}，超出棒料末端（Z{}）</translation>
+        </message>
+        <message>
+            <source>work offset '{}' cannot be posted for {}: {}; {} offers {}</source>
+            <translation>工件坐标系 '{0}' 无法为 {1} 输出：{2}；{3} 提供 {4}</translation>
+        </message>
+        <message>
+            <source>{} has no {}</source>
+            <translation>{} 没有 {}</translation>
+        </message>
+        <message>
+            <source>G154 P (Haas' extended work offsets)</source>
+            <translation>G154 P（Haas 的扩展工件坐标系）</translation>
+        </message>
+        <message>
+            <source>G54.1 P (FANUC's extended work offsets)</source>
+            <translation>G54.1 P（FANUC 的扩展工件坐标系）</translation>
+        </message>
+        <message>
+            <source>there is no {}</source>
+            <translation>没有 {}</translation>
+        </message>
+        <message>
+            <source>not a work offset</source>
+            <translation>不是工件坐标系</translation>
+        </message>
+        <message>
+            <source>the SINUMERIK manual pages at hand do not say which probe edge MEAS=1 and MEAS=-1 take, how $AC_MEA reports a touch not made, nor that STOPRE must come before $AA_MW is read; see docs/probing.md</source>
+            <translation>现有的 SINUMERIK 手册未说明 MEAS=1 和 MEAS=-1 取哪个测头沿、未触碰时 $AC_MEA 如何报告，也未说明读取 $AA_MW 前必须先 STOPRE；参见 docs/probing.md</translation>
+        </message>
+        <message>
+            <source>the TNC manual pages at hand do not say what TCH PROBE 0 does when nothing is touched, and the one way found to write a preset from a program, FN 17: SYSWRITE, is locked behind the machine maker's code number; see docs/probing.md</source>
+            <translation>现有的 TNC 手册未说明未触碰任何物体时 TCH PROBE 0 如何动作，而从程序写入预设的唯一方法 FN 17: SYSWRITE 受机床厂商密码保护；参见 docs/probing.md</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can</source>
+            <translation>数控系统 {} 不输出车床程序（Klartext 是铣床控制系统的语言）；可输出的有 {}</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no probing unit's programs; {} can ({})</source>
+            <translation>数控系统 {} 不输出测量单元的程序；可输出的有 {}（{}）</translation>
         </message>
         <message>
             <source>T number {} must be 1 to {}</source>
@@ -3764,6 +4071,58 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>no {} in the tool library fits the {}: T{} ({}) is the nearest, but {}</source>
             <translation>刀具库中没有适合{1}的{0}：最接近的是 T{2}（{3}），但{4}</translation>
+        </message>
+        <message>
+            <source>{} is not a tool library (the file is not an SQLite database)</source>
+            <translation>{} 不是刀具库（该文件不是 SQLite 数据库）</translation>
+        </message>
+        <message>
+            <source>{} is locked by another program; close it and try again</source>
+            <translation>{} 被其他程序锁定；请关闭该程序后重试</translation>
+        </message>
+        <message>
+            <source>{} cannot be opened for writing ({})</source>
+            <translation>无法以写入方式打开 {}（{}）</translation>
+        </message>
+        <message>
+            <source>{} is damaged ({}); restore it from a backup</source>
+            <translation>{} 已损坏（{}）；请从备份恢复</translation>
+        </message>
+        <message>
+            <source>{} is empty, not a tool library (delete it to have the default library created)</source>
+            <translation>{} 为空，不是刀具库（删除后将创建默认刀具库）</translation>
+        </message>
+        <message>
+            <source>cannot create the folder of the tool library {}: {}</source>
+            <translation>无法创建刀具库 {} 的文件夹：{}</translation>
+        </message>
+        <message>
+            <source>{} was written by a newer Taiwa (tool library version {}); this program reads version {}</source>
+            <translation>{} 由较新版本的 Taiwa 写入（刀具库版本 {}）；本程序只能读取版本 {}</translation>
+        </message>
+        <message>
+            <source>{} is an SQLite database but not a tool library</source>
+            <translation>{} 是 SQLite 数据库，但不是刀具库</translation>
+        </message>
+        <message>
+            <source>{} (while upgrading it from tool library version {})</source>
+            <translation>{}（从刀具库版本 {} 升级时）</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}：刀具 T{}（{}）：{}</translation>
+        </message>
+        <message>
+            <source>{} has no tool T{}</source>
+            <translation>{} 中没有刀具 T{}</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
@@ -4052,6 +4411,33 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>shank</source>
             <translation>刀杆</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::Diagnostic</name>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>unit</source>
+            <translation>单元</translation>
+        </message>
+        <message>
+            <source>%1: job %2: warning: %3</source>
+            <translation>%1：作业 %2：警告：%3</translation>
+        </message>
+        <message>
+            <source>%1: job %2: %3</source>
+            <translation>%1：作业 %2：%3</translation>
+        </message>
+        <message>
+            <source>%1: unit %2 (%3) %4: warning: %5</source>
+            <translation>%1：单元 %2（%3）%4：警告：%5</translation>
+        </message>
+        <message>
+            <source>%1: unit %2 (%3) %4: %5</source>
+            <translation>%1：单元 %2（%3）%4：%5</translation>
         </message>
     </context>
     <context>

@@ -4,6 +4,8 @@
 // axis of the pooled touches of every side touched twice.
 #include "modules/probe/probe_fit.h"
 
+#include "model/translate_noop.h"
+
 #include <Eigen/Dense>
 #include <fmt/format.h>
 
@@ -25,7 +27,7 @@ std::optional<FitProblem> coincident(const std::vector<Touch>& t)
         for (std::size_t i = 0; i < j; ++i)
             if (distance(t[i].at, t[j].at) < kCoincident)
                 return FitProblem{static_cast<int>(j + 1),
-                                  fmt::format("point {} coincides with point {}: touch the outline elsewhere", j + 1, i + 1)};
+                                  fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {} coincides with point {}: touch the outline elsewhere"), j + 1, i + 1)};
     return std::nullopt;
 }
 
@@ -37,8 +39,8 @@ std::optional<FitProblem> offFit(const std::vector<double>& residuals, double to
         if (std::abs(residuals[i]) > std::abs(residuals[worst])) worst = i;
     if (residuals.empty() || std::abs(residuals[worst]) <= tolerance) return std::nullopt;
     return FitProblem{static_cast<int>(worst + 1),
-                      fmt::format("point {} is {} off the fitted {} (tolerance {}): touch it again, or check the "
-                                  "shape and the order of the points",
+                      fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {} is {} off the fitted {} (tolerance {}): touch it again, or check the "
+                                  "shape and the order of the points"),
                                   worst + 1, mm(std::abs(residuals[worst])), what, mm(tolerance))};
 }
 
@@ -60,7 +62,7 @@ std::variant<CircleFit, FitProblem> fitCircle(const std::vector<Touch>& touches,
 {
     const std::size_t n = touches.size();
     if (n < 3)
-        return FitProblem{0, fmt::format("a round workpiece needs at least 3 touch points, {} given", n)};
+        return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a round workpiece needs at least 3 touch points, {} given"), n)};
     if (auto p = coincident(touches)) return *p;
 
     // About the points' mean, for the conditioning of the algebraic fit.
@@ -78,8 +80,8 @@ std::variant<CircleFit, FitProblem> fitCircle(const std::vector<Touch>& touches,
     const Eigen::Vector2d normal = axes.eigenvectors().col(0);  // smallest eigenvalue first
     if ((pts * normal).cwiseAbs().maxCoeff() <= s.tolerance)
         return FitProblem{static_cast<int>(n),
-                          fmt::format("point {} lies on the line of points 1 to {} (within {}): a circle needs "
-                                      "touches spread around it",
+                          fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {} lies on the line of points 1 to {} (within {}): a circle needs "
+                                      "touches spread around it"),
                                       n, n - 1, mm(s.tolerance))};
 
     // Algebraic circle: x² + y² + D x + E y + F = 0 in the least-squares sense.
@@ -112,11 +114,11 @@ std::variant<CircleFit, FitProblem> fitCircle(const std::vector<Touch>& touches,
     fit.centre = {c(0) + mean(0), c(1) + mean(1)};
     for (Eigen::Index i = 0; i < pts.rows(); ++i)
         fit.residuals.push_back(std::hypot(pts(i, 0) - c(0), pts(i, 1) - c(1)) - c(2));
-    if (auto p = offFit(fit.residuals, s.tolerance, "circle")) return *p;
+    if (auto p = offFit(fit.residuals, s.tolerance, TAIWA_TRANSLATE_NOOP("taiwa::msg", "circle"))) return *p;
     fit.radius = s.inside ? c(2) + s.ballRadius : c(2) - s.ballRadius;
     if (fit.radius <= 0)
-        return FitProblem{0, fmt::format("the touches lie on a circle of radius {}, no larger than the stylus ball's "
-                                         "radius {}: is the workpiece a bore rather than a boss?",
+        return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the touches lie on a circle of radius {}, no larger than the stylus ball's "
+                                         "radius {}: is the workpiece a bore rather than a boss?"),
                                          mm(c(2)), mm(s.ballRadius))};
     return fit;
 }
@@ -126,10 +128,10 @@ std::variant<RectangleFit, FitProblem> fitRectangle(const std::vector<Touch>& to
     const std::size_t n = touches.size();
     for (std::size_t i = 0; i < n; ++i)
         if (touches[i].side == Side::None)
-            return FitProblem{static_cast<int>(i + 1), fmt::format("point {}: the side it touches is not given", i + 1)};
+            return FitProblem{static_cast<int>(i + 1), fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {}: the side it touches is not given"), i + 1)};
     for (const Side side : {Side::XMinus, Side::XPlus, Side::YMinus, Side::YPlus})
         if (std::none_of(touches.begin(), touches.end(), [&](const Touch& t) { return t.side == side; }))
-            return FitProblem{0, fmt::format("a rectangular workpiece needs a touch on every side: none on {}",
+            return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a rectangular workpiece needs a touch on every side: none on {}"),
                                              toString(side))};
     if (auto p = coincident(touches)) return *p;
 
@@ -180,13 +182,13 @@ std::variant<RectangleFit, FitProblem> fitRectangle(const std::vector<Touch>& to
     };
     if (line[2] <= line[1])
         return FitProblem{firstOn(Side::XPlus),
-                          fmt::format("the points on -X and +X are swapped: the +X side (point {}) lies at or left of "
-                                      "the -X side (point {})",
+                          fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the points on -X and +X are swapped: the +X side (point {}) lies at or left of "
+                                      "the -X side (point {})"),
                                       firstOn(Side::XPlus), firstOn(Side::XMinus))};
     if (line[4] <= line[3])
         return FitProblem{firstOn(Side::YPlus),
-                          fmt::format("the points on -Y and +Y are swapped: the +Y side (point {}) lies at or below "
-                                      "the -Y side (point {})",
+                          fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the points on -Y and +Y are swapped: the +Y side (point {}) lies at or below "
+                                      "the -Y side (point {})"),
                                       firstOn(Side::YPlus), firstOn(Side::YMinus))};
 
     RectangleFit fit;
@@ -194,13 +196,13 @@ std::variant<RectangleFit, FitProblem> fitRectangle(const std::vector<Touch>& to
         const double off = across(t) - line[static_cast<int>(t.side)];
         fit.residuals.push_back(t.side == Side::XMinus || t.side == Side::YMinus ? -off : off);
     }
-    if (auto p = offFit(fit.residuals, s.tolerance, "rectangle")) return *p;
+    if (auto p = offFit(fit.residuals, s.tolerance, TAIWA_TRANSLATE_NOOP("taiwa::msg", "rectangle"))) return *p;
     const double ball = s.inside ? -2 * s.ballRadius : 2 * s.ballRadius;
     fit.width = line[2] - line[1] - ball;
     fit.length = line[4] - line[3] - ball;
     if (fit.width <= 0 || fit.length <= 0)
-        return FitProblem{0, fmt::format("the touches span {} x {}, no more than the stylus ball: is the workpiece a "
-                                         "pocket rather than a block?",
+        return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the touches span {} x {}, no more than the stylus ball: is the workpiece a "
+                                         "pocket rather than a block?"),
                                          mm(line[2] - line[1]), mm(line[4] - line[3]))};
     fit.centre = 0.5 * (line[1] + line[2]) * ex + 0.5 * (line[3] + line[4]) * ey;
     fit.rotation = angle * 180 / std::numbers::pi;
