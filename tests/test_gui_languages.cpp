@@ -383,6 +383,31 @@ class TestGuiLanguages : public QObject {
                                         .arg(l->contentsRect().width())));
         }
     }
+
+    // The verification's summary at 1366 x 768 in Japanese and Chinese: on a
+    // line of its own, its sentence fits the line whole (beside the Verify
+    // button it was wrapped into a column a few characters wide).
+    void verificationSummaryFitsAt1366()
+    {
+        for (const char* language : {"ja", "zh"}) {
+            speak(language);
+            QSettings().remove("station");
+            StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+            w.resize(1366, 720);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            auto* summary = w.findChild<QLabel*>("verify.summary");
+            QVERIFY(summary);
+            QTRY_VERIFY(!summary->text().isEmpty());
+            QTest::qWait(50);
+            const int wide = summary->fontMetrics().horizontalAdvance(summary->text());
+            QVERIFY2(wide <= summary->contentsRect().width(),
+                     qPrintable(QString("%1: '%2' is %3 px wide in %4 px")
+                                    .arg(language, summary->text())
+                                    .arg(wide)
+                                    .arg(summary->contentsRect().width())));
+        }
+    }
 };
 
 QTEST_MAIN(TestGuiLanguages)

@@ -76,13 +76,16 @@ VerificationPanel::VerificationPanel(QWidget* parent)
                                  swatch(viz::palette::kRestThick, tr("more left"))}
                          .join(QStringLiteral(" &nbsp; ")));
     legend_->hide();
+    // The summary on a line of its own under the buttons: beside them, at
+    // 1366 px, a Japanese sentence had a column a few characters wide.
     auto* top = new QHBoxLayout;
     top->addWidget(run_);
-    top->addWidget(summary_, 1);
+    top->addStretch(1);
     top->addWidget(colourMap_);
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addLayout(top);
+    box->addWidget(summary_);
     box->addWidget(legend_);
     box->addWidget(list_, 1);
     connect(run_, &QPushButton::clicked, this, &VerificationPanel::verify);
@@ -149,7 +152,7 @@ void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Pla
         if (f.fatal()) item->setForeground(QBrush(QColor(192, 0, 0)));
     }
     if (!r.skipped.empty()) {
-        summary_->setText(tr("Not verified: %1").arg(QString::fromStdString(r.skipped)));
+        summary_->setText(tr("Not verified: %1").arg(coreMessage(r.skipped)));
     } else {
         int faults = 0;
         for (const auto& f : r.findings) faults += f.fatal() ? 1 : 0;

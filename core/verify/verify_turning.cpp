@@ -13,6 +13,8 @@
 #include "verify/verify_turning.h"
 #include "verify/verify_turning_shapes.h"
 
+#include "model/translate_noop.h"
+
 #include "machine/machine.h"
 #include "model/turned_geometry.h"
 #include "sim/turned_clipper.h"
@@ -437,7 +439,7 @@ Report verifyTurning(const Plan& plan, const Options& options)
     if (!cuts) {
         Report r;
         r.resolution = options.resolution;
-        r.skipped = "a lathe job with no turning step: nothing to cut";
+        r.skipped = TAIWA_TRANSLATE_NOOP("taiwa::msg", "a lathe job with no turning step: nothing to cut");
         return r;
     }
     return TurningVerifier(plan, options.resolution).run();

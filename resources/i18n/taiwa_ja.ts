@@ -4412,6 +4412,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>shank</source>
             <translation>シャンク</translation>
         </message>
+        <message>
+            <source>a lathe job with no turning step: nothing to cut</source>
+            <translation>旋削工程のない旋盤ジョブ: 削るものがありません</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::Diagnostic</name>

@@ -4412,6 +4412,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>shank</source>
             <translation>刀杆</translation>
         </message>
+        <message>
+            <source>a lathe job with no turning step: nothing to cut</source>
+            <translation>没有车削工步的车床作业: 无可切削</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::Diagnostic</name>
