@@ -14,6 +14,8 @@
 #include "post/dialect.h"
 #include "post/post.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -249,16 +251,20 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
     // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).
     const auto names = dialectNames();
     if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
-        out.push_back(jobError("workOffset", "'" + job.workOffset +
-                                                 "' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) "
-                                                 "or G505 to G599 (SINUMERIK)"));
+        out.push_back(jobError("workOffset",
+                               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                "'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, "
+                                                                "G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)"),
+                                           job.workOffset)));
     // The job's own dialect: one this program posts, whose controller has the
     // job's work offset.
     else if (!job.dialect.empty()) {
         if (!isDialect(job.dialect)) {
             std::string known;
             for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-            out.push_back(jobError("dialect", "unknown dialect '" + job.dialect + "'; this program posts " + known));
+            out.push_back(jobError(
+                "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; this program posts {}"),
+                                       job.dialect, known)));
         } else if (auto why = workOffsetProblem(job.dialect, job.workOffset)) {
             out.push_back(*why);
         } else if (const post::Dialect* d = post::findDialect(job.dialect)) {

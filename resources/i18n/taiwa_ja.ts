@@ -3049,6 +3049,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>送り F</translation>
         </message>
         <message>
+            <source>'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)</source>
+            <translation>'{}' はワーク座標系ではありません: G54～G59、G59.1～G59.3、G54.1 P1～P48（Haas では G154 P）、または G505～G599（SINUMERIK）を指定してください</translation>
+        </message>
+        <message>
+            <source>unknown dialect '{}'; this program posts {}</source>
+            <translation>不明な NC 形式 '{}' です。このプログラムが出力できるのは {} です</translation>
+        </message>
+        <message>
             <source>an object with S and/or F</source>
             <translation>S と F (どちらか一方でも可) を持つオブジェクト</translation>
         </message>

@@ -3049,6 +3049,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>进给 F</translation>
         </message>
         <message>
+            <source>'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)</source>
+            <translation>'{}' 不是工件坐标系: 请给出 G54 至 G59、G59.1 至 G59.3、G54.1 P1 至 P48（Haas 上为 G154 P）或 G505 至 G599（SINUMERIK）</translation>
+        </message>
+        <message>
+            <source>unknown dialect '{}'; this program posts {}</source>
+            <translation>未知的数控系统 '{}'；本程序可输出 {}</translation>
+        </message>
+        <message>
             <source>an object with S and/or F</source>
             <translation>含 S 和/或 F 的对象</translation>
         </message>
