@@ -67,6 +67,33 @@ double distanceToRect(Point2 p, double x0, double y0, double x1, double y1)
 class TestSim : public QObject {
     Q_OBJECT
 private slots:
+    // A straight cut in 2,000 chords of 0.02 mm lowers every cell exactly
+    // as the one move does (each chord after the first skips the cells its
+    // flat bottom cut: SweepChain), flat and bull-nosed.
+    void shortChordsCutAsOneMove()
+    {
+        for (const double corner : {0.0, 2.0}) {
+            Tool mill = tool(ToolType::FlatEndMill, 10);
+            mill.cornerRadius = corner;
+            ToolPath one{{30, 40, 5}, {}};
+            one.moves.push_back({MoveKind::Feed, {30, 40, -5}, {}, FeedKind::Plunge});
+            ToolPath chords = one;
+            one.moves.push_back({MoveKind::Feed, {70, 40, -5}});
+            for (int k = 1; k <= 2000; ++k) chords.moves.push_back({MoveKind::Feed, {30 + k * 0.02, 40, -5}});
+            HeightField a(kStock, 0.25), b(kStock, 0.25);
+            cut(a, one, mill);
+            cut(b, chords, mill);
+            int cutCells = 0;
+            for (int j = 0; j < a.rows(); ++j)
+                for (int i = 0; i < a.columns(); ++i) {
+                    QVERIFY2(a.at(i, j) == b.at(i, j), qPrintable(QString("corner %1, cell (%2, %3): %4 against %5")
+                                                                      .arg(corner).arg(i).arg(j).arg(a.at(i, j)).arg(b.at(i, j))));
+                    cutCells += a.at(i, j) < 0.0;
+                }
+            QVERIFY(cutCells > 5000);
+        }
+    }
+
     void cellSizeFollowsTheBudget()
     {
         QCOMPARE(HeightField::cellSizeFor(kStock), 0.25);

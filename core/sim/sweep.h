@@ -33,6 +33,29 @@ void forEachLevel(Point3 a, Point3 b, double zStep, Level&& level)
     level(b2, b2, b.z);
 }
 
+// Where the last of a run of straight sweeps ended, and at what height:
+// the next sweep that starts there at that height need not visit again the
+// cells within the cutter's flat bottom of its start (forEachCellNear's
+// skipAroundA). Cells are only ever lowered, so the result is the same.
+class SweepChain {
+public:
+    // The radius around a to skip for a sweep from a at height z.
+    double skip(Point2 a, double z, double flatRadius) const
+    {
+        return has_ && last_.z == z && last_.x == a.x && last_.y == a.y ? std::max(0.0, flatRadius) : 0.0;
+    }
+    void ended(Point2 b, double z)
+    {
+        last_ = Point3{b.x, b.y, z};
+        has_ = true;
+    }
+    void broken() { has_ = false; }
+
+private:
+    bool has_ = false;  // (a flag, not std::optional: g++ 12 takes its value for unset)
+    Point3 last_{};
+};
+
 // Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
 // centre lies within `reach` of the segment a -> b, r2 being the square of
 // that distance (a flat end mill needs no root), except the cells whose

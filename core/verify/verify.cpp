@@ -252,7 +252,7 @@ private:
         float* h = field_.data();
         const double bottom = field_.bottom();
         std::uint64_t visits = 0;
-        std::optional<Point3> last;  // where the last straight sweep ended, and its height
+        sim::SweepChain chain;  // where the last straight sweep ended, and its height
         for (const sim::SweptPiece& piece : d.pieces) {
             if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
             // The cells near one horizontal sweep at tip height z: a
@@ -294,18 +294,18 @@ private:
             // short chords would otherwise each visit a whole disc of cells.
             const auto line = [&](Point2 a, Point2 b, double z) {
                 const bool holderLow = z + d.holderZ < -kTouch;
-                const double skip =
-                    !holderLow && last && last->z == z && last->x == a.x && last->y == a.y ? std::max(0.0, cutter.flatRadius()) : 0.0;
+                const double skip = holderLow ? 0.0 : chain.skip(a, z, cutter.flatRadius());
                 level(z, [&](double radius, const auto& visit) {
                     sim::forEachCellNear(field_, a, b, radius, row0, row1, visit, skip);
                 });
-                last = z < 0.0 && !holderLow ? std::optional<Point3>(Point3{b.x, b.y, z}) : std::nullopt;
+                if (z < 0.0 && !holderLow) chain.ended(b, z);
+                else chain.broken();
             };
             if (!piece.arc) {
                 sim::forEachLevel(piece.from, piece.to, zStep_, line);
                 continue;
             }
-            last.reset();
+            chain.broken();
             // An arc exactly; a helix in parts at most zStep apart in Z, each
             // at its higher end, then its end point at its own height.
             const Point2 c = piece.centre;
