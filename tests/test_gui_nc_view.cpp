@@ -12,6 +12,8 @@
 #include <QTextLayout>
 #include <QtTest>
 
+#include <memory>
+
 using taiwa::BlockSource;
 using taiwa::ui::NcView;
 
@@ -69,7 +71,70 @@ private slots:
         // A new program: its first lines coloured again.
         view.setProgram("G0 X1\nM30\n", std::vector<BlockSource>(3));
         QTRY_VERIFY(view.highlighter()->coloured(0));
+        doc = view.text()->document();  // a new program is a new document
         QCOMPARE(formatAt(doc->findBlockByNumber(0), 0).foreground().color(), QColor(0x00, 0x40, 0xc0));
+    }
+
+    // A program's text put in on the view's own thread (prepareProgram), then
+    // shown: the text is the program's, whichever was prepared last, and a
+    // text prepared for another program is not shown for this one.
+    void showsTheTextPreparedForIt()
+    {
+        const auto tape = [](int n, const char* word) {
+            QString nc;
+            for (int i = 0; i < n; ++i) nc += QString("N%1 %2 X%3\n").arg(i).arg(word).arg(i);
+            return nc + "M30";
+        };
+        const QString a = tape(30000, "G1"), b = tape(30000, "G0"), c = tape(200, "G2");
+        NcView view;
+        view.resize(600, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+
+        view.prepareProgram(a);
+        view.setProgram(a, std::vector<BlockSource>(30001));  // made here or there, waited for if being made
+        QCOMPARE(view.text()->toPlainText(), a);
+        const int before = view.preparedShown();
+        view.prepareProgram(b);
+        QTRY_VERIFY(view.isPrepared(b));
+        QVERIFY(!view.isPrepared(a));
+        view.setProgram(b, std::vector<BlockSource>(30001));
+        QCOMPARE(view.text()->toPlainText(), b);
+        QCOMPARE(view.preparedShown(), before + 1);
+        QCOMPARE(view.text()->document()->thread(), view.thread());
+        QCOMPARE(view.text()->document()->defaultFont(), view.text()->font());
+        QCOMPARE(view.text()->document()->blockCount(), 30001);
+
+        view.prepareProgram(a);  // prepared, then another program came
+        QTRY_VERIFY(view.isPrepared(a));
+        view.setProgram(c, std::vector<BlockSource>(201));
+        QCOMPARE(view.text()->toPlainText(), c);
+        QCOMPARE(view.preparedShown(), before + 1);
+        view.prepareProgram(c);
+        QTRY_VERIFY(view.isPrepared(c));
+        view.setProgram(c, std::vector<BlockSource>(201));
+        QCOMPARE(view.text()->toPlainText(), c);
+        QCOMPARE(view.preparedShown(), before + 2);
+        QCOMPARE(view.text()->lineWrapMode(), QPlainTextEdit::NoWrap);
+
+        // The band of the current line and the colours, as for any new text.
+        QCOMPARE(view.highlightedLine(), 0);
+        QTRY_VERIFY(view.highlighter()->coloured(0));
+
+        view.setMessage("no program");
+        QCOMPARE(view.text()->toPlainText(), QString("no program"));
+    }
+
+    // A view closed while a text is being made for it (the station closed
+    // just after an edit) frees everything without waiting on it for long.
+    void closedWhileATextIsMade()
+    {
+        QString nc;
+        for (int i = 0; i < 40000; ++i) nc += QString("N%1 G1 X%2\n").arg(i).arg(i);
+        auto view = std::make_unique<NcView>();
+        view->setProgram("G0 X0", std::vector<BlockSource>(1));
+        view->prepareProgram(nc);
+        view.reset();  // fails by a crash or a hang (the test's time-out)
     }
 };
 

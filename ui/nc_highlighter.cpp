@@ -25,10 +25,19 @@ NcHighlighter::NcHighlighter(QPlainTextEdit* view) : QObject(view), view_(view)
     // Scrolled, resized, or a new text (the view is read-only: any change is
     // a new program, which shows its first lines).
     connect(view_->verticalScrollBar(), &QScrollBar::valueChanged, this, &NcHighlighter::colourShownLines);
-    connect(view_->document(), &QTextDocument::contentsChange, this, [this] { coloured_.clear(); });
-    connect(view_->document(), &QTextDocument::contentsChanged, this, &NcHighlighter::colourShownLines,
-            Qt::QueuedConnection);
+    watch(view_->document());
     view_->viewport()->installEventFilter(this);
+}
+
+void NcHighlighter::watch(QTextDocument* doc)
+{
+    disconnect(changed_);
+    disconnect(changedLater_);
+    coloured_.clear();
+    changed_ = connect(doc, &QTextDocument::contentsChange, this, [this] { coloured_.clear(); });
+    changedLater_ = connect(doc, &QTextDocument::contentsChanged, this, &NcHighlighter::colourShownLines,
+                            Qt::QueuedConnection);
+    QMetaObject::invokeMethod(this, &NcHighlighter::colourShownLines, Qt::QueuedConnection);
 }
 
 void NcHighlighter::colourShownLines()

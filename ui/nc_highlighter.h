@@ -14,6 +14,7 @@
 #include <vector>
 
 class QPlainTextEdit;
+class QTextDocument;
 
 namespace taiwa::ui {
 
@@ -21,6 +22,8 @@ class NcHighlighter : public QObject {
     Q_OBJECT
 public:
     explicit NcHighlighter(QPlainTextEdit* view);
+    // Colours `doc`, the view's new document, from its first lines shown.
+    void watch(QTextDocument* doc);
     // Colours the lines shown now that are not yet.
     void colourShownLines();
     // Whether a line (block number) is coloured.
@@ -33,6 +36,7 @@ private:
     QList<QTextLayout::FormatRange> colours(const QString& text) const;
     QPlainTextEdit* view_;
     std::vector<bool> coloured_;  // by block number, for the text shown
+    QMetaObject::Connection changed_, changedLater_;
     QTextCharFormat g_, m_, axis_, seq_, other_, rem_;
 };
 

@@ -1,6 +1,7 @@
 // The NC view and its line <-> (step, move) mapping.
 #include "ui/nc_view.h"
 
+#include "ui/nc_document.h"
 #include "ui/nc_highlighter.h"
 
 #include <QComboBox>
@@ -11,12 +12,16 @@
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QTextBlock>
+#include <QTextDocument>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace taiwa::ui {
 
 NcView::NcView(QWidget* parent)
-    : QWidget(parent), dialect_(new QComboBox(this)), summary_(new QLabel(this)), text_(new QPlainTextEdit(this))
+    : QWidget(parent), dialect_(new QComboBox(this)), summary_(new QLabel(this)), text_(new QPlainTextEdit(this)),
+      maker_(std::make_unique<NcDocumentMaker>())
 {
     dialect_->setObjectName("nc.dialect");
     for (const std::string& d : dialectNames()) dialect_->addItem(QString::fromStdString(d));
@@ -46,6 +51,12 @@ NcView::NcView(QWidget* parent)
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
 }
 
+NcView::~NcView()
+{
+    text_->setDocument(nullptr);  // the view's own again, before the one shown is freed
+    maker_->dispose(std::move(document_));
+}
+
 QString lastChosenDialect()
 {
     const QString d = QSettings().value("nc/dialect", "linuxcnc").toString();
@@ -65,9 +76,7 @@ void NcView::setDialect(const QString& dialect)
 void NcView::setProgram(const QString& nc, const std::vector<BlockSource>& lines)
 {
     lines_ = lines;
-    selecting_ = true;
-    text_->setPlainText(nc);
-    selecting_ = false;
+    showText(nc);
     summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
 }
 
@@ -79,10 +88,28 @@ void NcView::setStale(bool stale)
 void NcView::setMessage(const QString& text)
 {
     lines_.clear();
-    selecting_ = true;
-    text_->setPlainText(text);
-    selecting_ = false;
+    showText(text);
     summary_->clear();
+}
+
+void NcView::prepareProgram(const QString& nc) { maker_->prepare(nc, text_->font()); }
+
+bool NcView::isPrepared(const QString& nc) const { return maker_->ready(nc); }
+
+int NcView::preparedShown() const { return maker_->taken(); }
+
+void NcView::showText(const QString& text)
+{
+    // The document swapped, not its text replaced: building a document of
+    // 20,000 lines is what took the time, and it is done on the maker's
+    // thread when prepared; the old one is freed there too.
+    auto doc = maker_->take(text, text_->font());
+    selecting_ = true;
+    text_->setDocument(doc.get());
+    highlighter_->watch(doc.get());
+    onCursorMoved();  // the band on the first line, as a new text puts it
+    selecting_ = false;
+    maker_->dispose(std::exchange(document_, std::move(doc)));
 }
 
 bool NcView::selectMove(int step, int move)

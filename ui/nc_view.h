@@ -7,15 +7,18 @@
 
 #include <QWidget>
 
+#include <memory>
 #include <vector>
 
 class QComboBox;
+class QTextDocument;
 class QLabel;
 class QPlainTextEdit;
 
 namespace taiwa::ui {
 
 class NcHighlighter;
+class NcDocumentMaker;
 
 // The dialect last chosen in any window (the settings' "nc/dialect"),
 // which a new job takes; linuxcnc until one is chosen.
@@ -26,14 +29,23 @@ class NcView : public QWidget {
     Q_OBJECT
 public:
     explicit NcView(QWidget* parent = nullptr);
+    ~NcView() override;
 
     // The dialect chosen in the combo box ("linuxcnc", "fanuc").
     QString dialect() const;
     // Shows `dialect` as chosen (the plan runner's, which the program is
     // posted in), without announcing it as a change.
     void setDialect(const QString& dialect);
-    // Shows a program; `lines` has one entry per line of `nc`.
+    // Shows a program; `lines` has one entry per line of `nc`. Its text is
+    // the one prepared, if it was (prepareProgram), else put in here.
     void setProgram(const QString& nc, const std::vector<BlockSource>& lines);
+    // Starts putting a program's text in a document on a thread of its own,
+    // for setProgram to take later (a large tape: tens of ms).
+    void prepareProgram(const QString& nc);
+    // Whether the text of `nc` is prepared and waits to be shown.
+    bool isPrepared(const QString& nc) const;
+    // How many programs were shown from a prepared text (tests).
+    int preparedShown() const;
     // Shows why there is no program (input errors, planning failure).
     void setMessage(const QString& text);
     // Greys the program while it is not the current job's (input errors).
@@ -58,10 +70,13 @@ signals:
 
 private:
     void onCursorMoved();
+    void showText(const QString& text);
     QComboBox* dialect_;
     QLabel* summary_;
     QPlainTextEdit* text_;
     NcHighlighter* highlighter_ = nullptr;
+    std::unique_ptr<NcDocumentMaker> maker_;
+    std::unique_ptr<QTextDocument> document_;  // the text shown (none: the view's own, empty)
     std::vector<BlockSource> lines_;
     bool selecting_ = false;
     int highlightedLine_ = -1;

@@ -367,6 +367,7 @@ void StationWindow::wire()
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
                 if (plan) {
                     later_ = Later{plan, nc, lines};
+                    nc_->prepareProgram(nc);  // its text made on another core while the 3-D view draws
                     catchUpAfterFrame_ = preview_ && preview_->drawsFrames();
                     if (catchUpAfterFrame_) catchUpTimer_->start(100);
                     else scheduleCatchUp();
