@@ -1,26 +1,24 @@
-// The station window: layout and wiring only; the work is done by the
-// document, plan runner, forms, panels and file actions.
+// The station window: its construction, the edits it answers (units added,
+// selected, edited; a plan shown, the NC text caught up after the 3-D
+// view), title and close. Panels and menus: station_layout.cpp; which
+// signal reaches which view: station_wiring.cpp.
 #include "ui/station_window.h"
-#include "ui/core_messages.h"
-#include "ui/core_texts.h"
-#include "viz/scene.h"
 
 #include "machine/machine.h"
-
 #include "modules/registry.h"
-
-#include <QCoreApplication>
-
 #include "ui/autosave.h"
+#include "ui/core_messages.h"
+#include "ui/core_texts.h"
 #include "ui/dxf_import_dialog.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/job_properties.h"
-#include "ui/language.h"
 #include "ui/module_palette.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
+#include "ui/section_bar.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
 #include "ui/technology_dialog.h"
@@ -28,34 +26,21 @@
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
 #include "ui/verification_panel.h"
+#include "viz/scene.h"
 
-#include "ui/preview_widget.h"
-#include "ui/section_bar.h"
-
-#include <QActionGroup>
 #include <QCloseEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
-#include <QTimer>
-
-#include <algorithm>
-#include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
-#include <QMenuBar>
-#include <QMessageBox>
-#include <QOpenGLContext>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QScreen>
 #include <QSettings>
-#include <QLocale>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QTabWidget>
-#include <QUndoStack>
-#include <QVBoxLayout>
+#include <QTimer>
+
+#include <algorithm>
 
 namespace taiwa::ui {
 
@@ -95,359 +80,6 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     if (!files_->offerRecovery(jobPath) && !(jobPath.isEmpty() ? files_->newJob() : files_->openPath(jobPath)))
         files_->newJob();
     updateTitle();
-}
-
-QWidget* StationWindow::buildLeft()
-{
-    auto* left = new QWidget;
-    auto* box = new QVBoxLayout(left);
-    auto* paletteGroup = new QGroupBox(tr("Modules"));
-    (new QVBoxLayout(paletteGroup))->addWidget(palette_);
-    auto* unitsGroup = new QGroupBox(tr("Machining units, in order"));
-    (new QVBoxLayout(unitsGroup))->addWidget(units_);
-    auto* jobGroup = new QGroupBox(tr("Job"));
-    auto* jobBox = new QVBoxLayout(jobGroup);
-    jobBox->addWidget(jobProps_);
-    auto* dialogs = new QHBoxLayout;
-    auto* technology = new QPushButton(tr("Technology data…"));
-    technology->setObjectName("job.technology");
-    auto* tools = new QPushButton(tr("Tool library…"));
-    tools->setObjectName("job.tools");
-    dialogs->addWidget(technology);
-    dialogs->addWidget(tools);
-    jobBox->addLayout(dialogs);
-    connect(technology, &QPushButton::clicked, this, &StationWindow::editTechnology);
-    connect(tools, &QPushButton::clicked, this, &StationWindow::showToolLibrary);
-    box->addWidget(paletteGroup);
-    box->addWidget(unitsGroup, 1);
-    box->addWidget(jobGroup);
-    // On a low screen (720 pixels) the column scrolls rather than push the
-    // window off the screen.
-    auto* scroll = new QScrollArea;
-    scroll->setObjectName("station.left");
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setWidget(left);
-    scroll->setMinimumWidth(left->minimumSizeHint().width() + 16);  // and its scroll bar
-    return scroll;
-}
-
-QWidget* StationWindow::buildCentre()
-{
-    auto* empty = new QLabel(tr("Pick a module on the left to add a machining unit."));
-    empty->setAlignment(Qt::AlignCenter);
-    empty->setWordWrap(true);
-    forms_->addWidget(empty);
-    for (const ModuleKind* kind : moduleKinds()) forms_->addWidget(unitForms_.at(kind->name()));
-    unitMessages_->setObjectName("unit.messages");
-    unitMessages_->setStyleSheet("color: #a00000;");
-    unitMessages_->setWordWrap(true);
-    auto* formGroup = new QGroupBox(tr("Unit"));
-    auto* scroll = new QScrollArea;
-    scroll->setObjectName("unit.scroll");
-    scroll->setMinimumWidth(300);  // a form's labels and fields stay readable when the window is narrow
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setWidget(forms_);
-    auto* box = new QVBoxLayout(formGroup);
-    box->addWidget(scroll, 1);
-    box->addWidget(unitMessages_);
-    return formGroup;
-}
-
-QWidget* StationWindow::buildRight()
-{
-    auto* right = new QSplitter(Qt::Vertical);
-    // Over the views while they show the last valid plan and the job has errors.
-    stale_ = new QLabel;
-    stale_->setObjectName("output.stale");
-    stale_->setWordWrap(true);
-    stale_->setStyleSheet("background: #fff3c4; color: #5a4500; padding: 4px; border: 1px solid #e0c060;");
-    stale_->hide();
-    // The 3-D view, and beside it (a milling job's) figure elements.
-    views_ = new QTabWidget;
-    views_->setObjectName("station.views");
-    views_->setDocumentMode(true);
-    if (QOpenGLContext().create()) {
-        preview_ = new PreviewWidget;
-        preview_->setObjectName("preview");
-        preview_->setMinimumSize(320, 240);
-        section_ = new SectionBar;
-        section_->setObjectName("section");
-        auto* view = new QWidget;
-        auto* box = new QVBoxLayout(view);
-        box->setContentsMargins(0, 0, 0, 0);
-        box->setSpacing(2);
-        box->addWidget(preview_, 1);
-        box->addWidget(section_);
-        views_->addTab(view, tr("3-D view"));
-    } else {  // e.g. a remote display or the offscreen platform: everything else still works
-        auto* noGl = new QLabel(tr("No 3-D preview: this display has no OpenGL."));
-        noGl->setObjectName("preview.unavailable");
-        noGl->setAlignment(Qt::AlignCenter);
-        noGl->setFrameShape(QFrame::StyledPanel);
-        views_->addTab(noGl, tr("3-D view"));
-    }
-    figure_ = new FigurePanel(doc_);
-    figure_->setObjectName("figure");
-    views_->addTab(figure_, tr("Figure"));
-    right->addWidget(views_);
-    auto* lower = new QSplitter(Qt::Horizontal);
-    lower->addWidget(steps_);
-    // The tape over the verification's findings.
-    auto* tape = new QSplitter(Qt::Vertical);
-    tape->addWidget(nc_);
-    tape->addWidget(verify_);
-    tape->setStretchFactor(0, 3);
-    tape->setStretchFactor(1, 1);
-    lower->addWidget(tape);
-    // The step list's columns (No., unit, step, tool, S, F, depths, time)
-    // fit without scrolling sideways on a 1600-pixel screen.
-    lower->setStretchFactor(0, 13);
-    lower->setStretchFactor(1, 7);
-    right->addWidget(lower);
-    right->setSizes({500, 440});
-    auto* box = new QWidget;
-    auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(stale_);
-    layout->addWidget(right, 1);
-    return box;
-}
-
-void StationWindow::buildMenus()
-{
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&New"), QKeySequence::New, files_, &FileActions::newJob);
-    file->addAction(tr("&Open…"), QKeySequence::Open, files_, &FileActions::open);
-    QMenu* recent = file->addMenu(tr("Open &recent"));
-    connect(recent, &QMenu::aboutToShow, this, [this, recent] { files_->fillRecentMenu(recent); });
-    file->addAction(tr("&Import turned part (STEP)…"), files_, &FileActions::importStep);
-    file->addAction(tr("Import &DXF contours…"), this, &StationWindow::importDxf)->setObjectName("action.importDxf");
-    file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
-    file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);
-    file->addSeparator();
-    file->addAction(tr("&Export tape and sheet…"), QKeySequence(tr("Ctrl+E")), files_, &FileActions::exportJob);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
-    edit->addAction(undo);
-    edit->addAction(redo);
-
-    QMenu* job = menuBar()->addMenu(tr("&Job"));
-    for (const ModuleKind* kind : moduleKinds()) {
-        const QString name = QString::fromUtf8(kind->name());
-        job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), this,
-                       [this, name] { addUnit(name); });
-    }
-    job->addSeparator();
-    job->addAction(tr("&Technology data…"), QKeySequence(tr("Ctrl+T")), this, &StationWindow::editTechnology);
-    job->addAction(tr("Tool &library…"), QKeySequence(tr("Ctrl+L")), this, &StationWindow::showToolLibrary);
-
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    QMenu* language = view->addMenu(tr("&Language"));
-    auto* group = new QActionGroup(this);
-    for (const auto& [code, name] : availableLanguages()) {
-        QAction* a = language->addAction(name);
-        a->setCheckable(true);
-        a->setChecked(code == savedLanguage());
-        group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code = code] {
-            saveLanguage(code);
-            statusBar()->showMessage(tr("The language changes when Taiwa is started again."), 8000);
-        });
-    }
-    // The grid the 3-D view simulates the stock on: finer shows more, takes
-    // longer after each change. Kept across sessions.
-    QMenu* grid = view->addMenu(tr("Stock &grid"));
-    grid->setObjectName("menu.stockGrid");
-    auto* grids = new QActionGroup(this);
-    const int saved = std::clamp(QSettings().value("preview/stockGrid", 1).toInt(), 0, int(std::size(sim::kStockGrids)) - 1);
-    runner_->setStockGrid(sim::kStockGrids[saved]);
-    const QString names[] = {tr("Fine: %1 mm, up to %2 cells"), tr("Standard: %1 mm, up to %2 cells"),
-                             tr("Coarse: %1 mm, up to %2 cells")};
-    for (int k = 0; k < int(std::size(sim::kStockGrids)); ++k) {
-        const sim::StockGrid g = sim::kStockGrids[k];
-        QAction* a = grid->addAction(names[k].arg(g.finest).arg(QLocale().toString(qulonglong(g.maxCells))));
-        a->setObjectName(QStringLiteral("stockGrid.%1").arg(k));
-        a->setCheckable(true);
-        a->setChecked(k == saved);
-        grids->addAction(a);
-        connect(a, &QAction::triggered, this, [this, k, g] {
-            QSettings().setValue("preview/stockGrid", k);
-            runner_->setStockGrid(g);
-            // What this job's stock gets: the grid is coarser on a stock too large for its cells.
-            const double cell = sim::HeightField::cellSizeFor(doc_->job().stock, g.maxCells, g.finest);
-            statusBar()->showMessage(tr("Stock grid: %1 mm cells on this stock").arg(cell, 0, 'g', 3), 8000);
-        });
-    }
-}
-
-void StationWindow::wire()
-{
-    connect(doc_, &JobDocument::changed, this, &StationWindow::onDocumentChanged);
-    connect(doc_, &JobDocument::selectionRequested, units_, &UnitListPanel::selectUnit);
-    connect(doc_, &JobDocument::modifiedChanged, this, &StationWindow::updateTitle);
-    connect(palette_, &ModulePalette::addModule, this, &StationWindow::addUnit);
-    connect(units_, &UnitListPanel::currentUnitChanged, this, &StationWindow::onUnitSelected);
-    for (const auto& [name, f] : unitForms_) {
-        connect(f, &UnitForm::edited, this,
-                [this, form = f](int field, std::optional<double> v) { onFieldEdited(form, field, v); });
-        connect(f, &UnitForm::textEdited, this, [this, form = f](int field, const QString& typed) {
-            const int u = units_->currentUnit();
-            if (u < 0 || form != currentForm()) return;
-            const FieldSpec& spec = form->fields()[static_cast<std::size_t>(field)];
-            Job j = doc_->job();
-            spec.setText(j.units[static_cast<std::size_t>(u)], typed);
-            doc_->edit(j, tr("Edit %1 of unit %2").arg(spec.label).arg(u + 1), QStringLiteral("%1:%2").arg(u).arg(spec.key));
-        });
-        connect(f, &UnitForm::fieldLeft, doc_, &JobDocument::breakMerge);
-        // Enter in a unit's last field: the next unit's first field, or after
-        // the last unit the step list.
-        connect(f, &UnitForm::lastFieldDone, this, [this] {
-            const int next = units_->currentUnit() + 1;
-            if (next < static_cast<int>(doc_->job().units.size())) {
-                units_->selectUnit(next);
-                if (UnitForm* form = currentForm()) form->focusFirstField();
-            } else {
-                steps_->table()->setFocus(Qt::OtherFocusReason);
-            }
-        });
-        connect(f, &UnitForm::unitEdited, this, [this](const ModuleInput& after, const QString& text, const QString& key) {
-            const int u = units_->currentUnit();
-            if (u < 0) return;
-            Job j = doc_->job();
-            j.units[static_cast<std::size_t>(u)].module = after;
-            // A table cell is committed whole: each commit is an undo step of
-            // its own, kept as typing so that the open cell editor stays.
-            doc_->edit(j, tr("%1 of unit %2").arg(text).arg(u + 1), key.isEmpty() ? QString() : QStringLiteral("%1:%2").arg(u).arg(key));
-            doc_->breakMerge();
-        });
-        connect(f, &UnitForm::nameEdited, this, [this](const QString& typed) {
-            const int u = units_->currentUnit();
-            if (u < 0) return;
-            Job j = doc_->job();
-            j.units[static_cast<std::size_t>(u)].name = typed.toStdString();
-            doc_->edit(j, tr("Rename unit %1").arg(u + 1), QStringLiteral("%1:name").arg(u));
-        });
-    }
-    connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
-        diagnostics_ = ds;
-        showDiagnostics();
-        showStale();
-    });
-    catchUpTimer_ = new QTimer(this);
-    catchUpTimer_->setSingleShot(true);
-    connect(catchUpTimer_, &QTimer::timeout, this, &StationWindow::catchUp);
-    // An edit: the step list at once; the NC text of an older plan still put
-    // off is not wanted any more.
-    connect(runner_, &PlanRunner::stepsPlanned, this, [this](std::shared_ptr<const Plan> plan) {
-        catchUpTimer_->stop();
-        later_.reset();
-        catchUpAfterFrame_ = false;
-        steps_->setPlan(plan);
-    });
-    // The full plan: the 3-D view first, the NC text and the step list's
-    // times after its frame is on screen (catchUp; the view's frame request
-    // waits for the platform's next update, which a 0 ms timer overtook), as
-    // soon as the GUI is free when the last catch-up fit in a frame (33 ms);
-    // for a job whose tape takes the GUI longer, once the typing pauses for
-    // twice that long (at most 1 s), so that keystrokes are not kept waiting
-    // for a tape about to be replaced. A view that draws no frame (hidden
-    // behind the figure tab, minimised) holds nothing up; one whose frame is
-    // lost holds it up for 100 ms at most.
-    connect(runner_, &PlanRunner::programReady, this,
-            [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
-                if (plan) {
-                    later_ = Later{plan, nc, lines};
-                    nc_->prepareProgram(nc);  // its text made on another core while the 3-D view draws
-                    catchUpAfterFrame_ = preview_ && preview_->drawsFrames();
-                    if (catchUpAfterFrame_) catchUpTimer_->start(100);
-                    else scheduleCatchUp();
-                } else if (!hasErrors(diagnostics_)) {
-                    nc_->setMessage(nc);  // with input errors the last program stays, marked stale
-                }
-                onProgram(plan);
-                showStale();
-            });
-    connect(runner_, &PlanRunner::flushed, this, &StationWindow::catchUp);
-    if (preview_)
-        connect(preview_, &PreviewWidget::frameShown, this, [this] {
-            if (!catchUpAfterFrame_) return;
-            catchUpAfterFrame_ = false;
-            scheduleCatchUp();
-        });
-    // One dialect, the job's (docs/job-format.md `dialect`): the chooser
-    // shows it, the program on view is posted in it, the export offers it.
-    // Choosing another is an edit of the job (undoable); a new job takes the
-    // one last chosen.
-    connect(nc_, &NcView::dialectChanged, this, [this](const QString& d) {
-        rememberDialect(d);
-        Job after = doc_->job();
-        after.dialect = d.toStdString();
-        doc_->edit(after, tr("Dialect %1").arg(d));
-    });
-    connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
-    // The block played in the tape: its line, or (a move the tape writes
-    // with the one before it) the last line written up to it.
-    connect(steps_, &StepPanel::playheadMoved, nc_, [this](int step, int move) {
-        for (int m = move; step >= 0 && m >= 0; --m)
-            if (nc_->selectMove(step, m)) break;
-    });
-    // A finding chosen: its step in the list, its block in the tape, its
-    // point marked in the 3-D view.
-    connect(verify_, &VerificationPanel::findingSelected, this, [this](int step, int move, Point3 where) {
-        if (step >= 0) steps_->selectStep(step);
-        if (step >= 0 && move >= 0) nc_->selectMove(step, move);
-        else if (step >= 0) nc_->showStep(step);
-        if (!preview_) return;
-        preview_->highlightMove(step, move);
-        // A lathe finding's X is a diameter; the lathe view has the spindle
-        // along its X and the radius up, in the section's plane.
-        const Plan* shown = preview_->scene().plan();
-        preview_->markPoint(shown && shown->mmJob.bar ? Point3{where.z, 0.0, where.x / 2.0} : where);
-    });
-    // S or F typed in the step list: the unit's speed or feed for steps of
-    // that kind, an edit of the job (undoable); an emptied cell removes it.
-    connect(steps_->table(), &StepTable::cuttingEdited, this,
-            [this](int u, const QString& key, bool speed, std::optional<double> value) {
-                Job j = doc_->job();
-                if (u < 0 || static_cast<std::size_t>(u) >= j.units.size()) return;
-                auto& cutting = j.units[static_cast<std::size_t>(u)].cutting;
-                CuttingOverride& o = cutting[key.toStdString()];
-                (speed ? o.speed : o.feed) = value;
-                if (o.empty()) cutting.erase(key.toStdString());
-                doc_->edit(j, (speed ? tr("Spindle speed of %1, unit %2") : tr("Feed of %1, unit %2")).arg(key).arg(u + 1));
-            });
-    connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
-    connect(units_, &UnitListPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
-    if (!preview_) return;
-    runner_->setSimulateStock(true);
-    connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);
-    preview_->setShowStock(steps_->stockShown());
-    preview_->setStockBefore(steps_->stockBefore());
-    connect(steps_, &StepPanel::showStockToggled, preview_, &PreviewWidget::setShowStock);
-    connect(steps_, &StepPanel::stockBeforeToggled, preview_, &PreviewWidget::setStockBefore);
-    connect(steps_, &StepPanel::viewRequested, preview_, [this](ViewButton v) {
-        preview_->setView(v == ViewButton::Top     ? viz::ViewPreset::Top
-                          : v == ViewButton::Front ? viz::ViewPreset::Front
-                                                   : viz::ViewPreset::Iso);
-    });
-    connect(nc_, &NcView::moveSelected, preview_, &PreviewWidget::highlightMove);
-    // Play block by block: the material coming off in the preview, the
-    // block in the tape.
-    connect(steps_, &StepPanel::playheadMoved, preview_, &PreviewWidget::setPlayhead);
-    connect(preview_, &PreviewWidget::moveClicked, nc_, &NcView::selectMove);
-    connect(preview_, &PreviewWidget::moveClicked, preview_, &PreviewWidget::highlightMove);
-    connect(section_, &SectionBar::sectionChanged, preview_, &PreviewWidget::setSection);
-    connect(verify_, &VerificationPanel::colourMapChanged, preview_, &PreviewWidget::setDeviationMap);
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }

@@ -781,10 +781,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::StationWindow</name>
         <message>
-            <source>Tool library: %1 (using the built-in library)</source>
-            <translation>工具ライブラリ: %1(内蔵ライブラリを使用)</translation>
-        </message>
-        <message>
             <source>Modules</source>
             <translation>モジュール</translation>
         </message>
@@ -941,28 +937,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>素材グリッド: この素材では %1 mm のセル</translation>
         </message>
         <message>
-            <source>Edit %1 of unit %2</source>
-            <translation>ユニット %2 の %1 を編集</translation>
-        </message>
-        <message>
-            <source>%1 of unit %2</source>
-            <translation>ユニット %2 の %1</translation>
-        </message>
-        <message>
-            <source>Rename unit %1</source>
-            <translation>ユニット %1 の名前を変更</translation>
-        </message>
-        <message>
-            <source>Dialect %1</source>
-            <translation>NC 形式 %1</translation>
-        </message>
-        <message>
-            <source>Spindle speed of %1, unit %2</source>
-            <translation>%1の主軸回転数 (ユニット %2)</translation>
-        </message>
-        <message>
-            <source>Feed of %1, unit %2</source>
-            <translation>%1の送り (ユニット %2)</translation>
+            <source>Tool library: %1 (using the built-in library)</source>
+            <translation>工具ライブラリ: %1(内蔵ライブラリを使用)</translation>
         </message>
         <message>
             <source>DXF contours become figure elements, which a lathe job does not use.</source>
@@ -971,6 +947,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Import DXF contours</source>
             <translation>DXF 輪郭のインポート</translation>
+        </message>
+        <message>
+            <source>Edit %1 of unit %2</source>
+            <translation>ユニット %2 の %1 を編集</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -999,6 +979,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>
                 <numerusform>%1 は他の %n 個のウィンドウでも開かれています: ここで保存するときは、他のウィンドウが保存した内容を上書きする前に確認します。</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>%1 of unit %2</source>
+            <translation>ユニット %2 の %1</translation>
+        </message>
+        <message>
+            <source>Rename unit %1</source>
+            <translation>ユニット %1 の名前を変更</translation>
+        </message>
+        <message>
+            <source>Dialect %1</source>
+            <translation>NC 形式 %1</translation>
+        </message>
+        <message>
+            <source>Spindle speed of %1, unit %2</source>
+            <translation>%1の主軸回転数 (ユニット %2)</translation>
+        </message>
+        <message>
+            <source>Feed of %1, unit %2</source>
+            <translation>%1の送り (ユニット %2)</translation>
         </message>
     </context>
     <context>

@@ -781,10 +781,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::StationWindow</name>
         <message>
-            <source>Tool library: %1 (using the built-in library)</source>
-            <translation>刀具库:%1(使用内置刀具库)</translation>
-        </message>
-        <message>
             <source>Modules</source>
             <translation>模块</translation>
         </message>
@@ -941,28 +937,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>毛坯网格:此毛坯上为 %1 mm 单元格</translation>
         </message>
         <message>
-            <source>Edit %1 of unit %2</source>
-            <translation>编辑单元 %2 的 %1</translation>
-        </message>
-        <message>
-            <source>%1 of unit %2</source>
-            <translation>单元 %2 的 %1</translation>
-        </message>
-        <message>
-            <source>Rename unit %1</source>
-            <translation>重命名单元 %1</translation>
-        </message>
-        <message>
-            <source>Dialect %1</source>
-            <translation>数控系统格式 %1</translation>
-        </message>
-        <message>
-            <source>Spindle speed of %1, unit %2</source>
-            <translation>%1 的主轴转速（单元 %2）</translation>
-        </message>
-        <message>
-            <source>Feed of %1, unit %2</source>
-            <translation>%1 的进给（单元 %2）</translation>
+            <source>Tool library: %1 (using the built-in library)</source>
+            <translation>刀具库:%1(使用内置刀具库)</translation>
         </message>
         <message>
             <source>DXF contours become figure elements, which a lathe job does not use.</source>
@@ -971,6 +947,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Import DXF contours</source>
             <translation>导入 DXF 轮廓</translation>
+        </message>
+        <message>
+            <source>Edit %1 of unit %2</source>
+            <translation>编辑单元 %2 的 %1</translation>
         </message>
         <message>
             <source>Not up to date: the job has input errors. The 3-D view and the NC program show the last valid job. First error: %1</source>
@@ -999,6 +979,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>
                 <numerusform>%1 也在其他 %n 个窗口中打开:在此保存时,覆盖其他窗口保存的内容前会先询问。</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>%1 of unit %2</source>
+            <translation>单元 %2 的 %1</translation>
+        </message>
+        <message>
+            <source>Rename unit %1</source>
+            <translation>重命名单元 %1</translation>
+        </message>
+        <message>
+            <source>Dialect %1</source>
+            <translation>数控系统格式 %1</translation>
+        </message>
+        <message>
+            <source>Spindle speed of %1, unit %2</source>
+            <translation>%1 的主轴转速（单元 %2）</translation>
+        </message>
+        <message>
+            <source>Feed of %1, unit %2</source>
+            <translation>%1 的进给（单元 %2）</translation>
         </message>
     </context>
     <context>
