@@ -2589,90 +2589,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>中心</translation>
         </message>
         <message>
-            <source>a point</source>
-            <translation>点</translation>
-        </message>
-        <message>
-            <source>a line</source>
-            <translation>直線</translation>
-        </message>
-        <message>
-            <source>a circle</source>
-            <translation>円</translation>
-        </message>
-        <message>
-            <source>a contour</source>
-            <translation>輪郭</translation>
-        </message>
-        <message>
-            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
-            <translation>XLARGE、XSMALL、YLARGE または YSMALL</translation>
-        </message>
-        <message>
-            <source>the end of the line</source>
-            <translation>行末</translation>
-        </message>
-        <message>
-            <source>the end of the text</source>
-            <translation>テキストの終わり</translation>
-        </message>
-        <message>
-            <source>the character '{}'</source>
-            <translation>文字 '{}'</translation>
-        </message>
-        <message>
-            <source>expected {} after {}, found {}</source>
-            <translation>{1} の後には {0} が必要ですが、{2} があります</translation>
-        </message>
-        <message>
-            <source>LEFT or RIGHT</source>
-            <translation>LEFT または RIGHT</translation>
-        </message>
-        <message>
-            <source>the number {} is out of range (at most 1000000 either way)</source>
-            <translation>数値 {} が範囲外です (正負とも最大 1000000)</translation>
-        </message>
-        <message>
-            <source>{} must be greater than 0, found {}</source>
-            <translation>{}は 0 より大きくなければなりませんが、{}です</translation>
-        </message>
-        <message>
-            <source>in {}, {} is not defined: an element must be defined before it is used</source>
-            <translation>{0} で、{1} は定義されていません: 要素は使う前に定義してください</translation>
-        </message>
-        <message>
-            <source>in {}, {} is {} where {} is needed</source>
-            <translation>{0} で、{1} は{2}ですが、ここには{3}が必要です</translation>
-        </message>
-        <message>
-            <source>a line or circle name</source>
-            <translation>直線名または円名</translation>
-        </message>
-        <message>
-            <source>in {}, {} is {} where a line or a circle is needed</source>
-            <translation>{0} で、{1} は{2}ですが、ここには直線か円が必要です</translation>
-        </message>
-        <message>
-            <source>expected an element name at the start of a statement, found {}</source>
-            <translation>文の始めには要素名が必要ですが、{} があります</translation>
-        </message>
-        <message>
-            <source>'{}' is a word of the language and cannot name an element</source>
-            <translation>'{}' は言語の予約語なので要素名にできません</translation>
-        </message>
-        <message>
-            <source>{} is already defined on line {}</source>
-            <translation>{} は {} 行目ですでに定義されています</translation>
-        </message>
-        <message>
-            <source>POINT, LINE, CIRCLE or CONTOUR</source>
-            <translation>POINT、LINE、CIRCLE または CONTOUR</translation>
-        </message>
-        <message>
-            <source>the end of the statement</source>
-            <translation>文の終わり</translation>
-        </message>
-        <message>
             <source>a number</source>
             <translation>数値</translation>
         </message>
@@ -2741,6 +2657,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>半径</translation>
         </message>
         <message>
+            <source>in {}, {} is not defined: an element must be defined before it is used</source>
+            <translation>{0} で、{1} は定義されていません: 要素は使う前に定義してください</translation>
+        </message>
+        <message>
             <source>a line or circle name, CLW or CCLW</source>
             <translation>直線名または円名、CLW または CCLW</translation>
         </message>
@@ -2763,6 +2683,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>in {}, {} is {} where a circle is needed</source>
             <translation>{0} で、{1} は{2}ですが、ここには円が必要です</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a line or a circle is needed</source>
+            <translation>{0} で、{1} は{2}ですが、ここには直線か円が必要です</translation>
         </message>
         <message>
             <source>in {}, {} is a circle: write CLW or CCLW before it</source>
@@ -2811,6 +2735,82 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>in {}, {} follows itself: the same element twice in a row (the last element joins the first)</source>
             <translation>{0} で、{1} が続けて 2 回あります: 同じ要素が連続しています (最後の要素は最初の要素につながります)</translation>
+        </message>
+        <message>
+            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
+            <translation>XLARGE、XSMALL、YLARGE または YSMALL</translation>
+        </message>
+        <message>
+            <source>the end of the line</source>
+            <translation>行末</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>テキストの終わり</translation>
+        </message>
+        <message>
+            <source>the character '{}'</source>
+            <translation>文字 '{}'</translation>
+        </message>
+        <message>
+            <source>expected {} after {}, found {}</source>
+            <translation>{1} の後には {0} が必要ですが、{2} があります</translation>
+        </message>
+        <message>
+            <source>LEFT or RIGHT</source>
+            <translation>LEFT または RIGHT</translation>
+        </message>
+        <message>
+            <source>the number {} is out of range (at most 1000000 either way)</source>
+            <translation>数値 {} が範囲外です (正負とも最大 1000000)</translation>
+        </message>
+        <message>
+            <source>{} must be greater than 0, found {}</source>
+            <translation>{}は 0 より大きくなければなりませんが、{}です</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where {} is needed</source>
+            <translation>{0} で、{1} は{2}ですが、ここには{3}が必要です</translation>
+        </message>
+        <message>
+            <source>a line or circle name</source>
+            <translation>直線名または円名</translation>
+        </message>
+        <message>
+            <source>expected an element name at the start of a statement, found {}</source>
+            <translation>文の始めには要素名が必要ですが、{} があります</translation>
+        </message>
+        <message>
+            <source>'{}' is a word of the language and cannot name an element</source>
+            <translation>'{}' は言語の予約語なので要素名にできません</translation>
+        </message>
+        <message>
+            <source>{} is already defined on line {}</source>
+            <translation>{} は {} 行目ですでに定義されています</translation>
+        </message>
+        <message>
+            <source>POINT, LINE, CIRCLE or CONTOUR</source>
+            <translation>POINT、LINE、CIRCLE または CONTOUR</translation>
+        </message>
+        <message>
+            <source>the end of the statement</source>
+            <translation>文の終わり</translation>
+        </message>
+        <message>
+            <source>a point</source>
+            <translation>点</translation>
+        </message>
+        <message>
+            <source>a line</source>
+            <translation>直線</translation>
+        </message>
+        <message>
+            <source>a circle</source>
+            <translation>円</translation>
+        </message>
+        <message>
+            <source>a contour</source>
+            <translation>輪郭</translation>
         </message>
         <message>
             <source>cannot write {}: {}</source>

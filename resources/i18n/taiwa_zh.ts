@@ -2589,90 +2589,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>圆心</translation>
         </message>
         <message>
-            <source>a point</source>
-            <translation>点</translation>
-        </message>
-        <message>
-            <source>a line</source>
-            <translation>直线</translation>
-        </message>
-        <message>
-            <source>a circle</source>
-            <translation>圆</translation>
-        </message>
-        <message>
-            <source>a contour</source>
-            <translation>轮廓</translation>
-        </message>
-        <message>
-            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
-            <translation>XLARGE、XSMALL、YLARGE 或 YSMALL</translation>
-        </message>
-        <message>
-            <source>the end of the line</source>
-            <translation>行尾</translation>
-        </message>
-        <message>
-            <source>the end of the text</source>
-            <translation>文本结尾</translation>
-        </message>
-        <message>
-            <source>the character '{}'</source>
-            <translation>字符 '{}'</translation>
-        </message>
-        <message>
-            <source>expected {} after {}, found {}</source>
-            <translation>{1} 之后应为{0}，实际为{2}</translation>
-        </message>
-        <message>
-            <source>LEFT or RIGHT</source>
-            <translation>LEFT 或 RIGHT</translation>
-        </message>
-        <message>
-            <source>the number {} is out of range (at most 1000000 either way)</source>
-            <translation>数字 {} 超出范围（正负最多 1000000）</translation>
-        </message>
-        <message>
-            <source>{} must be greater than 0, found {}</source>
-            <translation>{}必须大于 0，实际为 {}</translation>
-        </message>
-        <message>
-            <source>in {}, {} is not defined: an element must be defined before it is used</source>
-            <translation>在 {0} 中，{1} 未定义：元素必须先定义后使用</translation>
-        </message>
-        <message>
-            <source>in {}, {} is {} where {} is needed</source>
-            <translation>在 {0} 中，{1} 是{2}，而此处需要{3}</translation>
-        </message>
-        <message>
-            <source>a line or circle name</source>
-            <translation>直线名或圆名</translation>
-        </message>
-        <message>
-            <source>in {}, {} is {} where a line or a circle is needed</source>
-            <translation>在 {0} 中，{1} 是{2}，而此处需要直线或圆</translation>
-        </message>
-        <message>
-            <source>expected an element name at the start of a statement, found {}</source>
-            <translation>语句开头应为元素名，实际为{}</translation>
-        </message>
-        <message>
-            <source>'{}' is a word of the language and cannot name an element</source>
-            <translation>'{}' 是语言的保留字，不能用作元素名</translation>
-        </message>
-        <message>
-            <source>{} is already defined on line {}</source>
-            <translation>{} 已在第 {} 行定义</translation>
-        </message>
-        <message>
-            <source>POINT, LINE, CIRCLE or CONTOUR</source>
-            <translation>POINT、LINE、CIRCLE 或 CONTOUR</translation>
-        </message>
-        <message>
-            <source>the end of the statement</source>
-            <translation>语句结尾</translation>
-        </message>
-        <message>
             <source>a number</source>
             <translation>数字</translation>
         </message>
@@ -2741,6 +2657,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>半径</translation>
         </message>
         <message>
+            <source>in {}, {} is not defined: an element must be defined before it is used</source>
+            <translation>在 {0} 中，{1} 未定义：元素必须先定义后使用</translation>
+        </message>
+        <message>
             <source>a line or circle name, CLW or CCLW</source>
             <translation>直线名或圆名、CLW 或 CCLW</translation>
         </message>
@@ -2763,6 +2683,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>in {}, {} is {} where a circle is needed</source>
             <translation>在 {0} 中，{1} 是{2}，而此处需要圆</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where a line or a circle is needed</source>
+            <translation>在 {0} 中，{1} 是{2}，而此处需要直线或圆</translation>
         </message>
         <message>
             <source>in {}, {} is a circle: write CLW or CCLW before it</source>
@@ -2811,6 +2735,82 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>in {}, {} follows itself: the same element twice in a row (the last element joins the first)</source>
             <translation>在 {0} 中，{1} 紧跟自身：同一元素连续出现两次（最后一个元素与第一个相接）</translation>
+        </message>
+        <message>
+            <source>XLARGE, XSMALL, YLARGE or YSMALL</source>
+            <translation>XLARGE、XSMALL、YLARGE 或 YSMALL</translation>
+        </message>
+        <message>
+            <source>the end of the line</source>
+            <translation>行尾</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>文本结尾</translation>
+        </message>
+        <message>
+            <source>the character '{}'</source>
+            <translation>字符 '{}'</translation>
+        </message>
+        <message>
+            <source>expected {} after {}, found {}</source>
+            <translation>{1} 之后应为{0}，实际为{2}</translation>
+        </message>
+        <message>
+            <source>LEFT or RIGHT</source>
+            <translation>LEFT 或 RIGHT</translation>
+        </message>
+        <message>
+            <source>the number {} is out of range (at most 1000000 either way)</source>
+            <translation>数字 {} 超出范围（正负最多 1000000）</translation>
+        </message>
+        <message>
+            <source>{} must be greater than 0, found {}</source>
+            <translation>{}必须大于 0，实际为 {}</translation>
+        </message>
+        <message>
+            <source>in {}, {} is {} where {} is needed</source>
+            <translation>在 {0} 中，{1} 是{2}，而此处需要{3}</translation>
+        </message>
+        <message>
+            <source>a line or circle name</source>
+            <translation>直线名或圆名</translation>
+        </message>
+        <message>
+            <source>expected an element name at the start of a statement, found {}</source>
+            <translation>语句开头应为元素名，实际为{}</translation>
+        </message>
+        <message>
+            <source>'{}' is a word of the language and cannot name an element</source>
+            <translation>'{}' 是语言的保留字，不能用作元素名</translation>
+        </message>
+        <message>
+            <source>{} is already defined on line {}</source>
+            <translation>{} 已在第 {} 行定义</translation>
+        </message>
+        <message>
+            <source>POINT, LINE, CIRCLE or CONTOUR</source>
+            <translation>POINT、LINE、CIRCLE 或 CONTOUR</translation>
+        </message>
+        <message>
+            <source>the end of the statement</source>
+            <translation>语句结尾</translation>
+        </message>
+        <message>
+            <source>a point</source>
+            <translation>点</translation>
+        </message>
+        <message>
+            <source>a line</source>
+            <translation>直线</translation>
+        </message>
+        <message>
+            <source>a circle</source>
+            <translation>圆</translation>
+        </message>
+        <message>
+            <source>a contour</source>
+            <translation>轮廓</translation>
         </message>
         <message>
             <source>cannot write {}: {}</source>
