@@ -4161,6 +4161,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>取り代の行 {}: 溝深さは 0 より大きくしてください</translation>
         </message>
         <message>
+            <source>the allowances and grooves split the part into {} pieces</source>
+            <translation>取り代と溝で部品が {} 個に分かれます</translation>
+        </message>
+        <message>
+            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
+            <translation>内部エラー: 変形した形状の Z{} X{} の部分がどの要素にも乗っていません。このジョブを報告してください</translation>
+        </message>
+        <message>
             <source>allowance row {}: the moved {} and the moved {} do not meet</source>
             <translation>取り代の行 {}: 移動した {} と移動した {} が交わりません</translation>
         </message>
@@ -4207,14 +4215,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
             <translation>取り代の行 {0}: {2} の深さ {1} の溝が軸に達します。部品が許すより深くなっています</translation>
-        </message>
-        <message>
-            <source>the allowances and grooves split the part into {} pieces</source>
-            <translation>取り代と溝で部品が {} 個に分かれます</translation>
-        </message>
-        <message>
-            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
-            <translation>内部エラー: 変形した形状の Z{} X{} の部分がどの要素にも乗っていません。このジョブを報告してください</translation>
         </message>
         <message>
             <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>

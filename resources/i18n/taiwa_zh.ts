@@ -4161,6 +4161,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>余量行 {}：槽深必须大于零</translation>
         </message>
         <message>
+            <source>the allowances and grooves split the part into {} pieces</source>
+            <translation>余量和槽将零件分成 {} 块</translation>
+        </message>
+        <message>
+            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
+            <translation>内部错误：变形轮廓在 Z{} X{} 处的一段不在任何边上；请报告此作业</translation>
+        </message>
+        <message>
             <source>allowance row {}: the moved {} and the moved {} do not meet</source>
             <translation>余量行 {}：偏移后的 {} 与偏移后的 {} 不相交</translation>
         </message>
@@ -4207,14 +4215,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
             <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到轴线；比零件允许的更深</translation>
-        </message>
-        <message>
-            <source>the allowances and grooves split the part into {} pieces</source>
-            <translation>余量和槽将零件分成 {} 块</translation>
-        </message>
-        <message>
-            <source>internal: a piece of the deformed profile at Z{} X{} lies on no edge; please report this job</source>
-            <translation>内部错误：变形轮廓在 Z{} X{} 处的一段不在任何边上；请报告此作业</translation>
         </message>
         <message>
             <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>
