@@ -1,4 +1,6 @@
-// The editor of a turned profile (profile_editor.h).
+// The editor of a turned profile (profile_editor.h): its tables and buttons,
+// the profile shown, the checks marked on its cells. The edits themselves:
+// profile_editor_edits.cpp.
 #include "ui/profile_editor.h"
 #include "ui/core_messages.h"
 
@@ -7,8 +9,8 @@
 #include "turning/profile_resolve.h"
 #include "ui/number_text.h"
 #include "ui/profile_view.h"
+#include "ui/table_cells.h"
 
-#include <QApplication>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -29,45 +31,9 @@ using namespace turning;
 
 namespace {
 
-const char* const kRed = "#ffd0d0";
-
 QString shown(double v) { return formatShown(v); }
 QString shown(const std::optional<double>& v) { return v ? formatShown(*v) : QString(); }
 
-// Marks a cell red with a tooltip, or clears it; touches it only when that
-// changes something, and never the cell whose editor is open (a changed
-// item makes the view reload its editor, losing what is being typed).
-// A table that says whether a cell's editor is open.
-class Table : public QTableWidget {
-public:
-    using QTableWidget::QTableWidget;
-    bool editingNow() const { return state() == QAbstractItemView::EditingState; }
-};
-
-// Whether the cell's editor is open with text not yet in the item (a
-// change of the item would make the view reload the editor from it).
-bool editing(const QTableWidget* t, const QTableWidgetItem* item)
-{
-    const auto* table = dynamic_cast<const Table*>(t);
-    if (!item || item != t->currentItem() || !table || !table->editingNow()) return false;
-    const auto* editor = qobject_cast<const QLineEdit*>(QApplication::focusWidget());
-    return !editor || editor->text() != item->text();
-}
-
-void mark(QTableWidget* t, QTableWidgetItem* item, bool red, const QString& tip)
-{
-    if (editing(t, item)) return;
-    const QBrush want = red ? QBrush(QColor(kRed)) : QBrush();
-    if (item->background() != want) item->setBackground(want);
-    if (item->toolTip() != tip) item->setToolTip(tip);
-}
-
-QTableWidgetItem* cell(const QString& text, bool editable = true)
-{
-    auto* item = new QTableWidgetItem(text);
-    if (!editable) item->setFlags(item->flags() & ~Qt::ItemIsEditable);
-    return item;
-}
 
 // Which cell a check field names: "rows[3].radius" -> row 2, R.
 std::optional<std::pair<int, int>> rowCell(const QString& field)
@@ -106,7 +72,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     view_->setObjectName(prefix + ".view");
     outer->addWidget(view_);
 
-    rows_ = new Table(0, RowColumns, this);
+    rows_ = new EditingTable(0, RowColumns, this);
     rows_->setObjectName(prefix + ".rows");
     rows_->setHorizontalHeaderLabels({tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"), tr("R"), tr("Centre X"),
                                       tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")});
@@ -163,7 +129,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     connect(cornerSize_, &QLineEdit::returnPressed, this, &ProfileEditor::editCornerSize);
     connect(done, &QPushButton::clicked, this, [this] { reviseCorners(CornerKind::None); });
 
-    allowances_ = new Table(0, AllowanceColumns, this);
+    allowances_ = new EditingTable(0, AllowanceColumns, this);
     allowances_->setObjectName(prefix + ".allowances");
     allowances_->setHorizontalHeaderLabels(
         {tr("Edge"), tr("Allowance"), tr("Adjustment"), tr("Relief groove"), tr("Width"), tr("Depth")});
@@ -267,8 +233,8 @@ void ProfileEditor::fill(bool force)
     const auto set = [&](QTableWidget* t, int r, int c, const QString& text, bool editable = true) {
         QTableWidgetItem* item = t->item(r, c);
         const bool typing = t == rows_ && std::find(notANumber_.begin(), notANumber_.end(), std::make_pair(r, c)) != notANumber_.end();
-        const bool open = editing(t, item);
-        if (!item) t->setItem(r, c, cell(text, editable));
+        const bool open = cellEditing(t, item);
+        if (!item) t->setItem(r, c, newCell(text, editable));
         else if (item->text() != text && (!typing || force) && !open) item->setText(text);
     };
     // A code cell: a combo box made once per row, its choice one edit.
@@ -340,198 +306,6 @@ void ProfileEditor::fill(bool force)
     updating_ = false;
 }
 
-void ProfileEditor::commit(const TurnedProfile& after, const QString& text, const QString& key)
-{
-    if (after == profile_) return;
-    emit edited(after, text, key);
-}
-
-void ProfileEditor::onRowItem(QTableWidgetItem* item)
-{
-    if (updating_) return;
-    const int r = item->row(), c = item->column();
-    if (r < 0 || r >= static_cast<int>(profile_.rows.size())) return;
-    TurnedProfile after = profile_;
-    ProfileRow& row = after.rows[static_cast<std::size_t>(r)];
-    const QString text = item->text().trimmed();
-    std::erase(notANumber_, std::make_pair(r, c));
-    if (c == TolCol) {
-        row.attributes.tolerance = text.toStdString();
-    } else {
-        const bool optional =
-            c == RCol || c == CXCol || c == CZCol || c == RaCol || c == PitchCol || (c == SizeCol && text.isEmpty());
-        const std::optional<double> v = parseNumber(text);
-        if (!(optional && text.isEmpty()) && !v) {
-            notANumber_.emplace_back(r, c);
-            updating_ = true;
-            mark(rows_, item, true, tr("not a number"));
-            updating_ = false;
-            messages_->setText(tr("row %1: not a number").arg(r + 1));
-            return;
-        }
-        switch (c) {
-        case XCol: row.x = *v; break;
-        case ZCol: row.z = *v; break;
-        case RCol: row.radius = v; break;
-        case CXCol: row.centreX = v; break;
-        case CZCol: row.centreZ = v; break;
-        case SizeCol: row.cornerSize = v.value_or(0.0); break;
-        case RaCol: row.attributes.roughness = v; break;
-        case PitchCol:  // a pitch typed cuts a thread (its depth kept, else ISO's); emptied, none
-            if (!v) row.attributes.thread.reset();
-            else if (row.attributes.thread) row.attributes.thread->pitch = *v;
-            else row.attributes.thread = ThreadSpec{*v, std::nullopt};
-            break;
-        default: return;
-        }
-    }
-    const QString column = rows_->horizontalHeaderItem(c)->text();
-    commit(after, tr("%1 of row %2").arg(column).arg(r + 1), QStringLiteral("rows[%1].%2").arg(r + 1).arg(c));
-}
-
-void ProfileEditor::onAllowanceItem(QTableWidgetItem* item)
-{
-    if (updating_) return;
-    const int k = item->row(), c = item->column();
-    if (k < 0 || k >= static_cast<int>(profile_.allowances.size())) return;
-    TurnedProfile after = profile_;
-    AllowanceRow& a = after.allowances[static_cast<std::size_t>(k)];
-    const QString text = item->text().trimmed();
-    if (c == AEdgeCol) {
-        a.edge = text.toUpper().toStdString();
-    } else {
-        const std::optional<double> v = parseNumber(text);
-        const bool optional = c != AAllowCol;
-        if (!(optional && text.isEmpty()) && !v) {
-            updating_ = true;
-            mark(allowances_, item, true, tr("not a number"));
-            updating_ = false;
-            messages_->setText(tr("allowance %1: not a number").arg(k + 1));
-            return;
-        }
-        switch (c) {
-        case AAllowCol: a.allowance = *v; break;
-        case AAdjustCol: a.adjustment = v; break;
-        case AWidthCol: a.grooveWidth = v; break;
-        case ADepthCol: a.grooveDepth = v; break;
-        default: return;
-        }
-    }
-    const QString column = allowances_->horizontalHeaderItem(c)->text();
-    commit(after, tr("%1 of allowance %2").arg(column).arg(k + 1), QStringLiteral("allowances[%1].%2").arg(k + 1).arg(c));
-}
-
-// A new row after the last (or before the current one), starting where the
-// previous ends; a new id, so that every other edge keeps its own.
-void ProfileEditor::addRow(bool atCurrent)
-{
-    TurnedProfile after = profile_;
-    ProfileRow row;
-    row.id = after.nextRowId();
-    const int at = atCurrent && rows_->currentRow() >= 0 ? rows_->currentRow() : static_cast<int>(after.rows.size());
-    if (at > 0) {
-        row.x = after.rows[static_cast<std::size_t>(at - 1)].x;
-        row.z = after.rows[static_cast<std::size_t>(at - 1)].z;
-    } else {
-        row.x = after.startX;
-        row.z = after.startZ;
-    }
-    after.rows.insert(after.rows.begin() + at, row);
-    commit(after, tr("Add row %1").arg(at + 1), {});
-    rows_->setCurrentCell(at, XCol);
-}
-
-void ProfileEditor::deleteRow()
-{
-    const int r = rows_->currentRow();
-    if (r < 0 || r >= static_cast<int>(profile_.rows.size())) return;
-    TurnedProfile after = profile_;
-    after.rows.erase(after.rows.begin() + r);
-    commit(after, tr("Delete row %1").arg(r + 1), {});
-}
-
-void ProfileEditor::addAllowance()
-{
-    const QString edge = view_->selectedEdge();
-    if (edge.isEmpty()) {
-        messages_->setText(tr("Pick an edge in the view first."));
-        return;
-    }
-    TurnedProfile after = profile_;
-    for (const auto& a : after.allowances)
-        if (QString::fromStdString(a.edge) == edge) {
-            messages_->setText(tr("%1 has an allowance already.").arg(edge));
-            return;
-        }
-    AllowanceRow a;
-    a.edge = edge.toStdString();
-    a.allowance = 0.2;
-    after.allowances.push_back(a);
-    commit(after, tr("Add grinding allowance for %1").arg(edge), {});
-    allowances_->setCurrentCell(static_cast<int>(after.allowances.size()) - 1, AAllowCol);
-}
-
-void ProfileEditor::deleteAllowance()
-{
-    const int k = allowances_->currentRow();
-    if (k < 0 || k >= static_cast<int>(profile_.allowances.size())) return;
-    TurnedProfile after = profile_;
-    after.allowances.erase(after.allowances.begin() + k);
-    commit(after, tr("Delete allowance %1").arg(k + 1), {});
-}
-
-void ProfileEditor::reviseCorners(CornerKind kind)
-{
-    revising_ = kind;
-    revisedCorner_.clear();
-    if (kind == CornerKind::None) {
-        view_->setHighlightedCorners({});
-        revision_->hide();
-        return;
-    }
-    QStringList ids;
-    for (const auto& r : profile_.rows)
-        if (r.corner == kind) ids << QString::fromStdString(cornerEdgeId(r.id));
-    view_->setSelectedEdge({});
-    view_->setHighlightedCorners(ids);
-    const QString what = kind == CornerKind::Chamfer ? tr("chamfers") : tr("roundings");
-    revisionText_->setText(ids.isEmpty() ? tr("The profile has no %1.").arg(what)
-                                         : tr("%1 %2: pick one in the view").arg(ids.size()).arg(what));
-    cornerSize_->clear();
-    cornerSize_->setEnabled(false);
-    revision_->show();
-}
-
-void ProfileEditor::pickCorner(const QString& id)
-{
-    if (revising_ == CornerKind::None) return;  // any corner of the kind under revision
-    for (const auto& r : profile_.rows) {
-        if (QString::fromStdString(cornerEdgeId(r.id)) != id || r.corner != revising_) continue;
-        revisedCorner_ = id;
-        view_->setHighlightedCorners({id});
-        revisionText_->setText((revising_ == CornerKind::Chamfer ? tr("Chamfer %1: leg") : tr("Rounding %1: radius")).arg(id));
-        cornerSize_->setEnabled(true);
-        cornerSize_->setText(formatShown(r.cornerSize));
-        cornerSize_->setFocus();
-        cornerSize_->selectAll();
-        return;
-    }
-}
-
-void ProfileEditor::editCornerSize()
-{
-    const auto v = parseNumber(cornerSize_->text());
-    if (!v || revisedCorner_.isEmpty()) {
-        cornerSize_->setStyleSheet(QStringLiteral("background: %1;").arg(kRed));
-        return;
-    }
-    cornerSize_->setStyleSheet({});
-    TurnedProfile after = profile_;
-    for (auto& r : after.rows)
-        if (QString::fromStdString(cornerEdgeId(r.id)) == revisedCorner_) r.cornerSize = *v;
-    commit(after, tr("Revise %1").arg(revisedCorner_), {});
-}
-
 Diagnostics ProfileEditor::showDiagnostics(const Diagnostics& ofThisUnit)
 {
     updating_ = true;
@@ -561,7 +335,7 @@ Diagnostics ProfileEditor::showDiagnostics(const Diagnostics& ofThisUnit)
             for (int c = 0; c < t->columnCount(); ++c)
                 if (QTableWidgetItem* item = t->item(r, c)) {
                     const auto it = red.find({t, {r, c}});
-                    mark(t, item, it != red.end(), it != red.end() ? it->second : QString());
+                    markCell(t, item, it != red.end(), it != red.end() ? it->second : QString());
                 }
     updating_ = false;
     messages_->setText(lines.join('\n'));
