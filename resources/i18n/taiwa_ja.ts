@@ -1941,80 +1941,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
         </message>
         <message>
-            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
-            <translation>ポケットの{}の輪郭を指定してください (ジョブの図形要素の CONTOUR)</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements, which define no contour</source>
-            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭が一つも定義されていません)</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
-            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭: {})</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
-        </message>
-        <message>
-            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
-            <translation>{} が自分自身と交差しています。要素の順序と各接続点で選んだ側を確認してください</translation>
-        </message>
-        <message>
-            <source>the island {} reaches outside the {}'s outline {}</source>
-            <translation>島 {0} が{1}の外形 {2} の外にはみ出しています</translation>
-        </message>
-        <message>
-            <source>the islands {} and {} overlap; make them one contour</source>
-            <translation>島 {} と {} が重なっています。一つの輪郭にしてください</translation>
-        </message>
-        <message>
-            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
-            <translation>{} の ({}, {}) に鋭い内角があります。エンドミルでは削れず、工具の半径が残ります。輪郭でその角を丸めてください (ROUND)</translation>
-        </message>
-        <message>
-            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
-            <translation>U {} は輪郭ポケットでは使えません。1 (全工程)、6 (壁仕上げなし)、8 (壁のみ)、9 (荒加工のみ) のいずれかにしてください</translation>
-        </message>
-        <message>
-            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
-            <translation>外形が自分自身と交差しています。角 P1..P4 をポケットの周りに順に入力してください</translation>
-        </message>
-        <message>
-            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
-            <translation>外形が凸ではありません (内向きの角があるか、3 つの角が一直線上にあります)</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
-            <translation>コーナ半径 {} が最短辺 (長さ {}) の半分より大きくなっています</translation>
-        </message>
-        <message>
-            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
-            <translation>コーナ半径 {} が入りません。外形に内接する最大の円の半径は {} です</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half of L2 = {}</source>
-            <translation>コーナ半径 {} が L2 = {} の半分より大きくなっています</translation>
-        </message>
-        <message>
-            <source>the taper {} per side is outside 0° to 30°</source>
-            <translation>片側テーパ {} が 0° ～ 30° の範囲外です</translation>
-        </message>
-        <message>
-            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
-            <translation>片側テーパ {} では壁どうしが底より上の深さ {} で交わります</translation>
-        </message>
-        <message>
-            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
-            <translation>{} = {} が 0° 以上 60° 未満の範囲外です (垂直から測ります)</translation>
-        </message>
-        <message>
-            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
-            <translation>傾斜壁によって L1 方向の底の幅が {} になります。2 × r1 = {} より広くなければなりません ({} 不足)。角度か深さを小さくするか、L1 を長くしてください</translation>
+            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
+            <translation>ユニット {} の図形がユニット {} の図形と {} {}² 重なっています。同じジョブの図形は接してもよいが重なってはいけません</translation>
         </message>
         <message>
             <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
@@ -2089,8 +2017,80 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{}の工具 {} は {} = {} に対して大きすぎます。{}</translation>
         </message>
         <message>
-            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
-            <translation>ユニット {} の図形がユニット {} の図形と {} {}² 重なっています。同じジョブの図形は接してもよいが重なってはいけません</translation>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>ポケットの{}の輪郭を指定してください (ジョブの図形要素の CONTOUR)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭が一つも定義されていません)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭: {})</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} が自分自身と交差しています。要素の順序と各接続点で選んだ側を確認してください</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>島 {0} が{1}の外形 {2} の外にはみ出しています</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>島 {} と {} が重なっています。一つの輪郭にしてください</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} の ({}, {}) に鋭い内角があります。エンドミルでは削れず、工具の半径が残ります。輪郭でその角を丸めてください (ROUND)</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} は輪郭ポケットでは使えません。1 (全工程)、6 (壁仕上げなし)、8 (壁のみ)、9 (荒加工のみ) のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外形が自分自身と交差しています。角 P1..P4 をポケットの周りに順に入力してください</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外形が凸ではありません (内向きの角があるか、3 つの角が一直線上にあります)</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>コーナ半径 {} が最短辺 (長さ {}) の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>コーナ半径 {} が入りません。外形に内接する最大の円の半径は {} です</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>コーナ半径 {} が L2 = {} の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>片側テーパ {} が 0° ～ 30° の範囲外です</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>片側テーパ {} では壁どうしが底より上の深さ {} で交わります</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} が 0° 以上 60° 未満の範囲外です (垂直から測ります)</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>傾斜壁によって L1 方向の底の幅が {} になります。2 × r1 = {} より広くなければなりません ({} 不足)。角度か深さを小さくするか、L1 を長くしてください</translation>
         </message>
         <message>
             <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>

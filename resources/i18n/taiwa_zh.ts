@@ -1941,80 +1941,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
         </message>
         <message>
-            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
-            <translation>请指定型腔{}的轮廓（作业图形元素中的 CONTOUR）</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements, which define no contour</source>
-            <translation>{} 不是作业图形元素中的轮廓（图形元素未定义任何轮廓）</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
-            <translation>{} 不是作业图形元素中的轮廓（已有轮廓：{}）</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
-        </message>
-        <message>
-            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
-            <translation>{} 自相交；请检查其元素顺序以及每个连接处选择的一侧</translation>
-        </message>
-        <message>
-            <source>the island {} reaches outside the {}'s outline {}</source>
-            <translation>岛屿 {0} 超出了{1}的外轮廓 {2}</translation>
-        </message>
-        <message>
-            <source>the islands {} and {} overlap; make them one contour</source>
-            <translation>岛屿 {} 和 {} 重叠；请将它们合并为一个轮廓</translation>
-        </message>
-        <message>
-            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
-            <translation>{} 在（{}, {}）处有尖锐内角：立铣刀无法切出，会在那里留下自身半径；请在轮廓中将该角倒圆（ROUND）</translation>
-        </message>
-        <message>
-            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
-            <translation>U {} 不适用于轮廓型腔；请使用 1（全部工序）、6（无壁精加工）、8（仅壁）或 9（仅粗加工）</translation>
-        </message>
-        <message>
-            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
-            <translation>外轮廓自相交；请沿型腔依次输入角点 P1..P4</translation>
-        </message>
-        <message>
-            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
-            <translation>外轮廓不是凸的（有角点朝内，或三个角点共线）</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
-            <translation>圆角半径 {} 大于最短边（长 {}）的一半</translation>
-        </message>
-        <message>
-            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
-            <translation>圆角半径 {} 放不下：外轮廓内最大圆的半径为 {}</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half of L2 = {}</source>
-            <translation>圆角半径 {} 大于 L2 = {} 的一半</translation>
-        </message>
-        <message>
-            <source>the taper {} per side is outside 0° to 30°</source>
-            <translation>单边锥度 {} 超出 0° 到 30° 的范围</translation>
-        </message>
-        <message>
-            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
-            <translation>单边锥度为 {} 时，两壁在底面以上的深度 {} 处相交</translation>
-        </message>
-        <message>
-            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
-            <translation>{} = {} 超出 0° 到小于 60° 的范围（自竖直方向测量）</translation>
-        </message>
-        <message>
-            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
-            <translation>倾斜壁使沿 L1 方向的底面宽度为 {}；必须宽于 2 × r1 = {}（差 {}）：请减小角度或深度，或加长 L1</translation>
+            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
+            <translation>单元 {} 的图形与单元 {} 的图形重叠 {} {}²；同一作业的图形可以相接但不能重叠</translation>
         </message>
         <message>
             <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
@@ -2089,8 +2017,80 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{}刀具 {} 对于 {} = {} 过大；{}</translation>
         </message>
         <message>
-            <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
-            <translation>单元 {} 的图形与单元 {} 的图形重叠 {} {}²；同一作业的图形可以相接但不能重叠</translation>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>请指定型腔{}的轮廓（作业图形元素中的 CONTOUR）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} 不是作业图形元素中的轮廓（图形元素未定义任何轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} 不是作业图形元素中的轮廓（已有轮廓：{}）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} 自相交；请检查其元素顺序以及每个连接处选择的一侧</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>岛屿 {0} 超出了{1}的外轮廓 {2}</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>岛屿 {} 和 {} 重叠；请将它们合并为一个轮廓</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} 在（{}, {}）处有尖锐内角：立铣刀无法切出，会在那里留下自身半径；请在轮廓中将该角倒圆（ROUND）</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} 不适用于轮廓型腔；请使用 1（全部工序）、6（无壁精加工）、8（仅壁）或 9（仅粗加工）</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外轮廓自相交；请沿型腔依次输入角点 P1..P4</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外轮廓不是凸的（有角点朝内，或三个角点共线）</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>圆角半径 {} 大于最短边（长 {}）的一半</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>圆角半径 {} 放不下：外轮廓内最大圆的半径为 {}</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>圆角半径 {} 大于 L2 = {} 的一半</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>单边锥度 {} 超出 0° 到 30° 的范围</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>单边锥度为 {} 时，两壁在底面以上的深度 {} 处相交</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} 超出 0° 到小于 60° 的范围（自竖直方向测量）</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>倾斜壁使沿 L1 方向的底面宽度为 {}；必须宽于 2 × r1 = {}（差 {}）：请减小角度或深度，或加长 L1</translation>
         </message>
         <message>
             <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
