@@ -121,6 +121,18 @@ private slots:
         QCOMPARE(view.highlightedLine(), 0);
         QTRY_VERIFY(view.highlighter()->coloured(0));
 
+        // Scrolled to the end of one program, the next shows its first line.
+        view.setProgram(b, std::vector<BlockSource>(30001));
+        view.text()->verticalScrollBar()->setValue(view.text()->verticalScrollBar()->maximum());
+        view.text()->moveCursor(QTextCursor::End);
+        QVERIFY(view.text()->verticalScrollBar()->value() > 1000);
+        view.prepareProgram(a);
+        QTRY_VERIFY(view.isPrepared(a));
+        view.setProgram(a, std::vector<BlockSource>(30001));
+        QCOMPARE(view.text()->verticalScrollBar()->value(), 0);
+        QCOMPARE(view.text()->textCursor().blockNumber(), 0);
+        QCOMPARE(view.highlightedLine(), 0);
+
         view.setMessage("no program");
         QCOMPARE(view.text()->toPlainText(), QString("no program"));
     }
