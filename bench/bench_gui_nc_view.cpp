@@ -6,8 +6,8 @@
 //   SetDocument:      a made document put in a shown QPlainTextEdit: /plain
 //                     as QTextDocument::setPlainText leaves it, /made as
 //                     makeNcDocument does (each line's layout object made);
-//   NcView:           NcView::setProgram with nothing prepared;
-//   NcViewPrepared/N: what the station's GUI thread spends: prepared when
+//   NcView/-1:        NcView::setProgram with nothing prepared;
+//   NcView/N:         what the station's GUI thread spends: prepared when
 //                     the tape arrives, taken N ms later (after the 3-D
 //                     view's frame); real time includes waiting for it.
 // Offscreen unless a display is set.
@@ -105,49 +105,39 @@ void BM_SetPlainText(benchmark::State& state)
     }
 }
 
+// NcView::setProgram; with an argument N, what the station's GUI thread
+// spends: the text prepared when the tape arrives, taken N ms later (after
+// the 3-D view's frame).
 void BM_NcView(benchmark::State& state)
 {
     const QString nc = QString::fromStdString(tape().nc);
     ui::NcView view;
     view.resize(700, 500);
     view.show();
-    int i = 0;
-    for (auto _ : state) {
-        view.setProgram((i++ % 2) ? nc : nc + "\n", tape().lines);
-        QCoreApplication::processEvents();
-    }
-}
-
-}  // namespace
-
-// What the station's GUI thread spends: the text prepared when the tape
-// arrives, taken after the 3-D view's frame (here after 30 ms of it).
-void BM_NcViewPrepared(benchmark::State& state)
-{
-    const QString nc = QString::fromStdString(tape().nc);
-    ui::NcView view;
-    view.resize(700, 500);
-    view.show();
+    const bool prepared = state.range(0) >= 0;
     int i = 0;
     for (auto _ : state) {
         const QString text = (i++ % 2) ? nc : nc + "\n";
-        state.PauseTiming();
-        view.prepareProgram(text);
-        std::this_thread::sleep_for(std::chrono::milliseconds(state.range(0)));
-        state.ResumeTiming();
+        if (prepared) {
+            state.PauseTiming();
+            view.prepareProgram(text);
+            std::this_thread::sleep_for(std::chrono::milliseconds(state.range(0)));
+            state.ResumeTiming();
+        }
         view.setProgram(text, tape().lines);
         QCoreApplication::processEvents();
     }
     state.counters["prepared"] = view.preparedShown();
 }
 
+}  // namespace
+
 BENCHMARK(BM_ToQString)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetPlainText)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DocumentOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SetDocument, plain, false)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_SetDocument, made, true)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_NcView)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_NcViewPrepared)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NcView)->Arg(-1)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv)
 {
