@@ -4,7 +4,7 @@
 // (table tool_names), an older library gets the default tools' names for
 // the tools the shop did not rename; the English names stay as they were.
 #include "support/support.h"
-#include "io/local_names.h"
+#include "model/local_names_json.h"
 #include "machine/machine.h"
 #include "model/technology.h"
 #include "tools/tool_library.h"
@@ -84,9 +84,9 @@ private slots:
     void namesRoundTrip()
     {
         const LocalNames names{{"ja", "立形マシニングセンタ"}, {"zh", "立式加工中心"}};
-        const auto text = io::localNamesJson(names).dump();
+        const auto text = localNamesJson(names).dump();
         QCOMPARE(text, std::string(R"({"ja":"立形マシニングセンタ","zh":"立式加工中心"})"));
-        const auto back = io::localNamesFrom(nlohmann::json::parse(text));
+        const auto back = localNamesFrom(nlohmann::json::parse(text));
         QVERIFY(back);
         QCOMPARE(*back, names);
     }

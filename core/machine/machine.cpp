@@ -3,7 +3,7 @@
 
 #include "builtin_data.h"
 #include "io/data_files.h"
-#include "io/local_names.h"
+#include "model/local_names_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -60,7 +60,7 @@ public:
         m.id = string(j_, "id", "id");
         m.name = string(j_, "name", "name");
         if (j_.contains("names")) {
-            auto names = io::localNamesFrom(j_["names"]);
+            auto names = localNamesFrom(j_["names"]);
             if (!names) fail("names", names.error());
             m.names = std::move(*names);
         }

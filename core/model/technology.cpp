@@ -3,7 +3,7 @@
 #include "model/technology.h"
 
 #include "builtin_data.h"
-#include "io/local_names.h"
+#include "model/local_names_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -22,7 +22,7 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
         mt.id = m.at("id").get<std::string>();
         mt.description = m.value("description", mt.id);
         if (m.contains("names")) {
-            auto names = io::localNamesFrom(m["names"]);
+            auto names = localNamesFrom(m["names"]);
             if (!names) throw std::runtime_error("technology table: material " + mt.id + ": names: " + names.error());
             mt.names = std::move(*names);
         }

@@ -1,9 +1,9 @@
-// The data files' "names" maps (local_names.h): checked when read.
-#include "io/local_names.h"
+// The data files' "names" maps (local_names_json.h): checked when read.
+#include "model/local_names_json.h"
 
 #include <regex>
 
-namespace taiwa::io {
+namespace taiwa {
 
 Result<LocalNames> localNamesFrom(const nlohmann::json& value)
 {
@@ -27,4 +27,4 @@ nlohmann::json localNamesJson(const LocalNames& names)
     return out;
 }
 
-}  // namespace taiwa::io
+}  // namespace taiwa

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace taiwa::io {
+namespace taiwa {
 
 // `value` as names: an object of language codes ("ja", "zh", "zh-TW": two or
 // three small letters, a region after a dash) to texts that are not empty.
@@ -17,4 +17,4 @@ Result<LocalNames> localNamesFrom(const nlohmann::json& value);
 // The map as the data files write it.
 nlohmann::json localNamesJson(const LocalNames& names);
 
-}  // namespace taiwa::io
+}  // namespace taiwa
