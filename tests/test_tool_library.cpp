@@ -162,7 +162,7 @@ private slots:
         if (content.isEmpty() || content == "foreign") {
             sqlite3* db = nullptr;
             sqlite3_open(path.toUtf8().constData(), &db);
-            sqlite3_exec(db, content.isEmpty() ? "PRAGMA user_version = 7" : "CREATE TABLE parts(x)", nullptr, nullptr, nullptr);
+            sqlite3_exec(db, content.isEmpty() ? "PRAGMA user_version = 8" : "CREATE TABLE parts(x)", nullptr, nullptr, nullptr);
             sqlite3_close(db);
         } else {
             test::writeFile(path, content.toStdString());
@@ -260,7 +260,7 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 6);
+        QCOMPARE(sqlite3_column_int(version, 0), 7);
         sqlite3_finalize(version);
         sqlite3_close(db);
     }

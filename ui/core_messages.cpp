@@ -4,6 +4,7 @@
 #include "ui/core_messages.h"
 
 #include "check/messages.h"
+#include "tools/tool_library.h"
 #include "ui/core_texts.h"
 #include "ui/language.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 constexpr const char* kContext = "taiwa::msg";
 // A deeper message in an argument (a tool's name in a refusal in a "step: why") is translated too, so far down.
-constexpr int kMaxDepth = 3;
+constexpr int kMaxDepth = 5;
 
 // One of fmt's replacement fields: "{}", "{:g}", "{0}".
 const QRegularExpression& placeholder()
@@ -131,8 +132,23 @@ QString translateText(const QString& text, const QStringList& sources,
     return text;
 }
 
+// The known tools' names in other languages, by their name (knowToolNames).
+QHash<QString, LocalNames>& toolNames()
+{
+    static QHash<QString, LocalNames> names = [] {
+        QHash<QString, LocalNames> byName;
+        for (const Tool& t : defaultToolLibrary())
+            if (!t.names.empty()) byName.insert(QString::fromStdString(t.name), t.names);
+        return byName;
+    }();
+    return names;
+}
+
 QString translateWord(const QString& text)
 {
+    if (const auto tool = toolNames().constFind(text); tool != toolNames().constEnd())
+        if (const auto name = tool->find(installedLanguage().toStdString()); name != tool->end())
+            return QString::fromStdString(name->second);
     const QByteArray source = text.toUtf8();
     const QString msg = QCoreApplication::translate(kContext, source.constData());
     if (msg != text)
@@ -223,6 +239,20 @@ QString diagnosticText(const std::string& job, const Diagnostic& d)
 QString toolName(const Tool& tool)
 {
     return coreMessage(msg::toolName(tool));
+}
+
+QString localName(const std::string& text, const LocalNames& names)
+{
+    const QString language = installedLanguage();
+    return QString::fromStdString(language.isEmpty() ? text : nameIn(names, language.toStdString(), text));
+}
+
+QString localToolName(const Tool& tool) { return localName(tool.name, tool.names); }
+
+void knowToolNames(const std::vector<Tool>& tools)
+{
+    // A tool without names (one the shop named) drops what another of that name had.
+    for (const Tool& t : tools) toolNames().insert(QString::fromStdString(t.name), t.names);
 }
 
 QString toolKind(ToolType type)

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "model/diagnostic.h"
+#include "model/local_name.h"
 #include "model/tool.h"
 
 #include <QByteArray>
@@ -16,6 +17,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace taiwa::ui {
 
@@ -29,6 +31,14 @@ QString diagnosticText(const std::string& job, const Diagnostic& d);
 // A tool as the messages name it ("T12 (フラットエンドミル Ø6 mm)") and a tool kind alone.
 QString toolName(const Tool& tool);
 QString toolKind(ToolType type);
+// A name of the data (a material's description, a machine's or a tool's
+// name) in the station's language: its names map's entry, else the text.
+QString localName(const std::string& text, const LocalNames& names);
+QString localToolName(const Tool& tool);
+// The tools whose names the core's messages may quote ("T21 (Flat end mill
+// 2 mm carbide) is the nearest"): each one's name is shown in the station's
+// language there. The default library's tools are known from the start.
+void knowToolNames(const std::vector<Tool>& tools);
 // A module drawing (SVG) with its labels translated (context "taiwa::Drawing").
 QByteArray translatedDrawing(const QByteArray& svg);
 

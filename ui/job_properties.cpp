@@ -42,7 +42,7 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     material_->setObjectName("job.material");
     unit_->setObjectName("job.unit");
     for (const MaterialTechnology& m : TechnologyTable::builtIn().materials())
-        material_->addItem(QString::fromStdString(m.description.empty() ? m.id : m.description),
+        material_->addItem(m.description.empty() ? QString::fromStdString(m.id) : localName(m.description, m.names),
                            QString::fromStdString(m.id));
     unit_->addItem(tr("mm"), 0);
     unit_->addItem(tr("inch (converts every length)"), 1);
@@ -59,7 +59,7 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     }
     machine_->setObjectName("job.machine");
     for (const Machine& m : machineLibrary())
-        machine_->addItem(QString::fromStdString(m.id + " – " + m.name), QString::fromStdString(m.id));
+        machine_->addItem(QString::fromStdString(m.id) + " – " + localName(m.name, m.names), QString::fromStdString(m.id));
     form->addRow(tr("Machine"), machine_);
     connect(machine_, &QComboBox::activated, this, [this](int i) {
         Job j = doc_->job();

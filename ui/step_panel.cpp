@@ -298,9 +298,10 @@ void StepPanel::showDetails(int index)
     if (s.wallTaper > 0) lines << tr("Wall taper %1° per side").arg(formatNumber(s.wallTaper));
     if (s.tool) {
         const Tool* t = plan_->tool(s.tool->toolId);
+        knowToolNames(plan_->tools);  // a name the reason quotes, in the station's language
         lines << tr("T%1 %2: %3")
                      .arg(s.tool->toolId)
-                     .arg(t ? QString::fromStdString(t->name) : QString())
+                     .arg(t ? localToolName(*t) : QString())
                      .arg(coreMessage(s.tool->reason));
     }
     if (s.minutes && s.machineMinutes)

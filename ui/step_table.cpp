@@ -1,6 +1,7 @@
 // The step list table.
 #include "ui/step_table.h"
 
+#include "ui/core_messages.h"
 #include "ui/core_texts.h"
 #include "ui/number_text.h"
 
@@ -137,7 +138,7 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
         // The tool by its number (its name in the tooltip and the step's details): the columns fit.
         const Tool* t = s.tool ? plan->tool(s.tool->toolId) : nullptr;
         cell(r, ToolName, s.tool ? QStringLiteral("T%1").arg(s.tool->toolId) : QStringLiteral("–"),
-             t ? QString::fromStdString(t->name) : QString());
+             t ? localToolName(*t) : QString());
         const ShownCutting c = shownCutting(*plan, s);
         const std::pair<Column, std::optional<double>> cuttings[] = {{Speed, c.speed}, {Feed, c.feed}};
         for (const auto& [column, value] : cuttings) {

@@ -113,6 +113,7 @@ void ToolLibraryDialog::load(bool keepStatus)
     const std::string path = defaultToolLibraryPath();
     const auto tools = readToolLibrary(path);
     tools_ = tools ? *tools : std::vector<Tool>{};
+    knowToolNames(tools_);
     if (!keepStatus || !tools) {
         status_->setText(tools ? tr("%1 — %n tool(s)", "", static_cast<int>(tools_.size())).arg(QString::fromStdString(path))
                                : tr("Cannot read the tool library: %1").arg(coreMessage(tools.error())));
@@ -123,7 +124,7 @@ void ToolLibraryDialog::load(bool keepStatus)
     table_->setRowCount(static_cast<int>(tools_.size()));
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         const Tool& t = tools_[i];
-        const QStringList cells{QString::number(t.id),     QString::fromStdString(t.name),
+        const QStringList cells{QString::number(t.id),     localToolName(t),
                                 toolKind(t.type),          num(t.diameter),
                                 num(t.cornerRadius),       num(t.taperAngle),
                                 QString::number(t.flutes), num(t.fluteLength),
@@ -216,7 +217,11 @@ void ToolLibraryDialog::onItemChanged(QTableWidgetItem* item)
     const auto number = parseNumber(text);
     bool ok = true;
     switch (item->column()) {
-    case Name: after.name = text.toStdString(); break;
+    case Name:
+        // Named by the shop: its own name in every language.
+        after.name = text.toStdString();
+        after.names.clear();
+        break;
     case Holder: after.holder = text.toStdString(); break;
     case Diameter: ok = number.has_value(), after.diameter = number.value_or(0); break;
     case Corner: ok = number.has_value(), after.cornerRadius = number.value_or(0); break;
@@ -261,6 +266,7 @@ void ToolLibraryDialog::copySelected()
     }
     copy.id = id;
     copy.name += " (copy)";
+    copy.names.clear();
     copy.usedMinutes = 0.0;
     change(std::nullopt, copy, tr("T%1 copied to T%2").arg(selected->id).arg(id));
 }

@@ -3,6 +3,7 @@
 
 #include "builtin_data.h"
 #include "io/data_files.h"
+#include "model/local_names_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -58,6 +59,11 @@ public:
         m.source = source_;
         m.id = string(j_, "id", "id");
         m.name = string(j_, "name", "name");
+        if (j_.contains("names")) {
+            auto names = localNamesFrom(j_["names"]);
+            if (!names) fail("names", names.error());
+            m.names = std::move(*names);
+        }
         const std::string kind = string(j_, "kind", "kind");
         if (kind == "mill") m.kind = MachineKind::Mill;
         else if (kind == "lathe") m.kind = MachineKind::Lathe;

@@ -6,6 +6,7 @@
 // validated when read; every problem names the file, the line and the key.
 #pragma once
 
+#include "model/local_name.h"
 #include "model/result.h"
 
 #include <algorithm>
@@ -26,6 +27,7 @@ struct AxisTravel {
 struct Machine {
     std::string id;    // "vmc": what a job's "machine" names
     std::string name;  // "Vertical machining centre"
+    LocalNames names;  // the name in other languages ("ja": "立形マシニングセンタ"), for the station
     std::string source;  // where it was read from ("built in: vmc.json")
     MachineKind kind = MachineKind::Mill;
     bool xDiameter = false;                    // lathes: X is programmed as a diameter

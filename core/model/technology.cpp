@@ -3,6 +3,7 @@
 #include "model/technology.h"
 
 #include "builtin_data.h"
+#include "model/local_names_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +21,11 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
         MaterialTechnology mt;
         mt.id = m.at("id").get<std::string>();
         mt.description = m.value("description", mt.id);
+        if (m.contains("names")) {
+            auto names = localNamesFrom(m["names"]);
+            if (!names) throw std::runtime_error("technology table: material " + mt.id + ": names: " + names.error());
+            mt.names = std::move(*names);
+        }
         auto num = [&](const char* key) {
             if (!m.contains(key) || !m[key].is_number()) throw std::runtime_error("technology table: material " + mt.id + ": " + key + " is missing or not a number");
             const double v = m[key].get<double>();

@@ -2,6 +2,8 @@
 // depth-of-cut coefficient registered per material, overridable per job.
 #pragma once
 
+#include "model/local_name.h"
+
 #include <map>
 #include <optional>
 #include <string>
@@ -57,6 +59,7 @@ struct TechnologyOverrides {
 struct MaterialTechnology {
     std::string id;           // e.g. "aluminium-6061"
     std::string description;  // e.g. "Aluminium alloy 6061-T6"
+    LocalNames names;         // the description in other languages ("ja": "アルミニウム合金 6061-T6"), for the station
     TechnologyData data;      // in mm
     friend bool operator==(const MaterialTechnology&, const MaterialTechnology&) = default;
 };

@@ -1,6 +1,8 @@
 // A cutting tool of the shop's library, and the record of why a step got it.
 #pragma once
 
+#include "model/local_name.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +61,8 @@ struct TurningSpec {
 
 struct Tool {
     int id = 0;                  // the library's id; also the T number
-    std::string name;
+    std::string name;            // as the tape, the sheet and the command line name it
+    LocalNames names;            // the name in other languages, for the station (none: `name` in every language)
     ToolType type = ToolType::FlatEndMill;
     double diameter = 0.0;       // [mm], at the tip for taper end mills; inserts: the inscribed circle, blades: the width
     double cornerRadius = 0.0;   // corner or nose radius [mm]

@@ -3,7 +3,10 @@
 // outline and split it into the outer and inner profile.
 #include "occt/step_import.h"
 
+#include "model/translate_noop.h"
 #include "model/turned_geometry.h"
+
+#include <fmt/format.h>
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
@@ -39,17 +42,17 @@ namespace {
 const char* surfaceName(GeomAbs_SurfaceType t)
 {
     switch (t) {
-    case GeomAbs_Plane: return "plane";
-    case GeomAbs_Cylinder: return "cylinder";
-    case GeomAbs_Cone: return "cone";
-    case GeomAbs_Sphere: return "sphere";
-    case GeomAbs_Torus: return "torus";
-    case GeomAbs_SurfaceOfRevolution: return "surface of revolution";
-    case GeomAbs_BezierSurface: return "Bézier surface";
-    case GeomAbs_BSplineSurface: return "B-spline surface";
-    case GeomAbs_SurfaceOfExtrusion: return "extruded surface";
-    case GeomAbs_OffsetSurface: return "offset surface";
-    default: return "free-form surface";
+    case GeomAbs_Plane: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "plane");
+    case GeomAbs_Cylinder: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "cylinder");
+    case GeomAbs_Cone: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "cone");
+    case GeomAbs_Sphere: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "sphere");
+    case GeomAbs_Torus: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "torus");
+    case GeomAbs_SurfaceOfRevolution: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "surface of revolution");
+    case GeomAbs_BezierSurface: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "Bézier surface");
+    case GeomAbs_BSplineSurface: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "B-spline surface");
+    case GeomAbs_SurfaceOfExtrusion: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "extruded surface");
+    case GeomAbs_OffsetSurface: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "offset surface");
+    default: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "free-form surface");
     }
 }
 
@@ -77,7 +80,7 @@ public:
     }
 
 private:
-    [[noreturn]] void refuse(const std::string& why) const { throw Refusal{path_ + ": " + why}; }
+    [[noreturn]] void refuse(const std::string& why) const { throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), path_, why)}; }
 
     TopoDS_Shape readSolid()
     {
@@ -88,16 +91,16 @@ private:
         }();
         static_cast<void>(quiet);
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(path_, ec)) refuse("cannot open it (no such file)");
+        if (!std::filesystem::is_regular_file(path_, ec)) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot open it (no such file)"));
         STEPControl_Reader reader;
-        if (reader.ReadFile(path_.c_str()) != IFSelect_RetDone) refuse("not a STEP file, or a broken one");
+        if (reader.ReadFile(path_.c_str()) != IFSelect_RetDone) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a STEP file, or a broken one"));
         reader.TransferRoots();
         const TopoDS_Shape shape = reader.OneShape();
         std::vector<TopoDS_Shape> solids;
         for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) solids.push_back(e.Current());
-        if (solids.empty()) refuse("the file holds no solid: a turned part is imported from its solid model");
+        if (solids.empty()) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file holds no solid: a turned part is imported from its solid model"));
         if (solids.size() > 1)
-            refuse("the file holds " + std::to_string(solids.size()) + " solids; import one turned part at a time");
+            refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file holds {} solids; import one turned part at a time"), solids.size()));
         return solids.front();
     }
 
@@ -125,25 +128,27 @@ private:
             case GeomAbs_Sphere: f.centre = s.Sphere().Location(); break;
             case GeomAbs_Plane: f.normal = s.Plane().Axis().Direction(); break;
             default:
-                refuse("not a body of revolution: face " + std::to_string(f.index) + " is a " + surfaceName(f.type) +
-                       ", not turned about an axis");
+                refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a body of revolution: face {} is a {}, not turned about an axis"),
+                                   f.index, surfaceName(f.type)));
             }
             faces.push_back(f);
         }
         const auto first = std::find_if(faces.begin(), faces.end(), [](const Face& f) { return f.axis.has_value(); });
         if (first == faces.end())
-            refuse("not a body of revolution: no face of it is turned about an axis (cylinder, cone, torus, sphere)");
+            refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a body of revolution: no face of it is turned about an axis (cylinder, cone, torus, sphere)"));
         gp_Ax1 axis = *first->axis;
         const auto onAxis = [&](const gp_Pnt& p) { return gp_Lin(axis).Distance(p) < 1e-6; };
         for (const Face& f : faces) {
-            const std::string which = "face " + std::to_string(f.index) + " (a " + surfaceName(f.type) + ")";
-            const std::string of = " of face " + std::to_string(first->index) + " (a " + surfaceName(first->type) + ")";
+            // Each refusal names the face and the one whose axis it is not on.
+            const auto notOn = [&](const char* why) {
+                refuse(fmt::format(fmt::runtime(why), f.index, surfaceName(f.type), first->index, surfaceName(first->type)));
+            };
             if (f.axis && (!f.axis->Direction().IsParallel(axis.Direction(), 1e-9) || !onAxis(f.axis->Location())))
-                refuse("not a body of revolution: " + which + " is not turned about the axis" + of);
+                notOn(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a body of revolution: face {} (a {}) is not turned about the axis of face {} (a {})"));
             if (f.centre && !onAxis(*f.centre))
-                refuse("not a body of revolution: " + which + " is not centred on the axis" + of);
+                notOn(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a body of revolution: face {} (a {}) is not centred on the axis of face {} (a {})"));
             if (f.normal && !f.normal->IsParallel(axis.Direction(), 1e-9))
-                refuse("not a body of revolution: " + which + " is not square to the axis" + of);
+                notOn(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a body of revolution: face {} (a {}) is not square to the axis of face {} (a {})"));
         }
         // The direction as the model's axis it is parallel to, + along it;
         // the point nearest the model's origin.
@@ -182,7 +187,7 @@ private:
         BRepAlgoAPI_Common common(solid, half);
         common.SetRunParallel(false);
         common.Build();
-        if (!common.IsDone() || common.HasErrors()) refuse("OpenCASCADE could not cut the part with the half-plane");
+        if (!common.IsDone() || common.HasErrors()) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "OpenCASCADE could not cut the part with the half-plane"));
         const TopoDS_Shape cut = common.Shape();
         TopTools_IndexedDataMapOfShapeListOfShape facesOf;
         TopExp::MapShapesAndAncestors(cut, TopAbs_EDGE, TopAbs_FACE, facesOf);
@@ -203,10 +208,10 @@ private:
                     s.radius = clean(c.Circle().Radius());
                     pieces.push_back(s);
                 } else {
-                    refuse("the half-section has an edge that is neither a line nor an arc");
+                    refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the half-section has an edge that is neither a line nor an arc"));
                 }
             }
-        if (pieces.empty()) refuse("the half-plane through the axis does not cut the part");
+        if (pieces.empty()) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the half-plane through the axis does not cut the part"));
         // Chain end to start.
         std::vector<Segment> loop{pieces.front()};
         std::vector<bool> used(pieces.size(), false);
@@ -218,10 +223,10 @@ private:
                     used[j] = found = true;
                     loop.push_back(pieces[j]);
                 }
-            if (!found) refuse("the half-section's outline does not close");
+            if (!found) refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the half-section's outline does not close"));
         }
         if (std::find(used.begin(), used.end(), false) != used.end())
-            refuse("the half-section falls into several pieces (a closed cavity inside the part?)");
+            refuse(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the half-section falls into several pieces (a closed cavity inside the part?)"));
         return loop;
     }
 
@@ -356,7 +361,7 @@ Result<ImportedProfiles> importStepProfiles(const std::string& path)
     } catch (const Refusal& r) {
         return Failure{r.message};
     } catch (const Standard_Failure& e) {
-        return Failure{path + ": OpenCASCADE failed reading it: " + e.GetMessageString()};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE failed reading it: {}"), path, e.GetMessageString())};
     }
 }
 

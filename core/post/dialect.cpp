@@ -38,17 +38,26 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
         const auto u = static_cast<unsigned char>(c);
         if (!std::isspace(u)) code += static_cast<char>(std::toupper(u));
     }
-    std::string offers = d.plainWorkOffsets == 1 ? std::string("G54") : fmt::format("G54 to G{}", 53 + d.plainWorkOffsets);
+    // The offsets as codes, joined by templates ("G54 to G59, G59.1 and
+    // G59.3"), so that the station shows the list in its language.
+    const auto to = [](const std::string& first, const std::string& last) {
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} to {}"), first, last);
+    };
+    const auto and_ = [](const std::string& list, const std::string& item) {
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {}"), list, item);
+    };
+    std::string offers = d.plainWorkOffsets == 1 ? std::string("G54") : to("G54", fmt::format("G{}", 53 + d.plainWorkOffsets));
     for (std::size_t i = 0; i < d.moreWorkOffsets.size(); ++i) {
         const auto range = rangeOf(d.moreWorkOffsets[i]);
-        offers += (i + 1 == d.moreWorkOffsets.size() ? " and " : ", ") +
-                  (range ? fmt::format("G{} to G{}", range->first, range->second) : d.moreWorkOffsets[i]);
+        const std::string entry = range ? to(fmt::format("G{}", range->first), fmt::format("G{}", range->second)) : d.moreWorkOffsets[i];
+        offers = i + 1 == d.moreWorkOffsets.size() ? and_(offers, entry)
+                                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {}"), offers, entry);
     }
     const auto extendedWords = [&](int n) { return fmt::format(fmt::runtime(d.extendedWorkOffset), fmt::arg("n", n)); };
     if (d.extendedWorkOffsets > 0) {
         // "G54.1 P1 to P48": the last word of the template, the number in it.
         const std::string last = extendedWords(d.extendedWorkOffsets);
-        offers += fmt::format(" and {} to {}", extendedWords(1), last.substr(last.rfind(' ') + 1));
+        offers = and_(offers, to(extendedWords(1), last.substr(last.rfind(' ') + 1)));
     }
     const auto refuse = [&](const std::string& why) {
         return std::invalid_argument(

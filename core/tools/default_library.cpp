@@ -3,6 +3,8 @@
 // table. Ids are stable: they are the T numbers on the tape.
 #include "tools/tool_library.h"
 
+#include "tools/default_names.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -41,14 +43,15 @@ std::vector<CuttingData> cuttingFor(ToolType type, double diameter)
     return data;
 }
 
-Tool make(int id, ToolType type, double d, std::string name, double flute, double stickout, std::string holder,
+Tool make(int id, ToolType type, double d, tools::Named name, double flute, double stickout, std::string holder,
           int flutes, double life)
 {
     Tool t;
     t.id = id;
     t.type = type;
     t.diameter = d;
-    t.name = std::move(name);
+    t.name = std::move(name.text);
+    t.names = std::move(name.names);
     t.fluteLength = flute;
     t.stickout = stickout;
     t.holder = std::move(holder);
@@ -73,13 +76,14 @@ constexpr TurningData kTurningMaterials[] = {
 
 // A lathe tool: the insert from its ISO code (inscribed circle as the
 // diameter, nose radius as the corner radius), the holder and cutting data.
-Tool lathe(int id, ToolType type, std::string name, std::string code, double noseRadius, double ic, TurningSpec spec,
+Tool lathe(int id, ToolType type, tools::Named name, std::string code, double noseRadius, double ic, TurningSpec spec,
            std::string holder, bool finishing, double feedShare = 1.0)
 {
     Tool t;
     t.id = id;
     t.type = type;
-    t.name = std::move(name);
+    t.name = std::move(name.text);
+    t.names = std::move(name.names);
     t.diameter = ic;
     t.cornerRadius = noseRadius;
     t.holder = std::move(holder);
@@ -104,12 +108,12 @@ std::vector<Tool> defaultHoleTools()
     std::vector<Tool> tools;
     const std::pair<int, double> tapDrills[] = {{17, 2.5}, {18, 3.3}, {19, 4.2}};
     for (const auto& [id, d] : tapDrills)
-        tools.push_back(make(id, ToolType::Drill, d, fmt::format("Twist drill {} mm carbide 5xD", d), 5 * d + 5, 5 * d + 20,
+        tools.push_back(make(id, ToolType::Drill, d, tools::named(tools::kCarbideDrill, d), 5 * d + 5, 5 * d + 20,
                              "ER32 collet chuck", 2, 120));
     const std::tuple<int, int, double> taps[] = {{61, 3, 0.5}, {62, 4, 0.7}, {63, 5, 0.8}, {64, 6, 1.0},
                                                  {65, 8, 1.25}, {66, 10, 1.5}, {67, 12, 1.75}};
     for (const auto& [id, size, pitch] : taps) {
-        Tool t = make(id, ToolType::Tap, size, fmt::format("Machine tap M{}x{} HSS-E form C", size, pitch), 3 * size + 6,
+        Tool t = make(id, ToolType::Tap, size, tools::named(tools::kTap, size, pitch), 3 * size + 6,
                       5 * size + 25, "Tapping chuck ER32", 3, 60);
         t.turning.pitchMin = t.turning.pitchMax = pitch;
         t.turning.threadAngle = 60;
@@ -124,9 +128,9 @@ std::vector<Tool> defaultHoleTools()
     }
     const std::pair<int, double> reamers[] = {{74, 6}, {75, 8}, {76, 10}, {77, 12}};
     for (const auto& [id, d] : reamers) {
-        tools.push_back(make(id - 4, ToolType::Drill, d - 0.2, fmt::format("Twist drill {} mm carbide 5xD", d - 0.2),
+        tools.push_back(make(id - 4, ToolType::Drill, d - 0.2, tools::named(tools::kCarbideDrill, d - 0.2),
                              5 * d + 5, 5 * d + 20, "ER32 collet chuck", 2, 120));
-        Tool t = make(id, ToolType::Reamer, d, fmt::format("Machine reamer {} mm H7 carbide", d), 3 * d + 10, 5 * d + 30,
+        Tool t = make(id, ToolType::Reamer, d, tools::named(tools::kReamer, d), 3 * d + 10, 5 * d + 30,
                       "HSK63 shrink-fit", 6, 120);
         t.pointAngle = 0;
         t.cutting = cuttingFor(ToolType::Drill, d);
@@ -138,7 +142,7 @@ std::vector<Tool> defaultHoleTools()
     }
     const std::pair<int, double> bores[] = {{80, 16}, {81, 20}, {82, 25}};
     for (const auto& [id, d] : bores) {
-        Tool t = make(id, ToolType::BoringBar, d, fmt::format("Fine boring head set to {} mm", d), 3 * d, 4 * d + 20,
+        Tool t = make(id, ToolType::BoringBar, d, tools::named(tools::kBoringHead, d), 3 * d, 4 * d + 20,
                       "HSK63 boring head", 1, 120);
         t.cornerRadius = 0.2;
         t.pointAngle = 0;
@@ -160,33 +164,33 @@ std::vector<Tool> defaultLatheTools()
     TurningSpec od;
     od.approachAngle = 95;
     od.hand = "right";
-    tools.push_back(lathe(101, ToolType::TurningInsert, "OD roughing CNMG 120408, 95° holder", "CNMG 120408", 0.8, 12.7, od,
+    tools.push_back(lathe(101, ToolType::TurningInsert, tools::named(tools::kOdRoughing, "CNMG 120408", 95), "CNMG 120408", 0.8, 12.7, od,
                           "PCLNR 2525M12", false));
     od.approachAngle = 93;
-    tools.push_back(lathe(102, ToolType::TurningInsert, "OD finishing DNMG 150604, 93° holder", "DNMG 150604", 0.4, 12.7,
+    tools.push_back(lathe(102, ToolType::TurningInsert, tools::named(tools::kOdFinishing, "DNMG 150604", 93), "DNMG 150604", 0.4, 12.7,
                           od, "PDJNR 2525M15", true));
-    tools.push_back(lathe(103, ToolType::TurningInsert, "OD finishing VCMT 160404, 93° holder", "VCMT 160404", 0.4, 9.525,
+    tools.push_back(lathe(103, ToolType::TurningInsert, tools::named(tools::kOdFinishing, "VCMT 160404", 93), "VCMT 160404", 0.4, 9.525,
                           od, "SVJCR 2525M16", true));
     TurningSpec id = od;
     id.inside = true;
     id.minBore = 16;
-    tools.push_back(lathe(104, ToolType::TurningInsert, "ID boring DCMT 11T304, bar Ø12", "DCMT 11T304", 0.4, 9.525, id,
+    tools.push_back(lathe(104, ToolType::TurningInsert, tools::named(tools::kIdBoring, "DCMT 11T304", 12), "DCMT 11T304", 0.4, 9.525, id,
                           "S12M-SDUCR 11", true));
     TurningSpec groove;
     groove.width = 3;
     groove.maxDepth = 15;
     groove.hand = "neutral";
-    tools.push_back(lathe(105, ToolType::Grooving, "Grooving blade 3 mm, depth 15", "", 0.2, 3, groove, "GHDR 26-3", true, 0.5));
+    tools.push_back(lathe(105, ToolType::Grooving, tools::named(tools::kGrooving, 3, 15), "", 0.2, 3, groove, "GHDR 26-3", true, 0.5));
     TurningSpec part = groove;
     part.maxDepth = 25;
     part.maxDiameter = 50;
-    tools.push_back(lathe(106, ToolType::Grooving, "Parting blade 3 mm, up to Ø50", "", 0.2, 3, part, "GHDR 26-3 parting", true, 0.4));
+    tools.push_back(lathe(106, ToolType::Grooving, tools::named(tools::kParting, 3, 50), "", 0.2, 3, part, "GHDR 26-3 parting", true, 0.4));
     TurningSpec thread;
     thread.hand = "right";
     thread.pitchMin = 0.5;
     thread.pitchMax = 3.0;
     thread.threadAngle = 60;
-    tools.push_back(lathe(107, ToolType::Threading, "Threading 60° external, pitch 0.5-3", "", 0.05, 6.35, thread,
+    tools.push_back(lathe(107, ToolType::Threading, tools::named(tools::kThreading, 60, 0.5, 3), "", 0.05, 6.35, thread,
                           "SER 2525M16", true));
     return tools;
 }
@@ -195,9 +199,9 @@ std::vector<Tool> defaultToolLibrary()
 {
     std::vector<Tool> tools;
     // T1-T2: centre drills.
-    tools.push_back(make(1, ToolType::CentreDrill, 3.15, "Centre drill A3.15 HSS", 4, 30, "ER16 collet chuck", 2, 240));
+    tools.push_back(make(1, ToolType::CentreDrill, 3.15, tools::named(tools::kCentreDrill, 3.15), 4, 30, "ER16 collet chuck", 2, 240));
     tools.back().pointAngle = 90;
-    tools.push_back(make(2, ToolType::CentreDrill, 6.3, "Centre drill A6.3 HSS", 7, 40, "ER16 collet chuck", 2, 240));
+    tools.push_back(make(2, ToolType::CentreDrill, 6.3, tools::named(tools::kCentreDrill, 6.3), 7, 40, "ER16 collet chuck", 2, 240));
     tools.back().pointAngle = 90;
     // T3-T16: twist drills, solid carbide up to 12 mm, HSS-Co above.
     const double drills[] = {3, 4, 5, 6, 6.8, 8, 8.5, 10, 10.2, 12, 14, 16, 18, 20};
@@ -205,7 +209,7 @@ std::vector<Tool> defaultToolLibrary()
     for (const double d : drills) {
         const bool carbide = d <= 12;
         tools.push_back(make(id++, ToolType::Drill, d,
-                             fmt::format("Twist drill {} mm {}", d, carbide ? "carbide 5xD" : "HSS-Co"),
+                             tools::named(carbide ? tools::kCarbideDrill : tools::kCobaltDrill, d),
                              carbide ? 5 * d + 5 : 6 * d, carbide ? 5 * d + 20 : 6 * d + 30,
                              carbide ? "ER32 collet chuck" : "Weldon side lock", 2, carbide ? 120 : 90));
     }
@@ -213,7 +217,7 @@ std::vector<Tool> defaultToolLibrary()
     const double flats[] = {2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 25};
     id = 21;
     for (const double d : flats) {
-        tools.push_back(make(id++, ToolType::FlatEndMill, d, fmt::format("Flat end mill {} mm carbide", d),
+        tools.push_back(make(id++, ToolType::FlatEndMill, d, tools::named(tools::kFlatEndMill, d),
                              d <= 4 ? 3 * d : 2.5 * d, 3 * d + 15, d <= 12 ? "HSK63 shrink-fit" : "HSK63 Weldon",
                              d <= 5 ? 2 : d <= 16 ? 3 : 4, 120));
     }
@@ -221,7 +225,7 @@ std::vector<Tool> defaultToolLibrary()
     const double balls[] = {2, 3, 4, 6, 8, 10, 12};
     id = 41;
     for (const double d : balls) {
-        Tool t = make(id++, ToolType::BallEndMill, d, fmt::format("Ball end mill R{} carbide", d / 2), 2 * d, 3 * d + 15,
+        Tool t = make(id++, ToolType::BallEndMill, d, tools::named(tools::kBallEndMill, d / 2), 2 * d, 3 * d + 15,
                       "HSK63 shrink-fit", 2, 150);
         t.cornerRadius = d / 2;
         tools.push_back(t);
@@ -230,13 +234,13 @@ std::vector<Tool> defaultToolLibrary()
     const std::pair<double, double> tapers[] = {{1, 3}, {2, 3}, {3, 4}, {5, 4}, {7, 4}, {10, 6}};
     id = 51;
     for (const auto& [angle, tip] : tapers) {
-        Tool t = make(id++, ToolType::TaperEndMill, tip, fmt::format("Taper end mill {} deg/side, tip {} mm", angle, tip), 30,
+        Tool t = make(id++, ToolType::TaperEndMill, tip, tools::named(tools::kTaperEndMill, angle, tip), 30,
                       45, "HSK63 shrink-fit", 3, 90);
         t.taperAngle = angle;
         tools.push_back(t);
     }
     // T60: face mill.
-    tools.push_back(make(60, ToolType::FaceMill, 50, "Face mill 50 mm, 5 inserts", 6, 50, "HSK63 shell mill arbor", 5, 240));
+    tools.push_back(make(60, ToolType::FaceMill, 50, tools::named(tools::kFaceMill, 50, 5), 6, 50, "HSK63 shell mill arbor", 5, 240));
     tools.back().centreCutting = false;  // inserts on the rim only: it cannot plunge
     // T17-T19: the tap drills of M3-M5; T70-T73: the pre-drills of the
     // reamers (0.2 mm under); T61-T67 taps, T74-T77 reamers, T80-T82
@@ -244,7 +248,7 @@ std::vector<Tool> defaultToolLibrary()
     for (Tool& t : defaultHoleTools()) tools.push_back(std::move(t));
     // T90: touch probe for work-centre probing, 4 mm ruby ball; its length
     // is set to the ball's lowest point. It cuts nothing: no cutting data.
-    Tool probe = make(90, ToolType::Probe, 4, "Touch probe, 4 mm ruby ball", 0, 50, "HSK63 probe body", 0, 0);
+    Tool probe = make(90, ToolType::Probe, 4, tools::named(tools::kProbe, 4), 0, 50, "HSK63 probe body", 0, 0);
     probe.cutting.clear();
     probe.centreCutting = false;
     tools.push_back(probe);

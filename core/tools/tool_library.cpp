@@ -1,6 +1,7 @@
 // The tool library in SQLite: schema, first-use creation with the default
 // library, reading and editing. Every failure is a message naming the file.
 #include "tools/tool_library.h"
+#include "tools/turning_text.h"
 
 #include "tools/tool_check.h"
 #include "model/translate_noop.h"
@@ -20,7 +21,7 @@ namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 6;
+constexpr int kSchemaVersion = 7;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -35,7 +36,10 @@ CREATE TABLE cutting_data (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
   surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
   PRIMARY KEY (tool_id, material));
-PRAGMA user_version = 6;
+CREATE TABLE tool_names (
+  tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, name TEXT NOT NULL,
+  PRIMARY KEY (tool_id, language));
+PRAGMA user_version = 7;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
@@ -59,6 +63,11 @@ constexpr const char* kMigrations[] = {
     // and reaming pre-drills), added after it where their ids are free
     // (addFreeTools).
     "PRAGMA user_version = 6;",
+    // 6 -> 7: tools' names in other languages, for the station (Tool::names);
+    // the default library's tools that kept their id and name get theirs
+    // (addBuiltInNames).
+    "CREATE TABLE tool_names (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, "
+    "name TEXT NOT NULL, PRIMARY KEY (tool_id, language)); PRAGMA user_version = 7;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
@@ -119,40 +128,21 @@ bool addFreeTools(sqlite3* db, const std::vector<Tool>& tools)
     return true;
 }
 
-// A lathe tool's TurningSpec as the `turning` column holds it: JSON, empty
-// for other tools.
-std::string turningText(const TurningSpec& t)
+// Upgrading to version 7: the names in other languages of the default
+// library's tools that still have their id and name (a tool the shop
+// renamed keeps its own name in every language).
+bool addBuiltInNames(sqlite3* db)
 {
-    if (t.empty()) return "";
-    return nlohmann::json{{"insertCode", t.insertCode}, {"approachAngle", t.approachAngle}, {"hand", t.hand},
-                          {"inside", t.inside},         {"minBore", t.minBore},             {"width", t.width},
-                          {"maxDepth", t.maxDepth},     {"maxDiameter", t.maxDiameter},     {"pitchMin", t.pitchMin},
-                          {"pitchMax", t.pitchMax},     {"threadAngle", t.threadAngle}}
-        .dump();
-}
-
-std::optional<TurningSpec> turningFrom(const std::string& text)
-{
-    TurningSpec t;
-    if (text.empty()) return t;
-    const auto j = nlohmann::json::parse(text, nullptr, false);
-    if (!j.is_object()) return std::nullopt;
-    try {
-        t.insertCode = j.value("insertCode", "");
-        t.approachAngle = j.value("approachAngle", 0.0);
-        t.hand = j.value("hand", "");
-        t.inside = j.value("inside", false);
-        t.minBore = j.value("minBore", 0.0);
-        t.width = j.value("width", 0.0);
-        t.maxDepth = j.value("maxDepth", 0.0);
-        t.maxDiameter = j.value("maxDiameter", 0.0);
-        t.pitchMin = j.value("pitchMin", 0.0);
-        t.pitchMax = j.value("pitchMax", 0.0);
-        t.threadAngle = j.value("threadAngle", 0.0);
-    } catch (const nlohmann::json::exception&) {
-        return std::nullopt;
-    }
-    return t;
+    for (const Tool& t : defaultToolLibrary())
+        for (const auto& [language, name] : t.names) {
+            Statement s(db, "INSERT OR IGNORE INTO tool_names SELECT id, ?, ? FROM tools WHERE id = ? AND name = ?");
+            s.bind(1, language);
+            s.bind(2, name);
+            s.bind(3, t.id);
+            s.bind(4, t.name);
+            if (!s.ok() || s.step() != SQLITE_DONE) return false;
+        }
+    return true;
 }
 
 bool insert(sqlite3* db, const Tool& t)
@@ -179,9 +169,18 @@ bool insert(sqlite3* db, const Tool& t)
     s.bind(16, t.holderDiameter);
     s.bind(17, t.holderLength);
     if (s.step() != SQLITE_DONE) return false;
-    Statement del(db, "DELETE FROM cutting_data WHERE tool_id = ?");
-    del.bind(1, t.id);
-    if (!del.ok() || del.step() != SQLITE_DONE) return false;
+    for (const char* table : {"DELETE FROM cutting_data WHERE tool_id = ?", "DELETE FROM tool_names WHERE tool_id = ?"}) {
+        Statement del(db, table);
+        del.bind(1, t.id);
+        if (!del.ok() || del.step() != SQLITE_DONE) return false;
+    }
+    for (const auto& [language, name] : t.names) {
+        Statement n(db, "INSERT INTO tool_names VALUES (?,?,?)");
+        n.bind(1, t.id);
+        n.bind(2, language);
+        n.bind(3, name);
+        if (!n.ok() || n.step() != SQLITE_DONE) return false;
+    }
     for (const auto& c : t.cutting) {
         Statement cd(db, "INSERT INTO cutting_data VALUES (?,?,?,?,?)");
         cd.bind(1, t.id);
@@ -254,6 +253,7 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
         if (v < 4) ok = ok && addFreeTools(db, defaultLatheTools());
         if (v < 6) ok = ok && addFreeTools(db, defaultHoleTools());
+        if (v < 7) ok = ok && addBuiltInNames(db);
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
@@ -312,6 +312,13 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
             if (t.id == id) t.cutting.push_back({c.text(1), c.real(2), c.real(3), c.real(4)});
     }
     if (!c.ok() || rc != SQLITE_DONE) {
+        return Failure{describe(db, path_)};
+    }
+    Statement n(db, "SELECT tool_id, language, name FROM tool_names");
+    while (n.ok() && (rc = n.step()) == SQLITE_ROW)
+        for (auto& t : out)
+            if (t.id == n.integer(0)) t.names[n.text(1)] = n.text(2);
+    if (!n.ok() || rc != SQLITE_DONE) {
         return Failure{describe(db, path_)};
     }
     // Values no tool can have would fail deep in planning: named here.

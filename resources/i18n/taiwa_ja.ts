@@ -3857,6 +3857,118 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>形状が Z{} に達し、棒材の端 (Z{}) を超えています</translation>
         </message>
         <message>
+            <source>plane</source>
+            <translation>平面</translation>
+        </message>
+        <message>
+            <source>cylinder</source>
+            <translation>円筒面</translation>
+        </message>
+        <message>
+            <source>cone</source>
+            <translation>円錐面</translation>
+        </message>
+        <message>
+            <source>sphere</source>
+            <translation>球面</translation>
+        </message>
+        <message>
+            <source>torus</source>
+            <translation>トーラス面</translation>
+        </message>
+        <message>
+            <source>surface of revolution</source>
+            <translation>回転面</translation>
+        </message>
+        <message>
+            <source>Bézier surface</source>
+            <translation>ベジェ曲面</translation>
+        </message>
+        <message>
+            <source>B-spline surface</source>
+            <translation>B スプライン曲面</translation>
+        </message>
+        <message>
+            <source>extruded surface</source>
+            <translation>押し出し面</translation>
+        </message>
+        <message>
+            <source>offset surface</source>
+            <translation>オフセット面</translation>
+        </message>
+        <message>
+            <source>free-form surface</source>
+            <translation>自由曲面</translation>
+        </message>
+        <message>
+            <source>cannot open it (no such file)</source>
+            <translation>開けません (ファイルがありません)</translation>
+        </message>
+        <message>
+            <source>not a STEP file, or a broken one</source>
+            <translation>STEP ファイルでないか、壊れています</translation>
+        </message>
+        <message>
+            <source>the file holds no solid: a turned part is imported from its solid model</source>
+            <translation>ファイルにソリッドがありません: 旋削部品はソリッドモデルから取り込みます</translation>
+        </message>
+        <message>
+            <source>the file holds {} solids; import one turned part at a time</source>
+            <translation>ファイルに {} 個のソリッドがあります。旋削部品は 1 つずつ取り込んでください</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} is a {}, not turned about an axis</source>
+            <translation>回転体ではありません: 面 {} は{}で、軸のまわりに回転した面ではありません</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: no face of it is turned about an axis (cylinder, cone, torus, sphere)</source>
+            <translation>回転体ではありません: 軸のまわりに回転した面 (円筒面、円錐面、トーラス面、球面) がありません</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not turned about the axis of face {} (a {})</source>
+            <translation>回転体ではありません: 面 {0} ({1}) が面 {2} ({3}) の軸のまわりに回転していません</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not centred on the axis of face {} (a {})</source>
+            <translation>回転体ではありません: 面 {0} ({1}) の中心が面 {2} ({3}) の軸上にありません</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not square to the axis of face {} (a {})</source>
+            <translation>回転体ではありません: 面 {0} ({1}) が面 {2} ({3}) の軸に直角ではありません</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not cut the part with the half-plane</source>
+            <translation>OpenCASCADE で部品を半平面で切断できませんでした</translation>
+        </message>
+        <message>
+            <source>the half-section has an edge that is neither a line nor an arc</source>
+            <translation>半断面に直線でも円弧でもない辺があります</translation>
+        </message>
+        <message>
+            <source>the half-plane through the axis does not cut the part</source>
+            <translation>軸を通る半平面が部品と交わりません</translation>
+        </message>
+        <message>
+            <source>the half-section's outline does not close</source>
+            <translation>半断面の輪郭が閉じていません</translation>
+        </message>
+        <message>
+            <source>the half-section falls into several pieces (a closed cavity inside the part?)</source>
+            <translation>半断面がいくつかに分かれています (部品内部に閉じた空洞がありますか?)</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE failed reading it: {}</source>
+            <translation>{}: OpenCASCADE が読み込みに失敗しました: {}</translation>
+        </message>
+        <message>
+            <source>{} to {}</source>
+            <translation>{}～{}</translation>
+        </message>
+        <message>
+            <source>{} and {}</source>
+            <translation>{}、{}</translation>
+        </message>
+        <message>
             <source>work offset '{}' cannot be posted for {}: {}; {} offers {}</source>
             <translation>ワーク座標系 '{0}' は {1} に出力できません: {2}。{3} で使えるのは {4} です</translation>
         </message>

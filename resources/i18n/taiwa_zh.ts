@@ -3857,6 +3857,118 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>轮廓达到 Z{}，超出棒料末端（Z{}）</translation>
         </message>
         <message>
+            <source>plane</source>
+            <translation>平面</translation>
+        </message>
+        <message>
+            <source>cylinder</source>
+            <translation>圆柱面</translation>
+        </message>
+        <message>
+            <source>cone</source>
+            <translation>圆锥面</translation>
+        </message>
+        <message>
+            <source>sphere</source>
+            <translation>球面</translation>
+        </message>
+        <message>
+            <source>torus</source>
+            <translation>圆环面</translation>
+        </message>
+        <message>
+            <source>surface of revolution</source>
+            <translation>回转面</translation>
+        </message>
+        <message>
+            <source>Bézier surface</source>
+            <translation>贝塞尔曲面</translation>
+        </message>
+        <message>
+            <source>B-spline surface</source>
+            <translation>B 样条曲面</translation>
+        </message>
+        <message>
+            <source>extruded surface</source>
+            <translation>拉伸面</translation>
+        </message>
+        <message>
+            <source>offset surface</source>
+            <translation>偏置面</translation>
+        </message>
+        <message>
+            <source>free-form surface</source>
+            <translation>自由曲面</translation>
+        </message>
+        <message>
+            <source>cannot open it (no such file)</source>
+            <translation>无法打开（文件不存在）</translation>
+        </message>
+        <message>
+            <source>not a STEP file, or a broken one</source>
+            <translation>不是 STEP 文件，或文件已损坏</translation>
+        </message>
+        <message>
+            <source>the file holds no solid: a turned part is imported from its solid model</source>
+            <translation>文件中没有实体：车削零件从其实体模型导入</translation>
+        </message>
+        <message>
+            <source>the file holds {} solids; import one turned part at a time</source>
+            <translation>文件中有 {} 个实体；请一次导入一个车削零件</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} is a {}, not turned about an axis</source>
+            <translation>不是回转体：面 {} 是{}，不是绕轴回转的面</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: no face of it is turned about an axis (cylinder, cone, torus, sphere)</source>
+            <translation>不是回转体：没有绕轴回转的面（圆柱面、圆锥面、圆环面、球面）</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not turned about the axis of face {} (a {})</source>
+            <translation>不是回转体：面 {0}（{1}）不绕面 {2}（{3}）的轴回转</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not centred on the axis of face {} (a {})</source>
+            <translation>不是回转体：面 {0}（{1}）的中心不在面 {2}（{3}）的轴上</translation>
+        </message>
+        <message>
+            <source>not a body of revolution: face {} (a {}) is not square to the axis of face {} (a {})</source>
+            <translation>不是回转体：面 {0}（{1}）与面 {2}（{3}）的轴不垂直</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not cut the part with the half-plane</source>
+            <translation>OpenCASCADE 无法用半平面剖切零件</translation>
+        </message>
+        <message>
+            <source>the half-section has an edge that is neither a line nor an arc</source>
+            <translation>半剖面中有既非直线也非圆弧的边</translation>
+        </message>
+        <message>
+            <source>the half-plane through the axis does not cut the part</source>
+            <translation>过轴的半平面没有剖切到零件</translation>
+        </message>
+        <message>
+            <source>the half-section's outline does not close</source>
+            <translation>半剖面的轮廓不封闭</translation>
+        </message>
+        <message>
+            <source>the half-section falls into several pieces (a closed cavity inside the part?)</source>
+            <translation>半剖面分成了多块（零件内部有封闭空腔？）</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE failed reading it: {}</source>
+            <translation>{}：OpenCASCADE 读取失败：{}</translation>
+        </message>
+        <message>
+            <source>{} to {}</source>
+            <translation>{} 至 {}</translation>
+        </message>
+        <message>
+            <source>{} and {}</source>
+            <translation>{} 和 {}</translation>
+        </message>
+        <message>
             <source>work offset '{}' cannot be posted for {}: {}; {} offers {}</source>
             <translation>工件坐标系 '{0}' 无法为 {1} 输出：{2}；{3} 提供 {4}</translation>
         </message>
