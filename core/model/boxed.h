@@ -7,7 +7,6 @@
 
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <utility>
 
 namespace taiwa {
@@ -39,12 +38,6 @@ public:
     const T& operator*() const { return *p_; }
     T* operator->() { return p_.get(); }
     const T* operator->() const { return p_.get(); }
-    const T& value() const
-    {
-        if (!p_) throw std::bad_optional_access();
-        return *p_;
-    }
-    void reset() { p_.reset(); }
 
     friend bool operator==(const Boxed& a, const Boxed& b) { return a.p_ ? b.p_ && *a.p_ == *b.p_ : !b.p_; }
 
