@@ -202,6 +202,42 @@ private slots:
         QCOMPARE(differingPixels(after, still), 0);
     }
 
+    // A large plan drawn merged (over 400 steps, in blocks of units): every
+    // block decimated within its share of the budget while moving, full
+    // detail again when it stops; after an edit of one step the same.
+    void mergedPlanDecimatesEachBlock()
+    {
+        auto plan = std::make_shared<Plan>(*hatchPlan(1));
+        const ToolPath row = *plan->steps.front().path;
+        plan->steps.clear();
+        for (int k = 0; k < 480; ++k) {  // 120 units of 4 steps, each a row of 650 pieces
+            Step s;
+            s.unit = k / 4;
+            s.tool = ToolChoice{1, ""};
+            ToolPath p{{5, 5, 5}, {}};
+            const double dy = 140.0 * k / 480;
+            for (std::size_t i = 0; i < 650; ++i) p.moves.push_back({MoveKind::Feed, {row.moves[i].end.x, row.moves[i].end.y + dy, -5}});
+            s.path = p;
+            plan->steps.push_back(s);
+        }
+        Scene scene;
+        scene.setPlan(plan);
+        QVERIFY(scene.pathBlockActors().size() > 1);
+        const std::size_t full = scene.drawnPathSegments();
+        QVERIFY2(full > Scene::kLodAbove, qPrintable(QString::number(full)));
+        for (int edit = 0; edit < 2; ++edit) {
+            scene.setMoving(true);
+            const std::size_t drawn = scene.drawnPathSegments();
+            QVERIFY2(drawn <= Scene::kLodBudget && drawn < full / 5, qPrintable(QString::number(drawn)));
+            scene.setMoving(false);
+            QCOMPARE(scene.drawnPathSegments(), full);
+            auto next = std::make_shared<Plan>(*plan);
+            next->steps.front().path->moves.front().end.z = -4 - edit;
+            scene.setPlan(next);
+            QVERIFY(scene.lastPlanUpdate().inPlace && scene.lastPlanUpdate().blocksMade == 1);
+        }
+    }
+
     // A small plan keeps every segment while moving (only its lines thin).
     void smallPlanKeepsItsSegments()
     {

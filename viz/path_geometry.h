@@ -36,6 +36,10 @@ struct MergedPaths {
 };
 MergedPaths makeMergedPaths(const std::vector<const ToolPath*>& paths, double chordTolerance = 0.01);
 
+// A cheap key for a tool path (its start, move count and three of its
+// moves); equal paths have equal keys.
+std::size_t pathKey(const ToolPath& p);
+
 // The pieces of one move only, as lines (the highlight).
 vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move);
 

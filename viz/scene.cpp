@@ -109,14 +109,16 @@ void Scene::clear()
 {
     // Merged mode: the steps' own actors shown before (out of the renderer
     // now) may hold GPU buffers.
-    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && allFeeds_)
+    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && merged_)
         for (const StepActors& a : steps_)
             for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()})
                 if (actor) actor->ReleaseGraphicsResources(window);
     renderer_->RemoveAllViewProps();
     steps_.clear();
-    merged_ = {};
-    allFeeds_ = allRapids_ = nullptr;
+    blocks_.clear();
+    blockOf_.clear();
+    merged_ = false;
+    outlines_ = {};
     shownStep_ = -1;
     twins_.clear();
     pathSegments_ = 0;
@@ -156,14 +158,16 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     outline->Update();
     stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
     renderer_->AddActor(stockEdges_);
-    partEdges_ = lineActor(pocketOutlines(plan_->steps), palette::kPartEdges, 1.5);
+    partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
     renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
-    if (steps_.size() > kMergeAbove) {
+    merged_ = steps_.size() > kMergeAbove;
+    if (merged_) {
         mergePaths();
-        renderer_->AddActor(allFeeds_);
-        renderer_->AddActor(allRapids_);
+        // All feeds, then all rapids (drawn over them where they meet).
+        for (const PathBlock& b : blocks_) renderer_->AddActor(b.feeds);
+        for (const PathBlock& b : blocks_) renderer_->AddActor(b.rapids);
     } else {
         for (int k = 0; k < n; ++k) {
             const StepActors& a = stepActors(k);
@@ -255,13 +259,15 @@ void Scene::highlightMove(int step, int move)
 
 void Scene::updateEmphasis()
 {
-    if (allFeeds_) {
-        // Merged: everything in one pair of actors, the selected step drawn
-        // over it with its own.
-        setColour(allFeeds_, selected_ < 0 ? palette::kFeed : palette::kDimmed);
-        allFeeds_->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
-        allFeeds_->SetVisibility(selected_ < 0 || !othersHidden_);
-        allRapids_->SetVisibility(selected_ < 0);
+    if (merged_) {
+        // Merged: everything in the blocks' actors, the selected step drawn
+        // over them with its own.
+        for (const PathBlock& b : blocks_) {
+            setColour(b.feeds, selected_ < 0 ? palette::kFeed : palette::kDimmed);
+            b.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
+            b.feeds->SetVisibility(selected_ < 0 || !othersHidden_);
+            b.rapids->SetVisibility(selected_ < 0);
+        }
         if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
             detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
             detach(steps_[static_cast<std::size_t>(shownStep_)].rapids);
@@ -547,7 +553,7 @@ std::array<double, 6> Scene::bounds() const
     const Stock& s = plan_->mmJob.stock;
     b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};
     std::vector<vtkPoints*> pointSets;
-    if (merged_.points) pointSets.push_back(merged_.points);
+    for (const PathBlock& block : blocks_) pointSets.push_back(block.paths.points);
     for (const auto& a : steps_)
         if (a.geometry.points) pointSets.push_back(a.geometry.points);
     for (vtkPoints* points : pointSets) {
@@ -608,22 +614,14 @@ std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height
         const StepActors& a = steps_[static_cast<std::size_t>(k)];
         if (a.geometry.points)
             pick(k, a.geometry.points, 0, a.geometry.points->GetNumberOfPoints(), a.geometry.moveOfPiece.data());
-        else if (merged_.points && merged_.count[static_cast<std::size_t>(k)] > 0)
-            pick(k, merged_.points, merged_.first[static_cast<std::size_t>(k)], merged_.count[static_cast<std::size_t>(k)],
-                 merged_.moveOfPiece.data() + merged_.first[static_cast<std::size_t>(k)]);
+        else if (merged_ && blockOf_[static_cast<std::size_t>(k)].first >= 0) {
+            const auto [b, i] = blockOf_[static_cast<std::size_t>(k)];
+            const MergedPaths& mp = blocks_[static_cast<std::size_t>(b)].paths;
+            const vtkIdType first = mp.first[static_cast<std::size_t>(i)], count = mp.count[static_cast<std::size_t>(i)];
+            if (count > 0) pick(k, mp.points, first, count, mp.moveOfPiece.data() + first);
+        }
     }
     return best;
-}
-
-void Scene::mergePaths()
-{
-    std::vector<const ToolPath*> paths;
-    paths.reserve(steps_.size());
-    for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
-    merged_ = makeMergedPaths(paths);
-    pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
-    allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
-    allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
 }
 
 }  // namespace taiwa::viz

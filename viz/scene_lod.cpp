@@ -7,10 +7,13 @@
 #include "viz/scene.h"
 
 #include <vtkPolyDataMapper.h>
+#include <vtkRenderWindow.h>
 #include <vtkProperty.h>
 #include <vtkShaderProperty.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace taiwa::viz {
 
@@ -31,8 +34,8 @@ void Scene::drawAsBackdrop(vtkActor* actor)
 std::vector<vtkActor*> Scene::pathActors() const
 {
     std::vector<vtkActor*> actors;
-    for (vtkActor* a : {allFeeds_.Get(), allRapids_.Get()})
-        if (a) actors.push_back(a);
+    for (const PathBlock& b : blocks_)
+        for (vtkActor* a : {b.feeds.Get(), b.rapids.Get()}) actors.push_back(a);
     for (const StepActors& s : steps_)
         for (vtkActor* a : {s.feeds.Get(), s.rapids.Get()})
             if (a) actors.push_back(a);
@@ -54,7 +57,22 @@ void Scene::updateLod()
     if (lod) {
         const auto b = bounds();
         tolerance = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]) / 1000.0;
+        // Twins made for other bounds (before an edit that moved them) go.
+        if (tolerance != twinTolerance_) {
+            vtkRenderWindow* window = renderer_->GetRenderWindow();
+            for (auto& [actor, twin] : twins_) {
+                if (actor->GetMapper() != twin.full) actor->SetMapper(twin.full);
+                if (twin.lod && window) twin.lod->ReleaseGraphicsResources(window);
+            }
+            twins_.clear();
+            twinTolerance_ = tolerance;
+        }
     }
+    // A merged block is decimated whatever its size, within its share of
+    // the budget; a step's own actor from kLodMin segments.
+    std::map<vtkActor*, std::size_t> share;
+    for (const PathBlock& b : blocks_)
+        for (vtkActor* a : {b.feeds.Get(), b.rapids.Get()}) share[a] = 0;
     for (vtkActor* actor : pathActors()) {
         auto found = twins_.find(actor);
         if (!lod) {
@@ -65,9 +83,13 @@ void Scene::updateLod()
             auto* full = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
             vtkPolyData* data = full ? full->GetInput() : nullptr;
             Twin twin{full, nullptr};
-            if (data && lineSegmentCount(data) >= kLodMin) {
+            const std::size_t segments = data ? lineSegmentCount(data) : 0;
+            const bool block = share.count(actor) != 0;
+            if (segments > 0 && (block || segments >= kLodMin)) {
+                const std::size_t budget =
+                    block ? std::max<std::size_t>(1, kLodBudget * segments / std::max<std::size_t>(pathSegments_, 1)) : kLodBudget;
                 auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-                mapper->SetInputData(decimateLinesWithin(data, tolerance, kLodBudget));
+                mapper->SetInputData(decimateLinesWithin(data, tolerance, budget));
                 mapper->ScalarVisibilityOff();
                 mapper->StaticOn();
                 twin.lod = mapper;
