@@ -208,6 +208,7 @@ void Scene::makeAxes(double axisLength)
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     scaleNote_->SetPosition(0.99, 0.015);
+    showWhenStill();
 }
 
 Scene::StepActors& Scene::stepActors(int k)
@@ -335,6 +336,7 @@ void Scene::buildLathe()
     renderer_->AddActor(stock_);
     const double axisLength = niceLength(bar.diameter);
     axes_ = labelledAxes(axisLength, 14, "Z", "", "X");  // the spindle axis runs along the view's X
+    showWhenStill();
     renderer_->AddActor(axes_);
 }
 
@@ -515,6 +517,7 @@ void Scene::updateTool()
         tool_->GetProperty()->SetAmbient(0.6);
         tool_->GetProperty()->SetDiffuse(0.4);
         toolAt_ = Point3{at.z, 0.0, at.r};  // VTK's X along the spindle, the radius up
+        showWhenStill();
         renderer_->AddActor(tool_);
         return;
     }
@@ -528,6 +531,7 @@ void Scene::updateTool()
     toolAt_ = at;
     tool_->GetProperty()->SetAmbient(0.35);
     tool_->GetProperty()->SetDiffuse(0.65);
+    showWhenStill();
     renderer_->AddActor(tool_);
 }
 

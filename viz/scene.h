@@ -125,7 +125,8 @@ public:
     bool showsDeviation() const { return deviation_ != nullptr; }
     // While the operator turns, pans or zooms the camera (the preview
     // widget's interaction start and end): the path lines one pixel wide,
-    // the glass tray hidden (the stock's edges show it) and, above
+    // the glass tray hidden (the stock's edges show it), the axes' labels,
+    // the scale note and the tool left out and, above
     // kLodAbove path segments, each path actor of kLodMin segments or more
     // drawn from its decimated twin (viz/path_lod.h, at most kLodBudget
     // segments, within a thousandth of the scene's diagonal), made on the
@@ -181,6 +182,9 @@ private:
     void updateLod();
     // The glass tray drawn in the opaque pass at the far plane's depth.
     static void drawAsBackdrop(vtkActor* actor);
+    // The axes' labels, the scale note and the tool: hidden while the
+    // camera moves (scene_lod.cpp).
+    void showWhenStill();
     // A path line's width: `still`, or 1 while the camera moves.
     float pathWidth(float still) const { return moving_ ? 1.0f : still; }
     void clear();
