@@ -1,7 +1,7 @@
 // What `taiwa render JOB --step all` costs as the job grows: 1,000 and 3,000
 // units of the shared benchmark job (bench_job.h), each in a child process
 // of its own: the plan with its paths, then the scene and the 800 x 600 iso
-// picture (merged above 400 steps: two actors for all paths). Prints the
+// picture (merged above 400 steps: two actors per block of units). Prints the
 // two parts, the whole and the peak memory. Needs an X display: run it
 // under `xvfb-run -a`.
 #include "bench_child.h"

@@ -3,8 +3,11 @@
 // to bring the scene to the step (stock simulated up to it, its surface
 // rebuilt) and to draw the next frame (800 x 600, offscreen, Mesa under
 // Xvfb), walking forward through every step as the play button does, and
-// jumping back to the first step. Run under `xvfb-run -a` from the source
-// tree's root, or set TAIWA_BENCH_JOB.
+// jumping back to the first step. BM_FrameParts: what each element of the
+// station's picture of the job (stock shown, iso, the view's 836 x 425)
+// costs a frame: the frame with everything, then with each prop hidden in
+// turn, interleaved; processor time of the process (Mesa's threads too).
+// Run under `xvfb-run -a` from the source tree's root, or set TAIWA_BENCH_JOB.
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
@@ -13,7 +16,18 @@
 
 #include <benchmark/benchmark.h>
 
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
+#include <vtkProp.h>
+#include <vtkPropCollection.h>
+#include <vtkActor.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
 
 #include <chrono>
 #include <cstdlib>
@@ -81,6 +95,67 @@ void BM_SelectStep(benchmark::State& state)
     state.counters["frame_ms"] = frameMs / static_cast<double>(selections);
 }
 BENCHMARK(BM_SelectStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+double cpuMs()
+{
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
+void BM_FrameParts(benchmark::State& state)
+{
+    const auto plan = samplePlan();
+    if (!plan || plan->steps.empty()) {
+        state.SkipWithError("cannot plan resources/samples/plate.taiwa (run from the source root)");
+        return;
+    }
+    viz::Scene scene;
+    scene.setPlan(plan);
+    scene.setShowStock(true);
+    scene.setView(viz::ViewPreset::Iso, 836.0 / 425.0);
+    const viz::OffscreenWindow offscreen(836, 425);
+    vtkRenderWindow* window = offscreen.window();
+    if (!window) {
+        state.SkipWithError(offscreen.problem()->c_str());
+        return;
+    }
+    window->AddRenderer(scene.renderer());
+    window->Render();
+    std::vector<vtkProp*> props;
+    vtkPropCollection* all = scene.renderer()->GetViewProps();
+    all->InitTraversal();
+    while (vtkProp* p = all->GetNextProp())
+        if (p->GetVisibility()) props.push_back(p);
+    // Configuration 0: everything; k: prop k - 1 hidden.
+    std::vector<double> cpu(props.size() + 1, 0.0), wall(props.size() + 1, 0.0);
+    long frames = 0;
+    for (auto _ : state) {
+        for (std::size_t c = 0; c <= props.size(); ++c) {
+            if (c > 0) props[c - 1]->VisibilityOff();
+            const double c0 = cpuMs();
+            const auto t0 = Clock::now();
+            window->Render();
+            window->WaitForCompletion();
+            wall[c] += ms(Clock::now() - t0);
+            cpu[c] += cpuMs() - c0;
+            if (c > 0) props[c - 1]->VisibilityOn();
+        }
+        ++frames;
+    }
+    const double n = static_cast<double>(frames);
+    std::printf("frame of the station's view (stock shown): %.1f ms processor, %.1f ms clock\n", cpu[0] / n, wall[0] / n);
+    for (std::size_t k = 0; k < props.size(); ++k) {
+        std::string what = props[k]->GetClassName();
+        if (auto* a = vtkActor::SafeDownCast(props[k]); a && a->GetMapper())
+            if (auto* pd = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0)))
+                what += " (" + std::to_string(pd->GetNumberOfPolys()) + " polys, " + std::to_string(pd->GetNumberOfLines()) + " lines)";
+        std::printf("  without prop %zu %s: saves %.1f ms processor, %.1f ms clock\n", k, what.c_str(), (cpu[0] - cpu[k + 1]) / n,
+                    (wall[0] - wall[k + 1]) / n);
+    }
+    state.counters["frame_cpu_ms"] = cpu[0] / n;
+}
+BENCHMARK(BM_FrameParts)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 }  // namespace
 

@@ -3,11 +3,13 @@
 // lines stay within their bound of every point they drop, keep each run's
 // ends and runs apart; in the widget a large plan is drawn from far fewer
 // segments while the left button is down, covering the same region of the
-// picture, and exactly as before once it is released; a small plan keeps
+// picture, and exactly as before once it is released; the tool, the axes'
+// labels and the scale note left out while moving; a small plan keeps
 // all its segments. Needs an X display (xvfb-run -a).
 #include "support/images.h"
 #include "ui/preview_widget.h"
 #include "viz/path_lod.h"
+#include "viz/render.h"
 #include "viz/scene.h"
 
 #include <QApplication>
@@ -16,6 +18,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkPoints.h>
+#include <vtkRenderWindow.h>
 
 #include <cmath>
 #include <numbers>
@@ -200,6 +203,79 @@ private slots:
         QCOMPARE(w.scene().drawnPathSegments(), full);
         const QImage after = w.grabImage().convertToFormat(QImage::Format_RGB32);
         QCOMPARE(differingPixels(after, still), 0);
+    }
+
+    // A large plan drawn merged (over 400 steps, in blocks of units): every
+    // block decimated within its share of the budget while moving, full
+    // detail again when it stops; after an edit of one step the same.
+    void mergedPlanDecimatesEachBlock()
+    {
+        auto plan = std::make_shared<Plan>(*hatchPlan(1));
+        const ToolPath row = *plan->steps.front().path;
+        plan->steps.clear();
+        for (int k = 0; k < 480; ++k) {  // 120 units of 4 steps, each a row of 650 pieces
+            Step s;
+            s.unit = k / 4;
+            s.tool = ToolChoice{1, ""};
+            ToolPath p{{5, 5, 5}, {}};
+            const double dy = 140.0 * k / 480;
+            for (std::size_t i = 0; i < 650; ++i) p.moves.push_back({MoveKind::Feed, {row.moves[i].end.x, row.moves[i].end.y + dy, -5}});
+            s.path = p;
+            plan->steps.push_back(s);
+        }
+        Scene scene;
+        scene.setPlan(plan);
+        QVERIFY(scene.pathBlockActors().size() > 1);
+        const std::size_t full = scene.drawnPathSegments();
+        QVERIFY2(full > Scene::kLodAbove, qPrintable(QString::number(full)));
+        for (int edit = 0; edit < 2; ++edit) {
+            scene.setMoving(true);
+            const std::size_t drawn = scene.drawnPathSegments();
+            QVERIFY2(drawn <= Scene::kLodBudget && drawn < full / 5, qPrintable(QString::number(drawn)));
+            scene.setMoving(false);
+            QCOMPARE(scene.drawnPathSegments(), full);
+            auto next = std::make_shared<Plan>(*plan);
+            next->steps.front().path->moves.front().end.z = -4 - edit;
+            scene.setPlan(next);
+            QVERIFY(scene.lastPlanUpdate().inPlace && scene.lastPlanUpdate().blocksMade == 1);
+        }
+    }
+
+    // While moving, the tool, the axes' labels and the scale note are left
+    // out (scene_lod.cpp); once still, the picture is a scene's that never
+    // moved, pixel for pixel.
+    void movingLeavesOutToolAndTexts()
+    {
+        const auto plan = hatchPlan(2);
+        const auto draw = [](Scene& scene) {
+            OffscreenWindow window(kW, kH);
+            if (window.problem()) return QImage();
+            window.window()->AddRenderer(scene.renderer());
+            scene.setView(ViewPreset::Iso, static_cast<double>(kW) / kH);
+            window.window()->Render();
+            const std::string png = pngOf(window.window());
+            window.window()->RemoveRenderer(scene.renderer());
+            return QImage::fromData(reinterpret_cast<const uchar*>(png.data()), static_cast<int>(png.size()), "PNG")
+                .convertToFormat(QImage::Format_RGB32);
+        };
+        const auto gold = [](const QImage& img) {
+            int n = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x) n += goldish(img.pixel(x, y)) ? 1 : 0;
+            return n;
+        };
+        Scene never, moved;
+        never.setPlan(plan);
+        moved.setPlan(plan);
+        const QImage still = draw(never);
+        QVERIFY2(!still.isNull(), "no display");
+        QVERIFY2(gold(still) > 50, qPrintable(QString::number(gold(still))));  // the tool
+        moved.setMoving(true);
+        const QImage moving = draw(moved);
+        QCOMPARE(gold(moving), 0);
+        QVERIFY(moved.scaleNote().size() > 0);
+        moved.setMoving(false);
+        QCOMPARE(differingPixels(draw(moved), still), 0);
     }
 
     // A small plan keeps every segment while moving (only its lines thin).

@@ -2,7 +2,8 @@
 // draws the picture a new scene draws of the edited plan, pixel for pixel:
 // the sample plate.taiwa with unit 1's depth changed (or its stock wider),
 // with the simulated stock and the translucent block, all steps or one
-// selected, and a job of 150 pockets (drawn merged). The update keeps the unchanged steps'
+// selected, and a job of 150 pockets (drawn merged, in blocks of units:
+// the blocks without unit 1 keep their actors). The update keeps the unchanged steps'
 // path actors and makes the changed ones', and the edit shows (the picture
 // before it differs), so a path or stock left stale would fail the
 // comparison. Needs an X display (xvfb-run -a).
@@ -110,7 +111,10 @@ class TestRenderSceneUpdate : public QObject {
         compareInto(before, after, o, merged, u);
         return u;
     }
-    void compareInto(const Job& before, const Job& after, const Settings& o, bool merged, Scene::PlanUpdate& u)
+    // A merged scene's block actors before and after the update.
+    using BlockActors = std::vector<std::array<const vtkActor*, 2>>;
+    void compareInto(const Job& before, const Job& after, const Settings& o, bool merged, Scene::PlanUpdate& u,
+                     BlockActors* blocksBefore = nullptr, BlockActors* blocksAfter = nullptr)
     {
         const auto p0 = planOf(before), p1 = planOf(after);
         QVERIFY2(!p0->steps.empty() && p0->steps.size() == p1->steps.size(), qPrintable(QString("%1 and %2 steps, %3").arg(p0->steps.size()).arg(p1->steps.size()).arg(p0->diagnostics.empty() ? QString() : QString::fromStdString(p0->diagnostics.front().message))));
@@ -124,8 +128,10 @@ class TestRenderSceneUpdate : public QObject {
         const QImage old = picture(updated, camera);
         QVERIFY2(!old.isNull(), "no display");
 
+        if (blocksBefore) *blocksBefore = updated.pathBlockActors();
         updated.setPlan(p1);
         u = updated.lastPlanUpdate();
+        if (blocksAfter) *blocksAfter = updated.pathBlockActors();
         QVERIFY(u.inPlace);
         const QImage edited = picture(updated, camera);
 
@@ -187,6 +193,49 @@ private slots:
     }
 
     void mergedAsANewScene() { compare(grid(150), deeper(grid(150)), {false, 3}, true); }
+
+    // Merged, the paths are in blocks of units (viz/scene_blocks.cpp): an
+    // edit of unit 1 makes its block anew and keeps every other block's
+    // actors (the same objects, their GPU buffers with them); the picture,
+    // all steps alike or one step selected over the dimmed rest, is a new
+    // scene's.
+    void mergedEditKeepsTheOtherBlocks()
+    {
+        for (const Settings& o : {Settings{false, -1}, Settings{false, 3}, Settings{true, -1}}) {
+            Scene::PlanUpdate u;
+            BlockActors was, now;
+            compareInto(grid(150), deeper(grid(150)), o, true, u, &was, &now);
+            if (QTest::currentTestFailed()) return;
+            QVERIFY2(was.size() >= 8, qPrintable(QString::number(was.size())));
+            QCOMPARE(now.size(), was.size());
+            QCOMPARE(u.blocksMade, 1);
+            QCOMPARE(u.blocksKept, static_cast<int>(was.size()) - 1);
+            // Unit 1's steps are in the first block: made anew; the rest the same actors.
+            QVERIFY(now[0][0] != was[0][0] && now[0][1] != was[0][1]);
+            for (std::size_t b = 1; b < was.size(); ++b) QVERIFY2(now[b] == was[b], qPrintable(QString("block %1").arg(b)));
+        }
+    }
+
+    // Blocks of units: every step with a path in exactly one block, a
+    // unit's steps all in one, at most 64 blocks.
+    void mergedBlocksFollowUnits()
+    {
+        const auto p = planOf(grid(150));
+        Scene s;
+        s.setPlan(p);
+        const auto blocks = s.pathBlockSteps();
+        QVERIFY(blocks.size() > 1 && blocks.size() <= 64);
+        std::vector<int> blockOfStep(p->steps.size(), -1), blockOfUnit(150, -1);
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+            for (int k : blocks[b]) {
+                QCOMPARE(blockOfStep[static_cast<std::size_t>(k)], -1);
+                blockOfStep[static_cast<std::size_t>(k)] = static_cast<int>(b);
+                int& unit = blockOfUnit[static_cast<std::size_t>(p->steps[static_cast<std::size_t>(k)].unit)];
+                QVERIFY(unit == -1 || unit == static_cast<int>(b));
+                unit = static_cast<int>(b);
+            }
+        for (std::size_t k = 0; k < p->steps.size(); ++k) QCOMPARE(blockOfStep[k] >= 0, p->steps[k].path.has_value());
+    }
 
     // A wider stock: its edges, block and axes new, the paths kept.
     void widerStockAsANewScene()

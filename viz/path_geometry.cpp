@@ -6,6 +6,8 @@
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 
+#include <functional>
+
 namespace taiwa::viz {
 
 namespace {
@@ -73,6 +75,23 @@ MergedPaths makeMergedPaths(const std::vector<const ToolPath*>& paths, double ch
     m.feeds = linesOn(m.points, feeds);
     m.rapids = linesOn(m.points, rapids);
     return m;
+}
+
+std::size_t pathKey(const ToolPath& p)
+{
+    std::size_t h = std::hash<std::size_t>()(p.moves.size());
+    const auto mix = [&h](double v) { h ^= std::hash<double>()(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
+    mix(p.start.x);
+    mix(p.start.y);
+    mix(p.start.z);
+    if (!p.moves.empty()) {
+        for (const Move* m : {&p.moves.front(), &p.moves[p.moves.size() / 2], &p.moves.back()}) {
+            mix(m->end.x);
+            mix(m->end.y);
+            mix(m->end.z);
+        }
+    }
+    return h;
 }
 
 vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move)

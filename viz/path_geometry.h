@@ -25,7 +25,8 @@ struct PathGeometry {
 PathGeometry makePathGeometry(const ToolPath& path, double chordTolerance = 0.01);
 
 // The paths of many steps in one point list and two line sets (a large
-// plan's scene draws them as two actors and makes no VTK object per step).
+// plan's scene draws each block of units as two actors and makes no VTK
+// object per step).
 // Step k's points are [first[k], first[k] + count[k]); the piece from point
 // i to point i + 1 belongs to move moveOfPiece[i] of its step's path.
 struct MergedPaths {
@@ -35,6 +36,10 @@ struct MergedPaths {
     std::vector<int> moveOfPiece;         // per point
 };
 MergedPaths makeMergedPaths(const std::vector<const ToolPath*>& paths, double chordTolerance = 0.01);
+
+// A cheap key for a tool path (its start, move count and three of its
+// moves); equal paths have equal keys.
+std::size_t pathKey(const ToolPath& p);
 
 // The pieces of one move only, as lines (the highlight).
 vtkSmartPointer<vtkPolyData> movePieces(const PathGeometry& g, int move);

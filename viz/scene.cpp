@@ -38,23 +38,6 @@ namespace {
 
 void setColour(vtkActor* a, Rgb c) { a->GetProperty()->SetColor(c.red(), c.green(), c.blue()); }
 
-// World point to pixel through the camera's composite matrix.
-std::array<double, 2> project(vtkMatrix4x4* m, double x, double y, double z, int width, int height)
-{
-    const double in[4] = {x, y, z, 1.0};
-    double out[4];
-    m->MultiplyPoint(in, out);
-    const double w = out[3] != 0 ? out[3] : 1.0;
-    return {(out[0] / w + 1.0) / 2.0 * width, (1.0 - out[1] / w) / 2.0 * height};
-}
-
-double segmentDistance(double px, double py, const double a[2], const double b[2])
-{
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const double len2 = dx * dx + dy * dy;
-    const double t = len2 > 0 ? std::clamp(((px - a[0]) * dx + (py - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(px - a[0] - t * dx, py - a[1] - t * dy);
-}
 
 std::function<std::string(int)>& scaleNoteText()
 {
@@ -109,14 +92,16 @@ void Scene::clear()
 {
     // Merged mode: the steps' own actors shown before (out of the renderer
     // now) may hold GPU buffers.
-    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && allFeeds_)
+    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && merged_)
         for (const StepActors& a : steps_)
             for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()})
                 if (actor) actor->ReleaseGraphicsResources(window);
     renderer_->RemoveAllViewProps();
     steps_.clear();
-    merged_ = {};
-    allFeeds_ = allRapids_ = nullptr;
+    blocks_.clear();
+    blockOf_.clear();
+    merged_ = false;
+    outlines_ = {};
     shownStep_ = -1;
     twins_.clear();
     pathSegments_ = 0;
@@ -156,14 +141,16 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     outline->Update();
     stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
     renderer_->AddActor(stockEdges_);
-    partEdges_ = lineActor(pocketOutlines(plan_->steps), palette::kPartEdges, 1.5);
+    partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
     renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
-    if (steps_.size() > kMergeAbove) {
+    merged_ = steps_.size() > kMergeAbove;
+    if (merged_) {
         mergePaths();
-        renderer_->AddActor(allFeeds_);
-        renderer_->AddActor(allRapids_);
+        // All feeds, then all rapids (drawn over them where they meet).
+        for (const PathBlock& b : blocks_) renderer_->AddActor(b.feeds);
+        for (const PathBlock& b : blocks_) renderer_->AddActor(b.rapids);
     } else {
         for (int k = 0; k < n; ++k) {
             const StepActors& a = stepActors(k);
@@ -204,6 +191,7 @@ void Scene::makeAxes(double axisLength)
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     scaleNote_->SetPosition(0.99, 0.015);
+    showWhenStill();
 }
 
 Scene::StepActors& Scene::stepActors(int k)
@@ -255,13 +243,15 @@ void Scene::highlightMove(int step, int move)
 
 void Scene::updateEmphasis()
 {
-    if (allFeeds_) {
-        // Merged: everything in one pair of actors, the selected step drawn
-        // over it with its own.
-        setColour(allFeeds_, selected_ < 0 ? palette::kFeed : palette::kDimmed);
-        allFeeds_->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
-        allFeeds_->SetVisibility(selected_ < 0 || !othersHidden_);
-        allRapids_->SetVisibility(selected_ < 0);
+    if (merged_) {
+        // Merged: everything in the blocks' actors, the selected step drawn
+        // over them with its own.
+        for (const PathBlock& b : blocks_) {
+            setColour(b.feeds, selected_ < 0 ? palette::kFeed : palette::kDimmed);
+            b.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
+            b.feeds->SetVisibility(selected_ < 0 || !othersHidden_);
+            b.rapids->SetVisibility(selected_ < 0);
+        }
         if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
             detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
             detach(steps_[static_cast<std::size_t>(shownStep_)].rapids);
@@ -288,101 +278,6 @@ void Scene::updateEmphasis()
         a.rapids->SetVisibility(emphasised);
     }
     updateLod();
-}
-
-void Scene::buildLathe()
-{
-    const BarStock& bar = *plan_->mmJob.bar;
-    // The part: each turned unit's deformed profile (what the lathe cuts),
-    // the edges as drawn in the part's colour, the grinding stock (moved
-    // and side edges) and the relief grooves in the machined colour.
-    for (const TurnedPart& part : plan_->turned) {
-        std::vector<turning::Segment> finished, ground;
-        for (const auto& e : part.deformed.edges)
-            (e.origin == turning::Origin::Original ? finished : ground).push_back(e.geometry);
-        for (const auto* chain : {&finished, &ground}) {
-            if (chain->empty()) continue;
-            // Each run of consecutive edges revolved on its own.
-            std::vector<turning::Segment> run;
-            const auto flush = [&] {
-                if (run.empty()) return;
-                auto actor = actorFor(revolvedChain(run), chain == &ground ? palette::kMachined : palette::kStock);
-                actor->GetProperty()->SetAmbient(0.3);
-                actor->GetProperty()->SetDiffuse(0.7);
-                renderer_->AddActor(actor);
-                latheParts_.push_back(actor);
-                run.clear();
-            };
-            for (const auto& seg : *chain) {
-                if (!run.empty() && turning::dist(run.back().b, seg.a) > 1e-6) flush();
-                run.push_back(seg);
-            }
-            flush();
-        }
-    }
-    // The bar as glass: its outline revolved.
-    const double r = bar.diameter / 2, b = bar.bore / 2, z0 = bar.face - bar.length, z1 = bar.face;
-    const std::vector<turning::Segment> outline{turning::lineSegment({z1, b}, {z1, r}), turning::lineSegment({z1, r}, {z0, r}),
-                                                turning::lineSegment({z0, r}, {z0, b})};
-    stock_ = actorFor(revolvedChain(outline), palette::kStockEdges);
-    stock_->GetProperty()->SetOpacity(0.15);
-    renderer_->AddActor(stock_);
-    const double axisLength = niceLength(bar.diameter);
-    axes_ = labelledAxes(axisLength, 14, "Z", "", "X");  // the spindle axis runs along the view's X
-    renderer_->AddActor(axes_);
-}
-
-void Scene::updateLatheStep()
-{
-    for (auto& a : latheStep_) renderer_->RemoveActor(a);
-    latheStep_.clear();
-    const Step* step = selected_ >= 0 ? &plan_->steps[static_cast<std::size_t>(selected_)] : nullptr;
-    const bool show = step && step->turn;
-    for (auto& a : latheParts_) a->SetVisibility(!show);
-    if (!show) return;
-    // The stock after the step, each loop of the half-section revolved over
-    // the half turn behind the section, so that the section shows.
-    for (const auto& loop : sim::turnedStockAfter(*plan_, selected_)) {
-        std::vector<turning::Segment> chain;
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const turning::ZR a = loop[i], b = loop[(i + 1) % loop.size()];
-            if (turning::dist(a, b) > 1e-9) chain.push_back(turning::lineSegment(a, b));
-        }
-        if (chain.empty()) continue;
-        auto actor = actorFor(revolvedChain(chain, true), palette::kStock);
-        actor->GetProperty()->SetAmbient(0.3);
-        actor->GetProperty()->SetDiffuse(0.7);
-        renderer_->AddActor(actor);
-        latheStep_.push_back(actor);
-    }
-    // The step's path in the section's upper half-plane ((z, 0, r), a hair
-    // in front of it): feeds and rapids through the programmed points.
-    const TurnPath& p = step->turn->path;
-    for (const bool rapids : {false, true}) {
-        auto points = vtkSmartPointer<vtkPoints>::New();
-        auto lines = vtkSmartPointer<vtkCellArray>::New();
-        turning::ZR at = p.start;
-        for (const auto& m : p.moves) {
-            if ((m.kind == TurnMove::Rapid) == rapids) {
-                std::vector<turning::ZR> pts{at, m.end};
-                if (m.kind == TurnMove::ArcCW || m.kind == TurnMove::ArcCCW) {
-                    const auto arc = turning::arcSegment(at, m.end, m.centre, m.kind == TurnMove::ArcCCW);
-                    pts.clear();
-                    const int n = std::max(2, static_cast<int>(std::ceil(turning::sweep(arc) / 0.05)));
-                    for (int i = 0; i <= n; ++i) pts.push_back(turning::pointAt(arc, turning::length(arc) * i / n));
-                }
-                lines->InsertNextCell(static_cast<int>(pts.size()));
-                for (const auto& q : pts) lines->InsertCellPoint(points->InsertNextPoint(q.z, -0.05, q.r));
-            }
-            at = m.end;
-        }
-        auto pd = vtkSmartPointer<vtkPolyData>::New();
-        pd->SetPoints(points);
-        pd->SetLines(lines);
-        auto actor = lineActor(pd, rapids ? palette::kRapid : palette::kFeed, rapids ? 1.0 : 2.0);
-        renderer_->AddActor(actor);
-        latheStep_.push_back(actor);
-    }
 }
 
 void Scene::setPlayhead(int step, int move)
@@ -509,6 +404,7 @@ void Scene::updateTool()
         tool_->GetProperty()->SetAmbient(0.6);
         tool_->GetProperty()->SetDiffuse(0.4);
         toolAt_ = Point3{at.z, 0.0, at.r};  // VTK's X along the spindle, the radius up
+        showWhenStill();
         renderer_->AddActor(tool_);
         return;
     }
@@ -522,6 +418,7 @@ void Scene::updateTool()
     toolAt_ = at;
     tool_->GetProperty()->SetAmbient(0.35);
     tool_->GetProperty()->SetDiffuse(0.65);
+    showWhenStill();
     renderer_->AddActor(tool_);
 }
 
@@ -547,7 +444,7 @@ std::array<double, 6> Scene::bounds() const
     const Stock& s = plan_->mmJob.stock;
     b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};
     std::vector<vtkPoints*> pointSets;
-    if (merged_.points) pointSets.push_back(merged_.points);
+    for (const PathBlock& block : blocks_) pointSets.push_back(block.paths.points);
     for (const auto& a : steps_)
         if (a.geometry.points) pointSets.push_back(a.geometry.points);
     for (vtkPoints* points : pointSets) {
@@ -566,64 +463,6 @@ void Scene::setView(ViewPreset preset, double aspect)
 {
     applyViewPreset(renderer_->GetActiveCamera(), preset, bounds(), aspect);
     renderer_->ResetCameraClippingRange();
-}
-
-vtkMatrix4x4* Scene::worldToView(int width, int height) const
-{
-    const double aspect = static_cast<double>(width) / std::max(height, 1);
-    return renderer_->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
-}
-
-std::array<double, 2> Scene::toPixel(const Point3& p, int width, int height) const
-{
-    return project(worldToView(width, height), p.x, p.y, p.z, width, height);
-}
-
-std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height, double tolerance) const
-{
-    std::optional<MoveRef> best;
-    double bestDistance = tolerance;
-    vtkMatrix4x4* m = worldToView(width, height);
-    // Step k's points and the move of the piece starting at each.
-    const auto pick = [&](int k, vtkPoints* points, vtkIdType first, vtkIdType count, const int* moveOfPiece) {
-        double prev[2] = {0, 0};
-        for (vtkIdType i = 0; i < count; ++i) {
-            double p[3];
-            points->GetPoint(first + i, p);
-            const auto px = project(m, p[0], p[1], p[2], width, height);
-            const double cur[2] = {px[0], px[1]};
-            if (i > 0) {
-                const double d = segmentDistance(x, y, prev, cur);
-                if (d <= bestDistance) {
-                    bestDistance = d;
-                    best = MoveRef{k, moveOfPiece[i - 1]};
-                }
-            }
-            prev[0] = cur[0];
-            prev[1] = cur[1];
-        }
-    };
-    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
-        if (selected_ >= 0 && selected_ != k) continue;
-        const StepActors& a = steps_[static_cast<std::size_t>(k)];
-        if (a.geometry.points)
-            pick(k, a.geometry.points, 0, a.geometry.points->GetNumberOfPoints(), a.geometry.moveOfPiece.data());
-        else if (merged_.points && merged_.count[static_cast<std::size_t>(k)] > 0)
-            pick(k, merged_.points, merged_.first[static_cast<std::size_t>(k)], merged_.count[static_cast<std::size_t>(k)],
-                 merged_.moveOfPiece.data() + merged_.first[static_cast<std::size_t>(k)]);
-    }
-    return best;
-}
-
-void Scene::mergePaths()
-{
-    std::vector<const ToolPath*> paths;
-    paths.reserve(steps_.size());
-    for (const Step& step : plan_->steps) paths.push_back(step.path ? &*step.path : nullptr);
-    merged_ = makeMergedPaths(paths);
-    pathSegments_ = lineSegmentCount(merged_.feeds) + lineSegmentCount(merged_.rapids);
-    allFeeds_ = lineActor(merged_.feeds, palette::kFeed, 2.0);
-    allRapids_ = lineActor(merged_.rapids, palette::kRapid, 1.0);
 }
 
 }  // namespace taiwa::viz

@@ -13,6 +13,7 @@
 #include "model/plan.h"
 #include "viz/path_geometry.h"
 #include "viz/render.h"
+#include "viz/solids.h"
 
 #include <vtkActor.h>
 #include <vtkRenderer.h>
@@ -64,16 +65,19 @@ public:
     // A plan of the same kind as the one shown (milling, both drawn per step
     // or both merged) updates the scene in place (viz/scene_update.cpp):
     // each step whose tool path is unchanged keeps its actors and their GPU
-    // buffers, the stock's edges and the axes stay while the stock does, the
+    // buffers (merged: each block of units whose paths are unchanged), the stock's edges and the axes stay while the stock does, the
     // camera is not touched; the picture is the one a new scene would draw
     // of the plan.
     void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     const Plan* plan() const { return plan_.get(); }
     // What the last setPlan did: built anew, or updated in place keeping
     // `pathsKept` steps' path actors and making `pathsMade`.
+    // A large plan's merged path blocks (below): `blocksKept` kept with
+    // their actors, `blocksMade` made.
     struct PlanUpdate {
         bool inPlace = false;
         int pathsKept = 0, pathsMade = 0;
+        int blocksKept = 0, blocksMade = 0;
     };
     const PlanUpdate& lastPlanUpdate() const { return lastUpdate_; }
     // -1: every step alike; k: step k emphasised, the tool at its start,
@@ -121,7 +125,8 @@ public:
     bool showsDeviation() const { return deviation_ != nullptr; }
     // While the operator turns, pans or zooms the camera (the preview
     // widget's interaction start and end): the path lines one pixel wide,
-    // the glass tray hidden (the stock's edges show it) and, above
+    // the glass tray hidden (the stock's edges show it), the axes' labels,
+    // the scale note and the tool left out and, above
     // kLodAbove path segments, each path actor of kLodMin segments or more
     // drawn from its decimated twin (viz/path_lod.h, at most kLodBudget
     // segments, within a thousandth of the scene's diagonal), made on the
@@ -155,6 +160,12 @@ public:
     static void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
     std::string scaleNote() const;
 
+    // A large plan's path actors (merged mode, viz/scene_blocks.cpp): per
+    // block, its feeds and its rapids actor; empty when drawn per step.
+    std::vector<std::array<const vtkActor*, 2>> pathBlockActors() const;
+    // The steps of each block (indices into Plan::steps, in plan order).
+    std::vector<std::vector<int>> pathBlockSteps() const;
+
 private:
     struct StepActors {
         PathGeometry geometry;
@@ -171,6 +182,9 @@ private:
     void updateLod();
     // The glass tray drawn in the opaque pass at the far plane's depth.
     static void drawAsBackdrop(vtkActor* actor);
+    // The axes' labels, the scale note and the tool: hidden while the
+    // camera moves (scene_lod.cpp).
+    void showWhenStill();
     // A path line's width: `still`, or 1 while the camera moves.
     float pathWidth(float still) const { return moving_ ? 1.0f : still; }
     void clear();
@@ -193,22 +207,37 @@ private:
     // (sim/turned_stock.h), and the step's path in the half-plane drawn
     // over it; the finished part again when no step is selected.
     void updateLatheStep();
-    // Merged mode: every step's path in merged_, allFeeds_ and allRapids_
-    // (not yet in the renderer), and pathSegments_ counted.
-    void mergePaths();
+    // Merged mode (viz/scene_blocks.cpp): the paths of the plan's steps
+    // with a path, in blocks of units (blocks_, blockOf_, pathSegments_);
+    // the blocks of `kept` whose steps have the same paths are taken over
+    // with their actors (counted in lastUpdate_), the others made. Not yet
+    // in the renderer.
+    struct PathBlock {
+        std::vector<int> steps;  // indices into Plan::steps, in plan order
+        MergedPaths paths;       // first/count per position in `steps`
+        vtkSmartPointer<vtkActor> feeds, rapids;
+        std::size_t key = 0;  // of its steps' paths
+    };
+    void mergePaths(std::vector<PathBlock> kept = {}, const Plan* old = nullptr);
+    // Frees a dropped block's GPU resources and twins.
+    void releaseBlock(PathBlock& block);
 
     vtkSmartPointer<vtkRenderer> renderer_;
     std::shared_ptr<const Plan> plan_;
     std::shared_ptr<sim::StockSimulation> simulation_;
     std::vector<StepActors> steps_;
-    // A plan of more than kMergeAbove steps is drawn as two actors (all feeds,
-    // all rapids) and only the selected step's own: thousands of actors cost
-    // the renderer far more than their segments, and making and freeing a
-    // few VTK objects per step took longer than drawing them (3,000 units:
-    // 11,600 steps).
+    // A plan of more than kMergeAbove steps is drawn merged: one feeds and
+    // one rapids actor per block of units (at most kMaxBlocks blocks), and
+    // only the selected step's own. Thousands of actors cost the renderer
+    // far more than their segments, and making and freeing a few VTK
+    // objects per step took longer than drawing them (3,000 units: 11,600
+    // steps); one pair for all paths made every edit merge them all again.
     static constexpr std::size_t kMergeAbove = 400;
-    MergedPaths merged_;  // merged mode only
-    vtkSmartPointer<vtkActor> allFeeds_, allRapids_;
+    static constexpr int kMaxBlocks = 64;
+    std::vector<PathBlock> blocks_;  // merged mode only
+    bool merged_ = false;
+    // Per step in merged mode: its block and place in it (-1: no path).
+    std::vector<std::pair<int, int>> blockOf_;
     int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_, cap_;
     std::optional<SectionPlane> section_;
@@ -233,7 +262,9 @@ private:
         vtkSmartPointer<vtkMapper> full, lod;
     };
     std::map<vtkActor*, Twin> twins_;
+    double twinTolerance_ = 0;  // the twins' decimation tolerance
     PlanUpdate lastUpdate_;
+    OutlineCache outlines_;  // the pockets' sampled outlines, per unit
     double axisLength_ = 0.0;  // of axes_, milling jobs
 };
 

@@ -1,9 +1,12 @@
 // The scene's in-place update for a new plan of the job it shows (an edit
 // of a value): the steps whose tool path is unchanged keep their actors and
 // GPU buffers (the path found by its moves, wherever the step now is in the
-// machining order), only the others are made; the stock's edges and the
-// axes stay while the stock does; the stock surface, the pockets' outlines,
-// the tool and the highlight are made as a new scene makes them. The props
+// machining order), only the others are made; a large plan's merged blocks
+// of units whose paths are unchanged keep theirs (viz/scene_blocks.cpp); the
+// stock's edges and the axes stay while the stock does; the pockets'
+// outlines are sampled anew only for the units whose outline changed; the
+// stock surface, the tool and the highlight are made as a new scene makes
+// them. The props
 // are then put in the renderer in a new scene's order, so that what is
 // drawn over what (lines on a floor at the same depth) is the same too.
 #include "viz/scene.h"
@@ -27,28 +30,6 @@
 #include <unordered_map>
 
 namespace taiwa::viz {
-
-namespace {
-
-// A cheap key for a tool path; equal paths have equal keys.
-std::size_t pathKey(const ToolPath& p)
-{
-    std::size_t h = std::hash<std::size_t>()(p.moves.size());
-    const auto mix = [&h](double v) { h ^= std::hash<double>()(v) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2); };
-    mix(p.start.x);
-    mix(p.start.y);
-    mix(p.start.z);
-    if (!p.moves.empty()) {
-        for (const Move* m : {&p.moves.front(), &p.moves[p.moves.size() / 2], &p.moves.back()}) {
-            mix(m->end.x);
-            mix(m->end.y);
-            mix(m->end.z);
-        }
-    }
-    return h;
-}
-
-}  // namespace
 
 bool Scene::canUpdateInPlace(const Plan& next) const
 {
@@ -86,7 +67,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     };
 
     // What a new scene makes anew in any case: out of the renderer.
-    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_, &allFeeds_, &allRapids_}) drop(*p);
+    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_}) drop(*p);
     if (marker_) dropped.emplace_back(marker_.Get());  // a new scene shows no marker; markPoint may
     const Stock& s = plan_->mmJob.stock;
     if (!(old->mmJob.stock == s)) {
@@ -101,7 +82,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
         dropped.emplace_back(scaleNote_.Get());
         makeAxes(axisLength);
     }
-    partEdges_ = lineActor(pocketOutlines(plan_->steps), palette::kPartEdges, 1.5);
+    partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
 
     // The steps' path actors: kept where the path is the same.
     std::vector<StepActors> before = std::move(steps_);
@@ -161,12 +142,12 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     add(stockEdges_);
     add(partEdges_);
     pathSegments_ = 0;
-    if (steps_.size() > kMergeAbove) {
-        mergePaths();
-        add(allFeeds_);
-        add(allRapids_);
+    if (merged_) {
+        // Blocks whose steps' paths are all unchanged keep their actors.
+        mergePaths(std::move(blocks_), old.get());
+        for (const PathBlock& b : blocks_) add(b.feeds);
+        for (const PathBlock& b : blocks_) add(b.rapids);
     } else {
-        merged_ = {};
         for (int k = 0; k < n; ++k) {
             const bool had = steps_[static_cast<std::size_t>(k)].feeds != nullptr;
             const StepActors& a = stepActors(k);

@@ -174,17 +174,17 @@ namespace {
 
 // The rounded quad as a closed polyline at height z, its corner arcs
 // within 10 µm (model/geometry.h's flatten).
-void addRoundedQuad(vtkPoints* points, vtkCellArray* lines, const Quad& q, double z)
+void addRoundedQuad(vtkPoints* points, vtkCellArray* lines, const std::vector<Point2>& outline, double z)
 {
     std::vector<vtkIdType> ids;
-    for (const Point2 p : flatten(q, 0.01)) ids.push_back(points->InsertNextPoint(p.x, p.y, z));
+    for (const Point2 p : outline) ids.push_back(points->InsertNextPoint(p.x, p.y, z));
     ids.push_back(ids.front());
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
 }
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps)
+vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps, OutlineCache* cache)
 {
     std::map<int, const Step*> last;  // unit -> its last wall step
     for (const Step& s : steps) {
@@ -196,14 +196,27 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps)
     }
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto lines = vtkSmartPointer<vtkCellArray>::New();
+    OutlineCache made;
     for (const auto& [unit, s] : last) {
-        (void)unit;
         const Quad& top = *s->outline;
-        addRoundedQuad(points, lines, top, 0.0);
-        const double inset = s->wallTaper > 0 ? s->cutDepth * tanDeg(s->wallTaper) : 0.0;
-        const Quad floor = inset > 0 ? offsetInward(top, inset) : top;
-        addRoundedQuad(points, lines, floor, -s->cutDepth);
+        OutlineCache::Entry* e = nullptr;
+        if (cache)
+            if (auto it = cache->units.find(unit);
+                it != cache->units.end() && it->second.top == top && it->second.depth == s->cutDepth && it->second.taper == s->wallTaper)
+                e = &(made.units[unit] = std::move(it->second));
+        if (!e) {
+            e = &made.units[unit];
+            e->top = top;
+            e->depth = s->cutDepth;
+            e->taper = s->wallTaper;
+            e->topPoints = flatten(top, 0.01);
+            const double inset = s->wallTaper > 0 ? s->cutDepth * tanDeg(s->wallTaper) : 0.0;
+            e->floorPoints = inset > 0 ? flatten(offsetInward(top, inset), 0.01) : e->topPoints;
+        }
+        addRoundedQuad(points, lines, e->topPoints, 0.0);
+        addRoundedQuad(points, lines, e->floorPoints, -s->cutDepth);
     }
+    if (cache) *cache = std::move(made);
     auto pd = vtkSmartPointer<vtkPolyData>::New();
     pd->SetPoints(points);
     pd->SetLines(lines);

@@ -16,6 +16,7 @@
 #include <vtkSmartPointer.h>
 
 #include <cstddef>
+#include <map>
 #include <vector>
 
 namespace taiwa::viz {
@@ -59,7 +60,18 @@ vtkSmartPointer<vtkPolyData> toolSolid(const Tool& tool);
 // deepest) with its rounded corners sampled every 5 degrees, once at the
 // top face (Z 0) and once at the floor (Z -cutDepth; for a tapered wall the
 // outline moved inward by cutDepth x tan(taper)).
-vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps);
+// `cache` (kept by the caller from one plan to the next) keeps each unit's
+// sampled outlines while its outline, depth and taper stay: an edit of one
+// unit of 200 samples one (the 200 took 9 ms).
+struct OutlineCache {
+    struct Entry {
+        Quad top;
+        double depth = 0, taper = 0;
+        std::vector<Point2> topPoints, floorPoints;
+    };
+    std::map<int, Entry> units;
+};
+vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps, OutlineCache* cache = nullptr);
 
 // A lathe job's chain of half-section edges (turned profile, deformed
 // profile, bar outline) revolved about the spindle axis: the surface of
