@@ -48,12 +48,12 @@ QString shown(const QComboBox* box, const char* id)
     return i < 0 ? QString() : box->itemText(i);
 }
 
-// The Name cell of tool T`id` in the tool library dialog.
-QString nameCell(const ToolLibraryDialog& d, int id)
+// A cell of tool T`id` in the tool library dialog (by default its name).
+QString nameCell(const ToolLibraryDialog& d, int id, int column = ToolLibraryDialog::Name)
 {
     const auto* table = d.findChild<QTableWidget*>();
     for (int r = 0; table && r < table->rowCount(); ++r)
-        if (table->item(r, 0)->text() == QString::number(id)) return table->item(r, 1)->text();
+        if (table->item(r, 0)->text() == QString::number(id)) return table->item(r, column)->text();
     return {};
 }
 
@@ -109,6 +109,7 @@ class TestGuiLanguagesData : public QObject {
             own.id = 200;
             own.name = "Shop centre drill";
             own.names.clear();
+            own.holder = "Shop collet chuck";
             QVERIFY(lib->save(own));
         }
         speak("zh");
@@ -123,6 +124,10 @@ class TestGuiLanguagesData : public QObject {
             ToolLibraryDialog d;
             QCOMPARE(nameCell(d, 21), QString("超硬スクエアエンドミル 2 mm"));
             QCOMPARE(nameCell(d, 200), QString("Shop centre drill"));
+            // The built-in holders in Japanese, the codes kept; the shop's own as typed.
+            QCOMPARE(nameCell(d, 10, ToolLibraryDialog::Holder), QString("ER32 コレットチャック"));
+            QCOMPARE(nameCell(d, 106, ToolLibraryDialog::Holder), QString("GHDR 26-3 突切り"));
+            QCOMPARE(nameCell(d, 200, ToolLibraryDialog::Holder), QString("Shop collet chuck"));
         }
         qputenv("TAIWA_TOOL_DB", before);
     }

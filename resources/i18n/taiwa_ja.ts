@@ -5158,6 +5158,41 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         </message>
     </context>
     <context>
+        <name>taiwa::ui::ToolLibraryDialog</name>
+        <message>
+            <source>ER16 collet chuck</source>
+            <translation>ER16 コレットチャック</translation>
+        </message>
+        <message>
+            <source>ER32 collet chuck</source>
+            <translation>ER32 コレットチャック</translation>
+        </message>
+        <message>
+            <source>Weldon side lock</source>
+            <translation>サイドロック(ウェルドン)</translation>
+        </message>
+        <message>
+            <source>Tapping chuck ER32</source>
+            <translation>タッパーチャック ER32</translation>
+        </message>
+        <message>
+            <source>HSK63 shrink-fit</source>
+            <translation>HSK63 焼きばめ</translation>
+        </message>
+        <message>
+            <source>HSK63 shell mill arbor</source>
+            <translation>HSK63 シェルミルアーバ</translation>
+        </message>
+        <message>
+            <source>HSK63 probe body</source>
+            <translation>HSK63 プローブ本体</translation>
+        </message>
+        <message>
+            <source>GHDR 26-3 parting</source>
+            <translation>GHDR 26-3 突切り</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::Drawing</name>
         <message>
             <source>AREA – top view</source>
