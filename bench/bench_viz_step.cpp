@@ -45,6 +45,23 @@ std::shared_ptr<const Plan> samplePlan()
     return std::make_shared<const Plan>(planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary()));
 }
 
+// A plan's scene with the stock shown, iso, in an offscreen window of
+// width x height, drawn once (when there is a window).
+struct StockView {
+    viz::Scene scene;
+    viz::OffscreenWindow offscreen;
+    StockView(const std::shared_ptr<const Plan>& plan, int width, int height) : offscreen(width, height)
+    {
+        scene.setPlan(plan);
+        scene.setShowStock(true);
+        scene.setView(viz::ViewPreset::Iso, static_cast<double>(width) / height);
+        if (vtkRenderWindow* window = offscreen.window()) {
+            window->AddRenderer(scene.renderer());
+            window->Render();
+        }
+    }
+};
+
 using Clock = std::chrono::steady_clock;
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
@@ -62,18 +79,13 @@ void BM_SelectStep(benchmark::State& state)
     long selections = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        viz::Scene scene;  // a fresh scene: nothing simulated yet
-        scene.setPlan(plan);
-        scene.setShowStock(true);
-        scene.setView(viz::ViewPreset::Iso, 800.0 / 600.0);
-        const viz::OffscreenWindow offscreen(800, 600);
-        vtkRenderWindow* window = offscreen.window();
+        StockView view(plan, 800, 600);  // a fresh scene: nothing simulated yet
+        viz::Scene& scene = view.scene;
+        vtkRenderWindow* window = view.offscreen.window();
         if (!window) {
-            state.SkipWithError(offscreen.problem()->c_str());
+            state.SkipWithError(view.offscreen.problem()->c_str());
             return;
         }
-        window->AddRenderer(scene.renderer());
-        window->Render();
         state.ResumeTiming();
         const auto select = [&](int k) {
             const auto t0 = Clock::now();
@@ -110,18 +122,13 @@ void BM_FrameParts(benchmark::State& state)
         state.SkipWithError("cannot plan resources/samples/plate.taiwa (run from the source root)");
         return;
     }
-    viz::Scene scene;
-    scene.setPlan(plan);
-    scene.setShowStock(true);
-    scene.setView(viz::ViewPreset::Iso, 836.0 / 425.0);
-    const viz::OffscreenWindow offscreen(836, 425);
-    vtkRenderWindow* window = offscreen.window();
+    StockView view(plan, 836, 425);  // the station's view size
+    viz::Scene& scene = view.scene;
+    vtkRenderWindow* window = view.offscreen.window();
     if (!window) {
-        state.SkipWithError(offscreen.problem()->c_str());
+        state.SkipWithError(view.offscreen.problem()->c_str());
         return;
     }
-    window->AddRenderer(scene.renderer());
-    window->Render();
     std::vector<vtkProp*> props;
     vtkPropCollection* all = scene.renderer()->GetViewProps();
     all->InitTraversal();

@@ -8,6 +8,7 @@
 #include "io/job_io.h"
 #include "modules/probe/probe_fit.h"
 #include "support/gui_fields.h"
+#include "support/speak.h"
 #include "support/support.h"
 #include "ui/core_messages.h"
 #include "ui/dxf_import_dialog.h"
@@ -45,16 +46,7 @@ using namespace taiwa::ui;
 
 namespace {
 
-// The station's translators for `language` ("en": none), in place of those installed before.
-void speak(const char* language)
-{
-    for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
-        QCoreApplication::removeTranslator(t);
-        delete t;
-    }
-    qputenv("TAIWA_LANG", language);
-    installTranslator(*QCoreApplication::instance());
-}
+using test::speak;
 
 // The message of a line of tests/data/bad-jobs/*.expected, without the file, unit and field before it.
 QString messageOf(const QString& line)

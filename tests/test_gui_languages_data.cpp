@@ -6,6 +6,7 @@
 #include "machine/machine.h"
 #include "model/technology.h"
 #include "post/post.h"
+#include "support/speak.h"
 #include "support/support.h"
 #include "tools/tool_fit.h"
 #include "tools/tool_library.h"
@@ -30,16 +31,7 @@ using namespace taiwa::ui;
 
 namespace {
 
-// The station's translators for `language` ("en": none), in place of those installed before.
-void speak(const char* language)
-{
-    for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
-        QCoreApplication::removeTranslator(t);
-        delete t;
-    }
-    qputenv("TAIWA_LANG", language);
-    installTranslator(*QCoreApplication::instance());
-}
+using test::speak;
 
 // The text a chooser shows for the entry of `id`.
 QString shown(const QComboBox* box, const char* id)
