@@ -89,7 +89,7 @@ void NcDocumentMaker::run()
     for (;;) {
         wake_.wait(lock, [&] { return stop_ || next_ || !bin_.empty(); });
         if (stop_) break;
-        if (!bin_.empty()) {
+        if (!next_) {  // a document asked for first, the old ones freed after
             auto old = std::move(bin_.front());
             bin_.pop_front();
             lock.unlock();
