@@ -119,6 +119,8 @@ class TestGuiLanguagesData : public QObject {
             // The built-in holders in Japanese, the codes kept; the shop's own as typed.
             QCOMPARE(nameCell(d, 10, ToolLibraryDialog::Holder), QString("ER32 コレットチャック"));
             QCOMPARE(nameCell(d, 106, ToolLibraryDialog::Holder), QString("GHDR 26-3 突切り"));
+            QCOMPARE(nameCell(d, 80, ToolLibraryDialog::Holder), QString("HSK63 ボーリングヘッド"));
+            QCOMPARE(nameCell(d, 31, ToolLibraryDialog::Holder), QString("HSK63 Weldon"));  // codes and a name only
             QCOMPARE(nameCell(d, 200, ToolLibraryDialog::Holder), QString("Shop collet chuck"));
         }
         qputenv("TAIWA_TOOL_DB", before);

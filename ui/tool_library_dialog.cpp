@@ -28,25 +28,6 @@
 namespace taiwa::ui {
 namespace {
 QString num(double v) { return formatNumber(std::round(v * 1000.0) / 1000.0); }
-
-// The built-in tools' holders, as the station's language writes them (the
-// codes stay); a holder the shop typed shows as it was typed.
-QString holderText(const std::string& holder)
-{
-    static const char* const builtIn[] = {
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "ER16 collet chuck"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "ER32 collet chuck"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "Weldon side lock"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "Tapping chuck ER32"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "HSK63 shrink-fit"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "HSK63 shell mill arbor"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "HSK63 probe body"),
-        QT_TRANSLATE_NOOP("taiwa::ui::ToolLibraryDialog", "GHDR 26-3 parting"),
-    };
-    for (const char* h : builtIn)
-        if (holder == h) return ToolLibraryDialog::tr(h);
-    return QString::fromStdString(holder);
-}
 }  // namespace
 
 // One change of the library, made already when it is pushed: the tool
@@ -143,11 +124,12 @@ void ToolLibraryDialog::load(bool keepStatus)
     table_->setRowCount(static_cast<int>(tools_.size()));
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         const Tool& t = tools_[i];
+        // A built-in holder's name in the station's language (its codes kept), the shop's own as typed.
         const QStringList cells{QString::number(t.id),     localToolName(t),
                                 toolKind(t.type),          num(t.diameter),
                                 num(t.cornerRadius),       num(t.taperAngle),
                                 QString::number(t.flutes), num(t.fluteLength),
-                                num(t.stickout),           holderText(t.holder),
+                                num(t.stickout),           coreMessage(t.holder),
                                 num(t.holderDiameter),     num(t.lifeMinutes),
                                 num(t.usedMinutes)};
         for (int c = 0; c < cells.size(); ++c) {

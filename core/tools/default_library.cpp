@@ -2,6 +2,7 @@
 // carries, with cutting data for every material of the shipped technology
 // table. Ids are stable: they are the T numbers on the tape.
 #include "tools/tool_library.h"
+#include "model/translate_noop.h"
 
 #include "tools/default_names.h"
 
@@ -109,12 +110,12 @@ std::vector<Tool> defaultHoleTools()
     const std::pair<int, double> tapDrills[] = {{17, 2.5}, {18, 3.3}, {19, 4.2}};
     for (const auto& [id, d] : tapDrills)
         tools.push_back(make(id, ToolType::Drill, d, tools::named(tools::kCarbideDrill, d), 5 * d + 5, 5 * d + 20,
-                             "ER32 collet chuck", 2, 120));
+                             TAIWA_TRANSLATE_NOOP("taiwa::msg", "ER32 collet chuck"), 2, 120));
     const std::tuple<int, int, double> taps[] = {{61, 3, 0.5}, {62, 4, 0.7}, {63, 5, 0.8}, {64, 6, 1.0},
                                                  {65, 8, 1.25}, {66, 10, 1.5}, {67, 12, 1.75}};
     for (const auto& [id, size, pitch] : taps) {
         Tool t = make(id, ToolType::Tap, size, tools::named(tools::kTap, size, pitch), 3 * size + 6,
-                      5 * size + 25, "Tapping chuck ER32", 3, 60);
+                      5 * size + 25, TAIWA_TRANSLATE_NOOP("taiwa::msg", "Tapping chuck ER32"), 3, 60);
         t.turning.pitchMin = t.turning.pitchMax = pitch;
         t.turning.threadAngle = 60;
         t.pointAngle = 0;
@@ -129,9 +130,9 @@ std::vector<Tool> defaultHoleTools()
     const std::pair<int, double> reamers[] = {{74, 6}, {75, 8}, {76, 10}, {77, 12}};
     for (const auto& [id, d] : reamers) {
         tools.push_back(make(id - 4, ToolType::Drill, d - 0.2, tools::named(tools::kCarbideDrill, d - 0.2),
-                             5 * d + 5, 5 * d + 20, "ER32 collet chuck", 2, 120));
+                             5 * d + 5, 5 * d + 20, TAIWA_TRANSLATE_NOOP("taiwa::msg", "ER32 collet chuck"), 2, 120));
         Tool t = make(id, ToolType::Reamer, d, tools::named(tools::kReamer, d), 3 * d + 10, 5 * d + 30,
-                      "HSK63 shrink-fit", 6, 120);
+                      TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 shrink-fit"), 6, 120);
         t.pointAngle = 0;
         t.cutting = cuttingFor(ToolType::Drill, d);
         for (auto& c : t.cutting) {
@@ -143,7 +144,7 @@ std::vector<Tool> defaultHoleTools()
     const std::pair<int, double> bores[] = {{80, 16}, {81, 20}, {82, 25}};
     for (const auto& [id, d] : bores) {
         Tool t = make(id, ToolType::BoringBar, d, tools::named(tools::kBoringHead, d), 3 * d, 4 * d + 20,
-                      "HSK63 boring head", 1, 120);
+                      TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 boring head"), 1, 120);
         t.cornerRadius = 0.2;
         t.pointAngle = 0;
         for (auto& c : t.cutting) {
@@ -184,7 +185,7 @@ std::vector<Tool> defaultLatheTools()
     TurningSpec part = groove;
     part.maxDepth = 25;
     part.maxDiameter = 50;
-    tools.push_back(lathe(106, ToolType::Grooving, tools::named(tools::kParting, 3, 50), "", 0.2, 3, part, "GHDR 26-3 parting", true, 0.4));
+    tools.push_back(lathe(106, ToolType::Grooving, tools::named(tools::kParting, 3, 50), "", 0.2, 3, part, TAIWA_TRANSLATE_NOOP("taiwa::msg", "GHDR 26-3 parting"), true, 0.4));
     TurningSpec thread;
     thread.hand = "right";
     thread.pitchMin = 0.5;
@@ -199,9 +200,9 @@ std::vector<Tool> defaultToolLibrary()
 {
     std::vector<Tool> tools;
     // T1-T2: centre drills.
-    tools.push_back(make(1, ToolType::CentreDrill, 3.15, tools::named(tools::kCentreDrill, 3.15), 4, 30, "ER16 collet chuck", 2, 240));
+    tools.push_back(make(1, ToolType::CentreDrill, 3.15, tools::named(tools::kCentreDrill, 3.15), 4, 30, TAIWA_TRANSLATE_NOOP("taiwa::msg", "ER16 collet chuck"), 2, 240));
     tools.back().pointAngle = 90;
-    tools.push_back(make(2, ToolType::CentreDrill, 6.3, tools::named(tools::kCentreDrill, 6.3), 7, 40, "ER16 collet chuck", 2, 240));
+    tools.push_back(make(2, ToolType::CentreDrill, 6.3, tools::named(tools::kCentreDrill, 6.3), 7, 40, TAIWA_TRANSLATE_NOOP("taiwa::msg", "ER16 collet chuck"), 2, 240));
     tools.back().pointAngle = 90;
     // T3-T16: twist drills, solid carbide up to 12 mm, HSS-Co above.
     const double drills[] = {3, 4, 5, 6, 6.8, 8, 8.5, 10, 10.2, 12, 14, 16, 18, 20};
@@ -211,14 +212,15 @@ std::vector<Tool> defaultToolLibrary()
         tools.push_back(make(id++, ToolType::Drill, d,
                              tools::named(carbide ? tools::kCarbideDrill : tools::kCobaltDrill, d),
                              carbide ? 5 * d + 5 : 6 * d, carbide ? 5 * d + 20 : 6 * d + 30,
-                             carbide ? "ER32 collet chuck" : "Weldon side lock", 2, carbide ? 120 : 90));
+                             carbide ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ER32 collet chuck") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "Weldon side lock"), 2, carbide ? 120 : 90));
     }
     // T21-T31: flat end mills (centre cutting).
     const double flats[] = {2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 25};
     id = 21;
     for (const double d : flats) {
         tools.push_back(make(id++, ToolType::FlatEndMill, d, tools::named(tools::kFlatEndMill, d),
-                             d <= 4 ? 3 * d : 2.5 * d, 3 * d + 15, d <= 12 ? "HSK63 shrink-fit" : "HSK63 Weldon",
+                             d <= 4 ? 3 * d : 2.5 * d, 3 * d + 15,
+                             d <= 12 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 shrink-fit") : "HSK63 Weldon",
                              d <= 5 ? 2 : d <= 16 ? 3 : 4, 120));
     }
     // T41-T47: ball end mills.
@@ -226,7 +228,7 @@ std::vector<Tool> defaultToolLibrary()
     id = 41;
     for (const double d : balls) {
         Tool t = make(id++, ToolType::BallEndMill, d, tools::named(tools::kBallEndMill, d / 2), 2 * d, 3 * d + 15,
-                      "HSK63 shrink-fit", 2, 150);
+                      TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 shrink-fit"), 2, 150);
         t.cornerRadius = d / 2;
         tools.push_back(t);
     }
@@ -235,12 +237,12 @@ std::vector<Tool> defaultToolLibrary()
     id = 51;
     for (const auto& [angle, tip] : tapers) {
         Tool t = make(id++, ToolType::TaperEndMill, tip, tools::named(tools::kTaperEndMill, angle, tip), 30,
-                      45, "HSK63 shrink-fit", 3, 90);
+                      45, TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 shrink-fit"), 3, 90);
         t.taperAngle = angle;
         tools.push_back(t);
     }
     // T60: face mill.
-    tools.push_back(make(60, ToolType::FaceMill, 50, tools::named(tools::kFaceMill, 50, 5), 6, 50, "HSK63 shell mill arbor", 5, 240));
+    tools.push_back(make(60, ToolType::FaceMill, 50, tools::named(tools::kFaceMill, 50, 5), 6, 50, TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 shell mill arbor"), 5, 240));
     tools.back().centreCutting = false;  // inserts on the rim only: it cannot plunge
     // T17-T19: the tap drills of M3-M5; T70-T73: the pre-drills of the
     // reamers (0.2 mm under); T61-T67 taps, T74-T77 reamers, T80-T82
@@ -248,7 +250,7 @@ std::vector<Tool> defaultToolLibrary()
     for (Tool& t : defaultHoleTools()) tools.push_back(std::move(t));
     // T90: touch probe for work-centre probing, 4 mm ruby ball; its length
     // is set to the ball's lowest point. It cuts nothing: no cutting data.
-    Tool probe = make(90, ToolType::Probe, 4, tools::named(tools::kProbe, 4), 0, 50, "HSK63 probe body", 0, 0);
+    Tool probe = make(90, ToolType::Probe, 4, tools::named(tools::kProbe, 4), 0, 50, TAIWA_TRANSLATE_NOOP("taiwa::msg", "HSK63 probe body"), 0, 0);
     probe.cutting.clear();
     probe.centreCutting = false;
     tools.push_back(probe);

@@ -4009,6 +4009,42 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>NC 形式 {} は測定ユニットのプログラムを出力しません。出力できるのは {} です ({})</translation>
         </message>
         <message>
+            <source>ER32 collet chuck</source>
+            <translation>ER32 コレットチャック</translation>
+        </message>
+        <message>
+            <source>Tapping chuck ER32</source>
+            <translation>タッパーチャック ER32</translation>
+        </message>
+        <message>
+            <source>HSK63 shrink-fit</source>
+            <translation>HSK63 焼きばめ</translation>
+        </message>
+        <message>
+            <source>HSK63 boring head</source>
+            <translation>HSK63 ボーリングヘッド</translation>
+        </message>
+        <message>
+            <source>GHDR 26-3 parting</source>
+            <translation>GHDR 26-3 突切り</translation>
+        </message>
+        <message>
+            <source>ER16 collet chuck</source>
+            <translation>ER16 コレットチャック</translation>
+        </message>
+        <message>
+            <source>Weldon side lock</source>
+            <translation>サイドロック(ウェルドン)</translation>
+        </message>
+        <message>
+            <source>HSK63 shell mill arbor</source>
+            <translation>HSK63 シェルミルアーバ</translation>
+        </message>
+        <message>
+            <source>HSK63 probe body</source>
+            <translation>HSK63 プローブ本体</translation>
+        </message>
+        <message>
             <source>T number {} must be 1 to {}</source>
             <translation>T 番号 {} は 1 ～ {} にしてください</translation>
         </message>
@@ -5155,41 +5191,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>roughing step-over / tool diameter</source>
             <translation>荒加工のステップオーバ / 工具径</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::ToolLibraryDialog</name>
-        <message>
-            <source>ER16 collet chuck</source>
-            <translation>ER16 コレットチャック</translation>
-        </message>
-        <message>
-            <source>ER32 collet chuck</source>
-            <translation>ER32 コレットチャック</translation>
-        </message>
-        <message>
-            <source>Weldon side lock</source>
-            <translation>サイドロック(ウェルドン)</translation>
-        </message>
-        <message>
-            <source>Tapping chuck ER32</source>
-            <translation>タッパーチャック ER32</translation>
-        </message>
-        <message>
-            <source>HSK63 shrink-fit</source>
-            <translation>HSK63 焼きばめ</translation>
-        </message>
-        <message>
-            <source>HSK63 shell mill arbor</source>
-            <translation>HSK63 シェルミルアーバ</translation>
-        </message>
-        <message>
-            <source>HSK63 probe body</source>
-            <translation>HSK63 プローブ本体</translation>
-        </message>
-        <message>
-            <source>GHDR 26-3 parting</source>
-            <translation>GHDR 26-3 突切り</translation>
         </message>
     </context>
     <context>

@@ -4009,6 +4009,42 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>数控系统 {} 不输出测量单元的程序；可输出的有 {}（{}）</translation>
         </message>
         <message>
+            <source>ER32 collet chuck</source>
+            <translation>ER32 弹簧夹头</translation>
+        </message>
+        <message>
+            <source>Tapping chuck ER32</source>
+            <translation>攻丝夹头 ER32</translation>
+        </message>
+        <message>
+            <source>HSK63 shrink-fit</source>
+            <translation>HSK63 热缩刀柄</translation>
+        </message>
+        <message>
+            <source>HSK63 boring head</source>
+            <translation>HSK63 镗头</translation>
+        </message>
+        <message>
+            <source>GHDR 26-3 parting</source>
+            <translation>GHDR 26-3 切断</translation>
+        </message>
+        <message>
+            <source>ER16 collet chuck</source>
+            <translation>ER16 弹簧夹头</translation>
+        </message>
+        <message>
+            <source>Weldon side lock</source>
+            <translation>侧固式刀柄(Weldon)</translation>
+        </message>
+        <message>
+            <source>HSK63 shell mill arbor</source>
+            <translation>HSK63 套式铣刀刀杆</translation>
+        </message>
+        <message>
+            <source>HSK63 probe body</source>
+            <translation>HSK63 测头本体</translation>
+        </message>
+        <message>
             <source>T number {} must be 1 to {}</source>
             <translation>T 号 {} 必须为 1 到 {}</translation>
         </message>
@@ -5155,41 +5191,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>roughing step-over / tool diameter</source>
             <translation>粗加工行距 / 刀具直径</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::ToolLibraryDialog</name>
-        <message>
-            <source>ER16 collet chuck</source>
-            <translation>ER16 弹簧夹头</translation>
-        </message>
-        <message>
-            <source>ER32 collet chuck</source>
-            <translation>ER32 弹簧夹头</translation>
-        </message>
-        <message>
-            <source>Weldon side lock</source>
-            <translation>侧固式刀柄(Weldon)</translation>
-        </message>
-        <message>
-            <source>Tapping chuck ER32</source>
-            <translation>攻丝夹头 ER32</translation>
-        </message>
-        <message>
-            <source>HSK63 shrink-fit</source>
-            <translation>HSK63 热缩刀柄</translation>
-        </message>
-        <message>
-            <source>HSK63 shell mill arbor</source>
-            <translation>HSK63 套式铣刀刀杆</translation>
-        </message>
-        <message>
-            <source>HSK63 probe body</source>
-            <translation>HSK63 测头本体</translation>
-        </message>
-        <message>
-            <source>GHDR 26-3 parting</source>
-            <translation>GHDR 26-3 切断</translation>
         </message>
     </context>
     <context>
