@@ -207,18 +207,7 @@ QString diagnosticText(const std::string& job, const Diagnostic& d)
     if (messageSources().isEmpty())
         return QString::fromStdString(format(job, d));
     // As format() does: control characters typed into a name cannot forge lines.
-    const auto quoted = [](const QString& s) {
-        QString out;
-        for (const QChar c : s) {
-            if (c == '\n') out += QLatin1String("\\n");
-            else if (c == '\t') out += QLatin1String("\\t");
-            else if (c == '\r') out += QLatin1String("\\r");
-            else if (c.unicode() < 0x20 || c.unicode() == 0x7f)
-                out += QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
-            else out += c;
-        }
-        return out;
-    };
+    const auto quoted = [](const QString& s) { return QString::fromStdString(withControlsShown(s.toStdString())); };
     const QString file = quoted(QString::fromStdString(job));
     const QString message = quoted(coreMessage(d.message));
     if (!d.unit && d.field.empty())

@@ -10,11 +10,7 @@
 
 namespace taiwa {
 
-namespace {
-
-// Control characters typed into a job (a newline in a material name, an ESC)
-// must not forge lines or send terminal escapes: shown as \n, \x1b…
-std::string quoted(const std::string& s)
+std::string withControlsShown(const std::string& s)
 {
     std::string out;
     out.reserve(s.size());
@@ -33,15 +29,13 @@ std::string quoted(const std::string& s)
     return out;
 }
 
-}  // namespace
-
 std::string format(const std::string& jobName, const Diagnostic& diagnostic)
 {
     Diagnostic d = diagnostic;
-    d.module = quoted(d.module);
-    d.field = quoted(d.field);
-    d.message = quoted(d.message);
-    const std::string job = quoted(jobName);
+    d.module = withControlsShown(d.module);
+    d.field = withControlsShown(d.field);
+    d.message = withControlsShown(d.message);
+    const std::string job = withControlsShown(jobName);
     if (!d.unit && d.field.empty()) return job + ": " + d.message;  // the file itself (unreadable, not JSON)
     const std::string where = d.unit ? "unit " + std::to_string(*d.unit) + " (" + d.module + ")" : std::string("job");
     const std::string kind = d.severity == Severity::Warning ? "warning: " : "";

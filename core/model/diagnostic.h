@@ -25,6 +25,11 @@ struct Diagnostic {
 
 using Diagnostics = std::vector<Diagnostic>;
 
+// Control characters typed into a job (a newline in a material name, an ESC)
+// must not forge lines or send terminal escapes: shown as \n, \t, \r, \x1b…
+// (format() quotes every part with it; so does the station's translation).
+std::string withControlsShown(const std::string& s);
+
 // "JOB: unit N (MODULE) field: message", or "JOB: job field: message" for a
 // job-level field, or "JOB: message" for the file as a whole (no unit, no
 // field: unreadable, not JSON), as `taiwa check` prints it. A warning's
