@@ -7,6 +7,10 @@
 // station's picture of the job (stock shown, iso, the view's 836 x 425)
 // costs a frame: the frame with everything, then with each prop hidden in
 // turn, interleaved; processor time of the process (Mesa's threads too).
+// BM_StockLight: the same picture's frame with the stock lit by VTK per
+// pixel (arg 0) and on the processor per quad (arg 1, the scene's default,
+// viz/surface_light.h), each frame after a turn of the camera (so the
+// processor's lighting is done anew every frame) and without one.
 // Run under `xvfb-run -a` from the source tree's root, or set TAIWA_BENCH_JOB.
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
@@ -21,6 +25,7 @@
 #include <vtkProp.h>
 #include <vtkPropCollection.h>
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
@@ -163,6 +168,41 @@ void BM_FrameParts(benchmark::State& state)
     state.counters["frame_cpu_ms"] = cpu[0] / n;
 }
 BENCHMARK(BM_FrameParts)->Unit(benchmark::kMillisecond)->Iterations(20);
+
+
+void BM_StockLight(benchmark::State& state)
+{
+    const auto plan = samplePlan();
+    if (!plan || plan->steps.empty()) {
+        state.SkipWithError("cannot plan resources/samples/plate.taiwa (run from the source root)");
+        return;
+    }
+    StockView view(plan, 836, 425);
+    vtkRenderWindow* window = view.offscreen.window();
+    if (!window) {
+        state.SkipWithError(view.offscreen.problem()->c_str());
+        return;
+    }
+    view.scene.setLightOnProcessor(state.range(0) == 1);
+    const bool turn = state.range(1) == 1;
+    window->Render();
+    double cpu = 0, wall = 0;
+    long frames = 0;
+    for (auto _ : state) {
+        if (turn) view.scene.renderer()->GetActiveCamera()->Azimuth(frames % 2 == 0 ? 1.0 : -1.0);
+        const double c0 = cpuMs();
+        const auto t0 = Clock::now();
+        window->Render();
+        window->WaitForCompletion();
+        wall += ms(Clock::now() - t0);
+        cpu += cpuMs() - c0;
+        ++frames;
+    }
+    state.counters["frame_cpu_ms"] = cpu / static_cast<double>(frames);
+    state.counters["frame_ms"] = wall / static_cast<double>(frames);
+}
+BENCHMARK(BM_StockLight)->ArgsProduct({{0, 1}, {0, 1}})->ArgNames({"processor", "turning"})->Unit(benchmark::kMillisecond)->Iterations(40);
+BENCHMARK(BM_StockLight)->Args({1, 0})->Name("BM_StockLightLong")->Unit(benchmark::kMillisecond)->Iterations(400);
 
 }  // namespace
 

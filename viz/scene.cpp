@@ -13,7 +13,9 @@
 #include "model/turned_geometry.h"
 
 #include <vtkAxesActor.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 #include <vtkCoordinate.h>
@@ -21,6 +23,7 @@
 #include <vtkMatrix4x4.h>
 #include <vtkOutlineSource.h>
 #include <vtkPlane.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
@@ -84,9 +87,18 @@ Scene::Scene() : renderer_(vtkSmartPointer<vtkRenderer>::New())
     key->SetIntensity(0.6);
     renderer_->AddLight(head);
     renderer_->AddLight(key);
+    // Before each frame, the stock surface lit for the camera.
+    auto relight = vtkSmartPointer<vtkCallbackCommand>::New();
+    relight->SetClientData(this);
+    relight->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+        auto* scene = static_cast<Scene*>(self);
+        scene->stockLight_.update(scene->renderer_);
+    });
+    lightObserver_ = renderer_->AddObserver(vtkCommand::StartEvent, relight);
 }
 
-Scene::~Scene() = default;
+// The renderer may outlive the scene in a window that still draws it.
+Scene::~Scene() { renderer_->RemoveObserver(lightObserver_); }
 
 void Scene::clear()
 {
@@ -107,6 +119,7 @@ void Scene::clear()
     pathSegments_ = 0;
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = cap_ = nullptr;
+    stockLight_.set(nullptr, 0, 0);
     deviation_.reset();  // a map is of one plan
     latheParts_.clear();
     latheStep_.clear();
@@ -337,11 +350,19 @@ void Scene::updateStock()
         // While the camera moves the stock's edges alone show it.
         stock_->SetVisibility(!moving_);
     }
+    stockLight_.set(nullptr, 0, 0);
     if (shown) {  // the surface's own colours
         stock_->GetMapper()->ScalarVisibilityOn();
         stock_->GetMapper()->SetColorModeToDirectScalars();
-        stock_->GetProperty()->SetAmbient(0.25);
-        stock_->GetProperty()->SetDiffuse(0.75);
+        constexpr double ambient = 0.25, diffuse = 0.75;
+        if (lightOnProcessor_) {
+            stockLight_.set(stock_, ambient, diffuse);
+        } else {
+            auto* surface = vtkPolyData::SafeDownCast(stock_->GetMapper()->GetInputDataObject(0, 0));
+            surface->GetCellData()->SetNormals(surface->GetCellData()->GetArray(kQuadNormals));
+            stock_->GetProperty()->SetAmbient(ambient);
+            stock_->GetProperty()->SetDiffuse(diffuse);
+        }
     }
     if (section_ && shown) {
         // VTK keeps the side its plane's normal points to: ours points away.
@@ -355,6 +376,13 @@ void Scene::updateStock()
     }
     renderer_->AddActor(stock_);
     stockEdges_->SetVisibility(!solid);
+}
+
+void Scene::setLightOnProcessor(bool on)
+{
+    if (on == lightOnProcessor_) return;
+    lightOnProcessor_ = on;
+    updateStock();
 }
 
 void Scene::setSection(std::optional<SectionPlane> plane)

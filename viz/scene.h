@@ -14,6 +14,7 @@
 #include "viz/path_geometry.h"
 #include "viz/render.h"
 #include "viz/solids.h"
+#include "viz/surface_light.h"
 
 #include <vtkActor.h>
 #include <vtkRenderer.h>
@@ -134,6 +135,12 @@ public:
     // when it stops. viz/scene_lod.cpp.
     void setMoving(bool moving);
     bool moving() const { return moving_; }
+    // The simulated stock and the colour map lit on the processor, per
+    // quad for the camera, and drawn unlit (viz/surface_light.h: on a
+    // software renderer half the frame's cost), or (false) lit by VTK per
+    // pixel; the same picture either way, within a level of a colour.
+    void setLightOnProcessor(bool on);
+    bool lightOnProcessor() const { return lightOnProcessor_; }
     // Path segments drawn now (the decimated twins' while moving).
     std::size_t drawnPathSegments() const;
     static constexpr std::size_t kLodAbove = 200'000;
@@ -266,6 +273,9 @@ private:
     PlanUpdate lastUpdate_;
     OutlineCache outlines_;  // the pockets' sampled outlines, per unit
     double axisLength_ = 0.0;  // of axes_, milling jobs
+    bool lightOnProcessor_ = true;
+    SurfaceLighting stockLight_;  // stock_ when it is a surface lit on the processor
+    unsigned long lightObserver_ = 0;  // the renderer's start event: stockLight_.update
 };
 
 }  // namespace taiwa::viz

@@ -12,20 +12,24 @@
 //   - along a column, the same for quads level along y (walls parallel to y);
 //   - on the sides, a run of edge vertices at one height and colour.
 // Every merged edge is a straight line through the vertices beside it at
-// that height, so the finer quads beside it meet it without a gap.
+// that height, so the finer quads beside it meet it without a gap. Each
+// quad has four vertices of its own and is lit as one flat face on the
+// processor (viz/surface_light.h).
 #include "viz/solids.h"
 
 #include "verify/deviation.h"
 #include "viz/palette.h"
+#include "viz/surface_light.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -37,30 +41,34 @@ namespace taiwa::viz {
 
 namespace {
 
-// Builds the stock surface: points with colours, quads with one normal each
-// (flat shading: no smoothing pass over hundreds of thousands of cells).
+// Builds the stock surface: each quad with four points of its own (so
+// that viz/surface_light.h can light it as one flat face), in the colours
+// of the corners it was given (kBaseColours, copied to the shown "Colors"
+// until it is lit), and its outward normal (kQuadNormals).
 class SurfaceBuilder {
 public:
     SurfaceBuilder()
     {
         colours_->SetName("Colors");
         colours_->SetNumberOfComponents(3);
-        normals_->SetName("Normals");
+        base_->SetName(kBaseColours);
+        base_->SetNumberOfComponents(3);
+        normals_->SetName(kQuadNormals);
         normals_->SetNumberOfComponents(3);
     }
-    vtkIdType point(double x, double y, double z, Rgb c)
+    // A corner quads are made of.
+    int point(double x, double y, double z, Rgb c)
     {
-        colours_->InsertNextTuple3(c.r, c.g, c.b);
-        return points_->InsertNextPoint(x, y, z);
+        corners_.push_back(Corner{{x, y, z}, c});
+        return static_cast<int>(corners_.size()) - 1;
     }
     // Counter-clockwise seen from outside; the normal from the diagonals.
-    void quad(vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
+    void quad(int a, int b, int c, int d)
     {
-        double pa[3], pb[3], pc[3], pd[3];
-        points_->GetPoint(a, pa);
-        points_->GetPoint(b, pb);
-        points_->GetPoint(c, pc);
-        points_->GetPoint(d, pd);
+        const auto& pa = corners_[static_cast<std::size_t>(a)].p;
+        const auto& pb = corners_[static_cast<std::size_t>(b)].p;
+        const auto& pc = corners_[static_cast<std::size_t>(c)].p;
+        const auto& pd = corners_[static_cast<std::size_t>(d)].p;
         const double u[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
         const double v[3] = {pd[0] - pb[0], pd[1] - pb[1], pd[2] - pb[2]};
         double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -68,23 +76,37 @@ public:
         if (len > 0)
             for (double& k : n) k /= len;
         normals_->InsertNextTuple(n);
-        const vtkIdType ids[4] = {a, b, c, d};
+        vtkIdType ids[4];
+        int k = 0;
+        for (int corner : {a, b, c, d}) {
+            const Corner& q = corners_[static_cast<std::size_t>(corner)];
+            ids[k++] = points_->InsertNextPoint(q.p.data());
+            base_->InsertNextTuple3(q.c.r, q.c.g, q.c.b);
+        }
         polys_->InsertNextCell(4, ids);
     }
-    vtkSmartPointer<vtkPolyData> polyData() const
+    vtkSmartPointer<vtkPolyData> polyData()
     {
+        colours_->DeepCopy(base_);
+        colours_->SetName("Colors");
         auto pd = vtkSmartPointer<vtkPolyData>::New();
         pd->SetPoints(points_);
         pd->SetPolys(polys_);
         pd->GetPointData()->SetScalars(colours_);
-        pd->GetCellData()->SetNormals(normals_);
+        pd->GetPointData()->AddArray(base_);
+        pd->GetCellData()->AddArray(normals_);
         return pd;
     }
 
 private:
+    struct Corner {
+        std::array<double, 3> p;
+        Rgb c;
+    };
+    std::vector<Corner> corners_;
     vtkNew<vtkPoints> points_;
-    vtkNew<vtkUnsignedCharArray> colours_;
-    vtkNew<vtkDoubleArray> normals_;
+    vtkNew<vtkUnsignedCharArray> colours_, base_;
+    vtkNew<vtkFloatArray> normals_;
     vtkNew<vtkCellArray> polys_;
 };
 
@@ -115,9 +137,9 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
     SurfaceBuilder out;
     auto vx = [&](int i) { return i == 0 ? s.x : i == nx - 1 ? s.x + s.width : f.centre(i, 0).x; };
     auto vy = [&](int j) { return j == 0 ? s.y : j == ny - 1 ? s.y + s.length : f.centre(0, j).y; };
-    std::vector<vtkIdType> ids(static_cast<std::size_t>(nx) * ny, -1);
+    std::vector<int> ids(static_cast<std::size_t>(nx) * ny, -1);
     auto top = [&](int i, int j) {
-        vtkIdType& id = ids[static_cast<std::size_t>(j) * nx + i];
+        int& id = ids[static_cast<std::size_t>(j) * nx + i];
         if (id < 0) id = out.point(vx(i), vy(j), Z(i, j), C(i, j));
         return id;
     };
@@ -187,8 +209,8 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
     // uncut side is one quad, not a sliver per cell (thousands of them cost
     // a software renderer as much as the whole top).
     const double zb = f.bottom();
-    std::vector<vtkIdType> front(nx, -1), back(nx, -1), left(ny, -1), right(ny, -1);
-    const auto bottom = [&](std::vector<vtkIdType>& side, int k, double x, double y) {
+    std::vector<int> front(nx, -1), back(nx, -1), left(ny, -1), right(ny, -1);
+    const auto bottom = [&](std::vector<int>& side, int k, double x, double y) {
         if (side[static_cast<std::size_t>(k)] < 0) side[static_cast<std::size_t>(k)] = out.point(x, y, zb, palette::kStock);
         return side[static_cast<std::size_t>(k)];
     };
