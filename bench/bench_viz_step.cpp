@@ -202,7 +202,6 @@ void BM_StockLight(benchmark::State& state)
     state.counters["frame_ms"] = wall / static_cast<double>(frames);
 }
 BENCHMARK(BM_StockLight)->ArgsProduct({{0, 1}, {0, 1}})->ArgNames({"processor", "turning"})->Unit(benchmark::kMillisecond)->Iterations(40);
-BENCHMARK(BM_StockLight)->Args({1, 0})->Name("BM_StockLightLong")->Unit(benchmark::kMillisecond)->Iterations(400);
 
 }  // namespace
 
