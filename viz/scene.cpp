@@ -104,7 +104,7 @@ void Scene::clear()
 {
     // Merged mode: the steps' own actors shown before (out of the renderer
     // now) may hold GPU buffers.
-    if (vtkRenderWindow* window = renderer_->GetRenderWindow(); window && merged_)
+    if (vtkRenderWindow* window = renderer_->GetRenderWindow())
         for (const StepActors& a : steps_)
             for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()})
                 if (actor) actor->ReleaseGraphicsResources(window);
@@ -112,7 +112,6 @@ void Scene::clear()
     steps_.clear();
     blocks_.clear();
     blockOf_.clear();
-    merged_ = false;
     outlines_ = {};
     shownStep_ = -1;
     twins_.clear();
@@ -158,26 +157,10 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     renderer_->AddActor(partEdges_);
 
     steps_.resize(plan_->steps.size());
-    merged_ = steps_.size() > kMergeAbove;
-    if (merged_) {
-        mergePaths();
-        // All feeds, then all rapids (drawn over them where they meet).
-        for (const PathBlock& b : blocks_) renderer_->AddActor(b.feeds);
-        for (const PathBlock& b : blocks_) renderer_->AddActor(b.rapids);
-    } else {
-        for (int k = 0; k < n; ++k) {
-            const StepActors& a = stepActors(k);
-            if (!a.feeds) continue;
-            pathSegments_ += lineSegmentCount(a.geometry.feeds) + lineSegmentCount(a.geometry.rapids);
-            // Added without AddActor's search of every prop already there (it
-            // made a large job's scene quadratic: 33 s for 3,000 units).
-            for (vtkActor* actor : {a.feeds.Get(), a.rapids.Get()}) {
-                renderer_->GetViewProps()->AddItem(actor);
-                actor->AddConsumer(renderer_);
-            }
-            ++lastUpdate_.pathsMade;
-        }
-    }
+    mergePaths();
+    // All feeds, then all rapids (drawn over them where they meet).
+    for (const PathBlock& b : blocks_) renderer_->AddActor(b.feeds);
+    for (const PathBlock& b : blocks_) renderer_->AddActor(b.rapids);
 
     makeAxes(niceLength(std::max(s.width, s.length)));
     renderer_->AddActor(axes_);
@@ -256,39 +239,30 @@ void Scene::highlightMove(int step, int move)
 
 void Scene::updateEmphasis()
 {
-    if (merged_) {
-        // Merged: everything in the blocks' actors, the selected step drawn
-        // over them with its own.
-        for (const PathBlock& b : blocks_) {
-            setColour(b.feeds, selected_ < 0 ? palette::kFeed : palette::kDimmed);
-            b.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
-            b.feeds->SetVisibility(selected_ < 0 || !othersHidden_);
-            b.rapids->SetVisibility(selected_ < 0);
-        }
-        if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
-            detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
-            detach(steps_[static_cast<std::size_t>(shownStep_)].rapids);
-        }
-        shownStep_ = -1;
-        if (selected_ >= 0 && stepActors(selected_).feeds) {
-            StepActors& a = stepActors(selected_);
-            setColour(a.feeds, palette::kFeed);
-            a.feeds->GetProperty()->SetLineWidth(pathWidth(3.0f));
-            renderer_->AddActor(a.feeds);
-            renderer_->AddActor(a.rapids);
-            shownStep_ = selected_;
-        }
+    if (lathe_) {  // a lathe job's step is drawn with the bar (scene_lathe.cpp)
         updateLod();
         return;
     }
-    for (int k = 0; k < static_cast<int>(steps_.size()); ++k) {
-        StepActors& a = steps_[k];
-        if (!a.feeds) continue;
-        const bool emphasised = selected_ < 0 || selected_ == k;
-        a.feeds->SetVisibility(emphasised || !othersHidden_);
-        setColour(a.feeds, emphasised ? palette::kFeed : palette::kDimmed);
-        a.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ == k ? 3.0f : emphasised ? 2.0f : 1.0f));
-        a.rapids->SetVisibility(emphasised);
+    // Everything in the blocks' actors, the selected step drawn over them
+    // with its own.
+    for (const PathBlock& b : blocks_) {
+        setColour(b.feeds, selected_ < 0 ? palette::kFeed : palette::kDimmed);
+        b.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
+        b.feeds->SetVisibility(selected_ < 0 || !othersHidden_);
+        b.rapids->SetVisibility(selected_ < 0);
+    }
+    if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
+        detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
+        detach(steps_[static_cast<std::size_t>(shownStep_)].rapids);
+    }
+    shownStep_ = -1;
+    if (selected_ >= 0 && stepActors(selected_).feeds) {
+        StepActors& a = stepActors(selected_);
+        setColour(a.feeds, palette::kFeed);
+        a.feeds->GetProperty()->SetLineWidth(pathWidth(3.0f));
+        renderer_->AddActor(a.feeds);
+        renderer_->AddActor(a.rapids);
+        shownStep_ = selected_;
     }
     updateLod();
 }

@@ -63,21 +63,21 @@ public:
     // makes it on its planning thread); otherwise the scene makes one when
     // the stock is first shown.
     //
-    // A plan of the same kind as the one shown (milling, both drawn per step
-    // or both merged) updates the scene in place (viz/scene_update.cpp):
-    // each step whose tool path is unchanged keeps its actors and their GPU
-    // buffers (merged: each block of units whose paths are unchanged), the stock's edges and the axes stay while the stock does, the
-    // camera is not touched; the picture is the one a new scene would draw
-    // of the plan.
+    // A plan of the same kind as the one shown (milling) updates the scene
+    // in place (viz/scene_update.cpp): each block of units whose paths are
+    // unchanged keeps its actors and their GPU buffers, and so does each
+    // step's own (the selected step's), the stock's edges and the axes stay
+    // while the stock does, the camera is not touched; the picture is the
+    // one a new scene would draw of the plan.
     void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     const Plan* plan() const { return plan_.get(); }
     // What the last setPlan did: built anew, or updated in place keeping
-    // `pathsKept` steps' path actors and making `pathsMade`.
-    // A large plan's merged path blocks (below): `blocksKept` kept with
-    // their actors, `blocksMade` made.
+    // `pathsKept` steps' own path actors (a selected step's), and of the
+    // merged path blocks (below) keeping `blocksKept` with their actors and
+    // making `blocksMade`.
     struct PlanUpdate {
         bool inPlace = false;
-        int pathsKept = 0, pathsMade = 0;
+        int pathsKept = 0;
         int blocksKept = 0, blocksMade = 0;
     };
     const PlanUpdate& lastPlanUpdate() const { return lastUpdate_; }
@@ -167,8 +167,8 @@ public:
     static void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
     std::string scaleNote() const;
 
-    // A large plan's path actors (merged mode, viz/scene_blocks.cpp): per
-    // block, its feeds and its rapids actor; empty when drawn per step.
+    // A milling plan's path actors (viz/scene_blocks.cpp): per block, its
+    // feeds and its rapids actor; empty for a lathe job.
     std::vector<std::array<const vtkActor*, 2>> pathBlockActors() const;
     // The steps of each block (indices into Plan::steps, in plan order).
     std::vector<std::vector<int>> pathBlockSteps() const;
@@ -178,8 +178,9 @@ private:
         PathGeometry geometry;
         vtkSmartPointer<vtkActor> feeds, rapids;
     };
-    // Step k's own geometry and actors (made on first use in merged mode);
-    // null actors for a step without a path.
+    // Step k's own geometry and actors (made on first use: to draw it
+    // selected, to pick or highlight its moves); null actors for a step
+    // without a path.
     StepActors& stepActors(int k);
     vtkMatrix4x4* worldToView(int width, int height) const;
     // The path line actors made so far (merged pair, steps' own).
@@ -233,19 +234,19 @@ private:
     std::shared_ptr<const Plan> plan_;
     std::shared_ptr<sim::StockSimulation> simulation_;
     std::vector<StepActors> steps_;
-    // A plan of more than kMergeAbove steps is drawn merged: one feeds and
-    // one rapids actor per block of units (at most kMaxBlocks blocks), and
-    // only the selected step's own. Thousands of actors cost the renderer
-    // far more than their segments, and making and freeing a few VTK
-    // objects per step took longer than drawing them (3,000 units: 11,600
-    // steps); one pair for all paths made every edit merge them all again.
-    static constexpr std::size_t kMergeAbove = 400;
+    // A milling plan's paths are drawn merged: one feeds and one rapids
+    // actor per block of units (at most kMaxBlocks blocks), and only the
+    // selected step's own. Every actor costs the renderer more than its
+    // segments: thousands of them far more, and even plate.taiwa's 59 path
+    // actors (2,499 segments) cost llvmpipe 3-5 ms a frame more than its 13
+    // merged ones; making and freeing a few VTK objects per step took
+    // longer than drawing them (3,000 units: 11,600 steps); one pair for
+    // all paths made every edit merge them all again.
     static constexpr int kMaxBlocks = 64;
-    std::vector<PathBlock> blocks_;  // merged mode only
-    bool merged_ = false;
-    // Per step in merged mode: its block and place in it (-1: no path).
+    std::vector<PathBlock> blocks_;
+    // Per step: its block and place in it (-1: no path).
     std::vector<std::pair<int, int>> blockOf_;
-    int shownStep_ = -1;  // merged mode: the step whose own actors are in the renderer
+    int shownStep_ = -1;  // the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_, cap_;
     std::optional<SectionPlane> section_;
     std::shared_ptr<const verify::DeviationMap> deviation_;

@@ -1,4 +1,4 @@
-// A large plan's paths drawn merged in blocks of units: each block is one
+// A milling plan's paths drawn merged in blocks of units: each block is one
 // point list with a feeds and a rapids actor (viz::makeMergedPaths) for the
 // steps of a run of consecutive units (at most Scene::kMaxBlocks blocks).
 // An edit of one unit makes anew only its block; the others keep their

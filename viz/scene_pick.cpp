@@ -74,7 +74,7 @@ std::optional<MoveRef> Scene::pickMove(double x, double y, int width, int height
         const StepActors& a = steps_[static_cast<std::size_t>(k)];
         if (a.geometry.points)
             pick(k, a.geometry.points, 0, a.geometry.points->GetNumberOfPoints(), a.geometry.moveOfPiece.data());
-        else if (merged_ && blockOf_[static_cast<std::size_t>(k)].first >= 0) {
+        else if (blockOf_[static_cast<std::size_t>(k)].first >= 0) {
             const auto [b, i] = blockOf_[static_cast<std::size_t>(k)];
             const MergedPaths& mp = blocks_[static_cast<std::size_t>(b)].paths;
             const vtkIdType first = mp.first[static_cast<std::size_t>(i)], count = mp.count[static_cast<std::size_t>(i)];

@@ -1,9 +1,9 @@
 // The scene's in-place update for a new plan of the job it shows (an edit
-// of a value): the steps whose tool path is unchanged keep their actors and
-// GPU buffers (the path found by its moves, wherever the step now is in the
-// machining order), only the others are made; a large plan's merged blocks
-// of units whose paths are unchanged keep theirs (viz/scene_blocks.cpp); the
-// stock's edges and the axes stay while the stock does; the pockets'
+// of a value): the merged blocks of units whose paths are unchanged keep
+// their actors and GPU buffers, only the others are made
+// (viz/scene_blocks.cpp); a step's own actors (made when it was selected)
+// are kept while its path is unchanged (the path found by its moves,
+// wherever the step now is in the machining order); the stock's edges and the axes stay while the stock does; the pockets'
 // outlines are sampled anew only for the units whose outline changed; the
 // stock surface, the tool and the highlight are made as a new scene makes
 // them. The props
@@ -31,12 +31,7 @@
 
 namespace taiwa::viz {
 
-bool Scene::canUpdateInPlace(const Plan& next) const
-{
-    if (!plan_ || lathe_ || next.mmJob.bar) return false;
-    // Drawn the same way: per step, or merged.
-    return (steps_.size() > kMergeAbove) == (next.steps.size() > kMergeAbove);
-}
+bool Scene::canUpdateInPlace(const Plan& next) const { return plan_ && !lathe_ && !next.mmJob.bar; }
 
 void Scene::detach(vtkProp* prop)
 {
@@ -49,7 +44,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
 {
     const std::shared_ptr<const Plan> old = std::move(plan_);
     plan_ = std::move(plan);
-    lastUpdate_ = {true, 0, 0};
+    lastUpdate_ = {true, 0, 0, 0};
     const int n = static_cast<int>(plan_->steps.size());
     simulation_.reset();
     if (stock && stock->stepCount() == n) simulation_ = std::move(stock);
@@ -142,22 +137,10 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     add(stockEdges_);
     add(partEdges_);
     pathSegments_ = 0;
-    if (merged_) {
-        // Blocks whose steps' paths are all unchanged keep their actors.
-        mergePaths(std::move(blocks_), old.get());
-        for (const PathBlock& b : blocks_) add(b.feeds);
-        for (const PathBlock& b : blocks_) add(b.rapids);
-    } else {
-        for (int k = 0; k < n; ++k) {
-            const bool had = steps_[static_cast<std::size_t>(k)].feeds != nullptr;
-            const StepActors& a = stepActors(k);
-            if (!a.feeds) continue;
-            if (!had) ++lastUpdate_.pathsMade;
-            pathSegments_ += lineSegmentCount(a.geometry.feeds) + lineSegmentCount(a.geometry.rapids);
-            add(a.feeds);
-            add(a.rapids);
-        }
-    }
+    // Blocks whose steps' paths are all unchanged keep their actors.
+    mergePaths(std::move(blocks_), old.get());
+    for (const PathBlock& b : blocks_) add(b.feeds);
+    for (const PathBlock& b : blocks_) add(b.rapids);
     add(axes_);
     add(scaleNote_);
 
