@@ -28,7 +28,12 @@ namespace taiwa::viz {
 // uncut, palette::kMachined where the simulation lowered it; given the
 // stock `before` a step (the same grid), palette::kRemoved where the step
 // lowered it further.
+// The top is made in kSurfaceBands bands of rows at once when the field
+// has kSurfaceBandRows rows per band or more (a quad never spans two
+// bands: an uncut top is a quad per band).
 vtkSmartPointer<vtkPolyData> heightFieldSurface(const sim::HeightField& field, const sim::HeightField* before = nullptr);
+inline constexpr int kSurfaceBands = 2;
+inline constexpr int kSurfaceBandRows = 64;
 
 // The verification's colour map on the finished part: the map's stock
 // surface (as heightFieldSurface) coloured by band: palette::kGouge,
