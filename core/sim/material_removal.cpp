@@ -16,11 +16,8 @@ constexpr double kZStep = 0.02;  // largest Z change within one swept piece [mm]
 
 }  // namespace
 
-void cut(HeightField& field, const ToolPath& path, const Tool& tool, int rowMin, int rowMax)
+void cut(HeightField& field, const ToolPath& path, const Tool& tool)
 {
-    rowMin = std::max(rowMin, 0);
-    rowMax = std::min(rowMax, field.rows() - 1);
-    if (rowMin > rowMax) return;
     const CutterProfile cutter(tool);
     const double tolerance = std::min(0.01, field.cellSize() / 10.0);
     const double reach = cutter.reach();
@@ -40,7 +37,7 @@ void cut(HeightField& field, const ToolPath& path, const Tool& tool, int rowMin,
                 return;
             }
             forEachCellNear(
-                field, a, b, reach, rowMin, rowMax,
+                field, a, b, reach, 0, field.rows() - 1,
                 [&](int i, int j, double r2) { field.lower(i, j, z + cutter.heightSquared(r2)); },
                 chain.skip(a, z, cutter.flatRadius()));
             chain.ended(b, z);

@@ -7,16 +7,12 @@
 #include "model/toolpath.h"
 #include "sim/height_field.h"
 
-#include <limits>
-
 namespace taiwa::sim {
 
 // Sweeps `tool` along `path` (the tool tip, as in CL data) over `field`.
 // Horizontal pieces are swept exactly (distance of each cell to the piece);
 // sloped pieces are split so that Z errs by at most 0.02 mm, towards
-// leaving material. Only the cells of rows rowMin..rowMax are lowered:
-// threads cutting one field at once each take rows of their own.
-void cut(HeightField& field, const ToolPath& path, const Tool& tool, int rowMin = 0,
-         int rowMax = std::numeric_limits<int>::max());
+// leaving material.
+void cut(HeightField& field, const ToolPath& path, const Tool& tool);
 
 }  // namespace taiwa::sim

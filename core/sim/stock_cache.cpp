@@ -54,46 +54,12 @@ bool StockCache::sameCuts(const Plan& a, const std::vector<int>& as, const Plan&
     return true;
 }
 
-namespace {
-
-// The rows where the unit's paths are shared out among `threads`: the
-// first row of each part, then the field's row count. Only the balance
-// depends on it (every row is some thread's), so the paths' end points
-// will do for their extent.
-std::vector<int> rowParts(const HeightField& f, const Plan& plan, const std::vector<int>& steps, int threads)
+StockCache::Patch StockCache::cutUnit(HeightField& scratch, const Plan& plan, const std::vector<int>& steps)
 {
-    double y0 = 1e300, y1 = -1e300;
-    for (const int k : steps)
-        for (const Move& m : plan.steps[static_cast<std::size_t>(k)].path->moves) {
-            y0 = std::min(y0, m.end.y);
-            y1 = std::max(y1, m.end.y);
-        }
-    const int rows = f.rows();
-    const auto rowOf = [&](double y) { return std::clamp(static_cast<int>((y - f.stock().y) / f.cellSize()), 0, rows - 1); };
-    const int r0 = y0 <= y1 ? rowOf(y0) : 0, r1 = y0 <= y1 ? rowOf(y1) : rows - 1;
-    std::vector<int> part{0};
-    for (int t = 1; t < threads; ++t) part.push_back(std::max(part.back(), r0 + (r1 - r0 + 1) * t / threads));
-    part.push_back(rows);
-    return part;
-}
-
-}  // namespace
-
-StockCache::Patch StockCache::cutUnit(HeightField& scratch, const Plan& plan, const std::vector<int>& steps, int threads)
-{
-    // The unit's rows shared out among the threads, each lowering its own
-    // rows of the one scratch field (an edit re-cuts one unit).
-    const std::vector<int> part = threads > 1 ? rowParts(scratch, plan, steps, threads) : std::vector<int>{0, scratch.rows()};
-    const auto rows = [&](std::size_t t) {
-        for (const int k : steps) {
-            const Step& s = plan.steps[static_cast<std::size_t>(k)];
-            cut(scratch, *s.path, *cutter(plan, s), part[t], part[t + 1] - 1);
-        }
-    };
-    std::vector<std::future<void>> running;
-    for (std::size_t t = 1; t + 1 < part.size(); ++t) running.push_back(std::async(std::launch::async, rows, t));
-    rows(0);
-    for (auto& r : running) r.get();
+    for (const int k : steps) {
+        const Step& s = plan.steps[static_cast<std::size_t>(k)];
+        cut(scratch, *s.path, *cutter(plan, s));
+    }
     // The rectangle of lowered cells (fresh stock is at 0), copied out and
     // put back to fresh stock for the next unit.
     const int nx = scratch.columns(), ny = scratch.rows();
@@ -159,26 +125,18 @@ StockSimulation::Snapshot StockCache::finished(const std::shared_ptr<const Plan>
             missingHash.push_back(h);
         }
     }
-    // The units not kept: cut on every core, each thread on its own fresh
-    // stock; fewer units than cores (an edit re-cuts one), each unit's rows
-    // shared out among the cores on one fresh stock.
+    // The units not kept: cut on every core, each thread on its own fresh stock.
     std::vector<std::shared_ptr<const Patch>> cut(missing.size());
-    const std::size_t cores = std::max<std::size_t>(std::thread::hardware_concurrency(), 1);
-    if (missing.size() < cores) {
+    const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, std::max<std::size_t>(missing.size(), 1));
+    const auto work = [&](std::size_t first) {
         HeightField scratch = field;
-        for (std::size_t m = 0; m < missing.size(); ++m)
-            cut[m] = std::make_shared<const Patch>(cutUnit(scratch, *plan, missing[m], static_cast<int>(cores)));
-    } else {
-        const auto work = [&](std::size_t first) {
-            HeightField scratch = field;
-            for (std::size_t m = first; m < missing.size(); m += cores)
-                cut[m] = std::make_shared<const Patch>(cutUnit(scratch, *plan, missing[m]));
-        };
-        std::vector<std::future<void>> running;
-        for (std::size_t t = 1; t < cores; ++t) running.push_back(std::async(std::launch::async, work, t));
-        work(0);
-        for (auto& r : running) r.get();
-    }
+        for (std::size_t m = first; m < missing.size(); m += threads)
+            cut[m] = std::make_shared<const Patch>(cutUnit(scratch, *plan, missing[m]));
+    };
+    std::vector<std::future<void>> running;
+    for (std::size_t t = 1; t < threads; ++t) running.push_back(std::async(std::launch::async, work, t));
+    work(0);
+    for (auto& r : running) r.get();
     for (std::size_t m = 0; m < missing.size(); ++m) {
         units_.emplace(missingHash[m], Entry{plan, std::move(missing[m]), cut[m], generation_});
         patches.push_back(cut[m]);

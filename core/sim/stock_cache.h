@@ -45,9 +45,7 @@ private:
         std::shared_ptr<const Patch> patch;
         std::uint64_t used = 0;
     };
-    // The unit's cuts on `scratch` (fresh stock, left fresh again), its
-    // rows shared out among `threads`.
-    static Patch cutUnit(HeightField& scratch, const Plan& plan, const std::vector<int>& steps, int threads = 1);
+    static Patch cutUnit(HeightField& scratch, const Plan& plan, const std::vector<int>& steps);
     static bool sameCuts(const Plan& a, const std::vector<int>& as, const Plan& b, const std::vector<int>& bs);
 
     std::optional<Stock> stock_;
