@@ -3,7 +3,9 @@
 // took 40-60 ms to put in, all of it on the GUI thread after the 3-D view's
 // frame. The station asks for a tape's document as soon as the tape is
 // posted (prepare); the view takes it when it shows the tape (take), by
-// then made on the second core, and old documents are freed there too.
+// then made on the maker's thread, and old documents are freed there too.
+// The maker runs below the 3-D view's renderer (nice 10), which it would
+// otherwise slow down on a two-core machine.
 #pragma once
 
 #include <QFont>
