@@ -9,6 +9,7 @@
 
 #include "ui/preview_window.h"
 
+#include <QCoreApplication>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QVBoxLayout>
@@ -71,6 +72,15 @@ void PreviewWidget::requestFrame()
     if (gl_) gl_->update();  // none while the constructor initializes the interactor
 }
 
+// A paint event of its own, not update(): that asks the platform for an
+// update (a second frame, when the one asked for first is delivered).
+void PreviewWidget::requestFrameNow()
+{
+    if (!gl_) return;
+    if (!gl_->isExposed()) return requestFrame();
+    QCoreApplication::postEvent(gl_, new QPaintEvent(QRect(QPoint(0, 0), gl_->size())));
+}
+
 void PreviewWidget::onInteractorRender(vtkObject*, unsigned long, void*) { requestFrame(); }
 
 void PreviewWidget::onInteraction(vtkObject*, unsigned long event, void*)
@@ -96,7 +106,7 @@ void PreviewWidget::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<si
     if (plan && newStock) fittedStock_ = plan->mmJob.stock;
     scene_.setPlan(std::move(plan), std::move(stock));
     if (newStock) scene_.setView(view_, static_cast<double>(width()) / std::max(height(), 1));
-    requestFrame();
+    requestFrameNow();
 }
 
 void PreviewWidget::setSelectedStep(int index)
@@ -129,8 +139,12 @@ void PreviewWidget::setSection(std::optional<viz::SectionPlane> plane)
 
 void PreviewWidget::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
 {
+    // The panel takes its map away on every edit: a frame only when one
+    // was shown or is now (a needless frame of the plan being replaced
+    // could hold up the new one's).
+    const bool shown = scene_.showsDeviation();
     scene_.setDeviationMap(std::move(map));
-    requestFrame();
+    if (shown || scene_.showsDeviation()) requestFrame();
 }
 
 void PreviewWidget::setView(viz::ViewPreset view)
