@@ -80,13 +80,24 @@ void PlanRunner::reloadLibrary()
     library_ = std::move(tools);
 }
 
-void PlanRunner::update(const Job& job)
+void PlanRunner::start(const Job& job)
 {
     ++generation_;
-    auto checkedOnce = std::make_shared<const CheckedJob>(checkedJob(job, TechnologyTable::builtIn(), library_));
+    started_ = std::make_shared<const CheckedJob>(checkedJob(job, TechnologyTable::builtIn(), library_));
+    if (!started_->ok()) {
+        pendingFull_ = false;
+        return;
+    }
+    // The worker first: it plans while the window shows the edit.
+    schedule({started_, nullptr}, true);
+}
+
+void PlanRunner::announce()
+{
+    if (!started_) return;
+    const std::shared_ptr<const CheckedJob> checkedOnce = std::move(started_);
     emit checked(checkedOnce->diagnostics);
     if (!checkedOnce->ok()) {
-        pendingFull_ = false;
         emit stepsPlanned(nullptr);
         emit programReady(nullptr, tr("(no program: the job has input errors)"), {});
         return;
@@ -100,8 +111,6 @@ void PlanRunner::update(const Job& job)
         emit checked({Diagnostic{Severity::Error, std::nullopt, "", "", std::string("planning failed: ") + e.what()}});
         return;
     }
-    // The worker first: it plans while the step list is shown.
-    schedule({std::move(checkedOnce), nullptr}, true);
     emit stepsPlanned(std::move(steps));
 }
 

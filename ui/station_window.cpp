@@ -132,6 +132,7 @@ void StationWindow::onDocumentChanged(bool fromTyping)
     // The job's dialect, else what the command line would post: linuxcnc.
     const QString dialect = doc_->job().dialect.empty() ? QStringLiteral("linuxcnc") : QString::fromStdString(doc_->job().dialect);
     runner_->setDialect(dialect);
+    runner_->start(doc_->job());  // the full plan under way while the window shows the edit
     nc_->setDialect(dialect);
     units_->refresh();
     jobProps_->refresh(!fromTyping);
@@ -147,7 +148,7 @@ void StationWindow::onDocumentChanged(bool fromTyping)
         f->setUnit(unit, !fromTyping);
         f->setSketch(moduleKind(unit.module).sketch(unit.module, doc_->job().lengthUnit, runner_->library()));
     }
-    runner_->update(doc_->job());
+    runner_->announce();
 }
 
 void StationWindow::onUnitSelected(int unit)
