@@ -205,7 +205,7 @@ private slots:
         QCOMPARE(differingPixels(after, still), 0);
     }
 
-    // A large plan drawn merged (over 400 steps, in blocks of units): every
+    // A large plan (blocks of units, over 400 steps): every
     // block decimated within its share of the budget while moving, full
     // detail again when it stops; after an edit of one step the same.
     void mergedPlanDecimatesEachBlock()

@@ -130,7 +130,7 @@ private slots:
         QVERIFY(differingPixels(drillOnly, rough) > 1000);
     }
 
-    // A plan of many steps is drawn merged (two actors per block of units and the selected
+    // A plan of many steps is drawn in blocks (two actors per block of units and the selected
     // step's own): the same colours where the same paths are.
     void largePlansAreDrawnMerged()
     {

@@ -46,7 +46,7 @@ Job plate()
 }
 
 // `units` rectangular pockets on a 30 mm grid, 12 to a row (150 of them
-// make over 400 steps: the scene draws them merged).
+// make 50 blocks of 3 units).
 Job grid(int units)
 {
     Job job;

@@ -89,9 +89,9 @@ void StationWindow::wire()
         catchUpAfterFrame_ = false;
         steps_->setPlan(plan);
     });
-    // The full plan: the 3-D view first, the NC text and the step list's
-    // times after its frame is on screen (catchUp; the view's frame request
-    // waits for the platform's next update, which a 0 ms timer overtook), as
+    // The full plan: the 3-D view first (its frame at the next pass of the
+    // event loop), the NC text and the step list's times after that frame
+    // is on screen (catchUp; a 0 ms timer overtook the platform's update), as
     // soon as the GUI is free when the last catch-up fit in a frame (33 ms);
     // for a job whose tape takes the GUI longer, once the typing pauses for
     // twice that long (at most 1 s), so that keystrokes are not kept waiting
@@ -102,7 +102,7 @@ void StationWindow::wire()
             [this](std::shared_ptr<const Plan> plan, const QString& nc, const std::vector<BlockSource>& lines) {
                 if (plan) {
                     later_ = Later{plan, nc, lines};
-                    nc_->prepareProgram(nc);  // its text made on another core while the 3-D view draws
+                    nc_->prepareProgram(nc);  // its text made on the maker's thread, below the 3-D view's
                     catchUpAfterFrame_ = preview_ && preview_->drawsFrames();
                     if (catchUpAfterFrame_) catchUpTimer_->start(100);
                     else scheduleCatchUp();
