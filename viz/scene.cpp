@@ -1,5 +1,6 @@
-// The preview scene: actors for the stock, the paths, the tool, the
-// highlight and the axes, rebuilt or restyled as the selection changes.
+// The preview scene: actors for the paths, the tool, the highlight and the
+// axes, rebuilt or restyled as the selection changes (the stock:
+// scene_stock.cpp; a lathe job: scene_lathe.cpp).
 #include "viz/scene.h"
 
 #include "sim/stock_simulation.h"
@@ -15,14 +16,12 @@
 #include <vtkAxesActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkPoints.h>
 #include <vtkCoordinate.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOutlineSource.h>
-#include <vtkPlane.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -102,7 +101,7 @@ Scene::~Scene() { renderer_->RemoveObserver(lightObserver_); }
 
 void Scene::clear()
 {
-    // Merged mode: the steps' own actors shown before (out of the renderer
+    // The steps' own actors shown before (out of the renderer
     // now) may hold GPU buffers.
     if (vtkRenderWindow* window = renderer_->GetRenderWindow())
         for (const StepActors& a : steps_)
@@ -218,18 +217,6 @@ void Scene::setOtherPathsHidden(bool hidden)
     updateEmphasis();
 }
 
-void Scene::setShowStock(bool show)
-{
-    showStock_ = show;
-    updateStock();
-}
-
-void Scene::setStockBefore(bool before)
-{
-    stockBefore_ = before;
-    updateStock();
-}
-
 void Scene::highlightMove(int step, int move)
 {
     highlighted_ = {step, move};
@@ -276,101 +263,6 @@ void Scene::setPlayhead(int step, int move)
         updateEmphasis();
     }
     highlightMove(step, step < 0 ? -1 : move);
-    updateStock();
-}
-
-void Scene::updateStock()
-{
-    if (!plan_) return;
-    if (lathe_) {
-        updateLatheStep();
-        return;
-    }
-    if (stock_) renderer_->RemoveActor(stock_);
-    if (cap_) renderer_->RemoveActor(cap_);
-    tray_ = false;
-    cap_ = nullptr;
-    // The solid a section cuts open: the colour map, or the simulated stock.
-    std::shared_ptr<const sim::HeightField> shown;
-    const bool solid = deviation_ || showStock_ || section_;
-    if (deviation_) {
-        stock_ = actorFor(deviationSurface(*deviation_), palette::kStock);
-        shown = std::shared_ptr<const sim::HeightField>(deviation_, &deviation_->stock);
-    } else if (solid) {
-        if (!simulation_) simulation_ = std::make_shared<sim::StockSimulation>(*plan_);
-        // A step's own cut in its colour: after the step (or the blocks
-        // played of it) against the stock before it.
-        sim::StockSimulation::Snapshot field, before;
-        if (playhead_.step >= 0) {
-            field = simulation_->afterMove(playhead_.step, playhead_.move);
-            before = simulation_->before(playhead_.step);
-        } else if (selected_ < 0) {
-            field = stockBefore_ ? simulation_->initial() : simulation_->finished();
-        } else if (stockBefore_) {
-            field = simulation_->before(selected_);
-        } else {
-            field = simulation_->after(selected_);
-            before = simulation_->before(selected_);
-        }
-        stock_ = actorFor(heightFieldSurface(*field, before.get()), palette::kStock);
-        shown = field;
-    } else {
-        stock_ = actorFor(stockBlock(plan_->mmJob.stock), palette::kStock);
-        tray_ = true;
-        // Only the far faces: a glass tray behind the paths, which keep their colours.
-        stock_->GetProperty()->SetOpacity(0.12);
-        stock_->GetProperty()->FrontfaceCullingOn();
-        drawAsBackdrop(stock_);  // not as translucent geometry (scene_lod.cpp)
-        // While the camera moves the stock's edges alone show it.
-        stock_->SetVisibility(!moving_);
-    }
-    stockLight_.set(nullptr, 0, 0);
-    if (shown) {  // the surface's own colours
-        stock_->GetMapper()->ScalarVisibilityOn();
-        stock_->GetMapper()->SetColorModeToDirectScalars();
-        constexpr double ambient = 0.25, diffuse = 0.75;
-        if (lightOnProcessor_) {
-            stockLight_.set(stock_, ambient, diffuse);
-        } else {
-            auto* surface = vtkPolyData::SafeDownCast(stock_->GetMapper()->GetInputDataObject(0, 0));
-            surface->GetCellData()->SetNormals(surface->GetCellData()->GetArray(kQuadNormals));
-            stock_->GetProperty()->SetAmbient(ambient);
-            stock_->GetProperty()->SetDiffuse(diffuse);
-        }
-    }
-    if (section_ && shown) {
-        // VTK keeps the side its plane's normal points to: ours points away.
-        const SectionPlane& p = *section_;
-        auto clip = vtkSmartPointer<vtkPlane>::New();
-        clip->SetOrigin(p.origin.x, p.origin.y, p.origin.z);
-        clip->SetNormal(-p.normal.x, -p.normal.y, -p.normal.z);
-        stock_->GetMapper()->AddClippingPlane(clip);
-        cap_ = lineActor(sectionCap(*shown, p), palette::kSection, 1.0);  // unlit: one flat colour
-        renderer_->AddActor(cap_);
-    }
-    renderer_->AddActor(stock_);
-    stockEdges_->SetVisibility(!solid);
-}
-
-void Scene::setLightOnProcessor(bool on)
-{
-    if (on == lightOnProcessor_) return;
-    lightOnProcessor_ = on;
-    updateStock();
-}
-
-void Scene::setSection(std::optional<SectionPlane> plane)
-{
-    if (plane == section_) return;
-    section_ = plane;
-    updateStock();
-}
-
-void Scene::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
-{
-    if (map && map->empty()) map = nullptr;
-    if (map == deviation_) return;
-    deviation_ = std::move(map);
     updateStock();
 }
 
