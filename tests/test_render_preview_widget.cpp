@@ -5,11 +5,14 @@
 // (grabWithPreview, as the station's screenshots are taken); the sample
 // m4-standard.taiwa shows background and path; a click on a path reports
 // its move and a left drag turns the camera without clicking, both sent to
-// the widget and to its GL window (as the window system delivers them).
+// the widget and to its GL window (as the window system delivers them). A
+// new plan is one frame, drawn in the next pass of the event loop; taking
+// away a colour map that is not there draws none.
 // Needs an X display (xvfb-run -a).
 #include "support/hand_plan.h"
 #include "support/images.h"
 #include "ui/preview_widget.h"
+#include "verify/deviation.h"
 #include "viz/palette.h"
 #include "viz/scene.h"
 
@@ -79,6 +82,34 @@ private slots:
 
     // An edit of the job (a new plan on the same stock) keeps the camera the
     // operator turned; another stock is fitted anew.
+    // A new plan is one frame, drawn at the next pass of the event loop
+    // (not on the platform's update timer, and not twice); taking away a
+    // colour map that is not there draws none (the verification panel does
+    // on every edit); one that is there draws one.
+    void newPlanIsOneFrameAtOnce()
+    {
+        PreviewWidget w;
+        showFromTop(w);
+        if (QTest::currentTestFailed()) return;
+        QTest::qWait(100);  // the frames of showing it
+        QSignalSpy frames(&w, &PreviewWidget::frameShown);
+        w.setDeviationMap(nullptr);
+        QTest::qWait(100);
+        QCOMPARE(frames.count(), 0);
+        w.setPlan(std::make_shared<const Plan>(plan_));
+        QCoreApplication::processEvents();  // one pass: the frame is drawn in it
+        QCOMPARE(frames.count(), 1);
+        QTest::qWait(100);
+        QCOMPARE(frames.count(), 1);
+        const verify::Report r = verify::verifyPlan(plan_, {0.5, 0});
+        w.setDeviationMap(std::make_shared<const verify::DeviationMap>(verify::deviationMap(plan_, r)));
+        QTest::qWait(100);
+        QCOMPARE(frames.count(), 2);
+        w.setDeviationMap(nullptr);
+        QTest::qWait(100);
+        QCOMPARE(frames.count(), 3);
+    }
+
     void cameraStaysPutAcrossEdits()
     {
         PreviewWidget w;
