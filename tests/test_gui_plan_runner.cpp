@@ -3,7 +3,8 @@
 // starts the worker again on the newest edit; a burst of edits in one
 // event-loop turn is published once (the first starts the idle worker at
 // once, only the newest of the rest is planned after it); a dialect change
-// re-posts the last plan.
+// re-posts the last plan; start() sets the worker going before announce()
+// says what the check found.
 #include "job/job_file.h"
 #include "modules/m4/m4.h"
 #include "support/support.h"
@@ -79,6 +80,40 @@ private slots:
         const auto plans = published(programs);
         QCOMPARE(plans.size(), std::size_t{1});
         QCOMPARE(firstDepth(*plans.front()), 12.0);
+    }
+
+    // start() sets the worker going before anything is announced (the
+    // window refreshes its forms meanwhile); announce() then emits the
+    // check and the step list of that job once; a job with errors starts
+    // nothing and is announced as no program.
+    void startThenAnnounce()
+    {
+        PlanRunner runner;
+        QSignalSpy checked(&runner, &PlanRunner::checked);
+        QSignalSpy steps(&runner, &PlanRunner::stepsPlanned);
+        QSignalSpy programs(&runner, &PlanRunner::programReady);
+        runner.start(plateWithDepth(10));
+        QVERIFY(runner.isBusy());
+        QCOMPARE(checked.size(), 0);
+        QCOMPARE(steps.size(), 0);
+        runner.announce();
+        QCOMPARE(checked.size(), 1);
+        QCOMPARE(steps.size(), 1);
+        QVERIFY(steps.at(0).at(0).value<std::shared_ptr<const Plan>>());
+        runner.announce();  // nothing more to say
+        QCOMPARE(steps.size(), 1);
+        QTRY_VERIFY_WITH_TIMEOUT(!runner.isBusy(), 20000);
+        QCOMPARE(published(programs).size(), std::size_t{1});
+
+        Job bad = plateWithDepth(10);
+        bad.stock.width = -1;
+        runner.start(bad);
+        QVERIFY(!runner.isBusy());
+        runner.announce();
+        QCOMPARE(steps.size(), 2);
+        QVERIFY(!steps.at(1).at(0).value<std::shared_ptr<const Plan>>());
+        QCOMPARE(programs.size(), 2);
+        QVERIFY(!programs.at(1).at(0).value<std::shared_ptr<const Plan>>());
     }
 
     // The stock grid chosen in the View menu: the last plan simulated again
