@@ -8,6 +8,7 @@
 // anew, not kept from the last frame). Needs an X display (xvfb-run -a).
 #include "support/hand_plan.h"
 #include "support/images.h"
+#include "support/scene_picture.h"
 #include "verify/deviation.h"
 #include "viz/render.h"
 #include "viz/scene.h"
@@ -33,20 +34,8 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 400;
 
-// The scene's picture through `camera`, in a window of its own.
-QImage picture(Scene& scene, vtkCamera* camera)
-{
-    OffscreenWindow window(kWidth, kHeight);
-    if (window.problem()) return {};
-    window.window()->AddRenderer(scene.renderer());
-    scene.renderer()->GetActiveCamera()->DeepCopy(camera);
-    scene.renderer()->ResetCameraClippingRange();
-    window.window()->Render();
-    const std::string png = pngOf(window.window());
-    window.window()->RemoveRenderer(scene.renderer());
-    return QImage::fromData(reinterpret_cast<const uchar*>(png.data()), static_cast<int>(png.size()), "PNG")
-        .convertToFormat(QImage::Format_RGB32);
-}
+// The scene's picture through the camera it is given.
+QImage picture(Scene& scene, vtkCamera* camera) { return scenePicture(scene, camera, kWidth, kHeight); }
 
 // How two pictures differ: how many pixels differ by more than one level
 // of a colour channel, and by more than two.

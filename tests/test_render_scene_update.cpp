@@ -10,6 +10,7 @@
 #include "modules/m4/m4.h"
 #include "pipeline/pipeline.h"
 #include "support/images.h"
+#include "support/scene_picture.h"
 #include "tools/tool_library.h"
 #include "viz/render.h"
 #include "viz/scene.h"
@@ -73,19 +74,7 @@ Job deeper(Job job)
 }
 
 // The scene's picture through the camera it is given.
-QImage picture(Scene& scene, vtkCamera* camera)
-{
-    OffscreenWindow window(kWidth, kHeight);
-    if (window.problem()) return {};
-    window.window()->AddRenderer(scene.renderer());
-    scene.renderer()->GetActiveCamera()->DeepCopy(camera);
-    scene.renderer()->ResetCameraClippingRange();
-    window.window()->Render();
-    const std::string png = pngOf(window.window());
-    window.window()->RemoveRenderer(scene.renderer());
-    return QImage::fromData(reinterpret_cast<const uchar*>(png.data()), static_cast<int>(png.size()), "PNG")
-        .convertToFormat(QImage::Format_RGB32);
-}
+QImage picture(Scene& scene, vtkCamera* camera) { return test::scenePicture(scene, camera, kWidth, kHeight); }
 
 struct Settings {
     bool stock = false;
