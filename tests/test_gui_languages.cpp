@@ -11,6 +11,7 @@
 #include "support/speak.h"
 #include "support/support.h"
 #include "ui/core_messages.h"
+#include "ui/core_texts.h"
 #include "ui/dxf_import_dialog.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
@@ -271,19 +272,22 @@ class TestGuiLanguages : public QObject {
         QCOMPARE(message->text(), QString("深さが 0 mm です。0 より大きくしてください (上面から下へ測ります)"));
     }
 
-    // The 3-D view's scale note in the station's language; `taiwa render`'s stays English.
+    // The 3-D view's scale note in the station's language (where there is
+    // OpenGL for a 3-D view); a scene of `taiwa render`'s, made in the same
+    // process, stays English. A scene's note follows its text at once.
     void axesNoteInJapanese()
     {
         speak("ja");
         StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        // The preview's scene where there is OpenGL; a scene of the station's plan everywhere.
         if (w.preview())
             QTRY_COMPARE(QString::fromStdString(w.preview()->scene().scaleNote()), QString("軸 50 mm"));
         QTRY_VERIFY(w.planRunner()->fullPlan());
         viz::Scene scene;
         scene.setPlan(w.planRunner()->fullPlan());
+        QCOMPARE(QString::fromStdString(scene.scaleNote()), QString("axes 50 mm"));
+        scene.setScaleNoteText([](int mm) { return axesNote(mm).toStdString(); }, axesNoteFont().toStdString());
         QCOMPARE(QString::fromStdString(scene.scaleNote()), QString("軸 50 mm"));
     }
 

@@ -10,6 +10,7 @@
 // offscreen without OpenGL and cannot see any of this.
 #include "modules/m4/m4.h"
 #include "support/images.h"
+#include "support/speak.h"
 #include "support/support.h"
 #include "ui/job_document.h"
 #include "ui/nc_view.h"
@@ -310,6 +311,23 @@ private slots:
         j.units[0].module.as<M4Pocket>().depth = depth;
         w_->document()->edit(j, "back", "back");
         w_->planRunner()->flush();
+    }
+
+    // A Japanese station's 3-D view writes its scale note in Japanese; a
+    // scene made beside it (as `taiwa render` makes one) keeps English.
+    void axesNoteInTheStationsLanguage()
+    {
+        test::speak("ja");
+        StationWindow ja(test::sourcePath("resources/samples/plate.taiwa"));
+        ja.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&ja));
+        QVERIFY(ja.preview());
+        ja.planRunner()->flush();
+        QTRY_COMPARE(QString::fromStdString(ja.preview()->scene().scaleNote()), QString("軸 50 mm"));
+        viz::Scene other;
+        other.setPlan(ja.planRunner()->fullPlan());
+        QCOMPARE(QString::fromStdString(other.scaleNote()), QString("axes 50 mm"));
+        test::speak("en");
     }
 };
 

@@ -137,6 +137,12 @@ void PreviewWidget::setSection(std::optional<viz::SectionPlane> plane)
     requestFrame();
 }
 
+void PreviewWidget::setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile)
+{
+    scene_.setScaleNoteText(std::move(text), std::move(fontFile));
+    requestFrame();
+}
+
 void PreviewWidget::setDeviationMap(std::shared_ptr<const verify::DeviationMap> map)
 {
     // The panel takes its map away on every edit: a frame only when one

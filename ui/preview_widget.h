@@ -61,6 +61,8 @@ public:
 
     // The scene, for tests and the NC view's picking.
     const viz::Scene& scene() const { return scene_; }
+    // The axes' scale note in the station's language (viz::Scene::setScaleNoteText).
+    void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile);
 
     // Whether the view draws its frames now (its GL window is exposed): a
     // frameShown() follows every change then.

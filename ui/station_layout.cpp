@@ -6,6 +6,7 @@
 
 #include "modules/registry.h"
 #include "sim/stock_simulation.h"
+#include "ui/core_texts.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
@@ -120,6 +121,7 @@ QWidget* StationWindow::buildRight()
     if (QOpenGLContext().create()) {
         preview_ = new PreviewWidget;
         preview_->setObjectName("preview");
+        preview_->setScaleNoteText([](int mm) { return axesNote(mm).toStdString(); }, axesNoteFont().toStdString());
         preview_->setMinimumSize(320, 240);
         section_ = new SectionBar;
         section_->setObjectName("section");

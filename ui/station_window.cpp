@@ -51,7 +51,6 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
       forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
       verify_(new VerificationPanel)
 {
-    viz::Scene::setScaleNoteText([](int mm) { return axesNote(mm).toStdString(); }, axesNoteFont().toStdString());
     for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
     auto* main = new QSplitter(Qt::Horizontal);
     main->addWidget(buildLeft());

@@ -41,24 +41,22 @@ namespace {
 void setColour(vtkActor* a, Rgb c) { a->GetProperty()->SetColor(c.red(), c.green(), c.blue()); }
 
 
-std::function<std::string(int)>& scaleNoteText()
-{
-    static std::function<std::string(int)> text = [](int mm) { return "axes " + std::to_string(mm) + " mm"; };
-    return text;
-}
-
-std::string& scaleNoteFont()
-{
-    static std::string file;  // empty: VTK's own font
-    return file;
-}
-
 }  // namespace
 
 void Scene::setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile)
 {
-    scaleNoteText() = std::move(text);
-    scaleNoteFont() = std::move(fontFile);
+    scaleNoteText_ = std::move(text);
+    scaleNoteFont_ = std::move(fontFile);
+    if (scaleNote_) writeScaleNote();
+}
+
+void Scene::writeScaleNote()
+{
+    scaleNote_->SetInput(scaleNoteText_(static_cast<int>(axisLength_)).c_str());
+    if (!scaleNoteFont_.empty()) {
+        scaleNote_->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        scaleNote_->GetTextProperty()->SetFontFile(scaleNoteFont_.c_str());
+    }
 }
 
 std::string Scene::scaleNote() const
@@ -176,12 +174,8 @@ void Scene::makeAxes(double axisLength)
     axisLength_ = axisLength;
     axes_ = labelledAxes(axisLength, 14);
     scaleNote_ = vtkSmartPointer<vtkTextActor>::New();
-    scaleNote_->SetInput(scaleNoteText()(static_cast<int>(axisLength)).c_str());
     scaleNote_->GetTextProperty()->SetFontSize(14);
-    if (!scaleNoteFont().empty()) {
-        scaleNote_->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
-        scaleNote_->GetTextProperty()->SetFontFile(scaleNoteFont().c_str());
-    }
+    writeScaleNote();
     scaleNote_->GetTextProperty()->SetColor(palette::kText.red(), palette::kText.green(), palette::kText.blue());
     scaleNote_->GetTextProperty()->SetJustificationToRight();  // clear of the axes at the work zero
     scaleNote_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();

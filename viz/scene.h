@@ -161,10 +161,12 @@ public:
     std::optional<MoveRef> pickMove(double x, double y, int width, int height, double tolerance = 6.0) const;
 
     // The axes' scale note for axes of `mm` millimetres, in its caller's
-    // language: "axes 50 mm" (taiwa render's pictures) unless the station
-    // gives its translation, written with `fontFile` (a TrueType font with
-    // its glyphs, "軸") when given; for every scene made from then on. The note shown.
-    static void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
+    // language: "axes 50 mm" (taiwa render's pictures) unless given its
+    // translation (the station's 3-D view), written with `fontFile` (a
+    // TrueType font with its glyphs, "軸") when given. This scene's only;
+    // the note shown changes with it.
+    void setScaleNoteText(std::function<std::string(int mm)> text, std::string fontFile = {});
+    // The note shown.
     std::string scaleNote() const;
 
     // A milling plan's path actors (viz/scene_blocks.cpp): per block, its
@@ -201,6 +203,8 @@ private:
     void updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock);
     // The scale note and axes for a stock of this size (made once per length).
     void makeAxes(double axisLength);
+    // The scale note's text and font for axes of axisLength_.
+    void writeScaleNote();
     // Takes a prop out of the renderer keeping its GPU resources (it is
     // shown again later); RemoveActor frees them.
     void detach(vtkProp* prop);
@@ -274,6 +278,8 @@ private:
     PlanUpdate lastUpdate_;
     OutlineCache outlines_;  // the pockets' sampled outlines, per unit
     double axisLength_ = 0.0;  // of axes_, milling jobs
+    std::function<std::string(int mm)> scaleNoteText_ = [](int mm) { return "axes " + std::to_string(mm) + " mm"; };
+    std::string scaleNoteFont_;  // empty: VTK's own font
     bool lightOnProcessor_ = true;
     SurfaceLighting stockLight_;  // stock_ when it is a surface lit on the processor
     unsigned long lightObserver_ = 0;  // the renderer's start event: stockLight_.update
