@@ -3,10 +3,10 @@
 // their actors and GPU buffers, only the others are made
 // (viz/scene_blocks.cpp); a step's own actors (made when it was selected)
 // are kept while its path is unchanged (the path found by its moves,
-// wherever the step now is in the machining order); the stock's edges and the axes stay while the stock does; the pockets'
-// outlines are sampled anew only for the units whose outline changed; the
-// stock surface, the tool and the highlight are made as a new scene makes
-// them. The props
+// wherever the step now is in the machining order); the stock's edges and
+// the axes stay while the stock does; the pockets' outlines are sampled
+// anew only for the units whose outline changed; the stock surface, the
+// tool and the highlight are made as a new scene makes them. The props
 // are then put in the renderer in a new scene's order, so that what is
 // drawn over what (lines on a floor at the same depth) is the same too.
 #include "viz/scene.h"

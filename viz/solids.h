@@ -23,11 +23,13 @@ namespace taiwa::viz {
 
 // The closed surface of the simulated stock: the height field's top (a
 // vertex per cell centre; rectangles of vertices at one height merged into
-// one quad), its four side walls and the bottom, with a normal per quad
-// (flat shading) and RGB point colours: palette::kStock where the top is
-// uncut, palette::kMachined where the simulation lowered it; given the
-// stock `before` a step (the same grid), palette::kRemoved where the step
-// lowered it further.
+// one quad), its four side walls and the bottom. Each quad has four points
+// of its own, its outward normal in the cell array kQuadNormals and its
+// corners' RGB colours in kBaseColours and, until it is lit
+// (viz/surface_light.h), in the point scalars: palette::kStock where the
+// top is uncut, palette::kMachined where the simulation lowered it; given
+// the stock `before` a step (the same grid), palette::kRemoved where the
+// step lowered it further.
 // The top is made in kSurfaceBands bands of rows at once when the field
 // has kSurfaceBandRows rows per band or more (a quad never spans two
 // bands: an uncut top is a quad per band).
