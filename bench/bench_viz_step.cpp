@@ -120,6 +120,20 @@ double cpuMs()
     return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
+// One frame rendered and finished: processor time of the process (Mesa's
+// threads too) and clock time, in ms.
+struct FrameTime {
+    double cpu = 0, wall = 0;
+};
+FrameTime timedFrame(vtkRenderWindow* window)
+{
+    const double c0 = cpuMs();
+    const auto t0 = Clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    return {cpuMs() - c0, ms(Clock::now() - t0)};
+}
+
 void BM_FrameParts(benchmark::State& state)
 {
     const auto plan = samplePlan();
@@ -145,12 +159,9 @@ void BM_FrameParts(benchmark::State& state)
     for (auto _ : state) {
         for (std::size_t c = 0; c <= props.size(); ++c) {
             if (c > 0) props[c - 1]->VisibilityOff();
-            const double c0 = cpuMs();
-            const auto t0 = Clock::now();
-            window->Render();
-            window->WaitForCompletion();
-            wall[c] += ms(Clock::now() - t0);
-            cpu[c] += cpuMs() - c0;
+            const FrameTime t = timedFrame(window);
+            wall[c] += t.wall;
+            cpu[c] += t.cpu;
             if (c > 0) props[c - 1]->VisibilityOn();
         }
         ++frames;
@@ -168,7 +179,6 @@ void BM_FrameParts(benchmark::State& state)
     state.counters["frame_cpu_ms"] = cpu[0] / n;
 }
 BENCHMARK(BM_FrameParts)->Unit(benchmark::kMillisecond)->Iterations(20);
-
 
 void BM_StockLight(benchmark::State& state)
 {
@@ -190,12 +200,9 @@ void BM_StockLight(benchmark::State& state)
     long frames = 0;
     for (auto _ : state) {
         if (turn) view.scene.renderer()->GetActiveCamera()->Azimuth(frames % 2 == 0 ? 1.0 : -1.0);
-        const double c0 = cpuMs();
-        const auto t0 = Clock::now();
-        window->Render();
-        window->WaitForCompletion();
-        wall += ms(Clock::now() - t0);
-        cpu += cpuMs() - c0;
+        const FrameTime t = timedFrame(window);
+        wall += t.wall;
+        cpu += t.cpu;
         ++frames;
     }
     state.counters["frame_cpu_ms"] = cpu / static_cast<double>(frames);
