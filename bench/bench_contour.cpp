@@ -6,7 +6,7 @@
 // prints. The outline is a gear of 500 teeth (a flank, a tip arc, a flank, a
 // root arc each) of 100 mm root radius, the islands round and rounded
 // squares by turns on a ring inside it.
-#include "paths/cl.h"
+#include "modules/registry.h"
 #include "paths/region.h"
 #include "paths/region_offset.h"
 #include "post/post.h"

@@ -2,7 +2,7 @@
 // 6 mm end mill: roughing with and without a pilot hole, floor finishing,
 // wall finishing in several incisions, and the coverage proof alone; each
 // reports its segment count, path length and estimated machining minutes.
-#include "paths/cl.h"
+#include "modules/registry.h"
 #include "paths/coverage.h"
 
 #include <benchmark/benchmark.h>
@@ -25,6 +25,7 @@ Tool endMill()
 Step step(StepKind kind, double start, double cut)
 {
     Step s;
+    s.module = "M4";
     s.kind = kind;
     s.outline = kOutline;
     s.position = centroid(kOutline.corners);

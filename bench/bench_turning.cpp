@@ -10,7 +10,7 @@
 #include "post/lathe_post.h"
 #include "tools/tool_library.h"
 #include "turning/allowance.h"
-#include "turning/turn_plan.h"
+#include "modules/turn/turn_plan.h"
 #include "turning/profile_resolve.h"
 
 #include <benchmark/benchmark.h>

@@ -6,7 +6,8 @@
 #include "modules/m4/m4.h"
 #include "job/job_check.h"
 #include "pipeline/pipeline.h"
-#include "tools/tool_choice.h"
+#include "modules/pocket_tools.h"
+#include "modules/registry.h"
 #include "tools/tool_library.h"
 
 #include <QtTest>

@@ -3,7 +3,7 @@
 // region, and on which side of the tool the wall lies.
 #pragma once
 
-#include "paths/cl.h"
+#include "modules/registry.h"
 #include "support/pocket_geometry.h"
 
 #include <algorithm>
@@ -26,6 +26,7 @@ inline Tool makeTool(ToolType type, double d)
 inline Step makePocketStep(StepKind kind, Quad outline, double start, double cut)
 {
     Step s;
+    s.module = "M4";  // its door makes the path
     s.kind = kind;
     s.outline = outline;
     s.startDepth = start;

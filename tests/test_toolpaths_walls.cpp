@@ -159,6 +159,7 @@ private slots:
     void pilotHoleDrillsToDepthAndPecksWhenDeep()
     {
         Step s;
+        s.module = "M4";
         s.kind = StepKind::PilotHole;
         s.position = {30, 20};
         s.cutDepth = 11;
@@ -188,6 +189,7 @@ private slots:
         pocket.cornerRadius = 4;
         const double run = 10 * tanDeg(20);
         Step s;
+        s.module = "M2D";
         s.kind = StepKind::InclinedFaceFinishing;
         s.cutDepth = 10;
         s.scallop = 0.01;

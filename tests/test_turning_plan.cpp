@@ -1,4 +1,4 @@
-// Turning steps (core/turning/turn_plan.h) and the lathe tape: which steps a
+// Turning steps (core/modules/turn/turn_plan.h) and the lathe tape: which steps a
 // turned profile gets and in what order, the tools chosen and why, roughing
 // as the control's G71 cycle or explicit passes, grooving's plunges and its
 // withdrawal along the surface normal, the FANUC G71 P/Q numbers pointing at
@@ -15,7 +15,7 @@
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "turning/allowance.h"
-#include "turning/turn_plan.h"
+#include "modules/turn/turn_plan.h"
 
 #include <nlohmann/json.hpp>
 

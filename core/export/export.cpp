@@ -50,7 +50,7 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
     }
     j["startDepth"] = out(s.startDepth, u);
     j["cutDepth"] = out(s.cutDepth, u);
-    if (s.kind == StepKind::PilotHole) {
+    if (s.machiningType == MachiningType::PilotHole) {
         j["position"] = point(s.position, u);
     }
     if (!s.holes.empty()) {  // hole patterns: every hole the step's cycle runs at

@@ -4,7 +4,7 @@
 // the roughing cycle the control may run instead of the explicit passes
 // (FANUC G71 P/Q, LinuxCNC G71 with an o-subroutine), and the speeds:
 // constant surface speed with its spindle limit, feed per revolution.
-// Made by core/turning/ (turn_plan.h), written by core/post/lathe_post.cpp.
+// Made by the TURN module (core/modules/turn/turn_plan.h), written by core/post/lathe_post.cpp.
 //
 // Conventions (model/turned.h): z along the spindle axis, r the radius; the
 // post-processor prints X as a diameter. An arc's sense is as drawn in the

@@ -24,6 +24,7 @@
 #include "model/tool.h"
 #include "model/turned.h"
 #include "modules/form_fields.h"
+#include "paths/cl.h"
 
 #include <nlohmann/json.hpp>
 
@@ -100,6 +101,34 @@ public:
     // them (M2D: the roughing tool before the layers); problems become
     // diagnostics of the unit. Inputs are checked and in mm.
     virtual std::vector<Step> plan(const ModuleInput& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
+
+    // The tool path of one of the unit's milling steps (paths/cl.h: the tool
+    // tip, from and back to the safe height), made by the module's own
+    // generators from the step's geometry. Turning steps come with their
+    // paths (Step::turn) and a unit without milling steps has none to make:
+    // the default throws std::logic_error. Throws std::logic_error too for a
+    // step the checks should have refused.
+    virtual ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                              const PathParameters& params) const;
+    // About how many moves toolPath would make for the step, from its
+    // geometry alone, in microseconds: the pipeline refuses a plan whose
+    // paths would not fit its move budget before computing any of them.
+    virtual double estimateMoves(const Step& /*step*/, const Tool& /*tool*/, const TechnologyData& /*tech*/,
+                                 const PathParameters& /*params*/) const
+    {
+        return 10;
+    }
+    // The order of the unit's own steps: true when `later` must wait for
+    // `earlier` (both steps of one unit of this kind). The job-wide order
+    // (tools/step_order.cpp) keeps these and otherwise saves tool changes.
+    // By default the steps of one kind follow their numbers.
+    virtual bool stepWaitsFor(const Step& later, const Step& earlier) const
+    {
+        return later.kind == earlier.kind && earlier.number < later.number;
+    }
+    // True for a unit whose steps come before every other unit's (FACE:
+    // the top is faced first, the others' depths being measured from it).
+    virtual bool cutsBeforeOtherUnits() const { return false; }
 
     // The station's form, top to bottom (the tab order).
     virtual const std::vector<FormField>& fields() const = 0;

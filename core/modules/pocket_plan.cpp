@@ -1,9 +1,14 @@
-// Tool choice for a pocket unit's steps and the pilot hole handed to roughing.
+// Tool choice for a pocket unit's steps, the pilot hole handed to roughing,
+// and the step hooks of the pocket modules' doors.
 #include "modules/pocket_plan.h"
 
-#include "tools/tool_choice.h"
+#include "paths/generators.h"
+
+#include "modules/pocket_tools.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
 namespace taiwa {
 
@@ -32,6 +37,87 @@ void setStepOver(std::vector<Step>& steps, std::optional<double> stepOver)
     if (!stepOver) return;
     for (Step& s : steps)
         if (s.kind == StepKind::Roughing) s.stepOver = stepOver;
+}
+
+namespace {
+
+void requirePositiveGamma(const TechnologyData& tech)
+{
+    if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+}
+
+// Rank of a step within its unit: the pilot hole, then roughing, then the
+// finishing steps.
+int rank(const Step& s)
+{
+    switch (s.kind) {
+    case StepKind::PilotHole: return 0;
+    case StepKind::Roughing: return 1;
+    default: return 2;
+    }
+}
+
+}  // namespace
+
+ToolPath pocketToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    if (step.region) {
+        switch (step.kind) {
+        case StepKind::Roughing: requirePositiveGamma(tech); return paths::regionRoughing(step, tool, tech, params);
+        case StepKind::FloorFinishing: return paths::regionFloorFinishing(step, tool, tech, params);
+        case StepKind::WallFinishing: return paths::regionWallFinishing(step, tool, tech, params);
+        default: break;
+        }
+    }
+    switch (step.kind) {
+    case StepKind::PilotHole: return paths::pilotHole(step, tool, params);
+    case StepKind::Roughing: requirePositiveGamma(tech); return paths::pocketRoughing(step, tool, tech, params);
+    case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
+    case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
+    case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
+    default: break;
+    }
+    throw std::logic_error("no pocket tool path for step " + step.label());
+}
+
+double pocketEstimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    const double layers = estimatedLayers(step, tool, tech);
+    const double rings = estimatedRings(step, tool, tech, params);
+    if (step.region) {  // a ring of a contour has about as many moves as the flattened region has points
+        double points = static_cast<double>(flatten(step.region->outer, 1e-4).size());
+        for (const auto& i : step.region->islands) points += static_cast<double>(flatten(i, 1e-4).size());
+        if (step.kind == StepKind::Roughing) return layers * rings * points;
+        if (step.kind == StepKind::FloorFinishing) return rings * points;
+        if (step.kind == StepKind::WallFinishing) {  // exact lines and arcs: about two moves a segment, a lead each loop
+            double segments = static_cast<double>(step.region->outer.segments.size());
+            for (const auto& i : step.region->islands) segments += static_cast<double>(i.segments.size()) + 6;
+            return (step.multiIncision ? layers : 1) * (2 * segments + 10);
+        }
+    }
+    constexpr double kMovesPerRing = 12;  // four sides, four corners, links
+    switch (step.kind) {
+    case StepKind::PilotHole: return 10;
+    case StepKind::Roughing: return layers * rings * kMovesPerRing;
+    case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
+    case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
+    case StepKind::InclinedFaceFinishing: {
+        if (!step.face) return 10;
+        const double R = std::max(tool.diameter, 1e-3) / 2, h = std::clamp(step.scallop, 1e-6, R);
+        const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
+        const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
+        return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
+    }
+    default: return 10;
+    }
+}
+
+bool pocketStepWaitsFor(const Step& later, const Step& earlier)
+{
+    if (rank(earlier) < rank(later)) return true;
+    // Roughing layers in order; wall passes (semi-finish, middle, final) in order.
+    return later.kind == earlier.kind && (later.kind == StepKind::Roughing || later.kind == StepKind::WallFinishing) &&
+           earlier.number < later.number;
 }
 
 }  // namespace taiwa

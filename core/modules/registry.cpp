@@ -43,6 +43,30 @@ const ModuleKind& moduleKind(const ModuleInput& m)
     throw std::logic_error(std::string("no module kind named '") + m.name() + "'");
 }
 
+const ModuleKind& moduleKind(const Step& step)
+{
+    if (const ModuleKind* k = findModuleKind(step.module)) return *k;
+    throw std::logic_error("step " + step.label() + " names no module kind ('" + step.module + "')");
+}
+
+ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    return moduleKind(step).toolPath(step, tool, tech, params);
+}
+
+double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    return moduleKind(step).estimateMoves(step, tool, tech, params);
+}
+
+std::vector<int> orderSteps(const std::vector<Step>& steps)
+{
+    const StepOrderRules rules{
+        [](const Step& later, const Step& earlier) { return moduleKind(later).stepWaitsFor(later, earlier); },
+        [](const Step& s) { return moduleKind(s).cutsBeforeOtherUnits(); }};
+    return orderStepsBy(steps, rules);
+}
+
 std::vector<std::string> moduleNames()
 {
     std::vector<std::string> names;

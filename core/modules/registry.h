@@ -3,6 +3,7 @@
 #pragma once
 
 #include "modules/module_kind.h"
+#include "tools/step_order.h"
 
 #include <string_view>
 #include <vector>
@@ -17,5 +18,16 @@ const ModuleKind* findModuleKind(std::string_view name);
 const ModuleKind& moduleKind(const ModuleInput& m);
 // The names of every kind ("M4", "M2D"), for messages.
 std::vector<std::string> moduleNames();
+
+// A step's module kind, by the name it carries (Step::module); throws
+// std::logic_error for a step of no known module.
+const ModuleKind& moduleKind(const Step& step);
+// The tool path of a milling step and its move estimate, through its
+// module's door (ModuleKind::toolPath, estimateMoves).
+ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+// The job-wide step order (tools/step_order.h) with what each step's module
+// says of the order of its unit's steps.
+std::vector<int> orderSteps(const std::vector<Step>& steps);
 
 }  // namespace taiwa

@@ -1,43 +1,12 @@
-// CL creation: the tool path of a step by its kind, and time estimates.
+// CL creation: the move and time estimates every step's path shares.
 #include "paths/cl.h"
 
-#include "paths/generators.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace taiwa {
-
-ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
-{
-    if (!step.holes.empty()) return paths::holeCycles(step, tool, params);  // hole patterns (module HOLES)
-    if (step.region) {
-        switch (step.kind) {
-        case StepKind::Roughing:
-            if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
-            return paths::regionRoughing(step, tool, tech, params);
-        case StepKind::FloorFinishing: return paths::regionFloorFinishing(step, tool, tech, params);
-        case StepKind::WallFinishing: return paths::regionWallFinishing(step, tool, tech, params);
-        default: break;
-        }
-    }
-    switch (step.kind) {
-    case StepKind::PilotHole: return paths::pilotHole(step, tool, params);
-    case StepKind::Roughing:
-        if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
-        return paths::pocketRoughing(step, tool, tech, params);
-    case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
-    case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
-    case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
-    case StepKind::FaceMilling: return paths::faceMilling(step, tool, tech, params);
-    case StepKind::SideMilling: return paths::sideMilling(step, tool, tech, params);
-    case StepKind::AreaClearing: return paths::areaClearing(step, tool, tech, params);
-    default: break;  // turning steps (Step::turn) get their paths from core/turning/
-    }
-    throw std::logic_error("no milling tool path for step " + step.label());
-}
 
 namespace {
 
@@ -90,58 +59,17 @@ double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapid
     return minutesAt(cut, sf.feed) + minutesAt(plunge, sf.plungeFeed) + minutesAt(rapid, rapidRate);
 }
 
-double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+double estimatedLayers(const Step& step, const Tool& tool, const TechnologyData& tech)
 {
-    if (!step.holes.empty()) return static_cast<double>(step.holes.size()) + 2;  // a cycle a hole
     const double D = std::max(tool.diameter, 1e-3);
-    const double layers = std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
-    const double rings =
-        std::ceil((step.region ? step.inscribed : step.outline ? inscribedRadius(step.outline->corners) : 0.0) /
-                  std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1;
-    if (step.region) {  // a ring of a contour has about as many moves as the flattened region has points
-        double points = static_cast<double>(flatten(step.region->outer, 1e-4).size());
-        for (const auto& i : step.region->islands) points += static_cast<double>(flatten(i, 1e-4).size());
-        if (step.kind == StepKind::Roughing) return layers * rings * points;
-        if (step.kind == StepKind::FloorFinishing) return rings * points;
-        if (step.kind == StepKind::WallFinishing) {  // exact lines and arcs: about two moves a segment, a lead each loop
-            double segments = static_cast<double>(step.region->outer.segments.size());
-            for (const auto& i : step.region->islands) segments += static_cast<double>(i.segments.size()) + 6;
-            return (step.multiIncision ? layers : 1) * (2 * segments + 10);
-        }
-    }
-    if (step.kind == StepKind::SideMilling && step.sideContour) {  // each pass: about a move a segment, two a joint, leads
-        const double passes = static_cast<double>(std::max<std::size_t>(step.sideOffsets.size(), 1));
-        return (step.multiIncision ? layers : 1) * passes * (2 * static_cast<double>(step.sideContour->segments.size()) + 8);
-    }
-    constexpr double kMovesPerRing = 12;  // four sides, four corners, links
-    switch (step.kind) {
-    case StepKind::PilotHole: return 10;
-    case StepKind::Roughing: return layers * rings * kMovesPerRing;
-    case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
-    case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
-    case StepKind::FaceMilling: {  // passes across the face, four moves each
-        if (!step.outline) return 10;
-        const double a = step.passAngle * std::numbers::pi / 180.0;
-        double lo = 1e300, hi = -1e300;
-        for (const Point2 c : step.outline->corners) {
-            const double v = -std::sin(a) * c.x + std::cos(a) * c.y;
-            lo = std::min(lo, v), hi = std::max(hi, v);
-        }
-        return (std::ceil((hi - lo) / std::max(step.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
-    }
-    case StepKind::InclinedFaceFinishing: {
-        if (!step.face) return 10;
-        const double R = D / 2, h = std::clamp(step.scallop, 1e-6, R);
-        const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
-        const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
-        return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
-    }
-    case StepKind::AreaClearing:  // a ramp and the drawn passes a layer
-        return layers * (static_cast<double>(step.drawnPoints.size()) + 20);
-    default: break;  // turning steps (Step::turn) come with their moves
-    }
-    if (step.turn) return static_cast<double>(step.turn->path.moves.size());
-    return 10;
+    return std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
+}
+
+double estimatedRings(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    const double D = std::max(tool.diameter, 1e-3);
+    return std::ceil((step.region ? step.inscribed : step.outline ? inscribedRadius(step.outline->corners) : 0.0) /
+                     std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1;
 }
 
 }  // namespace taiwa

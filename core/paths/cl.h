@@ -1,5 +1,10 @@
-// CL creation (pipeline stage 4): the tool path of every step, computed from
-// the step's geometry and its tool. Offsets through Clipper; arcs stay arcs.
+// CL creation (pipeline stage 4): what every step's tool path shares — the
+// path parameters, move and time estimates. Each module's door makes its
+// steps' paths (ModuleKind::toolPath) with the generators of
+// paths/generators.h or its own. Offsets through Clipper; arcs stay arcs.
+// A path is the tool tip (flat and taper end mills: the centre of the flat
+// bottom; ball end mills: the lowest point of the ball); it starts and ends
+// at PathParameters::safeZ.
 #pragma once
 
 #include "model/step.h"
@@ -23,27 +28,18 @@ struct PathParameters {
     friend bool operator==(const PathParameters&, const PathParameters&) = default;
 };
 
-// The tool path of one step. Z layers of at most gamma x D for roughing.
-// The path is the tool tip (flat and taper end mills: the centre of the flat
-// bottom; ball end mills: the lowest point of the ball); it starts and ends
-// at params.safeZ. A ROUGHING step whose holeDiameter > 0 tells that a pilot
-// hole of that diameter was drilled at step.position: the tool plunges into
-// it when the hole is at least as wide as the tool and lies where the tool
-// centre may go; otherwise (and always without a hole) it ramps in.
-// Throws std::logic_error only for a step the checks should have refused
-// (no outline, a tool that does not fit) or for a layer it failed to clear.
-ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
-
 // Pocket layers are proved once per shape, tool, entry and step-over
 // (pocket.cpp: a repeated pocket gets the same answer moved to its place);
 // benchmarks forget what was proved to measure a first computation.
 void forgetProvedLayers();
 
-// About how many moves makeToolPath would make for the step, from its
-// geometry alone (layers x rings or passes), computed in microseconds: the
-// pipeline refuses a plan whose paths would not fit its move budget before
-// computing any of them.
-double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+// Move estimates the modules' doors share (ModuleKind::estimateMoves, from
+// a step's geometry alone, in microseconds): the Z layers of at most γ·D the
+// step is cut in (one more for the start), and the rings of the finer of its
+// roughing and finishing step-overs across its outline's or region's
+// inscribed radius.
+double estimatedLayers(const Step& step, const Tool& tool, const TechnologyData& tech);
+double estimatedRings(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 
 // Estimated time of a path: feed moves at their feed (plunge/ramp feed where
 // marked), rapids at `rapidRate` mm/min, plus `toolChangeSeconds` is NOT

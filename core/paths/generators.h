@@ -1,8 +1,9 @@
-// The tool-path generators of the step kinds, one source file each:
-// pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
+// The tool-path generators the pocket modules share (M4, M2D, CP; their
+// doors choose among them by step kind, modules/pocket_plan.cpp), one source
+// file each: pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
 // inclined_face.cpp, pilot_hole.cpp; steps of contour units (Step::region)
-// region_pocket.cpp and region_walls.cpp; face_milling.cpp, side_milling.cpp,
-// area_clearing.cpp. makeToolPath dispatches to them.
+// region_pocket.cpp and region_walls.cpp. A module with paths of its own
+// keeps them in its folder (FACE, SIDE, AREA, HOLES).
 #pragma once
 
 #include "model/step.h"
@@ -13,6 +14,11 @@
 
 namespace taiwa::paths {
 
+// Roughing in Z layers of at most γ·D. A step whose holeDiameter > 0 tells
+// that a pilot hole of that diameter was drilled at step.position: the tool
+// plunges into it when the hole is at least as wide as the tool and lies
+// where the tool centre may go; otherwise (and always without a hole) it
+// ramps in.
 ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
@@ -24,9 +30,5 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
 // F2) equal incisions of at most gamma x D down to it (wall_finishing.cpp).
 std::vector<double> incisionDepths(const Step& step, const Tool& tool, const TechnologyData& tech);
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p);
-ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p);  // holes.cpp: hole patterns
-ToolPath faceMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);   // face_milling.cpp
-ToolPath sideMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);   // side_milling.cpp
-ToolPath areaClearing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);  // area_clearing.cpp
 
 }  // namespace taiwa::paths

@@ -144,7 +144,9 @@ std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Po
     return local;
 }
 
-ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& depths, double stepOver,
+// `hole`: the diameter of the pilot hole drilled at step.position to enter
+// through (roughing), 0 for none.
+ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& depths, double stepOver, double hole,
                const PathParameters& p)
 {
     if (!step.outline) throw std::logic_error("pocket step without an outline");
@@ -154,7 +156,6 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
     if (maxOffset(outline) < R - 1e-9) throw std::logic_error("pocket narrower than the tool");
     if (!(stepOver > 0.0 && stepOver < 2 * R)) throw std::invalid_argument("step-over must lie between 0 and D");
 
-    const double hole = step.kind == StepKind::Roughing ? step.holeDiameter : 0.0;
     const Entry entry = chooseEntry(outline, R, hole, step.position);
     const auto offsets = ringOffsets(outline, R, stepOver);
 
@@ -180,12 +181,12 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
 ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     const auto depths = layerDepths(step.startDepth, step.cutDepth, tech.gamma * tool.diameter);
-    return clear(step, tool, depths, step.stepOver.value_or(tech.stepOver) * tool.diameter, p);
+    return clear(step, tool, depths, step.stepOver.value_or(tech.stepOver) * tool.diameter, step.holeDiameter, p);
 }
 
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p)
 {
-    return clear(step, tool, {step.cutDepth}, p.finishStepOver * tool.diameter, p);
+    return clear(step, tool, {step.cutDepth}, p.finishStepOver * tool.diameter, 0.0, p);
 }
 
 }  // namespace taiwa::paths

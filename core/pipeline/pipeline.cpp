@@ -11,7 +11,7 @@
 #include "machine/machine.h"
 #include "modules/registry.h"
 #include "tools/cutting.h"
-#include "tools/tool_choice.h"
+#include "tools/step_order.h"
 
 #include <fmt/format.h>
 

@@ -288,7 +288,7 @@ double barStickOut(const Plan& plan)
         for (const auto& e : part.deformed.edges) zMin = std::min({zMin, e.geometry.a.z, e.geometry.b.z});
     double blade = 0.0;
     for (const auto& s : plan.steps)
-        if (s.kind == StepKind::Parting && s.tool)
+        if (s.machiningType == MachiningType::Parting && s.tool)
             if (const Tool* t = plan.tool(s.tool->toolId)) blade = t->turning.width;
     return (plan.mmJob.bar ? plan.mmJob.bar->face : 0.0) - zMin + blade + 2.0;
 }

@@ -1,7 +1,8 @@
 // Job-wide step order: a topological order of the steps that keeps the
 // spindle on the same tool as long as any step ready to run uses it, and
-// otherwise follows the units' machining order; a faced top comes first.
-#include "tools/tool_choice.h"
+// otherwise follows the units' machining order; what each unit's module
+// says of its own steps' order is kept (tools/step_order.h).
+#include "tools/step_order.h"
 
 #include <algorithm>
 #include <functional>
@@ -12,40 +13,11 @@ namespace taiwa {
 
 namespace {
 
-// Rank of a step within its unit: the pilot hole, then roughing, then the
-// finishing steps (which depend on all roughing, not on each other, except
-// wall passes that follow their number); holes: centre drilling, drilling,
-// then tapping, reaming or boring.
-int rank(const Step& s)
-{
-    switch (s.kind) {
-    case StepKind::PilotHole: return 0;
-    case StepKind::Roughing: return 1;
-    // Hole patterns: centre drilling, drilling, then tapping, reaming, boring.
-    case StepKind::CentreDrilling: return 0;
-    case StepKind::Drilling: return 1;
-    default: return 2;
-    }
-}
-
-bool dependsOn(const Step& later, const Step& earlier)
-{
-    if (later.unit != earlier.unit) return false;
-    if (rank(earlier) < rank(later)) return true;
-    // Roughing layers in order; wall passes (semi-finish, middle, final) in
-    // order; face-milling layers, then the finishing pass, in order; side
-    // milling's roughing before its finishing pass.
-    return later.kind == earlier.kind &&
-           (later.kind == StepKind::Roughing || later.kind == StepKind::WallFinishing ||
-            later.kind == StepKind::FaceMilling || later.kind == StepKind::SideMilling) &&
-           earlier.number < later.number;
-}
-
 int toolOf(const Step& s) { return s.tool ? s.tool->toolId : 0; }
 
 }  // namespace
 
-std::vector<int> orderSteps(const std::vector<Step>& steps)
+std::vector<int> orderStepsBy(const std::vector<Step>& steps, const StepOrderRules& rules)
 {
     const int n = static_cast<int>(steps.size());
     const auto at = [&](int i) -> const Step& { return steps[static_cast<std::size_t>(i)]; };
@@ -60,21 +32,21 @@ std::vector<int> orderSteps(const std::vector<Step>& steps)
     for (const auto& members : byUnit)
         for (const int a : members)
             for (const int b : members)
-                if (dependsOn(at(b), at(a))) {
+                if (a != b && rules.waitsFor(at(b), at(a))) {
                     next[static_cast<std::size_t>(a)].push_back(b);
                     ++waiting[static_cast<std::size_t>(b)];
                 }
-    // The top is faced before anything else is cut: every other unit's steps
-    // wait for the last face-milling step of each facing unit (module FACE;
-    // the others' depths are measured from Z0 either way).
+    // A unit cut before the others (the top faced first, module FACE; the
+    // others' depths are measured from Z0 either way): every other unit's
+    // steps wait for its last step, those of units cut first excepted.
     for (const auto& members : byUnit) {
-        int lastFace = -1;
+        int last = -1;
         for (const int a : members)
-            if (at(a).kind == StepKind::FaceMilling && (lastFace < 0 || at(a).number > at(lastFace).number)) lastFace = a;
-        if (lastFace < 0) continue;
+            if (rules.cutsFirst(at(a)) && (last < 0 || at(a).number > at(last).number)) last = a;
+        if (last < 0) continue;
         for (int b = 0; b < n; ++b)
-            if (at(b).unit != at(lastFace).unit && at(b).kind != StepKind::FaceMilling) {
-                next[static_cast<std::size_t>(lastFace)].push_back(b);
+            if (at(b).unit != at(last).unit && !rules.cutsFirst(at(b))) {
+                next[static_cast<std::size_t>(last)].push_back(b);
                 ++waiting[static_cast<std::size_t>(b)];
             }
     }

@@ -1,6 +1,6 @@
 // Tool life accounting along the job-wide order: where a tool's remaining
 // life runs out, a note for the sheet saying before which step to change it.
-#include "tools/tool_choice.h"
+#include "tools/step_order.h"
 
 #include "model/translate_noop.h"
 

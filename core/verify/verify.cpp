@@ -132,7 +132,10 @@ public:
             const tools::HolderShape h = tools::holderShape(*tool);
             d.holderZ = std::max(tool->stickout, d.flute);
             d.holderR = h.noseDiameter / 2.0;
-            const bool finishing = s.kind == StepKind::WallFinishing || s.kind == StepKind::InclinedFaceFinishing;
+            // The wall passes (final, semi-finish, a taper's middle) and an inclined face's finishing.
+            const MachiningType m = s.machiningType;
+            const bool finishing = m == MachiningType::WallFinishing || m == MachiningType::WallSemiFinishing ||
+                                   m == MachiningType::WallMiddlePass || m == MachiningType::InclinedFaceFinishing;
             if (s.unit >= 0 && s.unit < static_cast<int>(units_.size()) && finishing) {
                 UnitData& u = units_[s.unit];
                 u.lastFinish = static_cast<int>(k);
@@ -337,7 +340,7 @@ private:
         const StepData& d = steps_[static_cast<std::size_t>(k)];
         const float* h = field_.data();
         const double tolerance = kGougeTolerance + zStep_;
-        if (s.kind == StepKind::PilotHole) {
+        if (s.machiningType == MachiningType::PilotHole) {
             const Stock& st = field_.stock();
             const int i = static_cast<int>(std::floor((s.position.x - st.x) / res_));
             const int j = static_cast<int>(std::floor((s.position.y - st.y) / res_));
@@ -348,7 +351,10 @@ private:
                         h[field_.indexOf(i, j)] - allowed + tolerance, cellArea());
             return;
         }
-        if (s.kind != StepKind::Roughing && s.kind != StepKind::FloorFinishing && s.kind != StepKind::FaceMilling) return;
+        const MachiningType m = s.machiningType;
+        if (m != MachiningType::Roughing && m != MachiningType::FloorFinishing && m != MachiningType::FaceMilling &&
+            m != MachiningType::FaceFinishing)
+            return;
         if (s.unit < 0 || s.unit >= static_cast<int>(units_.size()) || !units_[s.unit].cavity) return;
         const Cavity& cav = *units_[s.unit].cavity;
         const double slack = -(s.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + d.cornerRadius);

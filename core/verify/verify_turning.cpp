@@ -88,12 +88,13 @@ public:
             const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
             if (!s.turn || !t || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) continue;
             UnitData& u = units_[static_cast<std::size_t>(s.unit)];
-            if (s.kind == StepKind::TurnFinishing) {
+            if (s.machiningType == MachiningType::TurnFinishing) {
                 u.lastFinish = static_cast<int>(k);
                 u.allowance = std::min({u.allowance, s.turn->allowanceX, s.turn->allowanceZ});
                 u.nose = std::max(u.nose, t->cornerRadius);
             }
-            if (u.lastFinish >= 0 && (s.kind == StepKind::TurnFinishing || s.kind == StepKind::Grooving))
+            if (u.lastFinish >= 0 &&
+                (s.machiningType == MachiningType::TurnFinishing || s.machiningType == MachiningType::Grooving))
                 u.lastCheck = static_cast<int>(k);
         }
         // What the finishing bridges, and a nose radius about it: the cusps
@@ -346,7 +347,7 @@ private:
     void restAfterRoughing(int k, const Tool& t)
     {
         const Step& s = plan_.steps[static_cast<std::size_t>(k)];
-        if (s.kind != StepKind::TurnRoughing || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) return;
+        if (s.machiningType != MachiningType::TurnRoughing || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) return;
         const UnitData& u = units_[static_cast<std::size_t>(s.unit)];
         if (!u.outline) return;
         const TurnStep& ts = *s.turn;

@@ -14,6 +14,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "modules/named_region.h"
+#include "paths/cl.h"
 
 #include <optional>
 #include <string>
@@ -60,5 +61,8 @@ check::UnitReport checkAreaClearing(const AreaClearing& mm, int unitNo, const ch
 // unit's diameter (a pin may name it). Problems become diagnostics.
 std::vector<Step> planAreaClearing(const AreaClearing& mm, const TechnologyData& tech, const std::vector<Tool>& library,
                                    const std::string& material, int unit, Diagnostics& out);
+
+// The step's tool path (area_paths.cpp): the drawn passes layer by layer.
+ToolPath areaClearingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 
 }  // namespace taiwa

@@ -34,6 +34,16 @@ public:
     const char* drawing() const override { return ":/modules/area.svg"; }
     const char* outlineField() const override { return "outline"; }
     std::vector<std::string> stepKeys() const override { return {"area"}; }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                      const PathParameters& params) const override
+    {
+        return areaClearingPath(step, tool, tech, params);
+    }
+    // A ramp and the drawn passes a layer.
+    double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
+    {
+        return estimatedLayers(step, tool, tech) * (static_cast<double>(step.drawnPoints.size()) + 20);
+    }
 
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
     {

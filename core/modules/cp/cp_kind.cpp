@@ -27,7 +27,7 @@ const std::vector<std::string> kKeys{
 
 constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
 
-class CpKind final : public ModuleKindOf<ContourPocket> {
+class CpKind final : public PocketKindOf<ContourPocket> {
 public:
     const char* paletteText() const override
     {

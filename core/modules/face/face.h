@@ -13,6 +13,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "paths/cl.h"
 
 #include <optional>
 #include <string>
@@ -71,6 +72,9 @@ struct ToolPick {
 };
 ToolPick chooseTool(const FaceUnit& mm, const TechnologyData& tech, const std::vector<Tool>& library,
                     const std::string& material, LengthUnit shown);
+
+// The step's tool path (face_paths.cpp): parallel passes across the face at the step's angle.
+ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 
 }  // namespace face
 

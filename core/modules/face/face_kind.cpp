@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace taiwa {
 
@@ -38,6 +39,26 @@ public:
     const char* drawing() const override { return ":/modules/face.svg"; }
     const char* outlineField() const override { return "depth"; }
     std::vector<std::string> stepKeys() const override { return {face::kStepKey}; }
+    // The top is faced before anything else is cut.
+    bool cutsBeforeOtherUnits() const override { return true; }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                      const PathParameters& params) const override
+    {
+        return face::millingPath(step, tool, tech, params);
+    }
+    // Passes across the face, four moves each.
+    double estimateMoves(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters&) const override
+    {
+        if (!step.outline) return 10;
+        const double a = step.passAngle * std::numbers::pi / 180.0;
+        double lo = 1e300, hi = -1e300;
+        for (const Point2 c : step.outline->corners) {
+            const double v = -std::sin(a) * c.x + std::cos(a) * c.y;
+            lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        const double D = std::max(tool.diameter, 1e-3);
+        return (std::ceil((hi - lo) / std::max(step.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
+    }
 
     // The face is the whole stock top (grown by the margin, beyond the
     // stock where there is nothing to cut): the finished surface lies at

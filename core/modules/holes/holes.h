@@ -13,6 +13,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/tool.h"
+#include "paths/cl.h"
 
 #include <optional>
 #include <string>
@@ -107,6 +108,9 @@ std::vector<Point2> topPolygon(const HolePattern& mm);
 
 // The step keys of a hole kind, in machining order.
 std::vector<std::string> stepKeys(const std::string& hole);
+
+// The step's tool path (holes_paths.cpp): a canned cycle at every hole.
+ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p);
 
 }  // namespace holes
 

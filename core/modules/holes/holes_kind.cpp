@@ -39,6 +39,23 @@ public:
     const char* drawing() const override { return ":/modules/holes.svg"; }
     const char* outlineField() const override { return "pattern"; }
     std::vector<std::string> stepKeys() const override { return {"centre-drill", "drill", "tap", "ream", "bore"}; }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& params) const override
+    {
+        return holes::cyclesPath(step, tool, params);
+    }
+    // A cycle a hole.
+    double estimateMoves(const Step& step, const Tool&, const TechnologyData&, const PathParameters&) const override
+    {
+        return step.holes.empty() ? 10 : static_cast<double>(step.holes.size()) + 2;
+    }
+    // Centre drilling, then drilling, then tapping, reaming or boring.
+    bool stepWaitsFor(const Step& later, const Step& earlier) const override
+    {
+        const auto rank = [](const Step& s) {
+            return s.kind == StepKind::CentreDrilling ? 0 : s.kind == StepKind::Drilling ? 1 : 2;
+        };
+        return rank(earlier) < rank(later);
+    }
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override { return holes::topPolygon(mm.as<HolePattern>()); }
 

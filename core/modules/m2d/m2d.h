@@ -9,7 +9,7 @@
 #include "model/module.h"
 #include "model/step.h"
 #include "model/technology.h"
-#include "tools/tool_choice.h"
+#include "modules/pocket_tools.h"
 
 #include <optional>
 #include <string>

@@ -34,7 +34,7 @@ ToolPick chooseM2DRoughingTool(const M2DPocket& p, const TechnologyData& tech, c
 
 namespace {
 
-class M2DKind final : public ModuleKindOf<M2DPocket> {
+class M2DKind final : public PocketKindOf<M2DPocket> {
 public:
     const char* paletteText() const override
     {

@@ -19,7 +19,7 @@ namespace {
 const std::vector<std::string> kKeys{"module", "name", "corners", "cornerRadius", "depth",
                                      "taper",  "U",    "F",       "H",            "stepOver", "tools", "cutting"};
 
-class M4Kind final : public ModuleKindOf<M4Pocket> {
+class M4Kind final : public PocketKindOf<M4Pocket> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
     const char* drawing() const override { return ":/modules/m4.svg"; }

@@ -15,6 +15,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "paths/cl.h"
 
 #include <cstdint>
 #include <optional>
@@ -111,6 +112,9 @@ private:
     std::vector<std::vector<std::uint32_t>> bands_;
     double bandsY0_ = 0.0, bandHeight_ = 1.0;
 };
+
+// The step's tool path (side_paths.cpp): the contour's offsets, layer by layer and pass by pass.
+ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 
 }  // namespace side
 

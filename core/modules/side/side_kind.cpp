@@ -35,6 +35,19 @@ public:
     const char* outlineField() const override { return "contour"; }
     // One end mill for roughing and finishing: pins and speeds under "side".
     std::vector<std::string> stepKeys() const override { return {"side"}; }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                      const PathParameters& params) const override
+    {
+        return side::millingPath(step, tool, tech, params);
+    }
+    // Each pass: about a move a segment, two a joint, and the leads.
+    double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
+    {
+        if (!step.sideContour) return 10;
+        const double passes = static_cast<double>(std::max<std::size_t>(step.sideOffsets.size(), 1));
+        return (step.multiIncision ? estimatedLayers(step, tool, tech) : 1) * passes *
+               (2 * static_cast<double>(step.sideContour->segments.size()) + 8);
+    }
 
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
     {

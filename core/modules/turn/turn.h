@@ -2,7 +2,7 @@
 // grinding-allowance table (spec "Turning", seed 001). Its input as the job
 // keeps it is the profile table of core/turning/profile.h; the rest is
 // behind its door (turn_kind.cpp): the deformed profile is the plan's
-// result (model/turned.h), the turning steps come from core/turning/turn_plan.h.
+// result (model/turned.h), the turning steps come from core/modules/turn/turn_plan.h.
 #pragma once
 
 #include "model/module.h"

@@ -1,7 +1,7 @@
 // Module TURN behind its door (modules/module_kind.h): the job file's keys,
 // the input checks (the profile table, the allowance table, the bar, the
 // pinned tools and the steps turned off), the deformed profile handed to the
-// plan, and the turning steps (core/turning/turn_plan.h).
+// plan, and the turning steps (core/modules/turn/turn_plan.h).
 #include "model/translate_noop.h"
 #include "modules/module_kind.h"
 #include "modules/turn/turn.h"
@@ -11,7 +11,7 @@
 #include "io/json_write.h"
 #include "tools/turning_tools.h"
 #include "turning/allowance.h"
-#include "turning/turn_plan.h"
+#include "modules/turn/turn_plan.h"
 #include "turning/profile_resolve.h"
 #include "model/turned_geometry.h"
 
@@ -62,6 +62,11 @@ public:
     const char* drawing() const override { return ":/modules/turn.svg"; }
     MachineKind machineKind() const override { return MachineKind::Lathe; }
     std::vector<std::string> stepKeys() const override { return turning::turnStepKeys(); }
+    // Turning steps come with their paths (Step::turn).
+    double estimateMoves(const Step& step, const Tool&, const TechnologyData&, const PathParameters&) const override
+    {
+        return step.turn ? static_cast<double>(step.turn->path.moves.size()) : 10;
+    }
     // Drilling runs at a fixed rpm (G97); every other turning step at a surface speed.
     bool surfaceSpeedStep(const std::string& key) const override { return key != "drill" && key != "centre-drill"; }
 

@@ -3,7 +3,7 @@
 // pass (back and forth on it, paths/entry.h) and then follows the passes in
 // the order they were drawn, straight from each point to the next; between
 // layers it lifts and returns to the start above the floor it cut.
-#include "paths/generators.h"
+#include "modules/area/area.h"
 
 #include "paths/entry.h"
 #include "paths/path_builder.h"
@@ -11,9 +11,11 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace taiwa::paths {
+namespace taiwa {
 
-ToolPath areaClearing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
+using namespace paths;  // the shared path builders
+
+ToolPath areaClearingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     const auto& points = step.drawnPoints;
     if (points.size() < 2) throw std::logic_error("an area clearing step without a pass");
@@ -41,4 +43,4 @@ ToolPath areaClearing(const Step& step, const Tool& tool, const TechnologyData& 
     return b.take();
 }
 
-}  // namespace taiwa::paths
+}  // namespace taiwa

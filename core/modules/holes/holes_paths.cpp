@@ -2,15 +2,17 @@
 // in the step's order, from the R plane `clearance` above the top down to
 // the step's depth; drilling pecks when the hole is deep for the drill (as
 // the pilot hole does), tapping carries the thread's pitch.
-#include "paths/generators.h"
+#include "modules/holes/holes.h"
 
 #include "paths/path_builder.h"
 
 #include <stdexcept>
 
-namespace taiwa::paths {
+namespace taiwa::holes {
 
-ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p)
+using namespace paths;  // the shared path builders
+
+ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p)
 {
     if (step.holes.empty()) throw std::logic_error("hole step " + step.label() + " has no holes");
     // Each cycle returns to the level it started from (safe Z, G98): the
@@ -32,4 +34,4 @@ ToolPath holeCycles(const Step& step, const Tool& tool, const PathParameters& p)
     return b.take();
 }
 
-}  // namespace taiwa::paths
+}  // namespace taiwa::holes

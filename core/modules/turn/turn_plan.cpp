@@ -4,7 +4,7 @@
 // file holds what the steps share (the part's loop, pinned tools, cutting
 // data, the inserts' reach, the spindle limit) and the door; each kind of
 // step is planned in a file of its own (turn_planner.h lists them).
-#include "turning/turn_planner.h"
+#include "modules/turn/turn_planner.h"
 
 namespace taiwa::turning {
 

@@ -1,11 +1,11 @@
-// Tool choice (pipeline stage 3, second half): the tool of every step with
-// the reason recorded, tool life accounting, and the job-wide step order that
-// saves tool changes without breaking dependencies.
+// Tool choice for the pocket modules' steps (M4, M2D, CP): the tool of every
+// step of one unit with the reason in words, the roughing end mill that
+// enters the pilot hole or ramps in, the pilot drill last. Called from
+// pocket_plan.cpp and the modules' doors.
 #pragma once
 
 #include "model/job.h"
 #include "model/step.h"
-#include "model/technology.h"
 #include "model/tool.h"
 #include "tools/tool_fit.h"
 
@@ -35,21 +35,5 @@ ToolPick chooseRoughingTool(const tools::Fit& f, const std::vector<Tool>& librar
 // problems (empty when every step got a tool).
 std::vector<std::string> chooseTools(std::vector<Step>& unitSteps, const ToolPins& pins,
                                      const std::vector<Tool>& library, const std::string& material);
-
-// Job-wide order: a permutation of indices into `steps` that groups steps by
-// tool to save tool changes, never putting a pilot hole after the roughing
-// that plunges into it, nor a unit's finishing before its roughing, nor any
-// other unit's step before the face milling of the stock top.
-std::vector<int> orderSteps(const std::vector<Step>& steps);
-
-// Tool life: walks the ordered steps adding each step's minutes to its tool's
-// used life; where a step would exceed the remaining life, returns a note
-// ("T5 reaches its life in step ...: change it before ...").
-struct ToolLifeNote {
-    int stepIndex = 0;  // index into the ordered steps
-    int toolId = 0;
-    std::string message;
-};
-std::vector<ToolLifeNote> planToolLife(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library);
 
 }  // namespace taiwa

@@ -1,5 +1,5 @@
 // Turning steps: facing the bar, centre drilling and drilling a bore (turn_planner.h).
-#include "turning/turn_planner.h"
+#include "modules/turn/turn_planner.h"
 #include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {

@@ -5,7 +5,7 @@
 // from its surface speed at the thread's diameter, and the passes of the
 // control's G76 as LinuxCNC makes them (interp_convert.cc,
 // convert_threading_cycle), so that the path is what the tape runs.
-#include "turning/turn_planner.h"
+#include "modules/turn/turn_planner.h"
 #include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {

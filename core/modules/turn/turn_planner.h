@@ -7,7 +7,7 @@
 // is turn_plan.h.
 #pragma once
 
-#include "turning/turn_plan.h"
+#include "modules/turn/turn_plan.h"
 
 #include "check/messages.h"
 #include "model/turned_geometry.h"

@@ -1,5 +1,5 @@
 // Turning steps: grooves and parting off (turn_planner.h).
-#include "turning/turn_planner.h"
+#include "modules/turn/turn_planner.h"
 #include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {

@@ -1,5 +1,6 @@
-// Tool choice for every step of a unit, with the reason in words.
-#include "tools/tool_choice.h"
+// Tool choice for every step of a pocket unit, with the reason in words
+// (modules/pocket_tools.h).
+#include "modules/pocket_tools.h"
 
 #include "model/codes.h"
 #include "tools/tool_fit.h"

@@ -7,7 +7,7 @@
 // cannot plunge). Zigzag: the next pass is reached at depth beside the face;
 // one way: the tool lifts above the top and comes back by rapid, every pass
 // climb. docs/face-milling.md.
-#include "paths/generators.h"
+#include "modules/face/face.h"
 
 #include "paths/path_builder.h"
 
@@ -16,7 +16,9 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace taiwa::paths {
+namespace taiwa::face {
+
+using namespace paths;  // the shared path builders
 
 namespace {
 
@@ -64,7 +66,7 @@ std::vector<double> passPositions(double vMin, double vMax, double flatRadius, d
 
 }  // namespace
 
-ToolPath faceMilling(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& p)
+ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& p)
 {
     if (!step.outline) throw std::logic_error("face-milling step without a face");
     const double D = tool.diameter, R = tool.radius();
@@ -137,4 +139,4 @@ ToolPath faceMilling(const Step& step, const Tool& tool, const TechnologyData&, 
     return b.take();
 }
 
-}  // namespace taiwa::paths
+}  // namespace taiwa::face

@@ -1,5 +1,5 @@
 // Turning steps: roughing, as passes and as the control's cycle (turn_planner.h).
-#include "turning/turn_planner.h"
+#include "modules/turn/turn_planner.h"
 #include "model/translate_noop.h"
 
 namespace taiwa::turning::planner {

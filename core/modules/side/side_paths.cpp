@@ -12,16 +12,19 @@
 //    start lies a pass's spacing beyond the outermost pass (W + R +
 //    clearance out for the first roughing pass), made smaller when the
 //    contour bends back towards it.
-#include "paths/generators.h"
+#include "modules/side/side.h"
 
 #include "paths/contour_offset.h"
+#include "paths/generators.h"
 #include "paths/path_builder.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace taiwa::paths {
+namespace taiwa::side {
+
+using namespace paths;  // the shared path builders
 
 namespace {
 
@@ -64,7 +67,7 @@ Contour fromMiddle(const Contour& loop)
 
 }  // namespace
 
-ToolPath sideMilling(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
+ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     if (!step.sideContour || step.sideContour->empty()) throw std::logic_error("side milling step without a contour");
     if (step.sideOffsets.empty()) throw std::logic_error("side milling step without passes");
@@ -146,4 +149,4 @@ ToolPath sideMilling(const Step& step, const Tool& tool, const TechnologyData& t
     return b->take();
 }
 
-}  // namespace taiwa::paths
+}  // namespace taiwa::side
