@@ -257,9 +257,14 @@ int exportJob(const Options& o, int& argc, char** argv)
     if (auto why = workOffsetProblem(dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
     // A tape with a gouge, a collision or beyond the travel is not written
     // unless the operator forces it; then its sheet says why in red.
+    // The tape is posted once: for the findings' places on it, when there
+    // are any, and then written as it is.
+    const std::string stem = std::filesystem::path(o.job).stem().string();
+    const int programNumber = ExportOptions{}.programNumber;
+    std::optional<PostedProgram> tape;
     verify::Report checked;
     try {
-        checked = verified(l.plan, o, dialect);
+        checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), tape);
     } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
         std::cerr << "taiwa: export: " << e.what() << '\n';
         return kInputErrors;
@@ -280,10 +285,12 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.dialect = dialect;
     e.units = o.units;
     e.jobFile = fileName(o.job);
+    e.programNumber = programNumber;
     e.verificationFaults = faults;
+    e.posted = tape ? &*tape : nullptr;
     if (o.pictures) stepPicturesFor(l.plan, e);
     if (o.pictures) setupPictureFor(l.plan, e);
-    const auto written = exportPlan(l.plan, o.out, std::filesystem::path(o.job).stem().string(), e);
+    const auto written = exportPlan(l.plan, o.out, stem, e);
     if (!written) {
         std::cerr << "taiwa: export: " << written.error() << '\n';
         return kInternal;

@@ -19,15 +19,16 @@
 namespace taiwa::app {
 
 // The plan verified, its findings placed on the tape of `dialect`.
-verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect)
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape)
 {
     verify::Options v;
     v.resolution = o.resolution.value_or(verify::defaultResolution(plan));
     verify::Report report = verify::verifyPlan(plan, v);
     if (!report.findings.empty()) {
         try {
-            verify::placeOnTape(report, postProcess(plan.steps, plan.tools, postOptions(plan, dialect)));
+            verify::placeOnTape(report, tape.emplace(postProcess(plan.steps, plan.tools, post)));
         } catch (const std::invalid_argument&) {
+            tape.reset();
             // A dialect that cannot post this job: the findings keep their moves.
         }
     }
@@ -49,7 +50,8 @@ std::string summary(const verify::Report& r)
 
 bool printVerification(const Plan& plan, const Options& o, const std::string& name, const std::string& dialect)
 {
-    const verify::Report r = verified(plan, o, dialect);
+    std::optional<PostedProgram> tape;
+    const verify::Report r = verified(plan, o, postOptions(plan, dialect), tape);
     if (o.json) {
         nlohmann::ordered_json j;
         j["job"] = name;

@@ -7,15 +7,18 @@
 #include "app/options.h"
 #include "export/export.h"
 #include "model/plan.h"
+#include "post/post.h"
 #include "verify/verify.h"
 
+#include <optional>
 #include <string>
 
 namespace taiwa::app {
 
 // The plan verified at the options' resolution, its findings placed on
-// the tape of `dialect`.
-verify::Report verified(const Plan& plan, const Options& o, const std::string& dialect);
+// the tape posted with `post`; that tape kept in `tape` (posted only when
+// there are findings to place, and when the dialect can post the job).
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape);
 
 // Prints the report of the plan of job file `name` on stdout, in words or
 // (--json) as one document; whether it found anything fatal.

@@ -109,7 +109,7 @@ private slots:
         QVERIFY(s.tool && s.path);
         QCOMPARE(s.tool->toolId, 27);  // the library's 10 mm flat end mill
         QCOMPARE(plan.tool(27)->diameter, 10.0);
-        QCOMPARE(s.drawnPoints.size(), std::size_t{14});
+        QCOMPARE(s.payload.as<DrawnPoints>().points.size(), std::size_t{14});
         QCOMPARE(s.cutDepth, 6.0);
     }
 
@@ -139,7 +139,7 @@ private slots:
                 if (m.kind == MoveKind::Feed && m.feed == FeedKind::Cut && std::abs(m.end.z - z) < 1e-9)
                     at.push_back({m.end.x, m.end.y});
             // The drawn points appear in order as the ends of the last moves.
-            const auto& pts = s.drawnPoints;
+            const auto& pts = s.payload.as<DrawnPoints>().points;
             QVERIFY(at.size() >= pts.size() - 1);
             const std::vector<Point2> tail(at.end() - static_cast<long>(pts.size() - 1), at.end());
             for (std::size_t i = 1; i < pts.size(); ++i)
@@ -165,7 +165,7 @@ private slots:
         for (const Move& m : s.path->moves) {
             if (m.kind == MoveKind::Rapid && m.end.z < 0.0) {
                 QVERIFY(std::abs(m.end.x - from.x) < 1e-9 && std::abs(m.end.y - from.y) < 1e-9);
-                QVERIFY(distance({m.end.x, m.end.y}, s.drawnPoints.front()) < 1e-9);
+                QVERIFY(distance({m.end.x, m.end.y}, s.payload.as<DrawnPoints>().points.front()) < 1e-9);
                 QVERIFY2(m.end.z >= cut + 1.0 - 1e-9, "a rapid into material");
             }
             if (m.kind != MoveKind::Rapid) cut = std::min(cut, m.end.z);
@@ -179,7 +179,7 @@ private slots:
         }
         // The strips, sampled across: all reached at the depth.
         int checked = 0;
-        const auto& pts = s.drawnPoints;
+        const auto& pts = s.payload.as<DrawnPoints>().points;
         for (std::size_t k = 1; k < pts.size(); ++k) {
             const Point2 a = pts[k - 1], b = pts[k], u = (1.0 / distance(a, b)) * (b - a), n{-u.y, u.x};
             for (double t = 0.0; t <= distance(a, b); t += 0.5)
@@ -207,12 +207,12 @@ private slots:
         const Step& s = plan.steps[0];
         const Region region = normalised(*s.region);
         const RegionDistance inside(region);
-        const paths::Unswept u = paths::unsweptArea(region, s.drawnPoints, 5.0);
+        const paths::Unswept u = paths::unsweptArea(region, s.payload.as<DrawnPoints>().points, 5.0);
         double cells = 0.0, largestSide = 0.0;
         constexpr double h = 0.1;
         for (double x = 10 + h / 2; x < 110; x += h)
             for (double y = 10 + h / 2; y < 70; y += h)
-                if (inside({x, y}) < 0.0 && polylineDistance(s.drawnPoints, {x, y}) > 5.0) {
+                if (inside({x, y}) < 0.0 && polylineDistance(s.payload.as<DrawnPoints>().points, {x, y}) > 5.0) {
                     cells += h * h;
                     if (x > 62 && y > 29 && y < 51) largestSide += h * h;
                 }
@@ -225,7 +225,7 @@ private slots:
                  d->message.c_str());
         // More passes, past the boss on its right and along the gap under
         // the top row, sweep most of what was left.
-        std::vector<Point2> more = s.drawnPoints;
+        std::vector<Point2> more = s.payload.as<DrawnPoints>().points;
         for (const Point2 p : {Point2{15, 65}, Point2{15, 60}, Point2{105, 60}, Point2{105, 51}, Point2{98, 51},
                                Point2{98, 29}, Point2{105, 29}, Point2{105, 40}, Point2{95, 40}})
             more.push_back(p);

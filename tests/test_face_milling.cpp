@@ -105,8 +105,8 @@ private slots:
         QCOMPARE(finish.floorAllowance, 0.0);
         for (const Step& s : p.steps) {
             QCOMPARE(s.tool->toolId, 60);  // the library's one face mill
-            QVERIFY(s.zigzag);
-            QCOMPARE(s.passAngle, 0.0);
+            QVERIFY(s.payload.as<FacePasses>().zigzag);
+            QCOMPARE(s.payload.as<FacePasses>().angle, 0.0);
             QCOMPARE(s.stepOver.value(), 0.75);
             QVERIFY(s.outline);
             const auto& c = s.outline->corners;
@@ -133,7 +133,7 @@ private slots:
                      qPrintable(QString("layer %1: %2 to %3").arg(k + 1).arg(s.startDepth).arg(s.cutDepth)));
             QVERIFY(std::abs(s.floorAllowance - (14.0 - cuts[k])) < 1e-12);
             QCOMPARE(s.machiningType, k == 3 ? MachiningType::FaceFinishing : MachiningType::FaceMilling);
-            QVERIFY(!s.zigzag);  // one way unless asked
+            QVERIFY(!s.payload.as<FacePasses>().zigzag);  // one way unless asked
             from = s.cutDepth;
         }
         // A pinned 20 mm end mill cuts γ·D = 10 a layer (its flutes 50): 13.5 in two of 6.75.

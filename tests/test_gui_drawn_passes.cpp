@@ -8,6 +8,7 @@
 // the corner revision of a chamfer (every chamfer highlighted, one picked,
 // its length typed) as one undoable edit of that number only. With
 // TAIWA_SCREENSHOTS_DIR set it writes docs/screenshots/station-drawn-passes.png.
+#include "modules/area/area.h"
 #include "modules/registry.h"
 #include "support/gui_fields.h"
 #include "support/station_fixture.h"
@@ -114,7 +115,7 @@ private slots:
         settle(w);
         const Plan& plan = *w.planRunner()->fullPlan();
         QVERIFY(plan.ok());
-        QCOMPARE(plan.steps[0].drawnPoints, drawnPoints(w));
+        QCOMPARE(plan.steps[0].payload.as<DrawnPoints>().points, drawnPoints(w));
 
         // The view: the strips white where the passes run, the paint left
         // elsewhere in the area, the rest outlined as unswept.

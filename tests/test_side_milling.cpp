@@ -235,19 +235,19 @@ private slots:
         QCOMPARE(finish.machiningType, MachiningType::SideFinishing);
         QCOMPARE(rough.tool->toolId, 30);  // Ø20: its radius 10 fits the ROUND 10 on the tool's side
         QCOMPARE(finish.tool->toolId, 30);
-        QCOMPARE(rough.sideOffsets.size(), std::size_t{2});
-        QVERIFY(std::abs(rough.sideOffsets[0] - 7.15) < 1e-9 && std::abs(rough.sideOffsets[1] - 0.3) < 1e-9);
-        QCOMPARE(finish.sideOffsets, std::vector<double>{0.0});
-        QVERIFY(rough.toolOnLeft);  // climb
-        QVERIFY(near(rough.sideContour->start(), {-15, 72}));  // run as drawn: tool left of K1, climb
+        QCOMPARE(rough.payload.as<SidePasses>().offsets.size(), std::size_t{2});
+        QVERIFY(std::abs(rough.payload.as<SidePasses>().offsets[0] - 7.15) < 1e-9 && std::abs(rough.payload.as<SidePasses>().offsets[1] - 0.3) < 1e-9);
+        QCOMPARE(finish.payload.as<SidePasses>().offsets, std::vector<double>{0.0});
+        QVERIFY(rough.payload.as<SidePasses>().toolOnLeft);  // climb
+        QVERIFY(near(rough.payload.as<SidePasses>().contour.start(), {-15, 72}));  // run as drawn: tool left of K1, climb
         QVERIFY(!finish.multiIncision);
         QCOMPARE(rough.cutDepth, 12.0);
 
         const Plan boss = planJob(sampleJob("side-boss.taiwa"), TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
         QVERIFY2(boss.ok(), messages(boss.diagnostics).c_str());
         QCOMPARE(boss.steps.size(), std::size_t{2});
-        QVERIFY(!boss.steps[0].toolOnLeft);                      // conventional: the tool on the right of its travel
-        QVERIFY(signedArea(*boss.steps[0].sideContour) > 0);     // round the boss counter-clockwise
+        QVERIFY(!boss.steps[0].payload.as<SidePasses>().toolOnLeft);  // conventional: the tool on the right of its travel
+        QVERIFY(signedArea(boss.steps[0].payload.as<SidePasses>().contour) > 0);  // round the boss counter-clockwise
         QCOMPARE(boss.steps[0].tool->toolId, 31);                // Ø25: nothing limits it outside the boss
         QVERIFY(boss.steps[1].multiIncision);                    // F2
     }

@@ -5,7 +5,6 @@
 #include "ui/core_texts.h"
 #include "ui/number_text.h"
 
-#include "tools/cutting.h"
 
 #include <QHeaderView>
 
@@ -34,9 +33,7 @@ ShownCutting shownCutting(const Plan& plan, const Step& s)
         c.feed = tc.feedPerRev * toJob;
         return c;
     }
-    const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-    if (!t) return c;
-    if (const auto sf = stepSpeedsFeeds(s, *t, plan.mmJob.material)) {
+    if (const auto& sf = s.speeds) {
         c.speed = sf->rpm;
         c.feed = sf->feed * toJob;
     }

@@ -4,6 +4,8 @@
 
 #include "export/sheet_pdf.h"
 #include "io/job_io.h"
+#include "io/json_write.h"
+#include "modules/registry.h"
 #include "model/translate_noop.h"
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
@@ -23,10 +25,9 @@ namespace taiwa {
 
 namespace {
 
-// Lengths in the file's unit, rounded to 1 nm (no 15.299999999999997).
-double out(double mm, LengthUnit u) { return std::round(fromMm(mm, u) * 1e6) / 1e6; }
-
-nlohmann::ordered_json point(Point2 p, LengthUnit u) { return nlohmann::ordered_json::array({out(p.x, u), out(p.y, u)}); }
+// Lengths in the file's unit, rounded to 1 nm (io/json_write.h).
+double out(double mm, LengthUnit u) { return io::stepLength(mm, u); }
+nlohmann::ordered_json point(Point2 p, LengthUnit u) { return io::stepPoint(p, u); }
 
 nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
 {
@@ -53,12 +54,7 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
     if (s.machiningType == MachiningType::PilotHole) {
         j["position"] = point(s.position, u);
     }
-    if (!s.holes.empty()) {  // hole patterns: every hole the step's cycle runs at
-        j["holeDiameter"] = out(s.holeDiameter, u);
-        if (s.threadPitch > 0) j["threadPitch"] = s.threadPitch;  // mm whatever the job's unit (metric threads)
-        j["holes"] = nlohmann::ordered_json::array();
-        for (const Point2& h : s.holes) j["holes"].push_back(point(h, u));
-    }
+    moduleKind(s).describeStep(s, u, j);  // the module's own data of the step
     if (s.outline) {
         nlohmann::ordered_json o;
         o["corners"] = nlohmann::ordered_json::array();
@@ -244,8 +240,11 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     // compressing every page's text) is drawn on a thread of its own while
     // this one posts the tape and writes the HTML sheet and steps.json.
     auto drawing = std::async(std::launch::async, [&plan, &sheet] { return sheetPdf(plan, sheet); });
-    const PostedProgram program =
-        postProcess(plan.steps, plan.tools, postOptions(plan, options.dialect, units, options.programNumber, stem));
+    std::optional<PostedProgram> own;
+    const PostedProgram& program =
+        options.posted ? *options.posted
+                       : own.emplace(postProcess(plan.steps, plan.tools,
+                                                 postOptions(plan, options.dialect, units, options.programNumber, stem)));
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     auto pdf = drawing.get();
     if (!pdf) return Failure{nothingChanged(pdf.error(), outDir)};

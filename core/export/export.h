@@ -6,6 +6,7 @@
 
 #include "model/plan.h"
 #include "model/result.h"
+#include "post/post.h"
 
 #include <optional>
 #include <string>
@@ -27,6 +28,11 @@ struct ExportOptions {
     std::string picturesNote;
     // The sheet's picture of the setup (viz::setupPicture), PNG bytes; empty: none.
     std::string setupPicture;
+    // The tape already posted with these options (postOptions of the plan,
+    // the dialect, units, program number and stem; taiwa export posts it
+    // first to place the verification's findings on it): written as it is,
+    // not posted again. Null: the export posts it.
+    const PostedProgram* posted = nullptr;
 };
 
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in

@@ -1,6 +1,7 @@
 // Writing values into a job document the canonical way (job-format.md): whole
 // numbers without ".0", points as [x, y], tool pins as an object. Shared by
-// the job writer and every module's writer.
+// the job writer and every module's writer; and lengths of the step list
+// (STEM.steps.json) in its unit, written by the export and the modules' doors.
 #pragma once
 
 #include "model/geometry.h"
@@ -25,6 +26,11 @@ inline ordered number(double v)
 }
 
 inline ordered point(Point2 p) { return ordered::array({number(p.x), number(p.y)}); }
+
+// A length of the step list: `mm` in the file's unit, rounded to 1 nm (no
+// 15.299999999999997); a point of them as [x, y].
+inline double stepLength(double mm, LengthUnit u) { return std::round(fromMm(mm, u) * 1e6) / 1e6; }
+inline ordered stepPoint(Point2 p, LengthUnit u) { return ordered::array({stepLength(p.x, u), stepLength(p.y, u)}); }
 
 inline ordered pins(const ToolPins& tools)
 {

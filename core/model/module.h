@@ -10,6 +10,8 @@
 //   friend bool operator==(const T&, const T&);
 #pragma once
 
+#include "model/erased.h"
+
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -59,29 +61,21 @@ public:
         : data_(std::make_unique<detail::ModuleDataOf<std::decay_t<T>>>(std::move(value)))
     {
     }
-    ModuleInput(const ModuleInput& o) : data_(o.data_ ? o.data_->clone() : nullptr) {}
-    ModuleInput(ModuleInput&&) noexcept = default;
-    ModuleInput& operator=(const ModuleInput& o)
-    {
-        if (this != &o) data_ = o.data_ ? o.data_->clone() : nullptr;
-        return *this;
-    }
-    ModuleInput& operator=(ModuleInput&&) noexcept = default;
 
-    bool empty() const { return !data_; }
+    bool empty() const { return !data_.get(); }
     // "M4", "M2D"; "" when empty.
-    const char* name() const { return data_ ? data_->name() : ""; }
+    const char* name() const { return data_.get() ? data_.get()->name() : ""; }
 
     template <class T>
     const T* getIf() const
     {
-        const auto* d = dynamic_cast<const detail::ModuleDataOf<T>*>(data_.get());
+        const auto* d = data_.as<detail::ModuleDataOf<T>>();
         return d ? &d->value : nullptr;
     }
     template <class T>
     T* getIf()
     {
-        auto* d = dynamic_cast<detail::ModuleDataOf<T>*>(data_.get());
+        auto* d = data_.as<detail::ModuleDataOf<T>>();
         return d ? &d->value : nullptr;
     }
     template <class T>
@@ -105,17 +99,13 @@ public:
 
     void convertLengths(const LengthMap& f)
     {
-        if (data_) data_->convertLengths(f);
+        if (data_.get()) data_.get()->convertLengths(f);
     }
 
-    friend bool operator==(const ModuleInput& a, const ModuleInput& b)
-    {
-        if (!a.data_ || !b.data_) return !a.data_ && !b.data_;
-        return a.data_->equals(*b.data_);
-    }
+    friend bool operator==(const ModuleInput& a, const ModuleInput& b) { return a.data_ == b.data_; }
 
 private:
-    std::unique_ptr<detail::ModuleData> data_;
+    detail::Erased<detail::ModuleData> data_;
 };
 
 }  // namespace taiwa

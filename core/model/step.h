@@ -6,6 +6,7 @@
 #include "model/boxed.h"
 #include "model/contour.h"
 #include "model/geometry.h"
+#include "model/step_payload.h"
 #include "model/technology.h"
 #include "model/tool.h"
 #include "model/toolpath.h"
@@ -113,11 +114,6 @@ struct Step {
 
     Point2 position{};            // pilot hole centre; otherwise the outline's centroid
     double holeDiameter = 0.0;    // pilot hole: the smallest diameter it must have (0 = not yet known); hole patterns: the diameter the step's tool makes
-    // Hole patterns (module HOLES): the centres of the unit's holes in the
-    // order they are machined (each gets the step's cycle, down to
-    // cutDepth), and a tapping step's thread pitch [mm].
-    std::vector<Point2> holes;
-    double threadPitch = 0.0;
     double startDepth = 0.0;      // above this depth everything is air (rapid)
     double cutDepth = 0.0;        // deepest point the step cuts
     double wallTaper = 0.0;       // degrees per side of the wall this step cuts
@@ -129,22 +125,10 @@ struct Step {
     // Roughing: the unit's radial step-over as a fraction of the tool
     // diameter, when the unit overrides the technology data's.
     std::optional<double> stepOver;
-    // Side milling (module SIDE): the contour the tool's edge runs along, open
-    // or closed, in the direction the tool travels; the tool on its left
-    // (true) or its right; and the distances of the tool's edge from the
-    // contour of the step's radial passes in the order cut (the last is the
-    // nearest; 0 on a finishing pass).
-    std::optional<Contour> sideContour;
-    bool toolOnLeft = true;
-    std::vector<double> sideOffsets;
-    // Face milling (module FACE): `outline` is the face to mill; the passes
-    // run at passAngle degrees from +X, one way or back and forth (zigzag).
-    double passAngle = 0.0;
-    bool zigzag = false;
-    // Area clearing by drawn passes (module AREA): the points the tool centre
-    // goes through in the order the operator drew them (each pass runs from
-    // one point to the next), within `region`.
-    std::vector<Point2> drawnPoints;
+    // What only the step's module reads (model/step_payload.h): SIDE's
+    // contour and passes, FACE's pass angle, AREA's drawn points, HOLES'
+    // centres; the struct lives in the module's folder.
+    StepPayload payload;
     // Turning steps: side, speeds, the path in XZ (then `path` stays empty:
     // milling's stages pass such a step by). On the heap: most steps are not
     // turned, and in place it would be a third of every step's size.
@@ -161,6 +145,12 @@ struct Step {
     // kind; F in mm per minute, or per revolution on a lathe), in place of
     // the tool's cutting data.
     CuttingOverride cutting{};
+    // A milling step's S and F, bound once by planJob from its tool's
+    // cutting data and the operator's values (tools/cutting.h
+    // stepSpeedsFeeds); the paths' times, the post, the sheet and the step
+    // table read them. Absent for a tool with no cutting data for the
+    // material, and for turning steps (theirs are in `turn`).
+    std::optional<SpeedsFeeds> speeds;
 
     std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)
     friend bool operator==(const Step&, const Step&) = default;

@@ -30,6 +30,15 @@ struct TurningTechnology {
 // turning step under constant surface speed: m/min) and F (per minute on
 // a mill, per revolution on a lathe, in the job's length unit). The
 // plunge feed follows F in proportion, as the control's feed override does.
+// A milling tool's spindle speed and feeds in a material (tools/cutting.h
+// computes them from its cutting data).
+struct SpeedsFeeds {
+    double rpm = 0.0;         // S
+    double feed = 0.0;        // mm/min for contouring (drills: mm/min of the feed into the hole)
+    double plungeFeed = 0.0;  // mm/min for plunges and ramps
+    friend bool operator==(const SpeedsFeeds&, const SpeedsFeeds&) = default;
+};
+
 struct CuttingOverride {
     std::optional<double> speed;  // S
     std::optional<double> feed;   // F

@@ -126,6 +126,10 @@ public:
     {
         return later.kind == earlier.kind && earlier.number < later.number;
     }
+    // The step's own data the module adds to its entry in STEM.steps.json
+    // (after its depths; lengths in `u` through io::stepLength). Nothing by
+    // default.
+    virtual void describeStep(const Step& /*step*/, LengthUnit /*u*/, nlohmann::ordered_json& /*entry*/) const {}
     // True for a unit whose steps come before every other unit's (FACE:
     // the top is faced first, the others' depths being measured from it).
     virtual bool cutsBeforeOtherUnits() const { return false; }

@@ -75,29 +75,15 @@ void putInOrder(std::vector<Step>& steps, std::vector<int> order)
     }
 }
 
-}  // namespace
-
-Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options)
+// Each unit through its module's door (decomposition, tool choice and
+// whatever the module settles between them), the steps of the whole job in
+// order, the operator's S and F by step key.
+void planSteps(Plan& plan, const std::vector<Tool>& library, const PathParameters& params, const Machine* machine,
+               PlanCache* cache)
 {
-    return planJob(std::move(checked), library, options, nullptr);
-}
-
-Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options, PlanCache* cache)
-{
-    Plan plan;
-    plan.job = std::move(checked.job);
-    plan.mmJob = std::move(checked.mmJob);
-    plan.diagnostics = std::move(checked.diagnostics);
-    if (!plan.ok()) return plan;
-    plan.technology = *checked.technology;
-    plan.unitOrder = machiningOrder(plan.mmJob);
-
-    // Each unit through its module's door: decomposition, tool choice and
-    // whatever the module settles between them.
     std::vector<Step> unordered;
     unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
-    const Machine* machine = findMachine(plan.mmJob.machine);
-    if (cache) cache->begin(plan, library, options.path);
+    if (cache) cache->begin(plan, library, params);
     for (const int u : plan.unitOrder) {
         const auto compute = [&] { return planUnit(plan, u, library, machine); };
         UnitPlan fresh;
@@ -110,7 +96,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     }
     std::sort(plan.setups.begin(), plan.setups.end(), [](const WorkSetup& a, const WorkSetup& b) { return a.unit < b.unit; });
     std::sort(plan.turned.begin(), plan.turned.end(), [](const TurnedPart& a, const TurnedPart& b) { return a.unit < b.unit; });
-    if (!plan.ok()) return plan;
+    if (!plan.ok()) return;
 
     // The steps are put in order where they are: a second vector of them
     // would double the peak of a large job (a step is about 1 kB; 100,000
@@ -127,48 +113,68 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         putInOrder(plan.steps, orderSteps(plan.steps));
     }
 
-    // The operator's speeds and feeds, by step key: a milling step's are
-    // applied where its speeds and feeds are asked for (stepSpeedsFeeds);
-    // a turning step's cutting data has them already (turn_plan).
+    // The operator's speeds and feeds, by step key: a milling step's go into
+    // the speeds and feeds bound below (stepSpeedsFeeds); a turning step's
+    // cutting data has them already (turn_plan).
     for (auto& step : plan.steps) {
         const auto& cutting = plan.mmJob.units[static_cast<std::size_t>(step.unit)].cutting;
         if (const auto it = cutting.find(toKey(step.kind)); it != cutting.end()) step.cutting = it->second;
     }
+}
 
+// Each step bound once to its tool entry (the plan's own copy: a library
+// edited after planning changes nothing posted from it) and to its speeds
+// and feeds; the tool entry of each step, by index, for the paths.
+std::vector<const Tool*> bindTools(Plan& plan, const std::vector<Tool>& library, bool withToolPaths)
+{
     int currentTool = 0;
-    for (const auto& step : plan.steps) {
+    std::vector<const Tool*> toolOf(plan.steps.size(), nullptr);
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        Step& step = plan.steps[i];
         const Tool& tool = *findTool(library, step.tool->toolId);
+        toolOf[i] = &tool;
         if (!plan.tool(tool.id)) plan.tools.push_back(tool);
         if (tool.id != currentTool) ++plan.toolChanges;
         currentTool = tool.id;
-        if (options.withToolPaths && !step.turn && !stepSpeedsFeeds(step, tool, plan.mmJob.material))
+        if (step.turn) continue;
+        step.speeds = stepSpeedsFeeds(step, tool, plan.mmJob.material);
+        if (withToolPaths && !step.speeds)
             plan.diagnostics.push_back(unitError(plan.mmJob, step.unit, "tools." + std::string(toKey(step.kind)),
                 "tool T" + std::to_string(tool.id) + " (" + tool.name + ") has no cutting data for material " +
                     plan.mmJob.material + "; add it in the tool library"));
     }
-    if (!plan.ok() || !options.withToolPaths) return plan;
+    return toolOf;
+}
 
-    // The budget: estimated before any path is computed, so that no job can
-    // exhaust the memory (the checks' ranges bound every step; this bounds the job).
+// The budget: estimated before any path is computed, so that no job can
+// exhaust the memory (the checks' ranges bound every step; this bounds the
+// job). False, with the diagnostic, when the paths would not fit it.
+bool withinMoveBudget(Plan& plan, const std::vector<const Tool*>& toolOf, const PathParameters& params)
+{
     double estimated = 0.0;
     std::vector<double> perUnit(plan.mmJob.units.size(), 0.0);
-    for (const auto& step : plan.steps) {
-        const double moves = estimateMoves(step, *findTool(library, step.tool->toolId), plan.technology, options.path);
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const Step& step = plan.steps[i];
+        const double moves = estimateMoves(step, *toolOf[i], plan.technology, params);
         estimated += moves;
         perUnit[static_cast<std::size_t>(step.unit)] += moves;
     }
-    if (estimated > kMaxPlanMoves) {
-        const auto biggest = std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin();
-        plan.diagnostics.push_back(unitError(
-            plan.mmJob, static_cast<int>(biggest), "",
-            fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's), more than the "
-                        "{:.3g} a job may have; make the job smaller, the allowances or the depth of cut (γ) larger",
-                        estimated, perUnit[static_cast<std::size_t>(biggest)], kMaxPlanMoves)));
-        return plan;
-    }
+    if (estimated <= kMaxPlanMoves) return true;
+    const auto biggest = std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin();
+    plan.diagnostics.push_back(unitError(
+        plan.mmJob, static_cast<int>(biggest), "",
+        fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's), more than the "
+                    "{:.3g} a job may have; make the job smaller, the allowances or the depth of cut (γ) larger",
+                    estimated, perUnit[static_cast<std::size_t>(biggest)], kMaxPlanMoves)));
+    return false;
+}
 
-    // The paths of the steps are independent of each other: those the cache
-    // does not have are computed on every core (at most kMaxPathThreads).
+// The paths of the steps and their times. They are independent of each
+// other: those the cache does not have are computed on every core (at most
+// kMaxPathThreads).
+void makePaths(Plan& plan, const std::vector<const Tool*>& toolOf, const PathParameters& params, const Machine* machine,
+               PlanCache* cache)
+{
     const bool motion = machine && hasMotionModel(*machine);
     std::vector<std::size_t> todo;
     todo.reserve(plan.steps.size());
@@ -189,9 +195,8 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     const auto work = [&](std::size_t first, std::size_t stride) {
         for (std::size_t t = first; t < todo.size(); t += stride) {
             Step& step = plan.steps[todo[t]];
-            const Tool& tool = *findTool(library, step.tool->toolId);
-            step.path = makeToolPath(step, tool, plan.technology, options.path);
-            const SpeedsFeeds sf = *stepSpeedsFeeds(step, tool, plan.mmJob.material);
+            step.path = makeToolPath(step, *toolOf[todo[t]], plan.technology, params);
+            const SpeedsFeeds sf = *step.speeds;
             step.minutes = estimateMinutes(*step.path, sf);
             if (motion) step.machineMinutes = machineMinutes(*step.path, {sf.feed, sf.plungeFeed}, *machine);
         }
@@ -209,8 +214,14 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         }
         cache->end();
     }
+}
+
+// The job's times (tool changes included) and the tool-life warnings.
+void addTimes(Plan& plan, const std::vector<Tool>& library, const PlanOptions& options, const Machine* machine)
+{
     for (const auto& step : plan.steps) plan.totalMinutes += *step.minutes;
     plan.totalMinutes += plan.toolChanges * options.toolChangeSeconds / 60.0;
+    const bool motion = machine && hasMotionModel(*machine);
     if (motion && std::all_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.machineMinutes.has_value(); })) {
         double total = plan.toolChanges * options.toolChangeSeconds / 60.0;
         for (const auto& step : plan.steps) total += *step.machineMinutes;
@@ -223,6 +234,32 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
         d.severity = Severity::Warning;
         plan.diagnostics.push_back(std::move(d));
     }
+}
+
+}  // namespace
+
+Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options)
+{
+    return planJob(std::move(checked), library, options, nullptr);
+}
+
+Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options, PlanCache* cache)
+{
+    Plan plan;
+    plan.job = std::move(checked.job);
+    plan.mmJob = std::move(checked.mmJob);
+    plan.diagnostics = std::move(checked.diagnostics);
+    if (!plan.ok()) return plan;
+    plan.technology = *checked.technology;
+    plan.unitOrder = machiningOrder(plan.mmJob);
+    const Machine* machine = findMachine(plan.mmJob.machine);
+    planSteps(plan, library, options.path, machine, cache);
+    if (!plan.ok()) return plan;
+    const std::vector<const Tool*> toolOf = bindTools(plan, library, options.withToolPaths);
+    if (!plan.ok() || !options.withToolPaths) return plan;
+    if (!withinMoveBudget(plan, toolOf, options.path)) return plan;
+    makePaths(plan, toolOf, options.path, machine, cache);
+    addTimes(plan, library, options, machine);
     return plan;
 }
 

@@ -80,8 +80,6 @@ std::size_t PlanCache::hashStep(const Step& key)
     combine(h, std::hash<double>{}(key.startDepth));
     combine(h, std::hash<double>{}(key.position.x));
     combine(h, std::hash<double>{}(key.position.y));
-    combine(h, key.holes.size());
-    combine(h, key.drawnPoints.size());
     if (key.outline) combine(h, std::hash<double>{}(key.outline->corners[0].x + 3.0 * key.outline->corners[2].y));
     if (key.tool) combine(h, static_cast<std::size_t>(key.tool->toolId));
     return h;

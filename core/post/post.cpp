@@ -44,7 +44,8 @@ Cutting cuttingOf(const Step& s, const std::vector<Tool>& library, const std::st
     const auto it = std::find_if(library.begin(), library.end(), [&](const Tool& t) { return t.id == s.tool->toolId; });
     if (it == library.end())
         throw std::invalid_argument("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
-    const auto sf = stepSpeedsFeeds(s, *it, material);
+    // Bound by planJob; a step made by hand gets them from the tool given.
+    const auto sf = s.speeds ? s.speeds : stepSpeedsFeeds(s, *it, material);
     if (!sf) throw std::invalid_argument("post-processor: tool T" + std::to_string(it->id) + " has no cutting data for " + material);
     return {&*it, *sf};
 }

@@ -5,7 +5,6 @@
 #include "machine/machine.h"
 #include "post/dialect.h"
 #include "post/lathe_post.h"
-#include "tools/cutting.h"
 
 #include <fmt/format.h>
 
@@ -220,7 +219,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& s = plan.steps[i];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-        const auto sf = t ? stepSpeedsFeeds(s, *t, job.material) : std::nullopt;
+        const std::optional<SpeedsFeeds>& sf = s.speeds;
         const PathLength pl = s.path ? pathLength(*s.path) : s.turn ? turnPathLength(s.turn->path) : PathLength{};
         // The unit by its number and the name the operator gave it.
         std::string unit = std::to_string(s.unit + 1);

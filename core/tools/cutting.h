@@ -1,19 +1,13 @@
 // Spindle speed and feed of a tool in a material, from its cutting data.
 #pragma once
 
+#include "model/technology.h"
 #include "model/tool.h"
 
 #include <optional>
 #include <string>
 
 namespace taiwa {
-
-struct SpeedsFeeds {
-    double rpm = 0.0;         // S
-    double feed = 0.0;        // mm/min for contouring (drills: mm/min of the feed into the hole)
-    double plungeFeed = 0.0;  // mm/min for plunges and ramps
-    friend bool operator==(const SpeedsFeeds&, const SpeedsFeeds&) = default;
-};
 
 // n = 1000 vc / (pi D), rounded to whole rpm; feed = n * fz * flutes (drills,
 // reamers, boring bars: n * f; taps: n * pitch exactly, n lowered to keep

@@ -44,6 +44,15 @@ struct AreaClearing {
     friend bool operator==(const AreaClearing&, const AreaClearing&) = default;
 };
 
+// An area-clearing step's own data (Step::payload): the points the tool
+// centre goes through in the order the operator drew them (each pass runs
+// from one point to the next), within the step's region.
+struct DrawnPoints {
+    static constexpr const char* kName = "AREA passes";
+    std::vector<Point2> points;
+    friend bool operator==(const DrawnPoints&, const DrawnPoints&) = default;
+};
+
 // The points as the form shows and reads them: "10, 20; 60, 20; 60, 35".
 std::string formatPoints(const std::vector<Point2>& points);
 // Nothing when `text` is not pairs of numbers separated by ';'.

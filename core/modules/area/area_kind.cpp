@@ -42,7 +42,8 @@ public:
     // A ramp and the drawn passes a layer.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
     {
-        return estimatedLayers(step, tool, tech) * (static_cast<double>(step.drawnPoints.size()) + 20);
+        const auto* drawn = step.payload.getIf<DrawnPoints>();
+        return estimatedLayers(step, tool, tech) * (static_cast<double>(drawn ? drawn->points.size() : 0) + 20);
     }
 
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override

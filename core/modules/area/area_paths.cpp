@@ -17,7 +17,7 @@ using namespace paths;  // the shared path builders
 
 ToolPath areaClearingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    const auto& points = step.drawnPoints;
+    const auto& points = step.payload.as<DrawnPoints>().points;
     if (points.size() < 2) throw std::logic_error("an area clearing step without a pass");
     if (!(tech.gamma > 0.0) || !(tool.diameter > 0.0)) throw std::invalid_argument("gamma and the diameter must be positive");
     const double T = step.cutDepth;

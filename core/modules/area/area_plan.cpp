@@ -56,7 +56,7 @@ std::vector<Step> planAreaClearing(const AreaClearing& a, const TechnologyData&,
 {
     Step s = decompose::makeStep(unit, AreaClearing::kName, StepKind::AreaClearing, 1, MachiningType::AreaClearing);
     s.region = normalised(a.area.region.value());
-    s.drawnPoints = a.points;
+    s.payload = DrawnPoints{a.points};
     s.position = a.points.front();
     s.startDepth = 0.0;
     s.cutDepth = a.depth;

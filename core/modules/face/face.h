@@ -42,6 +42,16 @@ struct FaceUnit {
     friend bool operator==(const FaceUnit&, const FaceUnit&) = default;
 };
 
+// A face-milling step's own data (Step::payload; its Step::outline is the
+// face to mill): the passes run at `angle` degrees from +X, one way or back
+// and forth (zigzag).
+struct FacePasses {
+    static constexpr const char* kName = "FACE passes";
+    double angle = 0.0;
+    bool zigzag = false;
+    friend bool operator==(const FacePasses&, const FacePasses&) = default;
+};
+
 namespace face {
 
 constexpr int kOneWay = 1, kZigzag = 2;

@@ -124,8 +124,7 @@ std::vector<Step> decomposeFace(const FaceUnit& f, const Stock& stock, const Tec
         Step s = makeStep(unit, FaceUnit::kName, StepKind::FaceMilling, number, type);
         s.outline = outline;
         s.position = centroid(outline.corners);
-        s.passAngle = f.angle;
-        s.zigzag = f.pattern == face::kZigzag;
+        s.payload = FacePasses{f.angle, f.pattern == face::kZigzag};
         s.stepOver = face::stepOverFor(f, tool, tech);
         s.startDepth = from;
         s.cutDepth = to;

@@ -49,8 +49,9 @@ public:
     // Passes across the face, four moves each.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters&) const override
     {
-        if (!step.outline) return 10;
-        const double a = step.passAngle * std::numbers::pi / 180.0;
+        const auto* passes = step.payload.getIf<FacePasses>();
+        if (!step.outline || !passes) return 10;
+        const double a = passes->angle * std::numbers::pi / 180.0;
         double lo = 1e300, hi = -1e300;
         for (const Point2 c : step.outline->corners) {
             const double v = -std::sin(a) * c.x + std::cos(a) * c.y;

@@ -79,7 +79,8 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
     if (!(pitch > 0.0)) throw std::invalid_argument("face-milling step-over must be positive");
     if (!(step.cutDepth > step.startDepth)) throw std::logic_error("face-milling layer without depth");
 
-    const double a = step.passAngle * std::numbers::pi / 180.0;
+    const FacePasses& passes = step.payload.as<FacePasses>();
+    const double a = passes.angle * std::numbers::pi / 180.0;
     const Frame f{{std::cos(a), std::sin(a)}, {-std::sin(a), std::cos(a)}};
     std::array<Point2, 4> q{};
     double vMin = 1e300, vMax = -1e300;
@@ -97,7 +98,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
     }
     // Zigzag: a link beside the face reaches as far out as both passes it
     // joins need (the tool over the band of either is outside the face).
-    if (step.zigzag)
+    if (passes.zigzag)
         for (std::size_t k = 0; k + 1 < spans.size(); ++k) {
             auto& [a0, a1] = spans[k];
             auto& [b0, b1] = spans[k + 1];
@@ -113,17 +114,17 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
         return Point3{xy.x, xy.y, h};
     };
     const auto passStart = [&](std::size_t k) {
-        const bool forward = !step.zigzag || k % 2 == 0;
+        const bool forward = !passes.zigzag || k % 2 == 0;
         return forward ? spans[k].first : spans[k].second;
     };
     const auto passEnd = [&](std::size_t k) {
-        const bool forward = !step.zigzag || k % 2 == 0;
+        const bool forward = !passes.zigzag || k % 2 == 0;
         return forward ? spans[k].second : spans[k].first;
     };
 
     PathBuilder b(at(passStart(0), vs[0], p.safeZ));
     for (std::size_t k = 0; k < vs.size(); ++k) {
-        if (k == 0 || !step.zigzag) {
+        if (k == 0 || !passes.zigzag) {
             if (k > 0) {
                 b.rapid(at(passEnd(k - 1), vs[k - 1], above));
                 b.rapid(at(passStart(k), vs[k], above));

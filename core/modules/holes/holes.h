@@ -54,6 +54,16 @@ struct HolePattern {
     friend bool operator==(const HolePattern&, const HolePattern&) = default;
 };
 
+// A hole step's own data (Step::payload): the centres of the unit's holes in
+// the order they are machined (each gets the step's cycle, down to
+// cutDepth), and a tapping step's thread pitch [mm].
+struct HoleCentres {
+    static constexpr const char* kName = "HOLES centres";
+    std::vector<Point2> centres;
+    double threadPitch = 0.0;
+    friend bool operator==(const HoleCentres&, const HoleCentres&) = default;
+};
+
 namespace holes {
 
 constexpr int kMaxHoles = 1000;  // a unit's holes, at most

@@ -192,7 +192,7 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     const auto step = [&](StepKind kind, MachiningType type, const Tool& tool, double depth, double diameter,
                           std::string reason) {
         Step s = makeStep(unit, HolePattern::kName, kind, 1, type);
-        s.holes = at;
+        s.payload = HoleCentres{at, 0.0};
         s.position = middle;
         s.startDepth = 0.0;
         s.cutDepth = depth;
@@ -209,7 +209,7 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(*drill), drill->diameter, drillReason));
     if (finish) {
         Step s = step(finishKind, finishType, *finish, d.finish, d.finishDiameter, finishReason);
-        if (finishKind == StepKind::Tapping) s.threadPitch = thread->pitch;
+        if (finishKind == StepKind::Tapping) s.payload = HoleCentres{at, thread->pitch};
         steps.push_back(s);
     }
     return steps;

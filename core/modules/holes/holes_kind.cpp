@@ -46,7 +46,19 @@ public:
     // A cycle a hole.
     double estimateMoves(const Step& step, const Tool&, const TechnologyData&, const PathParameters&) const override
     {
-        return step.holes.empty() ? 10 : static_cast<double>(step.holes.size()) + 2;
+        const auto* holes = step.payload.getIf<HoleCentres>();
+        return !holes || holes->centres.empty() ? 10 : static_cast<double>(holes->centres.size()) + 2;
+    }
+    // Every hole the step's cycle runs at, with the diameter it makes and a
+    // tap's pitch (mm whatever the job's unit: metric threads).
+    void describeStep(const Step& s, LengthUnit u, nlohmann::ordered_json& j) const override
+    {
+        const auto* holes = s.payload.getIf<HoleCentres>();
+        if (!holes || holes->centres.empty()) return;
+        j["holeDiameter"] = io::stepLength(s.holeDiameter, u);
+        if (holes->threadPitch > 0) j["threadPitch"] = holes->threadPitch;
+        j["holes"] = nlohmann::ordered_json::array();
+        for (const Point2& h : holes->centres) j["holes"].push_back(io::stepPoint(h, u));
     }
     // Centre drilling, then drilling, then tapping, reaming or boring.
     bool stepWaitsFor(const Step& later, const Step& earlier) const override

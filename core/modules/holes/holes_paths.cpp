@@ -14,21 +14,22 @@ using namespace paths;  // the shared path builders
 
 ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p)
 {
-    if (step.holes.empty()) throw std::logic_error("hole step " + step.label() + " has no holes");
+    const HoleCentres& holes = step.payload.as<HoleCentres>();
+    if (holes.centres.empty()) throw std::logic_error("hole step " + step.label() + " has no holes");
     // Each cycle returns to the level it started from (safe Z, G98): the
     // path starts over the first hole and ends over the last, at safe height.
-    PathBuilder b({step.holes.front().x, step.holes.front().y, p.safeZ});
+    PathBuilder b({holes.centres.front().x, holes.centres.front().y, p.safeZ});
     CycleKind cycle = CycleKind::Drill;
     if (step.kind == StepKind::Tapping) cycle = CycleKind::Tap;
     if (step.kind == StepKind::Reaming) cycle = CycleKind::Ream;
     if (step.kind == StepKind::Boring) cycle = CycleKind::Bore;
     const bool peck = step.kind == StepKind::Drilling && step.cutDepth > p.peckWhenDeeperThan * tool.diameter;
-    for (const Point2& h : step.holes) {
+    for (const Point2& h : holes.centres) {
         Move m{MoveKind::DrillCycle, {h.x, h.y, -step.cutDepth}};
         m.retractZ = -step.startDepth + p.clearance;
         m.cycle = cycle;
         m.peck = peck ? p.peckDepth * tool.diameter : 0.0;
-        m.pitch = cycle == CycleKind::Tap ? step.threadPitch : 0.0;
+        m.pitch = cycle == CycleKind::Tap ? holes.threadPitch : 0.0;
         b.add(m);
     }
     return b.take();

@@ -65,6 +65,19 @@ struct SideMill {
     friend bool operator==(const SideMill&, const SideMill&) = default;
 };
 
+// A side-milling step's own data (Step::payload): the contour the tool's
+// edge runs along, open or closed, in the direction the tool travels; the
+// tool on its left (true) or its right; and the distances of the tool's edge
+// from the contour of the step's radial passes in the order cut (the last is
+// the nearest; 0 on a finishing pass).
+struct SidePasses {
+    static constexpr const char* kName = "SIDE passes";
+    Contour contour;
+    bool toolOnLeft = true;
+    std::vector<double> offsets;
+    friend bool operator==(const SidePasses&, const SidePasses&) = default;
+};
+
 namespace side {
 
 // The contour as the tool travels along it (reversed for side and

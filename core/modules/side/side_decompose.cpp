@@ -158,8 +158,6 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
     std::vector<Step> steps;
     const auto step = [&](int number, MachiningType type) {
         Step s = makeStep(unit, SideMill::kName, StepKind::SideMilling, number, type);
-        s.sideContour = t.contour;
-        s.toolOnLeft = t.toolOnLeft;
         s.position = middle;
         s.startDepth = 0.0;
         s.cutDepth = m.depth;
@@ -169,14 +167,14 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
     };
     if (!passes.roughing.empty()) {
         Step s = step(1, MachiningType::SideMilling);
-        s.sideOffsets = passes.roughing;
+        s.payload = SidePasses{t.contour, t.toolOnLeft, passes.roughing};
         s.wallAllowance = tech.alpha2;
         s.multiIncision = true;  // Z layers of at most γ·D
         steps.push_back(std::move(s));
     }
     if (passes.finishing) {
         Step s = step(static_cast<int>(steps.size()) + 1, MachiningType::SideFinishing);
-        s.sideOffsets = {0.0};
+        s.payload = SidePasses{t.contour, t.toolOnLeft, {0.0}};
         s.wallAllowance = 0.0;
         s.multiIncision = m.wallFinish == 2;
         steps.push_back(std::move(s));

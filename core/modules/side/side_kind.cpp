@@ -43,10 +43,11 @@ public:
     // Each pass: about a move a segment, two a joint, and the leads.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
     {
-        if (!step.sideContour) return 10;
-        const double passes = static_cast<double>(std::max<std::size_t>(step.sideOffsets.size(), 1));
+        const auto* side = step.payload.getIf<SidePasses>();
+        if (!side) return 10;
+        const double passes = static_cast<double>(std::max<std::size_t>(side->offsets.size(), 1));
         return (step.multiIncision ? estimatedLayers(step, tool, tech) : 1) * passes *
-               (2 * static_cast<double>(step.sideContour->segments.size()) + 8);
+               (2 * static_cast<double>(side->contour.segments.size()) + 8);
     }
 
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override

@@ -69,21 +69,22 @@ Contour fromMiddle(const Contour& loop)
 
 ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    if (!step.sideContour || step.sideContour->empty()) throw std::logic_error("side milling step without a contour");
-    if (step.sideOffsets.empty()) throw std::logic_error("side milling step without passes");
-    const Contour& contour = *step.sideContour;
+    const SidePasses& run = step.payload.as<SidePasses>();
+    if (run.contour.empty()) throw std::logic_error("side milling step without a contour");
+    if (run.offsets.empty()) throw std::logic_error("side milling step without passes");
+    const Contour& contour = run.contour;
     const double R = tool.radius();
-    const bool left = step.toolOnLeft;
+    const bool left = run.toolOnLeft;
     const std::vector<double> depths = incisionDepths(step, tool, tech);
     // The spacing of the step's passes: beyond the outermost lies what the
     // unit clears (W) or air; a single pass takes at most the tool's width.
-    const double outermost = step.sideOffsets.front();
-    const double spacing = step.sideOffsets.size() > 1 ? step.sideOffsets[0] - step.sideOffsets[1]
-                          : step.sideOffsets.front() > 0.0 ? 2 * R : R;
+    const double outermost = run.offsets.front();
+    const double spacing = run.offsets.size() > 1 ? run.offsets[0] - run.offsets[1]
+                          : run.offsets.front() > 0.0 ? 2 * R : R;
 
     // The chains of each pass, made once for all layers.
     std::vector<std::vector<Contour>> passes;
-    for (const double o : step.sideOffsets) {
+    for (const double o : run.offsets) {
         auto chains = offsetSide(contour, left, R + o);
         if (!chains) throw std::logic_error("side milling offset failed: " + chains.error());
         if (chains->empty()) throw std::logic_error("the tool does not fit beside the contour");
@@ -101,7 +102,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& t
     };
     for (const double depth : depths) {
         for (std::size_t k = 0; k < passes.size(); ++k) {
-            const double o = step.sideOffsets[k];
+            const double o = run.offsets[k];
             for (const Contour& raw : passes[k]) {
                 if (raw.segments.empty()) continue;
                 const double z = -depth;

@@ -5,6 +5,7 @@
 #include "model/translate_noop.h"
 #include "modules/module_kind.h"
 #include "modules/turn/turn.h"
+#include "modules/turn/turn_file.h"
 
 #include "check/messages.h"
 #include "io/job_messages.h"
@@ -27,22 +28,6 @@ using namespace turning;
 using ordered = nlohmann::ordered_json;
 
 constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
-
-const std::vector<std::string> kUnitKeys{"module", "name", "side", "start", "rows", "allowances", "tools", "skip", "cutting"};
-const std::vector<std::string> kRowKeys{"id",     "kind",   "x",          "z",         "radius",
-                                        "centreX", "centreZ", "corner", "cornerSize", "roughness", "tolerance", "thread"};
-const std::vector<std::string> kAllowanceKeys{"edge", "allowance", "adjustment", "groove", "grooveWidth", "grooveDepth"};
-const std::vector<std::string> kSides{"outer", "inner"};
-const std::vector<std::string> kKinds{"line", "cw", "ccw"};
-const std::vector<std::string> kCorners{"none", "chamfer", "rounding"};
-const std::vector<std::string> kGrooves{"auto", "none", "lateral", "longitudinal", "ring"};
-
-std::size_t optionalChoice(const io::ObjectFields& f, const char* key, const std::vector<std::string>& allowed)
-{
-    return f.find(key) ? f.choice(key, allowed).value_or(0) : 0;
-}
-
-using io::number;
 
 // The finishing tool whose nose radius becomes the adjustment where a row gives none.
 AllowanceOptions allowanceOptions(const TurnedProfile& p, const std::vector<Tool>& library, LengthUnit shown)
@@ -115,146 +100,8 @@ public:
     }
 
 protected:
-    TurnUnit readInput(const io::ObjectFields& f) const override
-    {
-        TurnUnit t;
-        TurnedProfile& p = t.profile;
-        f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a TURN unit"), kUnitKeys);
-        p.side = optionalChoice(f, "side", kSides) == 1 ? ProfileSide::Inner : ProfileSide::Outer;
-        if (const auto* start = f.find("start")) {
-            if (!start->is_object()) {
-                f.error("start", msg::io::wrongType("an object {\"x\": diameter, \"z\": Z}", *start));
-            } else {
-                const io::ObjectFields s = f.nested(*start, "start.");
-                s.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the start point"), {"x", "z"});
-                p.startX = s.number("x", 0.0);
-                p.startZ = s.number("z", 0.0);
-            }
-        }
-        const auto* rows = f.find("rows");
-        if (!rows || !rows->is_array()) {
-            f.error("rows",
-                    rows ? msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows"), *rows)
-                         : msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows")));
-        } else {
-            for (std::size_t i = 0; i < rows->size(); ++i) {
-                const std::string prefix = fmt::format("rows[{}].", i + 1);
-                if (!(*rows)[i].is_object()) {
-                    f.error(prefix.substr(0, prefix.size() - 1),
-                            msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*rows)[i]));
-                    continue;
-                }
-                const io::ObjectFields r = f.nested((*rows)[i], prefix);
-                r.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a profile row"), kRowKeys);
-                ProfileRow row;
-                row.id = r.whole("id", static_cast<int>(i) + 1);
-                row.kind = static_cast<ElementKind>(optionalChoice(r, "kind", kKinds));
-                row.x = r.number("x").value_or(0.0);
-                row.z = r.number("z").value_or(0.0);
-                row.radius = r.optionalNumber("radius");
-                row.centreX = r.optionalNumber("centreX");
-                row.centreZ = r.optionalNumber("centreZ");
-                row.corner = static_cast<CornerKind>(optionalChoice(r, "corner", kCorners));
-                row.cornerSize = r.number("cornerSize", 0.0);
-                row.attributes.roughness = r.optionalNumber("roughness");
-                row.attributes.tolerance = r.string("tolerance", "");
-                if (const auto* thread = r.find("thread")) {
-                    if (!thread->is_object()) {
-                        r.error("thread", msg::io::wrongType("an object {\"pitch\": mm, \"depth\": mm}", *thread));
-                    } else {
-                        const io::ObjectFields th = r.nested(*thread, "thread.");
-                        th.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a thread"), {"pitch", "depth"});
-                        row.attributes.thread = ThreadSpec{th.number("pitch").value_or(0.0), th.optionalNumber("depth")};
-                    }
-                }
-                p.rows.push_back(row);
-            }
-        }
-        if (const auto* allowances = f.find("allowances")) {
-            if (!allowances->is_array()) {
-                f.error("allowances",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of grinding-allowance rows"),
-                                           *allowances));
-            } else {
-                for (std::size_t i = 0; i < allowances->size(); ++i) {
-                    const std::string prefix = fmt::format("allowances[{}].", i + 1);
-                    if (!(*allowances)[i].is_object()) {
-                        f.error(prefix.substr(0, prefix.size() - 1),
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*allowances)[i]));
-                        continue;
-                    }
-                    const io::ObjectFields a = f.nested((*allowances)[i], prefix);
-                    a.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a grinding-allowance row"), kAllowanceKeys);
-                    AllowanceRow row;
-                    row.edge = a.string("edge").value_or("");
-                    row.allowance = a.number("allowance").value_or(0.0);
-                    row.adjustment = a.optionalNumber("adjustment");
-                    row.groove = static_cast<GrooveKind>(optionalChoice(a, "groove", kGrooves));
-                    row.grooveWidth = a.optionalNumber("grooveWidth");
-                    row.grooveDepth = a.optionalNumber("grooveDepth");
-                    p.allowances.push_back(row);
-                }
-            }
-        }
-        t.tools = f.wholeMap("tools");
-        if (const auto* skip = f.find("skip")) {
-            if (!skip->is_array()) {
-                f.error("skip",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of step names"), *skip));
-            } else {
-                for (std::size_t i = 0; i < skip->size(); ++i) {
-                    if ((*skip)[i].is_string()) t.skip.push_back((*skip)[i].get<std::string>());
-                    else
-                        f.error(fmt::format("skip[{}]", i + 1),
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a step name"), (*skip)[i]));
-                }
-            }
-        }
-        return t;
-    }
-
-    void writeInput(const TurnUnit& t, ordered& u) const override
-    {
-        const TurnedProfile& p = t.profile;
-        u["side"] = toKey(p.side);
-        u["start"] = {{"x", number(p.startX)}, {"z", number(p.startZ)}};
-        u["rows"] = ordered::array();
-        for (const auto& r : p.rows) {
-            ordered j;
-            j["id"] = r.id;
-            j["kind"] = toKey(r.kind);
-            j["x"] = number(r.x);
-            j["z"] = number(r.z);
-            if (r.radius) j["radius"] = number(*r.radius);
-            if (r.centreX) j["centreX"] = number(*r.centreX);
-            if (r.centreZ) j["centreZ"] = number(*r.centreZ);
-            if (r.corner != CornerKind::None) j["corner"] = toKey(r.corner);
-            if (r.corner != CornerKind::None || r.cornerSize != 0.0) j["cornerSize"] = number(r.cornerSize);
-            if (r.attributes.roughness) j["roughness"] = number(*r.attributes.roughness);
-            if (!r.attributes.tolerance.empty()) j["tolerance"] = r.attributes.tolerance;
-            if (const auto& th = r.attributes.thread) {
-                ordered spec;
-                spec["pitch"] = number(th->pitch);
-                if (th->depth) spec["depth"] = number(*th->depth);
-                j["thread"] = std::move(spec);
-            }
-            u["rows"].push_back(std::move(j));
-        }
-        if (!t.tools.empty()) u["tools"] = io::pins(t.tools);
-        if (!t.skip.empty()) u["skip"] = t.skip;
-        if (p.allowances.empty()) return;
-        u["allowances"] = ordered::array();
-        for (const auto& a : p.allowances) {
-            ordered j;
-            j["edge"] = a.edge;
-            j["allowance"] = number(a.allowance);
-            if (a.adjustment) j["adjustment"] = number(*a.adjustment);
-            if (a.groove != GrooveKind::Auto) j["groove"] = toKey(a.groove);
-            if (a.grooveWidth) j["grooveWidth"] = number(*a.grooveWidth);
-            if (a.grooveDepth) j["grooveDepth"] = number(*a.grooveDepth);
-            u["allowances"].push_back(std::move(j));
-        }
-    }
+    TurnUnit readInput(const io::ObjectFields& f) const override { return readTurnUnit(f); }
+    void writeInput(const TurnUnit& t, ordered& u) const override { writeTurnUnit(t, u); }
 
     check::UnitReport checkInput(const TurnUnit& t, int unitNo, const check::Context& ctx) const override
     {

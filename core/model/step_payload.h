@@ -1,0 +1,72 @@
+// A module's own data of a step (model/step.h): what only that module's
+// paths and checks read — a side-milling step's contour and passes, a face's
+// pass angle, an area's drawn points, a hole pattern's centres — held by
+// the step without the model knowing the module. Copied deeply, compared by
+// value, the way ModuleInput holds a unit's input (model/module.h). Each
+// payload struct lives in its module's folder and provides
+//   static constexpr const char* kName;   // "SIDE passes", for messages
+//   friend bool operator==(const T&, const T&);
+#pragma once
+
+#include "model/erased.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace taiwa {
+
+class StepPayload {
+public:
+    StepPayload() = default;  // a step with no data of its module's own
+    template <class T, class = std::enable_if_t<!std::is_same_v<std::decay_t<T>, StepPayload>>>
+    StepPayload(T value)  // NOLINT(google-explicit-constructor): a payload struct is a payload
+        : data_(std::make_unique<Of<std::decay_t<T>>>(std::move(value)))
+    {
+    }
+
+    bool empty() const { return !data_.get(); }
+    const char* name() const { return data_.get() ? data_.get()->name() : "nothing"; }
+
+    template <class T>
+    const T* getIf() const
+    {
+        const auto* d = data_.as<Of<T>>();
+        return d ? &d->value : nullptr;
+    }
+    // The payload as T; throws std::logic_error when the step holds another
+    // (a step handed to a module that did not make it).
+    template <class T>
+    const T& as() const
+    {
+        if (const T* v = getIf<T>()) return *v;
+        throw std::logic_error(std::string("step holds ") + name() + ", not " + T::kName);
+    }
+
+    friend bool operator==(const StepPayload& a, const StepPayload& b) { return a.data_ == b.data_; }
+
+private:
+    struct Data {
+        virtual ~Data() = default;
+        virtual const char* name() const = 0;
+        virtual std::unique_ptr<Data> clone() const = 0;
+        virtual bool equals(const Data& other) const = 0;
+    };
+    template <class T>
+    struct Of final : Data {
+        explicit Of(T v) : value(std::move(v)) {}
+        const char* name() const override { return T::kName; }
+        std::unique_ptr<Data> clone() const override { return std::make_unique<Of>(value); }
+        bool equals(const Data& other) const override
+        {
+            const auto* o = dynamic_cast<const Of*>(&other);
+            return o && o->value == value;
+        }
+        T value;
+    };
+    detail::Erased<Data> data_;
+};
+
+}  // namespace taiwa

@@ -1,0 +1,161 @@
+// The module's door owns its steps (issue 32): the stages outside a module
+// name none of its step kinds, a step's own data travels in its payload,
+// its path, move estimate and order come from its module, and each step is
+// bound once to its tool and its speeds and feeds, so that a library edited
+// after planning cannot change what is posted from the plan.
+#include "modules/face/face.h"
+#include "modules/registry.h"
+#include "post/post.h"
+#include "support/hand_plan.h"
+#include "support/support.h"
+#include "tools/cutting.h"
+#include "tools/step_order.h"
+
+#include <QDirIterator>
+#include <QRegularExpression>
+#include <QtTest>
+
+#include <algorithm>
+#include <set>
+
+using namespace taiwa;
+
+namespace {
+
+// The places in `text` that name a step kind, as "line: text".
+QStringList stepKindNames(const QString& text)
+{
+    QStringList found;
+    const QStringList lines = text.split('\n');
+    for (int i = 0; i < lines.size(); ++i)
+        if (lines[i].contains("StepKind::")) found << QString("%1: %2").arg(i + 1).arg(lines[i].trimmed());
+    return found;
+}
+
+struct Tagged {
+    static constexpr const char* kName = "tagged";
+    int tag = 0;
+    friend bool operator==(const Tagged&, const Tagged&) = default;
+};
+struct Other {
+    static constexpr const char* kName = "other";
+    friend bool operator==(const Other&, const Other&) = default;
+};
+
+Step stepOf(int unit, const char* module, StepKind kind, int number, int tool)
+{
+    Step s;
+    s.unit = unit;
+    s.module = module;
+    s.kind = kind;
+    s.number = number;
+    s.tool = ToolChoice{tool, ""};
+    return s;
+}
+
+}  // namespace
+
+class TestModuleDoor : public QObject {
+    Q_OBJECT
+
+private slots:
+    // No stage outside core/modules/ and core/model/ dispatches on a step
+    // kind: a new module's steps reach them through its door.
+    void stagesNameNoStepKind()
+    {
+        // The rule sees a kind where one is named (negative control).
+        QCOMPARE(stepKindNames("int a;\n  if (s.kind == StepKind::Roughing) return;\n").size(), 1);
+        QStringList found;
+        int files = 0;
+        QDirIterator it(test::sourcePath("core"), {"*.cpp", "*.h"}, QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext()) {
+            const QString path = it.next();
+            const QString rel = QDir(test::sourcePath("")).relativeFilePath(path);
+            if (rel.startsWith("core/modules/") || rel.startsWith("core/model/")) continue;
+            ++files;
+            for (const QString& f : stepKindNames(QString::fromStdString(test::readFile(path)))) found << rel + ":" + f;
+        }
+        QVERIFY(files > 100);
+        QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
+    }
+
+    void payloadCopiesComparesAndRefusesAnotherKind()
+    {
+        Step a;
+        QVERIFY(a.payload.empty());
+        a.payload = Tagged{7};
+        Step b = a;  // a deep copy
+        QCOMPARE(b.payload.as<Tagged>().tag, 7);
+        QVERIFY(a == b);
+        b.payload = Tagged{8};
+        QVERIFY(!(a == b));
+        QCOMPARE(a.payload.as<Tagged>().tag, 7);
+        QVERIFY(a.payload.getIf<Other>() == nullptr);
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, a.payload.as<Other>());
+        b.payload = StepPayload{};
+        QVERIFY(!(a == b) && !(b == a));
+    }
+
+    // Each module makes its own steps' paths; one that has none to make
+    // (a turned profile's come with its steps) refuses as a bug.
+    void pathsComeThroughTheStepsModule()
+    {
+        const Plan plate = test::samplePlan("plate.taiwa");
+        QVERIFY(plate.ok());
+        for (const Step& s : plate.steps) {
+            const Tool& t = *plate.tool(s.tool->toolId);
+            QCOMPARE(moduleKind(s).toolPath(s, t, plate.technology, {}), *s.path);
+            QVERIFY(estimateMoves(s, t, plate.technology, {}) >= 1);
+        }
+        Step turned = plate.steps.front();
+        turned.module = "TURN";
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, makeToolPath(turned, *plate.tool(turned.tool->toolId), plate.technology, {}));
+        turned.module = "NOPE";
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, moduleKind(turned));
+    }
+
+    // The job-wide order keeps what each module says of its own steps and
+    // otherwise saves tool changes.
+    void orderKeepsWhatTheDoorsSay()
+    {
+        // Unit 0 a pocket, unit 1 a face: the face first (FACE cuts before
+        // other units); then the pocket's pilot hole before its roughing,
+        // the roughing layers in their numbers, the floor last (M4's order).
+        std::vector<Step> steps{stepOf(0, "M4", StepKind::Roughing, 2, 5), stepOf(0, "M4", StepKind::Roughing, 1, 5),
+                                stepOf(0, "M4", StepKind::PilotHole, 1, 9), stepOf(0, "M4", StepKind::FloorFinishing, 1, 5),
+                                stepOf(1, "FACE", StepKind::FaceMilling, 1, 7), stepOf(1, "FACE", StepKind::FaceMilling, 2, 7)};
+        const std::vector<int> order = orderSteps(steps);
+        QCOMPARE(order, (std::vector<int>{4, 5, 2, 1, 0, 3}));
+        // The same steps with no rule at all: only the tools group them.
+        const StepOrderRules none{[](const Step&, const Step&) { return false; }, [](const Step&) { return false; }};
+        QCOMPARE(orderStepsBy(steps, none), (std::vector<int>{0, 1, 3, 2, 4, 5}));
+    }
+
+    // planJob binds every milling step to its speeds and feeds once; the
+    // post reads them, so cutting data edited in the library after planning
+    // changes nothing on the tape posted from the plan.
+    void aLibraryEditAfterPlanningChangesNoTape()
+    {
+        const auto read = readJobFile(test::sourcePath("resources/samples/plate.taiwa").toStdString());
+        QVERIFY(read.job);
+        std::vector<Tool> library = defaultToolLibrary();
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), library);
+        QVERIFY(plan.ok());
+        for (const Step& s : plan.steps) {
+            QVERIFY(s.speeds);
+            QCOMPARE(*s.speeds, *stepSpeedsFeeds(s, *plan.tool(s.tool->toolId), plan.mmJob.material));
+        }
+        const PostOptions o = postOptions(plan, "linuxcnc");
+        const std::string before = postProcess(plan.steps, library, o).nc;
+        for (Tool& t : library)
+            for (CuttingData& c : t.cutting) {
+                c.surfaceSpeed *= 2;
+                c.feedPerTooth *= 3;
+            }
+        QCOMPARE(postProcess(plan.steps, library, o).nc, before);
+        QCOMPARE(postProcess(plan.steps, plan.tools, o).nc, before);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestModuleDoor)
+#include "test_module_door.moc"
