@@ -151,6 +151,7 @@ private slots:
         s.path = path;
         s.minutes = 12.5;
         s.machineMinutes = 13.25;
+        s.speeds = stepSpeedsFeeds(s, t, plan.mmJob.material);  // bound as planJob binds them
         plan.steps = {s};
         plan.diagnostics.push_back({Severity::Warning, 1, "M4", "tools.roughing", "T27 <worn> & chipped"});
         plan.toolChanges = 1;

@@ -98,12 +98,14 @@ struct ToolChoice {
 // The tool of that id in `library`; nullptr when there is none.
 const Tool* findTool(const std::vector<Tool>& library, int id);
 
-// One rule for every fit of a tool (input checks and tool choice alike): a
-// size fits into a room when it exceeds it by no more than kFitTolerance, so
-// that a tool fitting exactly by the documented rule is not refused for a
-// rounding error of the arithmetic; a taper end mill is "of that angle"
-// within kAngleTolerance.
-constexpr double kFitTolerance = 1e-6;    // mm
+// One rule for every fit of a tool (input checks, tool choice, the paths
+// that take the tool, a drill of a bore's size): a size fits into a room when
+// it exceeds it by no more than kFitTolerance, 1 µm, half the tape's
+// resolution in mm — so that a tool fitting exactly by the documented rule is
+// not refused for the rounding of the arithmetic, nor for a value typed in
+// inch to five decimals (r 6 mm is 0.23622 in, 12 nm short of 6 mm); a taper
+// end mill is "of that angle" within kAngleTolerance.
+constexpr double kFitTolerance = 1e-3;    // mm
 constexpr double kAngleTolerance = 1e-6;  // degrees
 inline bool fitsInto(double size, double room) { return size <= room + kFitTolerance; }
 inline bool sameAngle(double a, double b) { return a - b <= kAngleTolerance && b - a <= kAngleTolerance; }

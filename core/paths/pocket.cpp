@@ -150,9 +150,10 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
                const PathParameters& p)
 {
     if (!step.outline) throw std::logic_error("pocket step without an outline");
-    const Quad outline{counterClockwise(step.outline->corners), step.outline->cornerRadius};
     const double R = tool.radius();
-    if (outline.cornerRadius < R - 1e-9) throw std::logic_error("pocket corner radius smaller than the tool radius");
+    if (!fitsInto(R, step.outline->cornerRadius)) throw std::logic_error("pocket corner radius smaller than the tool radius");
+    // A tool within the fit tolerance of the corner radius runs it as its own.
+    const Quad outline{counterClockwise(step.outline->corners), std::max(step.outline->cornerRadius, R)};
     if (maxOffset(outline) < R - 1e-9) throw std::logic_error("pocket narrower than the tool");
     if (!(stepOver > 0.0 && stepOver < 2 * R)) throw std::invalid_argument("step-over must lie between 0 and D");
 

@@ -76,13 +76,16 @@ std::vector<double> incisionDepths(const Step& step, const Tool& tool, const Tec
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
     if (!step.outline) throw std::logic_error("wall step without an outline");
-    const Quad outline{counterClockwise(step.outline->corners), step.outline->cornerRadius};
     const double R = tool.radius();
+    // A tool within the fit tolerance of a vertical wall's corner radius runs
+    // it as its own.
+    const Quad outline{counterClockwise(step.outline->corners),
+                       step.wallTaper == 0.0 ? std::max(step.outline->cornerRadius, R) : step.outline->cornerRadius};
     const double t = step.wallTaper > 0 ? tanDeg(step.wallTaper) : 0.0;
     // A flank steeper than the wall would cut into it above the tip.
     const double flank = tool.type == ToolType::TaperEndMill ? tool.taperAngle : 0.0;
     if (flank > step.wallTaper + 1e-9) throw std::logic_error("tool flank steeper than the wall");
-    if (step.wallTaper == 0.0 && outline.cornerRadius < R - 1e-9)
+    if (step.wallTaper == 0.0 && !fitsInto(R, step.outline->cornerRadius))
         throw std::logic_error("wall corner radius smaller than the tool radius");
     if (!offsetExists(outline, R + step.cutDepth * t)) throw std::logic_error("pocket narrower than the tool");
 

@@ -66,7 +66,7 @@ void Planner::planDrilling()
     for (std::size_t i = first_; i < last_; ++i) rMin = std::min({rMin, chain_[i].a.r, chain_[i].b.r});
     const Tool* bar = roughingInsert(true);
     const double need = bar ? bar->turning.minBore : 0.0;
-    if (q_.boreBefore >= need - kTol && q_.boreBefore > 0) return;  // the bar's bore takes the boring bar
+    if (q_.boreBefore > 0 && fitsInto(need, q_.boreBefore)) return;  // the bar's bore takes the boring bar
     if (skipped(kDrill)) return;
     const double maxDrill = 2.0 * (rMin - t_.allowanceX) - 1.0;
     const Tool* drill = pinned(kDrill);
@@ -77,14 +77,14 @@ void Planner::planDrilling()
         plain = plain && !chain_[i].arc && std::abs(chain_[i].a.r - rMin) < 1e-6 && std::abs(chain_[i].b.r - rMin) < 1e-6;
     if (!drill && plain && maxDrill < need)
         for (const auto& t : lib_)
-            if (t.type == ToolType::Drill && std::abs(t.diameter - 2.0 * rMin) < 1e-6) {
+            if (t.type == ToolType::Drill && std::abs(t.diameter - 2.0 * rMin) <= kFitTolerance) {
                 drill = &t;
                 reason = fmt::format("drills the plain bore to size ({}: the boring bar needs {})", dia(rMin), dia(need / 2.0));
                 drilledToSize_ = true;
             }
     if (!drill) {
         for (const auto& t : lib_)
-            if (t.type == ToolType::Drill && t.diameter <= maxDrill + kTol && t.diameter >= need - kTol &&
+            if (t.type == ToolType::Drill && fitsInto(t.diameter, maxDrill) && fitsInto(need, t.diameter) &&
                 (!drill || t.diameter > drill->diameter))
                 drill = &t;
         if (!drill) {
