@@ -1,18 +1,16 @@
 // The grinding allowance of seed 001 (core/turning/allowance.h) on profiles
 // small enough to work out by hand: every angle case of the neighbour rules
 // (0-90°, 90-180°, 180° with the adjustment typed or taken from the tool's
-// nose radius, above 180°, both neighbours ground at a convex corner), each
-// relief groove kind typed and identified automatically, with the exact
-// vertices and arc centres of the deformed profile to 1 µm; the profile
+// nose radius, above 180°, both neighbours ground at a convex corner), with
+// the exact vertices and arc centres of the deformed profile to 1 µm (the
+// relief grooves: test_relief_grooves.cpp); the profile
 // table's own geometry (chamfers, roundings, arcs by radius and by centre);
 // and the refusals, each naming its row and field.
 //
 // All profiles are outer (OD) profiles drawn from the front face at the axis
 // toward the chuck: Z decreasing, X (diameter) growing at the shoulders. In
 // the comments (z, r) is a point with r the radius.
-#include "turning/allowance.h"
-#include "turning/profile_resolve.h"
-#include "model/turned_geometry.h"
+#include "support/allowance_cases.h"
 
 #include <QtTest>
 
@@ -24,92 +22,7 @@
 
 using namespace taiwa;
 using namespace taiwa::turning;
-
-namespace {
-
-constexpr double kTol = 1e-6;  // mm: well inside 1 µm
-
-ProfileRow line(int id, double x, double z, CornerKind corner = CornerKind::None, double size = 0.0)
-{
-    ProfileRow r;
-    r.id = id;
-    r.x = x;
-    r.z = z;
-    r.corner = corner;
-    r.cornerSize = size;
-    return r;
-}
-
-// The stepped shaft most cases use: front face E1 up to Ø40 at Z0, the Ø40
-// cylinder E2 to Z-50, the shoulder E3 up to Ø60, the Ø60 cylinder E4 to Z-80.
-TurnedProfile steppedShaft()
-{
-    TurnedProfile p;
-    p.rows = {line(1, 40, 0), line(2, 40, -50), line(3, 60, -50), line(4, 60, -80)};
-    return p;
-}
-
-AllowanceRow row(const std::string& edge, double a)
-{
-    AllowanceRow r;
-    r.edge = edge;
-    r.allowance = a;
-    return r;
-}
-
-struct Expect {
-    std::string id;
-    Origin origin;
-    ZR a, b;
-    std::optional<ZR> centre = std::nullopt;  // arcs
-};
-
-Deformation deform(const TurnedProfile& p, const AllowanceOptions& o = {})
-{
-    const Resolution r = resolveProfile(p);
-    for (const auto& pr : r.problems) qWarning("%s: %s", pr.field.c_str(), pr.message.c_str());
-    return applyAllowances(r.profile, p.allowances, o);
-}
-
-QString describe(const DeformedProfile& d)
-{
-    QString s;
-    for (const auto& e : d.edges)
-        s += QString("  %1 %2 (%3, %4) -> (%5, %6)\n")
-                 .arg(QString::fromStdString(e.id), toKey(e.origin))
-                 .arg(e.geometry.a.z)
-                 .arg(e.geometry.a.r)
-                 .arg(e.geometry.b.z)
-                 .arg(e.geometry.b.r);
-    return s;
-}
-
-void expectChain(const Deformation& d, const std::vector<Expect>& want)
-{
-    for (const auto& p : d.problems) qWarning("%s: %s", p.field.c_str(), p.message.c_str());
-    QVERIFY(d.ok());
-    const auto& got = d.profile.edges;
-    QVERIFY2(got.size() == want.size(), qPrintable("got\n" + describe(d.profile)));
-    for (std::size_t i = 0; i < want.size(); ++i) {
-        const auto& g = got[i];
-        const auto& w = want[i];
-        const QString where = QString("edge %1 of\n%2").arg(i).arg(describe(d.profile));
-        QVERIFY2(g.id == w.id, qPrintable("id " + QString::fromStdString(g.id) + " at " + where));
-        QVERIFY2(g.origin == w.origin, qPrintable("origin at " + where));
-        QVERIFY2(dist(g.geometry.a, w.a) < kTol && dist(g.geometry.b, w.b) < kTol, qPrintable("ends at " + where));
-        QCOMPARE(g.geometry.arc, w.centre.has_value());
-        if (w.centre) QVERIFY2(dist(g.geometry.centre, *w.centre) < kTol, qPrintable("centre at " + where));
-    }
-}
-
-const FieldProblem* problemOn(const std::vector<FieldProblem>& ps, const std::string& field)
-{
-    for (const auto& p : ps)
-        if (p.field == field) return &p;
-    return nullptr;
-}
-
-}  // namespace
+using namespace taiwa::test;
 
 class TestGrindingAllowance : public QObject {
     Q_OBJECT
@@ -265,109 +178,6 @@ private slots:
         QCOMPARE(d.profile.rows[0].end.joint, Joint::BothSet);
         QCOMPARE(d.profile.rows[1].start.joint, Joint::BothSet);
         QCOMPARE(d.profile.rows[0].start.joint, Joint::FreeEnd);
-    }
-
-    // Lateral groove identified automatically: E2 runs along the axis, E3 is
-    // not ground. Width 2, depth = the allowance 0.3, at the corner
-    // (-50, 20.3): top from there to (-47.7, 20.3), bottom (-48, 20) to
-    // (-50, 20); the groove's wall at Z-50 lies on E3, which goes on up.
-    void lateralGrooveIdentified()
-    {
-        TurnedProfile p = steppedShaft();
-        p.allowances = {row("E2", 0.3)};
-        p.allowances[0].grooveWidth = 2.0;
-        const Deformation d = deform(p);
-        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
-                        {"E2.start", Origin::Side, {0, 20}, {0, 20.3}},
-                        {"E2.moved", Origin::Moved, {0, 20.3}, {-47.7, 20.3}},
-                        {"E2.groove1", Origin::Groove, {-47.7, 20.3}, {-48, 20}},
-                        {"E2.groove2", Origin::Groove, {-48, 20}, {-50, 20}},
-                        {"E3", Origin::Original, {-50, 20}, {-50, 30}},
-                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
-        const auto& g = d.profile.rows[0].end.groove;
-        QVERIFY(g);
-        QCOMPARE(g->kind, GrooveKind::Lateral);
-        QVERIFY(g->identified);
-        QCOMPARE(g->rule, std::string("E2 runs along the spindle axis"));
-        QCOMPARE(g->depth, 0.3);
-    }
-
-    // Longitudinal groove identified automatically: only the shoulder face E3
-    // (square to the axis) is ground, 0.2, groove width 1. The moved face
-    // z = -49.8 meets E2 at (-49.8, 20); the groove is cut into the face:
-    // bottom Z-50 from r 20 to 21, top at the face from r 20 to 21.2.
-    void longitudinalGrooveIdentified()
-    {
-        TurnedProfile p = steppedShaft();
-        p.allowances = {row("E3", 0.2)};
-        p.allowances[0].grooveWidth = 1.0;
-        const Deformation d = deform(p);
-        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
-                        {"E2", Origin::Original, {0, 20}, {-50, 20}},
-                        {"E3.groove1", Origin::Groove, {-50, 20}, {-50, 21}},
-                        {"E3.groove2", Origin::Groove, {-50, 21}, {-49.8, 21.2}},
-                        {"E3.moved", Origin::Moved, {-49.8, 21.2}, {-49.8, 30}},
-                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
-                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
-        const auto& g = d.profile.rows[0].start.groove;
-        QVERIFY(g);
-        QCOMPARE(g->kind, GrooveKind::Longitudinal);
-        QCOMPARE(g->rule, std::string("E3 is square to the spindle axis"));
-    }
-
-    // Ring groove identified automatically: E2 (0.3, groove width 1.5) and
-    // the shoulder E3 (0.2) both ground. The moved edges meet at
-    // (-49.8, 20.3); the lateral part (1.5 + 0.3 along the cylinder), the
-    // longitudinal part (into the face) and the corner between them come off.
-    void ringGrooveIdentifiedWhenTheNeighbourIsGround()
-    {
-        TurnedProfile p = steppedShaft();
-        p.allowances = {row("E2", 0.3), row("E3", 0.2)};
-        p.allowances[0].grooveWidth = 1.5;
-        const Deformation d = deform(p);
-        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
-                        {"E2.start", Origin::Side, {0, 20}, {0, 20.3}},
-                        {"E2.moved", Origin::Moved, {0, 20.3}, {-48, 20.3}},
-                        {"E2.groove1", Origin::Groove, {-48, 20.3}, {-48.3, 20}},
-                        {"E2.groove2", Origin::Groove, {-48.3, 20}, {-50.1, 20}},
-                        {"E2.groove3", Origin::Groove, {-50.1, 20}, {-50.1, 21.8}},
-                        {"E2.groove4", Origin::Groove, {-50.1, 21.8}, {-49.8, 22.1}},
-                        {"E3.moved", Origin::Moved, {-49.8, 22.1}, {-49.8, 30}},
-                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
-                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
-        const auto& g = d.profile.rows[0].end.groove;
-        QVERIFY(g);
-        QCOMPARE(g->kind, GrooveKind::Ring);
-        QCOMPARE(g->rule, std::string("the neighbour E3 is ground too"));
-        QCOMPARE(g->inEdge, std::string("E2, E3"));
-    }
-
-    // A kind typed overrides the rules: a lateral groove asked for on the
-    // shoulder face goes into the cylinder E2 (the edge along the axis at
-    // that corner), depth 0.5 typed: from the corner (-49.8, 20) along E2.
-    void typedKindIsKept()
-    {
-        TurnedProfile p = steppedShaft();
-        p.allowances = {row("E3", 0.2)};
-        p.allowances[0].groove = GrooveKind::Lateral;
-        p.allowances[0].grooveWidth = 1.0;
-        p.allowances[0].grooveDepth = 0.5;
-        const Deformation d = deform(p);
-        QVERIFY(d.ok());
-        const auto& g = d.profile.rows[0].start.groove;
-        QVERIFY(g && !g->identified);
-        QCOMPARE(g->kind, GrooveKind::Lateral);
-        QCOMPARE(g->inEdge, std::string("E2"));
-        // E2 now ends where the groove starts, 1.5 before the corner; the
-        // groove drops to r 19.5 and runs back to the moved face.
-        expectChain(d, {{"E1", Origin::Original, {0, 0}, {0, 20}},
-                        {"E2", Origin::Original, {0, 20}, {-48.3, 20}},
-                        {"E3.groove1", Origin::Groove, {-48.3, 20}, {-48.8, 19.5}},
-                        {"E3.groove2", Origin::Groove, {-48.8, 19.5}, {-49.8, 19.5}},
-                        {"E3.groove3", Origin::Groove, {-49.8, 19.5}, {-49.8, 20}},
-                        {"E3.moved", Origin::Moved, {-49.8, 20}, {-49.8, 30}},
-                        {"E3.end", Origin::Side, {-49.8, 30}, {-50, 30}},
-                        {"E4", Origin::Original, {-50, 30}, {-80, 30}}});
     }
 
     // An arc moves concentrically. A ball end: E1 is the quarter circle R10

@@ -1,7 +1,7 @@
 // Booleans of half-section loops with OpenCASCADE (profile_boolean.h): each
 // loop becomes a planar face in the XY plane (x = z, y = r), the faces are
-// fused and cut with BRepAlgoAPI, and the edges of the result that bound
-// exactly one face are read back as lines and arcs.
+// fused, cut and fused again with BRepAlgoAPI, and the edges of the result
+// that bound exactly one face are read back as lines and arcs.
 #include "occt/profile_boolean.h"
 
 #include "model/turned_geometry.h"
@@ -89,11 +89,13 @@ Segment toSegment(const TopoDS_Edge& edge)
     return s;
 }
 
-TopoDS_Shape fuseAll(const std::vector<Loop>& loops)
+// The loops united, after `first` when it is given.
+TopoDS_Shape fuseAll(const std::vector<Loop>& loops, const TopoDS_Shape* first = nullptr)
 {
     TopTools_ListOfShape args, tools;
-    for (std::size_t i = 0; i < loops.size(); ++i) (i == 0 ? args : tools).Append(makeFace(loops[i]));
-    if (loops.size() == 1) return args.First();
+    if (first) args.Append(*first);
+    for (const Loop& l : loops) (args.IsEmpty() ? args : tools).Append(makeFace(l));
+    if (tools.IsEmpty()) return args.First();
     BRepAlgoAPI_Fuse fuse;
     fuse.SetArguments(args);
     fuse.SetTools(tools);
@@ -105,10 +107,11 @@ TopoDS_Shape fuseAll(const std::vector<Loop>& loops)
 
 }  // namespace
 
-Result<std::vector<Loop>> regionBoundary(const std::vector<Loop>& add, const std::vector<Loop>& cut)
+Result<std::vector<Loop>> regionBoundary(const std::vector<Loop>& add, const std::vector<Loop>& cut,
+                                         const std::vector<Loop>& keep)
 {
     try {
-        if (add.empty()) return std::vector<Loop>{};
+        if (add.empty()) return keep.empty() ? std::vector<Loop>{} : regionBoundary(keep, {});
         TopoDS_Shape shape = fuseAll(add);
         if (!cut.empty()) {
             TopTools_ListOfShape args, tools;
@@ -121,6 +124,10 @@ Result<std::vector<Loop>> regionBoundary(const std::vector<Loop>& add, const std
             c.Build();
             if (!c.IsDone() || c.HasErrors()) throw Standard_Failure("OpenCASCADE could not cut the grooves");
             shape = c.Shape();
+        }
+        if (!keep.empty()) {
+            const bool anyLeft = TopExp_Explorer(shape, TopAbs_FACE).More();
+            shape = anyLeft ? fuseAll(keep, &shape) : fuseAll(keep);
         }
         // Edges bounding exactly one face bound the region.
         TopTools_IndexedDataMapOfShapeListOfShape facesOf;

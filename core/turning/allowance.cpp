@@ -1,6 +1,7 @@
 // The grinding allowance (allowance.h): applyAllowances and the deformer's
 // run (allowance_deformer.h): rows mapped to edges, shapes united, the
-// deformed chain read back. Each row's shape and grooves: allowance_shapes.cpp.
+// deformed chain read back. Each row's shape: allowance_shapes.cpp; its
+// relief grooves: allowance_grooves.cpp.
 #include "turning/allowance_deformer.h"
 
 namespace taiwa::turning::deform {
@@ -88,9 +89,11 @@ void Deformer::mapRows()
 // the curve it lies on.
 void Deformer::readBack()
 {
+    // The grooves come off the allowance shapes only, never off the part
+    // (seed 001: the groove shape is subtracted from the allowance shape).
     std::vector<Loop> add{part_};
     for (const Loop& s : shapes_) add.push_back(s);
-    auto boundary = regionBoundary(add, cuts_);
+    auto boundary = cuts_.empty() ? regionBoundary(add, {}) : regionBoundary(shapes_, cuts_, {part_});
     // Problems of the union as a whole are the table's, not one row's.
     if (!boundary) {
         out_.problems.push_back({"allowances", boundary.error()});

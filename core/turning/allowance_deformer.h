@@ -1,6 +1,7 @@
 // The grinding allowance's deformer (allowance.cpp runs it): the profile's
-// edges mapped to the allowance rows, each row's allowance shape and relief
-// grooves (allowance_shapes.cpp), their union, and the deformed chain read
+// edges mapped to the allowance rows, each row's allowance shape
+// (allowance_shapes.cpp) and relief grooves (allowance_grooves.cpp), the
+// shapes less the grooves united with the part, and the deformed chain read
 // back with each piece's origin. Internal to core/turning.
 #pragma once
 

@@ -1,6 +1,6 @@
 // The grinding allowance's shapes per row (allowance_deformer.h): where a
-// picked edge's allowance starts and ends at each of its ends, the shape
-// laid on it, and the relief groove cut at a concave corner.
+// picked edge's allowance starts and ends at each of its ends and the shape
+// laid on it. The relief grooves at its concave corners: allowance_grooves.cpp.
 #include "turning/allowance_deformer.h"
 
 namespace taiwa::turning::deform {
@@ -192,118 +192,6 @@ void Deformer::shapeOf(std::size_t k)
     groove(k, i, true, s, oc.start, movedEdge);
     groove(k, i, false, e, oc.end, movedEdge);
     out_.profile.rows.push_back(oc);
-}
-
-void Deformer::groove(std::size_t k, int i, bool atStart, const End& end, EndOutcome& oc, const Segment& movedEdge)
-{
-    if (!end.grooveCorner) return;
-    const AllowanceRow& row = rows_[k];
-    if (row.groove == GrooveKind::None) {
-        oc.grooveNote = "none asked for";
-        return;
-    }
-    if (!row.grooveWidth) {
-        oc.grooveNote = "none: no groove width given";
-        return;
-    }
-    const Edge& pe = p_.edges[i];
-    const Edge& ne = p_.edges[end.neighbour];
-    const bool neighbourGround = edgeRow_[end.neighbour] >= 0;
-    GrooveMade g;
-    g.width = *row.grooveWidth;
-    g.depth = row.grooveDepth.value_or(row.allowance);
-    g.corner = *end.grooveCorner;
-    // Directions along each edge away from the corner, and into the part.
-    const ZR uP = atStart ? tangentAtStart(pe.geometry) : -1.0 * tangentAtEnd(pe.geometry);
-    const ZR uN = atStart ? -1.0 * tangentAtEnd(ne.geometry) : tangentAtStart(ne.geometry);
-    const ZR v = atStart ? pe.geometry.a : pe.geometry.b;
-    const ZR mP = -1.0 * outward(pe.geometry, v), mN = -1.0 * outward(ne.geometry, v);
-    const bool pAxial = std::abs(uP.z) >= std::abs(uN.z);
-    g.kind = row.groove;
-    if (g.kind == GrooveKind::Auto) {
-        g.identified = true;
-        if (neighbourGround) {
-            g.kind = GrooveKind::Ring;
-            g.rule = "the neighbour " + ne.id + " is ground too";
-        } else if (std::abs(uP.r) < 1e-9) {
-            g.kind = GrooveKind::Lateral;
-            g.rule = pe.id + " runs along the spindle axis";
-        } else if (std::abs(uP.z) < 1e-9) {
-            g.kind = GrooveKind::Longitudinal;
-            g.rule = pe.id + " is square to the spindle axis";
-        } else {
-            g.kind = std::abs(uP.z) >= std::abs(uP.r) ? GrooveKind::Lateral : GrooveKind::Longitudinal;
-            g.rule = pe.id + (g.kind == GrooveKind::Lateral ? " is nearer to the axis direction"
-                                                            : " is nearer to square to the axis");
-        }
-    }
-    struct Frame {
-        const Edge* edge;
-        ZR u, m;
-        double room;
-    };
-    const Frame fp{&pe, uP, mP, length(movedEdge)};
-    const Frame fn{&ne, uN, mN, neighbourGround ? length(ne.geometry) : dist(*end.grooveCorner, atStart ? ne.geometry.a : ne.geometry.b)};
-    const Frame& axial = pAxial ? fp : fn;
-    const Frame& radial = pAxial ? fn : fp;
-    std::vector<const Frame*> frames;
-    if (g.kind == GrooveKind::Lateral || g.kind == GrooveKind::Ring) frames.push_back(&axial);
-    if (g.kind == GrooveKind::Longitudinal || g.kind == GrooveKind::Ring) frames.push_back(&radial);
-    const ZR q = g.corner;
-    const double w = g.width, d = g.depth;
-    std::vector<Loop> loops;
-    for (const Frame* f : frames) {
-        if (w + d > f->room + kPointTol) {
-            problem(k, "grooveWidth",
-                    fmt::format(TAIWA_TRANSLATE_NOOP(
-                                    "taiwa::msg", "allowance row {}: a {} groove {} wide and {} deep takes {} of "
-                                                  "{}, which is {} long"),
-                                k + 1, toKey(g.kind), len(w), len(d), len(w + d), f->edge->id, len(f->room)));
-            return;
-        }
-        const ZR p1 = q + (w + d) * f->u, p2 = q + w * f->u + d * f->m, p3 = q + d * f->m;
-        loops.push_back({lineSegment(q, p1), lineSegment(p1, p2), lineSegment(p2, p3), lineSegment(p3, q)});
-        g.inEdge += (g.inEdge.empty() ? "" : ", ") + f->edge->id;
-    }
-    if (g.kind == GrooveKind::Ring) {
-        const ZR c1 = q + d * axial.m, c2 = q + d * axial.m + d * radial.m, c3 = q + d * radial.m;
-        loops.push_back({lineSegment(q, c1), lineSegment(c1, c2), lineSegment(c2, c3), lineSegment(c3, q)});
-    }
-    // The groove must stay inside the part: no edge of the profile but the
-    // two at its corner may be reached, nor the axis.
-    for (const Loop& l : loops)
-        for (const Segment& s : l) {
-            for (std::size_t j = 0; j < p_.edges.size(); ++j) {
-                const int ji = static_cast<int>(j);
-                if (ji == i || ji == end.neighbour) continue;
-                if (!crossings(s, p_.edges[j].geometry).empty()) {
-                    problem(k, "grooveDepth",
-                            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                                                             "allowance row {}: a groove {} deep at {} reaches {}; "
-                                                             "it is deeper than the part allows"),
-                                        k + 1, len(d), pe.id, p_.edges[j].id));
-                    return;
-                }
-            }
-            if (p_.side == ProfileSide::Outer && std::min(s.a.r, s.b.r) < kPointTol) {
-                problem(k, "grooveDepth",
-                        fmt::format(TAIWA_TRANSLATE_NOOP(
-                                        "taiwa::msg", "allowance row {}: a groove {} deep at {} reaches the axis; "
-                                                      "it is deeper than the part allows"),
-                                    k + 1, len(d), pe.id));
-                return;
-            }
-        }
-    const int n = static_cast<int>(std::count_if(sources_.begin(), sources_.end(),
-                                                 [&](const Source& s) { return s.origin == Origin::Groove && s.from == pe.id; }));
-    int made = 0;
-    for (const Loop& l : loops) {
-        cuts_.push_back(l);
-        for (const Segment& s : l)
-            grooveSources_.push_back({s, Origin::Groove, pe.id, fmt::format("{}.groove{}", pe.id, n + ++made),
-                                      static_cast<int>(k), {}});
-    }
-    oc.groove = g;
 }
 
 }  // namespace taiwa::turning::deform

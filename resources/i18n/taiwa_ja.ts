@@ -4317,6 +4317,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>内部エラー: 変形した形状の Z{} X{} の部分がどの要素にも乗っていません。このジョブを報告してください</translation>
         </message>
         <message>
+            <source>allowance row {}: a {} groove at the corner of {} and {} would lie in {}, which has no grinding allowance; a relief groove only takes allowance off</source>
+            <translation>取り代の行 {0}: {2} と {3} の角の{1}溝は研削取り代のない {4} に入ります。逃げ溝は取り代だけを削ります</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
+            <translation>取り代の行 {0}: 幅 {2}、深さ {3} の{1}溝が長さ {6} の {5} のうち {4} を占めます</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
+            <translation>取り代の行 {0}: {2} の深さ {1} の溝が軸に達します。部品が許すより深くなっています</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
+            <translation>取り代の行 {0}: {2} の深さ {1} の溝が {3} に達します。部品が許すより深くなっています</translation>
+        </message>
+        <message>
             <source>allowance row {}: the moved {} and the moved {} do not meet</source>
             <translation>取り代の行 {}: 移動した {} と移動した {} が交わりません</translation>
         </message>
@@ -4351,18 +4367,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>allowance row {}: an allowance of {} moves {} past the axis</source>
             <translation>取り代の行 {}: 取り代 {} で {} が軸を越えます</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
-            <translation>取り代の行 {0}: 幅 {2}、深さ {3} の{1}溝が長さ {6} の {5} のうち {4} を占めます</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
-            <translation>取り代の行 {0}: {2} の深さ {1} の溝が {3} に達します。部品が許すより深くなっています</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
-            <translation>取り代の行 {0}: {2} の深さ {1} の溝が軸に達します。部品が許すより深くなっています</translation>
         </message>
         <message>
             <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>

@@ -4317,6 +4317,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>内部错误：变形轮廓在 Z{} X{} 处的一段不在任何边上；请报告此作业</translation>
         </message>
         <message>
+            <source>allowance row {}: a {} groove at the corner of {} and {} would lie in {}, which has no grinding allowance; a relief groove only takes allowance off</source>
+            <translation>余量行 {0}：位于 {2} 与 {3} 转角处的{1}槽将落在没有磨削余量的 {4} 上；退刀槽只去除余量</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
+            <translation>余量行 {0}：宽 {2}、深 {3} 的{1}槽占去长 {6} 的 {5} 中的 {4}</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
+            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到轴线；比零件允许的更深</translation>
+        </message>
+        <message>
+            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
+            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到 {3}；比零件允许的更深</translation>
+        </message>
+        <message>
             <source>allowance row {}: the moved {} and the moved {} do not meet</source>
             <translation>余量行 {}：偏移后的 {} 与偏移后的 {} 不相交</translation>
         </message>
@@ -4351,18 +4367,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>allowance row {}: an allowance of {} moves {} past the axis</source>
             <translation>余量行 {}：余量 {} 使 {} 越过轴线</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a {} groove {} wide and {} deep takes {} of {}, which is {} long</source>
-            <translation>余量行 {0}：宽 {2}、深 {3} 的{1}槽占去长 {6} 的 {5} 中的 {4}</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a groove {} deep at {} reaches {}; it is deeper than the part allows</source>
-            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到 {3}；比零件允许的更深</translation>
-        </message>
-        <message>
-            <source>allowance row {}: a groove {} deep at {} reaches the axis; it is deeper than the part allows</source>
-            <translation>余量行 {0}：位于 {2} 的深 {1} 的槽达到轴线；比零件允许的更深</translation>
         </message>
         <message>
             <source>row {} has the edge id {}, which is not a positive number of its own; every row needs one</source>

@@ -1,0 +1,89 @@
+// Generated turned profiles as lathe jobs, planned and verified, and the
+// counts of a run (turned_generator.h: PlanCheck, PlanTally).
+#include "support/turned_generator.h"
+
+#include "model/turned_geometry.h"
+#include "modules/turn/turn.h"
+#include "pipeline/pipeline.h"
+#include "tools/tool_library.h"
+#include "turning/profile_resolve.h"
+#include "verify/verify.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace taiwa::test {
+
+using namespace turning;
+
+PlanCheck planAndVerify(const GeneratedProfile& g)
+{
+    PlanCheck out;
+    const Resolution r = resolveProfile(g.profile);
+    double rMax = 0.0, zMin = 0.0;
+    for (const Edge& e : r.profile.edges) {
+        const Segment& s = e.geometry;
+        rMax = std::max({rMax, s.a.r, s.b.r, s.arc ? s.centre.r + s.radius : 0.0});
+        zMin = std::min({zMin, s.a.z, s.b.z, s.arc ? s.centre.z - s.radius : 0.0});
+    }
+    Job job;
+    job.name = fmt::format("generated {}", g.seed);
+    job.machine = "lathe";
+    job.material = "steel-s45c";
+    const double over = g.profile.side == ProfileSide::Outer ? 3.0 : 12.0;
+    job.bar = BarStock{std::ceil(2.0 * rMax + over), std::ceil(-zMin) + 30.0, 1.0, 0.0};
+    TurnUnit unit;
+    unit.profile = g.profile;
+    job.units.push_back({"generated", unit, {}});
+    const Plan plan = planJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+    if (!plan.ok()) {
+        for (const Diagnostic& d : plan.diagnostics)
+            if (d.severity == Severity::Error) {
+                const auto dot = d.field.rfind('.');
+                out.refusedOn = dot == std::string::npos ? d.field : d.field.substr(dot + 1);
+                out.refusal = d.message;
+                break;
+            }
+        return out;
+    }
+    out.planned = true;
+    const verify::Report report = verify::verifyPlan(plan);
+    for (const verify::Finding& f : report.findings) {
+        if (++out.findings[verify::toKey(f.kind)] == 1 && out.first.empty()) out.first = verify::describe(f, plan);
+    }
+    return out;
+}
+
+void PlanTally::add(std::uint64_t seed, const PlanCheck& c)
+{
+    ++profiles;
+    if (!c.planned) {
+        ++refusedOn[c.refusedOn];
+        return;
+    }
+    ++planned;
+    if (c.findings.empty()) ++clean;
+    for (const auto& [kind, n] : c.findings) {
+        ++withFinding[kind];
+        auto& s = seeds[kind];
+        if (s.size() < 5) s.push_back(seed);
+        if (!example.count(kind)) example[kind] = c.first;
+    }
+}
+
+std::string PlanTally::summary() const
+{
+    std::string refused, found;
+    for (const auto& [k, n] : refusedOn) refused += fmt::format("{}{} {}", refused.empty() ? "" : ", ", n, k);
+    for (const auto& [k, n] : withFinding) {
+        std::string list;
+        for (std::uint64_t s : seeds.at(k)) list += fmt::format("{}{}", list.empty() ? "" : " ", s);
+        found += fmt::format("\n  {} profiles with {} (seeds {}; e.g. {})", n, k, list, example.at(k));
+    }
+    return fmt::format("{} profiles: {} planned ({} verified clean), {} refused by the planner ({}){}", profiles, planned,
+                       clean, profiles - planned, refused.empty() ? "none" : refused, found);
+}
+
+}  // namespace taiwa::test
