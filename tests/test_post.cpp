@@ -91,7 +91,7 @@ const char* const kSinumerikDemo =
     "N10 G17 G710 G40 G90 G94\n"
     "N20 G641 ADIS=0.01\n"
     "; STEP 1: UNIT 1 M4 PILOT HOLE T5\n"
-    "N30 G0 SUPA Z0\n"
+    "N30 G0 SUPA Z0 D0\n"
     "N40 T5 M6\n"
     "N50 D1\n"
     "N60 S1000 M3\n"
@@ -106,7 +106,7 @@ const char* const kSinumerikDemo =
     "; STEP 2: UNIT 1 M4 ROUGHING I T12\n"
     "N150 M9\n"
     "N160 M5\n"
-    "N170 G0 SUPA Z0\n"
+    "N170 G0 SUPA Z0 D0\n"
     "N180 T12 M6\n"
     "N190 D1\n"
     "N200 S1000 M3\n"
@@ -121,7 +121,7 @@ const char* const kSinumerikDemo =
     "N290 G0 Z5\n"
     "N300 M9\n"
     "N310 M5\n"
-    "N320 G0 SUPA Z0\n"
+    "N320 G0 SUPA Z0 D0\n"
     "N330 M30\n";
 const char* const kKlartextDemo =
     "0 BEGIN PGM demo MM\n"
