@@ -7,6 +7,7 @@
 #include "post/number_format.h"
 #include "post/post.h"
 #include "post/tape_image.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -615,6 +616,21 @@ private slots:
         const PostedProgram p = postProcess(steps(), library(), o);
         for (const auto& line : lines(p.nc)) QVERIFY2(line.size() <= 128, qPrintable(line));
         QVERIFY(lines(p.nc)[1].startsWith("O1000 (XXXXXXXX"));
+    }
+
+    // Symbols of tool names reach the tape as words the control reads, not
+    // as '?': the lathe header's "95° holder" and "up to Ø50".
+    void commentsSpellSymbolsInAscii()
+    {
+        QCOMPARE(post::commentText("OD roughing CNMG 120408, 95\u00b0 holder", false), std::string("OD roughing CNMG 120408, 95DEG holder"));
+        QCOMPARE(post::commentText("Parting blade 3 mm, up to \u00d850", true), std::string("PARTING BLADE 3 MM, UP TO DIA50"));
+        QCOMPARE(post::commentText("bar \u00f812 \u00b10.01 \u00b5m", false), std::string("bar DIA12 +/-0.01 um"));
+        // Anything else is one '?' per character, and never a byte of UTF-8.
+        QCOMPARE(post::commentText("\u5bfe\u8a71 (T1) 100%", false), std::string("??  T1  100 "));
+        QCOMPARE(post::commentText(std::string("a\xe2\x80"), false), std::string("a?"));  // cut short
+        // Every tool of the default library is named without a '?'.
+        for (const Tool& t : defaultToolLibrary())
+            QVERIFY2(post::commentText(t.name, false).find('?') == std::string::npos, t.name.c_str());
     }
 
     void writerDwellAndOrder()
