@@ -6,6 +6,7 @@
 (T04 = library T104 ID boring DCMT 11T304, bar DIA12 R0.4 orientation 3)
 (T05 = library T102 OD finishing DNMG 150604, 93DEG holder R0.4 orientation 2)
 (T06 = library T106 Parting blade 3 mm, up to DIA50 R0.2 orientation 1)
+(Tool table lathe-bushing.tbl: the stations above with their nose diameters and orientations, in inch)
 G18 G7 G21 G40 G80 G90 G54 G95
 o104 sub
   G0 X38 Z2

@@ -3,6 +3,7 @@
 (T01 = library T101 OD roughing CNMG 120408, 95DEG holder R0.8 orientation 2)
 (T02 = library T102 OD finishing DNMG 150604, 93DEG holder R0.4 orientation 2)
 (T03 = library T106 Parting blade 3 mm, up to DIA50 R0.2 orientation 1)
+(Tool table lathe-tangent-nose.tbl: the stations above with their nose diameters and orientations, in inch)
 G18 G7 G21 G40 G80 G90 G54 G95
 (STEP 1: UNIT 1 "Outside" TURN FACING T101)
 G0 X100 Z51

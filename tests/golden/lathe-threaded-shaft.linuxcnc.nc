@@ -5,6 +5,7 @@
 (T03 = library T105 Grooving blade 3 mm, depth 15 R0.2 orientation 1)
 (T04 = library T107 Threading 60DEG external, pitch 0.5-3 R0.05 orientation 2)
 (T05 = library T106 Parting blade 3 mm, up to DIA50 R0.2 orientation 1)
+(Tool table lathe-threaded-shaft.tbl: the stations above with their nose diameters and orientations, in inch)
 G18 G7 G21 G40 G80 G90 G54 G95
 (STEP 1: UNIT 1 "Outside" TURN FACING T101)
 G0 X82 Z51
