@@ -58,7 +58,8 @@ Usage:
                                    sinumerik, .h for heidenhain), STEM.tape.txt,
                                    STEM.sheet.html, STEM.sheet.pdf and
                                    STEM.steps.json into DIR (and each probing
-                                   unit's programs); the dialect (--list-dialects):
+                                   unit's programs, and a linuxcnc lathe tape's
+                                   tool table STEM.tbl); the dialect (--list-dialects):
                                    --dialect, else the job's, else linuxcnc;
                                    verifies first (--resolution) and writes
                                    nothing when a gouge, collision or travel

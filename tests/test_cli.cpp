@@ -474,7 +474,8 @@ private slots:
     }
 
     // A lathe job exports the five files: the lathe tape (G18, diameters,
-    // feed per revolution) beside the sheet and steps.json with the profile.
+    // feed per revolution) beside the sheet and steps.json with the profile;
+    // for LinuxCNC (the default dialect) a sixth, the tape's tool table.
     void latheExportWritesTheLatheTape()
     {
         QTemporaryDir dir;
@@ -482,7 +483,7 @@ private slots:
         const auto r = runTaiwa({"export", sourcePath("resources/samples/lathe-shaft-grinding.taiwa"), "--out", out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList expected{"lathe-shaft-grinding.nc", "lathe-shaft-grinding.sheet.html", "lathe-shaft-grinding.sheet.pdf",
-                                   "lathe-shaft-grinding.steps.json", "lathe-shaft-grinding.tape.txt"};
+                                   "lathe-shaft-grinding.steps.json", "lathe-shaft-grinding.tape.txt", "lathe-shaft-grinding.tbl"};
         QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name), expected);
         const std::string nc = readFile(QDir(out).filePath("lathe-shaft-grinding.nc"));
         QVERIFY(nc.find("G18 G7 G21 G40 G80 G90 G54 G95") != std::string::npos);

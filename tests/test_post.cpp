@@ -7,6 +7,7 @@
 #include "post/number_format.h"
 #include "post/post.h"
 #include "post/tape_image.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -91,7 +92,7 @@ const char* const kSinumerikDemo =
     "N10 G17 G710 G40 G90 G94\n"
     "N20 G641 ADIS=0.01\n"
     "; STEP 1: UNIT 1 M4 PILOT HOLE T5\n"
-    "N30 G0 SUPA Z0\n"
+    "N30 G0 SUPA Z0 D0\n"
     "N40 T5 M6\n"
     "N50 D1\n"
     "N60 S1000 M3\n"
@@ -106,7 +107,7 @@ const char* const kSinumerikDemo =
     "; STEP 2: UNIT 1 M4 ROUGHING I T12\n"
     "N150 M9\n"
     "N160 M5\n"
-    "N170 G0 SUPA Z0\n"
+    "N170 G0 SUPA Z0 D0\n"
     "N180 T12 M6\n"
     "N190 D1\n"
     "N200 S1000 M3\n"
@@ -121,7 +122,7 @@ const char* const kSinumerikDemo =
     "N290 G0 Z5\n"
     "N300 M9\n"
     "N310 M5\n"
-    "N320 G0 SUPA Z0\n"
+    "N320 G0 SUPA Z0 D0\n"
     "N330 M30\n";
 const char* const kKlartextDemo =
     "0 BEGIN PGM demo MM\n"
@@ -615,6 +616,21 @@ private slots:
         const PostedProgram p = postProcess(steps(), library(), o);
         for (const auto& line : lines(p.nc)) QVERIFY2(line.size() <= 128, qPrintable(line));
         QVERIFY(lines(p.nc)[1].startsWith("O1000 (XXXXXXXX"));
+    }
+
+    // Symbols of tool names reach the tape as words the control reads, not
+    // as '?': the lathe header's "95° holder" and "up to Ø50".
+    void commentsSpellSymbolsInAscii()
+    {
+        QCOMPARE(post::commentText("OD roughing CNMG 120408, 95\u00b0 holder", false), std::string("OD roughing CNMG 120408, 95DEG holder"));
+        QCOMPARE(post::commentText("Parting blade 3 mm, up to \u00d850", true), std::string("PARTING BLADE 3 MM, UP TO DIA50"));
+        QCOMPARE(post::commentText("bar \u00f812 \u00b10.01 \u00b5m", false), std::string("bar DIA12 +/-0.01 um"));
+        // Anything else is one '?' per character, and never a byte of UTF-8.
+        QCOMPARE(post::commentText("\u5bfe\u8a71 (T1) 100%", false), std::string("??  T1  100 "));
+        QCOMPARE(post::commentText(std::string("a\xe2\x80"), false), std::string("a?"));  // cut short
+        // Every tool of the default library is named without a '?'.
+        for (const Tool& t : defaultToolLibrary())
+            QVERIFY2(post::commentText(t.name, false).find('?') == std::string::npos, t.name.c_str());
     }
 
     void writerDwellAndOrder()

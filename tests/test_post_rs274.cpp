@@ -15,6 +15,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 using namespace taiwa;
@@ -190,6 +191,64 @@ QString disagreement(const Rs274Result& r, const std::vector<Step>& steps, const
     return {};
 }
 
+// A tool table with real lengths, in inches as rs274 reads it: T3 2.5 in
+// (63.5 mm), T7 3 in, T21 3.5 in, the diameters of library().
+const std::map<int, double> kLengthsInch{{3, 2.5}, {7, 3.0}, {21, 3.5}};
+
+std::string tableWithLengths()
+{
+    std::string t;
+    for (const Tool& tool : library())
+        t += "T" + std::to_string(tool.id) + " P" + std::to_string(tool.id) + " D" + std::to_string(tool.diameter / 25.4) + " Z+" +
+             std::to_string(kLengthsInch.at(tool.id)) + "\n";
+    return t;
+}
+
+// Where the spindle nose (the tool's length taken off the tip) is in machine
+// Z at the end of each move: program Z + G54's Z (params.var: -100 mm) + the
+// length in force (that of the tool in the spindle at the last G43, which
+// rs274 prints as USE_TOOL_LENGTH_OFFSET). The machine retract must put it
+// at machine Z0 for every tool, and no move may go above it. Returns the
+// first complaint, or empty.
+QString retractProblem(const Rs274Result& r)
+{
+    const double k = r.inches ? 1.0 : 25.4;  // inch to the program's units
+    const double tol = r.inches ? 1.5e-4 : 1.5e-3;
+    // The tool whose length is in force at each move, from the canonical calls in order.
+    std::vector<int> lengthOf;
+    int selected = 0, spindle = 0, inForce = 0;
+    for (const QString& line : r.canon) {
+        const QString name = line.section('(', 0, 0).section(' ', -1);
+        const QString args = line.section('(', 1).chopped(1);
+        if (name == "SELECT_TOOL") selected = args.toInt();
+        else if (name == "CHANGE_TOOL") spindle = selected;
+        else if (name == "USE_TOOL_LENGTH_OFFSET") inForce = args.section(',', 0, 0).simplified().section(' ', 2, 2).toDouble() == 0 ? 0 : spindle;
+        else if (name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED" || name == "ARC_FEED") lengthOf.push_back(inForce);
+    }
+    if (lengthOf.size() != r.moves.size()) return QString("%1 moves in the canonical calls, %2 read").arg(lengthOf.size()).arg(r.moves.size());
+    const auto nose = [&](std::size_t i) {
+        return r.moves[i].end.z - 3.937008 * k + (lengthOf[i] == 0 ? 0.0 : kLengthsInch.at(lengthOf[i]) * k);
+    };
+    for (std::size_t i = 0; i < r.moves.size(); ++i)
+        if (nose(i) > tol)
+            return QString("move %1: the spindle nose at machine Z %2, above machine zero (T%3 in the spindle)").arg(i).arg(nose(i)).arg(r.moves[i].tool);
+    for (const auto& [tool, length] : kLengthsInch) {
+        // The last move with the tool in the spindle: the retract before the next change, or the program's end.
+        std::size_t last = r.moves.size();
+        for (std::size_t i = 0; i < r.moves.size(); ++i)
+            if (r.moves[i].tool == tool) last = i;
+        if (last == r.moves.size()) return QString("T%1 never in the spindle").arg(tool);
+        if (lengthOf[last] != tool) return QString("T%1 leaves without its length in force").arg(tool);
+        if (r.moves[last].kind != CanonMove::Traverse || std::abs(nose(last)) > tol)
+            return QString("T%1 (length %2 in) leaves with its spindle nose at machine Z %3, not 0 (program Z %4)")
+                .arg(tool)
+                .arg(length)
+                .arg(nose(last))
+                .arg(r.moves[last].end.z);
+    }
+    return {};
+}
+
 }  // namespace
 
 class TestPostRs274 : public QObject {
@@ -206,6 +265,45 @@ private slots:
         const auto feed = std::find_if(r.moves.rbegin(), r.moves.rend(), [](const auto& m) { return m.kind == CanonMove::Feed; });
         QVERIFY(feed != r.moves.rend());
         QVERIFY2(std::abs(feed->end.y - 15.0) < 1e-3, qPrintable(r.canon.join('\n')));
+    }
+
+    // The machine retract with a tool's length in force (docs/post-processors.md,
+    // "The retract and the tool's length"): LinuxCNC's G53 and G28 take the
+    // length off (interp_find.cc, find_ends and find_relative), so the
+    // spindle nose, not the tool tip, goes to machine Z0 whatever the tool;
+    // the cuts are where they were. A retract in work coordinates instead
+    // (G0 Z100, the same place only with a zero length) is caught.
+    void retractWithToolLengths_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<bool>("inch");
+        for (const char* d : {"linuxcnc", "fanuc"})
+            for (const bool inch : {false, true}) QTest::newRow(qPrintable(QString(d) + (inch ? "/inch" : "/mm"))) << QString(d) << inch;
+    }
+    void retractWithToolLengths()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(bool, inch);
+        PostOptions o;
+        o.dialect = dialect.toStdString();
+        o.units = inch ? LengthUnit::Inch : LengthUnit::Millimetre;
+        o.material = "aluminium-6061";
+        const PostedProgram p = postProcess(job(), library(), o);
+        const Rs274Result r = runRs274(p.nc, tableWithLengths());
+        QVERIFY2(r.ok, qPrintable(r.errors));
+        const QString d = disagreement(r, job(), library(), o.units);
+        QVERIFY2(d.isEmpty(), qPrintable(d));
+        const QString problem = retractProblem(r);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem + "\n" + r.canon.join('\n')));
+
+        // The check can fail: the same tape retracting in work coordinates.
+        QString wrong = QString::fromStdString(p.nc);
+        const QString retract = dialect == "fanuc" ? "G91 G28 Z0." : "G53 G0 Z0";
+        QVERIFY(wrong.contains(retract));
+        wrong.replace(retract, inch ? "G0 Z3.937" : "G0 Z100.");
+        const Rs274Result w = runRs274(wrong.toStdString(), tableWithLengths());
+        QVERIFY2(w.ok, qPrintable(w.errors));
+        QVERIFY(retractProblem(w).contains("above machine zero"));
     }
 
     void tapeReadBackIsOurPath_data()

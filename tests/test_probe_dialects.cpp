@@ -147,6 +147,34 @@ private slots:
         }
         QCOMPARE(iso, 3);
     }
+
+    // A rectangle touched once per side has no rotation measured: its
+    // setting program says so in words that survive a comment (parentheses
+    // inside one become spaces: " not measured " was the tape's text).
+    void settingProgramSaysRotationNotMeasured()
+    {
+        WorkSetup w;
+        w.round = false;
+        w.measured = WorkSetup::Measured{};
+        w.measured->centre = {100, 50};
+        w.measured->width = 60;
+        w.measured->length = 40;
+        w.measured->residuals = {0, 0, 0, 0};
+        for (const char* dialect : {"linuxcnc", "fanuc", "haas"}) {
+            PostOptions o;
+            o.dialect = dialect;
+            const QString text = QString::fromStdString(settingProgram(w, o));
+            QVERIFY2(text.contains("4 touches: 60.0000 x 40.0000 mm, rotation not measured: one touch per side, worst residual",
+                                   Qt::CaseInsensitive),
+                     qPrintable(text));
+            QVERIFY2(!text.contains(" not measured ,"), qPrintable(text));
+            w.measured->rotationMeasured = true;
+            w.measured->rotation = 1.5;
+            QVERIFY2(QString::fromStdString(settingProgram(w, o)).contains("turned 1.5000 deg", Qt::CaseInsensitive), dialect);
+            w.measured->rotationMeasured = false;
+            w.measured->rotation = 0;
+        }
+    }
 };
 
 QTEST_GUILESS_MAIN(TestProbeDialects)

@@ -214,6 +214,30 @@ private slots:
         QCOMPARE(p.point, 4);
         QCOMPARE(p.message, std::string("point 4 coincides with point 2: touch the outline elsewhere"));
     }
+    // Judged at the unit's tolerance, not at 1 µm: two touches 5 µm apart
+    // with a tolerance of 0.01 mm are one point measured twice (the later
+    // one named), on a circle and on a side of a rectangle; 15 µm apart they
+    // are two touches.
+    void touchesWithinTheToleranceCoincide()
+    {
+        auto c = onCircle({0, 0}, 10, false, {0, 90, 180});
+        c.push_back({c[1].at + Point2{0.005, 0}});  // along the outline, 5 µm
+        const auto p = expectProblem(fitCircle(c, {kBall, false, 0.01}));
+        QCOMPARE(p.point, 4);
+        QCOMPARE(p.message, std::string("point 4 coincides with point 2: touch the outline elsewhere"));
+        c.back().at = c[1].at + Point2{0.015, 0};
+        QVERIFY(std::holds_alternative<CircleFit>(fitCircle(c, {kBall, false, 0.01})));
+        // A tolerance of 0.001 mm (the smallest): 5 µm apart are two touches.
+        c.back().at = c[1].at + Point2{0.005, 0};
+        QVERIFY(std::holds_alternative<CircleFit>(fitCircle(c, {kBall, false, 0.001})));
+
+        auto r = onRectangle({0, 0}, 40, 30, 0, false,
+                             {{Side::XMinus, 0}, {Side::XPlus, 0}, {Side::YMinus, -5}, {Side::YPlus, 0}, {Side::YMinus, 5}});
+        r.push_back({r[2].at + Point2{0.005, 0}, Side::YMinus});
+        const auto q = expectProblem(fitRectangle(r, {kBall, false, 0.01}));
+        QCOMPARE(q.point, 6);
+        QCOMPARE(q.message, std::string("point 6 coincides with point 3: touch the outline elsewhere"));
+    }
     void collinearTouches()
     {
         const std::vector<Touch> t{{{0, 0}}, {{10, 5}}, {{20, 10}}};

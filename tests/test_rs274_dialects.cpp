@@ -262,7 +262,7 @@ N210 MCALL
 N215 G1 X50 F150
 N220 G0 Z10
 N230 M5
-N240 G0 SUPA Z0
+N240 G0 SUPA Z0 D0
 N250 M30
 )";
 
@@ -371,6 +371,10 @@ private slots:
         row("sinumerik parenthesis comment", "sinumerik",
             "N150 G4 F0.5", "N150 G4 F0.5 (WAIT)", "'(WAIT)' is not understood");
         row("sinumerik G91", "sinumerik", "N220 G0 Z10", "N220 G91 G0 Z10", "G91 is not understood");
+        // SUPA keeps the tool's length: without D0 the tool tip, not the
+        // spindle, would go to machine Z0 (docs/post-processors.md).
+        row("sinumerik SUPA with D1", "sinumerik", "N240 G0 SUPA Z0 D0", "N240 G0 SUPA Z0", "write D0 in the block");
+        row("sinumerik Z after D0", "sinumerik", "N220 G0 Z10", "N220 G0 Z10 D0", "length offset");
         row("klartext unknown word", "heidenhain", "12 L X+20 F150", "12 L X+20 RL F150", "'RL' is not understood");
         row("klartext unknown block", "heidenhain", "1 ; STEP 1: hand", "1 LBL 1", "block not understood");
         row("klartext block number", "heidenhain", "15 L Z+5", "16 L Z+5", "block number 16, expected 15");
@@ -378,6 +382,10 @@ private slots:
         row("klartext dwell at depth", "heidenhain", "Q211=+0 ;DWELL TIME AT DEPTH", "Q211=+1 ;DWELL TIME AT DEPTH",
             "dwells in cycle 200 are not supported");
         row("klartext no plunging depth", "heidenhain", "Q202=+5", "Q202=+0", "Q202 (plunging depth) must be positive");
+        // A cycle parameter's rapid is MAX on a TNC; FMAX and FAUTO are not values.
+        row("klartext FAUTO", "heidenhain", "Q206=+80", "Q206=FAUTO", "Q206=FAUTO is not a TNC's cycle parameter value");
+        row("klartext FMAX", "heidenhain", "Q206=+80", "Q206=FMAX", "Q206=FMAX is not a TNC's cycle parameter value");
+        row("klartext MAX plunge", "heidenhain", "Q206=+80", "Q206=MAX", "MAX is only a retraction feed");
         row("klartext cycle 203", "heidenhain", "16 CYCL DEF 200 DRILLING ~", "16 CYCL DEF 203 UNIVERSAL DRILLING ~",
             "continuation lines after a block");
         row("klartext continued comment", "heidenhain",

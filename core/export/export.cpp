@@ -11,6 +11,7 @@
 #include "post/dialect.h"
 #include "post/probe_program.h"
 #include "post/post.h"
+#include "post/tool_table.h"
 #include "sheet/sheet.h"
 
 #include <fmt/format.h>
@@ -258,6 +259,9 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     // A lathe job whose steps are all turned off has no tape: its sheet and
     // steps.json hold the profile to cut.
     if (plan.mmJob.bar && plan.steps.empty()) std::erase_if(files, [&](const auto& f) { return f.first == tape || f.first == ".tape.txt"; });
+    // A LinuxCNC lathe tape runs with its tool table (nose radii, orientations): STEM.tbl.
+    else if (plan.mmJob.bar && dialect->syntax == post::Syntax::Iso && dialect->macroSyntax != "fanuc")
+        files.emplace_back(".tbl", linuxcncLatheToolTable(plan.steps, plan.tools, stem));
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
     // STEM.u<unit>.probe.nc, with O-numbers after the tape's.

@@ -21,19 +21,46 @@ namespace {
 enum Axis { X, Y, Z };
 constexpr char kAxisLetter[] = {'X', 'Y', 'Z'};
 
+// What a few symbols of tool names and notes become on a tape: the words a
+// machinist writes for them, in ASCII (0 when there is none: one '?').
+const char* asciiFor(char32_t c)
+{
+    switch (c) {
+    case U'\u00b0': return "DEG";                                    // 95° holder
+    case U'\u00d8': case U'\u00f8': case U'\u2300': return "DIA";  // Ø50, ⌀12
+    case U'\u00b1': return "+/-";
+    case U'\u00d7': return "x";
+    case U'\u00b5': case U'\u03bc': return "u";                     // µm
+    case U'\u2010': case U'\u2011': case U'\u2012': case U'\u2013': case U'\u2014': case U'\u2212': return "-";
+    case U'\u2018': case U'\u2019': case U'\u2032': return "'";
+    case U'\u201c': case U'\u201d': case U'\u2033': return "\"";
+    default: return nullptr;
+    }
+}
+
 }  // namespace
 
 std::string commentText(const std::string& text, bool upper)
 {
     std::string t;
     t.reserve(text.size());
-    for (const char c : text) {
-        const auto u = static_cast<unsigned char>(c);
-        if ((u & 0xc0) == 0x80) continue;  // UTF-8 continuation byte
-        char out = c;
-        if (u >= 0x80) out = '?';
-        else if (c == '(' || c == ')' || c == '%' || u < 0x20 || u == 0x7f) out = ' ';
-        t += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(out))) : out;
+    const auto put = [&](char c) { t += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c; };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto u = static_cast<unsigned char>(text[i]);
+        if (u >= 0x80) {
+            // One UTF-8 character: its lead byte says how many continuation bytes follow.
+            const int more = u >= 0xf0 ? 3 : u >= 0xe0 ? 2 : u >= 0xc0 ? 1 : 0;
+            char32_t c = more == 3 ? u & 0x07u : more == 2 ? u & 0x0fu : u & 0x1fu;
+            int k = 0;
+            for (; k < more && i + 1 < text.size() && (static_cast<unsigned char>(text[i + 1]) & 0xc0) == 0x80; ++k, ++i)
+                c = (c << 6) | (static_cast<unsigned char>(text[i + 1]) & 0x3fu);
+            const char* ascii = more > 0 && k == more ? asciiFor(c) : nullptr;
+            if (!ascii) ascii = "?";
+            for (const char* a = ascii; *a; ++a) put(*a);
+            continue;
+        }
+        const char c = text[i];
+        put(c == '(' || c == ')' || c == '%' || u < 0x20 || u == 0x7f ? ' ' : c);
     }
     return t;
 }

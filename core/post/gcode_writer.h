@@ -22,8 +22,10 @@ namespace taiwa::post {
 
 // The text of a comment as both controllers take it: printable ASCII only;
 // parentheses (neither controller allows nested comments), '%' (it ends a
-// FANUC tape, even inside a comment) and control characters become spaces,
-// a non-ASCII (UTF-8) character becomes one '?'.
+// FANUC tape, even inside a comment) and control characters become spaces;
+// of the non-ASCII (UTF-8) characters, '°' becomes DEG, 'Ø' (and '⌀') DIA,
+// '±' +/-, '×' x, 'µ' u, dashes '-', curly quotes straight ones, and any
+// other one '?'.
 std::string commentText(const std::string& text, bool upper);
 
 class GCodeWriter final : public MachineSink {

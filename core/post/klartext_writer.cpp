@@ -289,9 +289,11 @@ void KlartextWriter::holeCycle(const DrillCycle& c, double rtp)
         head = c.cycle == CycleKind::Ream ? dialect_.ream : dialect_.bore;
         q.push_back(fmt::format("Q206={} ;FEED RATE FOR PLNGNG ~", feed));
         q.push_back("Q211=+0 ;DWELL TIME AT DEPTH ~");
-        // Reaming feeds out; boring (like G86) comes out at rapid.
+        // Reaming feeds out; boring (like G86) comes out at rapid, which a
+        // cycle parameter spells MAX as the TNC displays it (FMAX is the
+        // word of an L block, not a value: docs/post-processors.md).
         q.push_back(c.cycle == CycleKind::Ream ? fmt::format("Q208={} ;RETRACTION FEED RATE ~", feed)
-                                               : std::string("Q208=FMAX ;RETRACTION FEED RATE ~"));
+                                               : std::string("Q208=MAX ;RETRACTION FEED RATE ~"));
     }
     q.push_back(fmt::format("Q203={} ;SURFACE COORDINATE ~", number(c.retractZ)));
     q.push_back(fmt::format("Q204={} ;2ND SET-UP CLEARANCE", number(rtp - c.retractZ)));

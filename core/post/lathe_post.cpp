@@ -238,6 +238,10 @@ public:
             w_.comment(fmt::format("T{:02d} = library T{} {} R{} orientation {}", station, id, t ? t->name : "?",
                                    t ? w_.num(t->cornerRadius) : "?", orientationOf(id)));
         }
+        // LinuxCNC takes the nose radii and orientations from its tool
+        // table: the export writes it beside the tape (tool_table.h).
+        if (!w_.words().fanuc && !w_.words().siemens && !o_.fileStem.empty())
+            w_.comment(fmt::format("Tool table {}.tbl: the stations above with their nose diameters and orientations, in inch", o_.fileStem));
         if (w_.words().siemens)
             w_.block(fmt::format("{} {} G40 G90 {} {}", w_.words().plane, w_.inch() ? d.inchWord : d.metricWord,
                                  post::workOffsetWords(d, o_.workOffset), w_.words().feedPerRev));

@@ -111,9 +111,12 @@ std::string settingProgram(const WorkSetup& s, const PostOptions& o)
     if (s.round)
         p.comment(fmt::format("{} touches: diameter {:.4f} mm, worst residual {:.4f} mm", m.residuals.size(), 2 * m.radius, worst));
     else
-        p.comment(fmt::format("{} touches: {:.4f} x {:.4f} mm, turned {:.4f} deg{}, worst residual {:.4f} mm",
-                              m.residuals.size(), m.width, m.length, m.rotation,
-                              m.rotationMeasured ? "" : " (not measured)", worst));
+        // No parentheses inside: a comment's would become spaces.
+        p.comment(fmt::format("{} touches: {:.4f} x {:.4f} mm, {}, worst residual {:.4f} mm", m.residuals.size(), m.width,
+                              m.length,
+                              m.rotationMeasured ? fmt::format("turned {:.4f} deg", m.rotation)
+                                                 : std::string("rotation not measured: one touch per side"),
+                              worst));
     p.block("G21 G90 G17");
     std::string set = fmt::format("G10 {} P{} X{} Y{}", off.extended ? "L20" : "L2", off.p, p.num(m.centre.x), p.num(m.centre.y));
     if (m.top) set += " Z" + p.num(*m.top);

@@ -17,8 +17,9 @@
 //   (without one a Haas reads least increments).
 // - readIsoTape, SINUMERIK: ';' comments, N numbers, G710/G700 (inch,
 //   feeds too), G641 ADIS=, G0 G1 G2 G3 (I J incremental), G17 G40 G90 G94,
-//   G54-G57 G505-G599, "G0 SUPA Z0" (machine retract: no move), T M6, D1
-//   (the length offset), S M3/M4/M5, M8 M9 M30, F alone, G4 F (a dwell),
+//   G54-G57 G505-G599, "G0 SUPA Z0 [D0]" (machine retract: no move; D0
+//   required while a D is in force, else the tool tip, not the spindle,
+//   goes to machine Z0), T M6, D1 (the length offset), D0, S M3/M4/M5, M8 M9 M30, F alone, G4 F (a dwell),
 //   "MCALL CYCLE81(RTP,RFP,SDIS,DP)", "CYCLE83(RTP,RFP,SDIS,DP,,FDEP,,DAM,
 //   0,0,1,1)" (chip removal), "CYCLE84(RTP,RFP,SDIS,DP,,0,3,,PIT,POSS,SST,
 //   SST1)", "CYCLE85(RTP,RFP,SDIS,DP,,0,FFR,RFF)" and "CYCLE86(RTP,RFP,
@@ -30,7 +31,8 @@
 //   retract, no move; M99: call the cycle in force after the move), CC X Y,
 //   C X Y DR±, CP IPA± [IZ±] DR± (a helix about CC; |IPA| 360 a full turn),
 //   CYCL DEF 200 DRILLING (Q202 < |Q201|: pecking), 201 REAMING, 202 BORING
-//   (Q214 0: no lift), 207 RIGID TAPPING NEW (at Q239 x the TOOL CALL's S),
+//   (Q214 0: no lift; Q208=MAX out at rapid, as the TNC displays it: FMAX
+//   or any other word as a cycle parameter is refused), 207 RIGID TAPPING NEW (at Q239 x the TOOL CALL's S),
 //   no dwells in them; CYCL DEF 9.0/9.1 DWELL, bare M blocks (M3 M4 M5 M8
 //   M9 M30).
 // Coordinates the tape has not set yet (before the first move down after the

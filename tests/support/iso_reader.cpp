@@ -229,8 +229,15 @@ private:
             }
         }
         if (b.has('D')) {
-            if (m_.tool == 0 || b.v.at('D') < 1) refuse("D with no tool in the spindle");
-            lengthOffset_ = true;
+            // D0 takes the tool's offsets off (SINUMERIK); D1 puts them on.
+            if (b.v.at('D') == 0) {
+                dInForce_ = false;
+                if (m_.tool != 0) lengthOffset_ = false;  // a Z move needs D1 again
+            } else {
+                if (m_.tool == 0 || b.v.at('D') < 1) refuse("D with no tool in the spindle");
+                lengthOffset_ = true;
+                dInForce_ = true;
+            }
         }
         if (b.has('H') != g43) refuse("G43 and H go together");
         if (g43) {
@@ -263,7 +270,11 @@ private:
         }
         if (b.supa) {
             if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
-                refuse("only 'G0 SUPA Z0' is understood");
+                refuse("only 'G0 SUPA Z0 [D0]' is understood");
+            // SUPA suppresses the frames, not the tool's length (MD
+            // G53_TOOLCORR = 0, the default): with D1 in force the tool tip
+            // would go to machine Z0, the spindle above the end of travel.
+            if (dInForce_) refuse("G0 SUPA Z0 with a D in force moves the tool tip to machine Z0: write D0 in the block");
             return;
         }
         if (b.mcall) {
@@ -519,6 +530,7 @@ private:
     bool g98_ = false;
     bool ended_ = false;
     bool lengthOffset_ = true;  // false from a tool change to its G43 H / D
+    bool dInForce_ = false;     // SINUMERIK: a D (1 or more) in force, no D0 since
     bool programNumber_ = false;
     int percents_ = 0;
     int selected_ = 0;

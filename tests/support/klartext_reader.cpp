@@ -4,6 +4,7 @@
 #include "support/tape_reading.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -246,7 +247,7 @@ private:
     // a lift off the wall (Q214) and left-hand tapping are refused.
     void holeCycle(const Block& b, int number)
     {
-        static const std::regex q(R"(Q([0-9]+)=([-+][0-9.]+|FMAX) ;[A-Z0-9 -]+?( ~)?)");
+        static const std::regex q(R"(Q([0-9]+)=([-+][0-9.]+|[A-Z]+) ;[A-Z0-9 -]+?( ~)?)");
         static const std::map<int, std::vector<int>> orders{
             {200, {200, 201, 206, 202, 210, 203, 204, 211}},
             {201, {200, 201, 206, 211, 208, 203, 204}},
@@ -266,16 +267,22 @@ private:
             const int n = order[i];
             if (!std::regex_match(b.more[i].second, match, q) || std::stoi(match[1].str()) != n)
                 refuse("Q" + std::to_string(n) + " expected");
-            // Q208=FMAX: out at rapid (kept as -1, a feed no cycle writes).
-            if (match[2].str() == "FMAX" && n != 208) refuse("FMAX is only a retraction feed (Q208)");
-            const auto value = match[2].str() == "FMAX" ? std::optional<double>(-1.0) : decimal(match[2].str(), true);
+            // Q208=MAX: out at rapid (kept as -1, a feed no cycle writes).
+            // A cycle parameter's rapid is MAX as the TNC displays it (and
+            // FAUTO, AUTO); FMAX is the word of an L block, not a value.
+            const std::string word = match[2].str();
+            const bool max = word == "MAX";
+            if (std::isalpha(static_cast<unsigned char>(word[0])) && !max)
+                refuse("Q" + std::to_string(n) + "=" + word + " is not a TNC's cycle parameter value (a rapid is MAX)");
+            if (max && n != 208) refuse("MAX is only a retraction feed (Q208) here");
+            const auto value = max ? std::optional<double>(-1.0) : decimal(word, true);
             if (!value) refuse("Q" + std::to_string(n) + " is not a number");
             v[n] = *value;
             if ((n == 200 || n == 204) && *value < 0) refuse("a negative set-up clearance");
             if (n == 201 && *value >= 0) refuse("Q201 (depth) must be negative");
             if (n == 206 && !(*value > 0)) refuse("Q206 (plunge feed) must be positive");
             if (n == 202 && !(*value > 0)) refuse("Q202 (plunging depth) must be positive");
-            if (n == 208 && *value < 0 && match[2].str() != "FMAX") refuse("Q208 (retraction feed) must not be negative");
+            if (n == 208 && *value < 0 && !max) refuse("Q208 (retraction feed) must not be negative");
             if (n == 239 && !(*value > 0)) refuse("Q239 (pitch) must be positive: left-hand tapping is not supported by this reader");
             if (n == 214 && *value != 0) refuse("Q214 (a lift off the wall) is not supported by this reader");
             if ((n == 210 || n == 211) && *value != 0)
@@ -374,7 +381,7 @@ private:
         case 201:
         case 202: {
             m_.feedTo({at.x, at.y, bottom}, cycle_.at(206));
-            if (cycle_.at(208) < 0) break;  // FMAX: straight out at rapid to the 2nd set-up clearance, below
+            if (cycle_.at(208) < 0) break;  // MAX: straight out at rapid to the 2nd set-up clearance, below
             m_.feedTo({at.x, at.y, clearance}, cycle_.at(208) > 0 ? cycle_.at(208) : cycle_.at(206));
             break;
         }

@@ -17,15 +17,20 @@ namespace taiwa::probe {
 
 namespace {
 
-constexpr double kCoincident = 1e-3;  // mm: two touches closer than this are one
+constexpr double kCoincident = 1e-3;  // mm: two touches closer than this are one, whatever the tolerance
 
 std::string mm(double v) { return fmt::format("{:.4g} mm", v); }
 
-std::optional<FitProblem> coincident(const std::vector<Touch>& t)
+// Two touches closer than the tolerance (the scatter a touch may have) are
+// one point measured twice: they tell nothing about the outline between
+// them, and on one side of a rectangle they would turn it by up to 45°.
+// The later one is named.
+std::optional<FitProblem> coincident(const std::vector<Touch>& t, double tolerance)
 {
+    const double within = std::max(kCoincident, tolerance);
     for (std::size_t j = 1; j < t.size(); ++j)
         for (std::size_t i = 0; i < j; ++i)
-            if (distance(t[i].at, t[j].at) < kCoincident)
+            if (distance(t[i].at, t[j].at) < within)
                 return FitProblem{static_cast<int>(j + 1),
                                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "point {} coincides with point {}: touch the outline elsewhere"), j + 1, i + 1)};
     return std::nullopt;
@@ -63,7 +68,7 @@ std::variant<CircleFit, FitProblem> fitCircle(const std::vector<Touch>& touches,
     const std::size_t n = touches.size();
     if (n < 3)
         return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a round workpiece needs at least 3 touch points, {} given"), n)};
-    if (auto p = coincident(touches)) return *p;
+    if (auto p = coincident(touches, s.tolerance)) return *p;
 
     // About the points' mean, for the conditioning of the algebraic fit.
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
@@ -133,7 +138,7 @@ std::variant<RectangleFit, FitProblem> fitRectangle(const std::vector<Touch>& to
         if (std::none_of(touches.begin(), touches.end(), [&](const Touch& t) { return t.side == side; }))
             return FitProblem{0, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a rectangular workpiece needs a touch on every side: none on {}"),
                                              toString(side))};
-    if (auto p = coincident(touches)) return *p;
+    if (auto p = coincident(touches, s.tolerance)) return *p;
 
     // The direction of the part's X axis: the sides touched twice or more,
     // each about its own mean, the X sides turned a quarter so that they
