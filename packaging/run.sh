@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Taiwa, exports the bundled sample job and
-# opens the station window on it (README, first command).
+# Installs what is missing, builds Taiwa (packaging/build.sh, the build
+# test.sh uses too), exports the bundled sample job and opens the station
+# window on it (README, first command).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/install-deps.sh
-cmake --preset default >/dev/null
-cmake --build --preset default
+bash packaging/build.sh
 sample=resources/samples/plate.taiwa
 ./build/app/taiwa export "$sample" --out out/plate
 if [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; then

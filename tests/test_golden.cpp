@@ -42,13 +42,13 @@ private slots:
             const bool lathe = text.find("\"shape\": \"bar\"") != std::string::npos;
             const bool probing = text.find("\"module\": \"PROBE\"") != std::string::npos;
             if (lathe) QTest::newRow(qPrintable(f.completeBaseName() + "/turned")) << f.absoluteFilePath() << "turned";
-            for (const char* dialect : {"fanuc", "linuxcnc", "haas", "sinumerik", "heidenhain"}) {
-                // Klartext is a milling control's language (no lathe tapes);
-                // the probing programs are written for FANUC, Haas and LinuxCNC.
-                const std::string d = dialect;
-                if ((lathe && d == "heidenhain") || (probing && (d == "sinumerik" || d == "heidenhain"))) continue;
+            // Every shipped dialect; Klartext is a milling control's language
+            // (no lathe tapes), the probing programs are written in ISO only.
+            const QStringList dialects = shippedDialectsWriting(lathe ? DialectWrites::LatheTapes
+                                                                : probing ? DialectWrites::ProbingPrograms
+                                                                          : DialectWrites::MillingTapes);
+            for (const QString& dialect : dialects)
                 QTest::newRow(qPrintable(f.completeBaseName() + "/" + dialect)) << f.absoluteFilePath() << dialect;
-            }
         }
     }
     void tapeMatchesGolden()

@@ -113,9 +113,11 @@ private slots:
         QVERIFY2(exported.code == 0, qPrintable(exported.out));
         QVERIFY(QFile::exists(work_.filePath("out/plate.nc")));
         QVERIFY(QFile::exists(work_.filePath("out/plate.sheet.pdf")));
-        // Every shipped dialect is in the package, and posts from it.
-        for (const char* d : {"fanuc", "haas", "linuxcnc", "sinumerik", "heidenhain"})
-            QVERIFY2(QFile::exists(root.filePath(QString("usr/share/taiwa/dialects/%1.json").arg(d))), d);
+        // Every shipped dialect and machine is in the package, and posts from it.
+        for (const QString& d : taiwa::test::shippedDialects())
+            QVERIFY2(QFile::exists(root.filePath(QString("usr/share/taiwa/dialects/%1.json").arg(d))), qPrintable(d));
+        for (const QString& m : taiwa::test::shippedMachines())
+            QVERIFY2(QFile::exists(root.filePath(QString("usr/share/taiwa/machines/%1.json").arg(m))), qPrintable(m));
         const Run klartext = run(taiwa, {"export", sample, "--out", work_.filePath("tnc"), "--dialect", "heidenhain"}, {},
                                  {"TAIWA_TOOL_DB=" + work_.filePath("tools.sqlite")});
         QVERIFY2(klartext.code == 0, qPrintable(klartext.out));

@@ -72,7 +72,8 @@ private slots:
         QFETCH(QStringList, names);
         const auto samples = probingSamples();
         QVERIFY(samples.size() >= 3);
-        const QString head = "the " + dialect + " dialect writes no probing unit's programs; fanuc, linuxcnc, haas can (";
+        const QString head = "the " + dialect + " dialect writes no probing unit's programs; " +
+                             test::shippedDialectsWriting(test::DialectWrites::ProbingPrograms).join(", ") + " can (";
         // Empty when `message` is the refusal naming every construct; else what is wrong.
         const auto wrong = [&](const QString& message, const QString& what) -> QString {
             bool right = message.startsWith(head) && message.contains("docs/probing.md");

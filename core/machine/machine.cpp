@@ -152,9 +152,7 @@ const Library& library()
 {
     static const Library lib = [] {
         Library l;
-        const std::pair<const char*, const char*> builtIn[] = {{builtin::kMachineVmcJson, "built in: machines/vmc.json"},
-                                                               {builtin::kMachineLatheJson, "built in: machines/lathe.json"}};
-        for (const auto& [text, source] : builtIn) {
+        for (const auto& [text, source] : builtin::kMachines) {
             auto m = readMachine(text, source);
             if (!m) throw std::logic_error("a shipped machine definition is broken: " + m.error());
             l.machines.push_back(std::move(*m));

@@ -201,13 +201,7 @@ const Library& library()
 {
     static const Library lib = [] {
         Library l;
-        const std::pair<const char*, const char*> builtIn[] = {
-            {builtin::kDialectFanucJson, "built in: dialects/fanuc.json"},
-            {builtin::kDialectLinuxcncJson, "built in: dialects/linuxcnc.json"},
-            {builtin::kDialectHaasJson, "built in: dialects/haas.json"},
-            {builtin::kDialectSinumerikJson, "built in: dialects/sinumerik.json"},
-            {builtin::kDialectHeidenhainJson, "built in: dialects/heidenhain.json"}};
-        for (const auto& [text, source] : builtIn) {
+        for (const auto& [text, source] : builtin::kDialects) {
             auto d = readDialect(text, source);
             if (!d) throw std::logic_error("a shipped dialect definition is broken: " + d.error());
             l.dialects.push_back(std::move(*d));

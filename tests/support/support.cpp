@@ -10,12 +10,30 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 
+#include <nlohmann/json.hpp>
+
 #include <stdexcept>
 
 namespace taiwa::test {
 
 QString sourcePath(const QString& relative) { return QDir(QStringLiteral(TAIWA_SOURCE_DIR)).filePath(relative); }
 QString dataPath(const QString& relative) { return QDir(QStringLiteral(TAIWA_TEST_DATA)).filePath(relative); }
+
+QStringList shippedDialects() { return QString(QStringLiteral(TAIWA_SHIPPED_DIALECTS)).split(',', Qt::SkipEmptyParts); }
+QStringList shippedMachines() { return QString(QStringLiteral(TAIWA_SHIPPED_MACHINES)).split(',', Qt::SkipEmptyParts); }
+
+QStringList shippedDialectsWriting(DialectWrites what)
+{
+    QStringList out;
+    for (const QString& d : shippedDialects()) {
+        const auto j = nlohmann::json::parse(readFile(sourcePath("resources/dialects/" + d + ".json")));
+        const std::string syntax = j.value("syntax", "iso");
+        if (what == DialectWrites::MillingTapes || (what == DialectWrites::LatheTapes && syntax != "klartext") ||
+            (what == DialectWrites::ProbingPrograms && syntax == "iso"))
+            out << d;
+    }
+    return out;
+}
 
 void isolateStation(const QString& dir)
 {

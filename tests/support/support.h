@@ -32,6 +32,17 @@ QString testToolDb();
 // (TAIWA_NO_PROMPTS).
 void isolateStation(const QString& dir);
 
+// The shipped dialects' and machines' file stems ("fanuc", "vmc"): every
+// resources/dialects/*.json and resources/machines/*.json, in the order the
+// program lists them (core/builtin_data.cmake hands its list to the tests).
+QStringList shippedDialects();
+QStringList shippedMachines();
+// The shipped dialects that write milling tapes (all), lathe tapes (all but
+// Klartext's) or a probing unit's programs (the ISO ones), by each file's
+// "syntax".
+enum class DialectWrites { MillingTapes, LatheTapes, ProbingPrograms };
+QStringList shippedDialectsWriting(DialectWrites what);
+
 std::string readFile(const QString& path);
 void writeFile(const QString& path, const std::string& text);
 
