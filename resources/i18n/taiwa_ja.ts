@@ -3553,6 +3553,86 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>島</translation>
         </message>
         <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
+            <translation>{4}用の、半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
+            <translation>{3}用の、直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。{3} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{5} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。{4} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{6} の下穴から入ります</translation>
+        </message>
+        <message>
+            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
+            <translation>側壁のテーパ片側 {0} 度のテーパエンドミル (先端 {1})。先端半径 {2} が底のコーナー半径 {3} に入ります</translation>
+        </message>
+        <message>
+            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
+            <translation>半径が 6 mm 以下かつ傾斜面の長さ {1} の半分以下で最大のボールエンドミル ({0})</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} is not in the tool library</source>
+            <translation>{}: 指定された工具 T{} が工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
+            <translation>{}: 指定された工具 T{} ({}) は合いません: {}</translation>
+        </message>
+        <message>
+            <source>pinned by the operator</source>
+            <translation>オペレータが指定</translation>
+        </message>
+        <message>
+            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
+            <translation>{1} のエンドミルがプランジする穴の、それより小さくない最小のドリル ({0})</translation>
+        </message>
+        <message>
             <source>shape {} is not defined: 1 round (boss or bore), 2 rectangular (block or pocket)</source>
             <translation>形状 {} は定義されていません: 1 円形 (ボスまたは穴)、2 矩形 (ブロックまたはポケット)</translation>
         </message>
@@ -3857,6 +3937,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>形状が Z{} に達し、棒材の端 (Z{}) を超えています</translation>
         </message>
         <message>
+            <source>pinned</source>
+            <translation>オペレータが指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒材に端面の取り代がありますが、工具ライブラリに端面を削る外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>外径荒加工用チップで端面を削ります (ノーズ半径最大)</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>穴が中ぐりバイトには狭すぎ (バイトは {} から入り、穴径から中ぐり代を除くと {} です)、その寸法にするドリルがライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>中ぐりには {} ～ {} の下穴が必要ですが (中ぐりバイトは {} から入ります)、工具ライブラリにその範囲のドリルがありません</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>中ぐり代を除いた穴径 ({}) 以内で、中ぐりバイトの必要穴径 {} 以上の最大のドリル</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小のセンタドリル</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>工具ライブラリに内径用 (中ぐり) の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>工具ライブラリに外径用の旋削チップがありません</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>すべての要素に届きます。届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>届かない要素が {} 個あります。最も多く届くもののうちノーズ半径が最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>溝幅 ({}) を超えない最も広い溝入れバイト</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最も狭い溝入れバイト。横の空間から {} に届きます</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>{} に使える最も狭い突切りバイト</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} は内径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} は外径用の旋削チップではありません</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>その側で最大のノーズ半径 (最も強い刃先)</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>ピッチ {} 用の外径ねじ切りチップ</translation>
+        </message>
+        <message>
             <source>plane</source>
             <translation>平面</translation>
         </message>
@@ -4099,86 +4251,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>used {:g} min must not be negative</source>
             <translation>使用時間 {} 分は負にできません</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
-            <translation>{4}用の、半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
-            <translation>{3}用の、直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。{3} の下穴から入ります</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
-            <translation>直径がポケットの内接幅 {2} の半分以下で最大の{0} ({1})。刃長 ({3}) が深さ {4} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{5} の下穴から入ります</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。中心刃があり、斜めに切り込みます (下穴なし)</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。{4} の下穴から入ります</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。中心刃があり、斜めに切り込みます (下穴なし)</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
-            <translation>半径 {2} がコーナー半径 {3} に入る最大の{0} ({1})。刃長 ({4}) が深さ {5} に届きませんが、入るエンドミルはどれも同じです: 1 層ずつ削ります。{6} の下穴から入ります</translation>
-        </message>
-        <message>
-            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
-            <translation>側壁のテーパ片側 {0} 度のテーパエンドミル (先端 {1})。先端半径 {2} が底のコーナー半径 {3} に入ります</translation>
-        </message>
-        <message>
-            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
-            <translation>半径が 6 mm 以下かつ傾斜面の長さ {1} の半分以下で最大のボールエンドミル ({0})</translation>
-        </message>
-        <message>
-            <source>{}: pinned tool T{} is not in the tool library</source>
-            <translation>{}: 指定された工具 T{} が工具ライブラリにありません</translation>
-        </message>
-        <message>
-            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
-            <translation>{}: 指定された工具 T{} ({}) は合いません: {}</translation>
-        </message>
-        <message>
-            <source>pinned by the operator</source>
-            <translation>オペレータが指定</translation>
-        </message>
-        <message>
-            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
-            <translation>{1} のエンドミルがプランジする穴の、それより小さくない最小のドリル ({0})</translation>
         </message>
         <message>
             <source>it is a {}, the step needs a {}</source>
@@ -4439,78 +4511,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>形状が部品を囲む一続きになっていません: {} (行 {}) が閉じる線 {} に X{} Z{} で達します</translation>
-        </message>
-        <message>
-            <source>pinned</source>
-            <translation>オペレータが指定</translation>
-        </message>
-        <message>
-            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
-            <translation>棒材に端面の取り代がありますが、工具ライブラリに端面を削る外径用の旋削チップがありません</translation>
-        </message>
-        <message>
-            <source>the outside roughing insert faces the bar (largest nose radius)</source>
-            <translation>外径荒加工用チップで端面を削ります (ノーズ半径最大)</translation>
-        </message>
-        <message>
-            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
-            <translation>穴が中ぐりバイトには狭すぎ (バイトは {} から入り、穴径から中ぐり代を除くと {} です)、その寸法にするドリルがライブラリにありません</translation>
-        </message>
-        <message>
-            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
-            <translation>中ぐりには {} ～ {} の下穴が必要ですが (中ぐりバイトは {} から入ります)、工具ライブラリにその範囲のドリルがありません</translation>
-        </message>
-        <message>
-            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
-            <translation>中ぐり代を除いた穴径 ({}) 以内で、中ぐりバイトの必要穴径 {} 以上の最大のドリル</translation>
-        </message>
-        <message>
-            <source>smallest centre drill</source>
-            <translation>最小のセンタドリル</translation>
-        </message>
-        <message>
-            <source>the tool library has no inside (boring) turning insert</source>
-            <translation>工具ライブラリに内径用 (中ぐり) の旋削チップがありません</translation>
-        </message>
-        <message>
-            <source>the tool library has no outside turning insert</source>
-            <translation>工具ライブラリに外径用の旋削チップがありません</translation>
-        </message>
-        <message>
-            <source>reaches every element; smallest nose radius of those that do</source>
-            <translation>すべての要素に届きます。届くもののうちノーズ半径が最小</translation>
-        </message>
-        <message>
-            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
-            <translation>届かない要素が {} 個あります。最も多く届くもののうちノーズ半径が最小</translation>
-        </message>
-        <message>
-            <source>widest grooving blade not wider than the groove ({})</source>
-            <translation>溝幅 ({}) を超えない最も広い溝入れバイト</translation>
-        </message>
-        <message>
-            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
-            <translation>最も狭い溝入れバイト。横の空間から {} に届きます</translation>
-        </message>
-        <message>
-            <source>narrowest parting blade for {}</source>
-            <translation>{} に使える最も狭い突切りバイト</translation>
-        </message>
-        <message>
-            <source>{} is not an inside turning insert</source>
-            <translation>{} は内径用の旋削チップではありません</translation>
-        </message>
-        <message>
-            <source>{} is not an outside turning insert</source>
-            <translation>{} は外径用の旋削チップではありません</translation>
-        </message>
-        <message>
-            <source>largest nose radius for its side (the strongest edge)</source>
-            <translation>その側で最大のノーズ半径 (最も強い刃先)</translation>
-        </message>
-        <message>
-            <source>external threading insert for pitch {}</source>
-            <translation>ピッチ {} 用の外径ねじ切りチップ</translation>
         </message>
         <message>
             <source>the job</source>

@@ -3553,6 +3553,86 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>岛屿</translation>
         </message>
         <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
+            <translation>用于{4}的、半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
+            <translation>用于{3}的、直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；从 {3} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；从 {5} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；从 {4} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
+        </message>
+        <message>
+            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
+            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；从 {6} 预钻孔进入</translation>
+        </message>
+        <message>
+            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
+            <translation>与侧壁锥度单边 {0} 度相同的锥度立铣刀（刀尖 {1}），刀尖半径 {2} 适合底部圆角半径 {3}</translation>
+        </message>
+        <message>
+            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
+            <translation>半径不超过 6 mm 且不超过斜面长度 {1} 一半的最大球头立铣刀（{0}）</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} is not in the tool library</source>
+            <translation>{}：指定的刀具 T{} 不在刀具库中</translation>
+        </message>
+        <message>
+            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
+            <translation>{}：指定的刀具 T{}（{}）不适用：{}</translation>
+        </message>
+        <message>
+            <source>pinned by the operator</source>
+            <translation>由操作员指定</translation>
+        </message>
+        <message>
+            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
+            <translation>不小于由此下刀的 {1} 立铣刀的最小钻头（{0}）</translation>
+        </message>
+        <message>
             <source>shape {} is not defined: 1 round (boss or bore), 2 rectangular (block or pocket)</source>
             <translation>形状 {} 未定义：1 圆形（凸台或孔），2 矩形（块或型腔）</translation>
         </message>
@@ -3857,6 +3937,78 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>轮廓达到 Z{}，超出棒料末端（Z{}）</translation>
         </message>
         <message>
+            <source>pinned</source>
+            <translation>由操作员指定</translation>
+        </message>
+        <message>
+            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
+            <translation>棒料有端面余量，但刀具库中没有可车端面的外圆车刀片</translation>
+        </message>
+        <message>
+            <source>the outside roughing insert faces the bar (largest nose radius)</source>
+            <translation>用外圆粗车刀片车端面（刀尖半径最大）</translation>
+        </message>
+        <message>
+            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
+            <translation>孔对镗杆太窄（镗杆需 {}；孔径减去余量为 {}），且刀具库中没有可加工到此尺寸的钻头</translation>
+        </message>
+        <message>
+            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
+            <translation>镗孔需要 {} 到 {} 的预钻孔（镗杆需 {}），但刀具库中没有此范围的钻头</translation>
+        </message>
+        <message>
+            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
+            <translation>在孔径减去镗孔余量（{}）以内、且不小于镗杆所需孔径 {} 的最大钻头</translation>
+        </message>
+        <message>
+            <source>smallest centre drill</source>
+            <translation>最小的中心钻</translation>
+        </message>
+        <message>
+            <source>the tool library has no inside (boring) turning insert</source>
+            <translation>刀具库中没有内孔（镗孔）车刀片</translation>
+        </message>
+        <message>
+            <source>the tool library has no outside turning insert</source>
+            <translation>刀具库中没有外圆车刀片</translation>
+        </message>
+        <message>
+            <source>reaches every element; smallest nose radius of those that do</source>
+            <translation>可到达所有元素；其中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
+            <translation>有 {} 个元素无法到达；到达最多者中刀尖半径最小</translation>
+        </message>
+        <message>
+            <source>widest grooving blade not wider than the groove ({})</source>
+            <translation>不宽于槽宽（{}）的最宽切槽刀</translation>
+        </message>
+        <message>
+            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
+            <translation>最窄的切槽刀；从旁边的空处到达 {}</translation>
+        </message>
+        <message>
+            <source>narrowest parting blade for {}</source>
+            <translation>适用于 {} 的最窄切断刀</translation>
+        </message>
+        <message>
+            <source>{} is not an inside turning insert</source>
+            <translation>{} 不是内孔车刀片</translation>
+        </message>
+        <message>
+            <source>{} is not an outside turning insert</source>
+            <translation>{} 不是外圆车刀片</translation>
+        </message>
+        <message>
+            <source>largest nose radius for its side (the strongest edge)</source>
+            <translation>该侧刀尖半径最大（刃口最强）</translation>
+        </message>
+        <message>
+            <source>external threading insert for pitch {}</source>
+            <translation>螺距 {} 的外螺纹车刀片</translation>
+        </message>
+        <message>
             <source>plane</source>
             <translation>平面</translation>
         </message>
@@ -4099,86 +4251,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>used {:g} min must not be negative</source>
             <translation>已用时间 {} 分钟不能为负</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
-            <translation>用于{4}的、半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {} of the {}</source>
-            <translation>用于{3}的、直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; enters the {} pilot hole</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；从 {3} 预钻孔进入</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) of diameter at most half the pocket's inscribed width {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
-            <translation>直径不超过型腔内切宽度 {2} 一半的最大{0}（{1}）；其刃长（{3}）短于深度 {4}，所有适用的立铣刀都如此：逐层切削；从 {5} 预钻孔进入</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；可中心切削，斜向下刀（无预钻孔）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; enters the {} pilot hole</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；从 {4} 预钻孔进入</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; it cuts at its centre and ramps in (no pilot hole)</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；可中心切削，斜向下刀（无预钻孔）</translation>
-        </message>
-        <message>
-            <source>largest {} ({}) whose radius {} fits the corner radius {}; its flutes ({}) are shorter than the depth {}, as are those of every end mill that fits: it cuts one layer at a time; enters the {} pilot hole</source>
-            <translation>半径 {2} 适合圆角半径 {3} 的最大{0}（{1}）；其刃长（{4}）短于深度 {5}，所有适用的立铣刀都如此：逐层切削；从 {6} 预钻孔进入</translation>
-        </message>
-        <message>
-            <source>taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} fits the corner radius {} at the floor</source>
-            <translation>与侧壁锥度单边 {0} 度相同的锥度立铣刀（刀尖 {1}），刀尖半径 {2} 适合底部圆角半径 {3}</translation>
-        </message>
-        <message>
-            <source>largest ball end mill ({}) of radius at most 6 mm and half the inclined face's length {}</source>
-            <translation>半径不超过 6 mm 且不超过斜面长度 {1} 一半的最大球头立铣刀（{0}）</translation>
-        </message>
-        <message>
-            <source>{}: pinned tool T{} is not in the tool library</source>
-            <translation>{}：指定的刀具 T{} 不在刀具库中</translation>
-        </message>
-        <message>
-            <source>{}: pinned tool T{} ({}) does not fit: {}</source>
-            <translation>{}：指定的刀具 T{}（{}）不适用：{}</translation>
-        </message>
-        <message>
-            <source>pinned by the operator</source>
-            <translation>由操作员指定</translation>
-        </message>
-        <message>
-            <source>smallest drill ({}) not smaller than the {} end mill that plunges into it</source>
-            <translation>不小于由此下刀的 {1} 立铣刀的最小钻头（{0}）</translation>
         </message>
         <message>
             <source>it is a {}, the step needs a {}</source>
@@ -4439,78 +4511,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>the profile is not one chain around the part: {} (row {}) reaches the line closing it {} at X{} Z{}</source>
             <translation>轮廓不是围绕零件的一条链：{}（第 {} 行）在 X{} Z{} 处到达封闭线 {}</translation>
-        </message>
-        <message>
-            <source>pinned</source>
-            <translation>由操作员指定</translation>
-        </message>
-        <message>
-            <source>the bar has face stock but the tool library has no outside turning insert to face it</source>
-            <translation>棒料有端面余量，但刀具库中没有可车端面的外圆车刀片</translation>
-        </message>
-        <message>
-            <source>the outside roughing insert faces the bar (largest nose radius)</source>
-            <translation>用外圆粗车刀片车端面（刀尖半径最大）</translation>
-        </message>
-        <message>
-            <source>the bore is too narrow for the boring bar (it enters {}; the bore less its allowance leaves {}) and no drill of the library makes it to size</source>
-            <translation>孔对镗杆太窄（镗杆需 {}；孔径减去余量为 {}），且刀具库中没有可加工到此尺寸的钻头</translation>
-        </message>
-        <message>
-            <source>the bore needs a drilled hole of {} to {} (the boring bar enters {}), and the tool library has no drill in that range</source>
-            <translation>镗孔需要 {} 到 {} 的预钻孔（镗杆需 {}），但刀具库中没有此范围的钻头</translation>
-        </message>
-        <message>
-            <source>largest drill within the bore less its allowance ({}), not smaller than the boring bar's bore {}</source>
-            <translation>在孔径减去镗孔余量（{}）以内、且不小于镗杆所需孔径 {} 的最大钻头</translation>
-        </message>
-        <message>
-            <source>smallest centre drill</source>
-            <translation>最小的中心钻</translation>
-        </message>
-        <message>
-            <source>the tool library has no inside (boring) turning insert</source>
-            <translation>刀具库中没有内孔（镗孔）车刀片</translation>
-        </message>
-        <message>
-            <source>the tool library has no outside turning insert</source>
-            <translation>刀具库中没有外圆车刀片</translation>
-        </message>
-        <message>
-            <source>reaches every element; smallest nose radius of those that do</source>
-            <translation>可到达所有元素；其中刀尖半径最小</translation>
-        </message>
-        <message>
-            <source>reaches all but {} element(s); smallest nose radius of those that reach most</source>
-            <translation>有 {} 个元素无法到达；到达最多者中刀尖半径最小</translation>
-        </message>
-        <message>
-            <source>widest grooving blade not wider than the groove ({})</source>
-            <translation>不宽于槽宽（{}）的最宽切槽刀</translation>
-        </message>
-        <message>
-            <source>narrowest grooving blade; it reaches {} from the air beside it</source>
-            <translation>最窄的切槽刀；从旁边的空处到达 {}</translation>
-        </message>
-        <message>
-            <source>narrowest parting blade for {}</source>
-            <translation>适用于 {} 的最窄切断刀</translation>
-        </message>
-        <message>
-            <source>{} is not an inside turning insert</source>
-            <translation>{} 不是内孔车刀片</translation>
-        </message>
-        <message>
-            <source>{} is not an outside turning insert</source>
-            <translation>{} 不是外圆车刀片</translation>
-        </message>
-        <message>
-            <source>largest nose radius for its side (the strongest edge)</source>
-            <translation>该侧刀尖半径最大（刃口最强）</translation>
-        </message>
-        <message>
-            <source>external threading insert for pitch {}</source>
-            <translation>螺距 {} 的外螺纹车刀片</translation>
         </message>
         <message>
             <source>the job</source>
