@@ -306,6 +306,8 @@ void GeneratorTally::add(const SeedResult& r)
     if (r.inner) ++inner;
     if (!r.accepted) {
         ++refusedOn[r.refusedOn];
+        if (r.refusedOn == "allowances" && !refusalExample.count(r.refusedOn))
+            refusalExample[r.refusedOn] = fmt::format("seed {}: {}", r.seed, r.refusal);
         return;
     }
     ++accepted;
@@ -317,7 +319,9 @@ void GeneratorTally::add(const SeedResult& r)
 std::string GeneratorTally::summary() const
 {
     std::string refused, grooves, worst;
-    for (const auto& [k, n] : refusedOn) refused += fmt::format("{}{} {}", refused.empty() ? "" : ", ", n, k);
+    for (const auto& [k, n] : refusedOn)
+        refused += fmt::format("{}{} {}{}", refused.empty() ? "" : ", ", n, k,
+                               refusalExample.count(k) ? " (" + refusalExample.at(k) + ")" : "");
     for (const auto& [k, n] : groovesByKind) grooves += fmt::format("{}{} {}", grooves.empty() ? "" : ", ", n, k);
     for (std::size_t i = 0; i < failing.size() && i < shown; ++i)
         worst += fmt::format("\n  seed {}: {} goes {:.6f} mm into the part at Z{:.4f} X{:.4f}; grooves: {}",

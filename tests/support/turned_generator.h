@@ -65,6 +65,7 @@ struct GeneratorTally {
     std::size_t shown = 5;    // failing seeds the summary lists
     int profiles = 0, inner = 0, accepted = 0, nonSquareGrooves = 0;
     std::map<std::string, int> refusedOn, groovesByKind;
+    std::map<std::string, std::string> refusalExample;  // the first message of each refusal on the whole table
     std::vector<SeedResult> failing;
     void add(const SeedResult& r);
     std::string summary() const;
@@ -78,8 +79,8 @@ struct PlanCheck {
     bool planned = false;
     std::string refusedOn;  // the first error's field
     std::string refusal;
-    std::map<std::string, int> findings;  // by kind: "gouge", "rapid-into-stock", …
-    std::string first;                    // the first finding in words
+    std::map<std::string, int> findings;        // by kind: "gouge", "rapid-into-stock", …
+    std::map<std::string, std::string> first;   // the first finding of each kind in words
 };
 PlanCheck planAndVerify(const GeneratedProfile& g);
 
@@ -90,6 +91,7 @@ struct PlanTally {
     std::map<std::string, int> refusedOn, withFinding;
     std::map<std::string, std::vector<std::uint64_t>> seeds;  // the first 5 per kind
     std::map<std::string, std::string> example;              // the first finding of each kind in words
+    std::map<std::string, std::string> refusal;              // the first refusal on each field
     void add(std::uint64_t seed, const PlanCheck& c);
     std::string summary() const;
 };

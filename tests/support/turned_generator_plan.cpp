@@ -1,5 +1,6 @@
 // Generated turned profiles as lathe jobs, planned and verified, and the
-// counts of a run (turned_generator.h: PlanCheck, PlanTally).
+// counts of a run (turned_generator.h: PlanCheck, PlanTally). The bar is
+// kept within the lathe's spindle bore (Ø65) where the part allows.
 #include "support/turned_generator.h"
 
 #include "model/turned_geometry.h"
@@ -23,17 +24,19 @@ PlanCheck planAndVerify(const GeneratedProfile& g)
     PlanCheck out;
     const Resolution r = resolveProfile(g.profile);
     double rMax = 0.0, zMin = 0.0;
-    for (const Edge& e : r.profile.edges) {
-        const Segment& s = e.geometry;
-        rMax = std::max({rMax, s.a.r, s.b.r, s.arc ? s.centre.r + s.radius : 0.0});
-        zMin = std::min({zMin, s.a.z, s.b.z, s.arc ? s.centre.z - s.radius : 0.0});
-    }
+    for (const Edge& e : r.profile.edges)
+        for (int k = 0; k <= 32; ++k) {
+            const ZR q = pointAt(e.geometry, length(e.geometry) * k / 32.0);
+            rMax = std::max(rMax, q.r);
+            zMin = std::min(zMin, q.z);
+        }
     Job job;
     job.name = fmt::format("generated {}", g.seed);
     job.machine = "lathe";
     job.material = "steel-s45c";
     const double over = g.profile.side == ProfileSide::Outer ? 3.0 : 12.0;
-    job.bar = BarStock{std::ceil(2.0 * rMax + over), std::ceil(-zMin) + 30.0, 1.0, 0.0};
+    job.bar = BarStock{std::ceil(std::min(2.0 * rMax + over, std::max(65.0, 2.0 * rMax + 1.0))), std::ceil(-zMin) + 30.0,
+                       1.0, 0.0};
     TurnUnit unit;
     unit.profile = g.profile;
     job.units.push_back({"generated", unit, {}});
@@ -51,7 +54,8 @@ PlanCheck planAndVerify(const GeneratedProfile& g)
     out.planned = true;
     const verify::Report report = verify::verifyPlan(plan);
     for (const verify::Finding& f : report.findings) {
-        if (++out.findings[verify::toKey(f.kind)] == 1 && out.first.empty()) out.first = verify::describe(f, plan);
+        const std::string kind = verify::toKey(f.kind);
+        if (++out.findings[kind] == 1) out.first[kind] = verify::describe(f, plan);
     }
     return out;
 }
@@ -60,7 +64,7 @@ void PlanTally::add(std::uint64_t seed, const PlanCheck& c)
 {
     ++profiles;
     if (!c.planned) {
-        ++refusedOn[c.refusedOn];
+        if (++refusedOn[c.refusedOn] == 1) refusal[c.refusedOn] = fmt::format("seed {}: {}", seed, c.refusal);
         return;
     }
     ++planned;
@@ -69,21 +73,21 @@ void PlanTally::add(std::uint64_t seed, const PlanCheck& c)
         ++withFinding[kind];
         auto& s = seeds[kind];
         if (s.size() < 5) s.push_back(seed);
-        if (!example.count(kind)) example[kind] = c.first;
+        if (!example.count(kind)) example[kind] = c.first.at(kind);
     }
 }
 
 std::string PlanTally::summary() const
 {
     std::string refused, found;
-    for (const auto& [k, n] : refusedOn) refused += fmt::format("{}{} {}", refused.empty() ? "" : ", ", n, k);
+    for (const auto& [k, n] : refusedOn) refused += fmt::format("\n  {} refused on {} (e.g. {})", n, k, refusal.at(k));
     for (const auto& [k, n] : withFinding) {
         std::string list;
         for (std::uint64_t s : seeds.at(k)) list += fmt::format("{}{}", list.empty() ? "" : " ", s);
         found += fmt::format("\n  {} profiles with {} (seeds {}; e.g. {})", n, k, list, example.at(k));
     }
-    return fmt::format("{} profiles: {} planned ({} verified clean), {} refused by the planner ({}){}", profiles, planned,
-                       clean, profiles - planned, refused.empty() ? "none" : refused, found);
+    return fmt::format("{} profiles: {} planned ({} verified clean), {} refused by the planner{}{}", profiles, planned,
+                       clean, profiles - planned, refused, found);
 }
 
 }  // namespace taiwa::test
