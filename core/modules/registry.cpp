@@ -61,9 +61,15 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
 
 std::vector<int> orderSteps(const std::vector<Step>& steps)
 {
+    // Each step's door looked up once: the rules are asked of every pair of
+    // a unit's steps, and orderStepsBy hands them the steps of `steps`.
+    std::vector<const ModuleKind*> kinds;
+    kinds.reserve(steps.size());
+    for (const Step& s : steps) kinds.push_back(&moduleKind(s));
+    const auto kindOf = [&](const Step& s) { return kinds[static_cast<std::size_t>(&s - steps.data())]; };
     const StepOrderRules rules{
-        [](const Step& later, const Step& earlier) { return moduleKind(later).stepWaitsFor(later, earlier); },
-        [](const Step& s) { return moduleKind(s).cutsBeforeOtherUnits(); }};
+        [&](const Step& later, const Step& earlier) { return kindOf(later)->stepWaitsFor(later, earlier); },
+        [&](const Step& s) { return kindOf(s)->cutsBeforeOtherUnits(); }};
     return orderStepsBy(steps, rules);
 }
 

@@ -22,7 +22,8 @@ struct StepOrderRules {
     std::function<bool(const Step&)> cutsFirst;
 };
 
-// Job-wide order: a permutation of indices into `steps`, a topological order
+// Job-wide order: a permutation of indices into `steps` (the rules are
+// asked of elements of `steps` itself), a topological order
 // that keeps the spindle on the same tool as long as any step ready to run
 // uses it and otherwise follows the steps' order (the units' machining
 // order).
