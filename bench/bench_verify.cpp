@@ -2,11 +2,17 @@
 // against a plain Z-map stamping loop on the same grid in the same run (the
 // ratio printed as `ratio_to_stamping`), then the largest sample
 // (plate.taiwa) at 0.1 and 0.05 mm on every core, and the memory a grid
-// takes, which follows the stock's area and not its height.
+// takes, which follows the stock's area and not its height. Then the
+// issue's three anchors (cp-islands.taiwa, plate.taiwa and
+// bench/fine-pocket.taiwa at 0.05 mm), each timed beside what a plain
+// stamping loop, measured in the same run, takes to touch once every cell
+// the moves sweep (`ratio_to_stamping`: 1 is a verification whose work
+// follows the material swept, with all its checks on top).
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "sim/cutter_profile.h"
 #include "sim/height_field.h"
+#include "sim/path_samples.h"
 #include "tools/tool_library.h"
 #include "verify/verify.h"
 
@@ -22,12 +28,15 @@ using namespace taiwa;
 
 namespace {
 
+Plan planOf(const std::string& path)
+{
+    const auto read = readJobFile(path);
+    return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+}
+
 const Plan& plate()
 {
-    static const Plan plan = [] {
-        const auto read = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/plate.taiwa");
-        return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
-    }();
+    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/plate.taiwa");
     return plan;
 }
 
@@ -161,6 +170,81 @@ void BM_VerifyMemoryByHeight(benchmark::State& state)
     state.counters["grid_MB"] = static_cast<double>(r.stock.heights().size()) * 2 * sizeof(float) / 1e6;
 }
 BENCHMARK(BM_VerifyMemoryByHeight)->Arg(30)->Arg(300)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// The material a plan's cutting moves sweep, in cells: each piece below the
+// stock top covers a band two reaches wide along its length, and a disc
+// where a run of pieces starts (the tool's footprint, counted once per
+// pass). The anchor of the issue: this many cells at a plain stamping
+// loop's rate (stampingCellsPerSecond) is what the work of cutting the
+// material costs, whatever the path's number of moves.
+double sweptCells(const Plan& plan, double cell)
+{
+    double area = 0.0;
+    for (const Step& s : plan.steps) {
+        const Tool* tool = s.tool ? plan.tool(s.tool->toolId) : nullptr;
+        if (!s.path || !tool || tool->type == ToolType::Probe) continue;
+        const double r = sim::CutterProfile(*tool).reach();
+        bool running = false;
+        for (const sim::SweptPiece& p : sim::sweptPieces(*s.path)) {
+            if (std::min(p.from.z, p.to.z) >= 0.0) {
+                running = false;
+                continue;
+            }
+            const double len = p.arc ? std::abs(p.sweep) * std::hypot(p.from.x - p.centre.x, p.from.y - p.centre.y)
+                                     : std::hypot(p.to.x - p.from.x, p.to.y - p.from.y);
+            area += 2.0 * r * len + (running ? 0.0 : 3.14159265358979 * r * r);
+            running = true;
+        }
+    }
+    return area / (cell * cell);
+}
+
+// A sample verified at 0.05 mm on every core beside the anchor: the cells
+// its moves sweep at the stamping loop's rate on one core, both in this run.
+void verifyAgainstStamping(benchmark::State& state, const Plan& plan)
+{
+    verify::Options o;
+    o.resolution = 0.05;
+    verify::Report r;
+    double seconds = 0;
+    for (auto _ : state) {
+        const auto start = std::chrono::steady_clock::now();
+        r = verify::verifyPlan(plan, o);
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        benchmark::DoNotOptimize(r);
+    }
+    const double ours = seconds / static_cast<double>(state.iterations());
+    const double swept = sweptCells(plan, o.resolution);
+    const double stamping = swept / stampingCellsPerSecond(o.resolution);
+    std::size_t moves = 0;
+    for (const Step& s : plan.steps)
+        if (s.path) moves += s.path->moves.size();
+    state.counters["verify_s"] = ours;
+    state.counters["stamping_s"] = stamping;
+    state.counters["ratio_to_stamping"] = ours / stamping;
+    state.counters["moves"] = static_cast<double>(moves);
+    state.counters["cells_M"] = static_cast<double>(r.columns) * r.rows / 1e6;
+    state.counters["swept_M"] = swept / 1e6;
+    state.counters["visits_M"] = r.cellVisits / 1e6;
+    state.counters["findings"] = static_cast<double>(r.findings.size());
+}
+
+void BM_VerifyCpIslands(benchmark::State& state)
+{
+    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/cp-islands.taiwa");
+    verifyAgainstStamping(state, plan);
+}
+BENCHMARK(BM_VerifyCpIslands)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+void BM_VerifyPlateFine(benchmark::State& state) { verifyAgainstStamping(state, plate()); }
+BENCHMARK(BM_VerifyPlateFine)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+void BM_VerifyFinePocket(benchmark::State& state)
+{
+    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/fine-pocket.taiwa");
+    verifyAgainstStamping(state, plan);
+}
+BENCHMARK(BM_VerifyFinePocket)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include "model/contour.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -263,6 +264,8 @@ constexpr double kFine = 1e-4;    // mm
 
 RegionDistance::RegionDistance(const Region& r)
 {
+    static std::atomic<unsigned long long> made{0};
+    id_ = ++made;
     polygons_.push_back(flatten(r.outer, kFine));
     coarse_.push_back(flatten(r.outer, kCoarse));
     segments_ = r.outer.segments;
@@ -281,6 +284,24 @@ double RegionDistance::operator()(Point2 p) const
     for (std::size_t i = 1; inside && i < polygons.size(); ++i)
         if (windingNumber(polygons[i], p) != 0) inside = false;
     return inside ? -d : d;
+}
+
+bool RegionDistance::within(Point2 p, double limit) const
+{
+    struct Known {
+        unsigned long long region = 0;  // the id, not the address: a new region may take a freed one's
+        Point2 at{};
+        double distance = 0.0;
+    };
+    thread_local Known last;
+    if (last.region == id_) {
+        // |d(p) - d(q)| <= |p - q|, with a margin for the rounding of both.
+        const double moved = length(p - last.at) + 1e-9 * (1.0 + std::abs(last.distance) + std::abs(limit));
+        if (last.distance - moved > limit) return false;
+        if (last.distance + moved <= limit) return true;
+    }
+    last = {id_, p, (*this)(p)};
+    return last.distance <= limit;
 }
 
 }  // namespace taiwa

@@ -111,11 +111,19 @@ class RegionDistance {
 public:
     explicit RegionDistance(const Region& r);
     double operator()(Point2 p) const;
+    // Whether the signed distance at p is at most `limit`: the same answer
+    // as (*this)(p) <= limit, found without the edges when the distance
+    // last worked out on this thread for this region, at a point q, is
+    // farther from the limit than |p - q| (the distance changes no faster
+    // than the point moves). A verification asks the cells of a row in
+    // order, most of them far from the walls.
+    bool within(Point2 p, double limit) const;
 
 private:
     std::vector<ContourSegment> segments_;
     std::vector<std::vector<Point2>> polygons_;  // outer, then islands, within 0.1 µm
     std::vector<std::vector<Point2>> coarse_;    // the same within 20 µm, for points farther away
+    unsigned long long id_ = 0;                  // this region among all made (within's memory is per region)
 };
 
 }  // namespace taiwa

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace taiwa::sim {
 
@@ -56,6 +57,18 @@ private:
     Point3 last_{};
 };
 
+// The runs of cells a sweep looks at: all of them. A caller that knows
+// some cells cannot change (verify.cpp's tiles: a run of cells already at
+// or below the tool's tip) passes its own, which calls cells(lo, hi) for
+// the parts of [from, to] in row j still to visit.
+struct EveryCell {
+    template <class Cells>
+    void operator()(int /*row*/, int from, int to, Cells&& cells) const
+    {
+        cells(from, to);
+    }
+};
+
 // Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
 // centre lies within `reach` of the segment a -> b, r2 being the square of
 // that distance (a flat end mill needs no root), except the cells whose
@@ -63,9 +76,9 @@ private:
 // sweep at the same height ended at a has cut those with the cutter's flat
 // bottom already, and a chain of short moves would otherwise visit a whole
 // disc of cells per move.
-template <class Visit>
+template <class Visit, class Runs = EveryCell>
 void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int rowMin, int rowMax, Visit&& visit,
-                     double skipAroundA = 0.0)
+                     double skipAroundA = 0.0, Runs&& runs = Runs{})
 {
     const double c = f.cellSize();
     const Stock& s = f.stock();
@@ -132,27 +145,32 @@ void forEachCellNear(const HeightField& f, Point2 a, Point2 b, double reach, int
                 if (skipFrom > skipTo) skipFrom = to + 1, skipTo = to;
             }
         }
-        for (int i = from; i <= to; ++i) {
-            if (i == skipFrom) {
-                i = skipTo;
-                continue;
+        const auto cells = [&](int first, int last) {
+            for (int i = first; i <= last; ++i) {
+                if (i >= skipFrom && i <= skipTo) {
+                    i = skipTo;
+                    continue;
+                }
+                const double px = f.centre(i, j).x - a.x;
+                const double t = std::clamp((px * d.x + py * d.y) * inverse, 0.0, 1.0);
+                const double qx = px - t * d.x, qy = py - t * d.y;
+                const double r2 = qx * qx + qy * qy;
+                if (r2 <= reach2) visit(i, j, r2);
             }
-            const double px = f.centre(i, j).x - a.x;
-            const double t = std::clamp((px * d.x + py * d.y) * inverse, 0.0, 1.0);
-            const double qx = px - t * d.x, qy = py - t * d.y;
-            const double r2 = qx * qx + qy * qy;
-            if (r2 <= reach2) visit(i, j, r2);
-        }
+        };
+        runs(j, from, to, cells);
     }
 }
 
 // Calls visit(i, j, r2) for every cell of `f` in rows rowMin..rowMax whose
 // centre lies within `reach` of the arc of radius `radius` around `c` from
 // angle a0 [rad] over `sweep` (signed, |sweep| <= 2π), r2 being the square
-// of that distance: exact, no chords.
-template <class Visit>
+// of that distance: exact, no chords. Each row looks only at the cells
+// under the ring of width 2 reach around the circle (one or two runs), not
+// at the arc's whole box.
+template <class Visit, class Runs = EveryCell>
 void forEachCellNearArc(const HeightField& f, Point2 c, double radius, double a0, double sweep, double reach, int rowMin,
-                        int rowMax, Visit&& visit)
+                        int rowMax, Visit&& visit, Runs&& runs = Runs{})
 {
     constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
     const bool full = std::abs(sweep) >= kTwoPi - 1e-12;
@@ -183,21 +201,43 @@ void forEachCellNearArc(const HeightField& f, Point2 c, double radius, double a0
     const int j1 = std::min(rowMax, static_cast<int>(std::floor((y1 + reach - s.y) / cell)));
     const double inner = std::max(0.0, radius - reach), outer = radius + reach;
     const double inner2 = inner * inner, outer2 = outer * outer, reach2 = reach * reach;
+    // The cell columns whose centres may lie in [x0, x1] (a cell more each
+    // side: the exact test below decides).
+    const auto columnsOf = [&](double xa, double xb) {
+        return std::pair{std::max(i0, static_cast<int>(std::floor((xa - s.x) / cell - 0.5))),
+                         std::min(i1, static_cast<int>(std::ceil((xb - s.x) / cell - 0.5)))};
+    };
     for (int j = j0; j <= j1; ++j) {
-        for (int i = i0; i <= i1; ++i) {
-            const Point2 p = f.centre(i, j);
-            const Point2 v = p - c;
-            const double d2 = dot(v, v);
-            if (d2 > outer2 || d2 < inner2) continue;  // farther than the reach from the whole circle
-            double r;
-            if (d2 > 0.0 && withinDir(v)) {
-                r = std::abs(std::sqrt(d2) - radius);
-            } else {
-                const Point2 e0 = p - p0, e1 = p - p1;
-                r = std::sqrt(std::min(dot(e0, e0), dot(e1, e1)));
+        const auto cells = [&](int first, int last) {
+            for (int i = first; i <= last; ++i) {
+                const Point2 p = f.centre(i, j);
+                const Point2 v = p - c;
+                const double d2 = dot(v, v);
+                if (d2 > outer2 || d2 < inner2) continue;  // farther than the reach from the whole circle
+                double r;
+                if (d2 > 0.0 && withinDir(v)) {
+                    r = std::abs(std::sqrt(d2) - radius);
+                } else {
+                    const Point2 e0 = p - p0, e1 = p - p1;
+                    r = std::sqrt(std::min(dot(e0, e0), dot(e1, e1)));
+                }
+                if (r * r <= reach2) visit(i, j, r * r);
             }
-            if (r * r <= reach2) visit(i, j, r * r);
+        };
+        const double dy = f.centre(0, j).y - c.y, dy2 = dy * dy;
+        if (dy2 > outer2) continue;
+        const double wOut = std::sqrt(outer2 - dy2);
+        if (dy2 >= inner2) {  // the row crosses the ring once
+            const auto [first, last] = columnsOf(c.x - wOut, c.x + wOut);
+            if (first <= last) runs(j, first, last, cells);
+            continue;
         }
+        const double wIn = std::sqrt(inner2 - dy2);  // twice, around the hole
+        const auto [lo0, hi0] = columnsOf(c.x - wOut, c.x - wIn);
+        const auto [lo1, hi1] = columnsOf(c.x + wIn, c.x + wOut);
+        if (lo0 <= hi0) runs(j, lo0, hi0, cells);
+        const int from1 = lo0 <= hi0 ? std::max(lo1, hi0 + 1) : lo1;  // no cell twice
+        if (from1 <= hi1) runs(j, from1, hi1, cells);
     }
 }
 

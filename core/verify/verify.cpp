@@ -4,6 +4,11 @@
 // and at the end (material left). The grid is cut in bands of rows, one per
 // core: each band runs every move in order over its own rows, so the order
 // of the cuts (which a rapid into stock depends on) is kept without locks.
+// Each row of the grid is kept in tiles of 32 cells with the highest of
+// their heights: a sweep passes over a tile already at or below its tip in
+// one test (a cell there can neither be lowered nor touch the shank or the
+// holder), so a pass that re-sweeps what the last one cut costs little and
+// the work follows the material removed, not the path's length.
 // A lathe job is cut into its bar's half-section instead (verify_turning.h).
 #include "verify/verify.h"
 #include "verify/verify_turning.h"
@@ -37,6 +42,7 @@ namespace {
 constexpr double kGougeTolerance = 0.001;  // material removed inside the part beyond this (and the resolution) [mm]
 constexpr double kTouch = 0.001;           // a rapid, a shank or a holder nearer than this touches nothing [mm]
 constexpr int kBandsPerThread = 8;
+constexpr int kTile = 32;  // cells of a row under one tile top
 
 // What one step hands the bands.
 struct StepData {
@@ -111,7 +117,9 @@ class Verifier {
 public:
     Verifier(const Plan& plan, double resolution)
         : plan_(plan), res_(resolution), zStep_(std::min(0.02, resolution / 5.0)), field_(plan.mmJob.stock, resolution),
-          limit_(field_.heights().size(), 0.0f)
+          limit_(field_.heights().size(), 0.0f), tilesPerRow_((field_.columns() + kTile - 1) / kTile),
+          tileTop_(static_cast<std::size_t>(tilesPerRow_) * field_.rows(), 0.0f),
+          tileStale_(tileTop_.size(), 1)
     {
         units_.resize(plan.mmJob.units.size());
         for (std::size_t u = 0; u < units_.size(); ++u) {
@@ -188,6 +196,22 @@ public:
 private:
     double cellArea() const { return res_ * res_; }
 
+    std::size_t tileOf(int i, int j) const { return static_cast<std::size_t>(j) * tilesPerRow_ + i / kTile; }
+
+    // The highest cell of tile t of row j, taken anew when a cell of it was
+    // lowered since (a tile is only read and written by its row's band).
+    float tileTop(int j, int t)
+    {
+        const std::size_t k = static_cast<std::size_t>(j) * tilesPerRow_ + t;
+        if (tileStale_[k]) {
+            const float* h = field_.data() + field_.indexOf(t * kTile, j);
+            const int n = std::min(kTile, field_.columns() - t * kTile);
+            tileTop_[k] = *std::max_element(h, h + n);
+            tileStale_[k] = 0;
+        }
+        return tileTop_[k];
+    }
+
     // The gouge limit of every cell of the band: the deepest the finished
     // part goes within one cell of its centre, less the tolerance.
     void limits(int row0, int row1)
@@ -235,7 +259,7 @@ private:
     {
         visits_ = 0;
         limits(row0, row1);
-        open(row0, row1);
+        open(row0, row1);  // (every tile starts stale: its top is taken when first asked)
         for (std::size_t k = 0; k < steps_.size(); ++k) {
             if (!steps_[k].cuts) continue;
             removed[k] = cutStep(static_cast<int>(k), row0, row1, out);
@@ -265,7 +289,24 @@ private:
                 const bool shankLow = z + d.flute < -kTouch;
                 const bool holderLow = z + d.holderZ < -kTouch;
                 const double radius = holderLow ? std::max(reach, d.holderR) : reach;
-                cellsWithin(radius, [&](int i, int j, double r2) {
+                // No cell at or below the tip's height changes, nor touches
+                // the shank or holder (both above the tip): skip its tile.
+                const float floor = static_cast<float>(std::max(z, bottom));
+                const auto runs = [&](int j, int from, int to, const auto& cells) {
+                    int start = -1;  // the first cell of the run still to visit
+                    for (int lo = from; lo <= to;) {
+                        const int t = lo / kTile, hi = std::min(to, (t + 1) * kTile - 1);
+                        if (tileTop(j, t) > floor) {
+                            if (start < 0) start = lo;
+                        } else if (start >= 0) {
+                            cells(start, lo - 1);
+                            start = -1;
+                        }
+                        lo = hi + 1;
+                    }
+                    if (start >= 0) cells(start, to);
+                };
+                cellsWithin(radius, runs, [&](int i, int j, double r2) {
                     const std::size_t c = field_.indexOf(i, j);
                     ++visits;
                     const double before = h[c];
@@ -279,10 +320,12 @@ private:
                     if (shankLow && before > z + d.flute + kTouch && before <= z + d.holderZ + kTouch)
                         out.add(FindingKind::Collision, k, piece.move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "shank"), where(before), before - (z + d.flute));
                     const double after = std::max(z + cutter.heightSquared(r2), bottom);
-                    if (after >= before) return;
+                    const float lowered = static_cast<float>(after);  // the grid's heights are floats
+                    if (lowered >= h[c]) return;
                     if (piece.rapid && before - after > kTouch)
                         out.add(FindingKind::RapidIntoStock, k, piece.move, "", where(after), before - after);
-                    h[c] = static_cast<float>(after);
+                    h[c] = lowered;
+                    tileStale_[tileOf(i, j)] = 1;
                     removed += before - h[c];
                     if (h[c] < limit_[c]) {
                         const double area = before >= limit_[c] ? cellArea() : 0.0;  // each cell counted once
@@ -298,8 +341,8 @@ private:
             const auto line = [&](Point2 a, Point2 b, double z) {
                 const bool holderLow = z + d.holderZ < -kTouch;
                 const double skip = holderLow ? 0.0 : chain.skip(a, z, cutter.flatRadius());
-                level(z, [&](double radius, const auto& visit) {
-                    sim::forEachCellNear(field_, a, b, radius, row0, row1, visit, skip);
+                level(z, [&](double radius, const auto& runs, const auto& visit) {
+                    sim::forEachCellNear(field_, a, b, radius, row0, row1, visit, skip, runs);
                 });
                 if (z < 0.0 && !holderLow) chain.ended(b, z);
                 else chain.broken();
@@ -319,9 +362,9 @@ private:
             for (int part = 0; part < n; ++part) {
                 const double t0 = static_cast<double>(part) / n, t1 = static_cast<double>(part + 1) / n;
                 const double z = std::max(piece.from.z + t0 * dz, piece.from.z + t1 * dz);
-                level(z, [&](double reachOf, const auto& visit) {
+                level(z, [&](double reachOf, const auto& runs, const auto& visit) {
                     sim::forEachCellNearArc(field_, c, radius, a0 + t0 * piece.sweep, (t1 - t0) * piece.sweep, reachOf, row0,
-                                            row1, visit);
+                                            row1, visit, runs);
                 });
             }
             if (dz != 0.0) line({piece.to.x, piece.to.y}, {piece.to.x, piece.to.y}, piece.to.z);
@@ -424,6 +467,9 @@ private:
     double zStep_;
     sim::HeightField field_;
     std::vector<float> limit_;
+    int tilesPerRow_;
+    std::vector<float> tileTop_;             // the highest cell of each tile (row-major, tilesPerRow_ a row)
+    std::vector<std::uint8_t> tileStale_;    // a cell of the tile lowered since its top was taken
     std::vector<UnitData> units_;
     std::vector<StepData> steps_;
     static thread_local std::uint64_t visits_;

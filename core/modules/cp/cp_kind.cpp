@@ -76,10 +76,10 @@ public:
         c.max = box.max;
         c.depth = p.depth;
         const auto distance = std::make_shared<RegionDistance>(region);
-        c.depthAt = [distance, depth = p.depth](Point2 q, double slack) { return (*distance)(q) <= slack ? depth : 0.0; };
+        c.depthAt = [distance, depth = p.depth](Point2 q, double slack) { return distance->within(q, slack) ? depth : 0.0; };
         // Walls only (U8): the pocket is open to the floor within α2 of its walls.
         if (toolUseFromCode(p.toolUse).value_or(ToolUse::Standard) == ToolUse::WallOnly)
-            c.openAt = [distance, depth = p.depth, a2 = tech.alpha2](Point2 q) { return (*distance)(q) <= -a2 ? depth : 0.0; };
+            c.openAt = [distance, depth = p.depth, a2 = tech.alpha2](Point2 q) { return distance->within(q, -a2) ? depth : 0.0; };
         return c;
     }
 
