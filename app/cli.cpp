@@ -262,7 +262,7 @@ int exportJob(const Options& o, int& argc, char** argv)
         if (auto why = l.plan.mmJob.bar ? post::cannotPost(*d, post::Task::LatheTape)
                        : !l.plan.setups.empty() ? post::cannotPost(*d, post::Task::ProbingPrograms)
                                                 : std::nullopt) {
-            std::cerr << fileName(o.job) << ": dialect: " << *why << '\n';
+            std::cerr << fileName(o.job) << ": dialect: " << *why << "; nothing was written\n";
             return kInputErrors;
         }
     }

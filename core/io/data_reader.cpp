@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace taiwa::io {
 
@@ -24,6 +25,28 @@ int lineOfRepeat(const std::string& text, const std::string& key)
     const auto second = text.find(quoted, first + quoted.size());
     return lineOfByte(text, (second == std::string::npos ? first : second) + 1);
 }
+
+// A SAX pass that only remembers where the syntax broke.
+struct ErrorPosition : nlohmann::json_sax<json> {
+    std::optional<std::size_t> byte;
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool key(string_t&) override { return true; }
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) override
+    {
+        byte = position;
+        return false;
+    }
+};
 
 }  // namespace
 
@@ -46,8 +69,13 @@ DataReader::DataReader(const std::string& text, const std::string& source) : sou
 {
     ParsedDocument doc = parseDocument(text);
     if (!doc.root) {
-        // The parser's sentence says where ("at byte 12 (line 2, column 3)").
-        throw DataRefusal{source_ + ": not valid JSON: " + doc.error};
+        // Where the syntax breaks, by a pass that builds nothing (a tree nested
+        // too deep is never built); else the reader's sentence (too deep, a
+        // number too large).
+        ErrorPosition at;
+        json::sax_parse(text.begin(), text.end(), &at);
+        if (at.byte) throw DataRefusal{source_ + ":" + std::to_string(lineOfByte(text, *at.byte)) + ": not valid JSON"};
+        throw DataRefusal{source_ + ": " + doc.error};
     }
     if (!doc.repeatedKeys.empty()) {
         const JsonPath& p = doc.repeatedKeys.front();
@@ -62,7 +90,7 @@ DataReader::DataReader(const std::string& text, const std::string& source) : sou
 
 void DataReader::fail(const std::string& key, const std::string& what) const
 {
-    const int line = lineOfKey(text_, key);
+    const int line = lineOfKey(text_, key.substr(0, key.find('[')));
     throw DataRefusal{source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key + ": " + what};
 }
 

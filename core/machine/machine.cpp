@@ -33,6 +33,16 @@ class Reader {
 public:
     Reader(const std::string& text, const std::string& source) : r_(text, source) {}
 
+    // A number above zero, within [low, high].
+    double positive(const json& v, const std::string& path, double low, double high, const char* unit) const
+    {
+        if (!v.is_number() || !(v.get<double>() > 0.0)) r_.fail(path, "must be a number above zero");
+        const double d = v.get<double>();
+        if (!(d >= low && d <= high))
+            r_.fail(path, "must be from " + io::shortNumber(low) + " to " + io::shortNumber(high) + " " + unit + ", not " + io::shortNumber(d));
+        return d;
+    }
+
     Machine read() const
     {
         const json& j = r_.root();
@@ -62,24 +72,24 @@ public:
         for (const auto& [axis, range] : travel.items()) {
             const std::string path = "travel." + axis;
             if (!range.is_array() || range.size() != 2) r_.fail(path, "must be [min, max] in mm with min below max");
-            const double lo = r_.number(range[0], path, -kMaxTravel, kMaxTravel, false);
-            const double hi = r_.number(range[1], path, -kMaxTravel, kMaxTravel, false);
+            const double lo = r_.number(range[0], path + "[0]", -kMaxTravel, kMaxTravel, false);
+            const double hi = r_.number(range[1], path + "[1]", -kMaxTravel, kMaxTravel, false);
             if (!(lo < hi)) r_.fail(path, "must be [min, max] in mm with min below max");
             m.travel[axis] = {lo, hi};
         }
         for (const auto& a : axes)
             if (!m.travel.contains(a)) r_.fail("travel." + a, "missing");
-        m.maxSpindleSpeed = r_.number(r_.at(j, "maxSpindleSpeed", "maxSpindleSpeed"), "maxSpindleSpeed", 1.0, kMaxSpindle, false);
-        m.maxFeed = r_.number(r_.at(j, "maxFeed", "maxFeed"), "maxFeed", kMinRate, kMaxRate, false);
+        m.maxSpindleSpeed = positive(r_.at(j, "maxSpindleSpeed", "maxSpindleSpeed"), "maxSpindleSpeed", 1.0, kMaxSpindle, "rpm");
+        m.maxFeed = positive(r_.at(j, "maxFeed", "maxFeed"), "maxFeed", kMinRate, kMaxRate, "mm/min");
         const json& rapid = r_.at(j, "rapid", "rapid");
         if (!rapid.is_object()) r_.fail("rapid", "must be an object of axes");
-        for (const auto& a : axes) m.rapid[a] = r_.number(r_.at(rapid, a, "rapid." + a), "rapid." + a, kMinRate, kMaxRate, false);
+        for (const auto& a : axes) m.rapid[a] = positive(r_.at(rapid, a, "rapid." + a), "rapid." + a, kMinRate, kMaxRate, "mm/min");
         const auto count = [&](const json& o, const char* key, const std::string& path) {
             if (!o.is_object()) r_.fail(path.substr(0, path.find('.')), "must be an object");
             return static_cast<int>(r_.whole(r_.at(o, key, path), path, 1, 10000));
         };
         const auto length = [&](const json& o, const char* key, const std::string& path) {
-            return r_.number(r_.at(o, key, path), path, 0.0, kMaxChuck, true);
+            return positive(r_.at(o, key, path), path, 0.001, kMaxChuck, "mm");
         };
         if (m.kind == MachineKind::Lathe) {
             if (const json* x = r_.find(j, "xDiameter")) {
@@ -100,15 +110,15 @@ public:
         if (const json* acc = r_.find(j, "acceleration")) {
             if (!acc->is_object()) r_.fail("acceleration", "must be an object of axes");
             for (const auto& a : axes)
-                m.acceleration[a] = r_.number(r_.at(*acc, a, "acceleration." + a), "acceleration." + a, kMinAcceleration,
-                                              kMaxAcceleration, false);
+                m.acceleration[a] = positive(r_.at(*acc, a, "acceleration." + a), "acceleration." + a, kMinAcceleration,
+                                             kMaxAcceleration, "mm/s²");
         }
         if (const json* v = r_.find(j, "lookAhead")) {
             if (!v->is_number_integer() && !v->is_number_unsigned())
                 r_.fail("lookAhead", "must be a whole number of blocks from 1 to 10000");
             m.lookAhead = static_cast<int>(r_.whole(*v, "lookAhead", 1, 10000));
         }
-        if (const json* v = r_.find(j, "cornerTolerance")) m.cornerTolerance = r_.number(*v, "cornerTolerance", 0.0, 10.0, true);
+        if (const json* v = r_.find(j, "cornerTolerance")) m.cornerTolerance = positive(*v, "cornerTolerance", 1e-6, 10.0, "mm");
         if (const json* coolant = r_.find(j, "coolant")) {
             if (!coolant->is_object()) r_.fail("coolant", "must be an object");
             static const std::regex mWords(R"(\s*([Mm][0-9]{1,3}\s*)+)");

@@ -210,7 +210,7 @@ private:
             const auto colon = inside.find(':');
             Placeholder p{inside.substr(0, colon), colon == std::string::npos ? "" : inside.substr(colon + 1)};
             if (std::find(allowed.begin(), allowed.end(), p.name) == allowed.end())
-                fail(key, "uses {" + p.name + "}, which this word cannot be given; its fields: " + list());
+                fail(key, "not a template this program can fill: it uses {" + p.name + "}, which this word cannot be given; its fields: " + list());
             std::smatch m;
             if (!std::regex_match(p.spec, m, spec)) fail(key, "{" + inside + "}: not a format this program reads (as {number:04d})");
             if ((m[2].matched && m[2].length() > 2) || (m[2].matched && m[2].length() > 0 && std::stoi(m[2].str()) > 16) ||
