@@ -6,6 +6,7 @@
 // print numbers in a sane form.
 #include "support/support.h"
 
+#include "io/job_io.h"
 #include "machine/machine.h"
 #include "post/dialect.h"
 
@@ -17,8 +18,13 @@
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
+#include <sqlite3.h>
+
+#include <regex>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace taiwa;
 using namespace taiwa::test;
@@ -41,6 +47,18 @@ QString expectNamed(const std::string& error, const QString& file, const QString
     if (line < 1 || line > lines.size() || !lines[line - 1].contains("\"" + bare + "\""))
         return QString("line %1 does not hold \"%2\": %3").arg(line).arg(bare, e);
     return {};
+}
+
+// The largest number after `letter` in the tape's blocks (comments skipped).
+double largest(const std::string& tape, char letter)
+{
+    double most = 0;
+    static const std::regex comment(R"(\([^)]*\)|;.*)");
+    const std::string bare = std::regex_replace(tape, comment, "");
+    const std::regex word(std::string("(^|[^A-Z])") + letter + "([0-9]+\\.?[0-9]*)");
+    for (auto it = std::sregex_iterator(bare.begin(), bare.end(), word); it != std::sregex_iterator(); ++it)
+        most = std::max(most, std::stod((*it)[2].str()));
+    return most;
 }
 
 }  // namespace
@@ -219,6 +237,137 @@ private slots:
         QCOMPARE(bad.exitCode, 2);
         QVERIFY2(bad.err.contains("unknown dialect 'shop-coolant-rapid'"), qPrintable(bad.err));
         QVERIFY(!QFileInfo::exists(out.filePath("y")));
+    }
+
+    // Item 9: a shop machine of 3000 rpm and 1000 mm/min gets no automatic
+    // S or F beyond them; the shipped vmc's tape of the same job has both
+    // beyond (the negative control).
+    void automaticSpeedsWithinTheMachine()
+    {
+        QTemporaryDir config;
+        const QString folder = config.filePath("taiwa/machines");
+        QVERIFY(QDir().mkpath(folder));
+        QVERIFY(QFile::copy(hostile("machines/good.json"), folder + "/slow.json"));
+        json job = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+        QTemporaryDir dir;
+        writeFile(dir.filePath("vmc.taiwa"), job.dump(2));
+        job["machine"] = "shop-good";
+        writeFile(dir.filePath("slow.taiwa"), job.dump(2));
+        const QStringList env{"XDG_CONFIG_HOME=" + config.path()};
+        for (const QString stem : {"vmc", "slow"}) {
+            const auto r = runTaiwa({"export", dir.filePath(stem + ".taiwa"), "--out", dir.filePath("out"), "--no-pictures"}, env);
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        }
+        const std::string vmc = readFile(dir.filePath("out/vmc.nc")), slow = readFile(dir.filePath("out/slow.nc"));
+        QVERIFY2(largest(vmc, 'S') > 3000 && largest(vmc, 'F') > 1000, "the control: the vmc's tape runs faster");
+        QVERIFY2(largest(slow, 'S') > 0 && largest(slow, 'S') <= 3000, qPrintable(QString::number(largest(slow, 'S'))));
+        QVERIFY2(largest(slow, 'F') > 0 && largest(slow, 'F') <= 1000, qPrintable(QString::number(largest(slow, 'F'))));
+    }
+
+    // Item 12: a process killed between two renames of an export set leaves
+    // half of each set (the control that the kill fell there), and the next
+    // set opened for the stem finishes the switch: every file the new one,
+    // the other dialect's file removed, no journal or temporary left.
+    void killedSwitchIsFinishedByTheNextOpen()
+    {
+        QTemporaryDir dir;
+        const std::string folder = dir.path().toStdString();
+        for (const char* name : {"part.nc", "part.sheet.html", "part.steps.json", "part.mpf"}) writeFile(dir.filePath(name), "old");
+        const pid_t child = ::fork();
+        QVERIFY(child >= 0);
+        if (child == 0) {
+            auto set = FileSet::open(folder, "part");
+            if (!set) ::_exit(2);
+            for (const char* name : {"part.nc", "part.sheet.html", "part.steps.json"})
+                if (!set->add(name, "new")) ::_exit(3);
+            set->remove("part.mpf");
+            static_cast<void>(set->commit([](std::size_t renamed) {
+                if (renamed == 1) ::_exit(9);  // killed after the first rename
+            }));
+            ::_exit(4);
+        }
+        int status = 0;
+        QCOMPARE(::waitpid(child, &status, 0), child);
+        QVERIFY(WIFEXITED(status));
+        QCOMPARE(WEXITSTATUS(status), 9);
+        QCOMPARE(readFile(dir.filePath("part.nc")), std::string("new"));
+        QCOMPARE(readFile(dir.filePath("part.sheet.html")), std::string("old"));  // mixed, for now
+        QVERIFY(QFileInfo::exists(dir.filePath(".part.set")));
+        {
+            auto next = FileSet::open(folder, "part");
+            QVERIFY(next.ok());
+        }
+        for (const char* name : {"part.nc", "part.sheet.html", "part.steps.json"}) QCOMPARE(readFile(dir.filePath(name)), std::string("new"));
+        QVERIFY(!QFileInfo::exists(dir.filePath("part.mpf")));
+        const QStringList left = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden, QDir::Name);
+        QCOMPARE(left, (QStringList{".part.lock", "part.nc", "part.sheet.html", "part.steps.json"}));
+    }
+
+    // Item 12: linuxcnc, then sinumerik into one folder leaves the Siemens
+    // set alone (no part.nc beside part.mpf); back to linuxcnc, no .mpf.
+    void dialectChangeRemovesTheOtherTape()
+    {
+        QTemporaryDir dir;
+        const QString job = sourcePath("resources/samples/m4-standard.taiwa"), out = dir.filePath("out");
+        const QStringList common{"m4-standard.sheet.html", "m4-standard.sheet.pdf", "m4-standard.steps.json", "m4-standard.tape.txt"};
+        for (const QString dialect : {"linuxcnc", "sinumerik", "linuxcnc"}) {
+            const auto r = runTaiwa({"export", job, "--out", out, "--dialect", dialect, "--no-pictures"});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            QStringList expected = common;
+            expected << (dialect == "sinumerik" ? "m4-standard.mpf" : "m4-standard.nc");
+            expected.sort();
+            QCOMPARE(QDir(out).entryList(QDir::Files, QDir::Name), expected);
+        }
+    }
+
+    // Item 13: numbers in messages: 1e308 as "1e+308", an angle just past
+    // -360° with its own digits, a text in a tool's diameter named as such,
+    // a folder given as the tool library named as a folder.
+    void messagesShowTheNumbersGiven()
+    {
+        QTemporaryDir dir;
+        const auto unitOf = [](json& job, const char* module) -> json& {
+            for (json& u : job["units"])
+                if (u["module"] == module) return u;
+            return job["units"][0];
+        };
+        json face = json::parse(readFile(sourcePath("resources/samples/face-top.taiwa")));
+        unitOf(face, "FACE")["angle"] = 1e308;
+        writeFile(dir.filePath("face.taiwa"), face.dump(2));
+        auto r = runTaiwa({"check", dir.filePath("face.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("the angle 1e+308° lies beyond ±360°"), qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QRegularExpression("[0-9]{20}")), qPrintable(r.err));
+        json probe = json::parse(readFile(sourcePath("resources/samples/probe-bore.taiwa")));
+        unitOf(probe, "PROBE")["touches"][0] = json::array({1e308, 1e308});
+        writeFile(dir.filePath("probe.taiwa"), probe.dump(2));
+        r = runTaiwa({"check", dir.filePath("probe.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("the X of P1 is 1e+308 mm"), qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QRegularExpression("[0-9]{20}")), qPrintable(r.err));
+        json holes = json::parse(readFile(sourcePath("resources/samples/holes-grid.taiwa")));
+        unitOf(holes, "HOLES")["angle"] = -360.0000001;
+        writeFile(dir.filePath("holes.taiwa"), holes.dump(2));
+        r = runTaiwa({"check", dir.filePath("holes.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("the angle -360.0000001° must be from -360° to 360°"), qPrintable(r.err));
+
+        // A folder as the tool library.
+        QVERIFY(QDir().mkpath(dir.filePath("lib")));
+        r = runTaiwa({"check", sourcePath("resources/samples/m4-standard.taiwa"), "--tools", dir.filePath("lib")});
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains(dir.filePath("lib") + " is a folder, not a tool library"), qPrintable(r.err));
+        // A diameter of 'abc': the library made by a first run, then damaged.
+        const QString db = dir.filePath("tools.sqlite");
+        QCOMPARE(runTaiwa({"check", sourcePath("resources/samples/m4-standard.taiwa"), "--tools", db}).exitCode, 0);
+        sqlite3* handle = nullptr;
+        QCOMPARE(sqlite3_open(QFile::encodeName(db).constData(), &handle), SQLITE_OK);
+        QCOMPARE(sqlite3_exec(handle, "UPDATE tools SET diameter = 'abc' WHERE id = (SELECT min(id) FROM tools)", nullptr, nullptr, nullptr), SQLITE_OK);
+        sqlite3_close(handle);
+        r = runTaiwa({"check", sourcePath("resources/samples/m4-standard.taiwa"), "--tools", db});
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains(QRegularExpression(": tool [0-9]+: diameter is 'abc', not a number")), qPrintable(r.err));
+        QVERIFY2(!r.err.contains("diameter 0 mm"), qPrintable(r.err));
     }
 };
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -50,6 +51,31 @@ struct ErrorPosition : nlohmann::json_sax<json> {
 
 }  // namespace
 
+std::string clean(std::string_view s)
+{
+    std::string out;
+    for (std::size_t i = 0; i < s.size();) {
+        const auto c = static_cast<unsigned char>(s[i]);
+        std::size_t n = c < 0x80 ? 1 : c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+        if (n > 1) {
+            if (i + n > s.size()) n = 0;
+            for (std::size_t k = 1; k < n; ++k)
+                if ((static_cast<unsigned char>(s[i + k]) & 0xc0) != 0x80) n = 0;
+            // Overlong forms, surrogates and code points past U+10FFFF are not UTF-8 either.
+            const auto c1 = n > 1 ? static_cast<unsigned char>(s[i + 1]) : 0;
+            if ((c == 0xe0 && c1 < 0xa0) || (c == 0xed && c1 > 0x9f) || (c == 0xf0 && c1 < 0x90) || (c == 0xf4 && c1 > 0x8f)) n = 0;
+        }
+        if (n == 0 || (n == 1 && (c < 0x20 || c == 0x7f))) {
+            out += fmt::format("\\x{:02x}", c);
+            ++i;
+        } else {
+            out.append(s.substr(i, n));
+            i += n;
+        }
+    }
+    return out;
+}
+
 bool printable(const std::string& s)
 {
     for (const char c : s) {
@@ -91,7 +117,9 @@ DataReader::DataReader(const std::string& text, const std::string& source) : sou
 void DataReader::fail(const std::string& key, const std::string& what) const
 {
     const int line = lineOfKey(text_, key.substr(0, key.find('[')));
-    throw DataRefusal{source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key + ": " + what};
+    // A key or a value of the file quoted in the message is shown as
+    // printable text of one line (control bytes and broken UTF-8 as \xNN).
+    throw DataRefusal{source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + clean(key) + ": " + clean(what)};
 }
 
 const json* DataReader::find(const json& in, const std::string& key) const
@@ -127,8 +155,9 @@ long long DataReader::whole(const json& v, const std::string& path, long long lo
 {
     const std::string range = fmt::format("must be a whole number from {} to {}", low, high);
     if (v.is_number_unsigned()) {
-        if (v.get<std::uint64_t>() > static_cast<std::uint64_t>(high)) fail(path, range);
-        return static_cast<long long>(v.get<std::uint64_t>());
+        const std::uint64_t u = v.get<std::uint64_t>();
+        if (u > static_cast<std::uint64_t>(high) || static_cast<long long>(u) < low) fail(path, range);
+        return static_cast<long long>(u);
     }
     if (!v.is_number_integer() || v.get<long long>() < low || v.get<long long>() > high) fail(path, range);
     return v.get<long long>();

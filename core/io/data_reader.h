@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace taiwa::io {
@@ -58,6 +59,10 @@ private:
 // True when `s` holds no control character (below 0x20, DEL) and is valid
 // enough to print: the texts of data files reach terminals and tapes.
 bool printable(const std::string& s);
+
+// `s` as one line of valid UTF-8 for a message: control bytes and bytes
+// that are not UTF-8 shown as \xNN.
+std::string clean(std::string_view s);
 
 // How a number is shown in a message: at most 6 significant digits, an
 // exponent for large and small ones (1e+308, not 309 digits).

@@ -66,6 +66,11 @@ public:
         if (d.fileExtension.empty() || d.fileExtension.size() > 8 ||
             d.fileExtension.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos)
             fail("fileExtension", "must be 1 to 8 lower-case letters or digits, without the dot");
+        // The tape must not take the name of another file of the export set,
+        // nor of the job beside it: an export removes other dialects' tapes.
+        static const std::set<std::string> taken{"taiwa", "json", "html", "pdf", "txt", "tbl", "lock", "set", "dxf", "step", "stp", "sqlite", "png"};
+        if (taken.contains(d.fileExtension))
+            fail("fileExtension", "'" + d.fileExtension + "' is the kind of another file (the job, the sheet, the steps); give the tape's own");
         d.percentFraming = r_.flag("percentFraming", d.percentFraming);
         d.sequenceNumbers = r_.flag("sequenceNumbers", d.sequenceNumbers);
         d.sequenceStart = r_.whole("sequenceStart", d.sequenceStart, 0, 99999);

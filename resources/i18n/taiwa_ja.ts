@@ -3373,8 +3373,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} 列 × {} 行で {} 穴になり、1 ユニットの上限 {} を超えます</translation>
         </message>
         <message>
-            <source>the angle {:g}° must be from -360° to 360°</source>
-            <translation>角度 {}° は -360° ～ 360° にしてください</translation>
+            <source>the angle {} must be from -360° to 360°</source>
+            <translation>角度 {} は -360° ～ 360° にしてください</translation>
         </message>
         <message>
             <source>{} {} must be greater than zero</source>

@@ -3373,8 +3373,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} 列 × {} 行共 {} 个孔，超过单元上限 {} 个</translation>
         </message>
         <message>
-            <source>the angle {:g}° must be from -360° to 360°</source>
-            <translation>角度 {}° 必须在 -360° 到 360° 之间</translation>
+            <source>the angle {} must be from -360° to 360°</source>
+            <translation>角度 {} 必须在 -360° 到 360° 之间</translation>
         </message>
         <message>
             <source>{} {} must be greater than zero</source>
