@@ -256,6 +256,16 @@ int exportJob(const Options& o, int& argc, char** argv)
     // known only now that the dialect is.
     const std::string dialect = dialectFor(o, l.plan);
     if (auto why = workOffsetProblem(dialect, l.plan.job.workOffset)) return printDiagnostics(fileName(o.job), {*why});
+    // A dialect that writes no lathe tape or no probing programs is refused
+    // here, as an input error, whether --dialect or the job named it.
+    if (const post::Dialect* d = post::findDialect(dialect)) {
+        if (auto why = l.plan.mmJob.bar ? post::cannotPost(*d, post::Task::LatheTape)
+                       : !l.plan.setups.empty() ? post::cannotPost(*d, post::Task::ProbingPrograms)
+                                                : std::nullopt) {
+            std::cerr << fileName(o.job) << ": dialect: " << *why << "; nothing was written\n";
+            return kInputErrors;
+        }
+    }
     // A tape with a gouge, a collision or beyond the travel is not written
     // unless the operator forces it; then its sheet says why in red.
     // The tape is posted once: for the findings' places on it, when there

@@ -7,12 +7,16 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
+
 namespace taiwa::msg {
 
 namespace {
-// Fixed decimals with trailing zeros trimmed and no "-0".
+// Fixed decimals with trailing zeros trimmed and no "-0"; a number of a
+// billion or more with 6 significant digits ("1e+308", not 309 digits).
 std::string trimmed(double v, int decimals)
 {
+    if (!(std::abs(v) < 1e9)) return fmt::format("{:.6g}", v);
     std::string s = fmt::format("{:.{}f}", v, decimals);
     if (s.find('.') != std::string::npos) {
         while (s.back() == '0') s.pop_back();
@@ -31,7 +35,14 @@ std::string quote(Len v)
     return text + " " + unitSymbol(v.unit);
 }
 
-std::string quoteDeg(double deg) { return trimmed(deg, 3) + "°"; }
+std::string quoteDeg(double deg)
+{
+    // An angle just past a whole one ("-360.0000001") is not shown as the
+    // whole one the message names as its bound: its own digits then.
+    std::string text = trimmed(deg, 3);
+    if (std::abs(deg) < 1e9 && deg != std::round(deg) && text.find('.') == std::string::npos) text = fmt::format("{:.10g}", deg);
+    return text + "°";
+}
 
 std::string toolName(const Tool& t)
 {

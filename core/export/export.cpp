@@ -20,6 +20,8 @@
 #include <cmath>
 #include <filesystem>
 #include <future>
+#include <regex>
+#include <set>
 #include <system_error>
 
 namespace taiwa {
@@ -279,6 +281,21 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     for (const auto& [suffix, bytes] : files)
         if (auto written = set->add(stem + suffix, bytes); !written)
             return Failure{nothingChanged(written.error(), outDir)};
+    // The files of an older set of this stem the new one does not have
+    // (another dialect's tape, a lathe tape's tool table, probing programs
+    // of units no longer there) go in the same switch: a folder never holds
+    // part.nc beside part.mpf.
+    std::set<std::string> names;
+    for (const auto& f : files) names.insert(stem + f.first);
+    std::set<std::string> older{stem + ".nc", stem + ".tape.txt", stem + ".tbl"};
+    for (const post::Dialect& d : post::dialectLibrary()) older.insert(stem + "." + d.fileExtension);
+    static const std::regex probing(R"(\.u[0-9]+\.(setting|probe)\.nc)");
+    for (const auto& entry : std::filesystem::directory_iterator(outDir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.starts_with(stem) && std::regex_match(name.substr(stem.size()), probing)) older.insert(name);
+    }
+    for (const auto& name : older)
+        if (!names.contains(name)) set->remove(name);
     auto written = set->commit();
     if (!written) return Failure{nothingChanged(written.error(), outDir)};
     return written;

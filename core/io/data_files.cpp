@@ -16,6 +16,24 @@ std::string userDataFolder(const std::string& kind)
     return std::string(home && *home ? home : ".") + "/.config/taiwa/" + kind;
 }
 
+namespace {
+
+// What a path is when it is not a regular file, for the message.
+const char* kindOf(std::filesystem::file_type t)
+{
+    switch (t) {
+    case std::filesystem::file_type::directory: return "a directory";
+    case std::filesystem::file_type::character: return "a character device";
+    case std::filesystem::file_type::block: return "a block device";
+    case std::filesystem::file_type::fifo: return "a named pipe (FIFO)";
+    case std::filesystem::file_type::socket: return "a socket";
+    case std::filesystem::file_type::not_found: return "a link to nothing";
+    default: return "not a regular file";
+    }
+}
+
+}  // namespace
+
 std::vector<DataFile> jsonFilesIn(const std::string& folder)
 {
     std::error_code ec;
@@ -26,12 +44,22 @@ std::vector<DataFile> jsonFilesIn(const std::string& folder)
     std::vector<DataFile> files;
     for (const auto& p : paths) {
         DataFile f{p.string(), {}, {}};
-        if (std::filesystem::file_size(p, ec) > (1u << 20)) {
+        // The kind first (a link followed): a device or a pipe is never
+        // opened, it could be endless or block the program.
+        const auto status = std::filesystem::status(p, ec);
+        if (ec && status.type() != std::filesystem::file_type::not_found) {
+            f.problem = f.path + ": cannot read it: " + ec.message();
+        } else if (status.type() != std::filesystem::file_type::regular) {
+            f.problem = f.path + ": " + kindOf(status.type()) + ", not a definition";
+        } else if (const auto size = std::filesystem::file_size(p, ec); ec) {
+            f.problem = f.path + ": cannot read it: " + ec.message();
+        } else if (size > (1u << 20)) {
             f.problem = f.path + ": larger than 1 MB, not a definition";
         } else {
             std::ifstream in(p, std::ios::binary);
             f.text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
             if (!in.good() && !in.eof()) f.problem = f.path + ": cannot read it";
+            else if (f.text.size() > (1u << 20)) f.problem = f.path + ": larger than 1 MB, not a definition", f.text.clear();
         }
         files.push_back(std::move(f));
     }

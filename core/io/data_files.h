@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace taiwa::io {
@@ -18,7 +19,8 @@ struct DataFile {
 
 // $XDG_CONFIG_HOME/taiwa/<kind>, else ~/.config/taiwa/<kind>.
 std::string userDataFolder(const std::string& kind);
-// Every *.json in `folder` (none when it does not exist), at most 1 MB each.
+// Every *.json in `folder` (none when it does not exist), at most 1 MB each;
+// a directory, device, pipe, socket or dangling link is refused by its kind.
 std::vector<DataFile> jsonFilesIn(const std::string& folder);
 // The line (from 1) of the first "key" of a dotted path's last part; 0 when absent.
 int lineOfKey(const std::string& text, const std::string& dottedPath);
@@ -27,12 +29,14 @@ int lineOfByte(const std::string& text, std::size_t byte);
 
 // The shop's files of a kind joined to the shipped definitions `items`: a
 // file whose key (id, name) is known replaces that one, a new key joins; a
-// file that cannot be used is left out with its problem (`read` gives a
+// file that cannot be used, or names a key an earlier shop file named, is
+// left out with its problem (`read` gives a
 // Result<T> naming file, line and key; `what`: "machines", "dialects").
 template <class T, class Read, class KeyOf>
 void addShopFiles(std::vector<T>& items, std::vector<std::string>& problems, const std::string& folder, Read read,
                   KeyOf key, const std::string& what)
 {
+    std::vector<std::pair<std::string, std::string>> shopKeys;  // key, file: two shop files of one key are refused
     for (const DataFile& f : jsonFilesIn(folder)) {
         if (!f.problem.empty()) {
             problems.push_back(f.problem);
@@ -43,6 +47,13 @@ void addShopFiles(std::vector<T>& items, std::vector<std::string>& problems, con
             problems.push_back(item.error() + " (left out; the shipped " + what + " stay)");
             continue;
         }
+        const auto earlier = std::find_if(shopKeys.begin(), shopKeys.end(), [&](const auto& k) { return k.first == key(*item); });
+        if (earlier != shopKeys.end()) {
+            problems.push_back(f.path + ": '" + key(*item) + "' is already defined by " + earlier->second +
+                               " (left out: two shop files of one name, and which is meant is not for the program to guess)");
+            continue;
+        }
+        shopKeys.emplace_back(key(*item), f.path);
         const auto same = std::find_if(items.begin(), items.end(), [&](const T& x) { return key(x) == key(*item); });
         if (same != items.end()) *same = std::move(*item);
         else items.push_back(std::move(*item));

@@ -152,6 +152,53 @@ void removeStaleTemporaries(const std::filesystem::path& folder, const std::stri
     }
 }
 
+// The journal of a set being switched in: ".STEM.set" in the folder, one
+// line per step: "rename\tTEMP\tTARGET" or "remove\tPATH".
+std::filesystem::path journalOf(const std::filesystem::path& folder, const std::string& stem)
+{
+    return folder / ("." + stem + ".set");
+}
+
+// Finishes the switch a killed process left: every temporary still there
+// renamed over its target, every removal made, then the journal removed.
+// Temporaries are whole and synced before a journal names them.
+void rollForward(const std::filesystem::path& folder, const std::string& stem)
+{
+    const auto journal = journalOf(folder, stem);
+    std::ifstream in(journal);
+    if (!in) return;
+    std::string line;
+    bool complete = false;
+    std::vector<std::pair<std::string, std::string>> steps;
+    while (std::getline(in, line)) {
+        if (line == "end") {
+            complete = true;
+            break;
+        }
+        const auto tab = line.find('\t');
+        if (tab == std::string::npos) continue;
+        steps.emplace_back(line.substr(0, tab), line.substr(tab + 1));
+    }
+    // A journal cut short was never in force: no rename had begun.
+    if (complete) {
+        for (const auto& [what, rest] : steps) {
+            if (what == "rename") {
+                const auto tab = rest.find('\t');
+                if (tab == std::string::npos) continue;
+                const std::string temp = rest.substr(0, tab), target = rest.substr(tab + 1);
+                // Only names of this folder: a journal is never a way to write elsewhere.
+                if (std::filesystem::path(temp).parent_path() != folder || std::filesystem::path(target).parent_path() != folder) continue;
+                if (::access(temp.c_str(), F_OK) == 0) ::rename(temp.c_str(), target.c_str());
+            } else if (what == "remove" && std::filesystem::path(rest).parent_path() == folder) {
+                ::unlink(rest.c_str());
+            }
+        }
+        syncFolder(folder);
+    }
+    ::unlink(journal.c_str());
+    syncFolder(folder);
+}
+
 }  // namespace
 
 Result<void> writeFileAtomically(const std::string& path, std::string_view text)
@@ -198,6 +245,7 @@ Result<FileSet> FileSet::open(const std::string& folder, const std::string& stem
         ::close(fd);
         return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot lock {}: {}"), lockPath, systemError(error))};
     }
+    rollForward(dir, stem);
     removeStaleTemporaries(dir, stem);
     return FileSet(dir.string(), stem, fd);
 }
@@ -211,8 +259,25 @@ Result<void> FileSet::add(const std::string& name, std::string_view bytes)
     return {};
 }
 
-Result<std::vector<std::string>> FileSet::commit()
+void FileSet::remove(const std::string& name)
 {
+    const std::filesystem::path target = std::filesystem::path(folder_) / name;
+    std::error_code ec;
+    if (std::filesystem::symlink_status(target, ec).type() != std::filesystem::file_type::not_found)
+        removals_.push_back(target.string());
+}
+
+Result<std::vector<std::string>> FileSet::commit(const std::function<void(std::size_t)>& between)
+{
+    // The journal, whole and synced before the first rename: a kill from
+    // here on is finished by the next open().
+    std::string journal;
+    for (const auto& s : staged_) journal += "rename\t" + s.temp + "\t" + s.target + "\n";
+    for (const auto& r : removals_) journal += "remove\t" + r + "\n";
+    journal += "end\n";
+    const auto journalPath = journalOf(folder_, stem_);
+    if (auto written = writeFileAtomically(journalPath.string(), journal); !written) return Failure{written.error()};
+
     // The old files are kept under a second name until every new one is in place.
     std::vector<std::string> backups(staged_.size());
     for (std::size_t i = 0; i < staged_.size(); ++i) {
@@ -227,6 +292,7 @@ Result<std::vector<std::string>> FileSet::commit()
     for (std::size_t i = 0; i < staged_.size(); ++i) {
         if (::rename(staged_[i].temp.c_str(), staged_[i].target.c_str()) == 0) {
             written.push_back(staged_[i].target);
+            if (between) between(written.size());
             continue;
         }
         const int error = errno;
@@ -237,10 +303,16 @@ Result<std::vector<std::string>> FileSet::commit()
             backups[k].clear();
         }
         dropBackups();
+        ::unlink(journalPath.c_str());
+        syncFolder(folder_);
         return Failure{cannotWrite(staged_[i].target, error)};
     }
+    for (const auto& r : removals_) ::unlink(r.c_str());
     staged_.clear();
+    removals_.clear();
     dropBackups();
+    syncFolder(folder_);
+    ::unlink(journalPath.c_str());
     syncFolder(folder_);
     return written;
 }

@@ -3,11 +3,13 @@
 
 #include "builtin_data.h"
 #include "io/data_files.h"
+#include "io/data_reader.h"
 #include "model/local_names_json.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <regex>
 #include <stdexcept>
 
 namespace taiwa {
@@ -18,121 +20,129 @@ namespace {
 
 using json = nlohmann::json;
 
-using io::lineOfKey;
+// The ranges a machine's values are read in: wide enough for any machine
+// tool, narrow enough that no time, length or count derived from them
+// overflows or prints as a 300-digit number.
+constexpr double kMaxTravel = 100000.0;     // mm from the machine's zero
+constexpr double kMinRate = 1.0, kMaxRate = 1.0e6;  // feeds and rapids, mm/min
+constexpr double kMaxSpindle = 200000.0;    // rpm
+constexpr double kMinAcceleration = 1.0, kMaxAcceleration = 1.0e6;  // mm/s²
+constexpr double kMaxChuck = 10000.0;       // mm
 
 class Reader {
 public:
-    Reader(const json& j, std::string source, const std::string& text) : j_(j), source_(std::move(source)), text_(text) {}
+    Reader(const std::string& text, const std::string& source) : r_(text, source) {}
 
-    // "FILE:LINE: key: what" (no line for a key that is missing).
-    [[noreturn]] void fail(const std::string& key, const std::string& what) const
+    // A number above zero, within [low, high].
+    double positive(const json& v, const std::string& path, double low, double high, const char* unit) const
     {
-        const int line = lineOfKey(text_, key);
-        throw std::runtime_error(source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key + ": " + what);
-    }
-    const json& at(const json& o, const std::string& key, const std::string& path) const
-    {
-        const auto it = o.find(key);
-        if (it == o.end()) fail(path, "missing");
-        return *it;
-    }
-    std::string string(const json& o, const std::string& key, const std::string& path) const
-    {
-        const json& v = at(o, key, path);
-        if (!v.is_string() || v.get<std::string>().empty()) fail(path, "must be a text");
-        return v.get<std::string>();
-    }
-    double positive(const json& o, const std::string& key, const std::string& path) const
-    {
-        const json& v = at(o, key, path);
-        if (!v.is_number() || !(v.get<double>() > 0.0)) fail(path, "must be a number above zero");
-        return v.get<double>();
+        if (!v.is_number() || !(v.get<double>() > 0.0)) r_.fail(path, "must be a number above zero");
+        const double d = v.get<double>();
+        if (!(d >= low && d <= high))
+            r_.fail(path, "must be from " + io::shortNumber(low) + " to " + io::shortNumber(high) + " " + unit + ", not " + io::shortNumber(d));
+        return d;
     }
 
     Machine read() const
     {
-        if (!j_.is_object()) fail("(file)", "not a JSON object");
-        if (j_.value("format", "") != "taiwa-machine") fail("format", "must be \"taiwa-machine\"");
-        if (!j_.contains("version") || !j_["version"].is_number_integer() || j_["version"].get<int>() != 1)
-            fail("version", "this program reads machine definitions of version 1");
+        const json& j = r_.root();
+        if (r_.text("format", "") != "taiwa-machine") r_.fail("format", "must be \"taiwa-machine\"");
+        const json& version = r_.at(j, "version", "version");
+        if (!version.is_number_integer() || version.get<long long>() != 1)
+            r_.fail("version", "this program reads machine definitions of version 1");
         Machine m;
-        m.source = source_;
-        m.id = string(j_, "id", "id");
-        m.name = string(j_, "name", "name");
-        if (j_.contains("names")) {
-            auto names = localNamesFrom(j_["names"]);
-            if (!names) fail("names", names.error());
-            m.names = std::move(*names);
+        m.source = r_.source();
+        m.id = r_.identifier("id");
+        m.name = r_.text(r_.at(j, "name", "name"), "name", 80, false);
+        if (const json* names = r_.find(j, "names")) {
+            auto local = localNamesFrom(*names);
+            if (!local) r_.fail("names", local.error());
+            for (const auto& [language, text] : *local)
+                if (text.size() > 200 || !io::printable(text)) r_.fail("names." + language, "must be printable text of at most 200 bytes");
+            m.names = std::move(*local);
         }
-        const std::string kind = string(j_, "kind", "kind");
+        const std::string kind = r_.text(r_.at(j, "kind", "kind"), "kind", 20, false);
         if (kind == "mill") m.kind = MachineKind::Mill;
         else if (kind == "lathe") m.kind = MachineKind::Lathe;
-        else fail("kind", "must be \"mill\" or \"lathe\", not \"" + kind + "\"");
-        const json& travel = at(j_, "travel", "travel");
-        if (!travel.is_object()) fail("travel", "must be an object of axes");
-        for (const auto& [axis, range] : travel.items()) {
-            if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number() ||
-                !(range[0].get<double>() < range[1].get<double>()))
-                fail("travel." + axis, "must be [min, max] in mm with min below max");
-            m.travel[axis] = {range[0].get<double>(), range[1].get<double>()};
-        }
+        else r_.fail("kind", "must be \"mill\" or \"lathe\", not \"" + kind + "\"");
+        const json& travel = r_.at(j, "travel", "travel");
+        if (!travel.is_object()) r_.fail("travel", "must be an object of axes");
         const std::vector<std::string> axes =
             m.kind == MachineKind::Lathe ? std::vector<std::string>{"x", "z"} : std::vector<std::string>{"x", "y", "z"};
+        for (const auto& [axis, range] : travel.items()) {
+            const std::string path = "travel." + axis;
+            if (!range.is_array() || range.size() != 2) r_.fail(path, "must be [min, max] in mm with min below max");
+            const double lo = r_.number(range[0], path + "[0]", -kMaxTravel, kMaxTravel, false);
+            const double hi = r_.number(range[1], path + "[1]", -kMaxTravel, kMaxTravel, false);
+            if (!(lo < hi)) r_.fail(path, "must be [min, max] in mm with min below max");
+            m.travel[axis] = {lo, hi};
+        }
         for (const auto& a : axes)
-            if (!m.travel.contains(a)) fail("travel." + a, "missing");
-        m.maxSpindleSpeed = positive(j_, "maxSpindleSpeed", "maxSpindleSpeed");
-        m.maxFeed = positive(j_, "maxFeed", "maxFeed");
-        const json& rapid = at(j_, "rapid", "rapid");
-        for (const auto& a : axes) m.rapid[a] = positive(rapid, a, "rapid." + a);
+            if (!m.travel.contains(a)) r_.fail("travel." + a, "missing");
+        m.maxSpindleSpeed = positive(r_.at(j, "maxSpindleSpeed", "maxSpindleSpeed"), "maxSpindleSpeed", 1.0, kMaxSpindle, "rpm");
+        m.maxFeed = positive(r_.at(j, "maxFeed", "maxFeed"), "maxFeed", kMinRate, kMaxRate, "mm/min");
+        const json& rapid = r_.at(j, "rapid", "rapid");
+        if (!rapid.is_object()) r_.fail("rapid", "must be an object of axes");
+        for (const auto& a : axes) m.rapid[a] = positive(r_.at(rapid, a, "rapid." + a), "rapid." + a, kMinRate, kMaxRate, "mm/min");
+        const auto count = [&](const json& o, const char* key, const std::string& path) {
+            if (!o.is_object()) r_.fail(path.substr(0, path.find('.')), "must be an object");
+            return static_cast<int>(r_.whole(r_.at(o, key, path), path, 1, 10000));
+        };
+        const auto length = [&](const json& o, const char* key, const std::string& path) {
+            return positive(r_.at(o, key, path), path, 0.001, kMaxChuck, "mm");
+        };
         if (m.kind == MachineKind::Lathe) {
-            m.xDiameter = j_.value("xDiameter", true);
-            m.turretStations = static_cast<int>(positive(at(j_, "turret", "turret"), "stations", "turret.stations"));
-            const json& chuck = at(j_, "chuck", "chuck");
-            m.chuckDiameter = positive(chuck, "diameter", "chuck.diameter");
-            m.maxBarDiameter = positive(chuck, "maxBarDiameter", "chuck.maxBarDiameter");
-            m.jawLength = positive(chuck, "jawLength", "chuck.jawLength");
+            if (const json* x = r_.find(j, "xDiameter")) {
+                if (!x->is_boolean()) r_.fail("xDiameter", "must be true or false");
+                m.xDiameter = x->get<bool>();
+            } else {
+                m.xDiameter = true;
+            }
+            m.turretStations = count(r_.at(j, "turret", "turret"), "stations", "turret.stations");
+            const json& chuck = r_.at(j, "chuck", "chuck");
+            if (!chuck.is_object()) r_.fail("chuck", "must be an object");
+            m.chuckDiameter = length(chuck, "diameter", "chuck.diameter");
+            m.maxBarDiameter = length(chuck, "maxBarDiameter", "chuck.maxBarDiameter");
+            m.jawLength = length(chuck, "jawLength", "chuck.jawLength");
         } else {
-            m.toolPockets = static_cast<int>(positive(at(j_, "toolChanger", "toolChanger"), "pockets", "toolChanger.pockets"));
+            m.toolPockets = count(r_.at(j, "toolChanger", "toolChanger"), "pockets", "toolChanger.pockets");
         }
-        if (j_.contains("acceleration")) {
-            const json& acc = j_["acceleration"];
-            if (!acc.is_object()) fail("acceleration", "must be an object of axes");
-            for (const auto& a : axes) m.acceleration[a] = positive(acc, a, "acceleration." + a);
+        if (const json* acc = r_.find(j, "acceleration")) {
+            if (!acc->is_object()) r_.fail("acceleration", "must be an object of axes");
+            for (const auto& a : axes)
+                m.acceleration[a] = positive(r_.at(*acc, a, "acceleration." + a), "acceleration." + a, kMinAcceleration,
+                                             kMaxAcceleration, "mm/s²");
         }
-        if (j_.contains("lookAhead")) {
-            const json& v = j_["lookAhead"];
-            if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 10000)
-                fail("lookAhead", "must be a whole number of blocks from 1 to 10000");
-            m.lookAhead = v.get<int>();
+        if (const json* v = r_.find(j, "lookAhead")) {
+            if (!v->is_number_integer() && !v->is_number_unsigned())
+                r_.fail("lookAhead", "must be a whole number of blocks from 1 to 10000");
+            m.lookAhead = static_cast<int>(r_.whole(*v, "lookAhead", 1, 10000));
         }
-        if (j_.contains("cornerTolerance")) m.cornerTolerance = positive(j_, "cornerTolerance", "cornerTolerance");
-        if (j_.contains("coolant")) {
-            m.coolantOn = string(j_["coolant"], "flood", "coolant.flood");
-            m.coolantOff = string(j_["coolant"], "off", "coolant.off");
+        if (const json* v = r_.find(j, "cornerTolerance")) m.cornerTolerance = positive(*v, "cornerTolerance", 1e-6, 10.0, "mm");
+        if (const json* coolant = r_.find(j, "coolant")) {
+            if (!coolant->is_object()) r_.fail("coolant", "must be an object");
+            static const std::regex mWords(R"(\s*([Mm][0-9]{1,3}\s*)+)");
+            for (auto [key, field] : {std::pair{"flood", &m.coolantOn}, std::pair{"off", &m.coolantOff}}) {
+                const std::string path = std::string("coolant.") + key;
+                *field = r_.text(r_.at(*coolant, key, path), path, 40, false);
+                if (!std::regex_match(*field, mWords)) r_.fail(path, "must be M words only (as \"M8\"), not '" + *field + "'");
+            }
         }
         return m;
     }
 
 private:
-    const json& j_;
-    std::string source_;
-    const std::string& text_;
+    io::DataReader r_;
 };
 
 }  // namespace
 
 Result<Machine> readMachine(const std::string& text, const std::string& source)
 {
-    json j;
     try {
-        j = json::parse(text);
-    } catch (const json::parse_error& e) {
-        return Failure{source + ":" + std::to_string(io::lineOfByte(text, e.byte)) + ": not valid JSON"};
-    }
-    try {
-        return Reader(j, source, text).read();
-    } catch (const std::runtime_error& e) {
-        return Failure{e.what()};
+        return Reader(text, source).read();
+    } catch (const io::DataRefusal& r) {
+        return Failure{r.message};
     }
 }
 

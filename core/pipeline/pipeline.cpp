@@ -137,7 +137,10 @@ std::vector<const Tool*> bindTools(Plan& plan, const std::vector<Tool>& library,
         if (tool.id != currentTool) ++plan.toolChanges;
         currentTool = tool.id;
         if (step.turn) continue;
-        step.speeds = stepSpeedsFeeds(step, tool, plan.mmJob.material);
+        // The automatic S and F within the job's machine (docs/tools.md).
+        const Machine* machine = findMachine(plan.mmJob.machine);
+        step.speeds = machine ? stepSpeedsFeeds(step, tool, plan.mmJob.material, machine->maxSpindleSpeed, machine->maxFeed)
+                              : stepSpeedsFeeds(step, tool, plan.mmJob.material);
         if (withToolPaths && !step.speeds)
             plan.diagnostics.push_back(unitError(plan.mmJob, step.unit, "tools." + std::string(toKey(step.kind)),
                 "tool T" + std::to_string(tool.id) + " (" + tool.name + ") has no cutting data for material " +

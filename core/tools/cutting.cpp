@@ -31,9 +31,10 @@ std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& mate
     return sf;
 }
 
-std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material)
+std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material, double maxRpm,
+                                           double maxFeed)
 {
-    auto sf = speedsFeeds(tool, material);
+    auto sf = speedsFeeds(tool, material, maxRpm, maxFeed);
     const CuttingOverride& o = step.cutting;
     if (!sf) {
         if (!o.speed || !o.feed) return std::nullopt;

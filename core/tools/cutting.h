@@ -20,6 +20,10 @@ std::optional<SpeedsFeeds> speedsFeeds(const Tool& tool, const std::string& mate
 // F in their place where the step has them (Step::cutting); the plunge feed
 // follows F in proportion. nullopt as speedsFeeds, unless both are set.
 struct Step;
-std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material);
+// The automatic S and F are clamped to the machine's limits `maxRpm` and
+// `maxFeed` (the operator's typed ones are checked against them by the job
+// check instead).
+std::optional<SpeedsFeeds> stepSpeedsFeeds(const Step& step, const Tool& tool, const std::string& material,
+                                           double maxRpm = 12000.0, double maxFeed = 10000.0);
 
 }  // namespace taiwa

@@ -211,6 +211,11 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
     const bool fresh = !std::filesystem::exists(path, ec);
     // SQLite would take an empty file for a new database and fill it: the
     // operator's file is never rewritten, so an empty one is refused.
+    // A directory, device or pipe is named by its kind, never handed to SQLite.
+    if (!fresh && std::filesystem::is_directory(path, ec))
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is a folder, not a tool library (give the library's file)"), path)};
+    if (!fresh && !std::filesystem::is_regular_file(path, ec))
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not a regular file, not a tool library"), path)};
     if (!fresh && std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) == 0)
         return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is empty, not a tool library (delete it to have the default library created)"), path)};
     if (fresh && std::filesystem::path(path).has_parent_path()) {
@@ -283,6 +288,17 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
             return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {} has an unknown type '{}'"), path_, t.id, s.text(2))};
         }
         t.type = *type;
+        // A number column holding text ('abc') would read as 0: named instead.
+        static constexpr std::pair<int, const char*> kNumbers[] = {
+            {3, "diameter"}, {4, "corner_radius"}, {5, "taper_angle"}, {6, "point_angle"}, {7, "flute_length"},
+            {8, "stickout"}, {10, "flutes"}, {11, "life_minutes"}, {12, "used_minutes"}, {13, "centre_cutting"},
+            {15, "holder_diameter"}, {16, "holder_length"}};
+        for (const auto& [column, name] : kNumbers) {
+            const int kind = sqlite3_column_type(s.get(), column);
+            if (kind != SQLITE_INTEGER && kind != SQLITE_FLOAT)
+                return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {}: {} is '{}', not a number"), path_, t.id, name,
+                                           s.text(column).substr(0, 40))};
+        }
         t.diameter = s.real(3);
         t.cornerRadius = s.real(4);
         t.taperAngle = s.real(5);

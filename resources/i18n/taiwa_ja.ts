@@ -3373,8 +3373,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} 列 × {} 行で {} 穴になり、1 ユニットの上限 {} を超えます</translation>
         </message>
         <message>
-            <source>the angle {:g}° must be from -360° to 360°</source>
-            <translation>角度 {}° は -360° ～ 360° にしてください</translation>
+            <source>the angle {} must be from -360° to 360°</source>
+            <translation>角度 {} は -360° ～ 360° にしてください</translation>
         </message>
         <message>
             <source>{} {} must be greater than zero</source>
@@ -4317,6 +4317,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} は破損しています ({})。バックアップから復元してください</translation>
         </message>
         <message>
+            <source>{} is a folder, not a tool library (give the library's file)</source>
+            <translation>{} はフォルダで、工具ライブラリではありません (ライブラリのファイルを指定してください)</translation>
+        </message>
+        <message>
+            <source>{} is not a regular file, not a tool library</source>
+            <translation>{} は通常のファイルではなく、工具ライブラリではありません</translation>
+        </message>
+        <message>
             <source>{} is empty, not a tool library (delete it to have the default library created)</source>
             <translation>{} は空で、工具ライブラリではありません (削除すると既定のライブラリが作成されます)</translation>
         </message>
@@ -4339,6 +4347,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>
             <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
+        </message>
+        <message>
+            <source>{}: tool {}: {} is '{}', not a number</source>
+            <translation>{}: 工具 {}: {} が '{}' で、数値ではありません</translation>
         </message>
         <message>
             <source>{}: tool {} has unreadable lathe data '{}'</source>

@@ -3373,8 +3373,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} 列 × {} 行共 {} 个孔，超过单元上限 {} 个</translation>
         </message>
         <message>
-            <source>the angle {:g}° must be from -360° to 360°</source>
-            <translation>角度 {}° 必须在 -360° 到 360° 之间</translation>
+            <source>the angle {} must be from -360° to 360°</source>
+            <translation>角度 {} 必须在 -360° 到 360° 之间</translation>
         </message>
         <message>
             <source>{} {} must be greater than zero</source>
@@ -4317,6 +4317,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>{} 已损坏（{}）；请从备份恢复</translation>
         </message>
         <message>
+            <source>{} is a folder, not a tool library (give the library's file)</source>
+            <translation>{} 是文件夹，不是刀具库（请指定刀具库文件）</translation>
+        </message>
+        <message>
+            <source>{} is not a regular file, not a tool library</source>
+            <translation>{} 不是普通文件，不是刀具库</translation>
+        </message>
+        <message>
             <source>{} is empty, not a tool library (delete it to have the default library created)</source>
             <translation>{} 为空，不是刀具库（删除后将创建默认刀具库）</translation>
         </message>
@@ -4339,6 +4347,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>
             <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
+        </message>
+        <message>
+            <source>{}: tool {}: {} is '{}', not a number</source>
+            <translation>{}：刀具 {}：{} 为 '{}'，不是数字</translation>
         </message>
         <message>
             <source>{}: tool {} has unreadable lathe data '{}'</source>

@@ -75,7 +75,7 @@ bool checkValues(const HolePattern& h, Reporter& r)
     bool ok = check::checkLength(h.x, "x", "x", r) && check::checkLength(h.y, "y", "y", r);
     if (!std::isfinite(h.angle) || std::abs(h.angle) > 360.0) {
         r.unit("angle",
-               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the angle {:g}° must be from -360° to 360°"), h.angle));
+               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the angle {} must be from -360° to 360°"), msg::quoteDeg(h.angle)));
         ok = false;
     }
     const auto positive = [&](double v, const char* field, const char* what) {
