@@ -474,6 +474,38 @@ Result<std::vector<Region>> offsetRegion(const Region& input, double d)
     return out;
 }
 
+bool rollsAround(const Region& input, double d, double tolerance)
+{
+    if (!(d > 0.0) || !std::isfinite(d)) return false;
+    Region region = normalised(input);
+    region.outer = withoutDegenerateSegments(region.outer);
+    for (auto& i : region.islands) i = withoutDegenerateSegments(i);
+    std::vector<const Contour*> loops{&region.outer};
+    for (const auto& i : region.islands) loops.push_back(&i);
+    std::vector<Element> elems;
+    for (const auto* l : loops) {
+        if (l->empty()) return false;
+        // An arc curving round the pocket tighter than d has no parallel:
+        // the cutter cannot follow it.
+        for (const auto& s : l->segments)
+            if (s.kind == ContourSegment::Kind::ArcCCW && s.radius() <= d + tolerance) return false;
+        addCandidates(*l, d, elems);
+    }
+    const auto splits = splitAll(elems);
+    std::vector<const ContourSegment*> boundary;
+    for (const auto* l : loops)
+        for (const auto& s : l->segments) boundary.push_back(&s);
+    Nearby nearby(boundary, d);
+    for (std::size_t i = 0; i < elems.size(); ++i) {
+        const auto& sp = splits[i];
+        for (std::size_t k = 0; k + 1 < sp.size(); ++k) {
+            if (sp[k + 1].s - sp[k].s < kSame) continue;
+            if (nearby.anyNearer(elems[i].at(0.5 * (sp[k].s + sp[k + 1].s)), d - tolerance)) return false;
+        }
+    }
+    return true;
+}
+
 std::vector<Contour> loopsOf(const std::vector<Region>& pieces)
 {
     std::vector<Contour> loops;
