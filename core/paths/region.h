@@ -22,8 +22,11 @@ double inscribedRadius(const Region& region);
 // same region). Small radii are tried first, doubling, then bisection to
 // 1 µm: a radius reaches everywhere when the cutter rolling along the whole
 // boundary stays inside to 2 µm (rollsAround, paths/region_offset.h: exact
-// parallels and corner arcs, near-linear in the segments). 0 when the region
-// is empty or has a sharp inside corner.
+// parallels and corner arcs, near-linear in the segments). At most
+// kMaxReach: no pocket tool is wider, and the rolling test's grid grows
+// with the radius (a 2,000-edge near-circle reached 321 mm in 2 minutes).
+// 0 when the region is empty or has a sharp inside corner.
+constexpr double kMaxReach = 100.0;  // mm
 double reachRadius(const Region& region, double inscribed);
 
 }  // namespace taiwa::paths

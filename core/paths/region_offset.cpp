@@ -486,9 +486,14 @@ bool rollsAround(const Region& input, double d, double tolerance)
     for (const auto* l : loops) {
         if (l->empty()) return false;
         // An arc curving round the pocket tighter than d has no parallel:
-        // the cutter cannot follow it.
-        for (const auto& s : l->segments)
-            if (s.kind == ContourSegment::Kind::ArcCCW && s.radius() <= d + tolerance) return false;
+        // the cutter stays out of it, leaving a sliver (d - r)(1/cos(φ/2) - 1)
+        // thick over its sweep φ; more than twice the tolerance is not swept.
+        for (const auto& s : l->segments) {
+            if (s.kind != ContourSegment::Kind::ArcCCW || s.radius() > d) continue;
+            const double half = std::min(0.5 * std::abs(s.sweep()), 0.5 * std::numbers::pi - 1e-9);
+            if (distance(s.start, s.end) < 1e-9 || (d - s.radius()) * (1.0 / std::cos(half) - 1.0) > 2.0 * tolerance)
+                return false;
+        }
         addCandidates(*l, d, elems);
     }
     const auto splits = splitAll(elems);

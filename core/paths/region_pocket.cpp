@@ -246,7 +246,7 @@ double reachRadius(const Region& r, double inscribed)
     const auto reaches = [&](double radius) { return rollsAround(r, radius, kLost); };
     // Small radii first, doubling: most contours are limited by a small
     // corner or channel, and a small radius is the cheapest to test.
-    const double most = inscribed;
+    const double most = std::min(inscribed, kMaxReach);
     if (!(most > 0.0)) return 0.0;
     double lo = 0.0, hi = std::min(0.125, most);
     while (reaches(hi)) {
