@@ -257,7 +257,9 @@ public:
         }
         origin_ = all.min;
         const double extent = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-6});
-        cell_ = std::max({reach, extent / 256.0, 1e-6});
+        // Cells of a quarter of the reach (no more than 256 a side): a query
+        // looks at the cells its disc touches, not at a block three reaches wide.
+        cell_ = std::max({reach / 4.0, extent / 256.0, 1e-6});
         nx_ = static_cast<int>((all.max.x - all.min.x) / cell_) + 1;
         ny_ = static_cast<int>((all.max.y - all.min.y) / cell_) + 1;
         cells_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), {});
@@ -278,12 +280,18 @@ public:
         const auto [x0, y0] = cellOf({p.x - limit, p.y - limit});
         const auto [x1, y1] = cellOf({p.x + limit, p.y + limit});
         for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x)
+            for (int x = x0; x <= x1; ++x) {
+                // A cell wholly farther than the limit holds nothing nearer.
+                const double cx = origin_.x + x * cell_, cy = origin_.y + y * cell_;
+                const double dx = std::max({cx - p.x, 0.0, p.x - cx - cell_});
+                const double dy = std::max({cy - p.y, 0.0, p.y - cy - cell_});
+                if (dx * dx + dy * dy >= limit * limit) continue;
                 for (std::uint32_t k : cells_[index(x, y)]) {
                     if (seen_[k] == stamp_) continue;
                     seen_[k] = stamp_;
                     if (distance(p, segs_[k]->nearest(p)) < limit) return true;
                 }
+            }
         return false;
     }
 
