@@ -18,6 +18,10 @@ namespace taiwa::figure {
 
 const Element* Evaluation::find(const std::string& name) const
 {
+    if (elementIndex.size() == elements.size()) {
+        const auto it = elementIndex.find(name);
+        return it == elementIndex.end() ? nullptr : &elements[it->second];
+    }
     for (const auto& e : elements)
         if (e.name == name) return &e;
     return nullptr;
@@ -25,6 +29,10 @@ const Element* Evaluation::find(const std::string& name) const
 
 const EvaluatedContour* Evaluation::findContour(const std::string& name) const
 {
+    if (contourIndex.size() == contours.size()) {
+        const auto it = contourIndex.find(name);
+        return it == contourIndex.end() ? nullptr : &contours[it->second];
+    }
     for (const auto& c : contours)
         if (c.name == name) return &c;
     return nullptr;
@@ -321,13 +329,17 @@ Evaluation evaluate(const std::vector<Definition>& definitions)
         if (d.method == Method::Contour) {
             auto c = evaluateContour(d, out);
             if (auto* error = std::get_if<FigureError>(&c)) out.errors.push_back(std::move(*error));
-            else out.contours.push_back(std::move(std::get<EvaluatedContour>(c)));
+            else {
+                out.contourIndex.emplace(std::get<EvaluatedContour>(c).name, out.contours.size());
+                out.contours.push_back(std::move(std::get<EvaluatedContour>(c)));
+            }
             continue;
         }
         try {
             Element e = ev.element(d);
             if (!finite(e)) throw Refused{TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)")};
             ev.keep(e);
+            out.elementIndex.emplace(e.name, out.elements.size());
             out.elements.push_back(std::move(e));
         } catch (const Refused& r) {
             missing.insert(d.name);

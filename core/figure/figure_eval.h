@@ -13,6 +13,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -50,8 +51,12 @@ struct Evaluation {
     std::vector<EvaluatedContour> contours;
     std::vector<FigureError> errors;
     bool ok() const { return errors.empty(); }
+    // By name: through the index evaluate() keeps while it matches the
+    // vectors (a figure of 200,000 elements looks each name up once, not
+    // along all of them), else along the vector.
     const Element* find(const std::string& name) const;
     const EvaluatedContour* findContour(const std::string& name) const;
+    std::unordered_map<std::string, std::size_t> elementIndex, contourIndex;
 };
 
 // Distances below this are zero (mm): coincident points, a point on a circle,

@@ -118,6 +118,14 @@ public:
     {
         return 10;
     }
+    // The unit's field that drives its moves most, named when a plan would
+    // not fit the move budget (the unit `mm`, in mm; `step` its step with the
+    // most moves): by default "stepOver" when the step has the unit's own
+    // step-over, else "depth" (the layers).
+    virtual std::string movesField(const ModuleInput& /*mm*/, const Step& step) const
+    {
+        return step.stepOver ? "stepOver" : "depth";
+    }
     // The order of the unit's own steps: true when `later` must wait for
     // `earlier` (both steps of one unit of this kind). The job-wide order
     // (tools/step_order.cpp) keeps these and otherwise saves tool changes.

@@ -6,6 +6,8 @@
 #include "check/messages.h"
 #include "model/clipper_scale.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -99,6 +101,13 @@ std::optional<Point2> sharpInsideCorner(const Contour& c)
 
 }  // namespace
 
+bool regionWithinLimits(const Region& region)
+{
+    std::size_t segments = region.outer.segments.size();
+    for (const auto& i : region.islands) segments += i.segments.size();
+    return segments <= kMaxRegionSegments && region.islands.size() <= kMaxRegionIslands;
+}
+
 bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what, bool refuseSharpInsideCorners)
 {
     if (p.outline.empty()) {
@@ -114,6 +123,23 @@ bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what
         ok = false;
     }
     if (!ok || !p.region) return false;
+    if (p.region->islands.size() > kMaxRegionIslands) {
+        r.unit("islands", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                           "{} islands; a {} may have at most {} (the checks compare "
+                                                           "every two of them)"),
+                                      p.region->islands.size(), what, kMaxRegionIslands));
+        return false;
+    }
+    if (!regionWithinLimits(*p.region)) {
+        std::size_t segments = p.region->outer.segments.size();
+        for (const auto& i : p.region->islands) segments += i.segments.size();
+        r.unit(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
+               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "the {}'s outline {} and its islands have {} lines and arcs; at most {} "
+                                                "are taken (simplify the contours, or join short lines into arcs)"),
+                           what, p.outline, segments, kMaxRegionSegments));
+        return false;
+    }
     const Region region = normalised(*p.region);
     std::vector<std::pair<std::string, const Contour*>> all{{p.outline, &region.outer}};
     for (std::size_t i = 0; i < region.islands.size() && i < p.islands.size(); ++i)

@@ -9,6 +9,7 @@
 #include "model/contour.h"
 #include "model/module.h"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,15 @@ struct NamedRegion {
     void resolve(const ContourTable& table);
     friend bool operator==(const NamedRegion&, const NamedRegion&) = default;
 };
+
+// The most segments a named region may have, outline and islands together
+// as the figure evaluates them, and the most islands: the checks (crossing,
+// islands apart) and the sizing (paths/region.h) are near-linear up to here
+// and refused beyond, before any of them runs (docs/input-checks.md).
+constexpr std::size_t kMaxRegionSegments = 20'000;
+constexpr std::size_t kMaxRegionIslands = 100;
+// True when `region` is within both.
+bool regionWithinLimits(const Region& region);
 
 // Scales a region's points and centres (mm <-> inch).
 void convertRegionLengths(Region& region, const LengthMap& f);

@@ -257,7 +257,9 @@ public:
         }
         origin_ = all.min;
         const double extent = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-6});
-        cell_ = std::max({reach, extent / 256.0, 1e-6});
+        // Cells of a quarter of the reach (no more than 256 a side): a query
+        // looks at the cells its disc touches, not at a block three reaches wide.
+        cell_ = std::max({reach / 4.0, extent / 256.0, 1e-6});
         nx_ = static_cast<int>((all.max.x - all.min.x) / cell_) + 1;
         ny_ = static_cast<int>((all.max.y - all.min.y) / cell_) + 1;
         cells_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), {});
@@ -278,12 +280,18 @@ public:
         const auto [x0, y0] = cellOf({p.x - limit, p.y - limit});
         const auto [x1, y1] = cellOf({p.x + limit, p.y + limit});
         for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x)
+            for (int x = x0; x <= x1; ++x) {
+                // A cell wholly farther than the limit holds nothing nearer.
+                const double cx = origin_.x + x * cell_, cy = origin_.y + y * cell_;
+                const double dx = std::max({cx - p.x, 0.0, p.x - cx - cell_});
+                const double dy = std::max({cy - p.y, 0.0, p.y - cy - cell_});
+                if (dx * dx + dy * dy >= limit * limit) continue;
                 for (std::uint32_t k : cells_[index(x, y)]) {
                     if (seen_[k] == stamp_) continue;
                     seen_[k] = stamp_;
                     if (distance(p, segs_[k]->nearest(p)) < limit) return true;
                 }
+            }
         return false;
     }
 
@@ -472,6 +480,43 @@ Result<std::vector<Region>> offsetRegion(const Region& input, double d)
             }
     }
     return out;
+}
+
+bool rollsAround(const Region& input, double d, double tolerance)
+{
+    if (!(d > 0.0) || !std::isfinite(d)) return false;
+    Region region = normalised(input);
+    region.outer = withoutDegenerateSegments(region.outer);
+    for (auto& i : region.islands) i = withoutDegenerateSegments(i);
+    std::vector<const Contour*> loops{&region.outer};
+    for (const auto& i : region.islands) loops.push_back(&i);
+    std::vector<Element> elems;
+    for (const auto* l : loops) {
+        if (l->empty()) return false;
+        // An arc curving round the pocket tighter than d has no parallel:
+        // the cutter stays out of it, leaving a sliver (d - r)(1/cos(φ/2) - 1)
+        // thick over its sweep φ; more than twice the tolerance is not swept.
+        for (const auto& s : l->segments) {
+            if (s.kind != ContourSegment::Kind::ArcCCW || s.radius() > d) continue;
+            const double half = std::min(0.5 * std::abs(s.sweep()), 0.5 * std::numbers::pi - 1e-9);
+            if (distance(s.start, s.end) < 1e-9 || (d - s.radius()) * (1.0 / std::cos(half) - 1.0) > 2.0 * tolerance)
+                return false;
+        }
+        addCandidates(*l, d, elems);
+    }
+    const auto splits = splitAll(elems);
+    std::vector<const ContourSegment*> boundary;
+    for (const auto* l : loops)
+        for (const auto& s : l->segments) boundary.push_back(&s);
+    Nearby nearby(boundary, d);
+    for (std::size_t i = 0; i < elems.size(); ++i) {
+        const auto& sp = splits[i];
+        for (std::size_t k = 0; k + 1 < sp.size(); ++k) {
+            if (sp[k + 1].s - sp[k].s < kSame) continue;
+            if (nearby.anyNearer(elems[i].at(0.5 * (sp[k].s + sp[k + 1].s)), d - tolerance)) return false;
+        }
+    }
+    return true;
 }
 
 std::vector<Contour> loopsOf(const std::vector<Region>& pieces)

@@ -55,6 +55,19 @@ namespace taiwa::paths {
 // OpenCASCADE took 1.3 s for the same offsets.
 Result<std::vector<Region>> offsetRegion(const Region& region, double d);
 
+// True when a round cutter of radius d rolling along the whole boundary of
+// `region` (outer loop and islands) stays inside it to `tolerance`: every
+// candidate of offsetRegion(region, d) (the parallels and the arcs round
+// the corners that point into the pocket), split at their crossings, lies
+// no nearer than d - tolerance to the boundary, and an arc curving round the
+// pocket tighter than d leaves a sliver no thicker than twice the tolerance
+// ((d - r)(1/cos(φ/2) - 1) over its sweep φ; a full circle: never). Then the
+// cutter sweeps the whole region but slivers of about the tolerance: what reachRadius
+// (paths/region.h) asks, by bisection. Near-linear in the segments (a sweep
+// for the crossings, a grid for the nearness), stopping at the first piece
+// too near, and never a Failure. False for d not positive.
+bool rollsAround(const Region& region, double d, double tolerance);
+
 // All loops of the pieces in order, each piece's outer loop then its islands.
 std::vector<Contour> loopsOf(const std::vector<Region>& pieces);
 

@@ -6,6 +6,7 @@
 // by lifting to the safe height. See docs/toolpaths.md ("Contour pockets").
 #include "paths/generators.h"
 #include "paths/region.h"
+#include "paths/region_offset.h"
 
 #include "model/clipper_scale.h"
 #include "paths/path_builder.h"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <queue>
 #include <stdexcept>
 
 namespace taiwa::paths {
@@ -237,28 +239,14 @@ ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& t
 
 double reachRadius(const Region& r, double inscribed)
 {
-    const Paths region = regionPaths(r, kSizingChord);
-    // A radius reaches everywhere when shrinking the region by it and
-    // growing it back leaves out nothing thicker than the chords' slivers:
-    // what is left out, shrunk by kLost, is empty.
+    // A radius reaches everywhere when the cutter rolling along the whole
+    // boundary stays inside to kLost (paths/region_offset.h): what it leaves
+    // out is then no thicker than the chords' slivers.
     constexpr double kLost = 2e-3;  // mm: twice the chords' 1 µm
-    const auto reaches = [&](double radius) {
-        const Paths shrunk = inset(region, radius, kSizingChord);
-        if (shrunk.empty()) return false;
-        ClipperLib::ClipperOffset o(2.0, kSizingChord * kClipperScale);
-        o.AddPaths(shrunk, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-        Paths back;
-        o.Execute(back, radius * kClipperScale);
-        ClipperLib::Clipper c;
-        c.AddPaths(region, ClipperLib::ptSubject, true);
-        c.AddPaths(back, ClipperLib::ptClip, true);
-        Paths lost;
-        c.Execute(ClipperLib::ctDifference, lost, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-        return inset(lost, kLost, kSizingChord).empty();
-    };
-    // Small radii first, doubling: a large offset of a detailed outline is
-    // slow, and most contours are limited by a small corner or channel.
-    const double most = inscribed;
+    const auto reaches = [&](double radius) { return rollsAround(r, radius, kLost); };
+    // Small radii first, doubling: most contours are limited by a small
+    // corner or channel, and a small radius is the cheapest to test.
+    const double most = std::min(inscribed, kMaxReach);
     if (!(most > 0.0)) return 0.0;
     double lo = 0.0, hi = std::min(0.125, most);
     while (reaches(hi)) {
@@ -273,25 +261,50 @@ double reachRadius(const Region& r, double inscribed)
     return lo;
 }
 
-double inscribedRadius(const Region& r)
+double inscribedRadius(const Region& input)
 {
-    // Step in by a tenth of the box at a time from the last non-empty inset
-    // (small offsets of smooth outlines), then halve the last step.
-    Paths region = regionPaths(r, kSizingChord);
+    // The pole of inaccessibility (Mapbox's polylabel): square cells over the
+    // box, the most promising first (its centre's distance to the boundary
+    // plus its half diagonal bounds every point in it); a cell that cannot
+    // beat the best centre found by more than the precision is not split.
+    const Region r = normalised(input);
+    if (r.outer.empty()) return 0.0;
     const Box2 box = bounds(r.outer);
-    double step = 0.05 * std::min(box.max.x - box.min.x, box.max.y - box.min.y);
-    if (!(step > 0.0) || region.empty()) return 0.0;
-    double reached = 0.0;
-    while (step > 1e-3) {
-        Paths in = inset(region, step, kSizingChord);
-        if (in.empty()) {
-            step *= 0.5;
-            continue;
-        }
-        region = std::move(in);
-        reached += step;
+    const double w = box.max.x - box.min.x, h = box.max.y - box.min.y;
+    const double size = std::min(w, h);
+    if (!(size > 0.0) || !std::isfinite(size)) return 0.0;
+    const double precision = std::max(1e-3, 1e-5 * std::max(w, h));
+    const RegionDistance signedDistance(r);  // negative inside
+    struct Cell {
+        Point2 c;
+        double half, d, bound;
+        bool operator<(const Cell& o) const { return bound < o.bound; }
+    };
+    const auto cell = [&](Point2 c, double half) {
+        const double d = -signedDistance(c);
+        return Cell{c, half, d, d + half * std::numbers::sqrt2};
+    };
+    std::priority_queue<Cell> queue;
+    const double tile = std::max(size, std::sqrt(w * h / 1000.0));  // a thin strip: no more than about 1,000 tiles
+    for (double x = box.min.x; x < box.max.x; x += tile)
+        for (double y = box.min.y; y < box.max.y; y += tile) queue.push(cell({x + tile / 2, y + tile / 2}, tile / 2));
+    Cell best = cell(0.5 * (box.min + box.max), 0.0);
+    // Each cell costs a distance along every segment: a long ridge (a slot)
+    // would split many; past 5·10⁷ segment distances (at most 40,000 cells)
+    // the best so far is the answer (a lower bound, within the cells' size
+    // of the radius).
+    std::size_t segments = r.outer.segments.size();
+    for (const auto& i : r.islands) segments += i.segments.size();
+    const auto maxCells = static_cast<int>(std::clamp<std::size_t>(50'000'000 / std::max<std::size_t>(segments, 1), 2'000, 40'000));
+    for (int n = 0; !queue.empty() && n < maxCells; ++n) {
+        const Cell c = queue.top();
+        queue.pop();
+        if (c.d > best.d) best = c;
+        if (c.bound - best.d <= precision) continue;
+        const double q = c.half / 2;
+        for (const Point2 o : {Point2{-q, -q}, Point2{q, -q}, Point2{-q, q}, Point2{q, q}}) queue.push(cell(c.c + o, q));
     }
-    return reached;
+    return std::max(best.d, 0.0);
 }
 
 ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)

@@ -151,24 +151,33 @@ std::vector<const Tool*> bindTools(Plan& plan, const std::vector<Tool>& library,
 
 // The budget: estimated before any path is computed, so that no job can
 // exhaust the memory (the checks' ranges bound every step; this bounds the
-// job). False, with the diagnostic, when the paths would not fit it.
+// job). It is part of input processing: `taiwa check` (a plan without paths)
+// refuses what export would. False, with the diagnostic on the unit with the
+// most moves and the field its door says drives them, when the paths would
+// not fit it.
 bool withinMoveBudget(Plan& plan, const std::vector<const Tool*>& toolOf, const PathParameters& params)
 {
     double estimated = 0.0;
     std::vector<double> perUnit(plan.mmJob.units.size(), 0.0);
+    std::vector<double> biggestStep(plan.mmJob.units.size(), -1.0);
+    std::vector<std::size_t> biggestStepOf(plan.mmJob.units.size(), 0);
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& step = plan.steps[i];
         const double moves = estimateMoves(step, *toolOf[i], plan.technology, params);
         estimated += moves;
-        perUnit[static_cast<std::size_t>(step.unit)] += moves;
+        const auto u = static_cast<std::size_t>(step.unit);
+        perUnit[u] += moves;
+        if (moves > biggestStep[u]) biggestStep[u] = moves, biggestStepOf[u] = i;
     }
     if (estimated <= kMaxPlanMoves) return true;
-    const auto biggest = std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin();
+    const auto biggest = static_cast<std::size_t>(std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin());
+    const ModuleInput& unit = plan.mmJob.units[biggest].module;
+    const std::string field = moduleKind(unit).movesField(unit, plan.steps[biggestStepOf[biggest]]);
     plan.diagnostics.push_back(unitError(
-        plan.mmJob, static_cast<int>(biggest), "",
+        plan.mmJob, static_cast<int>(biggest), field,
         fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's), more than the "
                     "{:.3g} a job may have; make the job smaller, the allowances or the depth of cut (γ) larger",
-                    estimated, perUnit[static_cast<std::size_t>(biggest)], kMaxPlanMoves)));
+                    estimated, perUnit[biggest], kMaxPlanMoves)));
     return false;
 }
 
@@ -259,8 +268,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     planSteps(plan, library, options.path, machine, cache);
     if (!plan.ok()) return plan;
     const std::vector<const Tool*> toolOf = bindTools(plan, library, options.withToolPaths);
-    if (!plan.ok() || !options.withToolPaths) return plan;
-    if (!withinMoveBudget(plan, toolOf, options.path)) return plan;
+    if (!plan.ok() || !withinMoveBudget(plan, toolOf, options.path) || !options.withToolPaths) return plan;
     makePaths(plan, toolOf, options.path, machine, cache);
     addTimes(plan, library, options, machine);
     return plan;

@@ -3241,6 +3241,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点の Y</translation>
         </message>
         <message>
+            <source>{} passes along an area of {} lines and arcs are more than the checks take ({:.3g} pass-segment pairs at most); draw fewer points, or simplify the area's contours</source>
+            <translation>{} 本のパスと {} 本の線・円弧からなる領域は検査できる量を超えています（パスと要素の組は最大 {:.3g}）。点を減らすか、領域の輪郭を簡単にしてください</translation>
+        </message>
+        <message>
+            <source>the {} passes' strips overlap in more than {} pairs: what they leave unswept is more than the checks take; draw fewer passes, or passes that cross each other less</source>
+            <translation>{} 本のパスの帯が {} 組を超えて重なっています。削り残しの計算が検査できる量を超えます。パスを減らすか、交差の少ないパスを描いてください</translation>
+        </message>
+        <message>
             <source>the depth</source>
             <translation>深さ</translation>
         </message>
@@ -3547,6 +3555,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>an array of 4 points [x, y]</source>
             <translation>4 つの点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>
+            <translation>島が {} 個あります。{}の島は最大 {} 個です（検査ですべての 2 つの組を比べます）</translation>
+        </message>
+        <message>
+            <source>the {}'s outline {} and its islands have {} lines and arcs; at most {} are taken (simplify the contours, or join short lines into arcs)</source>
+            <translation>{}の外形 {} と島の線・円弧は {} 本です。最大 {} 本までです（輪郭を簡単にするか、短い線を円弧にまとめてください）</translation>
         </message>
         <message>
             <source>island</source>

@@ -3241,6 +3241,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>点的 Y</translation>
         </message>
         <message>
+            <source>{} passes along an area of {} lines and arcs are more than the checks take ({:.3g} pass-segment pairs at most); draw fewer points, or simplify the area's contours</source>
+            <translation>{} 条路径沿由 {} 条直线和圆弧组成的区域，超出检查所能处理的量（路径与线段的组合最多 {:.3g} 个）；请减少点数，或简化区域轮廓</translation>
+        </message>
+        <message>
+            <source>the {} passes' strips overlap in more than {} pairs: what they leave unswept is more than the checks take; draw fewer passes, or passes that cross each other less</source>
+            <translation>{} 条路径的条带重叠超过 {} 对：计算未扫过区域超出检查所能处理的量；请减少路径，或画交叉较少的路径</translation>
+        </message>
+        <message>
             <source>the depth</source>
             <translation>深度</translation>
         </message>
@@ -3547,6 +3555,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>an array of 4 points [x, y]</source>
             <translation>4 个点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>
+            <translation>{} 个岛；{}最多可有 {} 个（检查会两两比较）</translation>
+        </message>
+        <message>
+            <source>the {}'s outline {} and its islands have {} lines and arcs; at most {} are taken (simplify the contours, or join short lines into arcs)</source>
+            <translation>{}的轮廓 {} 及其岛共有 {} 条直线和圆弧；最多 {} 条（请简化轮廓，或将短线合并为圆弧）</translation>
         </message>
         <message>
             <source>island</source>

@@ -22,6 +22,17 @@
 
 namespace taiwa {
 
+// The work of an AREA unit's checks, refused beyond (area_check.cpp): the
+// passes times the area's segments (the excursion test), and the pairs of
+// strips whose boxes overlap (the crossings of the unswept area's union).
+constexpr double kMaxAreaPassSegments = 2e7;
+constexpr std::size_t kMaxAreaStripPairs = 50'000;
+
+// The pairs of strips of radius `radius` round the passes through `points`
+// whose boxes overlap, counted by a sweep over the boxes; past `stopAt` the
+// count stops (stopAt + 1).
+std::size_t overlappingStripPairs(const std::vector<Point2>& points, double radius, std::size_t stopAt);
+
 struct AreaClearing {
     static constexpr const char* kName = "AREA";
     static constexpr int kSinceFormatVersion = 5;  // the job format that brought it

@@ -8,6 +8,8 @@
 #include "check/messages.h"
 #include "paths/drawn_passes.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,6 +50,35 @@ bool checkPoints(const AreaClearing& a, Reporter& r)
     return ok;
 }
 
+// The work of the checks on the strips, estimated before it is done (the
+// pairs are counted by a sweep that stops at the budget): the excursion
+// test takes each pass against each boundary segment, and the unswept area
+// is a Clipper union whose crossings come from the pairs of strips whose
+// boxes overlap (random passes across the area: about n²/4 of them).
+bool checkWork(const AreaClearing& a, Reporter& r)
+{
+    std::size_t segments = a.area.region->outer.segments.size();
+    for (const auto& i : a.area.region->islands) segments += i.segments.size();
+    const double passes = static_cast<double>(a.points.size() - 1);
+    if (passes * static_cast<double>(segments) > kMaxAreaPassSegments) {
+        r.unit("points", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                          "{} passes along an area of {} lines and arcs are more than "
+                                                          "the checks take ({:.3g} pass-segment pairs at most); draw "
+                                                          "fewer points, or simplify the area's contours"),
+                                     a.points.size() - 1, segments, kMaxAreaPassSegments));
+        return false;
+    }
+    if (overlappingStripPairs(a.points, a.diameter / 2, kMaxAreaStripPairs) > kMaxAreaStripPairs) {
+        r.unit("points", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                          "the {} passes' strips overlap in more than {} pairs: "
+                                                          "what they leave unswept is more than the checks take; "
+                                                          "draw fewer passes, or passes that cross each other less"),
+                                     a.points.size() - 1, kMaxAreaStripPairs));
+        return false;
+    }
+    return true;
+}
+
 bool checkTool(const AreaClearing& a, Reporter& r)
 {
     if (!r.ctx.library) return true;
@@ -72,6 +103,28 @@ bool checkTool(const AreaClearing& a, Reporter& r)
 
 }  // namespace
 
+std::size_t overlappingStripPairs(const std::vector<Point2>& points, double radius, std::size_t stopAt)
+{
+    struct Box {
+        double x0, x1, y0, y1;
+    };
+    std::vector<Box> boxes;
+    boxes.reserve(points.size());
+    for (std::size_t k = 1; k < points.size(); ++k) {
+        const Point2 p = points[k - 1], q = points[k];
+        boxes.push_back({std::min(p.x, q.x) - radius, std::max(p.x, q.x) + radius, std::min(p.y, q.y) - radius,
+                         std::max(p.y, q.y) + radius});
+    }
+    std::sort(boxes.begin(), boxes.end(), [](const Box& u, const Box& v) { return u.x0 < v.x0; });
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size() && boxes[j].x0 <= boxes[i].x1; ++j) {
+            if (boxes[j].y0 > boxes[i].y1 || boxes[j].y1 < boxes[i].y0) continue;
+            if (++pairs > stopAt) return pairs;
+        }
+    return pairs;
+}
+
 bool cutsDrawnPasses(const Tool& t, double diameter)
 {
     return t.type == ToolType::FlatEndMill && t.centreCutting && std::abs(t.diameter - diameter) <= kFitTolerance;
@@ -94,7 +147,7 @@ check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const che
     report.figureValid = region;
     const bool points = checkPoints(a, r);
     if (diameter) checkTool(a, r);
-    if (!region || !points || !diameter) return report;
+    if (!region || !points || !diameter || !checkWork(a, r)) return report;
     const double radius = a.diameter / 2;
     if (const auto out = paths::firstExcursion(*a.area.region, a.points, radius)) {
         r.unit("points", msg::passLeavesArea(out->pass, r.len(out->at.x), r.len(out->at.y), r.len(out->by), a.area.outline));

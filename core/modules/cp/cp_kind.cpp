@@ -50,7 +50,11 @@ public:
         p.closedContours = std::move(n.closedContours);
         p.region.reset();
         p.reach = p.inscribed = 0.0;
-        if (!n.region) return;
+        // Too many segments: not sized (the checks refuse it, named_region.h).
+        if (!n.region || !regionWithinLimits(*n.region)) {
+            p.region = std::move(n.region);
+            return;
+        }
         const Region normal = normalised(*n.region);
         p.inscribed = paths::inscribedRadius(normal);
         p.reach = paths::reachRadius(normal, p.inscribed);

@@ -61,6 +61,21 @@ public:
         return (std::ceil((hi - lo) / std::max(step.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
     }
 
+    // The margin when it widens the face more than the stock does, else the
+    // unit's step-over when it has one, else the depth (the layers).
+    std::string movesField(const ModuleInput& mm, const Step& step) const override
+    {
+        const FaceUnit& f = mm.as<FaceUnit>();
+        if (step.outline) {
+            double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+            for (const Point2 c : step.outline->corners)
+                x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+            const double narrow = std::min(x1 - x0, y1 - y0);
+            if (2.0 * f.margin > narrow - 2.0 * f.margin) return "margin";
+        }
+        return f.stepOver ? "stepOver" : "depth";
+    }
+
     // The face is the whole stock top (grown by the margin, beyond the
     // stock where there is nothing to cut): the finished surface lies at
     // the depth wherever the stock is. The unit does not know the stock, so
