@@ -6,6 +6,7 @@
 // values, the stations' roles; and the SQLite store unchanged.
 #include "support/pg_server.h"
 #include "support/support.h"
+#include "tools/pg_job_store.h"
 #include "tools/pg_tool_store.h"
 #include "tools/tool_library.h"
 #include "tools/tool_store.h"
@@ -478,6 +479,49 @@ private slots:
         QVERIFY(!server_->psql("INSERT INTO tool_changes (tool_id, operation) VALUES (27, 'forged')", nullptr, "machine2", db));
         QVERIFY(!server_->psql("INSERT INTO jobs (name) VALUES ('x')", nullptr, "machine2", db));
         QVERIFY(server_->psql("SELECT count(*) FROM tools", nullptr, "presetter", db));  // control: the reader does read
+    }
+
+    // The job store: versions with who and which station, any version
+    // opened again, the shop-wide lock refusing another station's save and
+    // lock (naming the holder) until given back; a hostile name is data.
+    void jobStoreKeepsVersionsAndLocks()
+    {
+        NEED_SERVER();
+        const std::string uri = freshDatabase();
+        auto office = openStore(uri, {}, "office");
+        auto machine = openStore(uri, {}, "machine-2");
+        PgJobStore a(*office), b(*machine);
+        QCOMPARE(*a.save("plate", "{\"version\": 1}"), 1);
+        QCOMPARE(*b.save("plate", "{\"version\": 2}"), 2);
+        QCOMPARE(*a.load("plate"), std::string("{\"version\": 2}"));
+        QCOMPARE(*a.load("plate", 1), std::string("{\"version\": 1}"));
+        auto history = b.history("plate");
+        QVERIFY(history);
+        QCOMPARE(history->size(), size_t{2});
+        QCOMPARE((*history)[0].station, std::string("office"));
+        QCOMPARE((*history)[1].station, std::string("machine-2"));
+        QCOMPARE((*history)[1].who, std::string("taiwa_admin"));
+        QVERIFY(!(*history)[1].at.empty());
+        QVERIFY(a.lock("plate"));
+        QVERIFY(a.lock("plate"));  // taken again by its holder: fine
+        auto refused = b.lock("plate");
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().find("open at station office (by taiwa_admin since ") != std::string::npos, refused.error().c_str());
+        auto notSaved = b.save("plate", "overwrite");
+        QVERIFY(!notSaved);
+        QVERIFY2(notSaved.error().find("it was not saved") != std::string::npos, notSaved.error().c_str());
+        QCOMPARE(*a.save("plate", "{\"version\": 3}"), 3);  // the holder saves
+        QVERIFY(b.unlock("plate"));                            // not b's lock: nothing changes
+        QVERIFY(!b.lock("plate"));
+        QVERIFY(a.unlock("plate"));
+        QVERIFY(b.lock("plate"));
+        const std::string hostile = "it's; DROP TABLE jobs; --\x1b";
+        QCOMPARE(*a.save(hostile, "x'y"), 1);
+        QCOMPARE(*b.load(hostile), std::string("x'y"));
+        QCOMPARE(*a.names(), (std::vector<std::string>{hostile, "plate"}));
+        auto missing = a.load("nothing");
+        QVERIFY(!missing);
+        QVERIFY2(missing.error().find("has no job 'nothing'") != std::string::npos, missing.error().c_str());
     }
 
     // The setting reaches the plain reading the command line uses.

@@ -656,6 +656,26 @@ Result<std::vector<ToolChangeRecord>> PgToolStore::history(int id)
     return out;
 }
 
+Result<std::vector<std::vector<std::string>>> PgToolStore::query(const char* sql, const std::vector<std::optional<std::string>>& params)
+{
+    Impl& d = *d_;
+    if (d.offline) return d.refusedOffline();
+    auto r = d.exec(sql, params);
+    if (!r) {
+        const std::string why = r.error();
+        d.checkConnection();
+        return Failure{why};
+    }
+    std::vector<std::vector<std::string>> rows;
+    for (int i = 0; i < PQntuples(r->get()); ++i) {
+        rows.emplace_back();
+        for (int c = 0; c < PQnfields(r->get()); ++c) rows.back().push_back(text(r->get(), i, c));
+    }
+    return rows;
+}
+
+const std::string& PgToolStore::stationOnServer() const { return d_->options.station; }
+
 Result<void> PgToolStore::listen()
 {
     if (d_->offline) return d_->refusedOffline();

@@ -73,6 +73,11 @@ public:
     std::function<void()> beforeCommit;
 
 private:
+    friend class PgJobStore;
+    // A statement for the job store: its rows as text (NULL as ""), or
+    // the server's message; nullopt parameters are NULL.
+    Result<std::vector<std::vector<std::string>>> query(const char* sql, const std::vector<std::optional<std::string>>& params);
+    const std::string& stationOnServer() const;
     PgToolStore();
     struct Impl;
     std::unique_ptr<Impl> d_;
