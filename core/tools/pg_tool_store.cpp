@@ -712,6 +712,8 @@ std::vector<ToolChange> PgToolStore::changes(int timeoutMs)
         drain();
         if (PQstatus(conn) == CONNECTION_BAD) break;
     }
+    // The connection went (the server stopped): the copy, read-only.
+    if (PQstatus(conn) == CONNECTION_BAD) (void)d_->goOffline(d_->error());
     return out;
 }
 

@@ -494,6 +494,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::PlanRunner</name>
         <message>
+            <source>%1 changed by %2 at station %3; the plan is run again</source>
+            <translation>%1 已由 %2 在工位 %3 更改；重新运行计划</translation>
+        </message>
+        <message>
             <source>(no program: the job has input errors)</source>
             <translation>(无程序:作业有输入错误)</translation>
         </message>
@@ -4197,6 +4201,118 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>HSK63 测头本体</translation>
         </message>
         <message>
+            <source>{}: job '{}': a name, and text without NUL characters, are needed</source>
+            <translation>{}：作业 '{}'：需要名称以及不含 NUL 字符的文本</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {}); it was not saved</source>
+            <translation>作业 '{}' 正在工位 {} 打开（{}，自 {} 起）；未保存</translation>
+        </message>
+        <message>
+            <source>{}: saving job '{}' failed ({})</source>
+            <translation>{}：保存作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: opening job '{}' failed ({})</source>
+            <translation>{}：打开作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{} has no version {} of job '{}'</source>
+            <translation>{} 没有作业 '{}' 的第 {} 版</translation>
+        </message>
+        <message>
+            <source>{} has no job '{}'</source>
+            <translation>{} 没有作业 '{}'</translation>
+        </message>
+        <message>
+            <source>{}: reading the history of job '{}' failed ({})</source>
+            <translation>{}：读取作业 '{}' 的历史失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: listing the jobs failed ({})</source>
+            <translation>{}：列出作业失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: locking job '{}' failed ({})</source>
+            <translation>{}：锁定作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {})</source>
+            <translation>作业 '{}' 正在工位 {} 打开（{}，自 {} 起）</translation>
+        </message>
+        <message>
+            <source>{}: unlocking job '{}' failed ({})</source>
+            <translation>{}：解锁作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: {} failed ({})</source>
+            <translation>{}：{} 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
+            <translation>{} 由较新的 Taiwa 建立（架构版本 {}）；本程序支持到版本 {}</translation>
+        </message>
+        <message>
+            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
+            <translation>{}：无法将架构从版本 {} 升级到 {}（{}）；工位的角色只能读写，由所有者升级（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}：刀具 T{}（{}）：{}</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written</source>
+            <translation>{}：无法写入本地副本 {}</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written ({})</source>
+            <translation>{}：无法写入本地副本 {}（{}）</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}) and this station has no copy of its tools yet</source>
+            <translation>无法连接 {}（{}），且本工位尚无其刀具副本</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}): the tools are as of {} and cannot be edited until it is back</source>
+            <translation>无法连接 {}（{}）：刀具为 {} 时的状态，恢复连接前无法编辑</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
+            <translation>TAIWA_TOOL_DB：'{}' 不是服务器地址（{}）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
+            <translation>TAIWA_TOOL_DB：{} 的地址中含有密码；请改写在 ~/.pgpass 或服务文件中（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>tools as of {} (read only: {} cannot be reached)</source>
+            <translation>{} 时的刀具（只读：无法连接 {}）</translation>
+        </message>
+        <message>
+            <source>tools: {}</source>
+            <translation>刀具：{}</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}) holds a NUL character, which the server cannot store</source>
+            <translation>{}：刀具 T{}（{}）含有 NUL 字符，服务器无法保存</translation>
+        </message>
+        <message>
+            <source>{} has no tool T{}</source>
+            <translation>{} 中没有刀具 T{}</translation>
+        </message>
+        <message>
+            <source>{} cannot be read ({})</source>
+            <translation>无法读取 {}（{}）</translation>
+        </message>
+        <message>
             <source>T number {} must be 1 to {}</source>
             <translation>T 号 {} 必须为 1 到 {}</translation>
         </message>
@@ -4335,22 +4451,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>{} (while upgrading it from tool library version {})</source>
             <translation>{}（从刀具库版本 {} 升级时）</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has an unknown type '{}'</source>
-            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has unreadable lathe data '{}'</source>
-            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
-        </message>
-        <message>
-            <source>{}: tool T{} ({}): {}</source>
-            <translation>{}：刀具 T{}（{}）：{}</translation>
-        </message>
-        <message>
-            <source>{} has no tool T{}</source>
-            <translation>{} 中没有刀具 T{}</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
