@@ -1287,16 +1287,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>先に工具を選んでください。</translation>
         </message>
         <message>
-            <source>Cannot open the tool library: %1</source>
-            <translation>工具ライブラリを開けません: %1</translation>
+            <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
+            <translation>%1、Ø %2 mm、刃数 %3、突き出し %4 mm、ホルダー %5、使用 %6 / %7 分</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>工具を廃棄できません: %1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>工具を保存できません: %1</translation>
         </message>
         <message>
-            <source>Cannot retire the tool: %1</source>
-            <translation>工具を廃棄できません: %1</translation>
+            <source>Tool changed meanwhile</source>
+            <translation>工具が変更されています</translation>
+        </message>
+        <message>
+            <source>T%1 was changed by %2 at station %3 (%4) after this station read it.
+
+Yours: %5
+Theirs: %6</source>
+            <translation>T%1 はこのステーションが読み込んだ後に %2 によりステーション %3 で変更されました（%4）。
+
+こちら: %5
+相手: %6</translation>
+        </message>
+        <message>
+            <source>removed</source>
+            <translation>削除済み</translation>
+        </message>
+        <message>
+            <source>Keep mine</source>
+            <translation>こちらを残す</translation>
+        </message>
+        <message>
+            <source>Take theirs</source>
+            <translation>相手のものを採用</translation>
+        </message>
+        <message>
+            <source>T%1 was changed again meanwhile; nothing saved</source>
+            <translation>T%1 はその間に再び変更されました。保存していません</translation>
+        </message>
+        <message>
+            <source>T%1: theirs taken, yours not saved</source>
+            <translation>T%1: 相手のものを採用しました。こちらの変更は保存していません</translation>
+        </message>
+        <message>
+            <source>Cannot open the tool library: %1</source>
+            <translation>工具ライブラリを開けません: %1</translation>
         </message>
         <message>
             <source>T%1 not saved: %2</source>

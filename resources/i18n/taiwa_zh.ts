@@ -1287,16 +1287,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>请先选择一把刀具。</translation>
         </message>
         <message>
-            <source>Cannot open the tool library: %1</source>
-            <translation>无法打开刀具库：%1</translation>
+            <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
+            <translation>%1，Ø %2 mm，%3 刃，伸出 %4 mm，刀柄 %5，已用 %6 / %7 分钟</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>无法报废刀具：%1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>无法保存刀具:%1</translation>
         </message>
         <message>
-            <source>Cannot retire the tool: %1</source>
-            <translation>无法报废刀具：%1</translation>
+            <source>Tool changed meanwhile</source>
+            <translation>刀具已被更改</translation>
+        </message>
+        <message>
+            <source>T%1 was changed by %2 at station %3 (%4) after this station read it.
+
+Yours: %5
+Theirs: %6</source>
+            <translation>T%1 在本工位读取后已由 %2 在工位 %3 更改（%4）。
+
+我的：%5
+对方的：%6</translation>
+        </message>
+        <message>
+            <source>removed</source>
+            <translation>已删除</translation>
+        </message>
+        <message>
+            <source>Keep mine</source>
+            <translation>保留我的</translation>
+        </message>
+        <message>
+            <source>Take theirs</source>
+            <translation>采用对方的</translation>
+        </message>
+        <message>
+            <source>T%1 was changed again meanwhile; nothing saved</source>
+            <translation>T%1 期间再次被更改；未保存</translation>
+        </message>
+        <message>
+            <source>T%1: theirs taken, yours not saved</source>
+            <translation>T%1：已采用对方的，我的未保存</translation>
+        </message>
+        <message>
+            <source>Cannot open the tool library: %1</source>
+            <translation>无法打开刀具库：%1</translation>
         </message>
         <message>
             <source>T%1 not saved: %2</source>
