@@ -416,7 +416,9 @@ struct PgToolStore::Impl {
         if (auto r = migrate(); !r) return r;
         auto tools = readTools();
         if (!tools) return failure("reading the tools", tools.error());
-        if (auto r = writeCopy(*tools); !r) return r;
+        // A copy that cannot be written (a read-only home) leaves the station
+        // working online, without a copy for when the server is away.
+        (void)writeCopy(*tools);
         offline = false;
         offlineWhy.clear();
         if (listen) {
