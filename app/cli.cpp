@@ -6,6 +6,7 @@
 #include "app/cli.h"
 
 #include "app/options.h"
+#include "app/store_command.h"
 #include "app/verify_command.h"
 #include "dxf/dxf_import.h"
 #include "job/dxf_figure.h"
@@ -67,6 +68,9 @@ Usage:
                                    which writes them into the sheet in red;
                                    the sheet shows each step's stock in a
                                    picture (drawn offscreen: needs a display)
+  taiwa export --from-store NAME --out DIR [...]
+                                   the same for the newest version of job NAME
+                                   of the shop server's store (TAIWA_TOOL_DB)
   taiwa verify JOB [--resolution MM] [--json]
                                    cuts every step into the stock on a grid of
                                    MM (default 0.05) and prints each gouge,
@@ -374,7 +378,20 @@ int run(int argc, char** argv)
         case Command::Help: std::cout << kHelp; return kOk;
         case Command::Version: std::cout << "taiwa " << TAIWA_VERSION << '\n'; return kOk;
         case Command::Check: return check(o);
-        case Command::Export: return exportJob(o, argc, argv);
+        case Command::Export:
+            if (!o.fromStore.empty()) {  // the job from the shop server's store (app/store_command.h)
+                auto stored = fetchStoredJob(o.fromStore, o.tools);
+                if (!stored) {
+                    std::cerr << "taiwa: export: " << stored.error() << '\n';
+                    return kInternal;
+                }
+                o.job = *stored;
+                const int exit = exportJob(o, argc, argv);
+                std::error_code ec;
+                std::filesystem::remove_all(std::filesystem::path(o.job).parent_path(), ec);
+                return exit;
+            }
+            return exportJob(o, argc, argv);
         case Command::Verify: return verifyJob(o);
         case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);

@@ -69,7 +69,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
                                 a == "--size" || a == "--view" || a == "--material" || a == "--resolution" ||
-                                a == "--layers" || a == "--gap";
+                                a == "--layers" || a == "--gap" || a == "--from-store";
         if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
             if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";
@@ -90,6 +90,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         if (a == "--tools" && !forImport && !forDxf) o.tools = *v;
         else if (a == "--out" && (forExport || forRender || forImport)) o.out = *v;
         else if (a == "--material" && forImport) o.material = *v;
+        else if (a == "--from-store" && forExport) o.fromStore = *v;
         else if (a == "--dialect" && forExport) {
             if (!isDialect(std::string(*v))) {
                 std::string names;
@@ -136,7 +137,8 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
     }
     if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
     if (o.command == Command::FigureFromDxf && o.job.empty()) return std::string("no DXF file given");
-    if (o.command != Command::Station && o.job.empty()) return std::string("no job file given");
+    if (!o.fromStore.empty() && !o.job.empty()) return "give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')";
+    if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return std::string("no job file given");
     if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
         return std::string("--out is required");
     return std::nullopt;

@@ -29,6 +29,7 @@ struct Options {
     bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)
     std::vector<std::string> layers;  // --layers A,B (figure-from-dxf); empty: all
     std::optional<double> gap;        // --gap MM (figure-from-dxf): the gap tolerance
+    std::string fromStore;            // --from-store NAME (export): the job from the shop server's store
 };
 
 // Fills `o`; returns a message naming the bad argument, or nothing.

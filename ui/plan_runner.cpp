@@ -2,9 +2,12 @@
 #include "ui/plan_runner.h"
 
 #include "job/job_check.h"
+#include "tools/pg_tool_store.h"
 #include "tools/tool_library.h"
 
 #include <QCoreApplication>
+#include <QSocketNotifier>
+#include <QStringList>
 
 #include <exception>
 #include <future>
@@ -70,7 +73,25 @@ PlanRunner::~PlanRunner() { pool_.waitForDone(); }
 
 void PlanRunner::reloadLibrary()
 {
-    auto read = readToolLibrary(defaultToolLibraryPath());
+    const std::string setting = defaultToolLibraryPath();
+    libraryStatus_.clear();
+    taiwa::Result<std::vector<Tool>> read = Failure{""};
+    if (!isServerSetting(setting)) {
+        read = readToolLibrary(setting);
+    } else {
+        if (!server_) {
+            auto opened = PgToolStore::open(setting, {defaultServerCopyPath(), {}, 3});
+            if (opened) server_ = std::move(*opened);
+            else read = Failure{opened.error()};
+        } else if (server_->readOnly()) {
+            (void)server_->reconnect();  // back, perhaps
+        }
+        if (server_) {
+            read = server_->tools();
+            if (server_->readOnly()) libraryStatus_ = QString::fromStdString(server_->status());
+            watchServer();
+        }
+    }
     std::vector<Tool> tools = read ? std::move(*read) : std::vector<Tool>{};
     libraryError_.clear();
     if (tools.empty()) {
@@ -78,6 +99,39 @@ void PlanRunner::reloadLibrary()
         tools = defaultToolLibrary();
     }
     library_ = std::move(tools);
+}
+
+// LISTEN on the server's connection, watched by the event loop; none while
+// the station reads its copy.
+void PlanRunner::watchServer()
+{
+    const int socket = server_ ? server_->socket() : -1;
+    if (serverWatch_ && static_cast<int>(serverWatch_->socket()) == socket) return;
+    delete serverWatch_;
+    serverWatch_ = nullptr;
+    if (socket < 0 || !server_->listen()) return;
+    serverWatch_ = new QSocketNotifier(socket, QSocketNotifier::Read, this);
+    connect(serverWatch_, &QSocketNotifier::activated, this, &PlanRunner::serverSpoke);
+}
+
+void PlanRunner::serverSpoke()
+{
+    const auto changes = server_->changes(0);
+    if (server_->readOnly()) {  // the connection went: the copy, read-only
+        delete serverWatch_;
+        serverWatch_ = nullptr;
+        reloadLibrary();
+        emit toolsChangedOnServer(QString::fromStdString(server_->status()));
+        return;
+    }
+    if (changes.empty()) return;
+    QStringList tools;
+    for (const auto& c : changes)
+        if (!tools.contains(QStringLiteral("T%1").arg(c.id))) tools << QStringLiteral("T%1").arg(c.id);
+    reloadLibrary();
+    emit toolsChangedOnServer(tr("%1 changed by %2 at station %3; the plan is run again")
+                                  .arg(tools.join(QStringLiteral(", ")), QString::fromStdString(changes.back().who),
+                                       QString::fromStdString(changes.back().station)));
 }
 
 void PlanRunner::start(const Job& job)

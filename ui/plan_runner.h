@@ -11,7 +11,10 @@
 // dialect or program name only re-posts the last plan. For a 3-D preview the
 // worker also simulates the stock of the finished part. The worker keeps
 // what it planned and simulated per unit (PlanCache, StockCache): an edit of
-// one unit re-plans and re-cuts that unit only.
+// one unit re-plans and re-cuts that unit only. A tool library on the
+// shop server (docs/shop-server.md) is watched: another station's change
+// re-reads it and says so (toolsChangedOnServer), and the server away
+// leaves the station on its copy, read-only (libraryStatus).
 #pragma once
 
 #include "job/job_check.h"
@@ -27,6 +30,11 @@
 #include <QObject>
 #include <QString>
 #include <QThreadPool>
+
+class QSocketNotifier;
+namespace taiwa {
+class PgToolStore;
+}
 
 #include <memory>
 #include <vector>
@@ -45,6 +53,9 @@ public:
     const QString& libraryError() const { return libraryError_; }
     // Re-reads the shop's tool library (after the tool library dialog).
     void reloadLibrary();
+    // Empty, or the tools' state while the shop server is away: "tools as
+    // of … (read only: … cannot be reached)".
+    const QString& libraryStatus() const { return libraryStatus_; }
 
     // Checks the job now; plans the step list now when there are no errors
     // and schedules the full plan.
@@ -97,6 +108,10 @@ public:
     };
 
 signals:
+    // The shop server announced another station's change of tools (or went
+    // away); the library has been re-read. `message` names the tools, who
+    // and which station, for the status bar; the window re-plans.
+    void toolsChangedOnServer(const QString& message);
     void checked(const taiwa::Diagnostics& diagnostics);
     void stepsPlanned(std::shared_ptr<const taiwa::Plan> plan);
     // plan nullptr: no program; nc says why.
@@ -139,6 +154,13 @@ private:
 
     std::vector<Tool> library_;
     QString libraryError_;
+    // The shop server's store, when the setting names one, and the watch
+    // on its connection for NOTIFY.
+    std::unique_ptr<PgToolStore> server_;
+    QSocketNotifier* serverWatch_ = nullptr;
+    QString libraryStatus_;
+    void watchServer();
+    void serverSpoke();
     QString dialect_ = QStringLiteral("linuxcnc");
     bool simulateStock_ = false;
     sim::StockGrid stockGrid_;

@@ -75,6 +75,8 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     if (!runner_->libraryError().isEmpty())
         statusBar()->showMessage(tr("Tool library: %1 (using the built-in library)")
                                      .arg(coreMessage(runner_->libraryError().toStdString())));
+    else if (!runner_->libraryStatus().isEmpty())  // the shop server away: its copy (docs/shop-server.md)
+        statusBar()->showMessage(runner_->libraryStatus());
 
     if (!files_->offerRecovery(jobPath) && !(jobPath.isEmpty() ? files_->newJob() : files_->openPath(jobPath)))
         files_->newJob();

@@ -163,6 +163,10 @@ void StationWindow::wire()
             });
     connect(files_, &FileActions::message, this, [this](const QString& m) { statusBar()->showMessage(m, 5000); });
     connect(units_, &UnitListPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+    connect(runner_, &PlanRunner::toolsChangedOnServer, this, [this](const QString& m) {
+        statusBar()->showMessage(m, 15000);
+        runner_->update(doc_->job());
+    });
     if (!preview_) return;
     runner_->setSimulateStock(true);
     connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);

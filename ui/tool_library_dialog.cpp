@@ -5,6 +5,7 @@
 #include "post/tool_table.h"
 #include "tools/tool_check.h"
 #include "tools/tool_library.h"
+#include "tools/tool_store.h"
 #include "ui/number_text.h"
 
 #include <QDialogButtonBox>
@@ -14,6 +15,7 @@
 #include <QHeaderView>
 #include <QKeySequence>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QShortcut>
@@ -106,12 +108,38 @@ ToolLibraryDialog::ToolLibraryDialog(QWidget* parent)
     load();
 }
 
+ToolLibraryDialog::~ToolLibraryDialog() = default;
+
 QString ToolLibraryDialog::status() const { return status_->text(); }
 
 void ToolLibraryDialog::load(bool keepStatus)
 {
-    const std::string path = defaultToolLibraryPath();
-    const auto tools = readToolLibrary(path);
+    std::string path = defaultToolLibraryPath();
+    Result<std::vector<Tool>> tools = Failure{""};
+    if (!isServerSetting(path)) {
+        tools = readToolLibrary(path);
+    } else {  // the shop server: the tools with the versions they were read at
+        if (!server_) {
+            auto opened = openToolStore(path);
+            if (opened) server_ = std::move(*opened);
+            else tools = Failure{opened.error()};
+        }
+        if (server_) {
+            path = server_->status();
+            auto read = server_->versionedTools();
+            if (read) {
+                versions_.clear();
+                std::vector<Tool> plain;
+                for (auto& v : *read) {
+                    versions_[v.tool.id] = v.version;
+                    plain.push_back(std::move(v.tool));
+                }
+                tools = std::move(plain);
+            } else {
+                tools = Failure{read.error()};
+            }
+        }
+    }
     tools_ = tools ? *tools : std::vector<Tool>{};
     knowToolNames(tools_);
     if (!keepStatus || !tools) {
@@ -165,21 +193,81 @@ std::optional<Tool> ToolLibraryDialog::selectedTool()
     return tools_[static_cast<std::size_t>(row)];
 }
 
-bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
+namespace {
+
+// A tool in one line, for the conflict's question.
+QString summary(const Tool& t)
 {
-    auto lib = ToolLibrary::open(defaultToolLibraryPath());
-    if (!lib) {
-        fail(tr("Cannot open the tool library: %1").arg(coreMessage(lib.error())));
-        return false;
-    }
-    if (tool) {
-        if (const auto saved = lib->save(*tool); !saved) {
-            fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
+    return ToolLibraryDialog::tr("%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min")
+        .arg(QString::fromStdString(t.name), num(t.diameter), QString::number(t.flutes), num(t.stickout), QString::fromStdString(t.holder),
+             num(t.usedMinutes), num(t.lifeMinutes));
+}
+
+}  // namespace
+
+bool ToolLibraryDialog::applyOnServer(const std::optional<Tool>& tool, int id)
+{
+    if (!tool) {
+        if (const auto removed = server_->remove(id); !removed) {
+            fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
             return false;
         }
-    } else if (const auto removed = lib->remove(id); !removed) {
-        fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
+        return true;
+    }
+    const auto known = versions_.find(tool->id);
+    const auto saved = server_->save(*tool, known == versions_.end() ? 0 : known->second);
+    if (!saved) {
+        fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
         return false;
+    }
+    if (saved->saved()) return true;
+    // Changed (or removed) by another station since it was read: both shown, the operator chooses.
+    const ToolConflict& c = *saved->conflict;
+    QMessageBox box(QMessageBox::Warning, tr("Tool changed meanwhile"),
+                    tr("T%1 was changed by %2 at station %3 (%4) after this station read it.\n\nYours: %5\nTheirs: %6")
+                        .arg(tool->id)
+                        .arg(QString::fromStdString(c.changedBy), QString::fromStdString(c.station), QString::fromStdString(c.changedAt),
+                             summary(*tool), c.theirs ? summary(*c.theirs) : tr("removed")),
+                    QMessageBox::NoButton, this);
+    box.setObjectName("tools.conflict");
+    QPushButton* mine = box.addButton(tr("Keep mine"), QMessageBox::AcceptRole);
+    mine->setObjectName("tools.keepMine");
+    QPushButton* theirs = box.addButton(tr("Take theirs"), QMessageBox::RejectRole);
+    theirs->setObjectName("tools.takeTheirs");
+    box.exec();
+    if (box.clickedButton() == mine) {
+        const auto again = server_->save(*tool, c.theirVersion);
+        if (again && again->saved()) return true;
+        load(true);
+        fail(again ? tr("T%1 was changed again meanwhile; nothing saved").arg(tool->id)
+                   : tr("Cannot save the tool: %1").arg(coreMessage(again.error())));
+        return false;
+    }
+    load(true);
+    fail(tr("T%1: theirs taken, yours not saved").arg(tool->id));
+    changed_ = true;  // the library the window plans with changed all the same
+    return false;
+}
+
+bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
+{
+    if (server_) {
+        if (!applyOnServer(tool, id)) return false;
+    } else {
+        auto lib = ToolLibrary::open(defaultToolLibraryPath());
+        if (!lib) {
+            fail(tr("Cannot open the tool library: %1").arg(coreMessage(lib.error())));
+            return false;
+        }
+        if (tool) {
+            if (const auto saved = lib->save(*tool); !saved) {
+                fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
+                return false;
+            }
+        } else if (const auto removed = lib->remove(id); !removed) {
+            fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
+            return false;
+        }
     }
     changed_ = true;
     const int row = selectedRow();

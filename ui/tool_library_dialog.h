@@ -6,13 +6,18 @@
 // number or retired (removed); every change is an undo step (Ctrl+Z). The
 // selected tool's wear can be reset (a fresh tool was put in). The machine's
 // tool table is exported from here: LinuxCNC's tool.tbl or a FANUC program
-// of G10 offsets. Every database error is shown, never hidden.
+// of G10 offsets. Every database error is shown, never hidden. On the shop
+// server (docs/shop-server.md) a save over a tool another station changed
+// meanwhile shows both and asks: keep mine, or take theirs.
 #pragma once
 
 #include "model/tool.h"
 
 #include <QDialog>
 
+#include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -22,6 +27,10 @@ class QTableWidget;
 class QTableWidgetItem;
 class QUndoStack;
 
+namespace taiwa {
+class ToolStore;
+}
+
 namespace taiwa::ui {
 
 class ToolLibraryDialog : public QDialog {
@@ -30,6 +39,7 @@ public:
     enum Column { Id, Name, Type, Diameter, Corner, Taper, Flutes, FluteLength, Stickout, Holder, HolderDiameter, Life, Used, ColumnCount };
 
     explicit ToolLibraryDialog(QWidget* parent = nullptr);
+    ~ToolLibraryDialog() override;
     QTableWidget* table() const { return table_; }
     QUndoStack* undoStack() const { return undo_; }
     // True when a tool was changed (the window re-plans with the new library).
@@ -59,6 +69,9 @@ private:
     void exportAsked();
     // Applies one side of an edit to the database: save `tool`, or remove `id`.
     bool apply(const std::optional<Tool>& tool, int id);
+    // The same on the shop server, at the version read; a conflict asks
+    // (a message box "tools.conflict": "tools.keepMine", "tools.takeTheirs").
+    bool applyOnServer(const std::optional<Tool>& tool, int id);
     void fail(const QString& message);
     int selectedRow() const;
     // The selected tool; none, with "Select a tool first." shown, when no row is.
@@ -69,6 +82,10 @@ private:
     QPushButton* reset_;
     QUndoStack* undo_;
     std::vector<Tool> tools_;
+    // The shop server's store when the setting names one, and the version
+    // of each tool as read (none: the SQLite file, edited as always).
+    std::unique_ptr<ToolStore> server_;
+    std::map<int, std::int64_t> versions_;
     bool changed_ = false;
     bool filling_ = false;
 };

@@ -4,6 +4,7 @@
 #include "tools/turning_text.h"
 
 #include "tools/tool_check.h"
+#include "tools/tool_store.h"
 #include "model/translate_noop.h"
 
 #include <nlohmann/json.hpp>
@@ -389,8 +390,26 @@ Result<void> ToolLibrary::addUsage(int id, double minutes)
     return changeOne(db_->handle, s, id, path_);
 }
 
+Result<void> ToolLibrary::replaceAll(const std::vector<Tool>& tools)
+{
+    sqlite3* db = db_->handle;
+    bool ok = exec(db, "BEGIN IMMEDIATE") && exec(db, "DELETE FROM cutting_data; DELETE FROM tool_names; DELETE FROM tools");
+    for (const Tool& t : tools) ok = ok && insert(db, t);
+    if (!ok || !exec(db, "COMMIT")) {
+        const std::string why = describe(db, path_);
+        exec(db, "ROLLBACK");
+        return Failure{why};
+    }
+    return {};
+}
+
 Result<std::vector<Tool>> readToolLibrary(const std::string& path)
 {
+    if (isServerSetting(path)) {
+        auto store = openToolStore(path);
+        if (!store) return Failure{store.error()};
+        return (*store)->tools();
+    }
     auto lib = ToolLibrary::open(path);
     if (!lib) return Failure{lib.error()};
     return lib->tools();

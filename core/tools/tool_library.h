@@ -32,7 +32,8 @@ std::vector<Tool> defaultHoleTools();
 // $XDG_DATA_HOME/taiwa/tools.sqlite, else ~/.local/share/taiwa/tools.sqlite.
 std::string defaultToolLibraryPath();
 
-// The tools of the library at `path` (opened, and created when missing).
+// The tools of the library at `path` (opened, and created when missing); a
+// server's address (tool_store.h, isServerSetting) reads the shop server.
 class ToolLibrary;
 Result<std::vector<Tool>> readToolLibrary(const std::string& path);
 
@@ -54,6 +55,9 @@ public:
     Result<void> remove(int id);
     // Adds cutting minutes to a tool's used life.
     Result<void> addUsage(int id, double minutes);
+    // Every tool replaced by `tools`, in one transaction (the shop server's
+    // local copy, tools/pg_tool_store.cpp).
+    Result<void> replaceAll(const std::vector<Tool>& tools);
 
 private:
     explicit ToolLibrary(std::string path);

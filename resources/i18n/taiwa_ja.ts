@@ -494,6 +494,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::PlanRunner</name>
         <message>
+            <source>%1 changed by %2 at station %3; the plan is run again</source>
+            <translation>%1 が %2 によりステーション %3 で変更されました。計画を再実行します</translation>
+        </message>
+        <message>
             <source>(no program: the job has input errors)</source>
             <translation>(プログラムなし: ジョブに入力エラーがあります)</translation>
         </message>
@@ -1283,16 +1287,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>先に工具を選んでください。</translation>
         </message>
         <message>
-            <source>Cannot open the tool library: %1</source>
-            <translation>工具ライブラリを開けません: %1</translation>
+            <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
+            <translation>%1、Ø %2 mm、刃数 %3、突き出し %4 mm、ホルダー %5、使用 %6 / %7 分</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>工具を廃棄できません: %1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>工具を保存できません: %1</translation>
         </message>
         <message>
-            <source>Cannot retire the tool: %1</source>
-            <translation>工具を廃棄できません: %1</translation>
+            <source>Tool changed meanwhile</source>
+            <translation>工具が変更されています</translation>
+        </message>
+        <message>
+            <source>T%1 was changed by %2 at station %3 (%4) after this station read it.
+
+Yours: %5
+Theirs: %6</source>
+            <translation>T%1 はこのステーションが読み込んだ後に %2 によりステーション %3 で変更されました（%4）。
+
+こちら: %5
+相手: %6</translation>
+        </message>
+        <message>
+            <source>removed</source>
+            <translation>削除済み</translation>
+        </message>
+        <message>
+            <source>Keep mine</source>
+            <translation>こちらを残す</translation>
+        </message>
+        <message>
+            <source>Take theirs</source>
+            <translation>相手のものを採用</translation>
+        </message>
+        <message>
+            <source>T%1 was changed again meanwhile; nothing saved</source>
+            <translation>T%1 はその間に再び変更されました。保存していません</translation>
+        </message>
+        <message>
+            <source>T%1: theirs taken, yours not saved</source>
+            <translation>T%1: 相手のものを採用しました。こちらの変更は保存していません</translation>
+        </message>
+        <message>
+            <source>Cannot open the tool library: %1</source>
+            <translation>工具ライブラリを開けません: %1</translation>
         </message>
         <message>
             <source>T%1 not saved: %2</source>
@@ -4211,6 +4253,118 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>HSK63 probe body</source>
             <translation>HSK63 プローブ本体</translation>
+        </message>
+        <message>
+            <source>{}: job '{}': a name, and text without NUL characters, are needed</source>
+            <translation>{}: ジョブ '{}': 名前と、NUL 文字を含まないテキストが必要です</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {}); it was not saved</source>
+            <translation>ジョブ '{}' はステーション {} で開かれています（{}、{} から）。保存されませんでした</translation>
+        </message>
+        <message>
+            <source>{}: saving job '{}' failed ({})</source>
+            <translation>{}: ジョブ '{}' の保存に失敗しました（{}）</translation>
+        </message>
+        <message>
+            <source>{}: opening job '{}' failed ({})</source>
+            <translation>{}: ジョブ '{}' を開けませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>{} has no version {} of job '{}'</source>
+            <translation>{} にはバージョン {} のジョブ '{}' がありません</translation>
+        </message>
+        <message>
+            <source>{} has no job '{}'</source>
+            <translation>{} にジョブ '{}' はありません</translation>
+        </message>
+        <message>
+            <source>{}: reading the history of job '{}' failed ({})</source>
+            <translation>{}: ジョブ '{}' の履歴を読めませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>{}: listing the jobs failed ({})</source>
+            <translation>{}: ジョブの一覧を取得できませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>{}: locking job '{}' failed ({})</source>
+            <translation>{}: ジョブ '{}' をロックできませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {})</source>
+            <translation>ジョブ '{}' はステーション {} で開かれています（{}、{} から）</translation>
+        </message>
+        <message>
+            <source>{}: unlocking job '{}' failed ({})</source>
+            <translation>{}: ジョブ '{}' のロックを解除できませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>{}: {} failed ({})</source>
+            <translation>{}: {} に失敗しました（{}）</translation>
+        </message>
+        <message>
+            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
+            <translation>{} は新しい Taiwa で作成されています（スキーマ バージョン {}）。このプログラムはバージョン {} まで対応します</translation>
+        </message>
+        <message>
+            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
+            <translation>{}: スキーマをバージョン {} から {} に更新できませんでした（{}）。ステーションのロールは読み書きのみ可能で、更新は所有者が行います（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}: 工具 {} の旋削データ '{}' を読めません</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}: 工具 T{} ({}): {}</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written</source>
+            <translation>{}: ローカルコピー {} を書き込めませんでした</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written ({})</source>
+            <translation>{}: ローカルコピー {} を書き込めませんでした（{}）</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}) and this station has no copy of its tools yet</source>
+            <translation>{} に接続できません（{}）。このステーションにはまだ工具のコピーがありません</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}): the tools are as of {} and cannot be edited until it is back</source>
+            <translation>{} に接続できません（{}）。工具は {} 時点のもので、接続が戻るまで編集できません</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
+            <translation>TAIWA_TOOL_DB: '{}' はサーバーのアドレスではありません（{}）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
+            <translation>TAIWA_TOOL_DB: {} のアドレスにパスワードが含まれています。~/.pgpass かサービスファイルに書いてください（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>tools as of {} (read only: {} cannot be reached)</source>
+            <translation>{} 時点の工具（読み取り専用: {} に接続できません）</translation>
+        </message>
+        <message>
+            <source>tools: {}</source>
+            <translation>工具: {}</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}) holds a NUL character, which the server cannot store</source>
+            <translation>{}: 工具 T{}（{}）に NUL 文字が含まれています。サーバーには保存できません</translation>
+        </message>
+        <message>
+            <source>{} has no tool T{}</source>
+            <translation>{} に工具 T{} がありません</translation>
+        </message>
+        <message>
+            <source>{} cannot be read ({})</source>
+            <translation>{} を読めません（{}）</translation>
         </message>
         <message>
             <source>T number {} must be 1 to {}</source>

@@ -494,6 +494,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::PlanRunner</name>
         <message>
+            <source>%1 changed by %2 at station %3; the plan is run again</source>
+            <translation>%1 已由 %2 在工位 %3 更改；重新运行计划</translation>
+        </message>
+        <message>
             <source>(no program: the job has input errors)</source>
             <translation>(无程序:作业有输入错误)</translation>
         </message>
@@ -1283,16 +1287,54 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>请先选择一把刀具。</translation>
         </message>
         <message>
-            <source>Cannot open the tool library: %1</source>
-            <translation>无法打开刀具库：%1</translation>
+            <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
+            <translation>%1，Ø %2 mm，%3 刃，伸出 %4 mm，刀柄 %5，已用 %6 / %7 分钟</translation>
+        </message>
+        <message>
+            <source>Cannot retire the tool: %1</source>
+            <translation>无法报废刀具：%1</translation>
         </message>
         <message>
             <source>Cannot save the tool: %1</source>
             <translation>无法保存刀具:%1</translation>
         </message>
         <message>
-            <source>Cannot retire the tool: %1</source>
-            <translation>无法报废刀具：%1</translation>
+            <source>Tool changed meanwhile</source>
+            <translation>刀具已被更改</translation>
+        </message>
+        <message>
+            <source>T%1 was changed by %2 at station %3 (%4) after this station read it.
+
+Yours: %5
+Theirs: %6</source>
+            <translation>T%1 在本工位读取后已由 %2 在工位 %3 更改（%4）。
+
+我的：%5
+对方的：%6</translation>
+        </message>
+        <message>
+            <source>removed</source>
+            <translation>已删除</translation>
+        </message>
+        <message>
+            <source>Keep mine</source>
+            <translation>保留我的</translation>
+        </message>
+        <message>
+            <source>Take theirs</source>
+            <translation>采用对方的</translation>
+        </message>
+        <message>
+            <source>T%1 was changed again meanwhile; nothing saved</source>
+            <translation>T%1 期间再次被更改；未保存</translation>
+        </message>
+        <message>
+            <source>T%1: theirs taken, yours not saved</source>
+            <translation>T%1：已采用对方的，我的未保存</translation>
+        </message>
+        <message>
+            <source>Cannot open the tool library: %1</source>
+            <translation>无法打开刀具库：%1</translation>
         </message>
         <message>
             <source>T%1 not saved: %2</source>
@@ -4211,6 +4253,118 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>HSK63 probe body</source>
             <translation>HSK63 测头本体</translation>
+        </message>
+        <message>
+            <source>{}: job '{}': a name, and text without NUL characters, are needed</source>
+            <translation>{}：作业 '{}'：需要名称以及不含 NUL 字符的文本</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {}); it was not saved</source>
+            <translation>作业 '{}' 正在工位 {} 打开（{}，自 {} 起）；未保存</translation>
+        </message>
+        <message>
+            <source>{}: saving job '{}' failed ({})</source>
+            <translation>{}：保存作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: opening job '{}' failed ({})</source>
+            <translation>{}：打开作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{} has no version {} of job '{}'</source>
+            <translation>{} 没有作业 '{}' 的第 {} 版</translation>
+        </message>
+        <message>
+            <source>{} has no job '{}'</source>
+            <translation>{} 没有作业 '{}'</translation>
+        </message>
+        <message>
+            <source>{}: reading the history of job '{}' failed ({})</source>
+            <translation>{}：读取作业 '{}' 的历史失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: listing the jobs failed ({})</source>
+            <translation>{}：列出作业失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: locking job '{}' failed ({})</source>
+            <translation>{}：锁定作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>job '{}' is open at station {} (by {} since {})</source>
+            <translation>作业 '{}' 正在工位 {} 打开（{}，自 {} 起）</translation>
+        </message>
+        <message>
+            <source>{}: unlocking job '{}' failed ({})</source>
+            <translation>{}：解锁作业 '{}' 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{}: {} failed ({})</source>
+            <translation>{}：{} 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
+            <translation>{} 由较新的 Taiwa 建立（架构版本 {}）；本程序支持到版本 {}</translation>
+        </message>
+        <message>
+            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
+            <translation>{}：无法将架构从版本 {} 升级到 {}（{}）；工位的角色只能读写，由所有者升级（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}：刀具 T{}（{}）：{}</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written</source>
+            <translation>{}：无法写入本地副本 {}</translation>
+        </message>
+        <message>
+            <source>{}: the local copy {} could not be written ({})</source>
+            <translation>{}：无法写入本地副本 {}（{}）</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}) and this station has no copy of its tools yet</source>
+            <translation>无法连接 {}（{}），且本工位尚无其刀具副本</translation>
+        </message>
+        <message>
+            <source>{} cannot be reached ({}): the tools are as of {} and cannot be edited until it is back</source>
+            <translation>无法连接 {}（{}）：刀具为 {} 时的状态，恢复连接前无法编辑</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
+            <translation>TAIWA_TOOL_DB：'{}' 不是服务器地址（{}）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
+            <translation>TAIWA_TOOL_DB：{} 的地址中含有密码；请改写在 ~/.pgpass 或服务文件中（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>tools as of {} (read only: {} cannot be reached)</source>
+            <translation>{} 时的刀具（只读：无法连接 {}）</translation>
+        </message>
+        <message>
+            <source>tools: {}</source>
+            <translation>刀具：{}</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}) holds a NUL character, which the server cannot store</source>
+            <translation>{}：刀具 T{}（{}）含有 NUL 字符，服务器无法保存</translation>
+        </message>
+        <message>
+            <source>{} has no tool T{}</source>
+            <translation>{} 中没有刀具 T{}</translation>
+        </message>
+        <message>
+            <source>{} cannot be read ({})</source>
+            <translation>无法读取 {}（{}）</translation>
         </message>
         <message>
             <source>T number {} must be 1 to {}</source>

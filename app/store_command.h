@@ -1,0 +1,17 @@
+// `taiwa export --from-store NAME`: the job's newest version fetched from
+// the shop server's job store (docs/shop-server.md) into a file of its own,
+// which the export then reads as any job file.
+#pragma once
+
+#include "model/result.h"
+
+#include <string>
+
+namespace taiwa::app {
+
+// The server is the tool setting's (`--tools` or $TAIWA_TOOL_DB, which must
+// name a server); the job is written to NAME.taiwa in a new folder under
+// the temporary directory. Its path, or why not.
+Result<std::string> fetchStoredJob(const std::string& name, const std::string& toolsSetting);
+
+}  // namespace taiwa::app
