@@ -4515,24 +4515,8 @@ Theirs: %6</source>
             <translation>{} (工具ライブラリをバージョン {} から更新中)</translation>
         </message>
         <message>
-            <source>{}: tool {} has an unknown type '{}'</source>
-            <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
-        </message>
-        <message>
             <source>{}: tool {}: {} is '{}', not a number</source>
             <translation>{}: 工具 {}: {} が '{}' で、数値ではありません</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has unreadable lathe data '{}'</source>
-            <translation>{}: 工具 {} の旋削データ '{}' を読めません</translation>
-        </message>
-        <message>
-            <source>{}: tool T{} ({}): {}</source>
-            <translation>{}: 工具 T{} ({}): {}</translation>
-        </message>
-        <message>
-            <source>{} has no tool T{}</source>
-            <translation>{} に工具 T{} がありません</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>

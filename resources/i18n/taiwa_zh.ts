@@ -4515,24 +4515,8 @@ Theirs: %6</source>
             <translation>{}（从刀具库版本 {} 升级时）</translation>
         </message>
         <message>
-            <source>{}: tool {} has an unknown type '{}'</source>
-            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
-        </message>
-        <message>
             <source>{}: tool {}: {} is '{}', not a number</source>
             <translation>{}：刀具 {}：{} 为 '{}'，不是数字</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has unreadable lathe data '{}'</source>
-            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
-        </message>
-        <message>
-            <source>{}: tool T{} ({}): {}</source>
-            <translation>{}：刀具 T{}（{}）：{}</translation>
-        </message>
-        <message>
-            <source>{} has no tool T{}</source>
-            <translation>{} 中没有刀具 T{}</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
