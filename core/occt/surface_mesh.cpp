@@ -1,9 +1,10 @@
 // Tessellation, the XY grid index and the drop-cutter (surface_mesh.h). The
 // drop of a ball or bull-nose cutter onto one triangle is the highest of its
-// face contact (closed form: the torus' ring point nearest the plane) and
-// its three edge contacts (the cutter's height along an edge is concave, so
-// a golden-section search finds its top), each skipped when a bound shows it
-// cannot beat the best height found so far.
+// face contact (closed form: the torus' ring point nearest the plane), its
+// vertices' and its three edges' (a ball's in closed form; a bull-nose's
+// height along an edge is concave, so a golden-section search finds its
+// top), the edges skipped when a bound shows they cannot beat the best
+// height found on the faces and vertices.
 #include "occt/surface_mesh.h"
 
 #include "occt/surface_curves.h"
@@ -174,12 +175,40 @@ std::optional<double> DropCutter::noseZ(double x, double y)
         best = std::max({best, g1, g2, g(s0), g(s1)});
     };
 
-    index_->near(x, y, rmax, seen_, stamp_, [&](int t) {
+    // A ball's edge contact in closed form: in the vertical plane of the
+    // edge the ball is a circle of radius √(r² − d²) (d the axis' distance
+    // from the edge's line in XY) resting on a line of slope m.
+    const bool ball = flat < 1e-12;
+    const auto ballEdge = [&](const Point3& p, const Point3& q) {
+        const double ex = q.x - p.x, ey = q.y - p.y;
+        const double len = std::hypot(ex, ey);
+        if (len < 1e-12) return;  // vertical: its top vertex decides
+        const double tx = ex / len, ty = ey / len;
+        const double along = (x - p.x) * tx + (y - p.y) * ty;
+        const double across = (x - p.x) * ty - (y - p.y) * tx;
+        if (std::abs(across) >= r) return;
+        const double rc = std::sqrt(r * r - across * across);
+        const double slope = (q.z - p.z) / len;
+        const double root = std::sqrt(1 + slope * slope);
+        const double contact = along + rc * slope / root;
+        if (contact < 0 || contact > len) return;
+        best = std::max(best, p.z + slope * along + rc * root - r);
+    };
+    const auto vertex = [&](const Point3& v) {
+        const double d = std::hypot(v.x - x, v.y - y);
+        if (d <= rmax && v.z - cutter_.heightAt(d) > best) best = v.z - cutter_.heightAt(d);
+    };
+
+    // First the faces and vertices (closed form) of every triangle under the
+    // disc, then the edges, most of them skipped by their bound.
+    candidates_.clear();
+    index_->near(x, y, rmax, seen_, stamp_, [&](int t) { candidates_.push_back(t); });
+    for (const int t : candidates_) {
         const auto& tri = m.triangles[static_cast<std::size_t>(t)];
         const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
         const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
         const Point3& c = m.vertices[static_cast<std::size_t>(tri[2])];
-        if (std::max({a.z, b.z, c.z}) <= best) return;
+        if (std::max({a.z, b.z, c.z}) <= best) continue;
         // Face: the plane's contact, when it falls inside the triangle.
         double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
         double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
@@ -198,10 +227,26 @@ std::optional<double> DropCutter::noseZ(double x, double y)
                 }
             }
         }
-        edge(a, b);
-        edge(b, c);
-        edge(c, a);
-    });
+        vertex(a);
+        vertex(b);
+        vertex(c);
+    }
+    for (const int t : candidates_) {
+        const auto& tri = m.triangles[static_cast<std::size_t>(t)];
+        const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
+        const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
+        const Point3& c = m.vertices[static_cast<std::size_t>(tri[2])];
+        if (std::max({a.z, b.z, c.z}) <= best) continue;
+        if (ball) {
+            ballEdge(a, b);
+            ballEdge(b, c);
+            ballEdge(c, a);
+        } else {
+            edge(a, b);
+            edge(b, c);
+            edge(c, a);
+        }
+    }
     if (best == kNone) return std::nullopt;
     return best;
 }

@@ -87,6 +87,7 @@ private:
     Cutter cutter_;
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
+    std::vector<int> candidates_;
 };
 
 template <class F>

@@ -82,12 +82,15 @@ FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, d
     double y = area.y0;
     Row row = dropRow(drop, xs, y);
     bool reverse = false;
+    double lastPick = spacing;
     for (;;) {
         for (auto& p : piecesOf(row, xs, y, reverse)) out.paths.push_back(std::move(p));
         out.ys.push_back(y);
         reverse = !reverse;
         if (y >= area.y1) break;
-        double s = std::min(spacing, area.y1 - y);
+        // From the last pick-feed grown a little (slopes change slowly),
+        // shrunk until the centres are close enough.
+        double s = std::min({spacing, area.y1 - y, lastPick * 1.25});
         Row next;
         for (int tries = 0; tries < 60; ++tries) {
             next = dropRow(drop, xs, y + s);
@@ -96,6 +99,7 @@ FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, d
             s *= 0.999 * spacing / d;
         }
         y = s >= area.y1 - y ? area.y1 : y + s;
+        lastPick = s;
         row = std::move(next);
     }
     return out;
