@@ -8,7 +8,11 @@
 // height (a fixed pick-feed exceeds it on the flanks); Z-level roughing
 // leaves the allowance along the normal and rides on it at the last level;
 // two surfaces combine into the higher or lower of them; a ruled surface
-// tessellated once drops the cutter onto its plane.
+// tessellated once drops the cutter onto its plane. The unit's checks: an
+// overhang is an undercut (a vertical wall and a sphere are not), a trough's
+// concave radius is found (a cylinder's top has none), a boundary meets
+// the surface or does not.
+#include "occt/surface_checks.h"
 #include "occt/surface_curves.h"
 #include "occt/surface_mesh.h"
 #include "occt/surface_paths.h"
@@ -257,6 +261,68 @@ private slots:
                 QVERIFY(std::abs(*drop.noseZ(x, y) - expected) < 1e-9);
                 QVERIFY(std::abs(*drop.surfaceZ(x, y) - (0.1 * x + 0.4 * y)) < 1e-9);
             }
+    }
+    void undercutsRefused()
+    {
+        // Paths along X whose fourth point goes back under the third.
+        const auto profile = [](std::vector<std::pair<double, double>> xz) {
+            std::vector<std::vector<Point3>> paths;
+            for (double y : {0.0, 10.0, 20.0}) {
+                std::vector<Point3> path;
+                for (auto [x, z] : xz) path.push_back({x, y, z});
+                paths.push_back(std::move(path));
+            }
+            return paths;
+        };
+        const auto overhang = findUndercut(profile({{0, 0}, {10, 0}, {20, 5}, {15, 10}, {25, 10}}));
+        QVERIFY(overhang);
+        QVERIFY2(overhang->find("paths 1 and 2, points 3 to 4 (X 20.000 Y 0.000 Z 5.000)") != std::string::npos,
+                 overhang->c_str());
+        QVERIFY2(overhang->find("height field") != std::string::npos, overhang->c_str());
+        QVERIFY(!findUndercut(profile({{0, 0}, {10, 0}, {20, 5}, {20, 10}, {25, 10}})));  // a vertical wall
+        std::vector<std::vector<Point3>> cap;
+        for (int i = 0; i <= 20; ++i) {
+            std::vector<Point3> path;
+            for (int j = 0; j <= 20; ++j) {
+                const double x = -20 + 2.0 * j, y = -20 + 2.0 * i;
+                path.push_back({x, y, std::sqrt(kSphere * kSphere - x * x - y * y)});
+            }
+            cap.push_back(std::move(path));
+        }
+        QVERIFY(!findUndercut(cap));
+    }
+
+    void smallestConcaveRadiusOfATrough()
+    {
+        // Two troughs side by side, radius 40 then 12, along X; the
+        // cylinder's top bends the other way only.
+        std::vector<std::vector<Point3>> paths;
+        for (int i = 0; i <= 120; ++i) {
+            const double y = -30 + 0.5 * i;
+            const double z = y < 0 ? 40 - std::sqrt(1600 - y * y) : 12 - std::sqrt(144 - std::min(y, 11.9) * std::min(y, 11.9));
+            std::vector<Point3> path;
+            for (int j = 0; j <= 4; ++j) path.push_back({10.0 * j, y, z});
+            paths.push_back(std::move(path));
+        }
+        const ConcaveRadius r = smallestConcaveRadius(paths);
+        QVERIFY2(std::abs(r.radius - 12) < 1e-6, qPrintable(QString::number(r.radius, 'g', 10)));
+        QVERIFY2(r.where.rfind("path ", 0) == 0, r.where.c_str());
+        std::vector<std::vector<Point3>> top;
+        for (int i = 0; i <= 60; ++i) {
+            const double y = -30 + 1.0 * i;
+            top.push_back({{0, y, std::sqrt(1600 - y * y)}, {10, y, std::sqrt(1600 - y * y)}});
+        }
+        QVERIFY(std::isinf(smallestConcaveRadius(top).radius));
+    }
+
+    void boundaryMeetsOrNot()
+    {
+        const std::vector<std::vector<Point3>> plane{{{0, 0, -10}, {50, 0, 15}, {100, 0, 40}},
+                                                     {{0, 50, -10}, {50, 50, 15}, {100, 50, 40}}};
+        const MeshIndex wall(quad({40.5, -10, -50}, {40.5, 60, -50}, {40.5, 60, 50}, {40.5, -10, 50}));
+        const MeshIndex far(quad({200, -10, -50}, {200, 60, -50}, {200, 60, 50}, {200, -10, 50}));
+        QVERIFY(boundaryMeetsSurface(plane, wall));
+        QVERIFY(!boundaryMeetsSurface(plane, far));
     }
 };
 

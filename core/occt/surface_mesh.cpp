@@ -7,6 +7,7 @@
 // height found on the faces and vertices.
 #include "occt/surface_mesh.h"
 
+#include "occt/surface_checks.h"
 #include "occt/surface_curves.h"
 
 #include <algorithm>
@@ -53,17 +54,7 @@ TriangleMesh meshFromPaths(const std::vector<std::vector<Point3>>& paths)
 
 TriangleMesh meshRuled(const RuledSurface& s, int alongRulings, int betweenRulings)
 {
-    alongRulings = std::max(1, alongRulings);
-    betweenRulings = std::max(1, betweenRulings);
-    const int cols = s.pieces() * betweenRulings + 1;
-    std::vector<std::vector<Point3>> rows;
-    for (int k = 0; k <= alongRulings; ++k) {
-        const double v = static_cast<double>(k) / alongRulings;
-        std::vector<Point3> row;
-        for (int j = 0; j < cols; ++j) row.push_back(s.point(static_cast<double>(j) / betweenRulings, v));
-        rows.push_back(std::move(row));
-    }
-    return meshFromPaths(rows);
+    return meshFromPaths(pathsOfRuled(s, alongRulings, betweenRulings));
 }
 
 double Cutter::heightAt(double d) const
