@@ -5,7 +5,8 @@
 // negative control); a path on an inclined plane stops exactly on a vertical
 // boundary plane, and runs whole past a boundary it never meets; the
 // scallop between the finishing paths on a cylinder stays within the set
-// height (a fixed pick-feed exceeds it on the flanks); Z-level roughing
+// height (a fixed pick-feed exceeds it on the flanks), and in a trough when
+// the spacing allows for its concave radius (the plane's does not); Z-level roughing
 // leaves the allowance along the normal and rides on it at the last level;
 // two surfaces combine into the higher or lower of them; a ruled surface
 // tessellated once drops the cutter onto its plane. The unit's checks: an
@@ -187,6 +188,49 @@ private slots:
         // the flanks.
         const FinishingPaths fixed = parallelPaths(drop, area, 2.0, scallopSpacing(drop.cutter(), height));
         QVERIFY(largestScallop(fixed, drop) > height);
+    }
+
+    void scallopInATrough()
+    {
+        // A trough of radius 40 along X (axis at y 0, z 40), |y| ≤ 30: the
+        // plane's spacing leaves more than the height in it; the spacing for
+        // its concave radius does not.
+        std::vector<std::vector<Point3>> paths;
+        for (int i = 0; i <= 600; ++i) {
+            const double y = -30 + 0.1 * i;
+            std::vector<Point3> path;
+            for (int j = 0; j <= 12; ++j) path.push_back({5.0 * j, y, 40 - std::sqrt(1600 - y * y)});
+            paths.push_back(std::move(path));
+        }
+        const MeshIndex trough(meshFromPaths(paths));
+        DropCutter drop(trough, Cutter{10, 5});
+        const double radius = smallestConcaveRadius(paths).radius;
+        QVERIFY(std::abs(radius - 40) < 1e-6);
+        // The scallop between two ball positions in the section: how far
+        // the cusp nearer the trough's wall lies inside the radius.
+        const auto largest = [&](const FinishingPaths& f) {
+            double worst = 0.0;
+            for (std::size_t i = 1; i < f.ys.size(); ++i) {
+                const double y1 = f.ys[i - 1], y2 = f.ys[i];
+                const double z1 = *drop.noseZ(30, y1) + 5 - 40, z2 = *drop.noseZ(30, y2) + 5 - 40;
+                const double my = 0.5 * (y1 + y2), mz = 0.5 * (z1 + z2);
+                const double d = std::hypot(y2 - y1, z2 - z1), h = std::sqrt(25 - d * d / 4);
+                const double wy = -(z2 - z1) / d, wz = (y2 - y1) / d;
+                const double far = std::max(std::hypot(my + h * wy, mz + h * wz), std::hypot(my - h * wy, mz - h * wz));
+                worst = std::max(worst, 40 - far);
+            }
+            return worst;
+        };
+        const Area area{20, -20, 40, 20};
+        const double plane = largest(finishingPaths(drop, area, 2.0, 0.01));
+        const double bent = largest(finishingPaths(drop, area, 2.0, 0.01, radius));
+        qInfo("trough: largest scallop %.4f mm with the plane's spacing, %.4f mm with the concave radius's", plane, bent);
+        QVERIFY(plane > 0.01);
+        // Within the height and the mesh's sag (0.1² / (8 · 40) = 0.03 µm:
+        // the chords lie above a concave surface, and the balls with them).
+        QVERIFY2(bent <= 0.01 + 5e-5, qPrintable(QString::number(bent)));
+        QVERIFY(bent > 0.005);
+        QCOMPARE(scallopSpacing(Cutter{10, 5}, 0.01, 4.0), 0.0);  // a bend tighter than the ball
     }
 
     void zLevelRoughingLeavesTheAllowance()

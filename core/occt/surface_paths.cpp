@@ -66,18 +66,33 @@ std::vector<std::vector<Point3>> dropLine(DropCutter& drop, double y, double x0,
     return piecesOf(dropRow(drop, xs, y), xs, y, reverse);
 }
 
-double scallopSpacing(const Cutter& cutter, double height)
+double scallopSpacing(const Cutter& cutter, double height, double concaveRadius)
 {
     const double r = cutter.cornerRadius;
     const double h = std::clamp(height, 0.0, r);
-    return 2 * std::sqrt(h * (2 * r - h));
+    const double flat = 2 * std::sqrt(h * (2 * r - h));
+    if (std::isinf(concaveRadius)) return flat;
+    const double rho = concaveRadius;
+    if (rho <= r) return 0.0;
+    // The cusp's depth grows with ℓ: bisection up to the flat spacing.
+    const auto depth = [&](double l) {
+        const double half = std::asin(std::min(1.0, l / (2 * (rho - r))));
+        return rho - (rho - r) * std::cos(half) - std::sqrt(std::max(0.0, r * r - l * l / 4));
+    };
+    double lo = 0.0, hi = std::min(flat, 2 * (rho - r));
+    if (depth(hi) <= h) return hi;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (depth(mid) <= h ? lo : hi) = mid;
+    }
+    return lo;
 }
 
-FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, double height)
+FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, double height, double concaveRadius)
 {
     FinishingPaths out;
     const std::vector<double> xs = samples(area.x0, area.x1, step);
-    const double spacing = scallopSpacing(drop.cutter(), height);
+    const double spacing = scallopSpacing(drop.cutter(), height, concaveRadius);
     if (!(spacing > 0)) return out;
     double y = area.y0;
     Row row = dropRow(drop, xs, y);

@@ -9,6 +9,7 @@
 
 #include "occt/surface_mesh.h"
 
+#include <limits>
 #include <vector>
 
 namespace taiwa::surface {
@@ -26,20 +27,26 @@ std::vector<std::vector<Point3>> dropLine(DropCutter& drop, double y, double x0,
 
 // The largest distance between neighbouring paths' ball centres that leaves
 // a scallop of `height` between them on a plane: 2·√(h·(2r − h)), r the
-// cutter's corner radius.
-double scallopSpacing(const Cutter& cutter, double height);
+// cutter's corner radius; on a concave bend of radius ρ > r (the surface's
+// smallest, surface_checks.h) less, so that the scallop there stays within
+// the height: the centres lie on a circle of ρ − r and the cusp between
+// them is ρ − (ρ − r)·cos(θ/2) − √(r² − ℓ²/4) deep (θ their angle, ℓ their
+// distance), solved for ℓ. 0 when ρ ≤ r (the cutter cannot follow the bend).
+double scallopSpacing(const Cutter& cutter, double height,
+                      double concaveRadius = std::numeric_limits<double>::infinity());
 
 // Finishing: paths along X, one after the other in +Y, zigzag. The
 // pick-feed to the next path is the largest (in Y) whose corner-circle
 // centres (nose + r) stay within scallopSpacing of the previous path's at
 // every sample: the scallop stays within `height` on planes and convex
 // surfaces, whatever their slope (docs/surfaces.md says what concave ones
-// need).
+// need: the smallest concave radius, which reduces the spacing).
 struct FinishingPaths {
     std::vector<std::vector<Point3>> paths;
     std::vector<double> ys;  // the Y of each path
 };
-FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, double height);
+FinishingPaths finishingPaths(DropCutter& drop, const Area& area, double step, double height,
+                              double concaveRadius = std::numeric_limits<double>::infinity());
 
 // The same with a fixed pick-feed in Y (a negative control of the tests).
 FinishingPaths parallelPaths(DropCutter& drop, const Area& area, double step, double pickFeed);
