@@ -69,6 +69,26 @@ double Cutter::heightAt(double d) const
 MeshIndex::MeshIndex(TriangleMesh mesh) : mesh_(std::move(mesh))
 {
     if (mesh_.triangles.empty()) return;
+    facets_.reserve(mesh_.triangles.size());
+    for (const auto& t : mesh_.triangles) {
+        const Point3& a = mesh_.vertices[static_cast<std::size_t>(t[0])];
+        const Point3& b = mesh_.vertices[static_cast<std::size_t>(t[1])];
+        const Point3& c = mesh_.vertices[static_cast<std::size_t>(t[2])];
+        Facet f;
+        double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
+        double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
+        double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+        if (len > 0) {
+            nx /= len, ny /= len, nz /= len;
+            if (nz < 0) nx = -nx, ny = -ny, nz = -nz;
+            f.nx = nx, f.ny = ny, f.nz = nz, f.d = nx * a.x + ny * a.y + nz * a.z;
+        }
+        f.zmax = std::max({a.z, b.z, c.z});
+        f.x0 = std::min({a.x, b.x, c.x}), f.x1 = std::max({a.x, b.x, c.x});
+        f.y0 = std::min({a.y, b.y, c.y}), f.y1 = std::max({a.y, b.y, c.y});
+        facets_.push_back(f);
+    }
     x0_ = y0_ = z0_ = std::numeric_limits<double>::infinity();
     x1_ = y1_ = z1_ = -std::numeric_limits<double>::infinity();
     for (const Point3& p : mesh_.vertices) {
@@ -154,7 +174,7 @@ std::optional<double> DropCutter::noseZ(double x, double y)
         double lo = s0, hi = s1;
         double m1 = hi - k * (hi - lo), m2 = lo + k * (hi - lo);
         double g1 = g(m1), g2 = g(m2);
-        for (int i = 0; i < 48 && hi - lo > 1e-10; ++i) {
+        for (int i = 0; i < 32 && hi - lo > 1e-10; ++i) {  // 0.618³² ≈ 2e-7 of the edge
             if (g1 < g2) {
                 lo = m1, m1 = m2, g1 = g2;
                 m2 = lo + k * (hi - lo), g2 = g(m2);
@@ -172,7 +192,7 @@ std::optional<double> DropCutter::noseZ(double x, double y)
     const bool ball = flat < 1e-12;
     const auto ballEdge = [&](const Point3& p, const Point3& q) {
         const double ex = q.x - p.x, ey = q.y - p.y;
-        const double len = std::hypot(ex, ey);
+        const double len = std::sqrt(ex * ex + ey * ey);
         if (len < 1e-12) return;  // vertical: its top vertex decides
         const double tx = ex / len, ty = ey / len;
         const double along = (x - p.x) * tx + (y - p.y) * ty;
@@ -186,48 +206,45 @@ std::optional<double> DropCutter::noseZ(double x, double y)
         best = std::max(best, p.z + slope * along + rc * root - r);
     };
     const auto vertex = [&](const Point3& v) {
-        const double d = std::hypot(v.x - x, v.y - y);
-        if (d <= rmax && v.z - cutter_.heightAt(d) > best) best = v.z - cutter_.heightAt(d);
+        const double d2 = (v.x - x) * (v.x - x) + (v.y - y) * (v.y - y);
+        if (d2 > rmax * rmax || v.z <= best) return;
+        best = std::max(best, v.z - cutter_.heightAt(std::sqrt(d2)));
     };
 
     // First the faces and vertices (closed form) of every triangle under the
     // disc, then the edges, most of them skipped by their bound.
     candidates_.clear();
-    index_->near(x, y, rmax, seen_, stamp_, [&](int t) { candidates_.push_back(t); });
+    index_->near(x, y, rmax, seen_, stamp_, [&](int t) {
+        // Only triangles whose box meets the disc.
+        const MeshIndex::Facet& f = index_->facet(t);
+        const double dx = std::max({f.x0 - x, 0.0, x - f.x1}), dy = std::max({f.y0 - y, 0.0, y - f.y1});
+        if (dx * dx + dy * dy <= rmax * rmax) candidates_.push_back(t);
+    });
     for (const int t : candidates_) {
+        const MeshIndex::Facet& f = index_->facet(t);
+        if (f.zmax <= best) continue;
         const auto& tri = m.triangles[static_cast<std::size_t>(t)];
         const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
         const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
         const Point3& c = m.vertices[static_cast<std::size_t>(tri[2])];
-        if (std::max({a.z, b.z, c.z}) <= best) continue;
         // Face: the plane's contact, when it falls inside the triangle.
-        double nx = (b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y);
-        double ny = (b.z - a.z) * (c.x - a.x) - (b.x - a.x) * (c.z - a.z);
-        double nz = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-        const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-        if (len > 0) {
-            nx /= len, ny /= len, nz /= len;
-            if (nz < 0) nx = -nx, ny = -ny, nz = -nz;
-            if (nz > 1e-9) {
-                const double nxy = std::hypot(nx, ny);
-                const double ux = nxy > 1e-12 ? nx / nxy : 0.0, uy = nxy > 1e-12 ? ny / nxy : 0.0;
-                const double px = x - flat * ux - r * nx, py = y - flat * uy - r * ny;
-                if (insideXY(px, py, a, b, c)) {
-                    const double d = nx * a.x + ny * a.y + nz * a.z;
-                    best = std::max(best, (d + r - nx * (x - flat * ux) - ny * (y - flat * uy)) / nz - r);
-                }
-            }
+        if (f.nz > 1e-9) {
+            const double nxy = std::sqrt(f.nx * f.nx + f.ny * f.ny);
+            const double ux = nxy > 1e-12 ? f.nx / nxy : 0.0, uy = nxy > 1e-12 ? f.ny / nxy : 0.0;
+            const double px = x - flat * ux - r * f.nx, py = y - flat * uy - r * f.ny;
+            if (insideXY(px, py, a, b, c))
+                best = std::max(best, (f.d + r - f.nx * (x - flat * ux) - f.ny * (y - flat * uy)) / f.nz - r);
         }
         vertex(a);
         vertex(b);
         vertex(c);
     }
     for (const int t : candidates_) {
+        if (index_->facet(t).zmax <= best) continue;
         const auto& tri = m.triangles[static_cast<std::size_t>(t)];
         const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
         const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
         const Point3& c = m.vertices[static_cast<std::size_t>(tri[2])];
-        if (std::max({a.z, b.z, c.z}) <= best) continue;
         if (ball) {
             ballEdge(a, b);
             ballEdge(b, c);

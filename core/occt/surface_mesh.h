@@ -60,7 +60,16 @@ public:
     template <class F>
     void near(double x, double y, double r, std::vector<std::uint32_t>& seen, std::uint32_t& stamp, F&& f) const;
 
+    // What the drop-cutter reads of a triangle, computed once: its unit
+    // normal (nz ≥ 0; 0 for a degenerate one), its plane's n·p, its highest
+    // Z and its XY box.
+    struct Facet {
+        double nx = 0, ny = 0, nz = 0, d = 0, zmax = 0, x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    };
+    const Facet& facet(int t) const { return facets_[static_cast<std::size_t>(t)]; }
+
 private:
+    std::vector<Facet> facets_;
     TriangleMesh mesh_;
     double x0_ = 0, y0_ = 0, x1_ = 0, y1_ = 0, z0_ = 0, z1_ = 0, cell_ = 1;
     int nx_ = 1, ny_ = 1;
