@@ -223,6 +223,26 @@ StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& bou
     return out;
 }
 
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance)
+{
+    ToolPath out;
+    for (const auto& path : paths)
+        if (!path.empty()) {
+            out.start = {path.front().x, path.front().y, safeZ};
+            break;
+        }
+    for (const auto& path : paths) {
+        if (path.empty()) continue;
+        const Point3 first = path.front();
+        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, safeZ}});
+        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, std::min(safeZ, first.z + clearance)}});
+        out.moves.push_back({MoveKind::Feed, first, {}, FeedKind::Plunge});
+        for (std::size_t i = 1; i < path.size(); ++i) out.moves.push_back({MoveKind::Feed, path[i]});
+        out.moves.push_back({MoveKind::Rapid, {path.back().x, path.back().y, safeZ}});
+    }
+    return out;
+}
+
 std::vector<std::vector<Point3>> combineSurfaces(const MeshIndex& first,
                                                  const std::vector<std::vector<Point3>>& secondPaths, KeepSide keep)
 {

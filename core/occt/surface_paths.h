@@ -80,6 +80,14 @@ struct StoppedPath {
 };
 StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& boundary);
 
+// The paths as one tool path of nose points (model/toolpath.h), in their
+// order: from `safeZ` a rapid over each path's first point, a rapid down to
+// `clearance` above it, the plunge feed onto it, the cutting feeds along it,
+// a rapid back to `safeZ` (the pick-feed to the next path goes over the
+// surface: `safeZ` must be above it). Paths of fewer than one point are
+// skipped; nothing but the start for no paths.
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance);
+
 // Combining two surfaces (eighth abstract): along each path of the second
 // surface (point sequences), a point on the kept side of the first (above or
 // below it) stays, one on the other side is replaced by the point of the
