@@ -9,16 +9,32 @@
 // finishing nose points touch it (the centre at most r + 1 µm from it),
 // roughing keeps its allowance, and a bull-nose's ring stays r off it.
 // The oracle lives here, not in the product. A negative control: the same
-// check catches a ball lowered by 5 µm.
+// check catches a ball lowered by 5 µm. A trimmed face (a square plate with
+// a round hole, written to STEP here) is read back as triangles that stay
+// off the hole and cover the rest but for a band one grid cell wide.
 #include "occt/surface_mesh.h"
 #include "occt/surface_paths.h"
+#include "occt/surface_step.h"
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <gp_Vec.hxx>
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
@@ -169,6 +185,47 @@ private slots:
         QVERIFY(n > 1000);
         QVERIFY2(worst >= -1e-3, qPrintable(QString::number(worst)));
         QVERIFY(worst < 0.02);  // and touches somewhere (to the ring samples' 10°)
+    }
+
+    void trimmedFaceImport()
+    {
+        // The plane z = 2 over [0, 40]², a hole of radius 8 at (20, 20).
+        const gp_Pnt c[4] = {{0, 0, 2}, {40, 0, 2}, {40, 40, 2}, {0, 40, 2}};
+        BRepBuilderAPI_MakeWire outer;
+        for (int i = 0; i < 4; ++i) outer.Add(BRepBuilderAPI_MakeEdge(c[i], c[(i + 1) % 4]));
+        const gp_Circ circle(gp_Ax2(gp_Pnt(20, 20, 2), gp_Dir(0, 0, 1)), 8);
+        TopoDS_Wire hole = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle));
+        hole.Reverse();
+        BRepBuilderAPI_MakeFace face(outer.Wire());
+        face.Add(hole);
+        QVERIFY(face.IsDone());
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("plate.step").toStdString();
+        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+        STEPControl_Writer writer;
+        QCOMPARE(writer.Transfer(face.Face(), STEPControl_AsIs), IFSelect_RetDone);
+        QCOMPARE(writer.Write(file.c_str()), IFSelect_RetDone);
+
+        const auto mesh = importStepFaces(file, 1e-3);
+        QVERIFY2(mesh.ok(), mesh.ok() ? "" : mesh.error().c_str());
+        double area = 0.0;
+        for (const auto& t : mesh->triangles) {
+            const Point3 &a = mesh->vertices[static_cast<std::size_t>(t[0])],
+                         &b = mesh->vertices[static_cast<std::size_t>(t[1])],
+                         &d = mesh->vertices[static_cast<std::size_t>(t[2])];
+            QVERIFY(std::abs(a.z - 2) < 1e-9);
+            for (const Point3* p : {&a, &b, &d}) QVERIFY(std::hypot(p->x - 20, p->y - 20) >= 8 - 1e-6);
+            area += 0.5 * std::abs((b.x - a.x) * (d.y - a.y) - (d.x - a.x) * (b.y - a.y));
+        }
+        const double full = 1600 - std::numbers::pi * 64;
+        qInfo("trimmed face: %zu triangles, %.1f of %.1f mm² covered", mesh->triangles.size(), area, full);
+        QVERIFY(area <= full + 1e-6);
+        QVERIFY(area > 0.9 * full);
+        // The drop-cutter on it: a ball rests on the plate, not in the hole.
+        const MeshIndex index(std::move(*mesh));
+        DropCutter drop(index, Cutter{4, 2});
+        QVERIFY(std::abs(*drop.noseZ(5, 5) - 2) < 1e-9);
+        QVERIFY(!drop.surfaceZ(20, 20));
     }
 };
 

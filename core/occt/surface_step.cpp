@@ -50,7 +50,8 @@ void quiet()
 // stay within `deflection` (from its largest second derivatives on a 17 × 17
 // grid), the quads whose corners lie on the face kept. A face on its whole
 // surface (one wire of at most four edges along the parameter bounds) needs
-// no classifying; a trimmed one loses the quads its trim crosses.
+// no classifying; a trimmed one, at least 256 cells across, loses the
+// cells its trim crosses.
 void meshFace(const TopoDS_Face& face, double deflection, TriangleMesh& mesh)
 {
     TopLoc_Location loc;
@@ -72,7 +73,6 @@ void meshFace(const TopoDS_Face& face, double deflection, TriangleMesh& mesh)
         const double step = std::sqrt(8 * deflection / d2);
         return static_cast<int>(std::clamp(std::ceil(span / step), 1.0, 2000.0));
     };
-    const int nu = count(u1 - u0, d2u), nv = count(v1 - v0, d2v);
     double su0 = 0, su1 = 0, sv0 = 0, sv1 = 0;
     s->Bounds(su0, su1, sv0, sv1);
     int wires = 0, edges = 0;
@@ -80,6 +80,12 @@ void meshFace(const TopoDS_Face& face, double deflection, TriangleMesh& mesh)
     for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) ++edges;
     const bool whole = wires == 1 && edges <= 4 && std::abs(u0 - su0) < 1e-9 && std::abs(u1 - su1) < 1e-9 &&
                        std::abs(v0 - sv0) < 1e-9 && std::abs(v1 - sv1) < 1e-9;
+    // A trimmed face: at least kTrimCells cells across, so that its trim
+    // (a hole, a cut-off corner) is seen and the band lost along it stays
+    // narrow, however flat the face is.
+    constexpr int kTrimCells = 256;
+    const int nu = whole ? count(u1 - u0, d2u) : std::max(kTrimCells, count(u1 - u0, d2u));
+    const int nv = whole ? count(v1 - v0, d2v) : std::max(kTrimCells, count(v1 - v0, d2v));
     const int base = static_cast<int>(mesh.vertices.size());
     std::vector<char> on(static_cast<std::size_t>((nu + 1) * (nv + 1)), 1);
     const double tol = BRep_Tool::Tolerance(face);
