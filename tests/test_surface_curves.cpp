@@ -6,7 +6,8 @@
 // range and two projections in one plane are refused naming which; the
 // ruled surface between two coplanar lines is their plane (and between two
 // skew lines is none); N ≥ M is refused; the roughing surface's division
-// points are every (M/N)-th of the finishing surface's.
+// points are every (M/N)-th of the finishing surface's; a step-over gives
+// the pieces it implies.
 #include "occt/surface_curves.h"
 
 #include <QtTest>
@@ -194,6 +195,13 @@ private slots:
         for (std::size_t i = 1; i < f.size(); ++i)
             QVERIFY(std::abs(std::hypot(f[i].x - f[i - 1].x, f[i].y - f[i - 1].y, f[i].z - f[i - 1].z) - chord0) <
                     1e-4);
+        // A step-over implies the pieces: the longer curve (100.5) over it.
+        const SpaceCurve longer = line({0, 0, 0}, {100.5, 0, 0}), shorter = line({0, 20, 0}, {50, 20, 0});
+        const auto pieces = piecesForStepOver(longer, shorter, 10);
+        QVERIFY(pieces.ok());
+        QCOMPARE(*pieces, 11);
+        QCOMPARE(*piecesForStepOver(shorter, longer, 0.5), 201);
+        QVERIFY(!piecesForStepOver(longer, shorter, 0).ok());
         // A curve of one point is refused naming it.
         const auto bad = ruledSurface(*c1, SpaceCurve{{{0, 0, 0}}, false}, 4);
         QVERIFY(!bad.ok());

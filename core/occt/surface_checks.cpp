@@ -3,7 +3,6 @@
 // three neighbouring points, the boundary by crossing the paths' segments.
 #include "occt/surface_checks.h"
 
-#include "occt/surface_curves.h"
 #include "occt/surface_paths.h"
 
 #include <fmt/format.h>
@@ -44,21 +43,6 @@ std::optional<double> concaveRadius(const Point3& a, const Point3& b, const Poin
 }
 
 }  // namespace
-
-std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRulings, int betweenRulings)
-{
-    alongRulings = std::max(1, alongRulings);
-    betweenRulings = std::max(1, betweenRulings);
-    const int cols = s.pieces() * betweenRulings + 1;
-    std::vector<std::vector<Point3>> rows;
-    for (int k = 0; k <= alongRulings; ++k) {
-        const double v = static_cast<double>(k) / alongRulings;
-        std::vector<Point3> row;
-        for (int j = 0; j < cols; ++j) row.push_back(s.point(static_cast<double>(j) / betweenRulings, v));
-        rows.push_back(std::move(row));
-    }
-    return rows;
-}
 
 std::optional<std::string> findUndercut(const std::vector<std::vector<Point3>>& p)
 {

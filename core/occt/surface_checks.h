@@ -15,10 +15,6 @@
 
 namespace taiwa::surface {
 
-// The paths of a ruled surface: `alongRulings` + 1 paths across the rulings,
-// each with pieces × betweenRulings + 1 points (meshRuled's grid).
-std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRulings, int betweenRulings);
-
 // Where the surface turns under itself: a quad of the paths whose normal
 // points the other way in Z from the surface's (the wrong way by more than
 // 1 µm over the quad, so that a vertical wall is no undercut). Nothing when

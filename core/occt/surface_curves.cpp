@@ -316,6 +316,40 @@ Point3 RuledSurface::point(double u, double v) const
     return lerp(lerp(first[ui], first[ui + 1], f), lerp(second[ui], second[ui + 1], f), v);
 }
 
+std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRulings, int betweenRulings)
+{
+    alongRulings = std::max(1, alongRulings);
+    betweenRulings = std::max(1, betweenRulings);
+    const int cols = s.pieces() * betweenRulings + 1;
+    std::vector<std::vector<Point3>> rows;
+    for (int k = 0; k <= alongRulings; ++k) {
+        const double v = static_cast<double>(k) / alongRulings;
+        std::vector<Point3> row;
+        for (int j = 0; j < cols; ++j) row.push_back(s.point(static_cast<double>(j) / betweenRulings, v));
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second, double stepOver)
+{
+    if (!(stepOver > 0.0)) return Failure{fmt::format("the step-over must be above 0, not {}", stepOver)};
+    double longest = 0.0;
+    int which = 1;
+    for (const SpaceCurve* c : {&first, &second}) {
+        const std::string name = fmt::format("curve {}", which++);
+        if (c->points.size() < 2) return Failure{fmt::format("{}: it needs at least two points", name)};
+        try {
+            Handle(Geom_BSplineCurve) curve = spaceCurve(*c);
+            GeomAdaptor_Curve adaptor(curve);
+            longest = std::max(longest, GCPnts_AbscissaPoint::Length(adaptor));
+        } catch (const Standard_Failure& e) {
+            return Failure{fmt::format("{}: OpenCASCADE could not measure it ({})", name, e.GetMessageString())};
+        }
+    }
+    return std::max(1, static_cast<int>(std::ceil(longest / stepOver - 1e-9)));
+}
+
 Result<RuledSurface> ruledSurface(const SpaceCurve& first, const SpaceCurve& second, int pieces)
 {
     auto a = divideNamed(first, pieces, "curve 1");

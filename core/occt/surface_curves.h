@@ -66,6 +66,18 @@ struct RuledSurface {
     int pieces() const { return static_cast<int>(first.size()) - 1; }
 };
 
+// The surface as point-sequence paths: `alongRulings` + 1 paths across the
+// rulings (from the first curve to the second), each of pieces ×
+// betweenRulings + 1 points, for tessellating (surface_mesh.h meshRuled)
+// and checking (surface_checks.h).
+std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRulings, int betweenRulings);
+
+// How many pieces a step-over along the curves implies (the operator may
+// give N or M as a step-over): the longer curve's length over it, rounded
+// up, at least 1. Refused for a step-over not above 0 or a curve that
+// cannot be measured.
+Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second, double stepOver);
+
 // Both curves divided into `pieces` equal lengths and joined (refusals as
 // divideByLength, naming "curve 1" or "curve 2").
 Result<RuledSurface> ruledSurface(const SpaceCurve& first, const SpaceCurve& second, int pieces);

@@ -7,7 +7,6 @@
 // height found on the faces and vertices.
 #include "occt/surface_mesh.h"
 
-#include "occt/surface_checks.h"
 #include "occt/surface_curves.h"
 
 #include <algorithm>
