@@ -143,9 +143,15 @@ private slots:
         // Negative control: a mesh of 3 mm has a sag of tens of µm.
         const MeshIndex coarse(sphereCap(30, 3.0));
         QVERIFY(sphereError(coarse, Cutter{10, 5}) > 1e-3);
-        // Nothing under the cutter: no nose point.
+        // Nothing under the cutter: no nose point; nor on an empty mesh
+        // (ragged paths make none).
         DropCutter drop(*sphere_, Cutter{10, 5});
         QVERIFY(!drop.noseZ(100, 0));
+        const MeshIndex empty(meshFromPaths({{{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}}}));
+        QVERIFY(empty.mesh().triangles.empty());
+        DropCutter none(empty, Cutter{10, 5});
+        QVERIFY(!none.noseZ(0, 0));
+        QVERIFY(!none.surfaceZ(0, 0));
     }
 
     void pathStopsOnVerticalBoundary()

@@ -25,7 +25,8 @@ struct TriangleMesh {
 
 // A surface given as point-sequence paths (second abstract): paths[i][j],
 // every path with the same number of points, neighbouring paths side by
-// side; each quad of four neighbours becomes two triangles.
+// side; each quad of four neighbours becomes two triangles. No triangles
+// for fewer than two paths or paths of different lengths.
 TriangleMesh meshFromPaths(const std::vector<std::vector<Point3>>& paths);
 // A ruled surface, each ruling divided into `alongRulings` pieces and each
 // piece between rulings into `betweenRulings` (the bilinear patches' twist
@@ -103,7 +104,7 @@ template <class F>
 void MeshIndex::near(double x, double y, double r, std::vector<std::uint32_t>& seen, std::uint32_t& stamp,
                      F&& f) const
 {
-    if (x + r < x0_ || x - r > x1_ || y + r < y0_ || y - r > y1_) return;
+    if (start_.empty() || x + r < x0_ || x - r > x1_ || y + r < y0_ || y - r > y1_) return;
     if (seen.size() != mesh_.triangles.size()) seen.assign(mesh_.triangles.size(), 0);
     if (++stamp == 0) {
         std::fill(seen.begin(), seen.end(), 0);
