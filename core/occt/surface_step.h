@@ -1,0 +1,30 @@
+// STEP files of 3-D surfaces (docs/surfaces.md): the finished surface
+// written as one B-spline face through its point-sequence paths, and a
+// STEP file's faces (a face set, an alternative to building the surface from
+// curves) read and tessellated once into the triangles the drop-cutter
+// works on. OpenCASCADE's reader and writer behind this header.
+#pragma once
+
+#include "model/result.h"
+#include "model/toolpath.h"
+#include "occt/surface_mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace taiwa::surface {
+
+// The surface through the paths (paths[i][j], all of one length, at least
+// 2 × 2; a B-spline interpolating every point) as one face in a STEP file
+// at `file`. Refused naming the file or the paths.
+Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, const std::string& file);
+
+// Every face of the STEP file at `file`, tessellated so that no triangle
+// strays more than about `deflection` mm from its face (a grid over the
+// face's parameters from its second derivatives), as one mesh (the normals'
+// side as the faces have it; a trimmed face loses the grid cells its trim
+// crosses). Refused: a file that
+// cannot be read, holds no face, or whose faces give no triangles.
+Result<TriangleMesh> importStepFaces(const std::string& file, double deflection);
+
+}  // namespace taiwa::surface
