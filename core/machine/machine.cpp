@@ -91,6 +91,12 @@ public:
             m.chuckDiameter = positive(chuck, "diameter", "chuck.diameter");
             m.maxBarDiameter = positive(chuck, "maxBarDiameter", "chuck.maxBarDiameter");
             m.jawLength = positive(chuck, "jawLength", "chuck.jawLength");
+            auto layout = readLatheLayout(j_);  // two paths, a gang slide (lathe_kinds.h)
+            if (!layout) {
+                const std::string& e = layout.error();
+                fail(e.substr(0, e.find(": ")), e.substr(e.find(": ") + 2));
+            }
+            m.layout = std::move(*layout);
         } else {
             m.toolPockets = static_cast<int>(positive(at(j_, "toolChanger", "toolChanger"), "pockets", "toolChanger.pockets"));
         }
