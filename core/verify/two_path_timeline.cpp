@@ -111,9 +111,10 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
 
     // Each path's program as operations, in path 1's coordinates.
     std::vector<std::vector<Op>> ops(n);
+    std::vector<ZR> startOf(n);
     for (std::size_t p = 0; p < n; ++p) {
         const BalancedPath& bp = cut.paths[p];
-        ZR at = pointToP1(bp.start, p);
+        ZR at = startOf[p] = pointToP1(bp.start, p);
         auto move = [&](const TurnMove& m) {
             Op o;
             o.kind = Op::Move;
@@ -150,92 +151,167 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         for (const auto& m : bp.tail) move(m);
     }
 
+    // One spindle: its speed is what path 1 (the master, which commands
+    // G96) sets at its own X, and every path's feed per revolution runs at
+    // it. The clock steps to the next end of a move, dwell or wait, at most
+    // kStep seconds at a time while the speed may change.
+    constexpr double kStep = 0.002;
     const Clock clk{cut.cutting, machine, cut.spindleLimit > 0 ? cut.spindleLimit : machine.maxSpindleSpeed};
-    std::vector<double> t(n, 0.0);
+    auto rapidSeconds = [&](const Op& o) {
+        const double rz = machine.rapid.count("z") ? machine.rapid.at("z") : machine.slowestRapid();
+        const double rx = machine.rapid.count("x") ? machine.rapid.at("x") : machine.slowestRapid();
+        return 60.0 * std::max(std::abs(o.move.end.z - o.from.z) / rz, std::abs(o.move.end.r - o.from.r) / rx);
+    };
+    auto lengthOf = [&](const Op& o) {
+        return o.move.kind == TurnMove::Feed || o.move.kind == TurnMove::Rapid
+                   ? std::hypot(o.move.end.z - o.from.z, o.move.end.r - o.from.r)
+                   : arcLength(o.from, o.move);
+    };
     std::vector<std::size_t> pc(n, 0);
+    std::vector<double> done(n, 0.0);  // the fraction of the current move or dwell done
+    std::vector<double> arrived(n, 0.0);
+    std::vector<double> ended(n, 0.0);
+    std::vector<ZR> pos = startOf;
+    double t = 0.0, revs = 0.0;
     std::map<int, TimelineBlock> blocks;
     std::map<int, CutTrace> traces;
+    std::map<int, std::pair<double, double>> revsAt;  // cut: revolutions at its start and end
     auto hasCode = [&](std::size_t p, int code) {
         for (std::size_t i = pc[p]; i < ops[p].size(); ++i)
             if (ops[p][i].kind == Op::Wait && ops[p][i].code == code) return true;
         return false;
     };
-    for (;;) {
-        // Run every path up to its next wait or its end.
+    auto atWait = [&](std::size_t p) { return pc[p] < ops[p].size() && ops[p][pc[p]].kind == Op::Wait; };
+    for (int guard = 0; guard < 50'000'000; ++guard) {
+        // The markers at once; a path at a wait notes when it came.
         for (std::size_t p = 0; p < n; ++p) {
-            for (; pc[p] < ops[p].size() && ops[p][pc[p]].kind != Op::Wait; ++pc[p]) {
+            for (; pc[p] < ops[p].size(); ++pc[p]) {
                 const Op& o = ops[p][pc[p]];
+                if (o.kind == Op::Move || o.kind == Op::Dwell) break;
+                if (o.kind == Op::Wait) {
+                    if (done[p] == 0.0) arrived[p] = t;
+                    done[p] = -1.0;  // standing at it
+                    break;
+                }
                 TimelineBlock& b = blocks[o.block];
                 switch (o.kind) {
-                case Op::Move: t[p] += clk.seconds(o.from, o.move); break;
-                case Op::Dwell: t[p] += o.seconds; b.dwell = o.seconds; break;
                 case Op::BlockStart:
                     b.number = o.block;
                     b.path = p;
-                    b.start = b.waitFrom = b.waitTo = t[p];
+                    b.start = b.waitFrom = b.waitTo = t;
                     break;
                 case Op::CutStart: {
-                    b.cutStart = t[p];
+                    b.cutStart = t;
                     const Op& m = ops[p][pc[p] + 1];
-                    traces[o.block] = {t[p], 0.0, m.from.z, m.move.end.z, m.move.end.r};
+                    traces[o.block] = {t, 0.0, m.from.z, m.move.end.z, m.move.end.r};
+                    revsAt[o.block].first = revs;
                     break;
                 }
-                case Op::CutEnd: b.cutEnd = traces[o.block].t1 = t[p]; break;
-                case Op::BlockEnd: b.end = t[p]; break;
-                case Op::Wait: break;
+                case Op::CutEnd:
+                    b.cutEnd = traces[o.block].t1 = t;
+                    revsAt[o.block].second = revs;
+                    break;
+                case Op::BlockEnd: b.end = t; break;
+                default: break;
                 }
             }
+            if (pc[p] >= ops[p].size() && done[p] != -2.0) {
+                ended[p] = t;
+                done[p] = -2.0;
+            }
         }
-        std::vector<std::size_t> waiting;
-        for (std::size_t p = 0; p < n; ++p)
-            if (pc[p] < ops[p].size()) waiting.push_back(p);
-        if (waiting.empty()) break;
         // Release a code every path that has it stands at.
         bool released = false;
-        for (std::size_t p : waiting) {
+        for (std::size_t p = 0; p < n && !released; ++p) {
+            if (!atWait(p)) continue;
             const int code = ops[p][pc[p]].code;
             std::vector<std::size_t> party;
             bool all = true;
             for (std::size_t q = 0; q < n; ++q) {
                 if (!hasCode(q, code)) continue;
                 party.push_back(q);
-                if (pc[q] >= ops[q].size() || ops[q][pc[q]].kind != Op::Wait || ops[q][pc[q]].code != code) all = false;
+                if (!atWait(q) || ops[q][pc[q]].code != code) all = false;
             }
             if (!all || party.size() < 2) continue;
-            double meet = 0.0;
-            for (std::size_t q : party) meet = std::max(meet, t[q]);
             for (std::size_t q : party) {
                 const Op& w = ops[q][pc[q]];
                 if (w.block) {
-                    blocks[w.block].waitFrom = t[q];
-                    blocks[w.block].waitTo = meet;
+                    blocks[w.block].waitFrom = arrived[q];
+                    blocks[w.block].waitTo = t;
                     blocks[w.block].wait = code;
                 }
-                t[q] = meet;
+                done[q] = 0.0;
                 ++pc[q];
             }
             released = true;
-            break;
         }
         if (released) continue;
-        for (std::size_t p : waiting) {
-            const int code = ops[p][pc[p]].code;
-            std::string why;
-            for (std::size_t q = 0; q < n; ++q) {
-                if (q == p) continue;
-                if (pc[q] >= ops[q].size()) why = fmt::format("path {} ended without M{}", q + 1, code);
-                else if (!hasCode(q, code)) why = fmt::format("path {} has no M{}", q + 1, code);
-                else why = fmt::format("path {} waits at M{}", q + 1, ops[q][pc[q]].code);
+        std::vector<std::size_t> running;
+        for (std::size_t p = 0; p < n; ++p)
+            if (pc[p] < ops[p].size() && !atWait(p)) running.push_back(p);
+        if (running.empty()) {
+            for (std::size_t p = 0; p < n; ++p) {
+                if (!atWait(p)) continue;
+                const int code = ops[p][pc[p]].code;
+                std::string why;
+                for (std::size_t q = 0; q < n; ++q) {
+                    if (q == p) continue;
+                    if (pc[q] >= ops[q].size()) why = fmt::format("path {} ended without M{}", q + 1, code);
+                    else if (!hasCode(q, code)) why = fmt::format("path {} has no M{}", q + 1, code);
+                    else why = fmt::format("path {} waits at M{}", q + 1, ops[q][pc[q]].code);
+                }
+                tl.deadlocks.push_back({p, code, why});
             }
-            tl.deadlocks.push_back({p, code, why});
+            break;
         }
-        break;
+        // The spindle's speed now, and how long each running path's move
+        // or dwell still takes at it.
+        const double rpm = cut.cutting.rpmAt(std::max(2.0 * std::abs(pos[0].r), 1e-3), clk.limit);
+        std::vector<double> left(n, 0.0);
+        double dt = kStep;
+        bool speedMayChange = false;
+        for (std::size_t p : running) {
+            const Op& o = ops[p][pc[p]];
+            double whole;
+            if (o.kind == Op::Dwell) whole = o.seconds;
+            else if (o.move.kind == TurnMove::Rapid) whole = rapidSeconds(o);
+            else {
+                const double f = o.move.feed == FeedKind::Plunge ? cut.cutting.plungeFeedPerRev : cut.cutting.feedPerRev;
+                whole = 60.0 * lengthOf(o) / std::max(f * rpm, 1e-9);
+            }
+            left[p] = whole;
+            const double remaining = (1.0 - done[p]) * whole;
+            if (p == 0 && o.kind == Op::Move && std::abs(o.move.end.r - o.from.r) > 1e-9 && cut.cutting.constantSurfaceSpeed)
+                speedMayChange = true;
+            dt = std::min(dt, remaining);
+        }
+        if (!speedMayChange) {
+            dt = 1e300;
+            for (std::size_t p : running) dt = std::min(dt, (1.0 - done[p]) * left[p]);
+        }
+        dt = std::max(dt, 0.0);
+        for (std::size_t p : running) {
+            const Op& o = ops[p][pc[p]];
+            done[p] = left[p] > 0 ? std::min(1.0, done[p] + dt / left[p]) : 1.0;
+            if (o.kind == Op::Move)
+                pos[p] = {o.from.z + done[p] * (o.move.end.z - o.from.z), o.from.r + done[p] * (o.move.end.r - o.from.r)};
+            if (done[p] >= 1.0 - 1e-12) {
+                if (o.kind == Op::Move) pos[p] = o.move.end;
+                done[p] = 0.0;
+                ++pc[p];
+            }
+        }
+        t += dt;
+        revs += rpm / 60.0 * dt;
     }
-    tl.pathEnd = t;
+    tl.pathEnd = ended;
     for (auto& [k, b] : blocks)
         if (k > 0) tl.blocks.push_back(b);
 
-    // The lag of every cut behind the one before it, over the Z both cover.
+    // The lag of every cut behind the one before it, over the Z both cover:
+    // along a cut the tool's Z goes with the spindle's revolutions (feed
+    // per revolution), so the lag in revolutions is linear in Z between
+    // the ends of the stretch.
     for (auto it = traces.begin(); it != traces.end(); ++it) {
         const auto next = std::next(it);
         if (next == traces.end()) break;
@@ -244,14 +320,16 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         const double lo = std::max(std::min(a.z0, a.z1), std::min(b.z0, b.z1));
         const double hi = std::min(std::max(a.z0, a.z1), std::max(b.z0, b.z1));
         if (hi < lo) continue;
-        auto at = [](const CutTrace& c, double z) {
-            return c.z1 == c.z0 ? c.t0 : c.t0 + (c.t1 - c.t0) * (z - c.z0) / (c.z1 - c.z0);
+        auto along = [](double v0, double v1, const CutTrace& c, double z) {
+            return c.z1 == c.z0 ? v0 : v0 + (v1 - v0) * (z - c.z0) / (c.z1 - c.z0);
         };
-        const double rpm = std::min(cut.cutting.rpmAt(2 * std::abs(a.level), clk.limit),
-                                    cut.cutting.rpmAt(2 * std::abs(b.level), clk.limit));
-        double least = std::numeric_limits<double>::max();
-        for (const double z : {lo, hi}) least = std::min(least, at(b, z) - at(a, z));
-        tl.lags.push_back({it->first, next->first, least * rpm / 60.0, least});
+        const auto ra = revsAt[it->first], rb = revsAt[next->first];
+        double least = std::numeric_limits<double>::max(), seconds = least;
+        for (const double z : {lo, hi}) {
+            least = std::min(least, along(rb.first, rb.second, b, z) - along(ra.first, ra.second, a, z));
+            seconds = std::min(seconds, along(b.t0, b.t1, b, z) - along(a.t0, a.t1, a, z));
+        }
+        tl.lags.push_back({it->first, next->first, least, seconds});
     }
     return tl;
 }

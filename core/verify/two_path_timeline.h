@@ -1,9 +1,9 @@
 // The two-path timeline (docs/two-path-lathe.md "Timeline"): both paths'
 // programs of a balanced cut run block by block against one clock, rapids
-// at the machine's axis rates, feeds per revolution at the spindle speed in
-// force at the move's diameter (G97, or G96's surface speed capped by the
-// limit), the dwells, and the waits (a wait M-code holds its path until
-// every path whose program has that code stands at it). It reports each
+// at the machine's axis rates, feeds per revolution at the one spindle's
+// speed (G97's, or G96's surface speed at path 1's X, capped by the limit:
+// path 1 is the master), the dwells, and the waits (a wait M-code holds its
+// path until every path whose program has that code stands at it). It reports each
 // block's times on each path, the deadlocks (a wait that never meets its
 // partner), and for every cut after the first the lag of its tool behind
 // the cut before it (the leader: the level above) in spindle revolutions,
