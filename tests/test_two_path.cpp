@@ -57,7 +57,9 @@ const Step& roughingStep(const std::string& stem)
     }
     for (const auto& s : it->second.steps)
         if (s.kind == StepKind::TurnRoughing) return s;
-    qFatal("no roughing step in %s", stem.c_str());
+    std::string why;
+    for (const auto& d : it->second.diagnostics) why += d.field + ": " + d.message + "; ";
+    qFatal("no roughing step in %s: %s", stem.c_str(), why.c_str());
 }
 const TurnStep& roughing(const std::string& stem) { return *roughingStep(stem).turn; }
 const Plan& planOf(const std::string& stem)
@@ -355,11 +357,16 @@ private slots:
         r = turning::balanceRoughing(s.path, s.cutting, twoPath(), low);
         QVERIFY(!r);
         QCOMPARE(QString::fromStdString(r.error()), QString("waitCodes: M99 is outside the machine's wait codes M101 to M199"));
+        // One code fewer than the taper needs.
+        int waits = 0;
+        for (const auto& b : balanced(s).paths[0].blocks) waits += b.wait ? 1 : 0;
+        QVERIFY(waits >= 2);
         Machine narrow = twoPath();
-        narrow.layout.multiPath->waitCodes = {101, 102};
+        narrow.layout.multiPath->waitCodes = {101, 99 + waits};
         r = turning::balanceRoughing(s.path, s.cutting, narrow);
         QVERIFY(!r);
-        QCOMPARE(QString::fromStdString(r.error()), QString("waitCodes: the balanced cut needs wait code M103, beyond the machine's last M102"));
+        QCOMPARE(QString::fromStdString(r.error()),
+                 QString("waitCodes: the balanced cut needs wait code M%1, beyond the machine's last M%2").arg(100 + waits).arg(99 + waits));
         // Within the range it is taken (the control: the same job, more codes).
         narrow.layout.multiPath->waitCodes = {101, 110};
         QVERIFY(turning::balanceRoughing(s.path, s.cutting, narrow));

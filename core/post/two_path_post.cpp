@@ -44,7 +44,7 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& r
         s.turn = ts;
         PostOptions o = options;
         o.programNumber = options.programNumber + static_cast<int>(p);
-        o.programName = fmt::format("{} path {} {}", options.programName, p + 1, layout.paths[p].name);
+        o.programName = fmt::format("Path {} {}: {}", p + 1, layout.paths[p].name, options.programName);
         o.fileStem = fmt::format("{}.p{}", options.fileStem, p + 1);
         o.turningCycles = false;
         // The tool change point on the path's own side.
