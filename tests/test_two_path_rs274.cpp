@@ -87,7 +87,10 @@ private slots:
             handshakes[p] = static_cast<int>(text.count(QRegularExpression(R"(^M66 P0 L[34] Q60$)", QRegularExpression::MultilineOption)));
             QCOMPARE(handshakes[p], waits);
             QCOMPARE(static_cast<int>(text.count(QRegularExpression(R"(^M6[45] P0$)", QRegularExpression::MultilineOption))), waits);
-            QVERIFY(text.contains(QString("(Program %1").arg(o.programName.c_str())) || text.contains("path " + QString::number(p + 1)));
+            // A whole program of its own, naming its path and its table.
+            QVERIFY2(text.startsWith(QString("(Program Path %1 ").arg(p + 1)), qPrintable(text.left(200)));
+            QVERIFY(text.contains(QString("(Tool table %1.p%2.tbl: ").arg(stem).arg(p + 1)));
+            QVERIFY(text.trimmed().endsWith("M30"));
         }
         QCOMPARE(handshakes[0], handshakes[1]);
         if (everywhere) QVERIFY(handshakes[0] > 0);
