@@ -400,6 +400,14 @@ private slots:
               t.seconds(), ratio, t.leastLag());
         QVERIFY(ratio < 1.0);
         if (!taper) QVERIFY(ratio < 0.6);  // a cylinder comes close to half
+        // Meeting before the first cut and after the last, as the job's programs do.
+        set.meetAtEnds = true;
+        const BalancedCut ends = balanced(s, set);
+        QVERIFY(ends.paths[0].blocks.front().wait && ends.paths[0].endWait && ends.paths[0].endWait == ends.paths[1].endWait);
+        const Timeline te = runTimeline(ends, twoPath());
+        QVERIFY(te.deadlocks.empty());
+        QVERIFY(te.leastLag() >= revolutions - 1e-6);
+        QCOMPARE_LE(std::abs(te.pathEnd[0] - te.pathEnd[1]), 1e-9);  // they leave the roughing together
     }
 
     void timelineCatchesDeadlockAndCloseFollower()
@@ -481,10 +489,17 @@ private slots:
     {
         QFETCH(QString, stem);
         const std::string st = stem.toStdString();
-        const Step& rough = roughingStep(st);
-        const BalancedCut c = balanced(*rough.turn);
-        const PostOptions o = postOptions(planOf(st), "fanuc", std::nullopt, 1000, st);
-        const auto programs = postBalancedCut(c, rough, *twoPath().layout.multiPath, defaultToolLibrary(), o);
+        // The whole job: path 1 faces, roughs its blocks, finishes and
+        // parts off; path 2 roughs its blocks; they meet before and after.
+        const Plan& plan = planOf(st);
+        std::size_t index = 0;
+        while (plan.steps.at(index).kind != StepKind::TurnRoughing) ++index;
+        QVERIFY(index > 0 && index + 1 < plan.steps.size());
+        turning::BalanceSettings set;
+        set.meetAtEnds = true;
+        const BalancedCut c = balanced(*plan.steps[index].turn, set);
+        const PostOptions o = postOptions(plan, "fanuc", std::nullopt, 1000, st);
+        const auto programs = postBalancedCut(c, plan.steps, index, *twoPath().layout.multiPath, defaultToolLibrary(), o);
         QCOMPARE(programs.size(), std::size_t{2});
         bool rewrote = false;
         for (std::size_t p = 0; p < programs.size(); ++p) {
@@ -507,6 +522,11 @@ private slots:
             for (const auto& b : c.paths[p].blocks)
                 if (b.dwellSeconds > 0) QCOMPARE_LE(std::abs(written.at(k++) - b.dwellSeconds), 1e-9);
             if (c.paths[p].tailWait) ++waits;
+            QVERIFY(c.paths[p].endWait);
+            ++waits;
+            // Path 1 holds every step of the job, path 2 the roughing alone.
+            for (std::size_t i = 0; i < plan.steps.size(); ++i)
+                QCOMPARE(nc.find(fmt::format("(STEP {}:", i + 1)) != std::string::npos, p == 0 || i == 0);
             QCOMPARE(static_cast<int>(QString::fromStdString(nc).count(QRegularExpression(R"(^M1\d\d$)", QRegularExpression::MultilineOption))), waits);
             const QString golden = test::sourcePath(QString("tests/golden/two-path/%1.p%2.fanuc.nc").arg(stem).arg(p + 1));
             if (test::rewroteGolden(golden, nc)) {

@@ -32,36 +32,48 @@ private slots:
     {
         QTest::addColumn<QString>("stem");
         QTest::addColumn<bool>("everywhere");
-        QTest::newRow("cylinder") << "lathe-two-path-cylinder" << false;
-        QTest::newRow("cylinder, waits everywhere") << "lathe-two-path-cylinder" << true;
-        QTest::newRow("taper") << "lathe-two-path-taper" << false;
+        QTest::addColumn<bool>("whole");
+        QTest::newRow("cylinder") << "lathe-two-path-cylinder" << false << false;
+        QTest::newRow("cylinder, waits everywhere") << "lathe-two-path-cylinder" << true << false;
+        QTest::newRow("taper") << "lathe-two-path-taper" << false << false;
+        QTest::newRow("cylinder, the whole job") << "lathe-two-path-cylinder" << false << true;
+        QTest::newRow("taper, the whole job") << "lathe-two-path-taper" << false << true;
     }
     void bothProgramsRunInLinuxcnc()
     {
         QFETCH(QString, stem);
         QFETCH(bool, everywhere);
+        QFETCH(bool, whole);
         auto read = readJobFile(dataPath("two-path/" + stem + ".taiwa").toStdString());
         QVERIFY(read.job);
         const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
         QVERIFY(plan.ok());
         const Step* rough = nullptr;
-        for (const auto& s : plan.steps)
-            if (s.kind == StepKind::TurnRoughing) rough = &s;
+        std::size_t index = 0;
+        for (std::size_t k = 0; k < plan.steps.size(); ++k)
+            if (plan.steps[k].kind == StepKind::TurnRoughing) {
+                rough = &plan.steps[k];
+                index = k;
+            }
         QVERIFY(rough);
         const Machine& m = *findMachine("lathe-two-path");
         turning::BalanceSettings set;
         set.waitsEverywhere = everywhere;
+        set.meetAtEnds = whole;
         const auto cut = turning::balanceRoughing(rough->turn->path, rough->turn->cutting, m, set);
         QVERIFY(cut);
         const PostOptions o = postOptions(plan, "linuxcnc", std::nullopt, 1000, stem.toStdString());
-        const auto programs = postBalancedCut(*cut, *rough, *m.layout.multiPath, defaultToolLibrary(), o);
+        const std::vector<Step> alone{*rough};
+        const auto programs = whole ? postBalancedCut(*cut, plan.steps, index, *m.layout.multiPath, defaultToolLibrary(), o)
+                                    : postBalancedCut(*cut, alone, 0, *m.layout.multiPath, defaultToolLibrary(), o);
         QCOMPARE(programs.size(), std::size_t{2});
         int handshakes[2] = {0, 0};
         for (std::size_t p = 0; p < 2; ++p) {
             const std::string& nc = programs[p].nc;
             const QString text = QString::fromStdString(nc);
             QCOMPARE(programs[p].lines.size(), static_cast<std::size_t>(text.count('\n')));
-            const std::string table = linuxcncLatheToolTable({*rough}, defaultToolLibrary(), stem.toStdString() + ".p" + std::to_string(p + 1));
+            const std::string table = linuxcncLatheToolTable(whole && p == 0 ? plan.steps : alone, defaultToolLibrary(),
+                                                             stem.toStdString() + ".p" + std::to_string(p + 1));
             const Rs274Result run = runRs274(nc, table);
             QVERIFY2(run.ok, qPrintable(QString("path %1: %2\n%3").arg(p + 1).arg(run.errors, text.left(3000))));
             // The feeds rs274 made are the path's blocks' feeds, in the path's coordinates (X a radius).
@@ -74,15 +86,17 @@ private slots:
                 waits += b.wait ? 1 : 0;
             }
             waits += cut->paths[p].tailWait ? 1 : 0;
+            waits += cut->paths[p].endWait ? 1 : 0;
+            // The roughing's feeds (path 1's whole program: those of its roughing step).
             std::vector<turning::ZR> got;
             for (const auto& mv : run.moves)
-                if (mv.kind == CanonMove::Feed) got.push_back({mv.end.z, mv.end.x});
+                if (mv.kind == CanonMove::Feed && (!whole || p > 0 || mv.step == static_cast<int>(index) + 1)) got.push_back({mv.end.z, mv.end.x});
             QCOMPARE(got.size(), want.size());
             for (std::size_t i = 0; i < got.size(); ++i)
                 QVERIFY2(std::abs(got[i].z - want[i].z) < 1e-3 && std::abs(got[i].r - want[i].r) < 1e-3,
                          qPrintable(QString("path %1 feed %2: Z%3 X%4, wanted Z%5 X%6").arg(p + 1).arg(i).arg(got[i].z).arg(got[i].r).arg(want[i].z).arg(want[i].r)));
             if (p == 1) for (const auto& w : want) QVERIFY(w.r < 0);  // the other side of the axis
-            QCOMPARE(run.dwells, followers);
+            if (!whole || p > 0) QCOMPARE(run.dwells, followers);
             QCOMPARE(followers, p == 0 ? 0 : static_cast<int>(cut->paths[1].blocks.size()));
             handshakes[p] = static_cast<int>(text.count(QRegularExpression(R"(^M66 P0 L[34] Q60$)", QRegularExpression::MultilineOption)));
             QCOMPARE(handshakes[p], waits);
@@ -93,7 +107,7 @@ private slots:
             QVERIFY(text.trimmed().endsWith("M30"));
         }
         QCOMPARE(handshakes[0], handshakes[1]);
-        if (everywhere) QVERIFY(handshakes[0] > 0);
+        if (everywhere || whole) QVERIFY(handshakes[0] > 0);
         else if (stem.contains("cylinder")) QCOMPARE(handshakes[0], 0);
         else QVERIFY(handshakes[0] > 0);
     }

@@ -34,6 +34,7 @@ struct BalancedPath {
     std::vector<BalancedBlock> blocks;   // this path's, in order
     std::optional<int> tailWait;         // a wait before the tail (the last meeting, where this path has no block)
     std::vector<TurnMove> tail;          // back to the safe point
+    std::optional<int> endWait;          // after the tail: all paths meet before path 1 goes on with the job
     friend bool operator==(const BalancedPath&, const BalancedPath&) = default;
 };
 

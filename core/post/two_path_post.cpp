@@ -15,9 +15,12 @@
 
 namespace taiwa {
 
-std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& roughing, const MultiPath& layout,
-                                           const std::vector<Tool>& library, const PostOptions& options)
+std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughingIndex,
+                                           const MultiPath& layout, const std::vector<Tool>& library,
+                                           const PostOptions& options)
 {
+    if (roughingIndex >= steps.size()) throw std::invalid_argument("post-processor: the balanced cut's step is not among the steps");
+    const Step& roughing = steps[roughingIndex];
     const post::Dialect* d = post::findDialect(options.dialect);
     if (!d) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
     const bool fanuc = d->macroSyntax == "fanuc" && d->syntax == post::Syntax::Iso;
@@ -51,7 +54,16 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& r
         const turning::ZR change = layout.fromPath1({options.latheChangeZ, options.latheChangeX / 2.0}, p);
         o.latheChangeZ = change.z;
         o.latheChangeX = 2.0 * change.r;
-        const PostedProgram posted = postLathe({s}, library, o);
+        // Path 1 runs the whole job; the others their blocks.
+        std::vector<Step> program{s};
+        std::size_t stepIndex = 0;
+        if (p == 0) {
+            program = steps;
+            program[roughingIndex] = s;
+            stepIndex = roughingIndex;
+        }
+        const PostedProgram posted = postLathe(program, library, o);
+        const int here = static_cast<int>(stepIndex);
 
         // The waits and dwells, each before the first line of its cut's move.
         int meeting = 0;
@@ -80,13 +92,13 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& r
             }
         };
         std::size_t nextCut = 0, lineStart = 0;
-        bool tailDone = !bp.tailWait, seenStep = false;
+        bool tailDone = !bp.tailWait, endDone = !bp.endWait, seenStep = false;
         for (std::size_t i = 0; i < posted.lines.size(); ++i) {
             const std::size_t lineEnd = posted.nc.find('\n', lineStart);
             const std::string text = posted.nc.substr(lineStart, lineEnd - lineStart);
             lineStart = lineEnd + 1;
             const BlockSource src = posted.lines[i];
-            const bool inMoves = src.move >= 0;
+            const bool inMoves = src.step == here && src.move >= 0;
             while (nextCut < cuts.size() && inMoves && static_cast<std::size_t>(src.move) >= cuts[nextCut].first) {
                 const BalancedBlock& b = *cuts[nextCut].second;
                 emit(syncLines(b.wait, b.dwellSeconds), src);
@@ -95,14 +107,20 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& r
             // The last meeting of a path without a block there: before its
             // tail, or before the program's end when the tail wrote nothing.
             if (!tailDone && nextCut == cuts.size() &&
-                ((inMoves && static_cast<std::size_t>(src.move) >= tailFrom) || (src.step < 0 && seenStep))) {
+                ((inMoves && static_cast<std::size_t>(src.move) >= tailFrom) || (src.step != here && seenStep))) {
                 emit(syncLines(bp.tailWait, 0.0), src);
                 tailDone = true;
             }
-            seenStep = seenStep || src.step >= 0;
+            // After the roughing, all paths meet before path 1 goes on.
+            if (!endDone && src.step != here && seenStep) {
+                emit(syncLines(bp.endWait, 0.0), src);
+                endDone = true;
+            }
+            seenStep = seenStep || src.step == here;
             prog.nc += text + '\n';
             prog.lines.push_back(src);
         }
+        if (!endDone) throw std::logic_error("two-path post: path " + std::to_string(p + 1) + "'s end wait has no place");
         if (!tailDone) throw std::logic_error("two-path post: path " + std::to_string(p + 1) + "'s last wait has no place");
         prog.tapeImage = post::tapeImage(prog.nc, o.programName, d->name, options.machine);
         out.push_back(std::move(prog));

@@ -18,13 +18,18 @@
 
 namespace taiwa {
 
-// `roughing`: the step the cut was balanced from (its tool, unit, cutting
-// data); `options` as for postProcess (fileStem: the job's STEM, the
+// `steps`: the job's turning steps in machining order; `roughing`: the
+// index of the one the cut was balanced from. Path 1's program is the whole
+// job with that step's passes replaced by path 1's blocks; every other
+// path's program is its blocks alone (with `meetAtEnds`, balanced_roughing.h,
+// they wait for path 1 to come to the roughing and path 1 waits for them
+// after it). `options` as for postProcess (fileStem: the job's STEM, the
 // programs say STEM.p1 and STEM.p2). Throws std::invalid_argument as
 // postProcess does, and for a dialect that is neither FANUC's family nor
 // LinuxCNC's.
-std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const Step& roughing, const MultiPath& layout,
-                                           const std::vector<Tool>& library, const PostOptions& options);
+std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughing,
+                                           const MultiPath& layout, const std::vector<Tool>& library,
+                                           const PostOptions& options);
 
 // How long a LinuxCNC program waits for its partner before it gives up [s].
 constexpr double kLinuxcncWaitTimeout = 60.0;

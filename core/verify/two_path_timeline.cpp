@@ -149,6 +149,7 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         }
         if (bp.tailWait) mark(Op::Wait, 0, *bp.tailWait);
         for (const auto& m : bp.tail) move(m);
+        if (bp.endWait) mark(Op::Wait, 0, *bp.endWait);
     }
 
     // One spindle: its speed is what path 1 (the master, which commands

@@ -113,7 +113,7 @@ Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cut
         const std::size_t from = j * n, to = std::min(a.blocks.size(), from + n);
         // A wait where the previous meeting's cycles differ in length (so
         // the paths arrive at different times), or everywhere when asked.
-        bool wait = settings.waitsEverywhere;
+        bool wait = settings.waitsEverywhere || (settings.meetAtEnds && j == 0);
         if (j > 0) {
             const auto [lo, hi] = std::minmax_element(a.blocks.begin() + static_cast<long>(from - n),
                                                       a.blocks.begin() + static_cast<long>(from),
@@ -148,6 +148,12 @@ Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cut
         // meets the others, before going home.
         if (code)
             for (std::size_t p = to - from; p < n; ++p) bc.paths[p].tailWait = code;
+    }
+    if (settings.meetAtEnds) {
+        if (!mp.waitCodes.contains(nextWait))
+            return Failure{fmt::format("waitCodes: the balanced cut needs wait code M{}, beyond the machine's last M{}",
+                                       nextWait, mp.waitCodes.last)};
+        for (auto& p : bc.paths) p.endWait = nextWait;
     }
     return bc;
 }

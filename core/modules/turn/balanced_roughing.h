@@ -18,6 +18,10 @@ namespace taiwa::turning {
 struct BalanceSettings {
     double dwellRevolutions = 1.0;  // the follower's delay behind the leader; at least 0.5
     bool waitsEverywhere = false;   // a wait at every meeting point, not only where the cycles differ
+    // The paths meet before the first cut and after the last: the job's
+    // other steps run on path 1 before and after the balanced roughing
+    // (the export's programs); without it both programs start together.
+    bool meetAtEnds = false;
     std::optional<int> firstWait;   // the first wait M-code (none: the machine's first)
 };
 
