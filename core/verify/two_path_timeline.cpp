@@ -1,6 +1,8 @@
 // The two-path timeline (two_path_timeline.h).
 #include "verify/two_path_timeline.h"
 
+#include "modules/turn/balanced_roughing.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -58,9 +60,7 @@ TurnMove back(const TurnMove& m, const MultiPath& mp, std::size_t p)
     TurnMove c = m;
     c.end = mp.toPath1(m.end, p);
     c.centre = mp.toPath1(m.centre, p);
-    const LathePath& a = mp.paths[0];
-    const LathePath& b = mp.paths[p];
-    if (a.zDirection * b.zDirection * a.xDirection * b.xDirection < 0 && m.kind != TurnMove::Rapid && m.kind != TurnMove::Feed)
+    if (turning::flipsArcs(mp, p) && m.kind != TurnMove::Rapid && m.kind != TurnMove::Feed)
         c.kind = m.kind == TurnMove::ArcCW ? TurnMove::ArcCCW : TurnMove::ArcCW;
     return c;
 }

@@ -27,15 +27,18 @@ TurnMove converted(const TurnMove& m, const MultiPath& mp, std::size_t to)
     TurnMove c = m;
     c.end = mp.fromPath1(m.end, to);
     c.centre = mp.fromPath1(m.centre, to);
-    const LathePath& a = mp.paths[0];
-    const LathePath& b = mp.paths[to];
     // A mirrored axis turns an arc's sense.
-    if (a.zDirection * b.zDirection * a.xDirection * b.xDirection < 0 && m.kind != TurnMove::Rapid && m.kind != TurnMove::Feed)
+    if (flipsArcs(mp, to) && m.kind != TurnMove::Rapid && m.kind != TurnMove::Feed)
         c.kind = m.kind == TurnMove::ArcCW ? TurnMove::ArcCCW : TurnMove::ArcCW;
     return c;
 }
 
 }  // namespace
+
+bool flipsArcs(const MultiPath& mp, std::size_t p)
+{
+    return mp.paths.at(0).zDirection * mp.paths.at(p).zDirection * mp.paths.at(0).xDirection * mp.paths.at(p).xDirection < 0;
+}
 
 AnalysedRoughing analyseRoughing(const TurnPath& path)
 {

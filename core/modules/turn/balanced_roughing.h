@@ -34,6 +34,10 @@ struct AnalysedRoughing {
 };
 AnalysedRoughing analyseRoughing(const TurnPath& path);
 
+// Whether an arc's sense (G2/G3) turns between path 1 and path `p`:
+// exactly one of the axes mirrored.
+bool flipsArcs(const MultiPath& mp, std::size_t p);
+
 // The roughing `path` cut with `cutting` balanced between `machine`'s
 // paths. Refused (a Failure naming the field): a machine of one path, a
 // dwell below half a revolution, wait codes beyond the machine's range, a
