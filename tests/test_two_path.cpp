@@ -10,7 +10,11 @@
 // timeline (verify/two_path_timeline.h): no deadlock, the follower never
 // closer than the set revolutions, the pair faster than one path, with
 // negative controls (a wait removed deadlocks, dwells removed bring the
-// follower too close).
+// follower too close), on every two-path sample too; FANUC's pair of
+// programs of the whole job (post/two_path_post.h) against golden files
+// read by hand; and the gang-tool change (machine/gang_change.h): no X
+// motion while any tool on the slide is inside the part's envelope plus
+// the clearance, for every pair of the slide's tools.
 #include "job/job_file.h"
 #include "machine/gang_change.h"
 #include "machine/machine.h"
@@ -23,6 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QtTest>
@@ -540,6 +545,29 @@ private slots:
             }
         }
         if (rewrote) return;
+    }
+    // Every two-path sample (tests/data/two-path/*.taiwa): no deadlock, no
+    // follower closer than one revolution, the pair faster than one path,
+    // alone and meeting before and after (the job's programs).
+    void everyTwoPathSampleIsProven()
+    {
+        const auto files = QDir(test::dataPath("two-path")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name);
+        QVERIFY(files.size() >= 2);
+        for (const QFileInfo& f : files) {
+            const std::string stem = f.completeBaseName().toStdString();
+            const TurnStep& s = roughing(stem);
+            for (const bool ends : {false, true}) {
+                turning::BalanceSettings set;
+                set.meetAtEnds = ends;
+                const Timeline t = runTimeline(balanced(s, set), twoPath());
+                QVERIFY2(t.deadlocks.empty(), stem.c_str());
+                QVERIFY2(t.leastLag() >= 1.0 - 1e-6, stem.c_str());
+                const double ratio = t.seconds() / singlePathSeconds(s.path, s.cutting, twoPath());
+                qInfo("%s%s: ratio %.3f, least lag %.2f revolutions", stem.c_str(), ends ? " (meeting at the ends)" : "", ratio,
+                      t.leastLag());
+                QVERIFY2(ratio < 1.0, stem.c_str());
+            }
+        }
     }
 };
 
