@@ -7,7 +7,7 @@
 // balancing and the timeline take.
 #include "job/job_file.h"
 #include "machine/machine.h"
-#include "modules/turn/balanced_roughing.h"
+#include "turning/balanced_roughing.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 #include "verify/two_path_timeline.h"

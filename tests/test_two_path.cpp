@@ -1,6 +1,6 @@
 // The two-path lathe and the gang-tool lathe (docs/two-path-lathe.md): their
 // machine files read and refused (machine/lathe_kinds.h); balanced roughing
-// on a cylinder and a taper (modules/turn/balanced_roughing.h): the blocks
+// on a cylinder and a taper (turning/balanced_roughing.h): the blocks
 // alternate between the paths, path 2's coordinates are path 1's converted,
 // the infeed is doubled after the first block, waits stand exactly where the
 // previous meeting's cycles differ in length (none on the cylinder unless
@@ -18,7 +18,7 @@
 #include "job/job_file.h"
 #include "machine/gang_change.h"
 #include "machine/machine.h"
-#include "modules/turn/balanced_roughing.h"
+#include "turning/balanced_roughing.h"
 #include "pipeline/pipeline.h"
 #include "post/two_path_post.h"
 #include "support/support.h"

@@ -11,7 +11,7 @@
 
 #include "job/job_file.h"
 #include "machine/machine.h"
-#include "modules/turn/balanced_roughing.h"
+#include "turning/balanced_roughing.h"
 #include "pipeline/pipeline.h"
 #include "post/tool_table.h"
 #include "post/two_path_post.h"

@@ -3,7 +3,7 @@
 // command block per cut (approach, cut, retract, return), the blocks handed
 // round-robin to the paths, each path's in its own program coordinates,
 // with the wait M-code both paths meet at before a cut and the dwell the
-// follower keeps behind the leader. Made by core/modules/turn/balanced_roughing.h,
+// follower keeps behind the leader. Made by core/turning/balanced_roughing.h,
 // run on a timeline by core/verify/two_path_timeline.h, written by the posts.
 #pragma once
 

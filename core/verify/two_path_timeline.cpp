@@ -1,7 +1,7 @@
 // The two-path timeline (two_path_timeline.h).
 #include "verify/two_path_timeline.h"
 
-#include "modules/turn/balanced_roughing.h"
+#include "turning/balanced_roughing.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 // Balanced roughing (balanced_roughing.h): analysis, round-robin, path
 // conversion, waits and dwells.
-#include "modules/turn/balanced_roughing.h"
+#include "turning/balanced_roughing.h"
 
 #include <fmt/format.h>
 
