@@ -10,7 +10,8 @@
 // timeline (verify/two_path_timeline.h): no deadlock, the follower never
 // closer than the set revolutions, the pair faster than one path, with
 // negative controls (a wait removed deadlocks, dwells removed bring the
-// follower too close), on every two-path sample too; FANUC's pair of
+// follower too close; both are findings of taiwa verify, verify/two_path_check.h),
+// on every two-path sample too; FANUC's pair of
 // programs of the whole job (post/two_path_post.h) against golden files
 // read by hand; and the gang-tool change (machine/gang_change.h): no X
 // motion while any tool on the slide is inside the part's envelope plus
@@ -24,6 +25,7 @@
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "verify/two_path_timeline.h"
+#include "verify/two_path_check.h"
 
 #include <nlohmann/json.hpp>
 
@@ -434,6 +436,14 @@ private slots:
         BalancedCut close = c;
         for (auto& b : close.paths[1].blocks) b.dwellSeconds = 0;
         QVERIFY(runTimeline(close, twoPath()).leastLag() < 0.5);
+        // What taiwa verify reports of them (verify/two_path_check.h): each a finding; the cut as balanced, none.
+        const auto deadlocked = verify::checkTimeline(t, 1.0);
+        QVERIFY(!deadlocked.findings.empty());
+        QVERIFY2(deadlocked.findings[0].find("deadlock on path 1") != std::string::npos, deadlocked.findings[0].c_str());
+        const auto tooClose = verify::checkTimeline(runTimeline(close, twoPath()), 1.0);
+        QVERIFY(!tooClose.findings.empty());
+        QVERIFY2(tooClose.findings[0].find("fewer than the set 1") != std::string::npos, tooClose.findings[0].c_str());
+        QVERIFY(verify::checkTimeline(runTimeline(c, twoPath()), 1.0).findings.empty());
     }
     void gangToolChangeNeverSweepsThroughThePart()
     {
