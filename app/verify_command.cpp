@@ -4,6 +4,7 @@
 
 #include "pipeline/pipeline.h"
 #include "post/post.h"
+#include "verify/two_path_check.h"
 
 #if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
 #define TAIWA_WITH_RENDER 1
@@ -52,6 +53,9 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
 {
     std::optional<PostedProgram> tape;
     const verify::Report r = verified(plan, o, postOptions(plan, dialect), tape);
+    // A two-path lathe: its balanced roughing on the timeline (deadlocks, lags below the set revolutions).
+    const auto twoPath = verify::checkTwoPath(plan);
+    const bool twoPathFault = twoPath && !twoPath->findings.empty();
     if (o.json) {
         nlohmann::ordered_json j;
         j["job"] = name;
@@ -75,7 +79,9 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
             e["message"] = verify::describe(f, plan);
             j["findings"].push_back(e);
         }
-        j["fatal"] = r.fatal();
+        if (twoPath)
+            j["twoPath"] = {{"findings", twoPath->findings}, {"seconds", twoPath->seconds}, {"leastLag", twoPath->leastLag}};
+        j["fatal"] = r.fatal() || twoPathFault;
         std::cout << j.dump(2) << '\n';
     } else {
         for (const auto& f : r.findings) std::cout << name << ": " << verify::describe(f, plan) << '\n';
@@ -85,8 +91,13 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
         else
             std::cout << name << ": verified at " << r.resolution << " mm (" << r.columns << " x " << r.rows
                       << " cells): " << summary(r) << '\n';
+        if (twoPath) {
+            for (const auto& f : twoPath->findings) std::cout << name << ": " << f << '\n';
+            std::cout << name << ": two-path timeline: " << twoPath->findings.size() << " findings, roughing "
+                      << twoPath->seconds << " s, least lag " << twoPath->leastLag << " revolutions\n";
+        }
     }
-    return r.fatal();
+    return r.fatal() || twoPathFault;
 }
 
 // At most kMaxPictures: a very large job's sheet stays small and quick.

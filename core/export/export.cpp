@@ -3,6 +3,7 @@
 #include "export/export.h"
 
 #include "export/sheet_pdf.h"
+#include "export/two_path_export.h"
 #include "io/job_io.h"
 #include "io/json_write.h"
 #include "modules/registry.h"
@@ -264,6 +265,12 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     // A LinuxCNC lathe tape runs with its tool table (nose radii, orientations): STEM.tbl.
     else if (plan.mmJob.bar && dialect->syntax == post::Syntax::Iso && dialect->macroSyntax != "fanuc")
         files.emplace_back(".tbl", linuxcncLatheToolTable(plan.steps, plan.tools, stem));
+    // A two-path lathe: STEM.p1.nc, STEM.p2.nc (and their tables) in place of the tape (two_path_export.h).
+    if (auto two = twoPathTapes(plan, options.dialect, units, options.programNumber, stem)) {
+        if (!*two) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), two->error())};
+        std::erase_if(files, [&](const auto& f) { return f.first == tape || f.first == ".tape.txt" || f.first == ".tbl"; });
+        files.insert(files.end(), (*two)->begin(), (*two)->end());
+    }
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
     // STEM.u<unit>.probe.nc, with O-numbers after the tape's.

@@ -104,6 +104,12 @@ public:
             m.chuckDiameter = length(chuck, "diameter", "chuck.diameter");
             m.maxBarDiameter = length(chuck, "maxBarDiameter", "chuck.maxBarDiameter");
             m.jawLength = length(chuck, "jawLength", "chuck.jawLength");
+            auto layout = readLatheLayout(j);  // two paths, a gang slide (lathe_kinds.h)
+            if (!layout) {
+                const std::string& e = layout.error();
+                r_.fail(e.substr(0, e.find(": ")), e.substr(e.find(": ") + 2));
+            }
+            m.layout = std::move(*layout);
         } else {
             m.toolPockets = count(r_.at(j, "toolChanger", "toolChanger"), "pockets", "toolChanger.pockets");
         }

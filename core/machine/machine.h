@@ -6,6 +6,7 @@
 // validated when read; every problem names the file, the line and the key.
 #pragma once
 
+#include "machine/lathe_kinds.h"
 #include "model/local_name.h"
 #include "model/result.h"
 
@@ -40,6 +41,7 @@ struct Machine {
     double chuckDiameter = 0.0;                // lathes [mm]
     double maxBarDiameter = 0.0;               // lathes: the largest bar through the spindle [mm]
     double jawLength = 0.0;                    // lathes: how far the jaws grip along Z [mm]
+    LatheLayout layout;                        // lathes: two paths or a gang slide (lathe_kinds.h); none: one turret
     std::string coolantOn = "M8", coolantOff = "M9";
     // Motion (machine/motion_time.h): each axis' acceleration [mm/s²] (none:
     // the machine time is not modelled), how many blocks the control looks

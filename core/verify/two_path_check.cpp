@@ -1,0 +1,53 @@
+// The two-path verification (two_path_check.h): balance, run the timeline,
+// report deadlocks and short lags.
+#include "verify/two_path_check.h"
+
+#include "machine/machine.h"
+#include "turning/balanced_roughing.h"
+#include "verify/two_path_timeline.h"
+
+#include <fmt/format.h>
+
+namespace taiwa::verify {
+
+std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
+{
+    const Machine* machine = findMachine(plan.mmJob.machine);
+    if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
+    TwoPathCheck out;
+    const Step* rough = nullptr;
+    for (const Step& s : plan.steps)
+        if (!rough && s.kind == StepKind::TurnRoughing && s.turn) rough = &s;
+    if (!rough) {
+        out.findings.push_back(fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
+                                           plan.mmJob.machine));
+        return out;
+    }
+    turning::BalanceSettings set;
+    // The defaults (one revolution, waits where the cycle lengths differ): the job file has no settings for them yet.
+    set.meetAtEnds = true;
+    const auto cut = turning::balanceRoughing(rough->turn->path, rough->turn->cutting, *machine, set);
+    if (!cut) {
+        out.findings.push_back("balanced cut: " + cut.error());
+        return out;
+    }
+    out = checkTimeline(runTimeline(*cut, *machine), set.dwellRevolutions);
+    return out;
+}
+
+TwoPathCheck checkTimeline(const Timeline& t, double revolutions)
+{
+    TwoPathCheck out;
+    out.seconds = t.seconds();
+    out.leastLag = t.leastLag();
+    for (const Deadlock& d : t.deadlocks)
+        out.findings.push_back(fmt::format("two-path timeline: deadlock on path {} at M{}: {}", d.path + 1, d.waitCode, d.why));
+    for (const CutLag& l : t.lags)
+        if (l.revolutions < revolutions - 1e-6)
+            out.findings.push_back(fmt::format("two-path timeline: CB{} follows CB{} {:.2f} revolutions behind, fewer than "
+                                               "the set {:g}",
+                                               l.follower, l.leader, l.revolutions, revolutions));
+    return out;
+}
+
+}  // namespace taiwa::verify
