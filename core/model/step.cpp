@@ -29,6 +29,8 @@ const char* toString(StepKind k)
     case StepKind::FaceMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "face milling");
     case StepKind::SideMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling");
     case StepKind::AreaClearing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "area clearing");
+    case StepKind::SurfaceRoughing: return "surface roughing";
+    case StepKind::SurfaceFinishing: return "surface finishing";
     }
     return "";
 }
@@ -55,6 +57,8 @@ const char* toKey(StepKind k)
     case StepKind::FaceMilling: return "face";
     case StepKind::SideMilling: return "side";
     case StepKind::AreaClearing: return "area";
+    case StepKind::SurfaceRoughing: return "surface-rough";
+    case StepKind::SurfaceFinishing: return "surface-finish";
     }
     return "";
 }

@@ -43,6 +43,9 @@ enum class StepKind {
     FaceMilling,
     SideMilling,
     AreaClearing,
+    // 3-D surfaces (module SURFACE): Z-level roughing, parallel finishing.
+    SurfaceRoughing,
+    SurfaceFinishing,
 };
 const char* toString(StepKind k);  // "roughing"
 const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins ("pilot", "floor", "wall", "inclined";
@@ -56,7 +59,8 @@ const char* toKey(StepKind k);     // "roughing" as in steps.json and tool pins 
 // 71 finishing, 72 grooving, 73 parting, 74 threading; hole patterns: 61
 // centre drilling, 62 drilling as on the lathe, 63 tapping, 64 reaming,
 // 65 boring; 80 face milling, 81 face finishing, 85 side milling, 86 side
-// finishing, 90 area clearing by drawn passes.
+// finishing, 90 area clearing by drawn passes; 95 surface roughing, 96
+// surface finishing.
 enum class MachiningType : int {
     PilotHole = 10,
     Roughing = 20,
@@ -81,6 +85,8 @@ enum class MachiningType : int {
     SideMilling = 85,
     SideFinishing = 86,
     AreaClearing = 90,
+    SurfaceRoughing = 95,
+    SurfaceFinishing = 96,
 };
 
 // An inclined face of module M2D: a plane strip between its edge at the top

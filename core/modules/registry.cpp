@@ -14,7 +14,8 @@
     X(holes)             \
     X(area)              \
     X(face)              \
-    X(side)
+    X(side)              \
+    X(surface)
 
 namespace taiwa {
 

@@ -1,0 +1,124 @@
+// Module SURFACE: a 3-D surface machined from above (seed 002, second and
+// sixth abstracts; docs/surfaces.md). The surface is ruled between two space
+// curves, each given as points in space or as two plane projections sharing
+// an axis; both curves are divided into N pieces for the roughing surface
+// and M > N for the finishing surface. Roughing by Z levels leaves an
+// allowance; finishing by parallel paths holds a scallop height; both stop
+// where they meet an optional boundary surface. One ball end mill, chosen by
+// the surface's smallest concave radius, cuts both. The geometry is
+// core/occt/surface_*; here are the door (surface_kind.cpp), the checks and
+// the steps (surface_plan.cpp) and the paths (surface_paths.cpp).
+#pragma once
+
+#include "check/unit_checks.h"
+#include "model/diagnostic.h"
+#include "model/job.h"
+#include "model/step.h"
+#include "model/technology.h"
+#include "model/tool.h"
+#include "model/toolpath.h"
+#include "paths/cl.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace taiwa {
+
+// One plane projection of a curve: the plane ("XY", "YZ" or "ZX") and the
+// curve in its two coordinates in that order.
+struct SurfaceProjection {
+    std::string plane;
+    std::vector<Point2> points;
+    friend bool operator==(const SurfaceProjection&, const SurfaceProjection&) = default;
+};
+
+// A space curve as the operator gives it: points in space, or (when
+// `points` is empty) two projections sharing an axis.
+struct SurfaceCurve {
+    std::vector<Point3> points;
+    std::vector<SurfaceProjection> projections;
+    bool smooth = true;  // a smooth curve through the points, else straight lines
+    friend bool operator==(const SurfaceCurve&, const SurfaceCurve&) = default;
+};
+
+struct SurfaceUnit {
+    static constexpr const char* kName = "SURFACE";
+    static constexpr int kSinceFormatVersion = 5;
+    SurfaceCurve curve1, curve2;         // Z in the work system, the stock top at 0
+    int n = 4;                           // roughing pieces
+    std::optional<int> m;                // finishing pieces; from curveStep when absent
+    std::optional<double> curveStep;     // the step along the curves that gives M
+    double scallop = 0.01;               // finishing's scallop height
+    double allowance = 0.3;              // left by roughing, along the normal
+    std::vector<std::vector<Point3>> boundary;  // a cutting boundary surface as paths; none when empty
+    ToolPins tools;                      // key "surface": a ball end mill
+
+    void convertLengths(const LengthMap& f)
+    {
+        const auto c3 = [&](Point3& p) { p = {f(p.x), f(p.y), f(p.z)}; };
+        for (SurfaceCurve* c : {&curve1, &curve2}) {
+            for (Point3& p : c->points) c3(p);
+            for (SurfaceProjection& pr : c->projections)
+                for (Point2& p : pr.points) p = {f(p.x), f(p.y)};
+        }
+        if (curveStep) curveStep = f(*curveStep);
+        scallop = f(scallop);
+        allowance = f(allowance);
+        for (auto& path : boundary)
+            for (Point3& p : path) c3(p);
+    }
+    friend bool operator==(const SurfaceUnit&, const SurfaceUnit&) = default;
+};
+
+// A surface step's own data (Step::payload): the surface (roughing's with N
+// pieces or finishing's with M) and the boundary as point paths, and what
+// the paths are made with.
+struct SurfacePaths {
+    static constexpr const char* kName = "SURFACE paths";
+    std::vector<std::vector<Point3>> surface;
+    std::vector<std::vector<Point3>> boundary;
+    double scallop = 0.0;        // finishing
+    double allowance = 0.0;      // roughing
+    double concaveRadius = 0.0;  // the smallest concave radius (infinity: none)
+    double step = 0.5;           // along a path [mm]
+    friend bool operator==(const SurfacePaths&, const SurfacePaths&) = default;
+};
+
+namespace surfacemod {
+
+constexpr const char* kStepKey = "surface";
+
+// The unit's surfaces as point paths (across the rulings, about 1 mm
+// apart), or the field and message that refuse it.
+struct Built {
+    std::vector<std::vector<Point3>> roughing, finishing;
+    int m = 0;
+    std::string field, problem;  // problem empty: built
+};
+Built buildSurfaces(const SurfaceUnit& mm, LengthUnit shown);
+
+// The ball end mill for the surface: the pinned one, else the largest whose
+// radius is less than the smallest concave radius `rho`.
+struct ToolPick {
+    const Tool* tool = nullptr;
+    std::string reason, problem;
+};
+ToolPick chooseTool(const SurfaceUnit& mm, double rho, const std::string& where, const std::vector<Tool>& library,
+                    LengthUnit shown);
+
+// The step's tool path (surface_paths.cpp): the surface tessellated once,
+// the nose points by the drop-cutter, stopped at the boundary, linked.
+ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+
+}  // namespace surfacemod
+
+check::UnitReport checkSurface(const SurfaceUnit& mm, int unitNo, const check::Context& ctx);
+// The unit's two steps (checked, in mm): Z-level roughing over the N
+// surface leaving the allowance, then parallel finishing over the M surface
+// at the scallop height, one ball end mill for both.
+std::vector<Step> planSurface(const SurfaceUnit& mm, const TechnologyData& tech, const std::vector<Tool>& library,
+                              int unit, LengthUnit shown, Diagnostics& out);
+
+
+}  // namespace taiwa

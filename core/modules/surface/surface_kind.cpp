@@ -1,0 +1,273 @@
+// The door of module SURFACE (a 3-D surface ruled between two space curves,
+// roughed by Z levels and finished at a scallop height): its job-file keys,
+// checks, planning and form, as module_kind.h asks. Registered in
+// modules/registry.cpp; docs/surfaces.md says what it makes.
+#include "modules/module_kind.h"
+#include "modules/surface/surface.h"
+
+#include "io/json_write.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace taiwa {
+
+namespace {
+
+const std::vector<std::string> kKeys{"module", "name",      "curve1",   "curve2",   "n",     "m",
+                                     "curveStep", "scallop", "allowance", "boundary", "tools", "cutting"};
+
+bool isNumbers(const nlohmann::json& v, std::size_t n)
+{
+    if (!v.is_array() || v.size() != n) return false;
+    return std::all_of(v.begin(), v.end(), [](const nlohmann::json& x) { return x.is_number(); });
+}
+
+std::vector<Point3> readPoints3(const io::ObjectFields& f, const nlohmann::json& v, const std::string& field)
+{
+    std::vector<Point3> out;
+    if (!v.is_array()) {
+        f.error(field, "expected an array of points [x, y, z]");
+        return out;
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        if (isNumbers(v[i], 3)) out.push_back({v[i][0].get<double>(), v[i][1].get<double>(), v[i][2].get<double>()});
+        else f.error(field + "[" + std::to_string(i) + "]", "expected a point [x, y, z]");
+    }
+    return out;
+}
+
+SurfaceCurve readCurve(const io::ObjectFields& f, const char* key)
+{
+    SurfaceCurve c;
+    const nlohmann::json* v = f.find(key);
+    if (!v) {
+        f.error(key, "missing: give the curve's points or its two projections");
+        return c;
+    }
+    if (!v->is_object()) {
+        f.error(key, "expected an object with \"points\" or \"projections\"");
+        return c;
+    }
+    const io::ObjectFields cf = f.nested(*v, std::string(key) + ".");
+    cf.rejectUnknown(std::string("curve ") + key, {"points", "projections", "smooth"});
+    if (const auto* s = cf.find("smooth")) {
+        if (s->is_boolean()) c.smooth = s->get<bool>();
+        else cf.error("smooth", "expected true or false");
+    }
+    if (const auto* p = cf.find("points")) c.points = readPoints3(f, *p, std::string(key) + ".points");
+    if (const auto* ps = cf.find("projections")) {
+        if (!ps->is_array()) cf.error("projections", "expected two projections {\"plane\", \"points\"}");
+        else
+            for (std::size_t i = 0; i < ps->size(); ++i) {
+                const std::string where = "projections[" + std::to_string(i) + "]";
+                const nlohmann::json& pj = (*ps)[i];
+                if (!pj.is_object()) {
+                    cf.error(where, "expected {\"plane\": \"XY\", \"points\": [[a, b], ...]}");
+                    continue;
+                }
+                const io::ObjectFields pf = cf.nested(pj, where + ".");
+                pf.rejectUnknown("a projection", {"plane", "points"});
+                SurfaceProjection pr;
+                pr.plane = pf.string("plane").value_or("");
+                if (const auto* pts = pf.find("points"); pts && pts->is_array())
+                    for (std::size_t k = 0; k < pts->size(); ++k) {
+                        if (isNumbers((*pts)[k], 2)) pr.points.push_back({(*pts)[k][0].get<double>(), (*pts)[k][1].get<double>()});
+                        else pf.error("points[" + std::to_string(k) + "]", "expected a point [a, b]");
+                    }
+                else
+                    pf.error("points", "expected an array of points [a, b]");
+                c.projections.push_back(std::move(pr));
+            }
+    }
+    return c;
+}
+
+nlohmann::ordered_json point3(Point3 p)
+{
+    return nlohmann::ordered_json::array({io::number(p.x), io::number(p.y), io::number(p.z)});
+}
+
+nlohmann::ordered_json writeCurve(const SurfaceCurve& c)
+{
+    nlohmann::ordered_json j;
+    if (!c.points.empty() || c.projections.empty()) {
+        auto pts = nlohmann::ordered_json::array();
+        for (const Point3 p : c.points) pts.push_back(point3(p));
+        j["points"] = pts;
+    }
+    if (!c.projections.empty()) {
+        auto ps = nlohmann::ordered_json::array();
+        for (const SurfaceProjection& pr : c.projections) {
+            nlohmann::ordered_json pj;
+            pj["plane"] = pr.plane;
+            auto pts = nlohmann::ordered_json::array();
+            for (const Point2 p : pr.points) pts.push_back({io::number(p.x), io::number(p.y)});
+            pj["points"] = pts;
+            ps.push_back(pj);
+        }
+        j["projections"] = ps;
+    }
+    if (!c.smooth) j["smooth"] = false;
+    return j;
+}
+
+class SurfaceKind final : public ModuleKindOf<SurfaceUnit> {
+public:
+    const char* paletteText() const override { return "Add 3-D surface"; }
+    const char* drawing() const override { return ":/modules/surface.svg"; }
+    const char* outlineField() const override { return "curve1"; }
+    std::vector<std::string> stepKeys() const override { return {surfacemod::kStepKey}; }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                      const PathParameters& params) const override
+    {
+        return surfacemod::surfacePath(step, tool, tech, params);
+    }
+    // Finishing: the paths a scallop spacing apart, a point a step; roughing:
+    // its levels' passes a step-over apart.
+    double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech,
+                         const PathParameters&) const override
+    {
+        const auto* sp = step.payload.getIf<SurfacePaths>();
+        if (!sp || !step.outline) return 10;
+        const Quad& q = *step.outline;
+        const double w = std::abs(q.corners[2].x - q.corners[0].x), l = std::abs(q.corners[2].y - q.corners[0].y);
+        const double D = std::max(tool.diameter, 1e-3);
+        const double along = w / std::max(sp->step, 1e-3) + 4;
+        if (step.kind == StepKind::SurfaceFinishing) {
+            const double r = D / 2, h = std::max(sp->scallop, 1e-6);
+            return (l / std::max(2 * std::sqrt(h * std::max(2 * r - h, h)), 1e-3) + 2) * along;
+        }
+        const double levels = step.cutDepth / std::max(tech.gamma * D, 1e-3) + 2;
+        return levels * (l / std::max(tech.stepOver * D, 1e-3) + 2) * along;
+    }
+    // Finishing after roughing.
+    bool stepWaitsFor(const Step& later, const Step& earlier) const override
+    {
+        return later.kind == StepKind::SurfaceFinishing && earlier.kind == StepKind::SurfaceRoughing;
+    }
+
+    ModuleInput makeDefault(const Stock& stock) const override
+    {
+        const bool given = stock.width > 0 && stock.length > 0 && stock.height > 0;
+        const double x = given ? stock.x : 0, y = given ? stock.y : 0, w = given ? stock.width : 100,
+                     l = given ? stock.length : 60, h = given ? stock.height : 30;
+        const double d = std::min(10.0, h / 3);
+        SurfaceUnit u;
+        u.curve1.points = {{x + 5, y + 5, -d * 0.6}, {x + w / 2, y + 5, -d}, {x + w - 5, y + 5, -d * 0.6}};
+        u.curve2.points = {{x + 5, y + l - 5, -d * 0.4}, {x + w - 5, y + l - 5, -d * 0.4}};
+        u.n = 4;
+        u.m = 16;
+        u.scallop = 0.05;
+        u.allowance = 0.3;
+        return u;
+    }
+
+protected:
+    SurfaceUnit readInput(const io::ObjectFields& f) const override
+    {
+        SurfaceUnit u;
+        f.rejectUnknown("module SURFACE", kKeys);
+        u.curve1 = readCurve(f, "curve1");
+        u.curve2 = readCurve(f, "curve2");
+        u.n = f.whole("n").value_or(0);
+        if (f.find("m")) u.m = f.whole("m");
+        u.curveStep = f.optionalNumber("curveStep");
+        u.scallop = f.number("scallop").value_or(0.0);
+        u.allowance = f.number("allowance", 0.0);
+        if (const nlohmann::json* b = f.find("boundary")) {
+            if (!b->is_array()) f.error("boundary", "expected an array of paths, each an array of points [x, y, z]");
+            else
+                for (std::size_t i = 0; i < b->size(); ++i)
+                    u.boundary.push_back(readPoints3(f, (*b)[i], "boundary[" + std::to_string(i) + "]"));
+        }
+        u.tools = f.wholeMap("tools");
+        return u;
+    }
+
+    void writeInput(const SurfaceUnit& u, nlohmann::ordered_json& j) const override
+    {
+        j["curve1"] = writeCurve(u.curve1);
+        j["curve2"] = writeCurve(u.curve2);
+        j["n"] = u.n;
+        if (u.m) j["m"] = *u.m;
+        if (u.curveStep) j["curveStep"] = io::number(*u.curveStep);
+        j["scallop"] = io::number(u.scallop);
+        j["allowance"] = io::number(u.allowance);
+        if (!u.boundary.empty()) {
+            auto b = nlohmann::ordered_json::array();
+            for (const auto& path : u.boundary) {
+                auto pts = nlohmann::ordered_json::array();
+                for (const Point3 p : path) pts.push_back(point3(p));
+                b.push_back(pts);
+            }
+            j["boundary"] = b;
+        }
+        if (!u.tools.empty()) j["tools"] = io::pins(u.tools);
+    }
+
+    check::UnitReport checkInput(const SurfaceUnit& mm, int unitNo, const check::Context& ctx) const override
+    {
+        return checkSurface(mm, unitNo, ctx);
+    }
+
+    // The box around the curves in XY (the surface lies within it).
+    std::optional<Quad> outline(const SurfaceUnit& u) const override
+    {
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        for (const SurfaceCurve* c : {&u.curve1, &u.curve2})
+            for (const Point3& p : c->points)
+                x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        if (!(x0 < x1 && y0 < y1)) return std::nullopt;
+        return Quad{{Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}}, 0.0};
+    }
+
+    void move(SurfaceUnit& u, Point2 d) const override
+    {
+        for (SurfaceCurve* c : {&u.curve1, &u.curve2}) {
+            for (Point3& p : c->points) p.x += d.x, p.y += d.y;
+        }
+        for (auto& path : u.boundary)
+            for (Point3& p : path) p.x += d.x, p.y += d.y;
+    }
+
+    std::vector<Step> planInput(const SurfaceUnit& mm, const UnitPlanContext& ctx, Diagnostics& out) const override
+    {
+        return planSurface(mm, ctx.tech, ctx.library, ctx.unit, ctx.shownUnit, out);
+    }
+
+    std::vector<FormField> formFields() const override
+    {
+        using form::member;
+        using form::optionalMember;
+        std::vector<FormField> fs;
+        FormField n = form::number<SurfaceUnit>(
+            "n", "N (roughing pieces)", {"n"}, [](const SurfaceUnit& u) { return static_cast<double>(u.n); },
+            [](SurfaceUnit& u, double v) { u.n = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+        n.whole = true;
+        fs.push_back(n);
+        FormField m = form::number<SurfaceUnit>(
+            "m", "M (finishing pieces)", {"m"},
+            [](const SurfaceUnit& u) { return u.m ? std::optional<double>(*u.m) : std::nullopt; },
+            [](SurfaceUnit& u, double v) { u.m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+        m.set = [](ModuleInput& mi, std::optional<double> v) {
+            if (SurfaceUnit* u = mi.getIf<SurfaceUnit>())
+                u->m = v ? std::optional<int>(static_cast<int>(std::lround(std::clamp(*v, -1e6, 1e6)))) : std::nullopt;
+        };
+        m.kind = FormFieldKind::OptionalNumber;
+        m.whole = true;
+        fs.push_back(m);
+        fs.push_back(optionalMember<SurfaceUnit>("curveStep", "Step along the curves (gives M)", "M given", {"curveStep"},
+                                                 &SurfaceUnit::curveStep));
+        fs.push_back(member<SurfaceUnit>("scallop", "Scallop height", {"scallop"}, &SurfaceUnit::scallop));
+        fs.push_back(member<SurfaceUnit>("allowance", "Roughing allowance", {"allowance"}, &SurfaceUnit::allowance));
+        return fs;
+    }
+};
+
+}  // namespace
+
+const ModuleKind& surfaceModule() { return moduleInstance<SurfaceKind>(); }
+
+}  // namespace taiwa

