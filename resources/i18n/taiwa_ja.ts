@@ -2479,6 +2479,10 @@ Theirs: %6</source>
             <translation>作業指示書の PDF を描画できません</translation>
         </message>
         <message>
+            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
+            <translation>machine: {} は2系統旋盤ですが、ジョブに系統間で振り分ける荒加工工程がありません</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} と {} は平行です: 交わりません</translation>
         </message>

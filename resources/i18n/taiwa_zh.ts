@@ -2479,6 +2479,10 @@ Theirs: %6</source>
             <translation>无法绘制工艺单的 PDF</translation>
         </message>
         <message>
+            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
+            <translation>machine: {} 是双通道车床，但作业中没有可在两个通道之间平衡的粗加工工序</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} 与 {} 平行：不相交</translation>
         </message>
