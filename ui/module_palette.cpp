@@ -48,13 +48,19 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
     // enough for the form beside it on a 1280-pixel screen.
     auto* box = new QGridLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
+    // Drawings 120 pixels wide while a machine has at most eight modules
+    // (four rows); smaller beyond, so that the column's rows still leave
+    // the job's fields on a 720-pixel screen.
+    int mills = 0;
+    for (const ModuleKind* kind : moduleKinds()) mills += kind->machineKind() == MachineKind::Mill ? 1 : 0;
+    const int drawingSize = mills > 8 ? 88 : 120;
     for (const ModuleKind* kind : moduleKinds()) {
         const QString module = QString::fromUtf8(kind->name());
         const QString text = QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText());
         auto* b = new QToolButton(this);
         b->setObjectName(QStringLiteral("unit.add%1").arg(module));
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
-        const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), 120);
+        const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), drawingSize);
         b->setIcon(QIcon(drawing));
         b->setIconSize(drawing.size());
         b->setText(text);

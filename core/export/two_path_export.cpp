@@ -26,7 +26,7 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
     std::size_t index = plan.steps.size();
     for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
-        if (plan.steps[k].kind == StepKind::TurnRoughing && plan.steps[k].turn) index = k;
+        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && plan.steps[k].turn) index = k;
     if (index == plan.steps.size())
         return Files{Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "machine: {} is a two-path lathe and the job has no "
                                                                       "roughing step to balance between its paths"),

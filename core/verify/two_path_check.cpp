@@ -17,7 +17,7 @@ std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
     TwoPathCheck out;
     const Step* rough = nullptr;
     for (const Step& s : plan.steps)
-        if (!rough && s.kind == StepKind::TurnRoughing && s.turn) rough = &s;
+        if (!rough && s.machiningType == MachiningType::TurnRoughing && s.turn) rough = &s;
     if (!rough) {
         out.findings.push_back(fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
                                            plan.mmJob.machine));

@@ -10,6 +10,8 @@
 // the steps (surface_plan.cpp) and the paths (surface_paths.cpp).
 #pragma once
 
+#include "model/cavity.h"
+
 #include "check/unit_checks.h"
 #include "model/diagnostic.h"
 #include "model/job.h"
@@ -110,6 +112,13 @@ ToolPick chooseTool(const SurfaceUnit& mm, double rho, const std::string& where,
 // The step's tool path (surface_paths.cpp): the surface tessellated once,
 // the nose points by the drop-cutter, stopped at the boundary, linked.
 ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+
+// The finished part for the verification (model/cavity.h): the material
+// under the finishing surface, its depth at a point the surface's height
+// there (past the surface's edges, nothing judged), grown or shrunk by
+// `slack` times the steepest facet's slope; nothing when the unit builds
+// no surface.
+std::optional<Cavity> surfaceCavity(const SurfaceUnit& u);
 
 }  // namespace surfacemod
 

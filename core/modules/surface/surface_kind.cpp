@@ -142,6 +142,10 @@ public:
         const double levels = step.cutDepth / std::max(tech.gamma * D, 1e-3) + 2;
         return levels * (l / std::max(tech.stepOver * D, 1e-3) + 2) * along;
     }
+    std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData&) const override
+    {
+        return surfacemod::surfaceCavity(mm.as<SurfaceUnit>());
+    }
     // Finishing after roughing.
     bool stepWaitsFor(const Step& later, const Step& earlier) const override
     {
@@ -262,6 +266,13 @@ protected:
                                                  &SurfaceUnit::curveStep));
         fs.push_back(member<SurfaceUnit>("scallop", "Scallop height", {"scallop"}, &SurfaceUnit::scallop));
         fs.push_back(member<SurfaceUnit>("allowance", "Roughing allowance", {"allowance"}, &SurfaceUnit::allowance));
+        form::describe(fs, {
+            {"n", "", "Pieces each curve is divided into for the roughing surface; fewer than M"},
+            {"m", "", "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves"},
+            {"curveStep", "", "The step along the curves that gives M; empty when M is given"},
+            {"scallop", "", "Height of the ridges the ball leaves between finishing paths"},
+            {"allowance", "", "Material the Z-level roughing leaves on the surface, along its normal"},
+        });
         return fs;
     }
 };

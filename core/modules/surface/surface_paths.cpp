@@ -2,12 +2,18 @@
 // indexed, the tool-nose points by the drop-cutter (Z-level roughing leaving
 // the allowance, or parallel finishing at the scallop height), each path
 // stopped where it meets the boundary surface, and the paths linked at the
-// safe height (occt/surface_paths.h does the geometry).
+// safe height (occt/surface_paths.h does the geometry). And the unit's
+// cavity for the verification: the material under the finishing surface.
 #include "modules/surface/surface.h"
 
 #include "occt/surface_mesh.h"
 #include "occt/surface_paths.h"
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <numbers>
 #include <stdexcept>
 
 namespace taiwa::surfacemod {
@@ -38,6 +44,55 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         for (auto& p : paths) p = surface::stopAtBoundary(p, boundary).points;
     }
     return surface::linkPaths(paths, params.safeZ, params.clearance);
+}
+
+std::optional<Cavity> surfaceCavity(const SurfaceUnit& u)
+{
+    const Built b = buildSurfaces(u, LengthUnit::Millimetre);
+    if (!b.problem.empty()) return std::nullopt;
+    auto index = std::make_shared<const surface::MeshIndex>(surface::meshFromPaths(b.finishing));
+    if (index->mesh().triangles.empty()) return std::nullopt;
+    // The steepest facet's slope: the surface within `slack` of a point is
+    // no more than slack times it above or below the point's own height.
+    double slope = 0.0;
+    for (std::size_t t = 0; t < index->mesh().triangles.size(); ++t) {
+        const auto& f = index->facet(static_cast<int>(t));
+        if (f.nz > 1e-9) slope = std::max(slope, std::hypot(f.nx, f.ny) / f.nz);
+    }
+    slope = std::min(slope, 100.0);  // an undercut is refused by the checks; a wall this steep is one
+    static std::atomic<unsigned long long> made{0};
+    const unsigned long long id = ++made;
+    Cavity c;
+    // The unit defines the part under its surface only: past the surface's
+    // edges (where the ball, hanging over an edge, may go below it) it makes
+    // no claim, and the depth there is the deepest, which judges nothing.
+    constexpr double kPastEdges = 100.0;  // the tool's disc reaches past the edges (the grid keeps to the stock)
+    c.min = {index->minX() - kPastEdges, index->minY() - kPastEdges};
+    c.max = {index->maxX() + kPastEdges, index->maxY() + kPastEdges};
+    c.depth = std::max(0.0, -index->minZ());
+    const double deepest = c.depth;
+    c.wallAngle = std::atan(slope) * 180.0 / std::numbers::pi;
+    c.surfaceTolerance = u.scallop;
+    c.depthAt = [index, id, slope, deepest](Point2 p, double slack) {
+        // One drop per thread and surface (a DropCutter keeps scratch space).
+        struct Mine {
+            unsigned long long id = 0;
+            std::unique_ptr<surface::DropCutter> drop;
+        };
+        thread_local Mine mine;
+        if (mine.id != id) {
+            mine.drop = std::make_unique<surface::DropCutter>(*index, surface::Cutter{});
+            mine.id = id;
+        }
+        // Past the edges (grown by the slack), or over a hole in the mesh:
+        // nothing claimed (the deepest for a gouge's limit, none for rest).
+        const bool past = p.x < index->minX() - slack || p.x > index->maxX() + slack || p.y < index->minY() - slack ||
+                          p.y > index->maxY() + slack;
+        const std::optional<double> z = past ? std::nullopt : mine.drop->surfaceZ(p.x, p.y);
+        if (!z) return slack > 0.0 ? deepest : 0.0;
+        return std::max(0.0, -*z + slack * slope);
+    };
+    return c;
 }
 
 }  // namespace taiwa::surfacemod
