@@ -106,6 +106,10 @@ Usage:
 Common options:
   --tools DB    the tool library (SQLite); default $TAIWA_TOOL_DB or
                 ~/.local/share/taiwa/tools.sqlite, created on first use
+  --no-cache    verify, export: verify afresh; otherwise a report stored by
+                an earlier verify or export of the same job, plan, library
+                tools, machine and resolution is reused
+                ($XDG_CACHE_HOME/taiwa/verification, or $TAIWA_CACHE_DIR)
 
 Exit status: 0 ok, 2 input errors (nothing written), 3 the verification found
 a gouge, a collision or a travel limit, 1 internal failure.
@@ -278,12 +282,16 @@ int exportJob(const Options& o, int& argc, char** argv)
     const int programNumber = ExportOptions{}.programNumber;
     std::optional<PostedProgram> tape;
     verify::Report checked;
+    bool reused = false;
     try {
-        checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), tape);
+        checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), tape, &reused);
     } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
         std::cerr << "taiwa: export: " << e.what() << '\n';
         return kInputErrors;
     }
+    if (reused)  // `taiwa verify` (or an export) of this very job and plan ran before: its report, not a second run
+        std::cout << "taiwa: the verification at " << checked.resolution
+                  << " mm of this job and plan was reused (--no-cache verifies again)\n";
     std::vector<std::string> faults;
     for (const auto& f : checked.findings)
         if (f.fatal()) faults.push_back(verify::describe(f, l.plan));

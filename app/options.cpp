@@ -70,6 +70,12 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
                                 a == "--size" || a == "--view" || a == "--material" || a == "--resolution" ||
                                 a == "--layers" || a == "--gap" || a == "--from-store";
+        if (a == "--no-cache") {  // verify and export: the verification run afresh
+            if (o.command != Command::Verify && o.command != Command::Export)
+                return "option --no-cache does not go with this command";
+            o.cache = false;
+            continue;
+        }
         if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
             if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";

@@ -26,6 +26,7 @@ struct Options {
     std::optional<double> resolution;  // --resolution (verify, export) [mm]; none: verify::defaultResolution
     bool json = false;                // --json (verify)
     bool force = false;               // --force (export): write a tape the verification finds fault with
+    bool cache = true;                // verify, export: the verification cache (--no-cache: verify afresh, store nothing read)
     bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)
     std::vector<std::string> layers;  // --layers A,B (figure-from-dxf); empty: all
     std::optional<double> gap;        // --gap MM (figure-from-dxf): the gap tolerance

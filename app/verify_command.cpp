@@ -2,6 +2,8 @@
 // pictures of the steps and of the setup (verify_command.h).
 #include "app/verify_command.h"
 
+#include "export/verification_cache.h"
+
 #include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "verify/two_path_check.h"
@@ -20,11 +22,13 @@
 namespace taiwa::app {
 
 // The plan verified, its findings placed on the tape of `dialect`.
-verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape)
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape,
+                        bool* reused)
 {
     verify::Options v;
     v.resolution = o.resolution.value_or(verify::defaultResolution(plan));
-    verify::Report report = verify::verifyPlan(plan, v);
+    verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
+    if (!o.cache && reused) *reused = false;
     if (!report.findings.empty()) {
         try {
             verify::placeOnTape(report, tape.emplace(postProcess(plan.steps, plan.tools, post)));

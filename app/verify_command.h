@@ -18,7 +18,10 @@ namespace taiwa::app {
 // The plan verified at the options' resolution, its findings placed on
 // the tape posted with `post`; that tape kept in `tape` (posted only when
 // there are findings to place, and when the dialect can post the job).
-verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape);
+// Through the verification cache (export/verification_cache.h) unless
+// --no-cache: `reused` says whether the report was the stored one.
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape,
+                        bool* reused = nullptr);
 
 // Prints the report of the plan of job file `name` on stdout, in words or
 // (--json) as one document; whether it found anything fatal.
