@@ -27,6 +27,7 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
 {
     verify::Options v;
     v.resolution = o.resolution.value_or(verify::defaultResolution(plan));
+    if (!o.resolution) v.maxCellVisits = verify::kDefaultCellVisits;  // a cell size the operator chose is kept
     verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
     if (!o.cache && reused) *reused = false;
     if (!report.findings.empty()) {
@@ -66,6 +67,7 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
         j["resolution"] = r.resolution;
         j["grid"] = {r.columns, r.rows};
         if (!r.skipped.empty()) j["skipped"] = r.skipped;
+        if (!r.coarsened.empty()) j["coarsened"] = r.coarsened;
         j["findings"] = nlohmann::ordered_json::array();
         for (const auto& f : r.findings) {
             nlohmann::ordered_json e;
@@ -90,6 +92,7 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
     } else {
         for (const auto& f : r.findings) std::cout << name << ": " << verify::describe(f, plan) << '\n';
         if (!r.skipped.empty()) std::cout << name << ": not verified: " << r.skipped << '\n';
+        if (!r.coarsened.empty()) std::cout << name << ": " << r.coarsened << '\n';
         else if (plan.mmJob.bar)  // the exact half-section: no grid
             std::cout << name << ": verified at " << r.resolution << " mm (half-section): " << summary(r) << '\n';
         else

@@ -246,6 +246,33 @@ void BM_VerifyFinePocket(benchmark::State& state)
 }
 BENCHMARK(BM_VerifyFinePocket)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
+// The bound of the work (issue "bounded work", item 3): m4-standard.taiwa
+// with its step-over and layer depth (γ) overridden to 1/1000 of the
+// argument, verified as `taiwa verify` does when no cell size is given
+// (kDefaultCellVisits). Counters: the moves, the grid it ended on, the
+// cells visited in the run that finished, and the bound.
+void BM_VerifyBoundedStepOver(benchmark::State& state)
+{
+    auto read = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/m4-standard.taiwa");
+    read.job->technology.stepOver = read.job->technology.gamma = static_cast<double>(state.range(0)) / 1000.0;
+    const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+    std::size_t moves = 0;
+    for (const Step& s : plan.steps) moves += s.path ? s.path->moves.size() : 0;
+    verify::Report r;
+    for (auto _ : state) {
+        verify::Options o;
+        o.resolution = verify::defaultResolution(plan);
+        o.maxCellVisits = verify::kDefaultCellVisits;
+        r = verify::verifyPlan(plan, o);
+    }
+    state.counters["moves"] = static_cast<double>(moves);
+    state.counters["resolution_um"] = r.resolution * 1000.0;
+    state.counters["visits_M"] = r.cellVisits / 1e6;
+    state.counters["bound_M"] = verify::kDefaultCellVisits / 1e6;
+    state.counters["findings"] = static_cast<double>(r.findings.size());
+}
+BENCHMARK(BM_VerifyBoundedStepOver)->Arg(450)->Arg(100)->Arg(30)->Arg(10)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -134,15 +134,15 @@ private slots:
         const std::string good = readFile(file);
         for (const std::string& bad : {std::string("{\"format\": \"taiwa verification cache 0\"}"), std::string("\x00\xff garbage", 10),
                                       good.substr(0, good.size() / 2),
-                                      std::string(R"({"format":"taiwa verification cache 1","resolution":0.25,"columns":1,)"
-                                                  R"("rows":1,"removed":[],"cellVisits":0,"skipped":"",)"
+                                      std::string(R"({"format":"taiwa verification cache 2","resolution":0.25,"columns":1,)"
+                                                  R"("rows":1,"removed":[],"cellVisits":0,"skipped":"","coarsened":"",)"
                                                   R"("findings":[{"kind":99,"step":0,"move":0,"position":[0,0,0],)"
                                                   R"("size":1,"area":0,"part":""}]})")}) {
             writeFile(file, bad);
             const auto again = runTaiwa({"verify", job, "--resolution", "0.25", "--json"}, env);
             QCOMPARE(again.exitCode, 0);
             QCOMPARE(again.out, first.out);
-            QVERIFY(json::parse(readFile(file))["format"] == "taiwa verification cache 1");  // written anew
+            QVERIFY(json::parse(readFile(file))["format"] == "taiwa verification cache 2");  // written anew
         }
     }
 
@@ -156,6 +156,7 @@ private slots:
         r.rows = 3000;
         r.removed = {1.0 / 3.0, 12345.678};
         r.cellVisits = 9.5e6;
+        r.coarsened = "verified at 0.1 mm, not 0.05 mm";
         verify::Finding g;
         g.kind = verify::FindingKind::Collision;
         g.step = 2;
@@ -177,6 +178,7 @@ private slots:
         QCOMPARE(back->columns, r.columns);
         QCOMPARE(back->rows, r.rows);
         QCOMPARE(back->cellVisits, r.cellVisits);
+        QCOMPARE(back->coarsened, r.coarsened);
         // No key names a file outside the folder.
         QVERIFY(!storeVerification("../escape", r));
         QVERIFY(!loadVerification("../" + key).has_value());

@@ -26,6 +26,7 @@ verify::Report reportOf(const Plan& plan)
     try {
         verify::Options o;
         o.resolution = verify::defaultResolution(plan);
+        o.maxCellVisits = verify::kDefaultCellVisits;  // minutes of paths verified on a coarser grid, not minutes waited
         return verify::verifyPlan(plan, o);
     } catch (const std::exception& e) {
         verify::Report r;
@@ -164,6 +165,7 @@ void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Pla
                                     .arg(faults)
                                     .arg(left));
         summary_->setStyleSheet(faults > 0 ? "color: #c00000; font-weight: bold;" : "");
+        if (!r.coarsened.empty()) summary_->setText(summary_->text() + "\n" + coreMessage(r.coarsened));
     }
     emit verified();
 }

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Bumped whenever the stored form or the key's content changes.
-constexpr const char* kFormat = "taiwa verification cache 1";
+constexpr const char* kFormat = "taiwa verification cache 2";
 
 // The key's material: every value with its length or its exact bits, so
 // that no two different inputs run together into the same bytes.
@@ -124,6 +124,7 @@ nlohmann::json toJson(const verify::Report& r)
     j["removed"] = r.removed;
     j["cellVisits"] = r.cellVisits;
     j["skipped"] = r.skipped;
+    j["coarsened"] = r.coarsened;
     j["findings"] = nlohmann::json::array();
     for (const auto& f : r.findings)
         j["findings"].push_back({{"kind", static_cast<int>(f.kind)},
@@ -147,6 +148,7 @@ verify::Report fromJson(const nlohmann::json& j)
     r.removed = j.at("removed").get<std::vector<double>>();
     r.cellVisits = j.at("cellVisits").get<double>();
     r.skipped = j.at("skipped").get<std::string>();
+    r.coarsened = j.at("coarsened").get<std::string>();
     for (const auto& e : j.at("findings")) {
         verify::Finding f;
         const int kind = e.at("kind").get<int>();
@@ -196,12 +198,13 @@ std::string verificationCacheFolder()
     return (fs::path(home && *home ? home : "/tmp") / ".cache/taiwa/verification").string();
 }
 
-std::string verificationKey(const Plan& plan, double resolution)
+std::string verificationKey(const Plan& plan, const verify::Options& options)
 {
     KeyWriter k;
     k.text(kFormat);
     writeBuild(k);
-    k.real(resolution);
+    k.real(options.resolution);
+    k.real(options.maxCellVisits);
     k.text(writeJob(plan.job));
     k.number(plan.tools.size());
     for (const auto& t : plan.tools) writeTool(k, t);
@@ -238,7 +241,7 @@ Result<void> storeVerification(const std::string& key, const verify::Report& rep
 
 verify::Report verifyPlanCached(const Plan& plan, const verify::Options& options, bool* reused)
 {
-    const std::string key = verificationKey(plan, options.resolution);
+    const std::string key = verificationKey(plan, options);
     if (auto stored = loadVerification(key)) {
         if (reused) *reused = true;
         return std::move(*stored);

@@ -24,8 +24,9 @@ namespace taiwa {
 std::string verificationCacheFolder();
 
 // 64 hex digits. The plan must be the one the job, its library tools and its
-// machine give with this build (planJob's result).
-std::string verificationKey(const Plan& plan, double resolution);
+// machine give with this build (planJob's result); of the options, the cell
+// size and the bound of the work count (not the threads).
+std::string verificationKey(const Plan& plan, const verify::Options& options);
 
 // The report stored under `key`, without its height field and section
 // (Report::stock and ::section stay empty) and with its findings' tape

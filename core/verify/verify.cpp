@@ -11,6 +11,7 @@
 // the work follows the material removed, not the path's length.
 // A lathe job is cut into its bar's half-section instead (verify_turning.h).
 #include "verify/verify.h"
+#include "verify/verify_parts.h"
 #include "verify/verify_turning.h"
 
 #include "machine/machine.h"
@@ -21,6 +22,8 @@
 #include "sim/path_samples.h"
 #include "sim/sweep.h"
 #include "tools/holder_shape.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <atomic>
@@ -43,83 +46,15 @@ constexpr double kGougeTolerance = 0.001;  // material removed inside the part b
 constexpr double kTouch = 0.001;           // a rapid, a shank or a holder nearer than this touches nothing [mm]
 constexpr int kBandsPerThread = 8;
 constexpr int kTile = 32;  // cells of a row under one tile top
-
-// What one step hands the bands.
-struct StepData {
-    bool cuts = false;
-    std::vector<sim::SweptPiece> pieces;
-    std::optional<sim::CutterProfile> cutter;
-    double cornerRadius = 0.0;
-    double flute = 0.0;      // the flutes' length above the tip: the shank above it
-    double holderZ = 0.0;    // the stick-out: the holder's nose above it (0: no holder check)
-    double holderR = 0.0;    // the nose's radius
-};
-
-// A unit's cavity and what its finishing steps (walls, inclined faces) are
-// meant to leave of it: the least allowances of those steps, the largest
-// corner radius of their tools (a corner the tool cannot reach), the last.
-struct UnitData {
-    std::optional<Cavity> cavity;
-    double wallAllowance = std::numeric_limits<double>::infinity();
-    double floorAllowance = std::numeric_limits<double>::infinity();
-    double cornerRadius = 0.0;
-    int lastFinish = -1;
-};
-
-// The worst cell per kind, step, move and part found by one band.
-class Collector {
-public:
-    Finding& at(FindingKind kind, int step, int move, const char* part)
-    {
-        const Key key{static_cast<int>(kind), step, move, part};
-        if (last_ && key == lastKey_) return *last_;
-        auto [it, fresh] = worst_.try_emplace(key);
-        if (fresh) {
-            it->second.kind = kind;
-            it->second.step = step;
-            it->second.move = move;
-            it->second.part = part;
-        }
-        lastKey_ = key;
-        last_ = &it->second;
-        return it->second;
-    }
-    void add(FindingKind kind, int step, int move, const char* part, Point3 where, double size, double area = 0.0)
-    {
-        Finding& f = at(kind, step, move, part);
-        f.area += area;
-        if (size > f.size) {
-            f.size = size;
-            f.position = where;
-        }
-    }
-    void mergeInto(std::map<std::tuple<int, int, int, std::string>, Finding>& all) const
-    {
-        for (const auto& [key, f] : worst_) {
-            auto [it, fresh] = all.try_emplace({std::get<0>(key), std::get<1>(key), std::get<2>(key), f.part}, f);
-            if (fresh) continue;
-            it->second.area += f.area;
-            if (f.size > it->second.size) {
-                it->second.size = f.size;
-                it->second.position = f.position;
-            }
-        }
-    }
-
-private:
-    using Key = std::tuple<int, int, int, const char*>;
-    std::map<Key, Finding> worst_;
-    Key lastKey_{};
-    Finding* last_ = nullptr;
-};
+constexpr double kCoarsestResolution = 5.0;  // the coarsest grid --resolution takes [mm]
 
 class Verifier {
 public:
-    Verifier(const Plan& plan, double resolution)
+    Verifier(const Plan& plan, double resolution, double maxVisits)
         : plan_(plan), res_(resolution), zStep_(std::min(0.02, resolution / 5.0)), field_(plan.mmJob.stock, resolution),
           limit_(field_.heights().size(), 0.0f), tilesPerRow_((field_.columns() + kTile - 1) / kTile),
           tileTop_(static_cast<std::size_t>(tilesPerRow_) * field_.rows(), 0.0f),
-          tileStale_(tileTop_.size(), 1)
+          tileStale_(tileTop_.size(), 1), maxVisits_(maxVisits)
     {
         units_.resize(plan.mmJob.units.size());
         for (std::size_t u = 0; u < units_.size(); ++u) {
@@ -184,7 +119,7 @@ public:
             for (std::size_t k = 0; k < v.size(); ++k) r.removed[k] += v[k] * cellArea();
         std::map<std::tuple<int, int, int, std::string>, Finding> all;
         for (const Collector& c : found) c.mergeInto(all);
-        travel(all);
+        addTravelFindings(plan_, steps_, all);
         for (auto& [key, f] : all) r.findings.push_back(f);
         std::stable_sort(r.findings.begin(), r.findings.end(), [](const Finding& a, const Finding& b) {
             return std::tie(a.step, a.kind, a.move) < std::tie(b.step, b.kind, b.move);
@@ -260,7 +195,7 @@ private:
         visits_ = 0;
         limits(row0, row1);
         open(row0, row1);  // (every tile starts stale: its top is taken when first asked)
-        for (std::size_t k = 0; k < steps_.size(); ++k) {
+        for (std::size_t k = 0; k < steps_.size() && !over(); ++k) {
             if (!steps_[k].cuts) continue;
             removed[k] = cutStep(static_cast<int>(k), row0, row1, out);
             restAfterStep(static_cast<int>(k), row0, row1, out);
@@ -280,7 +215,14 @@ private:
         const double bottom = field_.bottom();
         std::uint64_t visits = 0;
         sim::SweepChain chain;  // where the last straight sweep ended, and its height
+        std::uint64_t counted = 0;  // of `visits`, added to the job's count
         for (const sim::SweptPiece& piece : d.pieces) {
+            if (maxVisits_ > 0.0 && visits > counted) {  // the bound of the work, over every band
+                const auto sum = allVisits_.fetch_add(visits - counted, std::memory_order_relaxed) + (visits - counted);
+                counted = visits;
+                if (static_cast<double>(sum) > maxVisits_) over_.store(true, std::memory_order_relaxed);
+            }
+            if (over()) break;
             if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
             // The cells near one horizontal sweep at tip height z: a
             // straight piece from a to b, or the part [t0, t1] of the arc.
@@ -433,35 +375,6 @@ private:
         }
     }
 
-    // The tip's extent over every path against the machine's travel.
-    void travel(std::map<std::tuple<int, int, int, std::string>, Finding>& all) const
-    {
-        const Machine* m = findMachine(plan_.mmJob.machine);
-        if (!m) return;
-        Point3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-        for (const StepData& d : steps_)
-            for (const sim::SweptPiece& p : d.pieces)
-                for (const Point3& q : {p.from, p.to}) {
-                    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-                    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-                }
-        if (lo.x > hi.x) return;
-        const std::pair<const char*, std::pair<double, double>> axes[] = {
-            {"x", {lo.x, hi.x}}, {"y", {lo.y, hi.y}}, {"z", {lo.z, hi.z}}};
-        for (const auto& [axis, span] : axes) {
-            const auto t = m->travel.find(axis);
-            if (t == m->travel.end()) continue;
-            const double excess = (span.second - span.first) - (t->second.max - t->second.min);
-            if (excess <= 0.0) continue;
-            Finding f;
-            f.kind = FindingKind::TravelLimit;
-            f.part = axis;
-            f.size = excess;
-            f.position = hi;
-            all.try_emplace({static_cast<int>(f.kind), -1, -1, f.part}, f);
-        }
-    }
-
     const Plan& plan_;
     double res_;
     double zStep_;
@@ -473,6 +386,13 @@ private:
     std::vector<UnitData> units_;
     std::vector<StepData> steps_;
     static thread_local std::uint64_t visits_;
+    double maxVisits_;                            // 0: no bound
+    std::atomic<std::uint64_t> allVisits_{0};     // every band's visits so far (with a bound)
+    std::atomic<bool> over_{false};               // past the bound: the bands stop
+
+public:
+    // The work passed Options::maxCellVisits: the report is unfinished.
+    bool over() const { return over_.load(std::memory_order_relaxed); }
 };
 
 thread_local std::uint64_t Verifier::visits_ = 0;
@@ -499,7 +419,24 @@ Report verifyPlan(const Plan& plan, const Options& options)
                                     std::to_string(static_cast<long long>(cells)) + " cells, more than " +
                                     std::to_string(static_cast<long long>(kMaxCells)) + ": choose a coarser resolution");
     const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    return Verifier(plan, options.resolution).run(threads);
+    // Within the bound, or on a grid twice as coarse, and so on: the cells a
+    // tool's shape covers fall as the square of the cell size.
+    double resolution = options.resolution;
+    for (;;) {
+        const bool last = resolution * 2.0 > kCoarsestResolution;
+        Verifier v(plan, resolution, last ? 0.0 : options.maxCellVisits);
+        Report r = v.run(threads);
+        if (v.over()) {
+            resolution = std::ceil(resolution * 2.0 * 100.0 - 1e-9) / 100.0;
+            continue;
+        }
+        if (resolution != options.resolution)
+            r.coarsened = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                          "verified at {:g} mm, not {:g} mm: on that grid the paths would have swept more "
+                                          "than {:.3g} cells; --resolution {:g} verifies on it all the same"),
+                                      resolution, options.resolution, options.maxCellVisits, options.resolution);
+        return r;
+    }
 }
 
 }  // namespace taiwa::verify

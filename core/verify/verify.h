@@ -60,7 +60,17 @@ struct Options {
     // tenth of it, outlines sampled at it, a gouge deeper than 1 µm and it.
     double resolution = kDefaultResolution;
     unsigned threads = 0;      // 0: every core (a lathe job runs on one: it takes milliseconds)
+    // The most cells the tools' shapes may be swept over (Report::cellVisits)
+    // on this grid: past it the verification stops and starts again on a
+    // grid twice as coarse, until it fits (Report::coarsened says so). The
+    // work of a verification is then bounded whatever the paths' step-over
+    // and layer depth; 0: no bound (a resolution the operator chose).
+    double maxCellVisits = 0.0;
 };
+
+// The bound of the verification's work when the operator chose no cell
+// size: about 10 s of a two-core machine (docs/verification.md).
+constexpr double kDefaultCellVisits = 1e9;
 
 struct Report {
     std::vector<Finding> findings;  // by step, then kind, then move
@@ -77,6 +87,10 @@ struct Report {
     // Not every job is simulated: a lathe job without a turning step is
     // not (then `skipped` says why and there are no findings).
     std::string skipped;
+    // The grid is coarser than Options::resolution asked, because on that
+    // grid the work would have passed Options::maxCellVisits: one sentence
+    // saying so; empty otherwise.
+    std::string coarsened;
     bool fatal() const;
     int count(FindingKind k) const;
 };

@@ -4743,6 +4743,10 @@ Theirs: %6</source>
             <translation>シャンク</translation>
         </message>
         <message>
+            <source>verified at {:g} mm, not {:g} mm: on that grid the paths would have swept more than {:.3g} cells; --resolution {:g} verifies on it all the same</source>
+            <translation>{:g} mm で検証しました ({:g} mm ではありません): その格子ではパスが {:.3g} セルを超えて掃引するためです。--resolution {:g} を指定するとその格子で検証します</translation>
+        </message>
+        <message>
             <source>a lathe job with no turning step: nothing to cut</source>
             <translation>旋削工程のない旋盤ジョブ: 削るものがありません</translation>
         </message>

@@ -4743,6 +4743,10 @@ Theirs: %6</source>
             <translation>刀杆</translation>
         </message>
         <message>
+            <source>verified at {:g} mm, not {:g} mm: on that grid the paths would have swept more than {:.3g} cells; --resolution {:g} verifies on it all the same</source>
+            <translation>已按 {:g} mm 验证，而非 {:g} mm：在该网格上刀路扫过的单元将超过 {:.3g} 个；用 --resolution {:g} 仍可在该网格上验证</translation>
+        </message>
+        <message>
             <source>a lathe job with no turning step: nothing to cut</source>
             <translation>没有车削工步的车床作业: 无可切削</translation>
         </message>
