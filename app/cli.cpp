@@ -111,7 +111,8 @@ Common options:
                 tools, machine and resolution is reused
                 ($XDG_CACHE_HOME/taiwa/verification, or $TAIWA_CACHE_DIR)
 
-Exit status: 0 ok, 2 input errors (nothing written), 3 the verification found
+Exit status: 0 ok, 2 input errors (the job's, the options' or the tool
+library's; nothing written), 3 the verification found
 a gouge, a collision or a travel limit, 1 internal failure.
 )";
 
@@ -141,8 +142,9 @@ Loaded load(const Options& o, bool withToolPaths)
     }
     const auto tools = readToolLibrary(o.tools.empty() ? defaultToolLibraryPath() : o.tools);
     if (!tools) {
-        std::cerr << "taiwa: tool library: " << tools.error() << '\n';
-        l.exit = kInternal;
+        // The shop's library is input like the job: refused with its reason, exit 2.
+        std::cerr << "taiwa: tool library: " << tools.error() << "; nothing was written\n";
+        l.exit = kInputErrors;
         return l;
     }
     PlanOptions options;

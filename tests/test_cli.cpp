@@ -610,8 +610,14 @@ private slots:
         const QString db = dir.filePath("tools.sqlite");
         writeFile(db, std::string(4096, 'x'));
         const auto r = runTaiwa({"check", sourcePath("resources/samples/m4-standard.taiwa")}, {"TAIWA_TOOL_DB=" + db});
-        QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("tool library") && r.err.contains(db), qPrintable(r.err));
+        QCOMPARE(r.exitCode, 2);  // the shop's data refused, as a job is: an input error
+        QVERIFY2(r.err.contains("tool library") && r.err.contains(db) && r.err.contains("nothing was written"),
+                 qPrintable(r.err));
+        const auto folder = runTaiwa({"export", sourcePath("resources/samples/m4-standard.taiwa"), "--out",
+                                      dir.filePath("out"), "--tools", dir.path()});
+        QCOMPARE(folder.exitCode, 2);
+        QVERIFY2(folder.err.contains("is a folder, not a tool library"), qPrintable(folder.err));
+        QVERIFY(!QFileInfo::exists(dir.filePath("out")));
         QCOMPARE(readFile(db), std::string(4096, 'x'));  // the operator's file is not overwritten
     }
 };
