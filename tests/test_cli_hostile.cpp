@@ -145,6 +145,7 @@ private slots:
         QTest::newRow("lookAhead") << "look_ahead_wrap" << "lookAhead" << "must be a whole number from 1 to 10000";
         QTest::newRow("coolant") << "coolant_rapid" << "coolant.flood" << "must be M words only";
         QTest::newRow("duplicate key") << "duplicate_key" << "maxFeed" << "given twice";
+        QTest::newRow("unknown key") << "unknown_key" << "maxSpindelSpeed" << "not a key of a machine definition (a typo?)";
     }
     void hostileMachinesRefused()
     {

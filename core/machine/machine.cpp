@@ -29,6 +29,11 @@ constexpr double kMaxSpindle = 200000.0;    // rpm
 constexpr double kMinAcceleration = 1.0, kMaxAcceleration = 1.0e6;  // mm/s²
 constexpr double kMaxChuck = 10000.0;       // mm
 
+// Every key of a machine definition (docs/machines.md).
+constexpr const char* kKeys[] = {"format", "version", "id", "name", "names", "kind", "travel", "maxSpindleSpeed",
+                                 "maxFeed", "rapid", "toolChanger", "turret", "chuck", "xDiameter", "paths", "waitCodes",
+                                 "gangSlide", "acceleration", "lookAhead", "cornerTolerance", "coolant"};
+
 class Reader {
 public:
     Reader(const std::string& text, const std::string& source) : r_(text, source) {}
@@ -47,6 +52,11 @@ public:
     {
         const json& j = r_.root();
         if (r_.text("format", "") != "taiwa-machine") r_.fail("format", "must be \"taiwa-machine\"");
+        // A key this program does not read is a typo whose value would be
+        // silently ignored (a "maxSpindelSpeed" of 3000 and the tape at 9549 rpm).
+        for (const auto& [key, value] : j.items())
+            if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys))
+                r_.fail(key, "not a key of a machine definition (a typo?)");
         const json& version = r_.at(j, "version", "version");
         if (!version.is_number_integer() || version.get<long long>() != 1)
             r_.fail("version", "this program reads machine definitions of version 1");
