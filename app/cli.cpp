@@ -96,6 +96,11 @@ Usage:
                                    was read, gaps, branches and contours left
                                    out on stderr; exit 2 when the file is
                                    refused, has gaps or a contour is left out
+  taiwa import-tools FILE.sqlite
+                                   the shop server's tool library (TAIWA_TOOL_DB
+                                   or --tools, a postgresql:// setting) replaced
+                                   by that of an SQLite library of any version;
+                                   the file is left as it was
   taiwa --list-machines | --list-dialects
                                    the machines and dialects this program knows
                                    (shipped, and the shop's own in
@@ -406,6 +411,7 @@ int run(int argc, char** argv)
         case Command::Render: return render(o, argc, argv);
         case Command::Import: return importStep(o);
         case Command::FigureFromDxf: return figureFromDxf(o);
+        case Command::ImportTools: return importTools(o.job, o.tools);
         case Command::ListMachines: return listMachines();
         case Command::ListDialects: return listDialects();
         case Command::Station:

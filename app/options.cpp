@@ -53,6 +53,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         else if (first == "verify") o.command = Command::Verify, i = 1;
         else if (first == "import") o.command = Command::Import, i = 1;
         else if (first == "figure-from-dxf") o.command = Command::FigureFromDxf, i = 1;
+        else if (first == "import-tools") o.command = Command::ImportTools, i = 1;
     }
     auto value = [&]() -> std::optional<std::string_view> {
         if (i + 1 >= args.size()) return std::nullopt;
@@ -143,6 +144,7 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
     }
     if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
     if (o.command == Command::FigureFromDxf && o.job.empty()) return std::string("no DXF file given");
+    if (o.command == Command::ImportTools && o.job.empty()) return std::string("no SQLite tool library given");
     if (!o.fromStore.empty() && !o.job.empty()) return "give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')";
     if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return std::string("no job file given");
     if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())

@@ -9,11 +9,14 @@
 
 namespace taiwa::app {
 
-enum class Command { Station, Check, Export, Verify, Render, Import, FigureFromDxf, ListMachines, ListDialects, Help, Version };
+enum class Command {
+    Station, Check, Export, Verify, Render, Import, FigureFromDxf, ImportTools, ListMachines, ListDialects, Help, Version
+};
 
 struct Options {
     Command command = Command::Station;
-    std::string job;                  // JOB argument (import: the STEP file; figure-from-dxf: the DXF file)
+    std::string job;                  // JOB argument (import: the STEP file; figure-from-dxf: the DXF file;
+                                      // import-tools: the SQLite library)
     std::string out;                  // --out
     std::string dialect;              // --dialect; empty: the job's, else linuxcnc
     std::optional<LengthUnit> units;  // --units (figure-from-dxf: the drawing's)

@@ -14,4 +14,11 @@ namespace taiwa::app {
 // the temporary directory. Its path, or why not.
 Result<std::string> fetchStoredJob(const std::string& name, const std::string& toolsSetting);
 
+// `taiwa import-tools FILE`: the server's tool library replaced by that of
+// the SQLite library FILE (any version; read from a copy, left as it was).
+// The server is the tool setting's, which must name one. Exit 0 with a
+// line on stdout, 2 when the setting is no server or FILE no library (its
+// reason on stderr, the server unchanged), 1 when the server fails.
+int importTools(const std::string& file, const std::string& toolsSetting);
+
 }  // namespace taiwa::app
