@@ -9,6 +9,7 @@
 #include "post/tool_table.h"
 
 #include <QElapsedTimer>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -162,7 +163,7 @@ private slots:
         if (content.isEmpty() || content == "foreign") {
             sqlite3* db = nullptr;
             sqlite3_open(path.toUtf8().constData(), &db);
-            sqlite3_exec(db, content.isEmpty() ? "PRAGMA user_version = 8" : "CREATE TABLE parts(x)", nullptr, nullptr, nullptr);
+            sqlite3_exec(db, content.isEmpty() ? "PRAGMA user_version = 9" : "CREATE TABLE parts(x)", nullptr, nullptr, nullptr);
             sqlite3_close(db);
         } else {
             test::writeFile(path, content.toStdString());
@@ -260,9 +261,76 @@ private slots:
         sqlite3_stmt* version = nullptr;
         sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &version, nullptr);
         QCOMPARE(sqlite3_step(version), SQLITE_ROW);
-        QCOMPARE(sqlite3_column_int(version, 0), 7);
+        QCOMPARE(sqlite3_column_int(version, 0), 8);
         sqlite3_finalize(version);
         sqlite3_close(db);
+    }
+
+    // The change log (issue "the station at the machine", item 4): an edit
+    // is a row naming who, the station, when, the tool before and after; a
+    // save that changes nothing is none; removal and addition are rows too.
+    void changeLogRemembersEdits()
+    {
+        QTemporaryDir dir;
+        qputenv("TAIWA_STATION", "lathe-cell-3");
+        auto lib = ToolLibrary::open(dir.filePath("tools.sqlite").toStdString());
+        QVERIFY(lib);
+        auto tools = lib->tools();
+        QVERIFY(tools);
+        const auto mill = std::find_if(tools->begin(), tools->end(),
+                                       [](const Tool& t) { return t.type == ToolType::FlatEndMill && t.diameter == 8.0; });
+        QVERIFY(mill != tools->end());
+        Tool wider = *mill;
+        wider.diameter = 12.0;
+        QVERIFY(lib->save(*mill));  // unchanged: no row
+        QVERIFY(lib->history(mill->id)->empty());
+        QVERIFY(lib->save(wider));
+        auto h = lib->history(mill->id);
+        QVERIFY(h && h->size() == 1);
+        const ToolChangeRecord& r = h->front();
+        QCOMPARE(QString::fromStdString(r.operation), QString("change"));
+        QCOMPARE(QString::fromStdString(r.station), QString("lathe-cell-3"));
+        QVERIFY(!r.who.empty() && r.who != "?");
+        QVERIFY(QRegularExpression(R"(^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ$)").match(QString::fromStdString(r.at)).hasMatch());
+        QCOMPARE(r.oldValues, toolJson(*mill));
+        QCOMPARE(r.newValues, toolJson(wider));
+        QCOMPARE(toolChanges(*mill, wider), (std::vector<ToolFieldChange>{{"diameter", "8", "12"}}));
+        QVERIFY(lib->remove(mill->id));
+        h = lib->history(mill->id);
+        QVERIFY(h && h->size() == 2 && h->back().operation == "remove" && h->back().newValues.empty());
+        Tool fresh = wider;
+        fresh.id = 0;
+        const auto id = lib->save(fresh);
+        QVERIFY(id);
+        h = lib->history(*id);
+        QVERIFY(h && !h->empty() && h->back().operation == "add" && h->back().oldValues.empty());
+        qunsetenv("TAIWA_STATION");
+    }
+
+    // A name that states another size than the tool has is named; the
+    // default library's names all state their own.
+    void nameStatesTheSize()
+    {
+        Tool t;
+        t.type = ToolType::FlatEndMill;
+        t.name = "Flat end mill 8 mm carbide";
+        t.diameter = 12.0;
+        QCOMPARE(QString::fromStdString(nameSizeMismatch(t).value_or("")), QString("the name says 8 mm, the diameter is 12 mm"));
+        t.diameter = 8.0;
+        QVERIFY(!nameSizeMismatch(t));
+        t.name = "Drill Ø6.8 (M8 tap drill)";
+        QVERIFY(nameSizeMismatch(t).has_value());
+        t.diameter = 6.8;
+        QVERIFY(!nameSizeMismatch(t));
+        t.name = "End mill D10, 3 flutes";
+        QVERIFY(nameSizeMismatch(t).has_value());
+        t.name = "Roughing end mill";  // no size stated
+        QVERIFY(!nameSizeMismatch(t));
+        t.type = ToolType::TurningInsert;  // an insert's millimetres are its holder's or its bore's
+        t.name = "Boring bar, min. bore 16 mm";
+        QVERIFY(!nameSizeMismatch(t));
+        for (const auto& lib : {defaultToolLibrary(), defaultLatheTools(), defaultHoleTools()})
+            for (const Tool& d : lib) QVERIFY2(!nameSizeMismatch(d), (d.name + ": " + nameSizeMismatch(d).value_or("")).c_str());
     }
 
     void centreCuttingIsStored()

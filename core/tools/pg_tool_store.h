@@ -4,6 +4,7 @@
 // and a local SQLite copy read (read-only) while the server is away.
 #pragma once
 
+#include "tools/tool_change_log.h"
 #include "tools/tool_store.h"
 
 #include <functional>
@@ -19,10 +20,7 @@ struct ToolChange {
 };
 
 // One row of the server's change log of a tool.
-struct ToolChangeRecord {
-    std::string operation, who, station, at;  // at: UTC, ISO 8601
-    std::string oldValues, newValues;         // the tool row as JSON; empty for none
-};
+// ToolChangeRecord: tools/tool_change_log.h (the SQLite library keeps the same log).
 
 struct PgStoreOptions {
     std::string copyPath;  // the local copy (SQLite); empty: none kept

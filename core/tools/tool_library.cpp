@@ -3,6 +3,7 @@
 #include "tools/tool_library.h"
 #include "tools/turning_text.h"
 
+#include "tools/tool_change_log.h"
 #include "tools/tool_check.h"
 #include "tools/tool_store.h"
 #include "model/translate_noop.h"
@@ -22,7 +23,7 @@ namespace taiwa {
 
 namespace {
 
-constexpr int kSchemaVersion = 7;
+constexpr int kSchemaVersion = 8;
 
 // The current schema, for a new file.
 constexpr const char* kSchema = R"sql(
@@ -40,7 +41,9 @@ CREATE TABLE cutting_data (
 CREATE TABLE tool_names (
   tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, name TEXT NOT NULL,
   PRIMARY KEY (tool_id, language));
-PRAGMA user_version = 7;
+CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL,
+  station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL);
+PRAGMA user_version = 8;
 )sql";
 
 // Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
@@ -69,6 +72,10 @@ constexpr const char* kMigrations[] = {
     // (addBuiltInNames).
     "CREATE TABLE tool_names (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, "
     "name TEXT NOT NULL, PRIMARY KEY (tool_id, language)); PRAGMA user_version = 7;",
+    // 7 -> 8: who changed which tool, what and when (tool_change_log.h).
+    "CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
+    "station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL); "
+    "PRAGMA user_version = 8;",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion - 1);
 
@@ -355,6 +362,14 @@ Result<int> ToolLibrary::save(const Tool& tool)
         ok = s.ok() && s.step() == SQLITE_ROW;
         t.id = ok ? s.integer(0) : 0;
     }
+    // The change log's row, in the same transaction: the tool as it was, if it was.
+    const std::optional<Tool> before = ok ? stored(t.id) : std::nullopt;
+    if (ok && before != t) {
+        Statement e(db, "SELECT 1 FROM tools WHERE id = ?");
+        e.bind(1, t.id);
+        const bool existed = e.ok() && e.step() == SQLITE_ROW;
+        ok = logToolChange(db, existed ? "change" : "add", t.id, before ? toolJson(*before) : "", toolJson(t)).ok();
+    }
     if (!ok || !insert(db, t) || !exec(db, "COMMIT")) {
         const std::string why = describe(db, path_);
         exec(db, "ROLLBACK");
@@ -377,9 +392,32 @@ Result<void> changeOne(sqlite3* db, Statement& s, int id, const std::string& pat
 
 Result<void> ToolLibrary::remove(int id)
 {
-    Statement s(db_->handle, "DELETE FROM tools WHERE id = ?");
-    s.bind(1, id);
-    return changeOne(db_->handle, s, id, path_);
+    sqlite3* db = db_->handle;
+    if (!exec(db, "BEGIN IMMEDIATE")) return Failure{describe(db, path_)};
+    const std::optional<Tool> old = stored(id);
+    Result<void> done = old ? logToolChange(db, "remove", id, toolJson(*old), "") : Result<void>{};
+    if (done) {
+        Statement s(db, "DELETE FROM tools WHERE id = ?");
+        s.bind(1, id);
+        done = changeOne(db, s, id, path_);
+    }
+    if (!done || !exec(db, "COMMIT")) {
+        const std::string why = done ? describe(db, path_) : done.error();
+        exec(db, "ROLLBACK");
+        return Failure{why};
+    }
+    return {};
+}
+
+Result<std::vector<ToolChangeRecord>> ToolLibrary::history(int id) const { return readToolChanges(db_->handle, id); }
+
+std::optional<Tool> ToolLibrary::stored(int id) const
+{
+    auto all = tools();  // a damaged library: the log has no old values (the edit itself is not refused)
+    if (all)
+        for (Tool& t : *all)
+            if (t.id == id) return std::move(t);
+    return std::nullopt;
 }
 
 Result<void> ToolLibrary::addUsage(int id, double minutes)

@@ -6,6 +6,7 @@
 
 #include "model/result.h"
 #include "model/tool.h"
+#include "tools/tool_change_log.h"
 
 #include <memory>
 #include <optional>
@@ -53,6 +54,10 @@ public:
     // Insert (id 0 = assign a new id) or replace; the tool's id.
     Result<int> save(const Tool& tool);
     Result<void> remove(int id);
+    // The tool's edits (saves that changed it, its removal), oldest first:
+    // who, where, when, before and after (tool_change_log.h). Cutting minutes
+    // added and replaceAll are not edits.
+    Result<std::vector<ToolChangeRecord>> history(int id) const;
     // Adds cutting minutes to a tool's used life.
     Result<void> addUsage(int id, double minutes);
     // Every tool replaced by `tools`, in one transaction (the shop server's
@@ -61,6 +66,7 @@ public:
 
 private:
     explicit ToolLibrary(std::string path);
+    std::optional<Tool> stored(int id) const;  // the tool of that id as the file holds it
     struct Db;
     std::unique_ptr<Db> db_;
     std::string path_;

@@ -4371,6 +4371,10 @@ Theirs: %6</source>
             <translation>{} を読めません（{}）</translation>
         </message>
         <message>
+            <source>the name says {:g} mm, the diameter is {:g} mm</source>
+            <translation>名前は {:g} mm を示していますが、直径は {:g} mm です</translation>
+        </message>
+        <message>
             <source>T number {} must be 1 to {}</source>
             <translation>T 番号 {} は 1 ～ {} にしてください</translation>
         </message>

@@ -4371,6 +4371,10 @@ Theirs: %6</source>
             <translation>无法读取 {}（{}）</translation>
         </message>
         <message>
+            <source>the name says {:g} mm, the diameter is {:g} mm</source>
+            <translation>名称写的是 {:g} mm，直径却是 {:g} mm</translation>
+        </message>
+        <message>
             <source>T number {} must be 1 to {}</source>
             <translation>T 号 {} 必须为 1 到 {}</translation>
         </message>
