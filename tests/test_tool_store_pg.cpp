@@ -181,11 +181,14 @@ private slots:
             "PRAGMA user_version = 6;",
             "CREATE TABLE tool_names (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, "
             "name TEXT NOT NULL, PRIMARY KEY (tool_id, language)); PRAGMA user_version = 7;",
+            "CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
+            "station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL); "
+            "PRAGMA user_version = 8;",
         };
         const std::string uri = freshDatabase();
         auto store = openStore(uri);
         QTemporaryDir dir;
-        for (int version = 1; version <= 7; ++version) {
+        for (int version = 1; version <= 8; ++version) {
             const std::string path = dir.filePath(QString("v%1.sqlite").arg(version)).toStdString();
             sqlite3* db = nullptr;
             QCOMPARE(sqlite3_open(path.c_str(), &db), SQLITE_OK);
