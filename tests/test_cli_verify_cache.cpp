@@ -38,21 +38,6 @@ QStringList findingLines(const QString& text, const QString& name)
     return lines;
 }
 
-// m4-standard.taiwa with a second pocket 850 mm along X on a 1,000 mm
-// plate: beyond the vmc's 800 mm of X travel (a finding with a tape line).
-QString writeWideJob(const QTemporaryDir& dir)
-{
-    json job = json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
-    job["stock"]["width"] = 1000;
-    json far = job["units"][0];
-    far["name"] = "far";
-    for (auto& c : far["corners"]) c[0] = c[0].get<double>() + 850;
-    job["units"].push_back(far);
-    const QString path = dir.filePath("wide.taiwa");
-    writeFile(path, job.dump(2));
-    return path;
-}
-
 }  // namespace
 
 class TestCliVerifyCache : public QObject {
@@ -109,7 +94,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QStringList env{"TAIWA_CACHE_DIR=" + dir.filePath("cache")};
-        const QString job = writeWideJob(dir);
+        const QString job = writeWideJob(dir.path());
         const auto v = runTaiwa({"verify", job, "--resolution", "0.2"}, env);
         QCOMPARE(v.exitCode, 3);
         const QStringList found = findingLines(v.out, "wide.taiwa");

@@ -62,16 +62,6 @@ double real(const PGresult* r, int row, int col)
 long long integer(const PGresult* r, int row, int col) { return std::atoll(PQgetvalue(r, row, col)); }
 std::string text(const PGresult* r, int row, int col) { return std::string(PQgetvalue(r, row, col), PQgetlength(r, row, col)); }
 
-std::string utcNow()
-{
-    const std::time_t t = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&t, &tm);
-    char buf[32];
-    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return buf;
-}
-
 // The tools' columns, in the order of the parameters $2…$17 ($1 is the id).
 constexpr const char* kToolColumns = "name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
                                      "holder, flutes, life_minutes, used_minutes, centre_cutting, turning, holder_diameter, holder_length";

@@ -72,6 +72,14 @@ std::string userName()
     return "?";
 }
 
+std::string column(sqlite3_stmt* s, int c)
+{
+    const auto* text = sqlite3_column_text(s, c);
+    return text ? reinterpret_cast<const char*>(text) : "";
+}
+
+}  // namespace
+
 std::string utcNow()
 {
     const std::time_t t = std::time(nullptr);
@@ -81,14 +89,6 @@ std::string utcNow()
     std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
     return buf;
 }
-
-std::string column(sqlite3_stmt* s, int c)
-{
-    const auto* text = sqlite3_column_text(s, c);
-    return text ? reinterpret_cast<const char*>(text) : "";
-}
-
-}  // namespace
 
 std::string toolJson(const Tool& t) { return toolObject(t).dump(); }
 

@@ -27,6 +27,9 @@ struct ToolChangeRecord {
     std::string oldValues, newValues;
 };
 
+// Now, as the change logs write it: UTC, ISO 8601, to the second.
+std::string utcNow();
+
 // The tool's fields as one JSON object, keys in a fixed order.
 std::string toolJson(const Tool& t);
 

@@ -97,4 +97,17 @@ bool rewroteGolden(const QString& path, const std::string& actual)
     return true;
 }
 
+QString writeWideJob(const QString& folder)
+{
+    nlohmann::json job = nlohmann::json::parse(readFile(sourcePath("resources/samples/m4-standard.taiwa")));
+    job["stock"]["width"] = 1000;
+    nlohmann::json far = job["units"][0];
+    far["name"] = "far";
+    for (auto& c : far["corners"]) c[0] = c[0].get<double>() + 850;
+    job["units"].push_back(far);
+    const QString path = QDir(folder).filePath("wide.taiwa");
+    writeFile(path, job.dump(2));
+    return path;
+}
+
 }  // namespace taiwa::test

@@ -46,6 +46,11 @@ QStringList shippedDialectsWriting(DialectWrites what);
 std::string readFile(const QString& path);
 void writeFile(const QString& path, const std::string& text);
 
+// m4-standard.taiwa with a second pocket 850 mm along X on a 1,000 mm plate,
+// written as FOLDER/wide.taiwa: its paths span more than the vmc's 800 mm
+// of X travel (a fatal finding of the verification). Its path.
+QString writeWideJob(const QString& folder);
+
 // TAIWA_UPDATE_GOLDEN=1 rewrites a golden or expected file with `actual`
 // instead of comparing, and fails the check (so no run that rewrote a file
 // passes unseen): true when it did, and the caller returns.
