@@ -140,6 +140,7 @@ std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter&
     std::vector<RoughingPass> out;
     const double a = std::max(0.0, o.allowance);
     DropCutter grown(surface, Cutter{cutter.diameter + 2 * a, cutter.cornerRadius + a});
+    grown.keepAxisOverSurface(o.axisOverSurface);
     const std::vector<double> xs = samples(area.x0, area.x1, o.step);
     const std::vector<double> ys = samples(area.y0, area.y1, o.stepOver);
     std::vector<Row> rows;
@@ -223,7 +224,7 @@ StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& bou
     return out;
 }
 
-ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance)
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance, double materialTop)
 {
     ToolPath out;
     for (const auto& path : paths)
@@ -235,7 +236,7 @@ ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, 
         if (path.empty()) continue;
         const Point3 first = path.front();
         out.moves.push_back({MoveKind::Rapid, {first.x, first.y, safeZ}});
-        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, std::min(safeZ, first.z + clearance)}});
+        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, std::min(safeZ, std::max(first.z, materialTop) + clearance)}});
         out.moves.push_back({MoveKind::Feed, first, {}, FeedKind::Plunge});
         for (std::size_t i = 1; i < path.size(); ++i) out.moves.push_back({MoveKind::Feed, path[i]});
         out.moves.push_back({MoveKind::Rapid, {path.back().x, path.back().y, safeZ}});

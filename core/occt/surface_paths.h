@@ -67,6 +67,7 @@ struct ZLevelOptions {
     double stepOver = 1.0;
     double step = 0.5;
     double allowance = 0.2;
+    bool axisOverSurface = false;  // no nose point where the tool axis is off the surface (DropCutter)
 };
 std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter& cutter, const Area& area,
                                          const ZLevelOptions& options);
@@ -85,8 +86,13 @@ StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& bou
 // `clearance` above it, the plunge feed onto it, the cutting feeds along it,
 // a rapid back to `safeZ` (the pick-feed to the next path goes over the
 // surface: `safeZ` must be above it). Paths of fewer than one point are
-// skipped; nothing but the start for no paths.
-ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance);
+// skipped; nothing but the start for no paths. `materialTop`: the highest
+// the material can be over a path's start (the stock top for a module's
+// step, whose Z-level passes start in what the level above left); the rapid
+// down stops `clearance` above it or above the first point, whichever is
+// higher (−infinity: above the first point).
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance,
+                   double materialTop = -std::numeric_limits<double>::infinity());
 
 // Combining two surfaces (eighth abstract): along each path of the second
 // surface (point sequences), a point on the kept side of the first (above or

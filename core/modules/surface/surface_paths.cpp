@@ -21,13 +21,23 @@ namespace taiwa::surfacemod {
 ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
     const SurfacePaths& sp = step.payload.as<SurfacePaths>();
-    const surface::MeshIndex index(surface::meshFromPaths(sp.surface));
+    // Roughing stays off both surfaces: the drop takes the highest touch, so
+    // the two meshes in one are their upper envelope.
+    surface::TriangleMesh mesh = surface::meshFromPaths(sp.surface);
+    if (!sp.finished.empty()) {
+        const surface::TriangleMesh f = surface::meshFromPaths(sp.finished);
+        const int base = static_cast<int>(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), f.vertices.begin(), f.vertices.end());
+        for (const auto& t : f.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    const surface::MeshIndex index(std::move(mesh));
     if (index.mesh().triangles.empty()) throw std::logic_error("surface step " + step.label() + " has no surface");
     const surface::Cutter cutter{tool.diameter, tool.cornerRadius > 0.0 ? tool.cornerRadius : tool.radius()};
     const surface::Area area{index.minX(), index.minY(), index.maxX(), index.maxY()};
     std::vector<std::vector<Point3>> paths;
     if (step.kind == StepKind::SurfaceFinishing) {
         surface::DropCutter drop(index, cutter);
+        drop.keepAxisOverSurface(true);  // never hanging over the edge (docs/surfaces.md)
         paths = surface::finishingPaths(drop, area, sp.step, sp.scallop, sp.concaveRadius).paths;
     } else {
         surface::ZLevelOptions o;
@@ -36,6 +46,7 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         o.stepOver = tech.stepOver * tool.diameter;
         o.step = sp.step;
         o.allowance = sp.allowance;
+        o.axisOverSurface = true;
         for (surface::RoughingPass& p : surface::zLevelRoughing(index, cutter, area, o))
             paths.push_back(std::move(p.points));
     }
@@ -43,7 +54,9 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         const surface::MeshIndex boundary(surface::meshFromPaths(sp.boundary));
         for (auto& p : paths) p = surface::stopAtBoundary(p, boundary).points;
     }
-    return surface::linkPaths(paths, params.safeZ, params.clearance);
+    // The Z-level passes start in what the level above left, the finishing
+    // paths in roughing's stairs: down to the clearance over the stock top.
+    return surface::linkPaths(paths, params.safeZ, params.clearance, -step.startDepth);
 }
 
 std::optional<Cavity> surfaceCavity(const SurfaceUnit& u)

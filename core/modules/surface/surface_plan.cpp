@@ -220,7 +220,8 @@ std::vector<Step> planSurface(const SurfaceUnit& u, const TechnologyData& tech, 
     // L²/(8ρ): the step along a path keeps that within 1 µm, 0.25 mm at most (the ball over the surface's edges needs it).
     const double step = std::clamp(std::sqrt(8.0 * rho.radius * 1e-3), 0.1, 0.25);
     double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-    const auto make = [&](StepKind kind, MachiningType type, const std::vector<std::vector<Point3>>& paths) {
+    const auto make = [&](StepKind kind, MachiningType type, const std::vector<std::vector<Point3>>& paths,
+                          const std::vector<std::vector<Point3>>& finished) {
         double low = 1e300;
         for (const auto& p : paths)
             for (const Point3& q : p) {
@@ -233,13 +234,13 @@ std::vector<Step> planSurface(const SurfaceUnit& u, const TechnologyData& tech, 
         s.startDepth = 0.0;
         s.cutDepth = -low;
         s.tool = ToolChoice{pick.tool->id, pick.reason};
-        s.payload = SurfacePaths{paths, u.boundary, u.scallop, u.allowance, rho.radius, step};
+        s.payload = SurfacePaths{paths, finished, u.boundary, u.scallop, u.allowance, rho.radius, step};
         return s;
     };
     std::vector<Step> steps;
-    steps.push_back(make(StepKind::SurfaceRoughing, MachiningType::SurfaceRoughing, b.roughing));
+    steps.push_back(make(StepKind::SurfaceRoughing, MachiningType::SurfaceRoughing, b.roughing, b.finishing));
     steps.back().floorAllowance = u.allowance;
-    steps.push_back(make(StepKind::SurfaceFinishing, MachiningType::SurfaceFinishing, b.finishing));
+    steps.push_back(make(StepKind::SurfaceFinishing, MachiningType::SurfaceFinishing, b.finishing, {}));
     return steps;
 }
 
