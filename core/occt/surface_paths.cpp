@@ -181,6 +181,28 @@ std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter&
     return out;
 }
 
+void refineMoves(DropCutter& drop, std::vector<Point3>& path, double tolerance, double floorZ, double raise)
+{
+    if (path.size() < 2) return;
+    std::vector<Point3> out{path.front()};
+    const auto between = [&](auto& self, Point3 a, Point3 b, int depth) -> void {
+        if (depth < 4) {
+            const Point3 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.z + b.z)};
+            if (const std::optional<double> z = drop.noseZ(m.x, m.y)) {
+                const double at = std::max(floorZ, *z + raise);
+                if (at > m.z + tolerance) {
+                    self(self, a, {m.x, m.y, at}, depth + 1);
+                    self(self, {m.x, m.y, at}, b, depth + 1);
+                    return;
+                }
+            }
+        }
+        out.push_back(b);
+    };
+    for (std::size_t i = 1; i < path.size(); ++i) between(between, path[i - 1], path[i], 0);
+    path = std::move(out);
+}
+
 StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& boundary)
 {
     StoppedPath out;

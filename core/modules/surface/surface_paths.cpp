@@ -18,6 +18,10 @@
 
 namespace taiwa::surfacemod {
 
+namespace {
+constexpr double kChordTolerance = 0.25e-3;  // mm: a move under the cutter's positions at its middle
+}  // namespace
+
 ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
     const SurfacePaths& sp = step.payload.as<SurfacePaths>();
@@ -39,6 +43,7 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         surface::DropCutter drop(index, cutter);
         drop.keepAxisOverSurface(true);  // never hanging over the edge (docs/surfaces.md)
         paths = surface::finishingPaths(drop, area, sp.step, sp.scallop, sp.concaveRadius).paths;
+        for (auto& p : paths) surface::refineMoves(drop, p, kChordTolerance);
     } else {
         surface::ZLevelOptions o;
         o.top = 0.0;
@@ -47,8 +52,14 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         o.step = sp.step;
         o.allowance = sp.allowance;
         o.axisOverSurface = true;
-        for (surface::RoughingPass& p : surface::zLevelRoughing(index, cutter, area, o))
+        // The passes' moves refined as the finishing's, on the cutter grown
+        // by the allowance (its nose raised by it), never under the level.
+        surface::DropCutter grown(index, surface::Cutter{cutter.diameter + 2 * o.allowance, cutter.cornerRadius + o.allowance});
+        grown.keepAxisOverSurface(true);
+        for (surface::RoughingPass& p : surface::zLevelRoughing(index, cutter, area, o)) {
+            surface::refineMoves(grown, p.points, kChordTolerance, p.level, o.allowance);
             paths.push_back(std::move(p.points));
+        }
     }
     if (!sp.boundary.empty()) {
         const surface::MeshIndex boundary(surface::meshFromPaths(sp.boundary));
