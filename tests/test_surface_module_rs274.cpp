@@ -9,8 +9,8 @@
 // boundary that never meets the surface, a pinned ball larger than the
 // smallest concave radius with and without a smaller one in the library.
 // The verifying simulation judges the cuts against the finishing surface
-// (the module's cavity): lowering the finishing 0.2 mm deepens its worst
-// gouge by that much (the sample is not yet clean: docs/surfaces.md).
+// (the module's cavity): the sample is clean (test_surface_plan_oracle),
+// and lowering the finishing 0.2 mm gives a gouge of about that much.
 // Runs rs274: under the rs274 lock (tests/CMakeLists.txt).
 #include "modules/surface/surface.h"
 #include "occt/surface_mesh.h"
@@ -125,10 +125,9 @@ private slots:
         QVERIFY(p.ok());
         verify::Options o;
         o.resolution = verify::defaultResolution(p);
-        // The finishing step's deepest gouge against the module's cavity.
-        // Not yet zero (docs/surfaces.md: the sample's steps are reported
-        // gouging, cause not found); the cavity must follow the surface:
-        // lowering the finishing 0.2 mm deepens it by about that much.
+        // The finishing step's deepest gouge against the module's cavity:
+        // none as planned (docs/surfaces.md); the cavity must follow the
+        // surface: lowering the finishing 0.2 mm gives one of about that.
         const auto deepest = [&](const Plan& plan) {
             double worst = 0.0;
             for (const verify::Finding& f : verify::verifyPlan(plan, o).findings)
@@ -140,6 +139,7 @@ private slots:
             if (m.kind == MoveKind::Feed) m.end.z -= 0.2;  // the finishing 0.2 mm too deep
         const double lowered = deepest(p);
         qInfo("finishing's deepest gouge: %.4f mm as planned, %.4f mm lowered 0.2 mm", asPlanned, lowered);
+        QCOMPARE(asPlanned, 0.0);
         QVERIFY(lowered > asPlanned + 0.15);
         QVERIFY(lowered < asPlanned + 0.25);
     }
