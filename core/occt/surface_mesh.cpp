@@ -135,6 +135,7 @@ DropCutter::DropCutter(const MeshIndex& index, Cutter cutter) : index_(&index), 
 
 std::optional<double> DropCutter::noseZ(double x, double y)
 {
+    if (axisOver_ && !surfaceZ(x, y)) return std::nullopt;
     const TriangleMesh& m = index_->mesh();
     const double rmax = cutter_.diameter / 2;
     const double r = cutter_.cornerRadius;

@@ -86,6 +86,11 @@ class DropCutter {
 public:
     DropCutter(const MeshIndex& index, Cutter cutter);
     std::optional<double> noseZ(double x, double y);
+    // With `on`, noseZ gives nothing where the tool axis is not over the
+    // surface (surfaceZ has nothing there): the cutter never hangs over the
+    // surface's edge, where its nose would go below the edge by up to its
+    // corner radius (docs/surfaces.md, the sample's 2.68 mm below its edge).
+    void keepAxisOverSurface(bool on) { axisOver_ = on; }
     // The surface's own height at (x, y) (a point dropped, the highest
     // triangle over it), nothing outside the surface.
     std::optional<double> surfaceZ(double x, double y);
@@ -95,6 +100,7 @@ public:
 private:
     const MeshIndex* index_;
     Cutter cutter_;
+    bool axisOver_ = false;
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
     std::vector<int> candidates_;

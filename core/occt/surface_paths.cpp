@@ -140,6 +140,7 @@ std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter&
     std::vector<RoughingPass> out;
     const double a = std::max(0.0, o.allowance);
     DropCutter grown(surface, Cutter{cutter.diameter + 2 * a, cutter.cornerRadius + a});
+    grown.keepAxisOverSurface(o.axisOverSurface);
     const std::vector<double> xs = samples(area.x0, area.x1, o.step);
     const std::vector<double> ys = samples(area.y0, area.y1, o.stepOver);
     std::vector<Row> rows;
@@ -178,6 +179,28 @@ std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter&
         above = level;
     }
     return out;
+}
+
+void refineMoves(DropCutter& drop, std::vector<Point3>& path, double tolerance, double floorZ, double raise)
+{
+    if (path.size() < 2) return;
+    std::vector<Point3> out{path.front()};
+    const auto between = [&](auto& self, Point3 a, Point3 b, int depth) -> void {
+        if (depth < 4) {
+            const Point3 m{0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.z + b.z)};
+            if (const std::optional<double> z = drop.noseZ(m.x, m.y)) {
+                const double at = std::max(floorZ, *z + raise);
+                if (at > m.z + tolerance) {
+                    self(self, a, {m.x, m.y, at}, depth + 1);
+                    self(self, {m.x, m.y, at}, b, depth + 1);
+                    return;
+                }
+            }
+        }
+        out.push_back(b);
+    };
+    for (std::size_t i = 1; i < path.size(); ++i) between(between, path[i - 1], path[i], 0);
+    path = std::move(out);
 }
 
 StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& boundary)
@@ -223,7 +246,7 @@ StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& bou
     return out;
 }
 
-ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance)
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance, double materialTop)
 {
     ToolPath out;
     for (const auto& path : paths)
@@ -235,7 +258,7 @@ ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, 
         if (path.empty()) continue;
         const Point3 first = path.front();
         out.moves.push_back({MoveKind::Rapid, {first.x, first.y, safeZ}});
-        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, std::min(safeZ, first.z + clearance)}});
+        out.moves.push_back({MoveKind::Rapid, {first.x, first.y, std::min(safeZ, std::max(first.z, materialTop) + clearance)}});
         out.moves.push_back({MoveKind::Feed, first, {}, FeedKind::Plunge});
         for (std::size_t i = 1; i < path.size(); ++i) out.moves.push_back({MoveKind::Feed, path[i]});
         out.moves.push_back({MoveKind::Rapid, {path.back().x, path.back().y, safeZ}});

@@ -67,9 +67,19 @@ struct ZLevelOptions {
     double stepOver = 1.0;
     double step = 0.5;
     double allowance = 0.2;
+    bool axisOverSurface = false;  // no nose point where the tool axis is off the surface (DropCutter)
 };
 std::vector<RoughingPass> zLevelRoughing(const MeshIndex& surface, const Cutter& cutter, const Area& area,
                                          const ZLevelOptions& options);
+
+// Points put between neighbours of `path` where the straight move between
+// them passes more than `tolerance` under the cutter's nose at its middle
+// (max(floorZ, drop's nose + raise) there), halving again up to four times.
+// A ball rolling over a convex crease or the surface's edge moves its centre
+// on a circle of its radius r: a move L long cuts in by L²/(8r), 1.3 µm for
+// 0.25 mm with r 6, more than any bend of the surface itself.
+void refineMoves(DropCutter& drop, std::vector<Point3>& path, double tolerance,
+                 double floorZ = -std::numeric_limits<double>::infinity(), double raise = 0.0);
 
 // A path stopped at a cutting boundary surface: the points up to the first
 // place where its moves meet a triangle of `boundary`, that place the last
@@ -85,8 +95,13 @@ StoppedPath stopAtBoundary(const std::vector<Point3>& path, const MeshIndex& bou
 // `clearance` above it, the plunge feed onto it, the cutting feeds along it,
 // a rapid back to `safeZ` (the pick-feed to the next path goes over the
 // surface: `safeZ` must be above it). Paths of fewer than one point are
-// skipped; nothing but the start for no paths.
-ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance);
+// skipped; nothing but the start for no paths. `materialTop`: the highest
+// the material can be over a path's start (the stock top for a module's
+// step, whose Z-level passes start in what the level above left); the rapid
+// down stops `clearance` above it or above the first point, whichever is
+// higher (−infinity: above the first point).
+ToolPath linkPaths(const std::vector<std::vector<Point3>>& paths, double safeZ, double clearance,
+                   double materialTop = -std::numeric_limits<double>::infinity());
 
 // Combining two surfaces (eighth abstract): along each path of the second
 // surface (point sequences), a point on the kept side of the first (above or

@@ -79,6 +79,9 @@ struct SurfaceUnit {
 struct SurfacePaths {
     static constexpr const char* kName = "SURFACE paths";
     std::vector<std::vector<Point3>> surface;
+    // Roughing's: the finishing surface, which it stays off by the allowance
+    // too (the N surface's chords may pass under the M surface).
+    std::vector<std::vector<Point3>> finished;
     std::vector<std::vector<Point3>> boundary;
     double scallop = 0.0;        // finishing
     double allowance = 0.0;      // roughing

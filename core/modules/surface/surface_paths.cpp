@@ -18,17 +18,32 @@
 
 namespace taiwa::surfacemod {
 
+namespace {
+constexpr double kChordTolerance = 0.25e-3;  // mm: a move under the cutter's positions at its middle
+}  // namespace
+
 ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
     const SurfacePaths& sp = step.payload.as<SurfacePaths>();
-    const surface::MeshIndex index(surface::meshFromPaths(sp.surface));
+    // Roughing stays off both surfaces: the drop takes the highest touch, so
+    // the two meshes in one are their upper envelope.
+    surface::TriangleMesh mesh = surface::meshFromPaths(sp.surface);
+    if (!sp.finished.empty()) {
+        const surface::TriangleMesh f = surface::meshFromPaths(sp.finished);
+        const int base = static_cast<int>(mesh.vertices.size());
+        mesh.vertices.insert(mesh.vertices.end(), f.vertices.begin(), f.vertices.end());
+        for (const auto& t : f.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    const surface::MeshIndex index(std::move(mesh));
     if (index.mesh().triangles.empty()) throw std::logic_error("surface step " + step.label() + " has no surface");
     const surface::Cutter cutter{tool.diameter, tool.cornerRadius > 0.0 ? tool.cornerRadius : tool.radius()};
     const surface::Area area{index.minX(), index.minY(), index.maxX(), index.maxY()};
     std::vector<std::vector<Point3>> paths;
     if (step.kind == StepKind::SurfaceFinishing) {
         surface::DropCutter drop(index, cutter);
+        drop.keepAxisOverSurface(true);  // never hanging over the edge (docs/surfaces.md)
         paths = surface::finishingPaths(drop, area, sp.step, sp.scallop, sp.concaveRadius).paths;
+        for (auto& p : paths) surface::refineMoves(drop, p, kChordTolerance);
     } else {
         surface::ZLevelOptions o;
         o.top = 0.0;
@@ -36,14 +51,23 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
         o.stepOver = tech.stepOver * tool.diameter;
         o.step = sp.step;
         o.allowance = sp.allowance;
-        for (surface::RoughingPass& p : surface::zLevelRoughing(index, cutter, area, o))
+        o.axisOverSurface = true;
+        // The passes' moves refined as the finishing's, on the cutter grown
+        // by the allowance (its nose raised by it), never under the level.
+        surface::DropCutter grown(index, surface::Cutter{cutter.diameter + 2 * o.allowance, cutter.cornerRadius + o.allowance});
+        grown.keepAxisOverSurface(true);
+        for (surface::RoughingPass& p : surface::zLevelRoughing(index, cutter, area, o)) {
+            surface::refineMoves(grown, p.points, kChordTolerance, p.level, o.allowance);
             paths.push_back(std::move(p.points));
+        }
     }
     if (!sp.boundary.empty()) {
         const surface::MeshIndex boundary(surface::meshFromPaths(sp.boundary));
         for (auto& p : paths) p = surface::stopAtBoundary(p, boundary).points;
     }
-    return surface::linkPaths(paths, params.safeZ, params.clearance);
+    // The Z-level passes start in what the level above left, the finishing
+    // paths in roughing's stairs: down to the clearance over the stock top.
+    return surface::linkPaths(paths, params.safeZ, params.clearance, -step.startDepth);
 }
 
 std::optional<Cavity> surfaceCavity(const SurfaceUnit& u)
