@@ -104,6 +104,13 @@ void Planner::planFinishing(const Tool& tool)
         i = run->second;
     }
     crossGrindingStockRuns(contour, tool);
+    // A step back toward the front at the end (an allowance's side coming
+    // back to the part's last point): the nose on it would sit behind
+    // and below that point, in the part; the contour ends before it.
+    while (contour.size() > 1 && !contour.back().arc && contour.back().b.z > contour.back().a.z + 1e-6) contour.pop_back();
+    bridgeTightArcs(contour, rn, tool);
+    reachableCorners(contour, rn);
+    reachableArcCorners(contour, rn);
     reachableCorners(contour, rn);
     TurnPath& p = ts.path;
     const ZR first = contour.front().a;
@@ -120,10 +127,15 @@ void Planner::planFinishing(const Tool& tool)
         else p.moves.push_back({TurnMove::Feed, s.b, {}, FeedKind::Cut});
     }
     p.compTo = static_cast<int>(p.moves.size());
-    // Off the part with compensation cancelled: up and forward.
+    // Off the part with compensation cancelled: up and forward, unless
+    // the last element falls toward its end (the tool would go back into
+    // it): then straight out, away from it.
     const ZR last = contour.back().b;
-    p.moves.push_back({TurnMove::Feed, {last.z + t_.clearance, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
-    p.moves.push_back({TurnMove::Rapid, {last.z + t_.clearance, safeR()}, {}, FeedKind::Cut});
+    const ZR away = airNormal(tangentAtEnd(contour.back()));
+    const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
+    const bool forward = dot(unit(exit), away) > 0.25;
+    p.moves.push_back({TurnMove::Feed, forward ? last + exit : ZR{last.z, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
+    p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
     // Out of a bore along the axis before the turret moves on.
     if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
     addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));

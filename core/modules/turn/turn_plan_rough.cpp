@@ -79,16 +79,22 @@ void Planner::planRoughing()
             if (a - rn >= zFront_ - 1e-6) continue;  // in front of the face: air
             const bool front = b >= zApproach - 1e-9;
             if (!front) {
-                // A pocket: plunge at its front end from the level above.
-                if (!F.segmentFree({b, rPrev}, {b, rc})) {
+                // A pocket: plunge at its front end from the level above, the
+                // rapid stopping a retract short of it (on it, the insert
+                // touches the stock at rapid speed).
+                const double above = s_ > 0 ? std::min(rPrev + t_.retract, rSafe) : std::max(rPrev - t_.retract, rSafe);
+                if (!F.segmentFree({b, above}, {b, rc})) {
                     left = true;
                     continue;
                 }
                 w.rapid({currentZ(w), rSafe});
                 w.rapid({b, rSafe});
-                w.rapid({b, rPrev});
+                w.rapid({b, above});
                 w.feed({b, rc}, FeedKind::Plunge);
             } else {
+                // Back from a pocket (the tool above the bar behind the
+                // profile): over to the front first, then down to the level.
+                if (std::abs(currentZ(w) - zApproach) > 1e-9) w.rapid({zApproach, rSafe});
                 w.rapid({zApproach, rc});
             }
             w.feed({a, rc});
