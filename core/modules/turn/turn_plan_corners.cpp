@@ -97,13 +97,22 @@ void Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
             if (!A.arc && !B.arc) continue;  // reachableCorners'
             if (cross(tangentAtEnd(A), tangentAtStart(B)) * (inner_ ? -1.0 : 1.0) >= -1e-9) continue;  // convex
             const auto oa = offset(A, rn, air), ob = offset(B, rn, air);
-            if (!oa || !ob) continue;
-            const auto c = nearest(intersections(curveOf(*oa), curveOf(*ob)), A.b);
-            if (!c || dist(*c, A.b) > 4.0 * rn) continue;
+            std::optional<ZR> c;
+            if (oa && ob) c = nearest(intersections(curveOf(*oa), curveOf(*ob)), A.b);
+            if (!c || dist(*c, A.b) > 4.0 * rn) {
+                // Nowhere near the corner does the nose touch both.
+                if (!replaceable(A) || !replaceable(B)) continue;
+                contour[k] = lineSegment(A.a, B.b);
+                contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                changed = true;
+                continue;
+            }
             const bool onA = contains(*oa, *c, 1e-7), onB = contains(*ob, *c, 1e-7);
             if (onA && onB) continue;
+            // A line replacing the short one ends on the other only where
+            // that is a line or a concave arc (a convex one bulges over it).
             const ZR fb = footOn(B, *c), fa = footOn(A, *c);
-            if (!onA && replaceable(A) && contains(B, fb, 1e-7)) {
+            if (!onA && replaceable(A) && replaceable(B) && contains(B, fb, 1e-7)) {
                 // A too short: from its start to where the nose touches B, a little on.
                 const double at = std::min(length(B), parameterOf(B, fb) + 0.05);
                 const ZR q = pointAt(B, at);
@@ -111,7 +120,7 @@ void Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
                 if (at >= length(B) - 1e-9) contour.erase(contour.begin() + static_cast<long>(k) + 1);
                 else contour[k + 1] = piece(B, q, B.b);
                 changed = true;
-            } else if (!onB && replaceable(B) && contains(A, fa, 1e-7)) {
+            } else if (!onB && replaceable(B) && replaceable(A) && contains(A, fa, 1e-7)) {
                 // B too short: from where the nose touches A, a little before, straight to B's end.
                 const double at = std::max(0.0, parameterOf(A, fa) - 0.05);
                 const ZR q = pointAt(A, at);

@@ -130,11 +130,13 @@ void Planner::planFinishing(const Tool& tool)
     // Off the part with compensation cancelled: up and forward, unless
     // the last element falls toward its end (the tool would go back into
     // it): then straight out, away from it.
+    // The control cancels compensation moving the nose centre in a line
+    // from where it touches the last element: that line is the one meant.
     const ZR last = contour.back().b;
     const ZR away = airNormal(tangentAtEnd(contour.back()));
-    const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
-    const bool forward = dot(unit(exit), away) > 0.25;
-    p.moves.push_back({TurnMove::Feed, forward ? last + exit : ZR{last.z, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
+    const ZR exit = unit(ZR{t_.clearance, s_ * (t_.clearance + 2.0 * rn)});
+    const ZR out = dot(exit, away) > 0.25 ? exit : ZR{0.0, s_};
+    p.moves.push_back({TurnMove::Feed, last + rn * away + (t_.clearance + 2.0 * rn) * out + ts.tipFromCentre, {}, FeedKind::Cut});
     p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
     // Out of a bore along the axis before the turret moves on.
     if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
