@@ -71,7 +71,14 @@ PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274)
         // TAIWA_GENERATED_DUMP=<folder>: each tape, its tool table and rs274's verdict there.
         if (const QString dump = qEnvironmentVariable("TAIWA_GENERATED_DUMP"); !dump.isEmpty()) {
             QFile f(dump + "/" + QString::number(g.seed) + ".ngc");
-            if (f.open(QIODevice::WriteOnly)) f.write((nc + "\n(" + latheToolTable(plan) + ")\n(" + run.errors.toStdString() + ")\n").c_str());
+            std::string edges;
+            for (const TurnedPart& t : plan.turned)
+                for (const turning::DeformedEdge& e : t.deformed.edges)
+                    edges += fmt::format("({} {}: Z{:.4f} X{:.4f} to Z{:.4f} X{:.4f}{})\n", e.id, toKey(e.origin), e.geometry.a.z,
+                                         2 * e.geometry.a.r, e.geometry.b.z, 2 * e.geometry.b.r,
+                                         e.geometry.arc ? fmt::format(" R{:.4f} {}", e.geometry.radius, e.geometry.ccw ? "ccw" : "cw") : "");
+            if (f.open(QIODevice::WriteOnly))
+                f.write((nc + "\n(" + latheToolTable(plan) + ")\n(" + run.errors.toStdString() + ")\n" + edges).c_str());
         }
         if (!run.ok) out.rs274Refusal = run.errors.isEmpty() ? "exit code " + std::to_string(run.exitCode) : run.errors.toStdString();
     }

@@ -19,6 +19,18 @@ ZR footOn(const Segment& s, ZR p)
 
 }  // namespace
 
+bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chord) const
+{
+    const ZR d = unit(chord.b - chord.a);
+    for (const Segment& e : skipped)
+        for (int i = 0; i <= 16; ++i) {
+            const ZR x = pointAt(e, length(e) * i / 16.0);
+            // The material lies left of the travel outside, right of it in a bore.
+            if (s_ * cross(d, x - chord.a) < -1e-6) return true;
+        }
+    return false;
+}
+
 bool Planner::concaveArc(const Segment& s) const { return s.arc && (s.ccw ? 1.0 : -1.0) * s_ < 0; }
 
 void Planner::bridgeTightArcs(std::vector<Segment>& contour, double rn, const Tool& tool)

@@ -180,6 +180,11 @@ void Planner::crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& 
             for (const auto& e : chain_)
                 for (const ZR x : crossings(e, chord))
                     clear = clear && (dist(x, p) < 1e-7 || dist(x, q) < 1e-7);
+            // Nor under what it skips (a convex arc it ends on bulges over it).
+            std::vector<Segment> skipped{piece(before, p, before.b)};
+            skipped.insert(skipped.end(), contour.begin() + static_cast<long>(ka), contour.begin() + static_cast<long>(kb) + 1);
+            skipped.push_back(piece(after, after.a, q));
+            clear = clear && !overChord(skipped, chord);
             if (!clear) continue;
             const Segment head = piece(before, before.a, p), tail = piece(after, q, after.b);
             contour.erase(contour.begin() + static_cast<long>(ka) - 1, contour.begin() + static_cast<long>(kb) + 2);
@@ -220,6 +225,9 @@ void Planner::reachableCorners(std::vector<Segment>& contour, double rn)
         const bool corner = length(contour[m]) <= left && convexAfter(m);
         const ZR q = corner ? contour[m].b : pointAt(contour[m], left);
         const Segment chord = lineSegment(A.a, q);
+        std::vector<Segment> skipped(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m));
+        skipped.push_back(corner ? contour[m] : piece(contour[m], contour[m].a, q));
+        if (overChord(skipped, chord)) continue;  // it would cut what it skips
         if (corner) {
             contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
             contour.insert(contour.begin() + static_cast<long>(k), chord);

@@ -199,6 +199,9 @@ private:
 
     // turn_plan_corners.cpp. A concave arc (the material outside its circle).
     bool concaveArc(const Segment& s) const;
+    // Whether any of the elements a chord replaces lies on its air side
+    // (the nose along the chord would cut it).
+    bool overChord(const std::vector<Segment>& skipped, const Segment& chord) const;
     // A concave arc no wider than the nose (a fillet, a picked rounding):
     // the compensated path cannot follow it (the control refuses it: "Arc
     // move in concave corner cannot be reached by the tool without
