@@ -89,6 +89,7 @@ struct PlanCheck {
     bool fatal = false;     // a finding the tape must not run with (all but rest material)
     bool rs274Run = false;  // the linuxcnc tape was read by rs274 (planAndVerify's `rs274`)
     std::string rs274Refusal;  // and what it refused it for; empty: it ran
+    std::vector<std::string> warnings;  // the plan's notes (warnings): what it leaves and why
     std::string refusedOn;  // the first error's field
     std::string refusal;
     std::map<std::string, int> findings;        // by kind: "gouge", "rapid-into-stock", …
@@ -98,6 +99,8 @@ struct PlanCheck {
 // library's nose radii as its tool table (tests/support/rs274.h; hold the
 // rs274 lock).
 PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274 = false);
+// The same for a profile of the caller's (seed 0).
+PlanCheck planAndVerify(const turning::TurnedProfile& profile, bool rs274);
 
 // The counts of plans: planned, refused (by field), clean, and per finding
 // kind the profiles that have it with their first seeds.

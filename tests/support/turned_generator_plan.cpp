@@ -58,6 +58,8 @@ PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274)
         return out;
     }
     out.planned = true;
+    for (const Diagnostic& d : plan.diagnostics)
+        if (d.severity == Severity::Warning) out.warnings.push_back(d.message);
     const verify::Report report = verify::verifyPlan(plan);
     for (const verify::Finding& f : report.findings) {
         const std::string kind = verify::toKey(f.kind);
@@ -83,6 +85,13 @@ PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274)
         if (!run.ok) out.rs274Refusal = run.errors.isEmpty() ? "exit code " + std::to_string(run.exitCode) : run.errors.toStdString();
     }
     return out;
+}
+
+PlanCheck planAndVerify(const TurnedProfile& profile, bool rs274)
+{
+    GeneratedProfile g;
+    g.profile = profile;
+    return planAndVerify(g, rs274);
 }
 
 void PlanTally::add(std::uint64_t seed, const PlanCheck& c, const std::vector<std::string>& drawn)

@@ -108,6 +108,12 @@ void Planner::planFinishing(const Tool& tool)
     // back to the part's last point): the nose on it would sit behind
     // and below that point, in the part; the contour ends before it.
     while (contour.size() > 1 && !contour.back().arc && contour.back().b.z > contour.back().a.z + 1e-6) contour.pop_back();
+    // Likewise a step up shorter than the nose at the start (an allowance's
+    // side at the front corner): entering along -Z onto its foot, the nose
+    // would sit over what follows it, in the part; the contour starts after it.
+    while (contour.size() > 1 && !contour.front().arc && length(contour.front()) < rn &&
+           s_ * (contour.front().b.r - contour.front().a.r) > std::abs(contour.front().b.z - contour.front().a.z))
+        contour.erase(contour.begin());
     bridgeTightArcs(contour, rn, tool);
     reachableCorners(contour, rn);
     reachableArcCorners(contour, rn);
