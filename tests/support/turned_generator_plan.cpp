@@ -16,6 +16,10 @@
 
 #include <QFile>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -68,7 +72,15 @@ PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274)
     }
     if (rs274) {
         const std::string nc = postProcess(plan.steps, plan.tools, postOptions(plan, "linuxcnc", LengthUnit::Millimetre, 1000, job.name)).nc;
+        // TAIWA_RS274_LOCK=<file>: each run holds that lock (flock) only
+        // while rs274 runs, as a long bench should, not the whole run.
+        int lock = -1;
+        if (const QByteArray file = qgetenv("TAIWA_RS274_LOCK"); !file.isEmpty()) {
+            lock = ::open(file.constData(), O_RDWR | O_CREAT, 0666);
+            if (lock >= 0) ::flock(lock, LOCK_EX);
+        }
         const Rs274Result run = runRs274(nc, latheToolTable(plan));
+        if (lock >= 0) ::close(lock);
         out.rs274Run = true;
         // TAIWA_GENERATED_DUMP=<folder>: each tape, its tool table and rs274's verdict there.
         if (const QString dump = qEnvironmentVariable("TAIWA_GENERATED_DUMP"); !dump.isEmpty()) {

@@ -98,8 +98,9 @@ void Planner::bridgeTightArcs(std::vector<Segment>& contour, double rn, const To
                          fmt::join(left, ", "), len(rn), toolWords(tool), len(thickest)));
 }
 
-void Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
+bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
 {
+    bool any = false;
     const int air = inner_ ? 1 : -1;
     const auto replaceable = [&](const Segment& s) { return !s.arc || concaveArc(s); };
     for (int guard = 0; guard < 1000; ++guard) {
@@ -148,7 +149,9 @@ void Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
             }
         }
         if (!changed) break;
+        any = true;
     }
+    return any;
 }
 
 }  // namespace taiwa::turning::planner

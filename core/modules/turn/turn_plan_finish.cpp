@@ -116,8 +116,8 @@ void Planner::planFinishing(const Tool& tool)
         contour.erase(contour.begin());
     bridgeTightArcs(contour, rn, tool);
     reachableCorners(contour, rn);
-    reachableArcCorners(contour, rn);
-    reachableCorners(contour, rn);
+    // The lines that makes at arcs, at line corners in their turn.
+    if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
     TurnPath& p = ts.path;
     const ZR first = contour.front().a;
     const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};
@@ -136,13 +136,14 @@ void Planner::planFinishing(const Tool& tool)
     // Off the part with compensation cancelled: up and forward, unless
     // the last element falls toward its end (the tool would go back into
     // it): then straight out, away from it.
-    // The control cancels compensation moving the nose centre in a line
-    // from where it touches the last element: that line is the one meant.
+    // Straight out: the control cancels compensation moving the nose
+    // centre in a line from where it touches the last element, so the
+    // programmed end is that centre moved out, plus the tip's offset.
     const ZR last = contour.back().b;
     const ZR away = airNormal(tangentAtEnd(contour.back()));
-    const ZR exit = unit(ZR{t_.clearance, s_ * (t_.clearance + 2.0 * rn)});
-    const ZR out = dot(exit, away) > 0.25 ? exit : ZR{0.0, s_};
-    p.moves.push_back({TurnMove::Feed, last + rn * away + (t_.clearance + 2.0 * rn) * out + ts.tipFromCentre, {}, FeedKind::Cut});
+    const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
+    if (dot(unit(exit), away) > 0.25) p.moves.push_back({TurnMove::Feed, last + exit, {}, FeedKind::Cut});
+    else p.moves.push_back({TurnMove::Feed, last + rn * away + ZR{0.0, s_ * (t_.clearance + 2.0 * rn)} + ts.tipFromCentre, {}, FeedKind::Cut});
     p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
     // Out of a bore along the axis before the turret moves on.
     if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
@@ -187,9 +188,9 @@ void Planner::crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& 
                 for (const ZR x : crossings(e, chord))
                     clear = clear && (dist(x, p) < 1e-7 || dist(x, q) < 1e-7);
             // Nor under what it skips (a convex arc it ends on bulges over it).
-            std::vector<Segment> skipped{piece(before, p, before.b)};
-            skipped.insert(skipped.end(), contour.begin() + static_cast<long>(ka), contour.begin() + static_cast<long>(kb) + 1);
-            skipped.push_back(piece(after, after.a, q));
+            std::vector<Segment> skipped(contour.begin() + static_cast<long>(ka), contour.begin() + static_cast<long>(kb) + 1);
+            if (dist(p, before.b) > 1e-9) skipped.push_back(piece(before, p, before.b));
+            if (dist(after.a, q) > 1e-9) skipped.push_back(piece(after, after.a, q));
             clear = clear && !overChord(skipped, chord);
             if (!clear) continue;
             const Segment head = piece(before, before.a, p), tail = piece(after, q, after.b);
@@ -232,7 +233,8 @@ void Planner::reachableCorners(std::vector<Segment>& contour, double rn)
         const ZR q = corner ? contour[m].b : pointAt(contour[m], left);
         const Segment chord = lineSegment(A.a, q);
         std::vector<Segment> skipped(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m));
-        skipped.push_back(corner ? contour[m] : piece(contour[m], contour[m].a, q));
+        if (corner) skipped.push_back(contour[m]);
+        else if (dist(contour[m].a, q) > 1e-9) skipped.push_back(piece(contour[m], contour[m].a, q));
         if (overChord(skipped, chord)) continue;  // it would cut what it skips
         if (corner) {
             contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);

@@ -212,8 +212,8 @@ private:
     // reachableCorners for a concave corner next to an arc: where the nose
     // touching both would lie beyond one of them (a short step between two
     // arcs, at an allowance's end), that one is replaced by a line to where
-    // the nose touches the other, a little past it.
-    void reachableArcCorners(std::vector<Segment>& contour, double rn);
+    // the nose touches the other, a little past it. Whether it changed any.
+    bool reachableArcCorners(std::vector<Segment>& contour, double rn);
 
     // ---- grooving --------------------------------------------------------
 
