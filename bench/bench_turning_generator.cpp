@@ -68,12 +68,15 @@ BENCHMARK(BM_GeneratedPlans)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond
 
 // Issue 33, item 3: 10,000 lathe parts of generateLathePart (ridges, front
 // roundings, fillets on both sides of the nose radii, allowance tables)
-// planned, verified and their linuxcnc tapes run through rs274 (hold the
-// rs274 lock: flock /tmp/rs274.lock). TAIWA_BENCH_PARTS sets another count.
+// planned, verified and their linuxcnc tapes run through rs274; run it with
+// TAIWA_RS274_LOCK=/tmp/rs274.lock so that each rs274 run takes the lock the
+// tests share (not the whole run). TAIWA_BENCH_PARTS sets another count,
+// TAIWA_BENCH_NO_RS274=1 plans and verifies only.
 void BM_GeneratedLatheParts(benchmark::State& state)
 {
     const int env = std::getenv("TAIWA_BENCH_PARTS") ? std::atoi(std::getenv("TAIWA_BENCH_PARTS")) : 0;
     const auto n = static_cast<std::uint64_t>(env > 0 ? env : state.range(0));
+    const bool rs274 = !std::getenv("TAIWA_BENCH_NO_RS274");
     test::PlanTally tally;
     double seconds = 0.0;
     for (auto _ : state) {
@@ -81,7 +84,7 @@ void BM_GeneratedLatheParts(benchmark::State& state)
         const auto start = std::chrono::steady_clock::now();
         for (std::uint64_t seed = 1; seed <= n; ++seed) {
             const test::GeneratedProfile g = test::generateLathePart(seed);
-            tally.add(seed, test::planAndVerify(g, true), g.shapes);
+            tally.add(seed, test::planAndVerify(g, rs274), g.shapes);
         }
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
