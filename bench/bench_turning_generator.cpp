@@ -7,7 +7,8 @@
 // at corners that are not square, failing seeds) and reports them as
 // counters, with the time per profile. Then the accepted ones planned as
 // lathe jobs and verified: the counts of plans refused and of findings by
-// kind, with their first seeds.
+// kind, with their first seeds. And generated lathe parts (ridges, front
+// roundings, fillets) planned, verified and run through rs274.
 #include "support/turned_generator.h"
 
 #include <benchmark/benchmark.h>
@@ -15,6 +16,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 
 using namespace taiwa;
 
@@ -63,6 +65,35 @@ void BM_GeneratedPlans(benchmark::State& state)
     state.counters["clean"] = static_cast<double>(tally.clean);
 }
 BENCHMARK(BM_GeneratedPlans)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond);
+
+// Issue 33, item 3: 10,000 lathe parts of generateLathePart (ridges, front
+// roundings, fillets on both sides of the nose radii, allowance tables)
+// planned, verified and their linuxcnc tapes run through rs274; run it with
+// TAIWA_RS274_LOCK=/tmp/rs274.lock so that each rs274 run takes the lock the
+// tests share (not the whole run). TAIWA_BENCH_PARTS sets another count,
+// TAIWA_BENCH_NO_RS274=1 plans and verifies only.
+void BM_GeneratedLatheParts(benchmark::State& state)
+{
+    const int env = std::getenv("TAIWA_BENCH_PARTS") ? std::atoi(std::getenv("TAIWA_BENCH_PARTS")) : 0;
+    const auto n = static_cast<std::uint64_t>(env > 0 ? env : state.range(0));
+    const bool rs274 = !std::getenv("TAIWA_BENCH_NO_RS274");
+    test::PlanTally tally;
+    double seconds = 0.0;
+    for (auto _ : state) {
+        tally = {};
+        const auto start = std::chrono::steady_clock::now();
+        for (std::uint64_t seed = 1; seed <= n; ++seed) {
+            const test::GeneratedProfile g = test::generateLathePart(seed);
+            tally.add(seed, test::planAndVerify(g, rs274), g.shapes);
+        }
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    std::printf("lathe parts 1-%llu: %s; %.1f s\n", static_cast<unsigned long long>(n), tally.summary().c_str(), seconds);
+    state.counters["plans"] = static_cast<double>(tally.planned);
+    state.counters["clean"] = static_cast<double>(tally.clean);
+    state.counters["rs274_refused"] = static_cast<double>(tally.rs274Refused);
+}
+BENCHMARK(BM_GeneratedLatheParts)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 

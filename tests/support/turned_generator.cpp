@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -53,7 +54,9 @@ ProfileRow element(int id, ElementKind kind, double r, double z)
 }
 
 // One chain toward the chuck (Z never rising), so that it cannot cross itself.
-TurnedProfile drawProfile(Rng& g)
+// `lathe`: with the shapes planning trips on added (generateLathePart); off,
+// the draws are the same as before they existed.
+TurnedProfile drawProfile(Rng& g, bool lathe = false, std::vector<std::string>* shapes = nullptr)
 {
     TurnedProfile p;
     const bool inner = g.chance(0.3);
@@ -75,6 +78,27 @@ TurnedProfile drawProfile(Rng& g)
         ElementKind kind = ElementKind::Line;
         std::optional<double> radius;
         bool face = false;
+        if (lathe && k + 1 < n && g.chance(0.1)) {
+            // An acute ridge: a taper rising 45-75° then one falling 30-60°
+            // (the roughing insert's rapids out of the valley behind it).
+            const double deg = std::numbers::pi / 180.0;
+            const double up = g.uniform(45.0, 75.0) * deg, down = g.uniform(30.0, 60.0) * deg;
+            const double h = std::min(typed(g.uniform(1.5, 6.0)), (inner ? r - rMin : rMax - r) - 0.5);
+            if (h >= 1.0) {
+                const double rise = inner ? -h : h;
+                const double dz1 = std::max(0.05, typed(h / std::tan(up))), dz2 = std::max(0.05, typed(h / std::tan(down)));
+                r += rise;
+                z -= dz1;
+                p.rows.push_back(element(id++, ElementKind::Line, r, z));
+                r -= rise;
+                z -= dz2;
+                p.rows.push_back(element(id++, ElementKind::Line, r, z));
+                if (shapes) shapes->push_back("ridge");
+                lastFace = false;
+                ++k;
+                continue;
+            }
+        }
         if (pick < 0.25) {  // a cylinder
             dz = typed(g.uniform(2.0, 20.0));
         } else if (pick < 0.4) {  // a taper
@@ -106,6 +130,27 @@ TurnedProfile drawProfile(Rng& g)
             p.rows[i].corner = g.chance(0.5) ? CornerKind::Chamfer : CornerKind::Rounding;
             p.rows[i].cornerSize = typed(g.uniform(0.2, 1.5));
         }
+    if (!lathe) return p;
+    // A rounding at the front corner (the face into the first element), and
+    // roundings at concave corners between lines: fillets smaller and larger
+    // than the library's nose radii (0.4 and 0.8 mm).
+    if (!inner && p.rows.size() > 1 && p.rows[1].kind == ElementKind::Line && g.chance(0.35)) {
+        p.rows[0].corner = CornerKind::Rounding;
+        p.rows[0].cornerSize = typed(g.uniform(0.2, 2.0));
+        if (shapes) shapes->push_back("front rounding");
+    }
+    ZR at{0.0, inner ? p.startX / 2.0 : 0.0};
+    for (std::size_t i = 0; i + 1 < p.rows.size(); ++i) {
+        const ZR a = at, b{p.rows[i].z, p.rows[i].x / 2.0}, c{p.rows[i + 1].z, p.rows[i + 1].x / 2.0};
+        at = b;
+        if (p.rows[i].kind != ElementKind::Line || p.rows[i + 1].kind != ElementKind::Line || dist(a, b) < 1e-9 || dist(b, c) < 1e-9)
+            continue;
+        const double turn = cross(b - a, c - b);
+        if (!(inner ? turn > 1e-9 : turn < -1e-9) || !g.chance(0.5)) continue;
+        p.rows[i].corner = CornerKind::Rounding;
+        p.rows[i].cornerSize = typed(g.chance(0.5) ? g.uniform(0.1, 0.8) : g.uniform(0.8, 3.0));
+        if (shapes) shapes->push_back(p.rows[i].cornerSize < 0.4 ? "fillet under 0.4" : p.rows[i].cornerSize < 0.8 ? "fillet under 0.8" : "fillet");
+    }
     return p;
 }
 
@@ -224,6 +269,26 @@ GeneratedProfile generateTurnedProfile(std::uint64_t seed)
         return out;
     }
     return out;  // no rows: nothing resolved in 100 draws
+}
+
+GeneratedProfile generateLathePart(std::uint64_t seed)
+{
+    Rng g(seed ^ 0x5EEDF00D1A7E0000ull);
+    GeneratedProfile out;
+    out.seed = seed;
+    for (out.attempts = 1; out.attempts <= 100; ++out.attempts) {
+        std::vector<std::string> shapes;
+        TurnedProfile p = drawProfile(g, true, &shapes);
+        const Resolution r = resolveProfile(p);
+        if (!r.ok() || r.profile.edges.size() < 2) continue;
+        if (g.chance(0.6)) p.allowances = drawAllowances(g, r.profile);
+        out.profile = std::move(p);
+        out.shapes = std::move(shapes);
+        out.options.noseRadius = 0.4;
+        out.options.toolName = "T102";
+        return out;
+    }
+    return out;
 }
 
 Intrusion deepestIntoPart(const ResolvedProfile& part, const DeformedProfile& deformed)

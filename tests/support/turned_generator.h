@@ -30,9 +30,18 @@ struct GeneratedProfile {
     turning::AllowanceOptions options;  // the finishing tool's nose radius for tangent joints
     std::uint64_t seed = 0;
     int attempts = 0;  // profiles drawn until one resolved
+    std::vector<std::string> shapes;  // generateLathePart: "ridge", "front rounding", "fillet under 0.4", …
 };
 
 GeneratedProfile generateTurnedProfile(std::uint64_t seed);
+
+// Lathe parts for planning (issue 33, item 3): the same drawing with the
+// shapes the planner tripped on added: acute ridges (a taper rising 45-75°,
+// then one falling 30-60°), a rounding at the front corner, roundings at
+// concave corners (fillets) smaller and larger than the library's nose
+// radii; an allowance table on 60% of them. A stream of its own: the seeds
+// of generateTurnedProfile draw what they drew before.
+GeneratedProfile generateLathePart(std::uint64_t seed);
 
 // The deepest point of the deformed profile inside the part (the region the
 // profile as drawn bounds, closed as the deformer closes it): its depth
@@ -77,22 +86,33 @@ struct GeneratorTally {
 // what stopped the plan, or the findings by kind.
 struct PlanCheck {
     bool planned = false;
+    bool fatal = false;     // a finding the tape must not run with (all but rest material)
+    bool rs274Run = false;  // the linuxcnc tape was read by rs274 (planAndVerify's `rs274`)
+    std::string rs274Refusal;  // and what it refused it for; empty: it ran
+    std::vector<std::string> warnings;  // the plan's notes (warnings): what it leaves and why
     std::string refusedOn;  // the first error's field
     std::string refusal;
     std::map<std::string, int> findings;        // by kind: "gouge", "rapid-into-stock", …
     std::map<std::string, std::string> first;   // the first finding of each kind in words
 };
-PlanCheck planAndVerify(const GeneratedProfile& g);
+// `rs274`: the linuxcnc tape also run through LinuxCNC's rs274 with the
+// library's nose radii as its tool table (tests/support/rs274.h; hold the
+// rs274 lock).
+PlanCheck planAndVerify(const GeneratedProfile& g, bool rs274 = false);
+// The same for a profile of the caller's (seed 0).
+PlanCheck planAndVerify(const turning::TurnedProfile& profile, bool rs274);
 
 // The counts of plans: planned, refused (by field), clean, and per finding
 // kind the profiles that have it with their first seeds.
 struct PlanTally {
-    int profiles = 0, planned = 0, clean = 0;
-    std::map<std::string, int> refusedOn, withFinding;
+    int profiles = 0, planned = 0, clean = 0, rs274Run = 0, rs274Refused = 0;
+    std::map<std::string, int> refusedOn, withFinding, shapes;
     std::map<std::string, std::vector<std::uint64_t>> seeds;  // the first 5 per kind
     std::map<std::string, std::string> example;              // the first finding of each kind in words
     std::map<std::string, std::string> refusal;              // the first refusal on each field
-    void add(std::uint64_t seed, const PlanCheck& c);
+    std::vector<std::uint64_t> rs274Seeds, fatalSeeds;  // the first 5 the tape of which rs274 refused / with a fatal finding
+    std::string rs274Example;
+    void add(std::uint64_t seed, const PlanCheck& c, const std::vector<std::string>& shapes = {});
     std::string summary() const;
 };
 

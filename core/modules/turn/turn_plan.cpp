@@ -91,14 +91,14 @@ std::vector<const Tool*> Planner::inserts() const
     return v;
 }
 
-int Planner::firstUnreached(const Tool& t, std::size_t from, std::size_t to) const
+int Planner::firstUnreached(const Tool& t, std::size_t from, std::size_t to, bool tightArcs) const
 {
     const auto g = *insertGeometry(t);
     for (std::size_t i = from; i < to; ++i) {
         const Segment& s = chain_[i];
         if (!reaches(g, s, side_)) return static_cast<int>(i);
         // A concave arc (material outside the arc's circle) must be wider than the nose.
-        if (s.arc) {
+        if (s.arc && tightArcs) {
             const bool materialOutside = (s.ccw ? 1.0 : -1.0) * s_ < 0;  // a turn away from the material
             if (materialOutside && s.radius <= g.noseRadius + kTol) return static_cast<int>(i);
         }
@@ -115,7 +115,7 @@ bool Planner::mustReach(std::size_t i) const
 std::vector<bool> Planner::reachedBy(const Tool& t) const
 {
     std::vector<bool> ok(chain_.size(), true);
-    for (std::size_t i = first_; i < last_; ++i) ok[i] = !mustReach(i) || firstUnreached(t, i, i + 1) < 0;
+    for (std::size_t i = first_; i < last_; ++i) ok[i] = !mustReach(i) || firstUnreached(t, i, i + 1, false) < 0;
     return ok;
 }
 

@@ -104,7 +104,20 @@ void Planner::planFinishing(const Tool& tool)
         i = run->second;
     }
     crossGrindingStockRuns(contour, tool);
+    // A step back toward the front at the end (an allowance's side coming
+    // back to the part's last point): the nose on it would sit behind
+    // and below that point, in the part; the contour ends before it.
+    while (contour.size() > 1 && !contour.back().arc && contour.back().b.z > contour.back().a.z + 1e-6) contour.pop_back();
+    // Likewise a step up shorter than the nose at the start (an allowance's
+    // side at the front corner): entering along -Z onto its foot, the nose
+    // would sit over what follows it, in the part; the contour starts after it.
+    while (contour.size() > 1 && !contour.front().arc && length(contour.front()) < rn &&
+           s_ * (contour.front().b.r - contour.front().a.r) > std::abs(contour.front().b.z - contour.front().a.z))
+        contour.erase(contour.begin());
+    bridgeTightArcs(contour, rn, tool);
     reachableCorners(contour, rn);
+    // The lines that makes at arcs, at line corners in their turn.
+    if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
     TurnPath& p = ts.path;
     const ZR first = contour.front().a;
     const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};
@@ -120,10 +133,18 @@ void Planner::planFinishing(const Tool& tool)
         else p.moves.push_back({TurnMove::Feed, s.b, {}, FeedKind::Cut});
     }
     p.compTo = static_cast<int>(p.moves.size());
-    // Off the part with compensation cancelled: up and forward.
+    // Off the part with compensation cancelled: up and forward, unless
+    // the last element falls toward its end (the tool would go back into
+    // it): then straight out, away from it.
+    // Straight out: the control cancels compensation moving the nose
+    // centre in a line from where it touches the last element, so the
+    // programmed end is that centre moved out, plus the tip's offset.
     const ZR last = contour.back().b;
-    p.moves.push_back({TurnMove::Feed, {last.z + t_.clearance, last.r + s_ * (t_.clearance + 2.0 * rn)}, {}, FeedKind::Cut});
-    p.moves.push_back({TurnMove::Rapid, {last.z + t_.clearance, safeR()}, {}, FeedKind::Cut});
+    const ZR away = airNormal(tangentAtEnd(contour.back()));
+    const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
+    if (dot(unit(exit), away) > 0.25) p.moves.push_back({TurnMove::Feed, last + exit, {}, FeedKind::Cut});
+    else p.moves.push_back({TurnMove::Feed, last + rn * away + ZR{0.0, s_ * (t_.clearance + 2.0 * rn)} + ts.tipFromCentre, {}, FeedKind::Cut});
+    p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
     // Out of a bore along the axis before the turret moves on.
     if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
     addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));
@@ -166,6 +187,11 @@ void Planner::crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& 
             for (const auto& e : chain_)
                 for (const ZR x : crossings(e, chord))
                     clear = clear && (dist(x, p) < 1e-7 || dist(x, q) < 1e-7);
+            // Nor under what it skips (a convex arc it ends on bulges over it).
+            std::vector<Segment> skipped(contour.begin() + static_cast<long>(ka), contour.begin() + static_cast<long>(kb) + 1);
+            if (dist(p, before.b) > 1e-9) skipped.push_back(piece(before, p, before.b));
+            if (dist(after.a, q) > 1e-9) skipped.push_back(piece(after, after.a, q));
+            clear = clear && !overChord(skipped, chord);
             if (!clear) continue;
             const Segment head = piece(before, before.a, p), tail = piece(after, q, after.b);
             contour.erase(contour.begin() + static_cast<long>(ka) - 1, contour.begin() + static_cast<long>(kb) + 2);
@@ -206,6 +232,10 @@ void Planner::reachableCorners(std::vector<Segment>& contour, double rn)
         const bool corner = length(contour[m]) <= left && convexAfter(m);
         const ZR q = corner ? contour[m].b : pointAt(contour[m], left);
         const Segment chord = lineSegment(A.a, q);
+        std::vector<Segment> skipped(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m));
+        if (corner) skipped.push_back(contour[m]);
+        else if (dist(contour[m].a, q) > 1e-9) skipped.push_back(piece(contour[m], contour[m].a, q));
+        if (overChord(skipped, chord)) continue;  // it would cut what it skips
         if (corner) {
             contour.erase(contour.begin() + static_cast<long>(k), contour.begin() + static_cast<long>(m) + 1);
             contour.insert(contour.begin() + static_cast<long>(k), chord);

@@ -79,16 +79,22 @@ void Planner::planRoughing()
             if (a - rn >= zFront_ - 1e-6) continue;  // in front of the face: air
             const bool front = b >= zApproach - 1e-9;
             if (!front) {
-                // A pocket: plunge at its front end from the level above.
-                if (!F.segmentFree({b, rPrev}, {b, rc})) {
+                // A pocket: plunge at its front end from the level above, the
+                // rapid stopping a retract short of it (on it, the insert
+                // touches the stock at rapid speed).
+                const double above = s_ > 0 ? std::min(rPrev + t_.retract, rSafe) : std::max(rPrev - t_.retract, rSafe);
+                if (!F.segmentFree({b, above}, {b, rc})) {
                     left = true;
                     continue;
                 }
                 w.rapid({currentZ(w), rSafe});
                 w.rapid({b, rSafe});
-                w.rapid({b, rPrev});
+                w.rapid({b, above});
                 w.feed({b, rc}, FeedKind::Plunge);
             } else {
+                // Back from a pocket (the tool above the bar behind the
+                // profile): over to the front first, then down to the level.
+                if (std::abs(currentZ(w) - zApproach) > 1e-9) w.rapid({zApproach, rSafe});
                 w.rapid({zApproach, rc});
             }
             w.feed({a, rc});
@@ -133,6 +139,24 @@ std::optional<TurnCycle> Planner::roughingCycle(const Tool& tool, double surface
     const ZR out{end.z, surface + s_ * t_.clearance};
     if (s_ * (out.r - end.r) > kTol) c.contour.push_back(lineSegment(end, out));
     c.start = {zFront_ + t_.clearance, surface + s_ * t_.clearance};
+    // LinuxCNC's G71 cannot take two lines in a row on one line ("Cannot
+    // intersect parallel lines"): such lines are joined, and a contour
+    // that starts along Z starts at the cycle's start plane (the post's
+    // approach to the first point would be another such line).
+    std::vector<Segment> joined;
+    for (const Segment& s : c.contour) {
+        if (!joined.empty() && !s.arc && !joined.back().arc) {
+            const ZR u = unit(joined.back().b - joined.back().a), v = unit(s.b - s.a);
+            if (std::abs(cross(u, v)) < 1e-9 && dot(u, v) > 0) {
+                joined.back() = lineSegment(joined.back().a, s.b);
+                continue;
+            }
+        }
+        joined.push_back(s);
+    }
+    if (!joined.front().arc && std::abs(joined.front().a.r - joined.front().b.r) < 1e-9 && joined.front().a.z < c.start.z)
+        joined.front() = lineSegment({c.start.z, joined.front().a.r}, joined.front().b);
+    c.contour = std::move(joined);
     c.depthOfCut = t_.depthOfCut;
     c.allowanceX = t_.allowanceX;
     c.allowanceZ = t_.allowanceZ;

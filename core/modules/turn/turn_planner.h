@@ -130,8 +130,10 @@ private:
 
     // The first element (from the turned contour on) an insert cannot cut,
     // or -1: its holder's angles (no back-cut beyond the clearance) and its
-    // nose in concave arcs.
-    int firstUnreached(const Tool& t, std::size_t from, std::size_t to) const;
+    // nose in concave arcs. `tightArcs` false: a concave arc tighter than
+    // the nose counts as reached (the finishing contour bridges it,
+    // bridgeTightArcs).
+    int firstUnreached(const Tool& t, std::size_t from, std::size_t to, bool tightArcs = true) const;
 
     // The part's own surfaces (as drawn, and the moved edges the grinder
     // finishes) must be turned; the allowance's sides and relief grooves
@@ -194,6 +196,24 @@ private:
     // the nose touches the next line, as far along it as needed: what the
     // nose leaves there is the fillet it cannot help leaving.
     void reachableCorners(std::vector<Segment>& contour, double rn);
+
+    // turn_plan_corners.cpp. A concave arc (the material outside its circle).
+    bool concaveArc(const Segment& s) const;
+    // Whether any of the elements a chord replaces lies on its air side
+    // (the nose along the chord would cut it).
+    bool overChord(const std::vector<Segment>& skipped, const Segment& chord) const;
+    // A concave arc no wider than the nose (a fillet, a picked rounding):
+    // the compensated path cannot follow it (the control refuses it: "Arc
+    // move in concave corner cannot be reached by the tool without
+    // gouging"). The contour leaves it: its neighbours run on along their
+    // tangents where the nose touches both, to the corner they make there,
+    // and a note says how much material the nose leaves in it.
+    void bridgeTightArcs(std::vector<Segment>& contour, double rn, const Tool& tool);
+    // reachableCorners for a concave corner next to an arc: where the nose
+    // touching both would lie beyond one of them (a short step between two
+    // arcs, at an allowance's end), that one is replaced by a line to where
+    // the nose touches the other, a little past it. Whether it changed any.
+    bool reachableArcCorners(std::vector<Segment>& contour, double rn);
 
     // ---- grooving --------------------------------------------------------
 

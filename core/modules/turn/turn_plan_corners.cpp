@@ -1,0 +1,157 @@
+// Turning steps: the finishing contour where the nose cannot follow the
+// profile (turn_planner.h): concave arcs tighter than the nose bridged
+// where the nose touches both neighbours, and concave corners next to an
+// arc whose elements are too short to hold the nose (docs/turning.md,
+// "Finishing").
+#include "modules/turn/turn_planner.h"
+
+namespace taiwa::turning::planner {
+
+namespace {
+
+// The foot of `p` on the curve `s` lies on.
+ZR footOn(const Segment& s, ZR p)
+{
+    if (s.arc) return s.centre + s.radius * unit(p - s.centre);
+    const ZR t = unit(s.b - s.a);
+    return s.a + dot(p - s.a, t) * t;
+}
+
+}  // namespace
+
+bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chord) const
+{
+    const ZR d = unit(chord.b - chord.a);
+    for (const Segment& e : skipped)
+        for (int i = 0; i <= 16; ++i) {
+            const ZR x = pointAt(e, length(e) * i / 16.0);
+            // The material lies left of the travel outside, right of it in a bore.
+            if (s_ * cross(d, x - chord.a) < -1e-6) return true;
+        }
+    return false;
+}
+
+bool Planner::concaveArc(const Segment& s) const { return s.arc && (s.ccw ? 1.0 : -1.0) * s_ < 0; }
+
+void Planner::bridgeTightArcs(std::vector<Segment>& contour, double rn, const Tool& tool)
+{
+    // The nose placed a little wider than it is (2 µm): the lines it is
+    // programmed along then hold it with room to spare, as the control's
+    // compensation wants.
+    const double rb = rn + 0.002;
+    const int air = inner_ ? 1 : -1;  // the air side of the travel (offset's side)
+    std::vector<std::string> left;
+    double thickest = 0.0;
+    for (std::size_t k = 1; k + 1 < contour.size(); ++k) {
+        const Segment arc = contour[k];
+        if (!concaveArc(arc) || arc.radius > rn + 1e-3) continue;
+        const Segment A = contour[k - 1], B = contour[k + 1];
+        std::string id = "a concave arc";
+        for (std::size_t i = first_; i < last_; ++i)
+            if (dist(chain_[i].a, arc.a) < 1e-7 && dist(chain_[i].b, arc.b) < 1e-7) id = d_.edges[i].id;
+        // The nose centre against both neighbours, nearest the arc.
+        const auto oa = offset(A, rb, air), ob = offset(B, rb, air);
+        std::optional<ZR> c;
+        if (oa && ob) c = nearest(intersections(curveOf(*oa), curveOf(*ob)), arc.centre);
+        bool bridged = false;
+        if (c && dist(*c, arc.centre) < 4.0 * rn) {
+            const ZR p1 = footOn(A, *c), p2 = footOn(B, *c);
+            const ZR t1 = tangentAt(A, p1), t2 = tangentAt(B, p2);
+            const auto hit = intersections(lineThrough(p1, t1), lineThrough(p2, t2));
+            if (contains(A, p1, 1e-7) && contains(B, p2, 1e-7) && !hit.empty() && dot(hit.front() - p1, t1) > 0 &&
+                dot(p2 - hit.front(), t2) > 0) {
+                const ZR t = hit.front();
+                std::vector<Segment> bridge;
+                if (A.arc) {
+                    if (dist(A.a, p1) > 1e-9) bridge.push_back(piece(A, A.a, p1));
+                    bridge.push_back(lineSegment(p1, t));
+                } else {
+                    bridge.push_back(lineSegment(A.a, t));
+                }
+                if (B.arc) {
+                    bridge.push_back(lineSegment(t, p2));
+                    if (dist(p2, B.b) > 1e-9) bridge.push_back(piece(B, p2, B.b));
+                } else {
+                    bridge.push_back(lineSegment(t, B.b));
+                }
+                contour.erase(contour.begin() + static_cast<long>(k) - 1, contour.begin() + static_cast<long>(k) + 2);
+                contour.insert(contour.begin() + static_cast<long>(k) - 1, bridge.begin(), bridge.end());
+                // The most the nose (rn, where the lines hold it) leaves: on
+                // the line from its centre through the arc's centre.
+                thickest = std::max(thickest, dist(*c, arc.centre) + arc.radius - rn);
+                bridged = true;
+            }
+        }
+        if (!bridged) {
+            // No place where the nose touches both (a neighbour too short):
+            // across the arc's chord, which lies in the air; the corners at
+            // its ends are reachableCorners'.
+            contour[k] = lineSegment(arc.a, arc.b);
+            thickest = std::max(thickest, arc.radius);
+        }
+        left.push_back(fmt::format("{} (R{})", id, len(arc.radius)));
+    }
+    if (!left.empty())
+        note(fmt::format("{} is tighter than the nose R{} of {}: the finishing contour bridges it where the nose touches "
+                         "both neighbours and leaves up to {} of material in the corner; cut it with a smaller nose or "
+                         "a form tool",
+                         fmt::join(left, ", "), len(rn), toolWords(tool), len(thickest)));
+}
+
+bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
+{
+    bool any = false;
+    const int air = inner_ ? 1 : -1;
+    const auto replaceable = [&](const Segment& s) { return !s.arc || concaveArc(s); };
+    for (int guard = 0; guard < 1000; ++guard) {
+        bool changed = false;
+        for (std::size_t k = 0; k + 1 < contour.size() && !changed; ++k) {
+            const Segment A = contour[k], B = contour[k + 1];
+            if (!A.arc && !B.arc) continue;  // reachableCorners'
+            if (cross(tangentAtEnd(A), tangentAtStart(B)) * (inner_ ? -1.0 : 1.0) >= -1e-9) continue;  // convex
+            const auto oa = offset(A, rn, air), ob = offset(B, rn, air);
+            std::optional<ZR> c;
+            if (oa && ob) c = nearest(intersections(curveOf(*oa), curveOf(*ob)), A.b);
+            if (!c || dist(*c, A.b) > 4.0 * rn) {
+                // Nowhere near the corner does the nose touch both.
+                if (!replaceable(A) || !replaceable(B)) continue;
+                contour[k] = lineSegment(A.a, B.b);
+                contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                changed = true;
+                continue;
+            }
+            const bool onA = contains(*oa, *c, 1e-7), onB = contains(*ob, *c, 1e-7);
+            if (onA && onB) continue;
+            // A line replacing the short one ends on the other only where
+            // that is a line or a concave arc (a convex one bulges over it).
+            const ZR fb = footOn(B, *c), fa = footOn(A, *c);
+            if (!onA && replaceable(A) && replaceable(B) && contains(B, fb, 1e-7)) {
+                // A too short: from its start to where the nose touches B, a little on.
+                const double at = std::min(length(B), parameterOf(B, fb) + 0.05);
+                const ZR q = pointAt(B, at);
+                contour[k] = lineSegment(A.a, q);
+                if (at >= length(B) - 1e-9) contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                else contour[k + 1] = piece(B, q, B.b);
+                changed = true;
+            } else if (!onB && replaceable(B) && replaceable(A) && contains(A, fa, 1e-7)) {
+                // B too short: from where the nose touches A, a little before, straight to B's end.
+                const double at = std::max(0.0, parameterOf(A, fa) - 0.05);
+                const ZR q = pointAt(A, at);
+                contour[k + 1] = lineSegment(q, B.b);
+                if (at <= 1e-9) contour.erase(contour.begin() + static_cast<long>(k));
+                else contour[k] = piece(A, A.a, q);
+                changed = true;
+            } else if (replaceable(A) && replaceable(B)) {
+                // Both too short: one line across both (in the air: lines and concave arcs).
+                contour[k] = lineSegment(A.a, B.b);
+                contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                changed = true;
+            }
+        }
+        if (!changed) break;
+        any = true;
+    }
+    return any;
+}
+
+}  // namespace taiwa::turning::planner
