@@ -67,7 +67,7 @@ Usage:
                                    limit is found (exit 3), unless --force,
                                    which writes them into the sheet in red;
                                    the sheet shows each step's stock in a
-                                   picture (drawn offscreen: needs a display)
+                                   picture (drawn on the processor: no display)
   taiwa export --from-store NAME --out DIR [...]
                                    the same for the newest version of job NAME
                                    of the shop server's store (TAIWA_TOOL_DB)
@@ -318,8 +318,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.programNumber = programNumber;
     e.verificationFaults = faults;
     e.posted = tape ? &*tape : nullptr;
-    if (o.pictures) stepPicturesFor(l.plan, e);
-    if (o.pictures) setupPictureFor(l.plan, e);
+    if (o.pictures) picturesFor(l.plan, e);
     const auto written = exportPlan(l.plan, o.out, stem, e);
     if (!written) {
         std::cerr << "taiwa: export: " << written.error() << '\n';

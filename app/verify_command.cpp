@@ -8,11 +8,7 @@
 #include "post/post.h"
 #include "verify/two_path_check.h"
 
-#if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
-#define TAIWA_WITH_RENDER 1
-#include "viz/render.h"
-#include "viz/setup_picture.h"
-#endif
+#include "export/sheet_pictures.h"
 
 #include <nlohmann/json.hpp>
 
@@ -107,31 +103,11 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
     return r.fatal() || twoPathFault;
 }
 
-// At most kMaxPictures: a very large job's sheet stays small and quick.
-constexpr int kMaxPictures = 200;
-void stepPicturesFor(const Plan& plan, ExportOptions& e)
+// Drawn by the core on the processor: no display needed (export/sheet_pictures.h).
+void picturesFor(const Plan& plan, ExportOptions& e)
 {
-    if (plan.steps.empty()) return;
-#ifdef TAIWA_WITH_RENDER
-    auto pictures = viz::stepPictures(plan, 320, 240, kMaxPictures);
-    if (!pictures) {
-        e.picturesNote = "No pictures: " + pictures.error() + ".";
-        return;
-    }
-    e.stepPictures = std::move(*pictures);
-    if (plan.steps.size() > e.stepPictures.size())
-        e.picturesNote = "Pictures of the first " + std::to_string(e.stepPictures.size()) + " of " +
-                         std::to_string(plan.steps.size()) + " steps.";
-#else
-    e.picturesNote = "No pictures: this build has no 3-D view.";
-#endif
-}
-
-void setupPictureFor([[maybe_unused]] const Plan& plan, [[maybe_unused]] ExportOptions& e)
-{
-#ifdef TAIWA_WITH_RENDER
-    if (auto picture = viz::setupPicture(plan, 320, 240)) e.setupPicture = std::move(*picture);
-#endif
+    if (const std::string problem = addSheetPictures(plan, e); !problem.empty())
+        std::cerr << "taiwa: export: pictures missing: " << problem << '\n';
 }
 
 }  // namespace taiwa::app

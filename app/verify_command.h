@@ -27,15 +27,9 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
 // (--json) as one document; whether it found anything fatal.
 bool printVerification(const Plan& plan, const Options& o, const std::string& name, const std::string& dialect);
 
-// The sheet's pictures of the steps into `e`, drawn offscreen by the 3-D
-// view's renderer; without a display (or a build without the view) the
-// note says why there are none.
-void stepPicturesFor(const Plan& plan, ExportOptions& e);
-
-// The setup picture into `e` (the stock in its vice or chuck and the work
-// offset's origin, viz::setupPicture, 320 x 240 like the steps'); none
-// without a display or in a build without the 3-D view (the steps'
-// pictures' note says why).
-void setupPictureFor(const Plan& plan, ExportOptions& e);
+// The sheet's setup picture and step pictures into `e`, drawn by the core
+// on the processor (no display needed); where one cannot be made, the
+// sheet's note and stderr say why.
+void picturesFor(const Plan& plan, ExportOptions& e);
 
 }  // namespace taiwa::app

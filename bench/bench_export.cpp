@@ -1,9 +1,12 @@
 // End-to-end export of a 1,000-unit job: planning (checks, decomposition,
 // tool choice, tool paths), posting G-code, and the whole export with sheet
-// and PDF. Prints G-code bytes and blocks per second and the export time.
+// and PDF. Prints G-code bytes and blocks per second and the export time,
+// and the export with the sheet's pictures (drawn by the core, no display:
+// goal <= 3 s) beside the same export without them in the same run.
 #include "bench_job.h"
 #include "export/export.h"
 #include "export/sheet_pdf.h"
+#include "export/sheet_pictures.h"
 #include "paths/cl.h"
 #include "sheet/sheet.h"
 #include "pipeline/pipeline.h"
@@ -108,21 +111,31 @@ BENCHMARK_CAPTURE(BM_Sheet, steps_json, 2)->Unit(benchmark::kMillisecond);
 
 // The whole export as `taiwa export` does it (plan + five files incl. PDF),
 // from scratch each time (nothing proved kept).
-void BM_ExportEndToEnd(benchmark::State& state, bool distinct)
+// With `pictures`: the setup's and the first 200 steps' (export/sheet_pictures.h), as
+// `taiwa export` draws them; the same export without them is its anchor.
+void BM_ExportEndToEnd(benchmark::State& state, bool distinct, bool pictures)
 {
     const Job job = bigJob(bench::kUnits, distinct);
     QTemporaryDir dir;
+    std::size_t drawn = 0;
     for (auto _ : state) {
         state.PauseTiming();
         forgetProvedLayers();
         state.ResumeTiming();
         const Plan plan = planJob(job, TechnologyTable::builtIn(), library());
-        const auto written = exportPlan(plan, dir.path().toStdString(), "bench", {});
+        ExportOptions o;
+        if (pictures) {
+            if (const std::string problem = addSheetPictures(plan, o); !problem.empty()) state.SkipWithError(problem.c_str());
+            drawn = o.stepPictures.size() + (o.setupPicture.empty() ? 0 : 1);
+        }
+        const auto written = exportPlan(plan, dir.path().toStdString(), "bench", o);
         if (!written) state.SkipWithError(written.error().c_str());
     }
+    state.counters["pictures"] = static_cast<double>(drawn);
 }
-BENCHMARK_CAPTURE(BM_ExportEndToEnd, repeated, false)->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_CAPTURE(BM_ExportEndToEnd, distinct, true)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_ExportEndToEnd, repeated, false, false)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ExportEndToEnd, repeated_pictures, false, true)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ExportEndToEnd, distinct, true, false)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

@@ -3,7 +3,7 @@
 // old set whole, says so and exits non-zero; a link planted where temporaries
 // or the old fixed-name partial PDF go is never followed; 30 exports of two
 // jobs into one folder at once leave one job's set; temporaries of a killed
-// export are gone after the next one.
+// export are gone after the next one; no lock file is left in the folder.
 #include "support/support.h"
 #include "tools/tool_library.h"
 
@@ -34,12 +34,13 @@ std::map<QString, std::string> setOf(const QString& dir, const QString& stem)
     return out;
 }
 
-// Hidden leftovers of an export: temporaries and partial files (the lock file is not one).
+// Hidden leftovers of an export: temporaries, partial files, a journal,
+// and any lock file (the lock lives in the user's runtime folder).
 QStringList leftovers(const QString& dir)
 {
     QStringList out;
     for (const QString& f : QDir(dir).entryList(QDir::Files | QDir::Hidden | QDir::System))
-        if (f.contains(".tmp-") || f.endsWith(".partial")) out << f;
+        if (f.contains(".tmp-") || f.endsWith(".partial") || f.endsWith(".lock") || f.endsWith(".set")) out << f;
     return out;
 }
 
@@ -152,7 +153,9 @@ private slots:
             QVERIFY(set.at(".sheet.pdf").starts_with("%PDF"));
             QVERIFY(set.at(".sheet.pdf").find("%%EOF") != std::string::npos);
         }
-        QVERIFY(leftovers(out).isEmpty());
+        QVERIFY2(leftovers(out).isEmpty(), qPrintable(leftovers(out).join(' ')));
+        // The folder holds the set and nothing else.
+        QCOMPARE(QDir(out).entryList(QDir::Files | QDir::Hidden | QDir::System).size(), qsizetype{5});
     }
 
     void controlCharactersAndPercentStayInert()

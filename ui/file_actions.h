@@ -1,6 +1,7 @@
 // The File menu's work: new, open, save, save as, recent files (QSettings),
 // the unsaved-changes prompt (skipped when TAIWA_NO_PROMPTS=1), recovery of
-// an autosaved job at start, and export of the planned job.
+// an autosaved job at start, and export of the planned job (its dialog:
+// ui/export_dialog.h).
 #pragma once
 
 #include <QObject>
@@ -14,6 +15,7 @@ namespace taiwa::ui {
 class JobDocument;
 class PlanRunner;
 class Autosaver;
+struct ExportChoice;
 
 class FileActions : public QObject {
     Q_OBJECT
@@ -33,7 +35,13 @@ public:
     bool save();
     bool saveAs();
     bool saveTo(const QString& path);
+    // Asks with the export dialog (ui/export_dialog.h), then exportTo().
     void exportJob();
+    // Verifies the planned job at the choice's resolution (faults written
+    // only when the operator agrees; never without prompts), draws the
+    // sheet's pictures as `taiwa export` does, and writes the export's
+    // files; says what it did in message(). Whether the files were written.
+    bool exportTo(const ExportChoice& choice);
     // True when the job may be dropped (saved, discarded, or not modified).
     bool maybeSave();
     // At start: offer the recovery file of jobPath (empty: untitled) left by a

@@ -7,7 +7,6 @@
 #include "viz/render.h"
 
 #include "io/job_io.h"
-#include "sim/stock_simulation.h"
 
 #include "verify/deviation.h"
 #include "viz/scene.h"
@@ -108,36 +107,6 @@ std::string pngOf(vtkRenderWindow* window)
     vtkUnsignedCharArray* png = writer->GetResult();
     if (writer->GetErrorCode() != 0 || !png || png->GetNumberOfValues() == 0) return {};
     return std::string(reinterpret_cast<const char*>(png->GetPointer(0)), static_cast<std::size_t>(png->GetNumberOfValues()));
-}
-
-Result<std::vector<std::string>> stepPictures(const Plan& plan, int width, int height, int limit)
-{
-    std::vector<std::string> out;
-    const int n = std::min(static_cast<int>(plan.steps.size()), limit);
-    if (n <= 0) return out;
-    const OffscreenWindow offscreen(width, height);
-    if (offscreen.problem()) return Failure{*offscreen.problem()};
-    vtkRenderWindow* window = offscreen.window();
-    // A picture has fewer pixels than the preview's stock grid has cells:
-    // the stock on a grid of about one cell per pixel, and the step's own
-    // paths only (a 1,000-unit job's 200 pictures: 19 s -> see
-    // docs/instruction-sheet.md).
-    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    const auto shared = std::make_shared<const Plan>(plan);
-    Scene scene;
-    scene.setPlan(shared, plan.mmJob.bar ? nullptr : std::make_shared<sim::StockSimulation>(*shared, sim::StockGrid{0.25, pixels}));
-    scene.setOtherPathsHidden(true);
-    scene.setShowStock(true);
-    scene.setView(ViewPreset::Iso, static_cast<double>(width) / height);
-    window->AddRenderer(scene.renderer());
-    for (int k = 0; k < n; ++k) {
-        scene.setSelectedStep(k);
-        window->Render();
-        std::string png = pngOf(window);
-        if (png.empty()) return Failure{"cannot encode the picture of step " + std::to_string(k + 1)};
-        out.push_back(std::move(png));
-    }
-    return out;
 }
 
 Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::string& pngPath)

@@ -45,12 +45,6 @@ constexpr int kMaxRenderSide = 4096;
 
 Result<void> renderToPng(const Plan& plan, const RenderOptions& options, const std::string& pngPath);
 
-// The instruction sheet's pictures: the stock after each step with the
-// step's path and tool (iso view, width x height pixels), PNG bytes per
-// step for the first `limit` steps, drawn one after the other in one
-// offscreen window. The error when there is no display to draw on.
-Result<std::vector<std::string>> stepPictures(const Plan& plan, int width, int height, int limit);
-
 // The window's picture as PNG bytes; empty when it cannot be encoded.
 std::string pngOf(vtkRenderWindow* window);
 

@@ -1,6 +1,8 @@
 // The stock surface lit on the processor (viz/surface_light.h).
 #include "viz/surface_light.h"
 
+#include "picture/light.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -25,24 +27,12 @@ namespace taiwa::viz {
 
 namespace {
 
-using Vec = std::array<double, 3>;
-
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-Vec normalised(Vec v)
-{
-    const double len = std::sqrt(dot(v, v));
-    if (len > 0)
-        for (double& k : v) k /= len;
-    return v;
-}
-
-// A light as the shader sees it: the direction it shines in, in view
-// coordinates, and its colour times its intensity.
-struct ViewLight {
-    Vec direction;
-    Vec colour;
-};
+// The lighting's math is the core's (picture/light.h): the sheet's
+// pictures are lit with the same function.
+using Vec = picture::Vec3;
+using picture::dot;
+using picture::normalised;
+using picture::ViewLight;
 
 std::vector<ViewLight> viewLights(vtkRenderer* renderer, const vtkMatrix4x4* view)
 {
@@ -137,13 +127,7 @@ bool lightSurface(vtkPolyData* surface, vtkRenderer* renderer, double ambient, d
                 pv[i] = view->GetElement(i, 0) * p[0] + view->GetElement(i, 1) * p[1] + view->GetElement(i, 2) * p[2] + view->GetElement(i, 3);
             front = dot(nv, pv) < 0;
         }
-        if (!front)
-            for (double& k : nv) k = -k;
-        Vec light{ambient, ambient, ambient};
-        for (const ViewLight& l : lights) {
-            const double df = std::max(0.0, -dot(nv, l.direction));
-            for (int i = 0; i < 3; ++i) light[i] += diffuse * df * l.colour[i];
-        }
+        const Vec light = picture::lightFactor(nv, front, lights, ambient, diffuse);
         for (vtkIdType k = 0; k < n; ++k) {
             const vtkIdType id = ids[k];
             if (id < 0 || id >= nPoints) continue;

@@ -22,11 +22,12 @@ struct ExportOptions {
     // What the verification found wrong with a tape written anyway (taiwa
     // export --force), one sentence each: the sheet shows them in red.
     std::vector<std::string> verificationFaults;
-    // The sheet's pictures of the steps (viz::stepPictures, made by the
-    // caller: the core draws nothing) and why some are missing.
+    // The sheet's pictures of the steps, PNG bytes (addSheetPictures of
+    // export/sheet_pictures.h draws them; none unless asked) and why some
+    // are missing.
     std::vector<std::string> stepPictures;
     std::string picturesNote;
-    // The sheet's picture of the setup (viz::setupPicture), PNG bytes; empty: none.
+    // The sheet's picture of the setup (addSheetPictures), PNG bytes; empty: none.
     std::string setupPicture;
     // The tape already posted with these options (postOptions of the plan,
     // the dialect, units, program number and stem; taiwa export posts it

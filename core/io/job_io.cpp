@@ -18,6 +18,8 @@
 #include <system_error>
 
 #include <csignal>
+#include <cstdint>
+#include <cstdlib>
 #include <utility>
 
 #include <fcntl.h>
@@ -236,18 +238,41 @@ FileSet::~FileSet()
 Result<FileSet> FileSet::open(const std::string& folder, const std::string& stem)
 {
     const std::filesystem::path dir = std::filesystem::absolute(folder);
-    const std::string lockPath = (dir / ("." + stem + ".lock")).string();
-    const int fd = ::open(lockPath.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create the lock file {}: {}"), lockPath, systemError(errno))};
+    auto lockPath = lockPathFor(dir.string(), stem);
+    if (!lockPath) return Failure{lockPath.error()};
+    const int fd = ::open(lockPath->c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create the lock file {}: {}"), *lockPath, systemError(errno))};
     while (::flock(fd, LOCK_EX) != 0) {
         if (errno == EINTR) continue;
         const int error = errno;
         ::close(fd);
-        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot lock {}: {}"), lockPath, systemError(error))};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot lock {}: {}"), *lockPath, systemError(error))};
     }
     rollForward(dir, stem);
     removeStaleTemporaries(dir, stem);
+    // The empty lock file an earlier version left in the folder.
+    struct stat old {};
+    const std::string oldLock = (dir / ("." + stem + ".lock")).string();
+    if (::lstat(oldLock.c_str(), &old) == 0 && S_ISREG(old.st_mode) && old.st_size == 0) ::unlink(oldLock.c_str());
     return FileSet(dir.string(), stem, fd);
+}
+
+Result<std::string> FileSet::lockPathFor(const std::string& folder, const std::string& stem)
+{
+    // The user's runtime folder, else a folder of the user's own in the temporary one.
+    std::error_code ec;
+    const char* runtime = std::getenv("XDG_RUNTIME_DIR");
+    std::filesystem::path locks = runtime && *runtime && std::filesystem::is_directory(runtime, ec)
+                                      ? std::filesystem::path(runtime) / "taiwa-locks"
+                                      : std::filesystem::temp_directory_path(ec) / ("taiwa-locks-" + std::to_string(::getuid()));
+    if (::mkdir(locks.c_str(), 0700) != 0 && errno != EEXIST)
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot create the lock file {}: {}"), locks.string(), systemError(errno))};
+    // Keyed by the folder's canonical path (a link or "a/../b" is the same
+    // folder) and the stem: FNV-1a, 64 bits.
+    const std::string key = std::filesystem::weakly_canonical(std::filesystem::absolute(folder), ec).string() + '\n' + stem;
+    std::uint64_t h = 14695981039346656037ull;
+    for (const unsigned char c : key) h = (h ^ c) * 1099511628211ull;
+    return (locks / fmt::format("export-{:016x}.lock", h)).string();
 }
 
 Result<void> FileSet::add(const std::string& name, std::string_view bytes)

@@ -43,13 +43,18 @@ Result<void> writeFileAtomically(const std::string& path, std::string_view text)
 // between two renames leaves the journal: the next open() of the stem rolls
 // it forward, so the folder never keeps half of one set beside half of
 // another. A set not committed removes its temporaries. Sets of one stem in
-// one folder are serialised by a lock file (.STEM.lock), and temporaries of
-// that stem left by a process that died are removed when the next set is
-// opened.
+// one folder are serialised by a lock file kept outside that folder (in the
+// user's runtime folder, $XDG_RUNTIME_DIR, else the temporary folder:
+// lockPathFor), so that the folder holds nothing but the set; temporaries
+// of that stem left by a process that died are removed when the next set
+// is opened.
 class FileSet {
 public:
     // Takes the folder's lock for `stem` (waits for another set of it).
     static Result<FileSet> open(const std::string& folder, const std::string& stem);
+    // The lock file of `stem` in `folder`: one per canonical folder and
+    // stem, in the user's runtime folder (created if missing).
+    static Result<std::string> lockPathFor(const std::string& folder, const std::string& stem);
     FileSet(FileSet&& other) noexcept;
     FileSet& operator=(FileSet&&) = delete;
     ~FileSet();

@@ -78,6 +78,69 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::ExportDialog</name>
+        <message>
+            <source>Export tape and sheet</source>
+            <translation>テープと作業指示書の出力</translation>
+        </message>
+        <message>
+            <source>the folder the files are written into</source>
+            <translation>ファイルを書き込むフォルダ</translation>
+        </message>
+        <message>
+            <source>Choose…</source>
+            <translation>選択…</translation>
+        </message>
+        <message>
+            <source>Folder</source>
+            <translation>フォルダ</translation>
+        </message>
+        <message>
+            <source>Controller dialect</source>
+            <translation>NC 形式 (制御装置)</translation>
+        </message>
+        <message>
+            <source>The job's own</source>
+            <translation>ジョブの単位</translation>
+        </message>
+        <message>
+            <source>Millimetres</source>
+            <translation>ミリメートル</translation>
+        </message>
+        <message>
+            <source>Inches</source>
+            <translation>インチ</translation>
+        </message>
+        <message>
+            <source>Units</source>
+            <translation>単位</translation>
+        </message>
+        <message>
+            <source>The sheet shows the setup and every step in a picture</source>
+            <translation>作業指示書に段取りと各工程の図を載せる</translation>
+        </message>
+        <message>
+            <source>Pictures</source>
+            <translation>図</translation>
+        </message>
+        <message>
+            <source>The grid the verification cuts the steps into before the files are written: finer finds smaller gouges and takes longer.</source>
+            <translation>出力前の検証で工程を削り込む格子: 細かいほど小さな削り込みを見つけ、時間がかかります。</translation>
+        </message>
+        <message>
+            <source>Verification grid</source>
+            <translation>検証の格子</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>出力</translation>
+        </message>
+        <message>
+            <source>Export into folder</source>
+            <translation>出力先フォルダ</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
             <source>Figure elements, one statement a line</source>
@@ -244,20 +307,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>ジョブに入力エラーがあります。出力する前に修正してください。</translation>
         </message>
         <message>
-            <source>Export into folder</source>
-            <translation>出力先フォルダ</translation>
-        </message>
-        <message>
-            <source>Controller dialect</source>
-            <translation>NC 形式 (制御装置)</translation>
-        </message>
-        <message>
             <source>Export failed</source>
             <translation>出力に失敗しました</translation>
+        </message>
+        <message numerus="yes">
+            <source>The verification found %n faults (the first: %1).</source>
+            <translation>
+                <numerusform>検証で %n 件の不具合が見つかりました (最初: %1)。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Write the files anyway, with the faults on the sheet?</source>
+            <translation>不具合を作業指示書に記して、それでも出力しますか?</translation>
         </message>
         <message>
             <source>Exported %1 files into %2</source>
             <translation>%1 個のファイルを %2 に出力しました</translation>
+        </message>
+        <message>
+            <source>(pictures missing: %1)</source>
+            <translation>(図がありません: %1)</translation>
         </message>
         <message>
             <source>an untitled job</source>

@@ -78,6 +78,69 @@
         </message>
     </context>
     <context>
+        <name>taiwa::ui::ExportDialog</name>
+        <message>
+            <source>Export tape and sheet</source>
+            <translation>导出程序和作业指导书</translation>
+        </message>
+        <message>
+            <source>the folder the files are written into</source>
+            <translation>写入文件的文件夹</translation>
+        </message>
+        <message>
+            <source>Choose…</source>
+            <translation>选择…</translation>
+        </message>
+        <message>
+            <source>Folder</source>
+            <translation>文件夹</translation>
+        </message>
+        <message>
+            <source>Controller dialect</source>
+            <translation>NC 格式 (控制器)</translation>
+        </message>
+        <message>
+            <source>The job's own</source>
+            <translation>作业本身的单位</translation>
+        </message>
+        <message>
+            <source>Millimetres</source>
+            <translation>毫米</translation>
+        </message>
+        <message>
+            <source>Inches</source>
+            <translation>英寸</translation>
+        </message>
+        <message>
+            <source>Units</source>
+            <translation>单位</translation>
+        </message>
+        <message>
+            <source>The sheet shows the setup and every step in a picture</source>
+            <translation>作业指导书附装夹图和每个工步的图</translation>
+        </message>
+        <message>
+            <source>Pictures</source>
+            <translation>图</translation>
+        </message>
+        <message>
+            <source>The grid the verification cuts the steps into before the files are written: finer finds smaller gouges and takes longer.</source>
+            <translation>导出前验证切削各工步所用的网格: 越细越能发现小的过切, 也越费时。</translation>
+        </message>
+        <message>
+            <source>Verification grid</source>
+            <translation>验证网格</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>导出</translation>
+        </message>
+        <message>
+            <source>Export into folder</source>
+            <translation>导出到文件夹</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
             <source>Figure elements, one statement a line</source>
@@ -244,20 +307,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>作业有输入错误,请在导出前修正。</translation>
         </message>
         <message>
-            <source>Export into folder</source>
-            <translation>导出到文件夹</translation>
-        </message>
-        <message>
-            <source>Controller dialect</source>
-            <translation>数控系统格式</translation>
-        </message>
-        <message>
             <source>Export failed</source>
             <translation>导出失败</translation>
+        </message>
+        <message numerus="yes">
+            <source>The verification found %n faults (the first: %1).</source>
+            <translation>
+                <numerusform>验证发现 %n 个错误 (第一个: %1)。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Write the files anyway, with the faults on the sheet?</source>
+            <translation>仍然写入文件, 并在作业指导书上注明这些错误吗?</translation>
         </message>
         <message>
             <source>Exported %1 files into %2</source>
             <translation>已将 %1 个文件导出到 %2</translation>
+        </message>
+        <message>
+            <source>(pictures missing: %1)</source>
+            <translation>(缺少图: %1)</translation>
         </message>
         <message>
             <source>an untitled job</source>
