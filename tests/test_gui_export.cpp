@@ -3,11 +3,14 @@
 // sheet it writes carries the setup picture and one picture per step, the
 // same bytes as `taiwa export` draws without a display; a cancelled dialog
 // writes nothing; the folder holds the export's files and no lock file.
+#include "support/station_fixture.h"
 #include "support/support.h"
 #include "ui/export_dialog.h"
 #include "ui/file_actions.h"
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
+#include "ui/verification_panel.h"
+#include "verify/verify.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -22,6 +25,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
+
+#include <nlohmann/json.hpp>
 
 using namespace taiwa;
 using namespace taiwa::ui;
@@ -99,6 +104,47 @@ private slots:
         });
         QVERIFY(seen);
         QVERIFY(!QDir(out).exists());  // cancelled: nothing written
+    }
+
+    // One verification per export (issue 35 item 3): the station's Verify
+    // stores its report, and the export of the same plan at the same grid
+    // reads it instead of verifying again. Shown by a finding planted in the
+    // stored report: the export refuses on it; the report gone, it verifies
+    // afresh and writes.
+    void theStationsVerifyServesItsExport()
+    {
+        const QString cache = qEnvironmentVariable("TAIWA_CACHE_DIR");
+        QVERIFY(!cache.isEmpty());
+        QDir(cache).removeRecursively();
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.show();
+        test::settle(w);  // the plan made
+        w.verificationPanel()->verifyNow();
+        const QStringList stored = QDir(cache).entryList({"*.json"}, QDir::Files);
+        QCOMPARE(stored.size(), 1);
+        const QString file = QDir(cache).filePath(stored.front());
+        auto report = nlohmann::json::parse(test::readFile(file));
+        QVERIFY(report["findings"].empty());
+        report["findings"].push_back({{"kind", 3}, {"step", -1}, {"move", -1}, {"position", {0, 0, 0}},
+                                      {"size", 5.0}, {"area", 0.0}, {"part", "x"}});  // a travel limit, planted
+        test::writeFile(file, report.dump());
+        QString said;
+        connect(w.fileActions(), &FileActions::message, this, [&](const QString& m) { said = m; });
+        const double grid = verify::defaultResolution(*w.planRunner()->fullPlan());
+        const QString out = QDir(dir_.path()).filePath("cached");
+        const auto exportAtTheDefaultGrid = [&] {
+            return exportWith(w, [&](ExportDialog* d) {
+                d->findChild<QLineEdit*>("export.folder")->setText(out);
+                d->findChild<QDoubleSpinBox*>("export.resolution")->setValue(grid);
+                d->accept();
+            });
+        };
+        QVERIFY(exportAtTheDefaultGrid());
+        QVERIFY2(said.startsWith("The verification found 1 "), qPrintable(said));
+        QVERIFY(!QDir(out).exists());
+        QVERIFY(QFile::remove(file));
+        QVERIFY(exportAtTheDefaultGrid());
+        QVERIFY2(said.startsWith("Exported 5 files"), qPrintable(said));
     }
 
     void theStationsSheetHasTheSamePicturesAsTheCommandLines()

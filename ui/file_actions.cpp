@@ -9,19 +9,23 @@
 
 #include "job/job_file.h"
 #include "export/export.h"
+#include "export/sheet_pictures.h"
+#include "export/verification_cache.h"
+#include "verify/verify.h"
 #include "post/post.h"
 #include "ui/autosave.h"
+#include "ui/export_dialog.h"
 #include "ui/job_document.h"
 #include "ui/plan_runner.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace taiwa::ui {
 namespace {
@@ -156,21 +160,68 @@ void FileActions::exportJob()
         QMessageBox::warning(window_, tr("Export"), tr("The job has input errors; fix them before exporting."));
         return;
     }
-    const QString dir = QFileDialog::getExistingDirectory(window_, tr("Export into folder"));
-    if (dir.isEmpty()) return;
     QStringList dialects;
     for (const auto& d : dialectNames()) dialects << QString::fromStdString(d);
-    bool ok = false;
-    const QString dialect = QInputDialog::getItem(window_, tr("Export"), tr("Controller dialect"), dialects,
-                                                  std::max(0, static_cast<int>(dialects.indexOf(runner_->dialect()))),
-                                                  false, &ok);
-    if (!ok) return;
+    ExportChoice initial;
+    initial.dialect = runner_->dialect();
+    initial.resolution = verify::defaultResolution(*plan);
+    ExportDialog dialog(ExportDialog::remembered(initial), dialects, window_);
+    if (dialog.exec() != QDialog::Accepted) return;
+    ExportDialog::remember(dialog.choice());
+    exportTo(dialog.choice());
+}
+
+bool FileActions::exportTo(const ExportChoice& c)
+{
+    runner_->flush();
+    const auto plan = runner_->fullPlan();
+    if (!plan || !(plan->job == doc_->job())) {
+        QMessageBox::warning(window_, tr("Export"), tr("The job has input errors; fix them before exporting."));
+        return false;
+    }
+    // Verified first, as `taiwa export` does: a fault is written only when the operator says so.
+    std::vector<std::string> faults;
+    try {
+        verify::Options v;
+        v.resolution = c.resolution;
+        // The grid the station would choose is bounded as `taiwa export`'s default is; one typed is kept.
+        if (c.resolution == verify::defaultResolution(*plan)) v.maxCellVisits = verify::kDefaultCellVisits;
+        // The station's Verify (or a `taiwa verify`) of this very plan stored its report: not run again.
+        const verify::Report report = verifyPlanCached(*plan, v);
+        for (const auto& f : report.findings)
+            if (f.fatal()) faults.push_back(verify::describe(f, *plan));
+    } catch (const std::invalid_argument& e) {
+        QMessageBox::warning(window_, tr("Export failed"), coreMessage(e.what()));
+        return false;
+    }
+    if (!faults.empty()) {
+        const QString what = tr("The verification found %n faults (the first: %1).", nullptr, static_cast<int>(faults.size()))
+                                 .arg(coreMessage(faults.front()));
+        if (promptsDisabled()) {
+            qWarning("taiwa: %s Nothing was written.", qPrintable(what));
+            emit message(what);
+            return false;
+        }
+        if (QMessageBox::question(window_, tr("Export"), what + ' ' + tr("Write the files anyway, with the faults on the sheet?")) !=
+            QMessageBox::Yes)
+            return false;
+    }
     ExportOptions eo;
-    eo.dialect = dialect.toStdString();
+    eo.dialect = c.dialect.toStdString();
+    eo.units = c.units;
     eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
-    const auto written = exportPlan(*plan, dir.toStdString(), exportStem(doc_->path()).toStdString(), eo);
-    if (!written) QMessageBox::warning(window_, tr("Export failed"), coreMessage(written.error()));
-    else emit message(tr("Exported %1 files into %2").arg(written->size()).arg(dir));
+    eo.verificationFaults = faults;
+    // The same drawing as `taiwa export`'s (export/sheet_pictures.h): the same pixels.
+    const std::string problem = c.pictures ? addSheetPictures(*plan, eo) : std::string();
+    const auto written = exportPlan(*plan, c.folder.toStdString(), exportStem(doc_->path()).toStdString(), eo);
+    if (!written) {
+        QMessageBox::warning(window_, tr("Export failed"), coreMessage(written.error()));
+        return false;
+    }
+    QString done = tr("Exported %1 files into %2").arg(written->size()).arg(c.folder);
+    if (!problem.empty()) done += ' ' + tr("(pictures missing: %1)").arg(QString::fromStdString(problem));
+    emit message(done);
+    return true;
 }
 
 bool FileActions::offerRecovery(const QString& jobPath)

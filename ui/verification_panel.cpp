@@ -2,6 +2,8 @@
 #include "ui/verification_panel.h"
 #include "ui/core_messages.h"
 
+#include "export/verification_cache.h"
+
 #include "viz/palette.h"
 
 #include <QBrush>
@@ -27,7 +29,11 @@ verify::Report reportOf(const Plan& plan)
         verify::Options o;
         o.resolution = verify::defaultResolution(plan);
         o.maxCellVisits = verify::kDefaultCellVisits;  // minutes of paths verified on a coarser grid, not minutes waited
-        return verify::verifyPlan(plan, o);
+        // Run here for the colour map (the cache keeps no height field), and
+        // stored: the export that follows finds it (export/verification_cache.h).
+        verify::Report r = verify::verifyPlan(plan, o);
+        (void)storeVerification(verificationKey(plan, o), r);
+        return r;
     } catch (const std::exception& e) {
         verify::Report r;
         r.skipped = e.what();

@@ -40,6 +40,7 @@ void isolateStation(const QString& dir)
     QStandardPaths::setTestModeEnabled(true);
     qputenv("TAIWA_AUTOSAVE_DIR", QDir(dir).filePath(QStringLiteral("autosave")).toUtf8());
     qputenv("TAIWA_NO_PROMPTS", "1");
+    qputenv("TAIWA_CACHE_DIR", QDir(dir).filePath(QStringLiteral("cache")).toUtf8());  // the verification cache
     qputenv("TAIWA_TOOL_DB", QDir(dir).filePath(QStringLiteral("tools.sqlite")).toUtf8());
 }
 

@@ -27,9 +27,9 @@ RunResult runTaiwa(const QStringList& args, const QStringList& env = {});
 // The path of that per-test-process tool library (created on first use by taiwa).
 QString testToolDb();
 
-// For tests that open the station: QStandardPaths' test mode, autosave and
-// the tool library in `dir` (a temporary folder), no questions asked
-// (TAIWA_NO_PROMPTS).
+// For tests that open the station: QStandardPaths' test mode, autosave,
+// the tool library and the verification cache in `dir` (a temporary
+// folder), no questions asked (TAIWA_NO_PROMPTS).
 void isolateStation(const QString& dir);
 
 // The shipped dialects' and machines' file stems ("fanuc", "vmc"): every
