@@ -3903,6 +3903,10 @@ Theirs: %6</source>
             <translation>指定された工具 T{} ({}) は使えません: {}</translation>
         </message>
         <message>
+            <source>no end mill that fits {} reaches the depth {} with its flutes for the finishing at full depth (F 1): the longest, {}, has flutes of {}; finish in several incisions (F 2)</source>
+            <translation>{0} に入るエンドミルで、全深さ一度の仕上げ(F 1)のために深さ {1} まで刃長が届くものはありません。最長の {2} の刃長は {3} です。複数回の切込みで仕上げてください(F 2)</translation>
+        </message>
+        <message>
             <source>{} leaves no room near ({}, {}): even the smallest end mill that fits its arcs, {}, would cut {} into it there; widen the contour there</source>
             <translation>{0} は ({1}, {2}) 付近に余地がありません。円弧に入る最小のエンドミル {3} でも、そこで {4} 食い込みます。そこで輪郭の幅を広げてください</translation>
         </message>

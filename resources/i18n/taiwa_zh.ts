@@ -3903,6 +3903,10 @@ Theirs: %6</source>
             <translation>指定的刀具 T{}（{}）不合适：{}</translation>
         </message>
         <message>
+            <source>no end mill that fits {} reaches the depth {} with its flutes for the finishing at full depth (F 1): the longest, {}, has flutes of {}; finish in several incisions (F 2)</source>
+            <translation>能进入 {0} 的立铣刀中，没有刃长能达到深度 {1} 以进行全深度一次精加工（F 1）的：最长的 {2} 刃长为 {3}；请分多次切入精加工（F 2）</translation>
+        </message>
+        <message>
             <source>{} leaves no room near ({}, {}): even the smallest end mill that fits its arcs, {}, would cut {} into it there; widen the contour there</source>
             <translation>{0} 在 ({1}, {2}) 附近没有余地：即使是能进入其圆弧的最小立铣刀 {3} 也会在该处切入 {4}；请在该处加宽轮廓</translation>
         </message>

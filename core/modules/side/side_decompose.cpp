@@ -92,6 +92,10 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
     fit.depth = m.depth;
     fit.reach = m.depth;
 
+    // Shorter flutes only where every pass cuts in layers: not a finishing
+    // pass at full depth at once (F1), whose shank would rub the wall above
+    // the flutes.
+    const bool layers = !finishes || m.wallFinish == 2;
     const Tool* tool = nullptr;
     std::string reason;
     if (const auto pin = m.tools.find("side"); pin != m.tools.end()) {
@@ -101,7 +105,7 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             return {};
         }
         tools::Fit pinned = fit;
-        pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
+        if (layers) pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
         if (!tools::fits(*tool, pinned, material)) {
             problem(
                 "tools.side",
@@ -122,6 +126,7 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
         const Tool* smallestTried = nullptr;  // and where its passes came too near the contour
         Narrow smallestNarrow;
         for (const bool fullFlutes : {true, false}) {
+            if (!fullFlutes && !layers) break;
             tools::Fit f = fit;
             if (!fullFlutes) f.depth = 0.0;
             for (const Tool& c : library)
@@ -138,6 +143,26 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             }
             if (tool) break;
             candidates.clear();
+        }
+        if (!tool && !layers) {
+            // Would one with shorter flutes do, finishing in incisions (F2)?
+            tools::Fit f = fit;
+            f.depth = 0.0;
+            const Tool* longest = nullptr;
+            for (const Tool& c : library)
+                if (tools::fits(c, f, material) && (!longest || c.fluteLength > longest->fluteLength) &&
+                    !tooNarrow(t, passesFor(m, tech, c.diameter), c.radius()))
+                    longest = &c;
+            if (longest) {
+                problem("F", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                              "no end mill that fits {} reaches the depth {} with its "
+                                                              "flutes for the finishing at full depth (F 1): the "
+                                                              "longest, {}, has flutes of {}; finish in several "
+                                                              "incisions (F 2)"),
+                                         m.contour, msg::quote({m.depth, shown}), msg::toolName(*longest),
+                                         msg::quote({longest->fluteLength, shown})));
+                return {};
+            }
         }
         if (!tool && smallestTried) {
             // End mills fit the room, but even the smallest one's passes
