@@ -14,6 +14,7 @@
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "model/contour.h"
+#include "modules/cp/cp.h"
 
 #include <nlohmann/json.hpp>
 
@@ -242,6 +243,22 @@ private slots:
                "P7 = POINT/110, 40\nK1 = CONTOUR/P1, L1, ROUND, 8, L2, P7"
             << "outline"
             << "K1 is an open contour; a pocket's outline must be closed (a contour without a start and end point)";
+        // Issue 33: on the island's field, naming it, where, and the gap;
+        // before, on "cornerRadius" with a bare reach (or not refused at all
+        // when the island touched, and the wall pass cut through it).
+        QTest::newRow("island touching the outline")
+            << "figure:P4 = POINT/35, 35=>P4 = POINT/35, 18" << "islands"
+            << "the island K2 touches K1 at (35 mm, 10 mm): no end mill passes between them; keep it 2.6 mm off (the "
+               "smallest end mill, T21 (flat end mill Ø2 mm), with what the step leaves on the walls) or make the two "
+               "one contour";
+        QTest::newRow("island 0.5 off the outline")
+            << "figure:P4 = POINT/35, 35=>P4 = POINT/35, 18.5" << "islands"
+            << "the gap between the island K2 and K1 is 0.5 mm wide at (35 mm, 10.5 mm); the smallest end mill, T21 "
+               "(flat end mill Ø2 mm), needs 2.6 mm there";
+        QTest::newRow("islands 1.5 apart")
+            << "figure:P4 = POINT/35, 35=>P4 = POINT/62.5, 35" << "islands"
+            << "the gap between the island K3 and K2 is 1.5 mm wide at (72 mm, 35 mm); the smallest end mill, T21 "
+               "(flat end mill Ø2 mm), needs 2.6 mm there";
         QTest::newRow("cored U") << "U=7" << "U"
                                  << "U 7 is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 "
                                     "(walls only) or 9 (roughing only)";
@@ -276,6 +293,31 @@ private slots:
         const std::string got = messageOn(ds, field.toStdString());
         QVERIFY2(!got.empty(), messages(ds).c_str());
         if (!message.isEmpty()) QCOMPARE(QString::fromStdString(got), message);
+    }
+
+    // An outline of two rooms joined by a channel 2 mm wide: the neck is
+    // named on the outline with its two sides and the width the smallest end
+    // mill needs (issue 33; before, on "cornerRadius" with a reach of 0.7 mm).
+    void neckIsNamedOnTheOutline()
+    {
+        Job job = sampleJob();
+        job.figure = "P1 = POINT/5, 5\nP2 = POINT/45, 5\nP3 = POINT/45, 23\nP4 = POINT/65, 23\nP5 = POINT/65, 5\n"
+                     "P6 = POINT/105, 5\nP7 = POINT/105, 45\nP8 = POINT/65, 45\nP9 = POINT/65, 25\nP10 = POINT/45, 25\n"
+                     "P11 = POINT/45, 45\nP12 = POINT/5, 45\n"
+                     "L1 = LINE/P1, P2\nL2 = LINE/P2, P3\nL3 = LINE/P3, P4\nL4 = LINE/P4, P5\nL5 = LINE/P5, P6\n"
+                     "L6 = LINE/P6, P7\nL7 = LINE/P7, P8\nL8 = LINE/P8, P9\nL9 = LINE/P9, P10\nL10 = LINE/P10, P11\n"
+                     "L11 = LINE/P11, P12\nL12 = LINE/P12, P1\n"
+                     "K1 = CONTOUR/L1, ROUND, 3, L2, L3, L4, ROUND, 3, L5, ROUND, 3, L6, ROUND, 3, L7, ROUND, 3, L8, L9, "
+                     "L10, ROUND, 3, L11, ROUND, 3, L12, ROUND, 3";
+        ContourPocket& p = job.units[0].module.as<ContourPocket>();
+        p.islands.clear();
+        const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QCOMPARE(ds.size(), std::size_t{1});
+        QCOMPARE(ds[0].field, std::string("outline"));
+        const std::string m = ds[0].message;
+        QVERIFY2(m.starts_with("K1 narrows to 2 mm between (") && m.find(" mm, 2") != std::string::npos &&
+                     m.ends_with("; the smallest end mill, T21 (flat end mill Ø2 mm), needs 2.6 mm there"),
+                 m.c_str());
     }
 };
 

@@ -6,7 +6,9 @@
 // moves of both samples' linuxcnc tapes: no cut across the wall (1 µm), the
 // finishing pass touches every point of the wall at R at each of its
 // depths, roughing leaves exactly α2, the band W is swept at T, layers at
-// their depths, no rapid below the top, arcs on the tape as G2/G3.
+// their depths, no rapid below the top, arcs on the tape as G2/G3. A
+// semicircular notch into the material is milled with the largest end mill
+// its radius takes; where none fits, the arc or channel is named (issue 33).
 #include "modules/side/side.h"
 #include "paths/contour_offset.h"
 #include "support/rs274.h"
@@ -17,6 +19,7 @@
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
+#include "verify/verify.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,6 +97,26 @@ double nearestPiece(const std::vector<std::pair<Point2, Point2>>& pieces, Point2
     double best = std::numeric_limits<double>::infinity();
     for (const auto& [a, b] : pieces) best = std::min(best, segmentDistance(p, a, b));
     return best;
+}
+
+// The open sample's shoulder replaced by `figure` (contour K1), W and T.
+Job withFigure(const std::string& figure, double width, double depth)
+{
+    Job job = sampleJob("side-open-contour.taiwa");
+    job.figure = figure;
+    SideMill& u = job.units[0].module.as<SideMill>();
+    u.width = width;
+    u.depth = depth;
+    return job;
+}
+
+// A straight run along y = 60 with a half circle of radius r at x = 60 cut
+// down into the material (the tool on the left, above the run).
+std::string notchFigure(double r)
+{
+    return "P1 = POINT/-15, 60\nP2 = POINT/135, 60\nP3 = POINT/60, 60\nL1 = LINE/P1, ATANGL, 0\n"
+           "C1 = CIRCLE/CENTER, P3, RADIUS, " + std::to_string(r) + "\n"
+           "K1 = CONTOUR/P1, L1, XSMALL, CCLW, C1, XLARGE, L1, P2";
 }
 
 }  // namespace
@@ -346,6 +369,83 @@ private slots:
     }
 
     // The oracle on the rs274 moves of both samples' linuxcnc tapes.
+    // A semicircular R12 notch in a straight run, bands from 12 to 20 wide:
+    // the largest end mill whose radius fits the notch (Ø20, R10; Ø25 does
+    // not) mills it, and the product's verification finds nothing wrong.
+    // Before: refused, "its flutes (6 mm) are shorter than the depth" (the
+    // passes wider than the notch joined its two runs by a full circle).
+    void notchIsMilledWithTheToolThatFitsIt_data()
+    {
+        QTest::addColumn<double>("width");
+        QTest::newRow("W 12") << 12.0;
+        QTest::newRow("W 14") << 14.0;
+        QTest::newRow("W 20") << 20.0;
+    }
+    void notchIsMilledWithTheToolThatFitsIt()
+    {
+        QFETCH(double, width);
+        const Plan plan = planJob(withFigure(notchFigure(12), width, 12), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY2(plan.ok(), messages(plan.diagnostics).c_str());
+        for (const Step& s : plan.steps) QCOMPARE(s.tool->toolId, 30);
+        verify::Options o;
+        o.resolution = 0.1;
+        const verify::Report report = verify::verifyPlan(plan, o);
+        QVERIFY2(!report.fatal(), report.findings.empty() ? "" : verify::describe(report.findings.front(), plan).c_str());
+    }
+
+    // A notch R3.87 in a run tilted 3° (the generator's seed 4 before it
+    // was made smaller): its two runs' parallels, past the notch's radius,
+    // lie on carriers 1e-6 apart (the figure's rounding) and their
+    // rounding missed; every end mill was refused "cutting 7.4 mm into it
+    // at the contour's start". Now bridged, proved, and verified clean.
+    void notchInATiltedRun()
+    {
+        const std::string figure = "P1 = POINT/-15, 30.04537\nP2 = POINT/56.132217, 33.691382\n"
+                                   "P3 = POINT/60, 33.889632\nP4 = POINT/63.867783, 34.087882\n"
+                                   "P5 = POINT/135, 37.733894\nC1 = CIRCLE/CENTER, P3, RADIUS, 3.87286\n"
+                                   "L1 = LINE/P1, P2\nL2 = LINE/P4, P5\n"
+                                   "K1 = CONTOUR/P1, L1, XSMALL, CCLW, C1, XLARGE, L2, P5";
+        const Plan plan = planJob(withFigure(figure, 7.3, 6.3), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY2(plan.ok(), messages(plan.diagnostics).c_str());
+        QCOMPARE(plan.steps.front().tool->toolId, 25);  // Ø6: R3 within the notch's 3.87; Ø8 is not
+        verify::Options o;
+        o.resolution = 0.1;
+        const verify::Report report = verify::verifyPlan(plan, o);
+        QVERIFY2(!report.fatal(), report.findings.empty() ? "" : verify::describe(report.findings.front(), plan).c_str());
+    }
+
+    // A notch no end mill fits: the arc is named, where it is, and by how
+    // much the smallest end mill is too large. Before: on "cornerRadius", a
+    // field SIDE does not have, naming no arc.
+    void tooTightNotchNamesTheArc()
+    {
+        const Diagnostics ds = checkJob(withFigure(notchFigure(0.8), 14, 12), TechnologyTable::builtIn(), defaultToolLibrary());
+        QCOMPARE(ds.size(), std::size_t{1});
+        QCOMPARE(ds[0].field, std::string("contour"));
+        QCOMPARE(ds[0].message, std::string("the arc of K1 at (60 mm, 59.2 mm) curves round the tool's side with radius "
+                                            "0.8 mm: the smallest end mill, T21 (flat end mill Ø2 mm), is 0.2 mm too "
+                                            "large for it (an arc of radius 1 mm or more would let it fit)"));
+    }
+
+    // An open contour whose end comes back 1.5 mm from its start's run:
+    // every end mill fits its arcs, none passes there. Said on the contour,
+    // where and how deep the smallest would cut. Before: "T21 ... is the
+    // nearest, but  along K1" (the reason left empty).
+    void channelNoEndMillPassesIsNamed()
+    {
+        const std::string figure = "P1 = POINT/-15, 20\nP2 = POINT/100, 40\nP3 = POINT/50, 21.5\n"
+                                   "L1 = LINE/P1, ATANGL, 0\nC1 = CIRCLE/CENTER, P2, RADIUS, 20\n"
+                                   "L2 = LINE/PARLEL, L1, YLARGE, 40\nL3 = LINE/P3, ATANGL, 90\n"
+                                   "K1 = CONTOUR/P1, L1, CCLW, C1, L2, ROUND, 5, L3, P3";
+        const Plan plan = planJob(withFigure(figure, 5, 5), TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(!plan.ok());
+        QCOMPARE(plan.diagnostics.front().field, std::string("contour"));
+        const std::string m = plan.diagnostics.front().message;
+        QVERIFY2(m.starts_with("K1 leaves no room near (") &&
+                     m.find("even the smallest end mill that fits its arcs, T21 (flat end mill Ø2 mm), would cut") != std::string::npos,
+                 m.c_str());
+    }
+
     void oracleOnTheTapes_data()
     {
         QTest::addColumn<QString>("sample");

@@ -46,7 +46,7 @@ std::vector<Point2> crossings(const ContourSegment& a, const ContourSegment& b)
         const double r = c.radius();
         const double B = dot(f, d), C = dot(f, f) - r * r;
         const double disc = B * B - C;
-        if (disc < -1e-12) return;
+        if (disc < -1e-12 * std::max(1.0, r * r)) return;  // a tangent line: its one point, whatever the rounding
         const double s = std::sqrt(std::max(disc, 0.0));
         out.push_back(l.start + (-B - s) * d);
         if (s > 0) out.push_back(l.start + (-B + s) * d);
@@ -135,13 +135,30 @@ Result<void> join(std::vector<ContourSegment>& out, ContourSegment e, Point2 cor
         if (std::abs(distance(last.end, corner) - d) > 1e-7) {
             const ContourSegment circle = ContourSegment::arc(corner + Point2{d, 0.0}, corner + Point2{d, 0.0}, corner, true);
             const std::vector<Point2> xs = crossings(last, circle);
-            if (xs.empty()) return Failure{"a convex joint's rounding does not meet the piece before it"};
+            if (xs.empty()) {
+                // The piece before passes the rounding by (two lines all but
+                // on one carrier, an arc left out between them, their figure
+                // coordinates rounded to 1e-6): a straight bridge to e's
+                // start, which the SIDE planning proves against the contour
+                // as every chain.
+                out.push_back(ContourSegment::line(last.end, e.start));
+                out.push_back(e);
+                return {};
+            }
             const Point2 x = nearest(xs, last.end);
             if (place(last, x) < -1e-9) {
                 out.pop_back();
                 continue;
             }
             last.end = x;
+        }
+        // The piece before reaches e's start itself (the parallels of two
+        // lines on one carrier, an arc left out between them): no rounding,
+        // which would be a full circle from a point to itself.
+        if (distance(last.end, e.start) < 1e-7) {
+            e.start = last.end;
+            out.push_back(e);
+            return {};
         }
         out.push_back(ContourSegment::arc(last.end, e.start, corner, side < 0));
         out.push_back(e);

@@ -10,6 +10,9 @@
 // trimmed where the two parallels cross (the crossing nearest the gap), and
 // a parallel that the trimming reverses (the crossing lies before its start,
 // or after its end) left out, its neighbours then trimmed to each other.
+// Where an arc is left out between two parallels that meet end to end (one
+// carrier) they join without a rounding; where the rounding misses the
+// piece before (the same, carriers 1e-6 apart) a straight bridge joins them.
 // Only neighbours are trimmed: a channel narrower than 2d between distant
 // parts of the contour is not seen here (the SIDE planning proves the chain
 // against the contour before it is cut: chainClearance).

@@ -3396,6 +3396,22 @@ Theirs: %6</source>
             <translation>ポケット</translation>
         </message>
         <message>
+            <source>the island {} touches {} at ({}, {}): no end mill passes between them; keep it {} off (the smallest end mill, {}, with what the step leaves on the walls) or make the two one contour</source>
+            <translation>島 {0} が ({2}, {3}) で {1} に接しています。間を通るエンドミルはありません。{4} 以上離す(最小のエンドミル {5} と、工程が壁に残す取り代の分)か、二つを一つの輪郭にしてください</translation>
+        </message>
+        <message>
+            <source>the gap between the island {} and {} is {} wide at ({}, {}); the smallest end mill, {}, needs {} there</source>
+            <translation>島 {0} と {1} の隙間は ({3}, {4}) で幅 {2} です。最小のエンドミル {5} にはそこで {6} が必要です</translation>
+        </message>
+        <message>
+            <source>{} narrows to {} between ({}, {}) and ({}, {}); the smallest end mill, {}, needs {} there</source>
+            <translation>{0} は ({2}, {3}) と ({4}, {5}) の間で幅 {1} まで狭くなっています。最小のエンドミル {6} にはそこで {7} が必要です</translation>
+        </message>
+        <message>
+            <source>{} has an inside arc of radius {} at ({}, {}); the smallest end mill, {}, needs a radius of at least {} there</source>
+            <translation>{0} の ({2}, {3}) に半径 {1} の内側円弧があります。最小のエンドミル {4} にはそこで半径 {5} 以上が必要です</translation>
+        </message>
+        <message>
             <source>the contour's narrowest reach</source>
             <translation>輪郭の最も狭い箇所</translation>
         </message>
@@ -3956,6 +3972,14 @@ Theirs: %6</source>
             <translation>指定された工具 T{} ({}) は使えません: {}</translation>
         </message>
         <message>
+            <source>no end mill that fits {} reaches the depth {} with its flutes for the finishing at full depth (F 1): the longest, {}, has flutes of {}; finish in several incisions (F 2)</source>
+            <translation>{0} に入るエンドミルで、全深さ一度の仕上げ(F 1)のために深さ {1} まで刃長が届くものはありません。最長の {2} の刃長は {3} です。複数回の切込みで仕上げてください(F 2)</translation>
+        </message>
+        <message>
+            <source>{} leaves no room near ({}, {}): even the smallest end mill that fits its arcs, {}, would cut {} into it there; widen the contour there</source>
+            <translation>{0} は ({1}, {2}) 付近に余地がありません。円弧に入る最小のエンドミル {3} でも、そこで {4} 食い込みます。そこで輪郭の幅を広げてください</translation>
+        </message>
+        <message>
             <source>{} along {}</source>
             <translation>{} ({} に沿って)</translation>
         </message>
@@ -3974,6 +3998,10 @@ Theirs: %6</source>
         <message>
             <source>largest flat end mill ({}) and whose passes keep off the contour</source>
             <translation>パスが輪郭から離れる最大のフラットエンドミル ({})</translation>
+        </message>
+        <message>
+            <source>the arc of {} at ({}, {}) curves round the tool's side with radius {}: the smallest end mill, {}, is {} too large for it (an arc of radius {} or more would let it fit)</source>
+            <translation>{0} の ({1}, {2}) の円弧は工具側に半径 {3} で曲がっています。最小のエンドミル {4} はそれより {5} 大きすぎます(半径 {6} 以上の円弧なら入ります)</translation>
         </message>
         <message>
             <source>a TURN unit</source>

@@ -3396,6 +3396,22 @@ Theirs: %6</source>
             <translation>型腔</translation>
         </message>
         <message>
+            <source>the island {} touches {} at ({}, {}): no end mill passes between them; keep it {} off (the smallest end mill, {}, with what the step leaves on the walls) or make the two one contour</source>
+            <translation>岛 {0} 在 ({2}, {3}) 处与 {1} 相接：没有立铣刀能从两者之间通过；请使其离开至少 {4}（最小的立铣刀 {5} 加上工步在壁上留下的余量），或将两者合为一个轮廓</translation>
+        </message>
+        <message>
+            <source>the gap between the island {} and {} is {} wide at ({}, {}); the smallest end mill, {}, needs {} there</source>
+            <translation>岛 {0} 与 {1} 之间的间隙在 ({3}, {4}) 处宽 {2}；最小的立铣刀 {5} 在该处需要 {6}</translation>
+        </message>
+        <message>
+            <source>{} narrows to {} between ({}, {}) and ({}, {}); the smallest end mill, {}, needs {} there</source>
+            <translation>{0} 在 ({2}, {3}) 与 ({4}, {5}) 之间收窄到 {1}；最小的立铣刀 {6} 在该处需要 {7}</translation>
+        </message>
+        <message>
+            <source>{} has an inside arc of radius {} at ({}, {}); the smallest end mill, {}, needs a radius of at least {} there</source>
+            <translation>{0} 在 ({2}, {3}) 处有半径为 {1} 的内侧圆弧；最小的立铣刀 {4} 在该处需要至少 {5} 的半径</translation>
+        </message>
+        <message>
             <source>the contour's narrowest reach</source>
             <translation>轮廓最窄处</translation>
         </message>
@@ -3956,6 +3972,14 @@ Theirs: %6</source>
             <translation>指定的刀具 T{}（{}）不合适：{}</translation>
         </message>
         <message>
+            <source>no end mill that fits {} reaches the depth {} with its flutes for the finishing at full depth (F 1): the longest, {}, has flutes of {}; finish in several incisions (F 2)</source>
+            <translation>能进入 {0} 的立铣刀中，没有刃长能达到深度 {1} 以进行全深度一次精加工（F 1）的：最长的 {2} 刃长为 {3}；请分多次切入精加工（F 2）</translation>
+        </message>
+        <message>
+            <source>{} leaves no room near ({}, {}): even the smallest end mill that fits its arcs, {}, would cut {} into it there; widen the contour there</source>
+            <translation>{0} 在 ({1}, {2}) 附近没有余地：即使是能进入其圆弧的最小立铣刀 {3} 也会在该处切入 {4}；请在该处加宽轮廓</translation>
+        </message>
+        <message>
             <source>{} along {}</source>
             <translation>{}（沿 {}）</translation>
         </message>
@@ -3974,6 +3998,10 @@ Theirs: %6</source>
         <message>
             <source>largest flat end mill ({}) and whose passes keep off the contour</source>
             <translation>刀路不碰轮廓的最大平底立铣刀（{}）</translation>
+        </message>
+        <message>
+            <source>the arc of {} at ({}, {}) curves round the tool's side with radius {}: the smallest end mill, {}, is {} too large for it (an arc of radius {} or more would let it fit)</source>
+            <translation>{0} 在 ({1}, {2}) 处的圆弧以半径 {3} 弯向刀具一侧：最小的立铣刀 {4} 比它大 {5}（圆弧半径为 {6} 或以上即可容纳）</translation>
         </message>
         <message>
             <source>a TURN unit</source>

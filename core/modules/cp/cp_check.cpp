@@ -1,13 +1,19 @@
 // Input checks of one CP unit (contour pocket): the named contours (known,
 // closed, not crossing themselves, islands inside the outline and apart, no
 // sharp inside corner), the codes, the depth, and the room for the tools in
-// the contour's narrowest place.
+// the contour's narrowest place: a refusal for want of room names that
+// place (an island touching the outline or another island, the gap between
+// them, a neck of one contour, an inside arc: paths/narrowest.h) on the
+// field of the contour concerned, "outline" or "islands".
 #include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 
 #include "check/messages.h"
 #include "modules/named_region.h"
 #include "model/codes.h"
+#include "paths/narrowest.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +55,84 @@ bool checkCodes(const ContourPocket& p, Reporter& r)
     return ok;
 }
 
+// The smallest tool the room checks measure against (check::checkRoom's).
+const Tool* smallestFlat(const std::vector<Tool>& library)
+{
+    const Tool* best = nullptr;
+    for (const Tool& t : library)
+        if (t.type == ToolType::FlatEndMill && (!best || t.diameter < best->diameter)) best = &t;
+    return best;
+}
+
+// The refusal of a room too small for the smallest end mill, at the place
+// that makes it so, on the field of its contour. `allowance`: what the
+// step leaves on the walls (α2, α3 or 0), the tool's radius plus it must
+// fit the place's reach.
+Diagnostic narrowPlace(const ContourPocket& p, const paths::NarrowestPlace& n, const Tool& tool, double allowance,
+                       Reporter& r)
+{
+    using Kind = paths::NarrowestPlace::Kind;
+    const auto name = [&](int k) { return k == 0 ? p.outline : p.islands.at(static_cast<std::size_t>(k - 1)); };
+    const std::string field = n.first == 0 && n.second == 0 ? "outline" : "islands";
+    const msg::Len needed = r.len(2.0 * (tool.radius() + allowance));
+    std::string text;
+    switch (n.kind) {
+    case Kind::Touch:
+        text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "the island {} touches {} at ({}, {}): no end mill passes between them; "
+                                                "keep it {} off (the smallest end mill, {}, with what the step leaves "
+                                                "on the walls) or make the two one contour"),
+                           name(n.first), name(n.second), msg::quote(r.len(n.a.x)), msg::quote(r.len(n.a.y)),
+                           msg::quote(needed), msg::toolName(tool));
+        break;
+    case Kind::Gap:
+        text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "the gap between the island {} and {} is {} wide at ({}, {}); the "
+                                                "smallest end mill, {}, needs {} there"),
+                           name(n.first), name(n.second), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
+                           msg::quote(r.len(n.a.y)), msg::toolName(tool), msg::quote(needed));
+        break;
+    case Kind::Neck:
+        text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "{} narrows to {} between ({}, {}) and ({}, {}); the smallest end "
+                                                "mill, {}, needs {} there"),
+                           name(n.first), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
+                           msg::quote(r.len(n.a.y)), msg::quote(r.len(n.b.x)), msg::quote(r.len(n.b.y)),
+                           msg::toolName(tool), msg::quote(needed));
+        break;
+    case Kind::InsideArc:
+        text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                "{} has an inside arc of radius {} at ({}, {}); the smallest end mill, "
+                                                "{}, needs a radius of at least {} there"),
+                           name(n.first), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
+                           msg::quote(r.len(n.a.y)), msg::toolName(tool), msg::quote(r.len(tool.radius() + allowance)));
+        break;
+    }
+    return {Severity::Error, r.unitNo, ContourPocket::kName, field, text};
+}
+
+// check::checkRoom, its refusal for want of room (on a field CP does not
+// have) replaced by the place that limits the tool.
+void checkRoomAt(const check::RoomQuery& q, const ContourPocket& p, Reporter& r)
+{
+    Diagnostics found;
+    check::checkRoom(q, p.tools, r.unitNo, ContourPocket::kName, r.ctx, found);
+    for (Diagnostic& d : found) {
+        if (d.field == "cornerRadius") {
+            // One refusal per place: roughing's (the larger need) says it.
+            if (std::any_of(r.out.begin(), r.out.end(), [&](const Diagnostic& e) {
+                    return e.unit == r.unitNo && (e.field == "outline" || e.field == "islands");
+                }))
+                continue;
+            const Tool* tool = smallestFlat(*r.ctx.library);
+            const auto place = p.region ? paths::narrowestPlace(*p.region) : std::nullopt;
+            if (tool && place) d = narrowPlace(p, *place, *tool, q.cornerRadius - q.available, r);
+            else d.field = "outline";
+        }
+        r.out.push_back(std::move(d));
+    }
+}
+
 void checkRooms(const ContourPocket& p, double reach, Reporter& r)
 {
     const TechnologyData& tech = *r.ctx.tech;
@@ -60,7 +144,7 @@ void checkRooms(const ContourPocket& p, double reach, Reporter& r)
         q.label = "the contour's narrowest reach (half its narrowest channel or its smallest inside radius) − α2";
         q.available = reach - tech.alpha2;
         q.cornerRadius = reach;
-        check::checkRoom(q, p.tools, r.unitNo, ContourPocket::kName, r.ctx, r.out);
+        checkRoomAt(q, p, r);
     }
     if (!hasWallFinishing(use)) return;
     const bool twoStage = *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
@@ -70,7 +154,7 @@ void checkRooms(const ContourPocket& p, double reach, Reporter& r)
                        : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the contour's narrowest reach");
     q.available = reach - (twoStage ? tech.alpha3 : 0.0);
     q.cornerRadius = reach;
-    check::checkRoom(q, p.tools, r.unitNo, ContourPocket::kName, r.ctx, r.out);
+    checkRoomAt(q, p, r);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "modules/module_kind.h"
 #include "modules/named_region.h"
 #include "modules/pocket_plan.h"
+#include "paths/narrowest.h"
 #include "paths/region.h"
 
 #include "figure/figure_text.h"
@@ -58,6 +59,9 @@ public:
         const Region normal = normalised(*n.region);
         p.inscribed = paths::inscribedRadius(normal);
         p.reach = paths::reachRadius(normal, p.inscribed);
+        // An island touching the outline (or another) leaves no room between
+        // them, whatever the rolling saw (it takes the touching point for room).
+        p.reach = std::min(p.reach, 0.5 * paths::smallestIslandGap(normal));
         p.region = std::move(n.region);
     }
 

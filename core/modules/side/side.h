@@ -99,6 +99,15 @@ std::optional<Point2> sharpConcaveCorner(const Contour& c, bool toolOnLeft);
 // The largest tool radius the finishing pass may have (smallest concave
 // radius; a closed contour with the tool inside, its reach too).
 double toolRoom(const SideMill& mm);
+// The arc of the contour with the smallest radius curving round the tool's
+// side; nothing when none does.
+const ContourSegment* tightestConcaveArc(const Contour& c, bool toolOnLeft);
+// Why even the smallest end mill `tool` finds no room (issue 33): the arc
+// that limits it, where, and by how much it is too large for it; with the
+// tool inside a closed contour whose reach is the limit, the neck (its two
+// sides) or the arc that makes the reach. `allowance`: what the step leaves
+// on the wall (its tool radius plus this must fit). In the job's unit.
+std::string noRoomAt(const SideMill& mm, const Tool& tool, double allowance, LengthUnit shown);
 
 // The material side: +1 on the tool's side of the contour, -1 on the other,
 // for any point (an open contour continued past its ends along the tangents

@@ -3,7 +3,7 @@
 // towards the tool's side; the side, direction, U and F codes; depth, width
 // and step-over; the pins; the room for the end mill (the smallest concave
 // radius on the tool's side, and with the tool inside a closed contour its
-// reach).
+// reach), refused naming the arc or neck that limits it and by how much.
 #include "model/translate_noop.h"
 #include "modules/side/side.h"
 
@@ -130,7 +130,22 @@ check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Cont
                        : "the contour's smallest inside radius on the tool's side + α2";
     q.available = finishes ? room : room + ctx.tech->alpha2;
     q.cornerRadius = room;
-    check::checkRoom(q, m.tools, unitNo, SideMill::kName, ctx, report.diagnostics);
+    Diagnostics found;
+    check::checkRoom(q, m.tools, unitNo, SideMill::kName, ctx, found);
+    for (Diagnostic& d : found) {
+        // No end mill fits: said of the arc (or neck) that limits it, on the
+        // contour, SIDE having no corner radius of its own.
+        if (d.field == "cornerRadius") {
+            const Tool* smallest = nullptr;
+            for (const Tool& tool : *ctx.library)
+                if (tool.type == ToolType::FlatEndMill && (!smallest || tool.diameter < smallest->diameter)) smallest = &tool;
+            d.field = "contour";
+            if (smallest)
+                if (std::string at = side::noRoomAt(m, *smallest, q.cornerRadius - q.available, ctx.shownUnit); !at.empty())
+                    d.message = std::move(at);
+        }
+        report.diagnostics.push_back(std::move(d));
+    }
     return report;
 }
 

@@ -43,16 +43,21 @@ Passes passesFor(const SideMill& m, const TechnologyData& tech, double D)
 }
 
 // The first place where a pass of the end mill of radius R would come
-// nearer the contour than its offset; nothing when every pass keeps off.
-std::optional<Point2> tooNarrow(const side::Travel& t, const Passes& p, double R)
+// nearer the contour than its offset, and by how much (the whole offset
+// when the pass cannot be made); nothing when every pass keeps off.
+struct Narrow {
+    Point2 where;
+    double by = 0.0;
+};
+std::optional<Narrow> tooNarrow(const side::Travel& t, const Passes& p, double R)
 {
     std::vector<double> offsets = p.roughing;
     if (p.finishing) offsets.push_back(0.0);
     for (const double o : offsets) {
         const auto chains = paths::offsetSide(t.contour, t.toolOnLeft, R + o);
-        if (!chains || chains->empty()) return t.contour.start();
+        if (!chains || chains->empty()) return Narrow{t.contour.start(), R + o};
         const paths::Clearance c = paths::chainClearance(t.contour, *chains, kProofSpacing);
-        if (c.nearest < R + o - kProofTolerance) return c.where;
+        if (c.nearest < R + o - kProofTolerance) return Narrow{c.where, R + o - c.nearest};
     }
     return std::nullopt;
 }
@@ -87,6 +92,10 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
     fit.depth = m.depth;
     fit.reach = m.depth;
 
+    // Shorter flutes only where every pass cuts in layers: not a finishing
+    // pass at full depth at once (F1), whose shank would rub the wall above
+    // the flutes.
+    const bool layers = !finishes || m.wallFinish == 2;
     const Tool* tool = nullptr;
     std::string reason;
     if (const auto pin = m.tools.find("side"); pin != m.tools.end()) {
@@ -96,7 +105,7 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             return {};
         }
         tools::Fit pinned = fit;
-        pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
+        if (layers) pinned.depth = 0.0;  // a pinned end mill may cut in layers shorter than its flutes
         if (!tools::fits(*tool, pinned, material)) {
             problem(
                 "tools.side",
@@ -106,7 +115,7 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             return {};
         }
         if (const auto at = tooNarrow(t, passesFor(m, tech, tool->diameter), tool->radius())) {
-            problem("contour", msg::sideChannelTooNarrow(m.contour, msg::toolName(*tool), {at->x, shown}, {at->y, shown}));
+            problem("contour", msg::sideChannelTooNarrow(m.contour, msg::toolName(*tool), {at->where.x, shown}, {at->where.y, shown}));
             return {};
         }
         reason = "pinned by the operator";
@@ -114,7 +123,10 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
         // The largest that fits, flutes reaching T first, then shorter
         // flutes (F2 and roughing cut in layers); each proved along the contour.
         std::vector<const Tool*> candidates;
+        const Tool* smallestTried = nullptr;  // and where its passes came too near the contour
+        Narrow smallestNarrow;
         for (const bool fullFlutes : {true, false}) {
+            if (!fullFlutes && !layers) break;
             tools::Fit f = fit;
             if (!fullFlutes) f.depth = 0.0;
             for (const Tool& c : library)
@@ -122,20 +134,67 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
                     candidates.push_back(&c);
             std::stable_sort(candidates.begin(), candidates.end(), [](const Tool* a, const Tool* b) { return a->diameter > b->diameter; });
             for (const Tool* c : candidates) {
-                if (tooNarrow(t, passesFor(m, tech, c->diameter), c->radius())) continue;
+                if (const auto narrow = tooNarrow(t, passesFor(m, tech, c->diameter), c->radius())) {
+                    if (!smallestTried || c->diameter < smallestTried->diameter) smallestTried = c, smallestNarrow = *narrow;
+                    continue;
+                }
                 tool = c;
                 break;
             }
             if (tool) break;
             candidates.clear();
         }
+        if (!tool && !layers) {
+            // Would one with shorter flutes do, finishing in incisions (F2)?
+            tools::Fit f = fit;
+            f.depth = 0.0;
+            const Tool* longest = nullptr;
+            for (const Tool& c : library)
+                if (tools::fits(c, f, material) && (!longest || c.fluteLength > longest->fluteLength) &&
+                    !tooNarrow(t, passesFor(m, tech, c.diameter), c.radius()))
+                    longest = &c;
+            if (longest) {
+                problem("F", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                              "no end mill that fits {} reaches the depth {} with its "
+                                                              "flutes for the finishing at full depth (F 1): the "
+                                                              "longest, {}, has flutes of {}; finish in several "
+                                                              "incisions (F 2)"),
+                                         m.contour, msg::quote({m.depth, shown}), msg::toolName(*longest),
+                                         msg::quote({longest->fluteLength, shown})));
+                return {};
+            }
+        }
+        if (!tool && smallestTried) {
+            // End mills fit the room, but even the smallest one's passes
+            // would cut into the contour somewhere: say where and how deep.
+            problem("contour",
+                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                     "{} leaves no room near ({}, {}): even the smallest end mill that "
+                                                     "fits its arcs, {}, would cut {} into it there; widen the contour "
+                                                     "there"),
+                                m.contour, msg::quote({smallestNarrow.where.x, shown}),
+                                msg::quote({smallestNarrow.where.y, shown}), msg::toolName(*smallestTried),
+                                msg::quote({smallestNarrow.by, shown})));
+            return {};
+        }
         if (!tool) {
-            problem("tools.side",
-                    msg::sideNoTool(TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"),
-                                    fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} along {}"),
-                                                tools::noFitMessage(library, fit, material,
-                                                                    TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling")),
-                                                m.contour)));
+            // None fits at all: the reason of the nearest one with layers
+            // allowed (its flutes may be short), an arc too tight by name.
+            tools::Fit layered = fit;
+            layered.depth = 0.0;
+            const Tool* smallest = nullptr;
+            for (const Tool& c : library)
+                if (c.type == ToolType::FlatEndMill && (!smallest || c.diameter < smallest->diameter)) smallest = &c;
+            std::string why;
+            const bool arc = smallest && layered.cornerRadius > 0 && !fitsInto(smallest->radius(), layered.cornerRadius);
+            if (arc) why = side::noRoomAt(m, *smallest, finishes ? 0.0 : -tech.alpha2, shown);
+            const std::string field = arc && !why.empty() ? "contour" : "tools.side";
+            if (why.empty())
+                why = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} along {}"),
+                                  tools::noFitMessage(library, layered, material,
+                                                      TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling")),
+                                  m.contour);
+            problem(field, msg::sideNoTool(TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"), why));
             return {};
         }
         // One whole sentence for each case, for the station's translation.

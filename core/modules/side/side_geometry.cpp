@@ -4,8 +4,13 @@
 // the finished shape the verification measures against.
 #include "modules/side/side.h"
 
+#include "check/messages.h"
 #include "model/codes.h"
+#include "model/translate_noop.h"
 #include "paths/contour_offset.h"
+#include "paths/narrowest.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,10 +33,44 @@ Travel travel(const SideMill& mm)
 
 double smallestConcaveRadius(const Contour& c, bool toolOnLeft)
 {
-    double smallest = 1e300;
+    const ContourSegment* arc = tightestConcaveArc(c, toolOnLeft);
+    return arc ? arc->radius() : 1e300;
+}
+
+const ContourSegment* tightestConcaveArc(const Contour& c, bool toolOnLeft)
+{
+    const ContourSegment* tightest = nullptr;
     for (const ContourSegment& s : c.segments)
-        if (s.isArc() && (s.kind == ContourSegment::Kind::ArcCCW) == toolOnLeft) smallest = std::min(smallest, s.radius());
-    return smallest;
+        if (s.isArc() && (s.kind == ContourSegment::Kind::ArcCCW) == toolOnLeft &&
+            (!tightest || s.radius() < tightest->radius()))
+            tightest = &s;
+    return tightest;
+}
+
+std::string noRoomAt(const SideMill& mm, const Tool& tool, double allowance, LengthUnit shown)
+{
+    const Travel t = travel(mm);
+    const auto len = [&](double v) { return msg::quote({v, shown}); };
+    const double R = tool.radius() + allowance;  // the radius the place must have
+    const ContourSegment* arc = tightestConcaveArc(t.contour, t.toolOnLeft);
+    if (t.contour.closed && paths::toolInside(t.contour, t.toolOnLeft) && (!arc || mm.reach < arc->radius() - 1e-6)) {
+        Region r;
+        r.outer = t.contour;
+        if (const auto n = paths::narrowestPlace(r); n && n->kind == paths::NarrowestPlace::Kind::Neck)
+            return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                    "{} narrows to {} between ({}, {}) and ({}, {}); the smallest end "
+                                                    "mill, {}, needs {} there"),
+                               mm.contour, len(n->width), len(n->a.x), len(n->a.y), len(n->b.x), len(n->b.y),
+                               msg::toolName(tool), len(2.0 * R));
+    }
+    if (!arc) return {};
+    const Point2 m = arc->at(0.5);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                            "the arc of {} at ({}, {}) curves round the tool's side with radius {}: "
+                                            "the smallest end mill, {}, is {} too large for it (an arc of radius {} "
+                                            "or more would let it fit)"),
+                       mm.contour, len(m.x), len(m.y), len(arc->radius()), msg::toolName(tool),
+                       len(R - arc->radius()), len(R));
 }
 
 std::optional<Point2> sharpConcaveCorner(const Contour& c, bool toolOnLeft)
