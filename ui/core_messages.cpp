@@ -233,9 +233,12 @@ QString diagnosticField(const Diagnostic& d)
     const QString field = QString::fromStdString(d.field);
     if (d.unit)
         if (const ModuleKind* kind = findModuleKind(d.module)) {
+            // One field of the form: its label; several ("corners": P1 X … P4 Y): the field's own name.
+            const FieldSpec* only = nullptr;
+            int matches = 0;
             for (const FieldSpec& f : fieldsFor(*kind))
-                if (f.diagFields.contains(field))
-                    return QCoreApplication::translate("taiwa::ui::FieldSpec", f.label.toUtf8().constData());
+                if (f.diagFields.contains(field)) only = &f, ++matches;
+            if (matches == 1) return QCoreApplication::translate("taiwa::ui::FieldSpec", only->label.toUtf8().constData());
             const QString cell = ProfileEditor::cellName(field);
             if (!cell.isEmpty()) return cell;
         }

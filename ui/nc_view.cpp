@@ -37,7 +37,6 @@ NcView::NcView(QWidget* parent)
     // language at 1366 px (test_gui_languages): the translations are short.
     auto* label = new QLabel(tr("&NC program, dialect:"), this);
     label->setObjectName("nc.label");
-    label->setWordWrap(true);  // narrow (1280 px): on two lines rather than cut
     summary_->setObjectName("nc.blocks");
     label->setBuddy(dialect_);
     top->addWidget(label);
