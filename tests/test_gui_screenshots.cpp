@@ -6,9 +6,11 @@
 // window, the window with single steps selected, and a contact sheet of the
 // 3-D view with each step selected in turn (simulated stock after it), and
 // a verification finding chosen (station-verification.png) and its colour
-// map with the stock cut open (station-colour-map.png).
+// map with the stock cut open (station-colour-map.png); every module's form
+// at 1280 x 720 and 1366 x 768 in each language (forms/).
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "modules/registry.h"
 #include "support/support.h"
 #include "ui/job_document.h"
 #include "ui/language.h"
@@ -267,6 +269,71 @@ private slots:
         settle(w);
         const int screenHeight = size.width() == 1366 ? 768 : 1080;
         save(w, QStringLiteral("station-%1x%2-%3.png").arg(size.width()).arg(screenHeight).arg(language));
+    }
+
+    // Every module's form at 1280 x 720 and 1366 x 768 (the window at the
+    // screen's free area), in each language, its first field focused:
+    // docs/screenshots/forms/FORM-WIDTHxHEIGHT-LANG.png, the unit column only
+    // (M4 and the other milling modules on a new job, TURN on
+    // lathe-turned-shaft.taiwa).
+    void moduleForms_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        for (const char* language : {"en", "ja", "zh"})
+            for (const QSize size : {QSize(1280, 672), QSize(1366, 720)})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(language).arg(size.width()))) << QString(language) << size;
+    }
+    void moduleForms()
+    {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
+            QCoreApplication::removeTranslator(t);
+            delete t;
+        }
+        qputenv("TAIWA_LANG", language.toUtf8());
+        QCOMPARE(installTranslator(*QCoreApplication::instance()), language != "en");
+        const int screenHeight = size.width() == 1366 ? 768 : 720;
+        const auto shoot = [&](StationWindow& w, const QString& module) {
+            auto* unit = w.findChild<QWidget*>("unit.scroll")->parentWidget();
+            QCoreApplication::sendPostedEvents();
+            QCoreApplication::processEvents();
+            const QImage image = unit->grab().toImage();
+            QVERIFY(!image.isNull() && image.width() > 200);
+            const QString out = qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR");
+            if (out.isEmpty()) return;
+            QDir(out).mkpath("forms");
+            QVERIFY(image.save(QDir(out).filePath(
+                QStringLiteral("forms/%1-%2x%3-%4.png").arg(module.toLower()).arg(size.width()).arg(screenHeight).arg(language))));
+        };
+        {
+            StationWindow w;
+            w.resize(size);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            Job j = w.document()->job();
+            for (const ModuleKind* kind : moduleKinds()) {
+                if (kind->machineKind() != MachineKind::Mill) continue;
+                if (j.figure.empty()) j.figure = kind->defaultFigure(j.stock);
+                j.units.push_back(MachiningUnit{"", kind->makeDefault(toMillimetres(j).stock)});
+            }
+            w.document()->edit(j, "every module", {}, 0);
+            settle(w);
+            for (int u = 0; u < static_cast<int>(j.units.size()); ++u) {
+                w.unitList()->selectUnit(u);
+                settle(w);
+                shoot(w, QString::fromStdString(j.units[static_cast<std::size_t>(u)].module.name()));
+            }
+        }
+        StationWindow w(sample("lathe-turned-shaft.taiwa"));
+        w.resize(size);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        settle(w);
+        w.unitList()->selectUnit(0);
+        settle(w);
+        shoot(w, "TURN");
     }
 };
 

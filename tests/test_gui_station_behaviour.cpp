@@ -26,6 +26,7 @@
 #include <QAbstractButton>
 #include <QComboBox>
 #include <QAction>
+#include <algorithm>
 #include <QStatusBar>
 #include <QApplication>
 #include <QDir>
@@ -133,7 +134,7 @@ private slots:
         retype(depth, "0");
         w.planRunner()->flush();
         QVERIFY(banner->isVisible());
-        QVERIFY2(banner->text().contains("unit 1 (M4) depth:"), qPrintable(banner->text()));
+        QVERIFY2(banner->text().contains("unit 1 (M4) T (depth):"), qPrintable(banner->text()));
         QCOMPARE(w.ncView()->text()->toPlainText(), program);
         QVERIFY(w.ncView()->text()->styleSheet().contains("#9a9a9a"));
         retype(depth, "12");
@@ -165,15 +166,37 @@ private slots:
     void addedAndDuplicatedUnitsLandInFreeStock()
     {
         // plate.taiwa's stock has no room left for another 50 x 30 pocket: Add
-        // and Duplicate say so and add nothing, so the job stays valid.
+        // adds it all the same at the module's default place, marked with its
+        // overlap, the focus on its first corner; Duplicate says so and adds nothing.
         StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         const auto problems = [&] { return checkJob(w.document()->job(), TechnologyTable::builtIn(), w.planRunner()->library()); };
         const std::size_t before = w.document()->job().units.size();
         QTest::mouseClick(w.findChild<QAbstractButton*>("unit.addM4"), Qt::LeftButton);
-        QCOMPARE(w.document()->job().units.size(), before);
+        QCOMPARE(w.document()->job().units.size(), before + 1);
+        QCOMPARE(w.unitList()->currentUnit(), static_cast<int>(before));
         QVERIFY2(w.statusBar()->currentMessage().contains("no free place"), qPrintable(w.statusBar()->currentMessage()));
+        const Diagnostics added = problems();
+        QVERIFY(std::any_of(added.begin(), added.end(), [&](const Diagnostic& d) {
+            return d.severity == Severity::Error && d.unit == static_cast<int>(before) + 1;
+        }));
+        QVERIFY(QApplication::focusWidget());
+        QCOMPARE(QApplication::focusWidget()->objectName(), QString("m4.P1.x"));
+        QVERIFY(!w.findChild<QLabel*>("unit.messages")->text().isEmpty() ||
+                w.findChild<QLabel*>("m4.P1.x.error")->isVisible());  // its overlap shown with its form
+        // Ctrl+4 and Ctrl+3, as the Job menu says; a milling job's menu has no turned profile.
+        auto* addM4 = w.findChild<QAction*>("action.addM4");
+        QVERIFY(addM4 && addM4->isVisible());
+        QCOMPARE(addM4->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_4));
+        QVERIFY(!w.findChild<QAction*>("action.addTURN")->isVisible());
+        QTest::keyClick(&w, Qt::Key_4, Qt::ControlModifier);
+        QCOMPARE(w.document()->job().units.size(), before + 2);
+        QTest::keyClick(&w, Qt::Key_3, Qt::ControlModifier);
+        QCOMPARE(w.document()->job().units.size(), before + 3);
+        QCOMPARE(w.document()->job().units.back().module.name(), std::string("M2D"));
+        for (int k = 0; k < 3; ++k) w.document()->undoStack()->undo();
+        QCOMPARE(w.document()->job().units.size(), before);
         auto* panel = w.findChild<UnitListPanel*>();
         panel->selectUnit(0);
         panel->duplicate();

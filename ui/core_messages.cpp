@@ -5,7 +5,10 @@
 
 #include "check/messages.h"
 #include "tools/tool_library.h"
+#include "modules/registry.h"
 #include "ui/core_texts.h"
+#include "ui/field_spec.h"
+#include "ui/profile_editor.h"
 #include "ui/language.h"
 
 #include <QCoreApplication>
@@ -204,16 +207,16 @@ QString coreMessage(const std::string& english)
 
 QString diagnosticText(const std::string& job, const Diagnostic& d)
 {
-    if (messageSources().isEmpty())
-        return QString::fromStdString(format(job, d));
-    // As format() does: control characters typed into a name cannot forge lines.
+    // As format() does (control characters typed into a name cannot forge
+    // lines), but the field as the station names it, in English too
+    // ("allowance row 2, Width", not "allowances[2].grooveWidth").
     const auto quoted = [](const QString& s) { return QString::fromStdString(withControlsShown(s.toStdString())); };
     const QString file = quoted(QString::fromStdString(job));
     const QString message = quoted(coreMessage(d.message));
     if (!d.unit && d.field.empty())
         return QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: %2").arg(file, message);
     const QString field = d.field.empty() ? QCoreApplication::translate("taiwa::ui::Diagnostic", "unit")
-                                          : quoted(fieldText(d.field));
+                                          : quoted(diagnosticField(d));
     const bool warning = d.severity == Severity::Warning;
     if (!d.unit)
         return (warning ? QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: job %2: warning: %3")
@@ -223,6 +226,23 @@ QString diagnosticText(const std::string& job, const Diagnostic& d)
     return (warning ? QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: unit %2 (%3) %4: warning: %5")
                     : QCoreApplication::translate("taiwa::ui::Diagnostic", "%1: unit %2 (%3) %4: %5"))
         .arg(file, QString::number(*d.unit), module, field, message);
+}
+
+QString diagnosticField(const Diagnostic& d)
+{
+    const QString field = QString::fromStdString(d.field);
+    if (d.unit)
+        if (const ModuleKind* kind = findModuleKind(d.module)) {
+            // One field of the form: its label; several ("corners": P1 X … P4 Y): the field's own name.
+            const FieldSpec* only = nullptr;
+            int matches = 0;
+            for (const FieldSpec& f : fieldsFor(*kind))
+                if (f.diagFields.contains(field)) only = &f, ++matches;
+            if (matches == 1) return QCoreApplication::translate("taiwa::ui::FieldSpec", only->label.toUtf8().constData());
+            const QString cell = ProfileEditor::cellName(field);
+            if (!cell.isEmpty()) return cell;
+        }
+    return fieldText(d.field);
 }
 
 QString toolName(const Tool& tool)

@@ -28,6 +28,10 @@ QString coreMessage(const std::string& english);
 // message", model/diagnostic.h format()), in the station's language: its
 // words, field and message translated; byte for byte format() in English.
 QString diagnosticText(const std::string& job, const Diagnostic& d);
+// The field a diagnostic names as the station shows it, in its language: a
+// unit's field by its form's label ("T (depth)"), a turned profile's cell by
+// its table, row and column ("allowance row 2, Width"), else fieldText().
+QString diagnosticField(const Diagnostic& d);
 // A tool as the messages name it ("T12 (フラットエンドミル Ø6 mm)") and a tool kind alone.
 QString toolName(const Tool& tool);
 QString toolKind(ToolType type);

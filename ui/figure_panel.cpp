@@ -325,6 +325,11 @@ void FigurePanel::goToRefusal(QListWidgetItem* item)
 
 void FigurePanel::select(const QString& name)
 {
+    // The next pick: a corner picked before is no longer the one in orange.
+    if (picked_) {
+        picked_.reset();
+        showRevision();
+    }
     view_->setSelected(name);
     selectStatement(name);
     markLines();
@@ -343,11 +348,15 @@ void FigurePanel::selectStatement(const QString& name)
     QString s = b.text();
     if (const auto comment = s.indexOf(QStringLiteral("$$")); comment >= 0) s.truncate(comment);
     while (!s.isEmpty() && s.back().isSpace()) s.chop(1);
+    // The cursor at the statement's start (the selection anchored at its
+    // end): the editor does not scroll sideways to a long line's end.
     QTextCursor c(editor_->document());
-    c.setPosition(positionOf(d->line, d->column));
-    c.setPosition(b.position() + static_cast<int>(s.size()), QTextCursor::KeepAnchor);
+    c.setPosition(b.position() + static_cast<int>(s.size()));
+    c.setPosition(positionOf(d->line, d->column), QTextCursor::KeepAnchor);
     updating_ = true;
     editor_->setTextCursor(c);
+    editor_->horizontalScrollBar()->setValue(0);
+    editor_->ensureCursorVisible();
     updating_ = false;
 }
 

@@ -131,14 +131,23 @@ bool NcView::selectMove(int step, int move)
 void NcView::showStep(int step)
 {
     if (step < 0) return;
-    for (std::size_t i = 0; i < lines_.size(); ++i) {
-        if (lines_[i].step != step) continue;
-        selecting_ = true;
-        text_->setTextCursor(QTextCursor(text_->document()->findBlockByNumber(static_cast<int>(i))));
-        text_->centerCursor();
-        selecting_ = false;
-        return;
+    // The step's heading ("(STEP 2: UNIT 1 …)"), else its first line: a line
+    // written as the step begins may still close the step before (a G80).
+    const QString heading = QStringLiteral("STEP %1:").arg(step + 1);
+    int first = -1, headed = -1;
+    for (std::size_t i = 0; i < lines_.size() && headed < 0; ++i) {
+        if (lines_[i].step != step) {
+            if (first >= 0) break;
+            continue;
+        }
+        if (first < 0) first = static_cast<int>(i);
+        if (text_->document()->findBlockByNumber(static_cast<int>(i)).text().contains(heading)) headed = static_cast<int>(i);
     }
+    if (first < 0) return;
+    selecting_ = true;
+    text_->setTextCursor(QTextCursor(text_->document()->findBlockByNumber(headed >= 0 ? headed : first)));
+    text_->centerCursor();
+    selecting_ = false;
 }
 
 BlockSource NcView::currentSource() const

@@ -12,6 +12,7 @@
 #include "ui/table_cells.h"
 
 #include <QComboBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -87,25 +88,26 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     rowsTitle->setWordWrap(true);
     outer->addWidget(rowsTitle);
     outer->addWidget(rows_);
-    auto* rowButtons = new QHBoxLayout;
-    const auto button = [&](QHBoxLayout* box, const QString& name, const QString& text) {
+    // The buttons at most two to a row: the unit column stays narrow (a
+    // 1280-pixel screen) and the form never scrolls sideways.
+    auto* rowButtons = new QGridLayout;
+    const auto button = [&](QGridLayout* box, int r, int c, const QString& name, const QString& text) {
         auto* b = new QPushButton(text, this);
         b->setObjectName(prefix + "." + name);
         b->setAutoDefault(false);
-        box->addWidget(b);
+        box->addWidget(b, r, c);
+        box->setColumnStretch(2, 1);
         return b;
     };
-    connect(button(rowButtons, "addRow", tr("Add row")), &QPushButton::clicked, this, [this] { addRow(false); });
-    connect(button(rowButtons, "insertRow", tr("Insert row")), &QPushButton::clicked, this, [this] { addRow(true); });
-    connect(button(rowButtons, "deleteRow", tr("Delete row")), &QPushButton::clicked, this, &ProfileEditor::deleteRow);
-    rowButtons->addStretch(1);
+    connect(button(rowButtons, 0, 0, "addRow", tr("Add row")), &QPushButton::clicked, this, [this] { addRow(false); });
+    connect(button(rowButtons, 0, 1, "insertRow", tr("Insert row")), &QPushButton::clicked, this, [this] { addRow(true); });
+    connect(button(rowButtons, 1, 0, "deleteRow", tr("Delete row")), &QPushButton::clicked, this, &ProfileEditor::deleteRow);
     outer->addLayout(rowButtons);
-    auto* reviseButtons = new QHBoxLayout;
-    connect(button(reviseButtons, "reviseChamfers", tr("Revise chamfers")), &QPushButton::clicked, this,
+    auto* reviseButtons = new QGridLayout;
+    connect(button(reviseButtons, 0, 0, "reviseChamfers", tr("Revise chamfers")), &QPushButton::clicked, this,
             [this] { reviseCorners(CornerKind::Chamfer); });
-    connect(button(reviseButtons, "reviseRoundings", tr("Revise roundings")), &QPushButton::clicked, this,
+    connect(button(reviseButtons, 0, 1, "reviseRoundings", tr("Revise roundings")), &QPushButton::clicked, this,
             [this] { reviseCorners(CornerKind::Rounding); });
-    reviseButtons->addStretch(1);
     outer->addLayout(reviseButtons);
 
     // Corner revision: the picked corner's size.
@@ -145,12 +147,11 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     allowanceTitle->setWordWrap(true);
     outer->addWidget(allowanceTitle);
     outer->addWidget(allowances_);
-    auto* allowanceButtons = new QHBoxLayout;
-    addAllowance_ = button(allowanceButtons, "addAllowance", tr("Add allowance for picked edge"));
+    auto* allowanceButtons = new QGridLayout;
+    addAllowance_ = button(allowanceButtons, 0, 0, "addAllowance", tr("Add allowance for picked edge"));
     connect(addAllowance_, &QPushButton::clicked, this, &ProfileEditor::addAllowance);
-    connect(button(allowanceButtons, "deleteAllowance", tr("Delete allowance")), &QPushButton::clicked, this,
+    connect(button(allowanceButtons, 1, 0, "deleteAllowance", tr("Delete allowance")), &QPushButton::clicked, this,
             &ProfileEditor::deleteAllowance);
-    allowanceButtons->addStretch(1);
     outer->addLayout(allowanceButtons);
 
     messages_ = new QLabel(this);
@@ -304,6 +305,18 @@ void ProfileEditor::fill(bool force)
         set(allowances_, k, ADepthCol, shown(a.grooveDepth));
     }
     updating_ = false;
+}
+
+QString ProfileEditor::cellName(const QString& field)
+{
+    const QString rowHeads[] = {tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"), tr("R"), tr("Centre X"),
+                                tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")};
+    const QString allowanceHeads[] = {tr("Edge"), tr("Allowance"), tr("Adjustment"), tr("Relief groove"), tr("Width"), tr("Depth")};
+    if (const auto at = rowCell(field))
+        return tr("profile row %1, %2").arg(at->first + 1).arg(rowHeads[at->second]);
+    if (const auto at = allowanceCell(field))
+        return tr("allowance row %1, %2").arg(at->first + 1).arg(allowanceHeads[at->second]);
+    return {};
 }
 
 Diagnostics ProfileEditor::showDiagnostics(const Diagnostics& ofThisUnit)

@@ -56,6 +56,9 @@ public:
     // Columns of the profile table and of the allowance table.
     enum RowColumn { EdgeCol, KindCol, XCol, ZCol, RCol, CXCol, CZCol, CornerCol, SizeCol, RaCol, TolCol, PitchCol, RowColumns };
     enum AllowanceColumn { AEdgeCol, AAllowCol, AAdjustCol, AGrooveCol, AWidthCol, ADepthCol, AllowanceColumns };
+    // A check's field that names a cell ("allowances[2].grooveWidth") as the
+    // tables show it ("allowance row 2, Width"); empty for any other field.
+    static QString cellName(const QString& field);
 
 signals:
     void edited(const taiwa::turning::TurnedProfile& after, const QString& text, const QString& mergeKey);

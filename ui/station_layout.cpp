@@ -9,6 +9,7 @@
 #include "ui/core_texts.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
+#include "ui/form_stack.h"
 #include "ui/job_document.h"
 #include "ui/job_properties.h"
 #include "ui/language.h"
@@ -153,9 +154,11 @@ QWidget* StationWindow::buildRight()
     tape->setStretchFactor(1, 1);
     lower->addWidget(tape);
     // The step list's columns (No., unit, step, tool, S, F, depths, time)
-    // fit without scrolling sideways on a 1600-pixel screen.
-    lower->setStretchFactor(0, 13);
-    lower->setStretchFactor(1, 7);
+    // fit without scrolling sideways on a 1600-pixel screen; narrower, the
+    // list hides its depths and unit columns, and the tape keeps 200 pixels
+    // at 1280.
+    lower->setStretchFactor(0, 12);
+    lower->setStretchFactor(1, 8);
     right->addWidget(lower);
     right->setSizes({500, 440});
     auto* box = new QWidget;
@@ -191,10 +194,16 @@ void StationWindow::buildMenus()
     edit->addAction(redo);
 
     QMenu* job = menuBar()->addMenu(tr("&Job"));
+    // The machine's modules only (onDocumentChanged shows them); Ctrl+4 and
+    // Ctrl+3 add an M4 and an M2D unit (docs/station.md, Keyboard).
     for (const ModuleKind* kind : moduleKinds()) {
         const QString name = QString::fromUtf8(kind->name());
-        job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), this,
-                       [this, name] { addUnit(name); });
+        QAction* a = job->addAction(QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText()), this,
+                                    [this, name] { addUnit(name); });
+        a->setObjectName("action.add" + name);
+        a->setProperty("machineKind", static_cast<int>(kind->machineKind()));
+        if (name == "M4") a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
+        if (name == "M2D") a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_3));
     }
     job->addSeparator();
     job->addAction(tr("&Technology data…"), QKeySequence(tr("Ctrl+T")), this, &StationWindow::editTechnology);

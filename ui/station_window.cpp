@@ -12,6 +12,7 @@
 #include "ui/dxf_import_dialog.h"
 #include "ui/figure_panel.h"
 #include "ui/file_actions.h"
+#include "ui/form_stack.h"
 #include "ui/job_document.h"
 #include "ui/job_properties.h"
 #include "ui/module_palette.h"
@@ -28,6 +29,7 @@
 #include "ui/verification_panel.h"
 #include "viz/scene.h"
 
+#include <QAction>
 #include <QCloseEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -48,7 +50,7 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     : QMainWindow(parent), doc_(new JobDocument(this)), runner_(new PlanRunner(this)),
       autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, autosave_, this)),
       palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
-      forms_(new QStackedWidget), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
+      forms_(new FormStack), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
       verify_(new VerificationPanel)
 {
     for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
@@ -66,9 +68,13 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     // free area; the panels' split as left, else in proportion.
     main->setObjectName("station.split");
     QSettings settings;
-    if (!restoreGeometry(settings.value("station/geometry").toByteArray())) {
-        const QRect free = screen() ? screen()->availableGeometry() : QRect(0, 0, 1600, 940);
+    const QRect free = screen() ? screen()->availableGeometry() : QRect(0, 0, 1600, 940);
+    if (!restoreGeometry(settings.value("station/geometry").toByteArray()))
         resize(std::min(1600, free.width()), std::min(940, free.height()));
+    // Left on a larger screen: never larger than this one, and on it.
+    if (width() > free.width() || height() > free.height()) {
+        resize(std::min(width(), free.width()), std::min(height(), free.height()));
+        move(free.topLeft());
     }
     if (!main->restoreState(settings.value("station/split").toByteArray()))
         main->setSizes({width() * 22 / 100, width() * 24 / 100, width() * 54 / 100});
@@ -139,6 +145,9 @@ void StationWindow::onDocumentChanged(bool fromTyping)
     jobProps_->refresh(!fromTyping);
     const Machine* machine = findMachine(doc_->job().machine);
     palette_->setMachineKind(machine ? machine->kind : MachineKind::Mill);
+    for (QAction* a : findChildren<QAction*>())  // the Job menu's modules, as the palette's
+        if (a->objectName().startsWith("action.add") && a->property("machineKind").isValid())
+            a->setVisible(a->property("machineKind").toInt() == static_cast<int>(machine ? machine->kind : MachineKind::Mill));
     // Figure elements are for milling jobs; a lathe job's profiles are in its units.
     const bool lathe = doc_->job().bar.has_value();
     if (lathe && views_->currentWidget() == figure_) views_->setCurrentIndex(0);
@@ -240,12 +249,12 @@ void StationWindow::showDiagnostics()
     QStringList unitText;
     if (UnitForm* f = currentForm())
         for (const Diagnostic& d : f->showDiagnostics(ofUnit))
-            unitText << (d.field.empty() ? QString() : fieldText(d.field) + ": ") + coreMessage(d.message);
+            unitText << (d.field.empty() ? QString() : diagnosticField(d) + ": ") + coreMessage(d.message);
     unitMessages_->setText(unitText.join("\n"));
     jobProps_->showDiagnostics(jobLevel);
     QStringList status;
     for (const Diagnostic& d : jobLevel)
-        status << (d.field.empty() ? QString() : fieldText(d.field) + ": ") + coreMessage(d.message);
+        status << (d.field.empty() ? QString() : diagnosticField(d) + ": ") + coreMessage(d.message);
     if (otherUnits > 0) status << tr("%n problem(s) in other units", "", otherUnits);
     if (status.isEmpty()) statusBar()->clearMessage();
     else statusBar()->showMessage(status.join("  •  "));

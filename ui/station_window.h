@@ -102,7 +102,7 @@ private:
     ModulePalette* palette_;
     UnitListPanel* units_;
     JobProperties* jobProps_;
-    QStackedWidget* forms_;
+    class FormStack* forms_;
     std::map<std::string, UnitForm*> unitForms_;  // one per module kind, by name
     QLabel* stale_ = nullptr;
     QString openPath_;  // the job file this window has marked open

@@ -130,6 +130,14 @@ void StationWindow::wire()
         doc_->edit(after, tr("Dialect %1").arg(d));
     });
     connect(steps_, &StepPanel::stepSelected, nc_, &NcView::showStep);
+    // A step chosen: its unit's form beside it.
+    connect(steps_, &StepPanel::stepChosen, this, [this](int step) {
+        const Plan* plan = steps_->plan().get();
+        if (!plan || step < 0 || step >= static_cast<int>(plan->steps.size())) return;
+        const int unit = plan->steps[static_cast<std::size_t>(step)].unit;
+        if (unit >= 0 && unit != units_->currentUnit() && unit < static_cast<int>(doc_->job().units.size()))
+            units_->selectUnit(unit);
+    });
     // The block played in the tape: its line, or (a move the tape writes
     // with the one before it) the last line written up to it.
     connect(steps_, &StepPanel::playheadMoved, nc_, [this](int step, int move) {

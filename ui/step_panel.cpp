@@ -98,6 +98,7 @@ StepPanel::StepPanel(QWidget* parent)
     box->addLayout(switches);
 
     connect(table_, &QTableWidget::itemSelectionChanged, this, &StepPanel::onSelectionChanged);
+    connect(table_, &QTableWidget::itemSelectionChanged, this, [this] { emit stepChosen(selectedStep()); });
     connect(all, &QToolButton::clicked, this, [this] { selectStep(-1); });
     connect(play_, &QToolButton::toggled, this, &StepPanel::setPlaying);
     connect(timer_, &QTimer::timeout, this, &StepPanel::advance);
@@ -106,9 +107,39 @@ StepPanel::StepPanel(QWidget* parent)
     connect(before_, &QCheckBox::toggled, this, &StepPanel::stockBeforeToggled);
 }
 
+namespace {
+
+// Step k of `before` in `after`: the same unit (equal, else at the same
+// index) and the same step of it (its label, the n-th of that label); -1: gone.
+int sameStep(const Plan* before, int k, const Plan* after)
+{
+    if (!before || !after || k < 0 || k >= static_cast<int>(before->steps.size())) return k;
+    const Step& s = before->steps[static_cast<std::size_t>(k)];
+    const auto unitOf = [](const Plan& p, const Step& t) -> const MachiningUnit* {
+        return t.unit >= 0 && t.unit < static_cast<int>(p.job.units.size()) ? &p.job.units[static_cast<std::size_t>(t.unit)] : nullptr;
+    };
+    const MachiningUnit* unit = unitOf(*before, s);
+    const std::string label = s.label();
+    int nth = 0;
+    for (int i = 0; i < k; ++i)
+        nth += before->steps[static_cast<std::size_t>(i)].unit == s.unit && before->steps[static_cast<std::size_t>(i)].label() == label;
+    for (const bool byValue : {true, false}) {
+        int seen = 0;
+        for (std::size_t i = 0; i < after->steps.size(); ++i) {
+            const Step& t = after->steps[i];
+            const MachiningUnit* u = unitOf(*after, t);
+            const bool sameUnit = byValue ? unit && u && *u == *unit : t.unit == s.unit;
+            if (sameUnit && t.label() == label && seen++ == nth) return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+}  // namespace
+
 void StepPanel::setPlan(const std::shared_ptr<const Plan>& plan)
 {
-    const int keep = selectedStep();
+    const int keep = sameStep(plan_.get(), selectedStep(), plan.get());
     plan_ = plan;
     if (table_->editing()) {
         table_->setPlan(plan);  // waits for the cell being typed into; the selection stays
@@ -118,6 +149,7 @@ void StepPanel::setPlan(const std::shared_ptr<const Plan>& plan)
         const QSignalBlocker block(table_);
         table_->setPlan(plan);
         if (keep >= 0 && keep < table_->rowCount()) table_->selectRow(keep);
+        else table_->clearSelection();
     }
     if (!plan || table_->rowCount() == 0) setPlaying(false);
     lastEmitted_ = -2;  // a new plan: tell the preview again

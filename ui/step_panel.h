@@ -33,8 +33,10 @@ public:
 
     StepTable* table() const { return table_; }
     // A new plan (nullptr: input errors). The selected step stays selected
-    // when the plan still has it.
+    // when the plan still has it: the same step of the same unit (after an
+    // undo that moved it, at its new row), not the row of that number.
     void setPlan(const std::shared_ptr<const Plan>& plan);
+    const std::shared_ptr<const Plan>& plan() const { return plan_; }
     // -1 = all steps.
     int selectedStep() const;
     void selectStep(int index);
@@ -56,6 +58,8 @@ public:
 
 signals:
     void stepSelected(int index);  // -1 = all
+    // The operator (or selectStep) chose a step; not a new plan re-selecting it.
+    void stepChosen(int index);
     void viewRequested(taiwa::ui::ViewButton view);
     void showStockToggled(bool on);
     void stockBeforeToggled(bool before);

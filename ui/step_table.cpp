@@ -7,6 +7,8 @@
 
 
 #include <QHeaderView>
+#include <QScrollBar>
+#include <QStyle>
 
 #include <algorithm>
 #include <array>
@@ -142,16 +144,52 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
             const bool set = column == Speed ? s.cutting.speed.has_value() : s.cutting.feed.has_value();
             cell(r, column, value ? formatNumber(std::round(*value * 1e4) / 1e4) : QString(), set ? cuttingTip : QString(), set);
         }
-        cell(r, Start, round(s.startDepth));
-        cell(r, Depth, round(s.cutDepth));
+        if (s.turn) {
+            // A turned step has no start depth below a top face; its depth is
+            // the depth of cut of a pass (a thread's: the thread's), on the radius.
+            const double cut = s.turn->thread ? s.turn->thread->depth : s.turn->depthOfCut;
+            cell(r, Start, QStringLiteral("–"));
+            cell(r, Depth, cut > 0 ? round(cut) : QStringLiteral("–"), cut > 0 ? tr("Depth of cut on the radius: of a pass; of a thread, the whole thread") : QString());
+        } else {
+            cell(r, Start, round(s.startDepth));
+            cell(r, Depth, round(s.cutDepth));
+        }
         cell(r, Time, s.minutes ? clockTime(*s.minutes) : QString());
     }
     if (newRows) resizeColumnsToContents();
     else
         for (int c = 0; c < ColumnCount; ++c)
             if (changed[static_cast<std::size_t>(c)]) resizeColumnToContents(c);
+    fitColumns();
     updateGeometries();  // the scroll bars for the new widths now (a table made anew got them from its reset)
     filling_ = false;
+}
+
+void StepTable::resizeEvent(QResizeEvent* event)
+{
+    QTableWidget::resizeEvent(event);
+    fitColumns();
+}
+
+void StepTable::fitColumns()
+{
+    // A shown column is fitted to its contents already; a hidden one and the
+    // last (stretched) are measured.
+    const auto wanted = [this](int c) {
+        return isColumnHidden(c) || c == Time ? std::max(sizeHintForColumn(c), horizontalHeader()->sectionSizeHint(c)) : columnWidth(c);
+    };
+    int total = 0;
+    for (int c = 0; c < ColumnCount; ++c) total += wanted(c);
+    // The vertical scroll bar that more rows bring takes its width too.
+    const int room = viewport()->width() - (verticalScrollBar()->isVisible() ? 0 : style()->pixelMetric(QStyle::PM_ScrollBarExtent));
+    for (const Column c : {Start, Depth, Unit}) {
+        const bool hide = total > room;
+        const int width = wanted(c);
+        if (hide) total -= width;
+        if (isColumnHidden(c) == hide) continue;
+        setColumnHidden(c, hide);
+        if (!hide) setColumnWidth(c, width);
+    }
 }
 
 void StepTable::onItemChanged(QTableWidgetItem* item)

@@ -3,7 +3,8 @@
 // once the tool paths exist). S and F are the operator's to change: a value
 // typed there is kept in the job as that unit's speed or feed for steps of
 // that kind (Job: MachiningUnit::cutting) and shown in bold; an emptied cell
-// goes back to the tool's cutting data.
+// goes back to the tool's cutting data. Too narrow for every column, it
+// hides the start depth, the cut depth and the unit, in that order.
 #pragma once
 
 #include "pipeline/pipeline.h"
@@ -38,9 +39,15 @@ protected:
     // A plan that arrives while a cell is being typed into waits for the
     // editor to close (refilling the table would drop what is typed).
     void closeEditor(QWidget* editor, QAbstractItemDelegate::EndEditHint hint) override;
+    // The columns fitted to the width the table gets.
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     void onItemChanged(QTableWidgetItem* item);
+    // Narrow (a 1280- or 1366-pixel screen): Start, then Depth, then Unit
+    // are hidden (the selected step's numbers under the table and its unit's
+    // form say them) so that No., step, tool, S, F and time stay whole.
+    void fitColumns();
 
     std::shared_ptr<const Plan> plan_;
     std::optional<std::shared_ptr<const Plan>> waiting_;

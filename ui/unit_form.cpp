@@ -16,7 +16,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QKeyEvent>
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
@@ -36,10 +36,13 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     auto* drawing = new QLabel(this);
     const QString prefix = modulePrefix(kind);
     drawing->setObjectName(prefix + ".drawing");
-    drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 320));
     drawing->setAlignment(Qt::AlignCenter);
+    // Never wider than the form: drawn at the width the form gets (resizeEvent).
+    drawing->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    drawing->setMinimumWidth(0);
     outer->addWidget(drawing);
     drawing_ = drawing;
+    drawDrawing();
     // What the field being typed in is: one line under the drawing.
     help_ = new QLabel(this);
     help_->setObjectName(prefix + ".help");
@@ -49,12 +52,15 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     sketch_ = new SketchView(this);
     sketch_->setObjectName(prefix + ".sketch");
     outer->addWidget(sketch_);
-    auto* form = new QFormLayout;
-    outer->addLayout(form);
+    // Labels beside their fields, or above them when the form is too narrow
+    // for both (a 1280-pixel screen, Japanese labels): nothing scrolls
+    // sideways (arrange(); a grid, whose height follows wrapped error texts).
+    grid_ = new QGridLayout;
+    grid_->setColumnStretch(1, 1);
+    outer->addLayout(grid_);
     // A turned profile's tables and view, under its few fields.
     if (kind.turnedProfile(kind.makeDefault({}))) {
         drawingWidth_ = 240;
-        drawing->setPixmap(moduleDrawing(QString::fromUtf8(kind.drawing()), 240));
         profile_ = new ProfileEditor(prefix, this);
         outer->addWidget(profile_);
         connect(profile_, &ProfileEditor::edited, this,
@@ -70,11 +76,10 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     name_ = new QLineEdit(this);
     name_->setObjectName(prefix + ".name");
     name_->setPlaceholderText(tr("optional, e.g. Pocket A"));
-    form->addRow(tr("Unit name"), name_);
+    addRow(tr("Unit name"), name_, name_);
     connect(name_, &QLineEdit::textEdited, this, [this](const QString& t) { emit nameEdited(t); });
     connect(name_, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
     connect(name_, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
-    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     QWidget* previous = nullptr;
     for (std::size_t i = 0; i < fields_.size(); ++i) {
         const FieldSpec& f = fields_[i];
@@ -95,7 +100,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
             }
             // The meanings are long: the closed box shows their start, the list all of it.
             row.combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-            row.combo->setMinimumContentsLength(16);
+            row.combo->setMinimumContentsLength(12);
             connect(row.combo, &QComboBox::activated, this, [this, index](int item) {
                 emit edited(index, rows_[static_cast<std::size_t>(index)].combo->itemData(item).toDouble());
             });
@@ -125,7 +130,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
         row.message->hide();
         box->addWidget(editor);
         box->addWidget(row.message);
-        form->addRow(QCoreApplication::translate("taiwa::ui::FieldSpec", f.label.toUtf8().constData()), cell);
+        addRow(QCoreApplication::translate("taiwa::ui::FieldSpec", f.label.toUtf8().constData()), cell, editor);
         if (previous) setTabOrder(previous, editor);
         previous = editor;
     }
@@ -261,7 +266,67 @@ void UnitForm::showHelp(int field)
     const QString symbol = f ? f->symbol : QString();
     if (symbol == highlighted_) return;
     highlighted_ = symbol;
-    drawing_->setPixmap(moduleDrawing(QString::fromUtf8(kind_.drawing()), drawingWidth_, symbol));
+    drawDrawing();
+}
+
+// The drawing's width: its own, at most the room inside the form's margins.
+int UnitForm::drawingRoom() const
+{
+    const QMargins m = layout() ? layout()->contentsMargins() : QMargins();
+    return std::max(120, std::min(drawingWidth_, width() - m.left() - m.right()));
+}
+
+void UnitForm::drawDrawing()
+{
+    const int width = drawingRoom();
+    drawingShown_ = width;
+    drawing_->setPixmap(moduleDrawing(QString::fromUtf8(kind_.drawing()), width, highlighted_));
+}
+
+void UnitForm::addRow(const QString& text, QWidget* field, QWidget* buddy)
+{
+    auto* label = new QLabel(text, this);
+    label->setBuddy(buddy);
+    labelled_.push_back({label, field});
+    const int r = static_cast<int>(labelled_.size()) - 1;
+    grid_->addWidget(label, r, 0, Qt::AlignTop | Qt::AlignLeft);
+    grid_->addWidget(field, r, 1);
+}
+
+void UnitForm::arrange()
+{
+    int labels = 0, fields = 0;
+    for (const auto& [label, field] : labelled_) {
+        labels = std::max(labels, label->sizeHint().width());
+        fields = std::max(fields, field->minimumSizeHint().width());
+    }
+    const QMargins m = layout()->contentsMargins();
+    const bool above = labels + grid_->horizontalSpacing() + fields > width() - m.left() - m.right();
+    if (above == labelsAbove_ && grid_->count() > 0 && arranged_) return;
+    labelsAbove_ = above;
+    arranged_ = true;
+    for (const auto& [label, field] : labelled_) {
+        grid_->removeWidget(label);
+        grid_->removeWidget(field);
+    }
+    for (std::size_t i = 0; i < labelled_.size(); ++i) {
+        const int r = static_cast<int>(i);
+        labelled_[i].first->setWordWrap(above);  // above its field, a long label wraps rather than widen the form
+        if (above) {
+            grid_->addWidget(labelled_[i].first, 2 * r, 0, 1, 2);  // a row of its own: its height for its width
+            grid_->addWidget(labelled_[i].second, 2 * r + 1, 0, 1, 2);
+        } else {
+            grid_->addWidget(labelled_[i].first, r, 0, Qt::AlignTop | Qt::AlignLeft);
+            grid_->addWidget(labelled_[i].second, r, 1);
+        }
+    }
+}
+
+void UnitForm::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    arrange();
+    if (drawingRoom() != drawingShown_) drawDrawing();
 }
 
 bool UnitForm::eventFilter(QObject* watched, QEvent* event)

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+class QGridLayout;
 class QLabel;
 class QLineEdit;
 class QComboBox;
@@ -55,6 +56,8 @@ protected:
     // Ctrl+Z / Ctrl+Shift+Z in a field go to the job's undo stack, not to the
     // line edit's own undo.
     bool eventFilter(QObject* watched, QEvent* event) override;
+    // The drawing follows the form's width (at most its own size).
+    void resizeEvent(QResizeEvent* event) override;
 
 signals:
     // A field got a valid value (from typing or from a combo box).
@@ -84,7 +87,18 @@ private:
     class SketchView* sketch_ = nullptr;
     class QLabel* drawing_ = nullptr;
     class QLabel* help_ = nullptr;
-    int drawingWidth_ = 320;
+    int drawingWidth_ = 320;  // the drawing's own width
+    int drawingShown_ = 0;    // the width it is drawn at: at most the form's
+    void drawDrawing();
+    int drawingRoom() const;
+    // A label and its field (the buddy: the editor the label names).
+    void addRow(const QString& text, QWidget* field, QWidget* buddy);
+    // Labels beside the fields, or above them when both do not fit.
+    void arrange();
+    QGridLayout* grid_ = nullptr;
+    std::vector<std::pair<QLabel*, QWidget*>> labelled_;
+    bool labelsAbove_ = false;
+    bool arranged_ = false;
     QString highlighted_;
     void showHelp(int field);  // -1: none
     void enterPressed(int field);

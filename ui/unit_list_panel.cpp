@@ -72,10 +72,15 @@ void UnitListPanel::addUnit(const QString& module)
     unit.convertLengths([lu](double v) { return fromMm(v, lu); });
     // A contour unit in a job without figure elements: a first contour for it.
     if (j.figure.empty()) j.figure = kind->defaultFigure(j.stock);
-    const auto placed = place(j, unit);
-    if (!placed) return;
-    j.units.push_back(MachiningUnit{"", *placed});
+    // No free place (the stock looks full): at the module's default place
+    // all the same, its overlap marked by the check; the operator types the
+    // real corners next (the window puts the focus on the first).
+    const auto free = placeInFreeStock(j, unit);
+    j.units.push_back(MachiningUnit{"", free ? *free : unit});
     doc_->edit(j, tr("Add %1 unit").arg(module), {}, static_cast<int>(j.units.size()) - 1);
+    if (!free)
+        emit message(tr("Added where it overlaps another unit: the stock has no free place for it. Type its corners, "
+                        "or make the stock larger."));
 }
 
 std::optional<ModuleInput> UnitListPanel::place(const Job& job, const ModuleInput& unit)

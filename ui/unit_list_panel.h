@@ -25,8 +25,9 @@ public:
     void refresh();
 
     // Adds a unit of the module kind named `module` ("M4") with the kind's
-    // default values, in free stock, and selects it; says so when the stock
-    // has no free place, and adds nothing.
+    // default values, in free stock, and selects it; when the stock has no
+    // free place, at the module's default place all the same (the check marks
+    // its overlap) and says so.
     void addUnit(const QString& module);
     // A copy of the current unit after it, in free stock (or nothing, said).
     void duplicate();

@@ -718,6 +718,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>研削代 %1 の溝の種類</translation>
         </message>
         <message>
+            <source>profile row %1, %2</source>
+            <translation>形状 %1 行目、%2</translation>
+        </message>
+        <message>
+            <source>allowance row %1, %2</source>
+            <translation>研削代 %1 行目、%2</translation>
+        </message>
+        <message>
             <source>not a number</source>
             <translation>数値ではありません</translation>
         </message>
@@ -1231,6 +1239,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>Set for this step kind of the unit; empty the cell for the tool's cutting data</source>
             <translation>このユニットのこの工程に設定された値です。空にすると工具の切削条件に戻ります</translation>
         </message>
+        <message>
+            <source>Depth of cut on the radius: of a pass; of a thread, the whole thread</source>
+            <translation>半径での切込み: 1 パス分。ねじではねじ全体の深さ</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::TechnologyDialog</name>
@@ -1494,6 +1506,10 @@ Theirs: %6</source>
         <message>
             <source>Add %1 unit</source>
             <translation>%1 ユニットを追加</translation>
+        </message>
+        <message>
+            <source>Added where it overlaps another unit: the stock has no free place for it. Type its corners, or make the stock larger.</source>
+            <translation>他のユニットと重なる位置に追加しました: 素材に空きがありません。角の座標を入力するか、素材を大きくしてください。</translation>
         </message>
         <message>
             <source>No unit added: the stock has no free place for it. Make the stock larger or a unit smaller, or move one.</source>

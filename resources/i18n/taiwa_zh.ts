@@ -718,6 +718,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>余量 %1 的槽类型</translation>
         </message>
         <message>
+            <source>profile row %1, %2</source>
+            <translation>轮廓第 %1 行，%2</translation>
+        </message>
+        <message>
+            <source>allowance row %1, %2</source>
+            <translation>磨削余量第 %1 行，%2</translation>
+        </message>
+        <message>
             <source>not a number</source>
             <translation>不是数字</translation>
         </message>
@@ -1231,6 +1239,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <source>Set for this step kind of the unit; empty the cell for the tool's cutting data</source>
             <translation>为本单元此类工步设定的值；清空则恢复刀具的切削参数</translation>
         </message>
+        <message>
+            <source>Depth of cut on the radius: of a pass; of a thread, the whole thread</source>
+            <translation>半径方向的切深：每刀的；螺纹为整个螺纹的深度</translation>
+        </message>
     </context>
     <context>
         <name>taiwa::ui::TechnologyDialog</name>
@@ -1494,6 +1506,10 @@ Theirs: %6</source>
         <message>
             <source>Add %1 unit</source>
             <translation>添加 %1 单元</translation>
+        </message>
+        <message>
+            <source>Added where it overlaps another unit: the stock has no free place for it. Type its corners, or make the stock larger.</source>
+            <translation>已添加在与其他单元重叠的位置：毛坯上没有空位。请输入其角点，或加大毛坯。</translation>
         </message>
         <message>
             <source>No unit added: the stock has no free place for it. Make the stock larger or a unit smaller, or move one.</source>
