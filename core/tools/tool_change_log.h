@@ -53,9 +53,4 @@ Result<void> logToolChange(sqlite3* db, const std::string& operation, int toolId
 // The rows of one tool, oldest first.
 Result<std::vector<ToolChangeRecord>> readToolChanges(sqlite3* db, int toolId);
 
-// The table, for the schema of a new file and the migration 7 -> 8.
-constexpr const char* kToolChangesTable =
-    "CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
-    "station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL);";
-
 }  // namespace taiwa

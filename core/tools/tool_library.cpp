@@ -73,7 +73,8 @@ constexpr const char* kMigrations[] = {
     "CREATE TABLE tool_names (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, "
     "name TEXT NOT NULL, PRIMARY KEY (tool_id, language)); PRAGMA user_version = 7;",
     // 7 -> 8: who changed which tool, what and when (tool_change_log.h).
-    "CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
+    // (IF NOT EXISTS: a file whose version was set back by hand keeps its log.)
+    "CREATE TABLE IF NOT EXISTS tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
     "station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL); "
     "PRAGMA user_version = 8;",
 };
