@@ -7,6 +7,7 @@
 #pragma once
 
 #include "model/job.h"
+#include "post/block_tape.h"
 #include "post/dialect.h"
 #include "post/number_format.h"
 #include "post/machine_sink.h"
@@ -33,7 +34,7 @@ public:
     // workOffset: the words selecting the work offset, as workOffsetWords gives them.
     GCodeWriter(const Dialect& dialect, LengthUnit units, std::string workOffset = "G54");
 
-    void source(BlockSource where) override { source_ = where; }
+    void source(BlockSource where) override { tape_.source(where); }
     void programStart(const ProgramInfo& info) override;
     void comment(const std::string& text) override;
     void toolChange(int tool) override;
@@ -46,18 +47,14 @@ public:
     void dwell(double seconds) override;
     void programEnd() override;
 
-    const std::string& text() const { return text_; }
-    const std::vector<BlockSource>& sources() const { return sources_; }
+    const std::string& text() const { return tape_.text(); }
+    const std::vector<BlockSource>& sources() const { return tape_.sources(); }
     // Room for a program of about this many blocks (one growing tape copied
     // over and over cost a tenth of the time).
-    void reserve(std::size_t blocks)
-    {
-        text_.reserve(blocks * 30);
-        sources_.reserve(blocks);
-    }
+    void reserve(std::size_t blocks) { tape_.reserve(blocks); }
     // The tape and its sources, moved out (the writer is done).
-    std::string takeText() { return std::move(text_); }
-    std::vector<BlockSource> takeSources() { return std::move(sources_); }
+    std::string takeText() { return tape_.takeText(); }
+    std::vector<BlockSource> takeSources() { return tape_.takeSources(); }
 
 private:
     // The number of an axis word as written (in place: no allocation on the
@@ -73,15 +70,6 @@ private:
 
     std::string length(double v) const;
     Written written(double v) const;
-    void line(const std::string& text);   // unnumbered ('%', O-number, comments)
-    void block(const std::string& words); // numbered when the dialect numbers blocks
-    // A block written in place into the tape: begun (its N word when the
-    // dialect numbers blocks), words appended, ended (length checked, line
-    // and its source recorded).
-    void beginBlock();
-    void word(std::string_view w);                 // separated by a space from the one before
-    void word(char letter, std::string_view number);
-    void endBlock();
     void motionWord(const char* code);             // the motion code when the modal motion changes
     // The X, Y, Z words whose written number changes (X, Y always when
     // forced), with the axes' state updated; whether any was written.
@@ -99,11 +87,7 @@ private:
     int decimals_;
     int feedDecimals_;
     double resolution_;  // one unit of the last decimal of a length: 0.001 mm, 0.0001 in
-    int sequence_ = 0;
-    std::size_t blockStart_ = 0, wordsStart_ = 0;  // of the block being written, in text_
-    BlockSource source_;
-    std::string text_;
-    std::vector<BlockSource> sources_;
+    BlockTape tape_;  // block numbers, line limit, comments, line sources
 
     // Modal state as the controller sees it.
     std::array<std::optional<Written>, 3> axis_;  // X, Y, Z; empty while unknown
