@@ -126,16 +126,30 @@ void BM_FacePlan(benchmark::State& state)
     state.counters["moves"] = static_cast<double>(moves);
 }
 
+// `contours` circles of `n` / `contours` LINEs each, side by side.
+std::string circlesOfLines(int n, int contours)
+{
+    std::string dxf = "0\nSECTION\n2\nENTITIES\n";
+    const int k = n / contours;
+    const double r = contours == 1 ? 400.0 : 12.0;
+    for (int c = 0; c < contours; ++c) {
+        const double cx = 30.0 * (c % 40), cy = 30.0 * (c / 40);
+        for (int i = 0; i < k; ++i) {
+            const double a = 2 * std::numbers::pi * i / k, b = 2 * std::numbers::pi * (i + 1) / k;
+            dxf += fmt::format("0\nLINE\n8\n0\n10\n{:.9f}\n20\n{:.9f}\n11\n{:.9f}\n21\n{:.9f}\n", cx + r * std::cos(a),
+                               cy + r * std::sin(a), cx + r * std::cos(b), cy + r * std::sin(b));
+        }
+    }
+    return dxf + "0\nENDSEC\n0\nEOF\n";
+}
+
+// range(0) LINEs in range(1) closed contours: one circle of all of them, or
+// many polygons of 200 (each contour's names used to copy every name before
+// it: quadratic in the contours).
 void BM_DxfFigure(benchmark::State& state)
 {
     const auto n = static_cast<int>(state.range(0));
-    std::string dxf = "0\nSECTION\n2\nENTITIES\n";
-    for (int i = 0; i < n; ++i) {
-        const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 1) / n;
-        dxf += fmt::format("0\nLINE\n8\n0\n10\n{:.9f}\n20\n{:.9f}\n11\n{:.9f}\n21\n{:.9f}\n", 400 * std::cos(a),
-                           400 * std::sin(a), 400 * std::cos(b), 400 * std::sin(b));
-    }
-    dxf += "0\nENDSEC\n0\nEOF\n";
+    const std::string dxf = circlesOfLines(n, static_cast<int>(state.range(1)));
     for (auto _ : state) {
         const dxf::DxfReadResult r = dxf::readDxfBytes(dxf);
         std::vector<Contour> contours;
@@ -152,5 +166,8 @@ void BM_DxfFigure(benchmark::State& state)
 BENCHMARK(BM_ContourPocketCheck)->RangeMultiplier(2)->Range(250, 16000)->Arg(25000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_AreaCheck)->Arg(100)->Arg(200)->Arg(400)->Arg(500)->Arg(1000)->Arg(100000)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_FacePlan)->Arg(750)->Arg(100)->Arg(20)->Arg(10)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_DxfFigure)->Arg(2000)->Arg(20000)->Arg(200000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_DxfFigure)
+    ->Args({2000, 1})->Args({20000, 1})->Args({200000, 1})
+    ->Args({20000, 100})->Args({40000, 200})->Args({200000, 1000})
+    ->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK_MAIN();

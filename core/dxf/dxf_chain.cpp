@@ -22,20 +22,18 @@ constexpr double kExactJoin = 1e-9;     // mm: joins this close are not counted 
 
 std::string at(Point2 p) { return fmt::format("({:.3f}, {:.3f})", p.x, p.y); }
 
-// The ends of the pieces (end e: piece e / 2, its start if e is even) in a
-// grid of cells as wide as the largest distance asked about.
+// Some of the ends of the pieces (end e: piece e / 2, its start if e is
+// even) in a grid of cells as wide as the largest distance asked about. Two
+// grids serve the chaining: one as fine as the gap tolerance over every end
+// (the joins), one as wide as the report distance over the ends left free
+// (the gaps), so that a drawing of many short segments never makes one end
+// look at the thousands of ends within the report distance.
 class EndGrid {
 public:
-    EndGrid(const std::vector<Piece>& pieces, const std::vector<bool>& used, double cell) : cell_(cell)
+    EndGrid(const std::vector<Point2>& ends, const std::vector<bool>& in, double cell) : cell_(std::max(cell, 1e-9)), ends_(ends)
     {
-        ends_.resize(2 * pieces.size());
-        for (std::size_t i = 0; i < pieces.size(); ++i) {
-            ends_[2 * i] = pieces[i].segments.front().start;
-            ends_[2 * i + 1] = pieces[i].segments.back().end;
-            if (!used[i]) continue;
-            cells_[key(ends_[2 * i])].push_back(static_cast<int>(2 * i));
-            cells_[key(ends_[2 * i + 1])].push_back(static_cast<int>(2 * i + 1));
-        }
+        for (std::size_t e = 0; e < ends.size(); ++e)
+            if (in[e]) cells_[key(ends[e])].push_back(static_cast<int>(e));
     }
     Point2 end(int e) const { return ends_[static_cast<std::size_t>(e)]; }
     // Calls f(other end, distance) for the ends within `radius` of end e;
@@ -75,7 +73,7 @@ private:
         return pack(x, y);
     }
     double cell_;
-    std::vector<Point2> ends_;
+    const std::vector<Point2>& ends_;
     std::unordered_map<unsigned long long, std::vector<int>> cells_;
 };
 
@@ -103,7 +101,14 @@ ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double repo
     const std::size_t n = pieces.size();
     std::vector<bool> chained(n);
     for (std::size_t i = 0; i < n; ++i) chained[i] = !pieces[i].closedByItself;
-    const EndGrid grid(pieces, chained, reportDistance);
+    std::vector<Point2> endPoints(2 * n);
+    std::vector<bool> inGrid(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        endPoints[2 * i] = pieces[i].segments.front().start;
+        endPoints[2 * i + 1] = pieces[i].segments.back().end;
+        inGrid[2 * i] = inGrid[2 * i + 1] = chained[i];
+    }
+    const EndGrid grid(endPoints, inGrid, tolerance);
     const auto pieceOf = [](int e) { return static_cast<std::size_t>(e / 2); };
     const auto selfClosable = [&](std::size_t i) { return pieces[i].segments.size() > 1 || pieces[i].segments.front().isArc(); };
 
@@ -235,12 +240,15 @@ ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double repo
     // Gaps: each free end and the nearest other free end within the report
     // distance (never closer than the tolerance: they would have been joined).
     std::set<std::pair<int, int>> gapPairs;
+    std::vector<bool> free(2 * n);
+    for (std::size_t e = 0; e < 2 * n; ++e) free[e] = chained[pieceOf(static_cast<int>(e))] && partner[e] < 0;
+    const EndGrid freeEnds(endPoints, free, reportDistance);
     for (std::size_t e = 0; e < 2 * n; ++e) {
         const std::size_t i = pieceOf(static_cast<int>(e));
         if (!chained[i] || partner[e] >= 0 || crowded[e]) continue;
         int best = -1;
         double bestD = 0;
-        grid.near(static_cast<int>(e), reportDistance, [&](int o, double d) {
+        freeEnds.near(static_cast<int>(e), reportDistance, [&](int o, double d) {
             if (partner[static_cast<std::size_t>(o)] >= 0 || (pieceOf(o) == i && !selfClosable(i))) return;
             if (best < 0 || d < bestD) best = o, bestD = d;
         });

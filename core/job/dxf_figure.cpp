@@ -13,12 +13,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <unordered_set>
 #include <utility>
+#include <vector>
 
 namespace taiwa {
 
@@ -97,14 +100,42 @@ public:
     {
         for (;;) {
             std::string name = prefix_ + kind + std::to_string(++count_[kind]);
-            if (taken_.insert(name).second) return name;
+            if (taken_.insert(name).second) {
+                added_.push_back(name);
+                return name;
+            }
         }
+    }
+
+    // The names given since the last mark, to be taken back or given again:
+    // a contour is written up to four times (more decimals each time) and
+    // only one of its attempts keeps its names. Taking back costs what the
+    // attempt added, never a copy of every name so far (which made many
+    // contours quadratic).
+    struct Given {
+        std::vector<std::string> names;
+        std::map<char, int> count;
+    };
+    void mark() { added_.clear(), countAtMark_ = count_; }
+    Given takeBack()
+    {
+        Given g{std::move(added_), count_};
+        for (const auto& name : g.names) taken_.erase(name);
+        added_.clear();
+        count_ = countAtMark_;
+        return g;
+    }
+    void giveAgain(const Given& g)
+    {
+        for (const auto& name : g.names) taken_.insert(name);
+        count_ = g.count;
     }
 
 private:
     std::string prefix_;
-    std::set<std::string> taken_;
-    std::map<char, int> count_;
+    std::unordered_set<std::string> taken_;
+    std::vector<std::string> added_;
+    std::map<char, int> count_, countAtMark_;
 };
 
 // ------------------------------------------------------------ junctions
@@ -188,10 +219,12 @@ public:
         for (std::size_t k = 0; k < n; ++k)
             if (!s[k].isArc()) elements_[k] = line(k);
 
-        std::vector<Definition> out = points_;
-        out.insert(out.end(), circles_.begin(), circles_.end());
-        out.insert(out.end(), lines_.begin(), lines_.end());
-        out.push_back(contour(out));
+        std::vector<Definition> out = std::move(points_);
+        out.reserve(out.size() + circles_.size() + lines_.size() + 1);
+        out.insert(out.end(), std::make_move_iterator(circles_.begin()), std::make_move_iterator(circles_.end()));
+        out.insert(out.end(), std::make_move_iterator(lines_.begin()), std::make_move_iterator(lines_.end()));
+        Definition k = contour(out);
+        out.push_back(std::move(k));
         return out;
     }
 
@@ -215,9 +248,10 @@ private:
         d.name = names_.next('P');
         d.method = Method::PointXY;
         d.numbers = {q.x, q.y};
-        points_.push_back(d);
         pointNames_.emplace(key, d.name);
-        return d.name;
+        std::string name = d.name;
+        points_.push_back(std::move(d));
+        return name;
     }
     std::string pointAt(Point2 p) const
     {
@@ -247,8 +281,9 @@ private:
         d.method = Method::CircleCenterRadius;
         d.refs = {centres_[k]};
         d.numbers = {r};
-        circles_.push_back(d);
-        return d.name;
+        std::string name = d.name;
+        circles_.push_back(std::move(d));
+        return name;
     }
 
     // LINE/P1, P2; tangent at one end LINE/P, LEFT|RIGHT, TANTO, C from the
@@ -282,16 +317,21 @@ private:
             d.method = Method::LineTwoPoints;
             d.refs = {pointAt(s.start), pointAt(s.end)};
         }
-        lines_.push_back(d);
-        return d.name;
+        std::string name = d.name;
+        lines_.push_back(std::move(d));
+        return name;
     }
 
     Definition contour(const std::vector<Definition>& elements)
     {
         const auto& segs = c_.segments;
         const std::size_t n = segs.size();
-        const figure::Evaluation ev = figure::evaluate(elements);
-        if (!ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements cannot be evaluated: {}"), ev.errors.front().message)};
+        // The junction modifiers need the evaluated elements only where a
+        // circle meets: a contour of lines alone is not evaluated here (the
+        // attempt reads its whole text back and evaluates it all the same).
+        arcs_ = std::any_of(segs.begin(), segs.end(), [](const ContourSegment& s) { return s.isArc(); });
+        const figure::Evaluation ev = arcs_ ? figure::evaluate(elements) : figure::Evaluation{};
+        if (arcs_ && !ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements cannot be evaluated: {}"), ev.errors.front().message)};
         Definition d;
         d.name = names_.next('K');
         d.method = Method::Contour;
@@ -317,6 +357,7 @@ private:
     std::optional<Modifier> modifier(const figure::Evaluation& ev, const std::string& a, const std::string& b,
                                      Point2 junction) const
     {
+        if (!arcs_) return std::nullopt;  // two lines cross once
         const figure::Element* ea = ev.find(a);
         const figure::Element* eb = ev.find(b);
         if (!ea || !eb) throw std::logic_error("dxf figure: element not evaluated");
@@ -345,6 +386,7 @@ private:
     std::vector<std::string> centres_;   // per segment: an arc's centre point
     std::vector<std::string> elements_;  // per segment: its line or circle
     std::string start_, end_;            // an open contour's points
+    bool arcs_ = false;                  // whether any segment is an arc
 };
 
 // The largest distance of `got`'s ends and centres from `want`'s, segment by
@@ -456,26 +498,27 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
     for (const Contour& given : contours) {
         ++number;
         const Contour c = figureReady(given);
-        const Namer before = names;
+        names.mark();
         // To 1e-6 mm; where a junction amplifies the rounding beyond
         // kFigureRoundTrip, the contour's numbers get more decimals.
         std::optional<Attempt> best;
-        std::optional<Namer> bestNames;
+        Namer::Given bestNames;
         std::string why;  // why it is not written to 1e-6 mm
         for (const double scale : {1e6, 1e7, 1e8, 1e9}) {
-            names = before;
             try {
                 Attempt a = attempt(names, c, scale);
                 if (why.empty() && a.deviation > kFigureRoundTrip)
                     why = std::isinf(a.deviation) ? std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text gives back other segments"))
                                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it comes back {:.7f} mm from the drawing"), a.deviation);
-                if (!best || a.deviation < best->deviation) best = std::move(a), bestNames = names;
+                const bool better = !best || a.deviation < best->deviation;
+                Namer::Given taken = names.takeBack();
+                if (better) best = std::move(a), bestNames = std::move(taken);
                 if (best->deviation <= kFigureRoundTrip) break;
             } catch (const Refusal& r) {
+                names.takeBack();
                 if (why.empty()) why = r.message;
             }
         }
-        names = before;
         if (!best || !(best->deviation <= kFigureUsable)) {
             out.refusals.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} is left out: {}"), number, why));
             out.text += fmt::format("$$ contour {} ({}) left out: {}\n", number, describe(c), why);
@@ -483,7 +526,7 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
             out.deviations.push_back(0.0);
             continue;
         }
-        names = *bestNames;
+        names.giveAgain(bestNames);
         const std::string name = best->definitions.back().name;
         if (best->deviation > kFigureRoundTrip)
             out.notes.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} ({}) comes back {:.7f} mm from the drawing"), number, name,
