@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -93,135 +94,167 @@ int findRoot(std::vector<int>& parent, int x)
     return x;
 }
 
-}  // namespace
-
-ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double reportDistance)
-{
-    ChainResult out;
-    const std::size_t n = pieces.size();
-    std::vector<bool> chained(n);
-    for (std::size_t i = 0; i < n; ++i) chained[i] = !pieces[i].closedByItself;
-    std::vector<Point2> endPoints(2 * n);
-    std::vector<bool> inGrid(2 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-        endPoints[2 * i] = pieces[i].segments.front().start;
-        endPoints[2 * i + 1] = pieces[i].segments.back().end;
-        inGrid[2 * i] = inGrid[2 * i + 1] = chained[i];
+// The chaining in its four stages, over one set of pieces: the ends
+// matched (nearest pairs first), the branches reported, the chains walked
+// into contours, the gaps reported.
+class Chainer {
+public:
+    Chainer(std::vector<Piece> pieces, double tolerance, double reportDistance)
+        : pieces_(std::move(pieces)), n_(pieces_.size()), tolerance_(tolerance), reportDistance_(reportDistance),
+          chained_(n_), ends_(2 * n_), crowded_(2 * n_), partner_(2 * n_, -1), parent_(2 * n_)
+    {
+        std::vector<bool> inGrid(2 * n_);
+        for (std::size_t i = 0; i < n_; ++i) {
+            chained_[i] = !pieces_[i].closedByItself;
+            ends_[2 * i] = pieces_[i].segments.front().start;
+            ends_[2 * i + 1] = pieces_[i].segments.back().end;
+            inGrid[2 * i] = inGrid[2 * i + 1] = chained_[i];
+        }
+        grid_.emplace(ends_, inGrid, tolerance_);
+        std::iota(parent_.begin(), parent_.end(), 0);
     }
-    const EndGrid grid(endPoints, inGrid, tolerance);
-    const auto pieceOf = [](int e) { return static_cast<std::size_t>(e / 2); };
-    const auto selfClosable = [&](std::size_t i) { return pieces[i].segments.size() > 1 || pieces[i].segments.front().isArc(); };
 
-    // The pairs of ends within the tolerance, nearest first, matched greedily.
-    struct Candidate {
-        double d;
-        int a, b;
-    };
-    std::vector<Candidate> candidates;
-    std::vector<bool> crowded(2 * n);
-    for (std::size_t i = 0; i < n; ++i)
-        for (int e = static_cast<int>(2 * i); chained[i] && e <= static_cast<int>(2 * i + 1); ++e)
-            crowded[static_cast<std::size_t>(e)] = !grid.near(e, tolerance, [&](int o, double d) {
-                if (o > e && (pieceOf(o) != i || selfClosable(i))) candidates.push_back({d, e, o});
-            });
-    std::sort(candidates.begin(), candidates.end(),
-              [](const Candidate& x, const Candidate& y) { return std::tie(x.d, x.a, x.b) < std::tie(y.d, y.a, y.b); });
-    std::vector<int> partner(2 * n, -1);
-    std::vector<int> parent(2 * n);
-    std::iota(parent.begin(), parent.end(), 0);
-    for (const Candidate& c : candidates) {
-        parent[static_cast<std::size_t>(findRoot(parent, c.a))] = findRoot(parent, c.b);
-        if (partner[static_cast<std::size_t>(c.a)] < 0 && partner[static_cast<std::size_t>(c.b)] < 0) {
-            partner[static_cast<std::size_t>(c.a)] = c.b;
-            partner[static_cast<std::size_t>(c.b)] = c.a;
+    ChainResult run()
+    {
+        match();
+        reportBranches();
+        walk();
+        reportGaps();
+        return std::move(out_);
+    }
+
+private:
+    static std::size_t pieceOf(int e) { return static_cast<std::size_t>(e / 2); }
+    bool selfClosable(std::size_t i) const { return pieces_[i].segments.size() > 1 || pieces_[i].segments.front().isArc(); }
+    int& partner(int e) { return partner_[static_cast<std::size_t>(e)]; }
+
+    // The pairs of ends within the tolerance, nearest first, matched
+    // greedily; ends within the tolerance of each other share a root.
+    void match()
+    {
+        struct Candidate {
+            double d;
+            int a, b;
+        };
+        std::vector<Candidate> candidates;
+        for (std::size_t i = 0; i < n_; ++i)
+            for (int e = static_cast<int>(2 * i); chained_[i] && e <= static_cast<int>(2 * i + 1); ++e)
+                crowded_[static_cast<std::size_t>(e)] = !grid_->near(e, tolerance_, [&](int o, double d) {
+                    if (o > e && (pieceOf(o) != i || selfClosable(i))) candidates.push_back({d, e, o});
+                });
+        std::sort(candidates.begin(), candidates.end(),
+                  [](const Candidate& x, const Candidate& y) { return std::tie(x.d, x.a, x.b) < std::tie(y.d, y.a, y.b); });
+        for (const Candidate& c : candidates) {
+            parent_[static_cast<std::size_t>(findRoot(parent_, c.a))] = findRoot(parent_, c.b);
+            if (partner(c.a) < 0 && partner(c.b) < 0) {
+                partner(c.a) = c.b;
+                partner(c.b) = c.a;
+            }
         }
     }
 
     // Three or more ends within the tolerance of each other: a branch.
-    std::unordered_map<int, std::vector<int>> clusters;
-    for (std::size_t e = 0; e < 2 * n; ++e)
-        if (chained[pieceOf(static_cast<int>(e))]) clusters[findRoot(parent, static_cast<int>(e))].push_back(static_cast<int>(e));
-    for (std::size_t e = 0; e < 2 * n; ++e) {
-        auto it = clusters.find(findRoot(parent, static_cast<int>(e)));
-        if (it == clusters.end()) continue;
-        const std::vector<int>& ends = it->second;
-        const bool crowd = std::any_of(ends.begin(), ends.end(), [&](int x) { return crowded[static_cast<std::size_t>(x)]; });
-        if (ends.size() >= 3 || crowd) {
-            DxfBranch b{grid.end(ends.front()), static_cast<int>(ends.size()), {}, {}};
-            std::string names;
-            for (int x : ends) {
-                b.entities.push_back(pieces[pieceOf(x)].source);
-                if (b.entities.size() <= 4)
-                    names = names.empty() ? b.entities.back().text()
-                                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {}"), names, b.entities.back().text());
-            }
-            // One whole sentence for each case, for the station's translation.
-            const bool more = ends.size() > 4;
-            b.message =
-                crowd ? (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}, …; the nearest were joined, the rest left open"),
-                                            kMaxScan, at(b.at), names)
-                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}; the nearest were joined, the rest left open"),
-                                            kMaxScan, at(b.at), names))
-                      : (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}, …; the nearest were joined, the rest left open"),
-                                            ends.size(), at(b.at), names)
-                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}; the nearest were joined, the rest left open"),
-                                            ends.size(), at(b.at), names));
-            out.branches.push_back(std::move(b));
+    void reportBranches()
+    {
+        std::unordered_map<int, std::vector<int>> clusters;
+        for (std::size_t e = 0; e < 2 * n_; ++e)
+            if (chained_[pieceOf(static_cast<int>(e))]) clusters[findRoot(parent_, static_cast<int>(e))].push_back(static_cast<int>(e));
+        for (std::size_t e = 0; e < 2 * n_; ++e) {
+            auto it = clusters.find(findRoot(parent_, static_cast<int>(e)));
+            if (it == clusters.end()) continue;
+            const std::vector<int>& ends = it->second;
+            const bool crowd = std::any_of(ends.begin(), ends.end(), [&](int x) { return crowded_[static_cast<std::size_t>(x)]; });
+            if (ends.size() >= 3 || crowd) out_.branches.push_back(branch(ends, crowd));
+            clusters.erase(it);
         }
-        clusters.erase(it);
     }
 
-    // Walk the chains in the file's order, closing and measuring the joins.
-    const auto join = [&](ContourSegment& a, ContourSegment& b) {
+    DxfBranch branch(const std::vector<int>& ends, bool crowd) const
+    {
+        DxfBranch b{ends_[static_cast<std::size_t>(ends.front())], static_cast<int>(ends.size()), {}, {}};
+        std::string names;
+        for (int x : ends) {
+            b.entities.push_back(pieces_[pieceOf(x)].source);
+            if (b.entities.size() <= 4)
+                names = names.empty() ? b.entities.back().text()
+                                      : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {}"), names, b.entities.back().text());
+        }
+        // One whole sentence for each case, for the station's translation.
+        const bool more = ends.size() > 4;
+        b.message =
+            crowd ? (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}, …; the nearest were joined, the rest left open"),
+                                        kMaxScan, at(b.at), names)
+                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "more than {} ends meet at {} or near it: {}; the nearest were joined, the rest left open"),
+                                        kMaxScan, at(b.at), names))
+                  : (more ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}, …; the nearest were joined, the rest left open"),
+                                        ends.size(), at(b.at), names)
+                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} ends meet at {}: {}; the nearest were joined, the rest left open"),
+                                        ends.size(), at(b.at), names));
+        return b;
+    }
+
+    // Closes the join of a and b, counting it when it was not exact.
+    void join(ContourSegment& a, ContourSegment& b)
+    {
         const double d = distance(a.end, b.start);
         if (d > kExactJoin) {
-            ++out.joinsOverZero;
-            if (d > out.largestJoin) {
-                out.largestJoin = d;
-                out.largestJoinAt = a.end;
+            ++out_.joinsOverZero;
+            if (d > out_.largestJoin) {
+                out_.largestJoin = d;
+                out_.largestJoinAt = a.end;
             }
         }
         closeJoin(a, b);
-    };
-    std::vector<bool> visited(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (visited[i]) continue;
-        DxfContour c;
-        if (!chained[i]) {
-            visited[i] = true;
-            c.contour = {pieces[i].segments, true};
-            c.sources.assign(pieces[i].segments.size(), pieces[i].source);
-            out.contours.push_back(std::move(c));
-            continue;
-        }
-        // Back to the chain's head: the piece whose entering end is free, or
-        // round to i again (a closed chain).
-        int enter = static_cast<int>(2 * i);
-        for (std::size_t steps = 0; steps < n; ++steps) {
-            const int q = partner[static_cast<std::size_t>(enter)];
-            if (q < 0) break;
-            if (pieceOf(q) == i) {
-                enter = static_cast<int>(2 * i);
-                break;
+    }
+
+    // The chains in the file's order, joins closed and measured.
+    void walk()
+    {
+        std::vector<bool> visited(n_);
+        for (std::size_t i = 0; i < n_; ++i) {
+            if (visited[i]) continue;
+            if (!chained_[i]) {
+                visited[i] = true;
+                DxfContour c;
+                c.contour = {pieces_[i].segments, true};
+                c.sources.assign(pieces_[i].segments.size(), pieces_[i].source);
+                out_.contours.push_back(std::move(c));
+                continue;
             }
+            out_.contours.push_back(chainFrom(head(i), visited));
+        }
+    }
+
+    // The end by which the chain through piece i is entered: back along the
+    // partners to a piece whose entering end is free, or round to i again
+    // (a closed chain).
+    int head(std::size_t i)
+    {
+        int enter = static_cast<int>(2 * i);
+        for (std::size_t steps = 0; steps < n_; ++steps) {
+            const int q = partner(enter);
+            if (q < 0) break;
+            if (pieceOf(q) == i) return static_cast<int>(2 * i);
             enter = q ^ 1;
         }
+        return enter;
+    }
+
+    DxfContour chainFrom(int enter, std::vector<bool>& visited)
+    {
+        DxfContour c;
         const std::size_t head = pieceOf(enter);
         bool closed = false;
-        for (std::size_t steps = 0; steps <= n; ++steps) {
+        for (std::size_t steps = 0; steps <= n_; ++steps) {
             const std::size_t p = pieceOf(enter);
             visited[p] = true;
-            const bool forward = enter % 2 == 0;
             const std::size_t first = c.contour.segments.size();
-            if (forward) c.contour.segments.insert(c.contour.segments.end(), pieces[p].segments.begin(), pieces[p].segments.end());
+            if (enter % 2 == 0) c.contour.segments.insert(c.contour.segments.end(), pieces_[p].segments.begin(), pieces_[p].segments.end());
             else
-                for (auto s = pieces[p].segments.rbegin(); s != pieces[p].segments.rend(); ++s)
-                    c.contour.segments.push_back(s->reversed());
-            c.sources.resize(c.contour.segments.size(), pieces[p].source);
-            if (first > 0) {
-                join(c.contour.segments[first - 1], c.contour.segments[first]);
-            }
-            const int next = partner[static_cast<std::size_t>(enter ^ 1)];
+                for (auto s = pieces_[p].segments.rbegin(); s != pieces_[p].segments.rend(); ++s) c.contour.segments.push_back(s->reversed());
+            c.sources.resize(c.contour.segments.size(), pieces_[p].source);
+            if (first > 0) join(c.contour.segments[first - 1], c.contour.segments[first]);
+            const int next = partner(enter ^ 1);
             if (next < 0) break;
             if (pieceOf(next) == head) {
                 closed = true;
@@ -230,39 +263,58 @@ ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double repo
             if (visited[pieceOf(next)]) break;  // cannot happen with a matching; kept as a guard
             enter = next;
         }
-        if (closed) {
-            join(c.contour.segments.back(), c.contour.segments.front());
-        }
+        if (closed) join(c.contour.segments.back(), c.contour.segments.front());
         c.contour.closed = closed;
-        out.contours.push_back(std::move(c));
+        return c;
     }
 
     // Gaps: each free end and the nearest other free end within the report
-    // distance (never closer than the tolerance: they would have been joined).
-    std::set<std::pair<int, int>> gapPairs;
-    std::vector<bool> free(2 * n);
-    for (std::size_t e = 0; e < 2 * n; ++e) free[e] = chained[pieceOf(static_cast<int>(e))] && partner[e] < 0;
-    const EndGrid freeEnds(endPoints, free, reportDistance);
-    for (std::size_t e = 0; e < 2 * n; ++e) {
-        const std::size_t i = pieceOf(static_cast<int>(e));
-        if (!chained[i] || partner[e] >= 0 || crowded[e]) continue;
-        int best = -1;
-        double bestD = 0;
-        freeEnds.near(static_cast<int>(e), reportDistance, [&](int o, double d) {
-            if (partner[static_cast<std::size_t>(o)] >= 0 || (pieceOf(o) == i && !selfClosable(i))) return;
-            if (best < 0 || d < bestD) best = o, bestD = d;
-        });
-        if (best >= 0 && bestD > tolerance) gapPairs.insert(std::minmax(static_cast<int>(e), best));
+    // distance (never closer than the tolerance: they would have been
+    // joined), found on a grid of the free ends alone.
+    void reportGaps()
+    {
+        std::vector<bool> free(2 * n_);
+        for (std::size_t e = 0; e < 2 * n_; ++e) free[e] = chained_[pieceOf(static_cast<int>(e))] && partner_[e] < 0;
+        const EndGrid freeEnds(ends_, free, reportDistance_);
+        std::set<std::pair<int, int>> pairs;
+        for (std::size_t e = 0; e < 2 * n_; ++e) {
+            const std::size_t i = pieceOf(static_cast<int>(e));
+            if (!free[e] || crowded_[e]) continue;
+            int best = -1;
+            double bestD = 0;
+            freeEnds.near(static_cast<int>(e), reportDistance_, [&](int o, double d) {
+                if (pieceOf(o) == i && !selfClosable(i)) return;
+                if (best < 0 || d < bestD) best = o, bestD = d;
+            });
+            if (best >= 0 && bestD > tolerance_) pairs.insert(std::minmax(static_cast<int>(e), best));
+        }
+        for (const auto& [a, b] : pairs) {
+            const Point2 pa = ends_[static_cast<std::size_t>(a)], pb = ends_[static_cast<std::size_t>(b)];
+            DxfGap g{pa, pb, distance(pa, pb), pieces_[pieceOf(a)].source, pieces_[pieceOf(b)].source, {}};
+            g.message = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm"),
+                                    g.size, at(g.at), g.a.text(), g.b.text(), at(g.other), tolerance_);
+            out_.gaps.push_back(std::move(g));
+        }
+        std::stable_sort(out_.gaps.begin(), out_.gaps.end(), [](const DxfGap& x, const DxfGap& y) { return x.size > y.size; });
     }
-    for (const auto& [a, b] : gapPairs) {
-        DxfGap g{grid.end(a), grid.end(b), distance(grid.end(a), grid.end(b)), pieces[pieceOf(a)].source,
-                 pieces[pieceOf(b)].source, {}};
-        g.message = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gap of {:.4g} mm at {} between {} and {}, whose end is at {}; the gap tolerance is {:.4g} mm"),
-                                g.size, at(g.at), g.a.text(), g.b.text(), at(g.other), tolerance);
-        out.gaps.push_back(std::move(g));
-    }
-    std::stable_sort(out.gaps.begin(), out.gaps.end(), [](const DxfGap& x, const DxfGap& y) { return x.size > y.size; });
-    return out;
+
+    std::vector<Piece> pieces_;
+    std::size_t n_;
+    double tolerance_, reportDistance_;
+    std::vector<bool> chained_;    // per piece: not closed by itself
+    std::vector<Point2> ends_;     // per end
+    std::optional<EndGrid> grid_;  // every chained end, cells as wide as the tolerance
+    std::vector<bool> crowded_;    // per end: too many ends near it to look at
+    std::vector<int> partner_;     // per end: the end it is joined to, or -1
+    std::vector<int> parent_;      // per end: union-find of the ends within the tolerance
+    ChainResult out_;
+};
+
+}  // namespace
+
+ChainResult chainPieces(std::vector<Piece> pieces, double tolerance, double reportDistance)
+{
+    return Chainer(std::move(pieces), tolerance, reportDistance).run();
 }
 
 }  // namespace taiwa::dxf::detail
