@@ -1,5 +1,5 @@
 // Balanced roughing on a two-path lathe (docs/two-path-lathe.md): for each
-// two-path sample (tests/data/two-path/*.taiwa) the roughing balanced
+// two-path sample (resources/samples/lathe-two-path-*.taiwa) the roughing balanced
 // between the turrets and run on the two-path timeline. Prints, per sample,
 // the roughing's time on one path and on two, their ratio (a cylinder
 // comes close to half), the least lag of a follower behind its leader in
@@ -27,7 +27,7 @@ const TurnStep& roughing(const std::string& stem)
     static std::map<std::string, Plan> plans;
     auto it = plans.find(stem);
     if (it == plans.end()) {
-        auto r = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../tests/data/two-path/" + stem + ".taiwa");
+        auto r = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/" + stem + ".taiwa");
         if (!r.job) throw std::runtime_error("cannot read " + stem);
         it = plans.emplace(stem, planJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary())).first;
     }

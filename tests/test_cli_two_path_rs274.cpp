@@ -3,7 +3,13 @@
 // STEM.p1.nc and STEM.p2.nc (no STEM.nc), the tape image lists both, and
 // for LinuxCNC each path's tool table, both programs passing rs274 in lathe
 // mode with their table; FANUC's pair carries the same wait codes on both
-// paths, the dwells on path 2; verify runs the timeline and reports it clean.
+// paths, the dwells on path 2, and the sheet covers both paths; verify runs
+// the timeline and reports it clean. The job's two-path settings (a
+// version 6 job: two revolutions, waits everywhere) reach both programs,
+// which still pass rs274, and verify; a dwell below half a revolution is
+// refused at its field. A job on the gang-tool lathe exports one tape
+// whose tool changes are the gang change (Z clear before each T word, X
+// after it), passing rs274 with its table.
 // Holds the rs274 lock (its name says rs274: tests/CMakeLists.txt).
 #include "support/rs274.h"
 #include "support/support.h"
@@ -22,7 +28,7 @@ using nlohmann::json;
 
 namespace {
 
-QString sample(const QString& stem) { return dataPath("two-path/" + stem + ".taiwa"); }
+QString sample(const QString& stem) { return sourcePath("resources/samples/" + stem + ".taiwa"); }
 
 int count(const std::string& text, const QString& pattern)
 {
@@ -83,6 +89,59 @@ private slots:
         QCOMPARE(count(p1, "^M1[0-9][0-9]$"), count(p2, "^M1[0-9][0-9]$"));
         QVERIFY(count(p2, R"(^G04 X\d)") > 0);
         QCOMPARE(count(p1, R"(^G04 X\d)"), 0);
+        // One sheet for both paths: each step's path, the roughing's timeline.
+        const std::string html = readFile(d.filePath("lathe-two-path-taper.sheet.html"));
+        QVERIFY(html.find("<h2>Paths</h2>") != std::string::npos);
+        QVERIFY(html.find("<h2>Balanced roughing on the timeline</h2>") != std::string::npos);
+        QVERIFY2(html.find("M101 met") != std::string::npos || html.find("M101 wait") != std::string::npos, "the first wait marked");
+    }
+
+    void jobSettingsReachTheExportAndVerify()
+    {
+        QTemporaryDir dir;
+        json job = json::parse(readFile(sample("lathe-two-path-cylinder")));
+        const auto handshakes = [&](const json& j, const QString& name) {
+            const QString file = dir.filePath(name + ".taiwa");
+            writeFile(file, j.dump(2));
+            const auto r = runTaiwa({"export", file, "--out", dir.filePath(name)});
+            if (r.exitCode != 0) qWarning("%s", qPrintable(r.err));
+            std::vector<int> out;
+            for (int p = 1; p <= 2; ++p) {
+                const std::string program = readFile(dir.filePath(QString("%1/%1.p%2.nc").arg(name).arg(p)));
+                const Rs274Result run = runRs274(program, readFile(dir.filePath(QString("%1/%1.p%2.tbl").arg(name).arg(p))));
+                if (!run.ok) qWarning("%s", qPrintable(run.errors));
+                out.push_back(run.ok ? count(program, R"(^M66 P0)") : -1);
+            }
+            return out;
+        };
+        const std::vector<int> plain = handshakes(job, "plain");
+        job["version"] = 6;
+        job["twoPath"] = {{"dwellRevolutions", 2}, {"waitsEverywhere", true}};
+        const std::vector<int> everywhere = handshakes(job, "everywhere");
+        qInfo("handshakes per path: %d by default, %d with waits everywhere", plain[0], everywhere[0]);
+        QVERIFY(plain[0] >= 2 && plain[0] == plain[1]);
+        QVERIFY(everywhere[0] > plain[0] && everywhere[0] == everywhere[1]);  // a cylinder waits only at the ends unless asked
+        const auto v = runTaiwa({"verify", dir.filePath("everywhere.taiwa"), "--json"});
+        QCOMPARE(v.exitCode, 0);
+        QVERIFY(json::parse(v.out.toStdString())["twoPath"]["leastLag"].get<double>() >= 2.0 - 1e-6);
+        job["twoPath"]["dwellRevolutions"] = 0.4;
+        writeFile(dir.filePath("slow.taiwa"), job.dump(2));
+        const auto r = runTaiwa({"check", dir.filePath("slow.taiwa")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("twoPath.dwellRevolutions: the follower's dwell is 0.4 spindle revolutions"), qPrintable(r.err));
+    }
+
+    void gangToolExportPassesRs274()
+    {
+        QTemporaryDir dir;
+        const auto r = runTaiwa({"export", dataPath("gang/lathe-gang-shaft.taiwa"), "--out", dir.path()});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
+        const std::string nc = readFile(dir.filePath("lathe-gang-shaft.nc"));
+        // Each of the three tool calls after a Z clear, and followed by X with Z held.
+        QCOMPARE(count(nc, R"(^G0 Z[0-9.]+\nT\d M6 G43\nG0 X[0-9.]+ Z[0-9.]+$)"), 3);
+        const Rs274Result run = runRs274(nc, readFile(dir.filePath("lathe-gang-shaft.tbl")));
+        QVERIFY2(run.ok, qPrintable(run.errors));
+        QVERIFY(run.moves.size() > 20);
     }
 
     void verifyRunsTheTimeline()

@@ -6,7 +6,11 @@
 // HEIDENHAIN) or tests/golden/STEM.uN.KIND.DIALECT.nc (a probing unit's
 // setting program and probing cycle), reviewed by hand once. A mismatch writes STEM.DIALECT.nc.actual beside
 // the golden file; TAIWA_UPDATE_GOLDEN=1 rewrites the golden files instead.
-// Lathe jobs have no tape yet: their golden file is the turned profiles of
+// A job on a two-path lathe writes STEM.p1.nc and STEM.p2.nc in place of
+// the tape (docs/two-path-lathe.md), in the dialects that write two-path
+// programs (the ISO ones): both compared, as STEM.p1.DIALECT.nc and
+// STEM.p2.DIALECT.nc.
+// Lathe jobs also have the turned profiles of
 // STEM.steps.json (tests/golden/STEM.turned.json: profile, allowance rows,
 // deformed profile), reviewed by hand against docs/turning.md.
 #include "support/support.h"
@@ -41,10 +45,12 @@ private slots:
             const std::string text = readFile(f.absoluteFilePath());
             const bool lathe = text.find("\"shape\": \"bar\"") != std::string::npos;
             const bool probing = text.find("\"module\": \"PROBE\"") != std::string::npos;
+            const bool twoPath = text.find("\"machine\": \"lathe-two-path\"") != std::string::npos;
             if (lathe) QTest::newRow(qPrintable(f.completeBaseName() + "/turned")) << f.absoluteFilePath() << "turned";
             // Every shipped dialect; Klartext is a milling control's language
             // (no lathe tapes), the probing programs are written in ISO only.
-            const QStringList dialects = shippedDialectsWriting(lathe ? DialectWrites::LatheTapes
+            const QStringList dialects = shippedDialectsWriting(twoPath ? DialectWrites::TwoPathPrograms
+                                                                : lathe ? DialectWrites::LatheTapes
                                                                 : probing ? DialectWrites::ProbingPrograms
                                                                           : DialectWrites::MillingTapes);
             for (const QString& dialect : dialects)
@@ -75,7 +81,8 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString stem = QFileInfo(job).completeBaseName();
         const auto written = QDir(out.path()).entryList({"*.nc", "*.mpf", "*.h"}, QDir::Files, QDir::Name);
-        const QString tape = stem + (dialect == "sinumerik" ? ".mpf" : dialect == "heidenhain" ? ".h" : ".nc");
+        const bool twoPath = readFile(job).find("\"machine\": \"lathe-two-path\"") != std::string::npos;
+        const QString tape = stem + (twoPath ? ".p1" : "") + (dialect == "sinumerik" ? ".mpf" : dialect == "heidenhain" ? ".h" : ".nc");
         QVERIFY2(written.contains(tape), qPrintable(written.join(", ")));
         bool rewrote = false;
         for (const QString& name : written) {

@@ -15,13 +15,24 @@
 // programs of the whole job (post/two_path_post.h) against golden files
 // read by hand; and the gang-tool change (machine/gang_change.h): no X
 // motion while any tool on the slide is inside the part's envelope plus
-// the clearance, for every pair of the slide's tools.
+// the clearance, for every pair of the slide's tools, and on the posted
+// tape of a gang-tool job (post/gang_post.h) too. The job's two-path
+// settings (Job::twoPath): read, written and refused by the job check
+// naming the field, and taken by the export and verify. The sheet's part
+// (export/two_path_sheet.h): each step's path, the timeline as a
+// Gantt-style table with the waits side by side.
+#include "export/two_path_export.h"
+#include "export/two_path_sheet.h"
 #include "job/job_file.h"
 #include "machine/gang_change.h"
 #include "machine/machine.h"
 #include "turning/balanced_roughing.h"
 #include "pipeline/pipeline.h"
+#include "post/gang_post.h"
+#include "post/lathe_post.h"
 #include "post/two_path_post.h"
+#include "sheet/sheet.h"
+#include "support/hand_plan.h"
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "verify/two_path_timeline.h"
@@ -47,7 +58,7 @@ using turning::ZR;
 
 namespace {
 
-// The roughing step of a two-path sample (tests/data/two-path/STEM.taiwa).
+// The roughing step of a two-path sample (resources/samples/STEM.taiwa).
 std::map<std::string, Plan>& plansCache()
 {
     static std::map<std::string, Plan> plans;
@@ -58,7 +69,7 @@ const Step& roughingStep(const std::string& stem)
     auto& plans = plansCache();
     auto it = plans.find(stem);
     if (it == plans.end()) {
-        auto r = readJobFile(test::dataPath(QString::fromStdString("two-path/" + stem + ".taiwa")).toStdString());
+        auto r = readJobFile(test::sourcePath(QString::fromStdString("resources/samples/" + stem + ".taiwa")).toStdString());
         if (!r.job) qFatal("cannot read %s", stem.c_str());
         it = plans.emplace(stem, planJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary())).first;
     }
@@ -129,6 +140,88 @@ double rpmAt(const TurnCutting& c, double limit, double r)
 {
     if (!c.constantSurfaceSpeed) return c.rpm;
     return std::min(limit, 1000.0 * c.surfaceSpeed / (std::numbers::pi * 2 * std::abs(r)));
+}
+
+// What the slide does during a tape's tool changes, by the test's own
+// reading of the tape: the physical slide (reference point) through every
+// motion the post wrote outside the steps' paths (BlockSource move -1: the
+// changes, the approach to a step's start, the end), and each X motion
+// sampled against the envelope grown by the clearance. `offsetAtT`: the
+// control applies a new tool's offset at the T word itself (the slide
+// moves by the offsets' difference there), else with the next motion.
+struct SlideRun {
+    int changes = 0;
+    int xMoves = 0;          // X motions checked
+    QStringList sweeps;      // "line 31: T101 inside at Z.. X.."
+};
+SlideRun runSlide(const PostedProgram& p, const GangSlide& g, const PartEnvelope& part, bool offsetAtT)
+{
+    SlideRun run;
+    const QStringList lines = QString::fromStdString(p.nc).split('\n');
+    std::map<int, int> toolAt;
+    for (const QString& l : lines) {
+        const auto m = QRegularExpression(R"(T(\d+) = LIBRARY T(\d+))", QRegularExpression::CaseInsensitiveOption).match(l);
+        if (m.hasMatch()) toolAt[m.captured(1).toInt()] = m.captured(2).toInt();
+    }
+    ZR offset{0.0, 0.0};
+    std::optional<ZR> tip, slidePos;
+    const auto known = [](const std::optional<ZR>& at) { return at && !std::isnan(at->z) && !std::isnan(at->r); };
+    const auto segment = [&](int line, ZR from, ZR to) {
+        if (std::isnan(from.z + from.r + to.z + to.r) || std::abs(to.r - from.r) < 1e-9) return;
+        ++run.xMoves;
+        for (int k = 0; k <= 400; ++k) {
+            const double f = k / 400.0;
+            const ZR at{from.z + f * (to.z - from.z), from.r + f * (to.r - from.r)};
+            if (anyToolInside(g, at, part)) {
+                run.sweeps << QString("line %1: slide at Z%2 X%3").arg(line + 1).arg(at.z).arg(2 * at.r);
+                return;
+            }
+        }
+    };
+    const QRegularExpression words(R"((?:^|\s)([XZ])(-?[0-9]*\.?[0-9]+))");
+    // A G71's contour blocks (P to Q) say the profile, they move nothing themselves.
+    int contourFrom = -1, contourTo = -1;
+    for (int i = 0; i < lines.size(); ++i) {
+        QString body = lines[i];
+        const auto number = QRegularExpression(R"(^N(\d+) )").match(body);
+        if (number.hasMatch() && number.captured(1).toInt() >= contourFrom && number.captured(1).toInt() <= contourTo) continue;
+        if (const auto pq = QRegularExpression(R"(G71 P(\d+) Q(\d+))").match(body); pq.hasMatch()) {
+            contourFrom = pq.captured(1).toInt();
+            contourTo = pq.captured(2).toInt();
+        }
+        body.remove(QRegularExpression(R"(^N\d+ )"));
+        body.remove(QRegularExpression(R"(\(.*\)|;.*$)"));
+        const bool inChange = static_cast<std::size_t>(i) < p.lines.size() && p.lines[static_cast<std::size_t>(i)].move < 0;
+        if (QRegularExpression(R"(^T(\d\d)\d\d$|^T(\d+)\b)").match(body).hasMatch()) {
+            const auto m = QRegularExpression(R"(^T(\d\d)\d\d$|^T(\d+)\b)").match(body);
+            const int station = (m.captured(1).isEmpty() ? m.captured(2) : m.captured(1)).toInt();
+            const GangPlace* place = g.place(toolAt.at(station));
+            if (!place) qFatal("no place for station %d", station);
+            ++run.changes;
+            if (offsetAtT && known(tip) && known(slidePos)) {
+                const ZR to{tip->z - place->offset.z, tip->r - place->offset.r};
+                segment(i, *slidePos, to);
+                slidePos = to;
+            }
+            offset = place->offset;
+            continue;
+        }
+        if (body.startsWith(' ') || body.startsWith('o') || body.contains(QRegularExpression(R"(G0?4\b|G7[0-6]|G50|CYCLE)"))) continue;
+        ZR next = tip.value_or(ZR{std::nan(""), std::nan("")});
+        bool moved = false;
+        auto it = words.globalMatch(body);
+        while (it.hasNext()) {
+            const auto w = it.next();
+            (w.captured(1) == "X" ? next.r : next.z) = w.captured(2).toDouble() / (w.captured(1) == "X" ? 2.0 : 1.0);
+            moved = true;
+        }
+        if (!moved) continue;
+        const ZR to{next.z - offset.z, next.r - offset.r};
+        if (inChange && slidePos) segment(i, *slidePos, to);
+        tip = next;
+        slidePos = to;
+    }
+    return run;
 }
 
 }  // namespace
@@ -379,6 +472,189 @@ private slots:
         QVERIFY(turning::balanceRoughing(s.path, s.cutting, narrow));
     }
 
+    // The job's settings (docs/job-format.md "twoPath"): in the job file
+    // only when not the defaults (version 6), read back the same; refused
+    // by the job check at their field; taken by the export's programs and
+    // by verify's timeline.
+    void jobSettingsReadCheckedAndUsed()
+    {
+        const std::string text = test::readFile(test::sourcePath(QString::fromStdString("resources/samples/" + kCylinder + ".taiwa")));
+        const Job sample = *readJob(text).job;
+        QCOMPARE(sample.twoPath, TwoPathSettings{});
+        QCOMPARE(writeJob(sample), text);  // the defaults: no "twoPath", the version the sample has
+        Job job = sample;
+        job.twoPath = {2.0, true, 120};
+        const std::string written = writeJob(job);
+        QVERIFY2(written.find("\"version\": 6,") != std::string::npos, written.c_str());
+        QVERIFY2(written.find("\"twoPath\": {\n    \"dwellRevolutions\": 2,\n    \"waitsEverywhere\": true,\n    \"firstWait\": 120\n  },")
+                     != std::string::npos,
+                 written.c_str());
+        const auto back = readJob(written);
+        QVERIFY(back.job);
+        QCOMPARE(back.job->twoPath, job.twoPath);
+        // Read errors name the key.
+        const auto fieldsOf = [](const Diagnostics& ds) {
+            QStringList out;
+            for (const auto& d : ds) out << QString::fromStdString(d.field + ": " + d.message);
+            return out.join("\n");
+        };
+        std::string bad = written;
+        bad.replace(bad.find("\"waitsEverywhere\": true"), 23, "\"waitsEverywhere\": 1");
+        auto refused = readJob(bad);
+        QVERIFY(!refused.job);
+        QVERIFY2(fieldsOf(refused.diagnostics).startsWith("twoPath.waitsEverywhere: "), qPrintable(fieldsOf(refused.diagnostics)));
+
+        // The job check, one field at a time.
+        const auto check = [&](const Job& j) { return fieldsOf(planJob(j, TechnologyTable::builtIn(), defaultToolLibrary()).diagnostics); };
+        QCOMPARE(check(job), QString());
+        Job slow = sample;
+        slow.twoPath.dwellRevolutions = 0.4;
+        QCOMPARE(check(slow), QString("twoPath.dwellRevolutions: the follower's dwell is 0.4 spindle revolutions; it must be at "
+                                      "least 0.5, or the follower cuts where the leader has not"));
+        slow.twoPath.dwellRevolutions = 0.5;  // half a revolution is taken
+        QCOMPARE(check(slow), QString());
+        Job onePath = job;
+        onePath.machine = "lathe";
+        QCOMPARE(check(onePath), QString("twoPath: machine lathe has one path; the two-path settings are for a two-path lathe "
+                                         "(lathe-two-path)"));
+        onePath.twoPath = {};  // the defaults: an ordinary lathe job
+        QCOMPARE(check(onePath), QString());
+        Job siemens = sample;  // a dialect without the waits
+        siemens.dialect = "sinumerik";
+        QCOMPARE(check(siemens), QString("dialect: the sinumerik dialect writes no two-path programs; machine lathe-two-path needs one "
+                                         "of the ISO dialects"));
+        siemens.dialect = "haas";
+        QCOMPARE(check(siemens), QString());
+        for (const int code : {99, 200}) {
+            Job outside = sample;
+            outside.twoPath.firstWait = code;
+            QCOMPARE(check(outside), QString("twoPath.firstWait: M%1 is not a wait code of machine lathe-two-path: it waits "
+                                             "with M101 to M199").arg(code));
+        }
+
+        // The export and verify take them: waits at every meeting, two
+        // revolutions behind, the codes from M120 (the defaults: fewer
+        // waits, one revolution, from M101).
+        const auto fanucPair = [](const Job& j) {
+            const Plan plan = planJob(j, TechnologyTable::builtIn(), defaultToolLibrary());
+            auto files = twoPathTapes(plan, "fanuc", std::nullopt, 1000, "t");
+            if (!files || !*files) qFatal("no two-path tapes");
+            return std::make_pair(plan, **files);
+        };
+        const auto waitsOf = [](const std::string& nc) {
+            QStringList codes;
+            auto it = QRegularExpression(R"(^M(1\d\d)$)", QRegularExpression::MultilineOption).globalMatch(QString::fromStdString(nc));
+            while (it.hasNext()) codes << it.next().captured(1);
+            return codes;
+        };
+        const auto [plainPlan, plain] = fanucPair(sample);
+        const auto [setPlan, set] = fanucPair(job);
+        QCOMPARE(set.at(0).first, std::string(".p1.nc"));
+        const BalancedCut everywhere = balanced(roughing(kCylinder), turning::balanceSettings(job.twoPath, true));
+        const QStringList p1 = waitsOf(set.at(0).second), p2 = waitsOf(set.at(1).second);
+        QCOMPARE(p1, p2);  // the same codes on both paths
+        QCOMPARE(p1.front(), QString("120"));
+        // Every meeting waits: one per meeting (blocks in pairs, rounded up), before the first and after the last.
+        QCOMPARE(static_cast<int>(p1.size()), (everywhere.blockCount + 1) / 2 + 1);
+        QVERIFY(waitsOf(plain.at(0).second).size() < p1.size());
+        QCOMPARE(waitsOf(plain.at(0).second).front(), QString("101"));
+        const auto check2 = verify::checkTwoPath(setPlan);
+        const auto check1 = verify::checkTwoPath(plainPlan);
+        QVERIFY(check2 && check1 && check2->findings.empty() && check1->findings.empty());
+        qInfo("least lag: %.2f revolutions set to 2, %.2f by default", check2->leastLag, check1->leastLag);
+        QVERIFY(check2->leastLag >= 2.0 - 1e-6);
+        QVERIFY(check1->leastLag < 2.0);
+        // Wait codes the range cannot hold from the first set: the export refuses, writing nothing.
+        Job last = sample;
+        last.twoPath.firstWait = 199;
+        auto none = twoPathTapes(planJob(last, TechnologyTable::builtIn(), defaultToolLibrary()), "fanuc", std::nullopt, 1000, "t");
+        QVERIFY(none && !*none);
+        QVERIFY2(none->error().rfind("waitCodes: the balanced cut needs wait code M200, beyond the machine's last M199", 0) == 0,
+                 none->error().c_str());
+    }
+
+    // The sheet covers both paths: each step's path, and the roughing's
+    // blocks in time, one column per path, every cut and every wait in its
+    // path's column, the paths leaving each wait together.
+    void sheetCoversBothPaths()
+    {
+        QVERIFY(twoPathSheet(test::samplePlan("lathe-bushing.taiwa")).empty());  // one path: nothing
+        const Plan& plan = planOf(kTaper);
+        const auto sections = twoPathSheet(plan);
+        QCOMPARE(sections.size(), std::size_t{2});
+        const sheet::Table& paths = sections[0].table;
+        QCOMPARE(paths.rows.size(), plan.steps.size());
+        std::size_t rough = 0;
+        while (plan.steps[rough].kind != StepKind::TurnRoughing) ++rough;
+        const BalancedCut c = balanced(roughing(kTaper), turning::balanceSettings(plan.mmJob.twoPath, true));
+        for (std::size_t k = 0; k < plan.steps.size(); ++k) {
+            const std::string& where = paths.rows[k][2];
+            if (k != rough) {
+                QCOMPARE(QString::fromStdString(where), QString("1 (upper turret)"));
+                continue;
+            }
+            // Each path's blocks, by number, in its part of the cell.
+            const auto second = where.find("; 2 (");
+            QVERIFY2(where.rfind("1 (", 0) == 0 && second != std::string::npos, where.c_str());
+            for (std::size_t p = 0; p < 2; ++p)
+                for (const auto& b : c.paths[p].blocks) {
+                    const auto m = QRegularExpression(QString("\\bCB%1\\b").arg(b.number)).match(QString::fromStdString(where));
+                    QVERIFY2(m.hasMatch() && (p == 0) == (static_cast<std::size_t>(m.capturedStart()) < second), where.c_str());
+                }
+        }
+        const sheet::Table& gantt = sections[1].table;
+        const Timeline t = runTimeline(c, twoPath());
+        QCOMPARE(gantt.headers.size(), std::size_t{4});
+        QVERIFY2(gantt.headers[2] == "Path 1 upper turret" && gantt.headers[3].rfind("Path 2 ", 0) == 0, gantt.headers[3].c_str());
+        // Rows run on without a gap, from 0 to the end of the roughing.
+        QCOMPARE(QString::fromStdString(gantt.rows.front()[0]), QString("0.00"));
+        QCOMPARE(QString::fromStdString(gantt.rows.back()[1]), QString::number(t.seconds(), 'f', 2));
+        for (std::size_t r = 1; r < gantt.rows.size(); ++r)
+            QCOMPARE(QString::fromStdString(gantt.rows[r][0]), QString::fromStdString(gantt.rows[r - 1][1]));
+        const auto rowsWith = [&](std::size_t p, const std::string& text) {
+            std::vector<std::size_t> rows;
+            for (std::size_t r = 0; r < gantt.rows.size(); ++r)
+                if (gantt.rows[r][2 + p] == text || gantt.rows[r][2 + p].rfind(text + ",", 0) == 0) rows.push_back(r);
+            return rows;
+        };
+        int waits = 0;
+        for (std::size_t p = 0; p < 2; ++p)
+            for (const auto& b : c.paths[p].blocks) {
+                QVERIFY2(rowsWith(p, fmt::format("CB{} cut", b.number)).size() >= 1, qPrintable(QString::number(b.number)));
+                QVERIFY(rowsWith(1 - p, fmt::format("CB{} cut", b.number)).empty());
+                // A wait both paths meet at in a block (the last meeting's partner without a block waits in its tail).
+                const auto& other = c.paths[1 - p].blocks;
+                if (!b.wait || std::none_of(other.begin(), other.end(), [&](const BalancedBlock& o) { return o.wait == b.wait; })) continue;
+                ++waits;
+                // The wait in both paths' columns; both leave it at the same row's end.
+                std::vector<std::size_t> here = rowsWith(p, fmt::format("M{} wait", *b.wait)), there = rowsWith(1 - p, fmt::format("M{} wait", *b.wait));
+                const auto met = [&](std::size_t q) { return rowsWith(q, fmt::format("M{} met", *b.wait)); };
+                for (const auto r : met(p)) here.push_back(r);
+                for (const auto r : met(1 - p)) there.push_back(r);
+                QVERIFY2(!here.empty() && !there.empty(), qPrintable(QString("M%1").arg(*b.wait)));
+                QCOMPARE(gantt.rows[*std::max_element(here.begin(), here.end())][1],
+                         gantt.rows[*std::max_element(there.begin(), there.end())][1]);
+            }
+        QVERIFY(waits >= 4);  // the taper's, counted on both paths
+        // The dwells stand in the follower's column.
+        for (const auto& b : c.paths[1].blocks)
+            if (b.dwellSeconds > 0) {
+                QString all;
+                for (const auto& r : gantt.rows) all += QString::fromStdString(r[0] + " " + r[1] + " | " + r[2] + " | " + r[3] + "\n");
+                QVERIFY2(!rowsWith(1, fmt::format("CB{} in, dwell {:.3f} s", b.number, b.dwellSeconds)).empty(), qPrintable(all));
+            }
+        QVERIFY2(sections[1].note.find("deadlocks: none.") != std::string::npos, sections[1].note.c_str());
+        // Laid out in the sheet, after the steps.
+        SheetOptions o;
+        o.paths = sections;
+        const std::string html = sheetHtml(plan, o);
+        const auto steps = html.find("<h2>Process steps</h2>"), pathsAt = html.find("<h2>Paths</h2>"),
+                   timeline = html.find("<h2>Balanced roughing on the timeline</h2>");
+        QVERIFY(steps != std::string::npos && pathsAt != std::string::npos && timeline != std::string::npos);
+        QVERIFY(steps < pathsAt && pathsAt < timeline);
+        QVERIFY(sheetHtml(plan, {}).find("<h2>Paths</h2>") == std::string::npos);
+    }
+
     void timelineProvesTheBalancedCut_data()
     {
         QTest::addColumn<bool>("taper");
@@ -493,7 +769,80 @@ private slots:
         QVERIFY(!none);
         QCOMPARE(QString::fromStdString(none.error()), QString("tools.T104: tool 104 has no mounting offset on the gang slide (gangSlide.tools)"));
     }
-    // FANUC's pair: golden files, read by hand (tests/golden/two-path/).
+    // FANUC's pair: golden files, read by hand (tests/golden/STEM.pN.fanuc.nc, the export's too: test_golden).
+    // The gang change on the tape (post/gang_post.h): a gang-tool job's
+    // tape, and for every ordered pair of the slide's tools a job of two
+    // steps with those tools, in FANUC's and LinuxCNC's words, run by the
+    // test's own reading (runSlide): no X motion of a change while any tool
+    // on the slide is inside the bar grown by the clearance, whether the
+    // control applies a new offset at the T word or with the next motion;
+    // each change's Z clear, X and approach in that order. The lathe post's
+    // own tape (X and Z at once to the change point) is caught on a slide
+    // with a wider clearance; a tool not on the slide is refused.
+    void gangToolTapeNeverSweepsThroughThePart()
+    {
+        const auto read = readJobFile(test::dataPath("gang/lathe-gang-shaft.taiwa").toStdString());
+        QVERIFY(read.job);
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QString why;
+        for (const auto& d : plan.diagnostics) why += QString::fromStdString(d.field + ": " + d.message + "\n");
+        QVERIFY2(plan.ok() && plan.steps.size() >= 3, qPrintable(why));
+        const BarStock& bar = *plan.mmJob.bar;
+        const PartEnvelope part{bar.face, bar.face - bar.length, bar.diameter / 2.0};
+        const GangSlide& shipped = *findMachine("lathe-gang")->layout.gang;
+        const std::vector<Tool> library = defaultToolLibrary();  // every tool of the slide
+        GangSlide wide = shipped;
+        wide.clearance = 5.0;
+        for (const char* dialect : {"fanuc", "linuxcnc"}) {
+            const PostOptions o = postOptions(plan, dialect, std::nullopt, 1000, "gang");
+            // What postProcess writes for a job on the gang-tool lathe.
+            const PostedProgram tape = postProcess(plan.steps, plan.tools, o);
+            QCOMPARE(tape.nc, postGangTool(plan.steps, plan.tools, shipped, pathsEnvelope(plan.steps), o).nc);
+            for (const bool atT : {false, true}) {
+                const SlideRun r = runSlide(tape, shipped, part, atT);
+                QVERIFY2(r.sweeps.isEmpty(), qPrintable(r.sweeps.join("\n") + "\n" + QString::fromStdString(tape.nc)));
+                QCOMPARE(r.changes, 3);  // T101, T102, T106
+                QVERIFY(r.xMoves >= 3);  // two changes between tools, the end
+            }
+            // Each change: Z clear, the T word, X, then the approach along Z.
+            const QString nc = QString::fromStdString(tape.nc);
+            const auto change = QRegularExpression(R"(\n(?:N\d+ )?G0 Z(-?[0-9.]+)\n(?:N\d+ )?T[0-9][^\n]*\n(?:[^\n]*\n)*?)"
+                                                   R"(G0 X(-?[0-9.]+) Z(-?[0-9.]+)\n)");
+            QCOMPARE(static_cast<int>(nc.count(change)), 3);
+            // Every pair of the slide's tools, on a slide with the shipped clearance and a wider one.
+            int pairs = 0;
+            for (const GangSlide* slide : {&shipped, static_cast<const GangSlide*>(&wide)})
+                for (const auto& a : slide->places)
+                    for (const auto& b : slide->places) {
+                        if (a.tool == b.tool) continue;
+                        std::vector<Step> two{plan.steps[0], plan.steps[2]};
+                        two[0].tool->toolId = a.tool;
+                        two[1].tool->toolId = b.tool;
+                        const PostedProgram p = postGangTool(two, library, *slide, pathsEnvelope(two), o);
+                        for (const bool atT : {false, true}) {
+                            const SlideRun r = runSlide(p, *slide, part, atT);
+                            QVERIFY2(r.sweeps.isEmpty(), qPrintable(QString("T%1 to T%2: ").arg(a.tool).arg(b.tool) + r.sweeps.join("\n")));
+                            QCOMPARE(r.changes, 2);
+                        }
+                        ++pairs;
+                    }
+            QCOMPARE(pairs, static_cast<int>(2 * shipped.places.size() * (shipped.places.size() - 1)));
+            // Negative control: the lathe post's tape, X and Z at once to the change point.
+            const SlideRun lathe = runSlide(postLathe(plan.steps, plan.tools, o), wide, part, false);
+            QVERIFY2(!lathe.sweeps.isEmpty(), dialect);
+            qInfo("%s: the lathe post's own tape sweeps: %s", dialect, qPrintable(lathe.sweeps.front()));
+            // A tool not on the slide.
+            std::vector<Step> bore = plan.steps;
+            bore[2].tool->toolId = 104;
+            try {
+                postGangTool(bore, library, shipped, pathsEnvelope(bore), o);
+                QFAIL("tool 104 posted");
+            } catch (const std::invalid_argument& e) {
+                QCOMPARE(QString(e.what()), QString("tools.T104: tool 104 has no mounting offset on the gang slide (gangSlide.tools)"));
+            }
+        }
+    }
+
     void fanucProgramsMatchTheGoldens_data()
     {
         QTest::addColumn<QString>("stem");
@@ -543,7 +892,7 @@ private slots:
             for (std::size_t i = 0; i < plan.steps.size(); ++i)
                 QCOMPARE(nc.find(fmt::format("(STEP {}:", i + 1)) != std::string::npos, p == 0 || i == 0);
             QCOMPARE(static_cast<int>(QString::fromStdString(nc).count(QRegularExpression(R"(^M1\d\d$)", QRegularExpression::MultilineOption))), waits);
-            const QString golden = test::sourcePath(QString("tests/golden/two-path/%1.p%2.fanuc.nc").arg(stem).arg(p + 1));
+            const QString golden = test::sourcePath(QString("tests/golden/%1.p%2.fanuc.nc").arg(stem).arg(p + 1));
             if (test::rewroteGolden(golden, nc)) {
                 rewrote = true;
                 continue;
@@ -556,12 +905,12 @@ private slots:
         }
         if (rewrote) return;
     }
-    // Every two-path sample (tests/data/two-path/*.taiwa): no deadlock, no
+    // Every two-path sample (resources/samples/lathe-two-path-*.taiwa): no deadlock, no
     // follower closer than one revolution, the pair faster than one path,
     // alone and meeting before and after (the job's programs).
     void everyTwoPathSampleIsProven()
     {
-        const auto files = QDir(test::dataPath("two-path")).entryInfoList({"*.taiwa"}, QDir::Files, QDir::Name);
+        const auto files = QDir(test::sourcePath("resources/samples")).entryInfoList({"lathe-two-path-*.taiwa"}, QDir::Files, QDir::Name);
         QVERIFY(files.size() >= 2);
         for (const QFileInfo& f : files) {
             const std::string stem = f.completeBaseName().toStdString();

@@ -1,6 +1,6 @@
 // The programs of a balanced cut (post/two_path_post.h) for LinuxCNC, run by
 // LinuxCNC's interpreter: both paths' programs of each two-path sample
-// (tests/data/two-path/) in lathe mode (G18 G7) with the tool table the
+// (resources/samples/lathe-two-path-*.taiwa) in lathe mode (G18 G7) with the tool table the
 // export writes (linuxcncLatheToolTable), accepted, their feeds the path's
 // blocks' feeds in the path's coordinates (path 2: X mirrored), one dwell
 // per follower block, and the handshake (M64/M65 P0, M66 P0 L3/L4) once per
@@ -44,7 +44,7 @@ private slots:
         QFETCH(QString, stem);
         QFETCH(bool, everywhere);
         QFETCH(bool, whole);
-        auto read = readJobFile(dataPath("two-path/" + stem + ".taiwa").toStdString());
+        auto read = readJobFile(sourcePath("resources/samples/" + stem + ".taiwa").toStdString());
         QVERIFY(read.job);
         const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
         QVERIFY(plan.ok());

@@ -4,6 +4,7 @@
 
 #include "export/sheet_pdf.h"
 #include "export/two_path_export.h"
+#include "export/two_path_sheet.h"
 #include "io/job_io.h"
 #include "io/json_write.h"
 #include "modules/registry.h"
@@ -240,6 +241,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.stepPictures = options.stepPictures;
     sheet.picturesNote = options.picturesNote;
     sheet.setupPicture = options.setupPicture;
+    sheet.paths = twoPathSheet(plan);  // a two-path lathe's: each step's path, the roughing's timeline
     // The PDF (most of an export's time after planning: shaping and
     // compressing every page's text) is drawn on a thread of its own while
     // this one posts the tape and writes the HTML sheet and steps.json.

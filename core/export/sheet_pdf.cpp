@@ -69,6 +69,11 @@ private:
 // What follows the steps table, to the end.
 void afterSteps(PagePainter& page, const sheet::Content& c)
 {
+    for (const auto& p : c.paths) {
+        page.heading(p.heading);
+        page.table(p.table);
+        if (!p.note.empty()) page.paragraph(p.note);
+    }
     if (!c.pictures.empty() || !c.picturesNote.empty()) {
         page.heading("The steps in pictures");
         if (!c.picturesNote.empty()) page.paragraph(c.picturesNote);

@@ -32,9 +32,8 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
                                                                       "roughing step to balance between its paths"),
                                    plan.mmJob.machine)}};
     const Step& rough = plan.steps[index];
-    turning::BalanceSettings set;
-    // The defaults (one revolution, waits where the cycle lengths differ): the job file has no settings for them yet.
-    set.meetAtEnds = true;  // path 1 faces before and finishes after the balanced roughing
+    // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
+    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);
     auto cut = turning::balanceRoughing(rough.turn->path, rough.turn->cutting, *machine, set);
     if (!cut) return Files{Failure{cut.error()}};
     std::vector<PostedProgram> programs;

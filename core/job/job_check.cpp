@@ -196,6 +196,36 @@ void checkCutting(const std::map<std::string, CuttingOverride>& cutting, const M
     }
 }
 
+// The two-path settings (docs/two-path-lathe.md): a dwell of at least half
+// a revolution whatever the machine; settings other than the defaults only
+// on a two-path lathe, with a first wait code the machine offers.
+void checkTwoPath(const TwoPathSettings& t, const Machine* machine, Diagnostics& out)
+{
+    if (!(t.dwellRevolutions >= 0.5) || !std::isfinite(t.dwellRevolutions))
+        out.push_back(jobError("twoPath.dwellRevolutions",
+                               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                "the follower's dwell is {:g} spindle revolutions; it must be "
+                                                                "at least 0.5, or the follower cuts where the leader has not"),
+                                           t.dwellRevolutions)));
+    if (!machine || t == TwoPathSettings{}) return;
+    if (!machine->layout.multiPath) {
+        std::string twoPath;
+        for (const auto& id : machineIds())
+            if (const Machine* m = findMachine(id); m && m->layout.multiPath) twoPath += (twoPath.empty() ? "" : ", ") + id;
+        out.push_back(jobError("twoPath", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                           "machine {} has one path; the two-path settings are "
+                                                                           "for a two-path lathe ({})"),
+                                                      machine->id, twoPath)));
+        return;
+    }
+    const WaitCodeRange& codes = machine->layout.multiPath->waitCodes;
+    if (t.firstWait && !codes.contains(*t.firstWait))
+        out.push_back(jobError("twoPath.firstWait",
+                               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                "M{} is not a wait code of machine {}: it waits with M{} to M{}"),
+                                           *t.firstWait, machine->id, codes.first, codes.last)));
+}
+
 }  // namespace
 
 std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTable& table)
@@ -241,6 +271,7 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
             out.push_back(jobError("stock.shape", "machine " + machine->id + " is a lathe: its stock is a bar "
                                                   "(\"shape\": \"bar\" with its diameter and length)"));
     }
+    checkTwoPath(mm.twoPath, machine, out);
     if (mm.clamping) {
         if (mm.bar || lathe)
             out.push_back(jobError("clamping", "a lathe holds its bar in the chuck; the clamping is for a block in a vice"));
@@ -277,6 +308,12 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
                                : probing ? post::cannotPost(*d, post::Task::ProbingPrograms)
                                          : std::nullopt)
                 out.push_back(jobError("dialect", *refusal));
+            // A two-path lathe's programs: the ISO dialects' waits (docs/two-path-lathe.md).
+            else if (lathe && machine->layout.multiPath && d->syntax != post::Syntax::Iso)
+                out.push_back(jobError(
+                    "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no two-path programs; "
+                                                                              "machine {} needs one of the ISO dialects"),
+                                           d->name, machine->id)));
         }
     }
 

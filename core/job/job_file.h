@@ -37,7 +37,7 @@ std::string writeJob(const Job& job);
 
 // The oldest job format version that holds everything of `job`: the
 // newest its units' modules came with (ModuleKind::formatVersion), its
-// figure (5), clamping (4), a bar (3) or a dialect (2).
+// two-path settings (6), its figure (5), clamping (4), a bar (3) or a dialect (2).
 int formatVersionFor(const Job& job);
 
 }  // namespace taiwa

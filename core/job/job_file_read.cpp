@@ -26,11 +26,12 @@ using io::ObjectFields;
 using io::Place;
 
 const std::vector<std::string> kJobKeys{"format",  "version", "name",     "lengthUnit", "material",      "machine", "workOffset",
-                                        "dialect", "stock",   "clamping", "technology", "figure", "latheRoughing", "units"};
+                                        "dialect", "stock",   "clamping", "technology", "figure", "latheRoughing", "twoPath", "units"};
 const std::vector<std::string> kStockShapes{"block", "bar"};
 const std::vector<std::string> kBlockKeys{"shape", "x", "y", "width", "length", "height"};
 const std::vector<std::string> kBarKeys{"shape", "diameter", "length", "face", "bore"};
 const std::vector<std::string> kClampingKeys{"fixture", "grip", "height"};
+const std::vector<std::string> kTwoPathKeys{"dwellRevolutions", "waitsEverywhere", "firstWait"};
 const std::vector<std::string> kTechnologyKeys{"alpha1", "alpha2", "alpha3", "beta2", "gamma", "stepOver"};
 bool isBlank(std::string_view text)
 {
@@ -188,6 +189,30 @@ std::optional<Clamping> readClamping(const ObjectFields& job)
     return c;
 }
 
+// The two-path settings (version 6); absent: the defaults. Their ranges
+// (the dwell, the wait code against the machine's) are the job check's.
+TwoPathSettings readTwoPath(const ObjectFields& job)
+{
+    TwoPathSettings t;
+    const json* v = job.find("twoPath");
+    if (!v) return t;
+    if (!v->is_object()) {
+        job.error("twoPath", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
+        return t;
+    }
+    const ObjectFields f(*v, Place{std::nullopt, "", "twoPath."}, job.sink());
+    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys);
+    t.dwellRevolutions = f.number("dwellRevolutions", t.dwellRevolutions);
+    if (const json* w = f.find("waitsEverywhere")) {
+        if (w->is_boolean())
+            t.waitsEverywhere = w->get<bool>();
+        else
+            f.error("waitsEverywhere", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "true or false"), *w));
+    }
+    if (f.find("firstWait")) t.firstWait = f.whole("firstWait");
+    return t;
+}
+
 TechnologyOverrides readTechnology(const ObjectFields& job)
 {
     TechnologyOverrides t;
@@ -301,6 +326,7 @@ JobReadResult readJob(std::string_view text)
     job.workOffset = f.string("workOffset", job.workOffset);
     job.dialect = f.string("dialect", "");
     if (f.find("latheRoughing")) job.latheRoughingCycles = f.choice("latheRoughing", {"cycle", "passes"}).value_or(0) == 0;
+    job.twoPath = readTwoPath(f);
     job.stock = readStock(f, job.bar);
     job.clamping = readClamping(f);
     job.technology = readTechnology(f);

@@ -53,6 +53,13 @@ ordered jobJson(const Job& job)
     j["workOffset"] = job.workOffset;
     if (!job.dialect.empty()) j["dialect"] = job.dialect;
     if (!job.latheRoughingCycles) j["latheRoughing"] = "passes";
+    if (job.twoPath != TwoPathSettings{}) {
+        ordered t = ordered::object();
+        t["dwellRevolutions"] = number(job.twoPath.dwellRevolutions);
+        t["waitsEverywhere"] = job.twoPath.waitsEverywhere;
+        if (job.twoPath.firstWait) t["firstWait"] = *job.twoPath.firstWait;
+        j["twoPath"] = std::move(t);
+    }
     const Stock& s = job.stock;
     if (job.bar)
         j["stock"] = {{"shape", "bar"},
@@ -140,6 +147,7 @@ int formatVersionFor(const Job& job)
     int v = Job::kOldestFormatVersion;
     for (const auto& u : job.units)
         if (const ModuleKind* k = findModuleKind(u.module.name())) v = std::max(v, k->formatVersion());
+    if (job.twoPath != TwoPathSettings{}) v = std::max(v, 6);
     if (!job.figure.empty()) v = std::max(v, 5);
     if (job.clamping) v = std::max(v, 4);
     if (job.bar) v = std::max(v, 3);

@@ -68,13 +68,24 @@ struct MachiningUnit {
     friend bool operator==(const MachiningUnit&, const MachiningUnit&) = default;
 };
 
+// Lathe jobs on a two-path lathe (docs/two-path-lathe.md): how the roughing
+// is balanced between the paths. Read by the export and verify only when the
+// job's machine has paths; the defaults otherwise.
+struct TwoPathSettings {
+    double dwellRevolutions = 1.0;  // the follower's dwell behind the leader [spindle revolutions], at least 0.5
+    bool waitsEverywhere = false;   // a wait at every meeting, not only where the cycle lengths differ
+    std::optional<int> firstWait;   // the first wait M-code; none: the machine's waitCodes.first
+    friend bool operator==(const TwoPathSettings&, const TwoPathSettings&) = default;
+};
+
 struct Job {
     // Version 2 added `dialect`, version 3 lathe jobs (bar stock, turned
     // profiles), version 4 the block's `clamping`, version 5 the `figure`
-    // elements and the contour units that use them. A job is written in the
+    // elements and the contour units that use them, version 6 the two-path
+    // settings (`twoPath`, written only when not the defaults). A job is written in the
     // oldest version that holds it, so that a program reading version 1
     // still reads every milling job without a dialect.
-    static constexpr int kFormatVersion = 5;
+    static constexpr int kFormatVersion = 6;
     static constexpr int kOldestFormatVersion = 1;
     std::string name;
     LengthUnit lengthUnit = LengthUnit::Millimetre;
@@ -96,6 +107,7 @@ struct Job {
     // Lathe jobs: roughing as the control's own cycle (G71) where a profile
     // allows it, or always as explicit passes (controls without cycles).
     bool latheRoughingCycles = true;
+    TwoPathSettings twoPath;  // lathe jobs on a two-path machine
     std::vector<MachiningUnit> units;
     friend bool operator==(const Job&, const Job&) = default;
 };

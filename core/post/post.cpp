@@ -5,7 +5,9 @@
 // naming every step, and each step's moves, each block mapped to its move.
 #include "post/post.h"
 
+#include "machine/machine.h"
 #include "post/dialect.h"
+#include "post/gang_post.h"
 #include "post/gcode_writer.h"
 #include "post/klartext_writer.h"
 #include "post/lathe_post.h"
@@ -152,8 +154,12 @@ private:
 PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
                           const PostOptions& options)
 {
-    if (std::any_of(orderedSteps.begin(), orderedSteps.end(), [](const Step& s) { return s.turn.has_value(); }))
+    if (std::any_of(orderedSteps.begin(), orderedSteps.end(), [](const Step& s) { return s.turn.has_value(); })) {
+        // A gang-tool lathe: its tool changes as the slide must make them (gang_post.h).
+        if (const Machine* m = findMachine(options.machine); m && m->layout.gang)
+            return postGangTool(orderedSteps, library, *m->layout.gang, pathsEnvelope(orderedSteps), options);
         return postLathe(orderedSteps, library, options);
+    }
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
     std::vector<Cutting> cutting;

@@ -13,6 +13,21 @@
 
 namespace taiwa {
 
+namespace sheet {
+struct Table {
+    std::vector<std::string> headers;
+    std::vector<bool> numeric;                   // right-aligned columns
+    std::vector<double> widths;                  // relative column widths
+    std::vector<std::vector<std::string>> rows;
+};
+// A table of its own under a heading, with a line after it.
+struct Section {
+    std::string heading;
+    Table table;
+    std::string note;
+};
+}  // namespace sheet
+
 struct SheetOptions {
     LengthUnit units = LengthUnit::Millimetre;  // lengths shown in this unit
     std::string dialect = "linuxcnc";
@@ -30,6 +45,10 @@ struct SheetOptions {
     // The setup in a picture (viz::setupPicture: the stock, the vice's jaws
     // or the chuck's, the work offset's origin), PNG bytes; empty: none.
     std::string setupPicture;
+    // A two-path lathe's sections, made where the timeline is run
+    // (export/two_path_sheet.h): each step's path and the balanced
+    // roughing's blocks per path in time, the waits marked; none: one path.
+    std::vector<sheet::Section> paths;
 };
 
 // How far a lathe job's bar must stand out of the chuck's jaws: the part

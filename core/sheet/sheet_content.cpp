@@ -263,6 +263,7 @@ Content content(const Plan& plan, const SheetOptions& o)
     }
     c.notes = plan.notes();
     c.faults = o.faults;
+    c.paths = o.paths;
     c.picturesNote = o.picturesNote;
     if (std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return !s.cutting.empty(); }))
         c.notes.push_back("* S or F set by the operator for the step, in place of the tool's cutting data.");

@@ -13,19 +13,13 @@
 
 namespace taiwa::sheet {
 
-struct Table {
-    std::vector<std::string> headers;
-    std::vector<bool> numeric;                   // right-aligned columns
-    std::vector<double> widths;                  // relative column widths
-    std::vector<std::vector<std::string>> rows;
-};
-
 struct Content {
     std::string title;
     std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
     std::string setup;                                        // work offset and origin, one sentence
     std::string clamping;  // milling jobs: how the block is held, or that the job does not say
     Table steps;
+    std::vector<Section> paths;  // a two-path lathe's (SheetOptions::paths), after the steps
     Table workCentre;  // probing units: the measured centre, size, rotation and residuals; empty rows when none
     Table allowances;  // turning units: every grinding-allowance row with its edge, attributes and groove
     Table turned;      // turning units: the deformed profile the lathe cuts, edge by edge

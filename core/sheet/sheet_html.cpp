@@ -114,6 +114,8 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
     if (!c.allowances.rows.empty())
         h += "<h2>Grinding allowances</h2>\n" + table(c.allowances) + "<h2>Turned profile as cut</h2>\n" + table(c.turned);
     h += "<h2>Process steps</h2>\n" + table(c.steps);
+    for (const auto& p : c.paths)
+        h += "<h2>" + escape(p.heading) + "</h2>\n" + table(p.table) + (p.note.empty() ? "" : "<p>" + escape(p.note) + "</p>\n");
     if (!c.pictures.empty() || !c.picturesNote.empty()) {
         h += "<h2>The steps in pictures</h2>\n";
         if (!c.picturesNote.empty()) h += "<p>" + escape(c.picturesNote) + "</p>\n";

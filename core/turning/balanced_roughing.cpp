@@ -81,6 +81,16 @@ AnalysedRoughing analyseRoughing(const TurnPath& path)
     return out;
 }
 
+BalanceSettings balanceSettings(const TwoPathSettings& job, bool meetAtEnds)
+{
+    BalanceSettings s;
+    s.dwellRevolutions = job.dwellRevolutions;
+    s.waitsEverywhere = job.waitsEverywhere;
+    s.meetAtEnds = meetAtEnds;
+    s.firstWait = job.firstWait;
+    return s;
+}
+
 Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cutting, const Machine& machine,
                                     const BalanceSettings& settings)
 {

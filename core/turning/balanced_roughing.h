@@ -10,6 +10,7 @@
 #pragma once
 
 #include "machine/machine.h"
+#include "model/job.h"
 #include "model/result.h"
 #include "model/two_path.h"
 
@@ -24,6 +25,10 @@ struct BalanceSettings {
     bool meetAtEnds = false;
     std::optional<int> firstWait;   // the first wait M-code (none: the machine's first)
 };
+
+// The job's two-path settings (Job::twoPath) as the balancing takes them,
+// the paths meeting at the ends when `meetAtEnds` (the export's programs).
+BalanceSettings balanceSettings(const TwoPathSettings& job, bool meetAtEnds);
 
 // One block per cut of `path` (in path 1's coordinates, no waits or dwells
 // yet, all on path 1) and what is left after the last cut (the tail).

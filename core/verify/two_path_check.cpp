@@ -23,9 +23,7 @@ std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
                                            plan.mmJob.machine));
         return out;
     }
-    turning::BalanceSettings set;
-    // The defaults (one revolution, waits where the cycle lengths differ): the job file has no settings for them yet.
-    set.meetAtEnds = true;
+    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);  // as the export
     const auto cut = turning::balanceRoughing(rough->turn->path, rough->turn->cutting, *machine, set);
     if (!cut) {
         out.findings.push_back("balanced cut: " + cut.error());

@@ -306,6 +306,10 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         revs += rpm / 60.0 * dt;
     }
     tl.pathEnd = ended;
+    // Each block's dwell as the cut says it (run above as a dwell before the cut).
+    for (const auto& path : cut.paths)
+        for (const auto& b : path.blocks)
+            if (const auto it = blocks.find(b.number); it != blocks.end()) it->second.dwell = b.dwellSeconds;
     for (auto& [k, b] : blocks)
         if (k > 0) tl.blocks.push_back(b);
 

@@ -3180,12 +3180,28 @@ Theirs: %6</source>
             <translation>送り F</translation>
         </message>
         <message>
+            <source>the follower's dwell is {:g} spindle revolutions; it must be at least 0.5, or the follower cuts where the leader has not</source>
+            <translation>追従側のドウェルが主軸 {:g} 回転です。0.5 回転以上にしてください。でないと追従側が先行側のまだ削っていない所を削ります</translation>
+        </message>
+        <message>
+            <source>machine {} has one path; the two-path settings are for a two-path lathe ({})</source>
+            <translation>機械 {} は1系統です。2系統の設定は2系統旋盤（{}）のためのものです</translation>
+        </message>
+        <message>
+            <source>M{} is not a wait code of machine {}: it waits with M{} to M{}</source>
+            <translation>M{} は機械 {} の待ち合わせコードではありません。この機械の待ち合わせは M{}～M{} です</translation>
+        </message>
+        <message>
             <source>'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)</source>
             <translation>'{}' はワーク座標系ではありません: G54～G59、G59.1～G59.3、G54.1 P1～P48（Haas では G154 P）、または G505～G599（SINUMERIK）を指定してください</translation>
         </message>
         <message>
             <source>unknown dialect '{}'; this program posts {}</source>
             <translation>不明な NC 形式 '{}' です。このプログラムが出力できるのは {} です</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no two-path programs; machine {} needs one of the ISO dialects</source>
+            <translation>NC 形式 {} は2系統のプログラムを出力しません。機械 {} には ISO の NC 形式のいずれかが必要です</translation>
         </message>
         <message>
             <source>an object with S and/or F</source>
@@ -3222,6 +3238,14 @@ Theirs: %6</source>
         <message>
             <source>the clamping</source>
             <translation>クランプ</translation>
+        </message>
+        <message>
+            <source>the two-path settings</source>
+            <translation>2系統の設定</translation>
+        </message>
+        <message>
+            <source>true or false</source>
+            <translation>true または false</translation>
         </message>
         <message>
             <source>the technology overrides</source>

@@ -3180,12 +3180,28 @@ Theirs: %6</source>
             <translation>进给 F</translation>
         </message>
         <message>
+            <source>the follower's dwell is {:g} spindle revolutions; it must be at least 0.5, or the follower cuts where the leader has not</source>
+            <translation>跟随刀架的暂停为主轴 {:g} 转；至少须为 0.5 转，否则跟随刀架会切到领先刀架尚未切过的地方</translation>
+        </message>
+        <message>
+            <source>machine {} has one path; the two-path settings are for a two-path lathe ({})</source>
+            <translation>机床 {} 只有一个通道；双通道设置用于双通道车床（{}）</translation>
+        </message>
+        <message>
+            <source>M{} is not a wait code of machine {}: it waits with M{} to M{}</source>
+            <translation>M{} 不是机床 {} 的等待代码：它的等待代码为 M{} 至 M{}</translation>
+        </message>
+        <message>
             <source>'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)</source>
             <translation>'{}' 不是工件坐标系: 请给出 G54 至 G59、G59.1 至 G59.3、G54.1 P1 至 P48（Haas 上为 G154 P）或 G505 至 G599（SINUMERIK）</translation>
         </message>
         <message>
             <source>unknown dialect '{}'; this program posts {}</source>
             <translation>未知的数控系统 '{}'；本程序可输出 {}</translation>
+        </message>
+        <message>
+            <source>the {} dialect writes no two-path programs; machine {} needs one of the ISO dialects</source>
+            <translation>数控系统 {} 不输出双通道程序；机床 {} 需要 ISO 格式的数控系统之一</translation>
         </message>
         <message>
             <source>an object with S and/or F</source>
@@ -3222,6 +3238,14 @@ Theirs: %6</source>
         <message>
             <source>the clamping</source>
             <translation>装夹</translation>
+        </message>
+        <message>
+            <source>the two-path settings</source>
+            <translation>双通道设置</translation>
+        </message>
+        <message>
+            <source>true or false</source>
+            <translation>true 或 false</translation>
         </message>
         <message>
             <source>the technology overrides</source>

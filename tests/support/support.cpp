@@ -29,7 +29,7 @@ QStringList shippedDialectsWriting(DialectWrites what)
         const auto j = nlohmann::json::parse(readFile(sourcePath("resources/dialects/" + d + ".json")));
         const std::string syntax = j.value("syntax", "iso");
         if (what == DialectWrites::MillingTapes || (what == DialectWrites::LatheTapes && syntax != "klartext") ||
-            (what == DialectWrites::ProbingPrograms && syntax == "iso"))
+            ((what == DialectWrites::ProbingPrograms || what == DialectWrites::TwoPathPrograms) && syntax == "iso"))
             out << d;
     }
     return out;

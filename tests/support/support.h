@@ -38,9 +38,9 @@ void isolateStation(const QString& dir);
 QStringList shippedDialects();
 QStringList shippedMachines();
 // The shipped dialects that write milling tapes (all), lathe tapes (all but
-// Klartext's) or a probing unit's programs (the ISO ones), by each file's
-// "syntax".
-enum class DialectWrites { MillingTapes, LatheTapes, ProbingPrograms };
+// Klartext's), a probing unit's programs or a two-path lathe's (the ISO
+// ones), by each file's "syntax".
+enum class DialectWrites { MillingTapes, LatheTapes, ProbingPrograms, TwoPathPrograms };
 QStringList shippedDialectsWriting(DialectWrites what);
 
 std::string readFile(const QString& path);
