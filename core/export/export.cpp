@@ -240,6 +240,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.stepPictures = options.stepPictures;
     sheet.picturesNote = options.picturesNote;
     sheet.setupPicture = options.setupPicture;
+    sheet.toolsOrigin = options.toolsOrigin;
     // The PDF (most of an export's time after planning: shaping and
     // compressing every page's text) is drawn on a thread of its own while
     // this one posts the tape and writes the HTML sheet and steps.json.

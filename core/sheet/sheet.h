@@ -30,6 +30,10 @@ struct SheetOptions {
     // The setup in a picture (viz::setupPicture: the stock, the vice's jaws
     // or the chuck's, the work offset's origin), PNG bytes; empty: none.
     std::string setupPicture;
+    // Where the tools came from when not the station's own file
+    // (ToolStore::origin: the shop server's library and its time, or the
+    // copy read while the server is away), one sentence; empty: none.
+    std::string toolsOrigin;
 };
 
 // How far a lathe job's bar must stand out of the chuck's jaws: the part

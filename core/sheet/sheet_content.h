@@ -25,6 +25,7 @@ struct Content {
     std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
     std::string setup;                                        // work offset and origin, one sentence
     std::string clamping;  // milling jobs: how the block is held, or that the job does not say
+    std::string toolsOrigin;  // SheetOptions::toolsOrigin: the shop server's tools, or its copy's
     Table steps;
     Table workCentre;  // probing units: the measured centre, size, rotation and residuals; empty rows when none
     Table allowances;  // turning units: every grinding-allowance row with its edge, attributes and groove

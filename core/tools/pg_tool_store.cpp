@@ -120,6 +120,8 @@ struct PgToolStore::Impl {
     // Offline: the copy's tools and when they were taken.
     bool offline = false;
     std::string offlineWhy, copyAsOf;
+    // Online: the server's time of the last whole read (UTC, ISO 8601).
+    std::string readAsOf;
     std::vector<Tool> copyTools;
     std::string copyFingerprint;
 
@@ -140,7 +142,13 @@ struct PgToolStore::Impl {
         const char* values[] = {conninfo.c_str(), options.station.c_str(), timeout.c_str(), nullptr};
         conn = PQconnectdbParams(keys, values, 1);
         if (!conn || PQstatus(conn) != CONNECTION_OK) {
-            const std::string why = error();
+            std::string why = error();
+            // pg_hba.conf lets this station in over TLS only (hostssl), and the connection had none.
+            if (why.find("no encryption") != std::string::npos)
+                why += fmt::format("; {} lets this station in over TLS only and the connection was made without: the address must "
+                                   "not say sslmode=disable (sslmode=require asks for TLS) and the server must have ssl = on "
+                                   "(docs/shop-server.md, \"TLS\")",
+                                   display);
             disconnect();
             return Failure{why};
         }
@@ -277,8 +285,11 @@ struct PgToolStore::Impl {
         const std::string where = only > 0 ? " WHERE id = $1" : "";
         const std::string whereTool = only > 0 ? " WHERE tool_id = $1" : "";
         const std::vector<Param> params = only > 0 ? std::vector<Param>{std::to_string(only)} : std::vector<Param>{};
-        auto begin = exec("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY");
+        // The snapshot's time comes with BEGIN, in the same round trip.
+        auto begin = exec("BEGIN ISOLATION LEVEL REPEATABLE READ READ ONLY; "
+                          "SELECT to_char(now() AT TIME ZONE 'UTC', 'YYYY-MM-DD\"T\"HH24:MI:SS\"Z\"')");
         if (!begin) return Failure{begin.error()};
+        const std::string asOf = text(begin->get(), 0, 0);
         auto q = [&](const std::string& sql) { return params.empty() ? exec(sql.c_str()) : exec(sql.c_str(), params); };
         auto rows = q(fmt::format("SELECT id, {}, row_version FROM tools{} ORDER BY id", kToolColumns, where));
         auto cuts = rows ? q("SELECT tool_id, material, surface_speed, feed_per_tooth, plunge_factor FROM cutting_data" + whereTool +
@@ -334,6 +345,7 @@ struct PgToolStore::Impl {
             if (const auto problems = toolProblems(v.tool); !problems.empty())
                 return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool T{} ({}): {}"), display, v.tool.id, v.tool.name,
                                            problems.front().message)};
+        if (only == 0) readAsOf = asOf;
         return out;
     }
 
@@ -468,6 +480,7 @@ Result<std::unique_ptr<PgToolStore>> PgToolStore::open(const std::string& connin
 }
 
 std::string PgToolStore::name() const { return d_->display; }
+std::string PgToolStore::whyOffline() const { return d_->offline ? d_->offlineWhy : std::string(); }
 bool PgToolStore::readOnly() const { return d_->offline; }
 std::string PgToolStore::asOf() const { return d_->offline ? d_->copyAsOf : std::string(); }
 int PgToolStore::socket() const { return d_->conn ? PQsocket(d_->conn) : -1; }
@@ -478,6 +491,15 @@ std::string PgToolStore::status() const
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tools as of {} (read only: {} cannot be reached)"),
                            d_->copyAsOf.empty() ? std::string("?") : d_->copyAsOf, d_->display);
     return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tools: {}"), d_->display);
+}
+
+// In English, as the whole sheet is.
+std::string PgToolStore::origin() const
+{
+    if (d_->offline)
+        return fmt::format("Tools as of {} (server {} away, read-only copy)",
+                           d_->copyAsOf.empty() ? std::string("an unknown time") : d_->copyAsOf, d_->display);
+    return fmt::format("Tools from the library of {} as of {}", d_->display, d_->readAsOf);
 }
 
 Result<void> PgToolStore::reconnect()
