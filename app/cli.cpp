@@ -1,7 +1,8 @@
 // The command line of docs/command-line.md: `taiwa [JOB]`, `taiwa check JOB`,
 // `taiwa export JOB --out DIR ...`, `taiwa verify JOB ...` (its report in
 // app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `taiwa
-// figure-from-dxf FILE.dxf ...`, `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
+// figure-from-dxf FILE.dxf ...`, `taiwa store list|history` and `taiwa
+// import-tools` (app/store_command.cpp), `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
 // internal failure.
 #include "app/cli.h"
 
@@ -21,6 +22,7 @@
 #include "export/export.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
+#include "tools/tool_store.h"
 
 #if defined(TAIWA_WITH_UI) && __has_include("viz/render.h")
 #define TAIWA_WITH_RENDER 1
@@ -101,6 +103,12 @@ Usage:
                                    or --tools, a postgresql:// setting) replaced
                                    by that of an SQLite library of any version;
                                    the file is left as it was
+  taiwa store list | taiwa store history NAME
+                                   the shop server's job store (TAIWA_TOOL_DB
+                                   or --tools): each job with its newest
+                                   version, who saved it from which station
+                                   and when, and who has it open; or every
+                                   version of job NAME; tab-separated lines
   taiwa --list-machines | --list-dialects
                                    the machines and dialects this program knows
                                    (shipped, and the shop's own in
@@ -134,6 +142,7 @@ std::string fileName(const std::string& path) { return std::filesystem::path(pat
 struct Loaded {
     Plan plan;
     int exit = kOk;
+    std::string toolsOrigin;  // ToolStore::origin, for the sheet
 };
 
 Loaded load(const Options& o, bool withToolPaths)
@@ -145,7 +154,10 @@ Loaded load(const Options& o, bool withToolPaths)
         l.exit = printDiagnostics(name, read.diagnostics) == kOk ? kInternal : kInputErrors;
         return l;
     }
-    const auto tools = readToolLibrary(o.tools.empty() ? defaultToolLibraryPath() : o.tools);
+    // The shop server's tools (or its copy's): the sheet says which.
+    auto store = openToolStore(o.tools);
+    const auto tools = store ? (*store)->tools() : Result<std::vector<Tool>>(Failure{store.error()});
+    if (store) l.toolsOrigin = (*store)->origin();
     if (!tools) {
         // The shop's library is input like the job: refused with its reason, exit 2.
         std::cerr << "taiwa: tool library: " << tools.error() << "; nothing was written\n";
@@ -318,6 +330,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.programNumber = programNumber;
     e.verificationFaults = faults;
     e.posted = tape ? &*tape : nullptr;
+    e.toolsOrigin = l.toolsOrigin;
     if (o.pictures) picturesFor(l.plan, e);
     const auto written = exportPlan(l.plan, o.out, stem, e);
     if (!written) {
@@ -411,6 +424,7 @@ int run(int argc, char** argv)
         case Command::Import: return importStep(o);
         case Command::FigureFromDxf: return figureFromDxf(o);
         case Command::ImportTools: return importTools(o.job, o.tools);
+        case Command::Store: return storeCommand(o.storeAction, o.job, o.tools);
         case Command::ListMachines: return listMachines();
         case Command::ListDialects: return listDialects();
         case Command::Station:

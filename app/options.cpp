@@ -54,6 +54,12 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         else if (first == "import") o.command = Command::Import, i = 1;
         else if (first == "figure-from-dxf") o.command = Command::FigureFromDxf, i = 1;
         else if (first == "import-tools") o.command = Command::ImportTools, i = 1;
+        else if (first == "store") {  // store list, store history NAME
+            o.command = Command::Store, i = 2;
+            if (args.size() < 2 || (args[1] != "list" && args[1] != "history"))
+                return std::string("store wants 'list' or 'history NAME'") + (args.size() < 2 ? "" : ", not '" + std::string(args[1]) + "'");
+            o.storeAction = args[1];
+        }
     }
     auto value = [&]() -> std::optional<std::string_view> {
         if (i + 1 >= args.size()) return std::nullopt;
@@ -145,6 +151,11 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
     if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
     if (o.command == Command::FigureFromDxf && o.job.empty()) return std::string("no DXF file given");
     if (o.command == Command::ImportTools && o.job.empty()) return std::string("no SQLite tool library given");
+    if (o.command == Command::Store) {
+        if (o.storeAction == "list" && !o.job.empty()) return "store list takes no job name ('" + o.job + "')";
+        if (o.storeAction == "history" && o.job.empty()) return std::string("store history needs the job's name");
+        return std::nullopt;
+    }
     if (!o.fromStore.empty() && !o.job.empty()) return "give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')";
     if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return std::string("no job file given");
     if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())

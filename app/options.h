@@ -10,13 +10,14 @@
 namespace taiwa::app {
 
 enum class Command {
-    Station, Check, Export, Verify, Render, Import, FigureFromDxf, ImportTools, ListMachines, ListDialects, Help, Version
+    Station, Check, Export, Verify, Render, Import, FigureFromDxf, ImportTools, Store, ListMachines, ListDialects, Help, Version
 };
 
 struct Options {
     Command command = Command::Station;
     std::string job;                  // JOB argument (import: the STEP file; figure-from-dxf: the DXF file;
-                                      // import-tools: the SQLite library)
+                                      // import-tools: the SQLite library; store history: the job's name)
+    std::string storeAction;          // store: list or history
     std::string out;                  // --out
     std::string dialect;              // --dialect; empty: the job's, else linuxcnc
     std::optional<LengthUnit> units;  // --units (figure-from-dxf: the drawing's)

@@ -1,6 +1,7 @@
-// `taiwa export --from-store NAME`: the job's newest version fetched from
-// the shop server's job store (docs/shop-server.md) into a file of its own,
-// which the export then reads as any job file.
+// The shop server's job store on the command line (docs/shop-server.md):
+// `taiwa export --from-store NAME` (the job's newest version fetched into a
+// file of its own, which the export then reads as any job file), `taiwa
+// store list`, `taiwa store history NAME`; and `taiwa import-tools FILE`.
 #pragma once
 
 #include "model/result.h"
@@ -20,5 +21,13 @@ Result<std::string> fetchStoredJob(const std::string& name, const std::string& t
 // line on stdout, 2 when the setting is no server or FILE no library (its
 // reason on stderr, the server unchanged), 1 when the server fails.
 int importTools(const std::string& file, const std::string& toolsSetting);
+
+// `taiwa store list` (`action` "list": every job, one line each: name,
+// newest version, who saved it, from which station, when, and who holds
+// its lock) and `taiwa store history NAME` (every version of job `name`,
+// oldest first: version, who, station, when), tab-separated on stdout.
+// Exit 0; 2 when the setting names no server, the server cannot be
+// reached or has no job NAME (the reason on stderr); 1 when it fails.
+int storeCommand(const std::string& action, const std::string& name, const std::string& toolsSetting);
 
 }  // namespace taiwa::app

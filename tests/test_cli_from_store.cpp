@@ -1,8 +1,11 @@
-// `taiwa export --from-store NAME` against a PostgreSQL 15 the test starts
-// itself (support/pg_server.h; skipped, saying so, where the binaries are
-// absent): the stored plate.taiwa exported as from its file, and the
-// refusals (no such job, a tool setting that is a file, both a file and
-// --from-store).
+// The shop server on the command line, against a PostgreSQL 15 the test
+// starts itself (support/pg_server.h; skipped, saying so, where the
+// binaries are absent): `taiwa export --from-store NAME` (the stored
+// plate.taiwa exported as from its file, and the refusals: no such job, a
+// tool setting that is a file, both a file and --from-store); `taiwa
+// import-tools`; `taiwa store list` and `taiwa store history NAME`; and the
+// sheet saying where its tools came from (the server's library, or its copy
+// while the server is away).
 #include "support/pg_server.h"
 #include "support/support.h"
 #include "tools/pg_job_store.h"
@@ -10,22 +13,50 @@
 
 #include <QDir>
 #include <QFile>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <sqlite3.h>
 
 using namespace taiwa;
 using taiwa::test::PgServer;
 using taiwa::test::runTaiwa;
+
+namespace {
+
+// The text of a PDF (pdftotext), its white space made single spaces.
+QString pdfText(const QString& pdf)
+{
+    QProcess p;
+    p.start("pdftotext", {pdf, "-"});
+    if (!p.waitForFinished(60000)) return {};
+    return QString::fromUtf8(p.readAllStandardOutput()).simplified();
+}
+
+// When the station's copy of the server's library was taken (its table server_copy).
+QString copyTakenAt(const QString& path)
+{
+    sqlite3* db = nullptr;
+    QString at;
+    sqlite3_stmt* s = nullptr;
+    if (sqlite3_open_v2(path.toUtf8().constData(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK &&
+        sqlite3_prepare_v2(db, "SELECT synced_at FROM server_copy", -1, &s, nullptr) == SQLITE_OK && sqlite3_step(s) == SQLITE_ROW)
+        at = QString::fromUtf8(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+    sqlite3_finalize(s);
+    sqlite3_close(db);
+    return at;
+}
+
+}  // namespace
 
 class TestCliFromStore : public QObject {
     Q_OBJECT
 private slots:
     void exportsTheStoredJob()
     {
-        if (PgServer::binaries().isEmpty())
-            QSKIP("no PostgreSQL 15 here (/usr/lib/postgresql/15/bin/pg_ctl is absent); packaging/install-deps.sh installs postgresql-15");
-        PgServer server;
-        QVERIFY2(server.start(), qPrintable(server.why()));
+        TAIWA_START_PG_SERVER(server);
         QTemporaryDir home;
         const QStringList env{"TAIWA_TOOL_DB=" + QString::fromStdString(server.uri()), "XDG_DATA_HOME=" + home.path(), "TAIWA_STATION=office"};
         QFile plate(test::sourcePath("resources/samples/plate.taiwa"));
@@ -65,10 +96,7 @@ private slots:
     // refusals leave the server as it was.
     void importsAnSqliteLibrary()
     {
-        if (PgServer::binaries().isEmpty())
-            QSKIP("no PostgreSQL 15 here (/usr/lib/postgresql/15/bin/pg_ctl is absent); packaging/install-deps.sh installs postgresql-15");
-        PgServer server;
-        QVERIFY2(server.start(), qPrintable(server.why()));
+        TAIWA_START_PG_SERVER(server);
         QTemporaryDir home;
         const QStringList env{"TAIWA_TOOL_DB=" + QString::fromStdString(server.uri()), "XDG_DATA_HOME=" + home.path(),
                               "TAIWA_STATION=office"};
@@ -112,6 +140,117 @@ private slots:
         QCOMPARE(runTaiwa({"import-tools"}, env).exitCode, 2);
         auto still = (*store)->tools();
         QVERIFY(still && still->size() == tools->size());
+    }
+
+    // The sheet says where its tools came from: the server's library and the
+    // time it was read; while the server is away, the time of the station's
+    // copy; nothing for the station's own file (the goldens' case).
+    void theSheetSaysWhereTheToolsCameFrom()
+    {
+        TAIWA_START_PG_SERVER(server);
+        QTemporaryDir home;
+        const QString uri = QString::fromStdString(server.uri());
+        const QStringList env{"TAIWA_TOOL_DB=" + uri, "XDG_DATA_HOME=" + home.path(), "XDG_CACHE_HOME=" + home.filePath("cache"),
+                              "TAIWA_STATION=machine-2"};
+        const QString plate = test::sourcePath("resources/samples/plate.taiwa");
+        const auto sheets = [&](const QString& dir) {
+            return std::pair{QString::fromStdString(test::readFile(QDir(dir).filePath("plate.sheet.html"))),
+                             pdfText(QDir(dir).filePath("plate.sheet.pdf"))};
+        };
+
+        // Online (the first export also takes the station's copy).
+        const QString online = home.filePath("online");
+        auto r = runTaiwa({"export", plate, "--out", online, "--no-pictures"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QRegularExpression fromServer("Tools from the library of " + QRegularExpression::escape(uri) +
+                                            " as of \\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\dZ");
+        auto [html, pdf] = sheets(online);
+        QVERIFY2(html.contains(QRegularExpression("<p>" + fromServer.pattern() + "</p>")), qPrintable(html.left(3000)));
+        QVERIFY2(pdf.contains(fromServer), qPrintable(pdf.left(3000)));
+        QVERIFY(!html.contains("read-only copy"));
+
+        // The server away: the copy, and its time.
+        const QString takenAt = copyTakenAt(home.filePath("taiwa/tools-server-copy.sqlite"));
+        QVERIFY2(!takenAt.isEmpty(), "the first export took no copy of the server's library");
+        QVERIFY(server.stop());
+        const QString away = home.filePath("away");
+        r = runTaiwa({"export", plate, "--out", away, "--no-pictures"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString line = "Tools as of " + takenAt + " (server " + uri + " away, read-only copy)";
+        std::tie(html, pdf) = sheets(away);
+        QVERIFY2(html.contains("<p>" + line + "</p>"), qPrintable(html.left(3000)));
+        QVERIFY2(pdf.contains(line), qPrintable(pdf.left(3000)));
+        QVERIFY(!html.contains("Tools from the library"));
+
+        // The station's own file: the sheet says nothing of its tools' origin.
+        const QString own = home.filePath("own");
+        r = runTaiwa({"export", plate, "--out", own, "--no-pictures"}, {"TAIWA_TOOL_DB=" + home.filePath("tools.sqlite"),
+                                                                        "XDG_CACHE_HOME=" + home.filePath("cache")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        std::tie(html, pdf) = sheets(own);
+        QVERIFY(html.contains("Process steps"));
+        QVERIFY2(!html.contains("Tools as of") && !html.contains("Tools from the library"), qPrintable(html.left(3000)));
+        QVERIFY(!pdf.contains("Tools as of") && !pdf.contains("Tools from the library"));
+    }
+
+    // `taiwa store list` and `taiwa store history NAME`: the jobs with their
+    // newest version, who saved it where and when, and the lock's holder;
+    // a job's versions; exit 2 with the reason for a bad name, a setting
+    // that names no server, a server away and a wrong call.
+    void listsTheStoreAndAJobsHistory()
+    {
+        TAIWA_START_PG_SERVER(server);
+        QTemporaryDir home;
+        const QString uri = QString::fromStdString(server.uri());
+        const QStringList env{"TAIWA_TOOL_DB=" + uri, "XDG_DATA_HOME=" + home.path(), "TAIWA_STATION=office"};
+        {
+            auto office = PgToolStore::open(server.uri(), {home.filePath("office.sqlite").toStdString(), "office", 3});
+            auto machine = PgToolStore::open(server.uri(), {home.filePath("machine.sqlite").toStdString(), "machine-2", 3});
+            QVERIFY(office && machine);
+            PgJobStore atOffice(**office), atMachine(**machine);
+            QCOMPARE(*atOffice.save("plate", "one"), 1);
+            QCOMPARE(*atOffice.save("plate", "two"), 2);
+            QCOMPARE(*atMachine.save("bracket", "three"), 1);
+            QVERIFY(atMachine.lock("plate"));
+        }
+        const QString when = "\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\dZ";
+        auto r = runTaiwa({"store", "list"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList jobs = r.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(jobs.size(), 2);
+        QVERIFY2(QRegularExpression("^bracket\t1\ttaiwa_admin\tmachine-2\t" + when + "\t-$").match(jobs[0]).hasMatch(), qPrintable(jobs[0]));
+        QVERIFY2(QRegularExpression("^plate\t2\ttaiwa_admin\toffice\t" + when + "\topen at station machine-2 by taiwa_admin since " + when + "$")
+                     .match(jobs[1])
+                     .hasMatch(),
+                 qPrintable(jobs[1]));
+
+        r = runTaiwa({"store", "history", "plate"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList versions = r.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(versions.size(), 2);
+        for (int v = 0; v < 2; ++v)
+            QVERIFY2(QRegularExpression(QString("^%1\ttaiwa_admin\toffice\t").arg(v + 1) + when + "$").match(versions[v]).hasMatch(),
+                     qPrintable(versions[v]));
+
+        // Refused, exit 2, saying why.
+        r = runTaiwa({"store", "history", "nothing"}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(uri + " has no job 'nothing'") && r.out.isEmpty(), qPrintable(r.err));
+        r = runTaiwa({"store", "list"}, {"TAIWA_TOOL_DB=" + home.filePath("tools.sqlite")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("store list: the job store needs the shop server") && r.err.contains("not a server"), qPrintable(r.err));
+        for (const QStringList& call : {QStringList{"store"}, QStringList{"store", "remove"}, QStringList{"store", "history"},
+                                        QStringList{"store", "list", "plate"}, QStringList{"store", "list", "--out", "x"}}) {
+            r = runTaiwa(call, env);
+            QVERIFY2(r.exitCode == 2 && r.err.contains("Try 'taiwa --help'"), qPrintable(call.join(' ') + ": " + r.err));
+        }
+        QVERIFY(server.stop());
+        r = runTaiwa({"store", "list"}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(uri + " cannot be reached") && r.out.isEmpty(), qPrintable(r.err));
+        r = runTaiwa({"store", "history", "plate"}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(uri + " cannot be reached"), qPrintable(r.err));
     }
 };
 

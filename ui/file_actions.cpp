@@ -211,6 +211,7 @@ bool FileActions::exportTo(const ExportChoice& c)
     eo.units = c.units;
     eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
     eo.verificationFaults = faults;
+    eo.toolsOrigin = runner_->toolsOrigin();
     // The same drawing as `taiwa export`'s (export/sheet_pictures.h): the same pixels.
     const std::string problem = c.pictures ? addSheetPictures(*plan, eo) : std::string();
     const auto written = exportPlan(*plan, c.folder.toStdString(), exportStem(doc_->path()).toStdString(), eo);

@@ -101,6 +101,8 @@ void PlanRunner::reloadLibrary()
     library_ = std::move(tools);
 }
 
+std::string PlanRunner::toolsOrigin() const { return server_ ? server_->origin() : std::string(); }
+
 // LISTEN on the server's connection, watched by the event loop; none while
 // the station reads its copy.
 void PlanRunner::watchServer()
@@ -116,19 +118,30 @@ void PlanRunner::watchServer()
 
 void PlanRunner::serverSpoke()
 {
-    const auto changes = server_->changes(0);
-    if (server_->readOnly()) {  // the connection went: the copy, read-only
-        delete serverWatch_;
-        serverWatch_ = nullptr;
+    // A change committed while the library is being read comes back with the
+    // read's own answer: libpq keeps it in its queue and the socket has
+    // nothing more to say, so it would wait for the next notification. The
+    // queue is taken again after each read and the library read again for
+    // what it held (a few times at most; a later notification does the rest).
+    constexpr int kReads = 4;
+    std::vector<ToolChange> changes;
+    for (int read = 0; read < kReads; ++read) {
+        const auto more = server_->changes(0);
+        if (server_->readOnly()) {  // the connection went: the copy, read-only
+            delete serverWatch_;
+            serverWatch_ = nullptr;
+            reloadLibrary();
+            emit toolsChangedOnServer(QString::fromStdString(server_->status()));
+            return;
+        }
+        if (more.empty()) break;
+        changes.insert(changes.end(), more.begin(), more.end());
         reloadLibrary();
-        emit toolsChangedOnServer(QString::fromStdString(server_->status()));
-        return;
     }
     if (changes.empty()) return;
     QStringList tools;
     for (const auto& c : changes)
         if (!tools.contains(QStringLiteral("T%1").arg(c.id))) tools << QStringLiteral("T%1").arg(c.id);
-    reloadLibrary();
     emit toolsChangedOnServer(tr("%1 changed by %2 at station %3; the plan is run again")
                                   .arg(tools.join(QStringLiteral(", ")), QString::fromStdString(changes.back().who),
                                        QString::fromStdString(changes.back().station)));

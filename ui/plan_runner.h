@@ -56,6 +56,9 @@ public:
     // Empty, or the tools' state while the shop server is away: "tools as
     // of … (read only: … cannot be reached)".
     const QString& libraryStatus() const { return libraryStatus_; }
+    // Where the library came from, for the sheet (ToolStore::origin):
+    // empty for the station's own file.
+    std::string toolsOrigin() const;
 
     // Checks the job now; plans the step list now when there are no errors
     // and schedules the full plan.

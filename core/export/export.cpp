@@ -242,6 +242,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     sheet.picturesNote = options.picturesNote;
     sheet.setupPicture = options.setupPicture;
     sheet.paths = twoPathSheet(plan);  // a two-path lathe's: each step's path, the roughing's timeline
+    sheet.toolsOrigin = options.toolsOrigin;
     // The PDF (most of an export's time after planning: shaping and
     // compressing every page's text) is drawn on a thread of its own while
     // this one posts the tape and writes the HTML sheet and steps.json.

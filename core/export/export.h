@@ -29,6 +29,8 @@ struct ExportOptions {
     std::string picturesNote;
     // The sheet's picture of the setup (addSheetPictures), PNG bytes; empty: none.
     std::string setupPicture;
+    // Where the tools came from, for the sheet (ToolStore::origin); empty: the station's own file.
+    std::string toolsOrigin;
     // The tape already posted with these options (postOptions of the plan,
     // the dialect, units, program number and stem; taiwa export posts it
     // first to place the verification's findings on it): written as it is,

@@ -106,6 +106,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options, PdfP
     page->fields(c.fields);
     page->paragraph(c.setup);
     if (!c.clamping.empty()) page->paragraph(c.clamping);
+    if (!c.toolsOrigin.empty()) page->paragraph(c.toolsOrigin);
     if (c.setupPicture) page->pictures({*c.setupPicture});
     if (!c.faults.empty()) {
         const QColor red(192, 0, 0);

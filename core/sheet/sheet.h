@@ -49,6 +49,10 @@ struct SheetOptions {
     // (export/two_path_sheet.h): each step's path and the balanced
     // roughing's blocks per path in time, the waits marked; none: one path.
     std::vector<sheet::Section> paths;
+    // Where the tools came from when not the station's own file
+    // (ToolStore::origin: the shop server's library and its time, or the
+    // copy read while the server is away), one sentence; empty: none.
+    std::string toolsOrigin;
 };
 
 // How far a lathe job's bar must stand out of the chuck's jaws: the part

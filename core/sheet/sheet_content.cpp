@@ -166,6 +166,7 @@ Content content(const Plan& plan, const SheetOptions& o)
             std::erase_if(c.fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
     }
     std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
+    c.toolsOrigin = o.toolsOrigin;
     turnedTables(plan, len, us, c);
     // Probing units: what the touches entered measured (the probing cycle
     // measures again on the machine and prints it there).

@@ -18,6 +18,7 @@ struct Content {
     std::vector<std::pair<std::string, std::string>> fields;  // "Job" -> "Cover plate"
     std::string setup;                                        // work offset and origin, one sentence
     std::string clamping;  // milling jobs: how the block is held, or that the job does not say
+    std::string toolsOrigin;  // SheetOptions::toolsOrigin: the shop server's tools, or its copy's
     Table steps;
     std::vector<Section> paths;  // a two-path lathe's (SheetOptions::paths), after the steps
     Table workCentre;  // probing units: the measured centre, size, rotation and residuals; empty rows when none

@@ -104,6 +104,7 @@ std::string sheetHtml(const Plan& plan, const SheetOptions& options)
     }
     h += "</tr></table>\n<p>" + escape(c.setup) + "</p>\n";
     if (!c.clamping.empty()) h += "<p>" + escape(c.clamping) + "</p>\n";
+    if (!c.toolsOrigin.empty()) h += "<p>" + escape(c.toolsOrigin) + "</p>\n";
     if (c.setupPicture) h += "<figure class=\"setup\">" + image(*c.setupPicture) + "</figure>\n";
     if (!c.faults.empty()) {
         h += "<h2 class=\"fault\">Verification: written with faults (--force)</h2>\n<ul class=\"fault\">";

@@ -78,6 +78,20 @@ Result<std::vector<std::string>> PgJobStore::names()
     return out;
 }
 
+Result<std::vector<StoredJob>> PgJobStore::list()
+{
+    auto r = server_.query(("SELECT j.name, v.version, v.who, v.station, " + utc("v.at") +
+                            ", coalesce(j.locked_station, ''), coalesce(j.locked_by, ''), coalesce(" + utc("j.locked_at") +
+                            ", '') FROM jobs j JOIN LATERAL (SELECT version, who, station, at FROM job_versions "
+                            "WHERE job = j.name ORDER BY version DESC LIMIT 1) v ON true ORDER BY j.name")
+                               .c_str(),
+                           {});
+    if (!r) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: listing the jobs failed ({})"), server_.name(), r.error())};
+    std::vector<StoredJob> out;
+    for (const auto& row : *r) out.push_back({row[0], {std::stoi(row[1]), row[2], row[3], row[4]}, row[5], row[6], row[7]});
+    return out;
+}
+
 Result<void> PgJobStore::lock(const std::string& name)
 {
     const std::string station = server_.stationOnServer();

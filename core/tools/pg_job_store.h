@@ -14,6 +14,13 @@ struct JobVersionInfo {
     std::string who, station, at;  // at: UTC, ISO 8601
 };
 
+// A job of the store: its newest version, and who holds its lock (empty: no one).
+struct StoredJob {
+    std::string name;
+    JobVersionInfo newest;
+    std::string lockedStation, lockedBy, lockedAt;
+};
+
 class PgJobStore {
 public:
     // On a connected tool store (the same server and connection).
@@ -25,6 +32,8 @@ public:
     Result<std::string> load(const std::string& name, int version = 0);
     Result<std::vector<JobVersionInfo>> history(const std::string& name);
     Result<std::vector<std::string>> names();
+    // Every job with a version, by name.
+    Result<std::vector<StoredJob>> list();
     // Takes the job's lock for this station (taken again: fine); refused,
     // naming the station, who and since when, while another holds it.
     Result<void> lock(const std::string& name);

@@ -44,8 +44,11 @@ public:
     Result<void> remove(int id) override;
     Result<void> addUsage(int id, double minutes) override;
     bool readOnly() const override;
+    // Why the server could not be reached, while readOnly(); else empty.
+    std::string whyOffline() const;
     std::string asOf() const override;
     std::string status() const override;
+    std::string origin() const override;
 
     // Tries the server again (after it was away or a statement failed);
     // back online, the copy is refreshed and LISTEN renewed.

@@ -5,6 +5,7 @@
 
 #include "tools/tool_change_log.h"
 #include "tools/tool_check.h"
+#include "tools/tool_row.h"
 #include "tools/tool_store.h"
 #include "model/translate_noop.h"
 
@@ -95,6 +96,7 @@ public:
     int step() { return sqlite3_step(s_); }
     double real(int c) const { return sqlite3_column_double(s_, c); }
     int integer(int c) const { return sqlite3_column_int(s_, c); }
+    bool flag(int c) const { return integer(c) != 0; }
     std::string text(int c) const
     {
         const auto* t = sqlite3_column_text(s_, c);
@@ -156,9 +158,8 @@ bool addBuiltInNames(sqlite3* db)
 
 bool insert(sqlite3* db, const Tool& t)
 {
-    Statement s(db, "INSERT OR REPLACE INTO tools (id, name, type, diameter, corner_radius, taper_angle, point_angle, "
-                    "flute_length, stickout, holder, flutes, life_minutes, used_minutes, centre_cutting, turning, "
-                    "holder_diameter, holder_length) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)");
+    const std::string sql = fmt::format("INSERT OR REPLACE INTO tools (id, {}) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)", kToolColumns);
+    Statement s(db, sql.c_str());
     if (!s.ok()) return false;
     s.bind(1, t.id);
     s.bind(2, t.name);
@@ -280,23 +281,14 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
 Result<std::vector<Tool>> ToolLibrary::tools() const
 {
     sqlite3* db = db_->handle;
-    Statement s(db, "SELECT id, name, type, diameter, corner_radius, taper_angle, point_angle, flute_length, stickout, "
-                    "holder, flutes, life_minutes, used_minutes, centre_cutting, turning, holder_diameter, holder_length "
-                    "FROM tools ORDER BY id");
+    const std::string sql = fmt::format("SELECT id, {} FROM tools ORDER BY id", kToolColumns);
+    Statement s(db, sql.c_str());
     if (!s.ok()) {
         return Failure{describe(db, path_)};
     }
     std::vector<Tool> out;
     int rc;
     while ((rc = s.step()) == SQLITE_ROW) {
-        Tool t;
-        t.id = s.integer(0);
-        t.name = s.text(1);
-        const auto type = toolTypeFromKey(s.text(2));
-        if (!type) {
-            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {} has an unknown type '{}'"), path_, t.id, s.text(2))};
-        }
-        t.type = *type;
         // A number column holding text ('abc') would read as 0: named instead.
         static constexpr std::pair<int, const char*> kNumbers[] = {
             {3, "diameter"}, {4, "corner_radius"}, {5, "taper_angle"}, {6, "point_angle"}, {7, "flute_length"},
@@ -305,27 +297,12 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
         for (const auto& [column, name] : kNumbers) {
             const int kind = sqlite3_column_type(s.get(), column);
             if (kind != SQLITE_INTEGER && kind != SQLITE_FLOAT)
-                return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {}: {} is '{}', not a number"), path_, t.id, name,
+                return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {}: {} is '{}', not a number"), path_, s.integer(0), name,
                                            s.text(column).substr(0, 40))};
         }
-        t.diameter = s.real(3);
-        t.cornerRadius = s.real(4);
-        t.taperAngle = s.real(5);
-        t.pointAngle = s.real(6);
-        t.fluteLength = s.real(7);
-        t.stickout = s.real(8);
-        t.holder = s.text(9);
-        t.flutes = s.integer(10);
-        t.lifeMinutes = s.real(11);
-        t.usedMinutes = s.real(12);
-        t.centreCutting = s.integer(13) != 0;
-        const auto turning = turningFrom(s.text(14));
-        if (!turning)
-            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: tool {} has unreadable lathe data '{}'"), path_, t.id, s.text(14))};
-        t.turning = *turning;
-        t.holderDiameter = s.real(15);
-        t.holderLength = s.real(16);
-        out.push_back(std::move(t));
+        auto t = toolFromRow(s, path_);
+        if (!t) return Failure{t.error()};
+        out.push_back(std::move(*t));
     }
     if (rc != SQLITE_DONE) {
         return Failure{describe(db, path_)};

@@ -63,6 +63,11 @@ public:
     // The status bar's line: "tools: FILE", "tools: server S", "tools as of
     // T (server S cannot be reached: …)".
     virtual std::string status() const = 0;
+    // Where the tools last read came from, in a sentence for the instruction
+    // sheet: "Tools from the library of S as of T" (T the server's time of
+    // the read), "Tools as of T (server S away, read-only copy)"; empty for
+    // the station's own file (the sheet says nothing, as it always has).
+    virtual std::string origin() const { return {}; }
 };
 
 // Whether a setting names a PostgreSQL server (postgresql://…, postgres://…,

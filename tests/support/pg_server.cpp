@@ -52,9 +52,8 @@ PgServer::~PgServer()
     if (running_) kill();
 }
 
-bool PgServer::run(const QString& program, const QStringList& args, int timeoutMs, QString* out)
+void PgServer::startProcess(QProcess& p, const QString& program, const QStringList& args)
 {
-    QProcess p;
     p.setWorkingDirectory(dir_.path());
     p.setProcessChannelMode(QProcess::MergedChannels);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -66,6 +65,12 @@ bool PgServer::run(const QString& program, const QStringList& args, int timeoutM
         p.start("/usr/sbin/runuser", QStringList{"-u", u->pw_name, "--", program} + args);
     else
         p.start(program, args);
+}
+
+bool PgServer::run(const QString& program, const QStringList& args, int timeoutMs, QString* out)
+{
+    QProcess p;
+    startProcess(p, program, args);
     const bool done = p.waitForFinished(timeoutMs);
     const QString text = QString::fromUtf8(p.readAll());
     if (out) *out = text;
@@ -128,11 +133,45 @@ std::string PgServer::createDatabase(const QString& db)
     return psql(QString("CREATE DATABASE %1").arg(db)) ? uri("taiwa_admin", db) : std::string();
 }
 
+QStringList PgServer::psqlArguments(const QString& sql, const QString& user, const QString& db) const
+{
+    return {"-X", "-q", "-t", "-A", "-v", "ON_ERROR_STOP=1", "-h", "127.0.0.1", "-p", QString::number(port_), "-U", user, "-d", db, "-c", sql};
+}
+
 bool PgServer::psql(const QString& sql, QString* out, const QString& user, const QString& db)
 {
-    return run(QString(kBin) + "/psql", {"-X", "-q", "-t", "-A", "-v", "ON_ERROR_STOP=1", "-h", "127.0.0.1", "-p", QString::number(port_), "-U", user,
-                                         "-d", db, "-c", sql},
-               60000, out);
+    return run(QString(kBin) + "/psql", psqlArguments(sql, user, db), 60000, out);
+}
+
+std::unique_ptr<QProcess> PgServer::psqlInBackground(const QString& sql)
+{
+    auto p = std::make_unique<QProcess>();
+    startProcess(*p, QString(kBin) + "/psql", psqlArguments(sql, "taiwa_admin", "taiwa"));
+    if (!p->waitForStarted(10000)) {
+        why_ = "psql did not start";
+        return nullptr;
+    }
+    return p;
+}
+
+QString PgServer::requireTls()
+{
+    const QString crt = dir_.path() + "/server.crt", key = dir_.path() + "/server.key";
+    if (!run("/usr/bin/openssl", {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "2", "-subj", "/CN=localhost", "-addext",
+                                  "subjectAltName=DNS:localhost,IP:127.0.0.1", "-keyout", key, "-out", crt}))
+        return {};
+    // The server refuses a key others may read.
+    QFile::setPermissions(key, QFile::ReadOwner | QFile::WriteOwner);
+    QFile conf(data_ + "/postgresql.conf"), hba(data_ + "/pg_hba.conf");
+    if (!conf.open(QIODevice::Append) ||
+        conf.write(QString("ssl = on\nssl_cert_file = '%1'\nssl_key_file = '%2'\n").arg(crt, key).toUtf8()) < 0 ||
+        !hba.open(QIODevice::WriteOnly | QIODevice::Truncate) || hba.write("hostssl all all 127.0.0.1/32 trust\n") < 0) {
+        why_ = "cannot write the server's configuration";
+        return {};
+    }
+    conf.close();
+    hba.close();
+    return stop() && restart() ? crt : QString();
 }
 
 }  // namespace taiwa::test

@@ -4,11 +4,20 @@
 // refuses root. Trust authentication on 127.0.0.1 only, fsync off.
 #pragma once
 
+#include <QProcess>
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
 
 #include <memory>
+
+// A test function's first lines: skipped, saying so, where the binaries are
+// absent; else the server `name` started (the test fails when it cannot be).
+#define TAIWA_START_PG_SERVER(name)                                                                                                     \
+    if (taiwa::test::PgServer::binaries().isEmpty())                                                                                    \
+        QSKIP("no PostgreSQL 15 here (/usr/lib/postgresql/15/bin/pg_ctl is absent); packaging/install-deps.sh installs postgresql-15"); \
+    taiwa::test::PgServer name;                                                                                                         \
+    QVERIFY2(name.start(), qPrintable(name.why()))
 
 namespace taiwa::test {
 
@@ -34,9 +43,19 @@ public:
     // Runs SQL through psql as `user` on `db`; its output, and ok.
     bool psql(const QString& sql, QString* out = nullptr, const QString& user = "taiwa_admin", const QString& db = "taiwa");
     QString why() const { return why_; }
+    // TLS only: a self-signed certificate for localhost and 127.0.0.1 made
+    // by openssl in the test's folder, ssl = on, and pg_hba.conf letting in
+    // TLS connections alone (hostssl); the server restarted. The
+    // certificate's path (a station's sslrootcert), empty when it failed: why().
+    QString requireTls();
+    // psql running `sql` as the superuser without waiting for it (a
+    // transaction held open while the test goes on); started, or null.
+    std::unique_ptr<QProcess> psqlInBackground(const QString& sql);
 
 private:
     bool run(const QString& program, const QStringList& args, int timeoutMs = 60000, QString* out = nullptr);
+    void startProcess(QProcess& p, const QString& program, const QStringList& args);
+    QStringList psqlArguments(const QString& sql, const QString& user, const QString& db) const;
     bool ctlStart();
     QTemporaryDir dir_;
     QString data_;
