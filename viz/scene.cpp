@@ -9,6 +9,7 @@
 #include "viz/camera_presets.h"
 #include "viz/palette.h"
 #include "viz/path_lod.h"
+#include "viz/scene_surface.h"
 #include "viz/solids.h"
 #include "verify/deviation.h"
 #include "model/turned_geometry.h"
@@ -115,6 +116,8 @@ void Scene::clear()
     pathSegments_ = 0;
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = cap_ = nullptr;
+    surface_ = nullptr;
+    surfaceTriangles_ = 0;
     stockLight_.set(nullptr, 0, 0);
     deviation_.reset();  // a map is of one plan
     latheParts_.clear();
@@ -152,6 +155,8 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     renderer_->AddActor(stockEdges_);
     partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
     renderer_->AddActor(partEdges_);
+    surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
+    if (surface_) renderer_->AddActor(surface_);
 
     steps_.resize(plan_->steps.size());
     mergePaths();

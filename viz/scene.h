@@ -174,6 +174,10 @@ public:
     std::vector<std::array<const vtkActor*, 2>> pathBlockActors() const;
     // The steps of each block (indices into Plan::steps, in plan order).
     std::vector<std::vector<int>> pathBlockSteps() const;
+    // The machined free-form surfaces' actor (viz/scene_surface.h; null:
+    // none) and its triangles; hidden while the colour map is shown.
+    const vtkActor* machinedSurfaceActor() const { return surface_; }
+    std::size_t machinedSurfaceTriangles() const { return surfaceTriangles_; }
 
 private:
     struct StepActors {
@@ -252,6 +256,8 @@ private:
     std::vector<std::pair<int, int>> blockOf_;
     int shownStep_ = -1;  // the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_, cap_;
+    vtkSmartPointer<vtkActor> surface_;  // the machined free-form surfaces
+    std::size_t surfaceTriangles_ = 0;
     std::optional<SectionPlane> section_;
     std::shared_ptr<const verify::DeviationMap> deviation_;
     std::optional<Point3> marked_;

@@ -44,6 +44,7 @@ void Scene::updateStock()
     if (cap_) renderer_->RemoveActor(cap_);
     tray_ = false;
     cap_ = nullptr;
+    if (surface_) surface_->SetVisibility(!deviation_);  // the map shows the part itself
     // The solid a section cuts open: the colour map, or the simulated stock.
     std::shared_ptr<const sim::HeightField> shown;
     const bool solid = deviation_ || showStock_ || section_;

@@ -10,6 +10,7 @@
 // are then put in the renderer in a new scene's order, so that what is
 // drawn over what (lines on a floor at the same depth) is the same too.
 #include "viz/scene.h"
+#include "viz/scene_surface.h"
 
 #include "sim/stock_simulation.h"
 #include "viz/actors.h"
@@ -62,7 +63,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     };
 
     // What a new scene makes anew in any case: out of the renderer.
-    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_}) drop(*p);
+    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_, &surface_}) drop(*p);
     if (marker_) dropped.emplace_back(marker_.Get());  // a new scene shows no marker; markPoint may
     const Stock& s = plan_->mmJob.stock;
     if (!(old->mmJob.stock == s)) {
@@ -78,6 +79,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
         makeAxes(axisLength);
     }
     partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
+    surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
 
     // The steps' path actors: kept where the path is the same.
     std::vector<StepActors> before = std::move(steps_);
@@ -136,6 +138,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     };
     add(stockEdges_);
     add(partEdges_);
+    if (surface_) add(surface_);
     pathSegments_ = 0;
     // Blocks whose steps' paths are all unchanged keep their actors.
     mergePaths(std::move(blocks_), old.get());

@@ -201,6 +201,11 @@ public:
     {
         return std::nullopt;
     }
+    // The free-form surface a milling step machines, for the 3-D view
+    // (viz/scene_surface.cpp): point paths of equal length in mm, each
+    // path's points beside the next path's; empty for a step with none
+    // (SURFACE's finishing step gives its finishing surface).
+    virtual std::vector<std::vector<Point3>> machinedSurface(const Step& /*step*/) const { return {}; }
 };
 
 // Adapter: implementations work on their own input struct.

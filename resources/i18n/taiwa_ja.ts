@@ -5422,6 +5422,86 @@ Theirs: %6</source>
             <translation>壁の仕上げ方: 全深さで一度に、または深さを分けて</translation>
         </message>
         <message>
+            <source>Curve 1</source>
+            <translation>曲線 1</translation>
+        </message>
+        <message>
+            <source>Curve 2</source>
+            <translation>曲線 2</translation>
+        </message>
+        <message>
+            <source>N (roughing pieces)</source>
+            <translation>N (荒加工の分割数)</translation>
+        </message>
+        <message>
+            <source>M (finishing pieces)</source>
+            <translation>M (仕上げの分割数)</translation>
+        </message>
+        <message>
+            <source>Step along the curves (gives M)</source>
+            <translation>曲線に沿ったピッチ (M を決める)</translation>
+        </message>
+        <message>
+            <source>M given</source>
+            <translation>M を指定</translation>
+        </message>
+        <message>
+            <source>Roughing allowance</source>
+            <translation>荒加工の仕上げ代</translation>
+        </message>
+        <message>
+            <source>Boundary (paths)</source>
+            <translation>境界 (パス)</translation>
+        </message>
+        <message>
+            <source>none: the whole surface</source>
+            <translation>なし: 曲面全体</translation>
+        </message>
+        <message>
+            <source>Ball end mill (T)</source>
+            <translation>ボールエンドミル (T)</translation>
+        </message>
+        <message>
+            <source>under the smallest concave radius</source>
+            <translation>最小凹半径より小さいもの</translation>
+        </message>
+        <message>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines</source>
+            <translation>1 本目の曲線: ';' で区切った点 X, Y, Z、または 2 つの投影 'XY: X, Y; ... / ZX: Z, X; ...'。直線で結ぶときは末尾に '/ lines'</translation>
+        </message>
+        <message>
+            <source>The second curve, as the first; the surface is ruled between the two</source>
+            <translation>2 本目の曲線 (1 本目と同じ書き方)。曲面は 2 本の間の線織面</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
+            <translation>荒加工の曲面のために各曲線を分ける数。M より少なく</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
+            <translation>仕上げの曲面のために各曲線を分ける数。N より多く。空欄: 曲線に沿ったピッチから</translation>
+        </message>
+        <message>
+            <source>The step along the curves that gives M; empty when M is given</source>
+            <translation>M を決める曲線に沿ったピッチ。M を指定したときは空欄</translation>
+        </message>
+        <message>
+            <source>Height of the ridges the ball leaves between finishing paths</source>
+            <translation>仕上げパスの間にボールが残す山の高さ</translation>
+        </message>
+        <message>
+            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
+            <translation>等高線荒加工が曲面に法線方向に残す肉厚</translation>
+        </message>
+        <message>
+            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
+            <translation>各パスが止まる曲面: 点 X, Y, Z のパス。点の間は ';'、パスの間は '/'。なければ空欄</translation>
+        </message>
+        <message>
+            <source>The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius</source>
+            <translation>工具ライブラリのボールエンドミルの番号。空欄: 半径が最小凹半径より小さい最大のもの</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>形状</translation>
         </message>
@@ -5479,6 +5559,10 @@ Theirs: %6</source>
         <message>
             <source>Add side milling</source>
             <translation>側面削りを追加</translation>
+        </message>
+        <message>
+            <source>Add 3-D surface</source>
+            <translation>3次元曲面を追加</translation>
         </message>
         <message>
             <source>Add turned profile</source>

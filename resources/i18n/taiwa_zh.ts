@@ -5422,6 +5422,86 @@ Theirs: %6</source>
             <translation>壁的精加工方式：全深度一次，或分几层深度</translation>
         </message>
         <message>
+            <source>Curve 1</source>
+            <translation>曲线 1</translation>
+        </message>
+        <message>
+            <source>Curve 2</source>
+            <translation>曲线 2</translation>
+        </message>
+        <message>
+            <source>N (roughing pieces)</source>
+            <translation>N (粗加工分段数)</translation>
+        </message>
+        <message>
+            <source>M (finishing pieces)</source>
+            <translation>M (精加工分段数)</translation>
+        </message>
+        <message>
+            <source>Step along the curves (gives M)</source>
+            <translation>沿曲线的步距 (决定 M)</translation>
+        </message>
+        <message>
+            <source>M given</source>
+            <translation>已给出 M</translation>
+        </message>
+        <message>
+            <source>Roughing allowance</source>
+            <translation>粗加工余量</translation>
+        </message>
+        <message>
+            <source>Boundary (paths)</source>
+            <translation>边界 (路径)</translation>
+        </message>
+        <message>
+            <source>none: the whole surface</source>
+            <translation>无: 整个曲面</translation>
+        </message>
+        <message>
+            <source>Ball end mill (T)</source>
+            <translation>球头立铣刀 (T)</translation>
+        </message>
+        <message>
+            <source>under the smallest concave radius</source>
+            <translation>小于最小凹半径</translation>
+        </message>
+        <message>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines</source>
+            <translation>第一条曲线: 用 ';' 分隔的点 X, Y, Z, 或两个投影 'XY: X, Y; ... / ZX: Z, X; ...'; 以直线相连时在末尾加 '/ lines'</translation>
+        </message>
+        <message>
+            <source>The second curve, as the first; the surface is ruled between the two</source>
+            <translation>第二条曲线, 写法同第一条; 曲面是两条曲线之间的直纹面</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
+            <translation>为粗加工曲面将每条曲线分成的段数; 少于 M</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
+            <translation>为精加工曲面将每条曲线分成的段数; 多于 N; 空: 由沿曲线的步距决定</translation>
+        </message>
+        <message>
+            <source>The step along the curves that gives M; empty when M is given</source>
+            <translation>决定 M 的沿曲线步距; 给出 M 时为空</translation>
+        </message>
+        <message>
+            <source>Height of the ridges the ball leaves between finishing paths</source>
+            <translation>精加工路径之间球头留下的残留高度</translation>
+        </message>
+        <message>
+            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
+            <translation>等高粗加工沿法向在曲面上留下的材料</translation>
+        </message>
+        <message>
+            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
+            <translation>每条路径停止处的曲面: 由点 X, Y, Z 组成的路径, 点之间用 ';', 路径之间用 '/'; 无则为空</translation>
+        </message>
+        <message>
+            <source>The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius</source>
+            <translation>刀具库中球头立铣刀的编号; 空: 半径小于最小凹半径的最大刀具</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>轮廓</translation>
         </message>
@@ -5479,6 +5559,10 @@ Theirs: %6</source>
         <message>
             <source>Add side milling</source>
             <translation>添加侧铣</translation>
+        </message>
+        <message>
+            <source>Add 3-D surface</source>
+            <translation>添加三维曲面</translation>
         </message>
         <message>
             <source>Add turned profile</source>

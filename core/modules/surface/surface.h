@@ -55,6 +55,10 @@ struct SurfaceUnit {
     double allowance = 0.3;              // left by roughing, along the normal
     std::vector<std::vector<Point3>> boundary;  // a cutting boundary surface as paths; none when empty
     ToolPins tools;                      // key "surface": a ball end mill
+    // The form's text of a curve or the boundary that does not read, kept
+    // for the check to refuse on its field (the values stay as they were);
+    // never in the job file. Lengths in it are not converted.
+    std::string curve1Bad, curve2Bad, boundaryBad;
 
     void convertLengths(const LengthMap& f)
     {
@@ -102,6 +106,16 @@ struct Built {
     std::string field, problem;  // problem empty: built
 };
 Built buildSurfaces(const SurfaceUnit& mm, LengthUnit shown);
+
+// The curves and the boundary as the form shows and reads them
+// (surface_text.cpp): a curve "x, y, z; x, y, z" or "XY: a, b; a, b / ZX:
+// a, b; a, b", "/ lines" at the end for straight lines between its points;
+// the boundary's paths "x, y, z; ... / x, y, z; ..." (empty: none).
+// nullopt: the text does not read.
+std::string formatCurve(const SurfaceCurve& c);
+std::optional<SurfaceCurve> parseCurve(const std::string& text);
+std::string formatBoundary(const std::vector<std::vector<Point3>>& paths);
+std::optional<std::vector<std::vector<Point3>>> parseBoundary(const std::string& text);
 
 // The ball end mill for the surface: the pinned one, else the largest whose
 // radius is less than the smallest concave radius `rho`.

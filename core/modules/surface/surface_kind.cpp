@@ -115,7 +115,7 @@ nlohmann::ordered_json writeCurve(const SurfaceCurve& c)
 
 class SurfaceKind final : public ModuleKindOf<SurfaceUnit> {
 public:
-    const char* paletteText() const override { return "Add 3-D surface"; }
+    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add 3-D surface"); }
     const char* drawing() const override { return ":/modules/surface.svg"; }
     const char* outlineField() const override { return "curve1"; }
     std::vector<std::string> stepKeys() const override { return {surfacemod::kStepKey}; }
@@ -145,6 +145,13 @@ public:
     std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData&) const override
     {
         return surfacemod::surfaceCavity(mm.as<SurfaceUnit>());
+    }
+    // The finishing step's surface (the M surface) for the 3-D view.
+    std::vector<std::vector<Point3>> machinedSurface(const Step& step) const override
+    {
+        const auto* sp = step.payload.getIf<SurfacePaths>();
+        if (!sp || step.kind != StepKind::SurfaceFinishing) return {};
+        return sp->surface;
     }
     // Finishing after roughing.
     bool stepWaitsFor(const Step& later, const Step& earlier) const override
@@ -241,18 +248,26 @@ protected:
         return planSurface(mm, ctx.tech, ctx.library, ctx.unit, ctx.shownUnit, out);
     }
 
+    // The form: the two curves and the boundary as text (surface_text.cpp),
+    // N, M or the step along the curves, scallop, allowance, and the ball
+    // end mill pinned (empty: chosen by the smallest concave radius).
     std::vector<FormField> formFields() const override
     {
         using form::member;
         using form::optionalMember;
         std::vector<FormField> fs;
+        fs.push_back(curveField("curve1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 1"), &SurfaceUnit::curve1,
+                                &SurfaceUnit::curve1Bad));
+        fs.push_back(curveField("curve2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 2"), &SurfaceUnit::curve2,
+                                &SurfaceUnit::curve2Bad));
         FormField n = form::number<SurfaceUnit>(
-            "n", "N (roughing pieces)", {"n"}, [](const SurfaceUnit& u) { return static_cast<double>(u.n); },
+            "n", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "N (roughing pieces)"), {"n"},
+            [](const SurfaceUnit& u) { return static_cast<double>(u.n); },
             [](SurfaceUnit& u, double v) { u.n = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
         n.whole = true;
         fs.push_back(n);
         FormField m = form::number<SurfaceUnit>(
-            "m", "M (finishing pieces)", {"m"},
+            "m", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M (finishing pieces)"), {"m"},
             [](const SurfaceUnit& u) { return u.m ? std::optional<double>(*u.m) : std::nullopt; },
             [](SurfaceUnit& u, double v) { u.m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
         m.set = [](ModuleInput& mi, std::optional<double> v) {
@@ -262,18 +277,84 @@ protected:
         m.kind = FormFieldKind::OptionalNumber;
         m.whole = true;
         fs.push_back(m);
-        fs.push_back(optionalMember<SurfaceUnit>("curveStep", "Step along the curves (gives M)", "M given", {"curveStep"},
-                                                 &SurfaceUnit::curveStep));
-        fs.push_back(member<SurfaceUnit>("scallop", "Scallop height", {"scallop"}, &SurfaceUnit::scallop));
-        fs.push_back(member<SurfaceUnit>("allowance", "Roughing allowance", {"allowance"}, &SurfaceUnit::allowance));
+        fs.push_back(optionalMember<SurfaceUnit>(
+            "curveStep", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step along the curves (gives M)"),
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M given"), {"curveStep"}, &SurfaceUnit::curveStep));
+        fs.push_back(member<SurfaceUnit>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
+                                         {"scallop"}, &SurfaceUnit::scallop));
+        fs.push_back(member<SurfaceUnit>("allowance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing allowance"),
+                                         {"allowance"}, &SurfaceUnit::allowance));
+        FormField b = form::detail::textField("boundary", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Boundary (paths)"),
+                                              {"boundary"}, FormFieldKind::Points);
+        b.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "none: the whole surface");
+        b.getText = [](const ModuleInput& in) -> std::string {
+            const SurfaceUnit* u = in.getIf<SurfaceUnit>();
+            if (!u) return {};
+            return u->boundaryBad.empty() ? surfacemod::formatBoundary(u->boundary) : u->boundaryBad;
+        };
+        b.setText = [](ModuleInput& in, const std::string& text) {
+            SurfaceUnit* u = in.getIf<SurfaceUnit>();
+            if (!u) return;
+            if (auto paths = surfacemod::parseBoundary(text)) {
+                u->boundary = std::move(*paths);
+                u->boundaryBad.clear();
+            } else {
+                u->boundaryBad = text;
+            }
+        };
+        fs.push_back(b);
+        FormField tool = form::number<SurfaceUnit>(
+            "tool", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Ball end mill (T)"), {"tools.surface"},
+            [](const SurfaceUnit& u) {
+                const auto pin = u.tools.find(surfacemod::kStepKey);
+                return pin == u.tools.end() ? std::nullopt : std::optional<double>(pin->second);
+            },
+            [](SurfaceUnit&, double) {});
+        tool.set = [](ModuleInput& mi, std::optional<double> v) {
+            SurfaceUnit* u = mi.getIf<SurfaceUnit>();
+            if (!u) return;
+            if (v) u->tools[surfacemod::kStepKey] = static_cast<int>(std::lround(std::clamp(*v, -1e9, 1e9)));
+            else u->tools.erase(surfacemod::kStepKey);
+        };
+        tool.kind = FormFieldKind::OptionalNumber;
+        tool.whole = true;
+        tool.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "under the smallest concave radius");
+        fs.push_back(tool);
         form::describe(fs, {
-            {"n", "", "Pieces each curve is divided into for the roughing surface; fewer than M"},
-            {"m", "", "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves"},
-            {"curveStep", "", "The step along the curves that gives M; empty when M is given"},
-            {"scallop", "", "Height of the ridges the ball leaves between finishing paths"},
-            {"allowance", "", "Material the Z-level roughing leaves on the surface, along its normal"},
+            {"curve1", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines")},
+            {"curve2", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The second curve, as the first; the surface is ruled between the two")},
+            {"n", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the roughing surface; fewer than M")},
+            {"m", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves")},
+            {"curveStep", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The step along the curves that gives M; empty when M is given")},
+            {"scallop", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Height of the ridges the ball leaves between finishing paths")},
+            {"allowance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Material the Z-level roughing leaves on the surface, along its normal")},
+            {"boundary", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none")},
+            {"tool", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius")},
         });
         return fs;
+    }
+
+private:
+    static FormField curveField(const char* key, const char* label, SurfaceCurve SurfaceUnit::*curve,
+                                std::string SurfaceUnit::*bad)
+    {
+        FormField f = form::detail::textField(key, label, {key}, FormFieldKind::Points);
+        f.getText = [curve, bad](const ModuleInput& in) -> std::string {
+            const SurfaceUnit* u = in.getIf<SurfaceUnit>();
+            if (!u) return {};
+            return (u->*bad).empty() ? surfacemod::formatCurve(u->*curve) : u->*bad;
+        };
+        f.setText = [curve, bad](ModuleInput& in, const std::string& text) {
+            SurfaceUnit* u = in.getIf<SurfaceUnit>();
+            if (!u) return;
+            if (auto c = surfacemod::parseCurve(text)) {
+                u->*curve = std::move(*c);
+                (u->*bad).clear();
+            } else {
+                u->*bad = text;
+            }
+        };
+        return f;
     }
 };
 

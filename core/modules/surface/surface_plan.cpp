@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace taiwa {
 
@@ -91,6 +92,12 @@ Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
         b.problem = std::move(problem);
         return b;
     };
+    using Unread = std::tuple<const char*, const std::string*, const char*>;
+    for (const auto& [field, bad, name] : {Unread{"curve1", &u.curve1Bad, "curve 1"}, Unread{"curve2", &u.curve2Bad, "curve 2"}})
+        if (!bad->empty())
+            return refuse(field, fmt::format("{} \"{}\" does not read: give points \"x, y, z; x, y, z\" or two "
+                                             "projections \"XY: a, b; a, b / ZX: a, b; a, b\"",
+                                             name, *bad));
     auto c1 = spaceCurve(u.curve1, "curve 1");
     if (!c1) return refuse("curve1", c1.error());
     auto c2 = spaceCurve(u.curve2, "curve 2");
@@ -203,7 +210,11 @@ check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Co
             r.unit("curve1", fmt::format("the surface goes down to Z {}, through the stock's bottom (height {})",
                                          msg::quote(r.len(low)), msg::quote(r.len(st->height))));
     }
-    if (!u.boundary.empty()) {
+    if (!u.boundaryBad.empty())
+        r.unit("boundary", fmt::format("the boundary \"{}\" does not read: give paths of points \"x, y, z; x, y, z\" "
+                                       "separated by \"/\"",
+                                       u.boundaryBad));
+    else if (!u.boundary.empty()) {
         surface::TriangleMesh mesh = surface::meshFromPaths(u.boundary);
         if (mesh.triangles.empty())
             r.unit("boundary", "the boundary makes no surface: give two or more paths with the same number of points");
