@@ -125,17 +125,25 @@ bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
             // A line replacing the short one ends on the other only where
             // that is a line or a concave arc (a convex one bulges over it).
             const ZR fb = footOn(B, *c), fa = footOn(A, *c);
-            if (!onA && replaceable(A) && replaceable(B) && contains(B, fb, 1e-7)) {
+            // The short one is replaced by a line to where the nose touches
+            // the other; that one may be a convex arc (a relief groove's wall
+            // rising out of a convex arc it undercuts) when the piece of it
+            // the line leaves out lies under the line, not over it.
+            const auto overB = [&](ZR q) { return !replaceable(B) && overChord({piece(B, B.a, q)}, lineSegment(A.a, q)); };
+            const auto overA = [&](ZR q) { return !replaceable(A) && overChord({piece(A, q, A.b)}, lineSegment(q, B.b)); };
+            const double onward = contains(B, fb, 1e-7) ? std::min(length(B), parameterOf(B, fb) + 0.05) : 0.0;
+            const double before = contains(A, fa, 1e-7) ? std::max(0.0, parameterOf(A, fa) - 0.05) : 0.0;
+            if (!onA && replaceable(A) && contains(B, fb, 1e-7) && !overB(pointAt(B, onward))) {
                 // A too short: from its start to where the nose touches B, a little on.
-                const double at = std::min(length(B), parameterOf(B, fb) + 0.05);
+                const double at = onward;
                 const ZR q = pointAt(B, at);
                 contour[k] = lineSegment(A.a, q);
                 if (at >= length(B) - 1e-9) contour.erase(contour.begin() + static_cast<long>(k) + 1);
                 else contour[k + 1] = piece(B, q, B.b);
                 changed = true;
-            } else if (!onB && replaceable(B) && replaceable(A) && contains(A, fa, 1e-7)) {
+            } else if (!onB && replaceable(B) && contains(A, fa, 1e-7) && !overA(pointAt(A, before))) {
                 // B too short: from where the nose touches A, a little before, straight to B's end.
-                const double at = std::max(0.0, parameterOf(A, fa) - 0.05);
+                const double at = before;
                 const ZR q = pointAt(A, at);
                 contour[k + 1] = lineSegment(q, B.b);
                 if (at <= 1e-9) contour.erase(contour.begin() + static_cast<long>(k));

@@ -238,6 +238,9 @@ private:
     // ---- parting off -----------------------------------------------------
 
     void planParting();
+    // The rearmost Z of the part (its deformed profile) and, when it lies
+    // behind the profile's end, the profile edge whose allowance reaches there.
+    std::pair<double, std::optional<std::string>> rearmost() const;
 
     const TurnPlanRequest& q_;
     const DeformedProfile& d_;
