@@ -114,6 +114,13 @@ private slots:
         // undercuts, shorter than the nose needs to sit in the corner: the
         // contour followed it and the nose cut the arc's allowance behind.
         QTest::newRow("relief groove wall out of a convex arc, followed: gouge 0.086") << quint64(117);
+        // A picked front rounding whose allowance is larger than the face's
+        // and the cylinder's: the cylinder's allowance side steps up 0.06 mm
+        // behind the moved rounding (a convex arc), too short for the nose
+        // to sit in the corner; the contour now leaves the rounding where a
+        // line to the step's top lies over the rest of it.
+        QTest::newRow("step up behind a picked front rounding: rs274 straight feed in concave corner, gouge 0.060") << quint64(1786);
+        QTest::newRow("step up behind a picked front rounding: rs274 straight feed in concave corner, gouge 0.285") << quint64(415);
         // TAIWA_GENERATED_SEEDS="6 12": those seeds too, with what they find.
         for (const QString& s : qEnvironmentVariable("TAIWA_GENERATED_SEEDS").split(' ', Qt::SkipEmptyParts))
             QTest::newRow(qPrintable("seed " + s)) << s.toULongLong();

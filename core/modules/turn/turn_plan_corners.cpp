@@ -31,6 +31,29 @@ bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chor
     return false;
 }
 
+std::optional<ZR> Planner::ontoConvex(const Segment& A, const Segment& B, double rn) const
+{
+    if (!A.arc || concaveArc(A)) return std::nullopt;
+    // From A's end back, 10 µm at a time, the first point q where the line
+    // q → B.b turns into the air from A (the rest of A lies under it) by an
+    // angle whose corner the nose holds on both (with 10 µm to spare).
+    const double total = length(A);
+    for (double back = 0.01; back < total - 1e-9; back += 0.01) {
+        const ZR q = pointAt(A, total - back);
+        const Segment line = lineSegment(q, B.b);
+        const double l = length(line);
+        if (l < 1e-6) continue;
+        const ZR ta = tangentAt(A, q), tl = unit(B.b - q);
+        if (s_ * cross(ta, tl) >= 0.0) continue;  // not a concave turn (into the air)
+        const double phi = std::acos(std::clamp(dot(ta, tl), -1.0, 1.0));
+        const double hold = rn * std::tan(phi / 2.0) + 0.01;
+        if (hold > l || hold > total - back) continue;
+        if (overChord({piece(A, q, A.b)}, line)) continue;
+        return q;
+    }
+    return std::nullopt;
+}
+
 bool Planner::concaveArc(const Segment& s) const { return s.arc && (s.ccw ? 1.0 : -1.0) * s_ < 0; }
 
 void Planner::bridgeTightArcs(std::vector<Segment>& contour, double rn, const Tool& tool)
@@ -153,6 +176,14 @@ bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
                 // Both too short: one line across both (in the air: lines and concave arcs).
                 contour[k] = lineSegment(A.a, B.b);
                 contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                changed = true;
+            } else if (const auto q = ontoConvex(A, B, rn); q && !onB && replaceable(B)) {
+                // B too short after a convex arc whose end the nose cannot
+                // hold B against (an allowance's side stepping up behind a
+                // picked rounding): from the arc, where the line stays over
+                // it, straight to B's end.
+                contour[k + 1] = lineSegment(*q, B.b);
+                contour[k] = piece(A, A.a, *q);
                 changed = true;
             }
         }
