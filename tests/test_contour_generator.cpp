@@ -125,7 +125,7 @@ private slots:
         QVERIFY(!o.planned);
         QCOMPARE(QString::fromStdString(o.refusedOn), QString("islands"));
         for (const char* words : {"the gap between the island K2 and K1 is 2.96 mm wide at (23.984 mm, 15.39 mm)",
-                                  "the longest, T21 (flat end mill Ø2 mm), has 6 mm", "T22 (flat end mill Ø3 mm) reaches",
+                                  "(the longest-fluted, T21 (flat end mill Ø2 mm))", "T22 (flat end mill Ø3 mm) reaches",
                                   "needs 3 mm there, 0.04 mm more", "depth 8 mm"})
             QVERIFY2(o.refusal.find(words) != std::string::npos, o.refusal.c_str());
     }

@@ -187,30 +187,25 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
         if (n.kind == Kind::InsideArc) {
             text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                     "{} has an inside arc of radius {} at ({}, {}): the end mills that fit it have flutes "
-                                                    "shorter than the depth {} of {} (the longest, {}, has {}); {} reaches that "
-                                                    "depth but needs a radius of {} there, {} more (make the arc larger, or the "
-                                                    "pocket at most {} deep)"),
-                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), s.label(), passing,
-                               q(why->passing->fluteLength), reaching, q(neededRadius), q(neededRadius - n.width),
-                               q(why->passing->fluteLength));
+                                                    "shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but "
+                                                    "needs a radius of {} there, {} more (make the arc larger, or the pocket shallower)"),
+                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching, q(neededRadius),
+                               q(neededRadius - n.width));
         } else if (n.kind == Kind::Neck) {
             text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                                                    "{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there have "
-                                                    "flutes shorter than the depth {} of {} (the longest, {}, has {}); {} reaches "
-                                                    "that depth but needs {} there, {} more (widen it there, or make the pocket at "
-                                                    "most {} deep)"),
-                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(n.b.x), q(n.b.y), q(why->depth), s.label(),
-                               passing, q(why->passing->fluteLength), reaching, q(2.0 * neededRadius),
-                               q(2.0 * neededRadius - n.width), q(why->passing->fluteLength));
+                                                    "{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there "
+                                                    "have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that "
+                                                    "depth but needs it {} wider there (widen it, or make the pocket shallower)"),
+                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(n.b.x), q(n.b.y), q(why->depth), passing, reaching,
+                               q(2.0 * neededRadius - n.width));
         } else {
             text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                     "the gap between the island {} and {} is {} wide at ({}, {}): the end mills that "
-                                                    "pass there have flutes shorter than the depth {} of {} (the longest, {}, has "
-                                                    "{}); {} reaches that depth but needs {} there, {} more (widen the gap, or make "
-                                                    "the pocket at most {} deep)"),
-                               name(n.first), name(n.second), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), s.label(), passing,
-                               q(why->passing->fluteLength), reaching, q(2.0 * neededRadius), q(2.0 * neededRadius - n.width),
-                               q(why->passing->fluteLength));
+                                                    "pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} "
+                                                    "reaches that depth but needs {} there, {} more (widen the gap, or make the "
+                                                    "pocket shallower)"),
+                               name(n.first), name(n.second), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching,
+                               q(2.0 * neededRadius), q(2.0 * neededRadius - n.width));
         }
         it->field = n.first == 0 && n.second == 0 ? "outline" : "islands";
         it->message = std::move(text);
