@@ -7,7 +7,8 @@
 // planned, verified clean, refused with a reason by field, tapes accepted,
 // the least margin of the tool centre to R, failing seeds) and reports them
 // as counters. TAIWA_CONTOUR_SEEDS sets the count (default 10,000);
-// TAIWA_CONTOUR_NO_TAPE=1 leaves rs274 out (about ten times as fast).
+// TAIWA_CONTOUR_NO_TAPE=1 leaves rs274 out (about ten times as fast);
+// TAIWA_CONTOUR_REFUSALS=1 lists every refusal on stderr.
 #include "support/contour_generator.h"
 
 #include <benchmark/benchmark.h>
@@ -40,7 +41,13 @@ void BM_GeneratedContours(benchmark::State& state)
             for (std::size_t k = 0; k < cases.size(); ++k)
                 if (outcomes[k].planned) batch.push_back({&cases[k], &outcomes[k]});
             if (tapes && !batch.empty()) test::runTapes(batch);  // twenty tapes to one rs274
-            for (std::size_t k = 0; k < cases.size(); ++k) tally.add(cases[k], outcomes[k]);
+            for (std::size_t k = 0; k < cases.size(); ++k) {
+                tally.add(cases[k], outcomes[k]);
+                // TAIWA_CONTOUR_REFUSALS=1: every refusal on stderr, by seed.
+                if (std::getenv("TAIWA_CONTOUR_REFUSALS") && !outcomes[k].planned)
+                    std::fprintf(stderr, "seed %llu %s %s: %s\n", static_cast<unsigned long long>(cases[k].seed),
+                                 cases[k].module.c_str(), outcomes[k].refusedOn.c_str(), outcomes[k].refusal.c_str());
+            }
             cases.clear();
             outcomes.clear();
         };

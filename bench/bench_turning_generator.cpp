@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 using namespace taiwa;
 
@@ -71,7 +72,8 @@ BENCHMARK(BM_GeneratedPlans)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond
 // planned, verified and their linuxcnc tapes run through rs274; run it with
 // TAIWA_RS274_LOCK=/tmp/rs274.lock so that each rs274 run takes the lock the
 // tests share (not the whole run). TAIWA_BENCH_PARTS sets another count,
-// TAIWA_BENCH_NO_RS274=1 plans and verifies only.
+// TAIWA_BENCH_NO_RS274=1 plans and verifies only. Each plan refused by the
+// verifier or rs274 is listed on stderr with its findings.
 void BM_GeneratedLatheParts(benchmark::State& state)
 {
     const int env = std::getenv("TAIWA_BENCH_PARTS") ? std::atoi(std::getenv("TAIWA_BENCH_PARTS")) : 0;
@@ -84,7 +86,16 @@ void BM_GeneratedLatheParts(benchmark::State& state)
         const auto start = std::chrono::steady_clock::now();
         for (std::uint64_t seed = 1; seed <= n; ++seed) {
             const test::GeneratedProfile g = test::generateLathePart(seed);
-            tally.add(seed, test::planAndVerify(g, rs274), g.shapes);
+            const test::PlanCheck c = test::planAndVerify(g, rs274);
+            tally.add(seed, c, g.shapes);
+            // Each plan refused by the verifier or rs274 on stderr, with its
+            // findings (to sort the failures into classes).
+            if (c.planned && (c.fatal || !c.rs274Refusal.empty())) {
+                std::string what = c.rs274Refusal.empty() ? "" : " rs274: " + c.rs274Refusal;
+                for (const auto& [kind, first] : c.first)
+                    if (kind != "rest-material") what += " | " + first;
+                std::fprintf(stderr, "seed %llu:%s\n", static_cast<unsigned long long>(seed), what.c_str());
+            }
         }
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

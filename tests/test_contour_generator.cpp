@@ -11,6 +11,7 @@
 #include "support/contour_generator.h"
 
 #include "job/job_file.h"
+#include "modules/cp/cp.h"
 
 #include <QDir>
 #include <QFile>
@@ -104,6 +105,29 @@ private slots:
         QVERIFY(tally.smallestMargin >= -2.5e-3);  // the tape's 3 decimals: 1.5 µm more
         QVERIFY(tally.planned >= n / 2);
         QVERIFY(tally.necks >= 10 && tally.touching >= 3 && tally.notches >= 20);
+    }
+
+    // A CP pocket whose narrowest place lets only the Ø2 end mill pass made
+    // deeper than its flutes: generated seed 189 (a gap of 2.96 mm between
+    // the island K2 and the outline K1) at T 8, where Ø2's flutes are 6 mm
+    // and Ø3's 9 mm. The wall finishing was refused on `tools` for the
+    // flutes ("T21 … is the nearest, but its flutes (6 mm) are shorter than
+    // the depth 8 mm"); now on `islands`, naming the gap, its width and
+    // place, the end mill whose flutes reach (Ø3) and how much wider the gap
+    // must be for it (3 mm, 0.04 mm more).
+    void aNarrowPlaceForcingShortFlutesIsNamed()
+    {
+        ContourCase c = generateContourCase(189);
+        QCOMPARE(c.module, std::string("CP"));
+        c.job.units.front().module.as<ContourPocket>().depth = 8.0;
+        const ContourOutcome o = runContourCase(c, false);
+        QVERIFY2(o.failure.empty(), o.failure.c_str());
+        QVERIFY(!o.planned);
+        QCOMPARE(QString::fromStdString(o.refusedOn), QString("islands"));
+        for (const char* words : {"the gap between the island K2 and K1 is 2.96 mm wide at (23.984 mm, 15.39 mm)",
+                                  "(the longest-fluted, T21 (flat end mill Ø2 mm))", "T22 (flat end mill Ø3 mm) reaches",
+                                  "needs 3 mm there, 0.04 mm more", "depth 8 mm"})
+            QVERIFY2(o.refusal.find(words) != std::string::npos, o.refusal.c_str());
     }
 
     // The seeds the generator found failing, each named with what it was.

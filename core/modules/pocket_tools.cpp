@@ -163,6 +163,26 @@ const Tool* roughingTool(const std::vector<Tool>& library, const Fit& f, const s
 
 }  // namespace
 
+std::optional<NarrowForcesShortFlutes> narrowForcesShortFlutes(const Step& s, const std::vector<Tool>& library,
+                                                               const std::string& material)
+{
+    if (!s.region || s.kind == StepKind::Roughing || s.kind == StepKind::PilotHole) return std::nullopt;
+    const Fit f = fitFor(s);
+    if (f.type != ToolType::FlatEndMill || f.cornerRadius <= 0 || tools::largestFitting(library, f, material)) return std::nullopt;
+    Fit shallow = f, wide = f;
+    shallow.depth = 0.0;
+    wide.cornerRadius = 0.0;
+    wide.maxDiameter = 1e9;
+    NarrowForcesShortFlutes n;
+    n.cornerRadius = f.cornerRadius;
+    n.depth = f.depth;
+    for (const Tool& t : library)  // of those that pass, the longest flutes
+        if (tools::fits(t, shallow, material) && (!n.passing || t.fluteLength > n.passing->fluteLength)) n.passing = &t;
+    n.reaching = tools::smallestFitting(library, wide, material);
+    if (!n.passing || !n.reaching) return std::nullopt;
+    return n;
+}
+
 ToolPick chooseRoughingTool(const Fit& f, const std::vector<Tool>& library, const std::string& material,
                             const std::string& what)
 {

@@ -33,6 +33,21 @@ ToolPick chooseRoughingTool(const tools::Fit& f, const std::vector<Tool>& librar
 // wall's angle, the pilot hole a drill not smaller than the roughing tool.
 // Pins name tool ids by step kind key ("pilot", "roughing", ...). Returns the
 // problems (empty when every step got a tool).
+// A finishing step of a contour (its region's narrow place limits the
+// tool) left without a tool because the end mills that pass the narrow
+// place have flutes shorter than the depth, while a larger one has flutes
+// that reach it: the longest-fluted end mill that passes, the smallest
+// whose flutes reach, and the step's corner radius (the reach it fits).
+// Nothing when a tool fits or something else stops them (CP names the
+// narrow place instead of the flutes, modules/cp/cp_check.cpp).
+struct NarrowForcesShortFlutes {
+    const Tool* passing = nullptr;
+    const Tool* reaching = nullptr;
+    double cornerRadius = 0.0, depth = 0.0;
+};
+std::optional<NarrowForcesShortFlutes> narrowForcesShortFlutes(const Step& s, const std::vector<Tool>& library,
+                                                               const std::string& material);
+
 std::vector<std::string> chooseTools(std::vector<Step>& unitSteps, const ToolPins& pins,
                                      const std::vector<Tool>& library, const std::string& material);
 

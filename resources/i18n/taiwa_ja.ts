@@ -3456,6 +3456,18 @@ Theirs: %6</source>
             <translation>輪郭の最も狭い箇所</translation>
         </message>
         <message>
+            <source>{} has an inside arc of radius {} at ({}, {}): the end mills that fit it have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs a radius of {} there, {} more (make the arc larger, or the pocket shallower)</source>
+            <translation>{0} の ({2}, {3}) に半径 {1} の内側円弧があります。そこに入るエンドミルは刃長が深さ {4} より短く (刃長の最も長いもので {5})、その深さに届く {6} にはそこで半径 {7} が必要で、{8} 足りません (円弧を大きくするか、ポケットを浅くしてください)</translation>
+        </message>
+        <message>
+            <source>{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs it {} wider there (widen it, or make the pocket shallower)</source>
+            <translation>{0} は ({2}, {3}) と ({4}, {5}) の間で幅 {1} まで狭くなっています。そこを通るエンドミルは刃長が深さ {6} より短く (刃長の最も長いもので {7})、その深さに届く {8} にはそこをあと {9} 広くする必要があります (そこを広げるか、ポケットを浅くしてください)</translation>
+        </message>
+        <message>
+            <source>the gap between the island {} and {} is {} wide at ({}, {}): the end mills that pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs {} there, {} more (widen the gap, or make the pocket shallower)</source>
+            <translation>島 {0} と {1} の隙間は ({3}, {4}) で幅 {2} です。そこを通るエンドミルは刃長が深さ {5} より短く (刃長の最も長いもので {6})、その深さに届く {7} にはそこで {8} が必要で、{9} 足りません (隙間を広げるか、ポケットを浅くしてください)</translation>
+        </message>
+        <message>
             <source>U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) or 9 (roughing only, the finishing allowance left)</source>
             <translation>U {} は正面フライス削りの工具使用ではありません。1 (荒加工層と仕上げパス) か 9 (荒加工のみ、仕上げ代を残す) にしてください</translation>
         </message>

@@ -3456,6 +3456,18 @@ Theirs: %6</source>
             <translation>轮廓最窄处</translation>
         </message>
         <message>
+            <source>{} has an inside arc of radius {} at ({}, {}): the end mills that fit it have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs a radius of {} there, {} more (make the arc larger, or the pocket shallower)</source>
+            <translation>{0} 在 ({2}, {3}) 处有半径为 {1} 的内侧圆弧：能进入该处的立铣刀刃长都短于深度 {4}（刃长最长的是 {5}）；能达到该深度的 {6} 在该处需要 {7} 的半径，还差 {8}（请加大圆弧，或把型腔改浅）</translation>
+        </message>
+        <message>
+            <source>{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs it {} wider there (widen it, or make the pocket shallower)</source>
+            <translation>{0} 在 ({2}, {3}) 与 ({4}, {5}) 之间收窄到 {1}：能通过该处的立铣刀刃长都短于深度 {6}（刃长最长的是 {7}）；能达到该深度的 {8} 需要该处再宽 {9}（请加宽该处，或把型腔改浅）</translation>
+        </message>
+        <message>
+            <source>the gap between the island {} and {} is {} wide at ({}, {}): the end mills that pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but needs {} there, {} more (widen the gap, or make the pocket shallower)</source>
+            <translation>岛 {0} 与 {1} 之间的间隙在 ({3}, {4}) 处宽 {2}：能通过该处的立铣刀刃长都短于深度 {5}（刃长最长的是 {6}）；能达到该深度的 {7} 在该处需要 {8}，还差 {9}（请加宽间隙，或把型腔改浅）</translation>
+        </message>
+        <message>
             <source>U {} is not a tool use of face milling; give 1 (roughing layers and a finishing pass) or 9 (roughing only, the finishing allowance left)</source>
             <translation>U {} 不是面铣的刀具使用方式；请给出 1（粗加工层和精加工刀路）或 9（仅粗加工，留精加工余量）</translation>
         </message>

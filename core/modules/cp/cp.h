@@ -62,4 +62,14 @@ check::UnitReport checkContourPocket(const ContourPocket& mm, int unitNo, const 
 // around the outline and every island.
 std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const TechnologyData& tech, int unit);
 
+// After the tool choice (cp_kind.cpp): a finishing step left without a tool
+// because the end mills that pass the contour's narrowest place have flutes
+// shorter than the depth (modules/pocket_tools.h, narrowForcesShortFlutes)
+// is refused on the contour's field ("outline" or "islands") naming that
+// place, the end mill whose flutes reach the depth and how much more room it
+// needs, instead of the shortest flutes on "tools".
+void nameNarrowPlaceOfShortFlutes(const ContourPocket& pocket, const std::vector<Step>& steps,
+                                  const std::vector<Tool>& library, const std::string& material, LengthUnit shown,
+                                  int unitNo, Diagnostics& out);
+
 }  // namespace taiwa

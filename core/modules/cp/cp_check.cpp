@@ -10,6 +10,7 @@
 
 #include "check/messages.h"
 #include "modules/named_region.h"
+#include "modules/pocket_tools.h"
 #include "model/codes.h"
 #include "paths/narrowest.h"
 
@@ -158,6 +159,58 @@ void checkRooms(const ContourPocket& p, double reach, Reporter& r)
 }
 
 }  // namespace
+
+void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step>& steps, const std::vector<Tool>& library,
+                                  const std::string& material, LengthUnit shown, int unitNo, Diagnostics& out)
+{
+    if (!p.region) return;
+    std::optional<paths::NarrowestPlace> place;
+    for (const Step& s : steps) {
+        if (s.tool) continue;
+        const auto why = narrowForcesShortFlutes(s, library, material);
+        if (!why) continue;
+        if (!place) place = paths::narrowestPlace(*p.region);
+        if (!place) return;
+        const auto it = std::find_if(out.begin(), out.end(), [&](const Diagnostic& d) {
+            return d.unit == unitNo && d.field == "tools" && d.message.starts_with(s.label() + ": ");
+        });
+        if (it == out.end()) continue;
+        using Kind = paths::NarrowestPlace::Kind;
+        const paths::NarrowestPlace& n = *place;
+        const auto name = [&](int k) { return k == 0 ? p.outline : p.islands.at(static_cast<std::size_t>(k - 1)); };
+        const auto q = [&](double mm) { return msg::quote({mm, shown}); };
+        // What the step leaves on the walls: the place's reach less the corner the tool must fit.
+        const double allowance = std::max(0.0, p.reach - why->cornerRadius);
+        const double neededRadius = why->reaching->radius() + allowance;
+        const std::string passing = msg::toolName(*why->passing), reaching = msg::toolName(*why->reaching);
+        std::string text;
+        if (n.kind == Kind::InsideArc) {
+            text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                    "{} has an inside arc of radius {} at ({}, {}): the end mills that fit it have flutes "
+                                                    "shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but "
+                                                    "needs a radius of {} there, {} more (make the arc larger, or the pocket shallower)"),
+                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching, q(neededRadius),
+                               q(neededRadius - n.width));
+        } else if (n.kind == Kind::Neck) {
+            text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                    "{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there "
+                                                    "have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that "
+                                                    "depth but needs it {} wider there (widen it, or make the pocket shallower)"),
+                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(n.b.x), q(n.b.y), q(why->depth), passing, reaching,
+                               q(2.0 * neededRadius - n.width));
+        } else {
+            text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                    "the gap between the island {} and {} is {} wide at ({}, {}): the end mills that "
+                                                    "pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} "
+                                                    "reaches that depth but needs {} there, {} more (widen the gap, or make the "
+                                                    "pocket shallower)"),
+                               name(n.first), name(n.second), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching,
+                               q(2.0 * neededRadius), q(2.0 * neededRadius - n.width));
+        }
+        it->field = n.first == 0 && n.second == 0 ? "outline" : "islands";
+        it->message = std::move(text);
+    }
+}
 
 check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const check::Context& ctx)
 {

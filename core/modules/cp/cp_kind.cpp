@@ -177,6 +177,7 @@ protected:
         std::vector<Step> steps = decomposeContourPocket(mm, ctx.tech, ctx.unit);
         setStepOver(steps, mm.stepOver);
         choosePocketTools(steps, mm.tools, ctx, ContourPocket::kName, out);
+        nameNarrowPlaceOfShortFlutes(mm, steps, ctx.library, ctx.material, ctx.shownUnit, ctx.unit + 1, out);
         return steps;
     }
 

@@ -31,6 +31,29 @@ bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chor
     return false;
 }
 
+std::optional<ZR> Planner::ontoConvex(const Segment& A, const Segment& B, double rn) const
+{
+    if (!A.arc || concaveArc(A)) return std::nullopt;
+    // From A's end back, 10 µm at a time, the first point q where the line
+    // q → B.b turns into the air from A (the rest of A lies under it) by an
+    // angle whose corner the nose holds on both (with 10 µm to spare).
+    const double total = length(A);
+    for (double back = 0.01; back < total - 1e-9; back += 0.01) {
+        const ZR q = pointAt(A, total - back);
+        const Segment line = lineSegment(q, B.b);
+        const double l = length(line);
+        if (l < 1e-6) continue;
+        const ZR ta = tangentAt(A, q), tl = unit(B.b - q);
+        if (s_ * cross(ta, tl) >= 0.0) continue;  // not a concave turn (into the air)
+        const double phi = std::acos(std::clamp(dot(ta, tl), -1.0, 1.0));
+        const double hold = rn * std::tan(phi / 2.0) + 0.01;
+        if (hold > l || hold > total - back) continue;
+        if (overChord({piece(A, q, A.b)}, line)) continue;
+        return q;
+    }
+    return std::nullopt;
+}
+
 bool Planner::concaveArc(const Segment& s) const { return s.arc && (s.ccw ? 1.0 : -1.0) * s_ < 0; }
 
 void Planner::bridgeTightArcs(std::vector<Segment>& contour, double rn, const Tool& tool)
@@ -125,17 +148,25 @@ bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
             // A line replacing the short one ends on the other only where
             // that is a line or a concave arc (a convex one bulges over it).
             const ZR fb = footOn(B, *c), fa = footOn(A, *c);
-            if (!onA && replaceable(A) && replaceable(B) && contains(B, fb, 1e-7)) {
+            // The short one is replaced by a line to where the nose touches
+            // the other; that one may be a convex arc (a relief groove's wall
+            // rising out of a convex arc it undercuts) when the piece of it
+            // the line leaves out lies under the line, not over it.
+            const auto overB = [&](ZR q) { return !replaceable(B) && overChord({piece(B, B.a, q)}, lineSegment(A.a, q)); };
+            const auto overA = [&](ZR q) { return !replaceable(A) && overChord({piece(A, q, A.b)}, lineSegment(q, B.b)); };
+            const double onward = contains(B, fb, 1e-7) ? std::min(length(B), parameterOf(B, fb) + 0.05) : 0.0;
+            const double before = contains(A, fa, 1e-7) ? std::max(0.0, parameterOf(A, fa) - 0.05) : 0.0;
+            if (!onA && replaceable(A) && contains(B, fb, 1e-7) && !overB(pointAt(B, onward))) {
                 // A too short: from its start to where the nose touches B, a little on.
-                const double at = std::min(length(B), parameterOf(B, fb) + 0.05);
+                const double at = onward;
                 const ZR q = pointAt(B, at);
                 contour[k] = lineSegment(A.a, q);
                 if (at >= length(B) - 1e-9) contour.erase(contour.begin() + static_cast<long>(k) + 1);
                 else contour[k + 1] = piece(B, q, B.b);
                 changed = true;
-            } else if (!onB && replaceable(B) && replaceable(A) && contains(A, fa, 1e-7)) {
+            } else if (!onB && replaceable(B) && contains(A, fa, 1e-7) && !overA(pointAt(A, before))) {
                 // B too short: from where the nose touches A, a little before, straight to B's end.
-                const double at = std::max(0.0, parameterOf(A, fa) - 0.05);
+                const double at = before;
                 const ZR q = pointAt(A, at);
                 contour[k + 1] = lineSegment(q, B.b);
                 if (at <= 1e-9) contour.erase(contour.begin() + static_cast<long>(k));
@@ -145,6 +176,14 @@ bool Planner::reachableArcCorners(std::vector<Segment>& contour, double rn)
                 // Both too short: one line across both (in the air: lines and concave arcs).
                 contour[k] = lineSegment(A.a, B.b);
                 contour.erase(contour.begin() + static_cast<long>(k) + 1);
+                changed = true;
+            } else if (const auto q = ontoConvex(A, B, rn); q && !onB && replaceable(B)) {
+                // B too short after a convex arc whose end the nose cannot
+                // hold B against (an allowance's side stepping up behind a
+                // picked rounding): from the arc, where the line stays over
+                // it, straight to B's end.
+                contour[k + 1] = lineSegment(*q, B.b);
+                contour[k] = piece(A, A.a, *q);
                 changed = true;
             }
         }

@@ -133,6 +133,23 @@ ZR Planner::surfaceNormal(ZR corner, std::size_t i, std::size_t j, double w) con
     return n;
 }
 
+std::pair<double, std::optional<std::string>> Planner::rearmost() const
+{
+    double z = zEnd_;
+    std::optional<std::string> edge;
+    for (const DeformedEdge& e : d_.edges) {
+        const Segment& g = e.geometry;
+        double lowest = std::min(g.a.z, g.b.z);
+        // An arc whose sweep passes its circle's rearmost point.
+        if (const ZR back{g.centre.z - g.radius, g.centre.r}; g.arc && contains(g, back)) lowest = std::min(lowest, back.z);
+        if (lowest < z - 1e-6) {
+            z = lowest;
+            edge = e.from.empty() ? e.id : e.from;
+        }
+    }
+    return {z, edge};
+}
+
 void Planner::planParting()
 {
     if (!q_.parting || skipped(kPart)) return;
@@ -146,24 +163,34 @@ void Planner::planParting()
         return;
     }
     const double width = blade->turning.width;
-    if (zEnd_ - width < zBarEnd_ - kTol) {
-        note(fmt::format("no parting off: the part ends {} from the bar's end, less than the blade's width", len(zEnd_ - zBarEnd_)));
+    // The blade's face must pass behind all of the part: the grinding
+    // allowance of a last edge falling to the end (a taper, an arc) reaches
+    // past the profile's end along the edge's normal, over the back face,
+    // where a plunge at the end would cut it. Parted off behind it, the
+    // back face is left long by as much (a note says so).
+    const auto [zCut, reaching] = rearmost();
+    if (zCut - width < zBarEnd_ - kTol) {
+        note(fmt::format("no parting off: the part ends {} from the bar's end, less than the blade's width", len(zCut - zBarEnd_)));
         return;
     }
+    if (reaching)
+        note(fmt::format("parted off at Z{}, {} behind the part's end: the grinding allowance of {} reaches past the end; the "
+                         "back face is left {} long (face it to length)",
+                         len(zCut), len(zEnd_ - zCut), *reaching, len(zEnd_ - zCut)));
     const auto cutting = cuttingOf(*blade, kPart, true);
     if (!cutting) return;
     TurnStep ts;
     ts.side = ProfileSide::Outer;
     ts.orientation = 1;
     ts.cutting = *cutting;
-    ts.region = fmt::format("at Z{}", len(zEnd_));
+    ts.region = fmt::format("at Z{}", len(zCut));
     PathWriter w{{}, {}};
     const double rTop = R_ + t_.clearance;
     const double rBottom = q_.boreBefore > 0 ? q_.boreBefore / 2.0 - 0.5 : -0.5;
-    w.begin({zEnd_, rTop});
-    w.rapid({zEnd_, rTop});
-    w.feed({zEnd_, rBottom}, FeedKind::Plunge);
-    w.rapid({zEnd_, rTop});
+    w.begin({zCut, rTop});
+    w.rapid({zCut, rTop});
+    w.feed({zCut, rBottom}, FeedKind::Plunge);
+    w.rapid({zCut, rTop});
     ts.path = std::move(w.path);
     addStep(StepKind::Parting, MachiningType::Parting, *blade,
             blade == pinned(kPart) ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned")

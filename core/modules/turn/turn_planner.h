@@ -214,6 +214,11 @@ private:
     // arcs, at an allowance's end), that one is replaced by a line to where
     // the nose touches the other, a little past it. Whether it changed any.
     bool reachableArcCorners(std::vector<Segment>& contour, double rn);
+    // For a short B after a convex arc A (a concave corner between them):
+    // the point of A nearest its end from which a line to B's end lies over
+    // the rest of A and makes a corner with A the nose holds; none when A is
+    // not a convex arc or no such point exists.
+    std::optional<ZR> ontoConvex(const Segment& A, const Segment& B, double rn) const;
 
     // ---- grooving --------------------------------------------------------
 
@@ -238,6 +243,9 @@ private:
     // ---- parting off -----------------------------------------------------
 
     void planParting();
+    // The rearmost Z of the part (its deformed profile) and, when it lies
+    // behind the profile's end, the profile edge whose allowance reaches there.
+    std::pair<double, std::optional<std::string>> rearmost() const;
 
     const TurnPlanRequest& q_;
     const DeformedProfile& d_;
