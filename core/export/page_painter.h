@@ -305,17 +305,20 @@ private:
         option.setWrapMode(wrap ? QTextOption::WrapAtWordBoundaryOrAnywhere : QTextOption::NoWrap);
         layout.setTextOption(option);
         layout.beginLayout();
+        double y = 0;
         for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
-            if (wrap) line.setLineWidth(width);
-            line.setPosition(QPointF(0, f.height));
-            if (f.height == 0) {
-                f.advance = line.naturalTextWidth();
-                f.ascent = line.ascent();
-                f.lineHeight = line.height();
-            }
-            f.height += line.height();
+            if (wrap) line.setLineWidth(width);  // laid out now; one line unwrapped is laid out by endLayout
+            line.setPosition(QPointF(0, y));
+            y += line.height();
         }
         layout.endLayout();
+        for (int i = 0; i < layout.lineCount(); ++i) f.height += layout.lineAt(i).height();
+        if (layout.lineCount() > 0) {
+            const QTextLine first = layout.lineAt(0);
+            f.advance = first.naturalTextWidth();
+            f.ascent = first.ascent();
+            f.lineHeight = first.height();
+        }
         f.glyphs = layout.glyphRuns();
         return fitted.emplace(text, std::move(f)).first->second;
     }
