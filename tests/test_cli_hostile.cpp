@@ -96,6 +96,9 @@ private slots:
         QTest::newRow("too long") << "template_too_long" << "preamble" << "the dialect's maxLineLength is 40";
         QTest::newRow("escape") << "escape_in_description" << "description" << "control character";
         QTest::newRow("duplicate key") << "duplicate_key" << "coolantOn" << "given twice";
+        // Issue 34, item 9: the NC view's colours come from the dialect's file, checked as the rest.
+        QTest::newRow("highlighting typo") << "highlighting_typo" << "highlighting.keyword" << "not a key of highlighting";
+        QTest::newRow("highlighting comment") << "highlighting_comment" << "highlighting.keywords" << "'L ;' must be a word of the tape";
     }
     void hostileDialectsRefused()
     {

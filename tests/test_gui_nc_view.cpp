@@ -75,6 +75,53 @@ private slots:
         QCOMPARE(formatAt(doc->findBlockByNumber(0), 0).foreground().color(), QColor(0x00, 0x40, 0xc0));
     }
 
+    // Issue 34, item 9: Klartext shown as Klartext. The dialect's data file
+    // brings its rules: BLK FORM's M, CYCL DEF's F and TOOL CALL's L are the
+    // control's words, not M, F and L addresses; its M, axis and incremental
+    // words stay coloured as such; and an ISO tape is coloured as before.
+    void klartextColouredByTheDialectsRules()
+    {
+        const QString nc = "9 BLK FORM 0.1 Z X+0 Y+0 Z-30\n"
+                           "14 TOOL CALL 10 Z S3820\n"
+                           "15 L X+42.5 Y+37.5 R0 FMAX M3\n"
+                           "18 CYCL DEF 200 DRILLING ~\n"
+                           "19 L IZ-0.247 FMAX ; TOOL CALL 5 in a comment\n";
+        const QColor m(0xa0, 0x00, 0xa0), other(0x80, 0x50, 0x00), axis(0x00, 0x60, 0x00);
+        NcView view;
+        view.resize(600, 400);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        view.setDialect("heidenhain");
+        view.setProgram(nc, std::vector<BlockSource>(6));
+        QTRY_VERIFY(view.highlighter()->coloured(4));
+        QTextDocument* doc = view.text()->document();
+        const auto at = [&](int line, const QString& word, int offset = 0) {
+            const QTextBlock b = doc->findBlockByNumber(line);
+            const int i = static_cast<int>(b.text().indexOf(word));
+            return i < 0 ? QTextCharFormat() : formatAt(b, i + offset);
+        };
+        const QColor keyword = at(0, "BLK FORM").foreground().color();
+        QVERIFY(keyword != m && keyword != other && keyword != axis && at(0, "BLK FORM").foreground().style() != Qt::NoBrush);
+        QCOMPARE(at(0, "FORM 0.1", 3).foreground().color(), keyword);  // the M of BLK FORM
+        QVERIFY(at(0, "0.1").foreground().color() != m);                // and its number
+        QCOMPARE(at(1, "CALL 10", 3).foreground().color(), keyword);  // the L of TOOL CALL
+        QVERIFY(at(1, " 10", 1).foreground().color() != other);
+        QCOMPARE(at(3, "DEF 200", 2).foreground().color(), keyword);  // the F of CYCL DEF
+        QVERIFY(at(3, "200").foreground().color() != other);
+        QCOMPARE(at(2, "X+42.5").foreground().color(), axis);
+        QCOMPARE(at(2, "M3").foreground().color(), m);
+        QCOMPARE(at(2, "FMAX").foreground().color(), keyword);
+        QCOMPARE(at(4, "IZ-0.247", 1).foreground().color(), axis);
+        QVERIFY(at(4, "TOOL CALL 5").fontItalic());  // in the comment: the comment's colour only
+        // The same lines under an ISO dialect's rules: addresses apart from
+        // their numbers are addresses there ("M 0.1" of BLK FORM).
+        view.setDialect("linuxcnc");
+        QTRY_VERIFY(view.highlighter()->coloured(0));
+        QCOMPARE(at(0, "FORM 0.1", 3).foreground().color(), m);
+        const QTextBlock iso = doc->findBlockByNumber(2);
+        QCOMPARE(formatAt(iso, static_cast<int>(iso.text().indexOf("M3"))).foreground().color(), m);
+    }
+
     // A program's text put in on the view's own thread (prepareProgram), then
     // shown: the text is the program's, whichever was prepared last, and a
     // text prepared for another program is not shown for this one.

@@ -32,6 +32,9 @@
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QUndoStack>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QWheelEvent>
 #include <QtTest>
 
 using namespace taiwa;
@@ -254,6 +257,45 @@ private slots:
         QCOMPARE(profileOf(w).rows[3].cornerSize, 1.0);
         QTest::mouseClick(w.findChild<QPushButton*>("turn.revisionDone"), Qt::LeftButton);
         QVERIFY(view->highlightedCorners().isEmpty());
+    }
+
+    // Issue 34, item 7: the wheel over the profile view zooms about the
+    // pointer (the point under it stays, the drawing grows) and the form
+    // around does not scroll; a double click on an edge frames it, another
+    // fits the whole again.
+    void profileViewZoomsAtThePointer()
+    {
+        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        w.resize(1280, 672);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.unitList()->selectUnit(0);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        QVERIFY(view && view->isVisible());
+        auto* scroll = w.findChild<QScrollArea*>("unit.scroll");
+        QVERIFY(scroll && scroll->verticalScrollBar()->maximum() > 0);  // the form can scroll
+        scroll->ensureWidgetVisible(view);
+        QCoreApplication::processEvents();
+        const int scrolled = scroll->verticalScrollBar()->value();
+        const QPointF at = view->toPixel(-40.25, 39.5), other = view->toPixel(-10, 30);
+        const double apart = QLineF(at, other).length();
+        QWheelEvent wheel(at, view->mapToGlobal(at), QPoint(), QPoint(0, 3 * 120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(view, &wheel);
+        QCoreApplication::processEvents();
+        QVERIFY2(QLineF(view->toPixel(-40.25, 39.5), at).length() < 1.0, "the point under the pointer moved");
+        const double grown = QLineF(view->toPixel(-40.25, 39.5), view->toPixel(-10, 30)).length() / apart;
+        QVERIFY2(std::abs(grown - std::pow(1.2, 3)) < 0.02, qPrintable(QString("grew by %1").arg(grown)));
+        QCOMPARE(scroll->verticalScrollBar()->value(), scrolled);
+        // A double click elsewhere fits the whole; one on the chamfer E4.c frames it.
+        QTest::mouseDClick(view, Qt::LeftButton, {}, QPoint(2, 2));
+        QCOMPARE(view->zoom(), 1.0);
+        QTest::mouseDClick(view, Qt::LeftButton, {}, view->toPixel(-40.25, 39.5).toPoint());
+        QVERIFY2(view->zoom() > 5, qPrintable(QString::number(view->zoom())));
+        for (const QPointF end : {view->toPixel(-40, 39), view->toPixel(-40.5, 40)})
+            QVERIFY2(view->rect().contains(end.toPoint()), qPrintable(QString("%1, %2").arg(end.x()).arg(end.y())));
+        QTest::mouseDClick(view, Qt::LeftButton, {}, view->toPixel(-40.25, 39.5).toPoint());
+        QCOMPARE(view->zoom(), 1.0);
     }
 
     // File > Import turned part (STEP): a new untitled lathe job with the

@@ -8,6 +8,7 @@
 #include "ui/length_units.h"
 #include "ui/number_text.h"
 
+#include <QEvent>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -34,6 +35,44 @@ double stockValue(const Job& j, int which)
 }
 }  // namespace
 
+void JobProperties::nameFields()
+{
+    const auto label = [this](QWidget* field, const QString& text) {
+        if (auto* l = qobject_cast<QLabel*>(form_->labelForField(field))) l->setText(text);
+    };
+    label(name_, tr("Name"));
+    label(material_, tr("Material"));
+    label(unit_, tr("Units"));
+    label(machine_, tr("Machine"));
+    label(vice_, tr("Clamping"));
+    label(jaws_, tr("Jaws' height"));
+    const auto& materials = TechnologyTable::builtIn().materials();
+    for (int i = 0; i < material_->count() && i < static_cast<int>(materials.size()); ++i) {
+        const MaterialTechnology& m = materials[static_cast<std::size_t>(i)];
+        material_->setItemText(i, m.description.empty() ? QString::fromStdString(m.id) : localName(m.description, m.names));
+    }
+    unit_->setItemText(0, tr("mm"));
+    unit_->setItemText(1, tr("inch (converts every length)"));
+    const auto& machines = machineLibrary();
+    for (int i = 0; i < machine_->count() && i < static_cast<int>(machines.size()); ++i) {
+        const Machine& m = machines[static_cast<std::size_t>(i)];
+        machine_->setItemText(i, QString::fromStdString(m.id) + " – " + localName(m.name, m.names));
+    }
+    vice_->setItemText(0, tr("not given"));
+    vice_->setItemText(1, tr("vice on the X faces"));
+    vice_->setItemText(2, tr("vice on the Y faces"));
+    vice_->setToolTip(tr("How the block is held, for the instruction sheet's setup picture"));
+    jaws_->setToolTip(tr("How far up the block's sides the jaws grip, from its bottom"));
+}
+
+void JobProperties::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange) return;
+    nameFields();
+    refresh(true);  // the stock's words, a block's or a bar's, and an unknown material's
+}
+
 JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     : QWidget(parent), doc_(doc), name_(new QLineEdit(this)), material_(new QComboBox(this)), unit_(new QComboBox(this))
 {
@@ -42,13 +81,12 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     material_->setObjectName("job.material");
     unit_->setObjectName("job.unit");
     for (const MaterialTechnology& m : TechnologyTable::builtIn().materials())
-        material_->addItem(m.description.empty() ? QString::fromStdString(m.id) : localName(m.description, m.names),
-                           QString::fromStdString(m.id));
-    unit_->addItem(tr("mm"), 0);
-    unit_->addItem(tr("inch (converts every length)"), 1);
-    form->addRow(tr("Name"), name_);
-    form->addRow(tr("Material"), material_);
-    form->addRow(tr("Units"), unit_);
+        material_->addItem(QString(), QString::fromStdString(m.id));  // named by nameFields(), as the other choices
+    unit_->addItem(QString(), 0);
+    unit_->addItem(QString(), 1);
+    form->addRow(new QLabel(this), name_);  // its words set by nameFields()
+    form->addRow(new QLabel(this), material_);  // its words set by nameFields()
+    form->addRow(new QLabel(this), unit_);  // its words set by nameFields()
     // The machine: a milling machine takes a block, a lathe a bar.
     machine_ = new QComboBox(this);
     // Long choices ("vmc – Vertical machining centre") shrink with the
@@ -58,9 +96,8 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
         c->setMinimumContentsLength(12);
     }
     machine_->setObjectName("job.machine");
-    for (const Machine& m : machineLibrary())
-        machine_->addItem(QString::fromStdString(m.id) + " – " + localName(m.name, m.names), QString::fromStdString(m.id));
-    form->addRow(tr("Machine"), machine_);
+    for (const Machine& m : machineLibrary()) machine_->addItem(QString(), QString::fromStdString(m.id));
+    form->addRow(new QLabel(this), machine_);  // its words set by nameFields()
     connect(machine_, &QComboBox::activated, this, [this](int i) {
         Job j = doc_->job();
         j.machine = machine_->itemData(i).toString().toStdString();
@@ -81,17 +118,14 @@ JobProperties::JobProperties(JobDocument* doc, QWidget* parent)
     // How the block is held: the sheet draws the jaws and says where they grip.
     vice_ = new QComboBox(this);
     vice_->setObjectName("job.clamping");
-    vice_->addItem(tr("not given"));
-    vice_->addItem(tr("vice on the X faces"));
-    vice_->addItem(tr("vice on the Y faces"));
+    for (int i = 0; i < 3; ++i) vice_->addItem(QString());
     vice_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     vice_->setMinimumContentsLength(12);
-    vice_->setToolTip(tr("How the block is held, for the instruction sheet's setup picture"));
     jaws_ = new QLineEdit(this);
     jaws_->setObjectName("clamping.height");
-    jaws_->setToolTip(tr("How far up the block's sides the jaws grip, from its bottom"));
-    form->addRow(tr("Clamping"), vice_);
-    form->addRow(tr("Jaws' height"), jaws_);
+    form->addRow(new QLabel(this), vice_);  // its words set by nameFields()
+    form->addRow(new QLabel(this), jaws_);  // its words set by nameFields()
+    nameFields();
     connect(vice_, &QComboBox::activated, this, [this](int i) {
         Job j = doc_->job();
         if (i == 0) {

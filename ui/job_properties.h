@@ -26,7 +26,13 @@ public:
     // Marks the stock/material widgets the job-level diagnostics name.
     void showDiagnostics(const Diagnostics& jobLevel);
 
+protected:
+    // The language switched: its labels and choices in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    // The labels, the choices' words and the tips, in the language in force.
+    void nameFields();
     void editStock(int which, const QString& text);
     void editJaws(const QString& text);
     JobDocument* doc_;

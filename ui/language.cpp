@@ -3,8 +3,11 @@
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
+#include <QPointer>
 #include <QSettings>
 #include <QTranslator>
+
+#include <utility>
 
 namespace taiwa::ui {
 
@@ -13,6 +16,13 @@ QString& installed()
 {
     static QString code;
     return code;
+}
+// The translators installTranslator put in, to be taken out on a switch.
+// (Guarded: a test may have deleted them itself, tests/support/speak.h.)
+QList<QPointer<QTranslator>>& ours()
+{
+    static QList<QPointer<QTranslator>> list;
+    return list;
 }
 } // namespace
 
@@ -43,20 +53,37 @@ bool installTranslator(QCoreApplication& app)
         qWarning("taiwa: no translation for language '%s'", qPrintable(code));
         return false;
     }
-    if (!QCoreApplication::installTranslator(translator))
+    if (!QCoreApplication::installTranslator(translator)) {
+        delete translator;
         return false;
+    }
+    ours() << translator;
     installed() = code;
     // Qt's own texts (QDialogButtonBox's OK, Cancel, Save; the file dialogs).
     auto* qt = new QTranslator(&app);
     const QString qtName = QStringLiteral("qtbase_%1").arg(code == "zh" ? QStringLiteral("zh_CN") : code);
-    if (qt->load(qtName, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    if (qt->load(qtName, QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
         QCoreApplication::installTranslator(qt);
-    else {
+        ours() << qt;
+    } else {
         delete qt;
         qWarning("taiwa: no Qt translation %s in %s (package qt6-translations-l10n)", qPrintable(qtName),
                  qPrintable(QLibraryInfo::path(QLibraryInfo::TranslationsPath)));
     }
     return true;
+}
+
+bool switchLanguage(const QString& code)
+{
+    saveLanguage(code);
+    if (!qEnvironmentVariableIsEmpty("TAIWA_LANG")) qputenv("TAIWA_LANG", code.toUtf8());
+    for (const QPointer<QTranslator>& t : std::exchange(ours(), {}))
+        if (t) {
+            QCoreApplication::removeTranslator(t);
+            delete t.data();
+        }
+    QCoreApplication* app = QCoreApplication::instance();
+    return app && (installTranslator(*app) || code == "en");
 }
 
 QString installedLanguage()

@@ -3,8 +3,10 @@
 // taiwa_zh.ts, compiled into the program, and one over Qt's own texts,
 // qtbase_ja / qtbase_zh_CN from Debian's qt6-translations-l10n, for the
 // standard buttons and dialogs).
-// The choice is kept in QSettings and applies at the next start; the
-// environment variable TAIWA_LANG (en, ja, zh) overrides it for one run.
+// The choice is kept in QSettings; the environment variable TAIWA_LANG
+// (en, ja, zh) overrides it for one run. switchLanguage changes it in the
+// running station: every widget gets a LanguageChange and retranslates
+// its menus, forms, tables and panels (docs/station.md, Language).
 #pragma once
 
 #include <QString>
@@ -24,6 +26,11 @@ void saveLanguage(const QString& code);
 // when the translation is missing. Qt's own translation is installed when
 // found (a missing one leaves the standard buttons in English, with a warning).
 bool installTranslator(QCoreApplication& app);
+// Saves `code` and puts its translators in place of the ones installed
+// (TAIWA_LANG, which overrides the saved choice, is set to it for this
+// run); the widgets are told by Qt (QEvent::LanguageChange). False when
+// the translation is missing (English is then in force).
+bool switchLanguage(const QString& code);
 // The language whose translator is installed ("ja", "zh"); empty for English.
 QString installedLanguage();
 

@@ -6,6 +6,7 @@
 #include "modules/registry.h"
 #include "ui/core_messages.h"
 
+#include <QEvent>
 #include <QCoreApplication>
 #include <QFile>
 #include <QGridLayout>
@@ -56,21 +57,35 @@ ModulePalette::ModulePalette(QWidget* parent) : QWidget(parent)
     const int drawingSize = mills > 8 ? 88 : 120;
     for (const ModuleKind* kind : moduleKinds()) {
         const QString module = QString::fromUtf8(kind->name());
-        const QString text = QCoreApplication::translate("taiwa::ui::ModulePalette", kind->paletteText());
         auto* b = new QToolButton(this);
         b->setObjectName(QStringLiteral("unit.add%1").arg(module));
         b->setToolButtonStyle(Qt::ToolButtonTextUnderIcon);
         const QPixmap drawing = moduleDrawing(QString::fromUtf8(kind->drawing()), drawingSize);
         b->setIcon(QIcon(drawing));
         b->setIconSize(drawing.size());
-        b->setText(text);
-        b->setToolTip(text);
         b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
         connect(b, &QToolButton::clicked, this, [this, module] { emit addModule(module); });
         b->setProperty("machineKind", static_cast<int>(kind->machineKind()));
         buttons_.push_back(b);
     }
+    nameButtons();
     setMachineKind(MachineKind::Mill);
+}
+
+void ModulePalette::nameButtons()
+{
+    const auto kinds = moduleKinds();
+    for (std::size_t i = 0; i < buttons_.size() && i < kinds.size(); ++i) {
+        const QString text = QCoreApplication::translate("taiwa::ui::ModulePalette", kinds[i]->paletteText());
+        buttons_[i]->setText(text);
+        buttons_[i]->setToolTip(text);
+    }
+}
+
+void ModulePalette::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() == QEvent::LanguageChange) nameButtons();
 }
 
 void ModulePalette::setMachineKind(MachineKind kind)

@@ -32,7 +32,12 @@ public:
 signals:
     void addModule(const QString& module);  // the module kind's name: "M4", "M2D"
 
+protected:
+    // The language switched: the buttons' words in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    void nameButtons();
     std::vector<QToolButton*> buttons_;  // one per module kind, in the registry's order
 };
 

@@ -22,6 +22,9 @@ NcHighlighter::NcHighlighter(QPlainTextEdit* view) : QObject(view), view_(view)
     other_.setForeground(QColor(0x80, 0x50, 0x00));
     rem_.setForeground(QColor(0x90, 0x90, 0x90));
     rem_.setFontItalic(true);
+    keyword_.setForeground(QColor(0x00, 0x60, 0x80));
+    keyword_.setFontWeight(QFont::Bold);
+    setRules({});
     // Scrolled, resized, or a new text (the view is read-only: any change is
     // a new program, which shows its first lines).
     connect(view_->verticalScrollBar(), &QScrollBar::valueChanged, this, &NcHighlighter::colourShownLines);
@@ -62,6 +65,22 @@ bool NcHighlighter::coloured(int block) const
     return block >= 0 && static_cast<std::size_t>(block) < coloured_.size() && coloured_[static_cast<std::size_t>(block)];
 }
 
+void NcHighlighter::setRules(const post::Highlighting& rules)
+{
+    // An address: its letter (Klartext's incremental IX/IZ: the last), a sign
+    // and a number; apart from it by spaces only where the dialect allows.
+    word_ = QRegularExpression(rules.addressesApart ? QStringLiteral(R"(([A-Za-z])\s*[-+]?[0-9.]+)")
+                                                    : QStringLiteral(R"((?<![A-Za-z0-9_])I?([A-Za-z])[-+]?[0-9.]+)"));
+    // The keywords, longest first, as whole words ("CALL LBL" before "LBL", "CC" before "C").
+    QStringList words;
+    for (const std::string& k : rules.keywords) words << QRegularExpression::escape(QString::fromStdString(k));
+    std::sort(words.begin(), words.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+    keywords_ = QRegularExpression(words.isEmpty() ? QStringLiteral("(?!)")
+                                                   : QStringLiteral(R"((?<![A-Za-z0-9_])(?:%1)(?![A-Za-z0-9_]))").arg(words.join('|')));
+    coloured_.assign(coloured_.size(), false);
+    QMetaObject::invokeMethod(this, &NcHighlighter::colourShownLines, Qt::QueuedConnection);
+}
+
 bool NcHighlighter::eventFilter(QObject* watched, QEvent* event)
 {
     if (event->type() == QEvent::Resize) colourShownLines();
@@ -70,7 +89,6 @@ bool NcHighlighter::eventFilter(QObject* watched, QEvent* event)
 
 QList<QTextLayout::FormatRange> NcHighlighter::colours(const QString& text) const
 {
-    static const QRegularExpression word(R"(([A-Za-z])\s*[-+]?[0-9.]+)");
     static const QRegularExpression comment(R"(\([^)]*\)?|;.*$)");
     // Comments first: the words within them are the comment's colour only.
     QList<QTextLayout::FormatRange> out, remarks;
@@ -78,12 +96,22 @@ QList<QTextLayout::FormatRange> NcHighlighter::colours(const QString& text) cons
         const auto hit = it.next();
         remarks.push_back({static_cast<int>(hit.capturedStart()), static_cast<int>(hit.capturedLength()), rem_});
     }
-    const auto inRemark = [&](qsizetype at) {
-        return std::any_of(remarks.begin(), remarks.end(), [&](const auto& r) { return at >= r.start && at < r.start + r.length; });
+    const auto inside = [](const QList<QTextLayout::FormatRange>& ranges, qsizetype at) {
+        return std::any_of(ranges.begin(), ranges.end(), [&](const auto& r) { return at >= r.start && at < r.start + r.length; });
     };
-    for (auto it = word.globalMatch(text); it.hasNext();) {
+    const auto inRemark = [&](qsizetype at) { return inside(remarks, at); };
+    // The control's own words, outside comments: neither their letters nor
+    // the numbers after them are addresses ("BLK FORM 0.1", "TOOL CALL 10").
+    QList<QTextLayout::FormatRange> keywords;
+    for (auto it = keywords_.globalMatch(text); it.hasNext();) {
+        const auto hit = it.next();
+        if (inRemark(hit.capturedStart())) continue;
+        keywords.push_back({static_cast<int>(hit.capturedStart()), static_cast<int>(hit.capturedLength()), keyword_});
+    }
+    for (auto it = word_.globalMatch(text); it.hasNext();) {
         const auto hit = it.next();
         if (inRemark(hit.capturedStart()) || inRemark(hit.capturedEnd() - 1)) continue;
+        if (inside(keywords, hit.capturedStart()) || inside(keywords, hit.capturedEnd() - 1)) continue;
         const QChar c = text.at(hit.capturedStart(1)).toUpper();
         const QTextCharFormat* f = &other_;
         if (c == 'G') f = &g_;
@@ -92,6 +120,7 @@ QList<QTextLayout::FormatRange> NcHighlighter::colours(const QString& text) cons
         else if (QStringLiteral("XYZIJKRABC").contains(c)) f = &axis_;
         out.push_back({static_cast<int>(hit.capturedStart()), static_cast<int>(hit.capturedLength()), *f});
     }
+    out += keywords;
     out += remarks;
     return out;
 }

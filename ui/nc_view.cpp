@@ -4,6 +4,7 @@
 #include "ui/nc_document.h"
 #include "ui/nc_highlighter.h"
 
+#include <QEvent>
 #include <QComboBox>
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -35,11 +36,12 @@ NcView::NcView(QWidget* parent)
     auto* top = new QHBoxLayout;
     // The label, the dialect and the block count, each whole in every
     // language at 1366 px (test_gui_languages): the translations are short.
-    auto* label = new QLabel(tr("&NC program, dialect:"), this);
+    auto* label = new QLabel(this);
     label->setObjectName("nc.label");
     summary_->setObjectName("nc.blocks");
     label->setBuddy(dialect_);
     top->addWidget(label);
+    nameParts();
     top->addWidget(dialect_);
     top->addWidget(summary_, 1);
     auto* box = new QVBoxLayout(this);
@@ -47,7 +49,9 @@ NcView::NcView(QWidget* parent)
     box->addLayout(top);
     box->addWidget(text_, 1);
 
+    connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::useRulesOf);
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
+    useRulesOf(dialect_->currentText());
     connect(text_, &QPlainTextEdit::cursorPositionChanged, this, &NcView::onCursorMoved);
 }
 
@@ -71,6 +75,25 @@ void NcView::setDialect(const QString& dialect)
 {
     const QSignalBlocker quiet(dialect_);
     dialect_->setCurrentText(dialect);
+    useRulesOf(dialect_->currentText());
+}
+
+void NcView::nameParts()
+{
+    findChild<QLabel*>("nc.label")->setText(tr("&NC program, dialect:"));
+    if (!lines_.empty()) summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
+}
+
+void NcView::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() == QEvent::LanguageChange) nameParts();
+}
+
+void NcView::useRulesOf(const QString& dialect)
+{
+    const post::Dialect* d = post::findDialect(dialect.toStdString());
+    highlighter_->setRules(d ? d->highlighting : post::Highlighting{});
 }
 
 void NcView::setProgram(const QString& nc, const std::vector<BlockSource>& lines)

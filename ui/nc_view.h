@@ -68,8 +68,15 @@ signals:
     // The operator put the cursor on a line posted from (step, move).
     void moveSelected(int step, int move);
 
+protected:
+    // The language switched: the heading and the block count in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    void nameParts();
     void onCursorMoved();
+    // The NC view coloured by the rules of the dialect chosen.
+    void useRulesOf(const QString& dialect);
     void showText(const QString& text);
     QComboBox* dialect_;
     QLabel* summary_;

@@ -7,6 +7,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +90,58 @@ ProfileView::Frame ProfileView::frame() const
     f.z0 = zMin;
     f.left = kMargin + (w - f.scale * (zMax - zMin)) / 2;
     f.bottom = height() - kMargin;
+    // The operator's zoom about a point of the fitted drawing.
+    f.scale *= zoom_;
+    f.left = shift_.x() + zoom_ * f.left;
+    f.bottom = shift_.y() + zoom_ * f.bottom;
     return f;
+}
+
+void ProfileView::fit()
+{
+    zoom_ = 1.0;
+    shift_ = {};
+    update();
+}
+
+bool ProfileView::zoomToEdge(const QString& id)
+{
+    fit();
+    const Frame f = frame();
+    QRectF box;
+    const auto add = [&](const turning::Segment& g) { box |= polyline(f, g).boundingRect(); };
+    for (const auto& e : profile_.edges)
+        if (QString::fromStdString(e.id) == id) add(e.geometry);
+    if (deformed_)
+        for (const auto& e : deformed_->edges)
+            if (QString::fromStdString(e.id) == id || QString::fromStdString(e.from) == id) add(e.geometry);
+    if (box.isNull()) return false;
+    box.adjust(-8, -8, 8, 8);  // the edge never on the view's border
+    const double k = std::clamp(std::min(width() / box.width(), height() / box.height()), 1.0, 2000.0);
+    zoom_ = k;
+    shift_ = QPointF(width(), height()) / 2 - k * box.center();
+    update();
+    return true;
+}
+
+// A double click on an edge frames it (zoomed in already: the whole again).
+void ProfileView::mouseDoubleClickEvent(QMouseEvent* e)
+{
+    const QString id = edgeAt(e->position());
+    if (id.isEmpty() || zoom_ > 1.0 || !zoomToEdge(id)) fit();
+}
+
+void ProfileView::wheelEvent(QWheelEvent* e)
+{
+    e->accept();  // the form around does not scroll under the view
+    const double steps = e->angleDelta().y() / 120.0;
+    if (steps == 0) return;
+    const QPointF at = e->position();
+    const double k = std::clamp(zoom_ * std::pow(1.2, steps), 1.0, 2000.0) / zoom_;
+    // The point under the pointer stays under it: shown' = at + k (shown - at).
+    zoom_ *= k;
+    shift_ = at + k * (shift_ - at);
+    update();
 }
 
 QPointF ProfileView::px(const Frame& f, turning::ZR p) const

@@ -2,7 +2,10 @@
 // the right and X (a diameter) upward, the bar, the axis, the profile as
 // drawn with its edge ids, and the deformed profile the lathe must cut
 // (grinding allowances and relief grooves). A click picks the nearest edge;
-// a picked edge and the corners under revision are highlighted. Painted with
+// a picked edge and the corners under revision are highlighted. The wheel
+// zooms about the pointer (a 0.5 mm grinding allowance is seen at the edge
+// it is on; the form around does not scroll), a double click on an edge
+// frames it (zoomToEdge), elsewhere or zoomed in fits the whole. Painted with
 // QPainter (docs/turning.md "The profile view" says why not VTK).
 #pragma once
 
@@ -42,12 +45,20 @@ public:
 
     QSize sizeHint() const override { return {520, 260}; }
 
+    // How far the view is zoomed in (1: the whole fits); back to 1 by fit().
+    double zoom() const { return zoom_; }
+    void fit();
+    // Frames the edge `id` (as drawn and as cut) with a margin; false when the profile has no such edge.
+    bool zoomToEdge(const QString& id);
+
 signals:
     void edgePicked(const QString& id);
 
 protected:
     void paintEvent(QPaintEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
+    void mouseDoubleClickEvent(QMouseEvent* e) override;
+    void wheelEvent(QWheelEvent* e) override;
 
 private:
     struct Frame {
@@ -62,6 +73,9 @@ private:
     std::optional<BarStock> bar_;
     QString selected_;
     QStringList corners_;
+    // The zoom on the fitted drawing, in pixels: shown = shift_ + zoom_ x fitted.
+    double zoom_ = 1.0;
+    QPointF shift_;
 };
 
 // Every turned unit of a lathe plan in its profile view, one under the

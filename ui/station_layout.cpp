@@ -50,17 +50,20 @@ QWidget* StationWindow::buildLeft()
 {
     auto* left = new QWidget;
     auto* box = new QVBoxLayout(left);
-    auto* paletteGroup = new QGroupBox(tr("Modules"));
+    auto* paletteGroup = new QGroupBox;
+    paletteGroup->setObjectName("group.modules");
     (new QVBoxLayout(paletteGroup))->addWidget(palette_);
-    auto* unitsGroup = new QGroupBox(tr("Machining units, in order"));
+    auto* unitsGroup = new QGroupBox;
+    unitsGroup->setObjectName("group.units");
     (new QVBoxLayout(unitsGroup))->addWidget(units_);
-    auto* jobGroup = new QGroupBox(tr("Job"));
+    auto* jobGroup = new QGroupBox;
+    jobGroup->setObjectName("group.job");
     auto* jobBox = new QVBoxLayout(jobGroup);
     jobBox->addWidget(jobProps_);
     auto* dialogs = new QHBoxLayout;
-    auto* technology = new QPushButton(tr("Technology data…"));
+    auto* technology = new QPushButton;
     technology->setObjectName("job.technology");
-    auto* tools = new QPushButton(tr("Tool library…"));
+    auto* tools = new QPushButton;
     tools->setObjectName("job.tools");
     dialogs->addWidget(technology);
     dialogs->addWidget(tools);
@@ -84,7 +87,8 @@ QWidget* StationWindow::buildLeft()
 
 QWidget* StationWindow::buildCentre()
 {
-    auto* empty = new QLabel(tr("Pick a module on the left to add a machining unit."));
+    auto* empty = new QLabel;
+    empty->setObjectName("unit.none");
     empty->setAlignment(Qt::AlignCenter);
     empty->setWordWrap(true);
     forms_->addWidget(empty);
@@ -92,7 +96,8 @@ QWidget* StationWindow::buildCentre()
     unitMessages_->setObjectName("unit.messages");
     unitMessages_->setStyleSheet("color: #a00000;");
     unitMessages_->setWordWrap(true);
-    auto* formGroup = new QGroupBox(tr("Unit"));
+    auto* formGroup = new QGroupBox;
+    formGroup->setObjectName("group.unit");
     auto* scroll = new QScrollArea;
     scroll->setObjectName("unit.scroll");
     scroll->setMinimumWidth(300);  // a form's labels and fields stay readable when the window is narrow
@@ -132,17 +137,17 @@ QWidget* StationWindow::buildRight()
         box->setSpacing(2);
         box->addWidget(preview_, 1);
         box->addWidget(section_);
-        views_->addTab(view, tr("3-D view"));
+        views_->addTab(view, QString());
     } else {  // e.g. a remote display or the offscreen platform: everything else still works
-        auto* noGl = new QLabel(tr("No 3-D preview: this display has no OpenGL."));
+        auto* noGl = new QLabel;
         noGl->setObjectName("preview.unavailable");
         noGl->setAlignment(Qt::AlignCenter);
         noGl->setFrameShape(QFrame::StyledPanel);
-        views_->addTab(noGl, tr("3-D view"));
+        views_->addTab(noGl, QString());
     }
     figure_ = new FigurePanel(doc_);
     figure_->setObjectName("figure");
-    views_->addTab(figure_, tr("Figure"));
+    views_->addTab(figure_, QString());
     right->addWidget(views_);
     auto* lower = new QSplitter(Qt::Horizontal);
     lower->addWidget(steps_);
@@ -169,6 +174,23 @@ QWidget* StationWindow::buildRight()
     return box;
 }
 
+void StationWindow::nameParts()
+{
+    const auto title = [this](const char* name, const QString& text) {
+        if (auto* g = findChild<QGroupBox*>(QString::fromLatin1(name))) g->setTitle(text);
+    };
+    title("group.modules", tr("Modules"));
+    title("group.units", tr("Machining units, in order"));
+    title("group.job", tr("Job"));
+    title("group.unit", tr("Unit"));
+    findChild<QPushButton*>("job.technology")->setText(tr("Technology data…"));
+    findChild<QPushButton*>("job.tools")->setText(tr("Tool library…"));
+    findChild<QLabel*>("unit.none")->setText(tr("Pick a module on the left to add a machining unit."));
+    if (auto* noGl = findChild<QLabel*>("preview.unavailable")) noGl->setText(tr("No 3-D preview: this display has no OpenGL."));
+    views_->setTabText(0, tr("3-D view"));
+    views_->setTabText(views_->indexOf(figure_), tr("Figure"));
+}
+
 void StationWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -186,9 +208,10 @@ void StationWindow::buildMenus()
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+    // Owned by the menu bar: a language switch makes them anew.
+    QAction* undo = doc_->undoStack()->createUndoAction(menuBar(), tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+    QAction* redo = doc_->undoStack()->createRedoAction(menuBar(), tr("&Redo"));
     redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
     edit->addAction(undo);
     edit->addAction(redo);
@@ -211,22 +234,23 @@ void StationWindow::buildMenus()
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QMenu* language = view->addMenu(tr("&Language"));
-    auto* group = new QActionGroup(this);
+    auto* group = new QActionGroup(language);
     for (const auto& [code, name] : availableLanguages()) {
         QAction* a = language->addAction(name);
         a->setCheckable(true);
         a->setChecked(code == savedLanguage());
         group->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code = code] {
-            saveLanguage(code);
-            statusBar()->showMessage(tr("The language changes when Taiwa is started again."), 8000);
+        a->setObjectName("language." + code);
+        // At once: every panel is told (QEvent::LanguageChange, changeEvent).
+        connect(a, &QAction::triggered, this, [this, code = code, name = name] {
+            if (!switchLanguage(code)) statusBar()->showMessage(tr("No translation for %1: English is shown.").arg(name), 8000);
         });
     }
     // The grid the 3-D view simulates the stock on: finer shows more, takes
     // longer after each change. Kept across sessions.
     QMenu* grid = view->addMenu(tr("Stock &grid"));
     grid->setObjectName("menu.stockGrid");
-    auto* grids = new QActionGroup(this);
+    auto* grids = new QActionGroup(grid);
     const int saved = std::clamp(QSettings().value("preview/stockGrid", 1).toInt(), 0, int(std::size(sim::kStockGrids)) - 1);
     runner_->setStockGrid(sim::kStockGrids[saved]);
     const QString names[] = {tr("Fine: %1 mm, up to %2 cells"), tr("Standard: %1 mm, up to %2 cells"),

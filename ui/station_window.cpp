@@ -29,11 +29,13 @@
 #include "ui/verification_panel.h"
 #include "viz/scene.h"
 
+#include <QEvent>
 #include <QAction>
 #include <QCloseEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
@@ -62,6 +64,7 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
     main->setStretchFactor(1, 0);
     main->setStretchFactor(2, 1);
     setCentralWidget(main);
+    nameParts();
     buildMenus();
     wire();
     // The size the operator left it at, else 1600 x 940 within the screen's
@@ -90,6 +93,20 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
 }
 
 StepTable* StationWindow::stepTable() const { return steps_->table(); }
+
+void StationWindow::changeEvent(QEvent* e)
+{
+    QMainWindow::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange || !views_) return;
+    nameParts();
+    setMenuBar(new QMenuBar);  // the old one and its actions go (deleteLater)
+    buildMenus();
+    // What the window shows from the core, said again in the new language;
+    // the Job menu's modules as the machine has them.
+    onDocumentChanged(false);
+    showDiagnostics();
+    updateTitle();
+}
 
 void StationWindow::importDxf()
 {

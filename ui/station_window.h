@@ -68,12 +68,18 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    // The language switched (View > Language): menus, panels' titles, and
+    // what the window shows from the core in the new language.
+    void changeEvent(QEvent* e) override;
 
 private:
     QWidget* buildLeft();
     QWidget* buildCentre();
     QWidget* buildRight();
     void buildMenus();
+    // The window's own words on its panels (group titles, tabs, buttons), in
+    // the language in force: at construction and on a language switch.
+    void nameParts();
     void wire();
     void onDocumentChanged(bool fromTyping);
     void onUnitSelected(int unit);

@@ -6,6 +6,7 @@
 #include "ui/core_texts.h"
 #include "ui/step_table.h"
 
+#include <QEvent>
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -29,7 +30,7 @@ QString length(double mm, LengthUnit u)
 
 StepPanel::StepPanel(QWidget* parent)
     : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QToolButton(this)),
-      stock_(new QCheckBox(tr("&Stock"), this)), before_(new QCheckBox(tr("&Before step"), this)),
+      stock_(new QCheckBox(this)), before_(new QCheckBox(this)),
       timer_(new QTimer(this)), speed_(new QSpinBox(this))
 {
     details_->setObjectName("step.details");
@@ -39,29 +40,23 @@ StepPanel::StepPanel(QWidget* parent)
     details_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     play_->setObjectName("step.play");
     play_->setCheckable(true);
-    play_->setText(tr("▶ Pla&y"));
     stock_->setObjectName("view.stock");
     stock_->setChecked(true);
-    stock_->setToolTip(tr("The stock as the simulation cuts it, instead of a glass block"));
     before_->setObjectName("view.before");
-    before_->setToolTip(tr("The stock as it is before the selected step, instead of after it"));
     timer_->setInterval(1200);
 
     auto* buttons = new QHBoxLayout;
     // Tool buttons (as wide as their text) so that the row fits beside the
     // unit form at the window's smallest useful width.
     auto* all = new QToolButton(this);
-    all->setText(tr("&All steps"));
     all->setObjectName("step.all");
     buttons->addWidget(all);
     buttons->addWidget(play_);
     buttons->addStretch(1);
-    const std::pair<const char*, QString> views[] = {
-        {"view.iso", tr("&Iso")}, {"view.top", tr("&Top")}, {"view.front", tr("F&ront")}};
+    const char* const views[] = {"view.iso", "view.top", "view.front"};
     for (int i = 0; i < 3; ++i) {
         auto* b = new QToolButton(this);
-        b->setText(views[i].second);
-        b->setObjectName(views[i].first);
+        b->setObjectName(views[i]);
         connect(b, &QToolButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
         buttons->addWidget(b);
     }
@@ -74,16 +69,14 @@ StepPanel::StepPanel(QWidget* parent)
     auto* back = new QToolButton(this);
     back->setText(QStringLiteral("◀"));
     back->setObjectName("step.blockBack");
-    back->setToolTip(tr("One block back in the selected step"));
     auto* forward = new QToolButton(this);
     forward->setText(QStringLiteral("▶|"));
     forward->setObjectName("step.blockForward");
-    forward->setToolTip(tr("One block on in the selected step, the material coming off"));
     speed_->setObjectName("step.speed");
     speed_->setRange(1, 1000);
     speed_->setValue(1);
     speed_->setPrefix(QStringLiteral("×"));
-    speed_->setToolTip(tr("How many blocks Play moves on ten times a second with a step selected"));
+    nameParts();
     switches->addWidget(back);
     switches->addWidget(forward);
     switches->addWidget(speed_);
@@ -264,6 +257,30 @@ void StepPanel::advance()
         return;
     }
     selectStep(next);
+}
+
+void StepPanel::nameParts()
+{
+    play_->setText(play_->isChecked() ? tr("■ Stop (&Y)") : tr("▶ Pla&y"));
+    stock_->setText(tr("&Stock"));
+    stock_->setToolTip(tr("The stock as the simulation cuts it, instead of a glass block"));
+    before_->setText(tr("&Before step"));
+    before_->setToolTip(tr("The stock as it is before the selected step, instead of after it"));
+    findChild<QToolButton*>("step.all")->setText(tr("&All steps"));
+    findChild<QToolButton*>("view.iso")->setText(tr("&Iso"));
+    findChild<QToolButton*>("view.top")->setText(tr("&Top"));
+    findChild<QToolButton*>("view.front")->setText(tr("F&ront"));
+    findChild<QToolButton*>("step.blockBack")->setToolTip(tr("One block back in the selected step"));
+    findChild<QToolButton*>("step.blockForward")->setToolTip(tr("One block on in the selected step, the material coming off"));
+    speed_->setToolTip(tr("How many blocks Play moves on ten times a second with a step selected"));
+}
+
+void StepPanel::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange) return;
+    nameParts();
+    showDetails(selectedStep());
 }
 
 void StepPanel::onSelectionChanged()

@@ -67,7 +67,13 @@ signals:
     // when it ends (the selection changed, all steps).
     void playheadMoved(int step, int move);
 
+protected:
+    // The language switched: its buttons and the step's numbers in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    // The buttons' words and tips in the language in force.
+    void nameParts();
     void onSelectionChanged();
     void advance();
     void showDetails(int index);

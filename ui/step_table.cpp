@@ -6,6 +6,7 @@
 #include "ui/number_text.h"
 
 
+#include <QEvent>
 #include <QHeaderView>
 #include <QScrollBar>
 #include <QStyle>
@@ -47,12 +48,7 @@ ShownCutting shownCutting(const Plan& plan, const Step& s)
 StepTable::StepTable(QWidget* parent) : QTableWidget(0, ColumnCount, parent)
 {
     setObjectName("steps");
-    setHorizontalHeaderLabels(
-        {tr("No."), tr("Unit"), tr("Step"), tr("Tool"), tr("S"), tr("F"), tr("Start"), tr("Depth"), tr("Time")});
-    horizontalHeaderItem(Speed)->setToolTip(tr("Spindle speed (rpm; m/min under constant surface speed): type to set "
-                                               "it for this unit's steps of this kind, empty it for the tool's"));
-    horizontalHeaderItem(Feed)->setToolTip(tr("Feed (per minute; per revolution on a lathe): type to set it for this "
-                                              "unit's steps of this kind, empty it for the tool's"));
+    nameColumns();
     setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                     QAbstractItemView::AnyKeyPressed);
     setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -60,6 +56,26 @@ StepTable::StepTable(QWidget* parent) : QTableWidget(0, ColumnCount, parent)
     verticalHeader()->hide();
     horizontalHeader()->setStretchLastSection(true);
     connect(this, &QTableWidget::itemChanged, this, &StepTable::onItemChanged);
+}
+
+void StepTable::nameColumns()
+{
+    setHorizontalHeaderLabels(
+        {tr("No."), tr("Unit"), tr("Step"), tr("Tool"), tr("S"), tr("F"), tr("Start"), tr("Depth"), tr("Time")});
+    horizontalHeaderItem(Speed)->setToolTip(tr("Spindle speed (rpm; m/min under constant surface speed): type to set "
+                                               "it for this unit's steps of this kind, empty it for the tool's"));
+    horizontalHeaderItem(Feed)->setToolTip(tr("Feed (per minute; per revolution on a lathe): type to set it for this "
+                                              "unit's steps of this kind, empty it for the tool's"));
+}
+
+void StepTable::changeEvent(QEvent* e)
+{
+    QTableWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange) return;
+    nameColumns();
+    if (plan_ && !editing()) setPlan(std::shared_ptr<const Plan>(plan_));  // the steps' names and tips in the new language
+    resizeColumnsToContents();
+    fitColumns();
 }
 
 void StepTable::closeEditor(QWidget* editor, QAbstractItemDelegate::EndEditHint hint)

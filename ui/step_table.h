@@ -41,8 +41,11 @@ protected:
     void closeEditor(QWidget* editor, QAbstractItemDelegate::EndEditHint hint) override;
     // The columns fitted to the width the table gets.
     void resizeEvent(QResizeEvent* event) override;
+    // The language switched: the headers and the steps' names in the new one.
+    void changeEvent(QEvent* e) override;
 
 private:
+    void nameColumns();
     void onItemChanged(QTableWidgetItem* item);
     // Narrow (a 1280- or 1366-pixel screen): Start, then Depth, then Unit
     // are hidden (the selected step's numbers under the table and its unit's

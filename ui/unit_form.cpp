@@ -13,6 +13,7 @@
 #include "ui/module_palette.h"
 #include "ui/number_text.h"
 
+#include <QEvent>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QKeyEvent>
@@ -75,8 +76,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     // and the sheet; a unit of any module has one.
     name_ = new QLineEdit(this);
     name_->setObjectName(prefix + ".name");
-    name_->setPlaceholderText(tr("optional, e.g. Pocket A"));
-    addRow(tr("Unit name"), name_, name_);
+    addRow(QString(), name_, name_);
     connect(name_, &QLineEdit::textEdited, this, [this](const QString& t) { emit nameEdited(t); });
     connect(name_, &QLineEdit::returnPressed, this, [this] { focusNextChild(); });
     connect(name_, &QLineEdit::editingFinished, this, &UnitForm::fieldLeft);
@@ -92,12 +92,7 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
         Row& row = rows_[i];
         if (f.kind == FieldKind::Code) {
             row.combo = new QComboBox(cell);
-            for (const auto& [value, meaning] : f.codes) {
-                // "1 – roughing, floor finishing and wall finishing": the code first, as on the drawing.
-                const QString text = QStringLiteral("%1 – %2").arg(value).arg(codeMeaning(meaning.toStdString()));
-                row.combo->addItem(text, value);
-                row.combo->setItemData(row.combo->count() - 1, text, Qt::ToolTipRole);
-            }
+            for (const auto& [value, meaning] : f.codes) row.combo->addItem(QString(), value);  // named by nameFields()
             // The meanings are long: the closed box shows their start, the list all of it.
             row.combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
             row.combo->setMinimumContentsLength(12);
@@ -108,9 +103,6 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
             editor = row.combo;
         } else {
             row.edit = f.isText() ? makeNameEdit(f, cell) : new QLineEdit(cell);
-            if (!f.placeholder.isEmpty())
-                row.edit->setPlaceholderText(
-                    QCoreApplication::translate("taiwa::ui::FieldSpec", f.placeholder.toUtf8().constData()));
             if (f.isText())  // typed, or a name the completer put in
                 connect(row.edit, &QLineEdit::textChanged, this, [this, index](const QString& t) {
                     if (!updating_) emit textEdited(index, t);
@@ -130,10 +122,45 @@ UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
         row.message->hide();
         box->addWidget(editor);
         box->addWidget(row.message);
-        addRow(QCoreApplication::translate("taiwa::ui::FieldSpec", f.label.toUtf8().constData()), cell, editor);
+        addRow(QString(), cell, editor);
         if (previous) setTabOrder(previous, editor);
         previous = editor;
     }
+    nameFields();
+}
+
+void UnitForm::nameFields()
+{
+    const auto translated = [](const QString& source) {
+        return QCoreApplication::translate("taiwa::ui::FieldSpec", source.toUtf8().constData());
+    };
+    name_->setPlaceholderText(tr("optional, e.g. Pocket A"));
+    labelled_.front().first->setText(tr("Unit name"));
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+        const FieldSpec& f = fields_[i];
+        labelled_[i + 1].first->setText(translated(f.label));
+        if (QComboBox* combo = rows_[i].combo)
+            for (int k = 0; k < static_cast<int>(f.codes.size()) && k < combo->count(); ++k) {
+                // "1 – roughing, floor finishing and wall finishing": the code first, as on the drawing.
+                const auto& [value, meaning] = f.codes[static_cast<std::size_t>(k)];
+                const QString text = QStringLiteral("%1 – %2").arg(value).arg(codeMeaning(meaning.toStdString()));
+                combo->setItemText(k, text);
+                combo->setItemData(k, text, Qt::ToolTipRole);
+            }
+        else if (!f.placeholder.isEmpty())
+            rows_[i].edit->setPlaceholderText(translated(f.placeholder));
+    }
+}
+
+void UnitForm::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange || labelled_.empty()) return;
+    nameFields();
+    showHelp(helpField_);
+    drawDrawing();  // its labels are the language's
+    arranged_ = false;
+    arrange();
 }
 
 void UnitForm::setSketch(std::optional<Sketch> sketch) { sketch_->setSketch(std::move(sketch)); }
@@ -260,6 +287,7 @@ void UnitForm::enterPressed(int field)
 
 void UnitForm::showHelp(int field)
 {
+    helpField_ = field;
     const FieldSpec* f = field >= 0 && field < static_cast<int>(fields_.size()) ? &fields_[static_cast<std::size_t>(field)] : nullptr;
     help_->setText(f && !f->help.isEmpty() ? QCoreApplication::translate("taiwa::ui::FieldSpec", f->help.toUtf8().constData())
                                            : QString());

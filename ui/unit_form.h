@@ -58,6 +58,8 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
     // The drawing follows the form's width (at most its own size).
     void resizeEvent(QResizeEvent* event) override;
+    // The language switched: labels, code meanings, help and drawing in the new one.
+    void changeEvent(QEvent* e) override;
 
 signals:
     // A field got a valid value (from typing or from a combo box).
@@ -101,6 +103,9 @@ private:
     bool arranged_ = false;
     QString highlighted_;
     void showHelp(int field);  // -1: none
+    int helpField_ = -1;       // the field whose help is shown
+    // The labels, the code boxes' meanings and the placeholders, in the language in force.
+    void nameFields();
     void enterPressed(int field);
     class ProfileEditor* profile_ = nullptr;
     const ModuleKind& kind_;

@@ -6,6 +6,7 @@
 
 #include "ui/job_document.h"
 
+#include <QEvent>
 #include <QGridLayout>
 #include <QListWidget>
 #include <QPushButton>
@@ -22,19 +23,33 @@ UnitListPanel::UnitListPanel(JobDocument* doc, QWidget* parent) : QWidget(parent
     box->setContentsMargins(0, 0, 0, 0);
     box->addWidget(list_);
     auto* buttons = new QGridLayout;
-    auto add = [&](const char* name, const QString& text, int r, int c, void (UnitListPanel::*slot)()) {
-        auto* b = new QPushButton(text, this);
+    auto add = [&](const char* name, int r, int c, void (UnitListPanel::*slot)()) {
+        auto* b = new QPushButton(this);
         b->setObjectName(name);
         connect(b, &QPushButton::clicked, this, slot);
         buttons->addWidget(b, r, c);
     };
     // Two by two: the column stays narrow (a 1280-pixel screen).
-    add("unit.duplicate", tr("D&uplicate"), 0, 0, &UnitListPanel::duplicate);
-    add("unit.up", tr("▲ U&p"), 0, 1, &UnitListPanel::moveUp);
-    add("unit.down", tr("▼ Do&wn"), 1, 1, &UnitListPanel::moveDown);
-    add("unit.delete", tr("De&lete"), 1, 0, &UnitListPanel::remove);
+    add("unit.duplicate", 0, 0, &UnitListPanel::duplicate);
+    add("unit.up", 0, 1, &UnitListPanel::moveUp);
+    add("unit.down", 1, 1, &UnitListPanel::moveDown);
+    add("unit.delete", 1, 0, &UnitListPanel::remove);
+    nameButtons();
     box->addLayout(buttons);
     connect(list_, &QListWidget::currentRowChanged, this, &UnitListPanel::currentUnitChanged);
+}
+
+void UnitListPanel::nameButtons()
+{
+    const std::pair<const char*, QString> names[] = {{"unit.duplicate", tr("D&uplicate")}, {"unit.up", tr("▲ U&p")},
+                                                     {"unit.down", tr("▼ Do&wn")}, {"unit.delete", tr("De&lete")}};
+    for (const auto& [name, text] : names) findChild<QPushButton*>(QString::fromLatin1(name))->setText(text);
+}
+
+void UnitListPanel::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() == QEvent::LanguageChange) nameButtons();
 }
 
 int UnitListPanel::currentUnit() const { return list_->currentRow(); }

@@ -39,7 +39,12 @@ signals:
     void currentUnitChanged(int unit);
     void message(const QString& text);  // for the status bar
 
+protected:
+    // The language switched: its buttons in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    void nameButtons();
     void move(int delta);
     // The unit moved to free stock; nullopt, with a message, when there is none.
     std::optional<ModuleInput> place(const Job& job, const ModuleInput& unit);

@@ -1,6 +1,7 @@
 // The instruction sheet's pages painted on a QPdfWriter (export/sheet_pdf.cpp):
 // title, fields, paragraphs, tables with their header repeated on every
-// page and long text elided to its column, pictures and tool drawings, the
+// page and long text wrapped in its column (a unit's or a tool's name is
+// never cut: the row grows), pictures and tool drawings, the
 // page number at the foot. A table can be drawn in parts by two painters
 // (two PDF writers at once), each part starting where the other would
 // have turned the page.
@@ -85,20 +86,24 @@ public:
         std::size_t row = 0;
         int page = 0;
     };
-    std::optional<Cut> cutNearMiddle(std::size_t rows) const
+    std::optional<Cut> cutNearMiddle(const sheet::Table& t)
     {
-        // The rows under a header drawn at y, with table()'s own test.
-        const auto fitting = [&](double y) {
-            std::size_t n = 0;
-            for (y += 2 * line_; !(y + line_ > area_.height() - line_); y += line_) ++n;
-            return n;
-        };
-        const std::size_t first = fitting(y_), full = fitting(0);
-        if (full == 0 || rows / 2 <= first) return std::nullopt;
-        const std::size_t pages = (rows / 2 - first) / full;  // whole pages of the first part after its first
-        const std::size_t row = first + pages * full;
-        if (row >= rows) return std::nullopt;
-        return Cut{row, page_ + static_cast<int>(pages) + 1};
+        // The table laid out as table() lays it out: rows of their own
+        // heights under a header, a row that does not fit on a fresh page.
+        const std::vector<double> x = columns(t);
+        const std::size_t half = t.rows.size() / 2;
+        double top = y_ + 2 * line_, y = top;
+        int page = page_;
+        for (std::size_t k = 0; k < t.rows.size(); ++k) {
+            const double h = rowHeight(t, k, x);
+            if (y + h > area_.height() - line_ && y > top) {
+                ++page;
+                top = y = 2 * line_;
+                if (k >= half) return Cut{k, page};
+            }
+            y += h;
+        }
+        return std::nullopt;
     }
 
     // The table's rows [from, to); a part that starts past the first row
@@ -106,12 +111,10 @@ public:
     void table(const sheet::Table& t, std::size_t from = 0, std::size_t to = static_cast<std::size_t>(-1))
     {
         to = std::min(to, t.rows.size());
-        const double total = std::accumulate(t.widths.begin(), t.widths.end(), 0.0);
-        std::vector<double> x{0};
-        for (const double w : t.widths) x.push_back(x.back() + w / total * area_.width());
+        const std::vector<double> x = columns(t);
         // The header takes two lines, so that "Depth mm" wraps instead of being elided.
-        // A header is drawn cell by cell; a body row as one line under it and
-        // one glyph run per font, and the columns' rules once per page from
+        // A header is drawn cell by cell; a body row (as high as its longest
+        // wrapped cell) under it as one glyph run per font, and the columns' rules once per page from
         // the header down (a 10,000-unit sheet has 1,000 pages of rows).
         double top = y_;
         const auto rules = [&] {
@@ -133,7 +136,8 @@ public:
         header();
         for (std::size_t k = from; k < to; ++k) {
             const auto& r = t.rows[k];
-            if (y_ + line_ > area_.height() - line_) {  // the header repeated on the next page
+            const double h = rowHeight(t, k, x);
+            if (y_ + h > area_.height() - line_ && y_ > top) {  // the header repeated on the next page
                 rules();
                 newPage();
                 header();
@@ -141,7 +145,7 @@ public:
             Row row;
             for (std::size_t i = 0; i < r.size(); ++i) {
                 const QRectF cell(x[i], y_, x[i + 1] - x[i], line_);
-                cellText(row, cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0), r[i], t.numeric[i]);
+                cellText(row, inner(cell), r[i], t.numeric[i]);
             }
             for (const RowRun& run : row) {
                 QGlyphRun glyphs;
@@ -150,20 +154,23 @@ public:
                 glyphs.setPositions(run.positions);
                 p_.drawGlyphRun(QPointF(0, 0), glyphs);
             }
-            y_ += line_;
+            y_ += h;
             p_.drawLine(QPointF(0, y_), QPointF(area_.width(), y_));
         }
         rules();
     }
 
+    // A paragraph wrapped at the page's width.
     void paragraph(const std::string& text, const QColor& colour = Qt::black)
     {
-        ensure(line_);
+        const Fitted& f = fit(area_.width(), text, true);
+        const double h = line_ + f.height - f.lineHeight;
+        ensure(h);
         const QPen pen = p_.pen();
         p_.setPen(colour);
-        p_.drawText(QRectF(0, y_, area_.width(), line_), Qt::AlignLeft | Qt::AlignVCenter, elide(q(text), area_.width()));
+        drawFitted(f, QRectF(0, y_, area_.width(), line_));
         p_.setPen(pen);
-        y_ += line_;
+        y_ += h;
     }
 
     // Pictures four to a row, each with its caption under it.
@@ -191,6 +198,13 @@ public:
     void finish() { footer(); }
 
 private:
+    // A text laid out and shaped, ready to be drawn from its glyphs.
+    struct Fitted {
+        QList<QGlyphRun> glyphs;  // the text (numbers: elided), shaped
+        double advance = 0, ascent = 0, lineHeight = 0;  // its first line
+        double height = 0;                               // every line
+    };
+
     // `captions.size()` cells `perRow` to a row, each `aspect` as high as
     // wide with its caption under it and a frame, drawn by `paint`; a row
     // that does not fit goes on the next page.
@@ -199,19 +213,25 @@ private:
     {
         const double gap = line_ * 0.5;
         const double w = (area_.width() - gap * (perRow - 1)) / perRow, h = w * aspect;
+        const std::size_t n = static_cast<std::size_t>(perRow);
+        double under = line_;  // the row's captions, wrapped: as high as its longest
         for (std::size_t i = 0; i < captions.size(); ++i) {
-            const int col = static_cast<int>(i % static_cast<std::size_t>(perRow));
+            const int col = static_cast<int>(i % n);
             if (col == 0) {
-                if (i > 0) y_ += h + line_ + gap;
-                ensure(h + line_);
+                if (i > 0) y_ += h + under + gap;
+                under = line_;
+                for (std::size_t k = i; k < std::min(captions.size(), i + n); ++k) {
+                    const Fitted& f = fit(w, captions[k], true);
+                    under = std::max(under, line_ + f.height - f.lineHeight);
+                }
+                ensure(h + under);
             }
             const QRectF box(col * (w + gap), y_, w, h);
             paint(i, box);
             p_.drawRect(box);
-            p_.drawText(QRectF(box.left(), box.bottom(), w, line_), Qt::AlignLeft | Qt::AlignVCenter,
-                        elide(q(captions[i]), w));
+            drawFitted(fit(w, captions[i], true), QRectF(box.left(), box.bottom(), w, line_));
         }
-        if (!captions.empty()) y_ += h + line_ + gap;
+        if (!captions.empty()) y_ += h + under + gap;
     }
 
     // A tool's drawing scaled from its canvas into `box`.
@@ -251,30 +271,18 @@ private:
         QList<QPointF> positions;
     };
     using Row = std::vector<RowRun>;
-    // A body cell's text, elided to the cell and aligned right (numbers) or
-    // left, on the cell's middle line, added to its row. Cells repeat
-    // (modules, tools, labels, numbers): each text is elided, shaped and
-    // measured once per column width (laying a text out in a rectangle,
-    // then shaping it, were most of a 150-page sheet's time).
+    // A body cell's text, a number elided to the cell and aligned right, a
+    // text wrapped in it (words kept whole where they fit: a unit's or a
+    // tool's name is read whole, the row growing to it), its first line on
+    // the cell's middle line, added to its row. Cells repeat (modules,
+    // tools, labels, numbers): each text is laid out, shaped and measured
+    // once per column width (laying a text out in a rectangle, then shaping
+    // it, were most of a 150-page sheet's time).
     void cellText(Row& row, const QRectF& cell, const std::string& text, bool right)
     {
-        auto& fitted = fitted_[cell.width()];
-        auto it = fitted.find(text);
-        if (it == fitted.end()) {
-            Fitted f;
-            QTextLayout layout(normalMetrics_.elidedText(q(text), Qt::ElideRight, cell.width()), normal_, &pdf_);
-            layout.beginLayout();
-            QTextLine line = layout.createLine();
-            layout.endLayout();
-            f.glyphs = layout.glyphRuns();
-            f.advance = line.isValid() ? line.naturalTextWidth() : 0.0;
-            f.ascent = line.isValid() ? line.ascent() : 0.0;
-            it = fitted.emplace(text, std::move(f)).first;
-        }
-        const Fitted& f = it->second;
+        const Fitted& f = fit(cell.width(), text, !right);
         const double x = right ? cell.right() - f.advance : cell.left();
-        const double baseline = cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
-        const QPointF at(x, baseline - f.ascent);
+        const QPointF at(x, baseline(cell) - f.ascent);
         for (const QGlyphRun& run : f.glyphs) {
             const QRawFont font = run.rawFont();
             auto same = std::find_if(row.begin(), row.end(), [&](const RowRun& r) { return r.font == font; });
@@ -282,6 +290,67 @@ private:
             same->indexes += run.glyphIndexes();
             for (const QPointF& p : run.positions()) same->positions.push_back(p + at);
         }
+    }
+    // A text in the normal font laid out once per width: on one line,
+    // elided (`wrap` false), or wrapped at word boundaries, within a word
+    // only where the word alone is wider than `width`.
+    const Fitted& fit(double width, const std::string& text, bool wrap)
+    {
+        auto& fitted = fitted_[{width, wrap}];
+        auto it = fitted.find(text);
+        if (it != fitted.end()) return it->second;
+        Fitted f;
+        QTextLayout layout(wrap ? q(text) : normalMetrics_.elidedText(q(text), Qt::ElideRight, width), normal_, &pdf_);
+        QTextOption option;
+        option.setWrapMode(wrap ? QTextOption::WrapAtWordBoundaryOrAnywhere : QTextOption::NoWrap);
+        layout.setTextOption(option);
+        layout.beginLayout();
+        double y = 0;
+        for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+            if (wrap) line.setLineWidth(width);  // laid out now; one line unwrapped is laid out by endLayout
+            line.setPosition(QPointF(0, y));
+            y += line.height();
+        }
+        layout.endLayout();
+        for (int i = 0; i < layout.lineCount(); ++i) f.height += layout.lineAt(i).height();
+        if (layout.lineCount() > 0) {
+            const QTextLine first = layout.lineAt(0);
+            f.advance = first.naturalTextWidth();
+            f.ascent = first.ascent();
+            f.lineHeight = first.height();
+        }
+        f.glyphs = layout.glyphRuns();
+        return fitted.emplace(text, std::move(f)).first->second;
+    }
+    // A laid-out text drawn with its first line on the middle line of `first`.
+    void drawFitted(const Fitted& f, const QRectF& first)
+    {
+        const QPointF at(first.left(), baseline(first) - f.ascent);
+        for (const QGlyphRun& run : f.glyphs) p_.drawGlyphRun(at, run);
+    }
+    double baseline(const QRectF& cell) const
+    {
+        return cell.center().y() + (normalMetrics_.ascent() - normalMetrics_.descent()) / 2;
+    }
+    QRectF inner(const QRectF& cell) const { return cell.adjusted(line_ * 0.2, 0, -line_ * 0.2, 0); }
+    // The columns' left edges and the table's right one.
+    std::vector<double> columns(const sheet::Table& t) const
+    {
+        const double total = std::accumulate(t.widths.begin(), t.widths.end(), 0.0);
+        std::vector<double> x{0};
+        for (const double w : t.widths) x.push_back(x.back() + w / total * area_.width());
+        return x;
+    }
+    // A body row's height: one line, and the further lines of its longest wrapped cell.
+    double rowHeight(const sheet::Table& t, std::size_t k, const std::vector<double>& x)
+    {
+        double more = 0;
+        for (std::size_t i = 0; i < t.rows[k].size(); ++i) {
+            if (t.numeric[i]) continue;
+            const Fitted& f = fit(inner(QRectF(x[i], 0, x[i + 1] - x[i], line_)).width(), t.rows[k][i], true);
+            more = std::max(more, f.height - f.lineHeight);
+        }
+        return line_ + more;
     }
     // A header cell's text, wrapped in the cell and centred on its height,
     // in bold: laid out once per text and column width, drawn from its
@@ -337,12 +406,7 @@ private:
     QRectF area_;
     QFont normal_, bold_, title_;
     QFontMetricsF normalMetrics_{QFont()};
-    struct Fitted {
-        QList<QGlyphRun> glyphs;  // the text (body cells: elided), shaped
-        double advance = 0, ascent = 0;  // body cells: one line
-        double height = 0;               // header cells: every wrapped line
-    };
-    std::map<double, std::unordered_map<std::string, Fitted>> fitted_;   // by column width
+    std::map<std::pair<double, bool>, std::unordered_map<std::string, Fitted>> fitted_;  // by column width, wrapped or not
     std::map<double, std::unordered_map<std::string, Fitted>> headers_;  // the same for header cells
     double line_ = 0, y_ = 0;
     int page_ = 1;

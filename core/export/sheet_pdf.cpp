@@ -1,6 +1,6 @@
 // The instruction sheet as a PDF, painted through Qt's own PDF writer
 // (export/page_painter.h): A4 landscape, the table header repeated on every
-// page, long text elided to its column. A large job's steps table is
+// page, long text wrapped in its column. A large job's steps table is
 // painted in two parts at once, by two PDF writers, and the parts joined
 // (export/pdf_merge.h): Qt's writer puts each glyph in the page's text
 // and compresses every page, so a 10,000-unit sheet (1,177 pages) took
@@ -125,7 +125,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options, PdfP
     }
     page->heading("Process steps");
     const bool split = parts == PdfParts::Two || (parts == PdfParts::BySize && c.steps.rows.size() >= kRowsToSplit);
-    const auto cut = split ? page->cutNearMiddle(c.steps.rows.size()) : std::nullopt;
+    const auto cut = split ? page->cutNearMiddle(c.steps) : std::nullopt;
     if (!cut) {
         page->table(c.steps);
         afterSteps(*page, c);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -185,6 +187,28 @@ bool DataReader::flag(const std::string& key, bool fallback) const
     if (!v) return fallback;
     if (!v->is_boolean()) fail(key, "must be true or false");
     return v->get<bool>();
+}
+
+bool DataReader::boolean(const json& v, const std::string& path) const
+{
+    if (!v.is_boolean()) fail(path, "must be true or false");
+    return v.get<bool>();
+}
+
+std::vector<std::string> DataReader::texts(const json& v, const std::string& path, std::size_t maxCount,
+                                           std::size_t maxLength) const
+{
+    if (!v.is_array() || v.size() > maxCount) fail(path, fmt::format("must be a list of at most {} texts", maxCount));
+    std::vector<std::string> out;
+    for (const json& x : v) out.push_back(text(x, path, maxLength, false));
+    return out;
+}
+
+void DataReader::onlyKeys(const json& v, const std::string& path, const std::vector<std::string>& keys) const
+{
+    if (!v.is_object()) fail(path, "must be an object");
+    for (const auto& [key, value] : v.items())
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) fail(path + "." + key, "not a key of " + path + " (a typo?)");
 }
 
 std::string DataReader::identifier(const std::string& key) const

@@ -47,6 +47,12 @@ public:
     // A finite number in [low, high] (low excluded when `lowOpen`).
     double number(const nlohmann::json& v, const std::string& path, double low, double high, bool lowOpen) const;
     bool flag(const std::string& key, bool fallback) const;
+    bool boolean(const nlohmann::json& v, const std::string& path) const;
+    // A list of at most `maxCount` texts, each as text() reads it (not empty).
+    std::vector<std::string> texts(const nlohmann::json& v, const std::string& path, std::size_t maxCount,
+                                   std::size_t maxLength) const;
+    // An object whose keys are all among `keys` (a typo is refused, not ignored).
+    void onlyKeys(const nlohmann::json& v, const std::string& path, const std::vector<std::string>& keys) const;
     // An identifier: 1 to 32 of a-z, 0-9, '-', '_', starting with a letter or digit.
     std::string identifier(const std::string& key) const;
 

@@ -28,6 +28,16 @@ enum class Syntax {
     Klartext,   // HEIDENHAIN conversational: L, CC/C, TOOL CALL, CYCL DEF
 };
 
+// How the station's NC view colours the dialect's tapes (the data file's
+// "highlighting"): the control's own words coloured as such and never as
+// addresses ("BLK FORM", "CYCL DEF", "TOOL CALL" in Klartext), and whether
+// an address letter may stand apart from its number ("G 1" in ISO; in
+// Klartext "TOOL CALL 10" is no L word).
+struct Highlighting {
+    std::vector<std::string> keywords;
+    bool addressesApart = true;
+};
+
 struct Dialect {
     std::string name;
     std::string description;         // "FANUC 0i/30i-style ISO G-code"
@@ -94,6 +104,7 @@ struct Dialect {
     // The lathe's stock removal cycle: FANUC 0i's two blocks (G71 U R, then
     // G71 P Q U W F) or the one block with the depth in D (Haas, FANUC 10/11).
     bool oneBlockRoughingCycle = false;
+    Highlighting highlighting;
     std::string programEnd = "M30";
 };
 

@@ -139,6 +139,7 @@ public:
         if (dwell != "P" && dwell != "X" && dwell != "F") fail("dwellWord", "must be \"P\", \"X\" or \"F\"");
         d.dwellWord = dwell[0];
         d.oneBlockRoughingCycle = r_.flag("oneBlockRoughingCycle", d.oneBlockRoughingCycle);
+        if (const json* h = r_.find(j, "highlighting")) d.highlighting = highlighting(*h);
         return d;
     }
 
@@ -151,7 +152,20 @@ private:
         "lengthDecimals", "feedDecimals", "upperCaseComments", "preamble", "moreWorkOffsets", "extendedWorkOffsets",
         "retract", "toolChange", "lengthOffset", "lengthOffsetWithZ", "spindleClockwise", "spindleCounterClockwise",
         "spindleStop", "coolantOn", "coolantOff", "drill", "peckDrill", "cycleCancel", "cycleRetract", "dwellWord",
-        "programEnd", "tap", "rigidTapping", "ream", "bore", "boreDwell"};
+        "programEnd", "tap", "rigidTapping", "ream", "bore", "boreDwell", "highlighting"};
+
+    // The station's colours: {"keywords": ["BLK FORM", ...], "addressesApart": false}.
+    Highlighting highlighting(const json& h) const
+    {
+        r_.onlyKeys(h, "highlighting", {"keywords", "addressesApart"});
+        Highlighting out;
+        if (const json* k = r_.find(h, "keywords")) out.keywords = r_.texts(*k, "highlighting.keywords", 60, 32);
+        for (const std::string& w : out.keywords)
+            if (w.front() == ' ' || w.back() == ' ' || w.find_first_of(";()") != std::string::npos)
+                fail("highlighting.keywords", "'" + w + "' must be a word of the tape, without spaces around it, ';' or parentheses");
+        if (const json* a = r_.find(h, "addressesApart")) out.addressesApart = r_.boolean(*a, "highlighting.addressesApart");
+        return out;
+    }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const { r_.fail(key, what); }
 

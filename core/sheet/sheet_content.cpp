@@ -3,6 +3,7 @@
 #include "sheet/sheet_content.h"
 
 #include "machine/machine.h"
+#include "model/technology.h"
 #include "post/dialect.h"
 #include "post/lathe_post.h"
 
@@ -90,6 +91,14 @@ std::string latheSetup(const Plan& plan, const std::function<std::string(double)
                        limit > 0 ? fmt::format("; vc in m/min up to {:.0f} rpm", limit) : "");
 }
 
+// The material by its name in the sheet's language (the shipped table's
+// description), not its id; a material the table lacks by its id.
+std::string materialWords(const std::string& id)
+{
+    const MaterialTechnology* m = TechnologyTable::builtIn().find(id);
+    return m && !m->description.empty() ? m->description : id;
+}
+
 // The dialect by name and by the control it speaks.
 std::string dialectWords(const std::string& name)
 {
@@ -127,7 +136,7 @@ Content content(const Plan& plan, const SheetOptions& o)
         {"Job", plan.job.name},
         {"File", o.jobFile},
         {"Dialect", dialectWords(o.dialect)},
-        {"Material", job.material},
+        {"Material", materialWords(job.material)},
         {"Machine", job.machine},
         {"Date", o.date},
         {"Program", programWords(o)},

@@ -352,14 +352,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::JobProperties</name>
         <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
-        <message>
-            <source>inch (converts every length)</source>
-            <translation>インチ(全ての長さを換算)</translation>
-        </message>
-        <message>
             <source>Name</source>
             <translation>名前</translation>
         </message>
@@ -376,8 +368,20 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>機械</translation>
         </message>
         <message>
-            <source>Machine %1</source>
-            <translation>機械 %1</translation>
+            <source>Clamping</source>
+            <translation>保持</translation>
+        </message>
+        <message>
+            <source>Jaws' height</source>
+            <translation>ジョーの高さ</translation>
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>inch (converts every length)</source>
+            <translation>インチ(全ての長さを換算)</translation>
         </message>
         <message>
             <source>not given</source>
@@ -400,12 +404,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>ジョーが素材の側面をつかむ高さ（底面から）</translation>
         </message>
         <message>
-            <source>Clamping</source>
-            <translation>保持</translation>
-        </message>
-        <message>
-            <source>Jaws' height</source>
-            <translation>ジョーの高さ</translation>
+            <source>Machine %1</source>
+            <translation>機械 %1</translation>
         </message>
         <message>
             <source>Change clamping</source>
@@ -874,6 +874,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>ジョブ</translation>
         </message>
         <message>
+            <source>Unit</source>
+            <translation>ユニット</translation>
+        </message>
+        <message>
             <source>Technology data…</source>
             <translation>加工技術データ…</translation>
         </message>
@@ -886,16 +890,12 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>左のモジュールを選んで加工ユニットを追加してください。</translation>
         </message>
         <message>
-            <source>Unit</source>
-            <translation>ユニット</translation>
+            <source>No 3-D preview: this display has no OpenGL.</source>
+            <translation>3D プレビューなし: このディスプレイは OpenGL を使えません。</translation>
         </message>
         <message>
             <source>3-D view</source>
             <translation>3D ビュー</translation>
-        </message>
-        <message>
-            <source>No 3-D preview: this display has no OpenGL.</source>
-            <translation>3D プレビューなし: このディスプレイは OpenGL を使えません。</translation>
         </message>
         <message>
             <source>Figure</source>
@@ -994,8 +994,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>言語(&amp;L)</translation>
         </message>
         <message>
-            <source>The language changes when Taiwa is started again.</source>
-            <translation>言語は Taiwa の次回起動時に切り替わります。</translation>
+            <source>No translation for %1: English is shown.</source>
+            <translation>%1 の翻訳がありません。英語で表示します。</translation>
         </message>
         <message>
             <source>Stock &amp;grid</source>
@@ -1085,20 +1085,24 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::StepPanel</name>
         <message>
-            <source>&amp;Stock</source>
-            <translation>素材(&amp;S)</translation>
-        </message>
-        <message>
-            <source>&amp;Before step</source>
-            <translation>加工前(&amp;B)</translation>
+            <source>■ Stop (&amp;Y)</source>
+            <translation>■ 停止(&amp;Y)</translation>
         </message>
         <message>
             <source>▶ Pla&amp;y</source>
             <translation>▶ 再生(&amp;Y)</translation>
         </message>
         <message>
+            <source>&amp;Stock</source>
+            <translation>素材(&amp;S)</translation>
+        </message>
+        <message>
             <source>The stock as the simulation cuts it, instead of a glass block</source>
             <translation>ガラスのブロックではなく、シミュレーションで削った素材を表示</translation>
+        </message>
+        <message>
+            <source>&amp;Before step</source>
+            <translation>加工前(&amp;B)</translation>
         </message>
         <message>
             <source>The stock as it is before the selected step, instead of after it</source>
@@ -1131,10 +1135,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>How many blocks Play moves on ten times a second with a step selected</source>
             <translation>工程を選択して再生するとき、1秒に10回進めるブロック数</translation>
-        </message>
-        <message>
-            <source>■ Stop (&amp;Y)</source>
-            <translation>■ 停止(&amp;Y)</translation>
         </message>
         <message>
             <source>No steps: the job has input errors.</source>

@@ -352,14 +352,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::JobProperties</name>
         <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
-        <message>
-            <source>inch (converts every length)</source>
-            <translation>英寸(换算所有长度)</translation>
-        </message>
-        <message>
             <source>Name</source>
             <translation>名称</translation>
         </message>
@@ -376,8 +368,20 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>机床</translation>
         </message>
         <message>
-            <source>Machine %1</source>
-            <translation>机床 %1</translation>
+            <source>Clamping</source>
+            <translation>装夹</translation>
+        </message>
+        <message>
+            <source>Jaws' height</source>
+            <translation>钳口高度</translation>
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>inch (converts every length)</source>
+            <translation>英寸(换算所有长度)</translation>
         </message>
         <message>
             <source>not given</source>
@@ -400,12 +404,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>钳口夹持毛坯侧面的高度（自底面起）</translation>
         </message>
         <message>
-            <source>Clamping</source>
-            <translation>装夹</translation>
-        </message>
-        <message>
-            <source>Jaws' height</source>
-            <translation>钳口高度</translation>
+            <source>Machine %1</source>
+            <translation>机床 %1</translation>
         </message>
         <message>
             <source>Change clamping</source>
@@ -874,6 +874,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>作业</translation>
         </message>
         <message>
+            <source>Unit</source>
+            <translation>单元</translation>
+        </message>
+        <message>
             <source>Technology data…</source>
             <translation>工艺数据…</translation>
         </message>
@@ -886,16 +890,12 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>在左侧选择一个模块以添加加工单元。</translation>
         </message>
         <message>
-            <source>Unit</source>
-            <translation>单元</translation>
+            <source>No 3-D preview: this display has no OpenGL.</source>
+            <translation>无 3D 预览:此显示器不支持 OpenGL。</translation>
         </message>
         <message>
             <source>3-D view</source>
             <translation>3D 视图</translation>
-        </message>
-        <message>
-            <source>No 3-D preview: this display has no OpenGL.</source>
-            <translation>无 3D 预览:此显示器不支持 OpenGL。</translation>
         </message>
         <message>
             <source>Figure</source>
@@ -994,8 +994,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>语言(&amp;L)</translation>
         </message>
         <message>
-            <source>The language changes when Taiwa is started again.</source>
-            <translation>语言将在 Taiwa 下次启动时切换。</translation>
+            <source>No translation for %1: English is shown.</source>
+            <translation>没有%1的翻译：以英文显示。</translation>
         </message>
         <message>
             <source>Stock &amp;grid</source>
@@ -1085,20 +1085,24 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::StepPanel</name>
         <message>
-            <source>&amp;Stock</source>
-            <translation>毛坯(&amp;S)</translation>
-        </message>
-        <message>
-            <source>&amp;Before step</source>
-            <translation>工步之前(&amp;B)</translation>
+            <source>■ Stop (&amp;Y)</source>
+            <translation>■ 停止(&amp;Y)</translation>
         </message>
         <message>
             <source>▶ Pla&amp;y</source>
             <translation>▶ 播放(&amp;Y)</translation>
         </message>
         <message>
+            <source>&amp;Stock</source>
+            <translation>毛坯(&amp;S)</translation>
+        </message>
+        <message>
             <source>The stock as the simulation cuts it, instead of a glass block</source>
             <translation>显示仿真切削后的毛坯,而不是玻璃块</translation>
+        </message>
+        <message>
+            <source>&amp;Before step</source>
+            <translation>工步之前(&amp;B)</translation>
         </message>
         <message>
             <source>The stock as it is before the selected step, instead of after it</source>
@@ -1131,10 +1135,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>How many blocks Play moves on ten times a second with a step selected</source>
             <translation>选中工步播放时，每秒十次各前进的程序段数</translation>
-        </message>
-        <message>
-            <source>■ Stop (&amp;Y)</source>
-            <translation>■ 停止(&amp;Y)</translation>
         </message>
         <message>
             <source>No steps: the job has input errors.</source>

@@ -1,0 +1,151 @@
+// Switching the station's language without a restart (issue 34, item 9):
+// View > Language > 日本語 retranslates at once the menus, the panels'
+// titles, the unit form's labels and code meanings, the job's form, the
+// step table's headings and step names, the step panel's buttons and the
+// NC panel's heading; switching back to English brings the English words.
+#include "support/speak.h"
+#include "support/support.h"
+#include "ui/job_document.h"
+#include "ui/language.h"
+#include "ui/plan_runner.h"
+#include "ui/station_window.h"
+#include "ui/step_panel.h"
+#include "ui/step_table.h"
+#include "ui/unit_form.h"
+#include "ui/unit_list_panel.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace taiwa;
+using namespace taiwa::ui;
+
+namespace {
+
+QString translated(const char* context, const char* source, int n = -1)
+{
+    return QCoreApplication::translate(context, source, nullptr, n);
+}
+
+// The words the operator reads, from every part the switch must reach.
+struct Shown {
+    QString fileMenu, jobGroup, timeHeading, stepName, stockBox, allSteps, ncLabel, materialLabel, material,
+        depthLabel, codeItem, duplicate, palette;
+};
+
+Shown shown(StationWindow& w)
+{
+    QCoreApplication::processEvents();
+    Shown s;
+    s.fileMenu = w.menuBar()->actions().value(0) ? w.menuBar()->actions().value(0)->text() : QString();
+    s.jobGroup = w.findChild<QGroupBox*>("group.job")->title();
+    s.timeHeading = w.stepTable()->horizontalHeaderItem(StepTable::Time)->text();
+    s.stepName = w.stepTable()->item(0, StepTable::StepName)->text();
+    s.stockBox = w.findChild<QCheckBox*>("view.stock")->text();
+    s.allSteps = w.findChild<QToolButton*>("step.all")->text();
+    s.ncLabel = w.findChild<QLabel*>("nc.label")->text();
+    s.duplicate = w.findChild<QPushButton*>("unit.duplicate")->text();
+    s.palette = w.findChild<QToolButton*>("unit.addM4")->text();
+    auto* material = w.findChild<QComboBox*>("job.material");
+    s.material = material->currentText();
+    if (auto* form = qobject_cast<QFormLayout*>(material->parentWidget()->layout()))
+        if (auto* l = qobject_cast<QLabel*>(form->labelForField(material))) s.materialLabel = l->text();
+    // The M4 form (the first unit of plate.taiwa): its depth's label and a code's meaning.
+    for (UnitForm* f : w.findChildren<UnitForm*>()) {
+        if (!f->isVisible()) continue;
+        for (QLabel* l : f->findChildren<QLabel*>())
+            if (l->buddy() && l->buddy()->objectName() == "m4.depth") s.depthLabel = l->text();
+        if (auto* code = f->findChild<QComboBox*>("m4.U")) s.codeItem = code->itemText(0);
+    }
+    return s;
+}
+
+}  // namespace
+
+class TestGuiLanguageSwitch : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(dir_.isValid());
+        test::isolateStation(dir_.path());
+        test::speak("en");
+    }
+    void cleanup() { test::speak("en"); }
+
+    void switchesAtOnceAndBack()
+    {
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.resize(1600, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.planRunner()->flush();
+        w.unitList()->selectUnit(0);
+        QVERIFY(w.stepTable()->rowCount() > 0);
+        const Shown english = shown(w);
+        QCOMPARE(english.fileMenu, QString("&File"));
+        QCOMPARE(english.timeHeading, QString("Time"));
+        QVERIFY2(!english.depthLabel.isEmpty() && !english.codeItem.isEmpty(), qPrintable(english.depthLabel + english.codeItem));
+
+        auto* ja = w.findChild<QAction*>("language.ja");
+        QVERIFY(ja);
+        ja->trigger();
+        QCOMPARE(installedLanguage(), QString("ja"));
+        QTRY_VERIFY(shown(w).fileMenu != english.fileMenu);
+        const Shown japanese = shown(w);
+        // Every part in the translation's words (each differs from the English).
+        const std::pair<QString, QString> pairs[] = {
+            {japanese.fileMenu, translated("taiwa::ui::StationWindow", "&File")},
+            {japanese.jobGroup, translated("taiwa::ui::StationWindow", "Job")},
+            {japanese.timeHeading, translated("taiwa::ui::StepTable", "Time")},
+            {japanese.stockBox, translated("taiwa::ui::StepPanel", "&Stock")},
+            {japanese.allSteps, translated("taiwa::ui::StepPanel", "&All steps")},
+            {japanese.ncLabel, translated("taiwa::ui::NcView", "&NC program, dialect:")},
+            {japanese.materialLabel, translated("taiwa::ui::JobProperties", "Material")},
+            {japanese.duplicate, translated("taiwa::ui::UnitListPanel", "D&uplicate")},
+        };
+        for (const auto& [now, expected] : pairs) QCOMPARE(now, expected);
+        const std::pair<QString, QString> changed[] = {
+            {japanese.fileMenu, english.fileMenu},     {japanese.jobGroup, english.jobGroup},
+            {japanese.timeHeading, english.timeHeading}, {japanese.stepName, english.stepName},
+            {japanese.stockBox, english.stockBox},     {japanese.allSteps, english.allSteps},
+            {japanese.ncLabel, english.ncLabel},       {japanese.materialLabel, english.materialLabel},
+            {japanese.material, english.material},     {japanese.depthLabel, english.depthLabel},
+            {japanese.codeItem, english.codeItem},     {japanese.duplicate, english.duplicate},
+            {japanese.palette, english.palette}};
+        for (const auto& [now, before] : changed) QVERIFY2(now != before, qPrintable("still '" + before + "'"));
+        // The choice is kept for the next start, and the menu shows it.
+        QCOMPARE(savedLanguage(), QString("ja"));
+        QVERIFY(w.findChild<QAction*>("language.ja")->isChecked());
+
+        w.findChild<QAction*>("language.en")->trigger();
+        QCOMPARE(installedLanguage(), QString());
+        QTRY_COMPARE(shown(w).fileMenu, english.fileMenu);
+        const Shown again = shown(w);
+        QCOMPARE(again.timeHeading, english.timeHeading);
+        QCOMPARE(again.stepName, english.stepName);
+        QCOMPARE(again.depthLabel, english.depthLabel);
+        QCOMPARE(again.codeItem, english.codeItem);
+        QCOMPARE(again.material, english.material);
+        QCOMPARE(again.palette, english.palette);
+        // The menus made anew: one Edit > Undo, its shortcut not ambiguous.
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+        int undos = 0;
+        for (QAction* a : w.findChildren<QAction*>()) undos += a->shortcut() == QKeySequence(QKeySequence::Undo) ? 1 : 0;
+        QCOMPARE(undos, 1);
+    }
+};
+
+QTEST_MAIN(TestGuiLanguageSwitch)
+#include "test_gui_language_switch.moc"
