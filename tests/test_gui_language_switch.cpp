@@ -125,6 +125,9 @@ private slots:
             {japanese.codeItem, english.codeItem},     {japanese.duplicate, english.duplicate},
             {japanese.palette, english.palette}};
         for (const auto& [now, before] : changed) QVERIFY2(now != before, qPrintable("still '" + before + "'"));
+        // A picture of the switched window to look at (TAIWA_SCREENSHOTS_DIR set).
+        if (const QString shots = qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR"); !shots.isEmpty())
+            QVERIFY(w.grab().save(shots + "/station-switched-ja.png"));
         // The choice is kept for the next start, and the menu shows it.
         QCOMPARE(savedLanguage(), QString("ja"));
         QVERIFY(w.findChild<QAction*>("language.ja")->isChecked());
