@@ -66,6 +66,7 @@ struct PgToolStore::Impl {
     // Tool rows (pg_tool_rows.cpp).
     Result<std::int64_t> writeTool(const Tool& t, bool fresh, std::int64_t readVersion = 0);
     Result<std::vector<VersionedTool>> readTools(int only = 0);
+    Result<void> changeRow(const char* sql, const std::vector<pq::Param>& params, const std::string& what, int id);
     // The station's copy (pg_local_copy.cpp).
     Result<void> writeCopy(const std::vector<VersionedTool>& tools);
     Result<void> goOffline(const std::string& why);

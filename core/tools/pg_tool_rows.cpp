@@ -219,32 +219,30 @@ Result<SaveOutcome> PgToolStore::save(const Tool& tool, std::int64_t readVersion
     return SaveOutcome{t.id, conflict.theirVersion, std::move(conflict)};
 }
 
-Result<void> PgToolStore::remove(int id)
+// One statement on tool `id`'s row ($1 the id): refused while offline, a
+// failure named by `what` ("removing tool T27"), and a tool not there.
+Result<void> PgToolStore::Impl::changeRow(const char* sql, const std::vector<Param>& params, const std::string& what, int id)
 {
-    Impl& d = *d_;
-    if (d.offline) return d.refusedOffline();
-    auto r = d.exec("DELETE FROM tools WHERE id = $1", {std::to_string(id)});
+    if (offline) return refusedOffline();
+    auto r = exec(sql, params);
     if (!r) {
         const std::string why = r.error();
-        d.checkConnection();
-        return d.failure(fmt::format("removing tool T{}", id), why);
+        checkConnection();
+        return failure(what, why);
     }
-    if (std::string(PQcmdTuples(r->get())) == "0") return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no tool T{}"), d.display, id)};
+    if (std::string(PQcmdTuples(r->get())) == "0") return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no tool T{}"), display, id)};
     return {};
+}
+
+Result<void> PgToolStore::remove(int id)
+{
+    return d_->changeRow("DELETE FROM tools WHERE id = $1", {std::to_string(id)}, fmt::format("removing tool T{}", id), id);
 }
 
 Result<void> PgToolStore::addUsage(int id, double minutes)
 {
-    Impl& d = *d_;
-    if (d.offline) return d.refusedOffline();
-    auto r = d.exec("UPDATE tools SET used_minutes = used_minutes + $2 WHERE id = $1", {std::to_string(id), number(minutes)});
-    if (!r) {
-        const std::string why = r.error();
-        d.checkConnection();
-        return d.failure(fmt::format("adding usage to tool T{}", id), why);
-    }
-    if (std::string(PQcmdTuples(r->get())) == "0") return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no tool T{}"), d.display, id)};
-    return {};
+    return d_->changeRow("UPDATE tools SET used_minutes = used_minutes + $2 WHERE id = $1", {std::to_string(id), number(minutes)},
+                         fmt::format("adding usage to tool T{}", id), id);
 }
 
 Result<int> PgToolStore::importSqliteLibrary(const std::string& path)

@@ -4452,30 +4452,6 @@ Theirs: %6</source>
             <translation>{}: ジョブ '{}' のロックを解除できませんでした（{}）</translation>
         </message>
         <message>
-            <source>{}: {} failed ({})</source>
-            <translation>{}: {} に失敗しました（{}）</translation>
-        </message>
-        <message>
-            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
-            <translation>{} は新しい Taiwa で作成されています（スキーマ バージョン {}）。このプログラムはバージョン {} まで対応します</translation>
-        </message>
-        <message>
-            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
-            <translation>{}: スキーマをバージョン {} から {} に更新できませんでした（{}）。ステーションのロールは読み書きのみ可能で、更新は所有者が行います（docs/shop-server.md）</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has an unknown type '{}'</source>
-            <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has unreadable lathe data '{}'</source>
-            <translation>{}: 工具 {} の旋削データ '{}' を読めません</translation>
-        </message>
-        <message>
-            <source>{}: tool T{} ({}): {}</source>
-            <translation>{}: 工具 T{} ({}): {}</translation>
-        </message>
-        <message>
             <source>{}: the local copy {} could not be written</source>
             <translation>{}: ローカルコピー {} を書き込めませんでした</translation>
         </message>
@@ -4492,20 +4468,16 @@ Theirs: %6</source>
             <translation>{} に接続できません（{}）。工具は {} 時点のもので、接続が戻るまで編集できません</translation>
         </message>
         <message>
-            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
-            <translation>TAIWA_TOOL_DB: '{}' はサーバーのアドレスではありません（{}）</translation>
-        </message>
-        <message>
-            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
-            <translation>TAIWA_TOOL_DB: {} のアドレスにパスワードが含まれています。~/.pgpass かサービスファイルに書いてください（docs/shop-server.md）</translation>
-        </message>
-        <message>
             <source>tools as of {} (read only: {} cannot be reached)</source>
             <translation>{} 時点の工具（読み取り専用: {} に接続できません）</translation>
         </message>
         <message>
             <source>tools: {}</source>
             <translation>工具: {}</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}: 工具 T{} ({}): {}</translation>
         </message>
         <message>
             <source>{}: tool T{} ({}) holds a NUL character, which the server cannot store</source>
@@ -4518,6 +4490,26 @@ Theirs: %6</source>
         <message>
             <source>{} cannot be read ({})</source>
             <translation>{} を読めません（{}）</translation>
+        </message>
+        <message>
+            <source>{}: {} failed ({})</source>
+            <translation>{}: {} に失敗しました（{}）</translation>
+        </message>
+        <message>
+            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
+            <translation>{} は新しい Taiwa で作成されています（スキーマ バージョン {}）。このプログラムはバージョン {} まで対応します</translation>
+        </message>
+        <message>
+            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
+            <translation>{}: スキーマをバージョン {} から {} に更新できませんでした（{}）。ステーションのロールは読み書きのみ可能で、更新は所有者が行います（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
+            <translation>TAIWA_TOOL_DB: '{}' はサーバーのアドレスではありません（{}）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
+            <translation>TAIWA_TOOL_DB: {} のアドレスにパスワードが含まれています。~/.pgpass かサービスファイルに書いてください（docs/shop-server.md）</translation>
         </message>
         <message>
             <source>the name says {:g} mm, the diameter is {:g} mm</source>
@@ -4678,6 +4670,14 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0} ({1} mm {2}) は工程 {3} (ユニット {4} {5}) の途中で寿命に達します: 残り {6} 分、工程には {7} 分必要です。その工程の前に新しい工具に交換してください</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}: 工具 {} の種類 '{}' が不明です</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}: 工具 {} の旋削データ '{}' を読めません</translation>
         </message>
         <message>
             <source>allowance row {}: there is no edge {} in the profile</source>

@@ -4452,30 +4452,6 @@ Theirs: %6</source>
             <translation>{}：解锁作业 '{}' 失败（{}）</translation>
         </message>
         <message>
-            <source>{}: {} failed ({})</source>
-            <translation>{}：{} 失败（{}）</translation>
-        </message>
-        <message>
-            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
-            <translation>{} 由较新的 Taiwa 建立（架构版本 {}）；本程序支持到版本 {}</translation>
-        </message>
-        <message>
-            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
-            <translation>{}：无法将架构从版本 {} 升级到 {}（{}）；工位的角色只能读写，由所有者升级（docs/shop-server.md）</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has an unknown type '{}'</source>
-            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
-        </message>
-        <message>
-            <source>{}: tool {} has unreadable lathe data '{}'</source>
-            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
-        </message>
-        <message>
-            <source>{}: tool T{} ({}): {}</source>
-            <translation>{}：刀具 T{}（{}）：{}</translation>
-        </message>
-        <message>
             <source>{}: the local copy {} could not be written</source>
             <translation>{}：无法写入本地副本 {}</translation>
         </message>
@@ -4492,20 +4468,16 @@ Theirs: %6</source>
             <translation>无法连接 {}（{}）：刀具为 {} 时的状态，恢复连接前无法编辑</translation>
         </message>
         <message>
-            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
-            <translation>TAIWA_TOOL_DB：'{}' 不是服务器地址（{}）</translation>
-        </message>
-        <message>
-            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
-            <translation>TAIWA_TOOL_DB：{} 的地址中含有密码；请改写在 ~/.pgpass 或服务文件中（docs/shop-server.md）</translation>
-        </message>
-        <message>
             <source>tools as of {} (read only: {} cannot be reached)</source>
             <translation>{} 时的刀具（只读：无法连接 {}）</translation>
         </message>
         <message>
             <source>tools: {}</source>
             <translation>刀具：{}</translation>
+        </message>
+        <message>
+            <source>{}: tool T{} ({}): {}</source>
+            <translation>{}：刀具 T{}（{}）：{}</translation>
         </message>
         <message>
             <source>{}: tool T{} ({}) holds a NUL character, which the server cannot store</source>
@@ -4518,6 +4490,26 @@ Theirs: %6</source>
         <message>
             <source>{} cannot be read ({})</source>
             <translation>无法读取 {}（{}）</translation>
+        </message>
+        <message>
+            <source>{}: {} failed ({})</source>
+            <translation>{}：{} 失败（{}）</translation>
+        </message>
+        <message>
+            <source>{} was set up by a newer Taiwa (schema version {}); this program knows version {}</source>
+            <translation>{} 由较新的 Taiwa 建立（架构版本 {}）；本程序支持到版本 {}</translation>
+        </message>
+        <message>
+            <source>{}: the schema could not be brought from version {} to {} ({}); a station's role may only read and write, the owner upgrades it (docs/shop-server.md)</source>
+            <translation>{}：无法将架构从版本 {} 升级到 {}（{}）；工位的角色只能读写，由所有者升级（docs/shop-server.md）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: '{}' is not a server address ({})</source>
+            <translation>TAIWA_TOOL_DB：'{}' 不是服务器地址（{}）</translation>
+        </message>
+        <message>
+            <source>TAIWA_TOOL_DB: the address of {} holds a password; put it in ~/.pgpass or the service file instead (docs/shop-server.md)</source>
+            <translation>TAIWA_TOOL_DB：{} 的地址中含有密码；请改写在 ~/.pgpass 或服务文件中（docs/shop-server.md）</translation>
         </message>
         <message>
             <source>the name says {:g} mm, the diameter is {:g} mm</source>
@@ -4678,6 +4670,14 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0}（{1} mm {2}）将在工序 {3}（单元 {4} {5}）中达到寿命：剩余 {6} 分钟，该工序需要 {7} 分钟；请在该工序前换上新刀具</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has an unknown type '{}'</source>
+            <translation>{}：刀具 {} 的类型 '{}' 未知</translation>
+        </message>
+        <message>
+            <source>{}: tool {} has unreadable lathe data '{}'</source>
+            <translation>{}：刀具 {} 的车削数据 '{}' 无法读取</translation>
         </message>
         <message>
             <source>allowance row {}: there is no edge {} in the profile</source>
