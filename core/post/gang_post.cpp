@@ -133,6 +133,7 @@ PostedProgram postGangTool(const std::vector<Step>& steps, const std::vector<Too
     const GangPlace none{};       // at the program's start no tool offset is in force: the slide's reference
     const GangPlace* active = &none;
     std::optional<turning::ZR> tip;  // the programmed position (X as a radius) [mm]
+    std::optional<turning::ZR> before;  // and before the last motion written (the change point's rapid, replaced)
     PostedProgram out;
     const auto emit = [&](const std::string& line, BlockSource from) {
         out.nc += line + '\n';
@@ -146,10 +147,13 @@ PostedProgram postGangTool(const std::vector<Step>& steps, const std::vector<Too
             // The change point's rapid just before: Z clear instead, in the old tool's offset.
             const std::size_t last = out.nc.rfind('\n', out.nc.size() - 2) + 1;
             const auto [pn, pbody] = splitNumber(out.nc.substr(last, out.nc.size() - 1 - last));
-            // Z out from where the tip is (or stays, when already further): the slide's Z to keep.
-            const double slideZ = tip ? std::max(tip->z - active->offset.z, clearSlide) : clearSlide;
+            // Z out from where the tip was before the change point's rapid
+            // (or stays, when already further): the slide's Z to keep.
+            const bool replace = movesTo(pbody);
+            const std::optional<turning::ZR> from = replace ? before : tip;
+            const double slideZ = from ? std::max(from->z - active->offset.z, clearSlide) : clearSlide;
             const std::string clear = "G0 Z" + num(slideZ + active->offset.z);
-            if (movesTo(pbody)) {
+            if (replace) {
                 out.nc.resize(last);
                 out.nc += pn + clear + '\n';
             } else {
@@ -181,6 +185,7 @@ PostedProgram postGangTool(const std::vector<Step>& steps, const std::vector<Too
             turning::ZR p = tip.value_or(turning::ZR{clearSlide, options.latheChangeX / 2.0});
             if (const auto x = word(body, 'X')) p.r = toMm(*x, options.units) / 2.0;
             if (const auto z = word(body, 'Z')) p.z = toMm(*z, options.units);
+            before = tip;
             tip = p;
         }
         emit(lines[i], src);
