@@ -342,7 +342,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     return kOk;
 }
 
-int render(const Options& o, int& argc, char** argv)
+int render(const Options& o, [[maybe_unused]] int& argc, [[maybe_unused]] char** argv)
 {
 #ifdef TAIWA_WITH_RENDER
     // 4096 x 4096 takes seconds and ~1 GB with software rendering (8192 took 17 s and 5.8 GB).

@@ -45,7 +45,7 @@ using namespace taiwa::ui;
 
 // The station in `language` alone: the translations of the rows before are
 // taken out, then the language's installed (none for English).
-static bool switchLanguage(const QString& language)
+static bool onlyLanguage(const QString& language)
 {
     for (auto* t : QCoreApplication::instance()->findChildren<QTranslator*>()) {
         QCoreApplication::removeTranslator(t);
@@ -264,7 +264,7 @@ private slots:
     {
         QFETCH(QString, language);
         QFETCH(QSize, size);
-        QVERIFY(switchLanguage(language));
+        QVERIFY(onlyLanguage(language));
         StationWindow w(sample("plate.taiwa"));
         w.resize(size);
         w.show();
@@ -294,7 +294,7 @@ private slots:
     {
         QFETCH(QString, language);
         QFETCH(QSize, size);
-        QVERIFY(switchLanguage(language));
+        QVERIFY(onlyLanguage(language));
         const int screenHeight = size.width() == 1366 ? 768 : 720;
         const auto shoot = [&](StationWindow& w, const QString& module) {
             auto* unit = w.findChild<QWidget*>("unit.scroll")->parentWidget();
