@@ -5,7 +5,8 @@
 // move in the view puts the NC view's cursor on the block posted from it,
 // whose X and Y are the move's end. With TAIWA_SCREENSHOTS_DIR set it writes
 // docs/screenshots/station-surface.png: the station with the unit's form,
-// its finishing step selected and its paths over the surface.
+// its roughing step selected and its passes over the surface, and
+// station-surface-view.png, the 3-D view with the finishing paths.
 #include "support/images.h"
 #include "support/support.h"
 #include "ui/nc_view.h"
@@ -82,6 +83,8 @@ private slots:
         surface->SetVisibility(true);
         preview()->update();
         const int differ = test::differingPixels(shown, hidden);
+        qInfo("surface: %zu triangles; hiding it changes %d of %d pixels", scene.machinedSurfaceTriangles(), differ,
+              shown.width() * shown.height());
         QVERIFY2(differ > shown.width() * shown.height() / 50,
                  qPrintable(QString("%1 of %2 pixels").arg(differ).arg(shown.width() * shown.height())));
         QCOMPARE(test::differingPixels(shown, frame()), 0);
@@ -140,19 +143,29 @@ private slots:
         QVERIFY(std::hypot(endAt[0] - click.x(), endAt[1] - click.y()) < 10);
     }
 
-    // The station's picture with the surface unit, for docs/surfaces.md.
+    // The station's pictures with the surface unit, for docs/surfaces.md,
+    // over the glass stock (the surface in its colour between the paths):
+    // the window with the roughing step selected (its Z-level passes leave
+    // the surface to see), and the 3-D view alone with the finishing step's.
     void screenshot()
     {
         const QString out = qEnvironmentVariable("TAIWA_SCREENSHOTS_DIR");
         if (out.isEmpty()) QSKIP("TAIWA_SCREENSHOTS_DIR not set");
-        w_->stepPanel()->selectStep(finishingStep());
+        auto* stock = w_->findChild<QCheckBox*>("view.stock");
+        QVERIFY(stock);
+        if (stock->isChecked()) stock->click();
         w_->findChild<QAbstractButton*>("view.iso")->click();
         preview()->highlightMove(-1, -1);
+        QDir().mkpath(out);
+        w_->stepPanel()->selectStep(finishingStep() == 0 ? 1 : 0);
         QCoreApplication::processEvents();
         const QImage image = grabWithPreview(w_.get());
         QVERIFY(!image.isNull());
-        QDir().mkpath(out);
         QVERIFY(image.save(QDir(out).filePath("station-surface.png")));
+        w_->stepPanel()->selectStep(finishingStep());
+        QCoreApplication::processEvents();
+        QVERIFY(frame().save(QDir(out).filePath("station-surface-view.png")));
+        stock->click();
     }
 };
 
