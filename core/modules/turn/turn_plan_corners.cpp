@@ -17,7 +17,65 @@ ZR footOn(const Segment& s, ZR p)
     return s.a + dot(p - s.a, t) * t;
 }
 
+// The distance of `p` to the segment `s`.
+double distanceTo(const Segment& s, ZR p)
+{
+    if (s.arc) {
+        if (dist(p, s.centre) > 1e-12 && contains(s, s.centre + s.radius * unit(p - s.centre), 1e-7))
+            return std::abs(dist(p, s.centre) - s.radius);
+        return std::min(dist(p, s.a), dist(p, s.b));
+    }
+    const ZR d = s.b - s.a;
+    const double l2 = dot(d, d);
+    const double t = l2 > 0.0 ? std::clamp(dot(p - s.a, d) / l2, 0.0, 1.0) : 0.0;
+    return dist(p, s.a + t * d);
+}
+
 }  // namespace
+
+std::optional<NoseIntoPart> Planner::noseIntoPart(const std::vector<Segment>& contour, double rn) const
+{
+    const int air = inner_ ? 1 : -1;
+    const std::vector<std::optional<Segment>> centres = [&] {
+        std::vector<std::optional<Segment>> out;
+        for (const Segment& s : contour) out.push_back(offset(s, rn, air));
+        return out;
+    }();
+    const auto edgeOf = [&](const Segment& s, ZR at) {
+        for (std::size_t i = first_; i < last_; ++i)
+            if (dist(chain_[i].a, s.a) < 1e-7 && dist(chain_[i].b, s.b) < 1e-7) return d_.edges[i].id;
+        // A line or chord of the contour's own: the part's edge nearest the nose.
+        std::size_t best = first_;
+        for (std::size_t i = first_; i < last_; ++i)
+            if (distanceTo(chain_[i], at) < distanceTo(chain_[best], at)) best = i;
+        return d_.edges[best].id;
+    };
+    std::optional<NoseIntoPart> worst;
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (!centres[k]) continue;
+        // The nose centre's run along this element: from where it meets the
+        // previous one's at a concave corner to where it meets the next's.
+        double from = 0.0, to = length(*centres[k]);
+        const auto cornerAt = [&](std::size_t a, std::size_t b) -> std::optional<ZR> {
+            if (!centres[a] || !centres[b]) return std::nullopt;
+            if (s_ * cross(tangentAtEnd(contour[a]), tangentAtStart(contour[b])) >= -1e-9) return std::nullopt;  // convex
+            return nearest(intersections(curveOf(*centres[a]), curveOf(*centres[b])), contour[a].b);
+        };
+        if (k > 0)
+            if (const auto c = cornerAt(k - 1, k); c && contains(*centres[k], *c, 1e-6)) from = parameterOf(*centres[k], *c);
+        if (k + 1 < contour.size())
+            if (const auto c = cornerAt(k, k + 1); c && contains(*centres[k], *c, 1e-6)) to = parameterOf(*centres[k], *c);
+        const int n = std::max(8, static_cast<int>((to - from) / 0.02));
+        for (int i = 0; i <= n && to > from; ++i) {
+            const ZR c = pointAt(*centres[k], from + (to - from) * i / n);
+            for (std::size_t j = first_; j < last_; ++j) {
+                const double depth = rn - distanceTo(chain_[j], c);
+                if (depth > 2e-3 && (!worst || depth > worst->depth)) worst = NoseIntoPart{depth, c, edgeOf(contour[k], c)};
+            }
+        }
+    }
+    return worst;
+}
 
 bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chord) const
 {

@@ -118,6 +118,17 @@ void Planner::planFinishing(const Tool& tool)
     reachableCorners(contour, rn);
     // The lines that makes at arcs, at line corners in their turn.
     if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
+    // A contour along which the nose would cut the part is refused, not
+    // planned (the verification refuses such a plan: issue 33, item 3).
+    // Only asked of a plan not refused already (its reason comes first).
+    if (const auto into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt) {
+        problem("rows", fmt::format("{} cannot be finished as drawn: along it the nose R{} of {} would cut {} into the part with "
+                                    "its centre at X{} Z{} (a corner too tight for the nose next to it); change the allowance or the "
+                                    "corner there",
+                                    into->edge, len(rn), toolWords(tool), len(into->depth), len(2.0 * into->centre.r),
+                                    len(into->centre.z)));
+        return;
+    }
     TurnPath& p = ts.path;
     const ZR first = contour.front().a;
     const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};

@@ -43,6 +43,13 @@ inline constexpr const char* kPart = "part";
 
 inline std::string toolWords(const Tool& t) { return msg::toolName(t); }
 
+// Where the nose, along the finishing contour, would lie in the part.
+struct NoseIntoPart {
+    double depth = 0.0;
+    ZR centre;         // the nose centre there
+    std::string edge;  // the deformed edge it follows there (or the nearest)
+};
+
 // The whole plan of one unit, built step by step.
 class Planner {
 public:
@@ -218,6 +225,10 @@ private:
     // the point of A nearest its end from which a line to B's end lies over
     // the rest of A and makes a corner with A the nose holds; none when A is
     // not a convex arc or no such point exists.
+    // The deepest the nose (radius rn) goes into the part along the
+    // compensated contour (its centre's offsets trimmed at concave corners;
+    // at convex ones it rolls round the corner); none within 2 µm.
+    std::optional<NoseIntoPart> noseIntoPart(const std::vector<Segment>& contour, double rn) const;
     std::optional<ZR> ontoConvex(const Segment& A, const Segment& B, double rn) const;
 
     // ---- grooving --------------------------------------------------------
