@@ -29,8 +29,10 @@ vtkSmartPointer<vtkActor> machinedSurfaces(const std::vector<Step>& steps, std::
     auto polys = vtkSmartPointer<vtkCellArray>::New();
     std::size_t count = 0;
     for (const Step& step : steps) {
-        if (!step.path) continue;
-        const auto paths = moduleKind(step).machinedSurface(step);
+        // A step of no known module (a scene of hand-made steps) has no surface to show.
+        const ModuleKind* kind = step.path ? findModuleKind(step.module) : nullptr;
+        if (!kind) continue;
+        const auto paths = kind->machinedSurface(step);
         if (paths.empty()) continue;
         const surface::TriangleMesh mesh = surface::meshFromPaths(paths);
         const vtkIdType first = points->GetNumberOfPoints();
