@@ -113,6 +113,9 @@ public:
         grid_.emplace(ends_, inGrid, tolerance_);
         std::iota(parent_.begin(), parent_.end(), 0);
     }
+    // The grid holds a reference to ends_: a copy would look at another's.
+    Chainer(const Chainer&) = delete;
+    Chainer& operator=(const Chainer&) = delete;
 
     ChainResult run()
     {
