@@ -265,7 +265,7 @@ int verifyJob(const Options& o)
     if (l.exit != kOk) return l.exit;
     try {
         return printVerification(l.plan, o, fileName(o.job), dialectFor(o, l.plan)) ? kFindings : kOk;
-    } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
+    } catch (const Refusal& e) {  // --resolution too fine for this stock
         std::cerr << "taiwa: verify: " << e.what() << '\n';
         return kInputErrors;
     }
@@ -286,10 +286,8 @@ int exportJob(const Options& o, int& argc, char** argv)
     // A dialect that writes no lathe tape or no probing programs is refused
     // here, as an input error, whether --dialect or the job named it.
     if (const post::Dialect* d = post::findDialect(dialect)) {
-        if (auto why = l.plan.mmJob.bar ? post::cannotPost(*d, post::Task::LatheTape)
-                       : !l.plan.setups.empty() ? post::cannotPost(*d, post::Task::ProbingPrograms)
-                                                : std::nullopt) {
-            std::cerr << fileName(o.job) << ": dialect: " << *why << "; nothing was written\n";
+        if (auto can = post::canPost(*d, post::taskOf(l.plan.mmJob.bar.has_value(), !l.plan.setups.empty())); !can) {
+            std::cerr << fileName(o.job) << ": dialect: " << can.error() << "; nothing was written\n";
             return kInputErrors;
         }
     }
@@ -304,7 +302,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     bool reused = false;
     try {
         checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), tape, &reused);
-    } catch (const std::invalid_argument& e) {  // --resolution too fine for this stock
+    } catch (const Refusal& e) {  // --resolution too fine for this stock
         std::cerr << "taiwa: export: " << e.what() << '\n';
         return kInputErrors;
     }
@@ -397,8 +395,8 @@ int run(int argc, char** argv)
 {
     try {
         Options o;
-        if (auto err = parseOptions(argc, argv, o)) {
-            std::cerr << "taiwa: " << *err << "\nTry 'taiwa --help'.\n";
+        if (auto parsed = parseOptions(argc, argv, o); !parsed) {
+            std::cerr << "taiwa: " << parsed.error() << "\nTry 'taiwa --help'.\n";
             return kInputErrors;
         }
         switch (o.command) {

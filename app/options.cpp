@@ -20,32 +20,32 @@ std::optional<int> toInt(std::string_view s)
     return v;
 }
 
-std::optional<std::string> parseSize(std::string_view s, Options& o)
+Result<void> parseSize(std::string_view s, Options& o)
 {
     const auto x = s.find('x');
     const auto w = toInt(s.substr(0, x)), h = x == std::string_view::npos ? std::nullopt : toInt(s.substr(x + 1));
     // The upper bound is the renderer's (viz::kMaxRenderSide, checked by `render`).
     if (!w || !h || *w < 16 || *h < 16)
-        return "--size wants WIDTHxHEIGHT in pixels, at least 16, e.g. 800x600; got '" + std::string(s) + "'";
+        return Failure{"--size wants WIDTHxHEIGHT in pixels, at least 16, e.g. 800x600; got '" + std::string(s) + "'"};
     o.width = *w;
     o.height = *h;
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace
 
-std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
+Result<void> parseOptions(int argc, char** argv, Options& o)
 {
     std::vector<std::string_view> args(argv + 1, argv + argc);
     std::size_t i = 0;
     if (!args.empty()) {
         const auto first = args[0];
-        if (first == "--help" || first == "-h") { o.command = Command::Help; return std::nullopt; }
-        if (first == "--version") { o.command = Command::Version; return std::nullopt; }
+        if (first == "--help" || first == "-h") { o.command = Command::Help; return {}; }
+        if (first == "--version") { o.command = Command::Version; return {}; }
         if (first == "--list-machines" || first == "--list-dialects") {
-            if (args.size() > 1) return "'" + std::string(first) + "' takes no arguments";
+            if (args.size() > 1) return Failure{"'" + std::string(first) + "' takes no arguments"};
             o.command = first == "--list-machines" ? Command::ListMachines : Command::ListDialects;
-            return std::nullopt;
+            return {};
         }
         if (first == "check") o.command = Command::Check, i = 1;
         else if (first == "export") o.command = Command::Export, i = 1;
@@ -57,20 +57,20 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
         else if (first == "store") {  // store list, store history NAME
             o.command = Command::Store, i = 2;
             if (args.size() < 2 || (args[1] != "list" && args[1] != "history"))
-                return std::string("store wants 'list' or 'history NAME'") + (args.size() < 2 ? "" : ", not '" + std::string(args[1]) + "'");
+                return Failure{std::string("store wants 'list' or 'history NAME'") + (args.size() < 2 ? "" : ", not '" + std::string(args[1]) + "'")};
             o.storeAction = args[1];
         }
     }
     auto value = [&]() -> std::optional<std::string_view> {
-        if (i + 1 >= args.size()) return std::nullopt;
+        if (i + 1 >= args.size()) return {};
         return args[++i];
     };
     std::vector<std::string_view> seen;  // options given so far
     for (; i < args.size(); ++i) {
         const auto a = args[i];
-        if (a.empty()) return std::string("an empty argument");
+        if (a.empty()) return Failure{std::string("an empty argument")};
         if (a[0] != '-' || a == "-") {
-            if (!o.job.empty()) return "more than one job file given: '" + o.job + "' and '" + std::string(a) + "'";
+            if (!o.job.empty()) return Failure{"more than one job file given: '" + o.job + "' and '" + std::string(a) + "'"};
             o.job = a;
             continue;
         }
@@ -79,25 +79,25 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
                                 a == "--layers" || a == "--gap" || a == "--from-store";
         if (a == "--no-cache") {  // verify and export: the verification run afresh
             if (o.command != Command::Verify && o.command != Command::Export)
-                return "option --no-cache does not go with this command";
+                return Failure{"option --no-cache does not go with this command"};
             o.cache = false;
             continue;
         }
         if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
-            if (o.command != wanted) return "option " + std::string(a) + " does not go with this command";
+            if (o.command != wanted) return Failure{"option " + std::string(a) + " does not go with this command"};
             if (a == "--no-pictures") o.pictures = false;
             else (a == "--stock" ? o.stock : a == "--json" ? o.json : o.force) = true;
             continue;
         }
-        if (!takesValue) return "unknown option '" + std::string(a) + "'";
+        if (!takesValue) return Failure{"unknown option '" + std::string(a) + "'"};
         const auto v = value();
-        if (!v) return "option " + std::string(a) + " needs a value";
+        if (!v) return Failure{"option " + std::string(a) + " needs a value"};
         // Each option once, with a value: a second --out would silently win.
         if (std::find(seen.begin(), seen.end(), a) != seen.end())
-            return "option " + std::string(a) + " is given twice";
+            return Failure{"option " + std::string(a) + " is given twice"};
         seen.push_back(a);
-        if (v->empty()) return "option " + std::string(a) + " needs a value, not an empty one";
+        if (v->empty()) return Failure{"option " + std::string(a) + " needs a value, not an empty one"};
         const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render,
                    forImport = o.command == Command::Import, forDxf = o.command == Command::FigureFromDxf;
         if (a == "--tools" && !forImport && !forDxf) o.tools = *v;
@@ -108,29 +108,29 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             if (!isDialect(std::string(*v))) {
                 std::string names;
                 for (const auto& n : dialectNames()) names += (names.empty() ? "" : ", ") + n;
-                return "unknown dialect '" + std::string(*v) + "'; known: " + names;
+                return Failure{"unknown dialect '" + std::string(*v) + "'; known: " + names};
             }
             o.dialect = *v;
         } else if (a == "--units" && (forExport || forDxf)) {
             if (*v == "mm") o.units = LengthUnit::Millimetre;
             else if (*v == "inch") o.units = LengthUnit::Inch;
-            else return "--units is mm or inch, not '" + std::string(*v) + "'";
+            else return Failure{"--units is mm or inch, not '" + std::string(*v) + "'"};
         } else if (a == "--step" && forRender) {
             if (*v == "all") o.step.reset();
             else if (const auto k = toInt(*v)) o.step = *k;
-            else return "--step wants a step number or 'all', not '" + std::string(*v) + "'";
+            else return Failure{"--step wants a step number or 'all', not '" + std::string(*v) + "'"};
         } else if (a == "--size" && forRender) {
-            if (auto err = parseSize(*v, o)) return err;
+            if (auto size = parseSize(*v, o); !size) return size;
         } else if (a == "--resolution" && (forExport || o.command == Command::Verify)) {
             double r = 0.0;
             const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), r);
             if (ec != std::errc() || end != v->data() + v->size() || !(r >= 0.005) || r > 5.0)
-                return "--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(*v) + "'";
+                return Failure{"--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(*v) + "'"};
             o.resolution = r;
         } else if (a == "--layers" && forDxf) {
             for (std::size_t from = 0; from <= v->size();) {
                 const std::size_t comma = std::min(v->find(',', from), v->size());
-                if (comma == from) return "--layers wants layer names separated by commas, not '" + std::string(*v) + "'";
+                if (comma == from) return Failure{"--layers wants layer names separated by commas, not '" + std::string(*v) + "'"};
                 o.layers.emplace_back(v->substr(from, comma - from));
                 from = comma + 1;
             }
@@ -138,29 +138,29 @@ std::optional<std::string> parseOptions(int argc, char** argv, Options& o)
             double g = 0.0;
             const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), g);
             if (ec != std::errc() || end != v->data() + v->size())
-                return "--gap wants a distance in mm, not '" + std::string(*v) + "'";
+                return Failure{"--gap wants a distance in mm, not '" + std::string(*v) + "'"};
             o.gap = g;  // its range is the DXF import's to check
         } else if (a == "--view" && forRender) {
             if (*v != "iso" && *v != "top" && *v != "front" && *v != "profile")
-                return "--view is iso, top, front or profile, not '" + std::string(*v) + "'";
+                return Failure{"--view is iso, top, front or profile, not '" + std::string(*v) + "'"};
             o.view = *v;
         } else {
-            return "option " + std::string(a) + " does not go with this command";
+            return Failure{"option " + std::string(a) + " does not go with this command"};
         }
     }
-    if (o.command == Command::Import && o.job.empty()) return std::string("no STEP file given");
-    if (o.command == Command::FigureFromDxf && o.job.empty()) return std::string("no DXF file given");
-    if (o.command == Command::ImportTools && o.job.empty()) return std::string("no SQLite tool library given");
+    if (o.command == Command::Import && o.job.empty()) return Failure{std::string("no STEP file given")};
+    if (o.command == Command::FigureFromDxf && o.job.empty()) return Failure{std::string("no DXF file given")};
+    if (o.command == Command::ImportTools && o.job.empty()) return Failure{std::string("no SQLite tool library given")};
     if (o.command == Command::Store) {
-        if (o.storeAction == "list" && !o.job.empty()) return "store list takes no job name ('" + o.job + "')";
-        if (o.storeAction == "history" && o.job.empty()) return std::string("store history needs the job's name");
-        return std::nullopt;
+        if (o.storeAction == "list" && !o.job.empty()) return Failure{"store list takes no job name ('" + o.job + "')"};
+        if (o.storeAction == "history" && o.job.empty()) return Failure{std::string("store history needs the job's name")};
+        return {};
     }
-    if (!o.fromStore.empty() && !o.job.empty()) return "give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')";
-    if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return std::string("no job file given");
+    if (!o.fromStore.empty() && !o.job.empty()) return Failure{"give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')"};
+    if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return Failure{std::string("no job file given")};
     if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
-        return std::string("--out is required");
-    return std::nullopt;
+        return Failure{std::string("--out is required")};
+    return {};
 }
 
 }  // namespace taiwa::app

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "model/job.h"
+#include "model/result.h"
 
 #include <optional>
 #include <string>
@@ -37,7 +38,7 @@ struct Options {
     std::string fromStore;            // --from-store NAME (export): the job from the shop server's store
 };
 
-// Fills `o`; returns a message naming the bad argument, or nothing.
-std::optional<std::string> parseOptions(int argc, char** argv, Options& o);
+// Fills `o`; fails with a message naming the bad argument.
+Result<void> parseOptions(int argc, char** argv, Options& o);
 
 }  // namespace taiwa::app

@@ -29,7 +29,7 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
     if (!report.findings.empty()) {
         try {
             verify::placeOnTape(report, tape.emplace(postProcess(plan.steps, plan.tools, post)));
-        } catch (const std::invalid_argument&) {
+        } catch (const Refusal&) {
             tape.reset();
             // A dialect that cannot post this job: the findings keep their moves.
         }

@@ -353,8 +353,8 @@ private slots:
         QCOMPARE(p.names, std::vector<std::string>{"DXK1"});
         QVERIFY(p.text.find("DXP1 = POINT/") != std::string::npos);
         QVERIFY(p.text.find("DXC4 = CIRCLE/") != std::string::npos);
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, figureFromContours({c}, {{}, "1A"}));
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, figureFromContours({c}, {{}, "A-"}));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, figureFromContours({c}, {{}, "1A"}));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, figureFromContours({c}, {{}, "A-"}));
     }
 
     void contoursTheTextCannotHoldAreLeftOut()

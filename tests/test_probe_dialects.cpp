@@ -42,13 +42,13 @@ std::vector<std::pair<QString, Plan>> probingSamples()
     return plans;
 }
 
-// The message of the std::invalid_argument `f` throws; empty when it writes.
+// The message of the Refusal `f` throws; empty when it writes.
 template <typename F>
 QString refusal(F&& f)
 {
     try {
         f();
-    } catch (const std::invalid_argument& e) {
+    } catch (const Refusal& e) {
         return QString::fromStdString(e.what());
     }
     return {};
@@ -116,11 +116,11 @@ private slots:
         def["name"] = "shop840d";
         const auto d = post::readDialect(def.dump(2), "shop840d.json");
         QVERIFY2(d.ok(), d.ok() ? "" : d.error().c_str());
-        const auto why = post::cannotPost(d.value(), post::Task::ProbingPrograms);
-        QVERIFY(why);
-        QVERIFY2(why->starts_with("the shop840d dialect writes no probing unit's programs;") &&
-                     why->find("MEAS=1") != std::string::npos,
-                 why->c_str());
+        const auto can = post::canPost(d.value(), post::Task::ProbingPrograms);
+        QVERIFY(!can);
+        QVERIFY2(can.error().starts_with("the shop840d dialect writes no probing unit's programs;") &&
+                     can.error().find("MEAS=1") != std::string::npos,
+                 can.error().c_str());
     }
 
     // The ISO dialects write both programs for every sample; every other
@@ -130,13 +130,13 @@ private slots:
         const auto samples = probingSamples();
         int iso = 0;
         for (const post::Dialect& d : post::dialectLibrary()) {
-            const auto why = post::cannotPost(d, post::Task::ProbingPrograms);
+            const auto can = post::canPost(d, post::Task::ProbingPrograms);
             if (d.syntax != post::Syntax::Iso) {
-                QVERIFY2(why && why->find("manual pages at hand") != std::string::npos, d.name.c_str());
+                QVERIFY2(!can && can.error().find("manual pages at hand") != std::string::npos, d.name.c_str());
                 continue;
             }
             ++iso;
-            QVERIFY2(!why, why ? why->c_str() : "");
+            QVERIFY2(can, can ? "" : can.error().c_str());
             for (const auto& [name, plan] : samples) {
                 const WorkSetup& w = plan.setups.front();
                 PostOptions o;

@@ -837,7 +837,7 @@ private slots:
             try {
                 postGangTool(bore, library, shipped, pathsEnvelope(bore), o);
                 QFAIL("tool 104 posted");
-            } catch (const std::invalid_argument& e) {
+            } catch (const Refusal& e) {
                 QCOMPARE(QString(e.what()), QString("tools.T104: tool 104 has no mounting offset on the gang slide (gangSlide.tools)"));
             }
         }

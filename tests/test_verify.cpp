@@ -317,9 +317,9 @@ private slots:
         const Plan plan = test::samplePlan("m4-standard.taiwa");
         Options o;
         o.resolution = 0.001;
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, verifyPlan(plan, o));
+        QVERIFY_THROWS_EXCEPTION(Refusal, verifyPlan(plan, o));
         o.resolution = std::nan("");
-        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, verifyPlan(plan, o));
+        QVERIFY_THROWS_EXCEPTION(Refusal, verifyPlan(plan, o));
     }
 
     void samplesVerifyClean_data()

@@ -190,7 +190,7 @@ bool FileActions::exportTo(const ExportChoice& c)
         const verify::Report report = verifyPlanCached(*plan, v);
         for (const auto& f : report.findings)
             if (f.fatal()) faults.push_back(verify::describe(f, *plan));
-    } catch (const std::invalid_argument& e) {
+    } catch (const Refusal& e) {
         QMessageBox::warning(window_, tr("Export failed"), coreMessage(e.what()));
         return false;
     }

@@ -4,7 +4,6 @@
 #include "ui/profile_editor.h"
 #include "ui/core_messages.h"
 
-#include "tools/turning_tools.h"
 #include "turning/allowance.h"
 #include "turning/profile_resolve.h"
 #include "ui/number_text.h"
@@ -213,10 +212,8 @@ void ProfileEditor::refreshView()
     }
     const Resolution r = resolveProfile(profile_);
     std::optional<DeformedProfile> deformed;
-    if (r.ok()) {
-        AllowanceOptions o;
-        if (const Tool* t = finishingTurningTool(library_, profile_.side == ProfileSide::Inner)) o.noseRadius = t->cornerRadius;
-        Deformation d = applyAllowances(r.profile, profile_.allowances, o);
+    if (r.ok()) {  // as the check and the plan deform it (the module's one function)
+        Deformation d = deformProfile(profile_, r.profile, library_, LengthUnit::Millimetre);
         if (d.ok()) deformed = std::move(d.profile);
     }
     view_->setProfile(r.profile, deformed, bar_);

@@ -139,7 +139,7 @@ Result<void> renderToPng(const Plan& plan, const RenderOptions& o, const std::st
             auto map = std::make_shared<const verify::DeviationMap>(verify::deviationMap(plan, report));
             if (map->empty()) return Failure{"no colour map: a lathe job's view is its half-section"};
             scene.setDeviationMap(std::move(map));
-        } catch (const std::invalid_argument& e) {
+        } catch (const Refusal& e) {
             return Failure{std::string("no colour map: ") + e.what()};
         }
     }

@@ -1,6 +1,6 @@
-// The wording of the messages about codes, cutting data and tools
-// (messages.h): scallop, tool-use, wall-finish and pilot-hole codes, pins
-// and cutting keys, tools missing from the library or too large.
+// The wording of the messages about pins, cutting data and tools
+// (messages.h): unknown pin and cutting keys, cutting values out of range,
+// tools missing from the library or too large.
 #include "check/messages.h"
 #include "model/translate_noop.h"
 
@@ -8,48 +8,6 @@
 #include <fmt/ranges.h>
 
 namespace taiwa::msg {
-
-std::string scallopNotPositive(Len scallop)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP("taiwa::msg", "the scallop height is {}; it must be greater than zero (usual 0.01 mm)"),
-        quote(scallop));
-}
-
-std::string toolUseUndefined(int code)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                             "tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9"),
-        code);
-}
-
-std::string toolUseUnknown(int code)
-{
-    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9"),
-                       code);
-}
-
-std::string toolUseNotForM2D(int code)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                             "tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)"),
-        code);
-}
-
-std::string wallFinishUnknown(int code)
-{
-    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "finishing code F = {} does not exist; use 1, 2 or 3"), code);
-}
-
-std::string pilotHoleUnknown(int code)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                             "pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)"),
-        code);
-}
 
 std::string unknownPinKey(const std::string& key)
 {

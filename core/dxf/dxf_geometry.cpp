@@ -284,8 +284,8 @@ const char* typeName(RawEntity::Type t)
     return "?";
 }
 
-std::optional<std::string> buildPieces(const std::vector<RawEntity>& entities, double scale, double splineTolerance,
-                                       std::size_t segmentBudget, std::vector<Piece>& out, Notes& notes)
+Result<void> buildPieces(const std::vector<RawEntity>& entities, double scale, double splineTolerance, std::size_t segmentBudget,
+                         std::vector<Piece>& out, Notes& notes)
 {
     Builder b(scale, splineTolerance, out, notes);
     std::size_t segments = 0;
@@ -294,9 +294,9 @@ std::optional<std::string> buildPieces(const std::vector<RawEntity>& entities, d
         b.add(e);
         for (std::size_t i = before; i < out.size(); ++i) segments += out[i].segments.size();
         if (segments > segmentBudget)
-            return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the drawing needs more than {} segments: too large or too fine a spline tolerance"), segmentBudget);
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the drawing needs more than {} segments: too large or too fine a spline tolerance"), segmentBudget)};
     }
-    return std::nullopt;
+    return {};
 }
 
 }  // namespace taiwa::dxf::detail

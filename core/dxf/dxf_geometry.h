@@ -8,6 +8,7 @@
 #include "dxf/dxf_entities.h"
 #include "dxf/dxf_import.h"
 #include "dxf/dxf_notes.h"
+#include "model/result.h"
 
 #include <optional>
 #include <string>
@@ -24,8 +25,8 @@ struct Piece {
 
 // Appends the pieces of `entities` scaled by `scale` [mm per drawing unit];
 // an error when the drawing needs more than `segmentBudget` segments.
-std::optional<std::string> buildPieces(const std::vector<RawEntity>& entities, double scale, double splineTolerance,
-                                       std::size_t segmentBudget, std::vector<Piece>& out, Notes& notes);
+Result<void> buildPieces(const std::vector<RawEntity>& entities, double scale, double splineTolerance, std::size_t segmentBudget,
+                         std::vector<Piece>& out, Notes& notes);
 
 const char* typeName(RawEntity::Type t);
 

@@ -72,15 +72,15 @@ std::string layerList(const std::vector<LayerInfo>& layers)
     return s.empty() ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "none") : s;
 }
 
-std::optional<std::string> checkOptions(const DxfOptions& o)
+Result<void> checkOptions(const DxfOptions& o)
 {
     if (!(o.gapTolerance >= 1e-6 && o.gapTolerance <= 10.0))
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the gap tolerance {:g} mm is not between 0.000001 and 10 mm"), o.gapTolerance);
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the gap tolerance {:g} mm is not between 0.000001 and 10 mm"), o.gapTolerance)};
     if (!(o.splineTolerance >= 1e-4 && o.splineTolerance <= 10.0))
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the spline tolerance {:g} mm is not between 0.0001 and 10 mm"), o.splineTolerance);
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the spline tolerance {:g} mm is not between 0.0001 and 10 mm"), o.splineTolerance)};
     if (!(o.gapReportDistance >= 0.0 && o.gapReportDistance <= 1000.0))
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the gap report distance {:g} mm is not between 0 and 1000 mm"), o.gapReportDistance);
-    return std::nullopt;
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the gap report distance {:g} mm is not between 0 and 1000 mm"), o.gapReportDistance)};
+    return {};
 }
 
 }  // namespace
@@ -113,7 +113,7 @@ DxfReadResult readDxf(const std::filesystem::path& path, const DxfOptions& optio
 DxfReadResult readDxfBytes(std::string_view bytes, const DxfOptions& options)
 {
     DxfReadResult r;
-    if (auto e = checkOptions(options)) return failed(*e);
+    if (auto checked = checkOptions(options); !checked) return failed(checked.error());
     Notes notes;
     detail::ScanResult scan = detail::scanDxf(bytes, options.layers, notes);
     r.layers = std::move(scan.layers);
@@ -153,8 +153,8 @@ DxfReadResult readDxfBytes(std::string_view bytes, const DxfOptions& options)
                                       layerList(r.layers)));
     const std::vector<detail::RawEntity> entities = detail::decodeEntities(scan.entities);
     std::vector<detail::Piece> pieces;
-    if (auto e = detail::buildPieces(entities, r.unitScale, options.splineTolerance, kSegmentBudget, pieces, notes))
-        return fail(*e);
+    if (auto built = detail::buildPieces(entities, r.unitScale, options.splineTolerance, kSegmentBudget, pieces, notes); !built)
+        return fail(built.error());
     if (pieces.empty()) return fail(TAIWA_TRANSLATE_NOOP("taiwa::msg", "none of the entities on the selected layers could be read (see the warnings)"));
 
     detail::ChainResult chain =

@@ -221,10 +221,8 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), why->message)};
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; nothing was written"), options.dialect)};
-    if (auto why = plan.mmJob.bar ? post::cannotPost(*dialect, post::Task::LatheTape)
-                   : !plan.setups.empty() ? post::cannotPost(*dialect, post::Task::ProbingPrograms)
-                                          : std::nullopt)
-        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), *why)};
+    if (auto can = post::canPost(*dialect, post::taskOf(plan.mmJob.bar.has_value(), !plan.setups.empty())); !can)
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), can.error())};
     // The tape's file: STEM.nc, or the control's own kind (STEM.h for HEIDENHAIN).
     const std::string tape = "." + dialect->fileExtension;
     std::error_code ec;

@@ -40,7 +40,7 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
     try {
         programs = postBalancedCut(*cut, plan.steps, index, *machine->layout.multiPath, plan.tools,
                                    postOptions(plan, dialect, units, programNumber, stem));
-    } catch (const std::invalid_argument& e) {
+    } catch (const Refusal& e) {
         return Files{Failure{e.what()}};
     }
     const post::Dialect* d = post::findDialect(dialect);

@@ -137,10 +137,11 @@ nlohmann::json toJson(const verify::Report& r)
     return j;
 }
 
-// Throws nlohmann's exceptions on anything missing or of the wrong type.
+// Throws nlohmann's exceptions on anything missing or of the wrong type, and
+// Refusal (model/result.h) on a value out of place.
 verify::Report fromJson(const nlohmann::json& j)
 {
-    if (j.at("format").get<std::string>() != kFormat) throw std::runtime_error("another format");
+    if (j.at("format").get<std::string>() != kFormat) throw Refusal("another format", Place::atKey("format"));
     verify::Report r;
     r.resolution = j.at("resolution").get<double>();
     r.columns = j.at("columns").get<int>();
@@ -152,12 +153,12 @@ verify::Report fromJson(const nlohmann::json& j)
     for (const auto& e : j.at("findings")) {
         verify::Finding f;
         const int kind = e.at("kind").get<int>();
-        if (kind < 0 || kind > static_cast<int>(verify::FindingKind::RestMaterial)) throw std::runtime_error("kind");
+        if (kind < 0 || kind > static_cast<int>(verify::FindingKind::RestMaterial)) throw Refusal("no such kind", Place::atKey("findings.kind"));
         f.kind = static_cast<verify::FindingKind>(kind);
         f.step = e.at("step").get<int>();
         f.move = e.at("move").get<int>();
         const auto p = e.at("position").get<std::vector<double>>();
-        if (p.size() != 3) throw std::runtime_error("position");
+        if (p.size() != 3) throw Refusal("not three numbers", Place::atKey("findings.position"));
         f.position = {p[0], p[1], p[2]};
         f.size = e.at("size").get<double>();
         f.area = e.at("area").get<double>();

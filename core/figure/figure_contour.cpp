@@ -28,12 +28,6 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kOnElement = 1e-6;  // mm: an open contour's point on its element
 
-// A refusal of the contour, placed at the item it concerns.
-struct Refused {
-    std::string message;
-    Place at;
-};
-
 Point2 left(Point2 a) { return {-a.y, a.x}; }
 Point2 unit(Point2 v) { return (1.0 / length(v)) * v; }
 double angleOf(Point2 v) { return std::atan2(v.y, v.x); }
@@ -97,26 +91,24 @@ Point2 junction(const Run& a, const Run& b, std::optional<Modifier> m)
 {
     const auto pts = crossings(a, b);
     if (pts.empty()) {
-        if (!a.circle && !b.circle) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not meet"), a.name, b.name), b.at};
+        if (!a.circle && !b.circle) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not meet"), a.name, b.name), placeOf(b.at));
         if (a.circle && b.circle && distance(a.c.centre, b.c.centre) <= kTolerance)
-            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not meet"), a.name, b.name), b.at};
-        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), a.name, b.name), b.at};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not meet"), a.name, b.name), placeOf(b.at));
+        throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), a.name, b.name), placeOf(b.at));
     }
     if (pts.size() == 1) return pts[0];
     if (!m)
-        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before {} to choose"),
-                                  a.name, b.name, b.name),
-                      b.at};
+        throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} meet twice: write XLARGE, XSMALL, YLARGE or YSMALL before {} to choose"),
+                                  a.name, b.name, b.name), placeOf(b.at));
     const bool byX = *m == Modifier::XLarge || *m == Modifier::XSmall;
     const bool large = *m == Modifier::XLarge || *m == Modifier::YLarge;
     const double k0 = byX ? pts[0].x : pts[0].y;
     const double k1 = byX ? pts[1].x : pts[1].y;
     if (std::abs(k0 - k1) <= kTolerance)
-        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two junctions of {} and {}: both have the same x; use YLARGE or YSMALL"),
+        throw Refusal(byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two junctions of {} and {}: both have the same x; use YLARGE or YSMALL"),
                                         keyword(*m), a.name, b.name)
                           : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two junctions of {} and {}: both have the same y; use XLARGE or XSMALL"),
-                                        keyword(*m), a.name, b.name),
-                      b.at};
+                                        keyword(*m), a.name, b.name), placeOf(b.at));
     return ((k0 > k1) == large) ? pts[0] : pts[1];
 }
 
@@ -240,7 +232,7 @@ public:
         for (const auto& s : out.contour.segments)
             for (const Point2 q : {s.start, s.end, s.centre})
                 if (!std::isfinite(q.x) || !std::isfinite(q.y))
-                    throw Refused{TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)"), {}};
+                    throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)"), {});
         return out;
     }
 
@@ -254,7 +246,7 @@ private:
         const Point2 p = e->point;
         const Point2 f = foot(r, p);
         if (!(distance(p, f) <= kOnElement))
-            throw Refused{fmt::format(fmt::runtime(where), name, r.name), at};
+            throw Refusal(fmt::format(fmt::runtime(where), name, r.name), placeOf(at));
         return f;
     }
 
@@ -278,8 +270,7 @@ private:
         if (!p.run->circle) {
             p.len = distance(a, b);
             if (p.len <= kTolerance)
-                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is of zero length between {} and {}"), p.run->name, before(k), after(k)),
-                              p.run->at};
+                throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is of zero length between {} and {}"), p.run->name, before(k), after(k)), placeOf(p.run->at));
         } else if (distance(a, b) <= kTolerance) {  // from a point round to the same point: the whole circle
             p.b = p.end = a;
             p.len = kTwoPi * p.run->c.radius;
@@ -303,11 +294,10 @@ private:
         const Point2 d1 = directionAt(p1, at), d2 = directionAt(p2, at);
         const double turn = cross(d1, d2);
         if (std::abs(turn) <= 1e-9)
-            throw Refused{dot(d1, d2) > 0
+            throw Refusal(dot(d1, d2) > 0
                               ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: they meet tangentially, there is no corner"), what)
                               : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {} turns back along {}, there is no corner"), what, p2.run->name,
-                                            p1.run->name),
-                          s.valueAt};
+                                            p1.run->name), placeOf(s.valueAt));
         const double side = turn > 0 ? 1.0 : -1.0;
         Point2 t1, t2, centre;
         double back = s.value, fwd = s.value;
@@ -315,9 +305,8 @@ private:
             const Run o1 = offset(*p1.run, side, s.value, at, d1), o2 = offset(*p2.run, side, s.value, at, d2);
             for (const Run* r : {p1.run, p2.run})
                 if (r->circle && (r == p1.run ? o1 : o2).c.radius <= kTolerance)
-                    throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: it is not smaller than {}'s radius {}"), what, r->name,
-                                              formatNumber(r->c.radius)),
-                                  s.valueAt};
+                    throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: it is not smaller than {}'s radius {}"), what, r->name,
+                                              formatNumber(r->c.radius)), placeOf(s.valueAt));
             double best = HUGE_VAL;
             for (const Point2 c : crossings(o1, o2)) {
                 const Point2 a = foot(*p1.run, c), b = foot(*p2.run, c);
@@ -332,9 +321,8 @@ private:
                 centre = c;
             }
             if (best == HUGE_VAL)
-                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: no circle of radius {} touches both in the corner"), what,
-                                          formatNumber(s.value)),
-                              s.valueAt};
+                throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: no circle of radius {} touches both in the corner"), what,
+                                          formatNumber(s.value)), placeOf(s.valueAt));
         } else {
             t1 = walk(p1, at, s.value, -1);
             t2 = walk(p2, at, s.value, 1);
@@ -342,17 +330,15 @@ private:
         const double room1 = p1.len - p1.cutStart, room2 = p2.len - p2.cutEnd;
         const bool openStart = i == 0 && !c_.closed(), openEnd = k + 1 == runs_.size() && !c_.closed();
         if (back > room1 + kTolerance)
-            throw Refused{openStart ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long from the start {}"), what,
+            throw Refusal(openStart ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long from the start {}"), what,
                                                   p1.run->name, mm(room1), c_.start)
                                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long from the previous corner"), what,
-                                                  p1.run->name, mm(room1)),
-                          s.valueAt};
+                                                  p1.run->name, mm(room1)), placeOf(s.valueAt));
         if (fwd > room2 + kTolerance)
-            throw Refused{openEnd ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long to the end {}"), what,
+            throw Refusal(openEnd ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long to the end {}"), what,
                                                 p2.run->name, mm(room2), c_.end)
                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} does not fit: {} is {} mm long to the next corner"), what,
-                                                p2.run->name, mm(room2)),
-                          s.valueAt};
+                                                p2.run->name, mm(room2)), placeOf(s.valueAt));
         p1.end = t1;
         p1.cutEnd = back;
         p2.start = t2;
@@ -373,9 +359,9 @@ std::variant<EvaluatedContour, FigureError> evaluateContour(const Definition& d,
 {
     try {
         return Builder(d, before).build();
-    } catch (const Refused& r) {
-        const bool placed = r.at.line > 0;
-        return FigureError{placed ? r.at.line : d.line, placed ? r.at.column : d.column, d.name + ": " + r.message};
+    } catch (const Refusal& r) {  // placed at the item it concerns, else at the contour
+        const bool placed = r.place().line > 0;
+        return FigureError{placed ? r.place().line : d.line, placed ? r.place().column : d.column, d.name + ": " + r.message()};
     }
 }
 

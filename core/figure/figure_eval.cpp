@@ -42,11 +42,6 @@ namespace {
 
 Point2 left(Point2 a) { return {-a.y, a.x}; }  // a turned +90°
 
-// A refusal of the element being evaluated; caught per definition.
-struct Refused {
-    std::string message;
-};
-
 std::string num(double v) { return formatNumber(v); }
 
 constexpr const char* kCoincide = TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no circle through three points");
@@ -60,10 +55,10 @@ Point2 choose(Point2 a, Point2 b, Modifier m, const std::string& what)
     const double kb = byX ? b.x : b.y;
     if (std::abs(ka - kb) <= kTolerance) {
         if (length(a - b) <= kTolerance) return a;  // one candidate (touching): nothing to choose
-        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two {}: both have the same x; use YLARGE or YSMALL"),
+        throw Refusal(byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two {}: both have the same x; use YLARGE or YSMALL"),
                                         keyword(m), what)
                           : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot choose between the two {}: both have the same y; use XLARGE or XSMALL"),
-                                        keyword(m), what)};
+                                        keyword(m), what));
     }
     return ((ka > kb) == large) ? a : b;
 }
@@ -77,17 +72,17 @@ Point2 sideNormal(const Line& l, Modifier m, const std::string& lineName)
     const bool large = m == Modifier::XLarge || m == Modifier::YLarge;
     const double k = byX ? n.x : n.y;
     if (std::abs(k) <= 1e-12)
-        throw Refused{byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} names no side of {}: it is parallel to the X axis; use YLARGE or YSMALL"),
+        throw Refusal(byX ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} names no side of {}: it is parallel to the X axis; use YLARGE or YSMALL"),
                                         keyword(m), lineName)
                           : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} names no side of {}: it is parallel to the Y axis; use XLARGE or XSMALL"),
-                                        keyword(m), lineName)};
+                                        keyword(m), lineName));
     return ((k > 0) == large) ? n : -1.0 * n;
 }
 
 Point2 intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
 {
     const double det = cross(a.dir, b.dir);
-    if (std::abs(det) <= 1e-12) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not intersect"), an, bn)};
+    if (std::abs(det) <= 1e-12) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not intersect"), an, bn));
     const double t = cross(b.point - a.point, b.dir) / det;
     return a.point + t * a.dir;
 }
@@ -97,7 +92,7 @@ std::pair<Point2, Point2> intersectLineCircle(const Line& l, const Circle& c, co
 {
     const Point2 foot = l.point + dot(c.centre - l.point, l.dir) * l.dir;
     const double h = length(c.centre - foot);
-    if (h > c.radius + kTolerance) throw Refused{what};
+    if (h > c.radius + kTolerance) throw Refusal(what);
     const double half = std::sqrt(std::max(0.0, c.radius * c.radius - h * h));
     return {foot + half * l.dir, foot - half * l.dir};
 }
@@ -106,9 +101,9 @@ std::pair<Point2, Point2> intersectCircles(const Circle& a, const Circle& b, con
 {
     const Point2 d = b.centre - a.centre;
     const double dist = length(d);
-    if (dist <= kTolerance) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not intersect"), an, bn)};
+    if (dist <= kTolerance) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: they do not intersect"), an, bn));
     if (dist > a.radius + b.radius + kTolerance || dist < std::abs(a.radius - b.radius) - kTolerance)
-        throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), an, bn)};
+        throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} do not meet"), an, bn));
     const Point2 e = (1.0 / dist) * d;
     const double along = (dist * dist + a.radius * a.radius - b.radius * b.radius) / (2 * dist);
     const double h = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
@@ -145,7 +140,7 @@ public:
             const Point2 b = point(d.refs.at(1));
             const double len = length(b - a);
             if (len <= kTolerance)
-                throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no line through them"), d.refs[0], d.refs[1])};
+                throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no line through them"), d.refs[0], d.refs[1]));
             e.line = {a, (1.0 / len) * (b - a)};
             break;
         }
@@ -217,7 +212,7 @@ private:
         const Point2 toC = c.centre - p;
         const double dist = length(toC);
         if (dist < c.radius - kTolerance || dist <= kTolerance)
-            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is inside {}: no tangent from it"), d.refs[0], d.refs[1])};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is inside {}: no tangent from it"), d.refs[0], d.refs[1]));
         const Point2 u = (1.0 / dist) * toC;
         const double t = std::sqrt(std::max(0.0, dist * dist - c.radius * c.radius));
         const double s = d.modifiers.at(0) == Modifier::Left ? 1.0 : -1.0;
@@ -237,13 +232,13 @@ private:
         const Circle& c2 = circle(d.refs.at(1));
         const Point2 between = c2.centre - c1.centre;
         const double dist = length(between);
-        if (dist <= kTolerance) throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: no common tangent"), d.refs[0], d.refs[1])};
+        if (dist <= kTolerance) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are concentric: no common tangent"), d.refs[0], d.refs[1]));
         const bool same = d.modifiers.at(0) == d.modifiers.at(1);
         const double a = (same ? c1.radius - c2.radius : c1.radius + c2.radius) / dist;
         if (std::abs(a) > 1.0 + 1e-12)
-            throw Refused{same ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} lie one inside the other: no tangent on the same side of both"),
+            throw Refusal(same ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} lie one inside the other: no tangent on the same side of both"),
                                              d.refs[0], d.refs[1])
-                               : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} overlap: no tangent crossing between them"), d.refs[0], d.refs[1])};
+                               : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} overlap: no tangent crossing between them"), d.refs[0], d.refs[1]));
         const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
         const double s = d.modifiers[0] == Modifier::Left ? 1.0 : -1.0;
         const Point2 u = (1.0 / dist) * between;
@@ -256,14 +251,14 @@ private:
         const std::string& n0 = d.refs[0];
         const std::string& n1 = d.refs[1];
         const std::string& n2 = d.refs[2];
-        if (length(b - a) <= kTolerance) throw Refused{fmt::format(kCoincide, n0, n1)};
-        if (length(c - a) <= kTolerance) throw Refused{fmt::format(kCoincide, n0, n2)};
-        if (length(c - b) <= kTolerance) throw Refused{fmt::format(kCoincide, n1, n2)};
+        if (length(b - a) <= kTolerance) throw Refusal(fmt::format(kCoincide, n0, n1));
+        if (length(c - a) <= kTolerance) throw Refusal(fmt::format(kCoincide, n0, n2));
+        if (length(c - b) <= kTolerance) throw Refusal(fmt::format(kCoincide, n1, n2));
         const Point2 ab = b - a;
         const Point2 ac = c - a;
         const double det = 2 * cross(ab, ac);
         if (std::abs(det) <= 1e-12 * length(ab) * length(ac))
-            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {} and {} lie on one line: no circle through them"), n0, n1, n2)};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}, {} and {} lie on one line: no circle through them"), n0, n1, n2));
         // Centre relative to a: solves 2 ab·o = |ab|², 2 ac·o = |ac|².
         const double ab2 = dot(ab, ab);
         const double ac2 = dot(ac, ac);
@@ -287,8 +282,8 @@ private:
         const Circle& c = circle(d.refs.at(1));
         const bool out = d.modifiers.at(2) == Modifier::Out;
         if (!out && r >= c.radius - kTolerance)
-            throw Refused{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "radius {} is not smaller than {}'s radius {}: no circle inside it"), num(r), d.refs[1],
-                                      num(c.radius))};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "radius {} is not smaller than {}'s radius {}: no circle inside it"), num(r), d.refs[1],
+                                      num(c.radius)));
         const Circle locus{c.centre, out ? c.radius + r : c.radius - r};
         const auto two = intersectLineCircle(
             l, locus,
@@ -337,13 +332,13 @@ Evaluation evaluate(const std::vector<Definition>& definitions)
         }
         try {
             Element e = ev.element(d);
-            if (!finite(e)) throw Refused{TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)")};
+            if (!finite(e)) throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)"));
             ev.keep(e);
             out.elementIndex.emplace(e.name, out.elements.size());
             out.elements.push_back(std::move(e));
-        } catch (const Refused& r) {
+        } catch (const Refusal& r) {  // of the element being evaluated (model/result.h)
             missing.insert(d.name);
-            out.errors.push_back(FigureError{d.line, d.column, d.name + ": " + r.message});
+            out.errors.push_back(FigureError{d.line, d.column, d.name + ": " + r.message()});
         }
     }
     return out;

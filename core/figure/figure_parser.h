@@ -6,6 +6,7 @@
 
 #include "figure/figure_lexer.h"
 #include "figure/figure_text.h"
+#include "model/result.h"
 #include "model/translate_noop.h"
 
 #include <fmt/format.h>
@@ -45,11 +46,9 @@ inline bool isXY(Modifier m)
 
 inline constexpr const char* kXY = TAIWA_TRANSLATE_NOOP("taiwa::msg", "XLARGE, XSMALL, YLARGE or YSMALL");
 
-// Thrown inside the parser only, caught by parseFigure and turned into the
-// value it returns: the recursive descent stays readable.
-struct Refusal {
-    FigureError error;
-};
+// The parser refuses with taiwa::Refusal (model/result.h) at the text's line
+// and column; parseFigure catches it and returns it as a FigureError, so the
+// recursive descent stays readable.
 
 class Parser {
 public:
@@ -99,12 +98,12 @@ private:
 
     [[noreturn]] void fail(const Token& at, std::string message) const
     {
-        throw Refusal{FigureError{at.line, at.column, std::move(message)}};
+        throw taiwa::Refusal(std::move(message), taiwa::Place::inText(at.line, at.column));
     }
 
     [[noreturn]] static void failAt(const Place& at, std::string message)
     {
-        throw Refusal{FigureError{at.line, at.column, std::move(message)}};
+        throw taiwa::Refusal(std::move(message), taiwa::Place::inText(at.line, at.column));
     }
 
     [[noreturn]] void expected(const std::string& what) const

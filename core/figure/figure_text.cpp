@@ -85,7 +85,6 @@ std::string FigureError::text() const
 }
 
 using text::Parser;
-using text::Refusal;
 
 ParseResult parseFigure(std::string_view text)
 {
@@ -95,7 +94,7 @@ ParseResult parseFigure(std::string_view text)
         r.definitions = p.statements();
     } catch (const Refusal& refusal) {
         r.definitions.clear();
-        r.error = refusal.error;
+        r.error = FigureError{refusal.place().line, refusal.place().column, refusal.message()};
     }
     return r;
 }

@@ -8,6 +8,8 @@
 // contours' figure_contour.h).
 #pragma once
 
+#include "model/result.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,6 +49,8 @@ struct Place {
     int column = 0;
     int length = 0;
 };
+// The span's line and column as the place of a refusal (model/result.h).
+inline taiwa::Place placeOf(const Place& at) { return taiwa::Place::inText(at.line, at.column); }
 
 // A circle's direction in a contour (CLW, CCLW); None for a line.
 enum class Turn { None, Clockwise, CounterClockwise };

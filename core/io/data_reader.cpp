@@ -102,15 +102,14 @@ DataReader::DataReader(const std::string& text, const std::string& source) : sou
         // number too large).
         ErrorPosition at;
         json::sax_parse(text.begin(), text.end(), &at);
-        if (at.byte) throw DataRefusal{source_ + ":" + std::to_string(lineOfByte(text, *at.byte)) + ": not valid JSON"};
-        throw DataRefusal{source_ + ": " + doc.error};
+        if (at.byte) throw Refusal("not valid JSON", Place::inFile(source_, lineOfByte(text, *at.byte)));
+        throw Refusal(doc.error, Place::inFile(source_));
     }
     if (!doc.repeatedKeys.empty()) {
         const JsonPath& p = doc.repeatedKeys.front();
         const std::string key = joinPath(p.begin(), p.end());
         const int line = lineOfRepeat(text, p.back());
-        throw DataRefusal{source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + key +
-                          ": given twice (which one is meant is not for the program to guess)"};
+        throw Refusal("given twice (which one is meant is not for the program to guess)", Place::inFile(source_, line, key));
     }
     root_ = std::move(*doc.root);
     if (!root_.is_object()) fail("(file)", "not a JSON object");
@@ -121,7 +120,7 @@ void DataReader::fail(const std::string& key, const std::string& what) const
     const int line = lineOfKey(text_, key.substr(0, key.find('[')));
     // A key or a value of the file quoted in the message is shown as
     // printable text of one line (control bytes and broken UTF-8 as \xNN).
-    throw DataRefusal{source_ + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + clean(key) + ": " + clean(what)};
+    throw Refusal(clean(what), Place::inFile(source_, line, clean(key)));
 }
 
 const json* DataReader::find(const json& in, const std::string& key) const

@@ -1,9 +1,11 @@
 // The one validating reader of the shop's data files (dialects, machines):
 // the text parsed once with the job reader's guards (nesting, numbers too
 // large, keys given twice), then typed access with ranges, kinds and
-// printable texts; every refusal a DataRefusal naming "FILE:LINE: key: why".
+// printable texts; every refusal a Refusal (model/result.h) at FILE:LINE and key, "FILE:LINE: key: why".
 // The readers of post/dialect_data.cpp and machine/machine.cpp are built on it.
 #pragma once
+
+#include "model/result.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,14 +16,9 @@
 
 namespace taiwa::io {
 
-// Thrown by DataReader; caught by the file's reader and turned into a Failure.
-struct DataRefusal {
-    std::string message;
-};
-
 class DataReader {
 public:
-    // Parses `text`; refuses (throws DataRefusal) text that is not JSON, is
+    // Parses `text`; refuses (throws Refusal) text that is not JSON, is
     // nested too deep, holds a number too large, is not an object, or gives
     // a key twice in one object.
     DataReader(const std::string& text, const std::string& source);

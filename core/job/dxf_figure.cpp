@@ -34,11 +34,6 @@ using figure::Modifier;
 constexpr double kMerge = 1e-7;  // mm: collinear lines, arcs on one circle
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-// A contour that cannot be written; caught per contour.
-struct Refusal {
-    std::string message;
-};
-
 // v to the nearest multiple of 1/scale (scale a power of ten): the double
 // nearest that decimal, which formatNumber writes with no more digits.
 double rounded(double v, double scale)
@@ -93,7 +88,7 @@ public:
                         (isLetter(prefix_[0]) && std::all_of(prefix_.begin(), prefix_.end(), [](char c) {
                              return isLetter(c) || isDigit(c);
                          }));
-        if (!ok) throw std::invalid_argument("figure names: the prefix '" + n.prefix + "' is not letters and digits");
+        if (!ok) throw std::logic_error("figure names: the prefix '" + n.prefix + "' is not letters and digits");
         for (const auto& t : n.taken) taken_.insert(upper(t));
     }
     std::string next(char kind)
@@ -193,9 +188,9 @@ public:
     {
         const auto& s = c_.segments;
         const std::size_t n = s.size();
-        if (n == 0) throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no segments")};
+        if (n == 0) throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it has no segments"));
         if (c_.closed && n == 1 && !s[0].isArc())
-            throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "a closed contour of one line")};
+            throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a closed contour of one line"));
         // Junction k is where segment k starts: from segment k - 1 (closed: the last).
         tangent_.assign(n, false);
         for (std::size_t k = 0; k < n; ++k)
@@ -240,7 +235,7 @@ private:
     std::string point(Point2 p)
     {
         if (!(std::abs(p.x) <= figure::kMaxNumber && std::abs(p.y) <= figure::kMaxNumber))
-            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it reaches {}, beyond the ±1000000 mm the figure text can write"), at(p))};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it reaches {}, beyond the ±1000000 mm the figure text can write"), at(p)));
         const Point2 q = rounded(p, scale_);
         const auto key = std::make_pair(std::llround(q.x * scale_), std::llround(q.y * scale_));
         if (const auto it = pointNames_.find(key); it != pointNames_.end()) return it->second;
@@ -273,9 +268,9 @@ private:
         }
         r = rounded(r, scale_);
         if (!(r > 0.0))
-            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the arc around {} has a radius of {:g} mm, which rounds to nothing"),
-                                      at(s.centre), s.radius())};
-        if (r > figure::kMaxNumber) throw Refusal{TAIWA_TRANSLATE_NOOP("taiwa::msg", "an arc's radius is beyond the 1000000 mm the figure text can write")};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the arc around {} has a radius of {:g} mm, which rounds to nothing"),
+                                      at(s.centre), s.radius()));
+        if (r > figure::kMaxNumber) throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an arc's radius is beyond the 1000000 mm the figure text can write"));
         Definition d;
         d.name = names_.next('C');
         d.method = Method::CircleCenterRadius;
@@ -331,7 +326,7 @@ private:
         // attempt reads its whole text back and evaluates it all the same).
         arcs_ = std::any_of(segs.begin(), segs.end(), [](const ContourSegment& s) { return s.isArc(); });
         const figure::Evaluation ev = arcs_ ? figure::evaluate(elements) : figure::Evaluation{};
-        if (arcs_ && !ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements cannot be evaluated: {}"), ev.errors.front().message)};
+        if (arcs_ && !ev.ok()) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements cannot be evaluated: {}"), ev.errors.front().message));
         Definition d;
         d.name = names_.next('K');
         d.method = Method::Contour;
@@ -364,15 +359,15 @@ private:
         if (ea->kind != figure::Kind::Circle && eb->kind != figure::Kind::Circle) return std::nullopt;
         const auto two = crossings(*ea, *eb);
         if (two.empty())
-            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements {} and {} no longer meet at {} once written to {:g} mm"), a, b,
-                                      at(junction), 1.0 / scale_)};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its elements {} and {} no longer meet at {} once written to {:g} mm"), a, b,
+                                      at(junction), 1.0 / scale_));
         if (two.size() == 1) return std::nullopt;
         const bool first = distance(two[0], junction) <= distance(two[1], junction);
         const Point2 mine = first ? two[0] : two[1], other = first ? two[1] : two[0];
         const double dx = std::abs(mine.x - other.x), dy = std::abs(mine.y - other.y);
         if (std::max(dx, dy) <= figure::kTolerance)
-            throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two"),
-                                      a, b, at(junction), figure::kTolerance)};
+            throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two"),
+                                      a, b, at(junction), figure::kTolerance));
         if (dx >= dy) return mine.x > other.x ? Modifier::XLarge : Modifier::XSmall;
         return mine.y > other.y ? Modifier::YLarge : Modifier::YSmall;
     }
@@ -483,7 +478,7 @@ Attempt attempt(Namer& names, const Contour& c, double scale)
     const figure::ParseResult read = figure::parseFigure(a.text);
     if (!read.ok()) throw std::logic_error("dxf figure: written text refused: " + read.error->text());
     const figure::Evaluation ev = figure::evaluate(read.definitions);
-    if (!ev.ok()) throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text is refused: {}"), ev.errors.front().message)};
+    if (!ev.ok()) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text is refused: {}"), ev.errors.front().message));
     a.deviation = deviation(ev.contours.at(0).contour, c);
     return a;
 }
@@ -514,9 +509,9 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
                 Namer::Given taken = names.takeBack();
                 if (better) best = std::move(a), bestNames = std::move(taken);
                 if (best->deviation <= kFigureRoundTrip) break;
-            } catch (const Refusal& r) {
+            } catch (const Refusal& r) {  // a contour that cannot be written; caught per contour
                 names.takeBack();
-                if (why.empty()) why = r.message;
+                if (why.empty()) why = r.message();
             }
         }
         if (!best || !(best->deviation <= kFigureUsable)) {

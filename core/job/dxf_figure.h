@@ -21,7 +21,7 @@ namespace taiwa {
 // whose name is in `taken` (compared without regard to case, as the figure
 // language reads names); `prefix` goes before every name ("D": DP1, DL1,
 // DC1, DK1). The prefix must be letters and digits starting with a letter,
-// or empty (std::invalid_argument otherwise).
+// or empty (std::logic_error otherwise: the caller's prefix).
 struct FigureNaming {
     std::set<std::string> taken;
     std::string prefix;

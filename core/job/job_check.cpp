@@ -304,10 +304,8 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
                 const ModuleKind* k = findModuleKind(u.module.name());
                 return k && k->setsWorkOffset();
             });
-            if (auto refusal = lathe ? post::cannotPost(*d, post::Task::LatheTape)
-                               : probing ? post::cannotPost(*d, post::Task::ProbingPrograms)
-                                         : std::nullopt)
-                out.push_back(jobError("dialect", *refusal));
+            if (auto can = post::canPost(*d, post::taskOf(lathe, probing)); !can)
+                out.push_back(jobError("dialect", can.error()));
             // A two-path lathe's programs: the ISO dialects' waits (docs/two-path-lathe.md).
             else if (lathe && machine->layout.multiPath && d->syntax != post::Syntax::Iso)
                 out.push_back(jobError(

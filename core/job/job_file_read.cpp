@@ -23,7 +23,6 @@ namespace {
 
 using nlohmann::json;
 using io::ObjectFields;
-using io::Place;
 
 const std::vector<std::string> kJobKeys{"format",  "version", "name",     "lengthUnit", "material",      "machine", "workOffset",
                                         "dialect", "stock",   "clamping", "technology", "figure", "latheRoughing", "twoPath", "units"};
@@ -83,7 +82,7 @@ std::optional<MachiningUnit> readUnit(const json& unit, int number, DiagnosticSi
 {
     const std::string module = knownModule(unit);
     static const json kNoFields = json::object();
-    const ObjectFields f(unit.is_object() ? unit : kNoFields, Place{number, module.empty() ? "?" : module, ""},
+    const ObjectFields f(unit.is_object() ? unit : kNoFields, io::Place{number, module.empty() ? "?" : module, ""},
                          sink);
     if (!unit.is_object()) {
         f.error("", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), unit));
@@ -113,7 +112,7 @@ Stock readStock(const ObjectFields& job, std::optional<BarStock>& bar)
                              : msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object")));
         return s;
     }
-    const ObjectFields f(*v, Place{std::nullopt, "", "stock."}, job.sink());
+    const ObjectFields f(*v, io::Place{std::nullopt, "", "stock."}, job.sink());
     const auto shape = f.find("shape");
     if (shape && shape->is_string()
         && std::find(kStockShapes.begin(), kStockShapes.end(), shape->get<std::string>()) == kStockShapes.end()) {
@@ -180,7 +179,7 @@ std::optional<Clamping> readClamping(const ObjectFields& job)
         job.error("clamping", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return std::nullopt;
     }
-    const ObjectFields f(*v, Place{std::nullopt, "", "clamping."}, job.sink());
+    const ObjectFields f(*v, io::Place{std::nullopt, "", "clamping."}, job.sink());
     f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys);
     f.choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
     Clamping c;
@@ -200,7 +199,7 @@ TwoPathSettings readTwoPath(const ObjectFields& job)
         job.error("twoPath", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return t;
     }
-    const ObjectFields f(*v, Place{std::nullopt, "", "twoPath."}, job.sink());
+    const ObjectFields f(*v, io::Place{std::nullopt, "", "twoPath."}, job.sink());
     f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys);
     t.dwellRevolutions = f.number("dwellRevolutions", t.dwellRevolutions);
     if (const json* w = f.find("waitsEverywhere")) {
@@ -222,7 +221,7 @@ TechnologyOverrides readTechnology(const ObjectFields& job)
         job.error("technology", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
         return t;
     }
-    const ObjectFields f(*v, Place{std::nullopt, "", "technology."}, job.sink());
+    const ObjectFields f(*v, io::Place{std::nullopt, "", "technology."}, job.sink());
     f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys);
     t.alpha1 = f.optionalNumber("alpha1");
     t.alpha2 = f.optionalNumber("alpha2");
@@ -316,7 +315,7 @@ JobReadResult readJob(std::string_view text)
 
     DiagnosticSink sink;
     for (const auto& path : doc.repeatedKeys) reportRepeated(path, root, sink);
-    const ObjectFields f(root, Place{}, sink);
+    const ObjectFields f(root, io::Place{}, sink);
     f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a job"), kJobKeys);
     Job job;
     job.name = f.string("name", "");

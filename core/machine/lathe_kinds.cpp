@@ -38,11 +38,9 @@ const GangPlace* GangSlide::place(int tool) const
 
 namespace {
 
-struct Refused : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void refuse(const std::string& key, const std::string& what) { throw Refused(key + ": " + what); }
+// The machine file's key and what is wrong with it; readLatheLayout returns it
+// as its Failure ("paths[1].turret: missing").
+[[noreturn]] void refuse(const std::string& key, const std::string& what) { throw Refusal(what, Place::atKey(key)); }
 
 double number(const json& o, const char* key, const std::string& path)
 {
@@ -159,8 +157,8 @@ Result<LatheLayout> readLatheLayout(const json& machine)
             l.gang = readGang(machine, xDiameter);
         }
         return l;
-    } catch (const Refused& e) {
-        return Failure{e.what()};
+    } catch (const Refusal& e) {
+        return e.failure();
     }
 }
 

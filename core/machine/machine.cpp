@@ -157,8 +157,8 @@ Result<Machine> readMachine(const std::string& text, const std::string& source)
 {
     try {
         return Reader(text, source).read();
-    } catch (const io::DataRefusal& r) {
-        return Failure{r.message};
+    } catch (const Refusal& r) {  // at the file's line and key
+        return r.failure();
     }
 }
 

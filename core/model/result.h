@@ -1,16 +1,22 @@
-// The one way a function says that the program's own work failed: a file that
-// cannot be written, a database that cannot be opened, a picture that cannot
-// be drawn. Result<T> holds the value or a Failure, one sentence naming the
-// thing and what is wrong.
+// How a function says that what it was given is refused, or that its work
+// failed: Result<T> holds the value or a Failure, one sentence naming the
+// thing and what is wrong, and the Place it is at. Refusal is the one
+// exception type for what the operator must fix, thrown deep inside a reader
+// or an evaluator and caught at that reader's door, where it becomes a
+// Failure, a Diagnostic or a figure error.
 //
-// The three kinds of trouble and how each is told (docs/decisions.md):
+// The kinds of trouble and how each is told (docs/decisions.md):
 // - what the operator must fix in the job: a Diagnostic (model/diagnostic.h),
 //   naming unit and field, collected, never thrown;
-// - what the machine or its files refuse: a Failure in a Result;
+// - what the operator must fix elsewhere (a command-line option, a machine,
+//   dialect, technology or tool file, a STEP, DXF or figure text), and what
+//   the machine or its files refuse: a Failure in a Result, carrying its
+//   Place; inside a reader, a Refusal until its door;
 // - a broken invariant, i.e. a bug: std::logic_error, caught at the top and
-//   reported as an internal failure.
+//   reported as an internal failure. Never for anything the operator typed.
 #pragma once
 
+#include <exception>
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,8 +24,66 @@
 
 namespace taiwa {
 
+// Where the operator finds what is refused: a file and its line, column and
+// key, a text's line and column, an option, or a unit's field. Every part
+// may be empty; text() writes the parts there are.
+struct Place {
+    std::string file;  // a file's path or a document's name ("materials.json", "--resolution")
+    int line = 0;      // 1-based; 0 when not known
+    int column = 0;    // 1-based; 0 when not known
+    std::string key;   // a data file's key ("dialects/haas.json: blockNumbers"), or a unit's field
+    int unit = 0;      // 1-based unit of the job; 0 for none
+
+    // A file's path or name, its line and its key ("haas.json", 12, "lineLength").
+    static Place inFile(std::string path, int line = 0, std::string key = {})
+    {
+        Place p;
+        p.file = std::move(path), p.line = line, p.key = std::move(key);
+        return p;
+    }
+    // A text's line and column (a figure's statement).
+    static Place inText(int line, int column)
+    {
+        Place p;
+        p.line = line, p.column = column;
+        return p;
+    }
+    // A key of a data file, or a job's field, the file not named.
+    static Place atKey(std::string key)
+    {
+        Place p;
+        p.key = std::move(key);
+        return p;
+    }
+
+    bool empty() const { return file.empty() && line == 0 && key.empty() && unit == 0; }
+    // "haas.json:12:3: lineLength", "line 4, column 7", "unit 2: depth";
+    // empty for an empty place.
+    std::string text() const;
+    friend bool operator==(const Place&, const Place&) = default;
+};
+
 struct Failure {
-    std::string message;
+    std::string message;  // the whole sentence, with its place in words
+    Place place{};        // the same place, for a program to go to
+};
+
+// What the operator must fix, on its way from deep inside a reader to that
+// reader's door. what() is the message with its place in front
+// ("machines/x.json: turret.slots: must be a positive number").
+class Refusal : public std::exception {
+public:
+    explicit Refusal(std::string message, Place place = {});
+    const char* what() const noexcept override { return text_.c_str(); }
+    const std::string& message() const { return message_; }  // without the place
+    const Place& place() const { return place_; }
+    // As a Failure: what() and the place.
+    Failure failure() const { return Failure{text_, place_}; }
+
+private:
+    std::string message_;
+    Place place_;
+    std::string text_;
 };
 
 template <class T>

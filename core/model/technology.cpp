@@ -4,18 +4,22 @@
 
 #include "builtin_data.h"
 #include "model/local_names_json.h"
+#include "model/result.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <stdexcept>
 
 namespace taiwa {
 
+namespace {
+constexpr const char* kTable = "technology table";  // the place every refusal names
+}  // namespace
+
 TechnologyTable TechnologyTable::fromJson(const std::string& text)
-{
+try {
     const auto doc = nlohmann::json::parse(text);
-    if (doc.value("format", "") != "taiwa-technology") throw std::runtime_error("technology table: format is not taiwa-technology");
+    if (doc.value("format", "") != "taiwa-technology") throw Refusal("format is not taiwa-technology", Place::inFile(kTable));
     TechnologyTable table;
     for (const auto& m : doc.at("materials")) {
         MaterialTechnology mt;
@@ -23,13 +27,13 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
         mt.description = m.value("description", mt.id);
         if (m.contains("names")) {
             auto names = localNamesFrom(m["names"]);
-            if (!names) throw std::runtime_error("technology table: material " + mt.id + ": names: " + names.error());
+            if (!names) throw Refusal(names.error(), Place::inFile(kTable, 0, "material " + mt.id + ": names"));
             mt.names = std::move(*names);
         }
         auto num = [&](const char* key) {
-            if (!m.contains(key) || !m[key].is_number()) throw std::runtime_error("technology table: material " + mt.id + ": " + key + " is missing or not a number");
+            if (!m.contains(key) || !m[key].is_number()) throw Refusal(key + std::string(" is missing or not a number"), Place::inFile(kTable, 0, "material " + mt.id));
             const double v = m[key].get<double>();
-            if (!std::isfinite(v) || v <= 0) throw std::runtime_error("technology table: material " + mt.id + ": " + key + " must be a positive number");
+            if (!std::isfinite(v) || v <= 0) throw Refusal(key + std::string(" must be a positive number"), Place::inFile(kTable, 0, "material " + mt.id));
             return v;
         };
         mt.data.alpha1 = num("alpha1");
@@ -43,7 +47,7 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
             auto turn = [&](const char* key, double& v) {
                 if (!t.contains(key)) return;
                 if (!t[key].is_number() || !std::isfinite(t[key].get<double>()) || t[key].get<double>() <= 0)
-                    throw std::runtime_error("technology table: material " + mt.id + ": turning." + key + " must be a positive number");
+                    throw Refusal("turning." + std::string(key) + " must be a positive number", Place::inFile(kTable, 0, "material " + mt.id));
                 v = t[key].get<double>();
             };
             turn("depthOfCut", mt.data.turning.depthOfCut);
@@ -56,6 +60,8 @@ TechnologyTable TechnologyTable::fromJson(const std::string& text)
         table.materials_.push_back(std::move(mt));
     }
     return table;
+} catch (const nlohmann::json::exception& e) {  // not JSON, or a key missing or of another type
+    throw Refusal(e.what(), Place::inFile(kTable));
 }
 
 const TechnologyTable& TechnologyTable::builtIn()

@@ -78,7 +78,7 @@ public:
     // The table shipped with the program (compiled in from resources/).
     static const TechnologyTable& builtIn();
     // Parse a table in the format of resources/technology/materials.json.
-    // Throws std::runtime_error naming the material and field on bad input.
+    // Throws Refusal (model/result.h) naming the material and field on bad input.
     static TechnologyTable fromJson(const std::string& text);
 
     const MaterialTechnology* find(const std::string& id) const;

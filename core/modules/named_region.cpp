@@ -5,6 +5,7 @@
 
 #include "check/messages.h"
 #include "model/clipper_scale.h"
+#include "modules/region_messages.h"
 
 #include <fmt/format.h>
 

@@ -43,7 +43,7 @@ namespace {
 
 void requirePositiveGamma(const TechnologyData& tech)
 {
-    if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+    if (!(tech.gamma > 0.0)) throw std::logic_error("gamma must be positive");
 }
 
 // Rank of a step within its unit: the pilot hole, then roughing, then the

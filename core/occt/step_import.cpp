@@ -56,10 +56,6 @@ const char* surfaceName(GeomAbs_SurfaceType t)
     }
 }
 
-struct Refusal {
-    std::string message;
-};
-
 // A point to 1 nm, so that what was modelled as 0 or 15 reads as 0 or 15.
 double clean(double v)
 {
@@ -80,7 +76,8 @@ public:
     }
 
 private:
-    [[noreturn]] void refuse(const std::string& why) const { throw Refusal{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), path_, why)}; }
+    // The file and what is wrong with it ("shaft.step: it holds no solid").
+    [[noreturn]] void refuse(const std::string& why) const { throw Refusal(why, Place::inFile(path_)); }
 
     TopoDS_Shape readSolid()
     {
@@ -359,9 +356,10 @@ Result<ImportedProfiles> importStepProfiles(const std::string& path)
         Importer::frontAtZero(p);
         return p;
     } catch (const Refusal& r) {
-        return Failure{r.message};
+        return r.failure();
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE failed reading it: {}"), path, e.GetMessageString())};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE failed reading it: {}"), path, e.GetMessageString()),
+                       Place::inFile(path)};
     }
 }
 

@@ -23,7 +23,7 @@ double cutLength(Point3 from, const Move& m)
 double minutesAt(double mm, double rate)
 {
     if (mm <= 0.0) return 0.0;
-    if (!(rate > 0.0)) throw std::invalid_argument("a feed rate used by the path is not positive");
+    if (!(rate > 0.0)) throw std::logic_error("a feed rate used by the path is not positive");
     return mm / rate;
 }
 

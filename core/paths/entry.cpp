@@ -93,7 +93,7 @@ void appendEntry(PathBuilder& b, const Entry& e, double z, double rampAngle, boo
 {
     b.feed(at(e.point, b.at().z));
     if (e.kind == Entry::Kind::Helix || e.kind == Entry::Kind::LinearRamp)
-        if (!(rampAngle > 0.0 && rampAngle < 90.0)) throw std::invalid_argument("ramp angle must lie between 0 and 90 degrees");
+        if (!(rampAngle > 0.0 && rampAngle < 90.0)) throw std::logic_error("ramp angle must lie between 0 and 90 degrees");
     const double tanRamp = tanDeg(rampAngle);
     switch (e.kind) {
     case Entry::Kind::PilotHole:

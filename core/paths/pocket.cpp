@@ -155,7 +155,7 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
     // A tool within the fit tolerance of the corner radius runs it as its own.
     const Quad outline{counterClockwise(step.outline->corners), std::max(step.outline->cornerRadius, R)};
     if (maxOffset(outline) < R - 1e-9) throw std::logic_error("pocket narrower than the tool");
-    if (!(stepOver > 0.0 && stepOver < 2 * R)) throw std::invalid_argument("step-over must lie between 0 and D");
+    if (!(stepOver > 0.0 && stepOver < 2 * R)) throw std::logic_error("step-over must lie between 0 and D");
 
     const Entry entry = chooseEntry(outline, R, hole, step.position);
     const auto offsets = ringOffsets(outline, R, stepOver);

@@ -64,7 +64,7 @@ std::vector<double> incisionDepths(const Step& step, const Tool& tool, const Tec
     // One at full depth, or equal steps of at most gamma x D.
     std::vector<double> depths{step.cutDepth};
     if (!step.multiIncision) return depths;
-    if (!(tech.gamma > 0.0)) throw std::invalid_argument("gamma must be positive");
+    if (!(tech.gamma > 0.0)) throw std::logic_error("gamma must be positive");
     const double range = step.cutDepth - step.startDepth;
     const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
     depths.clear();

@@ -187,7 +187,7 @@ Result<std::vector<Picture>> stepPictures(const Plan& plan, int width, int heigh
             const Step& step = plan.steps[static_cast<std::size_t>(k)];
             out.push_back(heightFieldPicture(*after, before.get(), step.path ? &*step.path : nullptr, width, height));
         }
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::logic_error& e) {  // a bug of the simulation costs the pictures, not the export
         return Failure{std::string("the stock cannot be simulated: ") + e.what()};
     }
     return out;

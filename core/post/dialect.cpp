@@ -59,8 +59,8 @@ std::string workOffsetWords(const Dialect& d, const std::string& requested)
         const std::string last = extendedWords(d.extendedWorkOffsets);
         offers = and_(offers, to(extendedWords(1), last.substr(last.rfind(' ') + 1)));
     }
-    const auto refuse = [&](const std::string& why) {
-        return std::invalid_argument(
+    const auto refuse = [&](const std::string& why) {  // the operator's work offset
+        return Refusal(
             fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "work offset '{}' cannot be posted for {}: {}; {} offers {}"), requested, d.name, why, d.name,
                         offers));
     };
@@ -100,6 +100,7 @@ namespace {
 bool posts(const Dialect& d, Task task)
 {
     switch (task) {
+    case Task::MillingTape: return true;
     case Task::LatheTape: return d.syntax != Syntax::Klartext;
     case Task::ProbingPrograms: return d.syntax == Syntax::Iso;
     }
@@ -127,16 +128,16 @@ std::string whyNoProbing(Syntax syntax)
 
 }  // namespace
 
-std::optional<std::string> cannotPost(const Dialect& d, Task task)
+Result<void> canPost(const Dialect& d, Task task)
 {
-    if (posts(d, task)) return std::nullopt;
+    if (posts(d, task)) return {};
     std::string can;
     for (const Dialect& other : dialectLibrary())
         if (posts(other, task)) can += (can.empty() ? "" : ", ") + other.name;
     if (task == Task::LatheTape)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can"), d.name, can);
-    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no probing unit's programs; {} can ({})"), d.name, can,
-                       whyNoProbing(d.syntax));
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no lathe tapes (Klartext is a milling control's language); {} can"), d.name, can)};
+    return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no probing unit's programs; {} can ({})"), d.name, can,
+                       whyNoProbing(d.syntax))};
 }
 
 const Dialect* findDialect(const std::string& name)
@@ -144,6 +145,12 @@ const Dialect* findDialect(const std::string& name)
     for (const Dialect& d : dialectLibrary())
         if (d.name == name) return &d;
     return nullptr;
+}
+
+const Dialect& dialectNamed(const std::string& name)
+{
+    if (const Dialect* d = findDialect(name)) return *d;
+    throw Refusal("unknown dialect '" + name + "'");
 }
 
 }  // namespace taiwa::post
@@ -165,7 +172,7 @@ std::optional<Diagnostic> workOffsetProblem(const std::string& dialect, const st
     if (!d) return std::nullopt;
     try {
         post::workOffsetWords(*d, workOffset);
-    } catch (const std::invalid_argument& e) {
+    } catch (const Refusal& e) {
         return Diagnostic{Severity::Error, std::nullopt, "", "workOffset", e.what()};
     }
     return std::nullopt;

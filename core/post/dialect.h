@@ -110,7 +110,7 @@ struct Dialect {
 
 // The words that select the work offset `requested` (a job's "workOffset":
 // "G55", "g55", "G54.1 P7", "G54.1P7", "G59.2") on the dialect's controller,
-// written the one way ("G55", "G54.1 P7"). Throws std::invalid_argument,
+// written the one way ("G55", "G54.1 P7"). Throws Refusal (model/result.h),
 // saying what the controller offers, for one it does not have.
 std::string workOffsetWords(const Dialect& dialect, const std::string& requested);
 
@@ -124,19 +124,26 @@ const std::vector<Dialect>& dialectLibrary();
 // The shop's files that were left out, one sentence each.
 const std::vector<std::string>& dialectLibraryProblems();
 
-// What a dialect may not write beside milling tapes: a lathe tape (not in
+// What a job asks of a dialect: a milling tape, which every dialect writes, a
+// lathe tape (not in
 // Klartext: HEIDENHAIN's lathe controls do not speak it) and a probing
 // unit's programs (the G-code dialects with FANUC or LinuxCNC macros; not
 // SINUMERIK nor Klartext, whose probing constructs the manual pages at hand
 // do not confirm: docs/probing.md).
-enum class Task { LatheTape, ProbingPrograms };
-// Nothing when `d` writes `task`; else the sentence refusing it, naming the
+enum class Task { MillingTape, LatheTape, ProbingPrograms };
+// What a job of a bar (lathe), or else with work setups to probe, or else of
+// milling, asks.
+inline Task taskOf(bool bar, bool probing) { return bar ? Task::LatheTape : probing ? Task::ProbingPrograms : Task::MillingTape; }
+// Ok when `d` writes `task`; else the Failure refusing it, naming the
 // dialects that can (for probing, and why this one cannot).
-std::optional<std::string> cannotPost(const Dialect& d, Task task);
+Result<void> canPost(const Dialect& d, Task task);
 
 const Dialect& fanucDialect();
 const Dialect& linuxcncDialect();
 
 const Dialect* findDialect(const std::string& name);
+// The dialect of that name; throws Refusal (model/result.h), "unknown
+// dialect 'x'", for none: the posts' one look-up.
+const Dialect& dialectNamed(const std::string& name);
 
 }  // namespace taiwa::post

@@ -22,7 +22,6 @@ namespace taiwa::post {
 namespace {
 
 using json = nlohmann::json;
-using io::DataRefusal;
 
 // How a word's text is judged against the dialect's syntax.
 enum class Role {
@@ -334,8 +333,8 @@ Result<Dialect> readDialect(const std::string& text, const std::string& source)
 {
     try {
         return Reader(text, source).read();
-    } catch (const DataRefusal& r) {
-        return Failure{r.message};
+    } catch (const Refusal& r) {  // at the file's line and key
+        return r.failure();
     }
 }
 

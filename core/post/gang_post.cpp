@@ -96,11 +96,10 @@ PartEnvelope pathsEnvelope(const std::vector<Step>& steps)
 PostedProgram postGangTool(const std::vector<Step>& steps, const std::vector<Tool>& library, const GangSlide& slide,
                            const PartEnvelope& part, const PostOptions& options)
 {
-    const post::Dialect* d = post::findDialect(options.dialect);
-    if (!d) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
+    const post::Dialect* d = &post::dialectNamed(options.dialect);
     for (const Step& s : steps)
         if (s.tool && !slide.place(s.tool->toolId))
-            throw std::invalid_argument(
+            throw Refusal(
                 fmt::format("tools.T{0}: tool {0} has no mounting offset on the gang slide (gangSlide.tools)", s.tool->toolId));
     const PostedProgram posted = postLathe(steps, library, options);
 

@@ -23,7 +23,7 @@ namespace taiwa {
 PartEnvelope pathsEnvelope(const std::vector<Step>& steps);
 
 // `steps`, `library`, `options` as for postProcess. Throws
-// std::invalid_argument as postProcess does, and naming the tool
+// as postProcess does, and Refusal naming the tool
 // (`tools.T104: tool 104 has no mounting offset on the gang slide
 // (gangSlide.tools)`) for a tool that has no place on the slide.
 PostedProgram postGangTool(const std::vector<Step>& steps, const std::vector<Tool>& library, const GangSlide& slide,

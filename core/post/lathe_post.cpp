@@ -173,13 +173,13 @@ std::vector<std::pair<int, int>> latheStations(const std::vector<Step>& orderedS
 
 PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options)
 {
-    const post::Dialect* dialect = post::findDialect(options.dialect);
-    if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
-    if (const auto why = post::cannotPost(*dialect, post::Task::LatheTape)) throw std::invalid_argument(*why);
+    const post::Dialect* dialect = &post::dialectNamed(options.dialect);
+    if (const auto can = post::canPost(*dialect, post::Task::LatheTape); !can) throw Refusal(can.error());
+    // What planJob made and bound: a step without is the caller's bug.
     for (const auto& s : orderedSteps) {
-        if (!s.turn || !s.tool) throw std::invalid_argument("post-processor: step " + s.label() + " is not a turning step with a tool");
+        if (!s.turn || !s.tool) throw std::logic_error("post-processor: step " + s.label() + " is not a turning step with a tool");
         if (!findTool(library, s.tool->toolId))
-            throw std::invalid_argument("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
+            throw std::logic_error("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
     }
     // The chain: poster -> [mm to inch] -> lathe writer -> block tape.
     post::LatheWriter writer(*dialect, options.units);

@@ -14,7 +14,7 @@
 namespace taiwa {
 
 // Steps in machining order, each a turning step with its tool. Throws
-// std::invalid_argument as postProcess does.
+// as postProcess does.
 PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options);
 
 // The turret station each library tool of the program sits in: 1, 2, … in

@@ -14,7 +14,7 @@ namespace {
 void requireFinite(double value)
 {
     if (!std::isfinite(value))
-        throw std::invalid_argument("post-processor: a coordinate, feed or speed is not a finite number");
+        throw std::logic_error("post-processor: a coordinate, feed or speed is not a finite number");
 }
 }  // namespace
 
@@ -94,7 +94,7 @@ std::size_t formatNumberInto(char* out, double value, int decimals, bool decimal
         return n;
     }
     const std::string s = slowFixed(value, decimals, decimalPointAlways);
-    if (s.size() > kNumberChars) throw std::invalid_argument("post-processor: a number too long for a word: " + s);
+    if (s.size() > kNumberChars) throw std::logic_error("post-processor: a number too long for a word: " + s);
     std::copy(s.begin(), s.end(), out);
     if (asRead) std::from_chars(s.data(), s.data() + s.size(), *asRead);
     return s.size();

@@ -9,8 +9,8 @@
 namespace taiwa::post {
 
 // "12.5", "-0.001", "10" (or "10." with a decimal point always, the FANUC
-// habit where "X10" may mean 10 µm). Throws std::invalid_argument for NaN or
-// infinity: a non-number never reaches a tape.
+// habit where "X10" may mean 10 µm). Throws std::logic_error for NaN or
+// infinity (a bug upstream): a non-number never reaches a tape.
 std::string formatNumber(double value, int decimals, bool decimalPointAlways);
 
 // The same characters written into `out` (at least kNumberChars long); their

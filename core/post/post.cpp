@@ -42,13 +42,14 @@ struct Cutting {
 
 Cutting cuttingOf(const Step& s, const std::vector<Tool>& library, const std::string& material)
 {
-    if (!s.tool || !s.path) throw std::invalid_argument("post-processor: step " + s.label() + " has no tool or no path");
+    // What planJob made and bound: a step without is the caller's bug.
+    if (!s.tool || !s.path) throw std::logic_error("post-processor: step " + s.label() + " has no tool or no path");
     const auto it = std::find_if(library.begin(), library.end(), [&](const Tool& t) { return t.id == s.tool->toolId; });
     if (it == library.end())
-        throw std::invalid_argument("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
+        throw std::logic_error("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
     // Bound by planJob; a step made by hand gets them from the tool given.
     const auto sf = s.speeds ? s.speeds : stepSpeedsFeeds(s, *it, material);
-    if (!sf) throw std::invalid_argument("post-processor: tool T" + std::to_string(it->id) + " has no cutting data for " + material);
+    if (!sf) throw Refusal("post-processor: tool T" + std::to_string(it->id) + " has no cutting data for " + material);
     return {&*it, *sf};
 }
 
@@ -160,8 +161,7 @@ PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vect
             return postGangTool(orderedSteps, library, *m->layout.gang, pathsEnvelope(orderedSteps), options);
         return postLathe(orderedSteps, library, options);
     }
-    const post::Dialect* dialect = post::findDialect(options.dialect);
-    if (!dialect) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
+    const post::Dialect* dialect = &post::dialectNamed(options.dialect);
     std::vector<Cutting> cutting;
     cutting.reserve(orderedSteps.size());
     for (const auto& s : orderedSteps) cutting.push_back(cuttingOf(s, library, options.material));

@@ -58,9 +58,11 @@ bool isDialect(const std::string& name);
 // the dialect is unknown: that is postProcess's to refuse).
 std::optional<Diagnostic> workOffsetProblem(const std::string& dialect, const std::string& workOffset);
 
-// Steps in machining order, each with tool and path. Throws
-// std::invalid_argument for an unknown dialect, a work offset the dialect's
-// controller does not have, or a step without tool/path.
+// Steps in machining order, each with tool and path. Throws Refusal
+// (model/result.h) for an unknown dialect, one that cannot write the job, a
+// work offset the dialect's controller does not have, or a tool with no
+// cutting data for the material; std::logic_error for a step without its
+// tool or path, or a tool not in `library` (planJob binds them: a bug).
 PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
                           const PostOptions& options);
 

@@ -45,9 +45,8 @@ Offset offsetOf(const post::Dialect& d, const std::string& requested)
 
 const post::Dialect& dialectOf(const PostOptions& o)
 {
-    const post::Dialect* d = post::findDialect(o.dialect);
-    if (!d) throw std::invalid_argument("unknown dialect '" + o.dialect + "'");
-    if (const auto why = post::cannotPost(*d, post::Task::ProbingPrograms)) throw std::invalid_argument(*why);
+    const post::Dialect* d = &post::dialectNamed(o.dialect);
+    if (const auto can = post::canPost(*d, post::Task::ProbingPrograms); !can) throw Refusal(can.error());
     return *d;
 }
 
@@ -105,7 +104,7 @@ void footer(Program& p, const post::Dialect& d, bool fanuc)
 
 std::string settingProgram(const WorkSetup& s, const PostOptions& o)
 {
-    if (!s.measured) throw std::invalid_argument("no measured centre to set");
+    if (!s.measured) throw std::logic_error("no measured centre to set");  // the caller sets only a measured one
     const post::Dialect& d = dialectOf(o);
     const bool fanuc = post::findDialect(o.dialect) && post::findDialect(o.dialect)->macroSyntax == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
@@ -300,7 +299,7 @@ std::string probingProgram(const WorkSetup& s, const PostOptions& o)
     // The alarms and the end are labels the GOTOs name: no block before them
     // may carry one of their numbers.
     if (d.sequenceNumbers && p.nextNumber() > 9001)
-        throw std::invalid_argument(fmt::format("dialect {}: its block numbers reach N{}, where the probing cycle's alarms are labelled N9001-N9005",
+        throw Refusal(fmt::format("dialect {}: its block numbers reach N{}, where the probing cycle's alarms are labelled N9001-N9005",
                                                 d.name, p.nextNumber()));
     for (int k = 1; k <= 5; ++k)
         p.line(fmt::format("N900{} #3000 = {} ({})", k, k,

@@ -14,8 +14,9 @@
 
 namespace taiwa {
 
-// Needs setup.measured. Throws std::invalid_argument for an unknown dialect
-// or a work offset its controller does not have.
+// Needs setup.measured. Throws Refusal (model/result.h) for an unknown
+// dialect, one that writes no probing programs, or a work offset its
+// controller does not have.
 std::string settingProgram(const WorkSetup& setup, const PostOptions& options);
 
 // Throws as settingProgram does.

@@ -19,15 +19,14 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::ve
                                            const MultiPath& layout, const std::vector<Tool>& library,
                                            const PostOptions& options)
 {
-    if (roughingIndex >= steps.size()) throw std::invalid_argument("post-processor: the balanced cut's step is not among the steps");
+    if (roughingIndex >= steps.size()) throw std::logic_error("post-processor: the balanced cut's step is not among the steps");
     const Step& roughing = steps[roughingIndex];
-    const post::Dialect* d = post::findDialect(options.dialect);
-    if (!d) throw std::invalid_argument("unknown dialect '" + options.dialect + "'");
+    const post::Dialect* d = &post::dialectNamed(options.dialect);
     const bool fanuc = d->macroSyntax == "fanuc" && d->syntax == post::Syntax::Iso;
     const bool linuxcnc = d->macroSyntax == "linuxcnc" && d->syntax == post::Syntax::Iso;
     if (!fanuc && !linuxcnc)
-        throw std::invalid_argument("post-processor: " + d->name + " writes no two-path programs (FANUC's family and LinuxCNC do)");
-    if (!roughing.turn) throw std::invalid_argument("post-processor: the balanced cut's step is not a turning step");
+        throw Refusal("post-processor: " + d->name + " writes no two-path programs (FANUC's family and LinuxCNC do)");
+    if (!roughing.turn) throw std::logic_error("post-processor: the balanced cut's step is not a turning step");
     const auto dwellNumber = [&](double s) { return post::formatNumber(s, 3, d->decimalPointAlways); };
     std::vector<PostedProgram> out;
     for (std::size_t p = 0; p < cut.paths.size(); ++p) {

@@ -24,9 +24,9 @@ namespace taiwa {
 // path's program is its blocks alone (with `meetAtEnds`, balanced_roughing.h,
 // they wait for path 1 to come to the roughing and path 1 waits for them
 // after it). `options` as for postProcess (fileStem: the job's STEM, the
-// programs say STEM.p1 and STEM.p2). Throws std::invalid_argument as
-// postProcess does, and for a dialect that is neither FANUC's family nor
-// LinuxCNC's.
+// programs say STEM.p1 and STEM.p2). Throws as
+// postProcess does, and Refusal for a dialect that is neither FANUC's
+// family nor LinuxCNC's.
 std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughing,
                                            const MultiPath& layout, const std::vector<Tool>& library,
                                            const PostOptions& options);

@@ -36,7 +36,7 @@ double HeightField::atPoint(double x, double y) const
 
 void HeightField::meet(const HeightField& other)
 {
-    if (other.nx_ != nx_ || other.ny_ != ny_) throw std::invalid_argument("HeightField::meet: different grids");
+    if (other.nx_ != nx_ || other.ny_ != ny_) throw std::logic_error("HeightField::meet: different grids");
     for (std::size_t k = 0; k < z_.size(); ++k) z_[k] = std::min(z_[k], other.z_[k]);
 }
 

@@ -84,7 +84,7 @@ void StockSimulation::setFinished(Snapshot part)
 {
     if (stepCount() == 0) return;  // the fresh stock
     if (!part || part->columns() != initial_->columns() || part->rows() != initial_->rows())
-        throw std::invalid_argument("StockSimulation::setFinished: not a part on this simulation's grid");
+        throw std::logic_error("StockSimulation::setFinished: not a part on this simulation's grid");
     snapshots_.insert_or_assign(stepCount() - 1, std::move(part));
 }
 

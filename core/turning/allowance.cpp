@@ -4,6 +4,9 @@
 // relief grooves: allowance_grooves.cpp.
 #include "turning/allowance_deformer.h"
 
+#include "check/messages.h"
+#include "tools/turning_tools.h"
+
 namespace taiwa::turning::deform {
 
 Deformation Deformer::run()
@@ -186,6 +189,23 @@ Deformation applyAllowances(const ResolvedProfile& profile, const std::vector<Al
                             const AllowanceOptions& options)
 {
     return Deformer(profile, rows, options).run();
+}
+
+AllowanceOptions allowanceOptions(const TurnedProfile& profile, const std::vector<Tool>& library, LengthUnit shown)
+{
+    AllowanceOptions o;
+    o.shown = shown;
+    if (const Tool* t = finishingTurningTool(library, profile.side == ProfileSide::Inner)) {
+        o.noseRadius = t->cornerRadius;
+        o.toolName = msg::toolName(*t);
+    }
+    return o;
+}
+
+Deformation deformProfile(const TurnedProfile& profile, const ResolvedProfile& resolved, const std::vector<Tool>& library,
+                          LengthUnit shown)
+{
+    return applyAllowances(resolved, profile.allowances, allowanceOptions(profile, library, shown));
 }
 
 }  // namespace taiwa::turning

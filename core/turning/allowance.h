@@ -9,6 +9,7 @@
 #pragma once
 
 #include "model/job.h"
+#include "model/tool.h"
 #include "model/turned.h"
 #include "turning/profile_resolve.h"
 
@@ -36,5 +37,16 @@ struct Deformation {
 // as it got; the problems say which row and field.
 Deformation applyAllowances(const ResolvedProfile& profile, const std::vector<AllowanceRow>& rows,
                             const AllowanceOptions& options = {});
+
+// The options of `profile`'s deformation: the nose radius and name of the
+// finishing insert of `library` for its side (tools/turning_tools.h), and
+// messages quoting lengths in `shown`.
+AllowanceOptions allowanceOptions(const TurnedProfile& profile, const std::vector<Tool>& library, LengthUnit shown);
+
+// `resolved` (the profile table `profile` resolved) with its allowance rows
+// applied by those options: the one computation of TURN's check, the plan's
+// turned part and the station's profile editor.
+Deformation deformProfile(const TurnedProfile& profile, const ResolvedProfile& resolved, const std::vector<Tool>& library,
+                          LengthUnit shown);
 
 }  // namespace taiwa::turning

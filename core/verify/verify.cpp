@@ -410,14 +410,14 @@ double defaultResolution(const Plan& plan)
 Report verifyPlan(const Plan& plan, const Options& options)
 {
     if (!(options.resolution >= kFinestResolution) || !std::isfinite(options.resolution))
-        throw std::invalid_argument("the resolution must be at least " + std::to_string(kFinestResolution) + " mm");
+        throw Refusal("the resolution must be at least " + std::to_string(kFinestResolution) + " mm");
     if (plan.mmJob.bar) return verifyTurning(plan, options);
     const Stock& s = plan.mmJob.stock;
     const double cells = std::ceil(s.width / options.resolution) * std::ceil(s.length / options.resolution);
     if (cells > kMaxCells)
-        throw std::invalid_argument("a " + std::to_string(options.resolution) + " mm grid over this stock has " +
-                                    std::to_string(static_cast<long long>(cells)) + " cells, more than " +
-                                    std::to_string(static_cast<long long>(kMaxCells)) + ": choose a coarser resolution");
+        throw Refusal("a " + std::to_string(options.resolution) + " mm grid over this stock has " +
+                      std::to_string(static_cast<long long>(cells)) + " cells, more than " +
+                      std::to_string(static_cast<long long>(kMaxCells)) + ": choose a coarser resolution");
     const unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
     // Within the bound, or on a grid twice as coarse, and so on: the cells a
     // tool's shape covers fall as the square of the cell size.

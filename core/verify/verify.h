@@ -108,8 +108,8 @@ constexpr double kMaxCells = 100e6;
 double defaultResolution(const Plan& plan);
 
 // Simulates the plan's steps in order and checks them. The plan must have
-// its paths (PlanOptions::withToolPaths). Throws std::invalid_argument for
-// a resolution out of range or a grid beyond kMaxCells.
+// its paths (PlanOptions::withToolPaths). Throws Refusal (model/result.h)
+// for a resolution out of range or a grid beyond kMaxCells.
 Report verifyPlan(const Plan& plan, const Options& options = {});
 
 // Fills each finding's tape line from a program posted from the same plan.

@@ -7,6 +7,7 @@
 
 #include "check/messages.h"
 #include "paths/drawn_passes.h"
+#include "modules/area/area_messages.h"
 
 #include <fmt/format.h>
 

@@ -13,6 +13,7 @@
 #include "modules/pocket_tools.h"
 #include "model/codes.h"
 #include "paths/narrowest.h"
+#include "modules/pocket_messages.h"
 
 #include <fmt/format.h>
 

@@ -76,7 +76,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
     // A corner radius narrows the flat bottom: the passes closer, so that the
     // flat bottoms of neighbours overlap (no change for a sharp-cornered tool).
     const double pitch = std::min(step.stepOver.value_or(0.75) * D, 1.8 * flat);
-    if (!(pitch > 0.0)) throw std::invalid_argument("face-milling step-over must be positive");
+    if (!(pitch > 0.0)) throw std::logic_error("face-milling step-over must be positive");
     if (!(step.cutDepth > step.startDepth)) throw std::logic_error("face-milling layer without depth");
 
     const FacePasses& passes = step.payload.as<FacePasses>();

@@ -5,6 +5,9 @@
 #include "model/codes.h"
 #include "model/translate_noop.h"
 #include "modules/m2d/m2d_kind.h"
+#include "modules/m2d/m2d_messages.h"
+#include "modules/pocket_messages.h"
+#include "modules/region_messages.h"
 
 #include <cmath>
 #include <numbers>

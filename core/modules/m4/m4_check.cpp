@@ -4,6 +4,9 @@
 #include "model/codes.h"
 #include "model/translate_noop.h"
 #include "modules/m4/m4_kind.h"
+#include "modules/m4/m4_messages.h"
+#include "modules/pocket_messages.h"
+#include "modules/region_messages.h"
 
 #include <fmt/format.h>
 

@@ -9,6 +9,8 @@
 
 #include "check/messages.h"
 #include "model/clipper_scale.h"
+#include "modules/region_messages.h"
+#include "modules/side/side_messages.h"
 
 #include <cmath>
 

@@ -13,6 +13,7 @@
 #include "decompose/make_step.h"
 #include "paths/contour_offset.h"
 #include "tools/tool_fit.h"
+#include "modules/side/side_messages.h"
 
 #include <fmt/format.h>
 

@@ -29,18 +29,6 @@ using ordered = nlohmann::ordered_json;
 
 constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
 
-// The finishing tool whose nose radius becomes the adjustment where a row gives none.
-AllowanceOptions allowanceOptions(const TurnedProfile& p, const std::vector<Tool>& library, LengthUnit shown)
-{
-    AllowanceOptions o;
-    o.shown = shown;
-    if (const Tool* t = finishingTurningTool(library, p.side == ProfileSide::Inner)) {
-        o.noseRadius = t->cornerRadius;
-        o.toolName = msg::toolName(*t);
-    }
-    return o;
-}
-
 class TurnKind final : public ModuleKindOf<TurnUnit> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add turned profile"); }
@@ -144,8 +132,7 @@ protected:
         if (!r.ok()) return report;
         checkThreads(t.profile, r.profile, ctx.library, ctx.shownUnit, add);
         static const std::vector<Tool> none;
-        const Deformation d =
-            applyAllowances(r.profile, t.profile.allowances, allowanceOptions(t.profile, ctx.library ? *ctx.library : none, ctx.shownUnit));
+        const Deformation d = deformProfile(t.profile, r.profile, ctx.library ? *ctx.library : none, ctx.shownUnit);
         for (const auto& p : d.problems) add(p);
         if (!d.ok() || !ctx.bar) return report;
         checkInBar(d.profile, t.profile, *ctx.bar, ctx.shownUnit, [&](std::string field, std::string message) {
