@@ -12,6 +12,7 @@
 #include "turning/allowance.h"
 #include "modules/turn/turn_plan.h"
 #include "turning/profile_resolve.h"
+#include "model/turn_path.h"
 
 #include <benchmark/benchmark.h>
 
@@ -124,7 +125,7 @@ void BM_TurningProcess(benchmark::State& state)
         if (!r.problems.empty()) throw std::logic_error("the bench profile is refused: " + r.problems.front().message);
         const PostedProgram tape = postLathe(r.steps, library, o);
         moves = 0;
-        for (const auto& s : r.steps) moves += s.turn->path.moves.size();
+        for (const auto& s : r.steps) moves += turnOf(s)->path.moves.size();
         lines = tape.lines.size();
         benchmark::DoNotOptimize(tape.nc.data());
     }

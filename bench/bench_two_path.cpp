@@ -32,7 +32,7 @@ const TurnStep& roughing(const std::string& stem)
         it = plans.emplace(stem, planJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary())).first;
     }
     for (const auto& s : it->second.steps)
-        if (s.kind == StepKind::TurnRoughing) return *s.turn;
+        if (s.kind == StepKind::TurnRoughing) return *turnOf(s);
     throw std::runtime_error("no roughing in " + stem);
 }
 

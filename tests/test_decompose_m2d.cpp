@@ -4,6 +4,7 @@
 // wall slope with alpha2 left, theta2 defaulting to theta1, and the pilot,
 // floor, wall and inclined-face steps. Expectations come from the spec's
 // formulas written out here.
+#include "modules/inclined_face.h"
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 
@@ -145,17 +146,20 @@ private slots:
 
         const Step& one = steps[7];
         const Step& two = steps[8];
-        QVERIFY(one.kind == StepKind::InclinedFaceFinishing && one.number == 1 && one.face);
-        QVERIFY(two.kind == StepKind::InclinedFaceFinishing && two.number == 2 && two.face);
+        QVERIFY(one.kind == StepKind::InclinedFaceFinishing && one.number == 1);
+        QVERIFY(two.kind == StepKind::InclinedFaceFinishing && two.number == 2);
+        const InclinedFace& oneFace = one.payload.as<InclinedFace>();
+        const InclinedFace& twoFace = two.payload.as<InclinedFace>();
         QCOMPARE(one.label(), std::string("Inclined-face finishing I"));
-        QCOMPARE(one.face->angle, 20.0);
-        QCOMPARE(two.face->angle, 35.0);
-        QVERIFY(distance(one.face->topEdge[0], {30, 40}) < kTol && distance(one.face->topEdge[1], {30, 90}) < kTol);
-        QVERIFY(distance(one.face->floorEdge[0], {floorLeft, 40}) < kTol);
-        QVERIFY(distance(two.face->topEdge[1], {110, 90}) < kTol && distance(two.face->floorEdge[1], {floorRight, 90}) < kTol);
+        QCOMPARE(oneFace.angle, 20.0);
+        QCOMPARE(twoFace.angle, 35.0);
+        QVERIFY(distance(oneFace.topEdge[0], {30, 40}) < kTol && distance(oneFace.topEdge[1], {30, 90}) < kTol);
+        QVERIFY(distance(oneFace.floorEdge[0], {floorLeft, 40}) < kTol);
+        QVERIFY(distance(twoFace.topEdge[1], {110, 90}) < kTol && distance(twoFace.floorEdge[1], {floorRight, 90}) < kTol);
+        QCOMPARE(oneFace.scallop, 0.02);
+        QCOMPARE(twoFace.scallop, 0.02);
         for (const Step* s : {&one, &two}) {
             QVERIFY(s->startDepth == 0 && std::abs(s->cutDepth - 12) < kTol);
-            QCOMPARE(s->scallop, 0.02);
             QVERIFY(s->machiningType == MachiningType::InclinedFaceFinishing);
         }
     }
@@ -177,7 +181,7 @@ private slots:
         const auto steps = decomposeM2D(pocket(12, 0, 25), tech(0.2, 0.5), 6.0, 0);
         const auto inclined = ofKind(steps, StepKind::InclinedFaceFinishing);
         QCOMPARE(inclined.size(), std::size_t(1));
-        QCOMPARE(inclined[0].face->angle, 25.0);
+        QCOMPARE(inclined[0].payload.as<InclinedFace>().angle, 25.0);
         QCOMPARE(inclined[0].number, 1);
         const auto wall = ofKind(steps, StepKind::WallFinishing);
         QVERIFY(std::abs(wall[0].outline->corners[0].x - 30) < kTol);

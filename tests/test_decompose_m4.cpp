@@ -143,7 +143,7 @@ private slots:
             QVERIFY2(std::abs(a.wallAllowance - e.wallLeft) < kTol, where);
             QVERIFY2(std::abs(a.floorAllowance - e.floorLeft) < kTol, where);
             QCOMPARE(a.multiIncision, e.multi);
-            QVERIFY(!a.tool && !a.path && !a.minutes && !a.face);
+            QVERIFY(!a.tool && !a.path && !a.minutes && a.payload.empty());
             QCOMPARE(a.outline.has_value(), e.hasOutline);
             if (!e.hasOutline) {
                 // Pilot hole at the mean of the four typed corners.

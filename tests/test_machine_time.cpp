@@ -222,9 +222,9 @@ private slots:
             QVERIFY2(plan.totalMachineMinutes, name);
             double sum = 0;
             for (const Step& s : plan.steps) {
-                QVERIFY(s.turn);
+                QVERIFY(turnOf(s));
                 QVERIFY(s.machineMinutes && *s.machineMinutes > 0);
-                const double feedOnly = turnMinutes(s.turn->path, s.turn->cutting, 1e12);
+                const double feedOnly = turnMinutes(turnOf(s)->path, turnOf(s)->cutting, 1e12);
                 const QString figures = QString("%1 %2: %3 vs %4 (feed only %5)").arg(name).arg(QString::fromStdString(s.label()))
                                             .arg(*s.machineMinutes).arg(*s.minutes).arg(feedOnly);
                 QVERIFY2(*s.machineMinutes >= 0.99 * feedOnly, qPrintable(figures));

@@ -3,7 +3,9 @@
 // its path, move estimate and order come from its module, and each step is
 // bound once to its tool and its speeds and feeds, so that a library edited
 // after planning cannot change what is posted from the plan.
+#include "model/turn_path.h"
 #include "modules/face/face.h"
+#include "modules/inclined_face.h"
 #include "modules/registry.h"
 #include "post/post.h"
 #include "support/hand_plan.h"
@@ -94,6 +96,41 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::logic_error, a.payload.as<Other>());
         b.payload = StepPayload{};
         QVERIFY(!(a == b) && !(b == a));
+    }
+
+    // A turning step's data and an inclined face are payloads, as every
+    // module's own data is: the step names neither (model/step.h), turnOf
+    // finds the one and nothing in a step that holds another, and copies
+    // copy them. The step's size is printed for issue 35 (its memory).
+    void turningAndInclinedFaceAreThePayload()
+    {
+        QString code = QString::fromStdString(test::readFile(test::sourcePath("core/model/step.h")));
+        code.remove(QRegularExpression("//[^\n]*"));  // its comments may say where the payloads are
+        QVERIFY(code.contains("StepPayload payload;"));
+        for (const char* name : {"TurnStep", "InclinedFace", "scallop", "turn_path"})  // InclinedFaceFinishing is a kind
+            QVERIFY2(!code.contains(QRegularExpression(QString("\\b%1\\b").arg(name))),
+                     qPrintable(QString("core/model/step.h names %1, a module's own data").arg(name)));
+
+        Step milled;
+        QVERIFY(turnOf(milled) == nullptr);
+        milled.payload = InclinedFace{{{{0, 0}, {0, 40}}}, {{{3, 0}, {3, 40}}}, 20, 0.01};
+        QVERIFY(turnOf(milled) == nullptr);
+        QCOMPARE(milled.payload.as<InclinedFace>().scallop, 0.01);
+
+        Step turned;
+        TurnStep t;
+        t.region = "E1";
+        t.path.moves.push_back({TurnMove::Feed, {-10, 5}, {}, FeedKind::Cut});
+        turned.payload = t;
+        QVERIFY(turnOf(turned) && turnOf(turned)->region == "E1");
+        Step copy = turned;
+        QVERIFY(turnOf(copy) != turnOf(turned) && *turnOf(copy) == *turnOf(turned));
+        t.region = "E2";
+        copy.payload = t;
+        QVERIFY(!(copy == turned));
+        QCOMPARE(QString::fromStdString(turnOf(turned)->region), QString("E1"));
+        qInfo("sizeof(Step) %zu bytes (its payload %zu, a TurnStep on the heap %zu, an InclinedFace %zu)", sizeof(Step),
+              sizeof(StepPayload), sizeof(TurnStep), sizeof(InclinedFace));
     }
 
     // Each module makes its own steps' paths; one that has none to make

@@ -8,6 +8,7 @@
 #include "modules/registry.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
+#include "model/turn_path.h"
 
 #include <QtTest>
 
@@ -65,7 +66,7 @@ private slots:
             else QVERIFY2(int(!plan.steps.empty()) + int(!plan.setups.empty()) + int(!plan.turned.empty()) == 1, k->name());
             for (const Step& s : plan.steps) {
                 QCOMPARE(s.module, std::string(k->name()));
-                QVERIFY(s.tool && (s.path || s.turn) && s.minutes);
+                QVERIFY(s.tool && (s.path || turnOf(s)) && s.minutes);
             }
         }
     }

@@ -31,6 +31,7 @@
 #include "support/rs274.h"
 #include "support/support.h"
 #include "support/turning_oracle.h"
+#include "model/turn_path.h"
 
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
@@ -174,7 +175,7 @@ private slots:
         QVERIFY(!plan.steps.empty());
         QVERIFY(!plan.turned.empty());
         const std::string nc = tape(plan, stem);
-        const bool anyCycle = std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.turn && s.turn->path.cycle; });
+        const bool anyCycle = std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return turnOf(s) && turnOf(s)->path.cycle; });
         QCOMPARE(QString::fromStdString(nc).contains(QRegularExpression(R"(\nG71 Q\d+)")), cycles && anyCycle);
 
         const Rs274Result r = runRs274(nc, latheToolTable(plan));
@@ -237,8 +238,8 @@ private slots:
         QCOMPARE(b.size(), a.size());
         int compared = 0;
         for (const auto& [step, moves] : a) {
-            const bool cycle = step > 0 && plan.steps[static_cast<std::size_t>(step - 1)].turn &&
-                               plan.steps[static_cast<std::size_t>(step - 1)].turn->path.cycle && cycles;
+            const bool cycle = step > 0 && turnOf(plan.steps[static_cast<std::size_t>(step - 1)]) &&
+                               turnOf(plan.steps[static_cast<std::size_t>(step - 1)])->path.cycle && cycles;
             QVERIFY2(b.count(step), qPrintable(QString("step %1 is missing from the inch run").arg(step)));
             if (cycle) continue;
             const auto& other = b.at(step);

@@ -12,6 +12,7 @@
 #include "support/support.h"
 #include "tools/tool_library.h"
 #include "test_toolpaths_support.h"
+#include "model/turn_path.h"
 
 #include <QDir>
 #include <QtTest>
@@ -76,7 +77,7 @@ private slots:
             QVERIFY2(plan.ok(), qPrintable(f));
             for (const Step& s : plan.steps) {
                 const double estimate = estimateMoves(s, *plan.tool(s.tool->toolId), plan.technology, {});
-                const double real = static_cast<double>(s.turn ? s.turn->path.moves.size() : s.path->moves.size());
+                const double real = static_cast<double>(turnOf(s) ? turnOf(s)->path.moves.size() : s.path->moves.size());
                 QVERIFY2(estimate >= real / 4 && estimate <= real * 20 + 50,
                          qPrintable(QString("%1 %2: %3 estimated, %4 real").arg(f, QString::fromStdString(s.label())).arg(estimate).arg(real)));
             }

@@ -6,6 +6,7 @@
 // and never gouges the pocket; drilling pecks when deep.
 #include "test_toolpaths_support.h"
 
+#include "modules/inclined_face.h"
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
 #include "model/job.h"
@@ -192,8 +193,7 @@ private slots:
         s.module = "M2D";
         s.kind = StepKind::InclinedFaceFinishing;
         s.cutDepth = 10;
-        s.scallop = 0.01;
-        s.face = InclinedFace{{{{0, 0}, {0, 40}}}, {{{run, 0}, {run, 40}}}, 20};
+        s.payload = InclinedFace{{{{0, 0}, {0, 40}}}, {{{run, 0}, {run, 40}}}, 20, 0.01};
         s.outline = m2dCrossSection(pocket, 10);
         const Tool ball = makeTool(ToolType::BallEndMill, 6);
         const ToolPath p = makeToolPath(s, ball, TechnologyData{}, kParams);

@@ -9,6 +9,7 @@
 #include "job/job_file.h"
 #include "modules/registry.h"
 #include "model/turned_geometry.h"
+#include "model/turn_path.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "sim/turned_stock.h"
@@ -96,14 +97,14 @@ private slots:
         QCOMPARE(kinds(p), (std::vector<StepKind>{StepKind::Facing, StepKind::TurnRoughing, StepKind::TurnFinishing, StepKind::Parting}));
         const Step& rough = *find(p, StepKind::TurnRoughing);
         QCOMPARE(rough.tool->toolId, 101);  // the strongest nose
-        QVERIFY(rough.turn->path.cycle.has_value());
-        QCOMPARE(rough.turn->path.cycle->depthOfCut, 2.0);  // steel's depth of cut
-        QCOMPARE(rough.turn->allowanceX, 0.2);
+        QVERIFY(turnOf(rough)->path.cycle.has_value());
+        QCOMPARE(turnOf(rough)->path.cycle->depthOfCut, 2.0);  // steel's depth of cut
+        QCOMPARE(turnOf(rough)->allowanceX, 0.2);
         const Step& finish = *find(p, StepKind::TurnFinishing);
         QCOMPARE(finish.tool->toolId, 102);  // reaches everything, smallest nose radius, lowest number
         QVERIFY2(finish.tool->reason.find("reaches every element") != std::string::npos, finish.tool->reason.c_str());
-        QCOMPARE(finish.turn->path.comp, NoseCompensation::Right);  // G42 outside
-        QCOMPARE(finish.turn->orientation, 2);
+        QCOMPARE(turnOf(finish)->path.comp, NoseCompensation::Right);  // G42 outside
+        QCOMPARE(turnOf(finish)->orientation, 2);
         QCOMPARE(find(p, StepKind::Parting)->tool->toolId, 106);
         for (const auto& s : p.steps) QVERIFY(s.minutes && *s.minutes > 0);
     }
@@ -139,7 +140,7 @@ private slots:
         QVERIFY(!o.turningCycles);
         const std::string nc = postProcess(p.steps, defaultToolLibrary(), o).nc;
         QVERIFY(nc.find("G71") == std::string::npos && nc.find(" sub") == std::string::npos);
-        const auto& moves = find(p, StepKind::TurnRoughing)->turn->path.moves;
+        const auto& moves = turnOf(*find(p, StepKind::TurnRoughing))->path.moves;
         QVERIFY(std::count_if(moves.begin(), moves.end(), [](const TurnMove& m) { return m.kind == TurnMove::Feed; }) >= 8);
         // The job file keeps it, and only then says it.
         const std::string text = writeJob(j);
@@ -154,29 +155,29 @@ private slots:
         QVERIFY2(p.ok(), firstError(p).c_str());
         QCOMPARE(kinds(p), (std::vector<StepKind>{StepKind::Facing, StepKind::TurnRoughing, StepKind::TurnFinishing,
                                                   StepKind::Grooving, StepKind::Parting}));
-        QVERIFY(!find(p, StepKind::TurnRoughing)->turn->path.cycle);  // not monotone: explicit passes
+        QVERIFY(!turnOf(*find(p, StepKind::TurnRoughing))->path.cycle);  // not monotone: explicit passes
         const Step& g = *find(p, StepKind::Grooving);
         QCOMPARE(g.tool->toolId, 105);
         // Plunges (blade 3 mm, groove 4 mm): two, less than a blade width apart, to the bottom Ø24.
         std::vector<ZR> bottoms;
-        for (const auto& m : g.turn->path.moves)
+        for (const auto& m : turnOf(g)->path.moves)
             if (m.kind == TurnMove::Feed && m.feed == FeedKind::Plunge) bottoms.push_back(m.end);
         QCOMPARE(bottoms.size(), std::size_t(2));
         QVERIFY(std::abs(bottoms[0].z - bottoms[1].z) < 3.0);
         for (const ZR b : bottoms) QVERIFY(std::abs(b.r - 12.0) < 1e-3);
         QVERIFY(std::abs(bottoms.front().z + 20.0) < 1e-3 && std::abs(bottoms.back().z + 21.0) < 1e-3);  // both walls
         // Seed 002: the move after the last plunge is the normal (+X) times da.
-        const auto& moves = g.turn->path.moves;
+        const auto& moves = turnOf(g)->path.moves;
         std::size_t last = moves.size();
         while (last > 0 && moves[last - 1].kind != TurnMove::Feed) --last;
         QVERIFY(last >= 2);
         const TurnMove& away = moves[last - 1];
         QCOMPARE(away.feed, FeedKind::Cut);
-        QCOMPARE(g.turn->withdrawal, 0.3);
+        QCOMPARE(turnOf(g)->withdrawal, 0.3);
         QVERIFY(std::abs(away.end.r - (bottoms.back().r + 0.3)) < 1e-9 && std::abs(away.end.z - bottoms.back().z) < 1e-9);
         QCOMPARE(moves[last - 2].end, bottoms.back());
         // The finishing contour runs across the groove's mouth: nothing below Ø30 between its walls.
-        for (const auto& m : find(p, StepKind::TurnFinishing)->turn->path.moves)
+        for (const auto& m : turnOf(*find(p, StepKind::TurnFinishing))->path.moves)
             if (m.end.z < -20.0 + 1e-9 && m.end.z > -24.0 - 1e-9) QVERIFY(m.end.r >= 15.0 - 1e-9);
     }
 
@@ -191,14 +192,14 @@ private slots:
         const Tool& d = *findTool(defaultToolLibrary(), drill.tool->toolId);
         QCOMPARE(d.type, ToolType::Drill);
         QVERIFY2(d.diameter >= 16.0 && d.diameter <= 20.0 - 0.4 - 1.0, drill.tool->reason.c_str());  // the boring bar enters; the bore keeps stock
-        QVERIFY(!drill.turn->cutting.constantSurfaceSpeed && drill.turn->cutting.rpm > 0);
+        QVERIFY(!turnOf(drill)->cutting.constantSurfaceSpeed && turnOf(drill)->cutting.rpm > 0);
         const Step& bore = *find(p, StepKind::TurnFinishing, 1);
         QCOMPARE(bore.tool->toolId, 104);
-        QCOMPARE(bore.turn->path.comp, NoseCompensation::Left);  // G41 inside
-        QCOMPARE(bore.turn->orientation, 3);
-        QVERIFY(find(p, StepKind::TurnRoughing, 1)->turn->path.cycle->inner);
+        QCOMPARE(turnOf(bore)->path.comp, NoseCompensation::Left);  // G41 inside
+        QCOMPARE(turnOf(bore)->orientation, 3);
+        QVERIFY(turnOf(*find(p, StepKind::TurnRoughing, 1))->path.cycle->inner);
         // The boring bar leaves the bore along the axis before the turret moves.
-        const ZR out = bore.turn->path.moves.back().end;
+        const ZR out = turnOf(bore)->path.moves.back().end;
         QVERIFY(out.z > 0 && out.r < 10.0);
     }
 
@@ -258,7 +259,7 @@ private slots:
         const Step& s = *find(p, StepKind::Threading);
         QCOMPARE(s.tool->toolId, 107);
         QCOMPARE(s.label(), std::string("Threading I"));
-        const TurnStep& ts = *s.turn;
+        const TurnStep& ts = *turnOf(s);
         QVERIFY(ts.thread);
         const TurnThread& th = *ts.thread;
         // M20×2.5: ISO depth 0.6134 P on the radius, fixed rpm from the

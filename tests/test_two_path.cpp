@@ -79,7 +79,7 @@ const Step& roughingStep(const std::string& stem)
     for (const auto& d : it->second.diagnostics) why += d.field + ": " + d.message + "; ";
     qFatal("no roughing step in %s: %s", stem.c_str(), why.c_str());
 }
-const TurnStep& roughing(const std::string& stem) { return *roughingStep(stem).turn; }
+const TurnStep& roughing(const std::string& stem) { return *turnOf(roughingStep(stem)); }
 const Plan& planOf(const std::string& stem)
 {
     roughingStep(stem);
@@ -861,7 +861,7 @@ private slots:
         QVERIFY(index > 0 && index + 1 < plan.steps.size());
         turning::BalanceSettings set;
         set.meetAtEnds = true;
-        const BalancedCut c = balanced(*plan.steps[index].turn, set);
+        const BalancedCut c = balanced(*turnOf(plan.steps[index]), set);
         const PostOptions o = postOptions(plan, "fanuc", std::nullopt, 1000, st);
         const auto programs = postBalancedCut(c, plan.steps, index, *twoPath().layout.multiPath, defaultToolLibrary(), o);
         QCOMPARE(programs.size(), std::size_t{2});

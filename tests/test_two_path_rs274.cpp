@@ -60,7 +60,7 @@ private slots:
         turning::BalanceSettings set;
         set.waitsEverywhere = everywhere;
         set.meetAtEnds = whole;
-        const auto cut = turning::balanceRoughing(rough->turn->path, rough->turn->cutting, m, set);
+        const auto cut = turning::balanceRoughing(turnOf(*rough)->path, turnOf(*rough)->cutting, m, set);
         QVERIFY(cut);
         const PostOptions o = postOptions(plan, "linuxcnc", std::nullopt, 1000, stem.toStdString());
         const std::vector<Step> alone{*rough};

@@ -9,6 +9,7 @@
 #include "support/hand_plan.h"
 #include "support/support.h"
 #include "verify/verify.h"
+#include "model/turn_path.h"
 
 #include <QtTest>
 
@@ -101,7 +102,7 @@ private slots:
         double removed = 0.0;
         for (std::size_t k = 0; k < r.removed.size(); ++k) {
             QVERIFY2(r.removed[k] >= -1e-6, qPrintable(QString("step %1 removed %2").arg(k + 1).arg(r.removed[k])));
-            if (plan.steps[k].turn && !plan.steps[k].turn->path.moves.empty())
+            if (turnOf(plan.steps[k]) && !turnOf(plan.steps[k])->path.moves.empty())
                 QVERIFY2(r.removed[k] > 0.0, qPrintable(QString("step %1 cut nothing").arg(k + 1)));
             removed += r.removed[k];
         }
@@ -132,7 +133,8 @@ private slots:
         Plan p = test::samplePlan(qPrintable(sample));
         const int finish = stepOf(p, StepKind::TurnFinishing);
         QVERIFY(finish >= 0);
-        TurnPath& path = p.steps[static_cast<std::size_t>(finish)].turn->path;
+        TurnStep edited = *turnOf(p.steps[static_cast<std::size_t>(finish)]);  // the payload is read-only: edit a copy
+        TurnPath& path = edited.path;
         int k = -1;
         double longest = 0.0;
         for (int m = path.compFrom + 1; m < path.compTo; ++m) {
@@ -146,6 +148,7 @@ private slots:
         QVERIFY(k > 0 && longest > 5.0);
         path.moves[static_cast<std::size_t>(k - 1)].end.r += into;
         path.moves[static_cast<std::size_t>(k)].end.r += into;
+        p.steps[static_cast<std::size_t>(finish)].payload = edited;
         const Report r = verifyPlan(p);
         const Finding* g = find(r, FindingKind::Gouge, finish, k);
         QVERIFY2(g, kinds(r, p).c_str());
@@ -175,7 +178,8 @@ private slots:
         Plan p = test::samplePlan("lathe-turned-shaft.taiwa");
         const int rough = stepOf(p, StepKind::TurnRoughing);
         QVERIFY(rough >= 0);
-        auto& moves = p.steps[static_cast<std::size_t>(rough)].turn->path.moves;
+        TurnStep edited = *turnOf(p.steps[static_cast<std::size_t>(rough)]);
+        auto& moves = edited.path.moves;
         std::size_t k = 0;
         double longest = 0;
         for (std::size_t i = 1; i < moves.size(); ++i) {
@@ -184,6 +188,7 @@ private slots:
         }
         QVERIFY(longest > 10);
         moves[k].kind = TurnMove::Rapid;
+        p.steps[static_cast<std::size_t>(rough)].payload = edited;
         const Report r = verifyPlan(p);
         const Finding* f = find(r, FindingKind::RapidIntoStock, rough, static_cast<int>(k));
         QVERIFY2(f, kinds(r, p).c_str());
@@ -197,8 +202,9 @@ private slots:
         Plan p = test::samplePlan("lathe-turned-shaft.taiwa");
         const int rough = stepOf(p, StepKind::TurnRoughing);
         QVERIFY(rough >= 0);
-        auto& moves = p.steps[static_cast<std::size_t>(rough)].turn->path.moves;
-        moves.resize(moves.size() / 2);
+        TurnStep edited = *turnOf(p.steps[static_cast<std::size_t>(rough)]);
+        edited.path.moves.resize(edited.path.moves.size() / 2);
+        p.steps[static_cast<std::size_t>(rough)].payload = edited;
         const Report r = verifyPlan(p);
         const Finding* f = find(r, FindingKind::RestMaterial, rough, -1);
         QVERIFY2(f, kinds(r, p).c_str());
@@ -215,13 +221,15 @@ private slots:
         QVERIFY(verifyPlan(p).count(FindingKind::TravelLimit) == 0);
         double least = 1e300;  // the smallest diameter programmed (the facing runs past the axis)
         for (const Step& s : p.steps) {
-            least = std::min(least, 2.0 * s.turn->path.start.r);
-            for (const TurnMove& m : s.turn->path.moves) least = std::min(least, 2.0 * m.end.r);
+            least = std::min(least, 2.0 * turnOf(s)->path.start.r);
+            for (const TurnMove& m : turnOf(s)->path.moves) least = std::min(least, 2.0 * m.end.r);
         }
         const int last = static_cast<int>(p.steps.size()) - 1;
-        auto& moves = p.steps[static_cast<std::size_t>(last)].turn->path.moves;
+        TurnStep edited = *turnOf(p.steps[static_cast<std::size_t>(last)]);
+        auto& moves = edited.path.moves;
         const turning::ZR at = moves.back().end;
         moves.push_back({TurnMove::Rapid, {at.z, 150.0}, {}, FeedKind::Cut});
+        p.steps[static_cast<std::size_t>(last)].payload = edited;
         const Report r = verifyPlan(p);
         const Finding* f = find(r, FindingKind::TravelLimit, last, static_cast<int>(moves.size()) - 1);
         QVERIFY2(f, kinds(r, p).c_str());

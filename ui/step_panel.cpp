@@ -6,6 +6,8 @@
 #include "ui/core_texts.h"
 #include "ui/step_table.h"
 
+#include "modules/inclined_face.h"
+
 #include <QEvent>
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -336,9 +338,9 @@ void StepPanel::showDetails(int index)
             pts << QStringLiteral("(%1, %2)").arg(formatNumber(std::round(fromMm(p.x, u) * 1e4) / 1e4),
                                                   formatNumber(std::round(fromMm(p.y, u) * 1e4) / 1e4));
         lines << tr("Outline %1, r %2").arg(pts.join(' '), length(s.outline->cornerRadius, u));
-    } else if (s.face) {
+    } else if (const InclinedFace* face = s.payload.getIf<InclinedFace>()) {
         lines << tr("Inclined face at %1° from the vertical, scallop %2")
-                     .arg(formatNumber(s.face->angle), length(s.scallop, u));
+                     .arg(formatNumber(face->angle), length(face->scallop, u));
     } else {
         lines << tr("At (%1, %2), Ø %3")
                      .arg(formatNumber(std::round(fromMm(s.position.x, u) * 1e4) / 1e4),

@@ -4,6 +4,7 @@
 #include "ui/core_messages.h"
 #include "ui/core_texts.h"
 #include "ui/number_text.h"
+#include "model/turn_path.h"
 
 
 #include <QEvent>
@@ -30,8 +31,8 @@ ShownCutting shownCutting(const Plan& plan, const Step& s)
 {
     ShownCutting c;
     const double toJob = plan.job.lengthUnit == LengthUnit::Inch ? 1.0 / kMillimetresPerInch : 1.0;
-    if (s.turn) {
-        const TurnCutting& tc = s.turn->cutting;
+    if (turnOf(s)) {
+        const TurnCutting& tc = turnOf(s)->cutting;
         c.speed = tc.constantSurfaceSpeed ? tc.surfaceSpeed : tc.rpm;
         c.feed = tc.feedPerRev * toJob;
         return c;
@@ -160,10 +161,10 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
             const bool set = column == Speed ? s.cutting.speed.has_value() : s.cutting.feed.has_value();
             cell(r, column, value ? formatNumber(std::round(*value * 1e4) / 1e4) : QString(), set ? cuttingTip : QString(), set);
         }
-        if (s.turn) {
+        if (turnOf(s)) {
             // A turned step has no start depth below a top face; its depth is
             // the depth of cut of a pass (a thread's: the thread's), on the radius.
-            const double cut = s.turn->thread ? s.turn->thread->depth : s.turn->depthOfCut;
+            const double cut = turnOf(s)->thread ? turnOf(s)->thread->depth : turnOf(s)->depthOfCut;
             cell(r, Start, QStringLiteral("–"));
             cell(r, Depth, cut > 0 ? round(cut) : QStringLiteral("–"), cut > 0 ? tr("Depth of cut on the radius: of a pass; of a thread, the whole thread") : QString());
         } else {

@@ -283,14 +283,14 @@ void Scene::updateTool()
     if (k < 0) return;
     const Step& step = steps[static_cast<std::size_t>(k)];
     const Tool* tool = step.tool ? plan_->tool(step.tool->toolId) : nullptr;
-    if (tool && step.turn && lathe_ && k == selected_) {
+    if (tool && turnOf(step) && lathe_ && k == selected_) {
         // In the section: the insert (or blade, or drill) at the path's
         // start, or where the NC block the operator is on leaves it.
-        const TurnPath& p = step.turn->path;
+        const TurnPath& p = turnOf(step)->path;
         turning::ZR at = p.start;
         if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(p.moves.size()))
             at = p.moves[static_cast<std::size_t>(highlighted_.move)].end;
-        std::vector<turning::ZR> outline = latheToolOutline(*tool, *step.turn);
+        std::vector<turning::ZR> outline = latheToolOutline(*tool, *turnOf(step));
         if (outline.empty()) return;
         for (auto& q : outline) q = q + at;
         tool_ = actorFor(sectionFace(outline, -0.1), palette::kTool);

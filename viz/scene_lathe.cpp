@@ -69,7 +69,7 @@ void Scene::updateLatheStep()
     for (auto& a : latheStep_) renderer_->RemoveActor(a);
     latheStep_.clear();
     const Step* step = selected_ >= 0 ? &plan_->steps[static_cast<std::size_t>(selected_)] : nullptr;
-    const bool show = step && step->turn;
+    const bool show = step && turnOf(*step);
     for (auto& a : latheParts_) a->SetVisibility(!show);
     if (!show) return;
     // The stock after the step, each loop of the half-section revolved over
@@ -89,7 +89,7 @@ void Scene::updateLatheStep()
     }
     // The step's path in the section's upper half-plane ((z, 0, r), a hair
     // in front of it): feeds and rapids through the programmed points.
-    const TurnPath& p = step->turn->path;
+    const TurnPath& p = turnOf(*step)->path;
     for (const bool rapids : {false, true}) {
         auto points = vtkSmartPointer<vtkPoints>::New();
         auto lines = vtkSmartPointer<vtkCellArray>::New();

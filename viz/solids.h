@@ -7,6 +7,7 @@
 #include "model/step.h"
 #include "model/turned.h"
 #include "model/tool.h"
+#include "model/turn_path.h"
 #include "sim/height_field.h"
 #include "verify/deviation.h"
 #include "viz/render.h"

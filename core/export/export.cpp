@@ -59,7 +59,6 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
     if (s.machiningType == MachiningType::PilotHole) {
         j["position"] = point(s.position, u);
     }
-    moduleKind(s).describeStep(s, u, j);  // the module's own data of the step
     if (s.outline) {
         nlohmann::ordered_json o;
         o["corners"] = nlohmann::ordered_json::array();
@@ -67,14 +66,7 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         o["cornerRadius"] = out(s.outline->cornerRadius, u);
         j["outline"] = o;
     }
-    if (s.face) {
-        nlohmann::ordered_json f;
-        f["topEdge"] = {point(s.face->topEdge[0], u), point(s.face->topEdge[1], u)};
-        f["floorEdge"] = {point(s.face->floorEdge[0], u), point(s.face->floorEdge[1], u)};
-        f["angle"] = s.face->angle;
-        f["scallop"] = out(s.scallop, u);
-        j["face"] = f;
-    }
+    moduleKind(s).describeStep(s, u, j);  // the module's own data of the step
     j["wallTaper"] = s.wallTaper;
     j["wallAllowance"] = out(s.wallAllowance, u);
     j["floorAllowance"] = out(s.floorAllowance, u);
@@ -84,8 +76,8 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};
         j["moves"] = s.path->moves.size();
     }
-    if (s.turn) {
-        const TurnStep& t = *s.turn;
+    if (const TurnStep* turned = turnOf(s)) {
+        const TurnStep& t = *turned;
         const PathLength len = turnPathLength(t.path);
         j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};
         j["moves"] = t.path.moves.size();

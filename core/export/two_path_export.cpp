@@ -26,7 +26,7 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
     std::size_t index = plan.steps.size();
     for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && plan.steps[k].turn) index = k;
+        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) index = k;
     if (index == plan.steps.size())
         return Files{Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "machine: {} is a two-path lathe and the job has no "
                                                                       "roughing step to balance between its paths"),
@@ -34,7 +34,7 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
     const Step& rough = plan.steps[index];
     // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
     const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);
-    auto cut = turning::balanceRoughing(rough.turn->path, rough.turn->cutting, *machine, set);
+    auto cut = turning::balanceRoughing(turnOf(rough)->path, turnOf(rough)->cutting, *machine, set);
     if (!cut) return Files{Failure{cut.error()}};
     std::vector<PostedProgram> programs;
     try {

@@ -115,10 +115,10 @@ std::vector<sheet::Section> twoPathSheet(const Plan& plan)
     paths.table.widths = {1, 4, 12};
     std::size_t rough = plan.steps.size();
     for (std::size_t k = 0; k < plan.steps.size() && rough == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && plan.steps[k].turn) rough = k;
+        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) rough = k;
     std::optional<Result<BalancedCut>> cut;
     if (rough < plan.steps.size())
-        cut = turning::balanceRoughing(plan.steps[rough].turn->path, plan.steps[rough].turn->cutting, *machine,
+        cut = turning::balanceRoughing(turnOf(plan.steps[rough])->path, turnOf(plan.steps[rough])->cutting, *machine,
                                        turning::balanceSettings(plan.mmJob.twoPath, true));
     for (std::size_t k = 0; k < plan.steps.size(); ++k) {
         std::string where = fmt::format("1 ({})", mp.paths[0].name);
@@ -144,7 +144,7 @@ std::vector<sheet::Section> twoPathSheet(const Plan& plan)
     gantt.heading = "Balanced roughing on the timeline";
     gantt.table = timelineTable(t, (**cut).paths.size());
     for (std::size_t p = 0; p < mp.paths.size(); ++p) gantt.table.headers[2 + p] += " " + mp.paths[p].name;
-    const double one = singlePathSeconds(plan.steps[rough].turn->path, plan.steps[rough].turn->cutting, *machine);
+    const double one = singlePathSeconds(turnOf(plan.steps[rough])->path, turnOf(plan.steps[rough])->cutting, *machine);
     std::string deadlocks;
     for (const auto& d : t.deadlocks) deadlocks += (deadlocks.empty() ? "" : "; ") + d.why;
     gantt.note = fmt::format("Roughing on {} paths {:.2f} s against {:.2f} s on one (ratio {:.3f}); the follower at least {:.2f} "

@@ -1,16 +1,18 @@
 // A process step: one machining operation of one unit, as the decomposition
 // makes it (kind, number, outline, depths, allowances), later given its tool,
-// its tool path and its time by the tool-choice and CL stages.
+// its tool path and its time by the tool-choice and CL stages. Step holds
+// what several modules or stages read; what one module alone makes and
+// reads (an inclined face of M2D, a turning step's path and speeds, SIDE's
+// passes, ...) is the step's payload (model/step_payload.h), a struct of
+// that module's.
 #pragma once
 
-#include "model/boxed.h"
 #include "model/contour.h"
 #include "model/geometry.h"
 #include "model/step_payload.h"
 #include "model/technology.h"
 #include "model/tool.h"
 #include "model/toolpath.h"
-#include "model/turn_path.h"
 
 #include <optional>
 #include <string>
@@ -89,15 +91,6 @@ enum class MachiningType : int {
     SurfaceFinishing = 96,
 };
 
-// An inclined face of module M2D: a plane strip between its edge at the top
-// surface and its edge at the floor.
-struct InclinedFace {
-    std::array<Point2, 2> topEdge{};    // at depth 0
-    std::array<Point2, 2> floorEdge{};  // at depth T
-    double angle = 0.0;                 // from the vertical [deg]
-    friend bool operator==(const InclinedFace&, const InclinedFace&) = default;
-};
-
 struct Step {
     int unit = 0;                 // index of the unit in the job (0-based)
     std::string module;           // "M4", "M2D"
@@ -126,19 +119,16 @@ struct Step {
     double wallAllowance = 0.0;   // left on the walls after this step
     double floorAllowance = 0.0;  // left on the floor after this step
     bool multiIncision = false;   // wall cut in several Z incisions (F = 2)
-    std::optional<InclinedFace> face;  // inclined-face finishing only
-    double scallop = 0.0;              // inclined-face finishing only
     // Roughing: the unit's radial step-over as a fraction of the tool
     // diameter, when the unit overrides the technology data's.
     std::optional<double> stepOver;
-    // What only the step's module reads (model/step_payload.h): SIDE's
+    // What only the step's module makes (model/step_payload.h): SIDE's
     // contour and passes, FACE's pass angle, AREA's drawn points, HOLES'
-    // centres; the struct lives in the module's folder.
+    // centres, M2D's inclined face, SURFACE's paths; the struct lives in
+    // the module's folder. A turning step's TurnStep (model/turn_path.h:
+    // side, speeds, the path in XZ; turnOf(step) reads it) is its payload
+    // too, and then `path` stays empty: milling's stages pass it by.
     StepPayload payload;
-    // Turning steps: side, speeds, the path in XZ (then `path` stays empty:
-    // milling's stages pass such a step by). On the heap: most steps are not
-    // turned, and in place it would be a third of every step's size.
-    Boxed<TurnStep> turn;
 
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;
@@ -155,7 +145,7 @@ struct Step {
     // cutting data and the operator's values (tools/cutting.h
     // stepSpeedsFeeds); the paths' times, the post, the sheet and the step
     // table read them. Absent for a tool with no cutting data for the
-    // material, and for turning steps (theirs are in `turn`).
+    // material, and for turning steps (theirs are in their TurnStep).
     std::optional<SpeedsFeeds> speeds;
 
     std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)

@@ -1,6 +1,8 @@
 // Lengths and times of turning paths (model/turn_path.h).
 #include "model/turn_path.h"
 
+#include "model/step.h"
+
 #include "model/turned_geometry.h"
 
 #include <algorithm>
@@ -20,6 +22,8 @@ turning::Segment segmentOf(turning::ZR from, const TurnMove& m)
 }
 
 }  // namespace
+
+const TurnStep* turnOf(const Step& s) { return s.payload.getIf<TurnStep>(); }
 
 double TurnCutting::rpmAt(double diameter, double limit) const
 {

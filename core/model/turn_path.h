@@ -20,6 +20,8 @@
 
 namespace taiwa {
 
+struct Step;
+
 struct TurnMove {
     enum Kind { Rapid, Feed, ArcCW, ArcCCW };
     Kind kind = Rapid;
@@ -97,8 +99,11 @@ struct TurnThread {
     friend bool operator==(const TurnThread&, const TurnThread&) = default;
 };
 
-// What a turning step adds to a step (model/step.h).
+// What a turning step adds to a step: its payload (model/step.h,
+// model/step_payload.h), made by the TURN module and read by the lathe's
+// post, the verification, the sheet and the step table through turnOf.
 struct TurnStep {
+    static constexpr const char* kName = "TURN step";
     turning::ProfileSide side = turning::ProfileSide::Outer;
     int orientation = 3;          // the tool's tip orientation (LinuxCNC tool table Q, FANUC T)
     turning::ZR tipFromCentre{};  // programmed (imaginary tip) point minus the nose centre
@@ -112,6 +117,9 @@ struct TurnStep {
     std::optional<TurnThread> thread;  // threading: the cycle the path runs
     friend bool operator==(const TurnStep&, const TurnStep&) = default;
 };
+
+// The step's turning data, or nullptr for a step that is not turned.
+const TurnStep* turnOf(const Step& s);
 
 // Length of a turning path, split into cutting and rapid travel [mm].
 PathLength turnPathLength(const TurnPath& p);

@@ -105,9 +105,9 @@ public:
     // The tool path of one of the unit's milling steps (paths/cl.h: the tool
     // tip, from and back to the safe height), made by the module's own
     // generators from the step's geometry. Turning steps come with their
-    // paths (Step::turn) and a unit without milling steps has none to make:
-    // the default throws std::logic_error. Throws std::logic_error too for a
-    // step the checks should have refused.
+    // paths (their TurnStep, model/turn_path.h) and a unit without milling
+    // steps has none to make: the default throws std::logic_error. Throws
+    // std::logic_error too for a step the checks should have refused.
     virtual ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
                               const PathParameters& params) const;
     // About how many moves toolPath would make for the step, from its
@@ -135,8 +135,8 @@ public:
         return later.kind == earlier.kind && earlier.number < later.number;
     }
     // The step's own data the module adds to its entry in STEM.steps.json
-    // (after its depths; lengths in `u` through io::stepLength). Nothing by
-    // default.
+    // (after its depths and outline; lengths in `u` through io::stepLength).
+    // Nothing by default.
     virtual void describeStep(const Step& /*step*/, LengthUnit /*u*/, nlohmann::ordered_json& /*entry*/) const {}
     // True for a unit whose steps come before every other unit's (FACE:
     // the top is faced first, the others' depths being measured from it).

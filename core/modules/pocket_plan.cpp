@@ -4,6 +4,7 @@
 
 #include "paths/generators.h"
 
+#include "modules/inclined_face.h"
 #include "modules/pocket_tools.h"
 
 #include <algorithm>
@@ -74,7 +75,7 @@ ToolPath pocketToolPath(const Step& step, const Tool& tool, const TechnologyData
     case StepKind::Roughing: requirePositiveGamma(tech); return paths::pocketRoughing(step, tool, tech, params);
     case StepKind::FloorFinishing: return paths::floorFinishing(step, tool, params);
     case StepKind::WallFinishing: return paths::wallFinishing(step, tool, tech, params);
-    case StepKind::InclinedFaceFinishing: return paths::inclinedFace(step, tool, params);
+    case StepKind::InclinedFaceFinishing: return inclinedFacePath(step, tool, params);
     default: break;
     }
     throw std::logic_error("no pocket tool path for step " + step.label());
@@ -101,13 +102,7 @@ double pocketEstimateMoves(const Step& step, const Tool& tool, const TechnologyD
     case StepKind::Roughing: return layers * rings * kMovesPerRing;
     case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
     case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
-    case StepKind::InclinedFaceFinishing: {
-        if (!step.face) return 10;
-        const double R = std::max(tool.diameter, 1e-3) / 2, h = std::clamp(step.scallop, 1e-6, R);
-        const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
-        const double span = distance(step.face->topEdge[0], step.face->floorEdge[0]) + step.cutDepth;
-        return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
-    }
+    case StepKind::InclinedFaceFinishing: return inclinedFaceMoves(step, tool);
     default: return 10;
     }
 }

@@ -3,6 +3,7 @@
 #include "modules/pocket_tools.h"
 
 #include "model/codes.h"
+#include "modules/inclined_face.h"
 #include "tools/tool_fit.h"
 
 #include "model/translate_noop.h"
@@ -38,11 +39,12 @@ Fit fitFor(const Step& s)
         f.cornerRadius = s.reach;
         f.maxDiameter = s.inscribed;
     }
-    if (s.kind == StepKind::InclinedFaceFinishing && s.face) {
+    const InclinedFace* face = s.kind == StepKind::InclinedFaceFinishing ? s.payload.getIf<InclinedFace>() : nullptr;
+    if (face) {
         // No corner radius to fit: the ball runs along the face (along Y);
         // its radius at most half the face's length and at most 6 mm.
         f.type = ToolType::BallEndMill;
-        f.maxDiameter = std::min(12.0, distance(s.face->topEdge[0], s.face->topEdge[1]));
+        f.maxDiameter = std::min(12.0, distance(face->topEdge[0], face->topEdge[1]));
         f.cornerRadius = 0;
     } else if (s.kind == StepKind::WallFinishing && s.wallTaper > 0) {
         // The outline is at the top surface; the wall leans in by depth x
@@ -118,10 +120,11 @@ std::string describe(const Step& s, const Tool& t, const Fit& f, double shortOf,
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "taper end mill of the wall's taper {:g} deg per side (tip {}) whose tip radius {} "
                                      "fits the corner radius {} at the floor"),
                            f.taperAngle, mm(t.diameter), mm(t.radius()), mm(f.cornerRadius));
-    if (s.kind == StepKind::InclinedFaceFinishing && s.face)
+    const InclinedFace* face = s.kind == StepKind::InclinedFaceFinishing ? s.payload.getIf<InclinedFace>() : nullptr;
+    if (face)
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest ball end mill ({}) of radius at most 6 mm and half the inclined face's "
                                      "length {}"),
-                           mm(t.diameter), mm(distance(s.face->topEdge[0], s.face->topEdge[1])));
+                           mm(t.diameter), mm(distance(face->topEdge[0], face->topEdge[1])));
     return describeEndMill(t, f, shortOf, entry);
 }
 

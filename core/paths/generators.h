@@ -1,9 +1,10 @@
 // The tool-path generators the pocket modules share (M4, M2D, CP; their
 // doors choose among them by step kind, modules/pocket_plan.cpp), one source
 // file each: pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
-// inclined_face.cpp, pilot_hole.cpp; steps of contour units (Step::region)
-// region_pocket.cpp and region_walls.cpp. A module with paths of its own
-// keeps them in its folder (FACE, SIDE, AREA, HOLES).
+// pilot_hole.cpp; steps of contour units (Step::region) region_pocket.cpp
+// and region_walls.cpp. A module with paths of its own keeps them in its
+// folder (FACE, SIDE, AREA, HOLES); M2D's inclined faces are in
+// modules/inclined_face.cpp, beside the pocket modules' shared code.
 #pragma once
 
 #include "model/step.h"
@@ -22,7 +23,6 @@ namespace taiwa::paths {
 ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
-ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& p);
 ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath regionFloorFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 ToolPath regionWallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);

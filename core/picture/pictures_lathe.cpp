@@ -6,6 +6,7 @@
 
 #include "machine/machine.h"
 #include "model/turned_geometry.h"
+#include "model/turn_path.h"
 #include "picture/canvas.h"
 #include "sheet/sheet.h"
 #include "sim/turned_stock.h"
@@ -111,9 +112,9 @@ Picture turnedPicture(const Plan& plan, int step, int width, int height)
         if (const int p = x % 16; p < 9 || (p >= 11 && p < 13)) image.set(x, std::clamp(static_cast<int>(axisY), 0, height - 1), kCentreLine);
     // The path of the step: its feed moves in (z, r).
     const Step& s = plan.steps[static_cast<std::size_t>(step)];
-    if (s.turn) {
-        turning::ZR at = s.turn->path.start;
-        for (const auto& m : s.turn->path.moves) {
+    if (turnOf(s)) {
+        turning::ZR at = turnOf(s)->path.start;
+        for (const auto& m : turnOf(s)->path.moves) {
             if (m.kind == TurnMove::ArcCW || m.kind == TurnMove::ArcCCW) {
                 const auto arc = turning::arcSegment(at, m.end, m.centre, m.kind == TurnMove::ArcCCW);
                 const int n = std::max(2, static_cast<int>(std::ceil(turning::sweep(arc) / 0.1)));

@@ -12,6 +12,7 @@
 #include "modules/registry.h"
 #include "tools/cutting.h"
 #include "tools/step_order.h"
+#include "model/turn_path.h"
 
 #include <fmt/format.h>
 
@@ -136,7 +137,7 @@ std::vector<const Tool*> bindTools(Plan& plan, const std::vector<Tool>& library,
         if (!plan.tool(tool.id)) plan.tools.push_back(tool);
         if (tool.id != currentTool) ++plan.toolChanges;
         currentTool = tool.id;
-        if (step.turn) continue;
+        if (turnOf(step)) continue;
         // The automatic S and F within the job's machine (docs/tools.md).
         const Machine* machine = findMachine(plan.mmJob.machine);
         step.speeds = machine ? stepSpeedsFeeds(step, tool, plan.mmJob.material, machine->maxSpindleSpeed, machine->maxFeed)
@@ -192,8 +193,8 @@ void makePaths(Plan& plan, const std::vector<const Tool*>& toolOf, const PathPar
     todo.reserve(plan.steps.size());
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         Step& step = plan.steps[i];
-        if (step.turn) {  // turning steps come with their paths and plain times
-            if (motion) step.machineMinutes = turnMachineMinutes(*step.turn, *machine);
+        if (turnOf(step)) {  // turning steps come with their paths and plain times
+            if (motion) step.machineMinutes = turnMachineMinutes(*turnOf(step), *machine);
             continue;
         }
         if (const StepPath* known = cache ? cache->findPath(step) : nullptr) {

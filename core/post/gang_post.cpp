@@ -7,6 +7,7 @@
 #include "post/lathe_post.h"
 #include "post/number_format.h"
 #include "post/tape_image.h"
+#include "model/turn_path.h"
 
 #include <fmt/format.h>
 
@@ -85,9 +86,9 @@ PartEnvelope pathsEnvelope(const std::vector<Step>& steps)
         e.radius = std::max(e.radius, std::abs(p.r));
     };
     for (const Step& s : steps)
-        if (s.turn) {
-            take(s.turn->path.start);
-            for (const auto& m : s.turn->path.moves) take(m.end);
+        if (turnOf(s)) {
+            take(turnOf(s)->path.start);
+            for (const auto& m : turnOf(s)->path.moves) take(m.end);
         }
     if (e.zFront < e.zBack) e = {};
     return e;

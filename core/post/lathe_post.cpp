@@ -49,13 +49,13 @@ public:
         for (std::size_t i = 0; i < steps_.size(); ++i)
             if (usesCycle(steps_[i])) {
                 sink_.source({static_cast<int>(i), -1});
-                sink_.contourSubroutine(subNumber(i), *steps_[i].turn->path.cycle);
+                sink_.contourSubroutine(subNumber(i), *turnOf(steps_[i])->path.cycle);
             }
     }
 
     void step(std::size_t index, const Step& s)
     {
-        const TurnStep& ts = *s.turn;
+        const TurnStep& ts = *turnOf(s);
         const int station = stationOf(s.tool->toolId);
         sink_.source({static_cast<int>(index), -1});
         const auto u = static_cast<std::size_t>(s.unit);
@@ -122,7 +122,7 @@ private:
     // written: its tapes carry the passes).
     bool usesCycle(const Step& s) const
     {
-        return o_.turningCycles && d_.syntax != post::Syntax::Sinumerik && s.turn && s.turn->path.cycle.has_value();
+        return o_.turningCycles && d_.syntax != post::Syntax::Sinumerik && turnOf(s) && turnOf(s)->path.cycle.has_value();
     }
     static int subNumber(std::size_t stepIndex) { return 100 + static_cast<int>(stepIndex) + 1; }
     turning::ZR changePoint() const { return {o_.latheChangeZ, o_.latheChangeX / 2.0}; }
@@ -136,7 +136,7 @@ private:
     int orientationOf(int id) const
     {
         for (const auto& s : steps_)
-            if (s.tool && s.tool->toolId == id && s.turn) return s.turn->orientation;
+            if (s.tool && s.tool->toolId == id && turnOf(s)) return turnOf(s)->orientation;
         return 0;
     }
 
@@ -177,7 +177,7 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
     if (const auto can = post::canPost(*dialect, post::Task::LatheTape); !can) throw Refusal(can.error());
     // What planJob made and bound: a step without is the caller's bug.
     for (const auto& s : orderedSteps) {
-        if (!s.turn || !s.tool) throw std::logic_error("post-processor: step " + s.label() + " is not a turning step with a tool");
+        if (!turnOf(s) || !s.tool) throw std::logic_error("post-processor: step " + s.label() + " is not a turning step with a tool");
         if (!findTool(library, s.tool->toolId))
             throw std::logic_error("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
     }

@@ -155,7 +155,7 @@ private:
 PostedProgram postProcess(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
                           const PostOptions& options)
 {
-    if (std::any_of(orderedSteps.begin(), orderedSteps.end(), [](const Step& s) { return s.turn.has_value(); })) {
+    if (std::any_of(orderedSteps.begin(), orderedSteps.end(), [](const Step& s) { return turnOf(s) != nullptr; })) {
         // A gang-tool lathe: its tool changes as the slide must make them (gang_post.h).
         if (const Machine* m = findMachine(options.machine); m && m->layout.gang)
             return postGangTool(orderedSteps, library, *m->layout.gang, pathsEnvelope(orderedSteps), options);

@@ -5,6 +5,7 @@
 #include "post/lathe_post.h"
 #include "post/number_format.h"
 #include "turning/turn_tools.h"
+#include "model/turn_path.h"
 
 #include <fmt/format.h>
 
@@ -70,8 +71,8 @@ std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const 
         const double nose = t && !drill ? t->cornerRadius : 0.0;
         int orientation = 0;
         for (const auto& s : orderedSteps)
-            if (s.tool && s.tool->toolId == id && s.turn) {
-                orientation = s.turn->orientation;
+            if (s.tool && s.tool->toolId == id && turnOf(s)) {
+                orientation = turnOf(s)->orientation;
                 break;
             }
         out += fmt::format("T{} P{} X0 Z0 D{} Q{} ;library T{} {}\n", station, station, post::formatNumber(2.0 * nose / 25.4, 6, false),

@@ -26,13 +26,13 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::ve
     const bool linuxcnc = d->macroSyntax == "linuxcnc" && d->syntax == post::Syntax::Iso;
     if (!fanuc && !linuxcnc)
         throw Refusal("post-processor: " + d->name + " writes no two-path programs (FANUC's family and LinuxCNC do)");
-    if (!roughing.turn) throw std::logic_error("post-processor: the balanced cut's step is not a turning step");
+    if (!turnOf(roughing)) throw std::logic_error("post-processor: the balanced cut's step is not a turning step");
     const auto dwellNumber = [&](double s) { return post::formatNumber(s, 3, d->decimalPointAlways); };
     std::vector<PostedProgram> out;
     for (std::size_t p = 0; p < cut.paths.size(); ++p) {
         const BalancedPath& bp = cut.paths[p];
         Step s = roughing;
-        TurnStep ts = *roughing.turn;
+        TurnStep ts = *turnOf(roughing);
         ts.path = {};
         ts.path.start = bp.start;
         // Where each block's cut starts among the path's moves.
@@ -43,7 +43,7 @@ std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::ve
         }
         const std::size_t tailFrom = ts.path.moves.size();
         ts.path.moves.insert(ts.path.moves.end(), bp.tail.begin(), bp.tail.end());
-        s.turn = ts;
+        s.payload = ts;
         PostOptions o = options;
         o.programNumber = options.programNumber + static_cast<int>(p);
         o.programName = fmt::format("Path {} {}: {}", p + 1, layout.paths[p].name, options.programName);

@@ -4,6 +4,7 @@
 
 #include "machine/machine.h"
 #include "model/technology.h"
+#include "model/turn_path.h"
 #include "post/dialect.h"
 #include "post/lathe_post.h"
 
@@ -85,7 +86,7 @@ std::string latheSetup(const Plan& plan, const std::function<std::string(double)
         chuck = fmt::format(" in chuck Ø{}", len(m->chuckDiameter));
     double limit = 0.0;
     for (const auto& s : plan.steps)
-        if (s.turn && s.turn->cutting.constantSurfaceSpeed) limit = s.turn->cutting.maxRpm;
+        if (turnOf(s) && turnOf(s)->cutting.constantSurfaceSpeed) limit = turnOf(s)->cutting.maxRpm;
     return fmt::format("Setup: bar Ø{}{}, out of the jaws ≥ {}; {}: X0 spindle axis (X as Ø), Z0 finished face{}.",
                        len(job.bar->diameter), chuck, len(barStickOut(plan)), plan.job.workOffset,
                        limit > 0 ? fmt::format("; vc in m/min up to {:.0f} rpm", limit) : "");
@@ -214,15 +215,15 @@ Content content(const Plan& plan, const SheetOptions& o)
     // A turning step's speed: constant surface speed with its spindle
     // limit, or the drill's rpm; its feed per revolution.
     const auto speedText = [](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
-        if (s.turn) {
-            const TurnCutting& tc = s.turn->cutting;
+        if (turnOf(s)) {
+            const TurnCutting& tc = turnOf(s)->cutting;
             return (tc.constantSurfaceSpeed ? fmt::format("vc {:.0f}", tc.surfaceSpeed) : fmt::format("{:.0f}", tc.rpm)) +
                    (s.cutting.speed ? "*" : "");
         }
         return sf ? fmt::format("{:.0f}", sf->rpm) + (s.cutting.speed ? "*" : "") : "-";
     };
     const auto feedText = [&](const Step& s, const std::optional<SpeedsFeeds>& sf) -> std::string {
-        if (s.turn) return fmt::format("{}/rev", len(s.turn->cutting.feedPerRev)) + (s.cutting.feed ? "*" : "");
+        if (turnOf(s)) return fmt::format("{}/rev", len(turnOf(s)->cutting.feedPerRev)) + (s.cutting.feed ? "*" : "");
         return sf ? feed(sf->feed) + (s.cutting.feed ? "*" : "") : "-";
     };
 
@@ -230,7 +231,7 @@ Content content(const Plan& plan, const SheetOptions& o)
         const Step& s = plan.steps[i];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
         const std::optional<SpeedsFeeds>& sf = s.speeds;
-        const PathLength pl = s.path ? pathLength(*s.path) : s.turn ? turnPathLength(s.turn->path) : PathLength{};
+        const PathLength pl = s.path ? pathLength(*s.path) : turnOf(s) ? turnPathLength(turnOf(s)->path) : PathLength{};
         // The unit by its number and the name the operator gave it.
         std::string unit = std::to_string(s.unit + 1);
         if (s.unit >= 0 && static_cast<std::size_t>(s.unit) < job.units.size() && !job.units[s.unit].name.empty())
@@ -239,10 +240,10 @@ Content content(const Plan& plan, const SheetOptions& o)
             c.pictures.push_back({fmt::format("{}. {}, unit {}", i + 1, s.label(), unit), o.stepPictures[i]});
         c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
-                                speedText(s, sf), feedText(s, sf), s.turn ? "-" : len(s.startDepth),
-                                s.turn ? "-" : len(s.cutDepth), s.turn ? len(s.turn->allowanceX) : len(s.wallAllowance),
-                                s.turn ? len(s.turn->allowanceZ) : len(s.floorAllowance),
-                                s.path || s.turn ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-",
+                                speedText(s, sf), feedText(s, sf), turnOf(s) ? "-" : len(s.startDepth),
+                                turnOf(s) ? "-" : len(s.cutDepth), turnOf(s) ? len(turnOf(s)->allowanceX) : len(s.wallAllowance),
+                                turnOf(s) ? len(turnOf(s)->allowanceZ) : len(s.floorAllowance),
+                                s.path || turnOf(s) ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-",
                                 s.machineMinutes ? fmt::format("{:.2f}", *s.machineMinutes) : "-"});
     }
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
@@ -264,7 +265,7 @@ Content content(const Plan& plan, const SheetOptions& o)
         if (!t) continue;
         int orientation = 0;
         for (const auto& s : plan.steps)
-            if (s.tool && s.tool->toolId == id && s.turn) orientation = s.turn->orientation;
+            if (s.tool && s.tool->toolId == id && turnOf(s)) orientation = turnOf(s)->orientation;
         const std::string insert = !t->turning.insertCode.empty() ? t->turning.insertCode
                                    : t->turning.width > 0        ? "blade " + len(t->turning.width)
                                                                  : toString(t->type);

@@ -2,6 +2,7 @@
 #include "sim/turned_shapes.h"
 
 #include "model/turned_geometry.h"
+#include "model/turn_path.h"
 
 #include <algorithm>
 
@@ -20,7 +21,7 @@ std::vector<ZR> movePoints(ZR from, const TurnMove& m, double tol)
 
 std::vector<ZR> shapeOf(const Step& s, const Tool& t, int sides)
 {
-    const TurnStep& ts = *s.turn;
+    const TurnStep& ts = *turnOf(s);
     const bool inner = ts.side == turning::ProfileSide::Inner;
     if (t.type == ToolType::Drill || t.type == ToolType::CentreDrill)
         return {{0.0, 0.0}, {200.0, 0.0}, {200.0, t.radius()}, {0.0, t.radius()}};

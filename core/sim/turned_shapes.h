@@ -6,6 +6,7 @@
 
 #include "model/plan.h"
 #include "model/turned.h"
+#include "model/turn_path.h"
 #include "turning/turn_region.h"
 
 #include <optional>

@@ -2,6 +2,7 @@
 #include "sim/turned_stock.h"
 
 #include "model/turned_geometry.h"
+#include "model/turn_path.h"
 #include "sim/turned_clipper.h"
 #include "sim/turned_shapes.h"
 
@@ -24,8 +25,8 @@ std::vector<std::vector<ZR>> turnedStockAfter(const Plan& plan, int last)
     for (int k = 0; k < n; ++k) {
         const Step& s = plan.steps[static_cast<std::size_t>(k)];
         const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-        if (!s.turn || !t) continue;
-        const TurnPath& p = s.turn->path;
+        if (!turnOf(s) || !t) continue;
+        const TurnPath& p = turnOf(s)->path;
         const std::vector<ZR> shape = shapeOf(s, *t);
         ZR at = p.start;
         std::vector<ZR> contour;  // the compensated stretch, as programmed

@@ -17,14 +17,14 @@ std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
     TwoPathCheck out;
     const Step* rough = nullptr;
     for (const Step& s : plan.steps)
-        if (!rough && s.machiningType == MachiningType::TurnRoughing && s.turn) rough = &s;
+        if (!rough && s.machiningType == MachiningType::TurnRoughing && turnOf(s)) rough = &s;
     if (!rough) {
         out.findings.push_back(fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
                                            plan.mmJob.machine));
         return out;
     }
     const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);  // as the export
-    const auto cut = turning::balanceRoughing(rough->turn->path, rough->turn->cutting, *machine, set);
+    const auto cut = turning::balanceRoughing(turnOf(*rough)->path, turnOf(*rough)->cutting, *machine, set);
     if (!cut) {
         out.findings.push_back("balanced cut: " + cut.error());
         return out;

@@ -17,6 +17,7 @@
 
 #include "machine/machine.h"
 #include "model/turned_geometry.h"
+#include "model/turn_path.h"
 #include "sim/turned_clipper.h"
 #include "sim/turned_shapes.h"
 
@@ -86,11 +87,11 @@ public:
         for (std::size_t k = 0; k < plan.steps.size(); ++k) {
             const Step& s = plan.steps[k];
             const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-            if (!s.turn || !t || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) continue;
+            if (!turnOf(s) || !t || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) continue;
             UnitData& u = units_[static_cast<std::size_t>(s.unit)];
             if (s.machiningType == MachiningType::TurnFinishing) {
                 u.lastFinish = static_cast<int>(k);
-                u.allowance = std::min({u.allowance, s.turn->allowanceX, s.turn->allowanceZ});
+                u.allowance = std::min({u.allowance, turnOf(s)->allowanceX, turnOf(s)->allowanceZ});
                 u.nose = std::max(u.nose, t->cornerRadius);
             }
             if (u.lastFinish >= 0 &&
@@ -114,7 +115,7 @@ public:
         for (std::size_t k = 0; k < plan_.steps.size(); ++k) {
             const Step& s = plan_.steps[k];
             const Tool* t = s.tool ? plan_.tool(s.tool->toolId) : nullptr;
-            if (!s.turn || !t) continue;
+            if (!turnOf(s) || !t) continue;
             const double before = volumeOf(stock_);
             cutStep(static_cast<int>(k), *t);
             r.removed[k] = before - volumeOf(stock_);
@@ -272,7 +273,7 @@ private:
     void cutStep(int k, const Tool& t)
     {
         const Step& s = plan_.steps[static_cast<std::size_t>(k)];
-        const TurnStep& ts = *s.turn;
+        const TurnStep& ts = *turnOf(s);
         const bool insert = t.type == ToolType::TurningInsert;
         const int sides = sidesFor(t.cornerRadius);
         const std::vector<ZR> shape = sim::shapeOf(s, t, sides);
@@ -350,7 +351,7 @@ private:
         if (s.machiningType != MachiningType::TurnRoughing || s.unit < 0 || s.unit >= static_cast<int>(units_.size())) return;
         const UnitData& u = units_[static_cast<std::size_t>(s.unit)];
         if (!u.outline) return;
-        const TurnStep& ts = *s.turn;
+        const TurnStep& ts = *turnOf(s);
         const double allowance = std::max(ts.allowanceX, ts.allowanceZ);
         const double near = allowance + std::max(ts.depthOfCut, t.cornerRadius) + t.cornerRadius + res_;
         const Paths reach =
@@ -394,8 +395,8 @@ private:
         Extreme xLo{kInf, -1, -1, {}}, xHi{-kInf, -1, -1, {}}, zLo{kInf, -1, -1, {}}, zHi{-kInf, -1, -1, {}};
         for (std::size_t k = 0; k < plan_.steps.size(); ++k) {
             const Step& s = plan_.steps[k];
-            if (!s.turn) continue;
-            const TurnPath& p = s.turn->path;
+            if (!turnOf(s)) continue;
+            const TurnPath& p = turnOf(s)->path;
             const auto see = [&](ZR q, int m) {
                 const int step = static_cast<int>(k);
                 if (xScale * q.r < xLo.value) xLo = {xScale * q.r, step, m, q};
@@ -435,7 +436,7 @@ private:
 Report verifyTurning(const Plan& plan, const Options& options)
 {
     const bool cuts = std::any_of(plan.steps.begin(), plan.steps.end(), [&](const Step& s) {
-        return s.turn && s.tool && plan.tool(s.tool->toolId) && !s.turn->path.moves.empty();
+        return turnOf(s) && s.tool && plan.tool(s.tool->toolId) && !turnOf(s)->path.moves.empty();
     });
     if (!cuts) {
         Report r;

@@ -7,6 +7,7 @@
 #include "support/turning_oracle_stock.h"
 
 #include "post/lathe_post.h"
+#include "model/turn_path.h"
 
 #include <cstdio>
 
@@ -19,7 +20,7 @@ namespace {
 int orientationFor(const Plan& plan, int toolId)
 {
     for (const auto& s : plan.steps)
-        if (s.tool && s.tool->toolId == toolId && s.turn) return s.turn->orientation;
+        if (s.tool && s.tool->toolId == toolId && turnOf(s)) return turnOf(s)->orientation;
     return 0;
 }
 
@@ -87,9 +88,9 @@ LatheVerdict judgeLatheTape(const Plan& plan, const Rs274Result& run, const Lath
             v.problems << QString("station %1: T%2 %3 is no lathe tool").arg(station).arg(id).arg(QString::fromStdString(t->name));
     }
     for (const auto& s : plan.steps)
-        if (s.tool && s.turn && s.turn->orientation != orientationFor(plan, s.tool->toolId))
+        if (s.tool && turnOf(s) && turnOf(s)->orientation != orientationFor(plan, s.tool->toolId))
             v.problems << QString("%1 uses T%2 with orientation %3, the tool table has %4")
-                              .arg(QString::fromStdString(s.label())).arg(s.tool->toolId).arg(s.turn->orientation)
+                              .arg(QString::fromStdString(s.label())).arg(s.tool->toolId).arg(turnOf(s)->orientation)
                               .arg(orientationFor(plan, s.tool->toolId));
 
     std::map<int, Material> materials, drawn;  // by unit: the deformed profile's material, the part as drawn
@@ -167,7 +168,7 @@ LatheVerdict judgeLatheTape(const Plan& plan, const Rs274Result& run, const Lath
             const bool roughing = step.kind == StepKind::TurnRoughing;
             const bool finishing = step.kind == StepKind::TurnFinishing;
             const bool threading = step.kind == StepKind::Threading;
-            const double allowance = roughing && step.turn ? std::min(step.turn->allowanceX, step.turn->allowanceZ) : 0.0;
+            const double allowance = roughing && turnOf(step) ? std::min(turnOf(step)->allowanceX, turnOf(step)->allowanceZ) : 0.0;
             double worst = -kInf, closest = kInf, nearest = kInf;
             P worstAt{}, closestAt{}, nearestAt{};
             for (const P& c : pts) {
@@ -303,7 +304,7 @@ LatheVerdict judgeLatheTape(const Plan& plan, const Rs274Result& run, const Lath
     // Grooving: withdrawn along the outward normal by the withdrawal.
     for (std::size_t si = 0; si < nSteps; ++si) {
         const Step& s = plan.steps[si];
-        if (s.kind != StepKind::Grooving || !s.turn) continue;
+        if (s.kind != StepKind::Grooving || !turnOf(s)) continue;
         const QString name = QString("step %1 %2").arg(si + 1).arg(QString::fromStdString(s.label()));
         std::optional<std::size_t> last;
         for (std::size_t i = 0; i < run.moves.size(); ++i)
@@ -333,10 +334,10 @@ LatheVerdict judgeLatheTape(const Plan& plan, const Rs274Result& run, const Lath
         const P n = mat->second.airNormal(nearest, q);
         const P move = b - a;
         const double len = length(move), off = std::abs(cross(move, n)), along = dot(move, n);
-        if (std::abs(len - s.turn->withdrawal) > o.tolerance || off > o.tolerance || along <= 0)
+        if (std::abs(len - turnOf(s)->withdrawal) > o.tolerance || off > o.tolerance || along <= 0)
             problem(QString("%1: the withdrawal %2 to %3 is %4 mm long (the step's withdrawal %5 mm), %6 mm off the outward normal "
                             "(%7, %8) of %9")
-                        .arg(name, where(a), where(b), mm(len), mm(s.turn->withdrawal), mm(off), mm(n.x), mm(n.y),
+                        .arg(name, where(a), where(b), mm(len), mm(turnOf(s)->withdrawal), mm(off), mm(n.x), mm(n.y),
                              QString::fromStdString(mat->second.profile()[nearest].id)));
     }
     return v;

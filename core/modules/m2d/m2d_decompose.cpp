@@ -3,6 +3,7 @@
 // slope, floor finishing of the flat part, the vertical walls, and the two
 // inclined faces (see docs/decomposition.md).
 #include "modules/m2d/m2d.h"
+#include "modules/inclined_face.h"
 #include "decompose/make_step.h"
 
 #include "model/codes.h"
@@ -27,7 +28,7 @@ int roundHalfUp(double x) { return static_cast<int>(std::floor(x + 0.5 + 1e-9));
 InclinedFace face(const M2DPocket& p, double xTop, double xFloor, double angle)
 {
     const double y0 = p.corner.y, y1 = p.corner.y + p.lengthY;
-    return {{{{xTop, y0}, {xTop, y1}}}, {{{xFloor, y0}, {xFloor, y1}}}, angle};
+    return {{{{xTop, y0}, {xTop, y1}}}, {{{xFloor, y0}, {xFloor, y1}}}, angle, p.scallop};
 }
 
 }  // namespace
@@ -97,8 +98,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     for (const InclinedFace& f : faces) {
         if (f.angle <= 0.0) continue;
         Step s = makeStep(unit, "M2D", StepKind::InclinedFaceFinishing, ++number, MachiningType::InclinedFaceFinishing);
-        s.face = f;
-        s.scallop = p.scallop;
+        s.payload = f;
         s.position = 0.25 * (f.topEdge[0] + f.topEdge[1] + f.floorEdge[0] + f.floorEdge[1]);
         s.cutDepth = T;
         s.wallTaper = f.angle;

@@ -2,6 +2,7 @@
 // job-file keys, checks, outline, planning and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
 #include "modules/m2d/m2d_kind.h"
+#include "modules/inclined_face.h"
 #include "modules/pocket_plan.h"
 
 #include "io/json_write.h"
@@ -43,6 +44,18 @@ public:
     const char* drawing() const override { return ":/modules/m2d.svg"; }
     const char* outlineField() const override { return "corner"; }
     std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
+    // An inclined-face step's face: its edges, its angle and the scallop height.
+    void describeStep(const Step& s, LengthUnit u, nlohmann::ordered_json& j) const override
+    {
+        const auto* face = s.payload.getIf<InclinedFace>();
+        if (!face) return;
+        nlohmann::ordered_json f;
+        f["topEdge"] = {io::stepPoint(face->topEdge[0], u), io::stepPoint(face->topEdge[1], u)};
+        f["floorEdge"] = {io::stepPoint(face->floorEdge[0], u), io::stepPoint(face->floorEdge[1], u)};
+        f["angle"] = face->angle;
+        f["scallop"] = io::stepLength(face->scallop, u);
+        j["face"] = f;
+    }
 
     ModuleInput makeDefault(const Stock& s) const override
     {

@@ -35,10 +35,10 @@ public:
     const char* drawing() const override { return ":/modules/turn.svg"; }
     MachineKind machineKind() const override { return MachineKind::Lathe; }
     std::vector<std::string> stepKeys() const override { return turning::turnStepKeys(); }
-    // Turning steps come with their paths (Step::turn).
+    // Turning steps come with their paths (their TurnStep, turnOf).
     double estimateMoves(const Step& step, const Tool&, const TechnologyData&, const PathParameters&) const override
     {
-        return step.turn ? static_cast<double>(step.turn->path.moves.size()) : 10;
+        return turnOf(step) ? static_cast<double>(turnOf(step)->path.moves.size()) : 10;
     }
     // Drilling runs at a fixed rpm (G97); every other turning step at a surface speed.
     bool surfaceSpeedStep(const std::string& key) const override { return key != "drill" && key != "centre-drill"; }

@@ -73,7 +73,7 @@ Step& Planner::addStep(StepKind kind, MachiningType type, const Tool& tool, std:
     s.tool = ToolChoice{tool.id, std::move(reason)};
     s.minutes = turnMinutes(turn.path, turn.cutting, q_.rapid);
     s.cutDepth = 0.0;
-    s.turn = std::move(turn);
+    s.payload = std::move(turn);
     out_.steps.push_back(std::move(s));
     return out_.steps.back();
 }

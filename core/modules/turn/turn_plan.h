@@ -14,6 +14,7 @@
 #include "model/technology.h"
 #include "model/tool.h"
 #include "model/turned.h"
+#include "model/turn_path.h"
 #include "turning/profile_resolve.h"
 
 #include <map>

@@ -1,7 +1,8 @@
-// Inclined-face finishing of module M2D: a ball end mill in passes parallel
-// to the face's top edge, stepping down the slope by the step-over that
-// leaves the set scallop height, alternating direction (zig-zag).
-#include "paths/generators.h"
+// Inclined-face finishing of module M2D (inclined_face.h): a ball end mill in
+// passes parallel to the face's top edge, stepping down the slope by the
+// step-over that leaves the set scallop height, alternating direction
+// (zig-zag); and the moves that makes, estimated before.
+#include "modules/inclined_face.h"
 
 #include "paths/path_builder.h"
 
@@ -9,14 +10,19 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
-namespace taiwa::paths {
+namespace taiwa {
 
-ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& p)
+using paths::PathBuilder;
+
+ToolPath inclinedFacePath(const Step& step, const Tool& tool, const PathParameters& p)
 {
-    if (!step.face) throw std::logic_error("inclined-face step without its face");
+    const InclinedFace* face = step.payload.getIf<InclinedFace>();
+    if (!face)
+        throw std::logic_error("inclined-face step without its face (it holds " + std::string(step.payload.name()) + ")");
     if (tool.type != ToolType::BallEndMill) throw std::logic_error("inclined faces are finished with a ball end mill");
-    const InclinedFace& f = *step.face;
+    const InclinedFace& f = *face;
     const double R = tool.radius(), T = step.cutDepth;
     const double theta = f.angle * std::numbers::pi / 180.0;
     const double len = distance(f.topEdge[0], f.topEdge[1]);
@@ -39,8 +45,8 @@ ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& 
     if (len <= 2 * margin) throw std::logic_error("inclined face shorter than the ball end mill");
     // Contact points from the top edge (u = 0) down to where the tip reaches
     // the floor, at most one scallop step-over apart along the slope.
-    if (!(step.scallop > 0.0)) throw std::logic_error("inclined face without a scallop height");
-    const double h = std::min(step.scallop, R);
+    if (!(f.scallop > 0.0)) throw std::logic_error("inclined face without a scallop height");
+    const double h = std::min(f.scallop, R);
     const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
     const double uMax = std::max(0.0, (T - R * (1 - nZ)) / T);
     const double slope = uMax * T / std::cos(theta);
@@ -64,4 +70,14 @@ ToolPath inclinedFace(const Step& step, const Tool& tool, const PathParameters& 
     return b.take();
 }
 
-}  // namespace taiwa::paths
+double inclinedFaceMoves(const Step& step, const Tool& tool)
+{
+    const InclinedFace* f = step.payload.getIf<InclinedFace>();
+    if (!f) return 10;
+    const double R = std::max(tool.diameter, 1e-3) / 2, h = std::clamp(f->scallop, 1e-6, R);
+    const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
+    const double span = distance(f->topEdge[0], f->floorEdge[0]) + step.cutDepth;
+    return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
+}
+
+}  // namespace taiwa
