@@ -1,20 +1,21 @@
 // The command line of docs/command-line.md: `taiwa [JOB]`, `taiwa check JOB`,
 // `taiwa export JOB --out DIR ...`, `taiwa verify JOB ...` (its report in
-// app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `taiwa
-// figure-from-dxf FILE.dxf ...`, `taiwa store list|history` and `taiwa
-// import-tools` (app/store_command.cpp), `--version`, `--help`. Exit codes: 0 ok, 2 input errors, 3 verification faults, 1
-// internal failure.
+// app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `taiwa import
+// STEP` and `taiwa figure-from-dxf FILE.dxf ...` (app/import_commands.cpp),
+// `taiwa store list|history` and `taiwa import-tools`
+// (app/store_command.cpp), `--version`, `--help`, `--list-machines` and
+// `--list-dialects` (app/about_commands.cpp). Exit codes (app/exit_codes.h):
+// 0 ok, 2 input errors, 3 verification faults, 1 internal failure.
 #include "app/cli.h"
 
+#include "app/about_commands.h"
+#include "app/exit_codes.h"
+#include "app/import_commands.h"
 #include "app/options.h"
 #include "app/store_command.h"
 #include "app/verify_command.h"
-#include "dxf/dxf_import.h"
-#include "job/dxf_figure.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
-#include "job/step_job.h"
-#include "machine/machine.h"
 #include "post/dialect.h"
 #include "post/post.h"
 #include "io/job_io.h"
@@ -47,87 +48,6 @@
 namespace taiwa::app {
 
 namespace {
-
-constexpr int kOk = 0, kInternal = 1, kInputErrors = 2, kFindings = 3;
-
-const char* const kHelp = R"(taiwa - conversational NC programming station
-
-Usage:
-  taiwa [JOB]                      open the station window (with JOB loaded)
-  taiwa check JOB                  input processing only; one line per error:
-                                   JOB: unit N (MODULE) field: message
-  taiwa export JOB --out DIR [--dialect NAME] [--units mm|inch] [--no-pictures]
-                                   the whole pipeline; writes STEM.nc (.mpf for
-                                   sinumerik, .h for heidenhain), STEM.tape.txt,
-                                   STEM.sheet.html, STEM.sheet.pdf and
-                                   STEM.steps.json into DIR (and each probing
-                                   unit's programs, and a linuxcnc lathe tape's
-                                   tool table STEM.tbl); the dialect (--list-dialects):
-                                   --dialect, else the job's, else linuxcnc;
-                                   verifies first (--resolution) and writes
-                                   nothing when a gouge, collision or travel
-                                   limit is found (exit 3), unless --force,
-                                   which writes them into the sheet in red;
-                                   the sheet shows each step's stock in a
-                                   picture (drawn on the processor: no display)
-  taiwa export --from-store NAME --out DIR [...]
-                                   the same for the newest version of job NAME
-                                   of the shop server's store (TAIWA_TOOL_DB)
-  taiwa verify JOB [--resolution MM] [--json]
-                                   cuts every step into the stock on a grid of
-                                   MM (default 0.05) and prints each gouge,
-                                   collision, rapid into stock, travel limit
-                                   and material left, with its step, move and
-                                   tape line; exit 3 when a gouge, collision
-                                   or travel limit is found
-  taiwa render JOB --out PNG [--step K|all] [--stock] [--size WxH]
-               [--view iso|top|front|profile]
-                                   the 3-D preview of step K (1-based, in
-                                   machining order) or all steps, to a PNG; a
-                                   lathe job: the part revolved, or with
-                                   --view profile its profile views
-  taiwa import STEP --out JOB [--material ID]
-                                   a lathe job from a STEP solid of revolution:
-                                   its outer profile (and bore) as turned-profile
-                                   units, a bar that holds it; JOB must not exist
-  taiwa figure-from-dxf FILE.dxf [--layers A,B] [--gap MM] [--units mm|inch]
-                                   the contours of a DXF drawing (on the
-                                   layers given; ends within MM, default 0.01,
-                                   joined; lengths in the unit given, else the
-                                   file's) as figure elements on stdout; what
-                                   was read, gaps, branches and contours left
-                                   out on stderr; exit 2 when the file is
-                                   refused, has gaps or a contour is left out
-  taiwa import-tools FILE.sqlite
-                                   the shop server's tool library (TAIWA_TOOL_DB
-                                   or --tools, a postgresql:// setting) replaced
-                                   by that of an SQLite library of any version;
-                                   the file is left as it was
-  taiwa store list | taiwa store history NAME
-                                   the shop server's job store (TAIWA_TOOL_DB
-                                   or --tools): each job with its newest
-                                   version, who saved it from which station
-                                   and when, and who has it open; or every
-                                   version of job NAME; tab-separated lines
-  taiwa --list-machines | --list-dialects
-                                   the machines and dialects this program knows
-                                   (shipped, and the shop's own in
-                                   ~/.config/taiwa/machines|dialects/*.json),
-                                   with where each comes from
-  taiwa --version | --help
-
-Common options:
-  --tools DB    the tool library (SQLite); default $TAIWA_TOOL_DB or
-                ~/.local/share/taiwa/tools.sqlite, created on first use
-  --no-cache    verify, export: verify afresh; otherwise a report stored by
-                an earlier verify or export of the same job, plan, library
-                tools, machine and resolution is reused
-                ($XDG_CACHE_HOME/taiwa/verification, or $TAIWA_CACHE_DIR)
-
-Exit status: 0 ok, 2 input errors (the job's, the options' or the tool
-library's; nothing written), 3 the verification found
-a gouge, a collision or a travel limit, 1 internal failure.
-)";
 
 int printDiagnostics(const std::string& jobName, const Diagnostics& ds)
 {
@@ -169,82 +89,6 @@ Loaded load(const Options& o, bool withToolPaths)
     l.plan = planJob(*read.job, TechnologyTable::builtIn(), *tools, options);
     l.exit = printDiagnostics(name, l.plan.diagnostics);
     return l;
-}
-
-int importStep(const Options& o)
-{
-    std::error_code ec;
-    if (std::filesystem::exists(o.out, ec)) {
-        std::cerr << "taiwa: import: " << o.out << " exists; give a new file name (nothing was written)\n";
-        return kInputErrors;
-    }
-    const auto job = latheJobFromStep(o.job, o.material);
-    if (!job) {
-        std::cerr << "taiwa: import: " << job.error() << '\n';
-        return kInputErrors;
-    }
-    if (!TechnologyTable::builtIn().find(o.material)) {
-        std::cerr << "taiwa: import: material '" << o.material << "' is not in the technology table\n";
-        return kInputErrors;
-    }
-    if (auto saved = writeFileAtomically(o.out, writeJob(*job)); !saved) {
-        std::cerr << "taiwa: import: " << saved.error() << '\n';
-        return kInternal;
-    }
-    std::cout << "taiwa: wrote " << o.out << ": " << job->units.size() << " turned profile"
-              << (job->units.size() == 1 ? "" : "s") << " on a bar D" << job->bar->diameter << " x " << job->bar->length
-              << " mm\n";
-    return kOk;
-}
-
-// A DXF drawing's contours as figure text on stdout (job/dxf_figure.h), and
-// on stderr what was read and what is wrong with it.
-int figureFromDxf(const Options& o)
-{
-    const std::string name = fileName(o.job);
-    dxf::DxfOptions d;
-    d.layers = o.layers;
-    if (o.gap) d.gapTolerance = *o.gap;
-    if (o.units) d.units = *o.units == LengthUnit::Inch ? dxf::Units::Inches : dxf::Units::Millimetres;
-    const dxf::DxfReadResult r = dxf::readDxf(o.job, d);
-    for (const auto& w : r.warnings) std::cerr << name << ": " << w << '\n';
-    if (!r.ok()) {
-        std::cerr << name << ": " << *r.error << '\n';
-        return kInputErrors;
-    }
-    std::vector<Contour> contours;
-    for (const auto& c : r.contours) contours.push_back(c.contour);
-    const FigureFromContours f = figureFromContours(contours);
-    std::cout << f.text;
-    std::string layers;
-    for (const auto& l : r.layers)
-        if (l.selected) layers += (layers.empty() ? "" : ", ") + l.name;
-    std::cerr << name << ": " << r.contours.size() << " contours (" << r.closedCount() << " closed, " << r.openCount()
-              << " open) on " << (layers.empty() ? "no layer" : "layers " + layers) << ", drawn in " << r.units
-              << ", written in mm; " << r.gaps.size() << " gaps, " << r.branches.size() << " branches\n";
-    for (const auto& g : r.gaps) std::cerr << name << ": " << g.message << '\n';
-    for (const auto& b : r.branches) std::cerr << name << ": " << b.message << '\n';
-    for (const auto& n : f.notes) std::cerr << name << ": " << n << '\n';
-    for (const auto& x : f.refusals) std::cerr << name << ": " << x << '\n';
-    return r.gaps.empty() && f.refusals.empty() ? kOk : kInputErrors;
-}
-
-// One line per machine: id, kind, name and where it was read from; the
-// user's files left out on standard error.
-int listMachines()
-{
-    for (const Machine& m : machineLibrary())
-        std::cout << m.id << '\t' << toKey(m.kind) << '\t' << m.name << '\t' << m.source << '\n';
-    for (const std::string& p : machineLibraryProblems()) std::cerr << "taiwa: " << p << '\n';
-    return kOk;
-}
-
-int listDialects()
-{
-    for (const post::Dialect& d : post::dialectLibrary())
-        std::cout << d.name << '\t' << d.description << '\t' << d.source << '\n';
-    for (const std::string& p : post::dialectLibraryProblems()) std::cerr << "taiwa: " << p << '\n';
-    return kOk;
 }
 
 int check(const Options& o)
@@ -400,7 +244,7 @@ int run(int argc, char** argv)
             return kInputErrors;
         }
         switch (o.command) {
-        case Command::Help: std::cout << kHelp; return kOk;
+        case Command::Help: std::cout << helpText(); return kOk;
         case Command::Version: std::cout << "taiwa " << TAIWA_VERSION << '\n'; return kOk;
         case Command::Check: return check(o);
         case Command::Export:

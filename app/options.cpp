@@ -32,6 +32,81 @@ Result<void> parseSize(std::string_view s, Options& o)
     return {};
 }
 
+// Option `a` with its value `v` (not empty) into `o`; what is wrong with it,
+// or that it does not go with the command.
+Result<void> valueOption(std::string_view a, std::string_view v, Options& o)
+{
+    const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render,
+               forImport = o.command == Command::Import, forDxf = o.command == Command::FigureFromDxf;
+    if (a == "--tools" && !forImport && !forDxf) o.tools = v;
+    else if (a == "--out" && (forExport || forRender || forImport)) o.out = v;
+    else if (a == "--material" && forImport) o.material = v;
+    else if (a == "--from-store" && forExport) o.fromStore = v;
+    else if (a == "--dialect" && forExport) {
+        if (!isDialect(std::string(v))) {
+            std::string names;
+            for (const auto& n : dialectNames()) names += (names.empty() ? "" : ", ") + n;
+            return Failure{"unknown dialect '" + std::string(v) + "'; known: " + names};
+        }
+        o.dialect = v;
+    } else if (a == "--units" && (forExport || forDxf)) {
+        if (v == "mm") o.units = LengthUnit::Millimetre;
+        else if (v == "inch") o.units = LengthUnit::Inch;
+        else return Failure{"--units is mm or inch, not '" + std::string(v) + "'"};
+    } else if (a == "--step" && forRender) {
+        if (v == "all") o.step.reset();
+        else if (const auto k = toInt(v)) o.step = *k;
+        else return Failure{"--step wants a step number or 'all', not '" + std::string(v) + "'"};
+    } else if (a == "--size" && forRender) {
+        if (auto size = parseSize(v, o); !size) return size;
+    } else if (a == "--resolution" && (forExport || o.command == Command::Verify)) {
+        double r = 0.0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), r);
+        if (ec != std::errc() || end != v.data() + v.size() || !(r >= 0.005) || r > 5.0)
+            return Failure{"--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(v) + "'"};
+        o.resolution = r;
+    } else if (a == "--layers" && forDxf) {
+        for (std::size_t from = 0; from <= v.size();) {
+            const std::size_t comma = std::min(v.find(',', from), v.size());
+            if (comma == from) return Failure{"--layers wants layer names separated by commas, not '" + std::string(v) + "'"};
+            o.layers.emplace_back(v.substr(from, comma - from));
+            from = comma + 1;
+        }
+    } else if (a == "--gap" && forDxf) {
+        double g = 0.0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), g);
+        if (ec != std::errc() || end != v.data() + v.size())
+            return Failure{"--gap wants a distance in mm, not '" + std::string(v) + "'"};
+        o.gap = g;  // its range is the DXF import's to check
+    } else if (a == "--view" && forRender) {
+        if (v != "iso" && v != "top" && v != "front" && v != "profile")
+            return Failure{"--view is iso, top, front or profile, not '" + std::string(v) + "'"};
+        o.view = v;
+    } else {
+        return Failure{"option " + std::string(a) + " does not go with this command"};
+    }
+    return {};
+}
+
+// What the command still lacks once every argument is read (its file, the
+// store's job name, --out), or what does not go together.
+Result<void> missing(const Options& o)
+{
+    if (o.command == Command::Import && o.job.empty()) return Failure{std::string("no STEP file given")};
+    if (o.command == Command::FigureFromDxf && o.job.empty()) return Failure{std::string("no DXF file given")};
+    if (o.command == Command::ImportTools && o.job.empty()) return Failure{std::string("no SQLite tool library given")};
+    if (o.command == Command::Store) {
+        if (o.storeAction == "list" && !o.job.empty()) return Failure{"store list takes no job name ('" + o.job + "')"};
+        if (o.storeAction == "history" && o.job.empty()) return Failure{std::string("store history needs the job's name")};
+        return {};
+    }
+    if (!o.fromStore.empty() && !o.job.empty()) return Failure{"give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')"};
+    if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return Failure{std::string("no job file given")};
+    if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
+        return Failure{std::string("--out is required")};
+    return {};
+}
+
 }  // namespace
 
 Result<void> parseOptions(int argc, char** argv, Options& o)
@@ -62,7 +137,7 @@ Result<void> parseOptions(int argc, char** argv, Options& o)
         }
     }
     auto value = [&]() -> std::optional<std::string_view> {
-        if (i + 1 >= args.size()) return {};
+        if (i + 1 >= args.size()) return std::nullopt;
         return args[++i];
     };
     std::vector<std::string_view> seen;  // options given so far
@@ -98,69 +173,9 @@ Result<void> parseOptions(int argc, char** argv, Options& o)
             return Failure{"option " + std::string(a) + " is given twice"};
         seen.push_back(a);
         if (v->empty()) return Failure{"option " + std::string(a) + " needs a value, not an empty one"};
-        const bool forExport = o.command == Command::Export, forRender = o.command == Command::Render,
-                   forImport = o.command == Command::Import, forDxf = o.command == Command::FigureFromDxf;
-        if (a == "--tools" && !forImport && !forDxf) o.tools = *v;
-        else if (a == "--out" && (forExport || forRender || forImport)) o.out = *v;
-        else if (a == "--material" && forImport) o.material = *v;
-        else if (a == "--from-store" && forExport) o.fromStore = *v;
-        else if (a == "--dialect" && forExport) {
-            if (!isDialect(std::string(*v))) {
-                std::string names;
-                for (const auto& n : dialectNames()) names += (names.empty() ? "" : ", ") + n;
-                return Failure{"unknown dialect '" + std::string(*v) + "'; known: " + names};
-            }
-            o.dialect = *v;
-        } else if (a == "--units" && (forExport || forDxf)) {
-            if (*v == "mm") o.units = LengthUnit::Millimetre;
-            else if (*v == "inch") o.units = LengthUnit::Inch;
-            else return Failure{"--units is mm or inch, not '" + std::string(*v) + "'"};
-        } else if (a == "--step" && forRender) {
-            if (*v == "all") o.step.reset();
-            else if (const auto k = toInt(*v)) o.step = *k;
-            else return Failure{"--step wants a step number or 'all', not '" + std::string(*v) + "'"};
-        } else if (a == "--size" && forRender) {
-            if (auto size = parseSize(*v, o); !size) return size;
-        } else if (a == "--resolution" && (forExport || o.command == Command::Verify)) {
-            double r = 0.0;
-            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), r);
-            if (ec != std::errc() || end != v->data() + v->size() || !(r >= 0.005) || r > 5.0)
-                return Failure{"--resolution wants a cell size in mm from 0.005 to 5, not '" + std::string(*v) + "'"};
-            o.resolution = r;
-        } else if (a == "--layers" && forDxf) {
-            for (std::size_t from = 0; from <= v->size();) {
-                const std::size_t comma = std::min(v->find(',', from), v->size());
-                if (comma == from) return Failure{"--layers wants layer names separated by commas, not '" + std::string(*v) + "'"};
-                o.layers.emplace_back(v->substr(from, comma - from));
-                from = comma + 1;
-            }
-        } else if (a == "--gap" && forDxf) {
-            double g = 0.0;
-            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), g);
-            if (ec != std::errc() || end != v->data() + v->size())
-                return Failure{"--gap wants a distance in mm, not '" + std::string(*v) + "'"};
-            o.gap = g;  // its range is the DXF import's to check
-        } else if (a == "--view" && forRender) {
-            if (*v != "iso" && *v != "top" && *v != "front" && *v != "profile")
-                return Failure{"--view is iso, top, front or profile, not '" + std::string(*v) + "'"};
-            o.view = *v;
-        } else {
-            return Failure{"option " + std::string(a) + " does not go with this command"};
-        }
+        if (auto taken = valueOption(a, *v, o); !taken) return taken;
     }
-    if (o.command == Command::Import && o.job.empty()) return Failure{std::string("no STEP file given")};
-    if (o.command == Command::FigureFromDxf && o.job.empty()) return Failure{std::string("no DXF file given")};
-    if (o.command == Command::ImportTools && o.job.empty()) return Failure{std::string("no SQLite tool library given")};
-    if (o.command == Command::Store) {
-        if (o.storeAction == "list" && !o.job.empty()) return Failure{"store list takes no job name ('" + o.job + "')"};
-        if (o.storeAction == "history" && o.job.empty()) return Failure{std::string("store history needs the job's name")};
-        return {};
-    }
-    if (!o.fromStore.empty() && !o.job.empty()) return Failure{"give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')"};
-    if (o.command != Command::Station && o.job.empty() && o.fromStore.empty()) return Failure{std::string("no job file given")};
-    if ((o.command == Command::Export || o.command == Command::Render || o.command == Command::Import) && o.out.empty())
-        return Failure{std::string("--out is required")};
-    return {};
+    return missing(o);
 }
 
 }  // namespace taiwa::app

@@ -80,7 +80,14 @@ private:
     // The window's own words on its panels (group titles, tabs, buttons), in
     // the language in force: at construction and on a language switch.
     void nameParts();
+    // The signals wired to the views (station_wiring.cpp), in this order:
+    // the document and the unit forms, the plan runner, the step list, tape
+    // and findings, the 3-D view.
     void wire();
+    void wireUnitForms();
+    void wirePlanRunner();
+    void wireStepsAndTape();
+    void wirePreview();
     void onDocumentChanged(bool fromTyping);
     void onUnitSelected(int unit);
     void onFieldEdited(UnitForm* form, int field, std::optional<double> value);

@@ -27,6 +27,16 @@ namespace taiwa::ui {
 
 void StationWindow::wire()
 {
+    wireUnitForms();
+    wirePlanRunner();
+    wireStepsAndTape();
+    wirePreview();
+}
+
+// The document, the palette, the unit list and each module's form: an edit
+// typed or committed in a form is an edit of the job.
+void StationWindow::wireUnitForms()
+{
     connect(doc_, &JobDocument::changed, this, &StationWindow::onDocumentChanged);
     connect(doc_, &JobDocument::selectionRequested, units_, &UnitListPanel::selectUnit);
     connect(doc_, &JobDocument::modifiedChanged, this, &StationWindow::updateTitle);
@@ -73,6 +83,12 @@ void StationWindow::wire()
             doc_->edit(j, tr("Rename unit %1").arg(u + 1), QStringLiteral("%1:name").arg(u));
         });
     }
+}
+
+// The plan runner: its diagnostics, the step list at once, the 3-D view, the
+// NC text and the step list's times caught up after the view's frame.
+void StationWindow::wirePlanRunner()
+{
     connect(runner_, &PlanRunner::checked, this, [this](const Diagnostics& ds) {
         diagnostics_ = ds;
         showDiagnostics();
@@ -119,6 +135,12 @@ void StationWindow::wire()
             catchUpAfterFrame_ = false;
             scheduleCatchUp();
         });
+}
+
+// The dialect chooser, the step list, the tape and the verification's
+// findings, each showing what another chose; the status bar's messages.
+void StationWindow::wireStepsAndTape()
+{
     // One dialect, the job's (docs/job-format.md `dialect`): the chooser
     // shows it, the program on view is posted in it, the export offers it.
     // Choosing another is an edit of the job (undoable); a new job takes the
@@ -175,6 +197,12 @@ void StationWindow::wire()
         statusBar()->showMessage(m, 15000);
         runner_->update(doc_->job());
     });
+}
+
+// The 3-D view, when there is one: the step shown, the stock, the view
+// buttons, the playhead, a move clicked, the section and the colour map.
+void StationWindow::wirePreview()
+{
     if (!preview_) return;
     runner_->setSimulateStock(true);
     connect(steps_, &StepPanel::stepSelected, preview_, &PreviewWidget::setSelectedStep);

@@ -1,4 +1,7 @@
-// The tool library dialog.
+// The tool library dialog (tool_library_dialog.h): the table of the
+// library's tools, edited in place, copied, retired, their wear reset, and
+// the tool table exported for the control. How a change is saved and
+// undone: tool_library_saving.cpp.
 #include "ui/tool_library_dialog.h"
 #include "ui/core_messages.h"
 
@@ -28,34 +31,11 @@
 #include <cmath>
 
 namespace taiwa::ui {
-namespace {
-QString num(double v) { return formatNumber(std::round(v * 1000.0) / 1000.0); }
-}  // namespace
 
-// One change of the library, made already when it is pushed: the tool
-// before and after (none: added or removed).
-class ToolEdit : public QUndoCommand {
-public:
-    ToolEdit(ToolLibraryDialog* dialog, std::optional<Tool> before, std::optional<Tool> after, const QString& text)
-        : QUndoCommand(text), dialog_(dialog), before_(std::move(before)), after_(std::move(after))
-    {
-    }
-    void redo() override
-    {
-        if (done_) return;  // QUndoStack::push redoes what change() just did
-        dialog_->apply(after_, before_ ? before_->id : after_->id);
-    }
-    void undo() override
-    {
-        done_ = false;
-        dialog_->apply(before_, after_ ? after_->id : before_->id);
-    }
-
-private:
-    ToolLibraryDialog* dialog_;
-    std::optional<Tool> before_, after_;
-    bool done_ = true;
-};
+QString ToolLibraryDialog::num(double v)
+{
+    return formatNumber(std::round(v * 1000.0) / 1000.0);
+}
 
 ToolLibraryDialog::ToolLibraryDialog(QWidget* parent)
     : QDialog(parent), table_(new QTableWidget(this)), status_(new QLabel(this)),
@@ -191,108 +171,6 @@ std::optional<Tool> ToolLibraryDialog::selectedTool()
         return std::nullopt;
     }
     return tools_[static_cast<std::size_t>(row)];
-}
-
-namespace {
-
-// A tool in one line, for the conflict's question.
-QString summary(const Tool& t)
-{
-    return ToolLibraryDialog::tr("%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min")
-        .arg(QString::fromStdString(t.name), num(t.diameter), QString::number(t.flutes), num(t.stickout), QString::fromStdString(t.holder),
-             num(t.usedMinutes), num(t.lifeMinutes));
-}
-
-}  // namespace
-
-bool ToolLibraryDialog::applyOnServer(const std::optional<Tool>& tool, int id)
-{
-    if (!tool) {
-        if (const auto removed = server_->remove(id); !removed) {
-            fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
-            return false;
-        }
-        return true;
-    }
-    const auto known = versions_.find(tool->id);
-    const auto saved = server_->save(*tool, known == versions_.end() ? 0 : known->second);
-    if (!saved) {
-        fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
-        return false;
-    }
-    if (saved->saved()) return true;
-    // Changed (or removed) by another station since it was read: both shown, the operator chooses.
-    const ToolConflict& c = *saved->conflict;
-    QMessageBox box(QMessageBox::Warning, tr("Tool changed meanwhile"),
-                    tr("T%1 was changed by %2 at station %3 (%4) after this station read it.\n\nYours: %5\nTheirs: %6")
-                        .arg(tool->id)
-                        .arg(QString::fromStdString(c.changedBy), QString::fromStdString(c.station), QString::fromStdString(c.changedAt),
-                             summary(*tool), c.theirs ? summary(*c.theirs) : tr("removed")),
-                    QMessageBox::NoButton, this);
-    box.setObjectName("tools.conflict");
-    QPushButton* mine = box.addButton(tr("Keep mine"), QMessageBox::AcceptRole);
-    mine->setObjectName("tools.keepMine");
-    QPushButton* theirs = box.addButton(tr("Take theirs"), QMessageBox::RejectRole);
-    theirs->setObjectName("tools.takeTheirs");
-    box.exec();
-    if (box.clickedButton() == mine) {
-        const auto again = server_->save(*tool, c.theirVersion);
-        if (again && again->saved()) return true;
-        load(true);
-        fail(again ? tr("T%1 was changed again meanwhile; nothing saved").arg(tool->id)
-                   : tr("Cannot save the tool: %1").arg(coreMessage(again.error())));
-        return false;
-    }
-    load(true);
-    fail(tr("T%1: theirs taken, yours not saved").arg(tool->id));
-    changed_ = true;  // the library the window plans with changed all the same
-    return false;
-}
-
-bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
-{
-    if (server_) {
-        if (!applyOnServer(tool, id)) return false;
-    } else {
-        auto lib = ToolLibrary::open(defaultToolLibraryPath());
-        if (!lib) {
-            fail(tr("Cannot open the tool library: %1").arg(coreMessage(lib.error())));
-            return false;
-        }
-        if (tool) {
-            if (const auto saved = lib->save(*tool); !saved) {
-                fail(tr("Cannot save the tool: %1").arg(coreMessage(saved.error())));
-                return false;
-            }
-        } else if (const auto removed = lib->remove(id); !removed) {
-            fail(tr("Cannot retire the tool: %1").arg(coreMessage(removed.error())));
-            return false;
-        }
-    }
-    changed_ = true;
-    const int row = selectedRow();
-    load(true);
-    // The tool just changed stays selected (or the row where it was).
-    int at = row;
-    for (std::size_t i = 0; i < tools_.size(); ++i)
-        if (tool && tools_[i].id == tool->id) at = static_cast<int>(i);
-    if (at >= 0 && at < table_->rowCount()) table_->selectRow(at);
-    return true;
-}
-
-bool ToolLibraryDialog::change(const std::optional<Tool>& before, const std::optional<Tool>& after, const QString& text)
-{
-    if (after) {
-        if (const auto problems = toolProblems(*after); !problems.empty()) {
-            fail(tr("T%1 not saved: %2").arg(after->id).arg(coreMessage(problems.front().message)));
-            return false;
-        }
-    }
-    if (!apply(after, before ? before->id : after->id)) return false;
-    undo_->push(new ToolEdit(this, before, after, text));
-    status_->setText(text);
-    status_->setStyleSheet({});
-    return true;
 }
 
 void ToolLibraryDialog::onItemChanged(QTableWidgetItem* item)

@@ -61,6 +61,10 @@ public:
 
 private:
     friend class ToolEdit;
+    // A length or a time to 0.001, as the table and the conflict's question write it.
+    static QString num(double v);
+    // A tool in one line, for the conflict's question.
+    static QString summary(const Tool& t);
     // Reads the library and fills the table; the status line says how many
     // tools unless `keepStatus` (it says what was just done, or refused).
     void load(bool keepStatus = false);

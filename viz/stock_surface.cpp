@@ -129,46 +129,35 @@ void inParallel(int n, const F& f)
     for (auto& r : running) r.get();
 }
 
-// The closed surface of a height field, each top vertex in the colour
-// colourOf(i, j) gives its cell. The top is made in kSurfaceBands bands of
-// rows at once (a quad merged within its band only).
-template <class ColourOf>
-vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf& colourOf)
-{
-    const int nx = f.columns(), ny = f.rows();
+// A height field's vertices for its surface: each one's height and colour
+// as one key (vertices alike have equal keys), its corner on the top, and
+// the runs of alike vertices the quads of the top and the walls are merged
+// along.
+struct Vertices {
+    const sim::HeightField& f;
+    const std::vector<std::uint64_t>& keys;
+    int nx, ny, qx;  // vertices per row and column, quads per row
     const Stock& s = f.stock();
     const std::vector<float>& z = f.heights();
-    const int qx = nx - 1, qy = ny - 1;  // quads per row and column
-    const int bands = qy >= kSurfaceBandRows * kSurfaceBands ? kSurfaceBands : 1;
-    // Each vertex's height and colour as one key: vertices alike have equal
-    // keys (+ 0.0f: -0 is 0).
-    std::vector<std::uint64_t> keys(static_cast<std::size_t>(nx) * ny);
-    inParallel(bands, [&](int band) {
-        for (int j = ny * band / bands; j < ny * (band + 1) / bands; ++j)
-            for (int i = 0; i < nx; ++i) {
-                const std::size_t v = static_cast<std::size_t>(j) * nx + i;
-                const Rgb c = colourOf(i, j);
-                keys[v] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(z[v] + 0.0f)) << 32 |
-                          static_cast<std::uint64_t>(c.r) << 16 | static_cast<std::uint64_t>(c.g) << 8 | c.b;
-            }
-    });
-    const auto Z = [&](int i, int j) { return z[static_cast<std::size_t>(j) * nx + i]; };
-    const auto K = [&](int i, int j) { return keys[static_cast<std::size_t>(j) * nx + i]; };
-    const auto C = [&](int i, int j) {
+
+    float Z(int i, int j) const { return z[static_cast<std::size_t>(j) * nx + i]; }
+    std::uint64_t K(int i, int j) const { return keys[static_cast<std::size_t>(j) * nx + i]; }
+    Rgb C(int i, int j) const
+    {
         const std::uint64_t k = K(i, j);
         return Rgb{static_cast<unsigned char>(k >> 16), static_cast<unsigned char>(k >> 8), static_cast<unsigned char>(k)};
-    };
-    const auto vx = [&](int i) { return i == 0 ? s.x : i == nx - 1 ? s.x + s.width : f.centre(i, 0).x; };
-    const auto vy = [&](int j) { return j == 0 ? s.y : j == ny - 1 ? s.y + s.length : f.centre(0, j).y; };
-    const auto top = [&](int i, int j) { return SurfacePart::Corner{vx(i), vy(j), Z(i, j), C(i, j)}; };
+    }
+    double vx(int i) const { return i == 0 ? s.x : i == nx - 1 ? s.x + s.width : f.centre(i, 0).x; }
+    double vy(int j) const { return j == 0 ? s.y : j == ny - 1 ? s.y + s.length : f.centre(0, j).y; }
+    SurfacePart::Corner top(int i, int j) const { return SurfacePart::Corner{vx(i), vy(j), Z(i, j), C(i, j)}; }
     // Vertex (k, j) is like (i, j), and (k, j + 1) like (i, j + 1): quad k
     // continues the row run that quad i starts.
-    const auto likeX = [&](int i, int k, int j) { return K(k, j) == K(i, j) && K(k, j + 1) == K(i, j + 1); };
-    const auto likeY = [&](int i, int j, int k) { return K(i, k) == K(i, j) && K(i + 1, k) == K(i + 1, j); };
+    bool likeX(int i, int k, int j) const { return K(k, j) == K(i, j) && K(k, j + 1) == K(i, j + 1); }
+    bool likeY(int i, int j, int k) const { return K(i, k) == K(i, j) && K(i + 1, k) == K(i + 1, j); }
 
-    std::vector<SurfacePart> parts(static_cast<std::size_t>(bands) + 1);
     // The top's quad rows j0..j1-1 into `out`.
-    const auto topBand = [&](int j0, int j1, SurfacePart& out) {
+    void topBand(int j0, int j1, SurfacePart& out) const
+    {
         // The quad of vertices i0..i1 by ja..jb, counter-clockwise from above.
         const auto quad = [&](int i0, int i1, int ja, int jb) { out.quad(top(i0, ja), top(i1, ja), top(i1, jb), top(i0, jb)); };
         std::vector<char> done(static_cast<std::size_t>(std::max(qx, 0)) * std::max(j1 - j0, 0), 0);
@@ -224,43 +213,72 @@ vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf
                 quad(i, i + 1, j, k);
                 j = k;
             }
-    };
-    inParallel(bands, [&](int band) {
-        topBand(qy * band / bands, qy * (band + 1) / bands, parts[static_cast<std::size_t>(band)]);
-    });
+    }
 
     // Side walls from the top's edge down to the bottom, normals outward. A
     // run of edge vertices at one height and in one colour is one quad: an
     // uncut side is one quad, not a sliver per cell (thousands of them cost
     // a software renderer as much as the whole top).
-    SurfacePart& out = parts.back();
-    const double zb = f.bottom();
-    const auto low = [&](double x, double y) { return SurfacePart::Corner{x, y, zb, palette::kStock}; };
-    // The side's n edge vertices, vertex k at cell (i, j) = at(k): each run
-    // k0..k1 as wall(k0, k1).
-    const auto runs = [&](int n, const auto& at, const auto& wall) {
-        const auto same = [&](int a, int b) {
-            const auto [ia, ja] = at(a);
-            const auto [ib, jb] = at(b);
-            return K(ia, ja) == K(ib, jb);
+    void sides(SurfacePart& out) const
+    {
+        const double zb = f.bottom();
+        const auto low = [&](double x, double y) { return SurfacePart::Corner{x, y, zb, palette::kStock}; };
+        // The side's n edge vertices, vertex k at cell (i, j) = at(k): each run
+        // k0..k1 as wall(k0, k1).
+        const auto runs = [&](int n, const auto& at, const auto& wall) {
+            const auto same = [&](int a, int b) {
+                const auto [ia, ja] = at(a);
+                const auto [ib, jb] = at(b);
+                return K(ia, ja) == K(ib, jb);
+            };
+            for (int k0 = 0; k0 + 1 < n;) {
+                int k1 = k0 + 1;
+                if (same(k0, k1))
+                    while (k1 + 1 < n && same(k0, k1 + 1)) ++k1;
+                wall(k0, k1);
+                k0 = k1;
+            }
         };
-        for (int k0 = 0; k0 + 1 < n;) {
-            int k1 = k0 + 1;
-            if (same(k0, k1))
-                while (k1 + 1 < n && same(k0, k1 + 1)) ++k1;
-            wall(k0, k1);
-            k0 = k1;
-        }
-    };
-    const auto alongX = [](int j) { return [j](int i) { return std::pair{i, j}; }; };
-    const auto alongY = [](int i) { return [i](int j) { return std::pair{i, j}; }; };
-    const double xEnd = s.x + s.width, yEnd = s.y + s.length;
-    runs(nx, alongX(0), [&](int a, int b) { out.quad(low(vx(a), s.y), low(vx(b), s.y), top(b, 0), top(a, 0)); });
-    runs(nx, alongX(ny - 1), [&](int a, int b) { out.quad(low(vx(b), yEnd), low(vx(a), yEnd), top(a, ny - 1), top(b, ny - 1)); });
-    runs(ny, alongY(0), [&](int a, int b) { out.quad(low(s.x, vy(b)), low(s.x, vy(a)), top(0, a), top(0, b)); });
-    runs(ny, alongY(nx - 1), [&](int a, int b) { out.quad(low(xEnd, vy(a)), low(xEnd, vy(b)), top(nx - 1, b), top(nx - 1, a)); });
-    // The bottom, facing down.
-    out.quad(low(s.x, s.y), low(s.x, yEnd), low(xEnd, yEnd), low(xEnd, s.y));
+        const auto alongX = [](int j) { return [j](int i) { return std::pair{i, j}; }; };
+        const auto alongY = [](int i) { return [i](int j) { return std::pair{i, j}; }; };
+        const double xEnd = s.x + s.width, yEnd = s.y + s.length;
+        runs(nx, alongX(0), [&](int a, int b) { out.quad(low(vx(a), s.y), low(vx(b), s.y), top(b, 0), top(a, 0)); });
+        runs(nx, alongX(ny - 1), [&](int a, int b) { out.quad(low(vx(b), yEnd), low(vx(a), yEnd), top(a, ny - 1), top(b, ny - 1)); });
+        runs(ny, alongY(0), [&](int a, int b) { out.quad(low(s.x, vy(b)), low(s.x, vy(a)), top(0, a), top(0, b)); });
+        runs(ny, alongY(nx - 1), [&](int a, int b) { out.quad(low(xEnd, vy(a)), low(xEnd, vy(b)), top(nx - 1, b), top(nx - 1, a)); });
+        // The bottom, facing down.
+        out.quad(low(s.x, s.y), low(s.x, yEnd), low(xEnd, yEnd), low(xEnd, s.y));
+    }
+};
+
+// The closed surface of a height field, each top vertex in the colour
+// colourOf(i, j) gives its cell. The top is made in kSurfaceBands bands of
+// rows at once (a quad merged within its band only).
+template <class ColourOf>
+vtkSmartPointer<vtkPolyData> surfaceOf(const sim::HeightField& f, const ColourOf& colourOf)
+{
+    const int nx = f.columns(), ny = f.rows();
+    const std::vector<float>& z = f.heights();
+    const int qx = nx - 1, qy = ny - 1;  // quads per row and column
+    const int bands = qy >= kSurfaceBandRows * kSurfaceBands ? kSurfaceBands : 1;
+    // Each vertex's height and colour as one key: vertices alike have equal
+    // keys (+ 0.0f: -0 is 0).
+    std::vector<std::uint64_t> keys(static_cast<std::size_t>(nx) * ny);
+    inParallel(bands, [&](int band) {
+        for (int j = ny * band / bands; j < ny * (band + 1) / bands; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const std::size_t v = static_cast<std::size_t>(j) * nx + i;
+                const Rgb c = colourOf(i, j);
+                keys[v] = static_cast<std::uint64_t>(std::bit_cast<std::uint32_t>(z[v] + 0.0f)) << 32 |
+                          static_cast<std::uint64_t>(c.r) << 16 | static_cast<std::uint64_t>(c.g) << 8 | c.b;
+            }
+    });
+    const Vertices vertices{f, keys, nx, ny, qx};
+    std::vector<SurfacePart> parts(static_cast<std::size_t>(bands) + 1);
+    inParallel(bands, [&](int band) {
+        vertices.topBand(qy * band / bands, qy * (band + 1) / bands, parts[static_cast<std::size_t>(band)]);
+    });
+    vertices.sides(parts.back());
     return joined(parts);
 }
 

@@ -1,8 +1,10 @@
-// Space curves from two projections, division by length and ruled surfaces
+// Space curves from two projections and their division by length
 // (surface_curves.h), with OpenCASCADE's B-spline interpolation
-// (Geom2dAPI_Interpolate, GeomAPI_Interpolate), division by arc length
-// (GCPnts_UniformAbscissa) and planarity test (GeomLib_IsPlanarSurface).
+// (Geom2dAPI_Interpolate, GeomAPI_Interpolate) and division by arc length
+// (GCPnts_UniformAbscissa). The ruled surfaces between two curves:
+// surface_ruled.cpp.
 #include "occt/surface_curves.h"
+#include "occt/surface_division.h"
 
 #include <fmt/format.h>
 
@@ -13,19 +15,15 @@
 #include <Geom2d_BSplineCurve.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <GeomAdaptor_Curve.hxx>
-#include <GeomLib_IsPlanarSurface.hxx>
 #include <Geom_BSplineCurve.hxx>
-#include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_HArray1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TColgp_Array1OfPnt2d.hxx>
-#include <TColgp_Array2OfPnt.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TColgp_HArray1OfPnt2d.hxx>
-#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -211,34 +209,6 @@ Handle(Geom_BSplineCurve) spaceCurve(const SpaceCurve& c)
     return new Geom_BSplineCurve(poles, knots, mults, 1);
 }
 
-Result<std::vector<Point3>> divideNamed(const SpaceCurve& curve, int pieces, const std::string& name)
-{
-    if (pieces < 1) return Failure{fmt::format("{}: it must be divided into at least 1 piece, not {}", name, pieces)};
-    if (curve.points.size() < 2)
-        return Failure{fmt::format("{}: it needs at least two points, it has {}", name, curve.points.size())};
-    for (std::size_t i = 1; i < curve.points.size(); ++i) {
-        const Point3& p = curve.points[i - 1];
-        const Point3& q = curve.points[i];
-        if (std::abs(q.x - p.x) + std::abs(q.y - p.y) + std::abs(q.z - p.z) < kSame)
-            return Failure{fmt::format("{}: points {} and {} are the same point", name, i, i + 1)};
-    }
-    try {
-        Handle(Geom_BSplineCurve) c = spaceCurve(curve);
-        GeomAdaptor_Curve adaptor(c);
-        GCPnts_UniformAbscissa div(adaptor, pieces + 1);
-        if (!div.IsDone() || div.NbPoints() != pieces + 1)
-            return Failure{fmt::format("{}: OpenCASCADE could not divide it into {} pieces", name, pieces)};
-        std::vector<Point3> out;
-        for (int i = 1; i <= div.NbPoints(); ++i) {
-            const gp_Pnt p = c->Value(div.Parameter(i));
-            out.push_back({p.X(), p.Y(), p.Z()});
-        }
-        return out;
-    } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("{}: OpenCASCADE refused it ({})", name, e.GetMessageString())};
-    }
-}
-
 }  // namespace
 
 Result<SpaceCurve> spaceCurveFromProjections(const Projection& first, const Projection& second, double step)
@@ -304,33 +274,6 @@ Result<std::vector<Point3>> divideByLength(const SpaceCurve& curve, int pieces)
     return divideNamed(curve, pieces, "the curve");
 }
 
-Point3 RuledSurface::point(double u, double v) const
-{
-    const int n = pieces();
-    const int i = std::clamp(static_cast<int>(std::floor(u)), 0, n - 1);
-    const double f = u - i;
-    const auto lerp = [](const Point3& a, const Point3& b, double t) {
-        return Point3{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)};
-    };
-    const auto ui = static_cast<std::size_t>(i);
-    return lerp(lerp(first[ui], first[ui + 1], f), lerp(second[ui], second[ui + 1], f), v);
-}
-
-std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRulings, int betweenRulings)
-{
-    alongRulings = std::max(1, alongRulings);
-    betweenRulings = std::max(1, betweenRulings);
-    const int cols = s.pieces() * betweenRulings + 1;
-    std::vector<std::vector<Point3>> rows;
-    for (int k = 0; k <= alongRulings; ++k) {
-        const double v = static_cast<double>(k) / alongRulings;
-        std::vector<Point3> row;
-        for (int j = 0; j < cols; ++j) row.push_back(s.point(static_cast<double>(j) / betweenRulings, v));
-        rows.push_back(std::move(row));
-    }
-    return rows;
-}
-
 Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second, double stepOver)
 {
     if (!(stepOver > 0.0)) return Failure{fmt::format("the step-over must be above 0, not {}", stepOver)};
@@ -350,62 +293,32 @@ Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second,
     return std::max(1, static_cast<int>(std::ceil(longest / stepOver - 1e-9)));
 }
 
-Result<RuledSurface> ruledSurface(const SpaceCurve& first, const SpaceCurve& second, int pieces)
+// A curve divided into `pieces` equal lengths; refusals name it `name`.
+Result<std::vector<Point3>> divideNamed(const SpaceCurve& curve, int pieces, const std::string& name)
 {
-    auto a = divideNamed(first, pieces, "curve 1");
-    if (!a) return Failure{a.error()};
-    auto b = divideNamed(second, pieces, "curve 2");
-    if (!b) return Failure{b.error()};
-    return RuledSurface{std::move(*a), std::move(*b)};
-}
-
-Result<RoughAndFinish> roughAndFinishSurfaces(const SpaceCurve& first, const SpaceCurve& second, int n, int m)
-{
-    if (n < 1) return Failure{fmt::format("N: the roughing surface needs at least 1 piece, not {}", n)};
-    if (m <= n)
-        return Failure{fmt::format("M: the finishing surface's pieces (M = {}) must be more than the roughing "
-                                   "surface's (N = {})",
-                                   m, n)};
-    auto r = ruledSurface(first, second, n);
-    if (!r) return Failure{r.error()};
-    auto f = ruledSurface(first, second, m);
-    if (!f) return Failure{f.error()};
-    return RoughAndFinish{std::move(*r), std::move(*f)};
-}
-
-Result<Plane3> planeOf(const RuledSurface& s, double tolerance)
-{
-    const int n = static_cast<int>(s.first.size());
-    if (n < 2 || s.second.size() != s.first.size())
-        return Failure{"the ruled surface needs two curves of the same number of points, at least two"};
+    if (pieces < 1) return Failure{fmt::format("{}: it must be divided into at least 1 piece, not {}", name, pieces)};
+    if (curve.points.size() < 2)
+        return Failure{fmt::format("{}: it needs at least two points, it has {}", name, curve.points.size())};
+    for (std::size_t i = 1; i < curve.points.size(); ++i) {
+        const Point3& p = curve.points[i - 1];
+        const Point3& q = curve.points[i];
+        if (std::abs(q.x - p.x) + std::abs(q.y - p.y) + std::abs(q.z - p.z) < kSame)
+            return Failure{fmt::format("{}: points {} and {} are the same point", name, i, i + 1)};
+    }
     try {
-        TColgp_Array2OfPnt poles(1, n, 1, 2);
-        TColStd_Array1OfReal uk(1, n);
-        TColStd_Array1OfInteger um(1, n);
-        for (int i = 0; i < n; ++i) {
-            const Point3& a = s.first[static_cast<std::size_t>(i)];
-            const Point3& b = s.second[static_cast<std::size_t>(i)];
-            poles.SetValue(i + 1, 1, gp_Pnt(a.x, a.y, a.z));
-            poles.SetValue(i + 1, 2, gp_Pnt(b.x, b.y, b.z));
-            uk.SetValue(i + 1, i);
-            um.SetValue(i + 1, i == 0 || i == n - 1 ? 2 : 1);
+        Handle(Geom_BSplineCurve) c = spaceCurve(curve);
+        GeomAdaptor_Curve adaptor(c);
+        GCPnts_UniformAbscissa div(adaptor, pieces + 1);
+        if (!div.IsDone() || div.NbPoints() != pieces + 1)
+            return Failure{fmt::format("{}: OpenCASCADE could not divide it into {} pieces", name, pieces)};
+        std::vector<Point3> out;
+        for (int i = 1; i <= div.NbPoints(); ++i) {
+            const gp_Pnt p = c->Value(div.Parameter(i));
+            out.push_back({p.X(), p.Y(), p.Z()});
         }
-        TColStd_Array1OfReal vk(1, 2);
-        TColStd_Array1OfInteger vm(1, 2);
-        vk.SetValue(1, 0.0);
-        vk.SetValue(2, 1.0);
-        vm.SetValue(1, 2);
-        vm.SetValue(2, 2);
-        Handle(Geom_BSplineSurface) surf = new Geom_BSplineSurface(poles, uk, vk, um, vm, 1, 1);
-        GeomLib_IsPlanarSurface planar(surf, tolerance);
-        if (!planar.IsPlanar()) return Failure{fmt::format("the ruled surface is not a plane within {} mm", tolerance)};
-        const gp_Pln pln = planar.Plan();
-        gp_Dir d = pln.Axis().Direction();
-        if (d.Z() < 0 || (d.Z() == 0 && (d.Y() < 0 || (d.Y() == 0 && d.X() < 0)))) d.Reverse();
-        const gp_Pnt o = pln.Location();
-        return Plane3{{o.X(), o.Y(), o.Z()}, {d.X(), d.Y(), d.Z()}};
+        return out;
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("the ruled surface: OpenCASCADE refused it ({})", e.GetMessageString())};
+        return Failure{fmt::format("{}: OpenCASCADE refused it ({})", name, e.GetMessageString())};
     }
 }
 

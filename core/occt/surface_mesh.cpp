@@ -31,6 +31,72 @@ bool insideXY(double px, double py, const Point3& a, const Point3& b, const Poin
     return !(neg && pos);
 }
 
+// The cutter's nose height touching the segment p–q (its part within the
+// disc) at (x, y), raising `best` to it.
+void noseOnEdge(const Cutter& cutter, double x, double y, const Point3& p, const Point3& q, double& best)
+{
+    const double rmax = cutter.diameter / 2;
+    const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z;
+    const double fx = p.x - x, fy = p.y - y;
+    const double a = ex * ex + ey * ey;
+    const double b = 2 * (ex * fx + ey * fy);
+    const double c = fx * fx + fy * fy;
+    if (a < 1e-18) {  // a vertical edge
+        const double d = std::sqrt(c);
+        if (d > rmax) return;
+        best = std::max(best, std::max(p.z, q.z) - cutter.heightAt(d));
+        return;
+    }
+    const double disc = b * b - 4 * a * (c - rmax * rmax);
+    if (disc < 0) return;
+    const double sq = std::sqrt(disc);
+    double s0 = std::max(0.0, (-b - sq) / (2 * a)), s1 = std::min(1.0, (-b + sq) / (2 * a));
+    if (s0 > s1) return;
+    const double sm = std::clamp(-b / (2 * a), s0, s1);
+    const double dmin = std::sqrt(std::max(0.0, a * sm * sm + b * sm + c));
+    const double zTop = std::max(p.z + s0 * ez, p.z + s1 * ez);
+    if (zTop - cutter.heightAt(dmin) <= best) return;
+    const auto g = [&](double s) {
+        const double d = std::sqrt(std::max(0.0, a * s * s + b * s + c));
+        return p.z + s * ez - cutter.heightAt(std::min(d, rmax));
+    };
+    // Golden section on the concave g.
+    constexpr double k = 0.6180339887498949;
+    double lo = s0, hi = s1;
+    double m1 = hi - k * (hi - lo), m2 = lo + k * (hi - lo);
+    double g1 = g(m1), g2 = g(m2);
+    for (int i = 0; i < 32 && hi - lo > 1e-10; ++i) {  // 0.618³² ≈ 2e-7 of the edge
+        if (g1 < g2) {
+            lo = m1, m1 = m2, g1 = g2;
+            m2 = lo + k * (hi - lo), g2 = g(m2);
+        } else {
+            hi = m2, m2 = m1, g2 = g1;
+            m1 = hi - k * (hi - lo), g1 = g(m1);
+        }
+    }
+    best = std::max({best, g1, g2, g(s0), g(s1)});
+}
+
+// A ball's edge contact in closed form: in the vertical plane of the
+// edge the ball is a circle of radius √(r² − d²) (d the axis' distance
+// from the edge's line in XY) resting on a line of slope m; `best` raised to it.
+void ballOnEdge(double r, double x, double y, const Point3& p, const Point3& q, double& best)
+{
+    const double ex = q.x - p.x, ey = q.y - p.y;
+    const double len = std::sqrt(ex * ex + ey * ey);
+    if (len < 1e-12) return;  // vertical: its top vertex decides
+    const double tx = ex / len, ty = ey / len;
+    const double along = (x - p.x) * tx + (y - p.y) * ty;
+    const double across = (x - p.x) * ty - (y - p.y) * tx;
+    if (std::abs(across) >= r) return;
+    const double rc = std::sqrt(r * r - across * across);
+    const double slope = (q.z - p.z) / len;
+    const double root = std::sqrt(1 + slope * slope);
+    const double contact = along + rc * slope / root;
+    if (contact < 0 || contact > len) return;
+    best = std::max(best, p.z + slope * along + rc * root - r);
+}
+
 }  // namespace
 
 TriangleMesh meshFromPaths(const std::vector<std::vector<Point3>>& paths)
@@ -142,69 +208,9 @@ std::optional<double> DropCutter::noseZ(double x, double y)
     const double flat = rmax - r;
     double best = kNone;
 
-    // The cutter's nose height touching the segment p–q (its part within the
-    // disc), or nothing.
-    const auto edge = [&](const Point3& p, const Point3& q) {
-        const double ex = q.x - p.x, ey = q.y - p.y, ez = q.z - p.z;
-        const double fx = p.x - x, fy = p.y - y;
-        const double a = ex * ex + ey * ey;
-        const double b = 2 * (ex * fx + ey * fy);
-        const double c = fx * fx + fy * fy;
-        if (a < 1e-18) {  // a vertical edge
-            const double d = std::sqrt(c);
-            if (d > rmax) return;
-            best = std::max(best, std::max(p.z, q.z) - cutter_.heightAt(d));
-            return;
-        }
-        const double disc = b * b - 4 * a * (c - rmax * rmax);
-        if (disc < 0) return;
-        const double sq = std::sqrt(disc);
-        double s0 = std::max(0.0, (-b - sq) / (2 * a)), s1 = std::min(1.0, (-b + sq) / (2 * a));
-        if (s0 > s1) return;
-        const double sm = std::clamp(-b / (2 * a), s0, s1);
-        const double dmin = std::sqrt(std::max(0.0, a * sm * sm + b * sm + c));
-        const double zTop = std::max(p.z + s0 * ez, p.z + s1 * ez);
-        if (zTop - cutter_.heightAt(dmin) <= best) return;
-        const auto g = [&](double s) {
-            const double d = std::sqrt(std::max(0.0, a * s * s + b * s + c));
-            return p.z + s * ez - cutter_.heightAt(std::min(d, rmax));
-        };
-        // Golden section on the concave g.
-        constexpr double k = 0.6180339887498949;
-        double lo = s0, hi = s1;
-        double m1 = hi - k * (hi - lo), m2 = lo + k * (hi - lo);
-        double g1 = g(m1), g2 = g(m2);
-        for (int i = 0; i < 32 && hi - lo > 1e-10; ++i) {  // 0.618³² ≈ 2e-7 of the edge
-            if (g1 < g2) {
-                lo = m1, m1 = m2, g1 = g2;
-                m2 = lo + k * (hi - lo), g2 = g(m2);
-            } else {
-                hi = m2, m2 = m1, g2 = g1;
-                m1 = hi - k * (hi - lo), g1 = g(m1);
-            }
-        }
-        best = std::max({best, g1, g2, g(s0), g(s1)});
-    };
-
-    // A ball's edge contact in closed form: in the vertical plane of the
-    // edge the ball is a circle of radius √(r² − d²) (d the axis' distance
-    // from the edge's line in XY) resting on a line of slope m.
     const bool ball = flat < 1e-12;
-    const auto ballEdge = [&](const Point3& p, const Point3& q) {
-        const double ex = q.x - p.x, ey = q.y - p.y;
-        const double len = std::sqrt(ex * ex + ey * ey);
-        if (len < 1e-12) return;  // vertical: its top vertex decides
-        const double tx = ex / len, ty = ey / len;
-        const double along = (x - p.x) * tx + (y - p.y) * ty;
-        const double across = (x - p.x) * ty - (y - p.y) * tx;
-        if (std::abs(across) >= r) return;
-        const double rc = std::sqrt(r * r - across * across);
-        const double slope = (q.z - p.z) / len;
-        const double root = std::sqrt(1 + slope * slope);
-        const double contact = along + rc * slope / root;
-        if (contact < 0 || contact > len) return;
-        best = std::max(best, p.z + slope * along + rc * root - r);
-    };
+    const auto edge = [&](const Point3& p, const Point3& q) { noseOnEdge(cutter_, x, y, p, q, best); };
+    const auto ballEdge = [&](const Point3& p, const Point3& q) { ballOnEdge(r, x, y, p, q, best); };
     const auto vertex = [&](const Point3& v) {
         const double d2 = (v.x - x) * (v.x - x) + (v.y - y) * (v.y - y);
         if (d2 > rmax * rmax || v.z <= best) return;

@@ -179,6 +179,50 @@ CycleSyntax fanucSyntax(const WorkSetup& s)
     return c;
 }
 
+// The side touches: where each starts and where it looks to along its
+// axis, relative to the approximate centre (inside: from the centre).
+struct SideTouch {
+    const char* name;
+    char axis;
+    double start, target;
+};
+
+// LinuxCNC's end: the work offset set at the centre found, the probe moved
+// to it, and the program's end.
+void endLinuxcnc(Program& p, const post::Dialect& d, const CycleSyntax& v, const Offset& off, const WorkSetup& s)
+{
+    // L20: the current position gets these coordinates in system P,
+    // whatever system is active.
+    p.block(fmt::format("G0 X{} Y{}", v.cx, v.cy));
+    p.block(fmt::format("G10 L20 P{} X0 Y0 Z[#5422 - {}]", off.p, v.top));
+    p.block(fmt::format("{} G0 X0 Y0", off.words));
+    p.block(s.round ? fmt::format("(debug, centre found; diameter {}, across X {})", v.sizeY, v.sizeX)
+                    : fmt::format("(debug, centre found; size {} x {})", v.sizeX, v.sizeY));
+    footer(p, d, false);
+}
+
+// FANUC's end: the offset's values plus the centre found, the alarms of the
+// touches that the GOTOs name, and the program's end.
+void endFanuc(Program& p, const post::Dialect& d, const CycleSyntax& v, const Offset& off, const SideTouch (&sides)[4])
+{
+    // The offset's values plus the centre found in its own coordinates.
+    const int base = off.extended ? 7001 + 20 * (off.p - 1) : 5201 + 20 * off.p;
+    p.block(fmt::format("G10 {} P{} X[#{} + {}] Y[#{} + {}] Z[#{} + {}]", off.extended ? "L20" : "L2", off.p, base, v.cx,
+                        base + 1, v.cy, base + 2, v.top));
+    p.block(fmt::format("{} G0 X0 Y0", off.words));
+    p.block("GOTO 9999");
+    // The alarms and the end are labels the GOTOs name: no block before them
+    // may carry one of their numbers.
+    if (d.sequenceNumbers && p.nextNumber() > 9001)
+        throw Refusal(fmt::format("dialect {}: its block numbers reach N{}, where the probing cycle's alarms are labelled N9001-N9005",
+                                                d.name, p.nextNumber()));
+    for (int k = 1; k <= 5; ++k)
+        p.line(fmt::format("N900{} #3000 = {} ({})", k, k,
+                            post::commentText(k == 1 ? "TOUCH 1 NO TOP FACE" : fmt::format("TOUCH {} NO SIDE {}", k, sides[k - 2].name), true)));
+    p.line("N9999 M30");
+    if (d.percentFraming) p.line("%");
+}
+
 }  // namespace
 
 std::string probingProgram(const WorkSetup& s, const PostOptions& o)
@@ -197,13 +241,7 @@ std::string probingProgram(const WorkSetup& s, const PostOptions& o)
                           Program::text(2 * hx), Program::text(2 * hy), Program::text(s.touchDepth), Program::text(s.search)));
     p.comment(fmt::format("Ends with {} at the measured centre and top face", off.words));
 
-    // The side touches: where each starts and where it looks to along its
-    // axis, relative to the approximate centre (inside: from the centre).
-    struct SideTouch {
-        const char* name;
-        char axis;
-        double start, target;
-    };
+    // The side touches, about the approximate centre.
     const double out = s.inside ? -1.0 : 1.0;
     const SideTouch sides[4] = {
         {"-X", 'X', s.inside ? 0.0 : -(hx + s.clearance), -(hx - out * s.search)},
@@ -280,32 +318,10 @@ std::string probingProgram(const WorkSetup& s, const PostOptions& o)
     p.comment(fmt::format("The centre becomes {}: its X Y 0, the top face Z 0", off.words));
 
     if (!fanuc) {
-        // L20: the current position gets these coordinates in system P,
-        // whatever system is active.
-        p.block(fmt::format("G0 X{} Y{}", v.cx, v.cy));
-        p.block(fmt::format("G10 L20 P{} X0 Y0 Z[#5422 - {}]", off.p, v.top));
-        p.block(fmt::format("{} G0 X0 Y0", off.words));
-        p.block(s.round ? fmt::format("(debug, centre found; diameter {}, across X {})", v.sizeY, v.sizeX)
-                        : fmt::format("(debug, centre found; size {} x {})", v.sizeX, v.sizeY));
-        footer(p, d, false);
+        endLinuxcnc(p, d, v, off, s);
         return p.take();
     }
-    // The offset's values plus the centre found in its own coordinates.
-    const int base = off.extended ? 7001 + 20 * (off.p - 1) : 5201 + 20 * off.p;
-    p.block(fmt::format("G10 {} P{} X[#{} + {}] Y[#{} + {}] Z[#{} + {}]", off.extended ? "L20" : "L2", off.p, base, v.cx,
-                        base + 1, v.cy, base + 2, v.top));
-    p.block(fmt::format("{} G0 X0 Y0", off.words));
-    p.block("GOTO 9999");
-    // The alarms and the end are labels the GOTOs name: no block before them
-    // may carry one of their numbers.
-    if (d.sequenceNumbers && p.nextNumber() > 9001)
-        throw Refusal(fmt::format("dialect {}: its block numbers reach N{}, where the probing cycle's alarms are labelled N9001-N9005",
-                                                d.name, p.nextNumber()));
-    for (int k = 1; k <= 5; ++k)
-        p.line(fmt::format("N900{} #3000 = {} ({})", k, k,
-                            post::commentText(k == 1 ? "TOUCH 1 NO TOP FACE" : fmt::format("TOUCH {} NO SIDE {}", k, sides[k - 2].name), true)));
-    p.line("N9999 M30");
-    if (d.percentFraming) p.line("%");
+    endFanuc(p, d, v, off, sides);
     return p.take();
 }
 

@@ -124,16 +124,17 @@ std::string programWords(const SheetOptions& o)
 
 }  // namespace
 
-Content content(const Plan& plan, const SheetOptions& o)
+namespace {
+
+using Len = std::function<std::string(double)>;
+
+// The header's fields: the job, its file, dialect, material, machine, date,
+// program, stock and the plan's counts; a field with nothing to say left out.
+std::vector<std::pair<std::string, std::string>> headerFields(const Plan& plan, const SheetOptions& o, const Len& len,
+                                                              const std::string& us)
 {
-    const LengthUnit u = o.units;
-    const std::string us = unitSymbol(u);
-    const auto len = [&](double mm) { return fmt::format("{:.{}f}", fromMm(mm, u), u == LengthUnit::Inch ? 4 : 3); };
-    const auto feed = [&](double mmPerMin) { return fmt::format("{:.{}f}", fromMm(mmPerMin, u), u == LengthUnit::Inch ? 1 : 0); };
     const Job& job = plan.mmJob;
-    Content c;
-    c.title = "Machining instruction sheet";
-    c.fields = {
+    std::vector<std::pair<std::string, std::string>> fields = {
         {"Job", plan.job.name},
         {"File", o.jobFile},
         {"Dialect", dialectWords(o.dialect)},
@@ -148,6 +149,16 @@ Content content(const Plan& plan, const SheetOptions& o)
         {"Tool changes", std::to_string(plan.toolChanges)},
         {"Total time", fmt::format("{:.1f} min", plan.totalMinutes)},
     };
+    if (job.bar && plan.steps.empty())  // nothing to cut: no tape, no dialect, no program number
+        std::erase_if(fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
+    std::erase_if(fields, [](const auto& f) { return f.second.empty(); });
+    return fields;
+}
+
+// The setup: the work offset and origin, how the stock is held, the setup picture.
+void setupLines(const Plan& plan, const SheetOptions& o, const Len& len, const std::string& us, Content& c)
+{
+    const Job& job = plan.mmJob;
     c.setup = "Setup: work offset " + job.workOffset + ", origin X0 Y0 at the stock's front-left corner" +
               (job.stock.x == 0 && job.stock.y == 0
                    ? std::string()
@@ -170,26 +181,24 @@ Content content(const Plan& plan, const SheetOptions& o)
                     : fmt::format("The stock{}; {} at the origin", job.clamping ? " in the vice" : "", job.workOffset);
         c.setupPicture = Content::Picture{caption, o.setupPicture};
     }
-    if (job.bar) {
-        c.setup = latheSetup(plan, len);
-        if (plan.steps.empty())  // nothing to cut: no tape, no dialect, no program number
-            std::erase_if(c.fields, [](const auto& f) { return f.first == "Dialect" || f.first == "Program"; });
-    }
-    std::erase_if(c.fields, [](const auto& f) { return f.second.empty(); });
-    c.toolsOrigin = o.toolsOrigin;
-    turnedTables(plan, len, us, c);
-    // Probing units: what the touches entered measured (the probing cycle
-    // measures again on the machine and prints it there).
-    c.workCentre.headers = {"Unit", "Workpiece", "Probe", "Centre X " + us, "Centre Y " + us, "Top Z " + us, "Size " + us,
-                            "Turned deg", "Residuals " + us};
-    c.workCentre.numeric = {true, false, false, true, true, true, false, true, false};
-    c.workCentre.widths = {3, 10, 9, 7, 7, 6, 10, 5, 23};
+    if (job.bar) c.setup = latheSetup(plan, len);
+}
+
+// Probing units: what the touches entered measured (the probing cycle
+// measures again on the machine and prints it there).
+Table workCentreTable(const Plan& plan, LengthUnit u, const Len& len, const std::string& us)
+{
+    Table t;
+    t.headers = {"Unit", "Workpiece", "Probe", "Centre X " + us, "Centre Y " + us, "Top Z " + us, "Size " + us,
+                 "Turned deg", "Residuals " + us};
+    t.numeric = {true, false, false, true, true, true, false, true, false};
+    t.widths = {3, 10, 9, 7, 7, 6, 10, 5, 23};
     for (const WorkSetup& w : plan.setups) {
         const std::string shape = w.round ? (w.inside ? "round bore" : "round boss") : (w.inside ? "rectangular pocket" : "rectangular block");
         const std::string probe = fmt::format("T{} ball {}", w.tool, len(2 * w.ballRadius));
         if (!w.measured) {
-            c.workCentre.rows.push_back({std::to_string(w.unit + 1), shape, probe, "-", "-", "-", "-", "-",
-                                         "no touches entered: run the probing cycle"});
+            t.rows.push_back({std::to_string(w.unit + 1), shape, probe, "-", "-", "-", "-", "-",
+                              "no touches entered: run the probing cycle"});
             continue;
         }
         const auto& m = *w.measured;
@@ -200,11 +209,18 @@ Content content(const Plan& plan, const SheetOptions& o)
             const double r = fromMm(m.residuals[i], u);  // below the last digit: +0, never -0
             residuals += fmt::format("{}P{} {:+.{}f}", i ? " " : "", i + 1, std::abs(r) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : r, decimals);
         }
-        c.workCentre.rows.push_back(
+        t.rows.push_back(
             {std::to_string(w.unit + 1), shape, probe, len(m.centre.x), len(m.centre.y), m.top ? len(*m.top) : "-",
              w.round ? "D " + len(2 * m.radius) : len(m.width) + " x " + len(m.length),
              !w.round && m.rotationMeasured ? fmt::format("{:.4f}", m.rotation) : "-", residuals});
     }
+    return t;
+}
+
+// One row per step in machining order, and the steps' pictures.
+void stepRows(const Plan& plan, const SheetOptions& o, const Len& len, const Len& feed, const std::string& us, Content& c)
+{
+    const Job& job = plan.mmJob;
     c.steps.headers = {"No.", "Unit", "Module", "Step", "T", "H", "Tool", "S rpm", "F " + us + "/min", "Start " + us,
                        "Depth " + us, job.bar ? "X left" : "Wall left", job.bar ? "Z left" : "Floor left", "Cut " + us, "Min",
                        "Machine min"};
@@ -246,6 +262,11 @@ Content content(const Plan& plan, const SheetOptions& o)
                                 s.path || turnOf(s) ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-",
                                 s.machineMinutes ? fmt::format("{:.2f}", *s.machineMinutes) : "-"});
     }
+}
+
+// One row per tool, their drawings, and a lathe's tools by turret station.
+void toolRows(const Plan& plan, const Len& len, const std::string& us, Content& c)
+{
     c.tools.headers = {"T", "Tool", "Type", "Diameter " + us, "Stick-out " + us, "Holder", "Life min", "Used min", "Left min"};
     c.tools.numeric = {true, false, false, true, true, false, true, true, true};
     c.tools.widths = {3, 22, 9, 7, 7, 14, 5, 5, 5};
@@ -272,6 +293,26 @@ Content content(const Plan& plan, const SheetOptions& o)
         c.latheTools.rows.push_back({fmt::format("{:02d}", station), std::to_string(id), t->name, insert, len(t->cornerRadius),
                                      std::to_string(orientation), t->holder});
     }
+}
+
+}  // namespace
+
+Content content(const Plan& plan, const SheetOptions& o)
+{
+    const LengthUnit u = o.units;
+    const std::string us = unitSymbol(u);
+    const Len len = [&](double mm) { return fmt::format("{:.{}f}", fromMm(mm, u), u == LengthUnit::Inch ? 4 : 3); };
+    const Len feed = [&](double mmPerMin) { return fmt::format("{:.{}f}", fromMm(mmPerMin, u), u == LengthUnit::Inch ? 1 : 0); };
+    const Job& job = plan.mmJob;
+    Content c;
+    c.title = "Machining instruction sheet";
+    c.fields = headerFields(plan, o, len, us);
+    setupLines(plan, o, len, us, c);
+    c.toolsOrigin = o.toolsOrigin;
+    turnedTables(plan, len, us, c);
+    c.workCentre = workCentreTable(plan, u, len, us);
+    stepRows(plan, o, len, feed, us, c);
+    toolRows(plan, len, us, c);
     c.notes = plan.notes();
     c.faults = o.faults;
     c.paths = o.paths;

@@ -1,9 +1,14 @@
-// The tool library in SQLite: schema, first-use creation with the default
-// library, reading and editing. Every failure is a message naming the file.
+// The tool library in SQLite: opening it (first-use creation with the
+// default library, an older file upgraded), reading and editing, each edit
+// with its row in the change log. Every failure is a message naming the
+// file. The schema and its migrations: tool_library_schema.cpp; statements,
+// failures and a tool's rows: tool_library_sqlite.cpp.
 #include "tools/tool_library.h"
 #include "tools/turning_text.h"
 
 #include "tools/tool_change_log.h"
+#include "tools/tool_library_schema.h"
+#include "tools/tool_library_sqlite.h"
 #include "tools/tool_check.h"
 #include "tools/tool_row.h"
 #include "tools/tool_store.h"
@@ -22,188 +27,11 @@
 
 namespace taiwa {
 
-namespace {
-
-constexpr int kSchemaVersion = 8;
-
-// The current schema, for a new file.
-constexpr const char* kSchema = R"sql(
-CREATE TABLE tools (
-  id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT NULL, diameter REAL NOT NULL,
-  corner_radius REAL NOT NULL DEFAULT 0, taper_angle REAL NOT NULL DEFAULT 0, point_angle REAL NOT NULL DEFAULT 118,
-  flute_length REAL NOT NULL DEFAULT 0, stickout REAL NOT NULL DEFAULT 0, holder TEXT NOT NULL DEFAULT '',
-  flutes INTEGER NOT NULL DEFAULT 2, life_minutes REAL NOT NULL DEFAULT 0, used_minutes REAL NOT NULL DEFAULT 0,
-  centre_cutting INTEGER NOT NULL DEFAULT 1, turning TEXT NOT NULL DEFAULT '',
-  holder_diameter REAL NOT NULL DEFAULT 0, holder_length REAL NOT NULL DEFAULT 0);
-CREATE TABLE cutting_data (
-  tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, material TEXT NOT NULL,
-  surface_speed REAL NOT NULL, feed_per_tooth REAL NOT NULL, plunge_factor REAL NOT NULL,
-  PRIMARY KEY (tool_id, material));
-CREATE TABLE tool_names (
-  tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, name TEXT NOT NULL,
-  PRIMARY KEY (tool_id, language));
-CREATE TABLE tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL,
-  station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL);
-PRAGMA user_version = 8;
-)sql";
-
-// Migrations: kMigrations[v - 1] brings a version v file to version v + 1.
-constexpr const char* kMigrations[] = {
-    // 1 -> 2: whether an end mill cuts at its centre (ramping in without a pilot hole).
-    "ALTER TABLE tools ADD COLUMN centre_cutting INTEGER NOT NULL DEFAULT 1; PRAGMA user_version = 2;",
-    // 2 -> 3: the default library's touch probe T90 (work-centre probing),
-    // unless the library has a probe already or uses T90 for another tool.
-    "INSERT INTO tools (id, name, type, diameter, flute_length, stickout, holder, flutes, life_minutes, centre_cutting) "
-    "SELECT 90, 'Touch probe, 4 mm ruby ball', 'probe', 4, 0, 50, 'HSK63 probe body', 0, 0, 0 "
-    "WHERE NOT EXISTS (SELECT 1 FROM tools WHERE type = 'probe' OR id = 90); PRAGMA user_version = 3;",
-    // 3 -> 4: lathe tools (the insert code, holder and blade data as JSON in
-    // `turning`); the default lathe tools are added after it where their ids
-    // are free (addLatheTools).
-    "ALTER TABLE tools ADD COLUMN turning TEXT NOT NULL DEFAULT ''; PRAGMA user_version = 4;",
-    // 4 -> 5: the holder's nose, for the verification's collision check (0:
-    // read from the holder's name, as before).
-    "ALTER TABLE tools ADD COLUMN holder_diameter REAL NOT NULL DEFAULT 0; "
-    "ALTER TABLE tools ADD COLUMN holder_length REAL NOT NULL DEFAULT 0; PRAGMA user_version = 5;",
-    // 5 -> 6: hole patterns' tools (taps, reamers, boring heads, tap drills
-    // and reaming pre-drills), added after it where their ids are free
-    // (addFreeTools).
-    "PRAGMA user_version = 6;",
-    // 6 -> 7: tools' names in other languages, for the station (Tool::names);
-    // the default library's tools that kept their id and name get theirs
-    // (addBuiltInNames).
-    "CREATE TABLE tool_names (tool_id INTEGER NOT NULL REFERENCES tools(id) ON DELETE CASCADE, language TEXT NOT NULL, "
-    "name TEXT NOT NULL, PRIMARY KEY (tool_id, language)); PRAGMA user_version = 7;",
-    // 7 -> 8: who changed which tool, what and when (tool_change_log.h).
-    // (IF NOT EXISTS: a file whose version was set back by hand keeps its log.)
-    "CREATE TABLE IF NOT EXISTS tool_changes (tool_id INTEGER NOT NULL, operation TEXT NOT NULL, who TEXT NOT NULL, "
-    "station TEXT NOT NULL, at TEXT NOT NULL, old_values TEXT NOT NULL, new_values TEXT NOT NULL); "
-    "PRAGMA user_version = 8;",
-};
-static_assert(std::size(kMigrations) == kSchemaVersion - 1);
-
-// A prepared statement that finalizes itself.
-class Statement {
-public:
-    Statement(sqlite3* db, const char* sql) { ok_ = sqlite3_prepare_v2(db, sql, -1, &s_, nullptr) == SQLITE_OK; }
-    ~Statement() { sqlite3_finalize(s_); }
-    Statement(const Statement&) = delete;
-    Statement& operator=(const Statement&) = delete;
-    bool ok() const { return ok_; }
-    sqlite3_stmt* get() const { return s_; }
-    void bind(int i, double v) { sqlite3_bind_double(s_, i, v); }
-    void bind(int i, int v) { sqlite3_bind_int(s_, i, v); }
-    void bind(int i, const std::string& v) { sqlite3_bind_text(s_, i, v.c_str(), -1, SQLITE_TRANSIENT); }
-    int step() { return sqlite3_step(s_); }
-    double real(int c) const { return sqlite3_column_double(s_, c); }
-    int integer(int c) const { return sqlite3_column_int(s_, c); }
-    bool flag(int c) const { return integer(c) != 0; }
-    std::string text(int c) const
-    {
-        const auto* t = sqlite3_column_text(s_, c);
-        return t ? reinterpret_cast<const char*>(t) : "";
-    }
-
-private:
-    sqlite3_stmt* s_ = nullptr;
-    bool ok_ = false;
-};
-
-std::string describe(sqlite3* db, const std::string& path)
-{
-    const int code = sqlite3_extended_errcode(db) & 0xff;
-    if (code == SQLITE_NOTADB)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is not a tool library (the file is not an SQLite database)"), path);
-    if (code == SQLITE_BUSY || code == SQLITE_LOCKED)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is locked by another program; close it and try again"), path);
-    if (code == SQLITE_READONLY || code == SQLITE_CANTOPEN || code == SQLITE_PERM)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} cannot be opened for writing ({})"), path, sqlite3_errmsg(db));
-    if (code == SQLITE_CORRUPT)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is damaged ({}); restore it from a backup"), path, sqlite3_errmsg(db));
-    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), path, sqlite3_errmsg(db));
-}
-
-bool exec(sqlite3* db, const char* sql) { return sqlite3_exec(db, sql, nullptr, nullptr, nullptr) == SQLITE_OK; }
-
-bool insert(sqlite3* db, const Tool& t);
-
-// Upgrading to version 4 (6): the default lathe (hole) tools whose ids the
-// library does not use yet.
-bool addFreeTools(sqlite3* db, const std::vector<Tool>& tools)
-{
-    for (const Tool& t : tools) {
-        Statement used(db, "SELECT count(*) FROM tools WHERE id = ?");
-        used.bind(1, t.id);
-        if (!used.ok() || used.step() != SQLITE_ROW) return false;
-        if (used.integer(0) == 0 && !insert(db, t)) return false;
-    }
-    return true;
-}
-
-// Upgrading to version 7: the names in other languages of the default
-// library's tools that still have their id and name (a tool the shop
-// renamed keeps its own name in every language).
-bool addBuiltInNames(sqlite3* db)
-{
-    for (const Tool& t : defaultToolLibrary())
-        for (const auto& [language, name] : t.names) {
-            Statement s(db, "INSERT OR IGNORE INTO tool_names SELECT id, ?, ? FROM tools WHERE id = ? AND name = ?");
-            s.bind(1, language);
-            s.bind(2, name);
-            s.bind(3, t.id);
-            s.bind(4, t.name);
-            if (!s.ok() || s.step() != SQLITE_DONE) return false;
-        }
-    return true;
-}
-
-bool insert(sqlite3* db, const Tool& t)
-{
-    const std::string sql = fmt::format("INSERT OR REPLACE INTO tools (id, {}) VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)", kToolColumns);
-    Statement s(db, sql.c_str());
-    if (!s.ok()) return false;
-    s.bind(1, t.id);
-    s.bind(2, t.name);
-    s.bind(3, std::string(toKey(t.type)));
-    s.bind(4, t.diameter);
-    s.bind(5, t.cornerRadius);
-    s.bind(6, t.taperAngle);
-    s.bind(7, t.pointAngle);
-    s.bind(8, t.fluteLength);
-    s.bind(9, t.stickout);
-    s.bind(10, t.holder);
-    s.bind(11, t.flutes);
-    s.bind(12, t.lifeMinutes);
-    s.bind(13, t.usedMinutes);
-    s.bind(14, t.centreCutting ? 1 : 0);
-    s.bind(15, turningText(t.turning));
-    s.bind(16, t.holderDiameter);
-    s.bind(17, t.holderLength);
-    if (s.step() != SQLITE_DONE) return false;
-    for (const char* table : {"DELETE FROM cutting_data WHERE tool_id = ?", "DELETE FROM tool_names WHERE tool_id = ?"}) {
-        Statement del(db, table);
-        del.bind(1, t.id);
-        if (!del.ok() || del.step() != SQLITE_DONE) return false;
-    }
-    for (const auto& [language, name] : t.names) {
-        Statement n(db, "INSERT INTO tool_names VALUES (?,?,?)");
-        n.bind(1, t.id);
-        n.bind(2, language);
-        n.bind(3, name);
-        if (!n.ok() || n.step() != SQLITE_DONE) return false;
-    }
-    for (const auto& c : t.cutting) {
-        Statement cd(db, "INSERT INTO cutting_data VALUES (?,?,?,?,?)");
-        cd.bind(1, t.id);
-        cd.bind(2, c.material);
-        cd.bind(3, c.surfaceSpeed);
-        cd.bind(4, c.feedPerTooth);
-        cd.bind(5, c.plungeFactor);
-        if (!cd.ok() || cd.step() != SQLITE_DONE) return false;
-    }
-    return true;
-}
-
-}  // namespace
+using tooldb::describe;
+using tooldb::exec;
+using tooldb::insert;
+using tooldb::kSchemaVersion;
+using tooldb::Statement;
 
 struct ToolLibrary::Db {
     sqlite3* handle = nullptr;
@@ -255,8 +83,7 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         if (!tables.ok() || tables.step() != SQLITE_ROW || tables.integer(0) != 0) {
             return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is an SQLite database but not a tool library"), path)};
         }
-        bool ok = exec(db, "BEGIN IMMEDIATE") && exec(db, kSchema);
-        for (const auto& t : defaultToolLibrary()) ok = ok && insert(db, t);
+        const bool ok = exec(db, "BEGIN IMMEDIATE") && tooldb::createSchema(db);
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");
@@ -264,11 +91,7 @@ Result<ToolLibrary> ToolLibrary::open(const std::string& path)
         }
     } else if (v < kSchemaVersion) {
         // An older library: every migration from its version on, in one transaction.
-        bool ok = exec(db, "BEGIN IMMEDIATE");
-        for (int from = v; ok && from < kSchemaVersion; ++from) ok = exec(db, kMigrations[from - 1]);
-        if (v < 4) ok = ok && addFreeTools(db, defaultLatheTools());
-        if (v < 6) ok = ok && addFreeTools(db, defaultHoleTools());
-        if (v < 7) ok = ok && addBuiltInNames(db);
+        const bool ok = exec(db, "BEGIN IMMEDIATE") && tooldb::upgradeSchema(db, v);
         if (!ok || !exec(db, "COMMIT")) {
             const std::string why = describe(db, path);
             exec(db, "ROLLBACK");

@@ -85,33 +85,16 @@ struct CutTrace {
     double t0 = 0.0, t1 = 0.0, z0 = 0.0, z1 = 0.0, level = 0.0;
 };
 
-}  // namespace
-
-double Timeline::seconds() const
+// Each path's program as operations, in path 1's coordinates; where each starts.
+std::vector<std::vector<Op>> operationsOf(const BalancedCut& cut, const Machine& machine, std::vector<ZR>& startOf)
 {
-    double s = 0.0;
-    for (double e : pathEnd) s = std::max(s, e);
-    return s;
-}
-
-double Timeline::leastLag() const
-{
-    double least = std::numeric_limits<double>::max();
-    for (const auto& l : lags) least = std::min(least, l.revolutions);
-    return least;
-}
-
-Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
-{
-    Timeline tl;
     const MultiPath* mp = machine.layout.multiPath ? &*machine.layout.multiPath : nullptr;
     const std::size_t n = cut.paths.size();
     auto toP1 = [&](const TurnMove& m, std::size_t p) { return mp ? back(m, *mp, p) : m; };
     auto pointToP1 = [&](ZR z, std::size_t p) { return mp ? mp->toPath1(z, p) : z; };
-
     // Each path's program as operations, in path 1's coordinates.
     std::vector<std::vector<Op>> ops(n);
-    std::vector<ZR> startOf(n);
+    startOf.assign(n, ZR{});
     for (std::size_t p = 0; p < n; ++p) {
         const BalancedPath& bp = cut.paths[p];
         ZR at = startOf[p] = pointToP1(bp.start, p);
@@ -151,40 +134,57 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         for (const auto& m : bp.tail) move(m);
         if (bp.endWait) mark(Op::Wait, 0, *bp.endWait);
     }
+    return ops;
+}
 
-    // One spindle: its speed is what path 1 (the master, which commands
-    // G96) sets at its own X, and every path's feed per revolution runs at
-    // it. The clock steps to the next end of a move, dwell or wait, at most
-    // kStep seconds at a time while the speed may change.
-    constexpr double kStep = 0.002;
-    const Clock clk{cut.cutting, machine, cut.spindleLimit > 0 ? cut.spindleLimit : machine.maxSpindleSpeed};
-    auto rapidSeconds = [&](const Op& o) {
-        const double rz = machine.rapid.count("z") ? machine.rapid.at("z") : machine.slowestRapid();
-        const double rx = machine.rapid.count("x") ? machine.rapid.at("x") : machine.slowestRapid();
-        return 60.0 * std::max(std::abs(o.move.end.z - o.from.z) / rz, std::abs(o.move.end.r - o.from.r) / rx);
-    };
-    auto lengthOf = [&](const Op& o) {
-        return o.move.kind == TurnMove::Feed || o.move.kind == TurnMove::Rapid
-                   ? std::hypot(o.move.end.z - o.from.z, o.move.end.r - o.from.r)
-                   : arcLength(o.from, o.move);
-    };
-    std::vector<std::size_t> pc(n, 0);
-    std::vector<double> done(n, 0.0);  // the fraction of the current move or dwell done
-    std::vector<double> arrived(n, 0.0);
-    std::vector<double> ended(n, 0.0);
-    std::vector<ZR> pos = startOf;
+// One spindle: its speed is what path 1 (the master, which commands
+// G96) sets at its own X, and every path's feed per revolution runs at
+// it. The clock steps to the next end of a move, dwell or wait, at most
+// kStep seconds at a time while the speed may change.
+constexpr double kStep = 0.002;
+
+// The paths run together: where each is in its operations and how far into
+// the current one (done: the fraction of the move or dwell; -1 standing at
+// a wait, -2 ended), when it came to its wait or ended, the clock, the
+// spindle's revolutions, and when each block and cut began and ended.
+struct Run {
+    const BalancedCut& cut;
+    const Clock clk;
+    std::vector<ZR> startOf;
+    std::vector<std::vector<Op>> ops;
+    std::size_t n;
+    std::vector<std::size_t> pc;
+    std::vector<double> done, arrived, ended;
+    std::vector<ZR> pos;
     double t = 0.0, revs = 0.0;
     std::map<int, TimelineBlock> blocks;
     std::map<int, CutTrace> traces;
     std::map<int, std::pair<double, double>> revsAt;  // cut: revolutions at its start and end
-    auto hasCode = [&](std::size_t p, int code) {
+
+    Run(const BalancedCut& c, const Machine& m)
+        : cut(c), clk{c.cutting, m, c.spindleLimit > 0 ? c.spindleLimit : m.maxSpindleSpeed},
+          ops(operationsOf(c, m, startOf)), n(c.paths.size()), pc(n, 0), done(n, 0.0), arrived(n, 0.0),
+          ended(n, 0.0), pos(startOf)
+    {
+    }
+
+    static double lengthOf(const Op& o)
+    {
+        return o.move.kind == TurnMove::Feed || o.move.kind == TurnMove::Rapid
+                   ? std::hypot(o.move.end.z - o.from.z, o.move.end.r - o.from.r)
+                   : arcLength(o.from, o.move);
+    }
+    bool hasCode(std::size_t p, int code) const
+    {
         for (std::size_t i = pc[p]; i < ops[p].size(); ++i)
             if (ops[p][i].kind == Op::Wait && ops[p][i].code == code) return true;
         return false;
-    };
-    auto atWait = [&](std::size_t p) { return pc[p] < ops[p].size() && ops[p][pc[p]].kind == Op::Wait; };
-    for (int guard = 0; guard < 50'000'000; ++guard) {
-        // The markers at once; a path at a wait notes when it came.
+    }
+    bool atWait(std::size_t p) const { return pc[p] < ops[p].size() && ops[p][pc[p]].kind == Op::Wait; }
+
+    // The markers at once; a path at a wait notes when it came.
+    void markers()
+    {
         for (std::size_t p = 0; p < n; ++p) {
             for (; pc[p] < ops[p].size(); ++pc[p]) {
                 const Op& o = ops[p][pc[p]];
@@ -221,7 +221,11 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
                 done[p] = -2.0;
             }
         }
-        // Release a code every path that has it stands at.
+    }
+
+    // Releases a code every path that has it stands at; whether one was.
+    bool release()
+    {
         bool released = false;
         for (std::size_t p = 0; p < n && !released; ++p) {
             if (!atWait(p)) continue;
@@ -246,25 +250,29 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
             }
             released = true;
         }
-        if (released) continue;
-        std::vector<std::size_t> running;
-        for (std::size_t p = 0; p < n; ++p)
-            if (pc[p] < ops[p].size() && !atWait(p)) running.push_back(p);
-        if (running.empty()) {
-            for (std::size_t p = 0; p < n; ++p) {
-                if (!atWait(p)) continue;
-                const int code = ops[p][pc[p]].code;
-                std::string why;
-                for (std::size_t q = 0; q < n; ++q) {
-                    if (q == p) continue;
-                    if (pc[q] >= ops[q].size()) why = fmt::format("path {} ended without M{}", q + 1, code);
-                    else if (!hasCode(q, code)) why = fmt::format("path {} has no M{}", q + 1, code);
-                    else why = fmt::format("path {} waits at M{}", q + 1, ops[q][pc[q]].code);
-                }
-                tl.deadlocks.push_back({p, code, why});
+        return released;
+    }
+
+    // Every path standing at a wait no other path will come to, and why.
+    void deadlocks(Timeline& tl) const
+    {
+        for (std::size_t p = 0; p < n; ++p) {
+            if (!atWait(p)) continue;
+            const int code = ops[p][pc[p]].code;
+            std::string why;
+            for (std::size_t q = 0; q < n; ++q) {
+                if (q == p) continue;
+                if (pc[q] >= ops[q].size()) why = fmt::format("path {} ended without M{}", q + 1, code);
+                else if (!hasCode(q, code)) why = fmt::format("path {} has no M{}", q + 1, code);
+                else why = fmt::format("path {} waits at M{}", q + 1, ops[q][pc[q]].code);
             }
-            break;
+            tl.deadlocks.push_back({p, code, why});
         }
+    }
+
+    // The clock moved on by one step for the running paths.
+    void advance(const std::vector<std::size_t>& running)
+    {
         // The spindle's speed now, and how long each running path's move
         // or dwell still takes at it.
         const double rpm = cut.cutting.rpmAt(std::max(2.0 * std::abs(pos[0].r), 1e-3), clk.limit);
@@ -275,7 +283,7 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
             const Op& o = ops[p][pc[p]];
             double whole;
             if (o.kind == Op::Dwell) whole = o.seconds;
-            else if (o.move.kind == TurnMove::Rapid) whole = rapidSeconds(o);
+            else if (o.move.kind == TurnMove::Rapid) whole = clk.seconds(o.from, o.move);
             else {
                 const double f = o.move.feed == FeedKind::Plunge ? cut.cutting.plungeFeedPerRev : cut.cutting.feedPerRev;
                 whole = 60.0 * lengthOf(o) / std::max(f * rpm, 1e-9);
@@ -305,18 +313,16 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         t += dt;
         revs += rpm / 60.0 * dt;
     }
-    tl.pathEnd = ended;
-    // Each block's dwell as the cut says it (run above as a dwell before the cut).
-    for (const auto& path : cut.paths)
-        for (const auto& b : path.blocks)
-            if (const auto it = blocks.find(b.number); it != blocks.end()) it->second.dwell = b.dwellSeconds;
-    for (auto& [k, b] : blocks)
-        if (k > 0) tl.blocks.push_back(b);
+};
 
-    // The lag of every cut behind the one before it, over the Z both cover:
-    // along a cut the tool's Z goes with the spindle's revolutions (feed
-    // per revolution), so the lag in revolutions is linear in Z between
-    // the ends of the stretch.
+// The lag of every cut behind the one before it, over the Z both cover:
+// along a cut the tool's Z goes with the spindle's revolutions (feed
+// per revolution), so the lag in revolutions is linear in Z between
+// the ends of the stretch.
+void addLags(Run& run, Timeline& tl)
+{
+    const auto& traces = run.traces;
+    auto& revsAt = run.revsAt;
     for (auto it = traces.begin(); it != traces.end(); ++it) {
         const auto next = std::next(it);
         if (next == traces.end()) break;
@@ -336,6 +342,48 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         }
         tl.lags.push_back({it->first, next->first, least, seconds});
     }
+}
+
+}  // namespace
+
+double Timeline::seconds() const
+{
+    double s = 0.0;
+    for (double e : pathEnd) s = std::max(s, e);
+    return s;
+}
+
+double Timeline::leastLag() const
+{
+    double least = std::numeric_limits<double>::max();
+    for (const auto& l : lags) least = std::min(least, l.revolutions);
+    return least;
+}
+
+Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
+{
+    Timeline tl;
+    Run run(cut, machine);
+    for (int guard = 0; guard < 50'000'000; ++guard) {
+        run.markers();
+        if (run.release()) continue;
+        std::vector<std::size_t> running;
+        for (std::size_t p = 0; p < run.n; ++p)
+            if (run.pc[p] < run.ops[p].size() && !run.atWait(p)) running.push_back(p);
+        if (running.empty()) {
+            run.deadlocks(tl);
+            break;
+        }
+        run.advance(running);
+    }
+    tl.pathEnd = run.ended;
+    // Each block's dwell as the cut says it (run above as a dwell before the cut).
+    for (const auto& path : cut.paths)
+        for (const auto& b : path.blocks)
+            if (const auto it = run.blocks.find(b.number); it != run.blocks.end()) it->second.dwell = b.dwellSeconds;
+    for (auto& [k, b] : run.blocks)
+        if (k > 0) tl.blocks.push_back(b);
+    addLags(run, tl);
     return tl;
 }
 

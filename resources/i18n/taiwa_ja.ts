@@ -143,6 +143,38 @@
     <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
+            <source>The figure's contours have no chamfer.</source>
+            <translation>図形の輪郭に面取りはありません。</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no rounding.</source>
+            <translation>図形の輪郭に丸みはありません。</translation>
+        </message>
+        <message>
+            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
+            <translation>変更する面取りをビューでクリックしてください (図形に %1 個)。</translation>
+        </message>
+        <message>
+            <source>Click a rounding in the view to change it (%1 in the figure).</source>
+            <translation>変更する丸みをビューでクリックしてください (図形に %1 個)。</translation>
+        </message>
+        <message>
+            <source>%1: chamfer between %2 and %3, length</source>
+            <translation>%1: %2 と %3 の間の面取り、長さ</translation>
+        </message>
+        <message>
+            <source>%1: rounding between %2 and %3, radius</source>
+            <translation>%1: %2 と %3 の間の丸み、半径</translation>
+        </message>
+        <message>
+            <source>The text has a refusal: correct it before revising a corner.</source>
+            <translation>テキストにエラーがあります。角を修正する前に直してください。</translation>
+        </message>
+        <message>
+            <source>Revise corner %1 of %2</source>
+            <translation>%2 の角 %1 を修正</translation>
+        </message>
+        <message>
             <source>Figure elements, one statement a line</source>
             <translation>図形要素 (1 行に 1 文)</translation>
         </message>
@@ -177,38 +209,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Edit figure</source>
             <translation>図形を編集</translation>
-        </message>
-        <message>
-            <source>The figure's contours have no chamfer.</source>
-            <translation>図形の輪郭に面取りはありません。</translation>
-        </message>
-        <message>
-            <source>The figure's contours have no rounding.</source>
-            <translation>図形の輪郭に丸みはありません。</translation>
-        </message>
-        <message>
-            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
-            <translation>変更する面取りをビューでクリックしてください (図形に %1 個)。</translation>
-        </message>
-        <message>
-            <source>Click a rounding in the view to change it (%1 in the figure).</source>
-            <translation>変更する丸みをビューでクリックしてください (図形に %1 個)。</translation>
-        </message>
-        <message>
-            <source>%1: chamfer between %2 and %3, length</source>
-            <translation>%1: %2 と %3 の間の面取り、長さ</translation>
-        </message>
-        <message>
-            <source>%1: rounding between %2 and %3, radius</source>
-            <translation>%1: %2 と %3 の間の丸み、半径</translation>
-        </message>
-        <message>
-            <source>The text has a refusal: correct it before revising a corner.</source>
-            <translation>テキストにエラーがあります。角を修正する前に直してください。</translation>
-        </message>
-        <message>
-            <source>Revise corner %1 of %2</source>
-            <translation>%2 の角 %1 を修正</translation>
         </message>
     </context>
     <context>
@@ -1368,6 +1368,50 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>先に工具を選んでください。</translation>
         </message>
         <message>
+            <source>T%1 not saved: %2 '%3' is not a number</source>
+            <translation>T%1 は保存されませんでした: %2 の「%3」は数値ではありません</translation>
+        </message>
+        <message>
+            <source>T%1: %2 changed</source>
+            <translation>T%1: %2 を変更しました</translation>
+        </message>
+        <message>
+            <source>No free T number: the library uses T%1</source>
+            <translation>空き T 番号がありません: ライブラリは T%1 まで使用しています</translation>
+        </message>
+        <message>
+            <source>T%1 copied to T%2</source>
+            <translation>T%1 を T%2 に複製しました</translation>
+        </message>
+        <message>
+            <source>T%1 retired (Undo brings it back)</source>
+            <translation>T%1 を廃棄しました (元に戻すで復帰)</translation>
+        </message>
+        <message>
+            <source>T%1: wear reset</source>
+            <translation>T%1: 摩耗をリセットしました</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>%1 に書き込めません: %2</translation>
+        </message>
+        <message>
+            <source>Tool table written to %1</source>
+            <translation>工具テーブルを %1 に書き出しました</translation>
+        </message>
+        <message>
+            <source>LinuxCNC tool table (*.tbl)</source>
+            <translation>LinuxCNC 工具テーブル (*.tbl)</translation>
+        </message>
+        <message>
+            <source>FANUC offset program, G10 (*.nc)</source>
+            <translation>FANUC オフセットプログラム、G10 (*.nc)</translation>
+        </message>
+        <message>
+            <source>Export tool table</source>
+            <translation>工具テーブルの書き出し</translation>
+        </message>
+        <message>
             <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
             <translation>%1、Ø %2 mm、刃数 %3、突き出し %4 mm、ホルダー %5、使用 %6 / %7 分</translation>
         </message>
@@ -1420,50 +1464,6 @@ Theirs: %6</source>
         <message>
             <source>T%1 not saved: %2</source>
             <translation>T%1 は保存されませんでした: %2</translation>
-        </message>
-        <message>
-            <source>T%1 not saved: %2 '%3' is not a number</source>
-            <translation>T%1 は保存されませんでした: %2 の「%3」は数値ではありません</translation>
-        </message>
-        <message>
-            <source>T%1: %2 changed</source>
-            <translation>T%1: %2 を変更しました</translation>
-        </message>
-        <message>
-            <source>No free T number: the library uses T%1</source>
-            <translation>空き T 番号がありません: ライブラリは T%1 まで使用しています</translation>
-        </message>
-        <message>
-            <source>T%1 copied to T%2</source>
-            <translation>T%1 を T%2 に複製しました</translation>
-        </message>
-        <message>
-            <source>T%1 retired (Undo brings it back)</source>
-            <translation>T%1 を廃棄しました (元に戻すで復帰)</translation>
-        </message>
-        <message>
-            <source>T%1: wear reset</source>
-            <translation>T%1: 摩耗をリセットしました</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>%1 に書き込めません: %2</translation>
-        </message>
-        <message>
-            <source>Tool table written to %1</source>
-            <translation>工具テーブルを %1 に書き出しました</translation>
-        </message>
-        <message>
-            <source>LinuxCNC tool table (*.tbl)</source>
-            <translation>LinuxCNC 工具テーブル (*.tbl)</translation>
-        </message>
-        <message>
-            <source>FANUC offset program, G10 (*.nc)</source>
-            <translation>FANUC オフセットプログラム、G10 (*.nc)</translation>
-        </message>
-        <message>
-            <source>Export tool table</source>
-            <translation>工具テーブルの書き出し</translation>
         </message>
     </context>
     <context>
@@ -4620,22 +4620,6 @@ Theirs: %6</source>
             <translation>工具ライブラリには{1}に使える{0}がありません。最も近いのは T{2} ({3}) ですが、{4}</translation>
         </message>
         <message>
-            <source>{} is not a tool library (the file is not an SQLite database)</source>
-            <translation>{} は工具ライブラリではありません (SQLite データベースではありません)</translation>
-        </message>
-        <message>
-            <source>{} is locked by another program; close it and try again</source>
-            <translation>{} は別のプログラムがロックしています。そのプログラムを閉じてからやり直してください</translation>
-        </message>
-        <message>
-            <source>{} cannot be opened for writing ({})</source>
-            <translation>{} を書き込み用に開けません ({})</translation>
-        </message>
-        <message>
-            <source>{} is damaged ({}); restore it from a backup</source>
-            <translation>{} は破損しています ({})。バックアップから復元してください</translation>
-        </message>
-        <message>
             <source>{} is a folder, not a tool library (give the library's file)</source>
             <translation>{} はフォルダで、工具ライブラリではありません (ライブラリのファイルを指定してください)</translation>
         </message>
@@ -4666,6 +4650,22 @@ Theirs: %6</source>
         <message>
             <source>{}: tool {}: {} is '{}', not a number</source>
             <translation>{}: 工具 {}: {} が '{}' で、数値ではありません</translation>
+        </message>
+        <message>
+            <source>{} is not a tool library (the file is not an SQLite database)</source>
+            <translation>{} は工具ライブラリではありません (SQLite データベースではありません)</translation>
+        </message>
+        <message>
+            <source>{} is locked by another program; close it and try again</source>
+            <translation>{} は別のプログラムがロックしています。そのプログラムを閉じてからやり直してください</translation>
+        </message>
+        <message>
+            <source>{} cannot be opened for writing ({})</source>
+            <translation>{} を書き込み用に開けません ({})</translation>
+        </message>
+        <message>
+            <source>{} is damaged ({}); restore it from a backup</source>
+            <translation>{} は破損しています ({})。バックアップから復元してください</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>

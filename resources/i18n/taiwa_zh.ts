@@ -143,6 +143,38 @@
     <context>
         <name>taiwa::ui::FigurePanel</name>
         <message>
+            <source>The figure's contours have no chamfer.</source>
+            <translation>图形的轮廓中没有倒角。</translation>
+        </message>
+        <message>
+            <source>The figure's contours have no rounding.</source>
+            <translation>图形的轮廓中没有圆角。</translation>
+        </message>
+        <message>
+            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
+            <translation>在视图中单击要修改的倒角（图形中共 %1 个）。</translation>
+        </message>
+        <message>
+            <source>Click a rounding in the view to change it (%1 in the figure).</source>
+            <translation>在视图中单击要修改的圆角（图形中共 %1 个）。</translation>
+        </message>
+        <message>
+            <source>%1: chamfer between %2 and %3, length</source>
+            <translation>%1：%2 与 %3 之间的倒角，长度</translation>
+        </message>
+        <message>
+            <source>%1: rounding between %2 and %3, radius</source>
+            <translation>%1：%2 与 %3 之间的圆角，半径</translation>
+        </message>
+        <message>
+            <source>The text has a refusal: correct it before revising a corner.</source>
+            <translation>文本有错误：请先更正，再修改拐角。</translation>
+        </message>
+        <message>
+            <source>Revise corner %1 of %2</source>
+            <translation>修改 %2 的拐角 %1</translation>
+        </message>
+        <message>
             <source>Figure elements, one statement a line</source>
             <translation>图形元素（每行一条语句）</translation>
         </message>
@@ -177,38 +209,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Edit figure</source>
             <translation>编辑图形</translation>
-        </message>
-        <message>
-            <source>The figure's contours have no chamfer.</source>
-            <translation>图形的轮廓中没有倒角。</translation>
-        </message>
-        <message>
-            <source>The figure's contours have no rounding.</source>
-            <translation>图形的轮廓中没有圆角。</translation>
-        </message>
-        <message>
-            <source>Click a chamfer in the view to change it (%1 in the figure).</source>
-            <translation>在视图中单击要修改的倒角（图形中共 %1 个）。</translation>
-        </message>
-        <message>
-            <source>Click a rounding in the view to change it (%1 in the figure).</source>
-            <translation>在视图中单击要修改的圆角（图形中共 %1 个）。</translation>
-        </message>
-        <message>
-            <source>%1: chamfer between %2 and %3, length</source>
-            <translation>%1：%2 与 %3 之间的倒角，长度</translation>
-        </message>
-        <message>
-            <source>%1: rounding between %2 and %3, radius</source>
-            <translation>%1：%2 与 %3 之间的圆角，半径</translation>
-        </message>
-        <message>
-            <source>The text has a refusal: correct it before revising a corner.</source>
-            <translation>文本有错误：请先更正，再修改拐角。</translation>
-        </message>
-        <message>
-            <source>Revise corner %1 of %2</source>
-            <translation>修改 %2 的拐角 %1</translation>
         </message>
     </context>
     <context>
@@ -1368,6 +1368,50 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>请先选择一把刀具。</translation>
         </message>
         <message>
+            <source>T%1 not saved: %2 '%3' is not a number</source>
+            <translation>T%1 未保存：%2 的“%3”不是数字</translation>
+        </message>
+        <message>
+            <source>T%1: %2 changed</source>
+            <translation>T%1：%2 已修改</translation>
+        </message>
+        <message>
+            <source>No free T number: the library uses T%1</source>
+            <translation>没有空闲的 T 号：刀具库已用到 T%1</translation>
+        </message>
+        <message>
+            <source>T%1 copied to T%2</source>
+            <translation>T%1 已复制为 T%2</translation>
+        </message>
+        <message>
+            <source>T%1 retired (Undo brings it back)</source>
+            <translation>T%1 已报废（撤销可恢复）</translation>
+        </message>
+        <message>
+            <source>T%1: wear reset</source>
+            <translation>T%1：磨损已重置</translation>
+        </message>
+        <message>
+            <source>Cannot write %1: %2</source>
+            <translation>无法写入 %1：%2</translation>
+        </message>
+        <message>
+            <source>Tool table written to %1</source>
+            <translation>刀具表已写入 %1</translation>
+        </message>
+        <message>
+            <source>LinuxCNC tool table (*.tbl)</source>
+            <translation>LinuxCNC 刀具表 (*.tbl)</translation>
+        </message>
+        <message>
+            <source>FANUC offset program, G10 (*.nc)</source>
+            <translation>FANUC 偏置程序，G10 (*.nc)</translation>
+        </message>
+        <message>
+            <source>Export tool table</source>
+            <translation>导出刀具表</translation>
+        </message>
+        <message>
             <source>%1, Ø %2 mm, %3 flutes, stick-out %4 mm, holder %5, used %6 of %7 min</source>
             <translation>%1，Ø %2 mm，%3 刃，伸出 %4 mm，刀柄 %5，已用 %6 / %7 分钟</translation>
         </message>
@@ -1420,50 +1464,6 @@ Theirs: %6</source>
         <message>
             <source>T%1 not saved: %2</source>
             <translation>T%1 未保存：%2</translation>
-        </message>
-        <message>
-            <source>T%1 not saved: %2 '%3' is not a number</source>
-            <translation>T%1 未保存：%2 的“%3”不是数字</translation>
-        </message>
-        <message>
-            <source>T%1: %2 changed</source>
-            <translation>T%1：%2 已修改</translation>
-        </message>
-        <message>
-            <source>No free T number: the library uses T%1</source>
-            <translation>没有空闲的 T 号：刀具库已用到 T%1</translation>
-        </message>
-        <message>
-            <source>T%1 copied to T%2</source>
-            <translation>T%1 已复制为 T%2</translation>
-        </message>
-        <message>
-            <source>T%1 retired (Undo brings it back)</source>
-            <translation>T%1 已报废（撤销可恢复）</translation>
-        </message>
-        <message>
-            <source>T%1: wear reset</source>
-            <translation>T%1：磨损已重置</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>无法写入 %1：%2</translation>
-        </message>
-        <message>
-            <source>Tool table written to %1</source>
-            <translation>刀具表已写入 %1</translation>
-        </message>
-        <message>
-            <source>LinuxCNC tool table (*.tbl)</source>
-            <translation>LinuxCNC 刀具表 (*.tbl)</translation>
-        </message>
-        <message>
-            <source>FANUC offset program, G10 (*.nc)</source>
-            <translation>FANUC 偏置程序，G10 (*.nc)</translation>
-        </message>
-        <message>
-            <source>Export tool table</source>
-            <translation>导出刀具表</translation>
         </message>
     </context>
     <context>
@@ -4620,22 +4620,6 @@ Theirs: %6</source>
             <translation>刀具库中没有适合{1}的{0}：最接近的是 T{2}（{3}），但{4}</translation>
         </message>
         <message>
-            <source>{} is not a tool library (the file is not an SQLite database)</source>
-            <translation>{} 不是刀具库（该文件不是 SQLite 数据库）</translation>
-        </message>
-        <message>
-            <source>{} is locked by another program; close it and try again</source>
-            <translation>{} 被其他程序锁定；请关闭该程序后重试</translation>
-        </message>
-        <message>
-            <source>{} cannot be opened for writing ({})</source>
-            <translation>无法以写入方式打开 {}（{}）</translation>
-        </message>
-        <message>
-            <source>{} is damaged ({}); restore it from a backup</source>
-            <translation>{} 已损坏（{}）；请从备份恢复</translation>
-        </message>
-        <message>
             <source>{} is a folder, not a tool library (give the library's file)</source>
             <translation>{} 是文件夹，不是刀具库（请指定刀具库文件）</translation>
         </message>
@@ -4666,6 +4650,22 @@ Theirs: %6</source>
         <message>
             <source>{}: tool {}: {} is '{}', not a number</source>
             <translation>{}：刀具 {}：{} 为 '{}'，不是数字</translation>
+        </message>
+        <message>
+            <source>{} is not a tool library (the file is not an SQLite database)</source>
+            <translation>{} 不是刀具库（该文件不是 SQLite 数据库）</translation>
+        </message>
+        <message>
+            <source>{} is locked by another program; close it and try again</source>
+            <translation>{} 被其他程序锁定；请关闭该程序后重试</translation>
+        </message>
+        <message>
+            <source>{} cannot be opened for writing ({})</source>
+            <translation>无法以写入方式打开 {}（{}）</translation>
+        </message>
+        <message>
+            <source>{} is damaged ({}); restore it from a backup</source>
+            <translation>{} 已损坏（{}）；请从备份恢复</translation>
         </message>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
