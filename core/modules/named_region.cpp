@@ -4,6 +4,8 @@
 #include "model/translate_noop.h"
 
 #include "check/messages.h"
+#include "figure/figure_text.h"
+#include "io/job_messages.h"
 #include "model/clipper_scale.h"
 #include "modules/region_messages.h"
 
@@ -38,6 +40,50 @@ void NamedRegion::resolve(const ContourTable& table)
     r.islands.resize(islands.size());
     for (std::size_t i = 0; i < islands.size(); ++i) take(islands[i], r.islands[i]);
     if (all) region = std::move(r);
+}
+
+std::vector<std::string> readContourNames(const io::ObjectFields& f, const char* key)
+{
+    std::vector<std::string> names;
+    const nlohmann::json* list = f.find(key);
+    if (!list) return names;
+    if (!list->is_array()) {
+        f.error(key, msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of contour names"), *list));
+        return names;
+    }
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        const auto& v = (*list)[i];
+        if (v.is_string()) names.push_back(v.get<std::string>());
+        else
+            f.error(std::string(key) + "[" + std::to_string(i) + "]",
+                    msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
+    }
+    return names;
+}
+
+std::optional<Quad> regionBox(const std::optional<Region>& region)
+{
+    if (!region || region->outer.empty()) return std::nullopt;
+    const Box2 b = bounds(region->outer);
+    return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
+}
+
+std::vector<Point2> regionPolygon(const std::optional<Region>& region)
+{
+    constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
+    if (!region) return {};
+    return flatten(normalised(*region).outer, kPolygonChord);
+}
+
+std::string middleRectangleFigure(const Stock& s)
+{
+    const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
+    return "P1 = POINT/" + n(s.x + 0.2 * s.width) + ", " + n(s.y + 0.2 * s.length) + "\n" +
+           "P2 = POINT/" + n(s.x + 0.6 * s.width) + ", " + n(s.y + 0.6 * s.length) + "\n" +
+           "L1 = LINE/P1, ATANGL, 0\n"
+           "L2 = LINE/P2, ATANGL, 90\n"
+           "L3 = LINE/P2, ATANGL, 180\n"
+           "L4 = LINE/P1, ATANGL, 270\n";
 }
 
 void convertRegionLengths(Region& region, const LengthMap& f)

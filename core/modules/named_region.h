@@ -1,12 +1,17 @@
 // An area of a contour unit given by names of the job's figure: a closed
-// outline and the closed islands in it (CP's pocket, AREA's area). Resolving
-// the names against the evaluated figure and checking the contours (known,
-// closed, not crossing themselves, inside the stock, islands inside the
-// outline and apart, optionally no sharp inside corner) are shared here.
+// outline and the closed islands in it (CP's pocket, AREA's area). Reading
+// the island names from the job file, resolving the names against the
+// evaluated figure, checking the contours (known, closed, not crossing
+// themselves, inside the stock, islands inside the outline and apart,
+// optionally no sharp inside corner), the resolved outline's box and
+// polygon and the default figure's rectangle are shared here.
 #pragma once
 
 #include "check/unit_checks.h"
+#include "io/json_fields.h"
 #include "model/contour.h"
+#include "model/geometry.h"
+#include "model/job.h"
 #include "model/module.h"
 
 #include <cstddef>
@@ -42,6 +47,23 @@ constexpr std::size_t kMaxRegionSegments = 20'000;
 constexpr std::size_t kMaxRegionIslands = 100;
 // True when `region` is within both.
 bool regionWithinLimits(const Region& region);
+
+// The contour names of the job file's array at `key` ("islands"); a value
+// that is not an array, or an item that is not a name, is reported on its
+// field ("islands", "islands[2]"). Empty when the key is absent.
+std::vector<std::string> readContourNames(const io::ObjectFields& f, const char* key);
+
+// A resolved region's outline as a unit's door gives it: the box around it
+// (topOutline) and the outline flattened to 1 µm (topPolygon); nothing
+// while the region is unresolved.
+std::optional<Quad> regionBox(const std::optional<Region>& region);
+std::vector<Point2> regionPolygon(const std::optional<Region>& region);
+
+// The figure text of a default contour unit's rectangle over the middle of
+// `stock` (0.2 to 0.6 of its width and length, to 1 µm): the corners P1
+// and P2 and the sides L1 ... L4, counter-clockwise from the bottom side,
+// each line ending in a newline; the caller names the contour.
+std::string middleRectangleFigure(const Stock& stock);
 
 // Scales a region's points and centres (mm <-> inch).
 void convertRegionLengths(Region& region, const LengthMap& f);

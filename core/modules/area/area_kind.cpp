@@ -6,7 +6,6 @@
 #include "modules/module_kind.h"
 #include "paths/drawn_passes.h"
 
-#include "figure/figure_text.h"
 #include "io/job_messages.h"
 #include "io/json_write.h"
 
@@ -22,8 +21,6 @@ namespace {
 const std::vector<std::string> kKeys{"module",   "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
                                      "islands",  "points", "depth",
                                      "diameter", "tools",  "cutting"};
-
-constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
 
 class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
@@ -66,9 +63,7 @@ public:
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override
     {
-        const AreaClearing& a = mm.as<AreaClearing>();
-        if (!a.area.region) return {};
-        return flatten(normalised(*a.area.region).outer, kPolygonChord);
+        return regionPolygon(mm.as<AreaClearing>().area.region);
     }
 
     // What the passes were drawn to sweep: the strips one tool wide inside
@@ -94,15 +89,7 @@ public:
     // A rectangle over the middle of the stock.
     std::string defaultFigure(const Stock& s) const override
     {
-        const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
-        return "$$ The area of the drawn passes: a rectangle\n"
-               "P1 = POINT/" + n(s.x + 0.2 * s.width) + ", " + n(s.y + 0.2 * s.length) + "\n" +
-               "P2 = POINT/" + n(s.x + 0.6 * s.width) + ", " + n(s.y + 0.6 * s.length) + "\n" +
-               "L1 = LINE/P1, ATANGL, 0\n"
-               "L2 = LINE/P2, ATANGL, 90\n"
-               "L3 = LINE/P2, ATANGL, 180\n"
-               "L4 = LINE/P1, ATANGL, 270\n"
-               "K1 = CONTOUR/L1, L2, L3, L4";
+        return "$$ The area of the drawn passes: a rectangle\n" + middleRectangleFigure(s) + "K1 = CONTOUR/L1, L2, L3, L4";
     }
 
     // The default figure's rectangle cleared back and forth in rows 0.8 D
@@ -141,20 +128,7 @@ protected:
         AreaClearing m;
         f.rejectUnknown("module AREA", kKeys);
         m.area.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
-        if (const nlohmann::json* islands = f.find("islands")) {
-            if (!islands->is_array()) {
-                f.error("islands",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of contour names"), *islands));
-            } else {
-                for (std::size_t i = 0; i < islands->size(); ++i) {
-                    const auto& v = (*islands)[i];
-                    if (v.is_string()) m.area.islands.push_back(v.get<std::string>());
-                    else
-                        f.error("islands[" + std::to_string(i) + "]",
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
-                }
-            }
-        }
+        m.area.islands = readContourNames(f, "islands");
         if (const nlohmann::json* points = f.find("points")) {
             const auto isPoint = [](const nlohmann::json& v) {
                 return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
@@ -195,12 +169,7 @@ protected:
         return checkAreaClearing(mm, unitNo, ctx);
     }
 
-    std::optional<Quad> outline(const AreaClearing& mm) const override
-    {
-        if (!mm.area.region || mm.area.region->outer.empty()) return std::nullopt;
-        const Box2 b = bounds(mm.area.region->outer);
-        return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
-    }
+    std::optional<Quad> outline(const AreaClearing& mm) const override { return regionBox(mm.area.region); }
 
     // The area belongs to the job's figure; the drawn points to the area.
     void move(AreaClearing&, Point2) const override {}

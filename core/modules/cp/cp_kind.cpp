@@ -26,8 +26,6 @@ const std::vector<std::string> kKeys{
     "module", "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), "islands", "depth", "U", "F", "stepOver",
     "tools",  "cutting"};
 
-constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check
-
 class CpKind final : public PocketKindOf<ContourPocket> {
 public:
     const char* paletteText() const override
@@ -67,9 +65,7 @@ public:
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override
     {
-        const ContourPocket& p = mm.as<ContourPocket>();
-        if (!p.region) return {};
-        return flatten(normalised(*p.region).outer, kPolygonChord);
+        return regionPolygon(mm.as<ContourPocket>().region);
     }
 
     // Vertical walls: the full depth wherever the point is in the region.
@@ -95,16 +91,8 @@ public:
     std::string defaultFigure(const Stock& s) const override
     {
         const auto n = [](double v) { return figure::formatNumber(std::round(v * 1000.0) / 1000.0); };
-        const double x0 = s.x + 0.2 * s.width, x1 = s.x + 0.6 * s.width;
-        const double y0 = s.y + 0.2 * s.length, y1 = s.y + 0.6 * s.length;
         const double r = 0.05 * std::min(s.width, s.length);
-        return "$$ The contour pocket's outline: a rectangle rounded at its corners\n"
-               "P1 = POINT/" + n(x0) + ", " + n(y0) + "\n" +
-               "P2 = POINT/" + n(x1) + ", " + n(y1) + "\n" +
-               "L1 = LINE/P1, ATANGL, 0\n"
-               "L2 = LINE/P2, ATANGL, 90\n"
-               "L3 = LINE/P2, ATANGL, 180\n"
-               "L4 = LINE/P1, ATANGL, 270\n"
+        return "$$ The contour pocket's outline: a rectangle rounded at its corners\n" + middleRectangleFigure(s) +
                "K1 = CONTOUR/L1, ROUND, " + n(r) + ", L2, ROUND, " + n(r) + ", L3, ROUND, " + n(r) + ", L4, ROUND, " + n(r);
     }
 
@@ -122,20 +110,7 @@ protected:
         ContourPocket m;
         f.rejectUnknown("module CP", kKeys);
         m.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
-        if (const nlohmann::json* islands = f.find("islands")) {
-            if (!islands->is_array()) {
-                f.error("islands",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of contour names"), *islands));
-            } else {
-                for (std::size_t i = 0; i < islands->size(); ++i) {
-                    const auto& v = (*islands)[i];
-                    if (v.is_string()) m.islands.push_back(v.get<std::string>());
-                    else
-                        f.error("islands[" + std::to_string(i) + "]",
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
-                }
-            }
-        }
+        m.islands = readContourNames(f, "islands");
         m.depth = f.number("depth").value_or(0.0);
         m.toolUse = f.whole("U", 1);
         m.wallFinish = f.whole("F", 1);
@@ -161,12 +136,7 @@ protected:
     }
 
     // The box around the outline (its polygon is topPolygon).
-    std::optional<Quad> outline(const ContourPocket& mm) const override
-    {
-        if (!mm.region || mm.region->outer.empty()) return std::nullopt;
-        const Box2 b = bounds(mm.region->outer);
-        return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
-    }
+    std::optional<Quad> outline(const ContourPocket& mm) const override { return regionBox(mm.region); }
 
     // The contours belong to the job's figure: moving the unit alone cannot
     // move them, so a contour pocket stays where its contours are.
