@@ -16,6 +16,7 @@
 #include "verify/milling_verifier.h"
 #include "verify/verify_turning.h"
 
+#include "model/result.h"
 #include "model/translate_noop.h"
 
 #include <fmt/format.h>
