@@ -22,7 +22,7 @@ void cut(HeightField& field, const ToolPath& path, const Tool& tool)
     const double tolerance = std::min(0.01, field.cellSize() / 10.0);
     const double reach = cutter.reach();
     // A sweep that starts where the last ended, at the same height, skips the
-    // cells its flat bottom cut already (SweepChain, as verify/verify.cpp):
+    // cells its flat bottom cut already (SweepChain, as verify/milling_cut.cpp):
     // the short chords of a flattened arc would otherwise each visit a whole
     // disc of cells.
     SweepChain chain;

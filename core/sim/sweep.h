@@ -1,6 +1,6 @@
 // The one sweep of a cutter over the height field, shared by the material
 // removal of the preview (sim/material_removal.cpp) and the verification
-// (verify/verify.cpp): a straight piece of path split into horizontal
+// (verify/milling_cut.cpp): a straight piece of path split into horizontal
 // sweeps, and the cells within a distance of a horizontal segment.
 #pragma once
 
@@ -58,8 +58,9 @@ private:
 };
 
 // The runs of cells a sweep looks at: all of them. A caller that knows
-// some cells cannot change (verify.cpp's tiles: a run of cells already at
-// or below the tool's tip) passes its own, which calls cells(lo, hi) for
+// some cells cannot change (the milling verifier's tiles,
+// verify/milling_verifier.h: a run of cells already at or below the tool's
+// tip) passes its own, which calls cells(lo, hi) for
 // the parts of [from, to] in row j still to visit.
 struct EveryCell {
     template <class Cells>

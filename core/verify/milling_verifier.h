@@ -1,4 +1,4 @@
-// The milling verifier (verify.cpp): the stock as a height field, cut in
+// The milling verifier: the stock as a height field, cut in
 // bands of rows, one per core, each running every move in order over its
 // own rows. Its setup and bands are in milling_verifier.cpp, the cutting of
 // one step with its checks (gouge, rapid into stock, shank or holder in

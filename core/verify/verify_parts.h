@@ -1,4 +1,4 @@
-// The milling verifier's parts (verify.cpp): what one step and one unit hand
+// The milling verifier's parts (milling_verifier.h): what one step and one unit hand
 // the bands, the collector of the worst cell per finding, and the check of
 // the paths against the machine's travel. Internal to core/verify.
 #pragma once
