@@ -1,12 +1,12 @@
 // `taiwa import STEP` and `taiwa figure-from-dxf DXF` (import_commands.h):
 // a lathe job from a STEP model (job/step_job.h), a DXF drawing's contours
-// as figure text (job/dxf_figure.h).
+// as figure text (figure/figure_from_contours.h).
 #include "app/import_commands.h"
 
 #include "app/exit_codes.h"
 #include "dxf/dxf_import.h"
 #include "io/job_io.h"
-#include "job/dxf_figure.h"
+#include "figure/figure_from_contours.h"
 #include "job/job_file.h"
 #include "job/step_job.h"
 #include "model/technology.h"
@@ -44,7 +44,7 @@ int importStep(const Options& o)
     return kOk;
 }
 
-// A DXF drawing's contours as figure text on stdout (job/dxf_figure.h), and
+// A DXF drawing's contours as figure text on stdout (figure/figure_from_contours.h), and
 // on stderr what was read and what is wrong with it.
 int figureFromDxf(const Options& o)
 {

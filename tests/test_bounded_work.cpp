@@ -15,7 +15,7 @@
 #include "dxf/dxf_import.h"
 #include "figure/figure_eval.h"
 #include "figure/figure_text.h"
-#include "job/dxf_figure.h"
+#include "figure/figure_from_contours.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
 #include "modules/area/area.h"

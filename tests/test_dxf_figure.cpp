@@ -1,11 +1,11 @@
-// Contours to figure elements (core/job/dxf_figure.*): the text written for
+// Contours to figure elements (core/figure/figure_from_contours.*): the text written for
 // closed contours of lines and arcs (tangent and crossing junctions, the
 // modifier that picks each, one that only Y can pick), full circles, open
 // contours, merged lines and arcs, and the contours of a hand-written DXF,
 // read back and evaluated to the same segments within 1e-6 mm; names that
 // do not collide with a figure's own; contours the text cannot hold left out
 // with the reason.
-#include "job/dxf_figure.h"
+#include "figure/figure_from_contours.h"
 
 #include "dxf/dxf_import.h"
 #include "figure/figure_eval.h"

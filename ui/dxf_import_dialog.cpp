@@ -5,7 +5,7 @@
 
 #include "dxf/dxf_import.h"
 #include "figure/figure_units.h"
-#include "job/dxf_figure.h"
+#include "figure/figure_from_contours.h"
 
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>

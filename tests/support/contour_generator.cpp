@@ -1,7 +1,7 @@
 // Random contour jobs and their judgement (contour_generator.h).
 #include "support/contour_generator.h"
 
-#include "job/dxf_figure.h"
+#include "figure/figure_from_contours.h"
 #include "modules/cp/cp.h"
 #include "modules/side/side.h"
 

@@ -4,7 +4,7 @@
 // round and rounded-square islands at random gaps (some touching) for CP;
 // open runs with rounded bends and a semicircular notch into the material,
 // and closed bosses and pockets, for SIDE. Each case is a job whose figure
-// is written from the exact contours (job/dxf_figure.h), planned with the
+// is written from the exact contours (figure/figure_from_contours.h), planned with the
 // default library and judged from outside: the product's verification,
 // LinuxCNC's rs274 on the linuxcnc tape, and the tool centre's distance to
 // every wall computed here (exact lines and arcs, not the product's offset

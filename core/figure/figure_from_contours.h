@@ -1,10 +1,9 @@
 // Contours turned into figure elements: the points, lines, circles and
 // CONTOUR statements (core/figure/, docs/figure-elements.md) that evaluate
 // back to the exact line/arc contours a DXF drawing gives (core/dxf/), so
-// that an imported outline becomes text the operator reads and edits. Here
-// in job/ because it needs both dxf's contours and figure's language, which
-// may not include each other. See docs/dxf-import.md, "From contours to
-// figure elements".
+// that an imported outline becomes text the operator reads and edits. See
+// docs/dxf-import.md, "From contours to figure elements". The writing of
+// one contour is contour_writer.h, the names contour_names.h.
 #pragma once
 
 #include "model/contour.h"
