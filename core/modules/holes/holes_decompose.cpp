@@ -80,6 +80,104 @@ struct Planner {
 bool reaches(const Tool& t, double depth) { return !(t.fluteLength > 0.0) || t.fluteLength + 1e-9 >= depth; }
 bool lowerId(const Tool& a, const Tool& b) { return a.id < b.id; }
 
+
+// A tool picked for a step, and why.
+struct Picked {
+    const Tool* tool = nullptr;
+    std::string reason;
+};
+struct Finish : Picked {
+    StepKind kind = StepKind::Tapping;
+    MachiningType type = MachiningType::Tapping;
+};
+
+// How deep a drill's tip goes: the full diameter's depth and its point.
+double tipOf(const holes::Depths& d, const Tool& drill) { return d.drillFull + holes::pointLength(drill.diameter, drill.pointAngle); }
+
+// The drill: of the hole's (or the tap drill's) diameter, or the largest
+// pre-drill within the reamer's or boring tool's allowance.
+Picked pickDrill(Planner& p, const holes::Depths& d, const holes::Thread* thread)
+{
+    const HolePattern& h = p.h;
+    Picked out;
+    if (d.drillDiameter > 0.0) {
+        const std::string what =
+            thread ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tap drill of {}"), thread->name)
+                   : std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the hole's"));
+        out.tool = p.pick(
+            "drill",
+            [&](const Tool& t) {
+                return t.type == ToolType::Drill && std::abs(t.diameter - d.drillDiameter) <= kSame &&
+                       reaches(t, tipOf(d, t));
+            },
+            lowerId,
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{} ({}) whose flutes reach {}"),
+                        mm(d.drillDiameter), what, mm(d.drillFull + d.drillDiameter / 2)));
+        out.reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{}: {}"), mm(d.drillDiameter), what);
+    } else {
+        const bool ream = h.hole == "reamed";
+        const double lo = h.diameter - (ream ? kReamUnderMax : kBoreUnderMax);
+        const double hi = h.diameter - (ream ? kReamUnderMin : kBoreUnderMin);
+        out.tool = p.pick(
+            "drill",
+            [&](const Tool& t) {
+                return t.type == ToolType::Drill && t.diameter >= lo - 1e-9 && t.diameter <= hi + 1e-9 && reaches(t, tipOf(d, t));
+            },
+            [](const Tool& a, const Tool& b) {
+                return a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id);
+            },
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                             "drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}"),
+                        mm(lo), mm(hi), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"), mm(h.diameter),
+                        mm(ream ? kReamUnderMin : kBoreUnderMin), mm(ream ? kReamUnderMax : kBoreUnderMax),
+                        mm(d.drillFull + hi / 2)));
+        if (out.tool)
+            out.reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest drill {} to {} under Ø{} to {}"),
+                                     mm(ream ? kReamUnderMin : kBoreUnderMin),
+                                     mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"));
+    }
+    return out;
+}
+
+// The finishing tool of a tapped, reamed or bored hole; none for a drilled one.
+Finish pickFinish(Planner& p, const holes::Depths& d, const holes::Thread* thread)
+{
+    const HolePattern& h = p.h;
+    Finish out;
+    if (h.hole == "tapped" && thread) {
+        out.tool = p.pick(
+            "tap",
+            [&](const Tool& t) {
+                return t.type == ToolType::Tap && std::abs(t.diameter - thread->size) <= kSame &&
+                       std::abs(t.turning.pitchMin - thread->pitch) <= 1e-6 && reaches(t, d.finish);
+            },
+            lowerId,
+            fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}"),
+                thread->name, thread->pitch, mm(thread->size), mm(thread->pitch), mm(d.finish)));
+        out.reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g}"), thread->name, thread->pitch);
+    } else if (h.hole == "reamed" || h.hole == "bored") {
+        const bool ream = h.hole == "reamed";
+        out.kind = ream ? StepKind::Reaming : StepKind::Boring;
+        out.type = ream ? MachiningType::Reaming : MachiningType::Boring;
+        const ToolType type = ream ? ToolType::Reamer : ToolType::BoringBar;
+        out.tool = p.pick(
+            ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"),
+            [&](const Tool& t) {
+                return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish);
+            },
+            lowerId,
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of Ø{} whose flutes reach {}"),
+                        ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer")
+                             : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring bar (set to the bore)"),
+                        mm(h.diameter), mm(d.finish)));
+        out.reason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of the hole's Ø{}"),
+                                 ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring tool"),
+                                 mm(h.diameter));
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vector<Tool>& library,
@@ -93,48 +191,10 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     const std::vector<Point2> at = holes::positions(h);
     Point2 middle{};
     for (const Point2& q : at) middle = middle + (1.0 / static_cast<double>(at.size())) * q;
-    const auto tipOf = [&](const Tool& drill) { return d.drillFull + holes::pointLength(drill.diameter, drill.pointAngle); };
 
-    // The drill: of the hole's (or the tap drill's) diameter, or the largest
-    // pre-drill within the reamer's or boring tool's allowance.
-    const Tool* drill = nullptr;
-    std::string drillReason;
-    if (d.drillDiameter > 0.0) {
-        const std::string what =
-            thread ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tap drill of {}"), thread->name)
-                   : std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the hole's"));
-        drill = p.pick(
-            "drill",
-            [&](const Tool& t) {
-                return t.type == ToolType::Drill && std::abs(t.diameter - d.drillDiameter) <= kSame &&
-                       reaches(t, tipOf(t));
-            },
-            lowerId,
-            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{} ({}) whose flutes reach {}"),
-                        mm(d.drillDiameter), what, mm(d.drillFull + d.drillDiameter / 2)));
-        drillReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "drill of Ø{}: {}"), mm(d.drillDiameter), what);
-    } else {
-        const bool ream = h.hole == "reamed";
-        const double lo = h.diameter - (ream ? kReamUnderMax : kBoreUnderMax);
-        const double hi = h.diameter - (ream ? kReamUnderMin : kBoreUnderMin);
-        drill = p.pick(
-            "drill",
-            [&](const Tool& t) {
-                return t.type == ToolType::Drill && t.diameter >= lo - 1e-9 && t.diameter <= hi + 1e-9 && reaches(t, tipOf(t));
-            },
-            [](const Tool& a, const Tool& b) {
-                return a.diameter > b.diameter || (a.diameter == b.diameter && a.id < b.id);
-            },
-            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                                             "drill from Ø{} to Ø{} (to {} Ø{}: {} to {} under) whose flutes reach {}"),
-                        mm(lo), mm(hi), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"), mm(h.diameter),
-                        mm(ream ? kReamUnderMin : kBoreUnderMin), mm(ream ? kReamUnderMax : kBoreUnderMax),
-                        mm(d.drillFull + hi / 2)));
-        if (drill)
-            drillReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest drill {} to {} under Ø{} to {}"),
-                                      mm(ream ? kReamUnderMin : kBoreUnderMin),
-                                      mm(ream ? kReamUnderMax : kBoreUnderMax), mm(h.diameter), ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"));
-    }
+    // The drill first: its diameter sets the centre drill's.
+    const Picked drilling = pickDrill(p, d, thread);
+    const Tool* drill = drilling.tool;
 
     // The centre drill: the largest no wider than the drill (else the
     // smallest), spotting a cone as wide as the drill or itself.
@@ -150,43 +210,8 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
                              : a.diameter < b.diameter || (a.diameter == b.diameter && a.id < b.id);
         },
         "centre drill");
-
-    // The finishing tool.
-    const Tool* finish = nullptr;
-    StepKind finishKind = StepKind::Tapping;
-    MachiningType finishType = MachiningType::Tapping;
-    std::string finishReason;
-    if (h.hole == "tapped" && thread) {
-        finish = p.pick(
-            "tap",
-            [&](const Tool& t) {
-                return t.type == ToolType::Tap && std::abs(t.diameter - thread->size) <= kSame &&
-                       std::abs(t.turning.pitchMin - thread->pitch) <= 1e-6 && reaches(t, d.finish);
-            },
-            lowerId,
-            fmt::format(
-                TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g} (type tap, Ø{}, pitch {}) whose flutes reach {}"),
-                thread->name, thread->pitch, mm(thread->size), mm(thread->pitch), mm(d.finish)));
-        finishReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tap {}x{:g}"), thread->name, thread->pitch);
-    } else if (h.hole == "reamed" || h.hole == "bored") {
-        const bool ream = h.hole == "reamed";
-        finishKind = ream ? StepKind::Reaming : StepKind::Boring;
-        finishType = ream ? MachiningType::Reaming : MachiningType::Boring;
-        const ToolType type = ream ? ToolType::Reamer : ToolType::BoringBar;
-        finish = p.pick(
-            ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "ream") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "bore"),
-            [&](const Tool& t) {
-                return t.type == type && std::abs(t.diameter - h.diameter) <= kSame && reaches(t, d.finish);
-            },
-            lowerId,
-            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of Ø{} whose flutes reach {}"),
-                        ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer")
-                             : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring bar (set to the bore)"),
-                        mm(h.diameter), mm(d.finish)));
-        finishReason = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} of the hole's Ø{}"),
-                                   ream ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "reamer") : TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring tool"),
-                                   mm(h.diameter));
-    }
+    const Finish finishing = pickFinish(p, d, thread);
+    const Tool* finish = finishing.tool;
     if (p.failed || !drill || !centre) return {};
 
     const auto step = [&](StepKind kind, MachiningType type, const Tool& tool, double depth, double diameter,
@@ -206,10 +231,10 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
                          holes::pointLength(spot, centre->pointAngle), spot,
                          fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drill spotting Ø{} for the Ø{} drill"),
                                      mm(spot), mm(drill->diameter))));
-    steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(*drill), drill->diameter, drillReason));
+    steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(d, *drill), drill->diameter, drilling.reason));
     if (finish) {
-        Step s = step(finishKind, finishType, *finish, d.finish, d.finishDiameter, finishReason);
-        if (finishKind == StepKind::Tapping) s.payload = HoleCentres{at, thread->pitch};
+        Step s = step(finishing.kind, finishing.type, *finish, d.finish, d.finishDiameter, finishing.reason);
+        if (finishing.kind == StepKind::Tapping) s.payload = HoleCentres{at, thread->pitch};
         steps.push_back(s);
     }
     return steps;

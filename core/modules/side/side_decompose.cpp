@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace taiwa {
 
@@ -63,46 +64,26 @@ std::optional<Narrow> tooNarrow(const side::Travel& t, const Passes& p, double R
     return std::nullopt;
 }
 
-}  // namespace
-
-std::vector<double> roughingOffsets(double width, double alpha2, double maxStep)
-{
-    const double span = width - alpha2;
-    const int n = std::max(1, static_cast<int>(std::ceil(span / maxStep - 1e-9)));
-    std::vector<double> out;
-    for (int i = n - 1; i >= 0; --i) out.push_back(alpha2 + span * i / n);
-    return out;
-}
-
-std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, const std::vector<Tool>& library,
-                               const std::string& material, int unit, LengthUnit shown, Diagnostics& out)
-{
-    using decompose::makeStep;
-    const side::Travel t = side::travel(m);
-    const double room = side::toolRoom(m);
-    const bool finishes = m.toolUse != 9;
-    const auto problem = [&](const std::string& field, const std::string& message) {
-        out.push_back({Severity::Error, unit + 1, SideMill::kName, field, message});
+// The end mill of a SIDE unit and why: pinned under "side", or the largest
+// of the library that fits the room and whose passes keep off the contour;
+// a refusal on the field to mend when none will do.
+struct SideToolChoice {
+    struct Choice {
+        const Tool* tool = nullptr;  // none: refused (problem() said why)
+        std::string reason;
     };
 
-    // What the end mill must be: flat, within the room (the finishing pass
-    // runs at the contour; roughing alone stays α2 off it), flutes over T.
-    tools::Fit fit;
-    fit.type = ToolType::FlatEndMill;
-    if (room < 1e299) fit.cornerRadius = finishes ? room : room + tech.alpha2;
-    fit.depth = m.depth;
-    fit.reach = m.depth;
+    Choice choose() const
+    {
+        if (const auto pin = m.tools.find("side"); pin != m.tools.end()) return pinnedTool(pin->second);
+        return largest();
+    }
 
-    // Shorter flutes only where every pass cuts in layers: not a finishing
-    // pass at full depth at once (F1), whose shank would rub the wall above
-    // the flutes.
-    const bool layers = !finishes || m.wallFinish == 2;
-    const Tool* tool = nullptr;
-    std::string reason;
-    if (const auto pin = m.tools.find("side"); pin != m.tools.end()) {
-        tool = findTool(library, pin->second);
+    Choice pinnedTool(int id) const
+    {
+        const Tool* tool = findTool(library, id);
         if (!tool) {
-            problem("tools.side", msg::toolNotInLibrary(pin->second));
+            problem("tools.side", msg::toolNotInLibrary(id));
             return {};
         }
         tools::Fit pinned = fit;
@@ -119,8 +100,14 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
             problem("contour", msg::sideChannelTooNarrow(m.contour, msg::toolName(*tool), {at->where.x, shown}, {at->where.y, shown}));
             return {};
         }
-        reason = "pinned by the operator";
-    } else {
+        return {tool, "pinned by the operator"};
+    }
+
+    // The largest that fits, flutes reaching T first, then shorter flutes
+    // (F2 and roughing cut in layers); each proved along the contour.
+    Choice largest() const
+    {
+        const Tool* tool = nullptr;
         // The largest that fits, flutes reaching T first, then shorter
         // flutes (F2 and roughing cut in layers); each proved along the contour.
         std::vector<const Tool*> candidates;
@@ -200,6 +187,7 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
         }
         // One whole sentence for each case, for the station's translation.
         const bool shortFlutes = tool->fluteLength > 0 && tool->fluteLength + 1e-9 < m.depth;
+        std::string reason;
         if (room < 1e299)
             reason = shortFlutes
                          ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) whose radius {} fits the contour's smallest inside radius {} and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers"),
@@ -211,7 +199,65 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
                          ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) and whose passes keep off the contour; its flutes ({}) are shorter than T: it cuts in layers"),
                                        mm(tool->diameter), mm(tool->fluteLength))
                          : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "largest flat end mill ({}) and whose passes keep off the contour"), mm(tool->diameter));
+        return {tool, std::move(reason)};
     }
+
+    const SideMill& m;
+    const TechnologyData& tech;
+    const std::vector<Tool>& library;
+    const std::string& material;
+    LengthUnit shown;
+    std::function<void(const std::string&, const std::string&)> problem;  // on the unit's field
+    side::Travel t;
+    double room;     // the contour's smallest inside radius on the tool's side
+    bool finishes;   // a finishing pass at the contour (U not 9)
+    bool layers;     // every pass cuts in layers: shorter flutes will do
+    tools::Fit fit;  // what the end mill must be
+};
+
+SideToolChoice sideToolChoice(const SideMill& m, const TechnologyData& tech, const std::vector<Tool>& library,
+                              const std::string& material, LengthUnit shown,
+                              std::function<void(const std::string&, const std::string&)> problem)
+{
+    const double room = side::toolRoom(m);
+    const bool finishes = m.toolUse != 9;
+    // Shorter flutes only where every pass cuts in layers: not a finishing
+    // pass at full depth at once (F1), whose shank would rub the wall above
+    // the flutes.
+    const bool layers = !finishes || m.wallFinish == 2;
+    // What the end mill must be: flat, within the room (the finishing pass
+    // runs at the contour; roughing alone stays α2 off it), flutes over T.
+    tools::Fit fit;
+    fit.type = ToolType::FlatEndMill;
+    if (room < 1e299) fit.cornerRadius = finishes ? room : room + tech.alpha2;
+    fit.depth = m.depth;
+    fit.reach = m.depth;
+    return SideToolChoice{m, tech, library, material, shown, std::move(problem), side::travel(m), room, finishes, layers, fit};
+}
+
+}  // namespace
+
+std::vector<double> roughingOffsets(double width, double alpha2, double maxStep)
+{
+    const double span = width - alpha2;
+    const int n = std::max(1, static_cast<int>(std::ceil(span / maxStep - 1e-9)));
+    std::vector<double> out;
+    for (int i = n - 1; i >= 0; --i) out.push_back(alpha2 + span * i / n);
+    return out;
+}
+
+std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, const std::vector<Tool>& library,
+                               const std::string& material, int unit, LengthUnit shown, Diagnostics& out)
+{
+    using decompose::makeStep;
+    const SideToolChoice choice = sideToolChoice(m, tech, library, material, shown, [&](const std::string& field, const std::string& message) {
+        out.push_back({Severity::Error, unit + 1, SideMill::kName, field, message});
+    });
+    const SideToolChoice::Choice chosen = choice.choose();
+    if (!chosen.tool) return {};
+    const Tool* tool = chosen.tool;
+    const std::string& reason = chosen.reason;
+    const side::Travel& t = choice.t;
 
     const Passes passes = passesFor(m, tech, tool->diameter);
     const Point2 middle = t.contour.segments[t.contour.segments.size() / 2].at(0.5);
