@@ -7,6 +7,7 @@
 #include "check/messages.h"
 #include "io/job_io.h"
 #include "modules/probe/probe_fit.h"
+#include "modules/region_messages.h"
 #include "support/gui_fields.h"
 #include "support/speak.h"
 #include "support/support.h"
