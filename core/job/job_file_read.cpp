@@ -10,6 +10,7 @@
 #include "io/job_messages.h"
 #include "io/json_document.h"
 #include "io/json_fields.h"
+#include "io/json_objects.h"
 #include "modules/registry.h"
 
 #include <algorithm>
@@ -173,18 +174,13 @@ std::string readFigure(const ObjectFields& job)
 // "clamping": {"fixture": "vice", "grip": "y", "height": 10}; absent: not given.
 std::optional<Clamping> readClamping(const ObjectFields& job)
 {
-    const json* v = job.find("clamping");
-    if (!v) return std::nullopt;
-    if (!v->is_object()) {
-        job.error("clamping", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
-        return std::nullopt;
-    }
-    const ObjectFields f(*v, io::Place{std::nullopt, "", "clamping."}, job.sink());
-    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys);
-    f.choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
+    const auto f = io::objectAt(job, "clamping");
+    if (!f) return std::nullopt;
+    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys);
+    f->choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
     Clamping c;
-    c.grip = f.choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
-    c.height = f.number("height").value_or(0.0);
+    c.grip = f->choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
+    c.height = f->number("height").value_or(0.0);
     return c;
 }
 
@@ -193,42 +189,32 @@ std::optional<Clamping> readClamping(const ObjectFields& job)
 TwoPathSettings readTwoPath(const ObjectFields& job)
 {
     TwoPathSettings t;
-    const json* v = job.find("twoPath");
-    if (!v) return t;
-    if (!v->is_object()) {
-        job.error("twoPath", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
-        return t;
-    }
-    const ObjectFields f(*v, io::Place{std::nullopt, "", "twoPath."}, job.sink());
-    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys);
-    t.dwellRevolutions = f.number("dwellRevolutions", t.dwellRevolutions);
-    if (const json* w = f.find("waitsEverywhere")) {
+    const auto f = io::objectAt(job, "twoPath");
+    if (!f) return t;
+    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys);
+    t.dwellRevolutions = f->number("dwellRevolutions", t.dwellRevolutions);
+    if (const json* w = f->find("waitsEverywhere")) {
         if (w->is_boolean())
             t.waitsEverywhere = w->get<bool>();
         else
-            f.error("waitsEverywhere", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "true or false"), *w));
+            f->error("waitsEverywhere", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "true or false"), *w));
     }
-    if (f.find("firstWait")) t.firstWait = f.whole("firstWait");
+    if (f->find("firstWait")) t.firstWait = f->whole("firstWait");
     return t;
 }
 
 TechnologyOverrides readTechnology(const ObjectFields& job)
 {
     TechnologyOverrides t;
-    const json* v = job.find("technology");
-    if (!v) return t;
-    if (!v->is_object()) {
-        job.error("technology", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), *v));
-        return t;
-    }
-    const ObjectFields f(*v, io::Place{std::nullopt, "", "technology."}, job.sink());
-    f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys);
-    t.alpha1 = f.optionalNumber("alpha1");
-    t.alpha2 = f.optionalNumber("alpha2");
-    t.alpha3 = f.optionalNumber("alpha3");
-    t.beta2 = f.optionalNumber("beta2");
-    t.gamma = f.optionalNumber("gamma");
-    t.stepOver = f.optionalNumber("stepOver");
+    const auto f = io::objectAt(job, "technology");
+    if (!f) return t;
+    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys);
+    t.alpha1 = f->optionalNumber("alpha1");
+    t.alpha2 = f->optionalNumber("alpha2");
+    t.alpha3 = f->optionalNumber("alpha3");
+    t.beta2 = f->optionalNumber("beta2");
+    t.gamma = f->optionalNumber("gamma");
+    t.stepOver = f->optionalNumber("stepOver");
     return t;
 }
 

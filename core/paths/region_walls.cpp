@@ -5,6 +5,7 @@
 // to the wall at the middle of the loop's longest piece.
 #include "paths/generators.h"
 
+#include "paths/loop_lead.h"
 #include "paths/region_offset.h"
 #include "paths/path_builder.h"
 
@@ -18,38 +19,6 @@ namespace {
 
 Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
 Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
-
-// The loop started at the middle of its longest piece (a line when it has
-// one): that piece split in two, its second half first.
-Contour fromMiddle(const Contour& loop)
-{
-    std::size_t best = 0;
-    double bestLength = -1.0;
-    for (std::size_t i = 0; i < loop.segments.size(); ++i) {
-        const ContourSegment& s = loop.segments[i];
-        const double l = s.length() * (s.isArc() ? 0.5 : 1.0);  // lines first
-        if (l > bestLength) bestLength = l, best = i;
-    }
-    const ContourSegment& s = loop.segments[best];
-    const Point2 middle = s.at(0.5);
-    ContourSegment first = s, second = s;
-    first.end = middle;
-    second.start = middle;
-    Contour out;
-    out.closed = true;
-    out.segments.push_back(second);
-    for (std::size_t k = 1; k < loop.segments.size(); ++k) out.segments.push_back(loop.segments[(best + k) % loop.segments.size()]);
-    out.segments.push_back(first);
-    return out;
-}
-
-void appendLoop(PathBuilder& b, const Contour& loop, double z)
-{
-    for (const ContourSegment& s : loop.segments) {
-        if (s.isArc()) b.arc(s.kind == ContourSegment::Kind::ArcCCW, at(s.end, z), s.centre);
-        else b.feed(at(s.end, z));
-    }
-}
 
 }  // namespace
 
@@ -74,21 +43,13 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
     for (Contour loop : loopsOf(*pieces)) {
         if (loop.segments.empty()) continue;
         if (!p.climb) loop = reversed(loop);
-        loop = fromMiddle(loop);
+        loop = startedAtMiddle(loop, longestPiece(loop));
         const Point2 start = loop.start(), dir = loop.segments.front().startDirection();
         const Point2 inward = p.climb ? leftOf(dir) : -1.0 * leftOf(dir);
         // The largest lead circle, at most `wanted`, that stays where the
         // tool centre may go: its centre at least its radius inside that.
-        const auto fits = [&](double l) { return distanceTo(start + l * inward) <= -(d + l) + 1e-9; };
-        double lead = wanted;
-        if (!fits(lead)) {
-            double lo = 0.0, hi = wanted;
-            for (int it = 0; it < 50; ++it) {
-                const double mid = 0.5 * (lo + hi);
-                (fits(mid) ? lo : hi) = mid;
-            }
-            lead = lo;
-        }
+        const double lead =
+            largestLead(wanted, [&](double l) { return distanceTo(start + l * inward) <= -(d + l) + 1e-9; });
         const Point2 c = start + lead * inward;
         const Point2 from = c - lead * dir, to = c + lead * dir;
         if (!b) b.emplace(at(from, p.safeZ));
@@ -99,7 +60,7 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
             b->feed(at(from, b->at().z));  // after an incision: back across the lead circle
             b->feed(at(from, -depth), FeedKind::Plunge);
             if (lead > 0) b->arc(p.climb, at(start, -depth), c);
-            appendLoop(*b, loop, -depth);
+            appendPieces(*b, loop, -depth);
             if (lead > 0) b->arc(p.climb, at(to, -depth), c);
         }
     }

@@ -4,6 +4,7 @@
 #include "paths/generators.h"
 
 #include "paths/contour.h"
+#include "paths/loop_lead.h"
 #include "paths/path_builder.h"
 
 #include <algorithm>
@@ -18,20 +19,12 @@ Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
 Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
 
 // Largest lead radius, at most `wanted`, whose whole circle (tangent to the
-// contour at its start, on the pocket's side) stays in the centre region:
-// circles tangent at one point grow nested, so bisection finds it.
+// contour at its start, on the pocket's side) stays in the centre region.
 double leadRadius(const Quad& centre, bool ccw, double wanted)
 {
     const ContourStart s = contourStart(centre, ccw);
     const Point2 inward = ccw ? leftOf(s.direction) : -1.0 * leftOf(s.direction);
-    const auto fits = [&](double l) { return signedDistance(centre, s.point + l * inward) <= -l + 1e-9; };
-    if (fits(wanted)) return wanted;
-    double lo = 0.0, hi = wanted;
-    for (int it = 0; it < 50; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (fits(mid) ? lo : hi) = mid;
-    }
-    return lo;
+    return largestLead(wanted, [&](double l) { return signedDistance(centre, s.point + l * inward) <= -l + 1e-9; });
 }
 
 // One incision at depth z: approach above the lead-in start, plunge there

@@ -3416,14 +3416,6 @@ Theirs: %6</source>
             <translation>外形</translation>
         </message>
         <message>
-            <source>an array of contour names</source>
-            <translation>輪郭名の配列</translation>
-        </message>
-        <message>
-            <source>a contour name</source>
-            <translation>輪郭名</translation>
-        </message>
-        <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] の配列</translation>
         </message>
@@ -3738,6 +3730,14 @@ Theirs: %6</source>
         <message>
             <source>an array of 4 points [x, y]</source>
             <translation>4 つの点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>an array of contour names</source>
+            <translation>輪郭名の配列</translation>
+        </message>
+        <message>
+            <source>a contour name</source>
+            <translation>輪郭名</translation>
         </message>
         <message>
             <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>

@@ -3416,14 +3416,6 @@ Theirs: %6</source>
             <translation>外轮廓</translation>
         </message>
         <message>
-            <source>an array of contour names</source>
-            <translation>轮廓名数组</translation>
-        </message>
-        <message>
-            <source>a contour name</source>
-            <translation>轮廓名</translation>
-        </message>
-        <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] 的数组</translation>
         </message>
@@ -3738,6 +3730,14 @@ Theirs: %6</source>
         <message>
             <source>an array of 4 points [x, y]</source>
             <translation>4 个点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>an array of contour names</source>
+            <translation>轮廓名数组</translation>
+        </message>
+        <message>
+            <source>a contour name</source>
+            <translation>轮廓名</translation>
         </message>
         <message>
             <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>

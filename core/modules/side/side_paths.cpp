@@ -16,6 +16,7 @@
 
 #include "paths/contour_offset.h"
 #include "paths/generators.h"
+#include "paths/loop_lead.h"
 #include "paths/path_builder.h"
 
 #include <algorithm>
@@ -31,38 +32,13 @@ namespace {
 Point3 at(Point2 p, double z) { return {p.x, p.y, z}; }
 Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
 
-void appendChain(PathBuilder& b, const Contour& chain, double z)
-{
-    for (const ContourSegment& s : chain.segments) {
-        if (s.isArc()) b.arc(s.kind == ContourSegment::Kind::ArcCCW, at(s.end, z), s.centre);
-        else b.feed(at(s.end, z));
-    }
-}
-
-// The loop started at the middle of its longest piece (lines first).
+// The loop started at the middle of its longest piece (lines first); a
+// full circle where it starts.
 Contour fromMiddle(const Contour& loop)
 {
-    std::size_t best = 0;
-    double bestLength = -1.0;
-    for (std::size_t i = 0; i < loop.segments.size(); ++i) {
-        const ContourSegment& s = loop.segments[i];
-        const double l = s.length() * (s.isArc() ? 0.5 : 1.0);
-        if (l > bestLength) bestLength = l, best = i;
-    }
-    const ContourSegment& s = loop.segments[best];
-    if (s.isArc() && s.start == s.end) {  // a full circle: start where it starts
-        return loop;
-    }
-    const Point2 middle = s.at(0.5);
-    ContourSegment first = s, second = s;
-    first.end = middle;
-    second.start = middle;
-    Contour out;
-    out.closed = true;
-    out.segments.push_back(second);
-    for (std::size_t k = 1; k < loop.segments.size(); ++k) out.segments.push_back(loop.segments[(best + k) % loop.segments.size()]);
-    out.segments.push_back(first);
-    return out;
+    const std::size_t k = longestPiece(loop);
+    const ContourSegment& s = loop.segments[k];
+    return s.isArc() && s.start == s.end ? loop : startedAtMiddle(loop, k);
 }
 
 }  // namespace
@@ -112,7 +88,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& t
                     const Point2 from = raw.start() - (R + p.clearance) * d0, to = raw.end() + (R + p.clearance) * d1;
                     enter(from, z);
                     b->feed(at(raw.start(), z));
-                    appendChain(*b, raw, z);
+                    appendPieces(*b, raw, z);
                     b->feed(at(to, z));
                     b->rapid(at(to, p.safeZ));
                     continue;
@@ -124,23 +100,15 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& t
                 // pass, at most as large as keeps its centre R + o + lead
                 // from the contour.
                 const double wanted = (outermost - o) + spacing + p.clearance;
-                const auto fits = [&](double l) { return distanceTo(contour, start + l * out) >= R + o + l - 1e-9; };
-                double lead = wanted;
-                if (!fits(lead)) {
-                    double lo = 0.0, hi = wanted;
-                    for (int it = 0; it < 50; ++it) {
-                        const double mid = 0.5 * (lo + hi);
-                        (fits(mid) ? lo : hi) = mid;
-                    }
-                    lead = lo;
-                }
+                const double lead = largestLead(
+                    wanted, [&](double l) { return distanceTo(contour, start + l * out) >= R + o + l - 1e-9; });
                 const Point2 c = start + lead * out;
                 const Point2 from = c - lead * dir, to = c + lead * dir;
                 // Round the circle onto the loop: counter-clockwise with the
                 // tool on the left of the travel, clockwise on the right.
                 enter(from, z);
                 if (lead > 0) b->arc(left, at(start, z), c);
-                appendChain(*b, loop, z);
+                appendPieces(*b, loop, z);
                 if (lead > 0) b->arc(left, at(to, z), c);
                 b->rapid(at(to, p.safeZ));
             }

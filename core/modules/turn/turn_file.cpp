@@ -5,6 +5,7 @@
 
 #include "check/messages.h"
 #include "io/job_messages.h"
+#include "io/json_objects.h"
 #include "io/json_write.h"
 #include "model/translate_noop.h"
 
@@ -41,81 +42,44 @@ TurnUnit readTurnUnit(const io::ObjectFields& f)
     TurnedProfile& p = t.profile;
     f.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a TURN unit"), kUnitKeys);
     p.side = optionalChoice(f, "side", kSides) == 1 ? ProfileSide::Inner : ProfileSide::Outer;
-    if (const auto* start = f.find("start")) {
-        if (!start->is_object()) {
-            f.error("start", msg::io::wrongType("an object {\"x\": diameter, \"z\": Z}", *start));
-        } else {
-            const io::ObjectFields s = f.nested(*start, "start.");
-            s.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the start point"), {"x", "z"});
-            p.startX = s.number("x", 0.0);
-            p.startZ = s.number("z", 0.0);
-        }
+    if (const auto s = io::objectAt(f, "start", "an object {\"x\": diameter, \"z\": Z}")) {
+        s->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the start point"), {"x", "z"});
+        p.startX = s->number("x", 0.0);
+        p.startZ = s->number("z", 0.0);
     }
-    const auto* rows = f.find("rows");
-    if (!rows || !rows->is_array()) {
-        f.error("rows",
-                rows ? msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows"), *rows)
-                     : msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows")));
-    } else {
-        for (std::size_t i = 0; i < rows->size(); ++i) {
-            const std::string prefix = fmt::format("rows[{}].", i + 1);
-            if (!(*rows)[i].is_object()) {
-                f.error(prefix.substr(0, prefix.size() - 1),
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*rows)[i]));
-                continue;
-            }
-            const io::ObjectFields r = f.nested((*rows)[i], prefix);
-            r.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a profile row"), kRowKeys);
-            ProfileRow row;
-            row.id = r.whole("id", static_cast<int>(i) + 1);
-            row.kind = static_cast<ElementKind>(optionalChoice(r, "kind", kKinds));
-            row.x = r.number("x").value_or(0.0);
-            row.z = r.number("z").value_or(0.0);
-            row.radius = r.optionalNumber("radius");
-            row.centreX = r.optionalNumber("centreX");
-            row.centreZ = r.optionalNumber("centreZ");
-            row.corner = static_cast<CornerKind>(optionalChoice(r, "corner", kCorners));
-            row.cornerSize = r.number("cornerSize", 0.0);
-            row.attributes.roughness = r.optionalNumber("roughness");
-            row.attributes.tolerance = r.string("tolerance", "");
-            if (const auto* thread = r.find("thread")) {
-                if (!thread->is_object()) {
-                    r.error("thread", msg::io::wrongType("an object {\"pitch\": mm, \"depth\": mm}", *thread));
-                } else {
-                    const io::ObjectFields th = r.nested(*thread, "thread.");
-                    th.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a thread"), {"pitch", "depth"});
-                    row.attributes.thread = ThreadSpec{th.number("pitch").value_or(0.0), th.optionalNumber("depth")};
-                }
-            }
-            p.rows.push_back(row);
+    io::eachObject(f, "rows", TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of profile rows"), true,
+               [&](const io::ObjectFields& r, std::size_t i) {
+        r.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a profile row"), kRowKeys);
+        ProfileRow row;
+        row.id = r.whole("id", static_cast<int>(i) + 1);
+        row.kind = static_cast<ElementKind>(optionalChoice(r, "kind", kKinds));
+        row.x = r.number("x").value_or(0.0);
+        row.z = r.number("z").value_or(0.0);
+        row.radius = r.optionalNumber("radius");
+        row.centreX = r.optionalNumber("centreX");
+        row.centreZ = r.optionalNumber("centreZ");
+        row.corner = static_cast<CornerKind>(optionalChoice(r, "corner", kCorners));
+        row.cornerSize = r.number("cornerSize", 0.0);
+        row.attributes.roughness = r.optionalNumber("roughness");
+        row.attributes.tolerance = r.string("tolerance", "");
+        if (const auto th = io::objectAt(r, "thread", "an object {\"pitch\": mm, \"depth\": mm}")) {
+            th->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a thread"), {"pitch", "depth"});
+            row.attributes.thread = ThreadSpec{th->number("pitch").value_or(0.0), th->optionalNumber("depth")};
         }
-    }
-    if (const auto* allowances = f.find("allowances")) {
-        if (!allowances->is_array()) {
-            f.error("allowances",
-                    msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of grinding-allowance rows"),
-                                       *allowances));
-        } else {
-            for (std::size_t i = 0; i < allowances->size(); ++i) {
-                const std::string prefix = fmt::format("allowances[{}].", i + 1);
-                if (!(*allowances)[i].is_object()) {
-                    f.error(prefix.substr(0, prefix.size() - 1),
-                            msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an object"), (*allowances)[i]));
-                    continue;
-                }
-                const io::ObjectFields a = f.nested((*allowances)[i], prefix);
-                a.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a grinding-allowance row"), kAllowanceKeys);
-                AllowanceRow row;
-                row.edge = a.string("edge").value_or("");
-                row.allowance = a.number("allowance").value_or(0.0);
-                row.adjustment = a.optionalNumber("adjustment");
-                row.groove = static_cast<GrooveKind>(optionalChoice(a, "groove", kGrooves));
-                row.grooveWidth = a.optionalNumber("grooveWidth");
-                row.grooveDepth = a.optionalNumber("grooveDepth");
-                p.allowances.push_back(row);
-            }
-        }
-    }
+        p.rows.push_back(row);
+    });
+    io::eachObject(f, "allowances", TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of grinding-allowance rows"), false,
+               [&](const io::ObjectFields& a, std::size_t) {
+        a.rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a grinding-allowance row"), kAllowanceKeys);
+        AllowanceRow row;
+        row.edge = a.string("edge").value_or("");
+        row.allowance = a.number("allowance").value_or(0.0);
+        row.adjustment = a.optionalNumber("adjustment");
+        row.groove = static_cast<GrooveKind>(optionalChoice(a, "groove", kGrooves));
+        row.grooveWidth = a.optionalNumber("grooveWidth");
+        row.grooveDepth = a.optionalNumber("grooveDepth");
+        p.allowances.push_back(row);
+    });
     t.tools = f.wholeMap("tools");
     if (const auto* skip = f.find("skip")) {
         if (!skip->is_array()) {
