@@ -125,9 +125,11 @@ struct Step {
     // What only the step's module makes (model/step_payload.h): SIDE's
     // contour and passes, FACE's pass angle, AREA's drawn points, HOLES'
     // centres, M2D's inclined face, SURFACE's paths; the struct lives in
-    // the module's folder. A turning step's TurnStep (model/turn_path.h:
-    // side, speeds, the path in XZ; turnOf(step) reads it) is its payload
-    // too, and then `path` stays empty: milling's stages pass it by.
+    // the module's folder (M2D's in modules/inclined_face.h, beside the
+    // pocket modules' shared code). A turning step's TurnStep
+    // (model/turn_path.h: side, speeds, the path in XZ; turnOf(step) reads
+    // it) is its payload too, and then `path` stays empty: milling's stages
+    // pass it by.
     StepPayload payload;
 
     // Filled by the later stages; absent until then, never faked.

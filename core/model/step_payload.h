@@ -1,9 +1,13 @@
-// A module's own data of a step (model/step.h): what only that module's
-// paths and checks read — a side-milling step's contour and passes, a face's
-// pass angle, an area's drawn points, a hole pattern's centres — held by
-// the step without the model knowing the module. Copied deeply, compared by
-// value, the way ModuleInput holds a unit's input (model/module.h). Each
-// payload struct lives in its module's folder and provides
+// A module's own data of a step (model/step.h): what only that module makes
+// — a side-milling step's contour and passes, a face's pass angle, an
+// area's drawn points, a hole pattern's centres, an inclined face, a
+// turning step's path and speeds — held by the step without the model
+// knowing the module. Copied deeply, compared by value, the way ModuleInput
+// holds a unit's input (model/module.h); read-only: a changed payload is
+// set whole. Each payload struct lives in its module's folder (M2D's
+// inclined face beside the pocket modules' shared code that reads it;
+// TURN's TurnStep in model/turn_path.h, for the stages that read it) and
+// provides
 //   static constexpr const char* kName;   // "SIDE passes", for messages
 //   friend bool operator==(const T&, const T&);
 #pragma once
