@@ -1964,10 +1964,6 @@ Theirs: %6</source>
             <translation>{} = {}{} は 0 より大きくしてください</translation>
         </message>
         <message>
-            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
-            <translation>壁の最終仕上げ代 α3 = {} は荒加工の壁仕上げ代 α2 = {} より小さくしてください</translation>
-        </message>
-        <message>
             <source>the pilot-hole remainder α1 = {} is not smaller than the depth {} of unit {}: the pilot hole would have no depth; use H = 9 or a smaller α1</source>
             <translation>下穴の残し α1 = {0} がユニット {2} の深さ {1} より小さくありません。下穴の深さがなくなります。H = 9 にするか α1 を小さくしてください</translation>
         </message>
@@ -1982,10 +1978,6 @@ Theirs: %6</source>
         <message>
             <source>{} is {:g}{}; it must lie between {:g} and {:g}{} ({})</source>
             <translation>{} が {}{} です。{} から {}{} の間にしてください ({})</translation>
-        </message>
-        <message>
-            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
-            <translation>カスプ高さが {} です。{} 以上にしてください (これより小さいと傾斜面のパスが増えるだけで、機械が保てる以上に細かい面にはなりません)</translation>
         </message>
         <message>
             <source>the stock {} is {}; a stock of more than {} a side is not a part for this station</source>
@@ -2004,96 +1996,8 @@ Theirs: %6</source>
             <translation>{} が {} です。0 より大きくしてください</translation>
         </message>
         <message>
-            <source>the corner radius is {}; it cannot be negative</source>
-            <translation>コーナ半径が {} です。負の値にはできません</translation>
-        </message>
-        <message>
-            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
-            <translation>{}が素材の外にはみ出しています。移動するか素材を大きくしてください</translation>
-        </message>
-        <message>
-            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
-            <translation>P{} と P{} が同じ点 ({}, {}) です。輪郭には異なる 4 つの角が必要です</translation>
-        </message>
-        <message>
-            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
-            <translation>「{}」は点の並びではありません。各点を X, Y で入力し、点どうしを ';' で区切るか (10, 20; 60, 20)、図形タブでパスを描いてください</translation>
-        </message>
-        <message>
-            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
-            <translation>点が描かれていません。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
-        </message>
-        <message>
-            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
-            <translation>描かれた点が 1 つだけです。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
-        </message>
-        <message>
-            <source>point {} ({}, {}) lies outside the stock</source>
-            <translation>点 {} ({}, {}) が素材の外にあります</translation>
-        </message>
-        <message>
-            <source>pass {} ends where it starts; remove the repeated point</source>
-            <translation>パス {} が始点で終わっています。重複した点を削除してください</translation>
-        </message>
-        <message>
-            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
-            <translation>始点 ({0}, {1}) では工具の刃先が領域 {3} の外または島の中に {2} 入ります。少なくとも工具半径だけ内側から始めてください</translation>
-        </message>
-        <message>
-            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
-            <translation>パス {0} では工具中心が ({3}, {4}) のとき刃先が領域 {2} の外 (または島の中) に {1} 入ります。各パスを壁から工具半径だけ離してください</translation>
-        </message>
-        <message>
-            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
-            <translation>工具径が {} です。正の値にしてください。パスは工具 1 本分の幅の帯です</translation>
-        </message>
-        <message>
-            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
-            <translation>描いたパス用の {} の (どの径の) センターカット付きフラットエンドミルも工具ライブラリにありません</translation>
-        </message>
-        <message>
-            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
-            <translation>パスを描いた幅 {} のセンターカット付きフラットエンドミルが工具ライブラリにありません。登録済みのフラットエンドミル: {}</translation>
-        </message>
-        <message>
-            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
-            <translation>{} が指定されていますが、パスは {} の工具用に描かれています。その径の工具を指定するか、径を変えて描き直してください</translation>
-        </message>
-        <message>
-            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
-            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
-        </message>
-        <message>
-            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
-            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
-        </message>
-        <message>
             <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
             <translation>ユニット {} の図形がユニット {} の図形と {} {}² 重なっています。同じジョブの図形は接してもよいが重なってはいけません</translation>
-        </message>
-        <message>
-            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
-            <translation>カスプ高さが {} です。0 より大きくしてください (通常 0.01 mm)</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
-            <translation>工具使用コード U = {} は定義されていません (2 ～ 5 は予約)。1、6、7、8、9 のいずれかにしてください</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
-            <translation>工具使用コード U = {} はありません。1、6、7、8、9 のいずれかにしてください</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
-            <translation>工具使用コード U = {} は M2D では使えません。1 (荒加工と仕上げ) か 9 (荒加工のみ) にしてください</translation>
-        </message>
-        <message>
-            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
-            <translation>仕上げコード F = {} はありません。1、2、3 のいずれかにしてください</translation>
-        </message>
-        <message>
-            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
-            <translation>下穴コード H = {} はありません。0 (下穴をあける) か 9 (なし) にしてください</translation>
         </message>
         <message>
             <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
@@ -2142,106 +2046,6 @@ Theirs: %6</source>
         <message>
             <source>the {} tool {} is too big for {} = {}; {}</source>
             <translation>{}の工具 {} は {} = {} に対して大きすぎます。{}</translation>
-        </message>
-        <message>
-            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
-            <translation>ポケットの{}の輪郭を指定してください (ジョブの図形要素の CONTOUR)</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements, which define no contour</source>
-            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭が一つも定義されていません)</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
-            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭: {})</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
-        </message>
-        <message>
-            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
-            <translation>{} が自分自身と交差しています。要素の順序と各接続点で選んだ側を確認してください</translation>
-        </message>
-        <message>
-            <source>the island {} reaches outside the {}'s outline {}</source>
-            <translation>島 {0} が{1}の外形 {2} の外にはみ出しています</translation>
-        </message>
-        <message>
-            <source>the islands {} and {} overlap; make them one contour</source>
-            <translation>島 {} と {} が重なっています。一つの輪郭にしてください</translation>
-        </message>
-        <message>
-            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
-            <translation>{} の ({}, {}) に鋭い内角があります。エンドミルでは削れず、工具の半径が残ります。輪郭でその角を丸めてください (ROUND)</translation>
-        </message>
-        <message>
-            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
-            <translation>U {} は輪郭ポケットでは使えません。1 (全工程)、6 (壁仕上げなし)、8 (壁のみ)、9 (荒加工のみ) のいずれかにしてください</translation>
-        </message>
-        <message>
-            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
-            <translation>外形が自分自身と交差しています。角 P1..P4 をポケットの周りに順に入力してください</translation>
-        </message>
-        <message>
-            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
-            <translation>外形が凸ではありません (内向きの角があるか、3 つの角が一直線上にあります)</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
-            <translation>コーナ半径 {} が最短辺 (長さ {}) の半分より大きくなっています</translation>
-        </message>
-        <message>
-            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
-            <translation>コーナ半径 {} が入りません。外形に内接する最大の円の半径は {} です</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half of L2 = {}</source>
-            <translation>コーナ半径 {} が L2 = {} の半分より大きくなっています</translation>
-        </message>
-        <message>
-            <source>the taper {} per side is outside 0° to 30°</source>
-            <translation>片側テーパ {} が 0° ～ 30° の範囲外です</translation>
-        </message>
-        <message>
-            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
-            <translation>片側テーパ {} では壁どうしが底より上の深さ {} で交わります</translation>
-        </message>
-        <message>
-            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
-            <translation>{} = {} が 0° 以上 60° 未満の範囲外です (垂直から測ります)</translation>
-        </message>
-        <message>
-            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
-            <translation>傾斜壁によって L1 方向の底の幅が {} になります。2 × r1 = {} より広くなければなりません ({} 不足)。角度か深さを小さくするか、L1 を長くしてください</translation>
-        </message>
-        <message>
-            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
-            <translation>側面削りがたどる輪郭を指定してください (ジョブの図形要素の CONTOUR、開いていても閉じていてもよい)</translation>
-        </message>
-        <message>
-            <source>{} {} is not a code of side milling; use {}</source>
-            <translation>{} {} は側面削りのコードではありません。{} にしてください</translation>
-        </message>
-        <message>
-            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
-            <translation>幅 W が {} です。荒加工は壁に α2 = {} を残すので、W はそれより大きくしてください</translation>
-        </message>
-        <message>
-            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
-            <translation>「{}」は側面削りの工程ではありません。エンドミルは "side" で指定してください (荒加工と仕上げ)</translation>
-        </message>
-        <message>
-            <source>{}: {}</source>
-            <translation>{}: {}</translation>
-        </message>
-        <message>
-            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
-            <translation>{0} は {1} が狭くなる ({2}, {3}) 付近に入りません。そこで輪郭に食い込みます。小さいエンドミルを指定するか溝を広げてください</translation>
         </message>
         <message>
             <source>the step-over</source>
@@ -2568,6 +2372,38 @@ Theirs: %6</source>
             <translation>machine: {} は2系統旋盤ですが、ジョブに系統間で振り分ける荒加工工程がありません</translation>
         </message>
         <message>
+            <source>it has no segments</source>
+            <translation>線分がありません</translation>
+        </message>
+        <message>
+            <source>a closed contour of one line</source>
+            <translation>直線 1 本だけの閉じた輪郭です</translation>
+        </message>
+        <message>
+            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
+            <translation>{} に達し、図形テキストで書ける ±1000000 mm を超えています</translation>
+        </message>
+        <message>
+            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
+            <translation>{} を中心とする円弧の半径 {} mm は丸めると 0 になります</translation>
+        </message>
+        <message>
+            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
+            <translation>円弧の半径が図形テキストで書ける 1000000 mm を超えています</translation>
+        </message>
+        <message>
+            <source>its elements cannot be evaluated: {}</source>
+            <translation>要素を計算できません: {}</translation>
+        </message>
+        <message>
+            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
+            <translation>{3} mm 単位で書くと要素 {0} と {1} が {2} で交わらなくなります</translation>
+        </message>
+        <message>
+            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
+            <translation>{0} と {1} は {2} 付近で x も y も {3} mm 以内の 2 点で交わります: XLARGE、XSMALL、YLARGE、YSMALL ではどちらか選べません</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} と {} は平行です: 交わりません</translation>
         </message>
@@ -2718,6 +2554,30 @@ Theirs: %6</source>
         <message>
             <source>centres</source>
             <translation>中心</translation>
+        </message>
+        <message>
+            <source>its text is refused: {}</source>
+            <translation>テキストが受け付けられません: {}</translation>
+        </message>
+        <message>
+            <source>its text gives back other segments</source>
+            <translation>テキストから別の線分が戻ります</translation>
+        </message>
+        <message>
+            <source>it comes back {:.7f} mm from the drawing</source>
+            <translation>図面から {} mm ずれて戻ります</translation>
+        </message>
+        <message>
+            <source>contour {} is left out: {}</source>
+            <translation>輪郭 {} は除外しました: {}</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
+            <translation>輪郭 {} ({}) は図面から {} mm ずれて戻ります</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
+            <translation>輪郭 {} ({}) は {} mm 単位で書きました: 0.000001 mm 単位では{}</translation>
         </message>
         <message>
             <source>a number</source>
@@ -3096,62 +2956,6 @@ Theirs: %6</source>
             <translation>点 [x, y]</translation>
         </message>
         <message>
-            <source>it has no segments</source>
-            <translation>線分がありません</translation>
-        </message>
-        <message>
-            <source>a closed contour of one line</source>
-            <translation>直線 1 本だけの閉じた輪郭です</translation>
-        </message>
-        <message>
-            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
-            <translation>{} に達し、図形テキストで書ける ±1000000 mm を超えています</translation>
-        </message>
-        <message>
-            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
-            <translation>{} を中心とする円弧の半径 {} mm は丸めると 0 になります</translation>
-        </message>
-        <message>
-            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
-            <translation>円弧の半径が図形テキストで書ける 1000000 mm を超えています</translation>
-        </message>
-        <message>
-            <source>its elements cannot be evaluated: {}</source>
-            <translation>要素を計算できません: {}</translation>
-        </message>
-        <message>
-            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
-            <translation>{3} mm 単位で書くと要素 {0} と {1} が {2} で交わらなくなります</translation>
-        </message>
-        <message>
-            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
-            <translation>{0} と {1} は {2} 付近で x も y も {3} mm 以内の 2 点で交わります: XLARGE、XSMALL、YLARGE、YSMALL ではどちらか選べません</translation>
-        </message>
-        <message>
-            <source>its text is refused: {}</source>
-            <translation>テキストが受け付けられません: {}</translation>
-        </message>
-        <message>
-            <source>its text gives back other segments</source>
-            <translation>テキストから別の線分が戻ります</translation>
-        </message>
-        <message>
-            <source>it comes back {:.7f} mm from the drawing</source>
-            <translation>図面から {} mm ずれて戻ります</translation>
-        </message>
-        <message>
-            <source>contour {} is left out: {}</source>
-            <translation>輪郭 {} は除外しました: {}</translation>
-        </message>
-        <message>
-            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
-            <translation>輪郭 {} ({}) は図面から {} mm ずれて戻ります</translation>
-        </message>
-        <message>
-            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
-            <translation>輪郭 {} ({}) は {} mm 単位で書きました: 0.000001 mm 単位では{}</translation>
-        </message>
-        <message>
             <source>the jaws' height</source>
             <translation>バイスの口金の高さ</translation>
         </message>
@@ -3418,6 +3222,58 @@ Theirs: %6</source>
         <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] の配列</translation>
+        </message>
+        <message>
+            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
+            <translation>「{}」は点の並びではありません。各点を X, Y で入力し、点どうしを ';' で区切るか (10, 20; 60, 20)、図形タブでパスを描いてください</translation>
+        </message>
+        <message>
+            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>点が描かれていません。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
+        </message>
+        <message>
+            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>描かれた点が 1 つだけです。パスは始点から終点まで走ります。少なくとも 2 点を描いてください</translation>
+        </message>
+        <message>
+            <source>point {} ({}, {}) lies outside the stock</source>
+            <translation>点 {} ({}, {}) が素材の外にあります</translation>
+        </message>
+        <message>
+            <source>pass {} ends where it starts; remove the repeated point</source>
+            <translation>パス {} が始点で終わっています。重複した点を削除してください</translation>
+        </message>
+        <message>
+            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
+            <translation>始点 ({0}, {1}) では工具の刃先が領域 {3} の外または島の中に {2} 入ります。少なくとも工具半径だけ内側から始めてください</translation>
+        </message>
+        <message>
+            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
+            <translation>パス {0} では工具中心が ({3}, {4}) のとき刃先が領域 {2} の外 (または島の中) に {1} 入ります。各パスを壁から工具半径だけ離してください</translation>
+        </message>
+        <message>
+            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
+            <translation>工具径が {} です。正の値にしてください。パスは工具 1 本分の幅の帯です</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
+            <translation>描いたパス用の {} の (どの径の) センターカット付きフラットエンドミルも工具ライブラリにありません</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
+            <translation>パスを描いた幅 {} のセンターカット付きフラットエンドミルが工具ライブラリにありません。登録済みのフラットエンドミル: {}</translation>
+        </message>
+        <message>
+            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
+            <translation>{} が指定されていますが、パスは {} の工具用に描かれています。その径の工具を指定するか、径を変えて描き直してください</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
+            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
+            <translation>パスは領域のうち {} を {} か所で削り残します。最大のものは {} で、({}, {}) 付近です</translation>
         </message>
         <message>
             <source>the passes were drawn {} mm wide</source>
@@ -3712,6 +3568,30 @@ Theirs: %6</source>
             <translation>荒加工の各層</translation>
         </message>
         <message>
+            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
+            <translation>カスプ高さが {} です。{} 以上にしてください (これより小さいと傾斜面のパスが増えるだけで、機械が保てる以上に細かい面にはなりません)</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>コーナ半径 {} が L2 = {} の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} が 0° 以上 60° 未満の範囲外です (垂直から測ります)</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>傾斜壁によって L1 方向の底の幅が {} になります。2 × r1 = {} より広くなければなりません ({} 不足)。角度か深さを小さくするか、L1 を長くしてください</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
+            <translation>カスプ高さが {} です。0 より大きくしてください (通常 0.01 mm)</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
+            <translation>工具使用コード U = {} は M2D では使えません。1 (荒加工と仕上げ) か 9 (荒加工のみ) にしてください</translation>
+        </message>
+        <message>
             <source>the coordinate X of {}</source>
             <translation>{} の X 座標</translation>
         </message>
@@ -3732,6 +3612,38 @@ Theirs: %6</source>
             <translation>4 つの点 [x, y] の配列</translation>
         </message>
         <message>
+            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
+            <translation>壁の最終仕上げ代 α3 = {} は荒加工の壁仕上げ代 α2 = {} より小さくしてください</translation>
+        </message>
+        <message>
+            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
+            <translation>P{} と P{} が同じ点 ({}, {}) です。輪郭には異なる 4 つの角が必要です</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外形が自分自身と交差しています。角 P1..P4 をポケットの周りに順に入力してください</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外形が凸ではありません (内向きの角があるか、3 つの角が一直線上にあります)</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>コーナ半径 {} が最短辺 (長さ {}) の半分より大きくなっています</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>コーナ半径 {} が入りません。外形に内接する最大の円の半径は {} です</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>片側テーパ {} が 0° ～ 30° の範囲外です</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>片側テーパ {} では壁どうしが底より上の深さ {} で交わります</translation>
+        </message>
+        <message>
             <source>an array of contour names</source>
             <translation>輪郭名の配列</translation>
         </message>
@@ -3750,6 +3662,30 @@ Theirs: %6</source>
         <message>
             <source>island</source>
             <translation>島</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
+            <translation>工具使用コード U = {} は定義されていません (2 ～ 5 は予約)。1、6、7、8、9 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
+            <translation>工具使用コード U = {} はありません。1、6、7、8、9 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
+            <translation>仕上げコード F = {} はありません。1、2、3 のいずれかにしてください</translation>
+        </message>
+        <message>
+            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
+            <translation>下穴コード H = {} はありません。0 (下穴をあける) か 9 (なし) にしてください</translation>
+        </message>
+        <message>
+            <source>the corner radius is {}; it cannot be negative</source>
+            <translation>コーナ半径が {} です。負の値にはできません</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} は輪郭ポケットでは使えません。1 (全工程)、6 (壁仕上げなし)、8 (壁のみ)、9 (荒加工のみ) のいずれかにしてください</translation>
         </message>
         <message>
             <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
@@ -4008,6 +3944,46 @@ Theirs: %6</source>
             <translation>設定するワーク座標: X {} Y {}</translation>
         </message>
         <message>
+            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
+            <translation>{}が素材の外にはみ出しています。移動するか素材を大きくしてください</translation>
+        </message>
+        <message>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>ポケットの{}の輪郭を指定してください (ジョブの図形要素の CONTOUR)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭が一つも定義されていません)</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} はジョブの図形要素の輪郭ではありません (輪郭: {})</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} は開いた輪郭です。{1}の{2}は閉じていなければなりません (始点と終点のない輪郭)</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} が自分自身と交差しています。要素の順序と各接続点で選んだ側を確認してください</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>島 {0} が{1}の外形 {2} の外にはみ出しています</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>島 {} と {} が重なっています。一つの輪郭にしてください</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} の ({}, {}) に鋭い内角があります。エンドミルでは削れず、工具の半径が残ります。輪郭でその角を丸めてください (ROUND)</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>幅</translation>
         </message>
@@ -4054,6 +4030,30 @@ Theirs: %6</source>
         <message>
             <source>the arc of {} at ({}, {}) curves round the tool's side with radius {}: the smallest end mill, {}, is {} too large for it (an arc of radius {} or more would let it fit)</source>
             <translation>{0} の ({1}, {2}) の円弧は工具側に半径 {3} で曲がっています。最小のエンドミル {4} はそれより {5} 大きすぎます(半径 {6} 以上の円弧なら入ります)</translation>
+        </message>
+        <message>
+            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
+            <translation>側面削りがたどる輪郭を指定してください (ジョブの図形要素の CONTOUR、開いていても閉じていてもよい)</translation>
+        </message>
+        <message>
+            <source>{} {} is not a code of side milling; use {}</source>
+            <translation>{} {} は側面削りのコードではありません。{} にしてください</translation>
+        </message>
+        <message>
+            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
+            <translation>幅 W が {} です。荒加工は壁に α2 = {} を残すので、W はそれより大きくしてください</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
+            <translation>「{}」は側面削りの工程ではありません。エンドミルは "side" で指定してください (荒加工と仕上げ)</translation>
+        </message>
+        <message>
+            <source>{}: {}</source>
+            <translation>{}: {}</translation>
+        </message>
+        <message>
+            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
+            <translation>{0} は {1} が狭くなる ({2}, {3}) 付近に入りません。そこで輪郭に食い込みます。小さいエンドミルを指定するか溝を広げてください</translation>
         </message>
         <message>
             <source>a TURN unit</source>

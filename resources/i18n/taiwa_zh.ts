@@ -1964,10 +1964,6 @@ Theirs: %6</source>
             <translation>{} = {}{} 必须大于零</translation>
         </message>
         <message>
-            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
-            <translation>壁最终精加工余量 α3 = {} 必须小于粗加工壁余量 α2 = {}</translation>
-        </message>
-        <message>
             <source>the pilot-hole remainder α1 = {} is not smaller than the depth {} of unit {}: the pilot hole would have no depth; use H = 9 or a smaller α1</source>
             <translation>预钻孔余量 α1 = {0} 不小于单元 {2} 的深度 {1}：预钻孔将没有深度；请使用 H = 9 或减小 α1</translation>
         </message>
@@ -1982,10 +1978,6 @@ Theirs: %6</source>
         <message>
             <source>{} is {:g}{}; it must lie between {:g} and {:g}{} ({})</source>
             <translation>{} 为 {}{}；必须在 {} 到 {}{} 之间（{}）</translation>
-        </message>
-        <message>
-            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
-            <translation>残留高度为 {}；至少应为 {}（更小只会使斜面刀路成倍增加，而机床无法保持更精细的表面）</translation>
         </message>
         <message>
             <source>the stock {} is {}; a stock of more than {} a side is not a part for this station</source>
@@ -2004,96 +1996,8 @@ Theirs: %6</source>
             <translation>{} 为 {}；必须大于零</translation>
         </message>
         <message>
-            <source>the corner radius is {}; it cannot be negative</source>
-            <translation>圆角半径为 {}；不能为负</translation>
-        </message>
-        <message>
-            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
-            <translation>{}超出了毛坯；请移动它或加大毛坯</translation>
-        </message>
-        <message>
-            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
-            <translation>P{} 和 P{} 是同一点（{}, {}）；轮廓需要四个不同的角点</translation>
-        </message>
-        <message>
-            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
-            <translation>“{}”不是点列表；请将每个点输入为 X, Y，并用 ';' 分隔各点（10, 20; 60, 20），或在图形选项卡中绘制路径</translation>
-        </message>
-        <message>
-            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
-            <translation>尚未绘制任何点；路径从起点到终点：请至少绘制两个点</translation>
-        </message>
-        <message>
-            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
-            <translation>只绘制了一个点；路径从起点到终点：请至少绘制两个点</translation>
-        </message>
-        <message>
-            <source>point {} ({}, {}) lies outside the stock</source>
-            <translation>点 {}（{}, {}）位于毛坯之外</translation>
-        </message>
-        <message>
-            <source>pass {} ends where it starts; remove the repeated point</source>
-            <translation>路径 {} 的终点与起点相同；请删除重复的点</translation>
-        </message>
-        <message>
-            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
-            <translation>起点（{0}, {1}）使刀具边缘超出区域 {3} 或进入岛屿 {2}；请至少在内侧一个刀具半径处开始</translation>
-        </message>
-        <message>
-            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
-            <translation>路径 {0} 在刀具中心位于（{3}, {4}）时使刀具边缘超出区域 {2}（或进入岛屿）{1}；请使每条路径与壁保持一个刀具半径</translation>
-        </message>
-        <message>
-            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
-            <translation>刀具直径为 {}；必须为正：路径是一个刀具宽的条带</translation>
-        </message>
-        <message>
-            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
-            <translation>刀具库中没有用于所绘路径的 {}（或任何直径）的中心切削平底立铣刀</translation>
-        </message>
-        <message>
-            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
-            <translation>刀具库中没有路径绘制宽度 {} 的中心切削平底立铣刀；已有的平底立铣刀：{}</translation>
-        </message>
-        <message>
-            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
-            <translation>已指定 {}，但路径是为 {} 的刀具绘制的；请指定该直径的刀具，或更改直径后重新绘制</translation>
-        </message>
-        <message>
-            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
-            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
-        </message>
-        <message>
-            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
-            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
-        </message>
-        <message>
             <source>the figure of unit {} overlaps the figure of unit {} by {} {}²; figures of one job may touch but not overlap</source>
             <translation>单元 {} 的图形与单元 {} 的图形重叠 {} {}²；同一作业的图形可以相接但不能重叠</translation>
-        </message>
-        <message>
-            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
-            <translation>残留高度为 {}；必须大于零（通常 0.01 mm）</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
-            <translation>刀具使用代码 U = {} 未定义（代码 2 到 5 为保留）；请使用 1、6、7、8 或 9</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
-            <translation>刀具使用代码 U = {} 不存在；请使用 1、6、7、8 或 9</translation>
-        </message>
-        <message>
-            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
-            <translation>刀具使用代码 U = {} 不可用于 M2D；请使用 1（粗加工和精加工）或 9（仅粗加工）</translation>
-        </message>
-        <message>
-            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
-            <translation>精加工代码 F = {} 不存在；请使用 1、2 或 3</translation>
-        </message>
-        <message>
-            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
-            <translation>预钻孔代码 H = {} 不存在；请使用 0（钻预钻孔）或 9（无）</translation>
         </message>
         <message>
             <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
@@ -2142,106 +2046,6 @@ Theirs: %6</source>
         <message>
             <source>the {} tool {} is too big for {} = {}; {}</source>
             <translation>{}刀具 {} 对于 {} = {} 过大；{}</translation>
-        </message>
-        <message>
-            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
-            <translation>请指定型腔{}的轮廓（作业图形元素中的 CONTOUR）</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements, which define no contour</source>
-            <translation>{} 不是作业图形元素中的轮廓（图形元素未定义任何轮廓）</translation>
-        </message>
-        <message>
-            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
-            <translation>{} 不是作业图形元素中的轮廓（已有轮廓：{}）</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
-        </message>
-        <message>
-            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
-            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
-        </message>
-        <message>
-            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
-            <translation>{} 自相交；请检查其元素顺序以及每个连接处选择的一侧</translation>
-        </message>
-        <message>
-            <source>the island {} reaches outside the {}'s outline {}</source>
-            <translation>岛屿 {0} 超出了{1}的外轮廓 {2}</translation>
-        </message>
-        <message>
-            <source>the islands {} and {} overlap; make them one contour</source>
-            <translation>岛屿 {} 和 {} 重叠；请将它们合并为一个轮廓</translation>
-        </message>
-        <message>
-            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
-            <translation>{} 在（{}, {}）处有尖锐内角：立铣刀无法切出，会在那里留下自身半径；请在轮廓中将该角倒圆（ROUND）</translation>
-        </message>
-        <message>
-            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
-            <translation>U {} 不适用于轮廓型腔；请使用 1（全部工序）、6（无壁精加工）、8（仅壁）或 9（仅粗加工）</translation>
-        </message>
-        <message>
-            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
-            <translation>外轮廓自相交；请沿型腔依次输入角点 P1..P4</translation>
-        </message>
-        <message>
-            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
-            <translation>外轮廓不是凸的（有角点朝内，或三个角点共线）</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
-            <translation>圆角半径 {} 大于最短边（长 {}）的一半</translation>
-        </message>
-        <message>
-            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
-            <translation>圆角半径 {} 放不下：外轮廓内最大圆的半径为 {}</translation>
-        </message>
-        <message>
-            <source>the corner radius {} is larger than half of L2 = {}</source>
-            <translation>圆角半径 {} 大于 L2 = {} 的一半</translation>
-        </message>
-        <message>
-            <source>the taper {} per side is outside 0° to 30°</source>
-            <translation>单边锥度 {} 超出 0° 到 30° 的范围</translation>
-        </message>
-        <message>
-            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
-            <translation>单边锥度为 {} 时，两壁在底面以上的深度 {} 处相交</translation>
-        </message>
-        <message>
-            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
-            <translation>{} = {} 超出 0° 到小于 60° 的范围（自竖直方向测量）</translation>
-        </message>
-        <message>
-            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
-            <translation>倾斜壁使沿 L1 方向的底面宽度为 {}；必须宽于 2 × r1 = {}（差 {}）：请减小角度或深度，或加长 L1</translation>
-        </message>
-        <message>
-            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
-            <translation>请指定侧铣所沿的轮廓（作业图形元素中的 CONTOUR，开放或闭合均可）</translation>
-        </message>
-        <message>
-            <source>{} {} is not a code of side milling; use {}</source>
-            <translation>{} {} 不是侧铣的代码；请使用 {}</translation>
-        </message>
-        <message>
-            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
-            <translation>宽度 W 为 {}；粗加工在壁上留 α2 = {}，因此 W 必须大于该值</translation>
-        </message>
-        <message>
-            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
-            <translation>“{}”不是侧铣的工序；请在 "side" 下指定其立铣刀（粗加工和精加工）</translation>
-        </message>
-        <message>
-            <source>{}: {}</source>
-            <translation>{}：{}</translation>
-        </message>
-        <message>
-            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
-            <translation>{0} 在 {1} 变窄的（{2}, {3}）附近放不下：刀具会切入轮廓；请指定更小的立铣刀或加宽通道</translation>
         </message>
         <message>
             <source>the step-over</source>
@@ -2568,6 +2372,38 @@ Theirs: %6</source>
             <translation>machine: {} 是双通道车床，但作业中没有可在两个通道之间平衡的粗加工工序</translation>
         </message>
         <message>
+            <source>it has no segments</source>
+            <translation>没有线段</translation>
+        </message>
+        <message>
+            <source>a closed contour of one line</source>
+            <translation>只有一条直线的闭合轮廓</translation>
+        </message>
+        <message>
+            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
+            <translation>到达 {}，超出图形文本可写的 ±1000000 mm</translation>
+        </message>
+        <message>
+            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
+            <translation>以 {} 为圆心的圆弧半径为 {} mm，舍入后为零</translation>
+        </message>
+        <message>
+            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
+            <translation>圆弧半径超出图形文本可写的 1000000 mm</translation>
+        </message>
+        <message>
+            <source>its elements cannot be evaluated: {}</source>
+            <translation>其元素无法计算：{}</translation>
+        </message>
+        <message>
+            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
+            <translation>按 {3} mm 写出后，其元素 {0} 与 {1} 不再交于 {2}</translation>
+        </message>
+        <message>
+            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
+            <translation>{0} 与 {1} 在 {2} 处两次相交，x 和 y 均相差在 {3} mm 以内：XLARGE、XSMALL、YLARGE 和 YSMALL 无法区分这两点</translation>
+        </message>
+        <message>
             <source>{} and {} are parallel: they do not meet</source>
             <translation>{} 与 {} 平行：不相交</translation>
         </message>
@@ -2718,6 +2554,30 @@ Theirs: %6</source>
         <message>
             <source>centres</source>
             <translation>圆心</translation>
+        </message>
+        <message>
+            <source>its text is refused: {}</source>
+            <translation>其文本被拒绝：{}</translation>
+        </message>
+        <message>
+            <source>its text gives back other segments</source>
+            <translation>其文本还原出的线段不同</translation>
+        </message>
+        <message>
+            <source>it comes back {:.7f} mm from the drawing</source>
+            <translation>还原后与图纸偏差 {} mm</translation>
+        </message>
+        <message>
+            <source>contour {} is left out: {}</source>
+            <translation>轮廓 {} 已略去：{}</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
+            <translation>轮廓 {}（{}）还原后与图纸偏差 {} mm</translation>
+        </message>
+        <message>
+            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
+            <translation>轮廓 {}（{}）按 {} mm 写出：按 0.000001 mm 时{}</translation>
         </message>
         <message>
             <source>a number</source>
@@ -3096,62 +2956,6 @@ Theirs: %6</source>
             <translation>点 [x, y]</translation>
         </message>
         <message>
-            <source>it has no segments</source>
-            <translation>没有线段</translation>
-        </message>
-        <message>
-            <source>a closed contour of one line</source>
-            <translation>只有一条直线的闭合轮廓</translation>
-        </message>
-        <message>
-            <source>it reaches {}, beyond the ±1000000 mm the figure text can write</source>
-            <translation>到达 {}，超出图形文本可写的 ±1000000 mm</translation>
-        </message>
-        <message>
-            <source>the arc around {} has a radius of {:g} mm, which rounds to nothing</source>
-            <translation>以 {} 为圆心的圆弧半径为 {} mm，舍入后为零</translation>
-        </message>
-        <message>
-            <source>an arc's radius is beyond the 1000000 mm the figure text can write</source>
-            <translation>圆弧半径超出图形文本可写的 1000000 mm</translation>
-        </message>
-        <message>
-            <source>its elements cannot be evaluated: {}</source>
-            <translation>其元素无法计算：{}</translation>
-        </message>
-        <message>
-            <source>its elements {} and {} no longer meet at {} once written to {:g} mm</source>
-            <translation>按 {3} mm 写出后，其元素 {0} 与 {1} 不再交于 {2}</translation>
-        </message>
-        <message>
-            <source>{} and {} cross twice at {} within {:g} mm in x and in y: XLARGE, XSMALL, YLARGE and YSMALL cannot choose between the two</source>
-            <translation>{0} 与 {1} 在 {2} 处两次相交，x 和 y 均相差在 {3} mm 以内：XLARGE、XSMALL、YLARGE 和 YSMALL 无法区分这两点</translation>
-        </message>
-        <message>
-            <source>its text is refused: {}</source>
-            <translation>其文本被拒绝：{}</translation>
-        </message>
-        <message>
-            <source>its text gives back other segments</source>
-            <translation>其文本还原出的线段不同</translation>
-        </message>
-        <message>
-            <source>it comes back {:.7f} mm from the drawing</source>
-            <translation>还原后与图纸偏差 {} mm</translation>
-        </message>
-        <message>
-            <source>contour {} is left out: {}</source>
-            <translation>轮廓 {} 已略去：{}</translation>
-        </message>
-        <message>
-            <source>contour {} ({}) comes back {:.7f} mm from the drawing</source>
-            <translation>轮廓 {}（{}）还原后与图纸偏差 {} mm</translation>
-        </message>
-        <message>
-            <source>contour {} ({}) is written to {} mm: to 0.000001 mm {}</source>
-            <translation>轮廓 {}（{}）按 {} mm 写出：按 0.000001 mm 时{}</translation>
-        </message>
-        <message>
             <source>the jaws' height</source>
             <translation>钳口高度</translation>
         </message>
@@ -3418,6 +3222,58 @@ Theirs: %6</source>
         <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] 的数组</translation>
+        </message>
+        <message>
+            <source>'{}' is not a list of points; type each point as X, Y and separate the points with ';' (10, 20; 60, 20), or draw the passes in the Figure tab</source>
+            <translation>“{}”不是点列表；请将每个点输入为 X, Y，并用 ';' 分隔各点（10, 20; 60, 20），或在图形选项卡中绘制路径</translation>
+        </message>
+        <message>
+            <source>no point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>尚未绘制任何点；路径从起点到终点：请至少绘制两个点</translation>
+        </message>
+        <message>
+            <source>only one point is drawn; a pass runs from a start point to an end point: draw at least two points</source>
+            <translation>只绘制了一个点；路径从起点到终点：请至少绘制两个点</translation>
+        </message>
+        <message>
+            <source>point {} ({}, {}) lies outside the stock</source>
+            <translation>点 {}（{}, {}）位于毛坯之外</translation>
+        </message>
+        <message>
+            <source>pass {} ends where it starts; remove the repeated point</source>
+            <translation>路径 {} 的终点与起点相同；请删除重复的点</translation>
+        </message>
+        <message>
+            <source>the start point ({}, {}) puts the tool's edge {} outside the area {} or into an island; start at least a tool radius inside</source>
+            <translation>起点（{0}, {1}）使刀具边缘超出区域 {3} 或进入岛屿 {2}；请至少在内侧一个刀具半径处开始</translation>
+        </message>
+        <message>
+            <source>pass {} takes the tool's edge {} outside the area {} (or into an island) with the tool's centre at ({}, {}); keep each pass a tool radius from the walls</source>
+            <translation>路径 {0} 在刀具中心位于（{3}, {4}）时使刀具边缘超出区域 {2}（或进入岛屿）{1}；请使每条路径与壁保持一个刀具半径</translation>
+        </message>
+        <message>
+            <source>the tool diameter is {}; it must be positive: the passes are strips one tool wide</source>
+            <translation>刀具直径为 {}；必须为正：路径是一个刀具宽的条带</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {} (nor of any diameter) for the drawn passes</source>
+            <translation>刀具库中没有用于所绘路径的 {}（或任何直径）的中心切削平底立铣刀</translation>
+        </message>
+        <message>
+            <source>the library has no centre-cutting flat end mill of {}, the width the passes were drawn for; its flat end mills: {}</source>
+            <translation>刀具库中没有路径绘制宽度 {} 的中心切削平底立铣刀；已有的平底立铣刀：{}</translation>
+        </message>
+        <message>
+            <source>{} is pinned, but the passes were drawn for a tool of {}; pin a tool of that diameter or change the diameter and redraw</source>
+            <translation>已指定 {}，但路径是为 {} 的刀具绘制的；请指定该直径的刀具，或更改直径后重新绘制</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} place; the largest, {}, near ({}, {})</source>
+            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
+        </message>
+        <message>
+            <source>the passes leave {} of the area unswept in {} places; the largest, {}, near ({}, {})</source>
+            <translation>路径在 {1} 处留下 {0} 的区域未切削；最大的一处为 {2}，位于（{3}, {4}）附近</translation>
         </message>
         <message>
             <source>the passes were drawn {} mm wide</source>
@@ -3712,6 +3568,30 @@ Theirs: %6</source>
             <translation>粗加工各层</translation>
         </message>
         <message>
+            <source>the scallop height is {}; it must be at least {} (a smaller one multiplies the passes of the inclined faces without a finer surface any machine holds)</source>
+            <translation>残留高度为 {}；至少应为 {}（更小只会使斜面刀路成倍增加，而机床无法保持更精细的表面）</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half of L2 = {}</source>
+            <translation>圆角半径 {} 大于 L2 = {} 的一半</translation>
+        </message>
+        <message>
+            <source>{} = {} is outside 0° to under 60° (measured from the vertical)</source>
+            <translation>{} = {} 超出 0° 到小于 60° 的范围（自竖直方向测量）</translation>
+        </message>
+        <message>
+            <source>the inclined walls leave a floor {} wide along L1; it must be wider than 2 × r1 = {} (short by {}): reduce the angles or the depth, or lengthen L1</source>
+            <translation>倾斜壁使沿 L1 方向的底面宽度为 {}；必须宽于 2 × r1 = {}（差 {}）：请减小角度或深度，或加长 L1</translation>
+        </message>
+        <message>
+            <source>the scallop height is {}; it must be greater than zero (usual 0.01 mm)</source>
+            <translation>残留高度为 {}；必须大于零（通常 0.01 mm）</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not allowed for M2D; use 1 (rough and finish) or 9 (rough only)</source>
+            <translation>刀具使用代码 U = {} 不可用于 M2D；请使用 1（粗加工和精加工）或 9（仅粗加工）</translation>
+        </message>
+        <message>
             <source>the coordinate X of {}</source>
             <translation>{} 的 X 坐标</translation>
         </message>
@@ -3732,6 +3612,38 @@ Theirs: %6</source>
             <translation>4 个点 [x, y] 的数组</translation>
         </message>
         <message>
+            <source>the final wall allowance α3 = {} must be smaller than the roughing wall allowance α2 = {}</source>
+            <translation>壁最终精加工余量 α3 = {} 必须小于粗加工壁余量 α2 = {}</translation>
+        </message>
+        <message>
+            <source>P{} and P{} are the same point ({}, {}); the outline needs four distinct corners</source>
+            <translation>P{} 和 P{} 是同一点（{}, {}）；轮廓需要四个不同的角点</translation>
+        </message>
+        <message>
+            <source>the outline crosses itself; enter the corners P1..P4 in order around the pocket</source>
+            <translation>外轮廓自相交；请沿型腔依次输入角点 P1..P4</translation>
+        </message>
+        <message>
+            <source>the outline is not convex (a corner points inward or three corners are in line)</source>
+            <translation>外轮廓不是凸的（有角点朝内，或三个角点共线）</translation>
+        </message>
+        <message>
+            <source>the corner radius {} is larger than half the shortest side ({} long)</source>
+            <translation>圆角半径 {} 大于最短边（长 {}）的一半</translation>
+        </message>
+        <message>
+            <source>the corner radius {} does not fit: the largest circle inside the outline has radius {}</source>
+            <translation>圆角半径 {} 放不下：外轮廓内最大圆的半径为 {}</translation>
+        </message>
+        <message>
+            <source>the taper {} per side is outside 0° to 30°</source>
+            <translation>单边锥度 {} 超出 0° 到 30° 的范围</translation>
+        </message>
+        <message>
+            <source>with a taper of {} per side the walls meet at depth {}, above the floor</source>
+            <translation>单边锥度为 {} 时，两壁在底面以上的深度 {} 处相交</translation>
+        </message>
+        <message>
             <source>an array of contour names</source>
             <translation>轮廓名数组</translation>
         </message>
@@ -3750,6 +3662,30 @@ Theirs: %6</source>
         <message>
             <source>island</source>
             <translation>岛屿</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9</source>
+            <translation>刀具使用代码 U = {} 未定义（代码 2 到 5 为保留）；请使用 1、6、7、8 或 9</translation>
+        </message>
+        <message>
+            <source>tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9</source>
+            <translation>刀具使用代码 U = {} 不存在；请使用 1、6、7、8 或 9</translation>
+        </message>
+        <message>
+            <source>finishing code F = {} does not exist; use 1, 2 or 3</source>
+            <translation>精加工代码 F = {} 不存在；请使用 1、2 或 3</translation>
+        </message>
+        <message>
+            <source>pilot-hole code H = {} does not exist; use 0 (drill a pilot hole) or 9 (none)</source>
+            <translation>预钻孔代码 H = {} 不存在；请使用 0（钻预钻孔）或 9（无）</translation>
+        </message>
+        <message>
+            <source>the corner radius is {}; it cannot be negative</source>
+            <translation>圆角半径为 {}；不能为负</translation>
+        </message>
+        <message>
+            <source>U {} is not offered for contour pockets; use 1 (all steps), 6 (no wall finishing), 8 (walls only) or 9 (roughing only)</source>
+            <translation>U {} 不适用于轮廓型腔；请使用 1（全部工序）、6（无壁精加工）、8（仅壁）或 9（仅粗加工）</translation>
         </message>
         <message>
             <source>largest {} ({}) whose radius {} fits the corner radius {} of the {}</source>
@@ -4008,6 +3944,46 @@ Theirs: %6</source>
             <translation>要设定的工件坐标偏置：X {} Y {}</translation>
         </message>
         <message>
+            <source>the {} reaches outside the stock; move it or enlarge the stock</source>
+            <translation>{}超出了毛坯；请移动它或加大毛坯</translation>
+        </message>
+        <message>
+            <source>name the contour of the pocket's {} (a CONTOUR of the job's figure elements)</source>
+            <translation>请指定型腔{}的轮廓（作业图形元素中的 CONTOUR）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements, which define no contour</source>
+            <translation>{} 不是作业图形元素中的轮廓（图形元素未定义任何轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is not a contour of the job's figure elements (its contours: {})</source>
+            <translation>{} 不是作业图形元素中的轮廓（已有轮廓：{}）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; an {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} is an open contour; a {}'s {} must be closed (a contour without a start and end point)</source>
+            <translation>{0} 是开放轮廓；{1}的{2}必须闭合（没有起点和终点的轮廓）</translation>
+        </message>
+        <message>
+            <source>{} crosses itself; check the order of its elements and the side chosen at each junction</source>
+            <translation>{} 自相交；请检查其元素顺序以及每个连接处选择的一侧</translation>
+        </message>
+        <message>
+            <source>the island {} reaches outside the {}'s outline {}</source>
+            <translation>岛屿 {0} 超出了{1}的外轮廓 {2}</translation>
+        </message>
+        <message>
+            <source>the islands {} and {} overlap; make them one contour</source>
+            <translation>岛屿 {} 和 {} 重叠；请将它们合并为一个轮廓</translation>
+        </message>
+        <message>
+            <source>{} has a sharp inside corner at ({}, {}): an end mill cannot cut it and leaves its own radius there; round the corner (ROUND) in the contour</source>
+            <translation>{} 在（{}, {}）处有尖锐内角：立铣刀无法切出，会在那里留下自身半径；请在轮廓中将该角倒圆（ROUND）</translation>
+        </message>
+        <message>
             <source>the width</source>
             <translation>宽度</translation>
         </message>
@@ -4054,6 +4030,30 @@ Theirs: %6</source>
         <message>
             <source>the arc of {} at ({}, {}) curves round the tool's side with radius {}: the smallest end mill, {}, is {} too large for it (an arc of radius {} or more would let it fit)</source>
             <translation>{0} 在 ({1}, {2}) 处的圆弧以半径 {3} 弯向刀具一侧：最小的立铣刀 {4} 比它大 {5}（圆弧半径为 {6} 或以上即可容纳）</translation>
+        </message>
+        <message>
+            <source>name the contour the side milling follows (a CONTOUR of the job's figure elements, open or closed)</source>
+            <translation>请指定侧铣所沿的轮廓（作业图形元素中的 CONTOUR，开放或闭合均可）</translation>
+        </message>
+        <message>
+            <source>{} {} is not a code of side milling; use {}</source>
+            <translation>{} {} 不是侧铣的代码；请使用 {}</translation>
+        </message>
+        <message>
+            <source>the width W is {}; roughing leaves α2 = {} on the wall, so W must be larger than that</source>
+            <translation>宽度 W 为 {}；粗加工在壁上留 α2 = {}，因此 W 必须大于该值</translation>
+        </message>
+        <message>
+            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
+            <translation>“{}”不是侧铣的工序；请在 "side" 下指定其立铣刀（粗加工和精加工）</translation>
+        </message>
+        <message>
+            <source>{}: {}</source>
+            <translation>{}：{}</translation>
+        </message>
+        <message>
+            <source>{} does not fit where {} narrows near ({}, {}): the tool would cut into the contour there; pin a smaller end mill or widen the channel</source>
+            <translation>{0} 在 {1} 变窄的（{2}, {3}）附近放不下：刀具会切入轮廓；请指定更小的立铣刀或加宽通道</translation>
         </message>
         <message>
             <source>a TURN unit</source>
