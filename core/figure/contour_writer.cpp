@@ -5,6 +5,7 @@
 // the check that the written elements still meet where the contour turns.
 #include "figure/contour_writer.h"
 
+#include "figure/crossings.h"
 #include "figure/figure_eval.h"
 #include "model/result.h"
 #include "model/translate_noop.h"
@@ -34,32 +35,14 @@ Point2 rounded(Point2 p, double scale) { return {rounded(p.x, scale), rounded(p.
 std::string at(Point2 p) { return fmt::format("({:.3f}, {:.3f})", p.x, p.y); }
 
 // Where two evaluated elements cross, as the contour evaluation finds it
-// (core/figure/figure_contour.cpp): one point where they touch within
-// figure::kTolerance, two where they cross, none where they miss.
+// (figure_contour.cpp; both through crossings.h): one point where they
+// touch within figure::kTolerance, two where they cross, none where they
+// miss.
 std::vector<Point2> crossings(const figure::Element& a, const figure::Element& b)
 {
-    const double tol = figure::kTolerance;
     const bool ac = a.kind == figure::Kind::Circle, bc = b.kind == figure::Kind::Circle;
-    const auto left = [](Point2 v) { return Point2{-v.y, v.x}; };
-    if (ac && bc) {
-        const Point2 d = b.circle.centre - a.circle.centre;
-        const double dist = length(d), ra = a.circle.radius, rb = b.circle.radius;
-        if (dist <= tol || dist > ra + rb + tol || dist < std::abs(ra - rb) - tol) return {};
-        const Point2 e = (1.0 / dist) * d;
-        const double along = std::clamp((dist * dist + ra * ra - rb * rb) / (2 * dist), -ra, ra);
-        const Point2 base = a.circle.centre + along * e;
-        if (std::abs(dist - (ra + rb)) <= tol || std::abs(dist - std::abs(ra - rb)) <= tol) return {base};
-        const double h = std::sqrt(std::max(0.0, ra * ra - along * along));
-        return {base + h * left(e), base - h * left(e)};
-    }
-    const figure::Element& l = ac ? b : a;
-    const figure::Element& c = ac ? a : b;
-    const Point2 foot = l.line.point + dot(c.circle.centre - l.line.point, l.line.dir) * l.line.dir;
-    const double h = length(c.circle.centre - foot);
-    if (h > c.circle.radius + tol) return {};
-    if (std::abs(h - c.circle.radius) <= tol) return {foot};
-    const double half = std::sqrt(c.circle.radius * c.circle.radius - h * h);
-    return {foot + half * l.line.dir, foot - half * l.line.dir};
+    if (ac && bc) return circleCrossings(a.circle, b.circle);
+    return ac ? lineCircleCrossings(b.line, a.circle) : lineCircleCrossings(a.line, b.circle);
 }
 
 // True when the junction of a and b (b starting where a ends) is better

@@ -4,6 +4,7 @@
 // cut into the corners, and the corner revision of the text.
 #include "figure/figure_contour.h"
 
+#include "figure/crossings.h"
 #include "figure/figure_eval.h"
 #include "model/translate_noop.h"
 
@@ -64,25 +65,8 @@ std::vector<Point2> crossings(const Run& a, const Run& b)
         if (std::abs(det) <= 1e-12) return {};
         return {a.line.point + (cross(b.line.point - a.line.point, b.line.dir) / det) * a.line.dir};
     }
-    if (a.circle && b.circle) {
-        const Point2 d = b.c.centre - a.c.centre;
-        const double dist = length(d), ra = a.c.radius, rb = b.c.radius;
-        if (dist <= kTolerance || dist > ra + rb + kTolerance || dist < std::abs(ra - rb) - kTolerance) return {};
-        const Point2 e = (1.0 / dist) * d;
-        const double along = std::clamp((dist * dist + ra * ra - rb * rb) / (2 * dist), -ra, ra);
-        const Point2 base = a.c.centre + along * e;
-        if (std::abs(dist - (ra + rb)) <= kTolerance || std::abs(dist - std::abs(ra - rb)) <= kTolerance) return {base};
-        const double h = std::sqrt(std::max(0.0, ra * ra - along * along));
-        return {base + h * left(e), base - h * left(e)};
-    }
-    const Run& l = a.circle ? b : a;
-    const Run& c = a.circle ? a : b;
-    const Point2 foot = l.line.point + dot(c.c.centre - l.line.point, l.line.dir) * l.line.dir;
-    const double h = length(c.c.centre - foot);
-    if (h > c.c.radius + kTolerance) return {};
-    if (std::abs(h - c.c.radius) <= kTolerance) return {foot};
-    const double half = std::sqrt(c.c.radius * c.c.radius - h * h);
-    return {foot + half * l.line.dir, foot - half * l.line.dir};
+    if (a.circle && b.circle) return circleCrossings(a.c, b.c);
+    return a.circle ? lineCircleCrossings(b.line, a.c) : lineCircleCrossings(a.line, b.c);
 }
 
 // The junction of a with the next element b, the modifier written before b
