@@ -18,6 +18,7 @@
 #include <QXmlStreamReader>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace taiwa::ui {
@@ -110,7 +111,13 @@ QString translateText(const QString& text, const QStringList& sources,
         return text;
     if (const QString whole = translate(text); whole != text)
         return whole;
+    // Of templates equally specific ("{}: {}", "{}, {}"), the first whose
+    // arguments of words all translate; else the first that matched.
+    std::optional<QString> fallback;
+    int fallbackLiteral = -1;
     for (const Template& t : compiled(sources)) {
+        if (fallback && t.literal < fallbackLiteral)
+            break;
         if (!text.contains(t.longest))
             continue;
         const auto m = t.pattern.match(text);
@@ -128,11 +135,20 @@ QString translateText(const QString& text, const QStringList& sources,
         // A translation the same as its source ("T{} ({} Ø{} mm)") is one too: its arguments may be words.
         const QString translated = translate(t.source);
         QStringList args;
-        for (int i = 1; i <= m.lastCapturedIndex(); ++i)
-            args << (depth < kMaxDepth ? translateText(m.captured(i), sources, translate, depth + 1) : m.captured(i));
-        return substitute(translated, args);
+        bool whole = true;  // every argument of words came out translated
+        for (int i = 1; i <= m.lastCapturedIndex(); ++i) {
+            const QString arg = m.captured(i);
+            args << (depth < kMaxDepth ? translateText(arg, sources, translate, depth + 1) : arg);
+            if (arg.contains(' ') && args.back() == arg) whole = false;
+        }
+        if (whole)
+            return substitute(translated, args);
+        if (!fallback) {
+            fallback = substitute(translated, args);
+            fallbackLiteral = t.literal;
+        }
     }
-    return text;
+    return fallback.value_or(text);
 }
 
 // The known tools' names in other languages, by their name (knowToolNames).

@@ -355,8 +355,8 @@ Result<ImportedProfiles> importStepProfiles(const std::string& path)
         ImportedProfiles p = Importer(path).run();
         Importer::frontAtZero(p);
         return p;
-    } catch (const Refusal& r) {
-        return r.failure();
+    } catch (const Refusal& r) {  // "FILE: why", the pattern the station translates part by part
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), path, r.message()), r.place()};
     } catch (const Standard_Failure& e) {
         return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE failed reading it: {}"), path, e.GetMessageString()),
                        Place::inFile(path)};
