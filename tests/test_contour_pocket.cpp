@@ -310,7 +310,7 @@ private slots:
                      "K1 = CONTOUR/L1, ROUND, 3, L2, L3, L4, ROUND, 3, L5, ROUND, 3, L6, ROUND, 3, L7, ROUND, 3, L8, L9, "
                      "L10, ROUND, 3, L11, ROUND, 3, L12, ROUND, 3";
         ContourPocket& p = job.units[0].module.as<ContourPocket>();
-        p.islands.clear();
+        p.contours.islands.clear();
         const Diagnostics ds = checkJob(job, TechnologyTable::builtIn(), defaultToolLibrary());
         QCOMPARE(ds.size(), std::size_t{1});
         QCOMPARE(ds[0].field, std::string("outline"));

@@ -279,7 +279,7 @@ private slots:
             "the margin is -1 mm; it must be 0 (the face is the stock's top) or more (the face reaches beyond the "
             "stock's sides): less would leave the top's edges unfaced");
         row("pin key", R"({"module": "FACE", "depth": 2, "tools": {"roughing": 60}})", "tools.roughing",
-            "a face-milling unit has no step \"roughing\"; its steps are \"face\"");
+            "\"roughing\" is not a step of module FACE; its steps are face");
         row("pin unknown", R"({"module": "FACE", "depth": 2, "tools": {"face": 999}})", "tools.face",
             "tool T999 is not in the tool library");
         row("pin drill", R"({"module": "FACE", "depth": 2, "tools": {"face": 8}})", "tools.face",

@@ -82,7 +82,7 @@ private slots:
         p.tools = {{"roughing", 99}};
         EXPECT_ONLY(check(job({p})), 1, "tools.roughing", "tool T99 is not in the tool library");
         p.tools = {{"chamfer", 3}};
-        EXPECT_ONLY(check(job({p})), 1, "tools.chamfer", "not a step kind");
+        EXPECT_ONLY(check(job({p})), 1, "tools.chamfer", "\"chamfer\" is not a step of module M4; its steps are pilot, roughing, floor, wall, inclined");
     }
     void depthNotPositive()
     {

@@ -173,7 +173,7 @@ private slots:
                     seen.insert(t->profile.side == turning::ProfileSide::Inner ? "TURN inner" : "TURN outer");
                 } else if (const auto* c = (u.module).getIf<ContourPocket>()) {
                     seen.insert("CP U" + std::to_string(c->toolUse));
-                    if (!c->islands.empty()) seen.insert("CP islands");
+                    if (!c->contours.islands.empty()) seen.insert("CP islands");
                 } else if (const auto* a = (u.module).getIf<AreaClearing>()) {
                     seen.insert(a->area.islands.empty() ? "AREA" : "AREA islands");
                 } else if (const auto* h = (u.module).getIf<HolePattern>()) {

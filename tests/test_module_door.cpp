@@ -2,7 +2,9 @@
 // name none of its step kinds, a step's own data travels in its payload,
 // its path, move estimate and order come from its module, and each step is
 // bound once to its tool and its speeds and feeds, so that a library edited
-// after planning cannot change what is posted from the plan.
+// after planning cannot change what is posted from the plan; and the door
+// checks every module's tool pins against the module's own step keys.
+#include "io/json_fields.h"
 #include "model/turn_path.h"
 #include "modules/face/face.h"
 #include "modules/inclined_face.h"
@@ -10,6 +12,7 @@
 #include "post/post.h"
 #include "support/hand_plan.h"
 #include "support/support.h"
+#include "tools/tool_library.h"
 #include "tools/cutting.h"
 #include "tools/step_order.h"
 
@@ -53,6 +56,18 @@ Step stepOf(int unit, const char* module, StepKind kind, int number, int tool)
     s.number = number;
     s.tool = ToolChoice{tool, ""};
     return s;
+}
+
+// The places in `text` that look a tool up in a library by its id, as
+// "line: text".
+QStringList toolLookUps(const QString& text)
+{
+    QStringList found;
+    const QStringList lines = text.split('\n');
+    for (int i = 0; i < lines.size(); ++i)
+        if (lines[i].contains("findTool(") && !lines[i].trimmed().startsWith("//"))
+            found << QString("%1: %2").arg(i + 1).arg(lines[i].trimmed());
+    return found;
 }
 
 }  // namespace
@@ -171,6 +186,84 @@ private slots:
     // planJob binds every milling step to its speeds and feeds once; the
     // post reads them, so cutting data edited in the library after planning
     // changes nothing on the tape posted from the plan.
+    // Every module with steps, through its door alone: a pin of a step the
+    // module does not have is refused naming its steps, a pin of a tool not
+    // in the library naming the tool, each once, on the pin's field; a pin
+    // of a step it has, of a tool the library has, is not refused as a pin.
+    void theDoorChecksEveryModulesPins()
+    {
+        const std::vector<Tool> library = defaultToolLibrary();
+        const Stock stock;
+        const BarStock bar;
+        check::Context ctx;
+        ctx.stock = &stock;
+        ctx.bar = &bar;
+        ctx.library = &library;
+        int modules = 0;
+        for (const ModuleKind* kind : moduleKinds()) {
+            const std::vector<std::string> keys = kind->stepKeys();
+            if (keys.empty()) continue;
+            ++modules;
+            nlohmann::ordered_json unit;
+            kind->write(kind->makeDefault(stock), unit);
+            unit["tools"] = {{"nonsense", library.front().id}, {keys.front(), 99999}};
+            DiagnosticSink sink;
+            const nlohmann::json plain = nlohmann::json::parse(unit.dump());
+            const ModuleInput m = kind->read(io::ObjectFields(plain, io::Place{1, kind->name(), ""}, sink));
+            QVERIFY2(std::move(sink).finish().empty(), kind->name());
+            const Diagnostics found = kind->check(m, 1, ctx).diagnostics;
+            const auto on = [&](const std::string& field) {
+                std::vector<std::string> messages;
+                for (const Diagnostic& d : found)
+                    if (d.field == field) messages.push_back(d.message);
+                return messages;
+            };
+            std::string list, all = kind->name();
+            for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
+            for (const Diagnostic& d : found) all += "\n" + d.field + ": " + d.message;
+            const auto nonsense = on("tools.nonsense");
+            QVERIFY2(nonsense.size() == 1, all.c_str());
+            QCOMPARE(nonsense.front(), "\"nonsense\" is not a step of module " + std::string(kind->name()) + "; its steps are " + list);
+            const auto missing = on("tools." + keys.front());
+            QVERIFY2(missing.size() == 1, all.c_str());
+            QCOMPARE(missing.front(), std::string("tool T99999 is not in the tool library"));
+
+            // The control: the same unit with a known key and a library tool.
+            unit["tools"] = {{keys.front(), library.front().id}};
+            const nlohmann::json good = nlohmann::json::parse(unit.dump());
+            DiagnosticSink again;
+            const ModuleInput g = kind->read(io::ObjectFields(good, io::Place{1, kind->name(), ""}, again));
+            for (const Diagnostic& d : kind->check(g, 1, ctx).diagnostics)
+                QVERIFY2(d.message.find("is not a step of module") == std::string::npos &&
+                             d.message.find("is not in the tool library") == std::string::npos,
+                         (std::string(kind->name()) + ": " + d.message).c_str());
+        }
+        QVERIFY(modules >= 9);  // M4, M2D, CP, AREA, HOLES, FACE, SIDE, SURFACE, TURN
+    }
+
+    // A tool is looked up in a library only where it is chosen or bound
+    // (the modules, the input checks, planJob's binding); the stages after
+    // the plan (posts, tool tables, sheet, verification, pictures, the
+    // station) read the tool each step was bound to (post/bound_tool.h).
+    void onlyChoosingAndBindingLookToolsUp()
+    {
+        QCOMPARE(toolLookUps("int a;\n  const Tool* t = findTool(library, id);\n  // findTool(x)\n").size(), 1);  // the rule sees one
+        QStringList found;
+        int files = 0;
+        for (const char* folder : {"core/post", "core/export", "core/sheet", "core/verify", "core/picture", "core/sim", "viz", "ui", "app"}) {
+            QDirIterator it(test::sourcePath(folder), {"*.cpp", "*.h"}, QDir::Files, QDirIterator::Subdirectories);
+            while (it.hasNext()) {
+                const QString path = it.next();
+                const QString rel = QDir(test::sourcePath("")).relativeFilePath(path);
+                if (rel == "core/post/bound_tool.h") continue;
+                ++files;
+                for (const QString& f : toolLookUps(QString::fromStdString(test::readFile(path)))) found << rel + ":" + f;
+            }
+        }
+        QVERIFY(files > 150);
+        QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
+    }
+
     void aLibraryEditAfterPlanningChangesNoTape()
     {
         const auto read = readJobFile(test::sourcePath("resources/samples/plate.taiwa").toStdString());

@@ -76,10 +76,9 @@ private slots:
         QCOMPARE(std::string(Refusal("no place").what()), std::string("no place"));
     }
 
-    // Each reader's door names the place. Result<T> hands on only the
-    // Failure's words (no accessor for its Place yet), so for the data files
-    // the place is read from the words; the figure's line and column and the
-    // technology table's Refusal carry it as data.
+    // Each reader's door names the place twice: in the Failure's words, for
+    // the operator, and as its Place, for a program to go to (the station's
+    // form, an editor's line).
     void aDialectFileIsRefusedAtItsLineAndKey()
     {
         std::string text = test::readFile(test::sourcePath("resources/dialects/fanuc.json"));
@@ -92,10 +91,16 @@ private slots:
         QCOMPARE(d.error().rfind("shop.json:", 0), std::size_t{0});
         const int line = static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n')) + 1;
         QVERIFY2(d.error().find("shop.json:" + std::to_string(line) + ": maxLineLength: ") == 0, d.error().c_str());
+        QCOMPARE(d.place().file, std::string("shop.json"));
+        QCOMPARE(d.place().line, line);
+        QCOMPARE(d.place().key, std::string("maxLineLength"));
+        QCOMPARE(d.failure().message, d.error());
 
         const auto broken = readMachine("{\n  \"name\": \"x\",\n  oops\n}", "mill.json");
         QVERIFY(!broken.ok());
         QVERIFY2(broken.error().starts_with("mill.json:3: not valid JSON"), broken.error().c_str());
+        QCOMPARE(broken.place().file, std::string("mill.json"));
+        QCOMPARE(broken.place().line, 3);
     }
 
     void aLatheLayoutIsRefusedAtItsKey()
@@ -103,6 +108,7 @@ private slots:
         const auto l = readLatheLayout(nlohmann::json::parse(R"({"waitCodes": [100, 199]})"));
         QVERIFY(!l.ok());
         QCOMPARE(l.error(), std::string("waitCodes: only a lathe with \"paths\" waits"));
+        QCOMPARE(l.place().key, std::string("waitCodes"));
     }
 
     void aFigureTextIsRefusedAtItsLineAndColumn()
@@ -128,6 +134,7 @@ private slots:
         const auto r = turning::importStepProfiles(path);
         QVERIFY(!r.ok());
         QVERIFY2(r.error().starts_with(path + ": "), r.error().c_str());
+        QCOMPARE(r.place().file, path);
     }
 
     void theTechnologyTableIsRefusedAtTheMaterial()

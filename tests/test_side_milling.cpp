@@ -301,7 +301,7 @@ private slots:
                                                             "and leaves its own radius there; round the corner (ROUND) in the contour";
         QTest::newRow("crossing itself") << "figure:P3 = POINT/135, 66=>P3 = POINT/-30, 66\nL9 = LINE/P3, ATANGL, 0" << "contour" << "";
         QTest::newRow("pin key") << "tools={\"roughing\": 30}" << "tools.roughing"
-                                 << "\"roughing\" is not a step of side milling; pin its end mill under \"side\" (roughing and finishing)";
+                                 << "\"roughing\" is not a step of module SIDE; its steps are side";
         QTest::newRow("pinned too big") << "tools={\"side\": 31}" << "tools.side" << "";
     }
     void refusals()

@@ -43,10 +43,9 @@ std::string depthNotPositive(Len depth);
 std::string deeperThanStock(Len depth, Len stockHeight);
 std::string lengthNotPositive(const std::string& name, Len v);
 
-// Tools.
-std::string unknownPinKey(const std::string& key);
-// The operator's speeds and feeds of a unit's steps ("cutting").
-std::string unknownCuttingKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys);
+// A key of a unit's tool pins ("tools") or of the operator's speeds and
+// feeds ("cutting") that is not one of the module's steps.
+std::string unknownStepKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys);
 std::string noCuttingSteps(const std::string& module);
 std::string cuttingValueOutOfRange(const std::string& what, double value, const std::string& unit, double low,
                                    double high, const std::string& why);

@@ -9,15 +9,7 @@
 
 namespace taiwa::msg {
 
-std::string unknownPinKey(const std::string& key)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP(
-            "taiwa::msg", "\"{}\" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined"),
-        key);
-}
-
-std::string unknownCuttingKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys)
+std::string unknownStepKey(const std::string& key, const std::string& module, const std::vector<std::string>& keys)
 {
     std::string list;
     for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;

@@ -86,12 +86,14 @@ const std::vector<std::string>& millingStepKeys()
     return keys;
 }
 
-void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out)
+void checkPins(const ToolPins& pins, const std::vector<std::string>& keys, int unitNo, const std::string& module,
+               const Context& ctx, Diagnostics& out)
 {
-    const auto& kinds = millingStepKeys();
     for (const auto& [key, id] : pins) {
-        if (std::find(kinds.begin(), kinds.end(), key) == kinds.end()) out.push_back(error(unitNo, module, "tools." + key, msg::unknownPinKey(key)));
-        else if (!findTool(*ctx.library, id)) out.push_back(error(unitNo, module, "tools." + key, msg::toolNotInLibrary(id)));
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            out.push_back(error(unitNo, module, "tools." + key, msg::unknownStepKey(key, module, keys)));
+        else if (ctx.library && !findTool(*ctx.library, id))
+            out.push_back(error(unitNo, module, "tools." + key, msg::toolNotInLibrary(id)));
     }
 }
 

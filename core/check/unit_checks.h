@@ -86,8 +86,12 @@ struct RoomQuery {
 // unpinned steps need the smallest suitable library tool to fit.
 void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx,
                Diagnostics& out);
-// Pins with an unknown step kind or a tool id not in the library.
-void checkPins(const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx, Diagnostics& out);
+// Pins of a step the module does not have (`keys`, its door's stepKeys())
+// or of a tool id not in the library. Every unit's door runs it
+// (ModuleKindOf::check) before the module's own checks, which add only
+// what is the module's own (a pinned tool of the wrong type or size).
+void checkPins(const ToolPins& pins, const std::vector<std::string>& keys, int unitNo, const std::string& module,
+               const Context& ctx, Diagnostics& out);
 // The step keys of the pocket modules (pins, speeds and feeds): "pilot",
 // "roughing", "floor", "wall", "inclined".
 const std::vector<std::string>& millingStepKeys();

@@ -214,7 +214,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     const post::Dialect* dialect = post::findDialect(options.dialect);
     if (!dialect) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; nothing was written"), options.dialect)};
     if (auto can = post::canPost(*dialect, post::taskOf(plan.mmJob.bar.has_value(), !plan.setups.empty())); !can)
-        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), can.error())};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), can.error()), can.place()};
     // The tape's file: STEM.nc, or the control's own kind (STEM.h for HEIDENHAIN).
     const std::string tape = "." + dialect->fileExtension;
     std::error_code ec;
@@ -244,10 +244,10 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
                                                  postOptions(plan, options.dialect, units, options.programNumber, stem)));
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     auto pdf = drawing.get();
-    if (!pdf) return Failure{nothingChanged(pdf.error(), outDir)};
+    if (!pdf) return Failure{nothingChanged(pdf.error(), outDir), pdf.place()};
 
     auto set = FileSet::open(outDir, stem);
-    if (!set) return Failure{nothingChanged(set.error(), outDir)};
+    if (!set) return Failure{nothingChanged(set.error(), outDir), set.place()};
     std::vector<std::pair<std::string, std::string>> files = {
         {tape, program.nc}, {".tape.txt", program.tapeImage}, {".sheet.html", html},
         {".steps.json", steps}, {".sheet.pdf", *pdf},
@@ -280,7 +280,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     }
     for (const auto& [suffix, bytes] : files)
         if (auto written = set->add(stem + suffix, bytes); !written)
-            return Failure{nothingChanged(written.error(), outDir)};
+            return Failure{nothingChanged(written.error(), outDir), written.place()};
     // The files of an older set of this stem the new one does not have
     // (another dialect's tape, a lathe tape's tool table, probing programs
     // of units no longer there) go in the same switch: a folder never holds
@@ -297,7 +297,7 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     for (const auto& name : older)
         if (!names.contains(name)) set->remove(name);
     auto written = set->commit();
-    if (!written) return Failure{nothingChanged(written.error(), outDir)};
+    if (!written) return Failure{nothingChanged(written.error(), outDir), written.place()};
     return written;
 }
 

@@ -151,7 +151,7 @@ Result<std::string> sheetPdf(const Plan& plan, const SheetOptions& options, PdfP
 Result<void> writeSheetPdf(const Plan& plan, const SheetOptions& options, const std::string& path)
 {
     auto pdf = sheetPdf(plan, options, PdfParts::BySize);
-    if (!pdf) return Failure{pdf.error()};
+    if (!pdf) return pdf.failure();
     return writeFileAtomically(path, *pdf);
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +59,31 @@ void addShopFiles(std::vector<T>& items, std::vector<std::string>& problems, con
         if (same != items.end()) *same = std::move(*item);
         else items.push_back(std::move(*item));
     }
+}
+
+// A library of data files: the definitions, and the shop files left out
+// with their problems.
+template <class T>
+struct DataLibrary {
+    std::vector<T> items;
+    std::vector<std::string> problems;
+};
+
+// The shipped definitions (`shipped`: pairs of text and source name, from
+// builtin_data.h), then the shop's files of `folder` joined to them
+// (addShopFiles). A shipped definition that does not read is a bug of the
+// build (std::logic_error), never the operator's.
+template <class T, class Shipped, class Read, class KeyOf>
+DataLibrary<T> loadDataLibrary(const Shipped& shipped, const std::string& folder, Read read, KeyOf key, const std::string& what)
+{
+    DataLibrary<T> l;
+    for (const auto& [text, source] : shipped) {
+        auto item = read(text, source);
+        if (!item) throw std::logic_error("a shipped file of the " + what + " is broken: " + item.error());
+        l.items.push_back(std::move(*item));
+    }
+    addShopFiles(l.items, l.problems, folder, read, key, what);
+    return l;
 }
 
 }  // namespace taiwa::io

@@ -169,7 +169,7 @@ void checkCutting(const std::map<std::string, CuttingOverride>& cutting, const M
     for (const auto& [key, c] : cutting) {
         const std::string field = "cutting." + key;
         if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-            error(field, msg::unknownCuttingKey(key, kind.name(), keys));
+            error(field, msg::unknownStepKey(key, kind.name(), keys));
             continue;
         }
         if (c.speed) {

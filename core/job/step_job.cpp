@@ -13,7 +13,7 @@ namespace taiwa {
 Result<Job> latheJobFromStep(const std::string& stepPath, const std::string& material)
 {
     auto imported = turning::importStepProfiles(stepPath);
-    if (!imported) return Failure{imported.error()};
+    if (!imported) return imported.failure();
     const ModuleKind* turn = nullptr;
     for (const ModuleKind* k : moduleKinds())
         if (k->machineKind() == MachineKind::Lathe && k->turnedProfile(k->makeDefault({}))) turn = k;

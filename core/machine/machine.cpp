@@ -166,33 +166,19 @@ std::string userMachineFolder() { return io::userDataFolder("machines"); }
 
 namespace {
 
-struct Library {
-    std::vector<Machine> machines;
-    std::vector<std::string> problems;
-};
-
 // The shipped definitions, then the user's: a user file of a known id
 // replaces the shipped one, a new id adds a machine; a broken file is left
 // out with its problem, the shipped ones stay.
-const Library& library()
+const io::DataLibrary<Machine>& library()
 {
-    static const Library lib = [] {
-        Library l;
-        for (const auto& [text, source] : builtin::kMachines) {
-            auto m = readMachine(text, source);
-            if (!m) throw std::logic_error("a shipped machine definition is broken: " + m.error());
-            l.machines.push_back(std::move(*m));
-        }
-        io::addShopFiles(l.machines, l.problems, userMachineFolder(), readMachine, [](const Machine& m) { return m.id; },
-                         "machines");
-        return l;
-    }();
+    static const auto lib = io::loadDataLibrary<Machine>(builtin::kMachines, userMachineFolder(), readMachine,
+                                                         [](const Machine& m) { return m.id; }, "machines");
     return lib;
 }
 
 }  // namespace
 
-const std::vector<Machine>& machineLibrary() { return library().machines; }
+const std::vector<Machine>& machineLibrary() { return library().items; }
 const std::vector<std::string>& machineLibraryProblems() { return library().problems; }
 
 const Machine* findMachine(const std::string& id)

@@ -3,6 +3,8 @@
 // toolpath.h's arcSweep reads a G2/G3 move.
 #include "model/contour.h"
 
+#include "model/winding.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -195,24 +197,6 @@ double nearestDistance(const std::vector<ContourSegment>& segments, Point2 p)
 
 double distanceTo(const Contour& c, Point2 p) { return nearestDistance(c.segments, p); }
 
-namespace {
-
-int windingNumber(const std::vector<Point2>& pts, Point2 p)
-{
-    int winding = 0;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-        const Point2 a = pts[i], b = pts[(i + 1) % pts.size()];
-        const double side = cross(b - a, p - a);
-        if (a.y <= p.y) {
-            if (b.y > p.y && side > 0.0) ++winding;
-        } else if (b.y <= p.y && side < 0.0) {
-            --winding;
-        }
-    }
-    return winding;
-}
-
-}  // namespace
 
 bool contains(const Contour& c, Point2 p)
 {

@@ -101,8 +101,10 @@ public:
     const T* operator->() const { return &value(); }
     T& operator*() & { return value(); }
     const T& operator*() const& { return value(); }
-    // Why it failed; only when !ok().
+    // Why it failed, where, and both; only when !ok().
     const std::string& error() const { return std::get<1>(v_).message; }
+    const Place& place() const { return std::get<1>(v_).place; }
+    const Failure& failure() const { return std::get<1>(v_); }
 
 private:
     std::variant<T, Failure> v_;
@@ -117,6 +119,8 @@ public:
     bool ok() const { return !f_; }
     explicit operator bool() const { return ok(); }
     const std::string& error() const { return f_->message; }
+    const Place& place() const { return f_->place; }
+    const Failure& failure() const { return *f_; }
 
 private:
     std::optional<Failure> f_;

@@ -216,9 +216,18 @@ public:
     int formatVersion() const final { return T::kSinceFormatVersion; }
     ModuleInput read(const io::ObjectFields& unit) const final { return readInput(unit); }
     void write(const ModuleInput& m, nlohmann::ordered_json& unit) const final { writeInput(m.as<T>(), unit); }
+    // The pins of steps the module has, of tools the library has, for
+    // every module (check::checkPins); then the module's own checks.
     check::UnitReport check(const ModuleInput& mm, int unitNo, const check::Context& ctx) const final
     {
-        return checkInput(mm.as<T>(), unitNo, ctx);
+        const T& m = mm.as<T>();
+        check::UnitReport report = checkInput(m, unitNo, ctx);
+        if constexpr (requires { m.tools; }) {
+            Diagnostics pins;
+            check::checkPins(m.tools, stepKeys(), unitNo, T::kName, ctx, pins);
+            report.diagnostics.insert(report.diagnostics.begin(), pins.begin(), pins.end());
+        }
+        return report;
     }
     std::optional<Quad> topOutline(const ModuleInput& mm) const final { return outline(mm.as<T>()); }
     void moveBy(ModuleInput& m, Point2 delta) const final { move(m.as<T>(), delta); }

@@ -190,7 +190,7 @@ Result<Contour> offsetOpen(const Contour& c, bool left, double d)
     for (const ContourSegment& s : c.segments) {
         const auto e = parallel(s, side, d);
         if (!e) continue;
-        if (auto r = join(out, *e, s.start, side, d); !r) return Failure{r.error()};
+        if (auto r = join(out, *e, s.start, side, d); !r) return r.failure();
     }
     if (out.empty()) return Failure{"nothing of the contour is left at that distance"};
     Contour chain;
@@ -204,7 +204,7 @@ Result<std::vector<Contour>> offsetSide(const Contour& c, bool left, double d)
 {
     if (!c.closed) {
         auto chain = offsetOpen(c, left, d);
-        if (!chain) return Failure{chain.error()};
+        if (!chain) return chain.failure();
         return std::vector<Contour>{std::move(*chain)};
     }
     if (!(d > 0.0) || !std::isfinite(d)) return Failure{"the offset distance must be positive"};
@@ -216,7 +216,7 @@ Result<std::vector<Contour>> offsetSide(const Contour& c, bool left, double d)
         region.islands = {c};
     }
     auto pieces = offsetRegion(region, d);
-    if (!pieces) return Failure{pieces.error()};
+    if (!pieces) return pieces.failure();
     std::vector<Contour> loops;
     for (const Region& piece : *pieces) {
         if (inside) loops.push_back(piece.outer);

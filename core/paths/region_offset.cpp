@@ -7,6 +7,7 @@
 // orientation and nesting.
 #include "paths/region_offset.h"
 
+#include "model/winding.h"
 #include "paths/offset_candidates.h"
 
 #include <algorithm>
@@ -147,18 +148,7 @@ std::vector<Region> regionsOf(std::vector<Contour> result)
         if (out.size() == 1) return true;
         if (p.x < boxes[i].min.x || p.x > boxes[i].max.x || p.y < boxes[i].min.y || p.y > boxes[i].max.y) return false;
         if (polygons[i].empty()) polygons[i] = flatten(out[i].outer, 1e-4);
-        const auto& pts = polygons[i];
-        int winding = 0;
-        for (std::size_t k = 0; k < pts.size(); ++k) {
-            const Point2 a = pts[k], b = pts[(k + 1) % pts.size()];
-            const double side = cross(b - a, p - a);
-            if (a.y <= p.y) {
-                if (b.y > p.y && side > 0.0) ++winding;
-            } else if (b.y <= p.y && side < 0.0) {
-                --winding;
-            }
-        }
-        return winding != 0;
+        return windingNumber(polygons[i], p) != 0;
     };
     for (auto& c : islands) {
         const Point2 probe = c.segments.front().at(0.5);
@@ -209,7 +199,7 @@ Result<std::vector<Region>> offsetRegion(const Region& input, double d)
     }
 
     auto chained = chainLoops(pieces, elems, splits);
-    if (!chained) return Failure{chained.error()};
+    if (!chained) return chained.failure();
     return regionsOf(std::move(*chained));
 }
 

@@ -22,7 +22,8 @@ namespace taiwa::picture {
 inline constexpr int kSheetWidth = 320, kSheetHeight = 240;
 
 // The pictures of the first `limit` steps, in step order; the failure
-// names what could not be drawn (a stock the simulation refuses).
+// names what could not be drawn (a picture below 16 pixels).
+// A broken simulation is a bug: its logic_error goes to the top.
 Result<std::vector<Picture>> stepPictures(const Plan& plan, int width, int height, int limit);
 
 // The setup: iso view (milling) or from the front (lathe).

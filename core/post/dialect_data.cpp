@@ -306,24 +306,11 @@ private:
     std::size_t maxLine_ = 255;
 };
 
-struct Library {
-    std::vector<Dialect> dialects;
-    std::vector<std::string> problems;
-};
-
-const Library& library()
+// The shipped dialects, then the shop's (io::addShopFiles).
+const io::DataLibrary<Dialect>& library()
 {
-    static const Library lib = [] {
-        Library l;
-        for (const auto& [text, source] : builtin::kDialects) {
-            auto d = readDialect(text, source);
-            if (!d) throw std::logic_error("a shipped dialect definition is broken: " + d.error());
-            l.dialects.push_back(std::move(*d));
-        }
-        io::addShopFiles(l.dialects, l.problems, io::userDataFolder("dialects"), readDialect,
-                         [](const Dialect& d) { return d.name; }, "dialects");
-        return l;
-    }();
+    static const auto lib = io::loadDataLibrary<Dialect>(builtin::kDialects, io::userDataFolder("dialects"), readDialect,
+                                                         [](const Dialect& d) { return d.name; }, "dialects");
     return lib;
 }
 
@@ -338,7 +325,7 @@ Result<Dialect> readDialect(const std::string& text, const std::string& source)
     }
 }
 
-const std::vector<Dialect>& dialectLibrary() { return library().dialects; }
+const std::vector<Dialect>& dialectLibrary() { return library().items; }
 const std::vector<std::string>& dialectLibraryProblems() { return library().problems; }
 
 const Dialect& fanucDialect() { return *findDialect("fanuc"); }

@@ -6,6 +6,7 @@
 #include "post/post.h"
 
 #include "machine/machine.h"
+#include "post/bound_tool.h"
 #include "post/dialect.h"
 #include "post/gang_post.h"
 #include "post/gcode_writer.h"
@@ -44,13 +45,11 @@ Cutting cuttingOf(const Step& s, const std::vector<Tool>& library, const std::st
 {
     // What planJob made and bound: a step without is the caller's bug.
     if (!s.tool || !s.path) throw std::logic_error("post-processor: step " + s.label() + " has no tool or no path");
-    const auto it = std::find_if(library.begin(), library.end(), [&](const Tool& t) { return t.id == s.tool->toolId; });
-    if (it == library.end())
-        throw std::logic_error("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
+    const Tool& tool = post::boundTool(library, s.tool->toolId);
     // Bound by planJob; a step made by hand gets them from the tool given.
-    const auto sf = s.speeds ? s.speeds : stepSpeedsFeeds(s, *it, material);
-    if (!sf) throw Refusal("post-processor: tool T" + std::to_string(it->id) + " has no cutting data for " + material);
-    return {&*it, *sf};
+    const auto sf = s.speeds ? s.speeds : stepSpeedsFeeds(s, tool, material);
+    if (!sf) throw Refusal("post-processor: tool T" + std::to_string(tool.id) + " has no cutting data for " + material);
+    return {&tool, *sf};
 }
 
 class Poster {

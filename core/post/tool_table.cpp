@@ -1,6 +1,7 @@
 // The machine's tool table (tool_table.h).
 #include "post/tool_table.h"
 
+#include "post/bound_tool.h"
 #include "post/gcode_writer.h"
 #include "post/lathe_post.h"
 #include "post/number_format.h"
@@ -59,16 +60,16 @@ std::string fanucOffsetProgram(const std::vector<Tool>& tools, LengthUnit units,
     return out;
 }
 
-std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const std::string& stem)
+std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const std::vector<Tool>& planTools, const std::string& stem)
 {
     std::string out = fmt::format(";Taiwa lathe tool table for {}: turret stations, nose diameter D and tip orientation Q; inch "
                                   "(LinuxCNC's rs274 reads a tool table in inches; a machine set up in mm reads it in mm: "
                                   "D x 25.4); X and Z offsets are measured on the machine\n",
                                   stem.empty() ? std::string("TAIWA") : post::commentText(stem, false));
     for (const auto& [station, id] : latheStations(orderedSteps)) {
-        const Tool* t = findTool(library, id);
-        const bool drill = t && (t->type == ToolType::Drill || t->type == ToolType::CentreDrill);
-        const double nose = t && !drill ? t->cornerRadius : 0.0;
+        const Tool& t = post::boundTool(planTools, id);
+        const bool drill = t.type == ToolType::Drill || t.type == ToolType::CentreDrill;
+        const double nose = drill ? 0.0 : t.cornerRadius;
         int orientation = 0;
         for (const auto& s : orderedSteps)
             if (s.tool && s.tool->toolId == id && turnOf(s)) {
@@ -76,7 +77,7 @@ std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const 
                 break;
             }
         out += fmt::format("T{} P{} X0 Z0 D{} Q{} ;library T{} {}\n", station, station, post::formatNumber(2.0 * nose / 25.4, 6, false),
-                           orientation, id, t ? post::commentText(t->name, false) : std::string("?"));
+                           orientation, id, post::commentText(t.name, false));
     }
     return out;
 }

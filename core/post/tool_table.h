@@ -28,8 +28,9 @@ std::string fanucOffsetProgram(const std::vector<Tool>& tools, LengthUnit units,
 // gives (the steps'), a drill's D 0. In inches: the unit LinuxCNC's
 // interpreter reads a tool table in when no machine configuration says
 // otherwise (rs274 -t), whatever the tape's G20/G21; the first line says so.
-// `orderedSteps`: the tape's turning steps in machining order.
-std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library,
+// `orderedSteps`: the tape's turning steps in machining order; `planTools`:
+// the plan's own tools they were bound to (post/bound_tool.h).
+std::string linuxcncLatheToolTable(const std::vector<Step>& orderedSteps, const std::vector<Tool>& planTools,
                                    const std::string& stem);
 
 }  // namespace taiwa

@@ -124,7 +124,7 @@ Result<std::vector<Tool>> ToolLibrary::tools() const
                                            s.text(column).substr(0, 40))};
         }
         auto t = toolFromRow(s, path_);
-        if (!t) return Failure{t.error()};
+        if (!t) return t.failure();
         out.push_back(std::move(*t));
     }
     if (rc != SQLITE_DONE) {
@@ -246,11 +246,11 @@ Result<std::vector<Tool>> readToolLibrary(const std::string& path)
 {
     if (isServerSetting(path)) {
         auto store = openToolStore(path);
-        if (!store) return Failure{store.error()};
+        if (!store) return store.failure();
         return (*store)->tools();
     }
     auto lib = ToolLibrary::open(path);
-    if (!lib) return Failure{lib.error()};
+    if (!lib) return lib.failure();
     return lib->tools();
 }
 

@@ -17,7 +17,7 @@ namespace taiwa {
 Result<std::vector<Tool>> ToolStore::tools()
 {
     auto versioned = versionedTools();
-    if (!versioned) return Failure{versioned.error()};
+    if (!versioned) return versioned.failure();
     std::vector<Tool> out;
     out.reserve(versioned->size());
     for (auto& v : *versioned) out.push_back(std::move(v.tool));
@@ -34,7 +34,7 @@ public:
     Result<std::vector<VersionedTool>> versionedTools() override
     {
         auto tools = lib_.tools();
-        if (!tools) return Failure{tools.error()};
+        if (!tools) return tools.failure();
         std::vector<VersionedTool> out;
         for (auto& t : *tools) out.push_back({std::move(t), 0});
         return out;
@@ -42,7 +42,7 @@ public:
     Result<SaveOutcome> save(const Tool& tool, std::int64_t) override
     {
         auto id = lib_.save(tool);
-        if (!id) return Failure{id.error()};
+        if (!id) return id.failure();
         return SaveOutcome{*id, 0, std::nullopt};
     }
     Result<void> remove(int id) override { return lib_.remove(id); }
@@ -80,11 +80,11 @@ Result<std::unique_ptr<ToolStore>> openToolStore(const std::string& setting, con
     const std::string s = setting.empty() ? defaultToolLibraryPath() : setting;
     if (isServerSetting(s)) {
         auto pg = PgToolStore::open(s, {copyPath.empty() ? defaultServerCopyPath() : copyPath, {}, 3});
-        if (!pg) return Failure{pg.error()};
+        if (!pg) return pg.failure();
         return std::unique_ptr<ToolStore>(std::move(*pg));
     }
     auto lib = ToolLibrary::open(s);
-    if (!lib) return Failure{lib.error()};
+    if (!lib) return lib.failure();
     return std::unique_ptr<ToolStore>(std::make_unique<SqliteToolStore>(std::move(*lib)));
 }
 

@@ -2000,10 +2000,6 @@ Theirs: %6</source>
             <translation>ユニット {} の図形がユニット {} の図形と {} {}² 重なっています。同じジョブの図形は接してもよいが重なってはいけません</translation>
         </message>
         <message>
-            <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
-            <translation>「{}」は工程の種類ではありません。工具を指定できるのは pilot、roughing、floor、wall、inclined です</translation>
-        </message>
-        <message>
             <source>"{}" is not a step of module {}; its steps are {}</source>
             <translation>「{}」はモジュール {} の工程ではありません。工程は {} です</translation>
         </message>
@@ -3368,10 +3364,6 @@ Theirs: %6</source>
             <translation>はみ出し量が {} です。0 (面は素材の上面) 以上 (面は素材の側面の外まで) にしてください。それより小さいと上面の縁が削り残されます</translation>
         </message>
         <message>
-            <source>a face-milling unit has no step "{}"; its steps are "face"</source>
-            <translation>正面フライス削りのユニットには工程「{}」がありません。工程は "face" です</translation>
-        </message>
-        <message>
             <source>{} is pinned for "face" but is not a face mill or a flat end mill: a face is cut flat by the tool's flat bottom</source>
             <translation>{} が "face" に指定されていますが、正面フライスでもフラットエンドミルでもありません。面は工具の平らな底で平らに削ります</translation>
         </message>
@@ -4044,10 +4036,6 @@ Theirs: %6</source>
             <translation>幅 W が {} です。荒加工は壁に α2 = {} を残すので、W はそれより大きくしてください</translation>
         </message>
         <message>
-            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
-            <translation>「{}」は側面削りの工程ではありません。エンドミルは "side" で指定してください (荒加工と仕上げ)</translation>
-        </message>
-        <message>
             <source>{}: {}</source>
             <translation>{}: {}</translation>
         </message>
@@ -4098,10 +4086,6 @@ Theirs: %6</source>
         <message>
             <source>"{}" is not a turning step; steps are {}</source>
             <translation>「{}」は旋削の工程ではありません。工程は {} です</translation>
-        </message>
-        <message>
-            <source>"{}" is not a turning step; tools can be pinned for {}</source>
-            <translation>「{}」は旋削の工程ではありません。工具を指定できるのは {} です</translation>
         </message>
         <message>
             <source>{} is on an inner profile: internal threads are not cut yet (only external ones)</source>

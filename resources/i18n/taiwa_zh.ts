@@ -2000,10 +2000,6 @@ Theirs: %6</source>
             <translation>单元 {} 的图形与单元 {} 的图形重叠 {} {}²；同一作业的图形可以相接但不能重叠</translation>
         </message>
         <message>
-            <source>"{}" is not a step kind; tools can be pinned for pilot, roughing, floor, wall, inclined</source>
-            <translation>“{}”不是工序类型；可指定刀具的工序为 pilot、roughing、floor、wall、inclined</translation>
-        </message>
-        <message>
             <source>"{}" is not a step of module {}; its steps are {}</source>
             <translation>“{}”不是模块 {} 的工序；其工序为 {}</translation>
         </message>
@@ -3368,10 +3364,6 @@ Theirs: %6</source>
             <translation>外延量为 {}；必须为 0（面即毛坯顶面）或更大（面超出毛坯侧面）：更小会使顶面边缘未被铣削</translation>
         </message>
         <message>
-            <source>a face-milling unit has no step "{}"; its steps are "face"</source>
-            <translation>面铣单元没有工序“{}”；其工序为 "face"</translation>
-        </message>
-        <message>
             <source>{} is pinned for "face" but is not a face mill or a flat end mill: a face is cut flat by the tool's flat bottom</source>
             <translation>{} 被指定用于 "face"，但不是面铣刀或平底立铣刀：平面由刀具的平底切出</translation>
         </message>
@@ -4044,10 +4036,6 @@ Theirs: %6</source>
             <translation>宽度 W 为 {}；粗加工在壁上留 α2 = {}，因此 W 必须大于该值</translation>
         </message>
         <message>
-            <source>"{}" is not a step of side milling; pin its end mill under "side" (roughing and finishing)</source>
-            <translation>“{}”不是侧铣的工序；请在 "side" 下指定其立铣刀（粗加工和精加工）</translation>
-        </message>
-        <message>
             <source>{}: {}</source>
             <translation>{}：{}</translation>
         </message>
@@ -4098,10 +4086,6 @@ Theirs: %6</source>
         <message>
             <source>"{}" is not a turning step; steps are {}</source>
             <translation>“{}”不是车削工序；工序为 {}</translation>
-        </message>
-        <message>
-            <source>"{}" is not a turning step; tools can be pinned for {}</source>
-            <translation>“{}”不是车削工序；可指定刀具的工序为 {}</translation>
         </message>
         <message>
             <source>{} is on an inner profile: internal threads are not cut yet (only external ones)</source>

@@ -127,8 +127,8 @@ void makeJob(ContourCase& c, const ModuleInput& unit)
     ModuleInput& m = c.job.units.back().module;
     if (c.module == "CP") {
         ContourPocket& p = m.as<ContourPocket>();
-        p.outline = f.names.at(0);
-        p.islands.assign(f.names.begin() + 1, f.names.end());
+        p.contours.outline = f.names.at(0);
+        p.contours.islands.assign(f.names.begin() + 1, f.names.end());
     } else {
         m.as<SideMill>().contour = f.names.at(0);
     }

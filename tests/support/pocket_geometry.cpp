@@ -98,8 +98,8 @@ std::shared_ptr<RegionDistance> regionDistance(const ContourPocket& cp)
     static std::map<const ContourPocket*, std::pair<Region, std::shared_ptr<RegionDistance>>> known;
     const std::lock_guard<std::mutex> hold(lock);
     auto& [region, d] = known[&cp];
-    if (!d || !(region == cp.region.value())) {
-        region = cp.region.value();
+    if (!d || !(region == cp.contours.region.value())) {
+        region = cp.contours.region.value();
         d = std::make_shared<RegionDistance>(normalised(region));
     }
     return d;

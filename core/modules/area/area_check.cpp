@@ -90,7 +90,7 @@ bool checkTool(const AreaClearing& a, Reporter& r)
             r.unit("tools", msg::pinnedDiameterDiffers(*t, r.len(a.diameter)));
             return false;
         }
-        return true;  // an unknown id is checkPins's
+        return true;  // an unknown id is check::checkPins's (the door runs it)
     }
     if (std::any_of(library.begin(), library.end(), [&](const Tool& t) { return cutsDrawnPasses(t, a.diameter); })) return true;
     std::vector<double> diameters;
@@ -135,7 +135,6 @@ check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const che
 {
     check::UnitReport report;
     Reporter r{unitNo, AreaClearing::kName, ctx, report.diagnostics};
-    check::checkPins(a.tools, unitNo, AreaClearing::kName, ctx, report.diagnostics);
     check::checkLength(a.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
         check::checkDepth(a.depth, r);
     bool diameter =

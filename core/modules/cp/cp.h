@@ -22,22 +22,17 @@ namespace taiwa {
 struct ContourPocket {
     static constexpr const char* kName = "CP";
     static constexpr int kSinceFormatVersion = 5;  // the job format that brought it
-    std::string outline;               // the contour of the pocket's edge at the top ("K1")
-    std::vector<std::string> islands;  // contours of the islands left standing in it
+    // The contour of the pocket's edge at the top ("K1") and those of the
+    // islands left standing in it, and (not in the job file) the region the
+    // job's figure makes of them in mm, set by the job layer: `region` is
+    // absent until then, or when a name is not a contour of the figure.
+    NamedRegion contours;
     double depth = 0.0;                // T, measured down from the top surface
     int toolUse = 1;                   // U (Table 1): 1, 6, 8 or 9
     int wallFinish = 1;                // F (Table 2)
     std::optional<double> stepOver;    // roughing's step-over (fraction of D); the technology's when absent
     ToolPins tools;
 
-    // Not in the job file: the named contours as the job's figure evaluates
-    // them (mm), set by the job layer. `region` is absent until then, or
-    // when a name is not a contour of the figure (listed in `unknown`).
-    std::optional<Region> region;
-    std::vector<std::string> unknown;
-    std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages
-    std::vector<bool> closedContours;         // outline, then islands: closed or open
-    bool resolved = false;
     // Of the region, worked out once when it is resolved (paths/region.h):
     // the check's tool room and the decomposition's steps both use them.
     double reach = 0.0;
@@ -48,7 +43,7 @@ struct ContourPocket {
         depth = f(depth);
         reach = f(reach);
         inscribed = f(inscribed);
-        if (region) convertRegionLengths(*region, f);
+        if (contours.region) convertRegionLengths(*contours.region, f);
     }
     friend bool operator==(const ContourPocket&, const ContourPocket&) = default;
 };

@@ -28,15 +28,7 @@ using check::Reporter;
 
 bool checkContours(const ContourPocket& p, Reporter& r)
 {
-    NamedRegion n;
-    n.outline = p.outline;
-    n.islands = p.islands;
-    n.region = p.region;
-    n.unknown = p.unknown;
-    n.figureContours = p.figureContours;
-    n.closedContours = p.closedContours;
-    n.resolved = p.resolved;
-    return checkNamedRegion(n, r, TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket"), true);
+    return checkNamedRegion(p.contours, r, TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket"), true);
 }
 
 bool checkCodes(const ContourPocket& p, Reporter& r)
@@ -74,7 +66,7 @@ Diagnostic narrowPlace(const ContourPocket& p, const paths::NarrowestPlace& n, c
                        Reporter& r)
 {
     using Kind = paths::NarrowestPlace::Kind;
-    const auto name = [&](int k) { return k == 0 ? p.outline : p.islands.at(static_cast<std::size_t>(k - 1)); };
+    const auto name = [&](int k) { return k == 0 ? p.contours.outline : p.contours.islands.at(static_cast<std::size_t>(k - 1)); };
     const std::string field = n.first == 0 && n.second == 0 ? "outline" : "islands";
     const msg::Len needed = r.len(2.0 * (tool.radius() + allowance));
     std::string text;
@@ -127,7 +119,7 @@ void checkRoomAt(const check::RoomQuery& q, const ContourPocket& p, Reporter& r)
                 }))
                 continue;
             const Tool* tool = smallestFlat(*r.ctx.library);
-            const auto place = p.region ? paths::narrowestPlace(*p.region) : std::nullopt;
+            const auto place = p.contours.region ? paths::narrowestPlace(*p.contours.region) : std::nullopt;
             if (tool && place) d = narrowPlace(p, *place, *tool, q.cornerRadius - q.available, r);
             else d.field = "outline";
         }
@@ -164,13 +156,13 @@ void checkRooms(const ContourPocket& p, double reach, Reporter& r)
 void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step>& steps, const std::vector<Tool>& library,
                                   const std::string& material, LengthUnit shown, int unitNo, Diagnostics& out)
 {
-    if (!p.region) return;
+    if (!p.contours.region) return;
     std::optional<paths::NarrowestPlace> place;
     for (const Step& s : steps) {
         if (s.tool) continue;
         const auto why = narrowForcesShortFlutes(s, library, material);
         if (!why) continue;
-        if (!place) place = paths::narrowestPlace(*p.region);
+        if (!place) place = paths::narrowestPlace(*p.contours.region);
         if (!place) return;
         const auto it = std::find_if(out.begin(), out.end(), [&](const Diagnostic& d) {
             return d.unit == unitNo && d.field == "tools" && d.message.starts_with(s.label() + ": ");
@@ -178,7 +170,7 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
         if (it == out.end()) continue;
         using Kind = paths::NarrowestPlace::Kind;
         const paths::NarrowestPlace& n = *place;
-        const auto name = [&](int k) { return k == 0 ? p.outline : p.islands.at(static_cast<std::size_t>(k - 1)); };
+        const auto name = [&](int k) { return k == 0 ? p.contours.outline : p.contours.islands.at(static_cast<std::size_t>(k - 1)); };
         const auto q = [&](double mm) { return msg::quote({mm, shown}); };
         // What the step leaves on the walls: the place's reach less the corner the tool must fit.
         const double allowance = std::max(0.0, p.reach - why->cornerRadius);
@@ -217,7 +209,6 @@ check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const c
 {
     check::UnitReport report;
     Reporter r{unitNo, ContourPocket::kName, ctx, report.diagnostics};
-    check::checkPins(p.tools, unitNo, ContourPocket::kName, ctx, report.diagnostics);
     const bool codes = checkCodes(p, r);
     const bool depth = check::checkLength(p.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
                        check::checkDepth(p.depth, r);

@@ -13,7 +13,7 @@ std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const Tech
     using decompose::makeStep;
     const ToolUse use = toolUseFromCode(pocket.toolUse).value();
     const WallFinish finish = wallFinishFromCode(pocket.wallFinish).value();
-    const Region region = normalised(pocket.region.value());
+    const Region region = normalised(pocket.contours.region.value());
     const double reach = pocket.reach, inscribed = pocket.inscribed;
     const Box2 box = bounds(region.outer);
     const Point2 middle = 0.5 * (box.min + box.max);

@@ -39,41 +39,29 @@ public:
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
     {
         ContourPocket& p = mm.as<ContourPocket>();
-        NamedRegion n;
-        n.outline = p.outline;
-        n.islands = p.islands;
-        n.resolve(table);
-        p.resolved = true;
-        p.unknown = std::move(n.unknown);
-        p.figureContours = std::move(n.figureContours);
-        p.closedContours = std::move(n.closedContours);
-        p.region.reset();
+        p.contours.resolve(table);
         p.reach = p.inscribed = 0.0;
         // Too many segments: not sized (the checks refuse it, named_region.h).
-        if (!n.region || !regionWithinLimits(*n.region)) {
-            p.region = std::move(n.region);
-            return;
-        }
-        const Region normal = normalised(*n.region);
+        if (!p.contours.region || !regionWithinLimits(*p.contours.region)) return;
+        const Region normal = normalised(*p.contours.region);
         p.inscribed = paths::inscribedRadius(normal);
         p.reach = paths::reachRadius(normal, p.inscribed);
         // An island touching the outline (or another) leaves no room between
         // them, whatever the rolling saw (it takes the touching point for room).
         p.reach = std::min(p.reach, 0.5 * paths::smallestIslandGap(normal));
-        p.region = std::move(n.region);
     }
 
     std::vector<Point2> topPolygon(const ModuleInput& mm) const override
     {
-        return regionPolygon(mm.as<ContourPocket>().region);
+        return regionPolygon(mm.as<ContourPocket>().contours.region);
     }
 
     // Vertical walls: the full depth wherever the point is in the region.
     std::optional<Cavity> cavity(const ModuleInput& mm, const TechnologyData& tech) const override
     {
         const ContourPocket& p = mm.as<ContourPocket>();
-        if (!p.region) return std::nullopt;
-        const Region region = normalised(*p.region);
+        if (!p.contours.region) return std::nullopt;
+        const Region region = normalised(*p.contours.region);
         Cavity c;
         const Box2 box = bounds(region.outer);
         c.min = box.min;
@@ -99,7 +87,7 @@ public:
     ModuleInput makeDefault(const Stock&) const override
     {
         ContourPocket p;
-        p.outline = "K1";
+        p.contours.outline = "K1";
         p.depth = 10;
         return p;
     }
@@ -109,8 +97,8 @@ protected:
     {
         ContourPocket m;
         f.rejectUnknown("module CP", kKeys);
-        m.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
-        m.islands = readContourNames(f, "islands");
+        m.contours.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
+        m.contours.islands = readContourNames(f, "islands");
         m.depth = f.number("depth").value_or(0.0);
         m.toolUse = f.whole("U", 1);
         m.wallFinish = f.whole("F", 1);
@@ -121,8 +109,8 @@ protected:
 
     void writeInput(const ContourPocket& m, nlohmann::ordered_json& u) const override
     {
-        u["outline"] = m.outline;
-        if (!m.islands.empty()) u["islands"] = m.islands;
+        u["outline"] = m.contours.outline;
+        if (!m.contours.islands.empty()) u["islands"] = m.contours.islands;
         u["depth"] = io::number(m.depth);
         u["U"] = m.toolUse;
         u["F"] = m.wallFinish;
@@ -136,7 +124,7 @@ protected:
     }
 
     // The box around the outline (its polygon is topPolygon).
-    std::optional<Quad> outline(const ContourPocket& mm) const override { return regionBox(mm.region); }
+    std::optional<Quad> outline(const ContourPocket& mm) const override { return regionBox(mm.contours.region); }
 
     // The contours belong to the job's figure: moving the unit alone cannot
     // move them, so a contour pocket stays where its contours are.
@@ -158,9 +146,9 @@ protected:
         // The contours by name, first: the figure's CONTOUR statements.
         fs.push_back(form::contourName<ContourPocket>(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
                                                       TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
-                                                      {"outline"}, &ContourPocket::outline));
+                                                      {"outline"}, [](auto& p) -> auto& { return p.contours.outline; }));
         fs.push_back(form::contourNames<ContourPocket>("islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"),
-                                                       {"islands"}, &ContourPocket::islands));
+                                                       {"islands"}, [](auto& p) -> auto& { return p.contours.islands; }));
         fs.push_back(member<ContourPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
                                            &ContourPocket::depth));
         fs.push_back(form::code<ContourPocket>(

@@ -133,28 +133,23 @@ void checkPasses(const FaceUnit& f, Reporter& r)
                            quote(r.len(f.margin))));
 }
 
-// Pins: "face" only, a tool of the library, a face mill or a flat end mill.
+// Pins: a face mill or a flat end mill. A pin of another step or of a
+// tool not in the library is check::checkPins's (the door runs it): false,
+// said there, so that the tool choice does not say it again.
 bool checkPins(const FaceUnit& f, Reporter& r)
 {
     bool ok = true;
     for (const auto& [key, id] : f.tools) {
-        std::string message;
-        if (key != face::kStepKey)
-            message = fmt::format(
-                TAIWA_TRANSLATE_NOOP("taiwa::msg", "a face-milling unit has no step \"{}\"; its steps are \"face\""),
-                key);
-        else if (r.ctx.library) {
-            const Tool* t = findTool(*r.ctx.library, id);
-            if (!t) message = msg::toolNotInLibrary(id);
-            else if (t->type != ToolType::FaceMill && t->type != ToolType::FlatEndMill)
-                message = fmt::format(
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::msg", "{} is pinned for \"face\" but is not a face mill or a flat end mill: a face is "
-                                      "cut flat by the tool's flat bottom"),
-                    msg::toolName(*t));
+        const Tool* t = key == face::kStepKey && r.ctx.library ? findTool(*r.ctx.library, id) : nullptr;
+        if (!t) {
+            ok = ok && key == face::kStepKey && !r.ctx.library;
+            continue;
         }
-        if (!message.empty()) {
-            r.unit("tools." + key, message);
+        if (t->type != ToolType::FaceMill && t->type != ToolType::FlatEndMill) {
+            r.unit("tools." + key,
+                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is pinned for \"face\" but is not a face mill or a flat end mill: a face is "
+                                                                  "cut flat by the tool's flat bottom"),
+                               msg::toolName(*t)));
             ok = false;
         }
     }

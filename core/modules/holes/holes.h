@@ -116,8 +116,9 @@ std::vector<Point2> positions(const HolePattern& mm);
 // arc), made a simple polygon with a slit. Flattened outside the circles.
 std::vector<Point2> topPolygon(const HolePattern& mm);
 
-// The step keys of a hole kind, in machining order.
+// The step keys of a hole kind, in machining order; of every kind.
 std::vector<std::string> stepKeys(const std::string& hole);
+std::vector<std::string> allStepKeys();
 
 // The step's tool path (holes_paths.cpp): a canned cycle at every hole.
 ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p);

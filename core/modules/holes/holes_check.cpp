@@ -211,18 +211,17 @@ bool checkStock(const HolePattern& h, const std::vector<Point2>& at, double diam
     return true;
 }
 
-void checkPins(const HolePattern& h, int unitNo, const check::Context& ctx, Diagnostics& out)
+// Pins of a step this kind of hole does not have. A key no hole has, or a
+// tool not in the library, is check::checkPins's (the door runs it).
+void checkPins(const HolePattern& h, int unitNo, Diagnostics& out)
 {
     const auto keys = holes::stepKeys(h.hole);
-    for (const auto& [key, id] : h.tools) {
-        std::string message;
-        if (std::find(keys.begin(), keys.end(), key) == keys.end())
-            message = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a {} hole has no step \"{}\"; its steps are {}"),
-                                  h.hole, key, listed(keys));
-        else if (ctx.library && !findTool(*ctx.library, id))
-            message = msg::toolNotInLibrary(id);
-        if (!message.empty()) out.push_back({Severity::Error, unitNo, HolePattern::kName, "tools." + key, message});
-    }
+    const auto all = holes::allStepKeys();
+    for (const auto& [key, id] : h.tools)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end() && std::find(all.begin(), all.end(), key) != all.end())
+            out.push_back({Severity::Error, unitNo, HolePattern::kName, "tools." + key,
+                           fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a {} hole has no step \"{}\"; its steps are {}"),
+                                       h.hole, key, listed(keys))});
 }
 
 }  // namespace
@@ -243,7 +242,7 @@ check::UnitReport checkHolePattern(const HolePattern& h, int unitNo, const check
         ok = false;
     }
     if (!ok) return report;
-    checkPins(h, unitNo, ctx, report.diagnostics);
+    checkPins(h, unitNo, report.diagnostics);
     ok = checkCount(h, r);
     ok = checkValues(h, r) && ok;
     if (!ok) return report;

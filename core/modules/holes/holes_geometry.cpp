@@ -169,4 +169,6 @@ std::vector<std::string> stepKeys(const std::string& hole)
     return {"centre-drill", "drill"};
 }
 
+std::vector<std::string> allStepKeys() { return {"centre-drill", "drill", "tap", "ream", "bore"}; }
+
 }  // namespace taiwa::holes

@@ -38,7 +38,7 @@ public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add hole pattern"); }
     const char* drawing() const override { return ":/modules/holes.svg"; }
     const char* outlineField() const override { return "pattern"; }
-    std::vector<std::string> stepKeys() const override { return {"centre-drill", "drill", "tap", "ream", "bore"}; }
+    std::vector<std::string> stepKeys() const override { return holes::allStepKeys(); }
     ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& params) const override
     {
         return holes::cyclesPath(step, tool, params);

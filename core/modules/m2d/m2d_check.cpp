@@ -124,7 +124,6 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 {
     UnitReport report;
     Reporter r{unitNo, "M2D", ctx, report.diagnostics};
-    checkPins(p.tools, unitNo, "M2D", ctx, report.diagnostics);
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;
 

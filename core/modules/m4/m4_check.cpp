@@ -143,7 +143,6 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
 {
     UnitReport report;
     Reporter r{unitNo, "M4", ctx, report.diagnostics};
-    checkPins(p.tools, unitNo, "M4", ctx, report.diagnostics);
     const bool codes = codesDefined(p, r);
     if (!allFinite(p, r)) return report;
 

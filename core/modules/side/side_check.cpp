@@ -82,21 +82,12 @@ bool checkContour(const SideMill& m, Reporter& r)
     return true;
 }
 
-void checkPins(const SideMill& m, Reporter& r)
-{
-    for (const auto& [key, id] : m.tools) {
-        if (key != "side") r.unit("tools." + key, msg::sidePinKeyUnknown(key));
-        else if (r.ctx.library && !findTool(*r.ctx.library, id)) r.unit("tools." + key, msg::toolNotInLibrary(id));
-    }
-}
-
 }  // namespace
 
 check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Context& ctx)
 {
     check::UnitReport report;
     Reporter r{unitNo, SideMill::kName, ctx, report.diagnostics};
-    checkPins(m, r);
     const bool codes = checkCodes(m, r);
     const bool depth = check::checkLength(m.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
                        check::checkDepth(m.depth, r);

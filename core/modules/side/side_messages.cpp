@@ -30,15 +30,6 @@ std::string sideWidthNotAboveAllowance(Len width, Len alpha2)
         quote(width), quote(alpha2));
 }
 
-std::string sidePinKeyUnknown(const std::string& key)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP(
-            "taiwa::msg",
-            "\"{}\" is not a step of side milling; pin its end mill under \"side\" (roughing and finishing)"),
-        key);
-}
-
 std::string sideNoTool(const std::string& step, const std::string& why)
 {
     return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}"), step, why);

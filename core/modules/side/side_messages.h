@@ -14,7 +14,6 @@ namespace taiwa::msg {
 std::string sideContourNotNamed();
 std::string sideCodeUnknown(const std::string& code, int value, const std::string& allowed);
 std::string sideWidthNotAboveAllowance(Len width, Len alpha2);
-std::string sidePinKeyUnknown(const std::string& key);
 std::string sideNoTool(const std::string& step, const std::string& why);
 std::string sideChannelTooNarrow(const std::string& name, const std::string& tool, Len x, Len y);
 

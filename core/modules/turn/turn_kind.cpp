@@ -117,16 +117,6 @@ protected:
                 add({fmt::format("skip[{}]", i + 1),
                      fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "\"{}\" is not a turning step; steps are {}"),
                                  t.skip[i], known)});
-        for (const auto& [key, id] : t.tools) {
-            if (std::find(keys.begin(), keys.end(), key) == keys.end())
-                add({"tools." + key,
-                     fmt::format(
-                         TAIWA_TRANSLATE_NOOP("taiwa::msg", "\"{}\" is not a turning step; tools can be pinned for {}"),
-                         key, known)});
-            else if (ctx.library && !findTool(*ctx.library, id))
-                add({"tools." + key,
-                     fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool T{} is not in the tool library"), id)});
-        }
         const Resolution r = resolveProfile(t.profile, ctx.shownUnit);
         for (const auto& p : r.problems) add(p);
         if (!r.ok()) return report;
