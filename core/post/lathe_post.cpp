@@ -5,6 +5,7 @@
 // it in the dialect's family of words (lathe_writer.h) on the block tape.
 #include "post/lathe_post.h"
 
+#include "post/bound_tool.h"
 #include "post/dialect.h"
 #include "post/lathe_writer.h"
 #include "post/tape_image.h"
@@ -39,8 +40,8 @@ public:
     {
         post::LatheProgramInfo info{o_.programName, o_.programNumber, o_.machine, o_.material, o_.fileStem, o_.workOffset, {}};
         for (const auto& [station, id] : stations_) {
-            const Tool* t = findTool(lib_, id);
-            info.stations.push_back({station, id, t, t ? t->cornerRadius : 0.0, orientationOf(id)});
+            const Tool& t = post::boundTool(lib_, id);
+            info.stations.push_back({station, id, &t, t.cornerRadius, orientationOf(id)});
         }
         sink_.source({});
         sink_.programStart(info);
@@ -178,8 +179,7 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
     // What planJob made and bound: a step without is the caller's bug.
     for (const auto& s : orderedSteps) {
         if (!turnOf(s) || !s.tool) throw std::logic_error("post-processor: step " + s.label() + " is not a turning step with a tool");
-        if (!findTool(library, s.tool->toolId))
-            throw std::logic_error("post-processor: tool " + std::to_string(s.tool->toolId) + " is not in the library");
+        (void)post::boundTool(library, s.tool->toolId);
     }
     // The chain: poster -> [mm to inch] -> lathe writer -> block tape.
     post::LatheWriter writer(*dialect, options.units);
