@@ -12,6 +12,9 @@
 // the comments (z, r) is a point with r the radius.
 #include "support/allowance_cases.h"
 
+#include "modules/turn/turn_deform.h"
+#include "tools/tool_library.h"
+
 #include <QtTest>
 
 #include <algorithm>
@@ -160,6 +163,42 @@ private slots:
         const Deformation none = deform(p);
         QVERIFY(!none.ok());
         QVERIFY(problemOn(none.problems, "allowances[1].adjustment"));
+    }
+
+    // The nose radius is the finishing insert's that the plan takes, not
+    // merely the smallest (issue 32): with T101 (CNMG, r 0.8) pinned for
+    // the finishing, the step stands 0.8 before the tangent point (-17), at
+    // Z-16.2; with nothing pinned the plan takes T102 (r 0.4), Z-16.6. The check, the plan's turned part and the
+    // station's profile editor all deform through deformTurned.
+    void tangentJointTakesTheNoseRadiusOfTheFinishingInsert()
+    {
+        TurnedProfile p;
+        p.rows = {line(1, 30, 0), line(2, 30, -20, CornerKind::Rounding, 3.0), line(3, 50, -20), line(4, 50, -40)};
+        p.allowances = {row("E2", 0.2)};
+        const Resolution r = resolveProfile(p);
+        QVERIFY(r.ok());
+        const std::vector<Tool> library = defaultToolLibrary();
+        BarStock bar;
+        bar.diameter = 55;
+        bar.length = 60;
+        const auto stepAt = [&](const ToolPins& pins, const std::vector<std::string>& skip) {
+            const TurnDeformation t = deformTurned(p, r.profile, pins, skip, library, &bar, LengthUnit::Millimetre);
+            [&] { QVERIFY(t.deformation.ok()); }();
+            return std::pair{t.deformation.profile.edges[3].geometry.a.z, t.noseRadiusTool};
+        };
+        const auto [plain, plainTool] = stepAt({}, {});
+        QVERIFY2(std::abs(plain - -16.6) < kTol, std::to_string(plain).c_str());
+        QVERIFY2(plainTool.starts_with("T102"), plainTool.c_str());
+        const auto [pinned, pinnedTool] = stepAt({{"turn-finish", 101}}, {});
+        QVERIFY2(std::abs(pinned - -16.2) < kTol, std::to_string(pinned).c_str());
+        QVERIFY2(pinnedTool.starts_with("T101"), pinnedTool.c_str());
+        // Finishing turned off: no insert finishes; the smallest one's radius.
+        const auto [skipped, skippedTool] = stepAt({{"turn-finish", 101}}, {"turn-finish"});
+        QVERIFY(std::abs(skipped - -16.6) < kTol);
+        QVERIFY(skippedTool.starts_with("T102"));
+        // Without the bar (refused): the smallest insert's radius too.
+        const TurnDeformation noBar = deformTurned(p, r.profile, {{"turn-finish", 101}}, {}, library, nullptr, LengthUnit::Millimetre);
+        QVERIFY(std::abs(noBar.deformation.profile.edges[3].geometry.a.z - -16.6) < kTol);
     }
 
     // 90° with both edges ground (seed Fig. 7(e)): the front face E1 (0.2)

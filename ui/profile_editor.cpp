@@ -4,6 +4,7 @@
 #include "ui/profile_editor.h"
 #include "ui/core_messages.h"
 
+#include "modules/turn/turn_deform.h"
 #include "turning/allowance.h"
 #include "turning/profile_resolve.h"
 #include "ui/number_text.h"
@@ -204,6 +205,14 @@ void ProfileEditor::setContext(std::optional<BarStock> bar, const std::vector<To
     refreshView();
 }
 
+void ProfileEditor::setTools(ToolPins pins, std::vector<std::string> skip)
+{
+    if (pins == pins_ && skip == skip_) return;
+    pins_ = std::move(pins);
+    skip_ = std::move(skip);
+    refreshView();
+}
+
 void ProfileEditor::refreshView()
 {
     if (profile_.rows.size() > kMaxProfileRows || profile_.allowances.size() > kMaxAllowanceRows) {
@@ -213,7 +222,8 @@ void ProfileEditor::refreshView()
     const Resolution r = resolveProfile(profile_);
     std::optional<DeformedProfile> deformed;
     if (r.ok()) {  // as the check and the plan deform it (the module's one function)
-        Deformation d = deformProfile(profile_, r.profile, library_, LengthUnit::Millimetre);
+        Deformation d =
+            deformTurned(profile_, r.profile, pins_, skip_, library_, bar_ ? &*bar_ : nullptr, LengthUnit::Millimetre).deformation;
         if (d.ok()) deformed = std::move(d.profile);
     }
     view_->setProfile(r.profile, deformed, bar_);

@@ -42,6 +42,9 @@ public:
     // What the view needs besides the profile: the bar and the library (the
     // finishing tool's nose radius for the deformed profile).
     void setContext(std::optional<BarStock> bar, const std::vector<Tool>& library);
+    // The unit's pins and steps turned off: the finishing insert whose nose
+    // radius the deformed profile takes is the one the plan takes.
+    void setTools(ToolPins pins, std::vector<std::string> skip);
     // Marks the cells the diagnostics name; returns those it does not show.
     Diagnostics showDiagnostics(const Diagnostics& ofThisUnit);
 
@@ -79,6 +82,8 @@ private:
     turning::TurnedProfile profile_;
     std::optional<BarStock> bar_;
     std::vector<Tool> library_;
+    ToolPins pins_;
+    std::vector<std::string> skip_;
     ProfileView* view_ = nullptr;
     QTableWidget* rows_ = nullptr;
     QTableWidget* allowances_ = nullptr;

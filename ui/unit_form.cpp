@@ -8,6 +8,7 @@
 #include "ui/sketch_view.h"
 
 #include "modules/registry.h"
+#include "modules/turn/turn.h"
 #include "ui/profile_editor.h"
 
 #include "ui/module_palette.h"
@@ -181,7 +182,10 @@ void UnitForm::setUnit(const MachiningUnit& unit, bool force)
 {
     current_ = unit.module;
     if (profile_)
-        if (const turning::TurnedProfile* p = kind_.turnedProfile(unit.module)) profile_->setProfile(*p, force);
+        if (const turning::TurnedProfile* p = kind_.turnedProfile(unit.module)) {
+            profile_->setProfile(*p, force);
+            if (const TurnUnit* t = unit.module.getIf<TurnUnit>()) profile_->setTools(t->tools, t->skip);
+        }
     updating_ = true;
     if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));
     for (std::size_t i = 0; i < fields_.size(); ++i) {

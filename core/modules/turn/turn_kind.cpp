@@ -12,6 +12,7 @@
 #include "io/json_write.h"
 #include "tools/turning_tools.h"
 #include "turning/allowance.h"
+#include "modules/turn/turn_deform.h"
 #include "modules/turn/turn_plan.h"
 #include "turning/profile_resolve.h"
 #include "model/turned_geometry.h"
@@ -79,11 +80,10 @@ public:
         TurnedPart part;
         part.unit = ctx.unit;
         part.profile = resolveProfile(t.profile).profile;
-        const AllowanceOptions o = allowanceOptions(t.profile, ctx.library, LengthUnit::Millimetre);
-        part.deformed = applyAllowances(part.profile, t.profile.allowances, o).profile;
-        for (const auto& r : part.deformed.rows)
-            for (const EndOutcome* e : {&r.start, &r.end})
-                if (e->adjustmentFrom.starts_with("nose radius")) part.noseRadiusTool = o.toolName;
+        const BarStock* bar = ctx.job && ctx.job->bar ? &*ctx.job->bar : nullptr;
+        TurnDeformation d = deformTurned(t.profile, part.profile, t.tools, t.skip, ctx.library, bar, LengthUnit::Millimetre);
+        part.deformed = std::move(d.deformation.profile);
+        part.noseRadiusTool = std::move(d.noseRadiusTool);
         return part;
     }
 
@@ -122,7 +122,8 @@ protected:
         if (!r.ok()) return report;
         checkThreads(t.profile, r.profile, ctx.library, ctx.shownUnit, add);
         static const std::vector<Tool> none;
-        const Deformation d = deformProfile(t.profile, r.profile, ctx.library ? *ctx.library : none, ctx.shownUnit);
+        const Deformation d =
+            deformTurned(t.profile, r.profile, t.tools, t.skip, ctx.library ? *ctx.library : none, ctx.bar, ctx.shownUnit).deformation;
         for (const auto& p : d.problems) add(p);
         if (!d.ok() || !ctx.bar) return report;
         checkInBar(d.profile, t.profile, *ctx.bar, ctx.shownUnit, [&](std::string field, std::string message) {

@@ -160,4 +160,10 @@ TurnPlanResult planTurnedUnit(const TurnPlanRequest& request)
     return Planner(request).run();
 }
 
+const Tool* finishingInsert(const TurnPlanRequest& request)
+{
+    if (!request.deformed || request.deformed->edges.empty() || !request.library) return nullptr;
+    return Planner(request).finishingInsert();
+}
+
 }  // namespace taiwa::turning

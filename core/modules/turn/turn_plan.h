@@ -54,4 +54,9 @@ struct TurnPlanResult {
 
 TurnPlanResult planTurnedUnit(const TurnPlanRequest& request);
 
+// The insert planTurnedUnit's finishing step takes (a pin, else the one
+// reaching most, then the smallest nose radius); nullptr when the step is
+// turned off or no insert serves.
+const Tool* finishingInsert(const TurnPlanRequest& request);
+
 }  // namespace taiwa::turning

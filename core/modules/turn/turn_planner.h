@@ -96,6 +96,9 @@ public:
         return std::move(out_);
     }
 
+    // The insert the finishing step takes (run()'s choice), alone.
+    const Tool* finishingInsert() { return first_ < chain_.size() ? chooseFinishing() : nullptr; }
+
 private:
     // ---- what the steps share --------------------------------------------
 
