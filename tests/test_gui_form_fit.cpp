@@ -164,6 +164,7 @@ private slots:
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             Job j = w.document()->job();
+            j.units.clear();  // the job an earlier row's window left in the autosave comes back recovered
             for (const ModuleKind* kind : moduleKinds()) {
                 if (kind->machineKind() != MachineKind::Mill) continue;
                 if (j.figure.empty()) j.figure = kind->defaultFigure(j.stock);
@@ -196,7 +197,8 @@ private slots:
         faults.removeDuplicates();
         // Left over (issue 34, item 2, not done yet): the Japanese M4 form is
         // 6 px wider than a 286-px column, the FACE form 19 px wider than a
-        // 300-px one, the AREA form's error under its outline 3-5 px short.
+        // 300-px one (its drawing and help line at x 9..309), the AREA
+        // form's error texts 2-6 px shorter than their wrapped height.
         // They fail as expected until fixed (then XPASS fails: take them out).
         static const QStringList leftOver{"en 1280", "en 1366", "en 1920", "ja 1280", "ja 1366", "ja 1920", "zh 1280"};
         if (leftOver.contains(QString::fromLatin1(QTest::currentDataTag())))

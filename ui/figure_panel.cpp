@@ -10,6 +10,7 @@
 #include "ui/passes_bar.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QKeyEvent>
@@ -98,22 +99,21 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     auto* textBox = new QVBoxLayout(left);
     textBox->setContentsMargins(0, 0, 0, 0);
     textBox->setSpacing(2);
-    auto* title = new QLabel(tr("Figure elements, one statement a line"), left);
-    title->setWordWrap(true);
-    textBox->addWidget(title);
+    title_ = new QLabel(left);
+    title_->setObjectName("figure.title");
+    title_->setWordWrap(true);
+    textBox->addWidget(title_);
     editor_ = new QPlainTextEdit(left);
     editor_->setObjectName("figure.text");
     editor_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     editor_->setLineWrapMode(QPlainTextEdit::NoWrap);
     editor_->setUndoRedoEnabled(false);  // the job's undo stack undoes the text
     editor_->setTabChangesFocus(true);
-    editor_->setPlaceholderText(tr("P1 = POINT/10, 20\nL1 = LINE/P1, ATANGL, 90\nK1 = CONTOUR/L1, ROUND, 5, L2, …"));
     editor_->installEventFilter(this);
     textBox->addWidget(editor_, 1);
     refusals_ = new QListWidget(left);
     refusals_->setObjectName("figure.refusals");
     refusals_->setWordWrap(true);
-    refusals_->setToolTip(tr("What the text refuses; click one to go to its place"));
     refusals_->setMaximumHeight(QFontMetrics(refusals_->font()).lineSpacing() * 3 + 8);
     textBox->addWidget(refusals_);
 
@@ -123,20 +123,18 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     viewBox->setContentsMargins(0, 0, 0, 0);
     viewBox->setSpacing(2);
     auto* buttons = new QHBoxLayout;
-    const auto toolButton = [&](const QString& name, const QString& text, bool checkable) {
+    const auto toolButton = [&](const QString& name, bool checkable) {
         auto* b = new QToolButton(right);
         b->setObjectName(name);
-        b->setText(text);
         b->setCheckable(checkable);
         b->setToolButtonStyle(Qt::ToolButtonTextOnly);
         buttons->addWidget(b);
         return b;
     };
-    reviseChamfer_ = toolButton("figure.reviseChamfer", tr("Revise chamfer"), true);
-    reviseRounding_ = toolButton("figure.reviseRounding", tr("Revise rounding"), true);
+    reviseChamfer_ = toolButton("figure.reviseChamfer", true);
+    reviseRounding_ = toolButton("figure.reviseRounding", true);
     buttons->addStretch(1);
-    QToolButton* fit = toolButton("figure.fit", tr("Fit"), false);
-    fit->setToolTip(tr("Frame the stock, the points and the contours"));
+    fit_ = toolButton("figure.fit", false);
     viewBox->addLayout(buttons);
     revision_ = new QWidget(right);
     revision_->setObjectName("figure.revision");
@@ -165,6 +163,7 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     split->addWidget(right);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 1);
+    nameParts();
 
     connect(editor_, &QPlainTextEdit::textChanged, this, &FigurePanel::onTextChanged);
     connect(editor_, &QPlainTextEdit::cursorPositionChanged, this, &FigurePanel::onCursorMoved);
@@ -172,7 +171,7 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     connect(refusals_, &QListWidget::itemActivated, this, &FigurePanel::goToRefusal);
     connect(view_, &FigureView::elementPicked, this, &FigurePanel::select);
     connect(view_, &FigureView::cornerPicked, this, &FigurePanel::pickCorner);
-    connect(fit, &QToolButton::clicked, view_, &FigureView::fitAll);
+    connect(fit_, &QToolButton::clicked, view_, &FigureView::fitAll);
     connect(reviseChamfer_, &QToolButton::clicked, this, [this](bool on) {
         reviseCorners(on ? std::optional(ContourCorner::Kind::Chamfer) : std::nullopt);
     });
@@ -182,6 +181,37 @@ FigurePanel::FigurePanel(JobDocument* doc, QWidget* parent) : QWidget(parent), d
     connect(value_, &QDoubleSpinBox::valueChanged, this, &FigurePanel::reviseValue);
     connect(doc_, &JobDocument::changed, this, &FigurePanel::refresh);
     refresh();
+}
+
+void FigurePanel::nameParts()
+{
+    title_->setText(tr("Figure elements, one statement a line"));
+    editor_->setPlaceholderText(tr("P1 = POINT/10, 20\nL1 = LINE/P1, ATANGL, 90\nK1 = CONTOUR/L1, ROUND, 5, L2, …"));
+    refusals_->setToolTip(tr("What the text refuses; click one to go to its place"));
+    reviseChamfer_->setText(tr("Revise chamfer"));
+    reviseRounding_->setText(tr("Revise rounding"));
+    fit_->setText(tr("Fit"));
+    fit_->setToolTip(tr("Frame the stock, the points and the contours"));
+}
+
+void FigurePanel::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange || !fit_) return;
+    nameParts();
+    listRefusals();
+    if (revising_) showRevision();
+}
+
+void FigurePanel::listRefusals()
+{
+    refusals_->clear();
+    for (const figure::FigureError& e : errors_) {
+        auto* item = new QListWidgetItem(refusalText(e), refusals_);
+        item->setData(Qt::UserRole, e.line);
+        item->setData(Qt::UserRole + 1, e.column);
+        item->setForeground(kRefusal);
+    }
 }
 
 // The job's text in the editor (unless it is what the editor holds: the
@@ -237,13 +267,7 @@ void FigurePanel::evaluateText()
     figure::Evaluation evaluated = figure::evaluate(definitions_);
     if (parsed.ok()) errors_ = evaluated.errors;
     view_->setFigure(std::move(evaluated), job.stock, fit);
-    refusals_->clear();
-    for (const figure::FigureError& e : errors_) {
-        auto* item = new QListWidgetItem(refusalText(e), refusals_);
-        item->setData(Qt::UserRole, e.line);
-        item->setData(Qt::UserRole + 1, e.column);
-        item->setForeground(kRefusal);
-    }
+    listRefusals();
     markLines();
     if (revising_) showRevision();
 }

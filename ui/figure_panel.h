@@ -38,7 +38,7 @@ class FigurePanel : public QWidget {
 public:
     // Widget objectNames: "figure.text", "figure.refusals", "figure.view",
     // "figure.reviseChamfer", "figure.reviseRounding", "figure.revisionText",
-    // "figure.cornerValue", "figure.fit".
+    // "figure.cornerValue", "figure.fit", "figure.title".
     explicit FigurePanel(JobDocument* doc, QWidget* parent = nullptr);
 
     QPlainTextEdit* editor() const { return editor_; }
@@ -67,8 +67,13 @@ signals:
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    // The language switched: the heading, the buttons, the refusals and
+    // the corner revision's line in the new one.
+    void changeEvent(QEvent* e) override;
 
 private:
+    void nameParts();
+    void listRefusals();
     void refresh();
     void onTextChanged();
     void evaluateText();
@@ -87,6 +92,8 @@ private:
     FigureView* view_ = nullptr;
     QToolButton* reviseChamfer_ = nullptr;
     QToolButton* reviseRounding_ = nullptr;
+    QToolButton* fit_ = nullptr;
+    QLabel* title_ = nullptr;
     QWidget* revision_ = nullptr;
     QLabel* revisionText_ = nullptr;
     QDoubleSpinBox* value_ = nullptr;

@@ -5,6 +5,7 @@
 
 #include "figure/figure_text.h"
 
+#include <QEvent>
 #include <QMouseEvent>
 #include <QWheelEvent>
 
@@ -54,6 +55,12 @@ FigureView::FigureView(QWidget* parent) : QWidget(parent)
     setAttribute(Qt::WA_OpaquePaintEvent);
     setCursor(Qt::CrossCursor);
     setToolTip(tr("Click: pick an element. Wheel: zoom. Drag: pan. Double click: fit."));
+}
+
+void FigureView::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() == QEvent::LanguageChange) setDrawing(drawing_);  // the tool tip and the hint in the new language
 }
 
 void FigureView::setFigure(figure::Evaluation evaluation, const Stock& stock, bool fit)

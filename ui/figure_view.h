@@ -98,6 +98,8 @@ protected:
     void mouseReleaseEvent(QMouseEvent* e) override;
     void mouseDoubleClickEvent(QMouseEvent* e) override;
     void wheelEvent(QWheelEvent* e) override;
+    // The language switched: the tool tip in the new one.
+    void changeEvent(QEvent* e) override;
 
 private:
     double scale() const;  // pixels per unit

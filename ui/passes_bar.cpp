@@ -8,6 +8,7 @@
 #include "ui/figure_view.h"
 #include "ui/job_document.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QToolButton>
@@ -39,20 +40,18 @@ PassesBar::PassesBar(JobDocument* doc, FigureView* view, QWidget* parent) : QWid
     rows->setSpacing(2);
     auto* row = new QHBoxLayout;
     rows->addLayout(row);
-    const auto button = [&](const QString& name, const QString& text, const QString& tip) {
+    const auto button = [&](const QString& name) {
         auto* b = new QToolButton(this);
         b->setObjectName(name);
-        b->setText(text);
-        b->setToolTip(tip);
         b->setToolButtonStyle(Qt::ToolButtonTextOnly);
         row->addWidget(b);
         return b;
     };
-    draw_ = button("figure.drawPasses", tr("Draw passes"),
-                   tr("Click in the view: the first point is where the tool starts, each next one ends a pass"));
+    draw_ = button("figure.drawPasses");
     draw_->setCheckable(true);
-    removeLast_ = button("figure.removePoint", tr("Remove last point"), tr("Take back the last point drawn"));
-    clear_ = button("figure.clearPasses", tr("Clear"), tr("Remove every pass of this unit"));
+    removeLast_ = button("figure.removePoint");
+    clear_ = button("figure.clearPasses");
+    nameButtons();
     text_ = new QLabel(this);
     text_->setObjectName("figure.passesText");
     text_->setWordWrap(true);
@@ -70,6 +69,24 @@ PassesBar::PassesBar(JobDocument* doc, FigureView* view, QWidget* parent) : QWid
         setPoints(std::move(points), tr("Remove the last point of the passes"));
     });
     connect(clear_, &QToolButton::clicked, this, [this] { setPoints({}, tr("Clear the passes")); });
+}
+
+void PassesBar::nameButtons()
+{
+    draw_->setText(tr("Draw passes"));
+    draw_->setToolTip(tr("Click in the view: the first point is where the tool starts, each next one ends a pass"));
+    removeLast_->setText(tr("Remove last point"));
+    removeLast_->setToolTip(tr("Take back the last point drawn"));
+    clear_->setText(tr("Clear"));
+    clear_->setToolTip(tr("Remove every pass of this unit"));
+}
+
+void PassesBar::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange || !clear_) return;
+    nameButtons();
+    refresh();
 }
 
 double PassesBar::grid() const { return doc_->job().lengthUnit == LengthUnit::Inch ? 0.01 : 0.5; }

@@ -38,7 +38,12 @@ public:
     // Points snap to this grid in the job's unit (0.5 mm, 0.01 in).
     double grid() const;
 
+protected:
+    // The language switched: the buttons and the line in the new one.
+    void changeEvent(QEvent* e) override;
+
 private:
+    void nameButtons();
     void addPoint(Point2 at);
     void setPoints(std::vector<Point2> points, const QString& what);
     bool hasPasses() const;

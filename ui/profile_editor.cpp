@@ -12,6 +12,7 @@
 #include "ui/table_cells.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -75,8 +76,6 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
 
     rows_ = new EditingTable(0, RowColumns, this);
     rows_->setObjectName(prefix + ".rows");
-    rows_->setHorizontalHeaderLabels({tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"), tr("R"), tr("Centre X"),
-                                      tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")});
     rows_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     rows_->verticalHeader()->setVisible(false);
     rows_->setEditTriggers(QAbstractItemView::AllEditTriggers);
@@ -84,29 +83,30 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     // The unit column decides the width: the tables scroll inside it.
     rows_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
     rows_->setMinimumWidth(200);
-    auto* rowsTitle = new QLabel(tr("Profile, in cutting order (X is a diameter; arcs: R, or the centre)"), this);
-    rowsTitle->setWordWrap(true);
-    outer->addWidget(rowsTitle);
+    rowsTitle_ = new QLabel(this);
+    rowsTitle_->setObjectName(prefix + ".rowsTitle");
+    rowsTitle_->setWordWrap(true);
+    outer->addWidget(rowsTitle_);
     outer->addWidget(rows_);
     // The buttons at most two to a row: the unit column stays narrow (a
     // 1280-pixel screen) and the form never scrolls sideways.
     auto* rowButtons = new QGridLayout;
-    const auto button = [&](QGridLayout* box, int r, int c, const QString& name, const QString& text) {
-        auto* b = new QPushButton(text, this);
+    const auto button = [&](QGridLayout* box, int r, int c, const QString& name) {
+        auto* b = new QPushButton(this);
         b->setObjectName(prefix + "." + name);
         b->setAutoDefault(false);
         box->addWidget(b, r, c);
         box->setColumnStretch(2, 1);
         return b;
     };
-    connect(button(rowButtons, 0, 0, "addRow", tr("Add row")), &QPushButton::clicked, this, [this] { addRow(false); });
-    connect(button(rowButtons, 0, 1, "insertRow", tr("Insert row")), &QPushButton::clicked, this, [this] { addRow(true); });
-    connect(button(rowButtons, 1, 0, "deleteRow", tr("Delete row")), &QPushButton::clicked, this, &ProfileEditor::deleteRow);
+    connect(button(rowButtons, 0, 0, "addRow"), &QPushButton::clicked, this, [this] { addRow(false); });
+    connect(button(rowButtons, 0, 1, "insertRow"), &QPushButton::clicked, this, [this] { addRow(true); });
+    connect(button(rowButtons, 1, 0, "deleteRow"), &QPushButton::clicked, this, &ProfileEditor::deleteRow);
     outer->addLayout(rowButtons);
     auto* reviseButtons = new QGridLayout;
-    connect(button(reviseButtons, 0, 0, "reviseChamfers", tr("Revise chamfers")), &QPushButton::clicked, this,
+    connect(button(reviseButtons, 0, 0, "reviseChamfers"), &QPushButton::clicked, this,
             [this] { reviseCorners(CornerKind::Chamfer); });
-    connect(button(reviseButtons, 0, 1, "reviseRoundings", tr("Revise roundings")), &QPushButton::clicked, this,
+    connect(button(reviseButtons, 0, 1, "reviseRoundings"), &QPushButton::clicked, this,
             [this] { reviseCorners(CornerKind::Rounding); });
     outer->addLayout(reviseButtons);
 
@@ -120,7 +120,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     cornerSize_ = new QLineEdit(revision_);
     cornerSize_->setObjectName(prefix + ".cornerSize");
     cornerSize_->setMaximumWidth(90);
-    auto* done = new QPushButton(tr("Done"), revision_);
+    auto* done = new QPushButton(revision_);
     done->setObjectName(prefix + ".revisionDone");
     done->setAutoDefault(false);
     rev->addWidget(revisionText_, 1);
@@ -133,24 +133,21 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
 
     allowances_ = new EditingTable(0, AllowanceColumns, this);
     allowances_->setObjectName(prefix + ".allowances");
-    allowances_->setHorizontalHeaderLabels(
-        {tr("Edge"), tr("Allowance"), tr("Adjustment"), tr("Relief groove"), tr("Width"), tr("Depth")});
     allowances_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     allowances_->verticalHeader()->setVisible(false);
     allowances_->setEditTriggers(QAbstractItemView::AllEditTriggers);
     allowances_->setMinimumHeight(90);
     allowances_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     allowances_->setMinimumWidth(200);
-    auto* allowanceTitle = new QLabel(tr("Grinding allowance per edge (empty: adjustment from the finishing tool's "
-                                         "nose radius, depth = allowance, no width = no groove)"),
-                                      this);
-    allowanceTitle->setWordWrap(true);
-    outer->addWidget(allowanceTitle);
+    allowanceTitle_ = new QLabel(this);
+    allowanceTitle_->setObjectName(prefix + ".allowancesTitle");
+    allowanceTitle_->setWordWrap(true);
+    outer->addWidget(allowanceTitle_);
     outer->addWidget(allowances_);
     auto* allowanceButtons = new QGridLayout;
-    addAllowance_ = button(allowanceButtons, 0, 0, "addAllowance", tr("Add allowance for picked edge"));
+    addAllowance_ = button(allowanceButtons, 0, 0, "addAllowance");
     connect(addAllowance_, &QPushButton::clicked, this, &ProfileEditor::addAllowance);
-    connect(button(allowanceButtons, 1, 0, "deleteAllowance", tr("Delete allowance")), &QPushButton::clicked, this,
+    connect(button(allowanceButtons, 1, 0, "deleteAllowance"), &QPushButton::clicked, this,
             &ProfileEditor::deleteAllowance);
     outer->addLayout(allowanceButtons);
 
@@ -159,6 +156,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     messages_->setStyleSheet("color: #a00000;");
     messages_->setWordWrap(true);
     outer->addWidget(messages_);
+    nameParts();
 
     connect(rows_, &QTableWidget::itemChanged, this, &ProfileEditor::onRowItem);
     connect(allowances_, &QTableWidget::itemChanged, this, &ProfileEditor::onAllowanceItem);
@@ -184,6 +182,66 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
         if (row >= 0 && row < static_cast<int>(profile_.allowances.size()))
             view_->setSelectedEdge(QString::fromStdString(profile_.allowances[static_cast<std::size_t>(row)].edge));
     });
+}
+
+QStringList ProfileEditor::rowHeadings()
+{
+    return {tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"),    tr("R"),         tr("Centre X"),
+            tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")};
+}
+
+QStringList ProfileEditor::allowanceHeadings()
+{
+    return {tr("Edge"), tr("Allowance"), tr("Adjustment"), tr("Relief groove"), tr("Width"), tr("Depth")};
+}
+
+std::vector<std::pair<QString, int>> ProfileEditor::elementKinds()
+{
+    return {{tr("line"), int(ElementKind::Line)}, {tr("arc CW (G2)"), int(ElementKind::ArcCW)},
+            {tr("arc CCW (G3)"), int(ElementKind::ArcCCW)}};
+}
+
+std::vector<std::pair<QString, int>> ProfileEditor::cornerKinds()
+{
+    return {{tr("none"), int(CornerKind::None)}, {tr("chamfer"), int(CornerKind::Chamfer)},
+            {tr("rounding"), int(CornerKind::Rounding)}};
+}
+
+void ProfileEditor::nameParts()
+{
+    rows_->setHorizontalHeaderLabels(rowHeadings());
+    allowances_->setHorizontalHeaderLabels(allowanceHeadings());
+    rowsTitle_->setText(tr("Profile, in cutting order (X is a diameter; arcs: R, or the centre)"));
+    allowanceTitle_->setText(tr("Grinding allowance per edge (empty: adjustment from the finishing tool's "
+                                "nose radius, depth = allowance, no width = no groove)"));
+    const std::pair<const char*, QString> buttons[] = {
+        {"addRow", tr("Add row")},
+        {"insertRow", tr("Insert row")},
+        {"deleteRow", tr("Delete row")},
+        {"reviseChamfers", tr("Revise chamfers")},
+        {"reviseRoundings", tr("Revise roundings")},
+        {"revisionDone", tr("Done")},
+        {"addAllowance", tr("Add allowance for picked edge")},
+        {"deleteAllowance", tr("Delete allowance")}};
+    for (const auto& [name, text] : buttons)
+        if (auto* b = findChild<QPushButton*>(prefix_ + "." + QString::fromLatin1(name))) b->setText(text);
+    // The code cells' boxes, made by fill(): their items in the new words.
+    const auto rename = [this](int column, const std::vector<std::pair<QString, int>>& items) {
+        for (int r = 0; r < rows_->rowCount(); ++r)
+            if (auto* box = qobject_cast<QComboBox*>(rows_->cellWidget(r, column)))
+                for (const auto& [text, value] : items)
+                    if (const int i = box->findData(value); i >= 0) box->setItemText(i, text);
+    };
+    rename(KindCol, elementKinds());
+    rename(CornerCol, cornerKinds());
+}
+
+void ProfileEditor::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange || !messages_) return;
+    nameParts();
+    if (revising_ != CornerKind::None) revisionText_->setText(revisionLine());
 }
 
 void ProfileEditor::setProfile(const TurnedProfile& p, bool force)
@@ -265,9 +323,7 @@ void ProfileEditor::fill(bool force)
         const ProfileRow& row = profile_.rows[static_cast<std::size_t>(i)];
         set(rows_, i, EdgeCol, QString::fromStdString(edgeId(row.id)), false);
         const auto rowIndex = static_cast<std::size_t>(i);
-        auto* kind = combo(rows_, i, KindCol, "rows.kind",
-                           {{tr("line"), int(ElementKind::Line)}, {tr("arc CW (G2)"), int(ElementKind::ArcCW)},
-                            {tr("arc CCW (G3)"), int(ElementKind::ArcCCW)}},
+        auto* kind = combo(rows_, i, KindCol, "rows.kind", elementKinds(),
                            [rowIndex](TurnedProfile& p, int v) {
                                if (rowIndex < p.rows.size()) p.rows[rowIndex].kind = static_cast<ElementKind>(v);
                            },
@@ -278,9 +334,7 @@ void ProfileEditor::fill(bool force)
         set(rows_, i, RCol, shown(row.radius));
         set(rows_, i, CXCol, shown(row.centreX));
         set(rows_, i, CZCol, shown(row.centreZ));
-        auto* corner = combo(rows_, i, CornerCol, "rows.corner",
-                             {{tr("none"), int(CornerKind::None)}, {tr("chamfer"), int(CornerKind::Chamfer)},
-                              {tr("rounding"), int(CornerKind::Rounding)}},
+        auto* corner = combo(rows_, i, CornerCol, "rows.corner", cornerKinds(),
                              [rowIndex](TurnedProfile& p, int v) {
                                  if (rowIndex < p.rows.size()) p.rows[rowIndex].corner = static_cast<CornerKind>(v);
                              },
@@ -316,13 +370,10 @@ void ProfileEditor::fill(bool force)
 
 QString ProfileEditor::cellName(const QString& field)
 {
-    const QString rowHeads[] = {tr("Edge"), tr("Element"), tr("X (dia.)"), tr("Z"), tr("R"), tr("Centre X"),
-                                tr("Centre Z"), tr("Corner"), tr("Size"), tr("Ra µm"), tr("Tolerance"), tr("Thread pitch")};
-    const QString allowanceHeads[] = {tr("Edge"), tr("Allowance"), tr("Adjustment"), tr("Relief groove"), tr("Width"), tr("Depth")};
     if (const auto at = rowCell(field))
-        return tr("profile row %1, %2").arg(at->first + 1).arg(rowHeads[at->second]);
+        return tr("profile row %1, %2").arg(at->first + 1).arg(rowHeadings().value(at->second));
     if (const auto at = allowanceCell(field))
-        return tr("allowance row %1, %2").arg(at->first + 1).arg(allowanceHeads[at->second]);
+        return tr("allowance row %1, %2").arg(at->first + 1).arg(allowanceHeadings().value(at->second));
     return {};
 }
 

@@ -33,7 +33,8 @@ class ProfileEditor : public QWidget {
     Q_OBJECT
 public:
     // Widget objectNames start with `prefix` ("turn"): "turn.view",
-    // "turn.rows", "turn.allowances", "turn.addRow", "turn.cornerSize", …
+    // "turn.rows", "turn.allowances", "turn.addRow", "turn.cornerSize",
+    // "turn.rowsTitle", …
     explicit ProfileEditor(const QString& prefix, QWidget* parent = nullptr);
 
     // The profile as the job holds it. force = false keeps a cell whose text
@@ -63,10 +64,23 @@ public:
     // tables show it ("allowance row 2, Width"); empty for any other field.
     static QString cellName(const QString& field);
 
+protected:
+    // The language switched: headings, titles, buttons, code cells and the
+    // corner revision's line in the new one.
+    void changeEvent(QEvent* e) override;
+
 signals:
     void edited(const taiwa::turning::TurnedProfile& after, const QString& text, const QString& mergeKey);
 
 private:
+    static QStringList rowHeadings();
+    static QStringList allowanceHeadings();
+    // The code cells' items: their text and value.
+    static std::vector<std::pair<QString, int>> elementKinds();
+    static std::vector<std::pair<QString, int>> cornerKinds();
+    void nameParts();
+    // What the corner revision's line says: how many corners to pick from, or the picked one's size.
+    QString revisionLine() const;
     void fill(bool force);
     void refreshView();
     void onRowItem(QTableWidgetItem* item);
@@ -88,6 +102,8 @@ private:
     QTableWidget* rows_ = nullptr;
     QTableWidget* allowances_ = nullptr;
     QLabel* messages_ = nullptr;
+    QLabel* rowsTitle_ = nullptr;
+    QLabel* allowanceTitle_ = nullptr;
     QPushButton* addAllowance_ = nullptr;
     QWidget* revision_ = nullptr;
     QLabel* revisionText_ = nullptr;

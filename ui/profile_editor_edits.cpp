@@ -174,12 +174,20 @@ void ProfileEditor::reviseCorners(CornerKind kind)
         if (r.corner == kind) ids << QString::fromStdString(cornerEdgeId(r.id));
     view_->setSelectedEdge({});
     view_->setHighlightedCorners(ids);
-    const QString what = kind == CornerKind::Chamfer ? tr("chamfers") : tr("roundings");
-    revisionText_->setText(ids.isEmpty() ? tr("The profile has no %1.").arg(what)
-                                         : tr("%1 %2: pick one in the view").arg(ids.size()).arg(what));
+    revisionText_->setText(revisionLine());
     cornerSize_->clear();
     cornerSize_->setEnabled(false);
     revision_->show();
+}
+
+QString ProfileEditor::revisionLine() const
+{
+    const bool chamfer = revising_ == CornerKind::Chamfer;
+    if (!revisedCorner_.isEmpty()) return (chamfer ? tr("Chamfer %1: leg") : tr("Rounding %1: radius")).arg(revisedCorner_);
+    int corners = 0;
+    for (const auto& r : profile_.rows) corners += r.corner == revising_ ? 1 : 0;
+    const QString what = chamfer ? tr("chamfers") : tr("roundings");
+    return corners == 0 ? tr("The profile has no %1.").arg(what) : tr("%1 %2: pick one in the view").arg(corners).arg(what);
 }
 
 void ProfileEditor::pickCorner(const QString& id)
@@ -189,7 +197,7 @@ void ProfileEditor::pickCorner(const QString& id)
         if (QString::fromStdString(cornerEdgeId(r.id)) != id || r.corner != revising_) continue;
         revisedCorner_ = id;
         view_->setHighlightedCorners({id});
-        revisionText_->setText((revising_ == CornerKind::Chamfer ? tr("Chamfer %1: leg") : tr("Rounding %1: radius")).arg(id));
+        revisionText_->setText(revisionLine());
         cornerSize_->setEnabled(true);
         cornerSize_->setText(formatShown(r.cornerSize));
         cornerSize_->setFocus();

@@ -8,12 +8,14 @@
 
 #include <QBrush>
 #include <QCheckBox>
+#include <QEvent>
 #include <QColor>
 #include <QLocale>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 #include <exception>
@@ -59,30 +61,21 @@ QString swatch(viz::Rgb c, const QString& text)
 }  // namespace
 
 VerificationPanel::VerificationPanel(QWidget* parent)
-    : QWidget(parent), run_(new QPushButton(tr("&Verify"), this)), summary_(new QLabel(this)), list_(new QListWidget(this)),
-      colourMap_(new QCheckBox(tr("Colour &map"), this)), legend_(new QLabel(this))
+    : QWidget(parent), run_(new QPushButton(this)), summary_(new QLabel(this)), list_(new QListWidget(this)),
+      colourMap_(new QCheckBox(this)), legend_(new QLabel(this))
 {
     pool_.setMaxThreadCount(1);
     run_->setObjectName("verify.run");
-    run_->setToolTip(tr("Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into "
-                        "stock, travel limits and material left")
-                         .arg(QLocale().toString(verify::Options{}.resolution)));
     summary_->setObjectName("verify.summary");
     summary_->setWordWrap(true);
     list_->setObjectName("verify.findings");
     list_->setWordWrap(true);
     colourMap_->setObjectName("verify.colourMap");
-    colourMap_->setToolTip(tr("Show the finished part in the 3-D view coloured by what the verification found"));
     legend_->setObjectName("verify.legend");
     legend_->setWordWrap(true);
     legend_->setTextFormat(Qt::RichText);
-    const QString mm = QLocale().toString(verify::kThinRest), mm2 = QLocale().toString(verify::kMediumRest);
-    legend_->setText(QStringList{swatch(viz::palette::kGouge, tr("gouge")), swatch(viz::palette::kAtSize, tr("at size")),
-                                 swatch(viz::palette::kRestThin, tr("up to %1 mm left").arg(mm)),
-                                 swatch(viz::palette::kRestMedium, tr("up to %1 mm left").arg(mm2)),
-                                 swatch(viz::palette::kRestThick, tr("more left"))}
-                         .join(QStringLiteral(" &nbsp; ")));
     legend_->hide();
+    nameParts();
     // The summary on a line of its own under the buttons: beside them, at
     // 1366 px, a Japanese sentence had a column a few characters wide.
     auto* top = new QHBoxLayout;
@@ -103,6 +96,33 @@ VerificationPanel::VerificationPanel(QWidget* parent)
 
 VerificationPanel::~VerificationPanel() { pool_.waitForDone(); }
 
+void VerificationPanel::nameParts()
+{
+    run_->setText(tr("&Verify"));
+    run_->setToolTip(tr("Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into "
+                        "stock, travel limits and material left")
+                         .arg(QLocale().toString(verify::Options{}.resolution)));
+    colourMap_->setText(tr("Colour &map"));
+    colourMap_->setToolTip(tr("Show the finished part in the 3-D view coloured by what the verification found"));
+    const QString mm = QLocale().toString(verify::kThinRest), mm2 = QLocale().toString(verify::kMediumRest);
+    legend_->setText(QStringList{swatch(viz::palette::kGouge, tr("gouge")), swatch(viz::palette::kAtSize, tr("at size")),
+                                 swatch(viz::palette::kRestThin, tr("up to %1 mm left").arg(mm)),
+                                 swatch(viz::palette::kRestMedium, tr("up to %1 mm left").arg(mm2)),
+                                 swatch(viz::palette::kRestThick, tr("more left"))}
+                         .join(QStringLiteral(" &nbsp; ")));
+}
+
+void VerificationPanel::changeEvent(QEvent* e)
+{
+    QWidget::changeEvent(e);
+    if (e->type() != QEvent::LanguageChange) return;
+    nameParts();
+    const int row = list_->currentRow();
+    const QSignalBlocker quiet(list_);  // the same finding chosen again: nothing to announce
+    showReport();
+    list_->setCurrentRow(row);
+}
+
 void VerificationPanel::setPlan(std::shared_ptr<const Plan> plan)
 {
     if (plan && plan == plan_) return;
@@ -112,24 +132,25 @@ void VerificationPanel::setPlan(std::shared_ptr<const Plan> plan)
     map_ = nullptr;
     colourMap_->setEnabled(false);
     showColourMap();
-    list_->clear();
+    reported_ = false;
+    verifying_ = false;
     run_->setEnabled(plan_ && !busy_);
-    summary_->setText(plan_ ? tr("Not verified since the last change.") : tr("No plan to verify."));
-    summary_->setStyleSheet(QString());
+    showReport();
 }
 
 void VerificationPanel::verify()
 {
     if (!plan_ || busy_) return;
     busy_ = true;
+    verifying_ = true;
     run_->setEnabled(false);
-    summary_->setText(tr("Verifying…"));
+    showReport();
     pool_.start([this, generation = generation_, plan = plan_] {
         auto r = std::make_shared<verify::Report>(reportOf(*plan));
         auto map = mapOf(*plan, *r);
         r->stock = {};  // the map keeps what is drawn of it
         QMetaObject::invokeMethod(
-            this, [this, generation, plan, r, map] { show(generation, plan, *r, map); }, Qt::QueuedConnection);
+            this, [this, generation, r, map] { show(generation, *r, map); }, Qt::QueuedConnection);
     });
 }
 
@@ -140,40 +161,52 @@ void VerificationPanel::verifyNow()
     verify::Report r = reportOf(*plan_);
     auto map = mapOf(*plan_, r);
     r.stock = {};
-    show(generation_, plan_, r, map);
+    show(generation_, r, map);
 }
 
-void VerificationPanel::show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r,
-                             std::shared_ptr<const verify::DeviationMap> map)
+void VerificationPanel::show(std::uint64_t generation, const verify::Report& r, std::shared_ptr<const verify::DeviationMap> map)
 {
     busy_ = false;
     run_->setEnabled(plan_ != nullptr);
     if (generation != generation_) return;  // the plan changed meanwhile: that result is for the old one
     report_ = r;
+    reported_ = true;
+    verifying_ = false;
     map_ = std::move(map);
     colourMap_->setEnabled(map_ != nullptr);
     showColourMap();
+    showReport();
+    emit verified();
+}
+
+void VerificationPanel::showReport()
+{
     list_->clear();
+    summary_->setStyleSheet(QString());
+    if (!reported_) {
+        summary_->setText(verifying_ ? tr("Verifying…") : plan_ ? tr("Not verified since the last change.") : tr("No plan to verify."));
+        return;
+    }
+    const verify::Report& r = report_;
     for (const verify::Finding& f : r.findings) {
-        auto* item = new QListWidgetItem(coreMessage(verify::describe(f, *plan)), list_);
+        auto* item = new QListWidgetItem(coreMessage(verify::describe(f, *plan_)), list_);
         if (f.fatal()) item->setForeground(QBrush(QColor(192, 0, 0)));
     }
     if (!r.skipped.empty()) {
         summary_->setText(tr("Not verified: %1").arg(coreMessage(r.skipped)));
-    } else {
-        int faults = 0;
-        for (const auto& f : r.findings) faults += f.fatal() ? 1 : 0;
-        const int left = r.count(verify::FindingKind::RestMaterial);
-        summary_->setText(faults == 0 && left == 0
-                              ? tr("Verified at %1 mm: clean.").arg(QLocale().toString(r.resolution))
-                              : tr("Verified at %1 mm: %2 faults, %3 with material left.")
-                                    .arg(QLocale().toString(r.resolution))
-                                    .arg(faults)
-                                    .arg(left));
-        summary_->setStyleSheet(faults > 0 ? "color: #c00000; font-weight: bold;" : "");
-        if (!r.coarsened.empty()) summary_->setText(summary_->text() + "\n" + coreMessage(r.coarsened));
+        return;
     }
-    emit verified();
+    int faults = 0;
+    for (const auto& f : r.findings) faults += f.fatal() ? 1 : 0;
+    const int left = r.count(verify::FindingKind::RestMaterial);
+    summary_->setText(faults == 0 && left == 0
+                          ? tr("Verified at %1 mm: clean.").arg(QLocale().toString(r.resolution))
+                          : tr("Verified at %1 mm: %2 faults, %3 with material left.")
+                                .arg(QLocale().toString(r.resolution))
+                                .arg(faults)
+                                .arg(left));
+    summary_->setStyleSheet(faults > 0 ? "color: #c00000; font-weight: bold;" : "");
+    if (!r.coarsened.empty()) summary_->setText(summary_->text() + "\n" + coreMessage(r.coarsened));
 }
 
 void VerificationPanel::showColourMap()

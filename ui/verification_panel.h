@@ -46,6 +46,11 @@ public:
     // job and after a new plan).
     const std::shared_ptr<const verify::DeviationMap>& deviationMap() const { return map_; }
 
+protected:
+    // The language switched: the buttons, the legend, the summary and the
+    // findings in the new one.
+    void changeEvent(QEvent* e) override;
+
 signals:
     // The operator chose a finding: its step (-1: the whole job), move (-1:
     // the step as a whole) and worst point.
@@ -57,8 +62,13 @@ signals:
     void colourMapChanged(std::shared_ptr<const taiwa::verify::DeviationMap> map);
 
 private:
-    void show(std::uint64_t generation, std::shared_ptr<const Plan> plan, const verify::Report& r,
-              std::shared_ptr<const verify::DeviationMap> map);
+    void nameParts();
+    // The summary and the findings of the state shown (no plan, not
+    // verified, verifying, the report), in the language in force.
+    void showReport();
+    // A verification's result for the plan of setPlan's `generation` (an
+    // older one's is dropped).
+    void show(std::uint64_t generation, const verify::Report& r, std::shared_ptr<const verify::DeviationMap> map);
     void showColourMap();
     void onRowChanged(int row);
 
@@ -72,6 +82,8 @@ private:
     std::shared_ptr<const verify::DeviationMap> map_;
     std::uint64_t generation_ = 0;  // of setPlan: a result for an older plan is dropped
     bool busy_ = false;
+    bool reported_ = false;   // report_ is the current plan's, shown
+    bool verifying_ = false;  // the current plan is being verified
     QThreadPool pool_;
 };
 
