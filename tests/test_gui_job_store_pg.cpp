@@ -50,7 +50,7 @@ std::string lockHolder(PgJobStore& jobs, const std::string& name)
 QString firstDepth(const std::string& text)
 {
     const QString t = QString::fromStdString(text);
-    const int at = t.indexOf("\"depth\": ");
+    const qsizetype at = t.indexOf("\"depth\": ");
     return at < 0 ? QString() : t.mid(at + 9, t.indexOf(',', at) - at - 9);
 }
 
