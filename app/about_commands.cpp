@@ -72,6 +72,13 @@ Usage:
                                    version, who saved it from which station
                                    and when, and who has it open; or every
                                    version of job NAME; tab-separated lines
+  taiwa store locks | taiwa store unlock NAME [--force]
+                                   the jobs some station has open (its lock),
+                                   with who and since when and whether that
+                                   station is connected now; or job NAME's
+                                   lock released, saying whose it was: refused
+                                   while its station is connected, unless
+                                   --force
   taiwa --list-machines | --list-dialects
                                    the machines and dialects this program knows
                                    (shipped, and the shop's own in

@@ -2,7 +2,7 @@
 // `taiwa export JOB --out DIR ...`, `taiwa verify JOB ...` (its report in
 // app/verify_command.cpp), `taiwa render JOB --out PNG ...`, `taiwa import
 // STEP` and `taiwa figure-from-dxf FILE.dxf ...` (app/import_commands.cpp),
-// `taiwa store list|history` and `taiwa import-tools`
+// `taiwa store list|history|locks|unlock` and `taiwa import-tools`
 // (app/store_command.cpp), `--version`, `--help`, `--list-machines` and
 // `--list-dialects` (app/about_commands.cpp). Exit codes (app/exit_codes.h):
 // 0 ok, 2 input errors, 3 verification faults, 1 internal failure.
@@ -266,7 +266,7 @@ int run(int argc, char** argv)
         case Command::Import: return importStep(o);
         case Command::FigureFromDxf: return figureFromDxf(o);
         case Command::ImportTools: return importTools(o.job, o.tools);
-        case Command::Store: return storeCommand(o.storeAction, o.job, o.tools);
+        case Command::Store: return storeCommand(o.storeAction, o.job, o.force, o.tools);
         case Command::ListMachines: return listMachines();
         case Command::ListDialects: return listDialects();
         case Command::Station:

@@ -96,8 +96,9 @@ Result<void> missing(const Options& o)
     if (o.command == Command::FigureFromDxf && o.job.empty()) return Failure{std::string("no DXF file given")};
     if (o.command == Command::ImportTools && o.job.empty()) return Failure{std::string("no SQLite tool library given")};
     if (o.command == Command::Store) {
-        if (o.storeAction == "list" && !o.job.empty()) return Failure{"store list takes no job name ('" + o.job + "')"};
-        if (o.storeAction == "history" && o.job.empty()) return Failure{std::string("store history needs the job's name")};
+        const bool named = o.storeAction == "history" || o.storeAction == "unlock";
+        if (!named && !o.job.empty()) return Failure{"store " + o.storeAction + " takes no job name ('" + o.job + "')"};
+        if (named && o.job.empty()) return Failure{"store " + o.storeAction + " needs the job's name"};
         return {};
     }
     if (!o.fromStore.empty() && !o.job.empty()) return Failure{"give a job file or --from-store, not both ('" + o.job + "', '" + o.fromStore + "')"};
@@ -129,10 +130,11 @@ Result<void> parseOptions(int argc, char** argv, Options& o)
         else if (first == "import") o.command = Command::Import, i = 1;
         else if (first == "figure-from-dxf") o.command = Command::FigureFromDxf, i = 1;
         else if (first == "import-tools") o.command = Command::ImportTools, i = 1;
-        else if (first == "store") {  // store list, store history NAME
+        else if (first == "store") {  // store list, store history NAME, store locks, store unlock NAME [--force]
             o.command = Command::Store, i = 2;
-            if (args.size() < 2 || (args[1] != "list" && args[1] != "history"))
-                return Failure{std::string("store wants 'list' or 'history NAME'") + (args.size() < 2 ? "" : ", not '" + std::string(args[1]) + "'")};
+            if (args.size() < 2 || (args[1] != "list" && args[1] != "history" && args[1] != "locks" && args[1] != "unlock"))
+                return Failure{std::string("store wants 'list', 'history NAME', 'locks' or 'unlock NAME [--force]'") +
+                               (args.size() < 2 ? "" : ", not '" + std::string(args[1]) + "'")};
             o.storeAction = args[1];
         }
     }
@@ -160,7 +162,8 @@ Result<void> parseOptions(int argc, char** argv, Options& o)
         }
         if (a == "--stock" || a == "--json" || a == "--force" || a == "--no-pictures") {
             const Command wanted = a == "--stock" ? Command::Render : a == "--json" ? Command::Verify : Command::Export;
-            if (o.command != wanted) return Failure{"option " + std::string(a) + " does not go with this command"};
+            const bool unlockForce = a == "--force" && o.command == Command::Store && o.storeAction == "unlock";
+            if (o.command != wanted && !unlockForce) return Failure{"option " + std::string(a) + " does not go with this command"};
             if (a == "--no-pictures") o.pictures = false;
             else (a == "--stock" ? o.stock : a == "--json" ? o.json : o.force) = true;
             continue;

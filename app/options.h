@@ -17,8 +17,8 @@ enum class Command {
 struct Options {
     Command command = Command::Station;
     std::string job;                  // JOB argument (import: the STEP file; figure-from-dxf: the DXF file;
-                                      // import-tools: the SQLite library; store history: the job's name)
-    std::string storeAction;          // store: list or history
+                                      // import-tools: the SQLite library; store history, unlock: the job's name)
+    std::string storeAction;          // store: list, history, locks or unlock
     std::string out;                  // --out
     std::string dialect;              // --dialect; empty: the job's, else linuxcnc
     std::optional<LengthUnit> units;  // --units (figure-from-dxf: the drawing's)
@@ -30,7 +30,8 @@ struct Options {
     std::string material = "steel-s45c";  // --material (import)
     std::optional<double> resolution;  // --resolution (verify, export) [mm]; none: verify::defaultResolution
     bool json = false;                // --json (verify)
-    bool force = false;               // --force (export): write a tape the verification finds fault with
+    bool force = false;               // --force (export): write a tape the verification finds fault with;
+                                      // (store unlock): release a lock whose station is connected
     bool cache = true;                // verify, export: the verification cache (--no-cache: verify afresh, store nothing read)
     bool pictures = true;             // export: the sheet's pictures of the steps (--no-pictures: none)
     std::vector<std::string> layers;  // --layers A,B (figure-from-dxf); empty: all

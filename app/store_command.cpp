@@ -1,5 +1,5 @@
 // The job store's commands (store_command.h): a job fetched for `taiwa
-// export --from-store NAME`, `taiwa store list|history`, `taiwa import-tools`.
+// export --from-store NAME`, `taiwa store list|history|locks|unlock`, `taiwa import-tools`.
 #include "app/store_command.h"
 
 #include "tools/pg_job_store.h"
@@ -51,8 +51,7 @@ Result<std::string> fetchStoredJob(const std::string& name, const std::string& t
     auto text = jobs.load(name);
     if (!text) return Failure{text.error()};
     // The file's name is the job's, made safe for a file name (the tape's stem).
-    std::string stem;
-    for (char c : name) stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
+    const std::string stem = jobFileStem(name);
     std::error_code ec;
     const auto dir = std::filesystem::temp_directory_path(ec) / fmt::format("taiwa-store-{}", ::getpid());
     std::filesystem::create_directories(dir, ec);
@@ -104,21 +103,51 @@ int importTools(const std::string& file, const std::string& toolsSetting)
     return 0;
 }
 
-int storeCommand(const std::string& action, const std::string& name, const std::string& toolsSetting)
+namespace {
+
+// `taiwa store unlock NAME [--force]`: who held the lock and since when on
+// stdout; a live holder refused (exit 2) with what --force would mean.
+int unlockJob(PgJobStore& jobs, const std::string& name, bool force, const std::string& server)
+{
+    auto released = jobs.release(name, force);
+    if (!released) {
+        const std::string& why = released.error();
+        const bool refused = why.starts_with("job '") || why.find(" has no job '") != std::string::npos;
+        std::cerr << "taiwa: store unlock: " << why;
+        if (why.starts_with("job '"))
+            std::cerr << ". --force releases it all the same: that station keeps the job open without the lock, so another station "
+                         "may open and save it meanwhile; every save stays a version of its own in the history (nothing is "
+                         "overwritten), and that station's next save takes no lock";
+        std::cerr << '\n';
+        return refused ? 2 : 1;
+    }
+    if (!*released) {
+        std::cout << "taiwa: job '" << field(name) << "' of " << server << " was not locked; nothing was changed\n";
+        return 0;
+    }
+    const JobLock& l = **released;
+    std::cout << "taiwa: released the lock of job '" << field(name) << "' held by station " << field(l.station) << " (" << field(l.by)
+              << ") since " << l.at << (l.stationConnected ? "; the station is connected and now edits the job without the lock" : "")
+              << '\n';
+    return 0;
+}
+
+}  // namespace
+
+int storeCommand(const std::string& action, const std::string& name, bool force, const std::string& toolsSetting)
 {
     const std::string command = "store " + action;
+    // The reason on stderr, and the exit code.
+    const auto refused = [&](const std::string& why, int exit) {
+        std::cerr << "taiwa: " << command << ": " << why << '\n';
+        return exit;
+    };
     auto server = jobServer(toolsSetting, "the job store");
-    if (!server) {
-        std::cerr << "taiwa: " << command << ": " << server.error() << '\n';
-        return 2;
-    }
+    if (!server) return refused(server.error(), 2);
     PgJobStore jobs(**server);
     if (action == "list") {
         auto list = jobs.list();
-        if (!list) {
-            std::cerr << "taiwa: " << command << ": " << list.error() << '\n';
-            return 1;
-        }
+        if (!list) return refused(list.error(), 1);
         for (const StoredJob& j : *list)
             std::cout << field(j.name) << '\t' << j.newest.version << '\t' << field(j.newest.who) << '\t' << field(j.newest.station) << '\t'
                       << j.newest.at << '\t'
@@ -128,15 +157,19 @@ int storeCommand(const std::string& action, const std::string& name, const std::
         if (list->empty()) std::cerr << "taiwa: " << command << ": " << (*server)->name() << " holds no jobs\n";
         return 0;
     }
+    if (action == "locks") {
+        auto locks = jobs.locks();
+        if (!locks) return refused(locks.error(), 1);
+        for (const JobLock& l : *locks)
+            std::cout << field(l.job) << '\t' << field(l.station) << '\t' << field(l.by) << '\t' << l.at << '\t'
+                      << (l.stationConnected ? "station connected" : "station not connected") << '\n';
+        if (locks->empty()) std::cerr << "taiwa: " << command << ": no job of " << (*server)->name() << " is locked\n";
+        return 0;
+    }
+    if (action == "unlock") return unlockJob(jobs, name, force, (*server)->name());
     auto history = jobs.history(name);
-    if (!history) {
-        std::cerr << "taiwa: " << command << ": " << history.error() << '\n';
-        return 1;
-    }
-    if (history->empty()) {
-        std::cerr << "taiwa: " << command << ": " << fmt::format("{} has no job '{}'", (*server)->name(), name) << '\n';
-        return 2;
-    }
+    if (!history) return refused(history.error(), 1);
+    if (history->empty()) return refused(fmt::format("{} has no job '{}'", (*server)->name(), name), 2);
     for (const JobVersionInfo& v : *history) std::cout << v.version << '\t' << field(v.who) << '\t' << field(v.station) << '\t' << v.at << '\n';
     return 0;
 }

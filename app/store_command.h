@@ -26,8 +26,13 @@ int importTools(const std::string& file, const std::string& toolsSetting);
 // newest version, who saved it, from which station, when, and who holds
 // its lock) and `taiwa store history NAME` (every version of job `name`,
 // oldest first: version, who, station, when), tab-separated on stdout.
-// Exit 0; 2 when the setting names no server, the server cannot be
-// reached or has no job NAME (the reason on stderr); 1 when it fails.
-int storeCommand(const std::string& action, const std::string& name, const std::string& toolsSetting);
+// `taiwa store locks` (every locked job: name, station, who, since when,
+// and whether that station is connected now) and `taiwa store unlock NAME
+// [--force]` (the lock released whoever holds it, saying who held it and
+// since when; refused while the holding station is connected, unless
+// `force`). Exit 0; 2 when the setting names no server, the server cannot
+// be reached or has no job NAME, or the unlock is refused (the reason on
+// stderr); 1 when it fails.
+int storeCommand(const std::string& action, const std::string& name, bool force, const std::string& toolsSetting);
 
 }  // namespace taiwa::app

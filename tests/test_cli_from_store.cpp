@@ -5,7 +5,7 @@
 // tool setting that is a file, both a file and --from-store); `taiwa
 // import-tools`; `taiwa store list` and `taiwa store history NAME`; and the
 // sheet saying where its tools came from (the server's library, or its copy
-// while the server is away).
+// while the server is away); `taiwa store locks` and `taiwa store unlock`.
 #include "support/pg_server.h"
 #include "support/support.h"
 #include "tools/pg_job_store.h"
@@ -251,6 +251,105 @@ private slots:
         r = runTaiwa({"store", "history", "plate"}, env);
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(uri + " cannot be reached"), qPrintable(r.err));
+    }
+
+    // `taiwa store locks` and `taiwa store unlock NAME [--force]`: the locks
+    // with their holders and whether each holder is connected; a stale lock
+    // (its station gone) released, saying whose it was and since when; a
+    // connected station's lock refused, saying what --force means, and
+    // released with it; the calls that are not one refused. The command
+    // runs as a station's role, not the superuser: pg_stat_activity must
+    // show it the other roles' stations.
+    void releasesAStaleLockAndRefusesALiveOne()
+    {
+        TAIWA_START_PG_SERVER(server);
+        QTemporaryDir home;
+        auto office = PgToolStore::open(server.uri(), {home.filePath("office.sqlite").toStdString(), "office", 3});
+        QVERIFY2(office, office.ok() ? "" : office.error().c_str());
+        QVERIFY2(server.psql(QString::fromStdString(test::readFile(test::sourcePath("resources/db/roles.sql")))), qPrintable(server.why()));
+        QVERIFY(server.psql("CREATE ROLE foreman LOGIN IN ROLE taiwa_tool_reader, taiwa_job_writer"));
+        const QString uri = QString::fromStdString(server.uri("foreman"));
+        const QStringList env{"TAIWA_TOOL_DB=" + uri, "XDG_DATA_HOME=" + home.path(), "TAIWA_STATION=office"};
+        PgJobStore atOffice(**office);
+        QCOMPARE(*atOffice.save("plate", "one"), 1);
+        QCOMPARE(*atOffice.save("bracket", "two"), 1);
+        QCOMPARE(*atOffice.save("flange", "three"), 1);
+        // machine-2 holds plate and stays connected; lathe-1 holds bracket and goes (a crash).
+        auto machine = PgToolStore::open(server.uri(), {home.filePath("machine.sqlite").toStdString(), "machine-2", 3});
+        QVERIFY(machine);
+        PgJobStore atMachine(**machine);
+        QVERIFY(atMachine.lock("plate"));
+        {
+            auto lathe = PgToolStore::open(server.uri(), {home.filePath("lathe.sqlite").toStdString(), "lathe-1", 3});
+            QVERIFY(lathe);
+            QVERIFY(PgJobStore(**lathe).lock("bracket"));
+            const auto locks = atOffice.locks();
+            QVERIFY(locks && locks->size() == 2 && (*locks)[0].stationConnected);  // lathe-1 still there
+        }
+        // Its session ends a moment after the connection is closed.
+        QTRY_VERIFY_WITH_TIMEOUT(!atOffice.locks()->front().stationConnected, 5000);
+
+        const QString when = "\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\dZ";
+        auto r = runTaiwa({"store", "locks"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QStringList locks = r.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(locks.size(), 2);
+        QVERIFY2(QRegularExpression("^bracket\tlathe-1\ttaiwa_admin\t" + when + "\tstation not connected$").match(locks[0]).hasMatch(),
+                 qPrintable(locks[0]));
+        QVERIFY2(QRegularExpression("^plate\tmachine-2\ttaiwa_admin\t" + when + "\tstation connected$").match(locks[1]).hasMatch(),
+                 qPrintable(locks[1]));
+        const QString plateSince = locks[1].split('\t')[3], bracketSince = locks[0].split('\t')[3];
+
+        // The connected station's lock: refused, the holder and what --force means said, the lock kept.
+        r = runTaiwa({"store", "unlock", "plate"}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("taiwa: store unlock: job 'plate' is open at station machine-2 (by taiwa_admin since " + plateSince +
+                                ") and that station is connected to the server now; its lock was not released. --force releases it "
+                                "all the same: that station keeps the job open without the lock") &&
+                     r.err.contains("nothing is overwritten") && r.out.isEmpty(),
+                 qPrintable(r.err));
+        QCOMPARE(QString::fromStdString(atOffice.list()->at(1).name), QString("flange"));
+        QCOMPARE(QString::fromStdString(atOffice.list()->at(2).lockedStation), QString("machine-2"));
+        QVERIFY(!atOffice.lock("plate"));
+
+        // The stale one: released, saying whose it was; run at the crashed station
+        // itself (its own session is not a connected holder).
+        r = runTaiwa({"store", "unlock", "bracket"}, {"TAIWA_TOOL_DB=" + uri, "XDG_DATA_HOME=" + home.path(), "TAIWA_STATION=lathe-1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.out, "taiwa: released the lock of job 'bracket' held by station lathe-1 (taiwa_admin) since " + bracketSince + "\n");
+        QVERIFY(atOffice.list()->at(0).lockedStation.empty());
+        QVERIFY(atOffice.lock("bracket"));  // free for another station now
+        QVERIFY(atOffice.unlock("bracket"));
+        r = runTaiwa({"store", "unlock", "bracket"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.startsWith("taiwa: job 'bracket' of postgresql://foreman@") && r.out.contains(" was not locked; nothing was changed"),
+                 qPrintable(r.out));
+        r = runTaiwa({"store", "unlock", "nothing"}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("has no job 'nothing'") && r.out.isEmpty(), qPrintable(r.err));
+
+        // Forced: released, and the station told it edits without the lock; its save still goes in as a version.
+        r = runTaiwa({"store", "unlock", "plate", "--force"}, env);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.out, "taiwa: released the lock of job 'plate' held by station machine-2 (taiwa_admin) since " + plateSince +
+                            "; the station is connected and now edits the job without the lock\n");
+        QVERIFY(atOffice.list()->at(2).lockedStation.empty());
+        QCOMPARE(*atMachine.save("plate", "four"), 2);
+        QVERIFY(atOffice.lock("plate"));
+        QVERIFY(!atMachine.save("plate", "five"));  // the office holds it now
+        r = runTaiwa({"store", "locks"}, env);
+        QVERIFY2(r.exitCode == 0 && r.out.startsWith("plate\toffice\t"), qPrintable(r.out));
+        QVERIFY2(r.out.endsWith("\tstation connected\n"), qPrintable(r.out));  // this test's own connection as office
+
+        for (const QStringList& call : {QStringList{"store", "unlock"}, QStringList{"store", "locks", "plate"},
+                                        QStringList{"store", "list", "--force"}, QStringList{"store", "history", "plate", "--force"},
+                                        QStringList{"store", "unlock", "plate", "bracket"}}) {
+            r = runTaiwa(call, env);
+            QVERIFY2(r.exitCode == 2 && r.err.contains("Try 'taiwa --help'"), qPrintable(call.join(' ') + ": " + r.err));
+        }
+        r = runTaiwa({"store", "unlock", "plate"}, {"TAIWA_TOOL_DB=" + home.filePath("tools.sqlite")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("store unlock: the job store needs the shop server"), qPrintable(r.err));
     }
 };
 

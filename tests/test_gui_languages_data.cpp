@@ -2,7 +2,9 @@
 // language (a material's description and a machine's name in the job
 // properties, the default tools' names in the tool library dialog and in a
 // tool-choice refusal; a tool the shop named itself keeps its name), the
-// offsets a controller offers, and the STEP importer's refusals.
+// offsets a controller offers, the STEP importer's refusals, and the shop
+// server's texts (the job store's menu items and refusals, the tool store's
+// failures and status).
 #include "machine/machine.h"
 #include "model/technology.h"
 #include "post/post.h"
@@ -16,8 +18,10 @@
 #include "ui/job_properties.h"
 #include "ui/language.h"
 #include "ui/station_window.h"
+#include "ui/store_actions.h"
 #include "ui/tool_library_dialog.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QSignalSpy>
@@ -185,6 +189,52 @@ class TestGuiLanguagesData : public QObject {
         QCOMPARE(said.size(), 2);
         QCOMPARE(said[0][0].toString(), QString("%1: STEP ファイルでないか、壊れています").arg(text));
         QCOMPARE(said[1][0].toString(), QString("%1: 開けません (ファイルがありません)").arg(dir_.filePath("missing.step")));
+    }
+
+    // The shop server's texts (docs/shop-server.md): the File menu's job
+    // store items, the store's refusal where the setting names a file, the
+    // tool store's failures (their "saving tool T27" translated too), the
+    // status while the server is away and a lock's refusal, in Japanese and
+    // Chinese; English where the station speaks English.
+    void shopServerTextsTranslated()
+    {
+        const std::string failed = "postgresql://office@crib:5432/taiwa: saving tool T27 failed (server closed the connection)";
+        const std::string away = "tools as of 2026-11-29T07:40:12Z (read only: postgresql://office@crib:5432/taiwa cannot be reached)";
+        const std::string held = "job 'plate' is open at station machine-2 (by machine2 since 2026-11-29T09:05:00Z) and that station is "
+                                 "connected to the server now; its lock was not released";
+        QCOMPARE(coreMessage(failed), QString::fromStdString(failed));
+        const auto storeTexts = [&](QString* openText, QString* refusal) {
+            StationWindow w;
+            auto* open = w.findChild<QAction*>("action.openFromStore");
+            QVERIFY(open && !open->isEnabled());  // the setting names a file
+            *openText = open->text();
+            QSignalSpy said(w.fileActions(), &FileActions::message);
+            QVERIFY(!w.fileActions()->store()->openStored("plate"));
+            QCOMPARE(said.size(), 1);
+            *refusal = said[0][0].toString();
+        };
+        const QString file = qEnvironmentVariable("TAIWA_TOOL_DB");
+        QString openText, refusal;
+        storeTexts(&openText, &refusal);
+        QCOMPARE(openText, QString("Open from the s&hop server…"));
+        QCOMPARE(refusal, QString("The job store needs the shop server: TAIWA_TOOL_DB names the file %1, not a server").arg(file));
+
+        speak("ja");
+        storeTexts(&openText, &refusal);
+        QCOMPARE(openText, QString("共有サーバーから開く(&H)…"));
+        QCOMPARE(refusal, QString("ジョブストアには共有サーバーが必要です: TAIWA_TOOL_DB はサーバーではなくファイル %1 を指しています").arg(file));
+        QCOMPARE(coreMessage(failed), QString("postgresql://office@crib:5432/taiwa: 工具 T27 の保存 に失敗しました（server closed the connection）"));
+        QCOMPARE(coreMessage(away), QString("2026-11-29T07:40:12Z 時点の工具（読み取り専用: postgresql://office@crib:5432/taiwa に接続できません）"));
+        QCOMPARE(coreMessage(held), QString("ジョブ 'plate' はステーション machine-2 で開かれており（machine2、2026-11-29T09:05:00Z から）、"
+                                            "そのステーションは現在サーバーに接続しています。ロックは解除されませんでした"));
+
+        speak("zh");
+        storeTexts(&openText, &refusal);
+        QCOMPARE(openText, QString("从车间服务器打开(&H)…"));
+        QCOMPARE(refusal, QString("作业库需要车间服务器：TAIWA_TOOL_DB 指向的是文件 %1，而不是服务器").arg(file));
+        QCOMPARE(coreMessage(failed), QString("postgresql://office@crib:5432/taiwa：保存刀具 T27 失败（server closed the connection）"));
+        QCOMPARE(coreMessage(away), QString("2026-11-29T07:40:12Z 时的刀具（只读：无法连接 postgresql://office@crib:5432/taiwa）"));
+        QCOMPARE(coreMessage(held), QString("作业 'plate' 正在工位 machine-2 打开（machine2，自 2026-11-29T09:05:00Z 起），该工位当前已连接服务器；其锁未被释放"));
     }
 };
 

@@ -17,6 +17,8 @@
 #include "ui/export_dialog.h"
 #include "ui/job_document.h"
 #include "ui/plan_runner.h"
+#include "ui/store_actions.h"
+#include "tools/pg_job_store.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -35,8 +37,23 @@ constexpr int kMaxRecent = 8;
 }  // namespace
 
 FileActions::FileActions(JobDocument* doc, PlanRunner* runner, Autosaver* autosave, QWidget* window)
-    : QObject(window), doc_(doc), autosave_(autosave), runner_(runner), window_(window)
+    : QObject(window), doc_(doc), autosave_(autosave), runner_(runner), window_(window),
+      store_(new StoreActions(doc, this, window))
 {
+    connect(store_, &StoreActions::message, this, &FileActions::message);
+}
+
+QString FileActions::stem() const
+{
+    if (doc_->path().isEmpty() && !store_->storedName().isEmpty())
+        return QString::fromStdString(jobFileStem(store_->storedName().toStdString()));
+    return exportStem(doc_->path());
+}
+
+QString FileActions::title() const
+{
+    if (doc_->path().isEmpty() && !store_->storedName().isEmpty()) return tr("%1 (shop server)").arg(store_->storedName());
+    return doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
 }
 
 bool FileActions::promptsDisabled() { return qEnvironmentVariable("TAIWA_NO_PROMPTS") == "1"; }
@@ -111,7 +128,11 @@ bool FileActions::openPath(const QString& path)
     return true;
 }
 
-bool FileActions::save() { return doc_->path().isEmpty() ? saveAs() : saveTo(doc_->path()); }
+bool FileActions::save()
+{
+    if (doc_->path().isEmpty() && !store_->storedName().isEmpty()) return store_->saveToStore();
+    return doc_->path().isEmpty() ? saveAs() : saveTo(doc_->path());
+}
 
 bool FileActions::saveAs()
 {
@@ -209,12 +230,14 @@ bool FileActions::exportTo(const ExportChoice& c)
     ExportOptions eo;
     eo.dialect = c.dialect.toStdString();
     eo.units = c.units;
-    eo.jobFile = QFileInfo(doc_->path()).fileName().toStdString();
+    // A stored job: named as `taiwa export --from-store` names it (its fetched file's name).
+    eo.jobFile = doc_->path().isEmpty() && !store_->storedName().isEmpty() ? stem().toStdString() + ".taiwa"
+                                                                           : QFileInfo(doc_->path()).fileName().toStdString();
     eo.verificationFaults = faults;
     eo.toolsOrigin = runner_->toolsOrigin();
     // The same drawing as `taiwa export`'s (export/sheet_pictures.h): the same pixels.
     const std::string problem = c.pictures ? addSheetPictures(*plan, eo) : std::string();
-    const auto written = exportPlan(*plan, c.folder.toStdString(), exportStem(doc_->path()).toStdString(), eo);
+    const auto written = exportPlan(*plan, c.folder.toStdString(), stem().toStdString(), eo);
     if (!written) {
         QMessageBox::warning(window_, tr("Export failed"), coreMessage(written.error()));
         return false;

@@ -15,6 +15,7 @@ namespace taiwa::ui {
 class JobDocument;
 class PlanRunner;
 class Autosaver;
+class StoreActions;
 struct ExportChoice;
 
 class FileActions : public QObject {
@@ -24,6 +25,13 @@ public:
     // the job file's base name, "job" while it has none.
     static QString exportStem(const QString& jobPath);
     FileActions(JobDocument* doc, PlanRunner* runner, Autosaver* autosave, QWidget* window);
+    // The job store on the shop server (ui/store_actions.h).
+    StoreActions* store() const { return store_; }
+    // The stem of the shown job's exports: its file's, else its name in the
+    // job store's (as `taiwa export --from-store` names them), else "job".
+    QString stem() const;
+    // The job's name in the title: its file's, else the stored job's.
+    QString title() const;
 
     bool newJob();
     bool open();
@@ -32,6 +40,7 @@ public:
     // profiles and a bar that holds it); a refused file says why.
     bool importStep();
     bool importStepPath(const QString& path);
+    // To the job's file; a job opened from the shop server's store there.
     bool save();
     bool saveAs();
     bool saveTo(const QString& path);
@@ -61,6 +70,7 @@ private:
     Autosaver* autosave_;
     PlanRunner* runner_;
     QWidget* window_;
+    StoreActions* store_;
 };
 
 }  // namespace taiwa::ui

@@ -91,6 +91,7 @@ bool JobDocument::changedOnDisk() const
 
 void JobDocument::reset(const Job& job, const QString& path, bool modified)
 {
+    emit replacing();
     undo_->clear();
     job_ = job;
     path_ = path;
@@ -112,6 +113,15 @@ QString JobDocument::saveTo(const QString& path)
     undo_->setClean();
     emit modifiedChanged(isModified());
     return {};
+}
+
+void JobDocument::markSavedElsewhere()
+{
+    path_.clear();
+    diskStamp_.clear();
+    dirtyWithoutUndo_ = false;
+    undo_->setClean();
+    emit modifiedChanged(isModified());
 }
 
 }  // namespace taiwa::ui

@@ -34,6 +34,9 @@ public:
     void reset(const Job& job, const QString& path, bool modified);
     // Writes the job to path atomically; empty string on success, else the error.
     QString saveTo(const QString& path);
+    // The job was saved elsewhere than in a file (the shop server's job
+    // store, ui/store_actions.h): no file, not modified.
+    void markSavedElsewhere();
     // The job's file was changed by someone else (another window, another
     // program) since this document opened or saved it.
     bool changedOnDisk() const;
@@ -47,6 +50,8 @@ signals:
     void changed(bool fromTyping);
     void selectionRequested(int unit);
     void modifiedChanged(bool modified);
+    // reset() is about to replace the job by another (opened, new, restored).
+    void replacing();
 
 private:
     Job job_;

@@ -1,5 +1,7 @@
 // Checks and plans for the window, the full plan on a worker thread.
 #include "ui/plan_runner.h"
+#include "ui/core_messages.h"
+#include "model/translate_noop.h"
 
 #include "job/job_check.h"
 #include "tools/pg_tool_store.h"
@@ -88,14 +90,14 @@ void PlanRunner::reloadLibrary()
         }
         if (server_) {
             read = server_->tools();
-            if (server_->readOnly()) libraryStatus_ = QString::fromStdString(server_->status());
+            if (server_->readOnly()) libraryStatus_ = coreMessage(server_->status());
             watchServer();
         }
     }
     std::vector<Tool> tools = read ? std::move(*read) : std::vector<Tool>{};
     libraryError_.clear();
     if (tools.empty()) {
-        libraryError_ = QString::fromStdString(read ? "the library has no tools" : read.error());
+        libraryError_ = QString::fromStdString(read ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the library has no tools") : read.error());
         tools = defaultToolLibrary();
     }
     library_ = std::move(tools);
@@ -131,7 +133,7 @@ void PlanRunner::serverSpoke()
             delete serverWatch_;
             serverWatch_ = nullptr;
             reloadLibrary();
-            emit toolsChangedOnServer(QString::fromStdString(server_->status()));
+            emit toolsChangedOnServer(coreMessage(server_->status()));
             return;
         }
         if (more.empty()) break;

@@ -19,6 +19,7 @@
 #include "ui/preview_widget.h"
 #include "ui/section_bar.h"
 #include "ui/step_panel.h"
+#include "ui/store_actions.h"
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
 #include "ui/verification_panel.h"
@@ -202,6 +203,13 @@ void StationWindow::buildMenus()
     file->addAction(tr("Import &DXF contours…"), this, &StationWindow::importDxf)->setObjectName("action.importDxf");
     file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);
+    // The shop server's job store (docs/shop-server.md), when the tool setting names a server.
+    QAction* fromStore = file->addAction(tr("Open from the s&hop server…"), files_->store(), &StoreActions::openFromStore);
+    fromStore->setObjectName("action.openFromStore");
+    QAction* toStore = file->addAction(tr("Save to the shop ser&ver"), files_->store(), &StoreActions::saveToStore);
+    toStore->setObjectName("action.saveToStore");
+    fromStore->setEnabled(StoreActions::available());
+    toStore->setEnabled(StoreActions::available());
     file->addSeparator();
     file->addAction(tr("&Export tape and sheet…"), QKeySequence(tr("Ctrl+E")), files_, &FileActions::exportJob);
     file->addSeparator();

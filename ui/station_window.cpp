@@ -297,9 +297,9 @@ void StationWindow::showToolLibrary()
 
 void StationWindow::updateTitle()
 {
-    const QString name = doc_->path().isEmpty() ? tr("untitled") : QFileInfo(doc_->path()).fileName();
-    // An unnamed job's program is named after its file, as export names it.
-    runner_->setFileStem(FileActions::exportStem(doc_->path()));
+    const QString name = files_->title();
+    // An unnamed job's program is named after its file (or stored name), as export names it.
+    runner_->setFileStem(files_->stem());
     if (doc_->path() != openPath_) {
         // Another window editing the same file: say so once, on opening it.
         openPath_ = doc_->path();

@@ -123,7 +123,7 @@ void ToolLibraryDialog::load(bool keepStatus)
     tools_ = tools ? *tools : std::vector<Tool>{};
     knowToolNames(tools_);
     if (!keepStatus || !tools) {
-        status_->setText(tools ? tr("%1 — %n tool(s)", "", static_cast<int>(tools_.size())).arg(QString::fromStdString(path))
+        status_->setText(tools ? tr("%1 — %n tool(s)", "", static_cast<int>(tools_.size())).arg(coreMessage(path))
                                : tr("Cannot read the tool library: %1").arg(coreMessage(tools.error())));
         status_->setStyleSheet(tools ? QString() : QStringLiteral("color: #a00000;"));
     }

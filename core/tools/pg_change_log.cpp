@@ -25,7 +25,7 @@ Result<std::vector<ToolChangeRecord>> PgToolStore::history(int id)
     if (!r) {
         const std::string why = r.error();
         d.checkConnection();
-        return d.failure(fmt::format("reading the history of tool T{}", id), why);
+        return d.failure(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "reading the history of tool T{}"), id), why);
     }
     std::vector<ToolChangeRecord> out;
     for (int i = 0; i < PQntuples(r->get()); ++i)

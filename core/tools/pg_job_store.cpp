@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+
 namespace taiwa {
 
 namespace {
@@ -13,7 +15,27 @@ namespace {
 
 std::string utc(const char* column) { return fmt::format("to_char({} AT TIME ZONE 'UTC', 'YYYY-MM-DD\"T\"HH24:MI:SS\"Z\"')", column); }
 
+// A lock's columns of table jobs (as j): the job, station, who, since when,
+// and whether the station has a session on this database other than the
+// asking one (application_name is the station's name, cut to 63 bytes as the
+// server cuts it; every role may read it in pg_stat_activity).
+std::string lockColumns()
+{
+    return "j.name, j.locked_station, coalesce(j.locked_by, ''), coalesce(" + utc("j.locked_at") +
+           ", ''), EXISTS (SELECT 1 FROM pg_stat_activity a WHERE a.datname = current_database() "
+           "AND a.application_name = left(j.locked_station, 63) AND a.pid <> pg_backend_pid())";
+}
+
+JobLock lockFrom(const std::vector<std::string>& row) { return {row[0], row[1], row[2], row[3], row[4] == "t"}; }
+
 }  // namespace
+
+std::string jobFileStem(const std::string& name)
+{
+    std::string stem;
+    for (char c : name) stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
+    return stem;
+}
 
 Result<int> PgJobStore::save(const std::string& name, const std::string& content)
 {
@@ -112,6 +134,42 @@ Result<void> PgJobStore::unlock(const std::string& name)
                            {name, server_.stationOnServer()});
     if (!r) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: unlocking job '{}' failed ({})"), server_.name(), name, r.error())};
     return {};
+}
+
+Result<std::vector<JobLock>> PgJobStore::locks()
+{
+    auto r = server_.query(("SELECT " + lockColumns() + " FROM jobs j WHERE j.locked_station IS NOT NULL ORDER BY j.name").c_str(), {});
+    if (!r) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: listing the jobs failed ({})"), server_.name(), r.error())};
+    std::vector<JobLock> out;
+    for (const auto& row : *r) out.push_back(lockFrom(row));
+    return out;
+}
+
+Result<std::optional<JobLock>> PgJobStore::release(const std::string& name, bool force)
+{
+    // The holder read and the lock cleared in one transaction, the row held:
+    // a lock taken anew meanwhile is never the one released.
+    auto run = [&]() -> Result<std::optional<JobLock>> {
+        if (auto r = server_.query("BEGIN", {}); !r) return Failure{r.error()};
+        auto held = server_.query(("SELECT " + lockColumns() + " FROM jobs j WHERE j.name = $1 FOR UPDATE").c_str(), {name});
+        if (!held) return Failure{held.error()};
+        if (held->empty()) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} has no job '{}'"), server_.name(), name)};
+        if (held->front()[1].empty()) return std::optional<JobLock>();
+        const JobLock lock = lockFrom(held->front());
+        if (lock.stationConnected && !force)
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "job '{}' is open at station {} (by {} since {}) and that station "
+                                                                           "is connected to the server now; its lock was not released"),
+                                       name, lock.station, lock.by, lock.at)};
+        if (auto r = server_.query("UPDATE jobs SET locked_by = NULL, locked_station = NULL, locked_at = NULL WHERE name = $1", {name}); !r)
+            return Failure{r.error()};
+        if (auto r = server_.query("COMMIT", {}); !r) return Failure{r.error()};
+        return std::optional<JobLock>(lock);
+    };
+    auto released = run();
+    if (!released || !*released) (void)server_.query("ROLLBACK", {});
+    if (!released && !released.error().starts_with("job '") && released.error().find(" has no job '") == std::string::npos)
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: unlocking job '{}' failed ({})"), server_.name(), name, released.error())};
+    return released;
 }
 
 }  // namespace taiwa

@@ -21,6 +21,18 @@ struct StoredJob {
     std::string lockedStation, lockedBy, lockedAt;
 };
 
+// Who holds a job's lock, and whether that station is connected to the
+// server now (a session of the database under the station's name, other
+// than the asking one's: its window is running, the lock is not stale).
+struct JobLock {
+    std::string job, station, by, at;  // at: UTC, ISO 8601
+    bool stationConnected = false;
+};
+
+// A stored job's name made safe for a file name (its exported files' stem):
+// letters, digits, '-', '_' and '.' kept, anything else '_'.
+std::string jobFileStem(const std::string& name);
+
 class PgJobStore {
 public:
     // On a connected tool store (the same server and connection).
@@ -39,6 +51,14 @@ public:
     Result<void> lock(const std::string& name);
     // Gives this station's lock back (no lock: nothing to do).
     Result<void> unlock(const std::string& name);
+    // Every job whose lock is held, by name.
+    Result<std::vector<JobLock>> locks();
+    // Releases job `name`'s lock whoever holds it (the administrator's
+    // `taiwa store unlock`, a lock left by a station that crashed): refused,
+    // naming the holder, while the holding station is connected, unless
+    // `force`. The lock released; nullopt when no one held it; refused when
+    // the store has no job `name`.
+    Result<std::optional<JobLock>> release(const std::string& name, bool force);
 
 private:
     PgToolStore& server_;

@@ -193,7 +193,7 @@ Result<SaveOutcome> PgToolStore::save(const Tool& tool, std::int64_t readVersion
         d.rollback();
         const std::string why = version.error();
         d.checkConnection();
-        return d.failure(fmt::format("saving tool T{}", t.id), why);
+        return d.failure(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "saving tool T{}"), t.id), why);
     }
     if (*version > 0) return SaveOutcome{t.id, *version, std::nullopt};
     // Refused: what the server holds now, and who changed it last.
@@ -202,7 +202,7 @@ Result<SaveOutcome> PgToolStore::save(const Tool& tool, std::int64_t readVersion
     auto theirs = d.readTools(t.id);
     if (!theirs) {
         d.checkConnection();
-        return d.failure(fmt::format("reading tool T{}", t.id), theirs.error());
+        return d.failure(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "reading tool T{}"), t.id), theirs.error());
     }
     if (!theirs->empty()) {
         conflict.theirs = theirs->front().tool;
@@ -236,13 +236,13 @@ Result<void> PgToolStore::Impl::changeRow(const char* sql, const std::vector<Par
 
 Result<void> PgToolStore::remove(int id)
 {
-    return d_->changeRow("DELETE FROM tools WHERE id = $1", {std::to_string(id)}, fmt::format("removing tool T{}", id), id);
+    return d_->changeRow("DELETE FROM tools WHERE id = $1", {std::to_string(id)}, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "removing tool T{}"), id), id);
 }
 
 Result<void> PgToolStore::addUsage(int id, double minutes)
 {
     return d_->changeRow("UPDATE tools SET used_minutes = used_minutes + $2 WHERE id = $1", {std::to_string(id), number(minutes)},
-                         fmt::format("adding usage to tool T{}", id), id);
+                         fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "adding usage to tool T{}"), id), id);
 }
 
 Result<int> PgToolStore::importSqliteLibrary(const std::string& path)
@@ -261,7 +261,7 @@ Result<int> PgToolStore::importSqliteLibrary(const std::string& path)
         if (auto r = d.exec("BEGIN"); !r) return Failure{r.error()};
         if (auto r = d.exec("DELETE FROM tools"); !r) return Failure{r.error()};
         for (const Tool& t : *tools) {
-            if (const auto field = unstorable(t)) return Failure{fmt::format("tool T{} ({}) holds a NUL character", t.id, *field)};
+            if (const auto field = unstorable(t)) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool T{} ({}) holds a NUL character"), t.id, *field)};
             auto w = d.writeTool(t, true);
             if (!w) return Failure{w.error()};
         }
@@ -271,7 +271,7 @@ Result<int> PgToolStore::importSqliteLibrary(const std::string& path)
     if (auto r = run(); !r) {
         d.rollback();
         d.checkConnection();
-        return d.failure(fmt::format("importing {}", path), r.error());
+        return d.failure(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "importing {}"), path), r.error());
     }
     return static_cast<int>(tools->size());
 }

@@ -233,6 +233,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::FileActions</name>
         <message>
+            <source>%1 (shop server)</source>
+            <translation>%1（共有サーバー）</translation>
+        </message>
+        <message>
+            <source>untitled</source>
+            <translation>無題</translation>
+        </message>
+        <message>
             <source>Unsaved changes</source>
             <translation>未保存の変更</translation>
         </message>
@@ -934,6 +942,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>名前を付けて保存(&amp;A)…</translation>
         </message>
         <message>
+            <source>Open from the s&amp;hop server…</source>
+            <translation>共有サーバーから開く(&amp;H)…</translation>
+        </message>
+        <message>
+            <source>Save to the shop ser&amp;ver</source>
+            <translation>共有サーバーに保存(&amp;V)</translation>
+        </message>
+        <message>
             <source>&amp;Export tape and sheet…</source>
             <translation>テープと作業指示書を出力(&amp;E)…</translation>
         </message>
@@ -1050,10 +1066,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Edit technology data</source>
             <translation>加工技術データの編集</translation>
-        </message>
-        <message>
-            <source>untitled</source>
-            <translation>無題</translation>
         </message>
         <message numerus="yes">
             <source>%1 is also open in %n other window(s): a save here asks before it overwrites what another window saved.</source>
@@ -1242,6 +1254,53 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Depth of cut on the radius: of a pass; of a thread, the whole thread</source>
             <translation>半径での切込み: 1 パス分。ねじではねじ全体の深さ</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::StoreActions</name>
+        <message>
+            <source>Shop server</source>
+            <translation>共有サーバー</translation>
+        </message>
+        <message>
+            <source>The job store needs the shop server: TAIWA_TOOL_DB names the file %1, not a server</source>
+            <translation>ジョブストアには共有サーバーが必要です: TAIWA_TOOL_DB はサーバーではなくファイル %1 を指しています</translation>
+        </message>
+        <message>
+            <source>Open from the shop server</source>
+            <translation>共有サーバーから開く</translation>
+        </message>
+        <message>
+            <source>The shop server holds no jobs yet</source>
+            <translation>共有サーバーにはまだジョブがありません</translation>
+        </message>
+        <message>
+            <source>Job:</source>
+            <translation>ジョブ:</translation>
+        </message>
+        <message>
+            <source>Cannot open job</source>
+            <translation>ジョブを開けません</translation>
+        </message>
+        <message>
+            <source>Opened %1 from the shop server (version %2); this station holds its lock</source>
+            <translation>共有サーバーから %1 を開きました（バージョン %2）。このステーションがロックを保持しています</translation>
+        </message>
+        <message>
+            <source>Save to the shop server</source>
+            <translation>共有サーバーに保存</translation>
+        </message>
+        <message>
+            <source>Name in the job store:</source>
+            <translation>ジョブストアでの名前:</translation>
+        </message>
+        <message>
+            <source>Cannot save job</source>
+            <translation>ジョブを保存できません</translation>
+        </message>
+        <message>
+            <source>Saved %1 to the shop server as version %2</source>
+            <translation>%1 を共有サーバーにバージョン %2 として保存しました</translation>
         </message>
     </context>
     <context>
@@ -1935,6 +1994,10 @@ Theirs: %6</source>
     </context>
     <context>
         <name>taiwa::msg</name>
+        <message>
+            <source>the library has no tools</source>
+            <translation>工具ライブラリに工具がありません</translation>
+        </message>
         <message>
             <source>T{} ({} {}, nose R{} mm)</source>
             <translation>T{} ({} {}, ノーズR{} mm)</translation>
@@ -4392,6 +4455,10 @@ Theirs: %6</source>
             <translation>HSK63 プローブ本体</translation>
         </message>
         <message>
+            <source>reading the history of tool T{}</source>
+            <translation>工具 T{} の履歴の読み込み</translation>
+        </message>
+        <message>
             <source>{}: job '{}': a name, and text without NUL characters, are needed</source>
             <translation>{}: ジョブ '{}': 名前と、NUL 文字を含まないテキストが必要です</translation>
         </message>
@@ -4436,6 +4503,10 @@ Theirs: %6</source>
             <translation>{}: ジョブ '{}' のロックを解除できませんでした（{}）</translation>
         </message>
         <message>
+            <source>job '{}' is open at station {} (by {} since {}) and that station is connected to the server now; its lock was not released</source>
+            <translation>ジョブ '{}' はステーション {} で開かれており（{}、{} から）、そのステーションは現在サーバーに接続しています。ロックは解除されませんでした</translation>
+        </message>
+        <message>
             <source>{}: the local copy {} could not be written</source>
             <translation>{}: ローカルコピー {} を書き込めませんでした</translation>
         </message>
@@ -4468,12 +4539,36 @@ Theirs: %6</source>
             <translation>{}: 工具 T{}（{}）に NUL 文字が含まれています。サーバーには保存できません</translation>
         </message>
         <message>
+            <source>saving tool T{}</source>
+            <translation>工具 T{} の保存</translation>
+        </message>
+        <message>
+            <source>reading tool T{}</source>
+            <translation>工具 T{} の読み込み</translation>
+        </message>
+        <message>
             <source>{} has no tool T{}</source>
             <translation>{} に工具 T{} がありません</translation>
         </message>
         <message>
+            <source>removing tool T{}</source>
+            <translation>工具 T{} の削除</translation>
+        </message>
+        <message>
+            <source>adding usage to tool T{}</source>
+            <translation>工具 T{} への使用時間の加算</translation>
+        </message>
+        <message>
             <source>{} cannot be read ({})</source>
             <translation>{} を読めません（{}）</translation>
+        </message>
+        <message>
+            <source>tool T{} ({}) holds a NUL character</source>
+            <translation>工具 T{}（{}）に NUL 文字が含まれています</translation>
+        </message>
+        <message>
+            <source>importing {}</source>
+            <translation>{} の取り込み</translation>
         </message>
         <message>
             <source>{}: {} failed ({})</source>

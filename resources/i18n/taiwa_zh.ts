@@ -233,6 +233,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::FileActions</name>
         <message>
+            <source>%1 (shop server)</source>
+            <translation>%1（车间服务器）</translation>
+        </message>
+        <message>
+            <source>untitled</source>
+            <translation>未命名</translation>
+        </message>
+        <message>
             <source>Unsaved changes</source>
             <translation>未保存的更改</translation>
         </message>
@@ -934,6 +942,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>另存为(&amp;A)…</translation>
         </message>
         <message>
+            <source>Open from the s&amp;hop server…</source>
+            <translation>从车间服务器打开(&amp;H)…</translation>
+        </message>
+        <message>
+            <source>Save to the shop ser&amp;ver</source>
+            <translation>保存到车间服务器(&amp;V)</translation>
+        </message>
+        <message>
             <source>&amp;Export tape and sheet…</source>
             <translation>导出程序和作业指导书(&amp;E)…</translation>
         </message>
@@ -1050,10 +1066,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Edit technology data</source>
             <translation>编辑工艺数据</translation>
-        </message>
-        <message>
-            <source>untitled</source>
-            <translation>未命名</translation>
         </message>
         <message numerus="yes">
             <source>%1 is also open in %n other window(s): a save here asks before it overwrites what another window saved.</source>
@@ -1242,6 +1254,53 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Depth of cut on the radius: of a pass; of a thread, the whole thread</source>
             <translation>半径方向的切深：每刀的；螺纹为整个螺纹的深度</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::StoreActions</name>
+        <message>
+            <source>Shop server</source>
+            <translation>车间服务器</translation>
+        </message>
+        <message>
+            <source>The job store needs the shop server: TAIWA_TOOL_DB names the file %1, not a server</source>
+            <translation>作业库需要车间服务器：TAIWA_TOOL_DB 指向的是文件 %1，而不是服务器</translation>
+        </message>
+        <message>
+            <source>Open from the shop server</source>
+            <translation>从车间服务器打开</translation>
+        </message>
+        <message>
+            <source>The shop server holds no jobs yet</source>
+            <translation>车间服务器上还没有作业</translation>
+        </message>
+        <message>
+            <source>Job:</source>
+            <translation>作业：</translation>
+        </message>
+        <message>
+            <source>Cannot open job</source>
+            <translation>无法打开作业</translation>
+        </message>
+        <message>
+            <source>Opened %1 from the shop server (version %2); this station holds its lock</source>
+            <translation>已从车间服务器打开 %1（版本 %2）；本工位持有其锁</translation>
+        </message>
+        <message>
+            <source>Save to the shop server</source>
+            <translation>保存到车间服务器</translation>
+        </message>
+        <message>
+            <source>Name in the job store:</source>
+            <translation>在作业库中的名称：</translation>
+        </message>
+        <message>
+            <source>Cannot save job</source>
+            <translation>无法保存作业</translation>
+        </message>
+        <message>
+            <source>Saved %1 to the shop server as version %2</source>
+            <translation>已将 %1 作为版本 %2 保存到车间服务器</translation>
         </message>
     </context>
     <context>
@@ -1935,6 +1994,10 @@ Theirs: %6</source>
     </context>
     <context>
         <name>taiwa::msg</name>
+        <message>
+            <source>the library has no tools</source>
+            <translation>刀具库中没有刀具</translation>
+        </message>
         <message>
             <source>T{} ({} {}, nose R{} mm)</source>
             <translation>T{} ({} {}，刀尖R{} mm)</translation>
@@ -4392,6 +4455,10 @@ Theirs: %6</source>
             <translation>HSK63 测头本体</translation>
         </message>
         <message>
+            <source>reading the history of tool T{}</source>
+            <translation>读取刀具 T{} 的历史</translation>
+        </message>
+        <message>
             <source>{}: job '{}': a name, and text without NUL characters, are needed</source>
             <translation>{}：作业 '{}'：需要名称以及不含 NUL 字符的文本</translation>
         </message>
@@ -4436,6 +4503,10 @@ Theirs: %6</source>
             <translation>{}：解锁作业 '{}' 失败（{}）</translation>
         </message>
         <message>
+            <source>job '{}' is open at station {} (by {} since {}) and that station is connected to the server now; its lock was not released</source>
+            <translation>作业 '{}' 正在工位 {} 打开（{}，自 {} 起），该工位当前已连接服务器；其锁未被释放</translation>
+        </message>
+        <message>
             <source>{}: the local copy {} could not be written</source>
             <translation>{}：无法写入本地副本 {}</translation>
         </message>
@@ -4468,12 +4539,36 @@ Theirs: %6</source>
             <translation>{}：刀具 T{}（{}）含有 NUL 字符，服务器无法保存</translation>
         </message>
         <message>
+            <source>saving tool T{}</source>
+            <translation>保存刀具 T{}</translation>
+        </message>
+        <message>
+            <source>reading tool T{}</source>
+            <translation>读取刀具 T{}</translation>
+        </message>
+        <message>
             <source>{} has no tool T{}</source>
             <translation>{} 中没有刀具 T{}</translation>
         </message>
         <message>
+            <source>removing tool T{}</source>
+            <translation>删除刀具 T{}</translation>
+        </message>
+        <message>
+            <source>adding usage to tool T{}</source>
+            <translation>为刀具 T{} 累加使用时间</translation>
+        </message>
+        <message>
             <source>{} cannot be read ({})</source>
             <translation>无法读取 {}（{}）</translation>
+        </message>
+        <message>
+            <source>tool T{} ({}) holds a NUL character</source>
+            <translation>刀具 T{}（{}）含有 NUL 字符</translation>
+        </message>
+        <message>
+            <source>importing {}</source>
+            <translation>导入 {}</translation>
         </message>
         <message>
             <source>{}: {} failed ({})</source>
