@@ -84,17 +84,21 @@ void judgeSurfaceTape(const Plan& plan, const Rs274Result& r)
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& s = plan.steps[i];
         const SurfacePaths& sp = s.payload.as<SurfacePaths>();
-        const std::vector<std::vector<Point3>>& finished = sp.finished.empty() ? sp.surface : sp.finished;
-        const SurfaceDepth d = intoSurface(r.moves, static_cast<int>(i) + 1, finished, *plan.tool(s.tool->toolId), sp.allowance);
+        // Roughing carries the finishing surface too, and leaves the allowance on it.
+        const bool roughing = !sp.finished.empty();
+        const double grow = roughing ? sp.allowance : 0.0;
+        const SurfaceDepth d = intoSurface(r.moves, static_cast<int>(i) + 1, roughing ? sp.finished : sp.surface,
+                                           *plan.tool(s.tool->toolId), grow);
         qInfo("step %zu %s: %d feed moves, deepest %.4f mm into the surface (grown by %.2f)", i + 1, s.label().c_str(),
-              d.feeds, d.deepest, sp.allowance);
+              d.feeds, d.deepest, grow);
         QVERIFY2(d.feeds > 0, qPrintable(QString::fromStdString(s.label()) + " cuts nothing"));
         QVERIFY2(d.deepest <= kTol, qPrintable(QString::fromStdString(s.label()) + QString(" goes %1 mm into the surface").arg(d.deepest)));
     }
     for (const CanonMove& m : r.moves) {
         if (m.step == 0) continue;
-        QCOMPARE(m.tool, plan.steps[static_cast<std::size_t>(m.step - 1)].tool->toolId);
-        if (m.kind == CanonMove::Traverse)
+        if (m.kind != CanonMove::Traverse)  // every cut with the step's own tool
+            QCOMPARE(m.tool, plan.steps[static_cast<std::size_t>(m.step - 1)].tool->toolId);
+        else
             QVERIFY2(m.end.z >= -kTol, qPrintable(QString("a rapid below the stock top at Z%1, step %2").arg(m.end.z).arg(m.step)));
     }
 }
