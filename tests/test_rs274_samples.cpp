@@ -5,12 +5,17 @@
 // - no rapid below the top of the stock except into air already cut,
 // - roughing reaches exactly -(T - beta2) and leaves exactly alpha2 on the walls,
 // - the finishing steps reach the floor at exactly -T,
-// - the inch tape describes the same moves as the mm tape.
+// - the inch tape describes the same moves as the mm tape;
+// a SURFACE sample's moves against its finishing surface instead (no rapid
+// below the stock top, finishing off the surface, roughing the allowance
+// off it: support/surface_oracle.h).
 #include "modules/m2d/m2d.h"
 #include "modules/m4/m4.h"
+#include "modules/surface/surface.h"
 #include "support/pocket_geometry.h"
 #include "support/rs274.h"
 #include "support/support.h"
+#include "support/surface_oracle.h"
 
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
@@ -69,6 +74,35 @@ QString where(const CanonMove& m, const Step& s)
         .arg(m.end.x, 0, 'f', 4).arg(m.end.y, 0, 'f', 4).arg(m.end.z, 0, 'f', 4);
 }
 
+// A SURFACE sample (docs/surfaces.md): its pockets are no walls and floor
+// but the unit's finishing surface. Every step cuts with its own tool;
+// finishing keeps the ball off the surface (1 µm, the tape's rounding in
+// it), roughing keeps it the allowance off; no rapid goes below the stock
+// top other than down to the clearance over it.
+void judgeSurfaceTape(const Plan& plan, const Rs274Result& r)
+{
+    for (std::size_t i = 0; i < plan.steps.size(); ++i) {
+        const Step& s = plan.steps[i];
+        const SurfacePaths& sp = s.payload.as<SurfacePaths>();
+        // Roughing carries the finishing surface too, and leaves the allowance on it.
+        const bool roughing = !sp.finished.empty();
+        const double grow = roughing ? sp.allowance : 0.0;
+        const SurfaceDepth d = intoSurface(r.moves, static_cast<int>(i) + 1, roughing ? sp.finished : sp.surface,
+                                           *plan.tool(s.tool->toolId), grow);
+        qInfo("step %zu %s: %d feed moves, deepest %.4f mm into the surface (grown by %.2f)", i + 1, s.label().c_str(),
+              d.feeds, d.deepest, grow);
+        QVERIFY2(d.feeds > 0, qPrintable(QString::fromStdString(s.label()) + " cuts nothing"));
+        QVERIFY2(d.deepest <= kTol, qPrintable(QString::fromStdString(s.label()) + QString(" goes %1 mm into the surface").arg(d.deepest)));
+    }
+    for (const CanonMove& m : r.moves) {
+        if (m.step == 0) continue;
+        if (m.kind != CanonMove::Traverse)  // every cut with the step's own tool
+            QCOMPARE(m.tool, plan.steps[static_cast<std::size_t>(m.step - 1)].tool->toolId);
+        else
+            QVERIFY2(m.end.z >= -kTol, qPrintable(QString("a rapid below the stock top at Z%1, step %2").arg(m.end.z).arg(m.step)));
+    }
+}
+
 }  // namespace
 
 class TestRs274Samples : public QObject {
@@ -114,6 +148,10 @@ private slots:
         QVERIFY(!r.moves.empty());
 
         const Plan& plan = e.plan;
+        if (std::all_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.module == "SURFACE"; })) {
+            judgeSurfaceTape(plan, r);
+            return;
+        }
         std::map<int, double> deepest;  // step (1-based) -> lowest feed z
         std::map<int, double> reach;    // roughing step -> closest approach to the wall (signed)
         std::vector<std::vector<Point3>> fed(plan.steps.size() + 1);

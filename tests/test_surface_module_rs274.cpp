@@ -13,8 +13,8 @@
 // and lowering the finishing 0.2 mm gives a gouge of about that much.
 // Runs rs274: under the rs274 lock (tests/CMakeLists.txt).
 #include "modules/surface/surface.h"
-#include "occt/surface_mesh.h"
 #include "support/rs274.h"
+#include "support/surface_oracle.h"
 #include "support/support.h"
 
 #include "job/job_check.h"
@@ -89,28 +89,12 @@ private slots:
         const Rs274Result r = runRs274(nc);
         QVERIFY2(r.ok, qPrintable(r.errors));
         const SurfacePaths& finish = p.steps[1].payload.as<SurfacePaths>();
-        const surface::MeshIndex index(surface::meshFromPaths(finish.surface));
         const Tool& tool = *p.tool(47);
         // How far the ball of radius `grow` more than the tool's goes into
-        // the surface at the worst sampled point of the feed moves.
+        // the surface at the worst sampled point of the finishing's feed moves.
         const auto deepest = [&](double grow) {
-            surface::DropCutter drop(index, surface::Cutter{tool.diameter + 2 * grow, tool.radius() + grow});
-            double worst = -1e9;
-            int feeds = 0;
-            for (const CanonMove& m : r.moves) {
-                if (m.kind != CanonMove::Feed || m.step != 2) continue;  // the finishing step's
-                ++feeds;
-                const double len = std::hypot(m.end.x - m.start.x, m.end.y - m.start.y, m.end.z - m.start.z);
-                const int n = std::max(1, static_cast<int>(std::ceil(len / 0.1)));
-                for (int k = 0; k <= n; ++k) {
-                    const double t = static_cast<double>(k) / n;
-                    const double x = m.start.x + t * (m.end.x - m.start.x), y = m.start.y + t * (m.end.y - m.start.y),
-                                 z = m.start.z + t * (m.end.z - m.start.z);
-                    // The nose of the larger ball is `grow` below the tape's.
-                    if (const auto floor = drop.noseZ(x, y)) worst = std::max(worst, *floor - (z - grow));
-                }
-            }
-            return std::pair{worst, feeds};
+            const SurfaceDepth d = intoSurface(r.moves, 2, finish.surface, tool, grow);
+            return std::pair{d.deepest, d.feeds};
         };
         const auto [worst, feeds] = deepest(0.0);
         qInfo("%d feed moves, deepest %.4f mm into the finishing surface", feeds, worst);

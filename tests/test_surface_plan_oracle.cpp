@@ -14,6 +14,7 @@
 #include "modules/surface/surface.h"
 #include "occt/surface_curves.h"
 #include "support/support.h"
+#include "support/surface_oracle.h"
 
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
@@ -127,25 +128,6 @@ private:
     Handle(Geom_BSplineSurface) surface_;
     std::vector<Patch> patches_;
 };
-
-// The unit's finishing surface rebuilt from its curves by the core (the
-// curves' division is what the surface is; the module's mesh is not used).
-surface::RuledSurface finishingSurface(const SurfaceUnit& u, int m)
-{
-    const auto curve = [](const SurfaceCurve& c) {
-        if (!c.points.empty()) return surface::SpaceCurve{c.points, c.smooth};
-        surface::Projection p[2];
-        for (int i = 0; i < 2; ++i) {
-            const std::string& pl = c.projections[static_cast<std::size_t>(i)].plane;
-            p[i].plane = pl == "XY" ? surface::ProjectionPlane::XY
-                                    : pl == "YZ" ? surface::ProjectionPlane::YZ : surface::ProjectionPlane::ZX;
-            p[i].points = c.projections[static_cast<std::size_t>(i)].points;
-            p[i].smooth = c.smooth;
-        }
-        return *surface::spaceCurveFromProjections(p[0], p[1], 0.5);
-    };
-    return surface::roughAndFinishSurfaces(curve(u.curve1), curve(u.curve2), u.n, m)->finishing;
-}
 
 struct Clearance {
     double nearest = 1e9;  // the smallest signed distance less the ball's radius [mm]

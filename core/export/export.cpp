@@ -7,7 +7,9 @@
 #include "export/two_path_sheet.h"
 #include "io/job_io.h"
 #include "io/json_write.h"
+#include "modules/module_kind.h"
 #include "modules/registry.h"
+#include "occt/surface_step.h"
 #include "model/translate_noop.h"
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
@@ -278,18 +280,31 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
         PostOptions o = postOptions(plan, options.dialect, LengthUnit::Millimetre, oNumber(), stem);
         files.emplace_back(unit + ".probe.nc", probingProgram(w, o));
     }
+    // A unit's finished 3-D surface (the module's machinedSurface, SURFACE's
+    // finishing surface): STEM.u<unit>.surface.step, one face, flat
+    // between its paths' points as the unit's bilinear patches are, in mm.
+    for (const Step& s : plan.steps) {
+        const ModuleKind* kind = findModuleKind(s.module);
+        const auto paths = kind ? kind->machinedSurface(s) : std::vector<std::vector<Point3>>{};
+        if (paths.empty()) continue;
+        auto step = surface::surfaceStepText(paths, surface::SurfaceFit::Bilinear);
+        if (!step)
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"),
+                                       fmt::format("unit {}'s surface: {}", s.unit + 1, step.error()))};
+        files.emplace_back(".u" + std::to_string(s.unit + 1) + ".surface.step", std::move(*step));
+    }
     for (const auto& [suffix, bytes] : files)
         if (auto written = set->add(stem + suffix, bytes); !written)
             return Failure{nothingChanged(written.error(), outDir), written.place()};
     // The files of an older set of this stem the new one does not have
     // (another dialect's tape, a lathe tape's tool table, probing programs
-    // of units no longer there) go in the same switch: a folder never holds
+    // and surfaces of units no longer there) go in the same switch: a folder never holds
     // part.nc beside part.mpf.
     std::set<std::string> names;
     for (const auto& f : files) names.insert(stem + f.first);
     std::set<std::string> older{stem + ".nc", stem + ".tape.txt", stem + ".tbl"};
     for (const post::Dialect& d : post::dialectLibrary()) older.insert(stem + "." + d.fileExtension);
-    static const std::regex probing(R"(\.u[0-9]+\.(setting|probe)\.nc)");
+    static const std::regex probing(R"(\.u[0-9]+\.((setting|probe)\.nc|surface\.step))");
     for (const auto& entry : std::filesystem::directory_iterator(outDir, ec)) {
         const std::string name = entry.path().filename().string();
         if (name.starts_with(stem) && std::regex_match(name.substr(stem.size()), probing)) older.insert(name);

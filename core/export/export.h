@@ -38,7 +38,8 @@ struct ExportOptions {
     const PostedProgram* posted = nullptr;
 };
 
-// STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json in
+// STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json
+// (and a probing unit's programs, a surface unit's STEM.uN.surface.step) in
 // outDir (created if missing), replaced as one set (io::FileSet): all are
 // written completely before any is renamed, so a failure leaves the old set
 // whole and the message says nothing was changed; exports of one stem into

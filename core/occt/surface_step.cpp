@@ -1,6 +1,6 @@
 // STEP export of a surface of paths and STEP import of a face set
-// (surface_step.h): GeomAPI_PointsToBSplineSurface and STEPControl_Writer
-// one way, STEPControl_Reader and a grid over each face's parameters the
+// (surface_step.h): GeomAPI_PointsToBSplineSurface (or a B-spline of
+// degree 1 × 1 on the paths' points) and STEPControl_Writer one way, STEPControl_Reader and a grid over each face's parameters the
 // other (OpenCASCADE's own mesher, BRepMesh, took 70 s for a 2 µm mesh of
 // one 60 × 60 mm face; the grid takes a fraction of a second).
 #include "occt/surface_step.h"
@@ -28,7 +28,15 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <iterator>
 #include <cmath>
 #include <filesystem>
 
@@ -118,7 +126,40 @@ void meshFace(const TopoDS_Face& face, double deflection, TriangleMesh& mesh)
 
 }  // namespace
 
-Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, const std::string& file)
+namespace {
+
+// The face through the paths: a B-spline interpolating every point
+// (smooth), or of degree 1 × 1 with the points as its poles (each cell the
+// bilinear patch of its four corners; knots whose removal moves nothing by
+// more than 1 nm taken out, so a grid finer than its patches collapses to
+// them).
+TopoDS_Face faceThrough(const std::vector<std::vector<Point3>>& paths, SurfaceFit fit)
+{
+    const int n = static_cast<int>(paths.size()), m = static_cast<int>(paths.front().size());
+    TColgp_Array2OfPnt pts(1, m, 1, n);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < m; ++j) {
+            const Point3& p = paths[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+            pts.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
+        }
+    if (fit == SurfaceFit::Smooth) {
+        GeomAPI_PointsToBSplineSurface interpolated;
+        interpolated.Interpolate(pts);
+        if (!interpolated.IsDone()) return {};
+        return BRepBuilderAPI_MakeFace(interpolated.Surface(), 1e-7);
+    }
+    TColStd_Array1OfReal uk(1, m), vk(1, n);
+    TColStd_Array1OfInteger um(1, m), vm(1, n);
+    for (int j = 1; j <= m; ++j) uk(j) = j - 1, um(j) = j == 1 || j == m ? 2 : 1;
+    for (int i = 1; i <= n; ++i) vk(i) = i - 1, vm(i) = i == 1 || i == n ? 2 : 1;
+    Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(pts, uk, vk, um, vm, 1, 1);
+    constexpr double kKnotTolerance = 1e-6;  // mm
+    for (int k = s->NbUKnots() - 1; k >= 2; --k) s->RemoveUKnot(k, 0, kKnotTolerance);
+    for (int k = s->NbVKnots() - 1; k >= 2; --k) s->RemoveVKnot(k, 0, kKnotTolerance);
+    return BRepBuilderAPI_MakeFace(s, 1e-7);
+}
+
+Result<bool> checkedPaths(const std::vector<std::vector<Point3>>& paths)
 {
     if (paths.size() < 2 || paths.front().size() < 2)
         return Failure{fmt::format("the surface's paths: at least 2 paths of 2 points are needed, there are {}",
@@ -127,19 +168,18 @@ Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, co
         if (paths[i].size() != paths.front().size())
             return Failure{fmt::format("the surface's paths: path {} has {} points, path 1 has {}", i + 1,
                                        paths[i].size(), paths.front().size())};
+    return true;
+}
+
+}  // namespace
+
+Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, const std::string& file, SurfaceFit fit)
+{
+    if (auto ok = checkedPaths(paths); !ok) return ok;
     quiet();
     try {
-        const int n = static_cast<int>(paths.size()), m = static_cast<int>(paths.front().size());
-        TColgp_Array2OfPnt pts(1, m, 1, n);
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < m; ++j) {
-                const Point3& p = paths[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
-                pts.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
-            }
-        GeomAPI_PointsToBSplineSurface fit;
-        fit.Interpolate(pts);
-        if (!fit.IsDone()) return Failure{"the surface's paths: OpenCASCADE could not interpolate them"};
-        const TopoDS_Face face = BRepBuilderAPI_MakeFace(fit.Surface(), 1e-7);
+        const TopoDS_Face face = faceThrough(paths, fit);
+        if (face.IsNull()) return Failure{"the surface's paths: OpenCASCADE could not interpolate them"};
         STEPControl_Writer writer;
         Interface_Static::SetCVal("write.step.unit", "MM");
         if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone)
@@ -150,6 +190,27 @@ Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, co
     } catch (const Standard_Failure& e) {
         return Failure{fmt::format("{}: OpenCASCADE refused the surface ({})", file, e.GetMessageString())};
     }
+}
+
+Result<std::string> surfaceStepText(const std::vector<std::vector<Point3>>& paths, SurfaceFit fit)
+{
+    // STEPControl_Writer writes files only (OpenCASCADE 7.6): a file of
+    // this process's own in the temporary folder, read back and removed.
+    static std::atomic<int> made{0};
+    std::error_code ec;
+    const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec) /
+                                      fmt::format("taiwa-surface-{}-{}.step", ::getpid(), ++made);
+    if (ec) return Failure{fmt::format("no temporary folder for the STEP file: {}", ec.message())};
+    const auto written = exportSurfaceStep(paths, tmp.string(), fit);
+    std::string text;
+    if (written) {
+        std::ifstream in(tmp, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::filesystem::remove(tmp, ec);
+    if (!written) return Failure{written.error()};
+    if (text.empty()) return Failure{fmt::format("{}: the STEP file written could not be read back", tmp.string())};
+    return text;
 }
 
 Result<TriangleMesh> importStepFaces(const std::string& file, double deflection)

@@ -14,10 +14,21 @@
 
 namespace taiwa::surface {
 
+// How the face passes through the paths' points: a B-spline interpolating
+// every point (a sampled smooth surface), or flat between them: each cell
+// the bilinear patch of its four corners, exactly (a B-spline of degree
+// 1 × 1, the points its poles; the SURFACE unit's finishing surface, whose
+// paths' cells are pieces of its bilinear patches between the rulings).
+enum class SurfaceFit { Smooth, Bilinear };
+
 // The surface through the paths (paths[i][j], all of one length, at least
-// 2 × 2; a B-spline interpolating every point) as one face in a STEP file
-// at `file`. Refused naming the file or the paths.
-Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, const std::string& file);
+// 2 × 2) as one face in a STEP file at `file`, in mm. Refused naming the
+// file or the paths.
+Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, const std::string& file,
+                               SurfaceFit fit = SurfaceFit::Smooth);
+
+// The same STEP file's text (for an export's set of files).
+Result<std::string> surfaceStepText(const std::vector<std::vector<Point3>>& paths, SurfaceFit fit);
 
 // Every face of the STEP file at `file`, tessellated so that no triangle
 // strays more than about `deflection` mm from its face (a grid over the
