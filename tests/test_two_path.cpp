@@ -28,6 +28,7 @@
 #include "machine/machine.h"
 #include "turning/balanced_roughing.h"
 #include "pipeline/pipeline.h"
+#include "post/dialect.h"
 #include "post/gang_post.h"
 #include "post/lathe_post.h"
 #include "post/two_path_post.h"
@@ -51,6 +52,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <set>
 
 using namespace taiwa;
@@ -222,6 +224,41 @@ SlideRun runSlide(const PostedProgram& p, const GangSlide& g, const PartEnvelope
         slidePos = to;
     }
     return run;
+}
+
+// What breaks the block tape's rules in a tape of a dialect that numbers
+// its blocks, by the test's own reading: every line but '%', the O-number
+// line and a comment is a block with its N word, each the one before plus
+// the increment; no line longer than the dialect's limit; every G71 P and
+// Q names a block of the tape.
+QStringList blockFaults(const std::string& nc, const post::Dialect& d)
+{
+    QStringList faults;
+    const QStringList lines = QString::fromStdString(nc).split('\n', Qt::SkipEmptyParts);
+    std::set<int> numbers;
+    std::optional<int> last;
+    for (int i = 0; i < lines.size(); ++i) {
+        const QString& l = lines[i];
+        if (static_cast<std::size_t>(l.size()) > d.maxLineLength)
+            faults << QString("line %1: %2 characters, more than %3").arg(i + 1).arg(l.size()).arg(d.maxLineLength);
+        if (l == "%" || l.startsWith('O') || l.startsWith('(')) continue;
+        const auto m = QRegularExpression(R"(^N(\d+) \S)").match(l);
+        if (!m.hasMatch()) {
+            faults << QString("line %1: no N word: %2").arg(i + 1).arg(l);
+            continue;
+        }
+        const int n = m.captured(1).toInt();
+        if (last && n != *last + d.sequenceIncrement) faults << QString("line %1: N%2 after N%3").arg(i + 1).arg(n).arg(*last);
+        last = n;
+        numbers.insert(n);
+    }
+    auto it = QRegularExpression(R"(G71 P(\d+) Q(\d+))").globalMatch(QString::fromStdString(nc));
+    while (it.hasNext()) {
+        const auto m = it.next();
+        for (int k : {1, 2})
+            if (!numbers.count(m.captured(k).toInt())) faults << QString("G71 names N%1, not on the tape").arg(m.captured(k));
+    }
+    return faults;
 }
 
 }  // namespace
@@ -776,7 +813,9 @@ private slots:
     // test's own reading (runSlide): no X motion of a change while any tool
     // on the slide is inside the bar grown by the clearance, whether the
     // control applies a new offset at the T word or with the next motion;
-    // each change's Z clear, X and approach in that order. The lathe post's
+    // each change's Z clear, X and approach in that order; in FANUC's
+    // words every block of the tape numbered and within the line limit
+    // (the change is a link of the post's sink chain). The lathe post's
     // own tape (X and Z at once to the change point) is caught on a slide
     // with a wider clearance; a tool not on the slide is refused.
     void gangToolTapeNeverSweepsThroughThePart()
@@ -807,8 +846,23 @@ private slots:
             // Each change: Z clear, the T word, X, then the approach along Z.
             const QString nc = QString::fromStdString(tape.nc);
             const auto change = QRegularExpression(R"(\n(?:N\d+ )?G0 Z(-?[0-9.]+)\n(?:N\d+ )?T[0-9][^\n]*\n(?:[^\n]*\n)*?)"
-                                                   R"(G0 X(-?[0-9.]+) Z(-?[0-9.]+)\n)");
+                                                   R"((?:N\d+ )?G0 X(-?[0-9.]+) Z(-?[0-9.]+)\n)");
             QCOMPARE(static_cast<int>(nc.count(change)), 3);
+            // The change's blocks are the block tape's like every other:
+            // in FANUC's words each block numbered, one after the other by
+            // the dialect's increment, within its line length, and a G71's
+            // P and Q name blocks of the tape.
+            if (std::string(dialect) == "fanuc") {
+                const QStringList faults = blockFaults(tape.nc, post::dialectNamed(dialect));
+                QVERIFY2(faults.isEmpty(), qPrintable(faults.join("\n") + "\n" + nc));
+                // Negative control: a block written past the tape (as the
+                // gang post once inserted its own), and one too long.
+                std::string unnumbered = tape.nc, tooLong = tape.nc;
+                unnumbered.insert(unnumbered.find("\nN") + 1, "G0 X20.\n");
+                tooLong.insert(tooLong.find("\nN") + 1, "N5 G0 X" + std::string(140, '1') + ".\n");
+                QVERIFY(blockFaults(unnumbered, post::dialectNamed(dialect)).join("\n").contains("no N word"));
+                QVERIFY(blockFaults(tooLong, post::dialectNamed(dialect)).join("\n").contains("characters"));
+            }
             // Every pair of the slide's tools, on a slide with the shipped clearance and a wider one.
             int pairs = 0;
             for (const GangSlide* slide : {&shipped, static_cast<const GangSlide*>(&wide)})

@@ -3,13 +3,16 @@
 // volumes add up, and each fault class put into a sample's turning paths by
 // the test is found on the step and move it was put into: a finishing move
 // pushed 0.2 mm into the part (placed on its tape line), a cutting feed
-// turned into a rapid, roughing cut short, a move beyond the lathe's travel.
+// turned into a rapid, roughing cut short, a move beyond the lathe's travel;
+// roughing reaches a profile's end where the bar goes on behind it.
+#include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "post/post.h"
 #include "support/hand_plan.h"
 #include "support/support.h"
 #include "verify/verify.h"
 #include "model/turn_path.h"
+#include "tools/tool_library.h"
 
 #include <QtTest>
 
@@ -86,12 +89,6 @@ private slots:
               ms, static_cast<int>(r.findings.size()));
         QVERIFY(r.skipped.empty());
         QVERIFY2(!r.fatal(), kinds(r, plan).c_str());
-        // A known finding, reported to be fixed (docs/two-path-lathe.md "Not
-        // built yet"): the two-path cylinder's roughing (a profile ending
-        // at Ø20 with no shoulder, the parting taking the rest) stops
-        // 0.086 mm short of Z-50 and leaves a sliver to the bar.
-        const bool knownSliver = sample == "lathe-two-path-cylinder.taiwa";
-        if (knownSliver) QEXPECT_FAIL("lathe-two-path-cylinder.taiwa", "roughing leaves a sliver at Z-49.914 (known)", Continue);
         QVERIFY2(r.findings.empty(), kinds(r, plan).c_str());
         QVERIFY(!r.section.empty());
         QCOMPARE(r.removed.size(), plan.steps.size());
@@ -112,7 +109,6 @@ private slots:
         Options fine;
         fine.resolution = 0.005;
         const Report f = verifyPlan(plan, fine);
-        if (knownSliver) QEXPECT_FAIL("lathe-two-path-cylinder.taiwa", "roughing leaves a sliver at Z-49.914 (known)", Continue);
         QVERIFY2(f.findings.empty(), kinds(f, plan).c_str());
     }
 
@@ -210,6 +206,59 @@ private slots:
         QVERIFY2(f, kinds(r, p).c_str());
         QVERIFY(!f->fatal());
         QVERIFY2(f->size > 1.0 && f->area > 1.0, kinds(r, p).c_str());
+    }
+
+    // Roughing up to where the bar goes on behind the profile's end (the
+    // parting's, no step finishes that face): a profile ending at Ø20 Z-50
+    // with no shoulder (the two-path cylinder, whose roughing once stopped
+    // at Z-49.914 and left a 0.676 mm² sliver), at other diameters and
+    // lengths, and with a back face down to the axis. Every pass along -Z
+    // above the end's radius reaches the end's Z, and the verification
+    // finds nothing left.
+    void roughingReachesTheProfilesEnd_data()
+    {
+        QTest::addColumn<double>("diameter");
+        QTest::addColumn<double>("z");
+        QTest::addColumn<bool>("backFace");
+        for (const double d : {20.0, 27.4, 34.0})
+            for (const double z : {-50.0, -23.7}) QTest::newRow(qPrintable(QString("Ø%1 Z%2").arg(d).arg(z))) << d << z << false;
+        QTest::newRow("Ø20 Z-50, back face") << 20.0 << -50.0 << true;
+    }
+    void roughingReachesTheProfilesEnd()
+    {
+        QFETCH(double, diameter);
+        QFETCH(double, z);
+        QFETCH(bool, backFace);
+        QString text = QString::fromStdString(test::readFile(test::sourcePath("resources/samples/lathe-two-path-cylinder.taiwa")));
+        text.replace(QRegularExpression(R"("x": 20,)"), QString(R"("x": %1,)").arg(diameter));
+        text.replace(QRegularExpression(R"("z": -50\b)"), QString(R"("z": %1)").arg(z));
+        if (backFace)
+            text.replace(QRegularExpression(R"(\}\s*\]\s*\}\s*\]\s*\}\s*$)"),
+                         QString(R"(}, {"id": 3, "kind": "line", "x": 0, "z": %1} ] } ] })").arg(z));
+        const auto read = readJob(text.toStdString());
+        QVERIFY2(read.job, qPrintable(text));
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(plan.ok());
+        const int rough = stepOf(plan, StepKind::TurnRoughing);
+        QVERIFY(rough >= 0);
+        const TurnStep& ts = *turnOf(plan.steps[static_cast<std::size_t>(rough)]);
+        turning::ZR at = ts.path.start;
+        int passes = 0;
+        for (const auto& m : ts.path.moves) {
+            if (m.kind == TurnMove::Feed && m.end.z < at.z - 1.0 && std::abs(m.end.r - at.r) < 1e-9 &&
+                m.end.r > diameter / 2.0 + ts.allowanceX + 1e-6) {
+                QVERIFY2(m.end.z <= z + 1e-6, qPrintable(QString("a pass at X%1 ends at Z%2").arg(2.0 * m.end.r).arg(m.end.z)));
+                ++passes;
+            }
+            at = m.end;
+        }
+        QVERIFY(passes >= 1);
+        const Report r = verifyPlan(plan);
+        QVERIFY2(r.findings.empty(), kinds(r, plan).c_str());
+        Options fine;
+        fine.resolution = 0.005;
+        const Report f = verifyPlan(plan, fine);
+        QVERIFY2(f.findings.empty(), kinds(f, plan).c_str());
     }
 
     // A rapid out to Ø300 on the lathe whose X travels 260 (a diameter):

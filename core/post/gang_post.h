@@ -9,7 +9,10 @@
 // already is (in the new tool's offset); then the lathe post's approach,
 // which now moves Z alone. The Z clear is deep enough that a control
 // applying the new offset at the T word itself (moving the slide by the
-// offsets' difference) still keeps every tool clear of the part.
+// offsets' difference) still keeps every tool clear of the part. The change
+// is a link of the lathe post's sink chain (GangChangeAdapter, between the
+// poster and the writer), so its blocks are numbered and measured as all
+// others; the stations come from the program's (LatheProgramInfo).
 #pragma once
 
 #include "machine/gang_change.h"

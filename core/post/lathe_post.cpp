@@ -1,8 +1,9 @@
 // The lathe post-processor (lathe_post.h): the poster, which walks the
 // steps and decides what the lathe is told (tool changes, spindle, coolant,
 // each move or the control's cycle), through the lathe's sink chain: the
-// inch adapter when the tape is in inch, then the lathe writer, which says
-// it in the dialect's family of words (lathe_writer.h) on the block tape.
+// stage a caller puts first (the gang change), the inch adapter when the
+// tape is in inch, then the lathe writer, which says it in the dialect's
+// family of words (lathe_writer.h) on the block tape.
 #include "post/lathe_post.h"
 
 #include "post/bound_tool.h"
@@ -174,6 +175,12 @@ std::vector<std::pair<int, int>> latheStations(const std::vector<Step>& orderedS
 
 PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options)
 {
+    return postLathe(orderedSteps, library, options, {});
+}
+
+PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options,
+                        const LatheStage& stage)
+{
     const post::Dialect* dialect = &post::dialectNamed(options.dialect);
     if (const auto can = post::canPost(*dialect, post::Task::LatheTape); !can) throw Refusal(can.error());
     // What planJob made and bound: a step without is the caller's bug.
@@ -181,10 +188,12 @@ PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector
         if (!turnOf(s) || !s.tool) throw std::logic_error("post-processor: step " + s.label() + " is not a turning step with a tool");
         (void)post::boundTool(library, s.tool->toolId);
     }
-    // The chain: poster -> [mm to inch] -> lathe writer -> block tape.
+    // The chain: poster -> [stage] -> [mm to inch] -> lathe writer -> block tape.
     post::LatheWriter writer(*dialect, options.units);
     std::optional<post::LatheInchAdapter> inch;
-    post::LatheSink& sink = options.units == LengthUnit::Inch ? static_cast<post::LatheSink&>(inch.emplace(writer)) : writer;
+    post::LatheSink& afterStage = options.units == LengthUnit::Inch ? static_cast<post::LatheSink&>(inch.emplace(writer)) : writer;
+    const std::unique_ptr<post::LatheSink> first = stage ? stage(afterStage) : nullptr;
+    post::LatheSink& sink = first ? *first : afterStage;
     LathePoster poster(sink, *dialect, options, library, orderedSteps);
     poster.start();
     for (std::size_t i = 0; i < orderedSteps.size(); ++i) poster.step(i, orderedSteps[i]);

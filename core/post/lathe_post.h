@@ -11,11 +11,27 @@
 
 #include "post/post.h"
 
+#include <functional>
+#include <memory>
+
 namespace taiwa {
+
+namespace post {
+class LatheSink;
+}
 
 // Steps in machining order, each a turning step with its tool. Throws
 // as postProcess does.
 PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options);
+
+// A link of the sink chain placed first, between the poster and the rest
+// of the chain: it receives what the poster says in mm and tells `next`
+// (the gang change, gang_post.h).
+using LatheStage = std::function<std::unique_ptr<post::LatheSink>(post::LatheSink& next)>;
+
+// As postLathe, through `stage` first.
+PostedProgram postLathe(const std::vector<Step>& orderedSteps, const std::vector<Tool>& library, const PostOptions& options,
+                        const LatheStage& stage);
 
 // The turret station each library tool of the program sits in: 1, 2, … in
 // the order of first use (the T number the tape and the control's tool

@@ -46,6 +46,9 @@ struct LatheSpindle {
 // The nose-radius compensation word a move states: G41, G42, G40, or none.
 enum class CompensationWord { None, Left, Right, Cancel };
 
+// An axis of the lathe: Z along the spindle, X across it (a radius in the sink).
+enum class LatheAxis { X, Z };
+
 class LatheSink {
 public:
     virtual ~LatheSink() = default;
@@ -63,6 +66,10 @@ public:
     virtual void coolant(bool on) = 0;
     virtual void rapid(turning::ZR to, CompensationWord comp = CompensationWord::None) = 0;
     virtual void feed(turning::ZR to, double feedPerRev, CompensationWord comp = CompensationWord::None) = 0;
+    // A rapid along one axis, the other staying where it is (also where the
+    // chain does not know it: at the program's start), stated whole (G0 and
+    // the one word): a gang slide's Z clear and X move (gang_post.h).
+    virtual void rapidAlong(LatheAxis axis, double value) = 0;
     virtual void arc(bool clockwise, turning::ZR to, turning::ZR centre, double feedPerRev) = 0;
     // A threading pass synchronised with the spindle, `lead` along Z.
     virtual void threadPass(turning::ZR to, double lead) = 0;

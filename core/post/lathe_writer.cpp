@@ -128,6 +128,20 @@ void LatheWriter::move(const char* g, turning::ZR to, std::optional<double> feed
 
 void LatheWriter::rapid(turning::ZR to, CompensationWord comp) { move("G0", to, std::nullopt, comp); }
 
+void LatheWriter::rapidAlong(LatheAxis axis, double value)
+{
+    motion_ = "G0";
+    if (axis == LatheAxis::X) {
+        xw_ = x(value);
+        at_.r = value;
+        tape_.block("G0 " + xw_);
+    } else {
+        zw_ = z(value);
+        at_.z = value;
+        tape_.block("G0 " + zw_);
+    }
+}
+
 void LatheWriter::feed(turning::ZR to, double feedPerRev, CompensationWord comp) { move("G1", to, feedPerRev, comp); }
 
 void LatheWriter::arc(bool cw, turning::ZR to, turning::ZR centre, double feedPerRev)

@@ -31,6 +31,7 @@ public:
     void coolant(bool on) override { tape_.block(on ? dialect_.coolantOn : dialect_.coolantOff); }
     void rapid(turning::ZR to, CompensationWord comp) override;
     void feed(turning::ZR to, double feedPerRev, CompensationWord comp) override;
+    void rapidAlong(LatheAxis axis, double value) override;
     void arc(bool clockwise, turning::ZR to, turning::ZR centre, double feedPerRev) override;
     void threadPass(turning::ZR to, double lead) override;
     void roughingCycle(int number, const TurnCycle& cycle, double feedPerRev) override;

@@ -48,6 +48,7 @@ public:
     void coolant(bool on) override { next_.coolant(on); }
     void rapid(turning::ZR to, CompensationWord comp) override { next_.rapid(inch(to), comp); }
     void feed(turning::ZR to, double feedPerRev, CompensationWord comp) override { next_.feed(inch(to), inch(feedPerRev), comp); }
+    void rapidAlong(LatheAxis axis, double value) override { next_.rapidAlong(axis, inch(value)); }
     void arc(bool clockwise, turning::ZR to, turning::ZR centre, double feedPerRev) override
     {
         next_.arc(clockwise, inch(to), inch(centre), inch(feedPerRev));

@@ -25,11 +25,11 @@ o201 if [#5399 LT 0]
   (MSG, the other path did not come: stopped)
   M2
 o201 endif
-G1 Z-49.898
+G1 Z-50.001
 X37.08
 G0 Z2
 X28.24
-G1 Z-49.898
+G1 Z-50.001
 X29.24
 G0 Z2
 X20.4

@@ -33,7 +33,15 @@ void Planner::planRoughing()
     ts.allowanceX = t_.allowanceX;
     ts.allowanceZ = t_.allowanceZ;
     ts.cutting = *cutting;
-    const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, insertShape(g), t_.allowanceX, t_.allowanceZ);
+    // The bar behind the profile's end moved back by what the region adds
+    // to a face (the allowance, the flattening's growth, the nose
+    // polygon's excess over the nose) and a micrometre: the passes' tips
+    // reach the profile's end, none stops an allowance short of it.
+    const ToolShape shape = insertShape(g);
+    double noseBack = 0.0;  // how far the shape reaches toward the chuck from the nose centre
+    for (const ZR q : shape) noseBack = std::max(noseBack, -q.z);
+    const ForbiddenRegion F =
+        ForbiddenRegion::make(roughingLoop(t_.allowanceZ + kFlatten + (noseBack - rn) + 0.001), shape, t_.allowanceX, t_.allowanceZ);
 
     // Levels of the nose's cutting point (outer: its lowest, inner: its
     // highest point) from the stock's surface to the profile's extreme.
@@ -121,6 +129,18 @@ void Planner::planRoughing()
     // allowance (docs/turning.md).
     if (const auto cycle = roughingCycle(*tool, surface)) ts.path.cycle = *cycle;
     addStep(StepKind::TurnRoughing, MachiningType::TurnRoughing, *tool, reason, std::move(ts));
+}
+
+std::vector<Segment> Planner::roughingLoop(double behind) const
+{
+    if (inner_) return partLoop_;  // a bore's bar goes on past the profile's end: no face there
+    std::vector<Segment> loop(chain_.begin(), chain_.begin() + static_cast<long>(last_));
+    const ZR start = chain_.front().a, end = chain_[last_ - 1].b;
+    const double zLo = std::min(zBarEnd_, zEnd_) - 1.0, zWall = std::max(zEnd_ - behind, zLo + kTol);
+    const std::vector<ZR> pts{end, {zWall, end.r}, {zWall, R_}, {zLo, R_}, {zLo, 0.0}, {start.z, 0.0}, start};
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i)
+        if (dist(pts[i], pts[i + 1]) > kTol) loop.push_back(lineSegment(pts[i], pts[i + 1]));
+    return loop;
 }
 
 std::optional<TurnCycle> Planner::roughingCycle(const Tool& tool, double surface) const

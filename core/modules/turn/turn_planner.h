@@ -177,6 +177,14 @@ private:
 
     std::optional<TurnCycle> roughingCycle(const Tool& tool, double surface) const;
 
+    // The part for roughing's forbidden region: makePartLoop's, with the
+    // bar behind the profile's end (outer) and the back face's edges
+    // parting off cuts set `behind` further toward the chuck. No step
+    // finishes that face (the finishing leaves the profile's end up and
+    // forward), so the roughing leaves no allowance on it: its passes reach
+    // the profile's end.
+    std::vector<Segment> roughingLoop(double behind) const;
+
     void checkSpindleLimit(const Tool& tool, const TurnCutting& c, const char* key);
 
     // ---- finishing -----------------------------------------------------------
