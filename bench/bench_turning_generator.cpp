@@ -96,6 +96,9 @@ void BM_GeneratedLatheParts(benchmark::State& state)
                     if (kind != "rest-material") what += " | " + first;
                 std::fprintf(stderr, "seed %llu:%s\n", static_cast<unsigned long long>(seed), what.c_str());
             }
+            // The counts so far every 500 seeds (a long run stopped early still says them).
+            if (seed % 500 == 0)
+                std::fprintf(stderr, "after seed %llu: %s\n", static_cast<unsigned long long>(seed), tally.summary().c_str());
         }
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

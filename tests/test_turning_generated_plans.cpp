@@ -129,6 +129,14 @@ private slots:
         // line to the step's top lies over the rest of it.
         QTest::newRow("step up behind a picked front rounding: rs274 straight feed in concave corner, gouge 0.060") << quint64(1786);
         QTest::newRow("step up behind a picked front rounding: rs274 straight feed in concave corner, gouge 0.285") << quint64(415);
+        // The entry along -Z, not measured before: into a bore whose front
+        // face has an allowance (the lip it stands on: the entry ran through
+        // it; the short side at its foot is now left to the entry), and at a
+        // front rounding too short to hold the nose after a steep taper (a
+        // lead-in along the faced front now).
+        QTest::newRow("entry into a bore whose face has an allowance: gouge 0.590") << quint64(1367);
+        QTest::newRow("entry into a bore whose face has an allowance: gouge 0.560") << quint64(1716);
+        QTest::newRow("entry at a front rounding before a steep taper: gouge 0.315") << quint64(1097);
         // TAIWA_GENERATED_SEEDS="6 12": those seeds too, with what they find.
         for (const QString& s : qEnvironmentVariable("TAIWA_GENERATED_SEEDS").split(' ', Qt::SkipEmptyParts))
             QTest::newRow(qPrintable("seed " + s)) << s.toULongLong();

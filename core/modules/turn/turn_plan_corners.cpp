@@ -33,47 +33,71 @@ double distanceTo(const Segment& s, ZR p)
 
 }  // namespace
 
-std::optional<NoseIntoPart> Planner::noseIntoPart(const std::vector<Segment>& contour, double rn) const
+std::optional<NoseIntoPart> Planner::noseIntoPart(const std::vector<Segment>& contour, double rn, std::optional<ZR> exitTo,
+                                                  bool withEntry) const
 {
     const int air = inner_ ? 1 : -1;
-    const std::vector<std::optional<Segment>> centres = [&] {
-        std::vector<std::optional<Segment>> out;
-        for (const Segment& s : contour) out.push_back(offset(s, rn, air));
-        return out;
-    }();
-    const auto edgeOf = [&](const Segment& s, ZR at) {
+    std::vector<std::optional<Segment>> centres;
+    for (const Segment& s : contour) centres.push_back(offset(s, rn, air));
+    // The exit: from the last offset's end straight to where it is programmed.
+    if (exitTo && centres.back()) centres.push_back(lineSegment(centres.back()->b, *exitTo));
+    // The edge followed there, or for a line or chord of the contour's own
+    // (the entry and the exit too) the edge the nose cuts.
+    const auto edgeOf = [&](const Segment& s, std::size_t cut) {
         for (std::size_t i = first_; i < last_; ++i)
             if (dist(chain_[i].a, s.a) < 1e-7 && dist(chain_[i].b, s.b) < 1e-7) return d_.edges[i].id;
-        // A line or chord of the contour's own: the part's edge nearest the nose.
-        std::size_t best = first_;
-        for (std::size_t i = first_; i < last_; ++i)
-            if (distanceTo(chain_[i], at) < distanceTo(chain_[best], at)) best = i;
-        return d_.edges[best].id;
+        return d_.edges[cut].id;
     };
     std::optional<NoseIntoPart> worst;
-    for (std::size_t k = 0; k < contour.size(); ++k) {
-        if (!centres[k]) continue;
-        // The nose centre's run along this element: from where it meets the
-        // previous one's at a concave corner to where it meets the next's.
-        double from = 0.0, to = length(*centres[k]);
-        const auto cornerAt = [&](std::size_t a, std::size_t b) -> std::optional<ZR> {
-            if (!centres[a] || !centres[b]) return std::nullopt;
-            if (s_ * cross(tangentAtEnd(contour[a]), tangentAtStart(contour[b])) >= -1e-9) return std::nullopt;  // convex
-            return nearest(intersections(curveOf(*centres[a]), curveOf(*centres[b])), contour[a].b);
-        };
-        if (k > 0)
-            if (const auto c = cornerAt(k - 1, k); c && contains(*centres[k], *c, 1e-6)) from = parameterOf(*centres[k], *c);
-        if (k + 1 < contour.size())
-            if (const auto c = cornerAt(k, k + 1); c && contains(*centres[k], *c, 1e-6)) to = parameterOf(*centres[k], *c);
+    // The part as the verification closes it: the deformed profile, its
+    // ends joined to the axis (outer) or out past the bar (inner).
+    std::vector<Segment> part = chain_;
+    const double rClose = inner_ ? R_ + 5.0 : 0.0;
+    const ZR a0 = chain_.front().a, b0 = chain_.back().b;
+    if (std::abs(b0.r - rClose) > 1e-9) part.push_back(lineSegment(b0, {b0.z, rClose}));
+    if (std::abs(a0.r - rClose) > 1e-9) part.push_back(lineSegment({a0.z, rClose}, a0));
+    // The nose centre's run along `centre` from `from` to `to`, against the
+    // whole part (its faces too: the entry and the exit pass them).
+    // `whole`: against the whole part (the entry, the exit and the step
+    // from the entry onto the contour); else against the turned contour's
+    // own edges.
+    const auto sample = [&](const Segment& centre, double from, double to, const Segment& along, bool whole = false) {
         const int n = std::max(8, static_cast<int>((to - from) / 0.02));
         for (int i = 0; i <= n && to > from; ++i) {
-            const ZR c = pointAt(*centres[k], from + (to - from) * i / n);
-            for (std::size_t j = first_; j < last_; ++j) {
-                const double depth = rn - distanceTo(chain_[j], c);
-                if (depth > 2e-3 && (!worst || depth > worst->depth)) worst = NoseIntoPart{depth, c, edgeOf(contour[k], c)};
+            const ZR c = pointAt(centre, from + (to - from) * i / n);
+            for (std::size_t j = whole ? 0 : first_; j < (whole ? part.size() : last_); ++j) {
+                const double depth = rn - distanceTo(part[j], c);
+                if (depth > 2e-3 && (!worst || depth > worst->depth))
+                    worst = NoseIntoPart{depth, c, edgeOf(along, j < chain_.size() ? j : dist(part[j].b, a0) < 1e-9 ? 0 : chain_.size() - 1)};
             }
         }
+    };
+    // The nose centre's run along each element: from where it meets the
+    // previous one's at a concave corner to where it meets the next's.
+    const std::size_t n = contour.size();
+    std::vector<double> from(n, 0.0), to(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) to[k] = centres[k] ? length(*centres[k]) : 0.0;
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+        if (!centres[k] || !centres[k + 1]) continue;
+        if (s_ * cross(tangentAtEnd(contour[k]), tangentAtStart(contour[k + 1])) >= -1e-9) continue;  // convex: rolls round
+        const auto c = nearest(intersections(curveOf(*centres[k]), curveOf(*centres[k + 1])), contour[k].b);
+        if (c && contains(*centres[k], *c, 1e-6)) to[k] = parameterOf(*centres[k], *c);
+        if (c && contains(*centres[k + 1], *c, 1e-6)) from[k + 1] = parameterOf(*centres[k + 1], *c);
     }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!centres[k] || exitTo) continue;  // the exit is measured alone
+        sample(*centres[k], from[k], to[k], contour[k], withEntry && k == 0);
+        // Where the entry's offset and the first element's do not cross at
+        // a concave corner, the nose centre goes straight from the one's
+        // end to the other's start.
+        if (withEntry && k == 0 && k + 1 < n && centres[k + 1]) {
+            const ZR a = pointAt(*centres[k], to[k]), b = pointAt(*centres[k + 1], from[k + 1]);
+            if (dist(a, b) > 1e-6 && s_ * cross(tangentAtEnd(contour[k]), tangentAtStart(contour[k + 1])) < -1e-9)
+                sample(lineSegment(a, b), 0.0, dist(a, b), lineSegment(contour[k].b, contour[k + 1].a), true);
+        }
+    }
+    if (centres.size() > contour.size())
+        sample(*centres.back(), 0.0, length(*centres.back()), lineSegment(contour.back().b, *exitTo), true);
     return worst;
 }
 

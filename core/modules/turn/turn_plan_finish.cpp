@@ -118,10 +118,99 @@ void Planner::planFinishing(const Tool& tool)
     reachableCorners(contour, rn);
     // The lines that makes at arcs, at line corners in their turn.
     if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
-    // A contour along which the nose would cut the part is refused, not
-    // planned (the verification refuses such a plan: issue 33, item 3).
-    // Only asked of a plan not refused already (its reason comes first).
-    if (const auto into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt) {
+    // The exit's end (the programmed point) for a contour: off the part
+    // with compensation cancelled, up and forward, unless the last element
+    // falls toward its end (the tool would go back into it): then straight
+    // out, away from it. Straight out: the control cancels compensation
+    // moving the nose centre in a line from where it touches the last
+    // element, so the programmed end is that centre moved out, plus the
+    // tip's offset.
+    const auto exitOf = [&](const std::vector<Segment>& c, bool upAndForward) {
+        const ZR last = c.back().b;
+        const ZR away = airNormal(tangentAtEnd(c.back()));
+        const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
+        if (upAndForward) return last + exit;
+        return last + rn * away + ZR{0.0, s_ * (t_.clearance + 2.0 * rn)} + ts.tipFromCentre;
+    };
+    // The entry: along -Z onto the contour's start, from a point clear of
+    // it by the clearance and two nose radii; as the nose centre runs it
+    // (the programmed point less the tip's offset), for the measure.
+    const auto entryOf = [&](const std::vector<Segment>& c) {
+        const ZR first = c.front().a;
+        return ZR{first.z + t_.clearance + 2.0 * rn, first.r};
+    };
+    const auto entryLine = [&](const std::vector<Segment>& c) {
+        const ZR e = entryOf(c) - ts.tipFromCentre;
+        return lineSegment({e.z, c.front().a.r}, c.front().a);
+    };
+    // The nose measured along the entry, the contour and the exit before
+    // the plan is returned (the verification refuses a plan that cuts the
+    // part anywhere: issue 33, item 3). The contour first: where it cuts,
+    // the plan is refused naming the edge. Then the ways in and out: the
+    // entry along -Z onto the contour's start; failing that, onto the same
+    // contour without the short lines at its start the nose cannot sit
+    // against coming along -Z (a bore face's allowance: the side of the
+    // lip it stands on), or with a lead-in along the part's edge before it
+    // (the front face facing cut, up to a front rounding); the exit up and
+    // forward or straight out.
+    std::optional<NoseIntoPart> into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt;
+    bool upAndForward = dot(unit(ZR{t_.clearance, s_ * (t_.clearance + 2.0 * rn)}), airNormal(tangentAtEnd(contour.back()))) > 0.25;
+    if (!into && out_.problems.empty()) {
+        std::vector<std::vector<Segment>> ways{contour};
+        {
+            std::vector<Segment> c = contour;
+            const ZR in{-1.0, 0.0};
+            // Only an edge of the allowance's own (a side), never the part's.
+            const auto side = [&](const Segment& e) {
+                for (std::size_t i = first_; i < last_; ++i)
+                    if (dist(chain_[i].a, e.a) < 1e-9 && dist(chain_[i].b, e.b) < 1e-9) return !mustReach(i);
+                return false;
+            };
+            while (c.size() > 1 && !c.front().arc && side(c.front())) {
+                const ZR t = tangentAtStart(c.front());
+                if (s_ * cross(in, t) >= -1e-9 && dot(in, t) > -1e-9) break;  // not a concave turn from -Z
+                const double phi = std::acos(std::clamp(dot(in, t), -1.0, 1.0));
+                if (phi < std::numbers::pi - 1e-6 && length(c.front()) >= rn * std::tan(phi / 2.0) + 0.01) break;  // holds it
+                c.erase(c.begin());
+            }
+            if (c.size() < contour.size()) ways.push_back(c);
+        }
+        if (first_ > 0) {
+            const Segment& before = chain_[first_ - 1];
+            if (dist(before.b, contour.front().a) < 1e-9) {
+                const double l = length(before);
+                std::vector<Segment> c = contour;
+                c.insert(c.begin(), l > 2.0 * rn + 1e-6 ? piece(before, pointAt(before, l - 2.0 * rn), before.b) : before);
+                ways.push_back(c);
+            }
+        }
+        std::optional<NoseIntoPart> firstInto;
+        bool found = false;
+        for (const auto& c : ways) {
+            std::vector<Segment> measured{entryLine(c)};
+            measured.insert(measured.end(), c.begin(), c.end());
+            std::optional<NoseIntoPart> bad = noseIntoPart(measured, rn, std::nullopt, true);
+            if (!bad) {
+                // The exit: the way chosen by the last element, else the other.
+                bad = noseIntoPart({c.back()}, rn, exitOf(c, upAndForward) - ts.tipFromCentre);
+                if (bad && !noseIntoPart({c.back()}, rn, exitOf(c, !upAndForward) - ts.tipFromCentre)) {
+                    upAndForward = !upAndForward;
+                    bad.reset();
+                }
+            }
+            if (!bad) {
+                contour = c;
+                found = true;
+                break;
+            }
+            if (!firstInto) firstInto = bad;
+        }
+        if (!found) into = firstInto;
+    }
+    // A contour along which (or into or out of which) the nose would cut
+    // the part is refused, not planned. Only asked of a plan not refused
+    // already (its reason comes first).
+    if (into) {
         problem("rows", fmt::format("{} cannot be finished as drawn: along it the nose R{} of {} would cut {} into the part with "
                                     "its centre at X{} Z{} (a corner too tight for the nose next to it); change the allowance or the "
                                     "corner there",
@@ -131,7 +220,7 @@ void Planner::planFinishing(const Tool& tool)
     }
     TurnPath& p = ts.path;
     const ZR first = contour.front().a;
-    const ZR entry{first.z + t_.clearance + 2.0 * rn, first.r};
+    const ZR entry = entryOf(contour);
     p.start = {entry.z, safeR()};
     // To the entry point with the nose clear, then compensation on along -Z onto the contour.
     p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
@@ -144,17 +233,7 @@ void Planner::planFinishing(const Tool& tool)
         else p.moves.push_back({TurnMove::Feed, s.b, {}, FeedKind::Cut});
     }
     p.compTo = static_cast<int>(p.moves.size());
-    // Off the part with compensation cancelled: up and forward, unless
-    // the last element falls toward its end (the tool would go back into
-    // it): then straight out, away from it.
-    // Straight out: the control cancels compensation moving the nose
-    // centre in a line from where it touches the last element, so the
-    // programmed end is that centre moved out, plus the tip's offset.
-    const ZR last = contour.back().b;
-    const ZR away = airNormal(tangentAtEnd(contour.back()));
-    const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
-    if (dot(unit(exit), away) > 0.25) p.moves.push_back({TurnMove::Feed, last + exit, {}, FeedKind::Cut});
-    else p.moves.push_back({TurnMove::Feed, last + rn * away + ZR{0.0, s_ * (t_.clearance + 2.0 * rn)} + ts.tipFromCentre, {}, FeedKind::Cut});
+    p.moves.push_back({TurnMove::Feed, exitOf(contour, upAndForward), {}, FeedKind::Cut});
     p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
     // Out of a bore along the axis before the turret moves on.
     if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});

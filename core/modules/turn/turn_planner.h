@@ -237,9 +237,16 @@ private:
     // the rest of A and makes a corner with A the nose holds; none when A is
     // not a convex arc or no such point exists.
     // The deepest the nose (radius rn) goes into the part along the
-    // compensated contour (its centre's offsets trimmed at concave corners;
-    // at convex ones it rolls round the corner); none within 2 µm.
-    std::optional<NoseIntoPart> noseIntoPart(const std::vector<Segment>& contour, double rn) const;
+    // compensated contour (its centre's offsets trimmed at concave corners
+    // where they cross; at convex ones it rolls round the corner); none
+    // within 2 µm. `withEntry`: the contour begins with the entry (a line
+    // whose start is where the nose centre is less its offset), measured
+    // against the whole part as the verification closes it, with the step
+    // onto the first element where their offsets do not cross. `exitTo`:
+    // where the nose centre ends the exit, straight from the last offset's
+    // end (compensation cancelled): the exit alone measured, likewise.
+    std::optional<NoseIntoPart> noseIntoPart(const std::vector<Segment>& contour, double rn,
+                                             std::optional<ZR> exitTo = std::nullopt, bool withEntry = false) const;
     std::optional<ZR> ontoConvex(const Segment& A, const Segment& B, double rn) const;
 
     // ---- grooving --------------------------------------------------------
