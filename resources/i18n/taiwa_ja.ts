@@ -488,6 +488,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::PassesBar</name>
         <message>
+            <source>Remove the last point of the passes</source>
+            <translation>パスの最後の点を削除</translation>
+        </message>
+        <message>
+            <source>Clear the passes</source>
+            <translation>パスをクリア</translation>
+        </message>
+        <message>
             <source>Draw passes</source>
             <translation>パスを描く</translation>
         </message>
@@ -510,14 +518,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Remove every pass of this unit</source>
             <translation>このユニットのパスをすべて削除</translation>
-        </message>
-        <message>
-            <source>Remove the last point of the passes</source>
-            <translation>パスの最後の点を削除</translation>
-        </message>
-        <message>
-            <source>Clear the passes</source>
-            <translation>パスをクリア</translation>
         </message>
         <message>
             <source>Draw the start point of the passes</source>
@@ -630,8 +630,56 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>ねじピッチ</translation>
         </message>
         <message>
+            <source>Allowance</source>
+            <translation>研削代</translation>
+        </message>
+        <message>
+            <source>Adjustment</source>
+            <translation>調整量</translation>
+        </message>
+        <message>
+            <source>Relief groove</source>
+            <translation>逃げ溝</translation>
+        </message>
+        <message>
+            <source>Width</source>
+            <translation>幅</translation>
+        </message>
+        <message>
+            <source>Depth</source>
+            <translation>深さ</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直線</translation>
+        </message>
+        <message>
+            <source>arc CW (G2)</source>
+            <translation>円弧 CW (G2)</translation>
+        </message>
+        <message>
+            <source>arc CCW (G3)</source>
+            <translation>円弧 CCW (G3)</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>なし</translation>
+        </message>
+        <message>
+            <source>chamfer</source>
+            <translation>面取り</translation>
+        </message>
+        <message>
+            <source>rounding</source>
+            <translation>丸み</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>形状(切削順、X は直径。円弧は R または中心で指定)</translation>
+        </message>
+        <message>
+            <source>Grinding allowance per edge (empty: adjustment from the finishing tool's nose radius, depth = allowance, no width = no groove)</source>
+            <translation>稜線ごとの研削代(空欄: 調整量は仕上げ工具のノーズ半径、深さ = 研削代、幅なし = 溝なし)</translation>
         </message>
         <message>
             <source>Add row</source>
@@ -658,30 +706,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>完了</translation>
         </message>
         <message>
-            <source>Allowance</source>
-            <translation>研削代</translation>
-        </message>
-        <message>
-            <source>Adjustment</source>
-            <translation>調整量</translation>
-        </message>
-        <message>
-            <source>Relief groove</source>
-            <translation>逃げ溝</translation>
-        </message>
-        <message>
-            <source>Width</source>
-            <translation>幅</translation>
-        </message>
-        <message>
-            <source>Depth</source>
-            <translation>深さ</translation>
-        </message>
-        <message>
-            <source>Grinding allowance per edge (empty: adjustment from the finishing tool's nose radius, depth = allowance, no width = no groove)</source>
-            <translation>稜線ごとの研削代(空欄: 調整量は仕上げ工具のノーズ半径、深さ = 研削代、幅なし = 溝なし)</translation>
-        </message>
-        <message>
             <source>Add allowance for picked edge</source>
             <translation>選択した稜線に研削代を追加</translation>
         </message>
@@ -690,32 +714,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>研削代を削除</translation>
         </message>
         <message>
-            <source>line</source>
-            <translation>直線</translation>
-        </message>
-        <message>
-            <source>arc CW (G2)</source>
-            <translation>円弧 CW (G2)</translation>
-        </message>
-        <message>
-            <source>arc CCW (G3)</source>
-            <translation>円弧 CCW (G3)</translation>
-        </message>
-        <message>
             <source>Element of row %1</source>
             <translation>行 %1 の要素</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>なし</translation>
-        </message>
-        <message>
-            <source>chamfer</source>
-            <translation>面取り</translation>
-        </message>
-        <message>
-            <source>rounding</source>
-            <translation>丸み</translation>
         </message>
         <message>
             <source>Corner of row %1</source>
@@ -778,6 +778,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>研削代 %1 を削除</translation>
         </message>
         <message>
+            <source>Chamfer %1: leg</source>
+            <translation>面取り %1: 辺の長さ</translation>
+        </message>
+        <message>
+            <source>Rounding %1: radius</source>
+            <translation>丸み %1: 半径</translation>
+        </message>
+        <message>
             <source>chamfers</source>
             <translation>面取り</translation>
         </message>
@@ -792,14 +800,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>%1 %2: pick one in the view</source>
             <translation>%2 %1 個: 図で一つ選んでください</translation>
-        </message>
-        <message>
-            <source>Chamfer %1: leg</source>
-            <translation>面取り %1: 辺の長さ</translation>
-        </message>
-        <message>
-            <source>Rounding %1: radius</source>
-            <translation>丸み %1: 半径</translation>
         </message>
         <message>
             <source>Revise %1</source>
@@ -1594,12 +1594,12 @@ Theirs: %6</source>
             <translation>検証(&amp;V)</translation>
         </message>
         <message>
-            <source>Colour &amp;map</source>
-            <translation>カラーマップ(&amp;M)</translation>
-        </message>
-        <message>
             <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
             <translation>全工程を %1 mm の格子で素材に削り込み、削り込み過ぎ・干渉・早送りでの素材への突入・ストローク超過・削り残しを一覧にします</translation>
+        </message>
+        <message>
+            <source>Colour &amp;map</source>
+            <translation>カラーマップ(&amp;M)</translation>
         </message>
         <message>
             <source>Show the finished part in the 3-D view coloured by what the verification found</source>
@@ -1622,16 +1622,16 @@ Theirs: %6</source>
             <translation>それ以上の削り残し</translation>
         </message>
         <message>
+            <source>Verifying…</source>
+            <translation>検証中…</translation>
+        </message>
+        <message>
             <source>Not verified since the last change.</source>
             <translation>最後の変更以降、未検証です。</translation>
         </message>
         <message>
             <source>No plan to verify.</source>
             <translation>検証する加工計画がありません。</translation>
-        </message>
-        <message>
-            <source>Verifying…</source>
-            <translation>検証中…</translation>
         </message>
         <message>
             <source>Not verified: %1</source>

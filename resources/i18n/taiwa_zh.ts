@@ -488,6 +488,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::PassesBar</name>
         <message>
+            <source>Remove the last point of the passes</source>
+            <translation>删除路径的最后一点</translation>
+        </message>
+        <message>
+            <source>Clear the passes</source>
+            <translation>清除路径</translation>
+        </message>
+        <message>
             <source>Draw passes</source>
             <translation>绘制路径</translation>
         </message>
@@ -510,14 +518,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>Remove every pass of this unit</source>
             <translation>删除此单元的所有路径</translation>
-        </message>
-        <message>
-            <source>Remove the last point of the passes</source>
-            <translation>删除路径的最后一点</translation>
-        </message>
-        <message>
-            <source>Clear the passes</source>
-            <translation>清除路径</translation>
         </message>
         <message>
             <source>Draw the start point of the passes</source>
@@ -630,8 +630,56 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>螺距</translation>
         </message>
         <message>
+            <source>Allowance</source>
+            <translation>磨削余量</translation>
+        </message>
+        <message>
+            <source>Adjustment</source>
+            <translation>调整量</translation>
+        </message>
+        <message>
+            <source>Relief groove</source>
+            <translation>退刀槽</translation>
+        </message>
+        <message>
+            <source>Width</source>
+            <translation>宽度</translation>
+        </message>
+        <message>
+            <source>Depth</source>
+            <translation>深度</translation>
+        </message>
+        <message>
+            <source>line</source>
+            <translation>直线</translation>
+        </message>
+        <message>
+            <source>arc CW (G2)</source>
+            <translation>顺时针圆弧 (G2)</translation>
+        </message>
+        <message>
+            <source>arc CCW (G3)</source>
+            <translation>逆时针圆弧 (G3)</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>无</translation>
+        </message>
+        <message>
+            <source>chamfer</source>
+            <translation>倒角</translation>
+        </message>
+        <message>
+            <source>rounding</source>
+            <translation>圆角</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>轮廓,按切削顺序(X 为直径;圆弧:R 或圆心)</translation>
+        </message>
+        <message>
+            <source>Grinding allowance per edge (empty: adjustment from the finishing tool's nose radius, depth = allowance, no width = no groove)</source>
+            <translation>各边的磨削余量(空:调整量取精加工刀具的刀尖圆弧半径,深度 = 余量,无宽度 = 无槽)</translation>
         </message>
         <message>
             <source>Add row</source>
@@ -658,30 +706,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>完成</translation>
         </message>
         <message>
-            <source>Allowance</source>
-            <translation>磨削余量</translation>
-        </message>
-        <message>
-            <source>Adjustment</source>
-            <translation>调整量</translation>
-        </message>
-        <message>
-            <source>Relief groove</source>
-            <translation>退刀槽</translation>
-        </message>
-        <message>
-            <source>Width</source>
-            <translation>宽度</translation>
-        </message>
-        <message>
-            <source>Depth</source>
-            <translation>深度</translation>
-        </message>
-        <message>
-            <source>Grinding allowance per edge (empty: adjustment from the finishing tool's nose radius, depth = allowance, no width = no groove)</source>
-            <translation>各边的磨削余量(空:调整量取精加工刀具的刀尖圆弧半径,深度 = 余量,无宽度 = 无槽)</translation>
-        </message>
-        <message>
             <source>Add allowance for picked edge</source>
             <translation>为所选边添加余量</translation>
         </message>
@@ -690,32 +714,8 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>删除余量</translation>
         </message>
         <message>
-            <source>line</source>
-            <translation>直线</translation>
-        </message>
-        <message>
-            <source>arc CW (G2)</source>
-            <translation>顺时针圆弧 (G2)</translation>
-        </message>
-        <message>
-            <source>arc CCW (G3)</source>
-            <translation>逆时针圆弧 (G3)</translation>
-        </message>
-        <message>
             <source>Element of row %1</source>
             <translation>第 %1 行的元素</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>无</translation>
-        </message>
-        <message>
-            <source>chamfer</source>
-            <translation>倒角</translation>
-        </message>
-        <message>
-            <source>rounding</source>
-            <translation>圆角</translation>
         </message>
         <message>
             <source>Corner of row %1</source>
@@ -778,6 +778,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>删除余量 %1</translation>
         </message>
         <message>
+            <source>Chamfer %1: leg</source>
+            <translation>倒角 %1:边长</translation>
+        </message>
+        <message>
+            <source>Rounding %1: radius</source>
+            <translation>圆角 %1:半径</translation>
+        </message>
+        <message>
             <source>chamfers</source>
             <translation>倒角</translation>
         </message>
@@ -792,14 +800,6 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>%1 %2: pick one in the view</source>
             <translation>%1 个%2:请在图中选择一个</translation>
-        </message>
-        <message>
-            <source>Chamfer %1: leg</source>
-            <translation>倒角 %1:边长</translation>
-        </message>
-        <message>
-            <source>Rounding %1: radius</source>
-            <translation>圆角 %1:半径</translation>
         </message>
         <message>
             <source>Revise %1</source>
@@ -1594,12 +1594,12 @@ Theirs: %6</source>
             <translation>验证(&amp;V)</translation>
         </message>
         <message>
-            <source>Colour &amp;map</source>
-            <translation>色彩图(&amp;M)</translation>
-        </message>
-        <message>
             <source>Cut every step into the stock on a %1 mm grid and list gouges, collisions, rapids into stock, travel limits and material left</source>
             <translation>以 %1 mm 网格将所有工步切入毛坯，列出过切、碰撞、快移撞入毛坯、超出行程和残料</translation>
+        </message>
+        <message>
+            <source>Colour &amp;map</source>
+            <translation>色彩图(&amp;M)</translation>
         </message>
         <message>
             <source>Show the finished part in the 3-D view coloured by what the verification found</source>
@@ -1622,16 +1622,16 @@ Theirs: %6</source>
             <translation>残留更多</translation>
         </message>
         <message>
+            <source>Verifying…</source>
+            <translation>正在验证…</translation>
+        </message>
+        <message>
             <source>Not verified since the last change.</source>
             <translation>自上次修改后尚未验证。</translation>
         </message>
         <message>
             <source>No plan to verify.</source>
             <translation>没有可验证的加工计划。</translation>
-        </message>
-        <message>
-            <source>Verifying…</source>
-            <translation>正在验证…</translation>
         </message>
         <message>
             <source>Not verified: %1</source>
