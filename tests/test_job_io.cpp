@@ -12,6 +12,7 @@
 #include "modules/m4/m4.h"
 #include "modules/probe/probe.h"
 #include "modules/side/side.h"
+#include "modules/surface/surface.h"
 #include "modules/turn/turn.h"
 #include "job/job_check.h"
 #include "job/job_file.h"
@@ -185,6 +186,8 @@ private slots:
                     if (fa->tools.count("face")) seen.insert("FACE pinned");
                 } else if (const auto* sm = (u.module).getIf<SideMill>()) {
                     seen.insert(std::string("SIDE ") + (sm->side == 1 ? "left" : "right") + (sm->direction == 1 ? " climb" : " conventional") + " F" + std::to_string(sm->wallFinish));
+                } else if ((u.module).getIf<SurfaceUnit>()) {
+                    seen.insert("SURFACE");
                 } else {
                     const auto& d = (u.module).as<M2DPocket>();
                     seen.insert("M2D U" + std::to_string(d.toolUse) + " H" + std::to_string(d.pilotHole));
@@ -199,7 +202,7 @@ private slots:
                                  "CP U1", "CP islands", "HOLES single", "HOLES grid", "HOLES bolt circle", "HOLES drilled",
                                  "HOLES tapped", "HOLES reamed", "HOLES bored", "AREA islands", "FACE pattern1", "FACE pattern2",
                                  "FACE margin", "FACE pinned",
-                                 "SIDE left climb F1", "SIDE right conventional F2"})
+                                 "SIDE left climb F1", "SIDE right conventional F2", "SURFACE"})
             QVERIFY2(seen.count(want), want);
     }
 
@@ -261,7 +264,7 @@ private slots:
             // Figure elements and the contour, hole and face units are version 5.
             const bool five = !job.figure.empty() || std::any_of(job.units.begin(), job.units.end(), [](const MachiningUnit& u) {
                 const std::string name = u.module.name();
-                return name == "CP" || name == "HOLES" || name == "FACE" || name == "AREA" || name == "SIDE";
+                return name == "CP" || name == "HOLES" || name == "FACE" || name == "AREA" || name == "SIDE" || name == "SURFACE";
             });
             QCOMPARE(formatVersionFor(job), five ? 5 : job.clamping ? 4 : isLathe ? 3 : (job.dialect.empty() ? 1 : 2));
             QVERIFY2(five == (text.find("\"version\": 5,") != std::string::npos), qPrintable(f));

@@ -4,7 +4,6 @@
 #include "ui/profile_editor.h"
 #include "ui/core_messages.h"
 
-#include "modules/turn/turn_deform.h"
 #include "turning/allowance.h"
 #include "turning/profile_resolve.h"
 #include "ui/number_text.h"
@@ -263,11 +262,11 @@ void ProfileEditor::setContext(std::optional<BarStock> bar, const std::vector<To
     refreshView();
 }
 
-void ProfileEditor::setTools(ToolPins pins, std::vector<std::string> skip)
+void ProfileEditor::setUnit(const ModuleKind& kind, ModuleInput unit)
 {
-    if (pins == pins_ && skip == skip_) return;
-    pins_ = std::move(pins);
-    skip_ = std::move(skip);
+    if (kind_ == &kind && unit_ && *unit_ == unit) return;
+    kind_ = &kind;
+    unit_ = std::move(unit);
     refreshView();
 }
 
@@ -280,9 +279,20 @@ void ProfileEditor::refreshView()
     const Resolution r = resolveProfile(profile_);
     std::optional<DeformedProfile> deformed;
     if (r.ok()) {  // as the check and the plan deform it (the module's one function)
-        Deformation d =
-            deformTurned(profile_, r.profile, pins_, skip_, library_, bar_ ? &*bar_ : nullptr, LengthUnit::Millimetre).deformation;
+        // A refused row draws nothing; else the plan's own deformation,
+        // through the module's door, when the unit and the bar are known.
+        Deformation d = deformProfile(profile_, r.profile, library_, LengthUnit::Millimetre);
         if (d.ok()) deformed = std::move(d.profile);
+        if (deformed && kind_ && unit_ && bar_) {
+            ModuleInput unit = *unit_;
+            kind_->setTurnedProfile(unit, profile_);
+            Job job;
+            job.bar = bar_;
+            static const TechnologyData tech{};
+            static const std::string material;
+            const UnitPlanContext ctx{tech, library_, material, 0, &job};
+            if (auto part = kind_->turned(unit, ctx)) deformed = std::move(part->deformed);
+        }
     }
     view_->setProfile(r.profile, deformed, bar_);
 }

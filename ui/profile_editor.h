@@ -10,6 +10,7 @@
 
 #include "model/diagnostic.h"
 #include "model/job.h"
+#include "modules/module_kind.h"
 #include "model/tool.h"
 #include "model/turned.h"
 
@@ -43,9 +44,10 @@ public:
     // What the view needs besides the profile: the bar and the library (the
     // finishing tool's nose radius for the deformed profile).
     void setContext(std::optional<BarStock> bar, const std::vector<Tool>& library);
-    // The unit's pins and steps turned off: the finishing insert whose nose
-    // radius the deformed profile takes is the one the plan takes.
-    void setTools(ToolPins pins, std::vector<std::string> skip);
+    // The unit being edited and its module's door: the deformed profile
+    // drawn is the one its plan cuts (ModuleKind::turned: the nose radius of
+    // the finishing insert the plan takes, with the unit's pins).
+    void setUnit(const ModuleKind& kind, ModuleInput unit);
     // Marks the cells the diagnostics name; returns those it does not show.
     Diagnostics showDiagnostics(const Diagnostics& ofThisUnit);
 
@@ -96,8 +98,8 @@ private:
     turning::TurnedProfile profile_;
     std::optional<BarStock> bar_;
     std::vector<Tool> library_;
-    ToolPins pins_;
-    std::vector<std::string> skip_;
+    const ModuleKind* kind_ = nullptr;
+    std::optional<ModuleInput> unit_;
     ProfileView* view_ = nullptr;
     QTableWidget* rows_ = nullptr;
     QTableWidget* allowances_ = nullptr;

@@ -8,7 +8,6 @@
 #include "ui/sketch_view.h"
 
 #include "modules/registry.h"
-#include "modules/turn/turn.h"
 #include "ui/profile_editor.h"
 
 #include "ui/module_palette.h"
@@ -184,7 +183,7 @@ void UnitForm::setUnit(const MachiningUnit& unit, bool force)
     if (profile_)
         if (const turning::TurnedProfile* p = kind_.turnedProfile(unit.module)) {
             profile_->setProfile(*p, force);
-            if (const TurnUnit* t = unit.module.getIf<TurnUnit>()) profile_->setTools(t->tools, t->skip);
+            profile_->setUnit(kind_, unit.module);
         }
     updating_ = true;
     if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));
