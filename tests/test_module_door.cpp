@@ -59,13 +59,15 @@ Step stepOf(int unit, const char* module, StepKind kind, int number, int tool)
 }
 
 // The places in `text` that look a tool up in a library by its id, as
-// "line: text".
+// "line: text": findTool, or a search of its own by id (as the milling post
+// once had).
 QStringList toolLookUps(const QString& text)
 {
     QStringList found;
     const QStringList lines = text.split('\n');
     for (int i = 0; i < lines.size(); ++i)
-        if (lines[i].contains("findTool(") && !lines[i].trimmed().startsWith("//"))
+        if ((lines[i].contains("findTool(") || (lines[i].contains("find_if(") && lines[i].contains(".id =="))) &&
+            !lines[i].trimmed().startsWith("//"))
             found << QString("%1: %2").arg(i + 1).arg(lines[i].trimmed());
     return found;
 }
@@ -247,7 +249,9 @@ private slots:
     // station) read the tool each step was bound to (post/bound_tool.h).
     void onlyChoosingAndBindingLookToolsUp()
     {
-        QCOMPARE(toolLookUps("int a;\n  const Tool* t = findTool(library, id);\n  // findTool(x)\n").size(), 1);  // the rule sees one
+        // The rule sees both kinds, and not a comment.
+        QCOMPARE(toolLookUps("int a;\n  const Tool* t = findTool(library, id);\n  // findTool(x)\n").size(), 1);
+        QCOMPARE(toolLookUps("auto it = std::find_if(l.begin(), l.end(), [&](const Tool& t) { return t.id == id; });").size(), 1);
         QStringList found;
         int files = 0;
         for (const char* folder : {"core/post", "core/export", "core/sheet", "core/verify", "core/picture", "core/sim", "viz", "ui", "app"}) {

@@ -140,9 +140,14 @@ bool checkPins(const FaceUnit& f, Reporter& r)
 {
     bool ok = true;
     for (const auto& [key, id] : f.tools) {
-        const Tool* t = key == face::kStepKey && r.ctx.library ? findTool(*r.ctx.library, id) : nullptr;
+        if (key != face::kStepKey) {
+            ok = false;
+            continue;
+        }
+        if (!r.ctx.library) continue;
+        const Tool* t = findTool(*r.ctx.library, id);
         if (!t) {
-            ok = ok && key == face::kStepKey && !r.ctx.library;
+            ok = false;
             continue;
         }
         if (t->type != ToolType::FaceMill && t->type != ToolType::FlatEndMill) {
