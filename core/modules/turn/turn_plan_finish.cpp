@@ -125,12 +125,11 @@ void Planner::planFinishing(const Tool& tool)
     // moving the nose centre in a line from where it touches the last
     // element, so the programmed end is that centre moved out, plus the
     // tip's offset.
+    const ZR upAndOut{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};  // the exit up and forward
     const auto exitOf = [&](const std::vector<Segment>& c, bool upAndForward) {
         const ZR last = c.back().b;
-        const ZR away = airNormal(tangentAtEnd(c.back()));
-        const ZR exit{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};
-        if (upAndForward) return last + exit;
-        return last + rn * away + ZR{0.0, s_ * (t_.clearance + 2.0 * rn)} + ts.tipFromCentre;
+        if (upAndForward) return last + upAndOut;
+        return last + rn * airNormal(tangentAtEnd(c.back())) + ZR{0.0, upAndOut.r} + ts.tipFromCentre;
     };
     // The entry: along -Z onto the contour's start, from a point clear of
     // it by the clearance and two nose radii; as the nose centre runs it
@@ -154,7 +153,7 @@ void Planner::planFinishing(const Tool& tool)
     // (the front face facing cut, up to a front rounding); the exit up and
     // forward or straight out.
     std::optional<NoseIntoPart> into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt;
-    bool upAndForward = dot(unit(ZR{t_.clearance, s_ * (t_.clearance + 2.0 * rn)}), airNormal(tangentAtEnd(contour.back()))) > 0.25;
+    bool upAndForward = dot(unit(upAndOut), airNormal(tangentAtEnd(contour.back()))) > 0.25;
     if (!into && out_.problems.empty()) {
         std::vector<std::vector<Segment>> ways{contour};
         {
