@@ -69,7 +69,7 @@ Loaded load(const Options& o, bool withToolPaths)
 {
     Loaded l;
     const std::string name = fileName(o.job);
-    const JobReadResult read = readJobFile(o.job);
+    JobReadResult read = readJobFile(o.job);
     if (!read.job) {
         l.exit = printDiagnostics(name, read.diagnostics) == kOk ? kInternal : kInputErrors;
         return l;
@@ -86,7 +86,7 @@ Loaded load(const Options& o, bool withToolPaths)
     }
     PlanOptions options;
     options.withToolPaths = withToolPaths;
-    l.plan = planJob(*read.job, TechnologyTable::builtIn(), *tools, options);
+    l.plan = planJob(std::move(*read.job), TechnologyTable::builtIn(), *tools, options);
     l.exit = printDiagnostics(name, l.plan.diagnostics);
     return l;
 }

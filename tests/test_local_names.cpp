@@ -50,7 +50,7 @@ private slots:
             TechnologyTable::fromJson(material(R"("names": {"ja": ""}, )"));
             QFAIL("an empty name was taken");
         } catch (const Refusal& e) {  // the place, and what is wrong there
-            QCOMPARE(std::string(e.what()), std::string("technology table: material s50c: names: the name in 'ja' must be a text that is not empty"));
+            QCOMPARE(std::string(e.what()), std::string("technology table:1: material s50c: names: the name in 'ja' must be a text that is not empty"));
             QCOMPARE(e.place().key, std::string("material s50c: names"));
         }
         // The shipped table: every material in Japanese and Chinese, its English as the sheet prints it.

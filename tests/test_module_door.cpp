@@ -5,6 +5,9 @@
 // after planning cannot change what is posted from the plan; and the door
 // checks every module's tool pins against the module's own step keys.
 #include "io/json_fields.h"
+#include "job/job_check.h"
+#include "job/job_file.h"
+#include "pipeline/pipeline.h"
 #include "model/turn_path.h"
 #include "modules/face/face.h"
 #include "modules/inclined_face.h"
@@ -288,6 +291,39 @@ private slots:
             }
         QCOMPARE(postProcess(plan.steps, library, o).nc, before);
         QCOMPARE(postProcess(plan.steps, plan.tools, o).nc, before);
+    }
+
+    // A turning unit's profile is deformed once: by its check, which hands
+    // the part on (CheckedJob::turned), and the plan cuts that one. The
+    // checked part is the door's own (turned() makes the same); a mark put
+    // on it reaches the plan, which a second deformation would lose.
+    void thePlanCutsTheDeformationTheCheckMade()
+    {
+        const auto read = readJobFile(test::sourcePath("resources/samples/lathe-tangent-nose.taiwa").toStdString());
+        QVERIFY(read.job);
+        const std::vector<Tool> library = defaultToolLibrary();
+        CheckedJob c = checkedJob(*read.job, TechnologyTable::builtIn(), library);
+        QVERIFY(c.ok());
+        QCOMPARE(c.turned.size(), c.mmJob.units.size());
+        std::vector<std::size_t> turning;
+        for (std::size_t u = 0; u < c.mmJob.units.size(); ++u) {
+            const ModuleInput& m = c.mmJob.units[u].module;
+            const UnitPlanContext ctx{*c.technology, library, c.mmJob.material, static_cast<int>(u), &c.mmJob};
+            const std::optional<TurnedPart> own = moduleKind(m).turned(m, ctx);
+            QCOMPARE(c.turned[u].has_value(), own.has_value());
+            if (!own) continue;
+            turning.push_back(u);
+            QVERIFY(c.turned[u]->complete);
+            QCOMPARE(c.turned[u]->noseRadiusTool, own->noseRadiusTool);
+            QVERIFY(!own->noseRadiusTool.empty());  // the sample's tangent joint takes the finishing insert's radius
+            QVERIFY(c.turned[u]->deformed.edges == own->deformed.edges);
+            c.turned[u]->noseRadiusTool = "marked by the test";
+        }
+        QVERIFY(!turning.empty());
+        const Plan plan = planJob(std::move(c), library);
+        QVERIFY(plan.ok());
+        QCOMPARE(plan.turned.size(), turning.size());
+        for (const TurnedPart& part : plan.turned) QCOMPARE(part.noseRadiusTool, std::string("marked by the test"));
     }
 };
 

@@ -144,10 +144,85 @@ private slots:
             QFAIL("a negative alpha2 was taken");
         } catch (const Refusal& r) {
             QCOMPARE(r.place().file, std::string("technology table"));
-            QCOMPARE(r.place().key, std::string("material x"));
-            QVERIFY2(std::string(r.what()).starts_with("technology table: material x: alpha"), r.what());
+            QCOMPARE(r.place().key, std::string("material x: alpha2"));
+            QCOMPARE(r.place().line, 1);
+            QVERIFY2(std::string(r.what()).starts_with("technology table:1: material x: alpha2: must be a number above 0"), r.what());
         }
         QVERIFY_THROWS_EXCEPTION(Refusal, TechnologyTable::fromJson("not json"));
+    }
+
+    // The technology table goes through the one validating reader of data
+    // files (io/data_reader.h): each row is the shipped form of two
+    // materials with one thing wrong, refused at its line and key.
+    void theTechnologyTableIsReadLikeEveryDataFile_data()
+    {
+        QTest::addColumn<QString>("second");  // the second material's values, from line 6
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("reason");
+        const QString ok = R"(      "alpha1": 1.0, "alpha2": 0.4, "alpha3": 0.15, "beta2": 0.25, "gamma": 0.3,)";
+        QTest::newRow("control") << ok << "" << 0 << "";
+        QTest::newRow("key given twice") << ok + R"( "gamma": 0.3,)" << "materials[1].gamma" << 6 << "given twice";
+        QTest::newRow("a typo") << R"(      "alpha1": 1.0, "alpha2": 0.4, "alpha3": 0.15, "beta2": 0.25, "gama": 0.3,)"
+                                << "material b: gama" << 6 << "not a key of a material";
+        QTest::newRow("far out of range") << R"(      "alpha1": 1e300, "alpha2": 0.4, "alpha3": 0.15, "beta2": 0.25, "gamma": 0.3,)"
+                                          << "material b: alpha1" << 6 << "must be a number above 0 up to 50, not 1e+300";
+        QTest::newRow("gamma zero") << R"(      "alpha1": 1.0, "alpha2": 0.4, "alpha3": 0.15, "beta2": 0.25, "gamma": 0,)"
+                                    << "material b: gamma" << 6 << "must be a number above 0.01 up to 2, not 0";
+        QTest::newRow("turning typo") << ok + "\n" + R"(      "turning": {"depthOfCut": 2.0, "retrakt": 0.5},)"
+                                      << "material b: turning.retrakt" << 7 << "not a key of a material's turning";
+        QTest::newRow("turning out of range") << ok + "\n" + R"(      "turning": {"depthOfCut": 2.0, "withdrawal": 1e9},)"
+                                              << "material b: turning.withdrawal" << 7 << "up to 20, not 1e+09";
+        QTest::newRow("escape in the description") << ok + "\n" + "      \"description\": \"Steel \\u001b[31m\","  // JSON's escape of ESC, not in a raw string: moc cannot parse it there
+                                                   << "material b: description" << 7 << "";
+    }
+
+    void theTechnologyTableIsReadLikeEveryDataFile()
+    {
+        QFETCH(QString, second);
+        QFETCH(QString, key);
+        QFETCH(int, line);
+        QFETCH(QString, reason);
+        const QString text = QString("{\n"
+                                     "  \"format\": \"taiwa-technology\",\n"
+                                     "  \"materials\": [\n"
+                                     "    {\"id\": \"a\", \"alpha1\": 1.0, \"alpha2\": 0.3, \"alpha3\": 0.1, "
+                                     "\"beta2\": 0.2, \"gamma\": 0.5},\n"
+                                     "    {\"id\": \"b\",\n"
+                                     "%1\n"
+                                     "      \"names\": {\"ja\": \"steel\"}\n"
+                                     "    }\n"
+                                     "  ]\n"
+                                     "}\n")
+                                 .arg(second);
+        try {
+            const TechnologyTable table = TechnologyTable::fromJson(text.toStdString());
+            QVERIFY2(key.isEmpty(), qPrintable("taken: " + key));
+            QCOMPARE(table.materials().size(), std::size_t(2));
+            QCOMPARE(table.materials()[1].data.beta2, 0.25);
+        } catch (const Refusal& r) {
+            QVERIFY2(!key.isEmpty(), r.what());
+            QCOMPARE(QString::fromStdString(r.place().file), QString("technology table"));
+            QCOMPARE(QString::fromStdString(r.place().key), key);
+            QCOMPARE(r.place().line, line);
+            QVERIFY2(QString::fromStdString(r.message()).contains(reason), r.what());
+        }
+    }
+
+    // Two materials of one id: which one a job means is not to be guessed.
+    void aMaterialGivenTwiceIsRefused()
+    {
+        try {
+            TechnologyTable::fromJson(std::string(R"({"format": "taiwa-technology", "materials": [)") + "\n" +
+                                      R"(  {"id": "x", "alpha1": 1, "alpha2": 0.3, "alpha3": 0.1, "beta2": 0.2, "gamma": 0.5},)" +
+                                      "\n" +
+                                      R"(  {"id": "x", "alpha1": 2, "alpha2": 0.3, "alpha3": 0.1, "beta2": 0.2, "gamma": 0.5}]})");
+            QFAIL("a material given twice was taken");
+        } catch (const Refusal& r) {
+            QCOMPARE(r.place().key, std::string("material x"));
+            QCOMPARE(r.place().line, 3);
+            QCOMPARE(r.message(), std::string("given twice"));
+        }
     }
 
     void whetherADialectCanPostIsAResult()

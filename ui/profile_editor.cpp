@@ -278,12 +278,12 @@ void ProfileEditor::refreshView()
     }
     const Resolution r = resolveProfile(profile_);
     std::optional<DeformedProfile> deformed;
-    if (r.ok()) {  // as the check and the plan deform it (the module's one function)
-        // A refused row draws nothing; else the plan's own deformation,
-        // through the module's door, when the unit and the bar are known.
-        Deformation d = deformProfile(profile_, r.profile, library_, LengthUnit::Millimetre);
-        if (d.ok()) deformed = std::move(d.profile);
-        if (deformed && kind_ && unit_ && bar_) {
+    if (r.ok()) {
+        // Deformed once, as the check and the plan deform it: through the
+        // module's door (its finishing insert's nose radius, with the bar
+        // when it is known), else by the allowance rows alone. A refused
+        // row draws nothing.
+        if (kind_ && unit_) {
             ModuleInput unit = *unit_;
             kind_->setTurnedProfile(unit, profile_);
             Job job;
@@ -291,7 +291,9 @@ void ProfileEditor::refreshView()
             static const TechnologyData tech{};
             static const std::string material;
             const UnitPlanContext ctx{tech, library_, material, 0, &job};
-            if (auto part = kind_->turned(unit, ctx)) deformed = std::move(part->deformed);
+            if (auto part = kind_->turned(unit, ctx); part && part->complete) deformed = std::move(part->deformed);
+        } else if (Deformation d = deformProfile(profile_, r.profile, library_, LengthUnit::Millimetre); d.ok()) {
+            deformed = std::move(d.profile);
         }
     }
     view_->setProfile(r.profile, deformed, bar_);

@@ -10,6 +10,7 @@
 #include "model/job.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "model/turned.h"
 
 #include <optional>
 #include <string>
@@ -49,6 +50,10 @@ struct Reporter {
 struct UnitReport {
     Diagnostics diagnostics;
     bool figureValid = false;  // its top outline is well-formed: take part in the interference check
+    // A turning unit that passed: the deformed profile its check made
+    // (ModuleKind::turned), which the plan then cuts instead of deforming
+    // the profile again.
+    std::optional<TurnedPart> turned;
 };
 // The depth T of either module: positive, and no deeper than the stock
 // (when the stock is valid). False when it is not positive.

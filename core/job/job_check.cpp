@@ -3,6 +3,7 @@
 // the interference check, collecting all diagnostics (capped);
 // jobTechnology gives the technology data in force.
 #include "job/job_check.h"
+#include "model/technology_ranges.h"
 #include "job/figure_contours.h"
 #include "model/translate_noop.h"
 
@@ -105,23 +106,11 @@ void checkClamping(const Clamping& mm, const Stock* stock, LengthUnit shown, Dia
 }
 
 // The technology values in force, each within a range that keeps the work
-// bounded (γ sets the layer count, the allowances the passes): docs/input-checks.md.
-struct TechnologyRange {
-    const char* key;
-    const char* name;
-    double low, high;  // mm, or a factor for γ
-    const char* why;
-};
-constexpr TechnologyRange kTechnologyRanges[] = {
-    {"alpha1", "α1", 0.0, 50.0, "the pilot hole stops α1 above the floor"},
-    {"alpha2", "α2", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the wall allowance roughing leaves")},
-    {"alpha3", "α3", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the wall allowance semi-finishing leaves")},
-    {"beta2", "β2", 0.0, 20.0, TAIWA_TRANSLATE_NOOP("taiwa::msg", "the floor allowance roughing leaves")},
-    {"gamma", "γ", 0.01, 2.0,
-     "the depth of cut as a multiple of the tool diameter; a smaller one multiplies the layers"},
-    {"stepOver", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over"), check::kStepOverLow, check::kStepOverHigh,
-     check::kStepOverWhy},
-};
+// bounded (γ sets the layer count, the allowances the passes):
+// docs/input-checks.md. α1 to γ as the shipped table's reader reads them
+// (model/technology_ranges.h), then the step-over.
+constexpr TechnologyRange kStepOverRange{"stepOver", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over"),
+                                         check::kStepOverLow, check::kStepOverHigh, check::kStepOverWhy};
 
 // Overrides finite and within their ranges (lengths quoted in the job's unit, gamma as is).
 bool checkOverrides(const TechnologyOverrides& mm, LengthUnit shown, Diagnostics& out)
@@ -130,7 +119,7 @@ bool checkOverrides(const TechnologyOverrides& mm, LengthUnit shown, Diagnostics
     const std::optional<double> values[] = {mm.alpha1, mm.alpha2, mm.alpha3, mm.beta2, mm.gamma, mm.stepOver};
     for (std::size_t i = 0; i < std::size(values); ++i) {
         const auto& v = values[i];
-        const TechnologyRange& range = kTechnologyRanges[i];
+        const TechnologyRange& range = i < std::size(kTechnologyRanges) ? kTechnologyRanges[i] : kStepOverRange;
         if (!v) continue;
         const std::string field = std::string("technology.") + range.key;
         const bool isGamma = std::string(range.key) == "gamma" || std::string(range.key) == "stepOver";  // factors
@@ -235,9 +224,13 @@ std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTa
     return effective(m->data, mmJob.technology);
 }
 
-CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library)
+CheckedJob checkedJob(Job typed, const TechnologyTable& table, const std::vector<Tool>& library)
 {
-    CheckedJob c{job, toMillimetres(job), {}, std::nullopt};
+    CheckedJob c;
+    c.mmJob = toMillimetres(typed);
+    c.job = std::move(typed);
+    c.turned.resize(c.mmJob.units.size());
+    const Job& job = c.job;
     const Job& mm = c.mmJob;
     const LengthUnit shown = job.lengthUnit;
     Diagnostics& out = c.diagnostics;
@@ -332,8 +325,9 @@ CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::v
             continue;
         }
         checkCutting(mm.units[u].cutting, *kind, unitNo, machine, shown, out);
-        const auto report = kind->check(module, unitNo, ctx);
+        auto report = kind->check(module, unitNo, ctx);
         out.insert(out.end(), report.diagnostics.begin(), report.diagnostics.end());
+        c.turned[u] = std::move(report.turned);
         if (!report.figureValid) continue;
         if (const auto outline = kind->topOutline(module))
             figures.push_back({static_cast<int>(u), kind->name(), kind->outlineField(), *outline, kind->topPolygon(module)});

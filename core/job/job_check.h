@@ -8,6 +8,7 @@
 #include "model/job.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "model/turned.h"
 
 #include <optional>
 #include <vector>
@@ -20,9 +21,13 @@ struct CheckedJob {
     Job mmJob;                                 // every length in mm
     Diagnostics diagnostics;                   // capped at 100 (the last line says how many more)
     std::optional<TechnologyData> technology;  // in force, mm; absent when the material or an override is refused
+    // Each turning unit's deformed profile, made by its check (one per unit
+    // of mmJob, nullopt for the others): the plan cuts it, not a second one.
+    std::vector<std::optional<TurnedPart>> turned;
     bool ok() const { return !hasErrors(diagnostics); }
 };
-CheckedJob checkedJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library);
+// `job` is taken by value: a job passed as a temporary is moved in, not copied.
+CheckedJob checkedJob(Job job, const TechnologyTable& table, const std::vector<Tool>& library);
 
 // All diagnostics of the job (every unit checked, not only the first error).
 // `job` is as the operator typed it (any length unit); messages quote values

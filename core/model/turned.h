@@ -243,6 +243,10 @@ struct TurnedPart {
     turning::ResolvedProfile profile;
     turning::DeformedProfile deformed;
     std::string noseRadiusTool;  // the finishing tool whose nose radius gave adjustments ("" when none was needed)
+    // Every row resolved and every allowance row applied; false: `deformed`
+    // is as far as it got (the unit's check refuses it, the profile
+    // editor draws no deformed profile).
+    bool complete = true;
 };
 
 }  // namespace taiwa

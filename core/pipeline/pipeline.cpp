@@ -34,13 +34,15 @@ Diagnostic unitError(const Job& job, int unit, std::string field, std::string me
 }
 
 // One unit through its module's door; a turning unit's deformed profile
-// first: its steps cut it.
-UnitPlan planUnit(const Plan& plan, int u, const std::vector<Tool>& library, const Machine* machine)
+// first: its steps cut it. `checked`: the one its check made, else the
+// door makes it.
+UnitPlan planUnit(const Plan& plan, int u, const std::vector<Tool>& library, const Machine* machine,
+                  const std::optional<TurnedPart>* checked)
 {
     UnitPlan r;
     const ModuleInput& module = plan.mmJob.units[static_cast<std::size_t>(u)].module;
     UnitPlanContext ctx{plan.technology, library, plan.mmJob.material, u, &plan.mmJob, machine, plan.job.lengthUnit};
-    std::optional<TurnedPart> part = moduleKind(module).turned(module, ctx);
+    std::optional<TurnedPart> part = checked && *checked ? **checked : moduleKind(module).turned(module, ctx);
     if (part) ctx.turned = &*part;
     r.steps = moduleKind(module).plan(module, ctx, r.diagnostics);
     if (auto setup = moduleKind(module).setup(module, ctx)) {
@@ -80,13 +82,16 @@ void putInOrder(std::vector<Step>& steps, std::vector<int> order)
 // whatever the module settles between them), the steps of the whole job in
 // order, the operator's S and F by step key.
 void planSteps(Plan& plan, const std::vector<Tool>& library, const PathParameters& params, const Machine* machine,
-               PlanCache* cache)
+               PlanCache* cache, const std::vector<std::optional<TurnedPart>>& checkedTurned)
 {
     std::vector<Step> unordered;
     unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
     if (cache) cache->begin(plan, library, params);
     for (const int u : plan.unitOrder) {
-        const auto compute = [&] { return planUnit(plan, u, library, machine); };
+        const auto at = static_cast<std::size_t>(u);
+        const auto compute = [&] {
+            return planUnit(plan, u, library, machine, at < checkedTurned.size() ? &checkedTurned[at] : nullptr);
+        };
         UnitPlan fresh;
         const UnitPlan& done = cache ? cache->unit(plan, u, library, compute) : (fresh = compute());
         plan.diagnostics.insert(plan.diagnostics.end(), done.diagnostics.begin(), done.diagnostics.end());
@@ -266,7 +271,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     plan.technology = *checked.technology;
     plan.unitOrder = machiningOrder(plan.mmJob);
     const Machine* machine = findMachine(plan.mmJob.machine);
-    planSteps(plan, library, options.path, machine, cache);
+    planSteps(plan, library, options.path, machine, cache, checked.turned);
     if (!plan.ok()) return plan;
     const std::vector<const Tool*> toolOf = bindTools(plan, library, options.withToolPaths);
     if (!plan.ok() || !withinMoveBudget(plan, toolOf, options.path) || !options.withToolPaths) return plan;
@@ -303,9 +308,9 @@ PostOptions postOptions(const Plan& plan, const std::string& dialect, std::optio
     return post;
 }
 
-Plan planJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library, const PlanOptions& options)
+Plan planJob(Job job, const TechnologyTable& table, const std::vector<Tool>& library, const PlanOptions& options)
 {
-    return planJob(checkedJob(job, table, library), library, options);
+    return planJob(checkedJob(std::move(job), table, library), library, options);
 }
 
 }  // namespace taiwa

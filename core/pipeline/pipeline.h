@@ -35,8 +35,9 @@ constexpr double kMaxPlanMoves = 10'000'000;
 // in it stop the plan with its steps empty. A checked job passed as a
 // temporary is moved into the plan, not copied.
 Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOptions& options = {});
-// Converts, checks and plans the job.
-Plan planJob(const Job& job, const TechnologyTable& table, const std::vector<Tool>& library,
+// Converts, checks and plans the job (a job passed as a temporary is moved
+// into the plan, not copied).
+Plan planJob(Job job, const TechnologyTable& table, const std::vector<Tool>& library,
              const PlanOptions& options = {});
 
 // The post-processor's options for a plan: the one place where the command

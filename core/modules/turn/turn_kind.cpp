@@ -30,6 +30,20 @@ using ordered = nlohmann::ordered_json;
 
 constexpr std::size_t kMaxRows = kMaxProfileRows, kMaxAllowances = kMaxAllowanceRows;
 
+// The unit's turned part from its resolved profile and its deformation
+// (deformTurned, the one computation of the check, turned() and, through
+// turned(), the profile editor).
+TurnedPart partOf(int unit, const Resolution& resolved, TurnDeformation d)
+{
+    TurnedPart part;
+    part.unit = unit;
+    part.profile = resolved.profile;
+    part.complete = resolved.ok() && d.deformation.ok();
+    part.deformed = std::move(d.deformation.profile);
+    part.noseRadiusTool = std::move(d.noseRadiusTool);
+    return part;
+}
+
 class TurnKind final : public ModuleKindOf<TurnUnit> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add turned profile"); }
@@ -74,17 +88,15 @@ public:
         return true;
     }
 
+    // The check makes it for the plan (check::UnitReport::turned); the
+    // profile editor and a plan of an unchecked unit call this.
     std::optional<TurnedPart> turned(const ModuleInput& mm, const UnitPlanContext& ctx) const override
     {
         const TurnUnit& t = mm.as<TurnUnit>();
-        TurnedPart part;
-        part.unit = ctx.unit;
-        part.profile = resolveProfile(t.profile).profile;
+        const Resolution r = resolveProfile(t.profile);
         const BarStock* bar = ctx.job && ctx.job->bar ? &*ctx.job->bar : nullptr;
-        TurnDeformation d = deformTurned(t.profile, part.profile, t.tools, t.skip, ctx.library, bar, LengthUnit::Millimetre);
-        part.deformed = std::move(d.deformation.profile);
-        part.noseRadiusTool = std::move(d.noseRadiusTool);
-        return part;
+        TurnDeformation d = deformTurned(t.profile, r.profile, t.tools, t.skip, ctx.library, bar, LengthUnit::Millimetre);
+        return partOf(ctx.unit, r, std::move(d));
     }
 
 protected:
@@ -122,13 +134,15 @@ protected:
         if (!r.ok()) return report;
         checkThreads(t.profile, r.profile, ctx.library, ctx.shownUnit, add);
         static const std::vector<Tool> none;
-        const Deformation d =
-            deformTurned(t.profile, r.profile, t.tools, t.skip, ctx.library ? *ctx.library : none, ctx.bar, ctx.shownUnit).deformation;
-        for (const auto& p : d.problems) add(p);
-        if (!d.ok() || !ctx.bar) return report;
-        checkInBar(d.profile, t.profile, *ctx.bar, ctx.shownUnit, [&](std::string field, std::string message) {
+        TurnDeformation d =
+            deformTurned(t.profile, r.profile, t.tools, t.skip, ctx.library ? *ctx.library : none, ctx.bar, ctx.shownUnit);
+        for (const auto& p : d.deformation.problems) add(p);
+        if (!d.deformation.ok() || !ctx.bar) return report;
+        checkInBar(d.deformation.profile, t.profile, *ctx.bar, ctx.shownUnit, [&](std::string field, std::string message) {
             report.diagnostics.push_back({Severity::Error, unitNo, TurnUnit::kName, std::move(field), std::move(message)});
         });
+        // Passed: the plan cuts this deformation (job/job_check.h CheckedJob::turned).
+        if (!hasErrors(report.diagnostics)) report.turned = partOf(unitNo - 1, r, std::move(d));
         return report;
     }
 
