@@ -24,6 +24,7 @@
 #include "ui/unit_list_panel.h"
 #include "ui/technology_dialog.h"
 #include "ui/tool_library_dialog.h"
+#include "ui/core_texts.h"
 #include "tools/tool_library.h"
 
 #include <QAbstractButton>
@@ -325,7 +326,13 @@ private slots:
             return it == all.end() ? std::optional<Tool>() : std::optional<Tool>(*it);
         };
         QCOMPARE(t27()->diameter, 10.0);
+        // Its name states 10 mm: asked first (no job here, so no steps).
+        QStringList asked;
+        d.setConfirm([&](const QString& q) { return asked << q, true; });
         type(ToolLibraryDialog::Diameter, "11");
+        QCOMPARE(asked.size(), 1);
+        QVERIFY2(asked[0].contains("T27's name \"Flat end mill 10 mm carbide\" states 10 mm; its diameter is 11 mm"),
+                 qPrintable(asked[0]));
         QCOMPARE(t27()->diameter, 11.0);
         QVERIFY(d.changed());
         const double corner = t27()->cornerRadius;
@@ -366,6 +373,69 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
         QVERIFY2(text.contains("\nT27 P27 Z0 D10 ;Flat end mill 10 mm carbide\n"), qPrintable(text.left(400)));
+    }
+
+    // A tool edit shows the steps of the open job it changes before it is
+    // applied (pipeline/tool_edit_impact.h): left, nothing is saved and the
+    // cell is put back; applied, it is one undo step.
+    void toolEditShowsTheStepsItChanges()
+    {
+        const auto read = readJobFile(test::sourcePath("resources/samples/m4-standard.taiwa").toStdString());
+        QVERIFY(read.job);
+        ToolLibraryDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        d.setImpact([job = *read.job](const std::vector<Tool>& before, const std::vector<Tool>& after) {
+            return toolEditImpact(job, before, after);
+        });
+        // The tool that roughs the sample, and its row.
+        const std::vector<Tool> library = d.tools();
+        const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), library);
+        QVERIFY(plan.ok());
+        const auto roughing = std::find_if(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.kind == StepKind::Roughing; });
+        QVERIFY(roughing != plan.steps.end() && roughing->tool);
+        const int id = roughing->tool->toolId;
+        QTableWidget* table = d.table();
+        int row = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->item(r, ToolLibraryDialog::Id)->text() == QString::number(id)) row = r;
+        QVERIFY(row >= 0);
+        const QString diameter = table->item(row, ToolLibraryDialog::Diameter)->text();
+        // 60 mm fits no pocket of the sample: its steps go to other tools.
+        QStringList asked;
+        bool answer = false;
+        d.setConfirm([&](const QString& q) { return asked << q, answer; });
+        QVERIFY(Fields::typeIntoCell(table, row, ToolLibraryDialog::Diameter, "60"));
+        QCOMPARE(asked.size(), 1);
+        qInfo().noquote() << asked[0];
+        const QString rough = QString("unit %1, %2: T%3 → T").arg(roughing->unit + 1).arg(stepLabel(*roughing)).arg(id);
+        QVERIFY2(asked[0].contains("step(s) of the open job") || asked[0].contains("steps of the open job"), qPrintable(asked[0]));
+        QVERIFY2(asked[0].contains(rough), qPrintable(asked[0] + "\nexpected: " + rough));
+        QVERIFY2(asked[0].contains("states"), qPrintable(asked[0]));  // and its name still says the old size
+        // Left: nothing saved, the cell as it was, nothing to undo.
+        QCOMPARE(table->item(row, ToolLibraryDialog::Diameter)->text(), diameter);
+        QVERIFY2(d.status().contains(QString("T%1 not changed").arg(id)), qPrintable(d.status()));
+        QVERIFY(!d.changed());
+        QCOMPARE(d.undoStack()->count(), 0);
+        // Applied: saved, one undo step; undone: as it was, not asked again.
+        answer = true;
+        QVERIFY(Fields::typeIntoCell(table, row, ToolLibraryDialog::Diameter, "60"));
+        QCOMPARE(asked.size(), 2);
+        QVERIFY(d.changed());
+        QCOMPARE(d.undoStack()->count(), 1);
+        QCOMPARE(table->item(row, ToolLibraryDialog::Diameter)->text(), QString("60"));
+        d.undoStack()->undo();
+        QCOMPARE(table->item(row, ToolLibraryDialog::Diameter)->text(), diameter);
+        QCOMPARE(asked.size(), 2);
+        // An edit no step of the job sees (a face mill's flutes): not asked.
+        int faceMill = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->item(r, ToolLibraryDialog::Id)->text() == "60") faceMill = r;
+        QVERIFY(faceMill >= 0);
+        QVERIFY(Fields::typeIntoCell(table, faceMill, ToolLibraryDialog::Flutes, "6"));
+        QCOMPARE(asked.size(), 2);
+        QCOMPARE(d.undoStack()->count(), 1);
+        d.undoStack()->undo();
     }
 
     void addM2DAndMoveUnits()

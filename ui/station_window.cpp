@@ -289,6 +289,10 @@ void StationWindow::editTechnology()
 void StationWindow::showToolLibrary()
 {
     ToolLibraryDialog dialog(this);
+    // An edit shows the steps of this job it changes before it is applied.
+    dialog.setImpact([job = doc_->job()](const std::vector<Tool>& before, const std::vector<Tool>& after) {
+        return toolEditImpact(job, before, after);
+    });
     dialog.exec();
     if (!dialog.changed()) return;
     runner_->reloadLibrary();

@@ -8,14 +8,19 @@
 // tool table is exported from here: LinuxCNC's tool.tbl or a FANUC program
 // of G10 offsets. Every database error is shown, never hidden. On the shop
 // server (docs/shop-server.md) a save over a tool another station changed
-// meanwhile shows both and asks: keep mine, or take theirs.
+// meanwhile shows both and asks: keep mine, or take theirs. Before an edit
+// is applied, the steps of the open job it changes (another tool chosen,
+// or the same tool with other data) and a name that would state another
+// diameter are shown, and the operator applies it or leaves it.
 #pragma once
 
 #include "model/tool.h"
+#include "pipeline/tool_edit_impact.h"
 
 #include <QDialog>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -59,6 +64,18 @@ public:
     // Writes the machine's tool table: `fanuc` a G10 program, else LinuxCNC's tool.tbl.
     bool exportToolTable(const QString& path, bool fanuc);
 
+    // What an edit would change in the open job (the station plans it:
+    // pipeline/tool_edit_impact.h); without one, only the name is looked at.
+    using Impact = std::function<ToolEditImpact(const std::vector<Tool>& before, const std::vector<Tool>& after)>;
+    void setImpact(Impact impact) { impact_ = std::move(impact); }
+    // Asks whether to apply an edit that changes steps or leaves a name
+    // stating another diameter; by default a question box ("tools.confirm",
+    // Yes applies). Tests answer it.
+    using Confirm = std::function<bool(const QString& question)>;
+    void setConfirm(Confirm confirm) { confirm_ = std::move(confirm); }
+    // The question an edit from `before` to `after` asks ("" when none).
+    QString editQuestion(const std::optional<Tool>& before, const std::optional<Tool>& after) const;
+
 private:
     friend class ToolEdit;
     // A length or a time to 0.001, as the table and the conflict's question write it.
@@ -92,6 +109,8 @@ private:
     std::map<int, std::int64_t> versions_;
     bool changed_ = false;
     bool filling_ = false;
+    Impact impact_;
+    Confirm confirm_;
 };
 
 }  // namespace taiwa::ui

@@ -1,11 +1,13 @@
 // How the tool library dialog saves a change (tool_library_dialog.h): into
 // the station's SQLite library, or onto the shop server at the version read,
-// a conflict with another station's change asked about; and each change an
-// undo step of its own.
+// a conflict with another station's change asked about; what it changes in
+// the open job asked before; and each change an undo step of its own.
 #include "ui/tool_library_dialog.h"
 #include "ui/core_messages.h"
+#include "ui/core_texts.h"
 
 #include "tools/tool_check.h"
+#include "tools/tool_name_size.h"
 #include "tools/tool_library.h"
 #include "tools/tool_store.h"
 
@@ -125,11 +127,56 @@ bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
     return true;
 }
 
+QString ToolLibraryDialog::editQuestion(const std::optional<Tool>& before, const std::optional<Tool>& after) const
+{
+    QStringList lines;
+    if (impact_) {
+        // The library as it would be: the tool replaced, added or removed.
+        std::vector<Tool> edited;
+        const int id = before ? before->id : after->id;
+        for (const Tool& t : tools_)
+            if (t.id != id) edited.push_back(t);
+        if (after) edited.push_back(*after);
+        const ToolEditImpact impact = impact_(tools_, edited);
+        if (!impact.steps.empty())
+            lines << tr("This changes %n step(s) of the open job:", "", static_cast<int>(impact.steps.size()));
+        const auto tool = [](std::optional<int> t) { return t ? QString("T%1").arg(*t) : tr("no tool"); };
+        for (const StepToolChange& c : impact.steps) {
+            const QString step = tr("unit %1, %2").arg(c.step.unit + 1).arg(stepLabel(c.step));
+            if (c.toolEdited) lines << tr("  %1: %2, its data changed").arg(step, tool(c.after));
+            else if (!c.after && !c.before) lines << tr("  %1: no tool").arg(step);
+            else lines << tr("  %1: %2 → %3").arg(step, tool(c.before), tool(c.after));
+        }
+        if (!impact.refusals.empty()) lines << tr("The job would be refused:");
+        for (const Diagnostic& d : impact.refusals) lines << "  " + diagnosticText("", d);
+    }
+    if (after)
+        if (const auto warning = nameSizeWarning(before, *after)) lines << coreMessage(*warning);
+    if (lines.isEmpty()) return {};
+    lines << tr("Apply the change?");
+    return lines.join('\n');
+}
+
 bool ToolLibraryDialog::change(const std::optional<Tool>& before, const std::optional<Tool>& after, const QString& text)
 {
     if (after) {
         if (const auto problems = toolProblems(*after); !problems.empty()) {
             fail(tr("T%1 not saved: %2").arg(after->id).arg(coreMessage(problems.front().message)));
+            return false;
+        }
+    }
+    // What it changes, asked before it is applied; left: the table as it was.
+    if (const QString question = editQuestion(before, after); !question.isEmpty()) {
+        const bool yes = confirm_ ? confirm_(question) : [&] {
+            QMessageBox box(QMessageBox::Question, tr("Change the tool?"), question, QMessageBox::Yes | QMessageBox::No,
+                            this);
+            box.setObjectName("tools.confirm");
+            box.setDefaultButton(QMessageBox::No);
+            return box.exec() == QMessageBox::Yes;
+        }();
+        if (!yes) {
+            load(true);
+            fail(tr("T%1 not changed").arg(before ? before->id : after->id));
             return false;
         }
     }

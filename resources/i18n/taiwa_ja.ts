@@ -1520,9 +1520,51 @@ Theirs: %6</source>
             <source>Cannot open the tool library: %1</source>
             <translation>工具ライブラリを開けません: %1</translation>
         </message>
+        <message numerus="yes">
+            <source>This changes %n step(s) of the open job:</source>
+            <translation>
+                <numerusform>この変更で開いているジョブの %n 個の工程が変わります:</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>no tool</source>
+            <translation>工具なし</translation>
+        </message>
+        <message>
+            <source>unit %1, %2</source>
+            <translation>ユニット %1、%2</translation>
+        </message>
+        <message>
+            <source>  %1: %2, its data changed</source>
+            <translation>  %1: %2 (工具データが変わります)</translation>
+        </message>
+        <message>
+            <source>  %1: no tool</source>
+            <translation>  %1: 工具なし</translation>
+        </message>
+        <message>
+            <source>  %1: %2 → %3</source>
+            <translation>  %1: %2 → %3</translation>
+        </message>
+        <message>
+            <source>The job would be refused:</source>
+            <translation>ジョブは受け付けられなくなります:</translation>
+        </message>
+        <message>
+            <source>Apply the change?</source>
+            <translation>変更を適用しますか?</translation>
+        </message>
         <message>
             <source>T%1 not saved: %2</source>
             <translation>T%1 は保存されませんでした: %2</translation>
+        </message>
+        <message>
+            <source>Change the tool?</source>
+            <translation>工具を変更しますか?</translation>
+        </message>
+        <message>
+            <source>T%1 not changed</source>
+            <translation>T%1 は変更されませんでした</translation>
         </message>
     </context>
     <context>
@@ -3019,18 +3061,6 @@ Theirs: %6</source>
             <translation>バイスの口金の高さ</translation>
         </message>
         <message>
-            <source>the wall allowance roughing leaves</source>
-            <translation>荒加工が残す壁の仕上げ代</translation>
-        </message>
-        <message>
-            <source>the wall allowance semi-finishing leaves</source>
-            <translation>中仕上げが残す壁の仕上げ代</translation>
-        </message>
-        <message>
-            <source>the floor allowance roughing leaves</source>
-            <translation>荒加工が残す底の仕上げ代</translation>
-        </message>
-        <message>
             <source>the surface speed S</source>
             <translation>切削速度 S</translation>
         </message>
@@ -3197,6 +3227,18 @@ Theirs: %6</source>
         <message>
             <source>area clearing</source>
             <translation>領域加工</translation>
+        </message>
+        <message>
+            <source>the wall allowance roughing leaves</source>
+            <translation>荒加工が残す壁の仕上げ代</translation>
+        </message>
+        <message>
+            <source>the wall allowance semi-finishing leaves</source>
+            <translation>中仕上げが残す壁の仕上げ代</translation>
+        </message>
+        <message>
+            <source>the floor allowance roughing leaves</source>
+            <translation>荒加工が残す底の仕上げ代</translation>
         </message>
         <message>
             <source>centre drill</source>
@@ -4749,6 +4791,10 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0} ({1} mm {2}) は工程 {3} (ユニット {4} {5}) の途中で寿命に達します: 残り {6} 分、工程には {7} 分必要です。その工程の前に新しい工具に交換してください</translation>
+        </message>
+        <message>
+            <source>T{}'s name "{}" states {} mm; its diameter is {} mm</source>
+            <translation>T{0} の名称「{1}」は {2} mm を示していますが、径は {3} mm です</translation>
         </message>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>

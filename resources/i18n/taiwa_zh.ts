@@ -1520,9 +1520,51 @@ Theirs: %6</source>
             <source>Cannot open the tool library: %1</source>
             <translation>无法打开刀具库：%1</translation>
         </message>
+        <message numerus="yes">
+            <source>This changes %n step(s) of the open job:</source>
+            <translation>
+                <numerusform>此更改将改变当前作业的 %n 个工步:</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>no tool</source>
+            <translation>无刀具</translation>
+        </message>
+        <message>
+            <source>unit %1, %2</source>
+            <translation>单元 %1，%2</translation>
+        </message>
+        <message>
+            <source>  %1: %2, its data changed</source>
+            <translation>  %1: %2（刀具数据已改变）</translation>
+        </message>
+        <message>
+            <source>  %1: no tool</source>
+            <translation>  %1: 无刀具</translation>
+        </message>
+        <message>
+            <source>  %1: %2 → %3</source>
+            <translation>  %1: %2 → %3</translation>
+        </message>
+        <message>
+            <source>The job would be refused:</source>
+            <translation>作业将被拒绝:</translation>
+        </message>
+        <message>
+            <source>Apply the change?</source>
+            <translation>应用此更改吗?</translation>
+        </message>
         <message>
             <source>T%1 not saved: %2</source>
             <translation>T%1 未保存：%2</translation>
+        </message>
+        <message>
+            <source>Change the tool?</source>
+            <translation>更改刀具吗?</translation>
+        </message>
+        <message>
+            <source>T%1 not changed</source>
+            <translation>T%1 未更改</translation>
         </message>
     </context>
     <context>
@@ -3019,18 +3061,6 @@ Theirs: %6</source>
             <translation>钳口高度</translation>
         </message>
         <message>
-            <source>the wall allowance roughing leaves</source>
-            <translation>粗加工留下的壁余量</translation>
-        </message>
-        <message>
-            <source>the wall allowance semi-finishing leaves</source>
-            <translation>半精加工留下的壁余量</translation>
-        </message>
-        <message>
-            <source>the floor allowance roughing leaves</source>
-            <translation>粗加工留下的底面余量</translation>
-        </message>
-        <message>
             <source>the surface speed S</source>
             <translation>切削速度 S</translation>
         </message>
@@ -3197,6 +3227,18 @@ Theirs: %6</source>
         <message>
             <source>area clearing</source>
             <translation>区域加工</translation>
+        </message>
+        <message>
+            <source>the wall allowance roughing leaves</source>
+            <translation>粗加工留下的壁余量</translation>
+        </message>
+        <message>
+            <source>the wall allowance semi-finishing leaves</source>
+            <translation>半精加工留下的壁余量</translation>
+        </message>
+        <message>
+            <source>the floor allowance roughing leaves</source>
+            <translation>粗加工留下的底面余量</translation>
         </message>
         <message>
             <source>centre drill</source>
@@ -4749,6 +4791,10 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0}（{1} mm {2}）将在工序 {3}（单元 {4} {5}）中达到寿命：剩余 {6} 分钟，该工序需要 {7} 分钟；请在该工序前换上新刀具</translation>
+        </message>
+        <message>
+            <source>T{}'s name "{}" states {} mm; its diameter is {} mm</source>
+            <translation>T{0} 的名称“{1}”标明 {2} mm，但其直径为 {3} mm</translation>
         </message>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>
