@@ -331,7 +331,7 @@ private slots:
         d.setConfirm([&](const QString& q) { return asked << q, true; });
         type(ToolLibraryDialog::Diameter, "11");
         QCOMPARE(asked.size(), 1);
-        QVERIFY2(asked[0].contains("T27's name \"Flat end mill 10 mm carbide\" states 10 mm; its diameter is 11 mm"),
+        QVERIFY2(asked[0].contains("T27: Ø mm 10 → 11") && asked[0].contains("T27: the name says 10 mm, the diameter is 11 mm"),
                  qPrintable(asked[0]));
         QCOMPARE(t27()->diameter, 11.0);
         QVERIFY(d.changed());
@@ -411,7 +411,7 @@ private slots:
         const QString rough = QString("unit %1, %2: T%3 → T").arg(roughing->unit + 1).arg(stepLabel(*roughing)).arg(id);
         QVERIFY2(asked[0].contains("step(s) of the open job") || asked[0].contains("steps of the open job"), qPrintable(asked[0]));
         QVERIFY2(asked[0].contains(rough), qPrintable(asked[0] + "\nexpected: " + rough));
-        QVERIFY2(asked[0].contains("states"), qPrintable(asked[0]));  // and its name still says the old size
+        QVERIFY2(asked[0].contains("the name says"), qPrintable(asked[0]));  // and its name still says the old size
         // Left: nothing saved, the cell as it was, nothing to undo.
         QCOMPARE(table->item(row, ToolLibraryDialog::Diameter)->text(), diameter);
         QVERIFY2(d.status().contains(QString("T%1 not changed").arg(id)), qPrintable(d.status()));

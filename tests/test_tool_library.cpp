@@ -6,7 +6,6 @@
 #include "tools/cutting.h"
 #include "tools/tool_library.h"
 #include "tools/tool_check.h"
-#include "tools/tool_name_size.h"
 #include "post/tool_table.h"
 
 #include <fmt/format.h>
@@ -427,45 +426,6 @@ private slots:
         QCOMPARE(d->rpm, 3745.0);              // 1000 x 120 / (pi x 10.2) = 3744.8
         QCOMPARE(d->feed, 749.0);              // 3745 x 0.2 per revolution, not per flute
         QCOMPARE(d->plungeFeed, 749.0);
-    }
-
-    // A name stating a size (tools/tool_name_size.h): the diameters read
-    // from it, and the warning when an edit leaves it stating another one.
-    void aNameStatingAnotherSizeIsWarnedOf()
-    {
-        QCOMPARE(diametersInName("Flat end mill 8 mm carbide"), std::vector<double>{8});
-        QCOMPARE(diametersInName("Ball end mill R5 carbide"), std::vector<double>{10});
-        QCOMPARE(diametersInName("Drill \xC3\x98" "12,5 HSS"), std::vector<double>{12.5});
-        QCOMPARE(diametersInName("D6 roughing, flute 20mm"), (std::vector<double>{6, 20}));
-        QCOMPARE(diametersInName("Machine tap M8x1.25 HSS-E form C"), std::vector<double>{});
-        QCOMPARE(diametersInName("超硬スクエアエンドミル 8 mm"), std::vector<double>{8});
-        const std::vector<Tool> library = defaultToolLibrary();
-        const auto t = std::find_if(library.begin(), library.end(), [](const Tool& x) { return x.name == "Flat end mill 8 mm carbide"; });
-        QVERIFY(t != library.end());
-        Tool wider = *t;
-        wider.diameter = 12;
-        const auto w = nameSizeWarning(*t, wider);
-        QVERIFY(w);
-        QCOMPARE(*w, fmt::format("T{}'s name \"Flat end mill 8 mm carbide\" states 8 mm; its diameter is 12 mm", t->id));
-        // Renamed with it, the other languages' names still say 8 mm.
-        wider.name = "Flat end mill 12 mm carbide";
-        const auto local = nameSizeWarning(*t, wider);
-        QVERIFY(local && local->find("states 8 mm") != std::string::npos);
-        wider.names.clear();
-        QVERIFY(!nameSizeWarning(*t, wider));
-        // Unchanged, an insert, a name with no size: nothing.
-        QVERIFY(!nameSizeWarning(*t, *t));
-        Tool insert = *std::find_if(library.begin(), library.end(), [](const Tool& x) { return x.type == ToolType::TurningInsert; });
-        Tool bigger = insert;
-        bigger.diameter += 5;
-        QVERIFY(!nameSizeWarning(insert, bigger));
-        Tool plain = *t;
-        plain.name = "Roughing cutter";
-        plain.names.clear();
-        plain.diameter = 12;
-        QVERIFY(!nameSizeWarning(*t, plain));
-        // Every shipped tool's name states its own diameter.
-        for (const Tool& tool : library) QVERIFY2(!nameSizeWarning(std::nullopt, tool), tool.name.c_str());
     }
 };
 

@@ -82,6 +82,7 @@ private:
     static QString num(double v);
     // A tool in one line, for the conflict's question.
     static QString summary(const Tool& t);
+    QString fieldHeader(const std::string& key) const;
     // Reads the library and fills the table; the status line says how many
     // tools unless `keepStatus` (it says what was just done, or refused).
     void load(bool keepStatus = false);

@@ -7,7 +7,7 @@
 #include "ui/core_texts.h"
 
 #include "tools/tool_check.h"
-#include "tools/tool_name_size.h"
+#include "tools/tool_change_log.h"
 #include "tools/tool_library.h"
 #include "tools/tool_store.h"
 
@@ -127,6 +127,20 @@ bool ToolLibraryDialog::apply(const std::optional<Tool>& tool, int id)
     return true;
 }
 
+// A field of the change log (toolJson's key) by its column's heading, as
+// the operator reads it in the table; a field with no column by its key.
+QString ToolLibraryDialog::fieldHeader(const std::string& key) const
+{
+    static const std::pair<const char*, Column> columns[] = {
+        {"id", Id},         {"name", Name},         {"type", Type},           {"diameter", Diameter},
+        {"cornerRadius", Corner}, {"taperAngle", Taper}, {"flutes", Flutes},  {"fluteLength", FluteLength},
+        {"stickout", Stickout}, {"holder", Holder}, {"holderDiameter", HolderDiameter}, {"lifeMinutes", Life},
+        {"usedMinutes", Used}};
+    for (const auto& [k, column] : columns)
+        if (key == k) return table_->horizontalHeaderItem(column)->text();
+    return QString::fromStdString(key);
+}
+
 QString ToolLibraryDialog::editQuestion(const std::optional<Tool>& before, const std::optional<Tool>& after) const
 {
     QStringList lines;
@@ -150,9 +164,18 @@ QString ToolLibraryDialog::editQuestion(const std::optional<Tool>& before, const
         if (!impact.refusals.empty()) lines << tr("The job would be refused:");
         for (const Diagnostic& d : impact.refusals) lines << "  " + diagnosticText("", d);
     }
-    if (after)
-        if (const auto warning = nameSizeWarning(before, *after)) lines << coreMessage(*warning);
-    if (lines.isEmpty()) return {};
+    // Its fields ("diameter 10 → 60"), and a name that would state another
+    // size (tools/tool_change_log.h) when the edit touches the diameter or the name.
+    QStringList fields;
+    if (before && after)
+        for (const ToolFieldChange& f : toolChanges(*before, *after))
+            fields << tr("T%1: %2 %3 → %4")
+                          .arg(after->id)
+                          .arg(fieldHeader(f.field), QString::fromStdString(f.before), QString::fromStdString(f.after));
+    if (after && (!before || before->diameter != after->diameter || before->name != after->name))
+        if (const auto mismatch = nameSizeMismatch(*after)) lines << tr("T%1: %2").arg(after->id).arg(coreMessage(*mismatch));
+    if (lines.isEmpty()) return {};  // the fields alone are what the operator typed: not asked
+    lines = fields + lines;
     lines << tr("Apply the change?");
     return lines.join('\n');
 }

@@ -1551,6 +1551,14 @@ Theirs: %6</source>
             <translation>ジョブは受け付けられなくなります:</translation>
         </message>
         <message>
+            <source>T%1: %2 %3 → %4</source>
+            <translation>T%1: %2 %3 → %4</translation>
+        </message>
+        <message>
+            <source>T%1: %2</source>
+            <translation>T%1: %2</translation>
+        </message>
+        <message>
             <source>Apply the change?</source>
             <translation>変更を適用しますか?</translation>
         </message>
@@ -4791,10 +4799,6 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0} ({1} mm {2}) は工程 {3} (ユニット {4} {5}) の途中で寿命に達します: 残り {6} 分、工程には {7} 分必要です。その工程の前に新しい工具に交換してください</translation>
-        </message>
-        <message>
-            <source>T{}'s name "{}" states {} mm; its diameter is {} mm</source>
-            <translation>T{0} の名称「{1}」は {2} mm を示していますが、径は {3} mm です</translation>
         </message>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>

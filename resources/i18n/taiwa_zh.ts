@@ -1551,6 +1551,14 @@ Theirs: %6</source>
             <translation>作业将被拒绝:</translation>
         </message>
         <message>
+            <source>T%1: %2 %3 → %4</source>
+            <translation>T%1: %2 %3 → %4</translation>
+        </message>
+        <message>
+            <source>T%1: %2</source>
+            <translation>T%1: %2</translation>
+        </message>
+        <message>
             <source>Apply the change?</source>
             <translation>应用此更改吗?</translation>
         </message>
@@ -4791,10 +4799,6 @@ Theirs: %6</source>
         <message>
             <source>T{} ({:g} mm {}) reaches its life during step {} (unit {} {}): {:.1f} min left, the step needs {:.1f} min; change it for a fresh one before that step</source>
             <translation>T{0}（{1} mm {2}）将在工序 {3}（单元 {4} {5}）中达到寿命：剩余 {6} 分钟，该工序需要 {7} 分钟；请在该工序前换上新刀具</translation>
-        </message>
-        <message>
-            <source>T{}'s name "{}" states {} mm; its diameter is {} mm</source>
-            <translation>T{0} 的名称“{1}”标明 {2} mm，但其直径为 {3} mm</translation>
         </message>
         <message>
             <source>{}: tool {} has an unknown type '{}'</source>
