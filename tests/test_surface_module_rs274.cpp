@@ -135,6 +135,54 @@ private slots:
         QVERIFY(refusedOn(checkIt(j), "curve1", "curve 1"));
     }
 
+    // A projection given as an open contour of the job's figure: its lines
+    // and arcs, exact, the figure's X and Y the plane's two coordinates.
+    // Curve 1 here runs along y = 5 in XY (a line) and bows in ZX along
+    // the arc z = 292 − √(305² − (x − 60)²) from (−8, 5) to (−8, 115):
+    // every point of the finishing surface on y = 5 lies on it within the
+    // contour's tolerance (0.1 µm) and the sagitta of the surface's M pieces
+    // (110 of about 1 mm on R305: 0.4 µm; the sample's 24 leave 9 µm).
+    // The names stay in the file and the form.
+    void aFigureContourIsAProjection()
+    {
+        json j = sample();
+        j["figure"] = json::array({"P1 = POINT/5, 5", "P2 = POINT/115, 5", "L1 = LINE/P1, P2", "K1 = CONTOUR/P1, L1, P2",
+                                   "PC = POINT/292, 60", "C1 = CIRCLE/CENTER, PC, RADIUS, 305", "PA = POINT/-8, 5",
+                                   "PB = POINT/-8, 115", "K2 = CONTOUR/PA, CLW, C1, PB"});
+        j["units"][0]["curve1"] = json::parse(R"({"projections": [{"plane": "XY", "contour": "K1"}, {"plane": "ZX", "contour": "K2"}]})");
+        j["units"][0]["m"] = 110;
+        // The file keeps the names, the form reads and writes them.
+        const Job typed = jobOf(j);
+        QCOMPARE(json::parse(writeJob(typed))["units"][0]["curve1"], j["units"][0]["curve1"]);
+        const SurfaceCurve& given = typed.units[0].module.as<SurfaceUnit>().curve1;
+        QCOMPARE(QString::fromStdString(surfacemod::formatCurve(given)), QString("XY: K1 / ZX: K2"));
+        QVERIFY(surfacemod::parseCurve("XY: K1 / ZX: K2") == given);
+        // Checked and built in mm: the curve is the contours'.
+        const CheckedJob c = checkedJob(typed, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY2(c.ok(), c.diagnostics.empty() ? "" : c.diagnostics.front().message.c_str());
+        const SurfaceUnit& mm = c.mmJob.units[0].module.as<SurfaceUnit>();
+        QVERIFY(mm.curve1.projections[1].points.size() > 100);  // the arc to 0.1 µm
+        const surfacemod::Built b = surfacemod::buildSurfaces(mm, LengthUnit::Millimetre);
+        QVERIFY2(b.problem.empty(), b.problem.c_str());
+        int onCurve = 0;
+        double worst = 0.0;
+        for (const auto& path : b.finishing)
+            for (const Point3 p : path) {
+                if (std::abs(p.y - 5.0) > 1e-9) continue;
+                ++onCurve;
+                worst = std::max(worst, std::abs(p.z - (292.0 - std::sqrt(305.0 * 305.0 - (p.x - 60.0) * (p.x - 60.0)))));
+            }
+        qInfo("%d finishing points on curve 1, %.2e mm off the arc at most", onCurve, worst);
+        QVERIFY(onCurve >= 20);
+        QVERIFY(worst <= 1e-3);
+        // Refused naming the curve: a contour the figure lacks, a closed one.
+        j["units"][0]["curve1"]["projections"][1]["contour"] = "K9";
+        QVERIFY(refusedOn(checkIt(j), "curve1", "curve 1: projection 2: the figure has no contour K9; its open contours: K1, K2"));
+        j["figure"].push_back("K3 = CONTOUR/CLW, C1");
+        j["units"][0]["curve1"]["projections"][1]["contour"] = "K3";
+        QVERIFY(refusedOn(checkIt(j), "curve1", "contour K3 is closed"));
+    }
+
     void nNotBelowMIsRefused()
     {
         json j = sample();

@@ -4157,6 +4157,14 @@ Theirs: %6</source>
             <translation>{0} は {1} が狭くなる ({2}, {3}) 付近に入りません。そこで輪郭に食い込みます。小さいエンドミルを指定するか溝を広げてください</translation>
         </message>
         <message>
+            <source>the figure has no contour {}; its open contours: {}</source>
+            <translation>図形に輪郭 {0} はありません。開いた輪郭: {1}</translation>
+        </message>
+        <message>
+            <source>contour {} is closed; a projection runs from one end to the other</source>
+            <translation>輪郭 {0} は閉じています。投影は一端から他端へ向かう輪郭です</translation>
+        </message>
+        <message>
             <source>a TURN unit</source>
             <translation>TURN ユニット</translation>
         </message>
@@ -5607,8 +5615,8 @@ Theirs: %6</source>
             <translation>最小凹半径より小さいもの</translation>
         </message>
         <message>
-            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines</source>
-            <translation>1 本目の曲線: ';' で区切った点 X, Y, Z、または 2 つの投影 'XY: X, Y; ... / ZX: Z, X; ...'。直線で結ぶときは末尾に '/ lines'</translation>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
+            <translation>1 本目の曲線: ';' で区切った点 X, Y, Z、または 2 つの投影 'XY: X, Y; ... / ZX: Z, X; ...' (各投影は点列か図形の開いた輪郭 'XY: K1')。直線で結ぶときは末尾に '/ lines'</translation>
         </message>
         <message>
             <source>The second curve, as the first; the surface is ruled between the two</source>

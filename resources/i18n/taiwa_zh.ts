@@ -4157,6 +4157,14 @@ Theirs: %6</source>
             <translation>{0} 在 {1} 变窄的（{2}, {3}）附近放不下：刀具会切入轮廓；请指定更小的立铣刀或加宽通道</translation>
         </message>
         <message>
+            <source>the figure has no contour {}; its open contours: {}</source>
+            <translation>图形中没有轮廓 {0}；其开放轮廓: {1}</translation>
+        </message>
+        <message>
+            <source>contour {} is closed; a projection runs from one end to the other</source>
+            <translation>轮廓 {0} 是封闭的；投影应从一端到另一端</translation>
+        </message>
+        <message>
             <source>a TURN unit</source>
             <translation>TURN 单元</translation>
         </message>
@@ -5607,8 +5615,8 @@ Theirs: %6</source>
             <translation>小于最小凹半径</translation>
         </message>
         <message>
-            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines</source>
-            <translation>第一条曲线: 用 ';' 分隔的点 X, Y, Z, 或两个投影 'XY: X, Y; ... / ZX: Z, X; ...'; 以直线相连时在末尾加 '/ lines'</translation>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
+            <translation>第一条曲线: 以 ';' 分隔的点 X, Y, Z，或两个投影 'XY: X, Y; ... / ZX: Z, X; ...'（每个投影为点列或图形的开放轮廓 'XY: K1'）；末尾加 '/ lines' 表示以直线连接</translation>
         </message>
         <message>
             <source>The second curve, as the first; the surface is ruled between the two</source>

@@ -28,12 +28,25 @@
 namespace taiwa {
 
 // One plane projection of a curve: the plane ("XY", "YZ" or "ZX") and the
-// curve in its two coordinates in that order.
+// curve in its two coordinates in that order: as points, or as an open
+// contour of the job's figure (its lines and arcs, the figure's X and Y
+// being the plane's two coordinates), whose points the mm unit gets when
+// the figure is evaluated (ModuleKind::resolveContours), its arcs to 0.1 µm.
 struct SurfaceProjection {
     std::string plane;
     std::vector<Point2> points;
+    std::string contour;  // a figure contour's name ("K1"); empty: `points` as given
+    // Why `contour` gives no points (the figure has no such contour, or it
+    // is closed), for the check to refuse on the curve; never in the file.
+    std::string contourProblem;
     friend bool operator==(const SurfaceProjection&, const SurfaceProjection&) = default;
 };
+
+namespace surfacemod {
+// How far a contour projection's points stray from its arcs [mm]: a tenth of
+// the micrometre the surface is held to.
+constexpr double kContourTolerance = 1e-4;
+}  // namespace surfacemod
 
 // A space curve as the operator gives it: points in space, or (when
 // `points` is empty) two projections sharing an axis.

@@ -6,6 +6,10 @@
 #include "modules/surface/surface.h"
 
 #include "io/json_write.h"
+#include "model/contour.h"
+#include "model/translate_noop.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,16 +72,20 @@ SurfaceCurve readCurve(const io::ObjectFields& f, const char* key)
                     continue;
                 }
                 const io::ObjectFields pf = cf.nested(pj, where + ".");
-                pf.rejectUnknown("a projection", {"plane", "points"});
+                pf.rejectUnknown("a projection", {"plane", "points", "contour"});
                 SurfaceProjection pr;
                 pr.plane = pf.string("plane").value_or("");
-                if (const auto* pts = pf.find("points"); pts && pts->is_array())
+                if (pf.find("contour")) {
+                    // A figure contour instead of points: not both.
+                    pr.contour = pf.string("contour").value_or("");
+                    if (pf.find("points")) pf.error("points", "give the projection's points or its contour, not both");
+                } else if (const auto* pts = pf.find("points"); pts && pts->is_array())
                     for (std::size_t k = 0; k < pts->size(); ++k) {
                         if (isNumbers((*pts)[k], 2)) pr.points.push_back({(*pts)[k][0].get<double>(), (*pts)[k][1].get<double>()});
                         else pf.error("points[" + std::to_string(k) + "]", "expected a point [a, b]");
                     }
                 else
-                    pf.error("points", "expected an array of points [a, b]");
+                    pf.error("points", "expected an array of points [a, b] or a \"contour\" of the figure");
                 c.projections.push_back(std::move(pr));
             }
     }
@@ -102,9 +110,13 @@ nlohmann::ordered_json writeCurve(const SurfaceCurve& c)
         for (const SurfaceProjection& pr : c.projections) {
             nlohmann::ordered_json pj;
             pj["plane"] = pr.plane;
-            auto pts = nlohmann::ordered_json::array();
-            for (const Point2 p : pr.points) pts.push_back({io::number(p.x), io::number(p.y)});
-            pj["points"] = pts;
+            if (!pr.contour.empty()) {
+                pj["contour"] = pr.contour;
+            } else {
+                auto pts = nlohmann::ordered_json::array();
+                for (const Point2 p : pr.points) pts.push_back({io::number(p.x), io::number(p.y)});
+                pj["points"] = pts;
+            }
             ps.push_back(pj);
         }
         j["projections"] = ps;
@@ -115,6 +127,33 @@ nlohmann::ordered_json writeCurve(const SurfaceCurve& c)
 
 class SurfaceKind final : public ModuleKindOf<SurfaceUnit> {
 public:
+    // A projection given as a figure contour gets its points (mm), its
+    // arcs flattened to surfacemod::kContourTolerance.
+    void resolveContours(ModuleInput& mm, const ContourTable& table) const override
+    {
+        SurfaceUnit& u = mm.as<SurfaceUnit>();
+        for (SurfaceCurve* c : {&u.curve1, &u.curve2})
+            for (SurfaceProjection& pr : c->projections) {
+                if (pr.contour.empty()) continue;
+                pr.points.clear();
+                pr.contourProblem.clear();
+                const auto it = table.find(pr.contour);
+                if (it == table.end()) {
+                    std::string known;
+                    for (const auto& [name, contour] : table)
+                        if (!contour.closed) known += (known.empty() ? "" : ", ") + name;
+                    pr.contourProblem = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the figure has no contour {}; its open contours: {}"),
+                                                    pr.contour, known.empty() ? std::string("none") : known);
+                } else if (it->second.closed) {
+                    pr.contourProblem = fmt::format(
+                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} is closed; a projection runs from one end to the other"),
+                        pr.contour);
+                } else {
+                    pr.points = flatten(it->second, surfacemod::kContourTolerance);
+                }
+            }
+    }
+
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add 3-D surface"); }
     const char* drawing() const override { return ":/modules/surface.svg"; }
     const char* outlineField() const override { return "curve1"; }
@@ -321,7 +360,7 @@ protected:
         tool.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "under the smallest concave radius");
         fs.push_back(tool);
         form::describe(fs, {
-            {"curve1", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...'; '/ lines' at the end for straight lines")},
+            {"curve1", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines")},
             {"curve2", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The second curve, as the first; the surface is ruled between the two")},
             {"n", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the roughing surface; fewer than M")},
             {"m", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves")},

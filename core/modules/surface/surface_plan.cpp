@@ -47,8 +47,12 @@ Result<surface::SpaceCurve> spaceCurve(const SurfaceCurve& c, const char* name)
         else if (plane == "YZ") p[i].plane = surface::ProjectionPlane::YZ;
         else if (plane == "ZX") p[i].plane = surface::ProjectionPlane::ZX;
         else return Failure{fmt::format("{}: projection {} is in plane \"{}\"; give XY, YZ or ZX", name, i + 1, plane)};
-        p[i].points = c.projections[static_cast<std::size_t>(i)].points;
-        p[i].smooth = c.smooth;
+        const SurfaceProjection& given = c.projections[static_cast<std::size_t>(i)];
+        if (!given.contourProblem.empty())
+            return Failure{fmt::format("{}: projection {}: {}", name, i + 1, given.contourProblem)};
+        p[i].points = given.points;
+        // A contour's points lie on its lines and arcs: straight between them.
+        p[i].smooth = c.smooth && given.contour.empty();
     }
     auto curve = surface::spaceCurveFromProjections(p[0], p[1], kProjectionStep);
     if (!curve) return Failure{fmt::format("{}: {}", name, curve.error())};

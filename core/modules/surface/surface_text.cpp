@@ -1,7 +1,8 @@
 // The SURFACE unit's curves and boundary as the station's form shows and
 // reads them (docs/surfaces.md, "The form"): a curve as points in space
 // "5, 75, -6; 115, 75, -6", or as its two projections "XY: 5, 5; 60, 10 /
-// ZX: -8, 5; -14, 60", a last piece "/ lines" for straight lines between
+// ZX: -8, 5; -14, 60" (a projection may name a contour of the job's figure
+// instead: "XY: K1 / ZX: K2"), a last piece "/ lines" for straight lines between
 // the points; the boundary as paths of points "x, y, z; ... / x, y, z; ...".
 #include "modules/surface/surface.h"
 
@@ -76,6 +77,15 @@ std::optional<std::vector<Point3>> readPoints3(std::string_view text)
 
 std::string n(double v) { return figure::formatNumber(v); }
 
+// A figure element's name: a letter, then letters, digits or '_'.
+bool isName(std::string_view s)
+{
+    if (s.empty() || !std::isalpha(static_cast<unsigned char>(s.front()))) return false;
+    for (const char ch : s)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_') return false;
+    return true;
+}
+
 std::string writePoints3(const std::vector<Point3>& points)
 {
     std::string text;
@@ -91,8 +101,9 @@ std::string formatCurve(const SurfaceCurve& c)
     if (!c.points.empty() || c.projections.empty()) text = writePoints3(c.points);
     else
         for (const SurfaceProjection& pr : c.projections) {
-            std::string pts;
-            for (const Point2 p : pr.points) pts += (pts.empty() ? "" : "; ") + n(p.x) + ", " + n(p.y);
+            std::string pts = pr.contour;
+            if (pts.empty())
+                for (const Point2 p : pr.points) pts += (pts.empty() ? "" : "; ") + n(p.x) + ", " + n(p.y);
             text += (text.empty() ? "" : " / ") + pr.plane + ": " + pts;
         }
     if (!c.smooth) text += " / lines";
@@ -121,10 +132,17 @@ std::optional<SurfaceCurve> parseCurve(const std::string& text)
         }
         std::string plane(trimmed(piece.substr(0, colon)));
         for (char& ch : plane) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-        const auto t = readTuples(piece.substr(colon + 1), 2);
-        if (points || !t || plane.empty()) return std::nullopt;
-        SurfaceProjection pr{plane, {}};
-        for (const auto& p : *t) pr.points.push_back({p[0], p[1]});
+        if (points || plane.empty()) return std::nullopt;
+        SurfaceProjection pr{plane, {}, {}, {}};
+        // A figure contour's name ("XY: K1"), else the points.
+        const std::string_view rest = trimmed(piece.substr(colon + 1));
+        if (isName(rest)) {
+            pr.contour = std::string(rest);
+        } else {
+            const auto t = readTuples(rest, 2);
+            if (!t) return std::nullopt;
+            for (const auto& p : *t) pr.points.push_back({p[0], p[1]});
+        }
         c.projections.push_back(std::move(pr));
     }
     if (!points && c.projections.empty()) return std::nullopt;
