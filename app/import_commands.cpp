@@ -1,5 +1,6 @@
 // `taiwa import STEP` and `taiwa figure-from-dxf DXF` (import_commands.h):
-// a lathe job from a STEP model (job/step_job.h), a DXF drawing's contours
+// a lathe job from a STEP model or a milling job from a STEP face set
+// (job/step_job.h), a DXF drawing's contours
 // as figure text (figure/figure_from_contours.h).
 #include "app/import_commands.h"
 
@@ -11,6 +12,9 @@
 #include "job/step_job.h"
 #include "model/technology.h"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -25,13 +29,32 @@ int importStep(const Options& o)
         std::cerr << "taiwa: import: " << o.out << " exists; give a new file name (nothing was written)\n";
         return kInputErrors;
     }
+    if (!TechnologyTable::builtIn().find(o.material)) {
+        std::cerr << "taiwa: import: material '" << o.material << "' is not in the technology table\n";
+        return kInputErrors;
+    }
+    if (o.surfaceSpacing) {
+        // A face set as a SURFACE unit on the mill.
+        const auto imported = surfaceJobFromStep(o.job, o.material, *o.surfaceSpacing);
+        if (!imported) {
+            std::cerr << "taiwa: import: " << imported.error() << '\n';
+            return kInputErrors;
+        }
+        if (auto saved = writeFileAtomically(o.out, writeJob(imported->job)); !saved) {
+            std::cerr << "taiwa: import: " << saved.error() << '\n';
+            return kInternal;
+        }
+        const Stock& s = imported->job.stock;
+        std::cout << fmt::format("taiwa: wrote {}: a SURFACE unit on a block {:g} x {:g} x {:g} mm at X {:g} Y {:g}; the "
+                                 "faces moved {} {:g} mm (Z) to put their top at Z 0; the paths stay within {:.2f} um of "
+                                 "the faces\n",
+                                 o.out, s.width, s.length, s.height, s.x, s.y, imported->lowered >= 0 ? "down" : "up",
+                                 std::abs(imported->lowered), imported->deviation * 1000);
+        return kOk;
+    }
     const auto job = latheJobFromStep(o.job, o.material);
     if (!job) {
         std::cerr << "taiwa: import: " << job.error() << '\n';
-        return kInputErrors;
-    }
-    if (!TechnologyTable::builtIn().find(o.material)) {
-        std::cerr << "taiwa: import: material '" << o.material << "' is not in the technology table\n";
         return kInputErrors;
     }
     if (auto saved = writeFileAtomically(o.out, writeJob(*job)); !saved) {

@@ -78,6 +78,12 @@ Result<void> valueOption(std::string_view a, std::string_view v, Options& o)
         if (ec != std::errc() || end != v.data() + v.size())
             return Failure{"--gap wants a distance in mm, not '" + std::string(v) + "'"};
         o.gap = g;  // its range is the DXF import's to check
+    } else if (a == "--surface" && forImport) {
+        double d = 0.0;
+        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), d);
+        if (ec != std::errc() || end != v.data() + v.size() || !(d >= 0.05) || d > 10.0)
+            return Failure{"--surface wants the paths' spacing in mm from 0.05 to 10, not '" + std::string(v) + "'"};
+        o.surfaceSpacing = d;
     } else if (a == "--view" && forRender) {
         if (v != "iso" && v != "top" && v != "front" && v != "profile")
             return Failure{"--view is iso, top, front or profile, not '" + std::string(v) + "'"};
@@ -153,7 +159,7 @@ Result<void> parseOptions(int argc, char** argv, Options& o)
         }
         const bool takesValue = a == "--out" || a == "--dialect" || a == "--units" || a == "--tools" || a == "--step" ||
                                 a == "--size" || a == "--view" || a == "--material" || a == "--resolution" ||
-                                a == "--layers" || a == "--gap" || a == "--from-store";
+                                a == "--layers" || a == "--gap" || a == "--from-store" || a == "--surface";
         if (a == "--no-cache") {  // verify and export: the verification run afresh
             if (o.command != Command::Verify && o.command != Command::Export)
                 return Failure{"option --no-cache does not go with this command"};

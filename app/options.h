@@ -28,6 +28,7 @@ struct Options {
     int width = 800, height = 600;    // --size WxH
     std::string view = "iso";         // --view
     std::string material = "steel-s45c";  // --material (import)
+    std::optional<double> surfaceSpacing;   // --surface MM (import): the face set as a SURFACE unit, sampled every MM
     std::optional<double> resolution;  // --resolution (verify, export) [mm]; none: verify::defaultResolution
     bool json = false;                // --json (verify)
     bool force = false;               // --force (export): write a tape the verification finds fault with;

@@ -13,6 +13,8 @@
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
 
+#include <nlohmann/json.hpp>
+
 #include <QLabel>
 #include <QLineEdit>
 #include <QTemporaryDir>
@@ -137,6 +139,56 @@ private slots:
         QVERIFY(unit(w).tools.empty());
         m = message(w, "tool");
         QVERIFY2(m.contains("no ball end mill with a radius less than"), qPrintable(m));
+    }
+
+    // A unit whose surface is a STEP face set (`taiwa import --surface`
+    // writes its paths as "surface"): the curve fields are empty and say
+    // so, a refusal of the surface shows under curve 1, the plan is made;
+    // curves typed in make the curves the surface again.
+    void aFaceSetShowsAsSuch()
+    {
+        nlohmann::json paths = nlohmann::json::array();
+        for (int j = 0; j <= 10; ++j) {
+            nlohmann::json path = nlohmann::json::array();
+            for (int i = 0; i <= 12; ++i) path.push_back({5.0 * i, 4.0 * j, -0.002 * (5.0 * i - 30) * (5.0 * i - 30)});
+            paths.push_back(path);
+        }
+        nlohmann::json job = nlohmann::json::parse(test::readFile(test::dataPath("surface-ruled.taiwa")));
+        job["stock"] = {{"shape", "block"}, {"x", 0}, {"y", 0}, {"width", 60}, {"length", 40}, {"height", 10}};
+        auto& u = job["units"][0];
+        u.erase("curve1");
+        u.erase("curve2");
+        u.erase("n");
+        u.erase("m");
+        u["surface"] = paths;
+        const QString file = dir_.filePath("face-set.taiwa");
+        test::writeFile(file, job.dump(2));
+        StationWindow w(file);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QCOMPARE(unit(w).surface.size(), std::size_t(11));
+        QCOMPARE(field(w, "curve1")->text(), QString());
+        QVERIFY2(field(w, "curve1")->placeholderText().contains("STEP face set"), qPrintable(field(w, "curve1")->placeholderText()));
+        QCOMPARE(message(w, "curve1"), QString());
+        w.planRunner()->flush();
+        const auto plan = w.planRunner()->fullPlan();
+        QVERIFY(plan && plan->ok());
+        QCOMPARE(plan->steps.size(), std::size_t(2));
+        // Deeper than the block: refused on the surface, shown under curve 1.
+        job["stock"]["height"] = 1;
+        const QString shallow = dir_.filePath("face-set-shallow.taiwa");
+        test::writeFile(shallow, job.dump(2));
+        StationWindow w2(shallow);
+        w2.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w2));
+        const QString m = message(w2, "curve1");
+        QVERIFY2(m.contains("through the stock's bottom"), qPrintable(m));
+        // Curves typed in: the surface is ruled between them again.
+        type(field(w, "curve1"), "5, 5, -3; 55, 5, -3");
+        type(field(w, "curve2"), "5, 35, -2; 55, 35, -2");
+        QVERIFY(unit(w).surface.empty());
+        QCOMPARE(unit(w).curve1.points.size(), std::size_t(2));
     }
 };
 

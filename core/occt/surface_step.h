@@ -38,4 +38,20 @@ Result<std::string> surfaceStepText(const std::vector<std::vector<Point3>>& path
 // cannot be read, holds no face, or whose faces give no triangles.
 Result<TriangleMesh> importStepFaces(const std::string& file, double deflection);
 
+// A STEP file's face set as the SURFACE unit's surface (surface_faces.cpp):
+// point-sequence paths along X, `spacing` apart in Y, their points `spacing`
+// apart in X, each the faces' highest point there (importStepFaces at
+// 0.1 µm). Refused as importStepFaces, and naming the point: where no face
+// lies under a point of the faces' XY rectangle (the faces leave a hole or
+// are not a rectangle seen from above), and where a face lies under
+// another (an undercut: the verifying simulation is a height field). The
+// paths stray from the faces by `deviation` at most (Z, the faces at the
+// middle of every grid cell against its corners' mean), which grows with
+// the spacing.
+struct SampledFaces {
+    std::vector<std::vector<Point3>> paths;
+    double deviation = 0.0;
+};
+Result<SampledFaces> sampleStepFaces(const std::string& file, double spacing);
+
 }  // namespace taiwa::surface

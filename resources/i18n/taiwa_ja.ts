@@ -5651,6 +5651,10 @@ Theirs: %6</source>
             <translation>工具ライブラリのボールエンドミルの番号。空欄: 半径が最小凹半径より小さい最大のもの</translation>
         </message>
         <message>
+            <source>the surface is a STEP face set</source>
+            <translation>曲面は STEP の面の集合です</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>形状</translation>
         </message>

@@ -5651,6 +5651,10 @@ Theirs: %6</source>
             <translation>刀具库中球头立铣刀的编号; 空: 半径小于最小凹半径的最大刀具</translation>
         </message>
         <message>
+            <source>the surface is a STEP face set</source>
+            <translation>曲面为 STEP 面集</translation>
+        </message>
+        <message>
             <source>Profile</source>
             <translation>轮廓</translation>
         </message>

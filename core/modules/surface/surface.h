@@ -67,6 +67,10 @@ struct SurfaceUnit {
     double scallop = 0.01;               // finishing's scallop height
     double allowance = 0.3;              // left by roughing, along the normal
     std::vector<std::vector<Point3>> boundary;  // a cutting boundary surface as paths; none when empty
+    // The surface itself as point-sequence paths (a STEP face set sampled
+    // by `taiwa import --surface`, occt/surface_step.h), in place of the
+    // curves: roughing and finishing both machine it, N and M unused.
+    std::vector<std::vector<Point3>> surface;
     ToolPins tools;                      // key "surface": a ball end mill
     // The form's text of a curve or the boundary that does not read, kept
     // for the check to refuse on its field (the values stay as they were);
@@ -84,8 +88,9 @@ struct SurfaceUnit {
         if (curveStep) curveStep = f(*curveStep);
         scallop = f(scallop);
         allowance = f(allowance);
-        for (auto& path : boundary)
-            for (Point3& p : path) c3(p);
+        for (auto* paths : {&boundary, &surface})
+            for (auto& path : *paths)
+                for (Point3& p : path) c3(p);
     }
     friend bool operator==(const SurfaceUnit&, const SurfaceUnit&) = default;
 };

@@ -20,7 +20,7 @@ namespace taiwa {
 namespace {
 
 const std::vector<std::string> kKeys{"module", "name",      "curve1",   "curve2",   "n",     "m",
-                                     "curveStep", "scallop", "allowance", "boundary", "tools", "cutting"};
+                                     "curveStep", "scallop", "allowance", "boundary", "surface", "tools", "cutting"};
 
 bool isNumbers(const nlohmann::json& v, std::size_t n)
 {
@@ -219,41 +219,53 @@ protected:
     {
         SurfaceUnit u;
         f.rejectUnknown("module SURFACE", kKeys);
-        u.curve1 = readCurve(f, "curve1");
-        u.curve2 = readCurve(f, "curve2");
-        u.n = f.whole("n").value_or(0);
+        const auto paths = [&](const char* key, std::vector<std::vector<Point3>>& into) {
+            const nlohmann::json* b = f.find(key);
+            if (!b) return;
+            if (!b->is_array()) f.error(key, "expected an array of paths, each an array of points [x, y, z]");
+            else
+                for (std::size_t i = 0; i < b->size(); ++i)
+                    into.push_back(readPoints3(f, (*b)[i], std::string(key) + "[" + std::to_string(i) + "]"));
+        };
+        // The surface as paths (a STEP face set), or the curves it is ruled between.
+        paths("surface", u.surface);
+        if (!f.find("surface") || f.find("curve1") || f.find("curve2")) {
+            u.curve1 = readCurve(f, "curve1");
+            u.curve2 = readCurve(f, "curve2");
+        }
+        if (u.surface.empty() || f.find("n")) u.n = f.whole("n").value_or(0);  // a face set's surface has no N
         if (f.find("m")) u.m = f.whole("m");
         u.curveStep = f.optionalNumber("curveStep");
         u.scallop = f.number("scallop").value_or(0.0);
         u.allowance = f.number("allowance", 0.0);
-        if (const nlohmann::json* b = f.find("boundary")) {
-            if (!b->is_array()) f.error("boundary", "expected an array of paths, each an array of points [x, y, z]");
-            else
-                for (std::size_t i = 0; i < b->size(); ++i)
-                    u.boundary.push_back(readPoints3(f, (*b)[i], "boundary[" + std::to_string(i) + "]"));
-        }
+        paths("boundary", u.boundary);
         u.tools = f.wholeMap("tools");
         return u;
     }
 
     void writeInput(const SurfaceUnit& u, nlohmann::ordered_json& j) const override
     {
-        j["curve1"] = writeCurve(u.curve1);
-        j["curve2"] = writeCurve(u.curve2);
-        j["n"] = u.n;
+        const auto paths = [](const std::vector<std::vector<Point3>>& ps) {
+            auto out = nlohmann::ordered_json::array();
+            for (const auto& path : ps) {
+                auto pts = nlohmann::ordered_json::array();
+                for (const Point3 p : path) pts.push_back(point3(p));
+                out.push_back(pts);
+            }
+            return out;
+        };
+        if (u.surface.empty()) {
+            j["curve1"] = writeCurve(u.curve1);
+            j["curve2"] = writeCurve(u.curve2);
+        } else {
+            j["surface"] = paths(u.surface);
+        }
+        if (u.surface.empty() || u.n) j["n"] = u.n;  // a face set's surface has no N
         if (u.m) j["m"] = *u.m;
         if (u.curveStep) j["curveStep"] = io::number(*u.curveStep);
         j["scallop"] = io::number(u.scallop);
         j["allowance"] = io::number(u.allowance);
-        if (!u.boundary.empty()) {
-            auto b = nlohmann::ordered_json::array();
-            for (const auto& path : u.boundary) {
-                auto pts = nlohmann::ordered_json::array();
-                for (const Point3 p : path) pts.push_back(point3(p));
-                b.push_back(pts);
-            }
-            j["boundary"] = b;
-        }
+        if (!u.boundary.empty()) j["boundary"] = paths(u.boundary);
         if (!u.tools.empty()) j["tools"] = io::pins(u.tools);
     }
 
@@ -377,18 +389,26 @@ private:
     static FormField curveField(const char* key, const char* label, SurfaceCurve SurfaceUnit::*curve,
                                 std::string SurfaceUnit::*bad)
     {
-        FormField f = form::detail::textField(key, label, {key}, FormFieldKind::Points);
+        // A unit whose surface is a STEP face set shows empty curves (the
+        // placeholder says why; its refusals show under curve 1); a curve
+        // typed there makes the curves the surface again.
+        std::vector<std::string> shown{key};
+        if (std::string(key) == "curve1") shown.push_back("surface");
+        FormField f = form::detail::textField(key, label, shown, FormFieldKind::Points);
+        f.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "the surface is a STEP face set");
         f.getText = [curve, bad](const ModuleInput& in) -> std::string {
             const SurfaceUnit* u = in.getIf<SurfaceUnit>();
-            if (!u) return {};
+            if (!u || (!u->surface.empty() && (u->*bad).empty())) return {};
             return (u->*bad).empty() ? surfacemod::formatCurve(u->*curve) : u->*bad;
         };
         f.setText = [curve, bad](ModuleInput& in, const std::string& text) {
             SurfaceUnit* u = in.getIf<SurfaceUnit>();
             if (!u) return;
+            if (!u->surface.empty() && text.empty()) return;  // the face set stays
             if (auto c = surfacemod::parseCurve(text)) {
                 u->*curve = std::move(*c);
                 (u->*bad).clear();
+                u->surface.clear();
             } else {
                 u->*bad = text;
             }

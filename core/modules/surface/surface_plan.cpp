@@ -86,6 +86,29 @@ std::vector<std::vector<Point3>> pathsOf(const surface::RuledSurface& s)
     return surface::pathsOfRuled(s, a, b);
 }
 
+// The built surface machined from above: under the stock top and no
+// undercut, else refused on `field`.
+Built heightField(Built b, const char* field, LengthUnit shown)
+{
+    double top = -std::numeric_limits<double>::infinity();
+    for (const auto& p : b.finishing)
+        for (const Point3& q : p) top = std::max(top, q.z);
+    const auto refuse = [&](std::string problem) {
+        b.field = field;
+        b.problem = std::move(problem);
+        return b;
+    };
+    if (top > kEps)
+        return refuse(fmt::format("the surface rises to Z {} above the stock top (Z 0); the surface is "
+                                  "cut into the stock from above",
+                                  msg::quote({top, shown})));
+    if (auto undercut = surface::findUndercut(b.finishing))
+        return refuse(fmt::format("the surface turns under itself ({}); the verifying simulation is a "
+                                  "height field and cannot see undercuts",
+                                  *undercut));
+    return b;
+}
+
 }  // namespace
 
 Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
@@ -102,6 +125,19 @@ Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
             return refuse(field, fmt::format("{} \"{}\" does not read: give points \"x, y, z; x, y, z\" or two "
                                              "projections \"XY: a, b; a, b / ZX: a, b; a, b\"",
                                              name, *bad));
+    // A face set's paths (taiwa import --surface): as they are, for both steps.
+    if (!u.surface.empty()) {
+        const std::size_t points = u.surface.front().size();
+        if (u.surface.size() < 2 || points < 2)
+            return refuse("surface", "the surface needs at least 2 paths of 2 points or more");
+        for (std::size_t k = 1; k < u.surface.size(); ++k)
+            if (u.surface[k].size() != points)
+                return refuse("surface", fmt::format("path {} has {} points; every path has as many as the first ({})",
+                                                     k + 1, u.surface[k].size(), points));
+        b.roughing = b.finishing = u.surface;
+        b.m = static_cast<int>(u.surface.size()) - 1;
+        return heightField(std::move(b), "surface", shown);
+    }
     auto c1 = spaceCurve(u.curve1, "curve 1");
     if (!c1) return refuse("curve1", c1.error());
     auto c2 = spaceCurve(u.curve2, "curve 2");
@@ -124,18 +160,7 @@ Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
     b.m = m;
     b.roughing = pathsOf(surfaces->roughing);
     b.finishing = pathsOf(surfaces->finishing);
-    double top = -std::numeric_limits<double>::infinity();
-    for (const auto& p : b.finishing)
-        for (const Point3& q : p) top = std::max(top, q.z);
-    if (top > kEps)
-        return refuse("curve1", fmt::format("the surface rises to Z {} above the stock top (Z 0); the surface is "
-                                            "cut into the stock from above",
-                                            msg::quote({top, shown})));
-    if (auto undercut = surface::findUndercut(b.finishing))
-        return refuse("curve1", fmt::format("the surface turns under itself ({}); the verifying simulation is a "
-                                            "height field and cannot see undercuts",
-                                            *undercut));
-    return b;
+    return heightField(std::move(b), "curve1", shown);
 }
 
 ToolPick chooseTool(const SurfaceUnit& u, double rho, const std::string& where, const std::vector<Tool>& library,
@@ -208,7 +233,7 @@ check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Co
         for (const auto& p : b.finishing)
             for (const Point3& q : p) low = std::min(low, q.z);
         if (low <= -st->height)
-            r.unit("curve1", fmt::format("the surface goes down to Z {}, through the stock's bottom (height {})",
+            r.unit(u.surface.empty() ? "curve1" : "surface", fmt::format("the surface goes down to Z {}, through the stock's bottom (height {})",
                                          msg::quote(r.len(low)), msg::quote(r.len(st->height))));
     }
     if (!u.boundaryBad.empty())
