@@ -9,6 +9,8 @@
 // clears it.
 #include "modules/surface/surface.h"
 #include "support/support.h"
+#include "occt/surface_step.h"
+#include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/plan_runner.h"
 #include "ui/station_window.h"
@@ -189,6 +191,23 @@ private slots:
         type(field(w, "curve2"), "5, 35, -2; 55, 35, -2");
         QVERIFY(unit(w).surface.empty());
         QCOMPARE(unit(w).curve1.points.size(), std::size_t(2));
+
+        // File > Import surface: a STEP face set (written here from the
+        // paths, a smooth face through them) becomes the job's one unit.
+        std::vector<std::vector<Point3>> grid;
+        for (const auto& path : paths) {
+            std::vector<Point3> row;
+            for (const auto& p : path) row.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+            grid.push_back(std::move(row));
+        }
+        const std::string step = dir_.filePath("face-set.step").toStdString();
+        QVERIFY(surface::exportSurfaceStep(grid, step).ok());
+        StationWindow w3;
+        QVERIFY(w3.fileActions()->importSurfacePath(QString::fromStdString(step), 1.0));
+        QCOMPARE(w3.document()->job().units.size(), std::size_t(1));
+        QCOMPARE(unit(w3).surface.size(), std::size_t(41));  // 40 mm in Y at 1 mm
+        QCOMPARE(w3.document()->job().stock.width, 60.0);
+        QVERIFY(!w3.fileActions()->importSurfacePath(dir_.filePath("missing.step")));
     }
 };
 

@@ -111,6 +111,34 @@ bool FileActions::importStepPath(const QString& path)
     return true;
 }
 
+bool FileActions::importSurface()
+{
+    if (!maybeSave()) return false;
+    const QString path = QFileDialog::getOpenFileName(window_, tr("Import a surface (STEP face set)"), {},
+                                                      tr("STEP models (*.step *.stp *.STEP *.STP)"));
+    return !path.isEmpty() && importSurfacePath(path);
+}
+
+bool FileActions::importSurfacePath(const QString& path, double spacing)
+{
+    auto imported = surfaceJobFromStep(path.toStdString(), "aluminium-6061", spacing);
+    if (!imported) {
+        const QString why = coreMessage(imported.error());
+        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
+        else QMessageBox::warning(window_, tr("Cannot import"), why);
+        emit message(why);
+        return false;
+    }
+    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());
+    imported->job.dialect = lastChosenDialect().toStdString();
+    doc_->reset(imported->job, {}, true);  // untitled and not on disk yet
+    emit message(tr("Imported %1 as a surface: moved %2 mm in Z to put its top at Z 0; the paths stay within %3 µm of its faces")
+                     .arg(path)
+                     .arg(-imported->lowered, 0, 'g', 6)
+                     .arg(imported->deviation * 1000, 0, 'f', 2));
+    return true;
+}
+
 bool FileActions::openPath(const QString& path)
 {
     const JobReadResult r = readJobFile(path.toStdString());

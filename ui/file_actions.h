@@ -40,6 +40,10 @@ public:
     // profiles and a bar that holds it); a refused file says why.
     bool importStep();
     bool importStepPath(const QString& path);
+    // A STEP face set as a milling job of one SURFACE unit, sampled every
+    // `spacing` mm (job/step_job.h surfaceJobFromStep).
+    bool importSurface();
+    bool importSurfacePath(const QString& path, double spacing = 0.5);
     // To the job's file; a job opened from the shop server's store there.
     bool save();
     bool saveAs();

@@ -200,6 +200,7 @@ void StationWindow::buildMenus()
     QMenu* recent = file->addMenu(tr("Open &recent"));
     connect(recent, &QMenu::aboutToShow, this, [this, recent] { files_->fillRecentMenu(recent); });
     file->addAction(tr("&Import turned part (STEP)…"), files_, &FileActions::importStep);
+    file->addAction(tr("Import s&urface (STEP face set)…"), files_, &FileActions::importSurface);
     file->addAction(tr("Import &DXF contours…"), this, &StationWindow::importDxf)->setObjectName("action.importDxf");
     file->addAction(tr("&Save"), QKeySequence::Save, files_, &FileActions::save);
     file->addAction(tr("Save &as…"), QKeySequence::SaveAs, files_, &FileActions::saveAs);

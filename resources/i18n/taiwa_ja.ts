@@ -275,6 +275,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             </translation>
         </message>
         <message>
+            <source>Import a surface (STEP face set)</source>
+            <translation>曲面の取り込み (STEP の面の集合)</translation>
+        </message>
+        <message>
+            <source>Imported %1 as a surface: moved %2 mm in Z to put its top at Z 0; the paths stay within %3 µm of its faces</source>
+            <translation>%1 を曲面として取り込みました: 最上点を Z 0 にするため Z に %2 mm 移動、パスと面との差は %3 µm 以内です</translation>
+        </message>
+        <message>
             <source>Cannot open job</source>
             <translation>ジョブを開けません</translation>
         </message>
@@ -928,6 +936,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>&amp;Import turned part (STEP)…</source>
             <translation>旋削部品をインポート (STEP)(&amp;I)…</translation>
+        </message>
+        <message>
+            <source>Import s&amp;urface (STEP face set)…</source>
+            <translation>曲面の取り込み (STEP の面の集合)(&amp;U)…</translation>
         </message>
         <message>
             <source>Import &amp;DXF contours…</source>

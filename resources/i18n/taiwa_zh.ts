@@ -275,6 +275,14 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             </translation>
         </message>
         <message>
+            <source>Import a surface (STEP face set)</source>
+            <translation>导入曲面（STEP 面集）</translation>
+        </message>
+        <message>
+            <source>Imported %1 as a surface: moved %2 mm in Z to put its top at Z 0; the paths stay within %3 µm of its faces</source>
+            <translation>已将 %1 作为曲面导入: 沿 Z 移动 %2 mm 使其顶点位于 Z 0；路径与面的偏差在 %3 µm 以内</translation>
+        </message>
+        <message>
             <source>Cannot open job</source>
             <translation>无法打开作业</translation>
         </message>
@@ -928,6 +936,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>&amp;Import turned part (STEP)…</source>
             <translation>导入车削零件 (STEP)(&amp;I)…</translation>
+        </message>
+        <message>
+            <source>Import s&amp;urface (STEP face set)…</source>
+            <translation>导入曲面（STEP 面集）(&amp;U)…</translation>
         </message>
         <message>
             <source>Import &amp;DXF contours…</source>
