@@ -137,6 +137,20 @@ private slots:
         QTest::newRow("entry into a bore whose face has an allowance: gouge 0.590") << quint64(1367);
         QTest::newRow("entry into a bore whose face has an allowance: gouge 0.560") << quint64(1716);
         QTest::newRow("entry at a front rounding before a steep taper: gouge 0.315") << quint64(1097);
+        // Corners the control's compensation cannot hold (the nose centre's
+        // offsets of two elements do not cross on both): LinuxCNC refuses
+        // the tape, or the nose runs an element backwards into the part.
+        // Measured now (unheldCorner) on the contour and on each way in: a
+        // stub of a convex arc left between two lines is merged into its
+        // neighbour; a way in onto such a corner is not taken.
+        QTest::newRow("entry along -Z onto a front rounding R0.35 the nose meets past its end: rs274 arc in concave corner") << quint64(347);
+        QTest::newRow("stub of a relief groove's convex bottom before the chord out of it: gouge 0.200, rs274 arc in concave corner") << quint64(737);
+        QTest::newRow("entry onto an allowance's side 0.13 long at the front corner, run backwards: gouge 0.055") << quint64(2069);
+        QTest::newRow("stub of a convex arc 0.02 long between two lines in a relief groove: rs274 arc in concave corner") << quint64(2277);
+        QTest::newRow("stub of a rounding 0.06 long before an allowance's side: rs274 arc in concave corner") << quint64(2558);
+        // The grooving blade's withdrawal along the normal of a fillet at
+        // the groove's back wall pushed its side into the wall.
+        QTest::newRow("groove's last plunge against its back wall, withdrawn along a fillet's normal: gouge 0.156") << quint64(2180);
         // TAIWA_GENERATED_SEEDS="6 12": those seeds too, with what they find.
         for (const QString& s : qEnvironmentVariable("TAIWA_GENERATED_SEEDS").split(' ', Qt::SkipEmptyParts))
             QTest::newRow(qPrintable("seed " + s)) << s.toULongLong();
