@@ -1,8 +1,9 @@
 // Turning steps: the finishing contour where the nose cannot follow the
 // profile (turn_planner.h): concave arcs tighter than the nose bridged
 // where the nose touches both neighbours, and concave corners next to an
-// arc whose elements are too short to hold the nose (docs/turning.md,
-// "Finishing").
+// arc whose elements are too short to hold the nose; every concave corner
+// checked as the control's compensation holds it (unheldCorner), and the
+// nose measured along the contour (docs/turning.md, "Finishing").
 #include "modules/turn/turn_planner.h"
 
 namespace taiwa::turning::planner {
