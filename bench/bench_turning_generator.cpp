@@ -72,19 +72,22 @@ BENCHMARK(BM_GeneratedPlans)->Arg(10000)->Iterations(1)->Unit(benchmark::kSecond
 // planned, verified and their linuxcnc tapes run through rs274; run it with
 // TAIWA_RS274_LOCK=/tmp/rs274.lock so that each rs274 run takes the lock the
 // tests share (not the whole run). TAIWA_BENCH_PARTS sets another count,
-// TAIWA_BENCH_NO_RS274=1 plans and verifies only. Each plan refused by the
+// TAIWA_BENCH_NO_RS274=1 plans and verifies only, TAIWA_BENCH_FIRST=<seed>
+// starts there (several runs side by side, each a slice of the seeds). Each plan refused by the
 // verifier or rs274 is listed on stderr with its findings.
 void BM_GeneratedLatheParts(benchmark::State& state)
 {
     const int env = std::getenv("TAIWA_BENCH_PARTS") ? std::atoi(std::getenv("TAIWA_BENCH_PARTS")) : 0;
     const auto n = static_cast<std::uint64_t>(env > 0 ? env : state.range(0));
     const bool rs274 = !std::getenv("TAIWA_BENCH_NO_RS274");
+    const int firstEnv = std::getenv("TAIWA_BENCH_FIRST") ? std::atoi(std::getenv("TAIWA_BENCH_FIRST")) : 0;
+    const auto firstSeed = static_cast<std::uint64_t>(firstEnv > 0 ? firstEnv : 1);
     test::PlanTally tally;
     double seconds = 0.0;
     for (auto _ : state) {
         tally = {};
         const auto start = std::chrono::steady_clock::now();
-        for (std::uint64_t seed = 1; seed <= n; ++seed) {
+        for (std::uint64_t seed = firstSeed; seed < firstSeed + n; ++seed) {
             const test::GeneratedProfile g = test::generateLathePart(seed);
             const test::PlanCheck c = test::planAndVerify(g, rs274);
             tally.add(seed, c, g.shapes);
@@ -102,7 +105,8 @@ void BM_GeneratedLatheParts(benchmark::State& state)
         }
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    std::printf("lathe parts 1-%llu: %s; %.1f s\n", static_cast<unsigned long long>(n), tally.summary().c_str(), seconds);
+    std::printf("lathe parts %llu-%llu: %s; %.1f s\n", static_cast<unsigned long long>(firstSeed),
+                static_cast<unsigned long long>(firstSeed + n - 1), tally.summary().c_str(), seconds);
     state.counters["plans"] = static_cast<double>(tally.planned);
     state.counters["clean"] = static_cast<double>(tally.clean);
     state.counters["rs274_refused"] = static_cast<double>(tally.rs274Refused);

@@ -1,8 +1,9 @@
 // Turning steps: the finishing contour where the nose cannot follow the
 // profile (turn_planner.h): concave arcs tighter than the nose bridged
 // where the nose touches both neighbours, and concave corners next to an
-// arc whose elements are too short to hold the nose (docs/turning.md,
-// "Finishing").
+// arc whose elements are too short to hold the nose; every concave corner
+// checked as the control's compensation holds it (unheldCorner), and the
+// nose measured along the contour (docs/turning.md, "Finishing").
 #include "modules/turn/turn_planner.h"
 
 namespace taiwa::turning::planner {
@@ -99,6 +100,66 @@ std::optional<NoseIntoPart> Planner::noseIntoPart(const std::vector<Segment>& co
     if (centres.size() > contour.size())
         sample(*centres.back(), 0.0, length(*centres.back()), lineSegment(contour.back().b, *exitTo), true);
     return worst;
+}
+
+std::optional<std::size_t> Planner::unheldCorner(const std::vector<Segment>& contour, double rn) const
+{
+    const int air = inner_ ? 1 : -1;
+    const std::size_t n = contour.size();
+    std::vector<std::optional<Segment>> centres;
+    for (const Segment& s : contour) centres.push_back(offset(s, rn, air));
+    std::vector<double> from(n, 0.0), to(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!centres[k]) return k;  // a concave arc tighter than the nose
+        to[k] = length(*centres[k]);
+    }
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+        if (s_ * cross(tangentAtEnd(contour[k]), tangentAtStart(contour[k + 1])) >= -1e-9) continue;  // convex: rolls round
+        const auto c = nearest(intersections(curveOf(*centres[k]), curveOf(*centres[k + 1])), contour[k].b);
+        if (!c || !contains(*centres[k], *c, 1e-6)) return k;
+        if (!contains(*centres[k + 1], *c, 1e-6)) return k + 1;
+        to[k] = parameterOf(*centres[k], *c);
+        from[k + 1] = parameterOf(*centres[k + 1], *c);
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        if (from[k] > to[k] + 1e-6) return k;
+    return std::nullopt;
+}
+
+bool Planner::mergeUnheldElements(std::vector<Segment>& contour, double rn)
+{
+    bool any = false;
+    const auto replaceable = [&](const Segment& s) { return !s.arc || concaveArc(s); };
+    for (int guard = 0; guard < 100; ++guard) {
+        const auto u = unheldCorner(contour, rn);
+        if (!u) break;
+        const std::size_t k = *u;
+        // The element and the one after it, else the one before it, as one
+        // line over both; only a line or concave arc as the neighbour (a
+        // convex one bulges over the line).
+        const auto merge = [&](std::size_t i) {
+            if (i + 1 >= contour.size()) return false;
+            const Segment line = lineSegment(contour[i].a, contour[i + 1].b);
+            if (length(line) < 1e-6 || overChord({contour[i], contour[i + 1]}, line)) return false;
+            contour[i] = line;
+            contour.erase(contour.begin() + static_cast<long>(i) + 1);
+            return true;
+        };
+        const bool changed = (k + 1 < contour.size() && (replaceable(contour[k + 1]) || replaceable(contour[k])) && merge(k)) ||
+                             (k > 0 && (replaceable(contour[k - 1]) || replaceable(contour[k])) && merge(k - 1));
+        if (!changed) break;
+        any = true;
+        reachableCorners(contour, rn);
+    }
+    return any;
+}
+
+std::string Planner::edgeNear(ZR p) const
+{
+    std::size_t best = first_;
+    for (std::size_t i = first_; i < last_; ++i)
+        if (distanceTo(chain_[i], p) < distanceTo(chain_[best], p)) best = i;
+    return d_.edges[best].id;
 }
 
 bool Planner::overChord(const std::vector<Segment>& skipped, const Segment& chord) const

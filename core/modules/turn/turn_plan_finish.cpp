@@ -118,6 +118,7 @@ void Planner::planFinishing(const Tool& tool)
     reachableCorners(contour, rn);
     // The lines that makes at arcs, at line corners in their turn.
     if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
+    mergeUnheldElements(contour, rn);
     // The exit's end (the programmed point) for a contour: off the part
     // with compensation cancelled, up and forward, unless the last element
     // falls toward its end (the tool would go back into it): then straight
@@ -154,6 +155,7 @@ void Planner::planFinishing(const Tool& tool)
     // forward or straight out.
     std::optional<NoseIntoPart> into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt;
     bool upAndForward = dot(unit(upAndOut), airNormal(tangentAtEnd(contour.back()))) > 0.25;
+    std::optional<Segment> unheld;  // the first element of a way the control cannot hold the nose against
     if (!into && out_.problems.empty()) {
         std::vector<std::vector<Segment>> ways{contour};
         {
@@ -188,6 +190,13 @@ void Planner::planFinishing(const Tool& tool)
         for (const auto& c : ways) {
             std::vector<Segment> measured{entryLine(c)};
             measured.insert(measured.end(), c.begin(), c.end());
+            // A way whose corners the control's compensation cannot hold
+            // (the entry onto an element too short to sit against, or onto
+            // a rounding the nose meets beyond its end) is not taken.
+            if (const auto k = unheldCorner(measured, rn)) {
+                if (!unheld) unheld = measured[*k];
+                continue;
+            }
             std::optional<NoseIntoPart> bad = noseIntoPart(measured, rn, std::nullopt, true);
             if (!bad) {
                 // The exit: the way chosen by the last element, else the other.
@@ -205,6 +214,13 @@ void Planner::planFinishing(const Tool& tool)
             if (!firstInto) firstInto = bad;
         }
         if (!found) into = firstInto;
+        if (!found && !into && unheld) {
+            problem("rows", fmt::format("{} cannot be finished as drawn: the nose R{} of {} cannot sit in the concave corner at X{} Z{} "
+                                        "(an element there is shorter than the nose needs, and no other way in is clear); change "
+                                        "the allowance or the corner there",
+                                        edgeNear(midpoint(*unheld)), len(rn), toolWords(tool), len(2.0 * unheld->b.r), len(unheld->b.z)));
+            return;
+        }
     }
     // A contour along which (or into or out of which) the nose would cut
     // the part is refused, not planned. Only asked of a plan not refused

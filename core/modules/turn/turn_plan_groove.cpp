@@ -93,7 +93,12 @@ void Planner::planGrooves()
         // Seed 002: withdrawn along the surface's normal at the end point by da.
         const ZR end = bottoms.back();
         const ZR normal = surfaceNormal(end, first_, chain_.size(), w);
-        wr.feed(end + t_.withdrawal * normal);
+        // Unless the blade's side stands against a wall the normal leans
+        // toward (the last plunge against the groove's back wall, its bottom
+        // a fillet rising to it): then straight out, along the wall.
+        ZR out = t_.withdrawal * normal;
+        if (F.inside(end + out) || F.inside(end + 0.5 * out)) out = ZR{0.0, s_ * t_.withdrawal};
+        wr.feed(end + out);
         wr.rapid({wr.path.moves.back().end.z, rTop});
         if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
         ts.path = std::move(wr.path);

@@ -245,6 +245,26 @@ private:
     // onto the first element where their offsets do not cross. `exitTo`:
     // where the nose centre ends the exit, straight from the last offset's
     // end (compensation cancelled): the exit alone measured, likewise.
+    // The first element of `contour` (its index) the control's nose
+    // compensation cannot run as programmed, or none: at each concave corner
+    // the nose centre's offsets of the two elements must cross on both, and
+    // along each element the point where it leaves the previous corner must
+    // come before the point where it meets the next one. Otherwise the
+    // control refuses the tape (LinuxCNC: "... in concave corner cannot be
+    // reached by the tool without gouging") or runs the element backwards
+    // into the part. The entry, when it is the contour's first element, is
+    // held to the same.
+    std::optional<std::size_t> unheldCorner(const std::vector<Segment>& contour, double rn) const;
+    // Where unheldCorner finds an element too short to hold the nose at its
+    // concave corners after the other repairs (a stub of a convex arc left
+    // between two lines that end on it: a relief groove's bottom, a rounding
+    // an allowance's side steps up from), the element and its neighbour
+    // after it (else before it) become one line, where that line lies over
+    // what it replaces (the material under it is left, as at every corner
+    // the nose cannot reach). Whether it changed any.
+    bool mergeUnheldElements(std::vector<Segment>& contour, double rn);
+    // The id of the deformed edge nearest `p`.
+    std::string edgeNear(ZR p) const;
     std::optional<NoseIntoPart> noseIntoPart(const std::vector<Segment>& contour, double rn,
                                              std::optional<ZR> exitTo = std::nullopt, bool withEntry = false) const;
     std::optional<ZR> ontoConvex(const Segment& A, const Segment& B, double rn) const;
