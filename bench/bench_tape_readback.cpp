@@ -11,6 +11,7 @@
 #include "post/post.h"
 #include "tools/tool_library.h"
 #include "verify/tape_readback.h"
+#include "verify/tape_reader.h"
 #include "verify/verify.h"
 
 #include <algorithm>
