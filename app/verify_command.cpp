@@ -6,6 +6,7 @@
 
 #include "pipeline/pipeline.h"
 #include "post/post.h"
+#include "verify/tape_readback.h"
 #include "verify/two_path_check.h"
 
 #include "export/sheet_pictures.h"
@@ -26,9 +27,14 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
     if (!o.resolution) v.maxCellVisits = verify::kDefaultCellVisits;  // a cell size the operator chose is kept
     verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
     if (!o.cache && reused) *reused = false;
-    if (!report.findings.empty()) {
+    // A milling tape is posted to be read back (verify/tape_readback.h);
+    // a lathe's only to place the findings.
+    const bool readBack = !plan.mmJob.bar;
+    if (!report.findings.empty() || readBack) {
         try {
-            verify::placeOnTape(report, tape.emplace(postProcess(plan.steps, plan.tools, post)));
+            const PostedProgram& posted = tape.emplace(postProcess(plan.steps, plan.tools, post));
+            verify::placeOnTape(report, posted);
+            if (readBack) verify::readBack(report, plan, posted, post::dialectNamed(post.dialect), post);
         } catch (const Refusal&) {
             tape.reset();
             // A dialect that cannot post this job: the findings keep their moves.
@@ -45,7 +51,8 @@ std::string summary(const verify::Report& r)
     using K = verify::FindingKind;
     return std::to_string(r.count(K::Gouge)) + " gouges, " + std::to_string(r.count(K::Collision)) + " collisions, " +
            std::to_string(r.count(K::RapidIntoStock)) + " rapids into stock, " + std::to_string(r.count(K::TravelLimit)) +
-           " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left";
+           " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left, " +
+           std::to_string(r.count(K::UnplannedMove) + r.count(K::UnreadTape)) + " on the tape read back";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -19,6 +20,8 @@ const char* toKey(FindingKind k)
     case FindingKind::RapidIntoStock: return "rapid-into-stock";
     case FindingKind::TravelLimit: return "travel-limit";
     case FindingKind::RestMaterial: return "rest-material";
+    case FindingKind::UnplannedMove: return "unplanned-move";
+    case FindingKind::UnreadTape: return "unread-tape";
     }
     return "?";
 }
@@ -97,6 +100,25 @@ std::string describe(const Finding& f, const Plan& plan)
                      : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
                                                                       "at {}, over {:.3f} mm²"),
                                    len(f.size), at(f.position), f.area);
+        break;
+    case FindingKind::UnplannedMove: {
+        // The tape's own: X or Y may be unknown before the first move after the first tool change.
+        const auto coordinate = [&](double mm) {
+            return std::isnan(mm) ? std::string("?") : fmt::format("{:.{}f}", fromMm(mm, u), digits);
+        };
+        const Point3& p = f.position;
+        const std::string to = "X" + coordinate(p.x) + " Y" + coordinate(p.y) + " Z" + coordinate(p.z);
+        what = f.size > 0.0 ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tape has a {} the plan does not, to {}, "
+                                                                              "{} into stock"),
+                                          f.part, to, len(f.size))
+                            : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tape has a {} the plan does not, to {}"),
+                                          f.part, to);
+        break;
+    }
+    case FindingKind::UnreadTape:
+        what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tape cannot be read back, so it is not verified "
+                                                              "from here on: {}"),
+                           f.part);
         break;
     }
     // Where on the tape, when known: one template for each case, so that the station translates the whole.

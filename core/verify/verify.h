@@ -24,8 +24,13 @@ enum class FindingKind {
     RapidIntoStock,  // a G0 that cuts
     TravelLimit,     // the paths span more than an axis travels
     RestMaterial,    // material left where the step (or the unit) should have cleared it
+    // The posted tape read back (tape_readback.h):
+    UnplannedMove,   // a motion on the tape that the plan does not have (`part`: "rapid", "feed" or "arc")
+    UnreadTape,      // a tape line its dialect's reader does not understand (`part`: why); the rest is unchecked
 };
-const char* toKey(FindingKind k);  // "gouge", "collision", "rapid-into-stock", "travel-limit", "rest-material"
+// "gouge", "collision", "rapid-into-stock", "travel-limit", "rest-material",
+// "unplanned-move", "unread-tape"
+const char* toKey(FindingKind k);
 
 struct Finding {
     FindingKind kind = FindingKind::Gouge;
@@ -36,15 +41,21 @@ struct Finding {
     // the move; a lathe job, {x: the diameter (as the tape writes X), y: 0, z}.
     Point3 position{};
     // Gouge depth, height of material (lathe: its thickness), depth of the
-    // rapid into stock, overlap, excess [mm].
+    // rapid into stock (or of the unplanned move), overlap, excess [mm].
     double size = 0.0;
     // Rest material and gouges: the plan-view area of the cells found
     // (lathe: the area of the half-section) [mm²].
     double area = 0.0;
     std::string part;   // collisions: "shank" or "holder"; travel limits: the axis "x", "y", "z"
-    // A gouge, a collision (a rapid into stock is one, at rapid speed) or a
-    // travel limit: the tape must not run. Material left is reported only.
-    bool fatal() const { return kind != FindingKind::RestMaterial; }
+    // A gouge, a collision (a rapid into stock is one, at rapid speed), a
+    // travel limit, a tape that cannot be read back or a move the plan does
+    // not have that goes into stock: the tape must not run. Material left,
+    // and a move the plan does not have that stays out of the stock, are
+    // reported only.
+    bool fatal() const
+    {
+        return kind != FindingKind::RestMaterial && !(kind == FindingKind::UnplannedMove && !(size > 0.0));
+    }
     friend bool operator==(const Finding&, const Finding&) = default;
 };
 

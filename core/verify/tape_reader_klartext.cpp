@@ -1,7 +1,7 @@
-// The reader of HEIDENHAIN Klartext tapes (readKlartext, dialect_reader.h):
-// every block understood word by word, the drilling cycles expanded as the
-// manuals describe, or the tape refused at its line.
-#include "support/tape_reading.h"
+// The reader of HEIDENHAIN Klartext tapes (readTape's, tape_reader.h): every
+// block understood word by word, the drilling cycles expanded as the manuals
+// describe, or the reading stopped at its line.
+#include "verify/tape_reader_machine.h"
 
 #include <algorithm>
 #include <cctype>
@@ -12,7 +12,7 @@
 #include <set>
 #include <string_view>
 
-namespace taiwa::test {
+namespace taiwa::verify {
 
 namespace {
 
@@ -20,7 +20,7 @@ using namespace tape;
 
 class KlartextReader {
 public:
-    DialectMoves read(const std::string& text)
+    TapeReading read(const std::string& text)
     {
         const auto lines = splitLines(text);
         try {
@@ -29,8 +29,9 @@ public:
                 m_.line = blocks_[k].line;
                 block(k);
             }
-        } catch (const Refusal& r) {
+        } catch (const Unread& r) {
             m_.out.error = lineError(m_.line, r, lines);
+            m_.out.errorLine = m_.line;
         }
         return std::move(m_.out);
     }
@@ -408,6 +409,6 @@ private:
 
 }  // namespace
 
-DialectMoves readKlartext(const std::string& text) { return KlartextReader().read(text); }
+TapeReading readKlartext(const std::string& text) { return KlartextReader().read(text); }
 
-}  // namespace taiwa::test
+}  // namespace taiwa::verify

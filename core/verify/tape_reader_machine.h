@@ -1,11 +1,11 @@
-// What the tape readers of dialect_reader.h share: the strict reading of
+// What the tape readers of tape_reader.h share: the strict reading of
 // lines, words and numbers, the refusal that names a line, and the machine
-// the readers drive (position, feed, tool, step) recording the moves as
-// rs274 reports them. Internal to tests/support (iso_reader.cpp,
-// klartext_reader.cpp).
+// the readers drive (position, feed, tool, step) recording the motions as
+// rs274 reports them. Internal to core/verify (tape_reader.cpp,
+// tape_reader_klartext.cpp).
 #pragma once
 
-#include "support/dialect_reader.h"
+#include "verify/tape_reader.h"
 
 #include <charconv>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace taiwa::test::tape {
+namespace taiwa::verify::tape {
 
 inline constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
@@ -28,14 +28,16 @@ inline constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 // readers take LinuxCNC's.
 inline double peckReturn(bool inches) { return inches ? 0.010 : 0.254; }
 
-struct Refusal {
+// A block the reader does not understand (not model/result.h's Refusal:
+// this one never leaves the reader).
+struct Unread {
     std::string what;
 };
 
-[[noreturn]] inline void refuse(const std::string& what) { throw Refusal{what}; }
+[[noreturn]] inline void refuse(const std::string& what) { throw Unread{what}; }
 
 // "line 12: why [the line]" (1-based).
-inline std::string lineError(int line, const Refusal& r, const std::vector<std::string>& lines)
+inline std::string lineError(int line, const Unread& r, const std::vector<std::string>& lines)
 {
     const std::size_t i = static_cast<std::size_t>(line) - 1;
     return "line " + std::to_string(line) + ": " + r.what + (i < lines.size() ? " [" + lines[i] + "]" : std::string());
@@ -120,7 +122,7 @@ inline bool known(const Point3& p) { return !std::isnan(p.x) && !std::isnan(p.y)
 // moves as rs274 would report them.
 class Machine {
 public:
-    DialectMoves out;
+    TapeReading out;
     Point3 at{kUnknown, kUnknown, kUnknown};
     double feed = kUnknown;  // the modal feed rate
     int tool = 0;
@@ -140,12 +142,12 @@ public:
         std::smatch m;
         if (std::regex_search(text, m, stepComment)) step = std::stoi(m[1].str());
     }
-    void traverse(const Point3& to) { record(CanonMove::Traverse, to, 0.0, {}, 0); }
+    void traverse(const Point3& to) { record(TapeMotion::Traverse, to, 0.0, {}, 0); }
     void feedTo(const Point3& to, double feedRate)
     {
         if (!known(at)) refuse("a feed move from an unknown position");
         if (!(feedRate > 0)) refuse("a feed move with no feed rate in force");
-        record(CanonMove::Feed, to, feedRate, {}, 0);
+        record(TapeMotion::Feed, to, feedRate, {}, 0);
     }
     void arc(const Point3& to, Point2 centre, int rotation, double feedRate)
     {
@@ -158,27 +160,26 @@ public:
         if (std::abs(r0 - r1) > tolerance)
             refuse("the arc's end is not on its circle: radius " + show(r0) + " at the start, " + show(r1) + " at the end");
         if (r0 < tolerance) refuse("an arc of no radius");
-        record(CanonMove::Arc, to, feedRate, centre, rotation);
+        record(TapeMotion::Arc, to, feedRate, centre, rotation);
     }
 
 private:
-    void record(CanonMove::Kind kind, const Point3& to, double feedRate, Point2 centre, int rotation)
+    void record(TapeMotion::Kind kind, const Point3& to, double feedRate, Point2 centre, int rotation)
     {
         if (!unitsStated) refuse("a move before the units are stated");
-        CanonMove c;
+        TapeMotion c;
         c.kind = kind;
         c.start = at;
         c.end = to;
         c.centre = centre;
         c.rotation = rotation;
-        c.plane = 17;
-        c.feed = kind == CanonMove::Traverse ? 0.0 : feedRate;
+        c.feed = kind == TapeMotion::Traverse ? 0.0 : feedRate;
         c.step = step;
         c.tool = tool;
-        out.moves.push_back(c);
-        out.lines.push_back(line);
+        c.line = line;
+        out.motions.push_back(c);
         at = to;
     }
 };
 
-}  // namespace taiwa::test::tape
+}  // namespace taiwa::verify::tape

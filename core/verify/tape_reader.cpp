@@ -1,13 +1,17 @@
-// The reader of the Haas and SINUMERIK tapes (readIsoTape, dialect_reader.h):
-// every block understood word by word, the drilling cycles expanded as the
-// manuals describe, or the tape refused at its line.
-#include "support/tape_reading.h"
+// The reader of the ISO and SINUMERIK tapes (readTape, tape_reader.h): every
+// block understood word by word, the drilling cycles expanded as the manuals
+// describe, or the reading stopped at its line. The Klartext reader is in
+// tape_reader_klartext.cpp.
+#include "verify/tape_reader_machine.h"
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string_view>
 
-namespace taiwa::test {
+namespace taiwa::verify {
+
+TapeReading readKlartext(const std::string& text);  // tape_reader_klartext.cpp
 
 namespace {
 
@@ -15,9 +19,18 @@ using namespace tape;
 
 class IsoReader {
 public:
-    explicit IsoReader(bool sinumerik) : sinumerik_(sinumerik) {}
+    explicit IsoReader(const post::Dialect& d)
+        : sinumerik_(d.syntax == post::Syntax::Sinumerik),
+          framed_(!sinumerik_ && d.percentFraming),
+          numbered_(!sinumerik_ && !d.programNumberLine.empty()),
+          points_(!sinumerik_ && d.decimalPointAlways),
+          offsetNeeded_(!d.lengthOffset.empty()),
+          dwellWord_(sinumerik_ ? 'F' : d.dwellWord),
+          tapSynchronised_(d.tap == "G33.1")
+    {
+    }
 
-    DialectMoves read(const std::string& text)
+    TapeReading read(const std::string& text)
     {
         const auto lines = splitLines(text);
         try {
@@ -27,17 +40,19 @@ public:
             }
             m_.line = static_cast<int>(lines.size());
             if (!ended_) refuse("the program does not end with M30");
-            if (!sinumerik_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
-                refuse("a Haas tape begins and ends with a '%' line");
-        } catch (const Refusal& r) {
+            if (framed_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
+                refuse("the dialect's tape begins and ends with a '%' line");
+        } catch (const Unread& r) {
             m_.out.error = lineError(m_.line, r, lines);
+            m_.out.errorLine = m_.line;
         }
         return std::move(m_.out);
     }
 
 private:
-    // Drill..Bore: the canned cycles G81, G83, G84, G85, G86 (Haas).
-    enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Drill, Peck, Tap, Ream, Bore };
+    // Drill..Bore: the canned cycles G81, G83, G84, G85, G86 (ISO);
+    // Synchronised: LinuxCNC's G33.1.
+    enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Synchronised, Drill, Peck, Tap, Ream, Bore };
 
     // A SINUMERIK cycle called modally: CYCLE81, 83, 84, 85 or 86.
     struct ModalCycle {
@@ -49,8 +64,8 @@ private:
     };
 
     struct Block {
-        std::vector<int> g, m;
-        std::map<char, double> v;     // X Y Z I J R F P S T H D
+        std::vector<int> g, m;        // G in tenths (G59.1: 591), M whole
+        std::map<char, double> v;     // X Y Z I J K R F P Q S T H D
         std::map<char, bool> point;   // whether the number had a decimal point
         bool supa = false;
         bool mcall = false;
@@ -72,7 +87,7 @@ private:
         std::string rest;
         for (std::size_t i = 0; i < s.size(); ++i) {
             if (s[i] == ')') refuse("')' with no '(' before it");
-            if (s[i] == ';') refuse("';': Haas comments are in parentheses");
+            if (s[i] == ';') refuse("';': this dialect's comments are in parentheses");
             if (s[i] != '(') {
                 rest += s[i];
                 continue;
@@ -117,13 +132,23 @@ private:
                 if (k != 0 || !whole(number)) refuse("'" + t + "': a sequence number only at the start of a block");
                 continue;
             }
-            if (letter == 'G' || letter == 'M') {
+            if (letter == 'M') {
                 const auto n = whole(number);
                 if (!n) refuse("'" + t + "' is not understood");
-                (letter == 'G' ? b.g : b.m).push_back(*n);
+                b.m.push_back(*n);
                 continue;
             }
-            const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJRFPQSTH";
+            if (letter == 'G') {
+                // G59.1, G33.1, G54.1: in tenths.
+                const auto dot = number.find('.');
+                const auto n = whole(number.substr(0, dot));
+                const auto tenth = dot == std::string_view::npos ? std::optional<int>(0) : whole(number.substr(dot + 1));
+                if (!n || !tenth || *tenth > 9 || (dot != std::string_view::npos && number.size() != dot + 2))
+                    refuse("'" + t + "' is not understood");
+                b.g.push_back(*n * 10 + *tenth);
+                continue;
+            }
+            const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJKRFPQSTH";
             if (letters.find(letter) == std::string::npos || number.empty()) refuse("'" + t + "' is not understood");
             if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
             if (letter == 'S' || letter == 'T' || letter == 'D' || letter == 'H') {
@@ -136,10 +161,10 @@ private:
             if (!value) refuse("'" + t + "' is not understood");
             b.v[letter] = *value;
             b.point[letter] = number.find('.') != std::string_view::npos;
-            // A Haas reads a number without a point in least increments
-            // (X10 = 0.01 mm); our tapes always write the point.
-            if (!sinumerik_ && letter != 'P' && !b.point[letter])
-                refuse("'" + t + "' without a decimal point (a Haas reads it in least increments)");
+            // A FANUC or a Haas reads a number without a point in least
+            // increments (X10 = 0.01 mm); their tapes always write the point.
+            if (points_ && letter != 'P' && !b.point[letter])
+                refuse("'" + t + "' without a decimal point (this control reads it in least increments)");
         }
         return b;
     }
@@ -149,15 +174,15 @@ private:
         if (raw.find_first_of("\r\t") != std::string::npos) refuse("a carriage return or tab");
         const std::string s = trim(withoutComments(raw));
         if (s.empty()) return;
-        if (!sinumerik_ && s == "%") {
+        if (framed_ && s == "%") {
             if (++percents_ > 2) refuse("a third '%' line");
             return;
         }
         if (percents_ == 2) refuse("text after the closing '%'");
-        if (!sinumerik_ && percents_ == 0) refuse("a block before the leading '%'");
+        if (framed_ && percents_ == 0) refuse("a block before the leading '%'");
         if (ended_) refuse("a block after M30");
         const auto tokens = splitWords(s);
-        if (!sinumerik_ && tokens.size() == 1 && tokens[0][0] == 'O') {
+        if (numbered_ && tokens.size() == 1 && tokens[0][0] == 'O') {
             if (!whole(std::string_view(tokens[0]).substr(1)) || programNumber_) refuse("'" + tokens[0] + "' is not understood");
             programNumber_ = true;
             return;
@@ -169,61 +194,81 @@ private:
     {
         // G codes: at most one of the motion group.
         std::optional<Mode> motion;
-        bool g4 = false, g28 = false, g43 = false, g80 = false, g154 = false, g641 = false;
+        bool g4 = false, g28 = false, g43 = false, g53 = false, g80 = false, indexed = false, g64 = false, g641 = false;
         const auto setMotion = [&](Mode mode) {
             if (motion || g80) refuse("two motion codes in one block");
             motion = mode;
         };
+        const auto named = [](int g) {
+            return "G" + std::to_string(g / 10) + (g % 10 != 0 ? "." + std::to_string(g % 10) : std::string());
+        };
         for (const int g : b.g) {
-            if (g == 0) setMotion(Mode::Rapid);
-            else if (g == 1) setMotion(Mode::Feed);
-            else if (g == 2) setMotion(Mode::Clockwise);
-            else if (g == 3) setMotion(Mode::CounterClockwise);
-            else if (g == 17 || g == 40 || g == 94) continue;
-            else if (g == 90) incremental_ = false;
-            else if (g == 4) g4 = true;
-            else if (!sinumerik_ && g == 81) setMotion(Mode::Drill);
-            else if (!sinumerik_ && g == 83) setMotion(Mode::Peck);
-            else if (!sinumerik_ && g == 84) setMotion(Mode::Tap);
-            else if (!sinumerik_ && g == 85) setMotion(Mode::Ream);
-            else if (!sinumerik_ && g == 86) setMotion(Mode::Bore);
-            else if (!sinumerik_ && g == 80) {
+            if (g % 10 != 0) {
+                // G59.1..G59.3 (LinuxCNC), G54.1 P (FANUC), G33.1 (LinuxCNC's tapping).
+                if (!sinumerik_ && g >= 591 && g <= 593) continue;
+                if (!sinumerik_ && g == 541) indexed = true;
+                else if (!sinumerik_ && g == 331 && tapSynchronised_) setMotion(Mode::Synchronised);
+                else refuse(named(g) + " is not understood");
+                continue;
+            }
+            const int n = g / 10;
+            if (n == 0) setMotion(Mode::Rapid);
+            else if (n == 1) setMotion(Mode::Feed);
+            else if (n == 2) setMotion(Mode::Clockwise);
+            else if (n == 3) setMotion(Mode::CounterClockwise);
+            else if (n == 17 || n == 40 || n == 94) continue;
+            else if (n == 90) incremental_ = false;
+            else if (n == 4) g4 = true;
+            else if (!sinumerik_ && n == 81) setMotion(Mode::Drill);
+            else if (!sinumerik_ && n == 83) setMotion(Mode::Peck);
+            else if (!sinumerik_ && n == 84 && !tapSynchronised_) setMotion(Mode::Tap);
+            else if (!sinumerik_ && n == 85) setMotion(Mode::Ream);
+            else if (!sinumerik_ && n == 86) setMotion(Mode::Bore);
+            else if (!sinumerik_ && n == 80) {
                 if (motion) refuse("two motion codes in one block");
                 g80 = true;
-            } else if (!sinumerik_ && (g == 20 || g == 21)) m_.units(g == 20);
-            else if (sinumerik_ && (g == 700 || g == 710)) m_.units(g == 700);
-            else if (!sinumerik_ && g == 49) continue;
-            else if (!sinumerik_ && g == 91) incremental_ = true;
-            else if (!sinumerik_ && g == 43) g43 = true;
-            else if (!sinumerik_ && g == 28) g28 = true;
-            else if (!sinumerik_ && g == 98) g98_ = true;
-            else if (!sinumerik_ && g == 154) g154 = true;
-            else if (!sinumerik_ && g >= 54 && g <= 59) continue;
-            else if (sinumerik_ && ((g >= 54 && g <= 57) || (g >= 505 && g <= 599))) continue;
-            else if (sinumerik_ && g == 641) g641 = true;
-            else refuse("G" + std::to_string(g) + " is not understood");
+            } else if (!sinumerik_ && (n == 20 || n == 21)) m_.units(n == 20);
+            else if (sinumerik_ && (n == 700 || n == 710)) m_.units(n == 700);
+            else if (!sinumerik_ && n == 49) continue;
+            else if (!sinumerik_ && n == 91) incremental_ = true;
+            else if (!sinumerik_ && n == 43) g43 = true;
+            else if (!sinumerik_ && n == 28) g28 = true;
+            else if (!sinumerik_ && n == 53) g53 = true;
+            else if (!sinumerik_ && n == 64) g64 = true;
+            else if (!sinumerik_ && n == 98) g98_ = true;
+            else if (!sinumerik_ && n == 154) indexed = true;
+            else if (!sinumerik_ && n >= 54 && n <= 59) continue;
+            else if (sinumerik_ && ((n >= 54 && n <= 57) || (n >= 505 && n <= 599))) continue;
+            else if (sinumerik_ && n == 641) g641 = true;
+            else refuse(named(g) + " is not understood");
         }
         if (b.adis && !g641) refuse("ADIS without G641");
         if (g641 && !b.adis) refuse("G641 without ADIS");
 
         // F: the feed rate, or on SINUMERIK with G4 the dwell time.
-        if (b.has('F') && !(g4 && sinumerik_)) {
+        if (b.has('F') && !(g4 && dwellWord_ == 'F')) {
             if (!(b.v.at('F') > 0)) refuse("a feed rate of zero");
             m_.feed = b.v.at('F');
         }
-        if (b.has('P') && !g4 && !g154) refuse("P without G4 or G154");
-        if (g154) {
-            if (!b.has('P') || b.point.at('P') || b.v.at('P') < 1 || b.v.at('P') > 99) refuse("G154 needs P1 to P99");
+        const Mode modeNow = motion ? *motion : mode_;
+        // P: G4's time, G154's or G54.1's offset, G64's tolerance, G86's dwell (LinuxCNC).
+        if (b.has('P') && !g4 && !indexed && !g64 && modeNow != Mode::Bore) refuse("P without G4, G54.1, G64, G86 or G154");
+        if (indexed) {
+            if (!b.has('P') || b.point.at('P') || b.v.at('P') < 1 || b.v.at('P') > 99) refuse("G154 or G54.1 needs P1 to P99");
         }
-        if (b.has('Q') && (motion ? *motion : mode_) != Mode::Peck) refuse("Q without G83");
+        if (b.has('Q') && modeNow != Mode::Peck) refuse("Q without G83");
+        if (b.has('K') && (!motion || *motion != Mode::Synchronised)) refuse("K without G33.1");
         if (b.has('T')) selected_ = static_cast<int>(b.v.at('T'));
+        if (b.has('S')) rpm_ = b.v.at('S');
         for (const int mf : b.m) {
             if (mf == 6) {
                 if (selected_ == 0) refuse("M6 with no tool selected");
                 m_.tool = selected_;
-                lengthOffset_ = false;
+                lengthOffset_ = !offsetNeeded_;
             } else if (mf == 30) {
                 ended_ = true;
+            } else if (mf == 29 && !sinumerik_) {
+                if (!b.has('S')) refuse("M29 (rigid tapping) needs the speed in S");
             } else if (mf != 3 && mf != 4 && mf != 5 && mf != 8 && mf != 9) {
                 refuse("M" + std::to_string(mf) + " is not understood");
             }
@@ -246,10 +291,10 @@ private:
             lengthOffset_ = true;
         }
         if (g4) {
-            const char time = sinumerik_ ? 'F' : 'P';
+            const char time = dwellWord_;
             if (!b.has(time) || b.v.at(time) < 0) refuse(std::string("G4 needs the dwell time in ") + time);
-            if (!sinumerik_ && !b.point.at('P')) refuse("G4 P without a decimal point (milliseconds on a Haas)");
-            if (b.has('X') || b.has('Y') || b.has('Z') || motion) refuse("a dwell with a move");
+            if (points_ && !b.point.at(time)) refuse(std::string("G4 ") + time + " without a decimal point (milliseconds on this control)");
+            if ((time != 'X' && b.has('X')) || b.has('Y') || b.has('Z') || motion) refuse("a dwell with a move");
             ++m_.out.dwells;
             return;
         }
@@ -266,6 +311,11 @@ private:
         if (g28) {
             if (!incremental_ || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0 || motion)
                 refuse("only 'G28 G91 Z0.' is understood");
+            return;
+        }
+        if (g53) {
+            if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
+                refuse("only 'G53 G0 Z0' is understood");
             return;
         }
         if (b.supa) {
@@ -323,6 +373,9 @@ private:
         case Mode::Feed:
             m_.feedTo(to, m_.feed);
             return;
+        case Mode::Synchronised:
+            synchronisedTap(b, to);
+            return;
         case Mode::Clockwise:
         case Mode::CounterClockwise:
             if (!b.has('I') || !b.has('J')) refuse("an arc needs both I and J");
@@ -337,6 +390,23 @@ private:
             drill(b, to);
             return;
         }
+    }
+
+    // LinuxCNC's G33.1 Z K at the hole the tool is over: down to Z at K x S
+    // and back up to where it began at the same rate (the spindle reversed
+    // at the bottom).
+    void synchronisedTap(const Block& b, const Point3& to)
+    {
+        if (!b.has('Z') || !b.has('K')) refuse("G33.1 needs Z and K");
+        if (b.has('X') || b.has('Y')) refuse("G33.1 only along Z is understood");
+        if (!known(m_.at)) refuse("G33.1 from an unknown position");
+        if (!(rpm_ > 0)) refuse("G33.1 with no spindle speed");
+        if (!(b.v.at('K') > 0)) refuse("G33.1's K must be positive");
+        if (to.z > m_.at.z) refuse("G33.1 upwards");
+        const double rate = b.v.at('K') * rpm_;
+        const Point3 top = m_.at;
+        m_.feedTo(to, rate);
+        m_.feedTo(top, rate);
     }
 
     // G98 G81/G83/G84/G85/G86 as rs274 expands G81, G83, G85 and G86: up to
@@ -524,6 +594,13 @@ private:
     }
 
     bool sinumerik_;
+    bool framed_;          // '%' lines lead and end the tape
+    bool numbered_;        // an "O1000" program number line
+    bool points_;          // lengths and feeds must carry a decimal point
+    bool offsetNeeded_;    // a Z move after M6 waits for the length offset
+    char dwellWord_;       // G4's time: P, X (FANUC) or F (SINUMERIK)
+    bool tapSynchronised_; // tapping is G33.1 (LinuxCNC), not G84
+    double rpm_ = 0.0;     // the last S
     Machine m_;
     Mode mode_ = Mode::None;
     bool incremental_ = false;
@@ -540,6 +617,10 @@ private:
 
 }  // namespace
 
-DialectMoves readIsoTape(const std::string& text, bool sinumerik) { return IsoReader(sinumerik).read(text); }
+TapeReading readTape(const std::string& text, const post::Dialect& dialect)
+{
+    if (dialect.syntax == post::Syntax::Klartext) return readKlartext(text);
+    return IsoReader(dialect).read(text);
+}
 
-}  // namespace taiwa::test
+}  // namespace taiwa::verify
