@@ -152,10 +152,15 @@ QWidget* StationWindow::buildRight()
     figure_ = new FigurePanel(doc_);
     figure_->setObjectName("figure");
     views_->addTab(figure_, QString());
-    right->addWidget(views_);
     // A two-path job's timeline chart under the views (hidden for any other).
-    right->addWidget(twoPath_->chart());
+    auto* viewsAndChart = new QWidget;
+    auto* viewsBox = new QVBoxLayout(viewsAndChart);
+    viewsBox->setContentsMargins(0, 0, 0, 0);
+    viewsBox->setSpacing(2);
+    viewsBox->addWidget(views_, 1);
+    viewsBox->addWidget(twoPath_->chart());
     twoPath_->chart()->hide();
+    right->addWidget(viewsAndChart);
     // The step list and, for a two-path job, its steps by path; the tape
     // and path 2's (the tab bars shown for a two-path job only).
     stepTabs_ = new QTabWidget;

@@ -15,7 +15,7 @@ namespace taiwa::ui {
 namespace {
 
 constexpr int kLabelWidth = 150;  // the lanes' names
-constexpr int kLane = 26, kGap = 6, kTop = 18, kAxis = 20, kRight = 12;
+constexpr int kLane = 26, kGap = 6, kTop = 18, kAxis = 20, kRight = 28;
 
 QColor colourOf(TimelineStretch::Kind k)
 {
@@ -37,6 +37,7 @@ TwoPathChart::TwoPathChart(QWidget* parent) : QWidget(parent)
 {
     setMouseTracking(false);
     setAttribute(Qt::WA_OpaquePaintEvent);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
 }
 
 void TwoPathChart::setTimeline(std::optional<Timeline> timeline, std::vector<std::string> pathNames, std::optional<int> endWait)
@@ -150,18 +151,18 @@ void TwoPathChart::paintEvent(QPaintEvent*)
     }
     for (const Bar& b : all)
         if (b.stretch.kind == TimelineStretch::Wait) p.fillRect(b.rect, colourOf(TimelineStretch::Wait));
-    // The waits: where the paths go on together, across the lanes, with the code.
+    if (selected_ > 0) {
+        p.setPen(QPen(palette().color(QPalette::Highlight), 2.0));
+        for (const Bar& b : all)
+            if (b.stretch.block == selected_ && b.stretch.kind != TimelineStretch::Wait) p.drawRect(b.rect.adjusted(1, 1, -1, -1));
+    }
+    // The waits, over the outline: where the paths go on together, across the lanes, with the code.
     const double top = laneOf(0).top() - 2, bottom = laneOf(names_.size() - 1).bottom() + 2;
     for (const WaitLine& w : waitLines()) {
         p.setPen(QPen(colourOf(TimelineStretch::Wait), 1.0, Qt::DashLine));
         p.drawLine(QPointF(w.x, top), QPointF(w.x, bottom));
         p.setPen(colourOf(TimelineStretch::Wait));
         p.drawText(QRectF(w.x - 30, 0, 60, kTop - 2), Qt::AlignHCenter | Qt::AlignBottom, QStringLiteral("M%1").arg(w.code));
-    }
-    if (selected_ > 0) {
-        p.setPen(QPen(palette().color(QPalette::Highlight), 2.0));
-        for (const Bar& b : all)
-            if (b.stretch.block == selected_ && b.stretch.kind != TimelineStretch::Wait) p.drawRect(b.rect.adjusted(1, 1, -1, -1));
     }
     // The time axis: seconds, ticks at a round step.
     const double end = timeline_->seconds();

@@ -44,10 +44,8 @@ void TwoPathSteps::setShown(const Plan& plan, const TwoPathShown& shown)
     filling_ = true;
     clear();
     const bool balanced = shown.balanced.cut && *shown.balanced.cut && shown.balanced.timeline;
-    const auto tool = [&](const Step& s) {
-        const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr;
-        return t ? QStringLiteral("T%1 %2").arg(t->id).arg(localToolName(*t)) : QStringLiteral("–");
-    };
+    // The tool by its number, its name in the tooltip (as the step list has it).
+    const auto tool = [&](const Step& s) { return s.tool ? QStringLiteral("T%1").arg(s.tool->toolId) : QStringLiteral("–"); };
     for (std::size_t p = 0; p < shown.pathNames.size(); ++p) {
         QStringList tools;
         for (int t : shown.tools[p]) tools << QStringLiteral("T%1").arg(t);
@@ -76,6 +74,7 @@ void TwoPathSteps::setShown(const Plan& plan, const TwoPathShown& shown)
                 time = blocks.empty() ? QString() : clockTime((blocks.back()->end - blocks.front()->start) / 60.0);
             }
             auto* row = new QTreeWidgetItem(path, QStringList{name, tool(s), time});
+            if (const Tool* t = s.tool ? plan.tool(s.tool->toolId) : nullptr) row->setToolTip(ToolName, localToolName(*t));
             row->setData(0, kStepRole, static_cast<int>(k));
             row->setTextAlignment(Time, Qt::AlignRight | Qt::AlignVCenter);
             for (const TimelineBlock* b : blocks) {
