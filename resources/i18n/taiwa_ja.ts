@@ -911,7 +911,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         </message>
         <message>
             <source>Steps</source>
-            <translation type="unfinished" />
+            <translation>工程</translation>
         </message>
         <message>
             <source>Steps by path</source>
@@ -1545,7 +1545,7 @@ Theirs: %6</source>
         <name>taiwa::ui::TwoPathChart</name>
         <message>
             <source>CB%1 in, dwell %2 s</source>
-            <translation type="unfinished" />
+            <translation>CB%1 進入、ドウェル %2 秒</translation>
         </message>
         <message>
             <source>CB%1 in</source>
