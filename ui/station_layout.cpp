@@ -20,6 +20,8 @@
 #include "ui/section_bar.h"
 #include "ui/step_panel.h"
 #include "ui/store_actions.h"
+#include "ui/two_path_chart.h"
+#include "ui/two_path_views.h"
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
 #include "ui/verification_panel.h"
@@ -38,6 +40,7 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -149,12 +152,36 @@ QWidget* StationWindow::buildRight()
     figure_ = new FigurePanel(doc_);
     figure_->setObjectName("figure");
     views_->addTab(figure_, QString());
-    right->addWidget(views_);
+    // A two-path job's timeline chart under the views (hidden for any other).
+    auto* viewsAndChart = new QWidget;
+    auto* viewsBox = new QVBoxLayout(viewsAndChart);
+    viewsBox->setContentsMargins(0, 0, 0, 0);
+    viewsBox->setSpacing(2);
+    viewsBox->addWidget(views_, 1);
+    viewsBox->addWidget(twoPath_->chart());
+    twoPath_->chart()->hide();
+    right->addWidget(viewsAndChart);
+    // The step list and, for a two-path job, its steps by path; the tape
+    // and path 2's (the tab bars shown for a two-path job only).
+    stepTabs_ = new QTabWidget;
+    stepTabs_->setObjectName("steps.tabs");
+    stepTabs_->setDocumentMode(true);
+    stepTabs_->addTab(steps_, QString());
+    stepTabs_->addTab(twoPath_->steps(), QString());
+    tapes_ = new QTabWidget;
+    tapes_->setObjectName("nc.tapes");
+    tapes_->setDocumentMode(true);
+    tapes_->addTab(nc_, QString());
+    tapes_->addTab(twoPath_->tape(), QString());
+    for (QTabWidget* tabs : {stepTabs_, tapes_}) {
+        tabs->setTabVisible(1, false);
+        tabs->tabBar()->hide();
+    }
     auto* lower = new QSplitter(Qt::Horizontal);
-    lower->addWidget(steps_);
+    lower->addWidget(stepTabs_);
     // The tape over the verification's findings.
     auto* tape = new QSplitter(Qt::Vertical);
-    tape->addWidget(nc_);
+    tape->addWidget(tapes_);
     tape->addWidget(verify_);
     tape->setStretchFactor(0, 3);
     tape->setStretchFactor(1, 1);
@@ -190,6 +217,10 @@ void StationWindow::nameParts()
     if (auto* noGl = findChild<QLabel*>("preview.unavailable")) noGl->setText(tr("No 3-D preview: this display has no OpenGL."));
     views_->setTabText(0, tr("3-D view"));
     views_->setTabText(views_->indexOf(figure_), tr("Figure"));
+    stepTabs_->setTabText(0, tr("Steps"));
+    stepTabs_->setTabText(1, tr("Steps by path"));
+    tapes_->setTabText(0, tr("Path 1"));
+    tapes_->setTabText(1, tr("Path 2"));
 }
 
 void StationWindow::buildMenus()

@@ -24,6 +24,8 @@
 #include "ui/step_table.h"
 #include "ui/technology_dialog.h"
 #include "ui/tool_library_dialog.h"
+#include "ui/two_path_chart.h"
+#include "ui/two_path_views.h"
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
 #include "ui/verification_panel.h"
@@ -42,6 +44,8 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <algorithm>
@@ -53,7 +57,7 @@ StationWindow::StationWindow(const QString& jobPath, QWidget* parent)
       autosave_(new Autosaver(doc_, this)), files_(new FileActions(doc_, runner_, autosave_, this)),
       palette_(new ModulePalette), units_(new UnitListPanel(doc_)), jobProps_(new JobProperties(doc_)),
       forms_(new FormStack), unitMessages_(new QLabel), steps_(new StepPanel), nc_(new NcView),
-      verify_(new VerificationPanel)
+      verify_(new VerificationPanel), twoPath_(new TwoPathViews(this))
 {
     for (const ModuleKind* kind : moduleKinds()) unitForms_[kind->name()] = new UnitForm(*kind);
     auto* main = new QSplitter(Qt::Horizontal);
@@ -233,9 +237,26 @@ void StationWindow::catchUp()
     took.start();
     const Later l = std::move(*later_);
     later_.reset();
-    nc_->setProgram(l.nc, l.lines);  // a milling or a lathe tape
+    // A two-path job: path 1's program here, path 2's in its tab.
+    const PostedProgram* path1 = twoPath_->setPlan(*l.plan, runner_->dialect(), files_->stem());
+    showTwoPath(twoPath_->shown().has_value());
+    if (path1) nc_->setProgram(QString::fromStdString(path1->nc), path1->lines);
+    else nc_->setProgram(l.nc, l.lines);  // a milling or a lathe tape
     steps_->setPlan(l.plan);         // the same steps, now with times; re-selects the step in the preview
     catchUpMs_ = took.elapsed();
+}
+
+void StationWindow::showTwoPath(bool on)
+{
+    if (on == twoPath_->chart()->isVisibleTo(this)) return;
+    twoPath_->chart()->setVisible(on);
+    for (QTabWidget* tabs : {stepTabs_, tapes_}) {
+        tabs->setTabVisible(1, on);
+        tabs->tabBar()->setVisible(on);
+    }
+    // Opened on a two-path job: its steps by path.
+    stepTabs_->setCurrentIndex(on ? 1 : 0);
+    tapes_->setCurrentIndex(0);
 }
 
 void StationWindow::showStale()

@@ -34,6 +34,7 @@ class PreviewWidget;
 class SectionBar;
 class StepPanel;
 class StepTable;
+class TwoPathViews;
 class UnitForm;
 class UnitListPanel;
 class VerificationPanel;
@@ -56,6 +57,9 @@ public:
     VerificationPanel* verificationPanel() const { return verify_; }
     PreviewWidget* preview() const { return preview_; }
     SectionBar* sectionBar() const { return section_; }
+    // A two-path job's step list by path, timeline chart and path 2's tape
+    // (shown only for a job on a two-path lathe; docs/two-path-lathe.md).
+    TwoPathViews* twoPathViews() const { return twoPath_; }
     // The figure elements of a milling job, in a tab beside the 3-D view.
     FigurePanel* figurePanel() const { return figure_; }
     // Shows the figure tab (true) or the 3-D view.
@@ -88,6 +92,9 @@ private:
     void wirePlanRunner();
     void wireStepsAndTape();
     void wirePreview();
+    void wireTwoPath();
+    // The two-path views shown (a job on a two-path lathe) or hidden.
+    void showTwoPath(bool on);
     void onDocumentChanged(bool fromTyping);
     void onUnitSelected(int unit);
     void onFieldEdited(UnitForm* form, int field, std::optional<double> value);
@@ -127,6 +134,9 @@ private:
     FigurePanel* figure_ = nullptr;
     NcView* nc_;
     VerificationPanel* verify_;
+    TwoPathViews* twoPath_;
+    QTabWidget* stepTabs_ = nullptr;  // the step list; by path
+    QTabWidget* tapes_ = nullptr;     // the tape (path 1's); path 2's
     Diagnostics diagnostics_;
     struct Later {
         std::shared_ptr<const Plan> plan;

@@ -12,11 +12,13 @@
 #include "ui/section_bar.h"
 #include "ui/step_panel.h"
 #include "ui/step_table.h"
+#include "ui/two_path_views.h"
 #include "ui/unit_form.h"
 #include "ui/unit_list_panel.h"
 #include "ui/verification_panel.h"
 
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <memory>
@@ -31,6 +33,7 @@ void StationWindow::wire()
     wirePlanRunner();
     wireStepsAndTape();
     wirePreview();
+    wireTwoPath();
 }
 
 // The document, the palette, the unit list and each module's form: an edit
@@ -223,6 +226,27 @@ void StationWindow::wirePreview()
     connect(preview_, &PreviewWidget::moveClicked, preview_, &PreviewWidget::highlightMove);
     connect(section_, &SectionBar::sectionChanged, preview_, &PreviewWidget::setSection);
     connect(verify_, &VerificationPanel::colourMapChanged, preview_, &PreviewWidget::setDeviationMap);
+}
+
+// A two-path job's views: a step or block chosen in the steps by path or
+// the chart reaches the step list, the tapes and the 3-D view; the block
+// played, or a roughing line chosen in either tape, reaches them back.
+void StationWindow::wireTwoPath()
+{
+    connect(twoPath_->steps(), &TwoPathSteps::stepChosen, steps_, &StepPanel::selectStep);
+    connect(twoPath_, &TwoPathViews::blockChosen, this, [this](int step, int move, int path) {
+        steps_->selectStep(step);
+        tapes_->setCurrentIndex(path > 0 ? 1 : 0);
+        if (path == 0) nc_->selectMove(step, move);
+        if (preview_) preview_->highlightMove(step, move);
+    });
+    connect(steps_, &StepPanel::playheadMoved, twoPath_, &TwoPathViews::followMove);
+    connect(nc_, &NcView::moveSelected, twoPath_, &TwoPathViews::followMove);
+    connect(twoPath_->tape(), &NcView::moveSelected, twoPath_, &TwoPathViews::followMove);
+    if (preview_) {
+        connect(twoPath_->tape(), &NcView::moveSelected, preview_, &PreviewWidget::highlightMove);
+        connect(preview_, &PreviewWidget::moveClicked, twoPath_, &TwoPathViews::followMove);
+    }
 }
 
 }  // namespace taiwa::ui

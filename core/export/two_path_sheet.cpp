@@ -17,38 +17,36 @@ namespace {
 
 constexpr double kSame = 1e-9;  // [s] two times this close are one
 
-// What a path does over [from, to): its label.
-struct Stretch {
-    double from = 0.0, to = 0.0;
-    std::string what;
-};
+}  // namespace
 
-std::vector<Stretch> stretches(const Timeline& t, std::size_t path)
+std::vector<TimelineStretch> timelineStretches(const Timeline& t, std::size_t path)
 {
     std::vector<const TimelineBlock*> blocks;
     for (const auto& b : t.blocks)
         if (b.path == path) blocks.push_back(&b);
     std::sort(blocks.begin(), blocks.end(), [](const auto* a, const auto* b) { return a->start < b->start; });
-    std::vector<Stretch> out;
-    const auto add = [&](double from, double to, std::string what) {
-        if (to > from + kSame || what.front() == 'M') out.push_back({from, to, std::move(what)});
+    std::vector<TimelineStretch> out;
+    const auto add = [&](TimelineStretch s) {
+        if (s.to > s.from + kSame || s.kind == TimelineStretch::Wait) out.push_back(std::move(s));
     };
+    using S = TimelineStretch;
     for (const TimelineBlock* b : blocks) {
+        const int n = b->number;
         const double in = b->wait ? b->waitTo : b->start;
         if (b->wait) {
-            add(b->start, b->waitFrom, fmt::format("CB{} in", b->number));
-            add(b->waitFrom, b->waitTo, fmt::format("M{} wait", *b->wait));
+            add({b->start, b->waitFrom, S::In, n, 0, 0.0, fmt::format("CB{} in", n)});
+            add({b->waitFrom, b->waitTo, S::Wait, n, *b->wait, 0.0, fmt::format("M{} wait", *b->wait)});
         }
-        add(in, b->cutStart, b->dwell > 0 ? fmt::format("CB{} in, dwell {:.3f} s", b->number, b->dwell) : fmt::format("CB{} in", b->number));
-        add(b->cutStart, b->cutEnd, fmt::format("CB{} cut", b->number));
-        add(b->cutEnd, b->end, fmt::format("CB{} out", b->number));
+        add({in, b->cutStart, S::In, n, 0, b->dwell,
+             b->dwell > 0 ? fmt::format("CB{} in, dwell {:.3f} s", n, b->dwell) : fmt::format("CB{} in", n)});
+        add({b->cutStart, b->cutEnd, S::Cut, n, 0, 0.0, fmt::format("CB{} cut", n)});
+        add({b->cutEnd, b->end, S::Out, n, 0, 0.0, fmt::format("CB{} out", n)});
     }
     const double last = blocks.empty() ? 0.0 : blocks.back()->end;
-    if (path < t.pathEnd.size()) add(last, t.pathEnd[path], "tail, end wait");
+    if (path < t.pathEnd.size()) add({last, t.pathEnd[path], S::Tail, 0, 0, 0.0, "tail, end wait"});
     return out;
 }
 
-}  // namespace
 
 sheet::Table timelineTable(const Timeline& t, std::size_t paths)
 {
@@ -61,10 +59,10 @@ sheet::Table timelineTable(const Timeline& t, std::size_t paths)
         table.numeric.push_back(false);
         table.widths.push_back(3.0);
     }
-    std::vector<std::vector<Stretch>> of;
+    std::vector<std::vector<TimelineStretch>> of;
     std::vector<double> times;
     for (std::size_t p = 0; p < paths; ++p) {
-        of.push_back(stretches(t, p));
+        of.push_back(timelineStretches(t, p));
         for (const auto& s : of.back()) times.insert(times.end(), {s.from, s.to});
     }
     std::sort(times.begin(), times.end());
@@ -85,7 +83,7 @@ sheet::Table timelineTable(const Timeline& t, std::size_t paths)
         bool any = false;
         for (std::size_t p = 0; p < paths; ++p)
             for (const auto& s : of[p])
-                if (s.what.front() == 'M' && s.to - s.from <= kSame && std::abs(s.from - times[k]) <= kSame) met[p] = s.what, any = true;
+                if (s.kind == TimelineStretch::Wait && s.to - s.from <= kSame && std::abs(s.from - times[k]) <= kSame) met[p] = s.what, any = true;
         if (any) table.rows.push_back([&] {
             std::vector<std::string> r{fmt::format("{:.2f}", times[k]), fmt::format("{:.2f}", times[k])};
             for (auto& m : met) r.push_back(m.empty() ? "" : m.substr(0, m.find(' ')) + " met");
@@ -102,24 +100,36 @@ sheet::Table timelineTable(const Timeline& t, std::size_t paths)
     return table;
 }
 
-std::vector<sheet::Section> twoPathSheet(const Plan& plan)
+std::optional<BalancedRoughing> balancedRoughing(const Plan& plan)
 {
     const Machine* machine = findMachine(plan.mmJob.machine);
-    if (!plan.mmJob.bar || !machine || !machine->layout.multiPath) return {};
-    const MultiPath& mp = *machine->layout.multiPath;
+    if (!plan.mmJob.bar || !machine || !machine->layout.multiPath) return std::nullopt;
+    BalancedRoughing out;
+    out.step = plan.steps.size();
+    for (std::size_t k = 0; k < plan.steps.size() && out.step == plan.steps.size(); ++k)
+        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) out.step = k;
+    if (out.step == plan.steps.size()) return out;
+    const TurnStep& rough = *turnOf(plan.steps[out.step]);
+    out.cut = turning::balanceRoughing(rough.path, rough.cutting, *machine, turning::balanceSettings(plan.mmJob.twoPath, true));
+    if (!*out.cut) return out;
+    out.timeline = runTimeline(**out.cut, *machine);
+    out.onePathSeconds = singlePathSeconds(rough.path, rough.cutting, *machine);
+    return out;
+}
+
+std::vector<sheet::Section> twoPathSheet(const Plan& plan)
+{
+    const std::optional<BalancedRoughing> balanced = balancedRoughing(plan);
+    if (!balanced) return {};
+    const MultiPath& mp = *findMachine(plan.mmJob.machine)->layout.multiPath;
     std::vector<sheet::Section> out;
     sheet::Section paths;
     paths.heading = "Paths";
     paths.table.headers = {"No.", "Step", "Path"};
     paths.table.numeric = {true, false, false};
     paths.table.widths = {1, 4, 12};
-    std::size_t rough = plan.steps.size();
-    for (std::size_t k = 0; k < plan.steps.size() && rough == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) rough = k;
-    std::optional<Result<BalancedCut>> cut;
-    if (rough < plan.steps.size())
-        cut = turning::balanceRoughing(turnOf(plan.steps[rough])->path, turnOf(plan.steps[rough])->cutting, *machine,
-                                       turning::balanceSettings(plan.mmJob.twoPath, true));
+    const std::size_t rough = balanced->step;
+    const auto& cut = balanced->cut;
     for (std::size_t k = 0; k < plan.steps.size(); ++k) {
         std::string where = fmt::format("1 ({})", mp.paths[0].name);
         if (k == rough && cut && *cut) {
@@ -137,14 +147,14 @@ std::vector<sheet::Section> twoPathSheet(const Plan& plan)
     if (rough == plan.steps.size()) paths.note = "No roughing step to balance between the paths: nothing is exported.";
     else if (!*cut) paths.note = "The roughing does not balance (" + cut->error() + "): nothing is exported.";
     out.push_back(std::move(paths));
-    if (!cut || !*cut) return out;
+    if (!balanced->timeline) return out;
 
-    const Timeline t = runTimeline(**cut, *machine);
+    const Timeline& t = *balanced->timeline;
     sheet::Section gantt;
     gantt.heading = "Balanced roughing on the timeline";
     gantt.table = timelineTable(t, (**cut).paths.size());
     for (std::size_t p = 0; p < mp.paths.size(); ++p) gantt.table.headers[2 + p] += " " + mp.paths[p].name;
-    const double one = singlePathSeconds(turnOf(plan.steps[rough])->path, turnOf(plan.steps[rough])->cutting, *machine);
+    const double one = balanced->onePathSeconds;
     std::string deadlocks;
     for (const auto& d : t.deadlocks) deadlocks += (deadlocks.empty() ? "" : "; ") + d.why;
     gantt.note = fmt::format("Roughing on {} paths {:.2f} s against {:.2f} s on one (ratio {:.3f}); the follower at least {:.2f} "

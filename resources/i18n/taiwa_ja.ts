@@ -918,6 +918,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>図形</translation>
         </message>
         <message>
+            <source>Steps</source>
+            <translation>工程</translation>
+        </message>
+        <message>
+            <source>Steps by path</source>
+            <translation>系統別工程</translation>
+        </message>
+        <message>
+            <source>Path 1</source>
+            <translation>系統 1</translation>
+        </message>
+        <message>
+            <source>Path 2</source>
+            <translation>系統 2</translation>
+        </message>
+        <message>
             <source>&amp;File</source>
             <translation>ファイル(&amp;F)</translation>
         </message>
@@ -1585,6 +1601,99 @@ Theirs: %6</source>
         <message>
             <source>T%1 not changed</source>
             <translation>T%1 は変更されませんでした</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathChart</name>
+        <message>
+            <source>CB%1 in, dwell %2 s</source>
+            <translation>CB%1 進入、ドウェル %2 秒</translation>
+        </message>
+        <message>
+            <source>CB%1 in</source>
+            <translation>CB%1 進入</translation>
+        </message>
+        <message>
+            <source>CB%1 cut</source>
+            <translation>CB%1 切削</translation>
+        </message>
+        <message>
+            <source>CB%1 out</source>
+            <translation>CB%1 退避</translation>
+        </message>
+        <message>
+            <source>M%1 wait</source>
+            <translation>M%1 待ち</translation>
+        </message>
+        <message>
+            <source>M%1 met</source>
+            <translation>M%1 同期</translation>
+        </message>
+        <message>
+            <source>back to the safe point, end wait</source>
+            <translation>安全点へ戻り、終了待ち</translation>
+        </message>
+        <message>
+            <source>No balanced roughing on the timeline</source>
+            <translation>タイムライン上にバランス荒加工なし</translation>
+        </message>
+        <message>
+            <source>Path %1 (%2)</source>
+            <translation>系統 %1（%2）</translation>
+        </message>
+        <message>
+            <source>%1 s on %2 paths</source>
+            <translation>%2 系統で %1 秒</translation>
+        </message>
+        <message>
+            <source>Path %1: %2, %3–%4 s</source>
+            <translation>系統 %1: %2、%3–%4 秒</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathSteps</name>
+        <message>
+            <source>Path, step</source>
+            <translation>系統・工程</translation>
+        </message>
+        <message>
+            <source>Tool</source>
+            <translation>工具</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>時間</translation>
+        </message>
+        <message>
+            <source>Path %1 (%2): turret with %3</source>
+            <translation>系統 %1（%2）: タレットに %3</translation>
+        </message>
+        <message>
+            <source>no tool</source>
+            <translation>工具なし</translation>
+        </message>
+        <message>
+            <source>%1, balanced: %2</source>
+            <translation>%1、バランス: %2</translation>
+        </message>
+        <message>
+            <source>CB%1: cut %2–%3 s</source>
+            <translation>CB%1: 切削 %2–%3 秒</translation>
+        </message>
+        <message>
+            <source>wait M%1</source>
+            <translation>待ち M%1</translation>
+        </message>
+        <message>
+            <source>dwell %1 s</source>
+            <translation>ドウェル %1 秒</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathViews</name>
+        <message>
+            <source>No roughing step to balance between the paths: path 2 has no program.</source>
+            <translation>系統間でバランスさせる荒加工工程がありません: 系統 2 のプログラムはありません。</translation>
         </message>
     </context>
     <context>

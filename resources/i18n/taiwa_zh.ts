@@ -918,6 +918,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>图形</translation>
         </message>
         <message>
+            <source>Steps</source>
+            <translation>工步</translation>
+        </message>
+        <message>
+            <source>Steps by path</source>
+            <translation>按系统的工步</translation>
+        </message>
+        <message>
+            <source>Path 1</source>
+            <translation>系统 1</translation>
+        </message>
+        <message>
+            <source>Path 2</source>
+            <translation>系统 2</translation>
+        </message>
+        <message>
             <source>&amp;File</source>
             <translation>文件(&amp;F)</translation>
         </message>
@@ -1585,6 +1601,99 @@ Theirs: %6</source>
         <message>
             <source>T%1 not changed</source>
             <translation>T%1 未更改</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathChart</name>
+        <message>
+            <source>CB%1 in, dwell %2 s</source>
+            <translation>CB%1 进入，暂停 %2 秒</translation>
+        </message>
+        <message>
+            <source>CB%1 in</source>
+            <translation>CB%1 进入</translation>
+        </message>
+        <message>
+            <source>CB%1 cut</source>
+            <translation>CB%1 切削</translation>
+        </message>
+        <message>
+            <source>CB%1 out</source>
+            <translation>CB%1 退出</translation>
+        </message>
+        <message>
+            <source>M%1 wait</source>
+            <translation>M%1 等待</translation>
+        </message>
+        <message>
+            <source>M%1 met</source>
+            <translation>M%1 会合</translation>
+        </message>
+        <message>
+            <source>back to the safe point, end wait</source>
+            <translation>回到安全点，结束等待</translation>
+        </message>
+        <message>
+            <source>No balanced roughing on the timeline</source>
+            <translation>时间线上没有平衡粗车</translation>
+        </message>
+        <message>
+            <source>Path %1 (%2)</source>
+            <translation>系统 %1（%2）</translation>
+        </message>
+        <message>
+            <source>%1 s on %2 paths</source>
+            <translation>%2 个系统共 %1 秒</translation>
+        </message>
+        <message>
+            <source>Path %1: %2, %3–%4 s</source>
+            <translation>系统 %1：%2，%3–%4 秒</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathSteps</name>
+        <message>
+            <source>Path, step</source>
+            <translation>系统、工步</translation>
+        </message>
+        <message>
+            <source>Tool</source>
+            <translation>刀具</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>时间</translation>
+        </message>
+        <message>
+            <source>Path %1 (%2): turret with %3</source>
+            <translation>系统 %1（%2）：刀塔上 %3</translation>
+        </message>
+        <message>
+            <source>no tool</source>
+            <translation>无刀具</translation>
+        </message>
+        <message>
+            <source>%1, balanced: %2</source>
+            <translation>%1，平衡：%2</translation>
+        </message>
+        <message>
+            <source>CB%1: cut %2–%3 s</source>
+            <translation>CB%1：切削 %2–%3 秒</translation>
+        </message>
+        <message>
+            <source>wait M%1</source>
+            <translation>等待 M%1</translation>
+        </message>
+        <message>
+            <source>dwell %1 s</source>
+            <translation>暂停 %1 秒</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::TwoPathViews</name>
+        <message>
+            <source>No roughing step to balance between the paths: path 2 has no program.</source>
+            <translation>没有可在系统间平衡的粗车工步：系统 2 没有程序。</translation>
         </message>
     </context>
     <context>
