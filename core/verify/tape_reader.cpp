@@ -269,9 +269,12 @@ private:
                 ended_ = true;
             } else if (mf == 29 && !sinumerik_) {
                 if (!b.has('S')) refuse("M29 (rigid tapping) needs the speed in S");
-            } else if (mf != 3 && mf != 4 && mf != 5 && mf != 8 && mf != 9) {
-                refuse("M" + std::to_string(mf) + " is not understood");
+            } else if (mf == 97 || mf == 98 || mf == 99 || mf == 198) {
+                // A subprogram runs motion the tape does not hold: it cannot be judged.
+                refuse("M" + std::to_string(mf) + " calls or leaves a subprogram, whose motion is not on the tape");
             }
+            // Any other M word (M7 mist, M0/M1 stops, a shop's M51 through-spindle
+            // coolant) is a switch of the machine's, no motion: taken as it is.
         }
         if (b.has('D')) {
             // D0 takes the tool's offsets off (SINUMERIK); D1 puts them on.

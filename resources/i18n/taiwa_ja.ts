@@ -5134,6 +5134,18 @@ Theirs: %6</source>
             <translation>残すべき量より最大 {} 高く削り残しがあります。最も高いのは {}、面積 {} mm²</translation>
         </message>
         <message>
+            <source>the tape has a {} the plan does not, to {}, {} into stock</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the tape has a {} the plan does not, to {}</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the tape cannot be read back, so it is not verified from here on: {}</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
             <source>{}: {}, move {}, tape line {}</source>
             <translation>{}: {}、移動 {}、テープ {} 行目</translation>
         </message>

@@ -5134,6 +5134,18 @@ Theirs: %6</source>
             <translation>残留材料比应留量最多高 {}，最高处在 {}，面积 {} mm²</translation>
         </message>
         <message>
+            <source>the tape has a {} the plan does not, to {}, {} into stock</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the tape has a {} the plan does not, to {}</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the tape cannot be read back, so it is not verified from here on: {}</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
             <source>{}: {}, move {}, tape line {}</source>
             <translation>{}：{}，移动 {}，程序第 {} 行</translation>
         </message>
