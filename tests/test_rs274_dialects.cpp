@@ -357,7 +357,7 @@ private slots:
         row("haas G18", "haas", "N190 G0 Z10.", "N190 G18 G0 Z10.", "G18 is not understood");
         row("haas wrong H", "haas", "G43 H1 Z5.", "G43 H2 Z5.", "G43 H2 with T1");
         row("haas Z before G43", "haas", "N70 G43 H1 Z5.", "N70 Z5.", "length offset");
-        row("haas M0", "haas", "N200 M5", "N200 M0", "M0 is not understood");
+        row("haas M99", "haas", "N200 M5", "N200 M99", "M99 calls or leaves a subprogram, whose motion is not on the tape");
         row("sinumerik unknown word", "sinumerik",
             "N140 G1 X20 F150", "N140 G1 X20 F150 TRANS", "'TRANS' is not understood");
         row("haas Q without G83", "haas", "G98 G81 X30. Y30. Z-4. R1. F80.", "G98 G81 X30. Y30. Z-4. R1. Q2. F80.",
@@ -395,6 +395,22 @@ private slots:
         row("klartext CP against DR", "heidenhain",
             "9 CP IPA+90 IZ-1 DR+", "9 CP IPA+90 IZ-1 DR-", "IPA and DR turn opposite ways");
     }
+    // An M word that switches the machine (a program stop, mist coolant, a
+    // shop's own) moves nothing: read as no motion, the moves unchanged.
+    void aMachineSwitchIsNoMotion()
+    {
+        const std::string text = handTape("haas");
+        for (const char* word : {"N200 M0", "N200 M7", "N200 M51"}) {
+            std::string t = text;
+            const auto at = t.find("N200 M5");
+            QVERIFY(at != std::string::npos);
+            t.replace(at, 7, word);
+            const DialectMoves tape = readTape("haas", t);
+            QVERIFY2(tape.error.empty(), tape.error.c_str());
+            QCOMPARE(tape.moves.size(), readTape("haas", text).moves.size());
+        }
+    }
+
     void readersRefuseWhatTheyDoNotKnow()
     {
         QFETCH(QString, dialect);

@@ -118,6 +118,10 @@ TwoPathViews::TwoPathViews(QObject* parent)
     // Path 2's tape is in the dialect chosen above path 1's.
     tape_->findChild<QComboBox*>("nc.dialect")->hide();
     tape_->findChild<QLabel*>("nc.label")->hide();
+    // Its parts named as path 2's: "nc", "nc.dialect", ... are path 1's
+    // tape (the window's look-ups and the tests find that one).
+    for (QObject* part : tape_->findChildren<QObject*>())
+        if (part->objectName().startsWith("nc")) part->setObjectName("paths.tape." + part->objectName());
     connect(steps_, &TwoPathSteps::blockChosen, this, &TwoPathViews::chooseBlock);
     connect(chart_, &TwoPathChart::blockClicked, this, &TwoPathViews::chooseBlock);
 }

@@ -5135,15 +5135,15 @@ Theirs: %6</source>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}, {} into stock</source>
-            <translation type="unfinished" />
+            <translation>テープに計画にない {0} があります: {1} へ、素材に {2} 入ります</translation>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}</source>
-            <translation type="unfinished" />
+            <translation>テープに計画にない {0} があります: {1} へ</translation>
         </message>
         <message>
             <source>the tape cannot be read back, so it is not verified from here on: {}</source>
-            <translation type="unfinished" />
+            <translation>テープを読み戻せないため、ここから先は検証されていません: {0}</translation>
         </message>
         <message>
             <source>{}: {}, move {}, tape line {}</source>

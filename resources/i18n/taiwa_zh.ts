@@ -5135,15 +5135,15 @@ Theirs: %6</source>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}, {} into stock</source>
-            <translation type="unfinished" />
+            <translation>程序带中有计划中没有的 {0}: 到 {1}，切入毛坯 {2}</translation>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}</source>
-            <translation type="unfinished" />
+            <translation>程序带中有计划中没有的 {0}: 到 {1}</translation>
         </message>
         <message>
             <source>the tape cannot be read back, so it is not verified from here on: {}</source>
-            <translation type="unfinished" />
+            <translation>程序带无法读回，此后的部分未经验证: {0}</translation>
         </message>
         <message>
             <source>{}: {}, move {}, tape line {}</source>
