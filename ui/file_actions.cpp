@@ -94,20 +94,28 @@ bool FileActions::importStep()
     return !path.isEmpty() && importStepPath(path);
 }
 
+bool FileActions::refuseImport(const QString& why)
+{
+    if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
+    else QMessageBox::warning(window_, tr("Cannot import"), why);
+    emit message(why);
+    return false;
+}
+
+void FileActions::takeImported(Job job)
+{
+    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());  // the operator discarded the changes
+    job.dialect = lastChosenDialect().toStdString();
+    doc_->reset(job, {}, true);  // untitled and not on disk yet
+}
+
 bool FileActions::importStepPath(const QString& path)
 {
     auto job = latheJobFromStep(path.toStdString(), "steel-s45c");
-    if (!job) {
-        const QString why = coreMessage(job.error());
-        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
-        else QMessageBox::warning(window_, tr("Cannot import"), why);
-        emit message(why);
-        return false;
-    }
-    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());
-    job->dialect = lastChosenDialect().toStdString();
-    doc_->reset(*job, {}, true);  // untitled and not on disk yet
-    emit message(tr("Imported %1: %n turned profile(s)", "", static_cast<int>(job->units.size())).arg(path));
+    if (!job) return refuseImport(coreMessage(job.error()));
+    const std::size_t units = job->units.size();
+    takeImported(std::move(*job));
+    emit message(tr("Imported %1: %n turned profile(s)", "", static_cast<int>(units)).arg(path));
     return true;
 }
 
@@ -122,16 +130,8 @@ bool FileActions::importSurface()
 bool FileActions::importSurfacePath(const QString& path, double spacing)
 {
     auto imported = surfaceJobFromStep(path.toStdString(), "aluminium-6061", spacing);
-    if (!imported) {
-        const QString why = coreMessage(imported.error());
-        if (promptsDisabled()) qWarning("taiwa: %s", qPrintable(why));
-        else QMessageBox::warning(window_, tr("Cannot import"), why);
-        emit message(why);
-        return false;
-    }
-    if (doc_->isModified()) autosave_->removeRecovery(doc_->path());
-    imported->job.dialect = lastChosenDialect().toStdString();
-    doc_->reset(imported->job, {}, true);  // untitled and not on disk yet
+    if (!imported) return refuseImport(coreMessage(imported.error()));
+    takeImported(imported->job);
     emit message(tr("Imported %1 as a surface: moved %2 mm in Z to put its top at Z 0; the paths stay within %3 µm of its faces")
                      .arg(path)
                      .arg(-imported->lowered, 0, 'g', 6)

@@ -4,6 +4,8 @@
 // ui/export_dialog.h).
 #pragma once
 
+#include "model/job.h"
+
 #include <QObject>
 #include <QStringList>
 
@@ -70,6 +72,11 @@ signals:
 
 private:
     void addRecent(const QString& path);
+    // An import refused: said (a box, or a warning when prompts are off) and
+    // on the status line; false.
+    bool refuseImport(const QString& why);
+    // An imported job as the window's, untitled, in the dialect last chosen.
+    void takeImported(Job job);
     JobDocument* doc_;
     Autosaver* autosave_;
     PlanRunner* runner_;
