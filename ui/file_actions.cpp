@@ -11,6 +11,7 @@
 #include "export/export.h"
 #include "export/sheet_pictures.h"
 #include "export/verification_cache.h"
+#include "verify/tape_readback.h"
 #include "verify/verify.h"
 #include "post/post.h"
 #include "ui/autosave.h"
@@ -230,13 +231,26 @@ bool FileActions::exportTo(const ExportChoice& c)
     }
     // Verified first, as `taiwa export` does: a fault is written only when the operator says so.
     std::vector<std::string> faults;
+    std::optional<PostedProgram> tape;
+    const PostOptions post = postOptions(*plan, c.dialect.toStdString(), c.units, ExportOptions{}.programNumber, stem().toStdString());
     try {
         verify::Options v;
         v.resolution = c.resolution;
         // The grid the station would choose is bounded as `taiwa export`'s default is; one typed is kept.
         if (c.resolution == verify::defaultResolution(*plan)) v.maxCellVisits = verify::kDefaultCellVisits;
         // The station's Verify (or a `taiwa verify`) of this very plan stored its report: not run again.
-        const verify::Report report = verifyPlanCached(*plan, v);
+        verify::Report report = verifyPlanCached(*plan, v);
+        // The milling tape posted once and read back (verify/tape_readback.h),
+        // as `taiwa export` does; the export writes that very tape.
+        if (!plan->mmJob.bar) {
+            try {
+                const PostedProgram& posted = tape.emplace(postProcess(plan->steps, plan->tools, post));
+                verify::placeOnTape(report, posted);
+                verify::readBack(report, *plan, posted, post::dialectNamed(post.dialect), post);
+            } catch (const Refusal&) {
+                tape.reset();  // a dialect that cannot post this job: the export says so
+            }
+        }
         for (const auto& f : report.findings)
             if (f.fatal()) faults.push_back(verify::describe(f, *plan));
     } catch (const Refusal& e) {
@@ -262,6 +276,7 @@ bool FileActions::exportTo(const ExportChoice& c)
     eo.jobFile = doc_->path().isEmpty() && !store_->storedName().isEmpty() ? stem().toStdString() + ".taiwa"
                                                                            : QFileInfo(doc_->path()).fileName().toStdString();
     eo.verificationFaults = faults;
+    eo.posted = tape ? &*tape : nullptr;
     eo.toolsOrigin = runner_->toolsOrigin();
     // The same drawing as `taiwa export`'s (export/sheet_pictures.h): the same pixels.
     const std::string problem = c.pictures ? addSheetPictures(*plan, eo) : std::string();
