@@ -36,11 +36,11 @@ NcView::NcView(QWidget* parent)
     auto* top = new QHBoxLayout;
     // The label, the dialect and the block count, each whole in every
     // language at 1366 px (test_gui_languages): the translations are short.
-    auto* label = new QLabel(this);
-    label->setObjectName("nc.label");
+    label_ = new QLabel(this);
+    label_->setObjectName("nc.label");
     summary_->setObjectName("nc.blocks");
-    label->setBuddy(dialect_);
-    top->addWidget(label);
+    label_->setBuddy(dialect_);
+    top->addWidget(label_);
     nameParts();
     top->addWidget(dialect_);
     top->addWidget(summary_, 1);
@@ -80,7 +80,7 @@ void NcView::setDialect(const QString& dialect)
 
 void NcView::nameParts()
 {
-    findChild<QLabel*>("nc.label")->setText(tr("&NC program, dialect:"));
+    label_->setText(tr("&NC program, dialect:"));
     if (!lines_.empty()) summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
 }
 

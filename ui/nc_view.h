@@ -79,6 +79,7 @@ private:
     void useRulesOf(const QString& dialect);
     void showText(const QString& text);
     QComboBox* dialect_;
+    QLabel* label_ = nullptr;  // "NC program, dialect:" (its own pointer: path 2's view renames its parts)
     QLabel* summary_;
     QPlainTextEdit* text_;
     NcHighlighter* highlighter_ = nullptr;

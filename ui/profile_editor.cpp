@@ -264,10 +264,8 @@ void ProfileEditor::setContext(std::optional<BarStock> bar, const std::vector<To
 
 void ProfileEditor::setUnit(const ModuleKind& kind, ModuleInput unit)
 {
-    if (kind_ == &kind && unit_ && *unit_ == unit) return;
     kind_ = &kind;
     unit_ = std::move(unit);
-    refreshView();
 }
 
 void ProfileEditor::refreshView()

@@ -46,7 +46,9 @@ public:
     void setContext(std::optional<BarStock> bar, const std::vector<Tool>& library);
     // The unit being edited and its module's door: the deformed profile
     // drawn is the one its plan cuts (ModuleKind::turned: the nose radius of
-    // the finishing insert the plan takes, with the unit's pins).
+    // the finishing insert the plan takes, with the unit's pins). Drawn at
+    // the next setProfile, which the unit form calls right after it: one
+    // deformation per refresh.
     void setUnit(const ModuleKind& kind, ModuleInput unit);
     // Marks the cells the diagnostics name; returns those it does not show.
     Diagnostics showDiagnostics(const Diagnostics& ofThisUnit);

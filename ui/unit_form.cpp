@@ -182,8 +182,8 @@ void UnitForm::setUnit(const MachiningUnit& unit, bool force)
     current_ = unit.module;
     if (profile_)
         if (const turning::TurnedProfile* p = kind_.turnedProfile(unit.module)) {
+            profile_->setUnit(kind_, unit.module);  // first: setProfile draws with it
             profile_->setProfile(*p, force);
-            profile_->setUnit(kind_, unit.module);
         }
     updating_ = true;
     if (name_->text() != QString::fromStdString(unit.name)) name_->setText(QString::fromStdString(unit.name));

@@ -30,7 +30,7 @@ class TableReader {
 public:
     explicit TableReader(const std::string& text) : r_(text, kTable), text_(text) {}
 
-    std::vector<MaterialTechnology> read() const
+    std::vector<MaterialTechnology> read()
     {
         const json& root = r_.root();
         onlyKeys(root, "", {"format", "version", "materials"}, "a technology table");
@@ -55,7 +55,7 @@ public:
 private:
     static constexpr std::size_t kMaxMaterials = 1000;
 
-    MaterialTechnology material(const json& m, std::size_t i) const
+    MaterialTechnology material(const json& m, std::size_t i)
     {
         const std::string at = "materials[" + std::to_string(i) + "]";  // 0-based, as the reader names a key given twice
         if (!m.is_object()) r_.fail(at, "must be an object");
@@ -127,7 +127,7 @@ private:
 
     io::DataReader r_;
     const std::string& text_;
-    mutable std::vector<std::string> seen_;
+    std::vector<std::string> seen_;  // the material ids read so far
 };
 
 }  // namespace

@@ -5,7 +5,6 @@
 // (how deep the tool's tip goes below the stock's top under the tool).
 #include "verify/tape_readback.h"
 
-#include "tools/cutting.h"
 #include "verify/tape_reader.h"
 
 #include <algorithm>
@@ -43,12 +42,12 @@ public:
         for (const Step& s : plan.steps) {
             StepView v;
             if (s.path) v.path = &*s.path;
-            if (s.tool) {
-                if (const Tool* t = plan.tool(s.tool->toolId)) {
-                    v.radius = t->diameter / 2.0;
-                    v.sf = s.speeds ? s.speeds : stepSpeedsFeeds(s, *t, post.material);
-                }
-            }
+            // The speeds and feeds planJob bound to the step (none: the
+            // tool has no cutting data for the material, and neither has
+            // the tape a feed to hold against).
+            v.sf = s.speeds;
+            if (s.tool)
+                if (const Tool* t = plan.tool(s.tool->toolId)) v.radius = t->radius();
             steps_.push_back(v);
         }
     }
