@@ -60,8 +60,11 @@ QString labelFault(const QLabel* l, const QWidget* viewport, bool mustBeInView)
         const int needed = l->heightForWidth(l->width());
         return needed <= l->height() + 1 ? QString() : QStringLiteral("%1: needs %2 high, has %3").arg(what).arg(needed).arg(l->height());
     }
+    // A label with a buddy draws "&N" as an underlined N: what is drawn is measured.
+    QString drawn = l->text();
+    if (l->buddy()) drawn.replace(QStringLiteral("&&"), QStringLiteral("\x01")).remove(QLatin1Char('&')).replace(QLatin1Char('\x01'), QLatin1Char('&'));
     const int needed = l->textFormat() == Qt::PlainText || !Qt::mightBeRichText(l->text())
-                           ? l->fontMetrics().horizontalAdvance(l->text()) + 2 * l->margin() + 2 * l->indent() * 0
+                           ? l->fontMetrics().horizontalAdvance(drawn) + 2 * l->margin() + 2 * l->indent() * 0
                            : l->sizeHint().width();
     return needed <= l->contentsRect().width() ? QString()
                                                : QStringLiteral("%1: needs %2 wide, has %3").arg(what).arg(needed).arg(l->contentsRect().width());
@@ -195,21 +198,13 @@ private slots:
         }
         QCOMPARE(formsSeen, static_cast<int>(moduleKinds().size()));
         faults.removeDuplicates();
-        // Left over (issue 34, item 2, not done yet): the Japanese M4 form is
-        // 6 px wider than a 286-px column, the FACE form 19 px wider than a
-        // 300-px one (its drawing and help line at x 9..309), the AREA
-        // form's error texts 2-6 px shorter than their wrapped height.
-        // They fail as expected until fixed (then XPASS fails: take them out).
-        static const QStringList leftOver{"en 1280", "en 1366", "en 1920", "ja 1280", "ja 1366", "ja 1920", "zh 1280"};
-        if (leftOver.contains(QString::fromLatin1(QTest::currentDataTag())))
-            QEXPECT_FAIL("", qPrintable(faults.join("\n").left(600)), Continue);
         QVERIFY2(faults.isEmpty(), qPrintable(faults.join("\n").left(2000)));
     }
 
     // Item 5: at each screen the step list shows the selected step, its tool,
     // S, F and time whole (item 10: the time column at 1600 px, the window's
-    // own first size, too). (The NC panel's heading is still cut at 1280
-    // and, in Japanese and Chinese, at 1366 px: not done.)
+    // own first size, too), and the NC panel's heading (its label, the
+    // dialect, the block count) is whole beside it.
     void stepListShowsTheStepAtEverySize_data()
     {
         QTest::addColumn<QString>("language");
@@ -238,15 +233,27 @@ private slots:
             const QString head = t->horizontalHeaderItem(c)->text();
             QVERIFY2(!t->isColumnHidden(c), qPrintable(head + " hidden"));
             const int x = t->columnViewportPosition(c), width = t->columnWidth(c);
-            // Left over: at 1280 px in English the time column is cut by ~13 px (the NC panel's heading keeps its width).
-            if (c == StepTable::Time && QString::fromLatin1(QTest::currentDataTag()) == "en 1280")
-                QEXPECT_FAIL("en 1280", "the time column is cut by about 13 px at 1280 px in English", Continue);
             QVERIFY2(x >= 0 && x + width <= t->viewport()->width(),
                      qPrintable(QString("%1 at %2..%3 of %4").arg(head).arg(x).arg(x + width).arg(t->viewport()->width())));
             const QString text = t->item(1, c)->text();
             QVERIFY2(t->fontMetrics().horizontalAdvance(text) <= width,
                      qPrintable(QString("%1: '%2' in %3 px").arg(head, text).arg(width)));
         }
+        auto* tapes = w.findChild<QWidget*>("nc.tapes");
+        QVERIFY(tapes);
+        QStringList faults;
+        for (const char* name : {"nc.label", "nc.blocks"}) {
+            auto* l = tapes->findChild<QLabel*>(name);
+            QVERIFY2(l && !l->text().isEmpty(), name);
+            if (const QString fault = labelFault(l, tapes, true); !fault.isEmpty()) faults << fault;
+        }
+        auto* dialect = tapes->findChild<QComboBox*>("nc.dialect");
+        QVERIFY(dialect);
+        const QRect at(dialect->mapTo(tapes, QPoint(0, 0)), dialect->size());
+        if (at.right() >= tapes->width() || dialect->width() < dialect->minimumSizeHint().width())
+            faults << QStringLiteral("the dialect box at x %1..%2 of %3, %4 wide of %5").arg(at.left()).arg(at.right())
+                          .arg(tapes->width()).arg(dialect->width()).arg(dialect->minimumSizeHint().width());
+        QVERIFY2(faults.isEmpty(), qPrintable(faults.join("\n")));
     }
 
     // Left at 2600 x 1500 on a large screen, the window opens on this one

@@ -137,7 +137,7 @@ private slots:
             {japanese.timeHeading, translated("taiwa::ui::StepTable", "Time")},
             {japanese.stockBox, translated("taiwa::ui::StepPanel", "&Stock")},
             {japanese.allSteps, translated("taiwa::ui::StepPanel", "&All steps")},
-            {japanese.ncLabel, translated("taiwa::ui::NcView", "&NC program, dialect:")},
+            {japanese.ncLabel, translated("taiwa::ui::NcView", "&NC dialect:")},
             {japanese.materialLabel, translated("taiwa::ui::JobProperties", "Material")},
             {japanese.duplicate, translated("taiwa::ui::UnitListPanel", "D&uplicate")},
             {japanese.verifyButton, translated("taiwa::ui::VerificationPanel", "&Verify")},

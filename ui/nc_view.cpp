@@ -33,21 +33,24 @@ NcView::NcView(QWidget* parent)
     text_->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
     highlighter_ = new NcHighlighter(text_);
 
+    // The label and the dialect over the program, the block count under it:
+    // each whole in every language at 1280 px (test_gui_form_fit), where the
+    // step list beside takes what the heading leaves.
     auto* top = new QHBoxLayout;
-    // The label, the dialect and the block count, each whole in every
-    // language at 1366 px (test_gui_languages): the translations are short.
     label_ = new QLabel(this);
     label_->setObjectName("nc.label");
     summary_->setObjectName("nc.blocks");
+    summary_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     label_->setBuddy(dialect_);
     top->addWidget(label_);
     nameParts();
     top->addWidget(dialect_);
-    top->addWidget(summary_, 1);
+    top->addStretch(1);
     auto* box = new QVBoxLayout(this);
     box->setContentsMargins(0, 0, 0, 0);
     box->addLayout(top);
     box->addWidget(text_, 1);
+    box->addWidget(summary_);
 
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::useRulesOf);
     connect(dialect_, &QComboBox::currentTextChanged, this, &NcView::dialectChanged);
@@ -80,7 +83,7 @@ void NcView::setDialect(const QString& dialect)
 
 void NcView::nameParts()
 {
-    label_->setText(tr("&NC program, dialect:"));
+    label_->setText(tr("&NC dialect:"));
     if (!lines_.empty()) summary_->setText(tr("%n block(s)", "", static_cast<int>(lines_.size())));
 }
 

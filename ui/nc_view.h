@@ -1,6 +1,7 @@
 // The NC view: the posted tape in a read-only, highlighted text view with the
-// dialect chooser above it. A click on a line names the (step, move) it came
-// from through PostedProgram::lines; selectMove() does the reverse.
+// dialect chooser above it and the block count under it. A click on a line
+// names the (step, move) it came from through PostedProgram::lines;
+// selectMove() does the reverse.
 #pragma once
 
 #include "post/post.h"
@@ -79,7 +80,7 @@ private:
     void useRulesOf(const QString& dialect);
     void showText(const QString& text);
     QComboBox* dialect_;
-    QLabel* label_ = nullptr;  // "NC program, dialect:" (its own pointer: path 2's view renames its parts)
+    QLabel* label_ = nullptr;  // "NC dialect:" (its own pointer: path 2's view renames its parts)
     QLabel* summary_;
     QPlainTextEdit* text_;
     NcHighlighter* highlighter_ = nullptr;

@@ -33,6 +33,12 @@ const char* const kRed = "background: #ffd0d0;";
 UnitForm::UnitForm(const ModuleKind& kind, QWidget* parent)
     : QWidget(parent), kind_(kind), fields_(fieldsFor(kind)), rows_(fields_.size())
 {
+    // The form takes the width its column gives it and arranges itself to
+    // it (arrange(): labels above the fields when both do not fit beside).
+    // Were its minimum the one of labels beside fields, the scroll area
+    // would hold it wider than the view, and it would scroll sideways
+    // instead of ever learning that it is narrow.
+    setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     auto* outer = new QVBoxLayout(this);
     auto* drawing = new QLabel(this);
     const QString prefix = modulePrefix(kind);
@@ -276,6 +282,7 @@ Diagnostics UnitForm::showDiagnostics(const Diagnostics& all)
         else if (red[i]) setMessage(index, messages[i].isEmpty() ? QStringLiteral("") : messages[i], !error[i]);
         else setMessage(index, QString());
     }
+    layOutNow();
     return unmatched;
 }
 
@@ -328,7 +335,12 @@ void UnitForm::arrange()
 {
     int labels = 0, fields = 0;
     for (const auto& [label, field] : labelled_) {
-        labels = std::max(labels, label->sizeHint().width());
+        // The label's width on one line, whether it wraps now or not: a
+        // wrapped label's size hint is narrower, and measuring that would
+        // put the labels back beside the fields, then above, without end.
+        const QMargins lm = label->contentsMargins();
+        const int oneLine = label->fontMetrics().horizontalAdvance(label->text()) + 2 * label->margin() + lm.left() + lm.right();
+        labels = std::max(labels, oneLine);
         fields = std::max(fields, field->minimumSizeHint().width());
     }
     const QMargins m = layout()->contentsMargins();
@@ -351,6 +363,14 @@ void UnitForm::arrange()
             grid_->addWidget(labelled_[i].second, r, 1);
         }
     }
+}
+
+void UnitForm::layOutNow()
+{
+    for (const Row& r : rows_)
+        if (QLayout* cell = r.message->parentWidget()->layout()) cell->activate();
+    for (QWidget* w = this; w; w = w->parentWidget())
+        if (w->layout()) w->layout()->activate();
 }
 
 void UnitForm::resizeEvent(QResizeEvent* event)

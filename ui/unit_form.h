@@ -97,6 +97,11 @@ private:
     void addRow(const QString& text, QWidget* field, QWidget* buddy);
     // Labels beside the fields, or above them when both do not fit.
     void arrange();
+    // Lays the form out at once (after its messages changed), each level of
+    // layouts up to the window, not one level per turn of the event loop:
+    // the scroll area learns the form's new height before anything is
+    // painted, and no wrapped error text is squeezed meanwhile.
+    void layOutNow();
     QGridLayout* grid_ = nullptr;
     std::vector<std::pair<QLabel*, QWidget*>> labelled_;
     bool labelsAbove_ = false;

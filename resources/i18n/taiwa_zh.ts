@@ -483,7 +483,7 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
     <context>
         <name>taiwa::ui::NcView</name>
         <message>
-            <source>&amp;NC program, dialect:</source>
+            <source>&amp;NC dialect:</source>
             <translation>数控系统(&amp;N):</translation>
         </message>
         <message numerus="yes">
