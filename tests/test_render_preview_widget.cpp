@@ -209,7 +209,8 @@ private slots:
 
     // The window system delivers the mouse to the GL window, not to the
     // widget: a click there picks the same move and takes the keyboard focus
-    // to the widget, a drag there turns the camera, the wheel zooms.
+    // to the widget, a drag there turns the camera, the wheel zooms about
+    // the pointer.
     void eventsOnTheGlWindowReachTheView()
     {
         QWidget host;
@@ -249,10 +250,15 @@ private slots:
         // The zoom: the view's height in mm (parallel projection) or the distance.
         const auto zoom = [cam] { return cam->GetParallelProjection() ? cam->GetParallelScale() : cam->GetDistance(); };
         const double distance = zoom();
-        QWheelEvent wheel(QPointF(from), gl->mapToGlobal(QPointF(from)), {}, QPoint(0, 120), Qt::NoButton, {},
-                          Qt::NoScrollPhase, false);
+        // About the pointer (issue 34, item 7): the stock's corner under it stays under it.
+        const auto corner = w->scene().toPixel({0, 0, 0}, kW, kH);
+        const QPointF pointer(corner[0], corner[1]);
+        QWheelEvent wheel(pointer, gl->mapToGlobal(pointer), {}, QPoint(0, 120), Qt::NoButton, {}, Qt::NoScrollPhase, false);
         QCoreApplication::sendEvent(gl, &wheel);
-        QVERIFY2(zoom() < distance * 0.99, qPrintable(QString("%1 then %2").arg(distance).arg(zoom())));
+        QVERIFY2(std::abs(zoom() - distance / 1.2) < 1e-9 * distance, qPrintable(QString("%1 then %2").arg(distance).arg(zoom())));
+        const auto still = w->scene().toPixel({0, 0, 0}, kW, kH);
+        QVERIFY2(std::hypot(still[0] - corner[0], still[1] - corner[1]) < 1e-6,
+                 qPrintable(QString("(%1, %2) then (%3, %4)").arg(corner[0]).arg(corner[1]).arg(still[0]).arg(still[1])));
     }
 };
 

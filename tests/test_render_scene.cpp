@@ -6,7 +6,9 @@
 // before; the stock surface is closed and merged; picking finds the move
 // under a pixel; no display is an error message. The same scene inside the
 // Qt widget: test_render_preview_widget. A section plane shows the face it
-// cuts; the verification's colour map shows gouges and what is at size. Needs an X display (xvfb-run -a).
+// cuts; the verification's colour map shows gouges and what is at size.
+// The wheel zooms about the pointer, "Zoom to step" frames the selected
+// step, the paths switch hides every path. Needs an X display (xvfb-run -a).
 #include "job/job_file.h"
 #include "sim/stock_simulation.h"
 #include "support/hand_plan.h"
@@ -279,6 +281,87 @@ private slots:
         const auto rapid = s.toPixel({82.5, 55, 5}, kW, kH);
         QCOMPARE(s.pickMove(rapid[0], rapid[1], kW, kH), (MoveRef{kRoughing, kRapidMove}));
         QVERIFY(!s.pickMove(5, 5, kW, kH));
+    }
+
+    // The wheel zooms about the pointer (issue 34, item 7): the point under
+    // it stays under it, every other point moves away from it by the
+    // factor (parallel projection: exactly), and zooming about another
+    // pixel gives another view.
+    void zoomAboutThePointer()
+    {
+        for (const ViewPreset view : {ViewPreset::Top, ViewPreset::Iso, ViewPreset::Front}) {
+            Scene s;
+            s.setPlan(std::make_shared<const Plan>(plan_));
+            s.setView(view, static_cast<double>(kW) / kH);
+            const Point3 corner{0, 0, 0}, other{60, 45, -5};
+            const auto at = s.toPixel(corner, kW, kH), q = s.toPixel(other, kW, kH);
+            s.zoomAt(at[0], at[1], kW, kH, 1.5);
+            const auto atAfter = s.toPixel(corner, kW, kH), qAfter = s.toPixel(other, kW, kH);
+            QVERIFY2(std::hypot(atAfter[0] - at[0], atAfter[1] - at[1]) < 1e-6,
+                     qPrintable(QString("(%1, %2) moved to (%3, %4)").arg(at[0]).arg(at[1]).arg(atAfter[0]).arg(atAfter[1])));
+            const double before = std::hypot(q[0] - at[0], q[1] - at[1]), after = std::hypot(qAfter[0] - atAfter[0], qAfter[1] - atAfter[1]);
+            QVERIFY(before > 20);
+            QVERIFY2(std::abs(after / before - 1.5) < 1e-9, qPrintable(QString::number(after / before, 'g', 12)));
+            // Back out by the inverse: where it was.
+            s.zoomAt(at[0], at[1], kW, kH, 1 / 1.5);
+            const auto qBack = s.toPixel(other, kW, kH);
+            QVERIFY(std::hypot(qBack[0] - q[0], qBack[1] - q[1]) < 1e-6);
+            // About the middle instead: the corner moves (the old wheel's zoom).
+            s.zoomAt(kW / 2.0, kH / 2.0, kW, kH, 1.5);
+            const auto moved = s.toPixel(corner, kW, kH);
+            QVERIFY(std::hypot(moved[0] - at[0], moved[1] - at[1]) > 5);
+        }
+    }
+
+    // "Zoom to step": the camera frames the selected step's path, the view
+    // turned as it was; with no step selected, the whole scene.
+    void framingTheSelectedStep()
+    {
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan_));
+        s.setView(ViewPreset::Top, static_cast<double>(kW) / kH);
+        // The drill's path: a hole at (40, 40), small in the whole view.
+        const auto spanOf = [&](double r) {
+            const auto a = s.toPixel({40 - r, 40 - r, 0}, kW, kH), b = s.toPixel({40 + r, 40 + r, 0}, kW, kH);
+            return std::max(std::abs(b[0] - a[0]), std::abs(b[1] - a[1]));
+        };
+        const double wholeView = spanOf(5);
+        s.setSelectedStep(0);
+        s.frameSelectedStep(static_cast<double>(kW) / kH);
+        const auto centre = s.toPixel({40, 40, 0}, kW, kH);
+        QVERIFY2(std::abs(centre[0] - kW / 2.0) < kW / 10.0 && std::abs(centre[1] - kH / 2.0) < kH / 10.0,
+                 qPrintable(QString("(%1, %2)").arg(centre[0]).arg(centre[1])));
+        QVERIFY2(spanOf(5) > 3 * wholeView, qPrintable(QString("%1 px, %2 px before").arg(spanOf(5)).arg(wholeView)));
+        // Looking down still.
+        const auto east = s.toPixel({50, 40, 0}, kW, kH);
+        QVERIFY(east[0] > centre[0] && std::abs(east[1] - centre[1]) < 1e-6);
+        // Nothing selected: the stock whole in view again.
+        s.setSelectedStep(-1);
+        s.frameSelectedStep(static_cast<double>(kW) / kH);
+        const Stock& stock = plan_.mmJob.stock;
+        for (const Point3 c : {Point3{stock.x, stock.y, 0}, Point3{stock.x + stock.width, stock.y + stock.length, 0}}) {
+            const auto px = s.toPixel(c, kW, kH);
+            QVERIFY(px[0] >= 0 && px[0] <= kW && px[1] >= 0 && px[1] <= kH);
+        }
+    }
+
+    // The paths switched off: no path segment drawn, with or without a
+    // step selected; on again, as before.
+    void pathsSwitchedOff()
+    {
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan_));
+        const std::size_t all = s.drawnPathSegments();
+        QVERIFY(all > 0);
+        s.setPathsShown(false);
+        QCOMPARE(s.drawnPathSegments(), std::size_t{0});
+        s.setSelectedStep(kRoughing);
+        s.highlightMove(kRoughing, kSlotMove);
+        QCOMPARE(s.drawnPathSegments(), std::size_t{0});
+        s.setPathsShown(true);
+        QVERIFY(s.drawnPathSegments() > 0);
+        s.setSelectedStep(-1);
+        QCOMPARE(s.drawnPathSegments(), all);
     }
 
     // Merged, the steps have no geometry of their own until one is selected

@@ -24,7 +24,9 @@
 #include "viz/palette.h"
 #include "viz/scene.h"
 
+#include <QAction>
 #include <QCheckBox>
+#include <QToolButton>
 #include <QComboBox>
 #include <QSlider>
 #include <QPlainTextEdit>
@@ -171,6 +173,47 @@ private slots:
         QVERIFY(!before->isEnabled());
         stock->click();
         QVERIFY(before->isEnabled());
+    }
+
+    // Issue 34, item 7: the View menu's "Tool paths" and the box under the
+    // step list are one switch; off, the view draws no path (the picture
+    // changes where the paths were), on again, the same picture as before.
+    // "Zoom to step" frames the selected step: its path fills more of the
+    // view than in the whole view.
+    void pathsSwitchAndZoomToStep()
+    {
+        auto* box = w_->findChild<QCheckBox*>("view.paths");
+        auto* menu = w_->findChild<QAction*>("menu.view.paths");
+        QVERIFY(box && menu);
+        QVERIFY(box->isChecked() && menu->isChecked());
+        w_->stepPanel()->selectStep(-1);
+        const QImage with = frame();
+        menu->trigger();
+        QVERIFY(!box->isChecked());
+        QVERIFY(!preview()->scene().pathsShown());
+        QCOMPARE(preview()->scene().drawnPathSegments(), std::size_t{0});
+        const QImage without = frame();
+        QVERIFY2(differingPixels(with, without) > 500, qPrintable(QString::number(differingPixels(with, without))));
+        box->click();
+        QVERIFY(menu->isChecked() && preview()->scene().pathsShown());
+        QCOMPARE(differingPixels(with, frame()), 0);
+
+        const int k = firstStepOf(StepKind::PilotHole);
+        w_->stepPanel()->selectStep(k);
+        const Step& step = w_->planRunner()->fullPlan()->steps[static_cast<std::size_t>(k)];
+        const Point3 a = step.path->start, b{a.x + 5, a.y, a.z};
+        const auto span = [&] {
+            const auto pa = preview()->scene().toPixel(a, preview()->width(), preview()->height());
+            const auto pb = preview()->scene().toPixel(b, preview()->width(), preview()->height());
+            return std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
+        };
+        const double whole = span();
+        auto* zoom = w_->findChild<QToolButton*>("view.step");
+        QVERIFY(zoom);
+        zoom->click();
+        QVERIFY2(span() > 2 * whole, qPrintable(QString("5 mm: %1 px, %2 px before").arg(span()).arg(whole)));
+        preview()->setView(viz::ViewPreset::Iso);
+        w_->stepPanel()->selectStep(-1);
     }
 
     // The section bar under the view: off at first; across X it cuts the

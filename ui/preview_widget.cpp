@@ -125,6 +125,18 @@ void PreviewWidget::setShowStock(bool show)
     requestFrame();
 }
 
+void PreviewWidget::setPathsShown(bool shown)
+{
+    scene_.setPathsShown(shown);
+    requestFrame();
+}
+
+void PreviewWidget::frameSelectedStep()
+{
+    scene_.frameSelectedStep(static_cast<double>(width()) / std::max(height(), 1));
+    requestFrame();
+}
+
 void PreviewWidget::setStockBefore(bool before)
 {
     scene_.setStockBefore(before);
@@ -228,13 +240,16 @@ void PreviewWidget::mouseReleaseEvent(QMouseEvent* e)
     }
 }
 
+// The wheel zooms about the pointer (VTK's own wheel zooms about the
+// view's middle): 1.2 times a notch, a touchpad's finer steps in proportion.
 void PreviewWidget::wheelEvent(QWheelEvent* e)
 {
-    const double dpr = gl_->devicePixelRatio();
+    const int notches = e->angleDelta().y();
+    if (notches == 0) return;
     const QPointF p = e->position();
-    interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr));
-    if (e->angleDelta().y() > 0) interactor_->InvokeEvent(vtkCommand::MouseWheelForwardEvent, e);
-    else if (e->angleDelta().y() < 0) interactor_->InvokeEvent(vtkCommand::MouseWheelBackwardEvent, e);
+    scene_.zoomAt(p.x(), p.y(), width(), height(), std::pow(1.2, notches / 120.0));
+    e->accept();
+    requestFrame();
 }
 
 QImage grabWithPreview(QWidget* widget)

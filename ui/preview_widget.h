@@ -38,6 +38,10 @@ public:
     void setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::StockSimulation> stock = nullptr);
     void setSelectedStep(int index /* -1 all */);
     void setShowStock(bool show);
+    // viz::Scene::setPathsShown: the tool paths drawn or not.
+    void setPathsShown(bool shown);
+    // viz::Scene::frameSelectedStep: the camera frames the selected step.
+    void frameSelectedStep();
     // The stock before the selected step rather than after it.
     void setStockBefore(bool before);
     // viz::Scene::setSection: the stock cut open by a plane.

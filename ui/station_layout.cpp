@@ -273,6 +273,22 @@ void StationWindow::buildMenus()
     job->addAction(tr("Tool &library…"), QKeySequence(tr("Ctrl+L")), this, &StationWindow::showToolLibrary);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    // What the 3-D view draws: the same switches as under the step list,
+    // each kept in step with its box there.
+    const auto mirror = [this, view](const char* name, const QString& text, bool (StepPanel::*shown)() const,
+                                     void (StepPanel::*set)(bool), void (StepPanel::*toggled)(bool)) {
+        QAction* a = view->addAction(text);
+        a->setObjectName(name);
+        a->setCheckable(true);
+        a->setChecked((steps_->*shown)());
+        connect(a, &QAction::toggled, steps_, set);
+        connect(steps_, toggled, a, &QAction::setChecked);
+    };
+    mirror("menu.view.paths", tr("Tool &paths"), &StepPanel::pathsShown, &StepPanel::setPathsShown, &StepPanel::showPathsToggled);
+    mirror("menu.view.stock", tr("&Stock as cut"), &StepPanel::stockShown, &StepPanel::setStockShown, &StepPanel::showStockToggled);
+    QAction* frame = view->addAction(tr("&Zoom to the selected step"), steps_, [this] { emit steps_->viewRequested(ViewButton::Step); });
+    frame->setObjectName("menu.view.frameStep");
+    view->addSeparator();
     QMenu* language = view->addMenu(tr("&Language"));
     auto* group = new QActionGroup(language);
     for (const auto& [code, name] : availableLanguages()) {

@@ -213,7 +213,10 @@ void StationWindow::wirePreview()
     preview_->setStockBefore(steps_->stockBefore());
     connect(steps_, &StepPanel::showStockToggled, preview_, &PreviewWidget::setShowStock);
     connect(steps_, &StepPanel::stockBeforeToggled, preview_, &PreviewWidget::setStockBefore);
+    preview_->setPathsShown(steps_->pathsShown());
+    connect(steps_, &StepPanel::showPathsToggled, preview_, &PreviewWidget::setPathsShown);
     connect(steps_, &StepPanel::viewRequested, preview_, [this](ViewButton v) {
+        if (v == ViewButton::Step) return preview_->frameSelectedStep();
         preview_->setView(v == ViewButton::Top     ? viz::ViewPreset::Top
                           : v == ViewButton::Front ? viz::ViewPreset::Front
                                                    : viz::ViewPreset::Iso);

@@ -32,7 +32,7 @@ QString length(double mm, LengthUnit u)
 
 StepPanel::StepPanel(QWidget* parent)
     : QWidget(parent), table_(new StepTable(this)), details_(new QLabel(this)), play_(new QToolButton(this)),
-      stock_(new QCheckBox(this)), before_(new QCheckBox(this)),
+      stock_(new QCheckBox(this)), before_(new QCheckBox(this)), paths_(new QCheckBox(this)),
       timer_(new QTimer(this)), speed_(new QSpinBox(this))
 {
     details_->setObjectName("step.details");
@@ -45,6 +45,8 @@ StepPanel::StepPanel(QWidget* parent)
     stock_->setObjectName("view.stock");
     stock_->setChecked(true);
     before_->setObjectName("view.before");
+    paths_->setObjectName("view.paths");
+    paths_->setChecked(true);
     timer_->setInterval(1200);
 
     auto* buttons = new QHBoxLayout;
@@ -55,8 +57,8 @@ StepPanel::StepPanel(QWidget* parent)
     buttons->addWidget(all);
     buttons->addWidget(play_);
     buttons->addStretch(1);
-    const char* const views[] = {"view.iso", "view.top", "view.front"};
-    for (int i = 0; i < 3; ++i) {
+    const char* const views[] = {"view.iso", "view.top", "view.front", "view.step"};
+    for (int i = 0; i < 4; ++i) {
         auto* b = new QToolButton(this);
         b->setObjectName(views[i]);
         connect(b, &QToolButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
@@ -66,6 +68,7 @@ StepPanel::StepPanel(QWidget* parent)
     auto* switches = new QHBoxLayout;
     switches->addWidget(stock_);
     switches->addWidget(before_);
+    switches->addWidget(paths_);
     switches->addStretch(1);
     // Single blocks and the blocks a tick of Play moves on.
     auto* back = new QToolButton(this);
@@ -100,6 +103,7 @@ StepPanel::StepPanel(QWidget* parent)
     connect(stock_, &QCheckBox::toggled, this, &StepPanel::showStockToggled);
     connect(stock_, &QCheckBox::toggled, before_, &QWidget::setEnabled);
     connect(before_, &QCheckBox::toggled, this, &StepPanel::stockBeforeToggled);
+    connect(paths_, &QCheckBox::toggled, this, &StepPanel::showPathsToggled);
 }
 
 namespace {
@@ -167,6 +171,12 @@ void StepPanel::selectStep(int index)
 bool StepPanel::stockShown() const { return stock_->isChecked(); }
 
 bool StepPanel::stockBefore() const { return before_->isChecked(); }
+
+bool StepPanel::pathsShown() const { return paths_->isChecked(); }
+
+void StepPanel::setStockShown(bool on) { stock_->setChecked(on); }
+
+void StepPanel::setPathsShown(bool on) { paths_->setChecked(on); }
 
 bool StepPanel::isPlaying() const { return timer_->isActive(); }
 
@@ -272,6 +282,10 @@ void StepPanel::nameParts()
     findChild<QToolButton*>("view.iso")->setText(tr("&Iso"));
     findChild<QToolButton*>("view.top")->setText(tr("&Top"));
     findChild<QToolButton*>("view.front")->setText(tr("F&ront"));
+    findChild<QToolButton*>("view.step")->setText(tr("&Zoom to step"));
+    findChild<QToolButton*>("view.step")->setToolTip(tr("The selected step framed, the view turned as it is"));
+    paths_->setText(tr("Pat&hs"));
+    paths_->setToolTip(tr("The tool paths drawn; off, the stock and the colour map show unhidden"));
     findChild<QToolButton*>("step.blockBack")->setToolTip(tr("One block back in the selected step"));
     findChild<QToolButton*>("step.blockForward")->setToolTip(tr("One block on in the selected step, the material coming off"));
     speed_->setToolTip(tr("How many blocks Play moves on ten times a second with a step selected"));

@@ -24,7 +24,8 @@ namespace taiwa::ui {
 
 class StepTable;
 
-enum class ViewButton { Iso, Top, Front };
+// The view's camera buttons: the presets, and Step (the selected step framed).
+enum class ViewButton { Iso, Top, Front, Step };
 
 class StepPanel : public QWidget {
     Q_OBJECT
@@ -43,6 +44,10 @@ public:
     // The switches' states (the preview starts from them).
     bool stockShown() const;
     bool stockBefore() const;
+    bool pathsShown() const;
+    // The switches set from outside (the View menu), their signals sent as a click's.
+    void setStockShown(bool on);
+    void setPathsShown(bool on);
     bool isPlaying() const;
     void setPlaying(bool on);
     // Milliseconds per step while playing (blocks: per tick, see blockInterval).
@@ -62,6 +67,7 @@ signals:
     void stepChosen(int index);
     void viewRequested(taiwa::ui::ViewButton view);
     void showStockToggled(bool on);
+    void showPathsToggled(bool on);
     void stockBeforeToggled(bool before);
     // Playing block by block: the stock after moves 0..move of step; (-1, -1)
     // when it ends (the selection changed, all steps).
@@ -83,6 +89,7 @@ private:
     QToolButton* play_;
     QCheckBox* stock_;
     QCheckBox* before_;
+    QCheckBox* paths_;
     QTimer* timer_;
     QSpinBox* speed_;
     int playStep_ = -1, playMove_ = -1;

@@ -234,8 +234,8 @@ void Scene::updateEmphasis()
     for (const PathBlock& b : blocks_) {
         setColour(b.feeds, selected_ < 0 ? palette::kFeed : palette::kDimmed);
         b.feeds->GetProperty()->SetLineWidth(pathWidth(selected_ < 0 ? 2.0f : 1.0f));
-        b.feeds->SetVisibility(selected_ < 0 || !othersHidden_);
-        b.rapids->SetVisibility(selected_ < 0);
+        b.feeds->SetVisibility(pathsShown_ && (selected_ < 0 || !othersHidden_));
+        b.rapids->SetVisibility(pathsShown_ && selected_ < 0);
     }
     if (shownStep_ >= 0 && shownStep_ < static_cast<int>(steps_.size()) && steps_[static_cast<std::size_t>(shownStep_)].feeds) {
         detach(steps_[static_cast<std::size_t>(shownStep_)].feeds);
@@ -246,6 +246,8 @@ void Scene::updateEmphasis()
         StepActors& a = stepActors(selected_);
         setColour(a.feeds, palette::kFeed);
         a.feeds->GetProperty()->SetLineWidth(pathWidth(3.0f));
+        a.feeds->SetVisibility(pathsShown_);
+        a.rapids->SetVisibility(pathsShown_);
         renderer_->AddActor(a.feeds);
         renderer_->AddActor(a.rapids);
         shownStep_ = selected_;
@@ -322,6 +324,7 @@ void Scene::updateHighlight()
     const int k = highlighted_.step;
     if (k < 0 || k >= static_cast<int>(steps_.size()) || !stepActors(k).feeds) return;
     highlight_ = lineActor(movePieces(steps_[k].geometry, highlighted_.move), palette::kHighlight, 5.0);
+    highlight_->SetVisibility(pathsShown_);
     renderer_->AddActor(highlight_);
 }
 

@@ -89,6 +89,11 @@ public:
     // not dimmed (the sheet's pictures; a large job's other paths cost the
     // renderer more than the picture shows of them).
     void setOtherPathsHidden(bool hidden);
+    // The tool paths drawn or not (the View menu's and the view's own
+    // switch): off, the colour map and the stock show unhidden. The
+    // highlighted move goes with them; the tool stays. viz/scene_camera.cpp.
+    void setPathsShown(bool shown);
+    bool pathsShown() const { return pathsShown_; }
     // The simulated stock instead of the translucent block.
     void setShowStock(bool show);
     // The simulated stock as it is before the selected step instead of
@@ -152,6 +157,15 @@ public:
     // The union of the stock's box and the paths (xmin, xmax, ymin, ymax, zmin, zmax).
     std::array<double, 6> bounds() const;
 
+    // Zoom by `factor` (> 1 nearer) about pixel (x, y) of a viewport of
+    // width x height pixels (x to the right, y downward): the point of the
+    // focal plane under that pixel stays under it, in perspective and in
+    // parallel projection. viz/scene_camera.cpp.
+    void zoomAt(double x, double y, int width, int height, double factor);
+    // The camera turned as it is, moved and zoomed to frame the selected
+    // step's path (a lathe step: its path in the section), or the whole
+    // scene when no step with a path is selected. viz/scene_camera.cpp.
+    void frameSelectedStep(double aspect);
     // Where a world point appears in a viewport of width x height pixels
     // (x to the right, y downward from the top-left corner), for the
     // current camera.
@@ -267,6 +281,7 @@ private:
     MoveRef playhead_;
     bool showStock_ = false;
     bool othersHidden_ = false;
+    bool pathsShown_ = true;
     bool stockBefore_ = false;
     bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;

@@ -112,6 +112,7 @@ void Scene::updateLatheStep()
         pd->SetPoints(points);
         pd->SetLines(lines);
         auto actor = lineActor(pd, rapids ? palette::kRapid : palette::kFeed, rapids ? 1.0 : 2.0);
+        actor->SetVisibility(pathsShown_);
         renderer_->AddActor(actor);
         latheStep_.push_back(actor);
     }
