@@ -140,7 +140,12 @@ QWidget* StationWindow::buildRight()
         box->setContentsMargins(0, 0, 0, 0);
         box->setSpacing(2);
         box->addWidget(preview_, 1);
-        box->addWidget(section_);
+        // The view's bar: the section, the paths switch, the zoom to the step.
+        auto* bar = new QHBoxLayout;
+        bar->addWidget(section_, 1);
+        bar->addWidget(steps_->viewBar());
+        steps_->viewBar()->show();
+        box->addLayout(bar);
         views_->addTab(view, QString());
     } else {  // e.g. a remote display or the offscreen platform: everything else still works
         auto* noGl = new QLabel;

@@ -57,8 +57,8 @@ StepPanel::StepPanel(QWidget* parent)
     buttons->addWidget(all);
     buttons->addWidget(play_);
     buttons->addStretch(1);
-    const char* const views[] = {"view.iso", "view.top", "view.front", "view.step"};
-    for (int i = 0; i < 4; ++i) {
+    const char* const views[] = {"view.iso", "view.top", "view.front"};
+    for (int i = 0; i < 3; ++i) {
         auto* b = new QToolButton(this);
         b->setObjectName(views[i]);
         connect(b, &QToolButton::clicked, this, [this, i] { emit viewRequested(static_cast<ViewButton>(i)); });
@@ -68,7 +68,18 @@ StepPanel::StepPanel(QWidget* parent)
     auto* switches = new QHBoxLayout;
     switches->addWidget(stock_);
     switches->addWidget(before_);
-    switches->addWidget(paths_);
+    // The view's own switches, placed by the station beside the section bar.
+    viewBar_ = new QWidget(this);
+    viewBar_->setObjectName("view.bar");
+    viewBar_->hide();  // until placed
+    auto* bar = new QHBoxLayout(viewBar_);
+    bar->setContentsMargins(0, 0, 0, 0);
+    zoom_ = new QToolButton(viewBar_);
+    zoom_->setObjectName("view.step");
+    connect(zoom_, &QToolButton::clicked, this, [this] { emit viewRequested(ViewButton::Step); });
+    paths_->setParent(viewBar_);
+    bar->addWidget(paths_);
+    bar->addWidget(zoom_);
     switches->addStretch(1);
     // Single blocks and the blocks a tick of Play moves on.
     auto* back = new QToolButton(this);
@@ -282,8 +293,8 @@ void StepPanel::nameParts()
     findChild<QToolButton*>("view.iso")->setText(tr("&Iso"));
     findChild<QToolButton*>("view.top")->setText(tr("&Top"));
     findChild<QToolButton*>("view.front")->setText(tr("F&ront"));
-    findChild<QToolButton*>("view.step")->setText(tr("&Zoom to step"));
-    findChild<QToolButton*>("view.step")->setToolTip(tr("The selected step framed, the view turned as it is"));
+    zoom_->setText(tr("&Zoom to step"));
+    zoom_->setToolTip(tr("Zoom to the selected step, the view turned as it is (all steps: the whole job)"));
     paths_->setText(tr("Pat&hs"));
     paths_->setToolTip(tr("The tool paths drawn; off, the stock and the colour map show unhidden"));
     findChild<QToolButton*>("step.blockBack")->setToolTip(tr("One block back in the selected step"));

@@ -45,6 +45,11 @@ public:
     bool stockShown() const;
     bool stockBefore() const;
     bool pathsShown() const;
+    // The 3-D view's own switches made here (the paths box and the
+    // "Zoom" button, objectNames view.paths and view.step), for the
+    // station to put in the view's bar beside the section bar: the step
+    // list's rows keep the width of a 1280-pixel screen.
+    QWidget* viewBar() const { return viewBar_; }
     // The switches set from outside (the View menu), their signals sent as a click's.
     void setStockShown(bool on);
     void setPathsShown(bool on);
@@ -90,6 +95,8 @@ private:
     QCheckBox* stock_;
     QCheckBox* before_;
     QCheckBox* paths_;
+    QWidget* viewBar_;
+    QToolButton* zoom_;
     QTimer* timer_;
     QSpinBox* speed_;
     int playStep_ = -1, playMove_ = -1;
