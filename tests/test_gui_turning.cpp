@@ -12,6 +12,7 @@
 #include "support/gui_fields.h"
 #include "support/station_fixture.h"
 #include "support/support.h"
+#include "model/turned_geometry.h"
 #include "ui/file_actions.h"
 #include "ui/job_document.h"
 #include "ui/nc_view.h"
@@ -34,6 +35,7 @@
 #include <QUndoStack>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QCheckBox>
 #include <QWheelEvent>
 #include <QtTest>
 
@@ -296,6 +298,48 @@ private slots:
             QVERIFY2(view->rect().contains(end.toPoint()), qPrintable(QString("%1, %2").arg(end.x()).arg(end.y())));
         QTest::mouseDClick(view, Qt::LeftButton, {}, view->toPixel(-40.25, 39.5).toPoint());
         QCOMPARE(view->zoom(), 1.0);
+    }
+
+    // Issue 34, item 7: the box under the profile view draws the grinding
+    // allowances and grooves ten times as deep. The moved edge of E3
+    // (0.3 mm off a straight E3) is drawn 10 times as far from E3 as it is
+    // (the distance measured here on the line E3, apart from the view's
+    // code); the profile and the picture come back when the box is off.
+    void allowancesDrawnTenTimesAsDeep()
+    {
+        StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
+        w.resize(1280, 672);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.unitList()->selectUnit(0);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        auto* box = w.findChild<QCheckBox*>("turn.exaggerate");
+        QVERIFY(view && box && view->deformed());
+        QVERIFY(!box->isChecked());
+        const turning::Edge* e3 = nullptr;
+        for (const auto& e : view->profile().edges)
+            if (e.id == "E3") e3 = &e;
+        const turning::DeformedEdge* moved = nullptr;
+        for (const auto& e : view->deformed()->edges)
+            if (e.from == "E3" && e.origin == turning::Origin::Moved) moved = &e;
+        QVERIFY(e3 && !e3->geometry.arc && moved);
+        const turning::ZR p = turning::midpoint(moved->geometry);
+        const turning::ZR a = e3->geometry.a, b = e3->geometry.b;
+        const double off = std::abs((b.z - a.z) * (p.r - a.r) - (b.r - a.r) * (p.z - a.z)) / std::hypot(b.z - a.z, b.r - a.r);
+        QVERIFY2(off > 0.2 && off < 0.5, qPrintable(QString::number(off)));
+        QCOMPARE(view->exaggeration(), 1.0);
+        QCOMPARE(view->exaggerated(p), p);
+        const QImage plain = view->grab().toImage();
+        box->click();
+        QCOMPARE(view->exaggeration(), 10.0);
+        const turning::ZR drawn = view->exaggerated(p);
+        QVERIFY2(std::abs(turning::dist(drawn, p) - 9 * off) < 1e-9,
+                 qPrintable(QString("drawn %1 mm off the cut, %2 mm expected").arg(turning::dist(drawn, p)).arg(9 * off)));
+        const QImage deep = view->grab().toImage();
+        QVERIFY(deep != plain);
+        box->click();
+        QCOMPARE(view->exaggerated(p), p);
+        QCOMPARE(view->grab().toImage(), plain);
     }
 
     // File > Import turned part (STEP): a new untitled lathe job with the

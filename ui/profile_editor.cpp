@@ -10,6 +10,7 @@
 #include "ui/profile_view.h"
 #include "ui/table_cells.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
@@ -72,6 +73,12 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     view_ = new ProfileView(this);
     view_->setObjectName(prefix + ".view");
     outer->addWidget(view_);
+    // The allowances and grooves drawn ten times as deep: a 0.5 mm grinding
+    // allowance is seen without zooming in.
+    exaggerate_ = new QCheckBox(this);
+    exaggerate_->setObjectName(prefix + ".exaggerate");
+    connect(exaggerate_, &QCheckBox::toggled, view_, [this](bool on) { view_->setExaggeration(on ? kExaggeration : 1.0); });
+    outer->addWidget(exaggerate_);
 
     rows_ = new EditingTable(0, RowColumns, this);
     rows_->setObjectName(prefix + ".rows");
@@ -210,6 +217,7 @@ void ProfileEditor::nameParts()
 {
     rows_->setHorizontalHeaderLabels(rowHeadings());
     allowances_->setHorizontalHeaderLabels(allowanceHeadings());
+    exaggerate_->setText(tr("Allowances and grooves drawn ×%1").arg(kExaggeration));
     rowsTitle_->setText(tr("Profile, in cutting order (X is a diameter; arcs: R, or the centre)"));
     allowanceTitle_->setText(tr("Grinding allowance per edge (empty: adjustment from the finishing tool's "
                                 "nose radius, depth = allowance, no width = no groove)"));

@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -103,6 +104,8 @@ private:
     const ModuleKind* kind_ = nullptr;
     std::optional<ModuleInput> unit_;
     ProfileView* view_ = nullptr;
+    QCheckBox* exaggerate_ = nullptr;  // the allowances drawn kExaggeration times as deep
+    static constexpr int kExaggeration = 10;
     QTableWidget* rows_ = nullptr;
     QTableWidget* allowances_ = nullptr;
     QLabel* messages_ = nullptr;

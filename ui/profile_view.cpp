@@ -163,6 +163,56 @@ QPolygonF ProfileView::polyline(const Frame& f, const turning::Segment& s) const
     return poly;
 }
 
+namespace {
+
+// The point of `s` nearest to `p`.
+turning::ZR nearestOn(const turning::Segment& s, turning::ZR p)
+{
+    const auto closer = [&](turning::ZR a, turning::ZR b) { return turning::dist(a, p) <= turning::dist(b, p) ? a : b; };
+    if (!s.arc) {
+        const double dz = s.b.z - s.a.z, dr = s.b.r - s.a.r, len2 = dz * dz + dr * dr;
+        const double t = len2 > 0 ? std::clamp(((p.z - s.a.z) * dz + (p.r - s.a.r) * dr) / len2, 0.0, 1.0) : 0.0;
+        return {s.a.z + t * dz, s.a.r + t * dr};
+    }
+    const double d = turning::dist(p, s.centre);
+    if (d > 1e-12) {
+        const turning::ZR onCircle{s.centre.z + (p.z - s.centre.z) * s.radius / d, s.centre.r + (p.r - s.centre.r) * s.radius / d};
+        if (turning::contains(s, onCircle, 1e-6)) return onCircle;
+    }
+    return closer(s.a, s.b);
+}
+
+}  // namespace
+
+void ProfileView::setExaggeration(double factor)
+{
+    exaggeration_ = std::max(1.0, factor);
+    update();
+}
+
+turning::ZR ProfileView::exaggerated(turning::ZR p) const
+{
+    if (exaggeration_ == 1.0 || profile_.edges.empty()) return p;
+    turning::ZR best = p;
+    double bestDist = -1;
+    for (const auto& e : profile_.edges) {
+        const turning::ZR q = nearestOn(e.geometry, p);
+        if (const double d = turning::dist(p, q); bestDist < 0 || d < bestDist) best = q, bestDist = d;
+    }
+    return {best.z + exaggeration_ * (p.z - best.z), std::max(0.0, best.r + exaggeration_ * (p.r - best.r))};
+}
+
+QPolygonF ProfileView::exaggeratedPolyline(const Frame& f, const turning::Segment& s) const
+{
+    if (exaggeration_ == 1.0) return polyline(f, s);
+    // Points every 0.2 mm at most (and 48 at least), each moved off the profile.
+    const double len = turning::length(s);
+    const int n = std::clamp(static_cast<int>(std::ceil(len / 0.2)), 48, 4000);
+    QPolygonF poly;
+    for (int i = 0; i <= n; ++i) poly << px(f, exaggerated(turning::pointAt(s, len * i / n)));
+    return poly;
+}
+
 QString ProfileView::edgeAt(QPointF pixel) const
 {
     const Frame f = frame();
@@ -225,14 +275,15 @@ void ProfileView::paintEvent(QPaintEvent*)
     if (deformed_) {
         p.setPen(QPen(kDeformed, 1.5, Qt::DashLine));
         for (const auto& e : deformed_->edges)
-            if (e.origin != turning::Origin::Original) p.drawPolyline(polyline(f, e.geometry));
+            if (e.origin != turning::Origin::Original) p.drawPolyline(exaggeratedPolyline(f, e.geometry));
     }
     // Legend.
     p.setPen(kProfile);
     p.drawText(QPointF(6, 14), tr("Z →   X (diameter) ↑"));
     if (deformed_ && !deformed_->rows.empty()) {
         p.setPen(kDeformed);
-        p.drawText(QPointF(6, 28), tr("- - - to cut (grinding allowance)"));
+        p.drawText(QPointF(6, 28), exaggeration_ == 1.0 ? tr("- - - to cut (grinding allowance)")
+                                                        : tr("- - - to cut (grinding allowance, its depth drawn ×%1)").arg(exaggeration_));
     }
 }
 

@@ -45,6 +45,17 @@ public:
 
     QSize sizeHint() const override { return {520, 260}; }
 
+    // The allowances and grooves drawn `factor` times as far from the
+    // profile as they are (1: true to scale): each drawn point of a
+    // deformed edge moved away from its nearest point on the profile as
+    // drawn. A 0.5 mm grinding allowance is seen at the whole part's scale
+    // at 10x. The profile and the bar stay true.
+    void setExaggeration(double factor);
+    double exaggeration() const { return exaggeration_; }
+    // Where a point of a deformed edge is drawn, exaggerated (in the
+    // half-section's Z and radius, mm).
+    turning::ZR exaggerated(turning::ZR p) const;
+
     // How far the view is zoomed in (1: the whole fits); back to 1 by fit().
     double zoom() const { return zoom_; }
     void fit();
@@ -67,6 +78,9 @@ private:
     Frame frame() const;
     QPointF px(const Frame& f, turning::ZR p) const;
     QPolygonF polyline(const Frame& f, const turning::Segment& s) const;
+    // A deformed edge's polyline, exaggerated (setExaggeration).
+    QPolygonF exaggeratedPolyline(const Frame& f, const turning::Segment& s) const;
+    double exaggeration_ = 1.0;
 
     turning::ResolvedProfile profile_;
     std::optional<turning::DeformedProfile> deformed_;
