@@ -29,6 +29,8 @@
 #include <QtTest>
 
 #include <vtkCamera.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
 
 #include <cstdlib>
 
@@ -362,6 +364,60 @@ private slots:
         QVERIFY(s.drawnPathSegments() > 0);
         s.setSelectedStep(-1);
         QCOMPARE(s.drawnPathSegments(), all);
+    }
+
+    // Issue 34, item 7: the 3-D view shows the probing touches and the
+    // fitted centre, in work coordinates (the centre is X Y 0, the top face
+    // Z 0). Every point of the actor is on the centre's line or cross, or
+    // on a stylus ball whose centre lies on the fitted circle of the ball's
+    // centres (the boss's measured radius and the ball's, touched from
+    // outside; off it by the touch's residual) at the touch depth; a job
+    // without probing has none.
+    void probingTouchesAndCentre()
+    {
+        const Plan plan = samplePlan("probe-flange.taiwa");
+        QVERIFY2(plan.ok(), plan.diagnostics.empty() ? "" : plan.diagnostics.front().message.c_str());
+        QCOMPARE(plan.setups.size(), std::size_t{1});
+        QVERIFY(plan.setups[0].measured);
+        const WorkSetup& w = plan.setups[0];
+        QVERIFY(w.round && !w.inside && w.ballRadius > 0);
+        Scene s;
+        s.setPlan(std::make_shared<const Plan>(plan));
+        vtkActor* actor = s.probeActor();
+        QVERIFY(actor);
+        vtkPolyData* pd = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInput());
+        QVERIFY(pd && pd->GetNumberOfPoints() > 0);
+        const double ring = w.measured->radius + w.ballRadius, z = -w.touchDepth, r = w.ballRadius;
+        // The ball centres lie off the fitted circle by their residuals.
+        double worst = 0;
+        for (const double res : w.measured->residuals) worst = std::max(worst, std::abs(res));
+        QVERIFY(worst < 0.05);
+        int onBalls = 0;
+        double low = 0, high = -1e9;
+        for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i) {
+            double p[3];
+            pd->GetPoint(i, p);
+            const bool onCentre = std::hypot(p[0], p[1]) < 1e-9 || (std::abs(p[2]) < 1e-9 && (std::abs(p[0]) < 1e-9 || std::abs(p[1]) < 1e-9));
+            if (onCentre) continue;
+            // Distance from the circle of the balls' centres.
+            const double off = std::hypot(std::hypot(p[0], p[1]) - ring, p[2] - z);
+            QVERIFY2(off <= r + worst + 1e-6, qPrintable(QString("(%1, %2, %3) is %4 mm off the touches' circle").arg(p[0]).arg(p[1]).arg(p[2]).arg(off)));
+            ++onBalls;
+            low = std::min(low, p[2]);
+            high = std::max(high, p[2]);
+        }
+        // The balls' poles: the touch depth less and more the ball's radius.
+        QVERIFY(onBalls > 100);
+        QVERIFY2(std::abs(low - (z - r)) < 1e-6 && std::abs(high - (z + r)) < 1e-6,
+                 qPrintable(QString("balls from Z %1 to %2").arg(low).arg(high)));
+        // The centre's line reaches the touches' depth.
+        double b[6];
+        pd->GetBounds(b);
+        QVERIFY(b[4] <= z - r);
+        QVERIFY(!Scene().probeActor());
+        Scene milled;
+        milled.setPlan(std::make_shared<const Plan>(plan_));
+        QVERIFY(!milled.probeActor());
     }
 
     // Merged, the steps have no geometry of their own until one is selected

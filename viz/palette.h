@@ -27,6 +27,7 @@ inline constexpr Rgb kPartEdges{236, 238, 244};  // the finished pockets' outlin
 inline constexpr Rgb kText{220, 224, 232};
 inline constexpr Rgb kClamp{70, 130, 235};       // the setup picture's vice or chuck jaws, translucent
 inline constexpr Rgb kChuck{84, 92, 106};        // the setup picture's chuck body
+inline constexpr Rgb kProbe{60, 230, 230};       // probing touches (the stylus ball) and the fitted centre
 // The face a section plane cuts through the stock.
 inline constexpr Rgb kSection{180, 120, 200};
 // The verification's colour map of the finished part (verify::DeviationBand).

@@ -117,6 +117,7 @@ void Scene::clear()
     simulation_.reset();
     stock_ = stockEdges_ = partEdges_ = tool_ = highlight_ = cap_ = nullptr;
     surface_ = nullptr;
+    probe_ = nullptr;
     surfaceTriangles_ = 0;
     stockLight_.set(nullptr, 0, 0);
     deviation_.reset();  // a map is of one plan
@@ -157,6 +158,8 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     renderer_->AddActor(partEdges_);
     surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
     if (surface_) renderer_->AddActor(surface_);
+    probe_ = probeMarks();
+    if (probe_) renderer_->AddActor(probe_);
 
     steps_.resize(plan_->steps.size());
     mergePaths();

@@ -94,6 +94,9 @@ public:
     // highlighted move goes with them; the tool stays. viz/scene_camera.cpp.
     void setPathsShown(bool shown);
     bool pathsShown() const { return pathsShown_; }
+    // The probing units' touches and fitted centres, drawn in work
+    // coordinates (viz/scene_probe.cpp); nullptr when the job has none.
+    vtkActor* probeActor() const { return probe_.Get(); }
     // The simulated stock instead of the translucent block.
     void setShowStock(bool show);
     // The simulated stock as it is before the selected step instead of
@@ -271,6 +274,9 @@ private:
     int shownStep_ = -1;  // the step whose own actors are in the renderer
     vtkSmartPointer<vtkActor> stock_, stockEdges_, partEdges_, tool_, highlight_, marker_, cap_;
     vtkSmartPointer<vtkActor> surface_;  // the machined free-form surfaces
+    vtkSmartPointer<vtkActor> probe_;    // the probing units' touches and fitted centres
+    // Made from the plan's setups (viz/scene_probe.cpp); nullptr: no probing unit with a fit.
+    vtkSmartPointer<vtkActor> probeMarks() const;
     std::size_t surfaceTriangles_ = 0;
     std::optional<SectionPlane> section_;
     std::shared_ptr<const verify::DeviationMap> deviation_;

@@ -63,7 +63,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     };
 
     // What a new scene makes anew in any case: out of the renderer.
-    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_, &surface_}) drop(*p);
+    for (auto* p : {&stock_, &cap_, &tool_, &highlight_, &partEdges_, &surface_, &probe_}) drop(*p);
     if (marker_) dropped.emplace_back(marker_.Get());  // a new scene shows no marker; markPoint may
     const Stock& s = plan_->mmJob.stock;
     if (!(old->mmJob.stock == s)) {
@@ -80,6 +80,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     }
     partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
     surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
+    probe_ = probeMarks();
 
     // The steps' path actors: kept where the path is the same.
     std::vector<StepActors> before = std::move(steps_);
@@ -139,6 +140,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
     add(stockEdges_);
     add(partEdges_);
     if (surface_) add(surface_);
+    if (probe_) add(probe_);
     pathSegments_ = 0;
     // Blocks whose steps' paths are all unchanged keep their actors.
     mergePaths(std::move(blocks_), old.get());
