@@ -197,6 +197,14 @@ private slots:
         box->click();
         QVERIFY(menu->isChecked() && preview()->scene().pathsShown());
         QCOMPARE(differingPixels(with, frame()), 0);
+        // The part's outlines switched off and on in the View menu.
+        auto* part = w_->findChild<QAction*>("menu.view.part");
+        QVERIFY(part && part->isChecked());
+        part->trigger();
+        QVERIFY(!preview()->scene().partShown());
+        QVERIFY(differingPixels(with, frame()) > 200);
+        part->trigger();
+        QCOMPARE(differingPixels(with, frame()), 0);
 
         const int k = firstStepOf(StepKind::PilotHole);
         w_->stepPanel()->selectStep(k);

@@ -131,6 +131,12 @@ void PreviewWidget::setPathsShown(bool shown)
     requestFrame();
 }
 
+void PreviewWidget::setPartShown(bool shown)
+{
+    scene_.setPartShown(shown);
+    requestFrame();
+}
+
 void PreviewWidget::frameSelectedStep()
 {
     scene_.frameSelectedStep(static_cast<double>(width()) / std::max(height(), 1));

@@ -40,6 +40,8 @@ public:
     void setShowStock(bool show);
     // viz::Scene::setPathsShown: the tool paths drawn or not.
     void setPathsShown(bool shown);
+    // viz::Scene::setPartShown: the part (pockets' outlines, turned part) drawn or not.
+    void setPartShown(bool shown);
     // viz::Scene::frameSelectedStep: the camera frames the selected step.
     void frameSelectedStep();
     // The stock before the selected step rather than after it.

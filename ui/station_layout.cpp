@@ -291,6 +291,14 @@ void StationWindow::buildMenus()
     };
     mirror("menu.view.paths", tr("Tool &paths"), &StepPanel::pathsShown, &StepPanel::setPathsShown, &StepPanel::showPathsToggled);
     mirror("menu.view.stock", tr("&Stock as cut"), &StepPanel::stockShown, &StepPanel::setStockShown, &StepPanel::showStockToggled);
+    if (preview_) {
+        QAction* part = view->addAction(tr("&Part"));
+        part->setObjectName("menu.view.part");
+        part->setCheckable(true);
+        part->setChecked(preview_->scene().partShown());
+        part->setToolTip(tr("The finished pockets' outlines, or the turned part"));
+        connect(part, &QAction::toggled, preview_, &PreviewWidget::setPartShown);
+    }
     QAction* frame = view->addAction(tr("&Zoom to the selected step"), steps_, [this] { emit steps_->viewRequested(ViewButton::Step); });
     frame->setObjectName("menu.view.frameStep");
     view->addSeparator();

@@ -155,6 +155,7 @@ void Scene::setPlan(std::shared_ptr<const Plan> plan, std::shared_ptr<sim::Stock
     stockEdges_ = lineActor(outline->GetOutput(), palette::kStockEdges, 1.0);
     renderer_->AddActor(stockEdges_);
     partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
+    partEdges_->SetVisibility(partShown_);
     renderer_->AddActor(partEdges_);
     surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
     if (surface_) renderer_->AddActor(surface_);

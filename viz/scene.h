@@ -94,6 +94,11 @@ public:
     // highlighted move goes with them; the tool stays. viz/scene_camera.cpp.
     void setPathsShown(bool shown);
     bool pathsShown() const { return pathsShown_; }
+    // The part drawn or not: a milling job's finished pockets' outlines, a
+    // lathe job's turned part (viz/scene_camera.cpp). There are no fixtures
+    // in the station's view to switch (the sheet's setup picture has them).
+    void setPartShown(bool shown);
+    bool partShown() const { return partShown_; }
     // The probing units' touches and fitted centres, drawn in work
     // coordinates (viz/scene_probe.cpp); nullptr when the job has none.
     vtkActor* probeActor() const { return probe_.Get(); }
@@ -288,6 +293,7 @@ private:
     bool showStock_ = false;
     bool othersHidden_ = false;
     bool pathsShown_ = true;
+    bool partShown_ = true;
     bool stockBefore_ = false;
     bool lathe_ = false;  // the plan is a lathe job's: no height field; turning paths in the half-plane
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;

@@ -1,6 +1,6 @@
 // What the operator does to the 3-D view besides choosing a step: the tool
-// paths switched off and on, the wheel zooming about the pointer, and the
-// camera framing the selected step (viz::Scene; docs/preview.md "Zoom,
+// paths and the part switched off and on, the wheel zooming about the
+// pointer, and the camera framing the selected step (viz::Scene; docs/preview.md "Zoom,
 // framing and the paths switch").
 #include "viz/scene.h"
 
@@ -24,6 +24,14 @@ void Scene::setPathsShown(bool shown)
     if (lathe_) updateLatheStep();
     else updateEmphasis();
     updateHighlight();
+}
+
+void Scene::setPartShown(bool shown)
+{
+    if (shown == partShown_) return;
+    partShown_ = shown;
+    if (partEdges_) partEdges_->SetVisibility(shown);
+    if (lathe_ && plan_) updateLatheStep();
 }
 
 void Scene::zoomAt(double x, double y, int width, int height, double factor)

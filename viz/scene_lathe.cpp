@@ -40,6 +40,7 @@ void Scene::buildLathe()
                 auto actor = actorFor(revolvedChain(run), chain == &ground ? palette::kMachined : palette::kStock);
                 actor->GetProperty()->SetAmbient(0.3);
                 actor->GetProperty()->SetDiffuse(0.7);
+                actor->SetVisibility(partShown_);
                 renderer_->AddActor(actor);
                 latheParts_.push_back(actor);
                 run.clear();
@@ -70,7 +71,7 @@ void Scene::updateLatheStep()
     latheStep_.clear();
     const Step* step = selected_ >= 0 ? &plan_->steps[static_cast<std::size_t>(selected_)] : nullptr;
     const bool show = step && turnOf(*step);
-    for (auto& a : latheParts_) a->SetVisibility(!show);
+    for (auto& a : latheParts_) a->SetVisibility(partShown_ && !show);
     if (!show) return;
     // The stock after the step, each loop of the half-section revolved over
     // the half turn behind the section, so that the section shows.

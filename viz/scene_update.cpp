@@ -79,6 +79,7 @@ void Scene::updateInPlace(std::shared_ptr<const Plan> plan, std::shared_ptr<sim:
         makeAxes(axisLength);
     }
     partEdges_ = lineActor(pocketOutlines(plan_->steps, &outlines_), palette::kPartEdges, 1.5);
+    partEdges_->SetVisibility(partShown_);
     surface_ = machinedSurfaces(plan_->steps, &surfaceTriangles_);
     probe_ = probeMarks();
 
