@@ -41,6 +41,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTranslator>
+#include <QXmlStreamReader>
 #include <QtTest>
 
 using namespace taiwa;
@@ -245,6 +246,42 @@ class TestGuiLanguages : public QObject {
                  qPrintable(ja));
         QVERIFY(!ja.contains("top view"));
         QVERIFY(ja.contains(R"(id="sym-P1" x="10" y="188">P1</text>)"));
+    }
+
+    // English counts in words: every message of the station that counts
+    // (numerus, as the Japanese catalogue lists them) reads "1 block" and
+    // "2 blocks" in English, never "block(s)"; the NC view's count of a
+    // real tape too.
+    void englishCountsInWords()
+    {
+        speak("en");
+        QFile ts(QStringLiteral(":/i18n/taiwa_ja.ts"));
+        QVERIFY(ts.open(QIODevice::ReadOnly));
+        QXmlStreamReader xml(&ts);
+        QString context;
+        int counted = 0;
+        bool numerus = false;
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (!xml.isStartElement()) continue;
+            if (xml.name() == QLatin1String("name")) context = xml.readElementText();
+            else if (xml.name() == QLatin1String("message")) numerus = xml.attributes().value("numerus") == QLatin1String("yes");
+            else if (xml.name() == QLatin1String("source") && numerus) {
+                const QByteArray source = xml.readElementText().toUtf8();
+                for (const int n : {1, 2, 1084}) {
+                    const QString text = QCoreApplication::translate(context.toUtf8().constData(), source.constData(), nullptr, n);
+                    QVERIFY2(!text.contains("(s)") && !text.contains("%n"), qPrintable(context + ": " + text));
+                }
+                ++counted;
+            }
+        }
+        QVERIFY(counted >= 9);
+        QCOMPARE(QCoreApplication::translate("taiwa::ui::NcView", "%n block(s)", nullptr, 1), QString("1 block"));
+        StationWindow w(test::sourcePath("resources/samples/plate.taiwa"));
+        w.planRunner()->flush();
+        auto* blocks = w.findChild<QLabel*>("nc.blocks");
+        QVERIFY(blocks);
+        QTRY_VERIFY2(QRegularExpression("^\\d+ blocks$").match(blocks->text()).hasMatch(), qPrintable(blocks->text()));
     }
 
     // Qt's own buttons come from Qt's translations (qt6-translations-l10n).

@@ -46,7 +46,13 @@ bool installTranslator(QCoreApplication& app)
 {
     installed().clear();
     const QString code = savedLanguage();
-    if (code == "en") return false;
+    if (code == "en") {
+        // English is the source: only its plural forms ("1 block", "2 blocks").
+        auto* plurals = new QTranslator(&app);
+        if (plurals->load(QStringLiteral(":/i18n/taiwa_en.qm")) && QCoreApplication::installTranslator(plurals)) ours() << plurals;
+        else delete plurals;
+        return false;
+    }
     auto* translator = new QTranslator(&app);
     if (!translator->load(QStringLiteral(":/i18n/taiwa_%1.qm").arg(code))) {
         delete translator;

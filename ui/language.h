@@ -22,7 +22,8 @@ namespace taiwa::ui {
 std::vector<std::pair<QString, QString>> availableLanguages();
 QString savedLanguage();
 void saveLanguage(const QString& code);
-// Installs the translators of the language in force; false for English or
+// Installs the translators of the language in force; false for English
+// (whose catalogue holds its plural forms only: "1 block", "2 blocks") or
 // when the translation is missing. Qt's own translation is installed when
 // found (a missing one leaves the standard buttons in English, with a warning).
 bool installTranslator(QCoreApplication& app);
