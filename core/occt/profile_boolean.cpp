@@ -83,8 +83,15 @@ Segment toSegment(const TopoDS_Edge& edge)
     if (curve.GetType() == GeomAbs_Line) return lineSegment(a, b);
     if (curve.GetType() != GeomAbs_Circle) throw Standard_Failure("a boolean gave an edge that is neither a line nor an arc");
     const gp_Circ c = curve.Circle();
-    const ZR mid = toZR(curve.Value(0.5 * (curve.FirstParameter() + curve.LastParameter())));
-    Segment s = arcSegment(a, b, toZR(c.Location()), cross(mid - a, b - a) > 0.0);
+    // The way round from the circle's own direction and the edge's
+    // orientation: exact for any sweep. (Which side of the chord the arc's
+    // middle lies on gave the wrong way round for an arc of a few
+    // nanometres, a sliver of the booleans, whose chord is noise: the arc
+    // became the rest of its circle, down through the axis; seed 3961 of
+    // bench_turning_generator.)
+    bool ccw = c.Axis().Direction().Z() > 0.0;
+    if (edge.Orientation() == TopAbs_REVERSED) ccw = !ccw;
+    Segment s = arcSegment(a, b, toZR(c.Location()), ccw);
     s.radius = c.Radius();
     return s;
 }
