@@ -292,7 +292,7 @@ void StationWindow::buildMenus()
     mirror("menu.view.paths", tr("Tool &paths"), &StepPanel::pathsShown, &StepPanel::setPathsShown, &StepPanel::showPathsToggled);
     mirror("menu.view.stock", tr("&Stock as cut"), &StepPanel::stockShown, &StepPanel::setStockShown, &StepPanel::showStockToggled);
     if (preview_) {
-        QAction* part = view->addAction(tr("&Part"));
+        QAction* part = view->addAction(tr("Pa&rt"));
         part->setObjectName("menu.view.part");
         part->setCheckable(true);
         part->setChecked(preview_->scene().partShown());
