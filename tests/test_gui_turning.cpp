@@ -74,6 +74,18 @@ class TestGuiTurning : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
 
+    // The station `w` (on lathe-shaft-grinding.taiwa) shown at `size`, its
+    // turned unit chosen: its profile view, nullptr when it is not shown.
+    static ProfileView* shaftProfileView(StationWindow& w, QSize size)
+    {
+        w.resize(size);
+        w.show();
+        if (!QTest::qWaitForWindowExposed(&w)) return nullptr;
+        w.unitList()->selectUnit(0);
+        auto* view = w.findChild<ProfileView*>("turn.view");
+        return view && view->isVisible() ? view : nullptr;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -232,12 +244,8 @@ private slots:
     void reviseAChamfer()
     {
         StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
-        w.resize(1600, 1000);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.unitList()->selectUnit(0);
-        auto* view = w.findChild<ProfileView*>("turn.view");
-        QVERIFY(view && view->isVisible());
+        ProfileView* view = shaftProfileView(w, QSize(1600, 1000));
+        QVERIFY(view);
         QTest::mouseClick(w.findChild<QPushButton*>("turn.reviseChamfers"), Qt::LeftButton);
         QCOMPARE(view->highlightedCorners(), QStringList{"E4.c"});
         QVERIFY(w.findChild<QWidget*>("turn.revision")->isVisible());
@@ -268,12 +276,8 @@ private slots:
     void profileViewZoomsAtThePointer()
     {
         StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
-        w.resize(1280, 672);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.unitList()->selectUnit(0);
-        auto* view = w.findChild<ProfileView*>("turn.view");
-        QVERIFY(view && view->isVisible());
+        ProfileView* view = shaftProfileView(w, QSize(1280, 672));
+        QVERIFY(view);
         auto* scroll = w.findChild<QScrollArea*>("unit.scroll");
         QVERIFY(scroll && scroll->verticalScrollBar()->maximum() > 0);  // the form can scroll
         scroll->ensureWidgetVisible(view);
@@ -308,11 +312,7 @@ private slots:
     void allowancesDrawnTenTimesAsDeep()
     {
         StationWindow w(test::sourcePath("resources/samples/lathe-shaft-grinding.taiwa"));
-        w.resize(1280, 672);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        w.unitList()->selectUnit(0);
-        auto* view = w.findChild<ProfileView*>("turn.view");
+        ProfileView* view = shaftProfileView(w, QSize(1280, 672));
         auto* box = w.findChild<QCheckBox*>("turn.exaggerate");
         QVERIFY(view && box && view->deformed());
         QVERIFY(!box->isChecked());
