@@ -3,6 +3,7 @@
 // three neighbouring points, the boundary by crossing the paths' segments.
 #include "occt/surface_checks.h"
 
+#include "model/translate_noop.h"
 #include "occt/surface_paths.h"
 
 #include <fmt/format.h>
@@ -58,9 +59,12 @@ std::optional<std::string> findUndercut(const std::vector<std::vector<Point3>>& 
             const double diag = std::hypot(c.x - a.x, c.y - a.y, c.z - a.z);
             // A quad folded back by more than 1 µm over its diagonal.
             if (up * quadNormalZ(p, i, j) < -1e-3 * diag)
-                return fmt::format("paths {} and {}, points {} to {} (X {:.3f} Y {:.3f} Z {:.3f}): the surface turns "
-                                   "under itself; the verifying simulation is a height field and cannot see undercuts",
-                                   i + 1, i + 2, j + 1, j + 2, a.x, a.y, a.z);
+                return fmt::format(
+                    TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                         "paths {} and {}, points {} to {} (X {:.3f} Y {:.3f} Z {:.3f}): the surface "
+                                         "turns under itself; the verifying simulation is a height "
+                                         "field and cannot see undercuts"),
+                    i + 1, i + 2, j + 1, j + 2, a.x, a.y, a.z);
         }
     return std::nullopt;
 }
@@ -71,7 +75,9 @@ ConcaveRadius smallestConcaveRadius(const std::vector<std::vector<Point3>>& p)
     const auto consider = [&](const Point3& a, const Point3& b, const Point3& c, std::size_t i, std::size_t j) {
         if (const auto r = concaveRadius(a, b, c); r && *r < out.radius) {
             out.radius = *r;
-            out.where = fmt::format("path {}, point {} (X {:.3f} Y {:.3f} Z {:.3f})", i + 1, j + 1, b.x, b.y, b.z);
+            out.where =
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "path {}, point {} (X {:.3f} Y {:.3f} Z {:.3f})"), i + 1,
+                            j + 1, b.x, b.y, b.z);
         }
     };
     for (std::size_t i = 0; i < p.size(); ++i)

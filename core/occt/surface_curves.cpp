@@ -6,6 +6,8 @@
 #include "occt/surface_curves.h"
 #include "occt/surface_division.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <GCPnts_AbscissaPoint.hxx>
@@ -160,16 +162,20 @@ std::optional<std::string> monotonicRefusal(const Projection& p, int which, int 
 {
     const auto of = [k](const Point2& q) { return k == 0 ? q.x : q.y; };
     if (p.points.size() < 2)
-        return fmt::format("projection {} ({}): it needs at least two points, it has {}", which, planeName(p.plane),
-                           p.points.size());
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "projection {} ({}): {}"), which, planeName(p.plane),
+                           fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it needs at least two points, it has {}"),
+                                       p.points.size()));
     const double dir = of(p.points[1]) - of(p.points[0]);
     for (std::size_t i = 1; i < p.points.size(); ++i) {
         const double d = of(p.points[i]) - of(p.points[i - 1]);
         if (std::abs(d) < kSame || (d > 0) != (dir > 0))
-            return fmt::format("projection {} ({}), point {} ({} {:.4f}): {} must rise or fall all along the curve, "
-                               "it {} after point {}",
-                               which, planeName(p.plane), i + 1, axisName(axis), of(p.points[i]), axisName(axis),
-                               std::abs(d) < kSame ? "stands still" : "turns back", i);
+            return fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "projection {} ({}), point {} ({} {:.4f}): {} must rise or fall all "
+                                                   "along the curve, it {} after point {}"),
+                which, planeName(p.plane), i + 1, axisName(axis), of(p.points[i]), axisName(axis),
+                std::abs(d) < kSame ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "stands still")
+                                    : TAIWA_TRANSLATE_NOOP("taiwa::msg", "turns back"),
+                i);
     }
     return std::nullopt;
 }
@@ -213,11 +219,14 @@ Handle(Geom_BSplineCurve) spaceCurve(const SpaceCurve& c)
 
 Result<SpaceCurve> spaceCurveFromProjections(const Projection& first, const Projection& second, double step)
 {
-    if (!(step > 0.0)) return Failure{fmt::format("the division step must be above 0, not {}", step)};
+    if (!(step > 0.0))
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the division step must be above 0, not {}"), step)};
     const std::array<int, 2> a1 = axesOf(first.plane), a2 = axesOf(second.plane);
     if (first.plane == second.plane)
-        return Failure{fmt::format("projection 2 lies in the same plane ({}) as projection 1: a space curve needs two "
-                                   "planes",
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                        "projection 2 lies in the same plane ({}) as projection 1: a "
+                                                        "space curve needs two planes"),
                                    planeName(first.plane))};
     // The shared axis and where it is in each projection's coordinates.
     int shared = -1, k1 = -1, k2 = -1;
@@ -242,10 +251,10 @@ Result<SpaceCurve> spaceCurveFromProjections(const Projection& first, const Proj
     const auto [lo2, hi2] = range(second, k2);
     const double lo = std::max(lo1, lo2), hi = std::min(hi1, hi2);
     if (hi - lo < 1e-6)
-        return Failure{fmt::format("projection 2 ({}): its {} range {:.4f} to {:.4f} does not overlap projection 1's "
-                                   "({}) {:.4f} to {:.4f}",
-                                   planeName(second.plane), axisName(shared), lo2, hi2, planeName(first.plane), lo1,
-                                   hi1)};
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "projection 2 ({}): its {} range {:.4f} to {:.4f} does not "
+                                                           "overlap projection 1's ({}) {:.4f} to {:.4f}"),
+                        planeName(second.plane), axisName(shared), lo2, hi2, planeName(first.plane), lo1, hi1)};
     try {
         const PlaneCurve c1 = makePlaneCurve(first.points, first.smooth);
         const PlaneCurve c2 = makePlaneCurve(second.points, second.smooth);
@@ -264,53 +273,73 @@ Result<SpaceCurve> spaceCurveFromProjections(const Projection& first, const Proj
         }
         return out;
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("projections {} and {}: OpenCASCADE refused them ({})", planeName(first.plane),
-                                   planeName(second.plane), e.GetMessageString())};
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "projections {} and {}: OpenCASCADE refused them ({})"),
+                        planeName(first.plane), planeName(second.plane), e.GetMessageString())};
     }
 }
 
 Result<std::vector<Point3>> divideByLength(const SpaceCurve& curve, int pieces)
 {
-    return divideNamed(curve, pieces, "the curve");
+    return divideNamed(curve, pieces, 0);
 }
 
 Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second, double stepOver)
 {
-    if (!(stepOver > 0.0)) return Failure{fmt::format("the step-over must be above 0, not {}", stepOver)};
+    if (!(stepOver > 0.0))
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the step-over must be above 0, not {}"), stepOver)};
     double longest = 0.0;
-    int which = 1;
     for (const SpaceCurve* c : {&first, &second}) {
-        const std::string name = fmt::format("curve {}", which++);
-        if (c->points.size() < 2) return Failure{fmt::format("{}: it needs at least two points", name)};
+        const int which = c == &first ? 1 : 2;
+        if (c->points.size() < 2)
+            return Failure{curveRefusal(which, TAIWA_TRANSLATE_NOOP("taiwa::msg", "it needs at least two points"))};
         try {
             Handle(Geom_BSplineCurve) curve = spaceCurve(*c);
             GeomAdaptor_Curve adaptor(curve);
             longest = std::max(longest, GCPnts_AbscissaPoint::Length(adaptor));
         } catch (const Standard_Failure& e) {
-            return Failure{fmt::format("{}: OpenCASCADE could not measure it ({})", name, e.GetMessageString())};
+            return Failure{curveRefusal(
+                which, fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "OpenCASCADE could not measure it ({})"),
+                                   e.GetMessageString()))};
         }
     }
     return std::max(1, static_cast<int>(std::ceil(longest / stepOver - 1e-9)));
 }
 
-// A curve divided into `pieces` equal lengths; refusals name it `name`.
-Result<std::vector<Point3>> divideNamed(const SpaceCurve& curve, int pieces, const std::string& name)
+std::string curveRefusal(int which, const std::string& why)
 {
-    if (pieces < 1) return Failure{fmt::format("{}: it must be divided into at least 1 piece, not {}", name, pieces)};
+    if (which == 1)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "curve 1: {}"), why);
+    if (which == 2)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "curve 2: {}"), why);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the curve: {}"), why);
+}
+
+// A curve divided into `pieces` equal lengths; refusals name it (curveRefusal).
+Result<std::vector<Point3>> divideNamed(const SpaceCurve& curve, int pieces, int which)
+{
+    const auto refuse = [which](const std::string& why) { return Failure{curveRefusal(which, why)}; };
+    if (pieces < 1)
+        return refuse(fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "it must be divided into at least 1 piece, not {}"), pieces));
     if (curve.points.size() < 2)
-        return Failure{fmt::format("{}: it needs at least two points, it has {}", name, curve.points.size())};
+        return refuse(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it needs at least two points, it has {}"),
+                                  curve.points.size()));
     for (std::size_t i = 1; i < curve.points.size(); ++i) {
         const Point3& p = curve.points[i - 1];
         const Point3& q = curve.points[i];
         if (std::abs(q.x - p.x) + std::abs(q.y - p.y) + std::abs(q.z - p.z) < kSame)
-            return Failure{fmt::format("{}: points {} and {} are the same point", name, i, i + 1)};
+            return refuse(
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "points {} and {} are the same point"), i, i + 1));
     }
     try {
         Handle(Geom_BSplineCurve) c = spaceCurve(curve);
         GeomAdaptor_Curve adaptor(c);
         GCPnts_UniformAbscissa div(adaptor, pieces + 1);
         if (!div.IsDone() || div.NbPoints() != pieces + 1)
-            return Failure{fmt::format("{}: OpenCASCADE could not divide it into {} pieces", name, pieces)};
+            return refuse(fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "OpenCASCADE could not divide it into {} pieces"), pieces));
         std::vector<Point3> out;
         for (int i = 1; i <= div.NbPoints(); ++i) {
             const gp_Pnt p = c->Value(div.Parameter(i));
@@ -318,7 +347,8 @@ Result<std::vector<Point3>> divideNamed(const SpaceCurve& curve, int pieces, con
         }
         return out;
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("{}: OpenCASCADE refused it ({})", name, e.GetMessageString())};
+        return refuse(
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "OpenCASCADE refused it ({})"), e.GetMessageString()));
     }
 }
 

@@ -78,6 +78,14 @@ std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRu
 // cannot be measured.
 Result<int> piecesForStepOver(const SpaceCurve& first, const SpaceCurve& second, double stepOver);
 
+// A refusal of a curve after its name, "curve 1: why" (`which`: 1 or 2; 0
+// "the curve: why"). The name is part of the template the station
+// translates (not "{}: {}"): it reads a message by the template with the
+// most words, and a generic one such as "{} has no {}" or "{}: it needs at
+// least two points, it has {}" would otherwise take "curve 1: projection 1
+// (XY)" for one argument.
+std::string curveRefusal(int which, const std::string& why);
+
 // Both curves divided into `pieces` equal lengths and joined (refusals as
 // divideByLength, naming "curve 1" or "curve 2").
 Result<RuledSurface> ruledSurface(const SpaceCurve& first, const SpaceCurve& second, int pieces);

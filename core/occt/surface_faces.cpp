@@ -4,6 +4,8 @@
 // refused, the paths' own error measured.
 #include "occt/surface_step.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,7 +26,8 @@ std::string at(double x, double y) { return fmt::format("X {:.3f} Y {:.3f}", x, 
 
 Result<SampledFaces> sampleStepFaces(const std::string& file, double spacing)
 {
-    if (!(spacing > 0.0) || !std::isfinite(spacing)) return Failure{fmt::format("the spacing {} must be above 0", spacing)};
+    if (!(spacing > 0.0) || !std::isfinite(spacing))
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the spacing {} must be above 0"), spacing)};
     auto mesh = importStepFaces(file, kDeflection);
     if (!mesh) return mesh.failure();
     const MeshIndex index(std::move(*mesh));
@@ -39,16 +42,19 @@ Result<SampledFaces> sampleStepFaces(const std::string& file, double spacing)
         if (area < 1e-12) continue;  // standing on edge: a vertical wall, not a face under another
         const double x = (a.x + b.x + c.x) / 3, y = (a.y + b.y + c.y) / 3, z = (a.z + b.z + c.z) / 3;
         if (const auto top = drop.surfaceZ(x, y); top && *top > z + kUnder)
-            return Failure{fmt::format("{}: a face lies under another at {} (Z {:.3f} under Z {:.3f}); a surface "
-                                       "machined from above has none (the verifying simulation is a height field)",
-                                       file, at(x, y), z, *top)};
+            return Failure{fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: a face lies under another at {} (Z {:.3f} under Z {:.3f}); "
+                                                   "a surface machined from above has none (the verifying "
+                                                   "simulation is a height field)"),
+                file, at(x, y), z, *top)};
     }
     const double x0 = index.minX(), x1 = index.maxX(), y0 = index.minY(), y1 = index.maxY();
     const int nx = std::max(1, static_cast<int>(std::ceil((x1 - x0) / spacing - 1e-9)));
     const int ny = std::max(1, static_cast<int>(std::ceil((y1 - y0) / spacing - 1e-9)));
     if (static_cast<double>(nx + 1) * (ny + 1) > kMaxPoints)
-        return Failure{fmt::format("{}: {} × {} points at a spacing of {} mm; a surface holds at most {} (give a larger "
-                                   "spacing)",
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                        "{}: {} × {} points at a spacing of {} mm; a surface holds at "
+                                                        "most {} (give a larger spacing)"),
                                    file, nx + 1, ny + 1, spacing, kMaxPoints)};
     // The grid spans the rectangle exactly: its steps are at most `spacing`.
     const double dx = (x1 - x0) / nx, dy = (y1 - y0) / ny;
@@ -62,9 +68,11 @@ Result<SampledFaces> sampleStepFaces(const std::string& file, double spacing)
             const double xi = std::clamp(x, x0 + 1e-7, x1 - 1e-7), yi = std::clamp(y, y0 + 1e-7, y1 - 1e-7);
             const auto z = drop.surfaceZ(xi, yi);
             if (!z)
-                return Failure{fmt::format("{}: no face lies under {}: the faces seen from above leave a hole or are "
-                                           "not a rectangle; the surface must cover its X-Y rectangle",
-                                           file, at(x, y))};
+                return Failure{fmt::format(
+                    TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: no face lies under {}: the faces seen from above leave a "
+                                                       "hole or are not a rectangle; the surface must cover "
+                                                       "its X-Y rectangle"),
+                    file, at(x, y))};
             path.push_back({x, y, *z});
         }
         out.paths.push_back(std::move(path));

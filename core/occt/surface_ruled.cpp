@@ -5,6 +5,8 @@
 #include "occt/surface_curves.h"
 #include "occt/surface_division.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <GeomLib_IsPlanarSurface.hxx>
@@ -49,20 +51,23 @@ std::vector<std::vector<Point3>> pathsOfRuled(const RuledSurface& s, int alongRu
 
 Result<RuledSurface> ruledSurface(const SpaceCurve& first, const SpaceCurve& second, int pieces)
 {
-    auto a = divideNamed(first, pieces, "curve 1");
+    auto a = divideNamed(first, pieces, 1);
     if (!a) return Failure{a.error()};
-    auto b = divideNamed(second, pieces, "curve 2");
+    auto b = divideNamed(second, pieces, 2);
     if (!b) return Failure{b.error()};
     return RuledSurface{std::move(*a), std::move(*b)};
 }
 
 Result<RoughAndFinish> roughAndFinishSurfaces(const SpaceCurve& first, const SpaceCurve& second, int n, int m)
 {
-    if (n < 1) return Failure{fmt::format("N: the roughing surface needs at least 1 piece, not {}", n)};
+    if (n < 1)
+        return Failure{fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "N: the roughing surface needs at least 1 piece, not {}"), n)};
     if (m <= n)
-        return Failure{fmt::format("M: the finishing surface's pieces (M = {}) must be more than the roughing "
-                                   "surface's (N = {})",
-                                   m, n)};
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "M: the finishing surface's pieces (M = {}) must be more "
+                                                           "than the roughing surface's (N = {})"),
+                        m, n)};
     auto r = ruledSurface(first, second, n);
     if (!r) return Failure{r.error()};
     auto f = ruledSurface(first, second, m);
@@ -74,7 +79,8 @@ Result<Plane3> planeOf(const RuledSurface& s, double tolerance)
 {
     const int n = static_cast<int>(s.first.size());
     if (n < 2 || s.second.size() != s.first.size())
-        return Failure{"the ruled surface needs two curves of the same number of points, at least two"};
+        return Failure{TAIWA_TRANSLATE_NOOP(
+            "taiwa::msg", "the ruled surface needs two curves of the same number of points, at least two")};
     try {
         TColgp_Array2OfPnt poles(1, n, 1, 2);
         TColStd_Array1OfReal uk(1, n);
@@ -95,14 +101,17 @@ Result<Plane3> planeOf(const RuledSurface& s, double tolerance)
         vm.SetValue(2, 2);
         Handle(Geom_BSplineSurface) surf = new Geom_BSplineSurface(poles, uk, vk, um, vm, 1, 1);
         GeomLib_IsPlanarSurface planar(surf, tolerance);
-        if (!planar.IsPlanar()) return Failure{fmt::format("the ruled surface is not a plane within {} mm", tolerance)};
+        if (!planar.IsPlanar())
+            return Failure{fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "the ruled surface is not a plane within {} mm"), tolerance)};
         const gp_Pln pln = planar.Plan();
         gp_Dir d = pln.Axis().Direction();
         if (d.Z() < 0 || (d.Z() == 0 && (d.Y() < 0 || (d.Y() == 0 && d.X() < 0)))) d.Reverse();
         const gp_Pnt o = pln.Location();
         return Plane3{{o.X(), o.Y(), o.Z()}, {d.X(), d.Y(), d.Z()}};
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("the ruled surface: OpenCASCADE refused it ({})", e.GetMessageString())};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the ruled surface: OpenCASCADE refused it ({})"),
+                                   e.GetMessageString())};
     }
 }
 

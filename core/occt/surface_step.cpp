@@ -5,6 +5,8 @@
 // one 60 × 60 mm face; the grid takes a fraction of a second).
 #include "occt/surface_step.h"
 
+#include "model/translate_noop.h"
+
 #include <fmt/format.h>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -162,12 +164,15 @@ TopoDS_Face faceThrough(const std::vector<std::vector<Point3>>& paths, SurfaceFi
 Result<bool> checkedPaths(const std::vector<std::vector<Point3>>& paths)
 {
     if (paths.size() < 2 || paths.front().size() < 2)
-        return Failure{fmt::format("the surface's paths: at least 2 paths of 2 points are needed, there are {}",
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                        "the surface's paths: at least 2 paths of 2 points are needed, "
+                                                        "there are {}"),
                                    paths.size())};
     for (std::size_t i = 1; i < paths.size(); ++i)
         if (paths[i].size() != paths.front().size())
-            return Failure{fmt::format("the surface's paths: path {} has {} points, path 1 has {}", i + 1,
-                                       paths[i].size(), paths.front().size())};
+            return Failure{fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "the surface's paths: path {} has {} points, path 1 has {}"), i + 1,
+                paths[i].size(), paths.front().size())};
     return true;
 }
 
@@ -179,16 +184,21 @@ Result<bool> exportSurfaceStep(const std::vector<std::vector<Point3>>& paths, co
     quiet();
     try {
         const TopoDS_Face face = faceThrough(paths, fit);
-        if (face.IsNull()) return Failure{"the surface's paths: OpenCASCADE could not interpolate them"};
+        if (face.IsNull())
+            return Failure{
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "the surface's paths: OpenCASCADE could not interpolate them")};
         STEPControl_Writer writer;
         Interface_Static::SetCVal("write.step.unit", "MM");
         if (writer.Transfer(face, STEPControl_AsIs) != IFSelect_RetDone)
-            return Failure{fmt::format("{}: OpenCASCADE could not put the surface into STEP", file)};
+            return Failure{fmt::format(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE could not put the surface into STEP"), file)};
         if (writer.Write(file.c_str()) != IFSelect_RetDone)
-            return Failure{fmt::format("{}: the STEP file could not be written", file)};
+            return Failure{
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: the STEP file could not be written"), file)};
         return true;
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("{}: OpenCASCADE refused the surface ({})", file, e.GetMessageString())};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE refused the surface ({})"), file,
+                                   e.GetMessageString())};
     }
 }
 
@@ -200,7 +210,9 @@ Result<std::string> surfaceStepText(const std::vector<std::vector<Point3>>& path
     std::error_code ec;
     const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec) /
                                       fmt::format("taiwa-surface-{}-{}.step", ::getpid(), ++made);
-    if (ec) return Failure{fmt::format("no temporary folder for the STEP file: {}", ec.message())};
+    if (ec)
+        return Failure{
+            fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no temporary folder for the STEP file: {}"), ec.message())};
     const auto written = exportSurfaceStep(paths, tmp.string(), fit);
     std::string text;
     if (written) {
@@ -209,33 +221,42 @@ Result<std::string> surfaceStepText(const std::vector<std::vector<Point3>>& path
     }
     std::filesystem::remove(tmp, ec);
     if (!written) return Failure{written.error()};
-    if (text.empty()) return Failure{fmt::format("{}: the STEP file written could not be read back", tmp.string())};
+    if (text.empty())
+        return Failure{fmt::format(
+            TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: the STEP file written could not be read back"), tmp.string())};
     return text;
 }
 
 Result<TriangleMesh> importStepFaces(const std::string& file, double deflection)
 {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) return Failure{fmt::format("{}: no such file", file)};
+    if (!std::filesystem::is_regular_file(file, ec))
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: no such file"), file)};
     quiet();
     try {
         STEPControl_Reader reader;
         if (reader.ReadFile(file.c_str()) != IFSelect_RetDone)
-            return Failure{fmt::format("{}: not a STEP file OpenCASCADE can read", file)};
+            return Failure{
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: not a STEP file OpenCASCADE can read"), file)};
         reader.TransferRoots();
         const TopoDS_Shape shape = reader.OneShape();
-        if (shape.IsNull()) return Failure{fmt::format("{}: the STEP file holds no shape", file)};
+        if (shape.IsNull())
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: the STEP file holds no shape"), file)};
         TriangleMesh mesh;
         int faces = 0;
         for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) {
             ++faces;
             meshFace(TopoDS::Face(ex.Current()), deflection, mesh);
         }
-        if (faces == 0) return Failure{fmt::format("{}: the STEP file holds no face", file)};
-        if (mesh.triangles.empty()) return Failure{fmt::format("{}: its {} faces gave no triangles", file, faces)};
+        if (faces == 0)
+            return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: the STEP file holds no face"), file)};
+        if (mesh.triangles.empty())
+            return Failure{
+                fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: its {} faces gave no triangles"), file, faces)};
         return mesh;
     } catch (const Standard_Failure& e) {
-        return Failure{fmt::format("{}: OpenCASCADE refused it ({})", file, e.GetMessageString())};
+        return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: OpenCASCADE refused it ({})"), file,
+                                   e.GetMessageString())};
     }
 }
 

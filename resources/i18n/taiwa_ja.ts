@@ -4278,12 +4278,116 @@ Theirs: %6</source>
             <translation>{0} は {1} が狭くなる ({2}, {3}) 付近に入りません。そこで輪郭に食い込みます。小さいエンドミルを指定するか溝を広げてください</translation>
         </message>
         <message>
+            <source>curve 1</source>
+            <translation>曲線 1</translation>
+        </message>
+        <message>
+            <source>curve 2</source>
+            <translation>曲線 2</translation>
+        </message>
+        <message>
             <source>the figure has no contour {}; its open contours: {}</source>
             <translation>図形に輪郭 {0} はありません。開いた輪郭: {1}</translation>
         </message>
         <message>
             <source>contour {} is closed; a projection runs from one end to the other</source>
             <translation>輪郭 {0} は閉じています。投影は一端から他端へ向かう輪郭です</translation>
+        </message>
+        <message>
+            <source>{} has one point; give two or more [x, y, z]</source>
+            <translation>{} の点が 1 つだけです。2 点以上の [x, y, z] を入力してください</translation>
+        </message>
+        <message>
+            <source>{} has neither points [x, y, z] nor two projections (XY, YZ or ZX)</source>
+            <translation>{} には点 [x, y, z] も 2 つの投影 (XY、YZ または ZX) もありません</translation>
+        </message>
+        <message>
+            <source>{}: projection {} is in plane "{}"; give XY, YZ or ZX</source>
+            <translation>{}: 投影 {} の平面が "{}" です。XY、YZ または ZX にしてください</translation>
+        </message>
+        <message>
+            <source>projection {}: {}</source>
+            <translation>投影 {}: {}</translation>
+        </message>
+        <message>
+            <source>{} "{}" does not read: give points "x, y, z; x, y, z" or two projections "XY: a, b; a, b / ZX: a, b; a, b"</source>
+            <translation>{} "{}" が読めません。点 "x, y, z; x, y, z" か 2 つの投影 "XY: a, b; a, b / ZX: a, b; a, b" を入力してください</translation>
+        </message>
+        <message>
+            <source>the surface needs at least 2 paths of 2 points or more</source>
+            <translation>曲面には 2 点以上のパスが少なくとも 2 本必要です</translation>
+        </message>
+        <message>
+            <source>path {} has {} points; every path has as many as the first ({})</source>
+            <translation>パス {} の点は {} 個です。どのパスも最初のパスと同じ数 ({}) の点が必要です</translation>
+        </message>
+        <message>
+            <source>N {} must be 1 or more: the roughing surface needs pieces</source>
+            <translation>N {} は 1 以上にしてください。荒加工の曲面には分割が必要です</translation>
+        </message>
+        <message>
+            <source>give M (the finishing surface's pieces) or the step along the curves that implies it</source>
+            <translation>M (仕上げの曲面の分割数) か、それを決める曲線に沿ったピッチを入力してください</translation>
+        </message>
+        <message>
+            <source>N {} is not less than M {}: the finishing surface must be divided more finely than the roughing surface (N &lt; M)</source>
+            <translation>N {} が M {} より小さくありません: 仕上げの曲面は荒加工の曲面より細かく分けてください (N &lt; M)</translation>
+        </message>
+        <message>
+            <source>the surface rises to Z {} above the stock top (Z 0); the surface is cut into the stock from above</source>
+            <translation>曲面が素材上面 (Z 0) より上の Z {} まで上がっています。曲面は素材を上から削って作ります</translation>
+        </message>
+        <message>
+            <source>the surface goes down to Z {}, through the stock's bottom (height {})</source>
+            <translation>曲面が Z {} まで下がり、素材の底 (高さ {}) を突き抜けています</translation>
+        </message>
+        <message>
+            <source>the scallop height {} must be greater than 0</source>
+            <translation>カスプ高さ {} は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>the allowance {} must be 0 or more</source>
+            <translation>仕上げ代 {} は 0 以上にしてください</translation>
+        </message>
+        <message>
+            <source>the boundary "{}" does not read: give paths of points "x, y, z; x, y, z" separated by "/"</source>
+            <translation>境界 "{}" が読めません。点 "x, y, z; x, y, z" のパスを "/" で区切って入力してください</translation>
+        </message>
+        <message>
+            <source>the boundary makes no surface: give two or more paths with the same number of points</source>
+            <translation>境界が曲面になりません。同じ点数のパスを 2 本以上入力してください</translation>
+        </message>
+        <message>
+            <source>the boundary surface never meets the surface: no path would stop at it; move it onto the surface or leave it out</source>
+            <translation>境界の曲面が加工する曲面とどこでも交わらず、そこで止まるパスがありません。曲面と交わる位置に移すか、境界をなくしてください</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but is not a ball end mill</source>
+            <translation>{} が "surface" に指定されていますが、ボールエンドミルではありません</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but its radius {} is not less than the surface's smallest concave radius {} ({}); {} would fit</source>
+            <translation>{} が "surface" に指定されていますが、半径 {} が曲面の最小凹半径 {} ({}) より小さくありません。{} なら入ります</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but its radius {} is not less than the surface's smallest concave radius {} ({}), and the library has no smaller ball end mill</source>
+            <translation>{} が "surface" に指定されていますが、半径 {} が曲面の最小凹半径 {} ({}) より小さくなく、ライブラリにそれより小さいボールエンドミルもありません</translation>
+        </message>
+        <message>
+            <source>the tool library has no ball end mill; add one</source>
+            <translation>工具ライブラリにボールエンドミルがありません。追加してください</translation>
+        </message>
+        <message>
+            <source>the tool library has no ball end mill with a radius less than the surface's smallest concave radius {} ({}); add a smaller one</source>
+            <translation>工具ライブラリに、半径が曲面の最小凹半径 {} ({}) より小さいボールエンドミルがありません。小さいものを追加してください</translation>
+        </message>
+        <message>
+            <source>largest ball end mill (Ø{:g} mm); the surface has no concave bend</source>
+            <translation>最大のボールエンドミル (Ø{} mm)。曲面に凹の曲がりはありません</translation>
+        </message>
+        <message>
+            <source>largest ball end mill (Ø{:g} mm) under the smallest concave radius {} ({})</source>
+            <translation>最小凹半径 {1} ({2}) より小さい最大のボールエンドミル (Ø{0} mm)</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -4548,6 +4652,182 @@ Theirs: %6</source>
         <message>
             <source>{}: OpenCASCADE failed reading it: {}</source>
             <translation>{}: OpenCASCADE が読み込みに失敗しました: {}</translation>
+        </message>
+        <message>
+            <source>paths {} and {}, points {} to {} (X {:.3f} Y {:.3f} Z {:.3f}): the surface turns under itself; the verifying simulation is a height field and cannot see undercuts</source>
+            <translation>パス {}・{} の点 {}～{} (X {} Y {} Z {}): 曲面が自身の下に回り込んでいます。検証シミュレーションは高さマップなので、アンダーカットは見えません</translation>
+        </message>
+        <message>
+            <source>path {}, point {} (X {:.3f} Y {:.3f} Z {:.3f})</source>
+            <translation>パス {} の点 {} (X {} Y {} Z {})</translation>
+        </message>
+        <message>
+            <source>projection {} ({}): {}</source>
+            <translation>投影 {} ({}): {}</translation>
+        </message>
+        <message>
+            <source>it needs at least two points, it has {}</source>
+            <translation>2 点以上必要ですが、{} 点しかありません</translation>
+        </message>
+        <message>
+            <source>projection {} ({}), point {} ({} {:.4f}): {} must rise or fall all along the curve, it {} after point {}</source>
+            <translation>投影 {0} ({1}) の点 {2} ({3} {4}): {5} は曲線全体で増え続けるか減り続けなければなりませんが、点 {7} の後で{6}</translation>
+        </message>
+        <message>
+            <source>stands still</source>
+            <translation>変わっていません</translation>
+        </message>
+        <message>
+            <source>turns back</source>
+            <translation>逆戻りしています</translation>
+        </message>
+        <message>
+            <source>the division step must be above 0, not {}</source>
+            <translation>分割ピッチは 0 より大きくしてください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>projection 2 lies in the same plane ({}) as projection 1: a space curve needs two planes</source>
+            <translation>投影 2 が投影 1 と同じ平面 ({}) にあります。空間曲線には 2 つの平面が必要です</translation>
+        </message>
+        <message>
+            <source>projection 2 ({}): its {} range {:.4f} to {:.4f} does not overlap projection 1's ({}) {:.4f} to {:.4f}</source>
+            <translation>投影 2 ({}): {} の範囲 {}～{} が投影 1 ({}) の {}～{} と重なりません</translation>
+        </message>
+        <message>
+            <source>projections {} and {}: OpenCASCADE refused them ({})</source>
+            <translation>投影 {} と {}: OpenCASCADE が受け付けませんでした ({})</translation>
+        </message>
+        <message>
+            <source>the step-over must be above 0, not {}</source>
+            <translation>曲線に沿ったピッチは 0 より大きくしてください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>it needs at least two points</source>
+            <translation>2 点以上必要です</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not measure it ({})</source>
+            <translation>OpenCASCADE で長さを測れませんでした ({})</translation>
+        </message>
+        <message>
+            <source>curve 1: {}</source>
+            <translation>曲線 1: {}</translation>
+        </message>
+        <message>
+            <source>curve 2: {}</source>
+            <translation>曲線 2: {}</translation>
+        </message>
+        <message>
+            <source>the curve: {}</source>
+            <translation>曲線: {}</translation>
+        </message>
+        <message>
+            <source>it must be divided into at least 1 piece, not {}</source>
+            <translation>1 つ以上に分割してください ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>points {} and {} are the same point</source>
+            <translation>点 {} と点 {} が同じ点です</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not divide it into {} pieces</source>
+            <translation>OpenCASCADE で {} 個に分割できませんでした</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE refused it ({})</source>
+            <translation>OpenCASCADE が受け付けませんでした ({})</translation>
+        </message>
+        <message>
+            <source>the spacing {} must be above 0</source>
+            <translation>間隔 {} は 0 より大きくしてください</translation>
+        </message>
+        <message>
+            <source>{}: a face lies under another at {} (Z {:.3f} under Z {:.3f}); a surface machined from above has none (the verifying simulation is a height field)</source>
+            <translation>{}: {} で面が別の面の下にあります (Z {} が Z {} の下)。上から削る曲面にこれがあってはなりません (検証シミュレーションは高さマップです)</translation>
+        </message>
+        <message>
+            <source>{}: {} × {} points at a spacing of {} mm; a surface holds at most {} (give a larger spacing)</source>
+            <translation>{0}: 間隔 {3} mm では {1} × {2} 点になります。曲面は最大 {4} 点までです (間隔を大きくしてください)</translation>
+        </message>
+        <message>
+            <source>{}: no face lies under {}: the faces seen from above leave a hole or are not a rectangle; the surface must cover its X-Y rectangle</source>
+            <translation>{}: {} の下に面がありません。上から見た面に穴があるか、長方形になっていません。曲面は X-Y の長方形全体を覆う必要があります</translation>
+        </message>
+        <message>
+            <source>N: the roughing surface needs at least 1 piece, not {}</source>
+            <translation>N: 荒加工の曲面には 1 つ以上の分割が必要です ({} ではなく)</translation>
+        </message>
+        <message>
+            <source>M: the finishing surface's pieces (M = {}) must be more than the roughing surface's (N = {})</source>
+            <translation>M: 仕上げの曲面の分割数 (M = {}) は荒加工の曲面の分割数 (N = {}) より多くしてください</translation>
+        </message>
+        <message>
+            <source>the ruled surface needs two curves of the same number of points, at least two</source>
+            <translation>線織面には同じ点数 (2 点以上) の曲線が 2 本必要です</translation>
+        </message>
+        <message>
+            <source>the ruled surface is not a plane within {} mm</source>
+            <translation>線織面が {} mm 以内で平面になっていません</translation>
+        </message>
+        <message>
+            <source>the ruled surface: OpenCASCADE refused it ({})</source>
+            <translation>線織面: OpenCASCADE が受け付けませんでした ({})</translation>
+        </message>
+        <message>
+            <source>the surface's paths: at least 2 paths of 2 points are needed, there are {}</source>
+            <translation>曲面のパス: 2 点以上のパスが少なくとも 2 本必要ですが、{} 本です</translation>
+        </message>
+        <message>
+            <source>the surface's paths: path {} has {} points, path 1 has {}</source>
+            <translation>曲面のパス: パス {} の点は {} 個ですが、パス 1 は {} 個です</translation>
+        </message>
+        <message>
+            <source>the surface's paths: OpenCASCADE could not interpolate them</source>
+            <translation>曲面のパス: OpenCASCADE で補間できませんでした</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE could not put the surface into STEP</source>
+            <translation>{}: OpenCASCADE で曲面を STEP に変換できませんでした</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file could not be written</source>
+            <translation>{}: STEP ファイルを書き込めませんでした</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE refused the surface ({})</source>
+            <translation>{}: OpenCASCADE が曲面を受け付けませんでした ({})</translation>
+        </message>
+        <message>
+            <source>no temporary folder for the STEP file: {}</source>
+            <translation>STEP ファイル用の一時フォルダがありません: {}</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file written could not be read back</source>
+            <translation>{}: 書き込んだ STEP ファイルを読み戻せませんでした</translation>
+        </message>
+        <message>
+            <source>{}: no such file</source>
+            <translation>{}: ファイルがありません</translation>
+        </message>
+        <message>
+            <source>{}: not a STEP file OpenCASCADE can read</source>
+            <translation>{}: OpenCASCADE で読める STEP ファイルではありません</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file holds no shape</source>
+            <translation>{}: STEP ファイルに形状がありません</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file holds no face</source>
+            <translation>{}: STEP ファイルに面がありません</translation>
+        </message>
+        <message>
+            <source>{}: its {} faces gave no triangles</source>
+            <translation>{}: {} 個の面から三角形が作れませんでした</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE refused it ({})</source>
+            <translation>{}: OpenCASCADE が受け付けませんでした ({})</translation>
         </message>
         <message>
             <source>{} to {}</source>

@@ -4278,12 +4278,116 @@ Theirs: %6</source>
             <translation>{0} 在 {1} 变窄的（{2}, {3}）附近放不下：刀具会切入轮廓；请指定更小的立铣刀或加宽通道</translation>
         </message>
         <message>
+            <source>curve 1</source>
+            <translation>曲线 1</translation>
+        </message>
+        <message>
+            <source>curve 2</source>
+            <translation>曲线 2</translation>
+        </message>
+        <message>
             <source>the figure has no contour {}; its open contours: {}</source>
             <translation>图形中没有轮廓 {0}；其开放轮廓: {1}</translation>
         </message>
         <message>
             <source>contour {} is closed; a projection runs from one end to the other</source>
             <translation>轮廓 {0} 是封闭的；投影应从一端到另一端</translation>
+        </message>
+        <message>
+            <source>{} has one point; give two or more [x, y, z]</source>
+            <translation>{} 只有一个点；请给出两个或更多点 [x, y, z]</translation>
+        </message>
+        <message>
+            <source>{} has neither points [x, y, z] nor two projections (XY, YZ or ZX)</source>
+            <translation>{} 既没有点 [x, y, z]，也没有两个投影（XY、YZ 或 ZX）</translation>
+        </message>
+        <message>
+            <source>{}: projection {} is in plane "{}"; give XY, YZ or ZX</source>
+            <translation>{}：投影 {} 位于平面 "{}"；请给出 XY、YZ 或 ZX</translation>
+        </message>
+        <message>
+            <source>projection {}: {}</source>
+            <translation>投影 {}：{}</translation>
+        </message>
+        <message>
+            <source>{} "{}" does not read: give points "x, y, z; x, y, z" or two projections "XY: a, b; a, b / ZX: a, b; a, b"</source>
+            <translation>无法读取{} "{}"：请给出点 "x, y, z; x, y, z" 或两个投影 "XY: a, b; a, b / ZX: a, b; a, b"</translation>
+        </message>
+        <message>
+            <source>the surface needs at least 2 paths of 2 points or more</source>
+            <translation>曲面至少需要 2 条路径，每条 2 个点或更多</translation>
+        </message>
+        <message>
+            <source>path {} has {} points; every path has as many as the first ({})</source>
+            <translation>路径 {} 有 {} 个点；每条路径的点数都应与第一条相同（{}）</translation>
+        </message>
+        <message>
+            <source>N {} must be 1 or more: the roughing surface needs pieces</source>
+            <translation>N {} 必须为 1 或更大：粗加工曲面需要分段</translation>
+        </message>
+        <message>
+            <source>give M (the finishing surface's pieces) or the step along the curves that implies it</source>
+            <translation>请给出 M（精加工曲面的分段数）或决定它的沿曲线步距</translation>
+        </message>
+        <message>
+            <source>N {} is not less than M {}: the finishing surface must be divided more finely than the roughing surface (N &lt; M)</source>
+            <translation>N {} 不小于 M {}：精加工曲面的分段必须比粗加工曲面更细（N &lt; M）</translation>
+        </message>
+        <message>
+            <source>the surface rises to Z {} above the stock top (Z 0); the surface is cut into the stock from above</source>
+            <translation>曲面升至 Z {}，高于毛坯顶面（Z 0）；曲面是从上方切入毛坯加工的</translation>
+        </message>
+        <message>
+            <source>the surface goes down to Z {}, through the stock's bottom (height {})</source>
+            <translation>曲面下降至 Z {}，穿过了毛坯底面（高度 {}）</translation>
+        </message>
+        <message>
+            <source>the scallop height {} must be greater than 0</source>
+            <translation>残留高度 {} 必须大于 0</translation>
+        </message>
+        <message>
+            <source>the allowance {} must be 0 or more</source>
+            <translation>余量 {} 必须为 0 或更大</translation>
+        </message>
+        <message>
+            <source>the boundary "{}" does not read: give paths of points "x, y, z; x, y, z" separated by "/"</source>
+            <translation>无法读取边界 "{}"：请给出由点 "x, y, z; x, y, z" 组成、以 "/" 分隔的路径</translation>
+        </message>
+        <message>
+            <source>the boundary makes no surface: give two or more paths with the same number of points</source>
+            <translation>边界构不成曲面：请给出两条或更多点数相同的路径</translation>
+        </message>
+        <message>
+            <source>the boundary surface never meets the surface: no path would stop at it; move it onto the surface or leave it out</source>
+            <translation>边界曲面与加工曲面没有交点：没有路径会在此停止；请把它移到曲面上，或去掉边界</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but is not a ball end mill</source>
+            <translation>{} 被指定用于 "surface"，但不是球头立铣刀</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but its radius {} is not less than the surface's smallest concave radius {} ({}); {} would fit</source>
+            <translation>{} 被指定用于 "surface"，但其半径 {} 不小于曲面的最小凹半径 {}（{}）；{} 可以放入</translation>
+        </message>
+        <message>
+            <source>{} is pinned for "surface" but its radius {} is not less than the surface's smallest concave radius {} ({}), and the library has no smaller ball end mill</source>
+            <translation>{} 被指定用于 "surface"，但其半径 {} 不小于曲面的最小凹半径 {}（{}），且刀具库中没有更小的球头立铣刀</translation>
+        </message>
+        <message>
+            <source>the tool library has no ball end mill; add one</source>
+            <translation>刀具库中没有球头立铣刀；请添加一把</translation>
+        </message>
+        <message>
+            <source>the tool library has no ball end mill with a radius less than the surface's smallest concave radius {} ({}); add a smaller one</source>
+            <translation>刀具库中没有半径小于曲面最小凹半径 {}（{}）的球头立铣刀；请添加更小的</translation>
+        </message>
+        <message>
+            <source>largest ball end mill (Ø{:g} mm); the surface has no concave bend</source>
+            <translation>最大的球头立铣刀（Ø{} mm）；曲面没有凹弯</translation>
+        </message>
+        <message>
+            <source>largest ball end mill (Ø{:g} mm) under the smallest concave radius {} ({})</source>
+            <translation>小于最小凹半径 {1}（{2}）的最大球头立铣刀（Ø{0} mm）</translation>
         </message>
         <message>
             <source>a TURN unit</source>
@@ -4548,6 +4652,182 @@ Theirs: %6</source>
         <message>
             <source>{}: OpenCASCADE failed reading it: {}</source>
             <translation>{}：OpenCASCADE 读取失败：{}</translation>
+        </message>
+        <message>
+            <source>paths {} and {}, points {} to {} (X {:.3f} Y {:.3f} Z {:.3f}): the surface turns under itself; the verifying simulation is a height field and cannot see undercuts</source>
+            <translation>路径 {} 和 {}，点 {} 至 {}（X {} Y {} Z {}）：曲面折回到自身下方；验证仿真是高度场，看不到倒扣</translation>
+        </message>
+        <message>
+            <source>path {}, point {} (X {:.3f} Y {:.3f} Z {:.3f})</source>
+            <translation>路径 {} 的点 {}（X {} Y {} Z {}）</translation>
+        </message>
+        <message>
+            <source>projection {} ({}): {}</source>
+            <translation>投影 {}（{}）：{}</translation>
+        </message>
+        <message>
+            <source>it needs at least two points, it has {}</source>
+            <translation>至少需要两个点，现在只有 {} 个</translation>
+        </message>
+        <message>
+            <source>projection {} ({}), point {} ({} {:.4f}): {} must rise or fall all along the curve, it {} after point {}</source>
+            <translation>投影 {0}（{1}），点 {2}（{3} {4}）：{5} 必须沿整条曲线单调增加或减少，但在点 {7} 之后{6}</translation>
+        </message>
+        <message>
+            <source>stands still</source>
+            <translation>保持不变</translation>
+        </message>
+        <message>
+            <source>turns back</source>
+            <translation>折返</translation>
+        </message>
+        <message>
+            <source>the division step must be above 0, not {}</source>
+            <translation>分割步距必须大于 0，而不是 {}</translation>
+        </message>
+        <message>
+            <source>projection 2 lies in the same plane ({}) as projection 1: a space curve needs two planes</source>
+            <translation>投影 2 与投影 1 位于同一平面（{}）：空间曲线需要两个平面</translation>
+        </message>
+        <message>
+            <source>projection 2 ({}): its {} range {:.4f} to {:.4f} does not overlap projection 1's ({}) {:.4f} to {:.4f}</source>
+            <translation>投影 2（{}）：其 {} 范围 {} 至 {} 与投影 1（{}）的 {} 至 {} 不重叠</translation>
+        </message>
+        <message>
+            <source>projections {} and {}: OpenCASCADE refused them ({})</source>
+            <translation>投影 {} 和 {}：OpenCASCADE 拒绝了它们（{}）</translation>
+        </message>
+        <message>
+            <source>the step-over must be above 0, not {}</source>
+            <translation>沿曲线的步距必须大于 0，而不是 {}</translation>
+        </message>
+        <message>
+            <source>it needs at least two points</source>
+            <translation>至少需要两个点</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not measure it ({})</source>
+            <translation>OpenCASCADE 无法测量其长度（{}）</translation>
+        </message>
+        <message>
+            <source>curve 1: {}</source>
+            <translation>曲线 1：{}</translation>
+        </message>
+        <message>
+            <source>curve 2: {}</source>
+            <translation>曲线 2：{}</translation>
+        </message>
+        <message>
+            <source>the curve: {}</source>
+            <translation>曲线：{}</translation>
+        </message>
+        <message>
+            <source>it must be divided into at least 1 piece, not {}</source>
+            <translation>必须至少分成 1 段，而不是 {}</translation>
+        </message>
+        <message>
+            <source>points {} and {} are the same point</source>
+            <translation>点 {} 与点 {} 是同一点</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE could not divide it into {} pieces</source>
+            <translation>OpenCASCADE 无法将其分成 {} 段</translation>
+        </message>
+        <message>
+            <source>OpenCASCADE refused it ({})</source>
+            <translation>OpenCASCADE 拒绝了它（{}）</translation>
+        </message>
+        <message>
+            <source>the spacing {} must be above 0</source>
+            <translation>间距 {} 必须大于 0</translation>
+        </message>
+        <message>
+            <source>{}: a face lies under another at {} (Z {:.3f} under Z {:.3f}); a surface machined from above has none (the verifying simulation is a height field)</source>
+            <translation>{}：在 {} 处有一个面位于另一个面之下（Z {} 在 Z {} 之下）；从上方加工的曲面不能有这种情况（验证仿真是高度场）</translation>
+        </message>
+        <message>
+            <source>{}: {} × {} points at a spacing of {} mm; a surface holds at most {} (give a larger spacing)</source>
+            <translation>{0}：以 {3} mm 的间距为 {1} × {2} 个点；曲面最多容纳 {4} 个点（请增大间距）</translation>
+        </message>
+        <message>
+            <source>{}: no face lies under {}: the faces seen from above leave a hole or are not a rectangle; the surface must cover its X-Y rectangle</source>
+            <translation>{}：{} 下方没有面：从上方看这些面留有孔或不成矩形；曲面必须覆盖其 X-Y 矩形</translation>
+        </message>
+        <message>
+            <source>N: the roughing surface needs at least 1 piece, not {}</source>
+            <translation>N：粗加工曲面至少需要 1 段，而不是 {}</translation>
+        </message>
+        <message>
+            <source>M: the finishing surface's pieces (M = {}) must be more than the roughing surface's (N = {})</source>
+            <translation>M：精加工曲面的分段数（M = {}）必须多于粗加工曲面的分段数（N = {}）</translation>
+        </message>
+        <message>
+            <source>the ruled surface needs two curves of the same number of points, at least two</source>
+            <translation>直纹面需要两条点数相同（至少两个点）的曲线</translation>
+        </message>
+        <message>
+            <source>the ruled surface is not a plane within {} mm</source>
+            <translation>直纹面在 {} mm 以内不是平面</translation>
+        </message>
+        <message>
+            <source>the ruled surface: OpenCASCADE refused it ({})</source>
+            <translation>直纹面：OpenCASCADE 拒绝了它（{}）</translation>
+        </message>
+        <message>
+            <source>the surface's paths: at least 2 paths of 2 points are needed, there are {}</source>
+            <translation>曲面的路径：至少需要 2 条含 2 个点的路径，现在有 {} 条</translation>
+        </message>
+        <message>
+            <source>the surface's paths: path {} has {} points, path 1 has {}</source>
+            <translation>曲面的路径：路径 {} 有 {} 个点，而路径 1 有 {} 个</translation>
+        </message>
+        <message>
+            <source>the surface's paths: OpenCASCADE could not interpolate them</source>
+            <translation>曲面的路径：OpenCASCADE 无法对其插值</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE could not put the surface into STEP</source>
+            <translation>{}：OpenCASCADE 无法将曲面转换为 STEP</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file could not be written</source>
+            <translation>{}：无法写入 STEP 文件</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE refused the surface ({})</source>
+            <translation>{}：OpenCASCADE 拒绝了该曲面（{}）</translation>
+        </message>
+        <message>
+            <source>no temporary folder for the STEP file: {}</source>
+            <translation>没有可放 STEP 文件的临时文件夹：{}</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file written could not be read back</source>
+            <translation>{}：无法读回已写入的 STEP 文件</translation>
+        </message>
+        <message>
+            <source>{}: no such file</source>
+            <translation>{}：文件不存在</translation>
+        </message>
+        <message>
+            <source>{}: not a STEP file OpenCASCADE can read</source>
+            <translation>{}：不是 OpenCASCADE 能读取的 STEP 文件</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file holds no shape</source>
+            <translation>{}：STEP 文件中没有形状</translation>
+        </message>
+        <message>
+            <source>{}: the STEP file holds no face</source>
+            <translation>{}：STEP 文件中没有面</translation>
+        </message>
+        <message>
+            <source>{}: its {} faces gave no triangles</source>
+            <translation>{}：其 {} 个面未生成任何三角形</translation>
+        </message>
+        <message>
+            <source>{}: OpenCASCADE refused it ({})</source>
+            <translation>{}：OpenCASCADE 拒绝了它（{}）</translation>
         </message>
         <message>
             <source>{} to {}</source>

@@ -4,12 +4,11 @@
 // modules/registry.cpp; docs/surfaces.md says what it makes.
 #include "modules/module_kind.h"
 #include "modules/surface/surface.h"
+#include "modules/surface/surface_messages.h"
 
 #include "io/json_write.h"
 #include "model/contour.h"
 #include "model/translate_noop.h"
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -142,12 +141,9 @@ public:
                     std::string known;
                     for (const auto& [name, contour] : table)
                         if (!contour.closed) known += (known.empty() ? "" : ", ") + name;
-                    pr.contourProblem = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the figure has no contour {}; its open contours: {}"),
-                                                    pr.contour, known.empty() ? std::string("none") : known);
+                    pr.contourProblem = msg::surfaceNoContour(pr.contour, known);
                 } else if (it->second.closed) {
-                    pr.contourProblem = fmt::format(
-                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} is closed; a projection runs from one end to the other"),
-                        pr.contour);
+                    pr.contourProblem = msg::surfaceContourClosed(pr.contour);
                 } else {
                     pr.points = flatten(it->second, surfacemod::kContourTolerance);
                 }

@@ -6,13 +6,11 @@
 // roughing and finishing steps with their one ball end mill.
 #include "modules/surface/surface.h"
 
-#include "check/messages.h"
 #include "decompose/make_step.h"
+#include "modules/surface/surface_messages.h"
 #include "occt/surface_checks.h"
 #include "occt/surface_curves.h"
 #include "occt/surface_mesh.h"
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,30 +30,31 @@ constexpr double kEps = 1e-9;
 
 double dist(Point3 a, Point3 b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); }
 
-Result<surface::SpaceCurve> spaceCurve(const SurfaceCurve& c, const char* name)
+Result<surface::SpaceCurve> spaceCurve(const SurfaceCurve& c, int which)
 {
+    const std::string name = msg::surfaceCurveName(which);
     if (!c.points.empty()) {
-        if (c.points.size() < 2) return Failure{fmt::format("{} has one point; give two or more [x, y, z]", name)};
+        if (c.points.size() < 2) return Failure{msg::surfaceCurveOnePoint(name)};
         return surface::SpaceCurve{c.points, c.smooth};
     }
     if (c.projections.size() != 2)
-        return Failure{fmt::format("{} has neither points [x, y, z] nor two projections (XY, YZ or ZX)", name)};
+        return Failure{msg::surfaceCurveNeither(name)};
     surface::Projection p[2];
     for (int i = 0; i < 2; ++i) {
         const std::string& plane = c.projections[static_cast<std::size_t>(i)].plane;
         if (plane == "XY") p[i].plane = surface::ProjectionPlane::XY;
         else if (plane == "YZ") p[i].plane = surface::ProjectionPlane::YZ;
         else if (plane == "ZX") p[i].plane = surface::ProjectionPlane::ZX;
-        else return Failure{fmt::format("{}: projection {} is in plane \"{}\"; give XY, YZ or ZX", name, i + 1, plane)};
+        else return Failure{msg::surfaceProjectionPlane(name, i + 1, plane)};
         const SurfaceProjection& given = c.projections[static_cast<std::size_t>(i)];
         if (!given.contourProblem.empty())
-            return Failure{fmt::format("{}: projection {}: {}", name, i + 1, given.contourProblem)};
+            return Failure{msg::surfaceProjectionProblem(which, i + 1, given.contourProblem)};
         p[i].points = given.points;
         // A contour's points lie on its lines and arcs: straight between them.
         p[i].smooth = c.smooth && given.contour.empty();
     }
     auto curve = surface::spaceCurveFromProjections(p[0], p[1], kProjectionStep);
-    if (!curve) return Failure{fmt::format("{}: {}", name, curve.error())};
+    if (!curve) return Failure{surface::curveRefusal(which, curve.error())};
     return curve;
 }
 
@@ -99,13 +98,9 @@ Built heightField(Built b, const char* field, LengthUnit shown)
         return b;
     };
     if (top > kEps)
-        return refuse(fmt::format("the surface rises to Z {} above the stock top (Z 0); the surface is "
-                                  "cut into the stock from above",
-                                  msg::quote({top, shown})));
-    if (auto undercut = surface::findUndercut(b.finishing))
-        return refuse(fmt::format("the surface turns under itself ({}); the verifying simulation is a "
-                                  "height field and cannot see undercuts",
-                                  *undercut));
+        return refuse(msg::surfaceAboveTop({top, shown}));
+    // Where, and that the verification cannot see it (occt/surface_checks.cpp).
+    if (auto undercut = surface::findUndercut(b.finishing)) return refuse(*undercut);
     return b;
 }
 
@@ -119,30 +114,26 @@ Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
         b.problem = std::move(problem);
         return b;
     };
-    using Unread = std::tuple<const char*, const std::string*, const char*>;
-    for (const auto& [field, bad, name] : {Unread{"curve1", &u.curve1Bad, "curve 1"}, Unread{"curve2", &u.curve2Bad, "curve 2"}})
-        if (!bad->empty())
-            return refuse(field, fmt::format("{} \"{}\" does not read: give points \"x, y, z; x, y, z\" or two "
-                                             "projections \"XY: a, b; a, b / ZX: a, b; a, b\"",
-                                             name, *bad));
+    using Unread = std::tuple<const char*, const std::string*, int>;
+    for (const auto& [field, bad, which] : {Unread{"curve1", &u.curve1Bad, 1}, Unread{"curve2", &u.curve2Bad, 2}})
+        if (!bad->empty()) return refuse(field, msg::surfaceCurveUnread(msg::surfaceCurveName(which), *bad));
     // A face set's paths (taiwa import --surface): as they are, for both steps.
     if (!u.surface.empty()) {
         const std::size_t points = u.surface.front().size();
         if (u.surface.size() < 2 || points < 2)
-            return refuse("surface", "the surface needs at least 2 paths of 2 points or more");
+            return refuse("surface", msg::surfaceTooFewPaths());
         for (std::size_t k = 1; k < u.surface.size(); ++k)
             if (u.surface[k].size() != points)
-                return refuse("surface", fmt::format("path {} has {} points; every path has as many as the first ({})",
-                                                     k + 1, u.surface[k].size(), points));
+                return refuse("surface", msg::surfacePathPoints(k + 1, u.surface[k].size(), points));
         b.roughing = b.finishing = u.surface;
         b.m = static_cast<int>(u.surface.size()) - 1;
         return heightField(std::move(b), "surface", shown);
     }
-    auto c1 = spaceCurve(u.curve1, "curve 1");
+    auto c1 = spaceCurve(u.curve1, 1);
     if (!c1) return refuse("curve1", c1.error());
-    auto c2 = spaceCurve(u.curve2, "curve 2");
+    auto c2 = spaceCurve(u.curve2, 2);
     if (!c2) return refuse("curve2", c2.error());
-    if (u.n < 1) return refuse("n", fmt::format("N {} must be 1 or more: the roughing surface needs pieces", u.n));
+    if (u.n < 1) return refuse("n", msg::surfaceNBelowOne(u.n));
     int m = 0;
     if (u.m) m = *u.m;
     else if (u.curveStep) {
@@ -150,11 +141,9 @@ Built buildSurfaces(const SurfaceUnit& u, LengthUnit shown)
         if (!pieces) return refuse("curveStep", pieces.error());
         m = *pieces;
     } else
-        return refuse("m", "give M (the finishing surface's pieces) or the step along the curves that implies it");
+        return refuse("m", msg::surfaceNoM());
     if (u.n >= m)
-        return refuse("n", fmt::format("N {} is not less than M {}: the finishing surface must be divided more "
-                                       "finely than the roughing surface (N < M)",
-                                       u.n, m));
+        return refuse("n", msg::surfaceNNotBelowM(u.n, m));
     auto surfaces = surface::roughAndFinishSurfaces(*c1, *c2, u.n, m);
     if (!surfaces) return refuse("curve1", surfaces.error());
     b.m = m;
@@ -169,39 +158,28 @@ ToolPick chooseTool(const SurfaceUnit& u, double rho, const std::string& where, 
     ToolPick pick;
     const auto ball = [](const Tool& t) { return t.type == ToolType::BallEndMill && t.diameter > 0.0; };
     const auto fits = [&](const Tool& t) { return t.radius() < rho - kEps; };
-    const auto quoted = [&](double v) { return msg::quote({v, shown}); };
     const Tool* smaller = nullptr;
     for (const Tool& t : library)
         if (ball(t) && fits(t) && (!smaller || t.diameter > smaller->diameter)) smaller = &t;
-    const std::string bend = std::isfinite(rho) ? fmt::format("{} ({})", quoted(rho), where) : "none";
     if (const auto pin = u.tools.find(kStepKey); pin != u.tools.end()) {
         const Tool* t = findTool(library, pin->second);
         if (!t) pick.problem = msg::toolNotInLibrary(pin->second);
         else if (!ball(*t))
-            pick.problem = fmt::format("{} is pinned for \"surface\" but is not a ball end mill", msg::toolName(*t));
+            pick.problem = msg::surfacePinnedNotBall(*t);
         else if (!fits(*t))
-            pick.problem =
-                smaller ? fmt::format("{} is pinned for \"surface\" but its radius {} is not less than the surface's "
-                                      "smallest concave radius {}; {} would fit",
-                                      msg::toolName(*t), quoted(t->radius()), bend, msg::toolName(*smaller))
-                        : fmt::format("{} is pinned for \"surface\" but its radius {} is not less than the surface's "
-                                      "smallest concave radius {}, and the library has no smaller ball end mill",
-                                      msg::toolName(*t), quoted(t->radius()), bend);
+            pick.problem = msg::surfacePinnedTooLarge(*t, {t->radius(), shown}, {rho, shown}, where, smaller);
         else {
             pick.tool = t;
-            pick.reason = "pinned by the operator";
+            pick.reason = msg::surfacePinnedByOperator();
         }
         return pick;
     }
     if (!smaller) {
-        pick.problem = fmt::format("the tool library has no ball end mill with a radius less than the surface's "
-                                   "smallest concave radius {}; add a smaller one",
-                                   bend);
+        pick.problem = msg::surfaceNoBall({rho, shown}, where);
         return pick;
     }
     pick.tool = smaller;
-    pick.reason = fmt::format("largest ball end mill (Ø{:g} mm) under the smallest concave radius {}",
-                              smaller->diameter, bend);
+    pick.reason = msg::surfaceToolReason(*smaller, {rho, shown}, where);
     return pick;
 }
 
@@ -214,11 +192,11 @@ check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Co
     report.figureValid = false;
     bool ok = true;
     if (!(std::isfinite(u.scallop) && u.scallop > 0.0)) {
-        r.unit("scallop", fmt::format("the scallop height {} must be greater than 0", msg::quote(r.len(u.scallop))));
+        r.unit("scallop", msg::surfaceScallopNotPositive(r.len(u.scallop)));
         ok = false;
     }
     if (!(std::isfinite(u.allowance) && u.allowance >= 0.0)) {
-        r.unit("allowance", fmt::format("the allowance {} must be 0 or more", msg::quote(r.len(u.allowance))));
+        r.unit("allowance", msg::surfaceAllowanceNegative(r.len(u.allowance)));
         ok = false;
     }
     // A pin of another step: said by check::checkPins (the door runs it).
@@ -233,20 +211,16 @@ check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Co
         for (const auto& p : b.finishing)
             for (const Point3& q : p) low = std::min(low, q.z);
         if (low <= -st->height)
-            r.unit(u.surface.empty() ? "curve1" : "surface", fmt::format("the surface goes down to Z {}, through the stock's bottom (height {})",
-                                         msg::quote(r.len(low)), msg::quote(r.len(st->height))));
+            r.unit(u.surface.empty() ? "curve1" : "surface", msg::surfaceThroughBottom(r.len(low), r.len(st->height)));
     }
     if (!u.boundaryBad.empty())
-        r.unit("boundary", fmt::format("the boundary \"{}\" does not read: give paths of points \"x, y, z; x, y, z\" "
-                                       "separated by \"/\"",
-                                       u.boundaryBad));
+        r.unit("boundary", msg::surfaceBoundaryUnread(u.boundaryBad));
     else if (!u.boundary.empty()) {
         surface::TriangleMesh mesh = surface::meshFromPaths(u.boundary);
         if (mesh.triangles.empty())
-            r.unit("boundary", "the boundary makes no surface: give two or more paths with the same number of points");
+            r.unit("boundary", msg::surfaceBoundaryNoSurface());
         else if (!surface::boundaryMeetsSurface(b.finishing, surface::MeshIndex(std::move(mesh))))
-            r.unit("boundary", "the boundary surface never meets the surface: no path would stop at it; move it "
-                               "onto the surface or leave it out");
+            r.unit("boundary", msg::surfaceBoundaryMissesSurface());
     }
     report.figureValid = true;
     if (!ok || !ctx.library) return report;
