@@ -2164,6 +2164,17 @@ Theirs: %6</source>
         </message>
     </context>
     <context>
+        <name>taiwa::PathNames</name>
+        <message>
+            <source>upper turret</source>
+            <translation>上タレット</translation>
+        </message>
+        <message>
+            <source>lower turret</source>
+            <translation>下タレット</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::msg</name>
         <message>
             <source>the library has no tools</source>
