@@ -8,12 +8,16 @@
 // drawn there in both lanes, not in the middle of a cut); both tapes in
 // tabs, byte for byte the export's two programs; a block clicked in the
 // chart chosen in the list and in path 2's tape, a path 2 line chosen in
-// the tape chosen in the chart. A one-path lathe job shows none of it.
+// the tape chosen in the chart. A one-path lathe job shows none of it. The
+// turrets' names in Japanese in a Japanese station (in English as the
+// machine file has them). Both turrets' tools in the 3-D view, which this
+// offscreen test has not: test_render_two_path.
 // With TAIWA_SCREENSHOTS_DIR set (under xvfb-run, for the 3-D view) it
 // writes docs/screenshots/two-path-station.png.
 #include "export/two_path_export.h"
 #include "machine/machine.h"
 #include "post/dialect.h"
+#include "support/speak.h"
 #include "support/station_fixture.h"
 #include "support/support.h"
 #include "turning/balanced_roughing.h"
@@ -237,6 +241,39 @@ private slots:
         QVERIFY(!tapes->isTabVisible(1));
         QVERIFY(!stepTabs->isTabVisible(1));
         QCOMPARE(stepTabs->currentIndex(), 0);
+    }
+
+    // The turrets' names from the machine file, in the station's language
+    // where the catalogue knows them (the shipped machine's), in the steps by
+    // path and the chart's lanes; in English as the file has them; a shop's
+    // own name as it is.
+    void turretNamesInTheStationsLanguage()
+    {
+        const auto names = [](StationWindow& w) {
+            QStringList out;
+            auto* byPath = w.findChild<QTreeWidget*>("paths.steps");
+            auto* chart = w.findChild<TwoPathChart*>("paths.chart");
+            for (int p = 0; p < byPath->topLevelItemCount(); ++p)
+                out << byPath->topLevelItem(p)->text(0) << chart->laneLabel(static_cast<std::size_t>(p));
+            return out;
+        };
+        test::speak("ja");
+        {
+            StationWindow w;
+            QVERIFY(test::showSettled(w, kTaper));
+            const QStringList ja = names(w);
+            QCOMPARE(ja.size(), 4);
+            for (int i : {0, 1}) QVERIFY2(ja[i].contains(QStringLiteral("上タレット")) && !ja[i].contains("turret"), qPrintable(ja[i]));
+            for (int i : {2, 3}) QVERIFY2(ja[i].contains(QStringLiteral("下タレット")) && !ja[i].contains("turret"), qPrintable(ja[i]));
+            QCOMPARE(localPathName("front slide"), QString("front slide"));
+        }
+        test::speak("en");
+        StationWindow w;
+        QVERIFY(test::showSettled(w, kTaper));
+        const QStringList en = names(w);
+        QCOMPARE(en.size(), 4);
+        for (int i : {0, 1}) QVERIFY2(en[i].contains("(upper turret)"), qPrintable(en[i]));
+        for (int i : {2, 3}) QVERIFY2(en[i].contains("(lower turret)"), qPrintable(en[i]));
     }
 };
 

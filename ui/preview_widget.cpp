@@ -190,6 +190,12 @@ void PreviewWidget::setPlayhead(int step, int move)
     requestFrame();
 }
 
+void PreviewWidget::setTurretTools(std::optional<viz::TurretTools> tools)
+{
+    scene_.setTurretTools(std::move(tools));
+    requestFrame();
+}
+
 void PreviewWidget::markPoint(std::optional<Point3> p)
 {
     if (!p && !scene_.markedPoint()) return;  // nothing marked, nothing to take away

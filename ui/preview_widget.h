@@ -58,6 +58,8 @@ public:
     void markPoint(std::optional<taiwa::Point3> p);
     // Viz::Scene::setPlayhead: the stock after moves 0..move of the step.
     void setPlayhead(int step, int move);
+    // Viz::Scene::setTurretTools: a two-path job's turrets' tools.
+    void setTurretTools(std::optional<viz::TurretTools> tools);
     // The current frame (rendered now if needed).
     QImage grabImage();
 

@@ -240,6 +240,12 @@ void StationWindow::catchUp()
     // A two-path job: path 1's program here, path 2's in its tab.
     const PostedProgram* path1 = twoPath_->setPlan(*l.plan, runner_->dialect(), files_->stem());
     showTwoPath(twoPath_->shown().has_value());
+    if (preview_) {  // both turrets' tools where the timeline has them (none: a job of one path)
+        std::optional<viz::TurretTools> turrets;
+        if (const auto& s = twoPath_->shown(); s && !s->sides.empty())
+            turrets = viz::TurretTools{static_cast<int>(s->balanced.step), s->sides, s->places};
+        preview_->setTurretTools(std::move(turrets));
+    }
     if (path1) nc_->setProgram(QString::fromStdString(path1->nc), path1->lines);
     else nc_->setProgram(l.nc, l.lines);  // a milling or a lathe tape
     steps_->setPlan(l.plan);         // the same steps, now with times; re-selects the step in the preview

@@ -1,6 +1,8 @@
 // The two-path timeline chart (two_path_chart.h).
 #include "ui/two_path_chart.h"
 
+#include "ui/two_path_shown.h"
+
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -103,6 +105,11 @@ std::vector<TwoPathChart::WaitLine> TwoPathChart::waitLines() const
     return out;
 }
 
+QString TwoPathChart::laneLabel(std::size_t path) const
+{
+    return path < names_.size() ? tr("Path %1 (%2)").arg(path + 1).arg(localPathName(names_[path])) : QString();
+}
+
 QString TwoPathChart::textOf(const TimelineStretch& s) const
 {
     switch (s.kind) {
@@ -128,8 +135,11 @@ void TwoPathChart::paintEvent(QPaintEvent*)
     p.setPen(palette().color(QPalette::Text));
     for (std::size_t k = 0; k < names_.size(); ++k) {
         const QRectF lane = laneOf(k);
-        p.drawText(QRectF(4, lane.top(), kLabelWidth - 8, lane.height()), Qt::AlignVCenter | Qt::AlignLeft,
-                   tr("Path %1 (%2)").arg(k + 1).arg(QString::fromStdString(names_[k])));
+        // A swatch of the colour the 3-D view draws the path's tool in, then its name.
+        const double swatch = std::min(10.0, lane.height() - 4);
+        p.fillRect(QRectF(4, lane.center().y() - swatch / 2, swatch, swatch), turretColour(k));
+        p.drawText(QRectF(8 + swatch, lane.top(), kLabelWidth - 12 - swatch, lane.height()), Qt::AlignVCenter | Qt::AlignLeft,
+                   laneLabel(k));
     }
     const std::vector<Bar> all = bars();
     const QFontMetrics fm(font());

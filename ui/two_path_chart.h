@@ -48,6 +48,8 @@ public:
     std::vector<WaitLine> waitLines() const;
     double xOf(double seconds) const;
     QRectF laneOf(std::size_t path) const;
+    // A lane's label: "Path 2 (lower turret)", the name in the station's language.
+    QString laneLabel(std::size_t path) const;
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;

@@ -5,10 +5,34 @@
 #include "pipeline/pipeline.h"
 #include "post/two_path_post.h"
 #include "ui/core_messages.h"
+#include "viz/palette.h"
+
+#include <QCoreApplication>
 
 #include <algorithm>
+#include <array>
 
 namespace taiwa::ui {
+
+namespace {
+
+// The shipped machines' path names (resources/machines/*.json "paths[i].name").
+constexpr const char* kPathNames = "taiwa::PathNames";
+[[maybe_unused]] constexpr std::array kShippedPathNames{
+    QT_TRANSLATE_NOOP("taiwa::PathNames", "upper turret"),
+    QT_TRANSLATE_NOOP("taiwa::PathNames", "lower turret"),
+};
+
+}  // namespace
+
+QString localPathName(const std::string& name) { return QCoreApplication::translate(kPathNames, name.c_str()); }
+
+QColor turretColour(std::size_t path)
+{
+    static constexpr viz::Rgb kColours[] = {viz::palette::kTool, viz::palette::kTool2, viz::palette::kTool3};
+    const viz::Rgb c = kColours[std::min(path, std::size(kColours) - 1)];
+    return QColor(c.r, c.g, c.b);
+}
 
 std::optional<std::pair<std::size_t, int>> TwoPathShown::blockOfMove(int step, int move) const
 {
@@ -54,6 +78,8 @@ std::optional<TwoPathShown> twoPathShown(const Plan& plan, const std::string& di
     // Each block's first move among the single path's: the blocks cut it
     // into pieces in CB order, none lost or doubled, the tail after them.
     const BalancedCut& bc = **cut;
+    out.places = toolPlaces(bc, *findMachine(plan.mmJob.machine));
+    for (const LathePath& p : mp.paths) out.sides.push_back(p.xDirection == mp.paths.front().xDirection ? 1 : -1);
     std::vector<const BalancedBlock*> byNumber(static_cast<std::size_t>(bc.blockCount) + 1, nullptr);
     for (const BalancedPath& p : bc.paths)
         for (const BalancedBlock& b : p.blocks) byNumber[static_cast<std::size_t>(b.number)] = &b;

@@ -51,7 +51,7 @@ void TwoPathSteps::setShown(const Plan& plan, const TwoPathShown& shown)
         for (int t : shown.tools[p]) tools << QStringLiteral("T%1").arg(t);
         auto* path = new QTreeWidgetItem(this, QStringList{tr("Path %1 (%2): turret with %3")
                                                     .arg(p + 1)
-                                                    .arg(QString::fromStdString(shown.pathNames[p]))
+                                                    .arg(localPathName(shown.pathNames[p]))
                                                     .arg(tools.isEmpty() ? tr("no tool") : tools.join(", "))});
         path->setFirstColumnSpanned(true);
         QFont bold = path->font(0);

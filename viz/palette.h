@@ -19,6 +19,9 @@ inline constexpr Rgb kRapid{255, 110, 64};       // rapids, drawn thin
 inline constexpr Rgb kDimmed{96, 104, 118};      // paths of the steps not selected
 inline constexpr Rgb kHighlight{255, 0, 220};    // the move picked in the NC view or the 3-D view
 inline constexpr Rgb kTool{235, 190, 40};        // the tool glyph
+// A two-path lathe's other turrets' tools (path 2's, path 3's); path 1's is kTool.
+inline constexpr Rgb kTool2{140, 235, 60};
+inline constexpr Rgb kTool3{200, 130, 255};
 inline constexpr Rgb kStock{176, 182, 194};      // uncut stock faces
 inline constexpr Rgb kMachined{120, 200, 160};   // faces the simulation has cut
 inline constexpr Rgb kRemoved{245, 160, 60};     // faces the selected step (or the blocks played) cut

@@ -123,6 +123,9 @@ void Scene::clear()
     deviation_.reset();  // a map is of one plan
     latheParts_.clear();
     latheStep_.clear();
+    turrets_.reset();  // of one plan
+    turretTools_.clear();
+    turretAt_.clear();
     axes_ = nullptr;
     scaleNote_ = nullptr;
 }
@@ -276,6 +279,9 @@ void Scene::updateTool()
     if (tool_) renderer_->RemoveActor(tool_);
     tool_ = nullptr;
     toolAt_.reset();
+    for (auto& a : turretTools_) renderer_->RemoveActor(a);
+    turretTools_.clear();
+    turretAt_.clear();
     if (!plan_) return;
     const auto& steps = plan_->steps;
     const int nSteps = static_cast<int>(steps.size());
@@ -293,6 +299,7 @@ void Scene::updateTool()
         // In the section: the insert (or blade, or drill) at the path's
         // start, or where the NC block the operator is on leaves it.
         const TurnPath& p = turnOf(step)->path;
+        if (updateTurretTools(*tool, *turnOf(step), onBlock ? highlighted_.move : -1)) return;
         turning::ZR at = p.start;
         if (onBlock && highlighted_.move >= 0 && highlighted_.move < static_cast<int>(p.moves.size()))
             at = p.moves[static_cast<std::size_t>(highlighted_.move)].end;
@@ -321,6 +328,44 @@ void Scene::updateTool()
     renderer_->AddActor(tool_);
 }
 
+void Scene::setTurretTools(std::optional<TurretTools> tools)
+{
+    turrets_ = std::move(tools);
+    updateTool();
+}
+
+bool Scene::updateTurretTools(const Tool& tool, const TurnStep& step, int move)
+{
+    if (!turrets_ || turrets_->step != selected_) return false;
+    const ToolPlaces& places = turrets_->places;
+    const std::vector<turning::ZR>& at =
+        move >= 0 && move < static_cast<int>(places.afterMove.size()) ? places.afterMove[static_cast<std::size_t>(move)] : places.start;
+    const std::vector<turning::ZR> outline = latheToolOutline(tool, step);
+    if (outline.empty() || at.size() != turrets_->side.size()) return false;
+    static constexpr Rgb kColours[] = {palette::kTool, palette::kTool2, palette::kTool3};
+    for (std::size_t p = 0; p < at.size() && p < std::size(kColours); ++p) {
+        // The path's tip on its side of the axis, the insert mirrored with it.
+        const double side = turrets_->side[p] < 0 ? -1.0 : 1.0;
+        std::vector<turning::ZR> drawn = outline;
+        for (auto& q : drawn) q = turning::ZR{at[p].z + q.z, side * (at[p].r + q.r)};
+        auto actor = actorFor(sectionFace(drawn, -0.1), kColours[p]);
+        actor->GetProperty()->SetAmbient(0.6);
+        actor->GetProperty()->SetDiffuse(0.4);
+        const Point3 tip{at[p].z, 0.0, side * at[p].r};  // VTK's X along the spindle, the radius up
+        turretAt_.push_back(tip);
+        if (p == 0) {
+            tool_ = actor;
+            toolAt_ = tip;
+        } else {
+            turretTools_.push_back(actor);
+        }
+    }
+    showWhenStill();
+    renderer_->AddActor(tool_);
+    for (auto& a : turretTools_) renderer_->AddActor(a);
+    return true;
+}
+
 void Scene::updateHighlight()
 {
     if (highlight_) renderer_->RemoveActor(highlight_);
@@ -337,9 +382,22 @@ std::array<double, 6> Scene::bounds() const
     std::array<double, 6> b{0, 1, 0, 1, -1, 0};
     if (!plan_) return b;
     if (plan_->mmJob.bar) {
+        // The bar, and every turning path's points (where the tools stand:
+        // the approach in front of the face, above the bar), on both sides
+        // of the axis (a two-path lathe's other turret's tool is drawn there).
         const BarStock& bar = *plan_->mmJob.bar;
-        const double r = bar.diameter / 2;
-        return {bar.face - bar.length, bar.face, -r, r, -r, r};
+        double z0 = bar.face - bar.length, z1 = bar.face, r = bar.diameter / 2;
+        auto grow = [&](turning::ZR p) {
+            z0 = std::min(z0, p.z);
+            z1 = std::max(z1, p.z);
+            r = std::max(r, std::abs(p.r));
+        };
+        for (const Step& step : plan_->steps)
+            if (const TurnStep* turn = turnOf(step)) {
+                grow(turn->path.start);
+                for (const TurnMove& m : turn->path.moves) grow(m.end);
+            }
+        return {z0, z1, -r, r, -r, r};
     }
     const Stock& s = plan_->mmJob.stock;
     b = {s.x, s.x + s.width, s.y, s.y + s.length, -s.height, 0.0};

@@ -5,12 +5,15 @@
 // emphasised, the others dimmed), the tool at the selected path's
 // start or at the end of the highlighted move (the NC block the operator
 // is on), one highlighted move, axes with a scale note, camera presets,
-// a section plane through the stock and the verification's colour map. The
+// a section plane through the stock and the verification's colour map; a
+// two-path lathe's balanced roughing with every turret's tool where core's
+// timeline has it (setTurretTools). The
 // offscreen renderer and the preview widget both show this scene; it is the
 // one door between the core's types and VTK.
 #pragma once
 
 #include "model/plan.h"
+#include "verify/two_path_timeline.h"
 #include "viz/path_geometry.h"
 #include "viz/render.h"
 #include "viz/solids.h"
@@ -41,6 +44,16 @@ class vtkMatrix4x4;
 class vtkTextActor;
 
 namespace taiwa::viz {
+
+// A two-path job's turrets (docs/two-path-lathe.md "In the station"): the
+// balanced roughing's step, the side of the spindle axis each path's
+// turret stands on, and where each path's tool tip is at each of the step's
+// moves (core's timeline: toolPlaces, verify/two_path_timeline.h).
+struct TurretTools {
+    int step = -1;          // the roughing step, an index into Plan::steps
+    std::vector<int> side;  // by path: +1 path 1's side of the axis, -1 the other (X mirrored)
+    ToolPlaces places;      // in path 1's coordinates, by the step's move
+};
 
 struct MoveRef {
     int step = -1;  // index into Plan::steps
@@ -121,6 +134,16 @@ public:
     MoveRef playhead() const { return playhead_; }
     // Where the tool is drawn (its tip), if it is.
     std::optional<Point3> toolPosition() const { return toolAt_; }
+    // A two-path job's turrets (nothing: a job of one path). With its
+    // roughing step selected, each path's tool is drawn where `places` has
+    // it at the highlighted move's end (at the start with none), in its
+    // turret's colour (palette::kTool, kTool2, kTool3), on its side of the
+    // axis; on the other steps the step's tool alone, as on a one-path
+    // lathe. A new plan (setPlan) drops it.
+    void setTurretTools(std::optional<TurretTools> tools);
+    // Where each path's tool is drawn (its tip: X along the spindle, Z the
+    // radius, below zero on the other side), by path; empty: not drawn.
+    const std::vector<Point3>& turretToolPositions() const { return turretAt_; }
     // A marker (a small red ball) at a point of interest, a verification
     // finding, the camera moved (not turned) to put it in the middle of the
     // view; nothing removes it. viz/scene_marker.cpp.
@@ -237,6 +260,8 @@ private:
     void updateEmphasis();
     void updateStock();
     void updateTool();
+    // The turrets' tools of a selected roughing step (true), or nothing to draw.
+    bool updateTurretTools(const Tool& tool, const TurnStep& step, int move);
     void updateHighlight();
     // A lathe job (a bar, turned profiles): the part revolved, the grinding
     // stock in its own colour, the bar as glass.
@@ -299,6 +324,9 @@ private:
     std::vector<vtkSmartPointer<vtkActor>> latheParts_, latheStep_;
     MoveRef highlighted_;
     std::optional<Point3> toolAt_;
+    std::optional<TurretTools> turrets_;
+    std::vector<vtkSmartPointer<vtkActor>> turretTools_;  // paths 2, 3's (path 1's: tool_)
+    std::vector<Point3> turretAt_;
     bool moving_ = false;
     bool tray_ = false;  // stock_ is the glass tray (the stock hidden)
     std::size_t pathSegments_ = 0;  // of the plan's paths (each once)

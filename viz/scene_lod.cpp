@@ -114,6 +114,7 @@ void Scene::showWhenStill()
     if (axes_) axes_->SetAxisLabels(!moving_);
     if (scaleNote_) scaleNote_->SetVisibility(!moving_);
     if (tool_) tool_->SetVisibility(!moving_);
+    for (auto& a : turretTools_) a->SetVisibility(!moving_);
 }
 
 std::size_t Scene::drawnPathSegments() const

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -25,6 +26,7 @@ struct Op {
     int code = 0;
     double seconds = 0.0;
     int block = 0;
+    int index = -1;  // Move: its index among its block's moves (block 0: the tail's)
 };
 
 double arcLength(ZR a, const TurnMove& m)
@@ -98,11 +100,13 @@ std::vector<std::vector<Op>> operationsOf(const BalancedCut& cut, const Machine&
     for (std::size_t p = 0; p < n; ++p) {
         const BalancedPath& bp = cut.paths[p];
         ZR at = startOf[p] = pointToP1(bp.start, p);
-        auto move = [&](const TurnMove& m) {
+        auto move = [&](const TurnMove& m, int block, int index) {
             Op o;
             o.kind = Op::Move;
             o.move = toP1(m, p);
             o.from = at;
+            o.block = block;
+            o.index = index;
             at = o.move.end;
             ops[p].push_back(o);
         };
@@ -124,14 +128,14 @@ std::vector<std::vector<Op>> operationsOf(const BalancedCut& cut, const Machine&
                     if (b.dwellSeconds > 0) mark(Op::Dwell, b.number, 0, b.dwellSeconds);
                 }
                 if (i == cm) mark(Op::CutStart, b.number);
-                move(b.moves[i]);
+                move(b.moves[i], b.number, static_cast<int>(i));
                 if (i == cm) mark(Op::CutEnd, b.number);
                 pathAt = b.moves[i].end;
             }
             mark(Op::BlockEnd, b.number);
         }
         if (bp.tailWait) mark(Op::Wait, 0, *bp.tailWait);
-        for (const auto& m : bp.tail) move(m);
+        for (std::size_t i = 0; i < bp.tail.size(); ++i) move(bp.tail[i], 0, static_cast<int>(i));
         if (bp.endWait) mark(Op::Wait, 0, *bp.endWait);
     }
     return ops;
@@ -160,6 +164,9 @@ struct Run {
     std::map<int, TimelineBlock> blocks;
     std::map<int, CutTrace> traces;
     std::map<int, std::pair<double, double>> revsAt;  // cut: revolutions at its start and end
+    // Called after a step of the clock for each move a path ended in it
+    // (path, its operation), every path's position up to date.
+    std::function<void(std::size_t, const Op&)> moveEnded;
 
     Run(const BalancedCut& c, const Machine& m)
         : cut(c), clk{c.cutting, m, c.spindleLimit > 0 ? c.spindleLimit : m.maxSpindleSpeed},
@@ -270,8 +277,8 @@ struct Run {
         }
     }
 
-    // The clock moved on by one step for the running paths.
-    void advance(const std::vector<std::size_t>& running)
+    // The clock moved on by one step (at most `cap` seconds) for the running paths.
+    void advance(const std::vector<std::size_t>& running, double cap)
     {
         // The spindle's speed now, and how long each running path's move
         // or dwell still takes at it.
@@ -298,20 +305,45 @@ struct Run {
             dt = 1e300;
             for (std::size_t p : running) dt = std::min(dt, (1.0 - done[p]) * left[p]);
         }
-        dt = std::max(dt, 0.0);
+        dt = std::max(std::min(dt, cap), 0.0);
+        std::vector<std::pair<std::size_t, const Op*>> endedMoves;
         for (std::size_t p : running) {
             const Op& o = ops[p][pc[p]];
             done[p] = left[p] > 0 ? std::min(1.0, done[p] + dt / left[p]) : 1.0;
             if (o.kind == Op::Move)
                 pos[p] = {o.from.z + done[p] * (o.move.end.z - o.from.z), o.from.r + done[p] * (o.move.end.r - o.from.r)};
             if (done[p] >= 1.0 - 1e-12) {
-                if (o.kind == Op::Move) pos[p] = o.move.end;
+                if (o.kind == Op::Move) {
+                    pos[p] = o.move.end;
+                    endedMoves.emplace_back(p, &o);
+                }
                 done[p] = 0.0;
                 ++pc[p];
             }
         }
         t += dt;
         revs += rpm / 60.0 * dt;
+        if (moveEnded)
+            for (const auto& [p, o] : endedMoves) moveEnded(p, *o);
+    }
+
+    // Runs until every path has ended or stands at a wait no partner meets
+    // (those noted in `tl`, if given), or the clock reaches `until`.
+    void run(Timeline* tl, double until = std::numeric_limits<double>::infinity())
+    {
+        for (int guard = 0; guard < 50'000'000; ++guard) {
+            markers();
+            if (release()) continue;
+            if (t >= until - 1e-12) return;
+            std::vector<std::size_t> running;
+            for (std::size_t p = 0; p < n; ++p)
+                if (pc[p] < ops[p].size() && !atWait(p)) running.push_back(p);
+            if (running.empty()) {
+                if (tl) deadlocks(*tl);
+                return;
+            }
+            advance(running, until - t);
+        }
     }
 };
 
@@ -364,18 +396,7 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
 {
     Timeline tl;
     Run run(cut, machine);
-    for (int guard = 0; guard < 50'000'000; ++guard) {
-        run.markers();
-        if (run.release()) continue;
-        std::vector<std::size_t> running;
-        for (std::size_t p = 0; p < run.n; ++p)
-            if (run.pc[p] < run.ops[p].size() && !run.atWait(p)) running.push_back(p);
-        if (running.empty()) {
-            run.deadlocks(tl);
-            break;
-        }
-        run.advance(running);
-    }
+    run.run(&tl);
     tl.pathEnd = run.ended;
     // Each block's dwell as the cut says it (run above as a dwell before the cut).
     for (const auto& path : cut.paths)
@@ -385,6 +406,44 @@ Timeline runTimeline(const BalancedCut& cut, const Machine& machine)
         if (k > 0) tl.blocks.push_back(b);
     addLags(run, tl);
     return tl;
+}
+
+std::vector<ZR> toolsAt(const BalancedCut& cut, const Machine& machine, double seconds)
+{
+    Run run(cut, machine);
+    run.run(nullptr, seconds);
+    return run.pos;
+}
+
+ToolPlaces toolPlaces(const BalancedCut& cut, const Machine& machine)
+{
+    // Each block's first move among the single path's: the blocks cut it
+    // into pieces in CB order, none lost or doubled, path 1's tail after them.
+    std::vector<std::size_t> sizes(static_cast<std::size_t>(std::max(cut.blockCount, 0)) + 1, 0);
+    for (const BalancedPath& p : cut.paths)
+        for (const BalancedBlock& b : p.blocks) sizes.at(static_cast<std::size_t>(b.number)) = b.moves.size();
+    std::vector<std::size_t> first(sizes.size(), 0);
+    std::size_t count = 0;
+    for (std::size_t k = 1; k < sizes.size(); ++k) {
+        first[k] = count;
+        count += sizes[k];
+    }
+    const std::size_t tailFrom = count;
+    count += cut.paths.empty() ? 0 : cut.paths.front().tail.size();
+    Run run(cut, machine);
+    ToolPlaces places;
+    places.start = run.pos;
+    places.afterMove.assign(count, {});
+    run.moveEnded = [&](std::size_t p, const Op& o) {
+        if (o.block == 0 && p != 0) return;  // another path's tail: no move of the single path
+        const std::size_t at = (o.block > 0 ? first[static_cast<std::size_t>(o.block)] : tailFrom) + static_cast<std::size_t>(o.index);
+        places.afterMove.at(at) = run.pos;
+    };
+    run.run(nullptr);
+    // A move no path ran (a deadlock stopped it): the places where the run stopped.
+    for (auto& a : places.afterMove)
+        if (a.empty()) a = run.pos;
+    return places;
 }
 
 double singlePathSeconds(const TurnPath& path, const TurnCutting& cutting, const Machine& machine)

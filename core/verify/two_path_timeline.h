@@ -7,8 +7,9 @@
 // block's times on each path, the deadlocks (a wait that never meets its
 // partner), and for every cut after the first the lag of its tool behind
 // the cut before it (the leader: the level above) in spindle revolutions,
-// the least over the stretch of Z both cut; and the roughing's time on one
-// path for the ratio.
+// the least over the stretch of Z both cut; the roughing's time on one
+// path for the ratio; and, by the same run, where each path's tool stands
+// at a moment (the station's 3-D view draws both turrets' tools there).
 #pragma once
 
 #include "machine/machine.h"
@@ -55,6 +56,23 @@ struct Timeline {
 // Runs the balanced cut's paths (each in its own program coordinates,
 // converted back to path 1's with the machine's layout).
 Timeline runTimeline(const BalancedCut& cut, const Machine& machine);
+
+// Where each path's tool tip stands `seconds` after both programs start
+// (by path, in path 1's coordinates; after the end, where each ended), by
+// the same run as runTimeline: at a block's cut, timeline.blocks[k].cutStart.
+std::vector<turning::ZR> toolsAt(const BalancedCut& cut, const Machine& machine, double seconds);
+
+// Where each path's tool tip stands (by path, in path 1's coordinates)
+// before anything moves, and at every move of the roughing the cut was
+// made from (the single path's: its blocks' moves in CB order, then path
+// 1's tail) at the moment the path that runs the move ends it: the one
+// tool at the move's end, the others where they are then. By one run, the
+// same as runTimeline.
+struct ToolPlaces {
+    std::vector<turning::ZR> start;                   // by path
+    std::vector<std::vector<turning::ZR>> afterMove;  // by the single path's move, by path
+};
+ToolPlaces toolPlaces(const BalancedCut& cut, const Machine& machine);
 
 // The seconds the same roughing takes on one path, by the same clock.
 double singlePathSeconds(const TurnPath& path, const TurnCutting& cutting, const Machine& machine);

@@ -1606,6 +1606,10 @@ Theirs: %6</source>
     <context>
         <name>taiwa::ui::TwoPathChart</name>
         <message>
+            <source>Path %1 (%2)</source>
+            <translation>系統 %1（%2）</translation>
+        </message>
+        <message>
             <source>CB%1 in, dwell %2 s</source>
             <translation>CB%1 進入、ドウェル %2 秒</translation>
         </message>
@@ -1636,10 +1640,6 @@ Theirs: %6</source>
         <message>
             <source>No balanced roughing on the timeline</source>
             <translation>タイムライン上にバランス荒加工なし</translation>
-        </message>
-        <message>
-            <source>Path %1 (%2)</source>
-            <translation>系統 %1（%2）</translation>
         </message>
         <message>
             <source>%1 s on %2 paths</source>
@@ -2161,6 +2161,17 @@ Theirs: %6</source>
         <message>
             <source>unit</source>
             <translation>ユニット</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::PathNames</name>
+        <message>
+            <source>upper turret</source>
+            <translation>上タレット</translation>
+        </message>
+        <message>
+            <source>lower turret</source>
+            <translation>下タレット</translation>
         </message>
     </context>
     <context>

@@ -1606,6 +1606,10 @@ Theirs: %6</source>
     <context>
         <name>taiwa::ui::TwoPathChart</name>
         <message>
+            <source>Path %1 (%2)</source>
+            <translation>系统 %1（%2）</translation>
+        </message>
+        <message>
             <source>CB%1 in, dwell %2 s</source>
             <translation>CB%1 进入，暂停 %2 秒</translation>
         </message>
@@ -1636,10 +1640,6 @@ Theirs: %6</source>
         <message>
             <source>No balanced roughing on the timeline</source>
             <translation>时间线上没有平衡粗车</translation>
-        </message>
-        <message>
-            <source>Path %1 (%2)</source>
-            <translation>系统 %1（%2）</translation>
         </message>
         <message>
             <source>%1 s on %2 paths</source>
@@ -2161,6 +2161,17 @@ Theirs: %6</source>
         <message>
             <source>unit</source>
             <translation>单元</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::PathNames</name>
+        <message>
+            <source>upper turret</source>
+            <translation>上刀塔</translation>
+        </message>
+        <message>
+            <source>lower turret</source>
+            <translation>下刀塔</translation>
         </message>
     </context>
     <context>
