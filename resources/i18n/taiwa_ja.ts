@@ -1,5 +1,4 @@
 <?xml version="1.0" encoding="utf-8"?>
-<!-- Texts of the station window (lupdate from ui/ and core/, and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
     <context>
@@ -682,6 +681,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>丸み</translation>
         </message>
         <message>
+            <source>Allowances and grooves drawn ×%1</source>
+            <translation>研削代と逃げ溝を ×%1 で表示</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>形状(切削順、X は直径。円弧は R または中心で指定)</translation>
         </message>
@@ -823,6 +826,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>- - - to cut (grinding allowance)</source>
             <translation>- - - 切削形状(研削代付き)</translation>
+        </message>
+        <message>
+            <source>- - - to cut (grinding allowance, its depth drawn ×%1)</source>
+            <translation>- - - 切削形状(研削代付き、深さを ×%1 で表示)</translation>
         </message>
     </context>
     <context>
@@ -1034,6 +1041,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>表示(&amp;V)</translation>
         </message>
         <message>
+            <source>Tool &amp;paths</source>
+            <translation>工具経路(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Stock as cut</source>
+            <translation>加工された素材(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Pa&amp;rt</source>
+            <translation>製品形状(&amp;R)</translation>
+        </message>
+        <message>
+            <source>The finished pockets' outlines, or the turned part</source>
+            <translation>仕上がったポケットの輪郭、または旋削形状</translation>
+        </message>
+        <message>
+            <source>&amp;Zoom to the selected step</source>
+            <translation>選択した工程に合わせて拡大(&amp;Z)</translation>
+        </message>
+        <message>
             <source>&amp;Language</source>
             <translation>言語(&amp;L)</translation>
         </message>
@@ -1163,6 +1190,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>F&amp;ront</source>
             <translation>正面(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Zoom to step</source>
+            <translation>工程に合わせる(&amp;Z)</translation>
+        </message>
+        <message>
+            <source>Zoom to the selected step, the view turned as it is (all steps: the whole job)</source>
+            <translation>選択した工程に合わせて拡大します。視点の向きはそのままです(全工程: ジョブ全体)</translation>
+        </message>
+        <message>
+            <source>Pat&amp;hs</source>
+            <translation>工具経路(&amp;H)</translation>
+        </message>
+        <message>
+            <source>The tool paths drawn; off, the stock and the colour map show unhidden</source>
+            <translation>工具経路を表示します。オフにすると素材とカラーマップが経路に隠れません</translation>
         </message>
         <message>
             <source>One block back in the selected step</source>

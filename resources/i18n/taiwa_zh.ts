@@ -1,5 +1,4 @@
 <?xml version="1.0" encoding="utf-8"?>
-<!-- Texts of the station window (lupdate from ui/ and core/, and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
     <context>
@@ -682,6 +681,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>圆角</translation>
         </message>
         <message>
+            <source>Allowances and grooves drawn ×%1</source>
+            <translation>磨削余量和退刀槽按 ×%1 显示</translation>
+        </message>
+        <message>
             <source>Profile, in cutting order (X is a diameter; arcs: R, or the centre)</source>
             <translation>轮廓,按切削顺序(X 为直径;圆弧:R 或圆心)</translation>
         </message>
@@ -823,6 +826,10 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>- - - to cut (grinding allowance)</source>
             <translation>- - - 待切削(含磨削余量)</translation>
+        </message>
+        <message>
+            <source>- - - to cut (grinding allowance, its depth drawn ×%1)</source>
+            <translation>- - - 待切削(含磨削余量,深度按 ×%1 显示)</translation>
         </message>
     </context>
     <context>
@@ -1034,6 +1041,26 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
             <translation>视图(&amp;V)</translation>
         </message>
         <message>
+            <source>Tool &amp;paths</source>
+            <translation>刀具路径(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Stock as cut</source>
+            <translation>切削后的毛坯(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Pa&amp;rt</source>
+            <translation>零件(&amp;R)</translation>
+        </message>
+        <message>
+            <source>The finished pockets' outlines, or the turned part</source>
+            <translation>完成的型腔轮廓,或车削零件</translation>
+        </message>
+        <message>
+            <source>&amp;Zoom to the selected step</source>
+            <translation>缩放到所选工步(&amp;Z)</translation>
+        </message>
+        <message>
             <source>&amp;Language</source>
             <translation>语言(&amp;L)</translation>
         </message>
@@ -1163,6 +1190,22 @@ K1 = CONTOUR/L1, ROUND, 5, L2, …</translation>
         <message>
             <source>F&amp;ront</source>
             <translation>正视(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Zoom to step</source>
+            <translation>缩放到工步(&amp;Z)</translation>
+        </message>
+        <message>
+            <source>Zoom to the selected step, the view turned as it is (all steps: the whole job)</source>
+            <translation>缩放到所选工步,视角方向不变(全部工步:整个作业)</translation>
+        </message>
+        <message>
+            <source>Pat&amp;hs</source>
+            <translation>刀具路径(&amp;H)</translation>
+        </message>
+        <message>
+            <source>The tool paths drawn; off, the stock and the colour map show unhidden</source>
+            <translation>显示刀具路径;关闭后毛坯和色图不再被路径遮挡</translation>
         </message>
         <message>
             <source>One block back in the selected step</source>
