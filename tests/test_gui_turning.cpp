@@ -17,6 +17,7 @@
 #include "ui/job_document.h"
 #include "ui/nc_view.h"
 #include "ui/plan_runner.h"
+#include "ui/preview_widget.h"
 #include "ui/profile_editor.h"
 #include "ui/profile_view.h"
 #include "ui/station_window.h"
@@ -401,7 +402,7 @@ private slots:
         QVERIFY(view->deformed() && !view->deformed()->rows.empty());
         if (out.isEmpty()) return;
         QDir().mkpath(out);
-        QVERIFY(w.grab().toImage().save(QDir(out).filePath("station-turning.png")));
+        QVERIFY(ui::grabWithPreview(&w).save(QDir(out).filePath("station-turning.png")));  // the 3-D view drawn in
     }
 };
 
