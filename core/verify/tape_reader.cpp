@@ -1,7 +1,9 @@
 // The reader of the ISO and SINUMERIK tapes (readTape, tape_reader.h): every
 // block understood word by word, the drilling cycles expanded as the manuals
 // describe, or the reading stopped at its line. The Klartext reader is in
-// tape_reader_klartext.cpp.
+// tape_reader_klartext.cpp, SINUMERIK's drilling cycles in
+// tape_reader_cycles.cpp.
+#include "verify/tape_reader_cycles.h"
 #include "verify/tape_reader_machine.h"
 
 #include <cmath>
@@ -54,14 +56,6 @@ private:
     // Synchronised: LinuxCNC's G33.1.
     enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Synchronised, Drill, Peck, Tap, Ream, Bore };
 
-    // A SINUMERIK cycle called modally: CYCLE81, 83, 84, 85 or 86.
-    struct ModalCycle {
-        int number = 81;
-        double rtp = 0, rfp = 0, sdis = 0, dp = 0;
-        double fdep = 0, dam = 0;          // CYCLE83: the first depth (absolute), each further peck
-        double pit = 0, sst = 0, sst1 = 0; // CYCLE84: the pitch, the speeds in and out
-        double ffr = 0, rff = 0;           // CYCLE85: the feeds in and out
-    };
 
     struct Block {
         std::vector<int> g, m;        // G in tenths (G59.1: 591), M whole
@@ -338,7 +332,7 @@ private:
                 return;
             }
             if (axes || !b.g.empty() || !b.m.empty() || !b.v.empty()) refuse("MCALL with other words");
-            mcall_ = modalCycle(b.cycle);
+            mcall_ = sinumerikCycle(b.cycle);
             return;
         }
         if (!b.cycle.empty()) refuse("a cycle called without MCALL");
@@ -363,7 +357,7 @@ private:
             if (mode_ != Mode::Rapid || b.has('Z') || centre)
                 refuse("under MCALL only G0 X Y positioning blocks are understood");
             m_.traverse(to);
-            calledCycle(*mcall_, to);
+            runCalledCycle(m_, *mcall_, to);
             return;
         }
         if (centre && mode_ != Mode::Clockwise && mode_ != Mode::CounterClockwise) refuse("I or J without G2 or G3");
@@ -412,188 +406,18 @@ private:
         m_.feedTo(top, rate);
     }
 
-    // G98 G81/G83/G84/G85/G86 as rs274 expands G81, G83, G85 and G86: up to
-    // R first when below it, across at the initial level, down to R, then
-    // - G81: feed to Z;
-    // - G83: pecks of Q from R, each back up to R and down again in rapid to
-    //   peckReturn() above its bottom, the last one to Z;
-    // - G84 (rigid tapping, as the linuxcnc tape's G33.1): feed to Z and
-    //   back out to R at F (F = pitch x S);
-    // - G85: feed to Z and back out to R;
-    // - G86: feed to Z (the spindle stops there);
-    // then back to the initial level in rapid.
+    // G98 G81/G83/G84/G85/G86 at `hole`: the block's Z, R and Q kept for
+    // the next holes, the moves made by runCannedCycle (tape_reader_cycles.cpp).
     void drill(const Block& b, const Point3& hole)
     {
-        const std::string code = mode_ == Mode::Drill ? "G81"
-                                 : mode_ == Mode::Peck ? "G83"
-                                 : mode_ == Mode::Tap  ? "G84"
-                                 : mode_ == Mode::Ream ? "G85"
-                                                       : "G86";
-        if (!g98_) refuse(code + " without G98 (only the return to the initial level is understood)");
+        const int code = mode_ == Mode::Drill ? 81 : mode_ == Mode::Peck ? 83 : mode_ == Mode::Tap ? 84 : mode_ == Mode::Ream ? 85 : 86;
+        const std::string name = "G" + std::to_string(code);
+        if (!g98_) refuse(name + " without G98 (only the return to the initial level is understood)");
         if (b.has('Z')) cycleZ_ = b.v.at('Z');
         if (b.has('R')) cycleR_ = b.v.at('R');
         if (b.has('Q')) cycleQ_ = b.v.at('Q');
-        if (!cycleZ_ || !cycleR_) refuse(code + " needs Z and R");
-        if (mode_ == Mode::Peck && !cycleQ_) refuse("G83 needs Q (the peck)");
-        if (mode_ == Mode::Peck && !(*cycleQ_ > 0)) refuse("G83's Q must be positive");
-        const double r = *cycleR_, bottom = *cycleZ_;
-        if (bottom > r) refuse(code + "'s Z above its R");
-        if (!known(m_.at)) refuse("a canned cycle from an unknown position");
-        double initial = m_.at.z;
-        if (initial < r) {
-            m_.traverse({m_.at.x, m_.at.y, r});
-            initial = r;
-        }
-        m_.traverse({hole.x, hole.y, initial});
-        m_.traverse({hole.x, hole.y, r});
-        if (mode_ == Mode::Peck) {
-            // rs274's loop, to the same arithmetic.
-            const double q = *cycleQ_;
-            for (double depth = r - q; depth > bottom; depth -= q) {
-                m_.feedTo({hole.x, hole.y, depth}, m_.feed);
-                m_.traverse({hole.x, hole.y, r});
-                m_.traverse({hole.x, hole.y, depth + peckReturn(m_.out.inches)});
-            }
-        }
-        m_.feedTo({hole.x, hole.y, bottom}, m_.feed);
-        if (mode_ == Mode::Tap || mode_ == Mode::Ream) m_.feedTo({hole.x, hole.y, r}, m_.feed);
-        m_.traverse({hole.x, hole.y, initial});
-    }
-
-    // SINUMERIK: the modally called cycle at the position just reached (the
-    // tool at its height there): down to RFP + SDIS in rapid, then
-    // - CYCLE81: feed to DP at F;
-    // - CYCLE83 (VARI=1, chip removal): pecks to FDEP, then DAM deeper each
-    //   time, each back up to RFP + SDIS and down again in rapid to
-    //   peckReturn() above its bottom, the last one to DP, at F (as G83);
-    // - CYCLE84 (rigid tapping): to DP at PIT x SST, out to RFP + SDIS at
-    //   PIT x SST1;
-    // - CYCLE85: to DP at FFR, out to RFP + SDIS at RFF;
-    // - CYCLE86: to DP at F, the spindle stopped, out in rapid;
-    // then up to RTP in rapid (CYCLE86: its two rapids up the hole's axis as
-    // the one straight move they make).
-    void calledCycle(const ModalCycle& c, const Point3& to)
-    {
-        const double top = c.rfp + c.sdis;
-        if (c.dp > c.rfp) refuse("CYCLE" + std::to_string(c.number) + "'s depth above its reference plane");
-        m_.traverse({to.x, to.y, top});
-        switch (c.number) {
-        case 81:
-        case 86:
-            m_.feedTo({to.x, to.y, c.dp}, m_.feed);
-            break;
-        case 83:
-            for (double depth = c.fdep; depth > c.dp; depth -= c.dam) {
-                m_.feedTo({to.x, to.y, depth}, m_.feed);
-                m_.traverse({to.x, to.y, top});
-                m_.traverse({to.x, to.y, depth + peckReturn(m_.out.inches)});
-            }
-            m_.feedTo({to.x, to.y, c.dp}, m_.feed);
-            break;
-        case 84:
-            m_.feedTo({to.x, to.y, c.dp}, c.pit * c.sst);
-            m_.feedTo({to.x, to.y, top}, c.pit * c.sst1);
-            break;
-        case 85:
-            m_.feedTo({to.x, to.y, c.dp}, c.ffr);
-            m_.feedTo({to.x, to.y, top}, c.rff);
-            break;
-        }
-        m_.traverse({to.x, to.y, c.rtp});
-    }
-
-    // The parameters of "NAME(p1,p2,...)", an empty one as nothing.
-    static std::vector<std::optional<double>> cycleParameters(const std::string& call, const std::string& name)
-    {
-        if (!call.ends_with(")")) refuse("'" + call + "' is not understood");
-        const std::string inside = call.substr(name.size() + 1, call.size() - name.size() - 2);
-        std::vector<std::optional<double>> p;
-        std::size_t from = 0;
-        for (int k = 1;; ++k) {
-            const auto comma = inside.find(',', from);
-            const std::size_t size = comma == std::string::npos ? std::string::npos : comma - from;
-            const std::string_view part = std::string_view(inside).substr(from, size);
-            if (part.empty()) {
-                p.emplace_back();
-            } else {
-                const auto value = decimal(part, false);
-                if (!value) refuse(name + "'s parameter " + std::to_string(k) + " is not a number");
-                p.emplace_back(*value);
-            }
-            if (comma == std::string::npos) break;
-            from = comma + 1;
-        }
-        return p;
-    }
-
-    // CYCLE81(RTP,RFP,SDIS,DP); CYCLE83(RTP,RFP,SDIS,DP,,FDEP,,DAM,0,0,1,1);
-    // CYCLE84(RTP,RFP,SDIS,DP,,0,3,,PIT,POSS,SST,SST1);
-    // CYCLE85(RTP,RFP,SDIS,DP,,0,FFR,RFF); CYCLE86(RTP,RFP,SDIS,DP,,0,3,0,0,0,POSS).
-    // Any other value of the fixed parameters (dwells, relative depths,
-    // degression, chip breaking, left-hand tapping, lift off the wall) is
-    // refused.
-    static ModalCycle modalCycle(const std::string& call)
-    {
-        const auto paren = call.find('(');
-        const std::string name = call.substr(0, paren == std::string::npos ? call.size() : paren);
-        if (paren == std::string::npos || !(name == "CYCLE81" || name == "CYCLE83" || name == "CYCLE84" ||
-                                            name == "CYCLE85" || name == "CYCLE86"))
-            refuse("'" + call + "' is not understood");
-        ModalCycle c;
-        c.number = std::stoi(name.substr(5));
-        const auto p = cycleParameters(call, name);
-        const auto need = [&](std::size_t k, const char* what) {
-            if (k > p.size() || !p[k - 1]) refuse(name + " needs " + what + " (parameter " + std::to_string(k) + ")");
-            return *p[k - 1];
-        };
-        const auto empty = [&](std::size_t k, const char* what) {
-            if (k <= p.size() && p[k - 1])
-                refuse(name + "'s " + what + " (parameter " + std::to_string(k) + ") is not supported by this reader");
-        };
-        const auto only = [&](std::size_t k, double value, const char* what) {
-            if (need(k, what) != value) refuse(name + " with " + what + " other than " + show(value) + " is not supported by this reader");
-        };
-        const std::size_t counts[] = {4, 0, 12, 12, 8, 11};  // CYCLE81, -, 83, 84, 85, 86
-        if (c.number == 81 && p.size() != 4) refuse("CYCLE81 needs exactly RTP, RFP, SDIS and DP");
-        if (p.size() != counts[c.number - 81]) refuse(name + " needs " + std::to_string(counts[c.number - 81]) + " parameters");
-        c.rtp = need(1, "RTP");
-        c.rfp = need(2, "RFP");
-        c.sdis = need(3, "SDIS");
-        c.dp = need(4, "DP (the depth, absolute)");
-        if (c.number != 81) empty(5, "DPR (a relative depth)");
-        if (c.number == 83) {
-            c.fdep = need(6, "FDEP (the first depth, absolute)");
-            empty(7, "FDPR (a relative first depth)");
-            c.dam = need(8, "DAM (the peck)");
-            if (!(c.dam > 0)) refuse("CYCLE83's DAM must be positive (a degression is not supported by this reader)");
-            only(9, 0, "DTB (a dwell at depth)");
-            only(10, 0, "DTS (a dwell at the start)");
-            only(11, 1, "FRF (the first feed's factor)");
-            only(12, 1, "VARI (1: chip removal)");
-        } else if (c.number == 84) {
-            only(6, 0, "DTB (a dwell at depth)");
-            only(7, 3, "SDAC (the spindle after the cycle)");
-            empty(8, "MPIT (a thread size)");
-            c.pit = need(9, "PIT (the pitch)");
-            if (!(c.pit > 0)) refuse("CYCLE84's PIT must be positive (left-hand tapping is not supported by this reader)");
-            need(10, "POSS (the spindle's stop angle)");
-            c.sst = need(11, "SST (the tapping speed)");
-            c.sst1 = need(12, "SST1 (the speed out)");
-            if (!(c.sst > 0 && c.sst1 > 0)) refuse("CYCLE84's SST and SST1 must be positive");
-        } else if (c.number == 85) {
-            only(6, 0, "DTB (a dwell at depth)");
-            c.ffr = need(7, "FFR (the feed in)");
-            c.rff = need(8, "RFF (the feed out)");
-            if (!(c.ffr > 0 && c.rff > 0)) refuse("CYCLE85's FFR and RFF must be positive");
-        } else if (c.number == 86) {
-            only(6, 0, "DTB (a dwell at depth)");
-            only(7, 3, "SDIR (the spindle's direction)");
-            only(8, 0, "RPA (a lift off the wall)");
-            only(9, 0, "RPO (a lift off the wall)");
-            only(10, 0, "RPAP (a lift off the wall)");
-            need(11, "POSS (the spindle's stop angle)");
-        }
-        return c;
+        if (!cycleZ_ || !cycleR_) refuse(name + " needs Z and R");
+        runCannedCycle(m_, code, hole, *cycleR_, *cycleZ_, cycleQ_);
     }
 
     bool sinumerik_;
@@ -615,7 +439,7 @@ private:
     int percents_ = 0;
     int selected_ = 0;
     std::optional<double> cycleZ_, cycleR_, cycleQ_;
-    std::optional<ModalCycle> mcall_;
+    std::optional<SinumerikCycle> mcall_;
 };
 
 }  // namespace
