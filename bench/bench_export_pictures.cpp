@@ -12,6 +12,7 @@
 #include "pipeline/pipeline.h"
 #include "sim/stock_simulation.h"
 #include "tools/tool_library.h"
+#include "bench_paths.h"
 
 #include <QGuiApplication>
 
@@ -29,7 +30,7 @@ using picture::kSheetWidth;
 const Plan& plate()
 {
     static const Plan plan = [] {
-        auto read = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/plate.taiwa");
+        auto read = readJobFile(taiwa::bench::sample("plate"));
         return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
     }();
     return plan;

@@ -17,6 +17,7 @@
 #include "job/job_file.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
+#include "bench_paths.h"
 
 #include <QGuiApplication>
 #include <QTemporaryDir>
@@ -90,7 +91,7 @@ int main(int argc, char** argv)
     }
     // The fine pocket of the CAM comparison (bench/fine-pocket.taiwa): 100 x 60
     // x 20, a 10 mm end mill, step-over 2 %, step-down 0.2 mm.
-    const std::string fine = TAIWA_BENCH_DIR "/fine-pocket.taiwa";
+    const std::string fine = taiwa::bench::dir() + "/fine-pocket.taiwa";
     print("fine", 1, bench::inChild([&] {
         qputenv("QT_QPA_PLATFORM", "offscreen");
         QGuiApplication app(argc, argv);

@@ -11,6 +11,7 @@
 #include "tools/pg_tool_store.h"
 #include "tools/tool_library.h"
 #include "tools/tool_store.h"
+#include "bench_paths.h"
 
 #include <QTemporaryDir>
 
@@ -119,7 +120,7 @@ void print(const char* store, const std::vector<StationFigures>& fs)
 
 int main()
 {
-    const JobReadResult read = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/plate.taiwa");
+    const JobReadResult read = readJobFile(taiwa::bench::sample("plate"));
     if (!read.job) {
         std::printf("bench_shop_server: plate.taiwa cannot be read\n");
         return 1;

@@ -13,6 +13,7 @@
 #include "verify/tape_readback.h"
 #include "verify/tape_reader.h"
 #include "verify/verify.h"
+#include "bench_paths.h"
 
 #include <algorithm>
 #include <chrono>
@@ -50,7 +51,7 @@ int main()
     // The milling sample with the most moves.
     Plan largest;
     std::string name;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(TAIWA_BENCH_DIR) + "/../resources/samples")) {
+    for (const auto& e : std::filesystem::directory_iterator(taiwa::bench::dir() + "/../resources/samples")) {
         if (e.path().extension() != ".taiwa" || e.path().filename().string().starts_with("lathe-")) continue;
         const JobReadResult read = readJobFile(e.path().string());
         if (!read.job) continue;

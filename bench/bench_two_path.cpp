@@ -11,6 +11,7 @@
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
 #include "verify/two_path_timeline.h"
+#include "bench_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -27,7 +28,7 @@ const TurnStep& roughing(const std::string& stem)
     static std::map<std::string, Plan> plans;
     auto it = plans.find(stem);
     if (it == plans.end()) {
-        auto r = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/" + stem + ".taiwa");
+        auto r = readJobFile(taiwa::bench::sample(stem));
         if (!r.job) throw std::runtime_error("cannot read " + stem);
         it = plans.emplace(stem, planJob(*r.job, TechnologyTable::builtIn(), defaultToolLibrary())).first;
     }

@@ -15,6 +15,7 @@
 #include "sim/path_samples.h"
 #include "tools/tool_library.h"
 #include "verify/verify.h"
+#include "bench_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -36,7 +37,7 @@ Plan planOf(const std::string& path)
 
 const Plan& plate()
 {
-    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/plate.taiwa");
+    static const Plan plan = planOf(taiwa::bench::sample("plate"));
     return plan;
 }
 
@@ -231,7 +232,7 @@ void verifyAgainstStamping(benchmark::State& state, const Plan& plan)
 
 void BM_VerifyCpIslands(benchmark::State& state)
 {
-    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/cp-islands.taiwa");
+    static const Plan plan = planOf(taiwa::bench::sample("cp-islands"));
     verifyAgainstStamping(state, plan);
 }
 BENCHMARK(BM_VerifyCpIslands)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
@@ -241,7 +242,7 @@ BENCHMARK(BM_VerifyPlateFine)->Unit(benchmark::kMillisecond)->UseRealTime()->Ite
 
 void BM_VerifyFinePocket(benchmark::State& state)
 {
-    static const Plan plan = planOf(std::string(TAIWA_BENCH_DIR) + "/fine-pocket.taiwa");
+    static const Plan plan = planOf(taiwa::bench::dir() + "/fine-pocket.taiwa");
     verifyAgainstStamping(state, plan);
 }
 BENCHMARK(BM_VerifyFinePocket)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
@@ -253,7 +254,7 @@ BENCHMARK(BM_VerifyFinePocket)->Unit(benchmark::kMillisecond)->UseRealTime()->It
 // cells visited in the run that finished, and the bound.
 void BM_VerifyBoundedStepOver(benchmark::State& state)
 {
-    auto read = readJobFile(std::string(TAIWA_BENCH_DIR) + "/../resources/samples/m4-standard.taiwa");
+    auto read = readJobFile(taiwa::bench::sample("m4-standard"));
     read.job->technology.stepOver = read.job->technology.gamma = static_cast<double>(state.range(0)) / 1000.0;
     const Plan plan = planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
     std::size_t moves = 0;

@@ -89,7 +89,7 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("TAIWA_TOOL_DB", testToolDb());
         p.setProcessEnvironment(env);
-        p.start("prlimit", QStringList{"--fsize=" + QString::number(biggestText + 2048), QStringLiteral(TAIWA_BINARY)} +
+        p.start("prlimit", QStringList{"--fsize=" + QString::number(biggestText + 2048), taiwaBinary()} +
                                exportArgs(other, out));
         QVERIFY(p.waitForFinished(60000));
         const QString said = QString::fromUtf8(p.readAll());
@@ -133,8 +133,8 @@ private slots:
         for (int round = 0; round < 15; ++round) {  // 30 exports, two at a time
             QProcess pa, pb;
             for (QProcess* p : {&pa, &pb}) p->setProcessEnvironment(env);
-            pa.start(QStringLiteral(TAIWA_BINARY), exportArgs(a, out));
-            pb.start(QStringLiteral(TAIWA_BINARY), exportArgs(b, out));
+            pa.start(taiwaBinary(), exportArgs(a, out));
+            pb.start(taiwaBinary(), exportArgs(b, out));
             QVERIFY(pa.waitForFinished(60000) && pb.waitForFinished(60000));
             QCOMPARE(pa.exitCode(), 0);
             QCOMPARE(pb.exitCode(), 0);
@@ -224,7 +224,7 @@ private slots:
         for (int i = 0; i < 12; ++i) {
             QProcess p;
             p.setProcessEnvironment(env);
-            p.start(QStringLiteral(TAIWA_BINARY), exportArgs(job, out));
+            p.start(taiwaBinary(), exportArgs(job, out));
             QVERIFY(p.waitForStarted());
             QTest::qSleep(40 + 15 * i);  // into planning, painting, writing
             ::kill(static_cast<pid_t>(p.processId()), SIGKILL);

@@ -5,6 +5,7 @@
 // after a change.
 #include "figure/figure_eval.h"
 #include "figure/figure_text.h"
+#include "support/support.h"
 
 #include <QtTest>
 
@@ -379,7 +380,7 @@ private slots:
     // each text is read or refused with a place, and what is read round-trips.
     void fuzzCorpusRoundTrips()
     {
-        const QDir dir(QStringLiteral(TAIWA_SOURCE_DIR "/tests/fuzz/corpus/figure_text"));
+        const QDir dir(taiwa::test::sourcePath(QStringLiteral("tests/fuzz/corpus/figure_text")));
         const QStringList files = dir.entryList(QDir::Files);
         QVERIFY(files.size() >= 5);
         int read = 0;

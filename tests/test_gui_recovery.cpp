@@ -193,7 +193,7 @@ private slots:
 
     void realProcessKilled()
     {
-        QVERIFY2(QFile::exists(TAIWA_BINARY), "build the taiwa executable first");
+        QVERIFY2(QFile::exists(taiwa::test::taiwaBinary()), "build the taiwa executable first");
         const QString job = dir_.filePath("killed.taiwa");
         Job saved;
         M4Pocket p;
@@ -224,7 +224,7 @@ private slots:
         env.insert("TAIWA_TOOL_DB", qEnvironmentVariable("TAIWA_TOOL_DB"));
         env.insert("TAIWA_NO_PROMPTS", "1");  // restore without asking
         taiwa.setProcessEnvironment(env);
-        taiwa.start(TAIWA_BINARY, {job});
+        taiwa.start(taiwa::test::taiwaBinary(), {job});
         QVERIFY(taiwa.waitForStarted());
         // The process restored the recovery file and writes its own within an
         // autosave interval.

@@ -7,6 +7,7 @@
 #include "job/job_file.h"
 #include "modules/m4/m4.h"
 #include "pipeline/pipeline.h"
+#include "support/support.h"
 #include "tools/tool_library.h"
 #include "ui/step_table.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 Job plate()
 {
-    const auto read = readJobFile(TAIWA_SOURCE_DIR "/resources/samples/plate.taiwa");
+    const auto read = readJobFile(taiwa::test::sourcePath(QStringLiteral("resources/samples/plate.taiwa")).toStdString());
     return read.job ? *read.job : Job{};
 }
 

@@ -43,7 +43,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(work_.isValid());
-        const Run r = run("cpack", {"-G", "DEB", "--config", QStringLiteral(TAIWA_BUILD_DIR) + "/CPackConfig.cmake", "-B",
+        const Run r = run("cpack", {"-G", "DEB", "--config", taiwa::test::buildDir() + "/CPackConfig.cmake", "-B",
                                     work_.path()});
         QVERIFY2(r.code == 0, qPrintable(r.out));
         const QStringList debs = QDir(work_.path()).entryList({"taiwa_*.deb"});

@@ -11,6 +11,7 @@
 #include "pipeline/pipeline.h"
 #include "support/images.h"
 #include "support/scene_picture.h"
+#include "support/support.h"
 #include "tools/tool_library.h"
 #include "viz/render.h"
 #include "viz/scene.h"
@@ -42,7 +43,7 @@ std::shared_ptr<const Plan> planOf(const Job& job)
 // The sample plate.
 Job plate()
 {
-    const auto read = readJobFile(TAIWA_SOURCE_DIR "/resources/samples/plate.taiwa");
+    const auto read = readJobFile(taiwa::test::sourcePath(QStringLiteral("resources/samples/plate.taiwa")).toStdString());
     return read.job ? *read.job : Job{};
 }
 

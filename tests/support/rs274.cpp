@@ -1,6 +1,7 @@
 // Running LinuxCNC's rs274 on our G-code and reading its canonical calls
 // (see rs274.h).
 #include "support/rs274.h"
+#include "support/support.h"
 
 #include <QDir>
 #include <QFile>
@@ -24,7 +25,7 @@ std::vector<double> numbers(const QString& args)
 
 bool copyData(const QString& name, const QString& to)
 {
-    return QFile::copy(QStringLiteral(TAIWA_TEST_DATA "/rs274/") + name, to) &&
+    return QFile::copy(dataPath(QStringLiteral("rs274/") + name), to) &&
            QFile::setPermissions(to, QFile::ReadOwner | QFile::WriteOwner);
 }
 

@@ -18,6 +18,8 @@ namespace taiwa::test {
 
 QString sourcePath(const QString& relative) { return QDir(QStringLiteral(TAIWA_SOURCE_DIR)).filePath(relative); }
 QString dataPath(const QString& relative) { return QDir(QStringLiteral(TAIWA_TEST_DATA)).filePath(relative); }
+QString buildDir() { return QStringLiteral(TAIWA_BUILD_DIR); }
+QString taiwaBinary() { return QStringLiteral(TAIWA_BINARY); }
 
 QStringList shippedDialects() { return QString(QStringLiteral(TAIWA_SHIPPED_DIALECTS)).split(',', Qt::SkipEmptyParts); }
 QStringList shippedMachines() { return QString(QStringLiteral(TAIWA_SHIPPED_MACHINES)).split(',', Qt::SkipEmptyParts); }
@@ -60,7 +62,7 @@ RunResult runTaiwa(const QStringList& args, const QStringList& env)
         e.insert(kv.left(eq), kv.mid(eq + 1));
     }
     p.setProcessEnvironment(e);
-    p.start(QStringLiteral(TAIWA_BINARY), args);
+    p.start(taiwaBinary(), args);
     RunResult r;
     if (!p.waitForFinished(120000)) {
         p.kill();

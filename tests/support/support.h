@@ -13,6 +13,9 @@ namespace taiwa::test {
 QString sourcePath(const QString& relative);
 // Absolute path below tests/data.
 QString dataPath(const QString& relative);
+// The build folder (build/), and the taiwa executable built in it.
+QString buildDir();
+QString taiwaBinary();
 
 struct RunResult {
     int exitCode = -1;
