@@ -8,7 +8,9 @@
 // the least margin of the tool centre to R, failing seeds) and reports them
 // as counters. TAIWA_CONTOUR_SEEDS sets the count (default 10,000);
 // TAIWA_CONTOUR_NO_TAPE=1 leaves rs274 out (about ten times as fast);
-// TAIWA_CONTOUR_REFUSALS=1 lists every refusal on stderr.
+// TAIWA_CONTOUR_REFUSALS=1 lists every refusal on stderr;
+// TAIWA_BENCH_FIRST=<seed> starts there (a run in slices, as the lathe
+// generator's bench does).
 #include "support/contour_generator.h"
 
 #include <benchmark/benchmark.h>
@@ -29,6 +31,9 @@ void BM_GeneratedContours(benchmark::State& state)
     const char* seeds = std::getenv("TAIWA_CONTOUR_SEEDS");
     const auto n = seeds ? std::strtoull(seeds, nullptr, 10) : static_cast<unsigned long long>(state.range(0));
     const bool tapes = !std::getenv("TAIWA_CONTOUR_NO_TAPE");
+    const char* firstEnv = std::getenv("TAIWA_BENCH_FIRST");
+    const std::uint64_t first = firstEnv && std::strtoull(firstEnv, nullptr, 10) > 0 ? std::strtoull(firstEnv, nullptr, 10) : 1;
+    const std::uint64_t last = first + n - 1;
     test::ContourTally tally;
     double seconds = 0.0;
     for (auto _ : state) {
@@ -51,19 +56,21 @@ void BM_GeneratedContours(benchmark::State& state)
             cases.clear();
             outcomes.clear();
         };
-        for (std::uint64_t seed = 1; seed <= n; ++seed) {
+        for (std::uint64_t seed = first; seed <= last; ++seed) {
             cases.push_back(test::generateContourCase(seed));
             outcomes.push_back(test::runContourCase(cases.back(), false));
             if (cases.size() == 20) flush();
             if (seed % 1000 == 0) {  // the counts so far, for a run stopped early
-                std::fprintf(stderr, "seeds 1-%llu: %s\n", static_cast<unsigned long long>(seed), tally.summary().c_str());
+                std::fprintf(stderr, "seeds %llu-%llu: %s\n", static_cast<unsigned long long>(first),
+                             static_cast<unsigned long long>(seed), tally.summary().c_str());
                 std::fflush(stderr);
             }
         }
         flush();
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    std::printf("seeds 1-%llu: %s; %.1f s\n", n, tally.summary().c_str(), seconds);
+    std::printf("seeds %llu-%llu: %s; %.1f s\n", static_cast<unsigned long long>(first), static_cast<unsigned long long>(last),
+                tally.summary().c_str(), seconds);
     state.counters["cases"] = tally.cases;
     state.counters["planned"] = tally.planned;
     state.counters["clean"] = tally.clean;

@@ -212,6 +212,41 @@ private slots:
         QVERIFY2(c.refusal.starts_with("E5.moved cannot be turned"), c.refusal.c_str());
     }
 
+    // Seed 5444 (of the lathe parts; 11 of 10,000 alike) was refused "the
+    // half-section's booleans failed: the result's boundary does not
+    // close": E1 (the front face) and E2 (a concave R3.32 rounding) both
+    // ground, their moved edges meeting at Z0.48 X19.047, and moved E2's
+    // circle (R3.21) crossing the straight side from E1's corner to that
+    // point once more, 0.1 mm short of it. The shape's loop crossed itself.
+    // It now closes at that crossing; the piece between lies on the side
+    // both shapes share (E1.end), and the part is refused for what it is.
+    void aSideCrossingItsMovedArcClosesTheShape()
+    {
+        const GeneratedProfile g = generateLathePart(5444);
+        const PlanCheck c = planAndVerify(g, false);
+        QVERIFY2(!c.planned, words(g, c).c_str());
+        QVERIFY2(c.refusal.find("booleans") == std::string::npos, c.refusal.c_str());
+        QCOMPARE(QString::fromStdString(c.refusedOn), QString("rows"));
+        QVERIFY2(c.refusal.starts_with("E4.moved cannot be finished as drawn"), c.refusal.c_str());
+    }
+
+    // Seed 3092 of the profile generator's plans: a relief groove under E6's
+    // allowance (0.11 mm, the face's lower 1.9 mm left unground) at the
+    // back of a recess the blade cleared. Its last plunge came down with the
+    // blade's back 0.11 mm under the allowance standing over the undercut:
+    // a gouge of 0.110 mm and a rapid into stock the verifier found. The
+    // plunge now comes down where the blade is clear, and the undercut a
+    // radial blade cannot reach is left with a note.
+    void aBladeDoesNotComeDownUnderTheAllowance()
+    {
+        const GeneratedProfile g = generateTurnedProfile(3092);
+        const PlanCheck c = planAndVerify(g, true);
+        QVERIFY2(c.planned && !c.fatal && c.rs274Refusal.empty(), words(g, c).c_str());
+        QVERIFY2(!c.findings.count("gouge") && !c.findings.count("rapid-into-stock"), words(g, c).c_str());
+        const std::string note = warningWith(c, "the part stands over it");
+        QVERIFY2(note.starts_with("E6.groove1 is left 0.11 mm wide in front of Z-23.49 mm"), words(g, c).c_str());
+    }
+
     // A last edge falling 45° to the part's end (Ø30 to Ø20 over 5 mm) with
     // a grinding allowance of 0.3: the allowance reaches 0.3 sin 45° =
     // 0.212 mm past the end over the back face. The blade parts off behind

@@ -157,6 +157,30 @@ void Deformer::shapeOf(std::size_t k)
                             k + 1, len(a), edge.id));
         return;
     }
+    // A straight side that crosses the moved edge once more before it meets
+    // it makes the shape's loop cross itself, which the booleans cannot
+    // take: a concave arc's moved circle runs nearly along the side where
+    // they meet (seed 5444 of the generated lathe parts: moved E2, R3.21,
+    // crosses its side to moved E1 0.1 mm short of their meeting point). The
+    // shape then closes at that crossing. The lobe cut off lies beyond the
+    // side: in the neighbour's own shape when both are ground (their side is
+    // one line, which names the piece between), else past the neighbour's
+    // surface carried on, where no allowance belongs.
+    const auto closeAtCrossing = [&](End& end, bool atStart) {
+        const Segment whole = piece(*pmFull, s.onMoved, e.onMoved);
+        if (end.side.arc) return;
+        std::optional<double> at;
+        for (const ZR c : crossings(end.side, whole)) {
+            if (dist(c, end.onMoved) <= kPointTol || dist(c, end.foot) <= kPointTol) continue;
+            const double t = parameterOf(whole, c);
+            if (!at || (atStart ? t > *at : t < *at)) at = t;
+        }
+        if (!at) return;
+        end.onMoved = pointAt(whole, *at);
+        end.side = lineSegment(end.foot, end.onMoved);
+    };
+    closeAtCrossing(s, true);
+    closeAtCrossing(e, false);
     const Segment movedEdge = piece(*pmFull, s.onMoved, e.onMoved);
     for (std::size_t j = 0; j < p_.edges.size(); ++j) {
         const int ji = static_cast<int>(j);

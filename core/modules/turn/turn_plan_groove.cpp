@@ -2,6 +2,8 @@
 #include "modules/turn/turn_planner.h"
 #include "model/translate_noop.h"
 
+#include <cmath>
+
 namespace taiwa::turning::planner {
 
 void Planner::planGrooves()
@@ -58,15 +60,41 @@ void Planner::planGrooves()
         // Plunges from the front wall back, less than a blade width apart.
         const double eps = 1e-4, span = std::max(width - w, 0.0);  // off the walls, inside the blade's own narrowing
         const int n = span <= kTol ? 1 : static_cast<int>(std::ceil(span / (0.8 * w) - 1e-9)) + 1;
+        // The blade comes down from rTop. Where the part stands over the run
+        // (the allowance over a relief groove's undercut, seed 3092 of the
+        // generator's plans), the blade cannot come down there at all: the
+        // plunge moves to the nearest place where the blade is clear at rTop
+        // and still over the run; what no plunge then reaches is left and
+        // said, and a run no plunge reaches is refused below.
+        const auto clear = [&](double z) { return !F.inside({z, rTop}); };
+        const double overLo = zLo + 0.01, overHi = zHi + w - 0.01;  // the blade [z - w, z] still over the run
+        const auto comeDown = [&](double z) -> std::optional<double> {
+            if (clear(z)) return z;
+            for (double step = 0.002;; step += 0.002) {
+                const bool back = z - step >= overLo, ahead = z + step <= overHi;
+                if (!back && !ahead) return std::nullopt;
+                for (const double dir : {-1.0, 1.0}) {
+                    const double c = z + dir * step;
+                    if (!(dir < 0 ? back : ahead) || !clear(c)) continue;
+                    double blocked = c - dir * 0.002, free = c;
+                    for (int it = 0; it < 20; ++it) {  // to 2 nm
+                        const double m = 0.5 * (blocked + free);
+                        (clear(m) ? free : blocked) = m;
+                    }
+                    return free;
+                }
+            }
+        };
         std::vector<ZR> bottoms;
         for (int k = 0; k < n; ++k) {
-            const double z = zHi - eps - (n > 1 ? span * k / (n - 1) : 0.0);
+            const auto z = comeDown(zHi - eps - (n > 1 ? span * k / (n - 1) : 0.0));
+            if (!z) continue;  // nowhere clear over the run: this plunge is not made
             double bottom = rTop;
-            for (const auto& f : F.freeAlongR(z, inner_ ? rTop - 1.0 : -1.0, inner_ ? R_ + 100.0 : rTop + 1.0))
+            for (const auto& f : F.freeAlongR(*z, inner_ ? rTop - 1.0 : -1.0, inner_ ? R_ + 100.0 : rTop + 1.0))
                 if (f.first <= rTop + 1e-6 && f.second >= rTop - 1e-6) bottom = inner_ ? f.second : f.first;
-            bottoms.push_back({z, bottom});
+            bottoms.push_back({*z, bottom});
         }
-        double reached = bottoms.front().r;
+        double reached = rTop;
         for (const ZR p : bottoms) reached = inner_ ? std::max(reached, p.r) : std::min(reached, p.r);
         if (s_ * (reached - deepest) > 0.01) {
             problem("rows", fmt::format("{} cannot be turned: {}; as a groove it is {} wide and {} deep, and the blade {} ({} wide) "
@@ -75,6 +103,16 @@ void Planner::planGrooves()
                                         toolWords(*blade), len(w), len(std::abs(mouth - reached))));
             continue;
         }
+        // What the blade could not come down to, at either end of the run.
+        double zMost = -1e300, zLeast = 1e300;
+        for (const ZR p : bottoms) zMost = std::max(zMost, p.z), zLeast = std::min(zLeast, p.z);
+        const double frontLeft = zHi - zMost, backLeft = zLeast - w - zLo;
+        if (frontLeft > 0.001)
+            note(fmt::format("{} is left {} wide behind Z{}: the part stands over it, and the blade {} comes down only beside it",
+                             d_.edges[i].id, len(frontLeft), len(zHi), toolWords(*blade)));
+        if (backLeft > 0.001)
+            note(fmt::format("{} is left {} wide in front of Z{}: the part stands over it, and the blade {} comes down only beside it",
+                             d_.edges[j - 1].id, len(backLeft), len(zLo), toolWords(*blade)));
         const auto cutting = cuttingOf(*blade, kGroove, true);
         if (!cutting) continue;
         TurnStep ts;
@@ -84,7 +122,8 @@ void Planner::planGrooves()
         ts.cutting = *cutting;
         ts.region = fmt::format("{}, Z{} to Z{}", elements, len(zLo), len(zHi));
         PathWriter wr{{}, {}};
-        wr.begin({zHi, rTop});
+        // From the run's front at rTop, unless the part stands over it there.
+        wr.begin({clear(zHi) ? zHi : bottoms.front().z, rTop});
         for (std::size_t k = 0; k < bottoms.size(); ++k) {
             wr.rapid({bottoms[k].z, rTop});
             wr.feed(bottoms[k], FeedKind::Plunge);
