@@ -139,6 +139,11 @@ private slots:
         // with F1 the finishing pass at full depth ran the shank 2.9 mm into
         // the wall. Now refused on F (asking for F2), naming the longest.
         QTest::newRow("SIDE F1, Ø2 with 6 mm flutes at T 8.9: the shank 2.9 mm into the wall") << quint64(84) << "F";
+        // A SIDE notch whose tool centre turns on an arc of 2 µm: the tape
+        // said "G3 X23.029 Y21.99 I-0.002 J0.001", whose end is 0.001 mm from
+        // its centre as written, and rs274 refused the tape ("Zero-radius
+        // arc"). A radius under two units of the tape is now a line.
+        QTest::newRow("SIDE notch: an arc of 2 µm, a zero-radius arc to rs274") << quint64(4752) << "";
     }
     void seedsThatFailedBefore()
     {

@@ -422,9 +422,17 @@ private slots:
                      w.arc({82 + 10 * std::cos(a), 29.9999 + 10 * std::sin(a), -2}, {82, 29.9999}, false, 100);
                  }),
                  QStringList{});
-        // A true full circle of 1 µm radius is still written as one.
-        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }),
-                 (QStringList{"G3 X92 Y30 I0.001 J0 F100"}));
+        // A radius under two units as the controller reads it, at either end,
+        // is a line: LinuxCNC refuses it as a "zero-radius arc" (below
+        // 0.00127 mm). Seed 4752 of the contour generator: I-0.002 J0.001 to
+        // an end 0.001 mm from the centre, once written "G3 ... I-0.002 J0.001".
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({91.997, 30.001, -2}, {91.998, 30.001}, false, 100); }),
+                 (QStringList{"G1 X91.997 Y30.001 F100"}));
+        // A full circle of 1 µm radius is left out (it stays within 2 µm of its start).
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92, 29.9999, -2}, {92.001, 29.9999}, false, 100); }), QStringList{});
+        // Two units at both ends: an arc.
+        QCOMPARE(tape(mm, [](Sink& w) { w.arc({92.004, 29.9999, -2}, {92.002, 29.9999}, false, 100); }),
+                 (QStringList{"G3 X92.004 Y30 I0.002 J0 F100"}));
         // In inch (the writer's input is in tape units) one unit is 0.0001 in:
         // a radius of 0.00008 in is a line, one of 0.0003 in an arc.
         QCOMPARE(tape(in, [](Sink& w) { w.arc({92.00016, 29.9999, -2}, {92.00008, 29.9999}, false, 100); }),

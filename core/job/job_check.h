@@ -22,7 +22,8 @@ struct CheckedJob {
     Diagnostics diagnostics;                   // capped at 100 (the last line says how many more)
     std::optional<TechnologyData> technology;  // in force, mm; absent when the material or an override is refused
     // Each turning unit's deformed profile, made by its check (one per unit
-    // of mmJob, nullopt for the others): the plan cuts it, not a second one.
+    // of mmJob, nullopt for the others; empty when no unit is turned): the
+    // plan cuts it, not a second one.
     std::vector<std::optional<TurnedPart>> turned;
     bool ok() const { return !hasErrors(diagnostics); }
 };

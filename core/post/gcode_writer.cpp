@@ -249,9 +249,17 @@ void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
     // written, its centre would be its start ("I0 J0") or its end its start
     // (a full circle to the controller). Its length is measured from the
     // start the caller meant, so that a full circle stays one.
+    // So is an arc whose radius, as the controller reads it from the words
+    // written (the start, I and J, the end, each rounded), is under two units
+    // at either end: LinuxCNC refuses it as a zero-radius arc below 0.00127
+    // mm (seed 4752 of the contour generator: I-0.002 J0.001 to an end
+    // 0.0010 mm from the centre); its chord is within that of the arc.
     const Point3 from{axis_[X]->exact, axis_[Y]->exact, axis_[Z]->exact};
     const Move asked{clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, to, centre};
-    if (std::hypot(i, j) < resolution_ ||
+    const auto onTape = [this](double v) { return std::round(v / resolution_) * resolution_; };
+    const double cx = axis_[X]->value + onTape(i), cy = axis_[Y]->value + onTape(j);
+    const double readStart = std::hypot(onTape(i), onTape(j)), readEnd = std::hypot(onTape(to.x) - cx, onTape(to.y) - cy);
+    if (std::hypot(i, j) < resolution_ || std::min(readStart, readEnd) < 2.0 * resolution_ ||
         std::abs(arcSweep(from, asked)) * std::hypot(from.x - centre.x, from.y - centre.y) < resolution_) {
         feed(to, feedRate);
         return;

@@ -210,8 +210,13 @@ void KlartextWriter::arc(const Point3& to, Point2 centre, bool clockwise, double
     const double i = centre.x - *axis_[X], j = centre.y - *axis_[Y];
     const Move asked{clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, to, centre};
     const double sweep = arcSweep(from, asked);
-    // Below one unit of the tape an arc is a line (as in gcode_writer).
-    if (std::hypot(i, j) < resolution_ || std::abs(sweep) * std::hypot(from.x - centre.x, from.y - centre.y) < resolution_) {
+    // Below one unit of the tape an arc is a line, and so is one whose
+    // radius as read from the words written is under two units at either
+    // end (as in gcode_writer).
+    const double readStart = std::hypot(asRead(centre.x) - *axis_[X], asRead(centre.y) - *axis_[Y]);
+    const double readEnd = std::hypot(asRead(centre.x) - asRead(to.x), asRead(centre.y) - asRead(to.y));
+    if (std::hypot(i, j) < resolution_ || std::min(readStart, readEnd) < 2.0 * resolution_ ||
+        std::abs(sweep) * std::hypot(from.x - centre.x, from.y - centre.y) < resolution_) {
         feed(to, feedRate);
         return;
     }
