@@ -345,7 +345,7 @@ JobReadResult readJobFile(const std::string& path)
     // allocator keeps for reuse; the plan's largest block (the steps) takes
     // fresh pages of its own, so the tree's pages were held through the
     // planning on top of it. Given back: taiwa check of 100,000 units peaked
-    // at 429 MB with them, 389 MB without (docs/build.md, README).
+    // at 429 MB with them, 389 MB without (README, "Benchmarks").
     if (text.text->size() > (1u << 20)) malloc_trim(0);
     return read;
 }
