@@ -256,9 +256,9 @@ void GCodeWriter::arc(const Point3& to, Point2 centre, bool clockwise, double fe
     // 0.0010 mm from the centre); its chord is within that of the arc.
     const Point3 from{axis_[X]->exact, axis_[Y]->exact, axis_[Z]->exact};
     const Move asked{clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, to, centre};
-    const auto onTape = [this](double v) { return std::round(v / resolution_) * resolution_; };
-    const double cx = axis_[X]->value + onTape(i), cy = axis_[Y]->value + onTape(j);
-    const double readStart = std::hypot(onTape(i), onTape(j)), readEnd = std::hypot(onTape(to.x) - cx, onTape(to.y) - cy);
+    const double ri = written(i).value, rj = written(j).value;  // I and J as read
+    const double cx = axis_[X]->value + ri, cy = axis_[Y]->value + rj;
+    const double readStart = std::hypot(ri, rj), readEnd = std::hypot(written(to.x).value - cx, written(to.y).value - cy);
     if (std::hypot(i, j) < resolution_ || std::min(readStart, readEnd) < 2.0 * resolution_ ||
         std::abs(arcSweep(from, asked)) * std::hypot(from.x - centre.x, from.y - centre.y) < resolution_) {
         feed(to, feedRate);

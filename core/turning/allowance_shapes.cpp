@@ -167,8 +167,8 @@ void Deformer::shapeOf(std::size_t k)
     // one line, which names the piece between), else past the neighbour's
     // surface carried on, where no allowance belongs.
     const auto closeAtCrossing = [&](End& end, bool atStart) {
-        const Segment whole = piece(*pmFull, s.onMoved, e.onMoved);
         if (end.side.arc) return;
+        const Segment whole = piece(*pmFull, s.onMoved, e.onMoved);
         std::optional<double> at;
         for (const ZR c : crossings(end.side, whole)) {
             if (dist(c, end.onMoved) <= kPointTol || dist(c, end.foot) <= kPointTol) continue;

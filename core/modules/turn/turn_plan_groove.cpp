@@ -68,22 +68,13 @@ void Planner::planGrooves()
         // said, and a run no plunge reaches is refused below.
         const auto clear = [&](double z) { return !F.inside({z, rTop}); };
         const double overLo = zLo + 0.01, overHi = zHi + w - 0.01;  // the blade [z - w, z] still over the run
+        const auto clearOverRun = F.freeAlongZ(rTop, overLo, overHi);  // where the blade may come down
         const auto comeDown = [&](double z) -> std::optional<double> {
             if (clear(z)) return z;
-            for (double step = 0.002;; step += 0.002) {
-                const bool back = z - step >= overLo, ahead = z + step <= overHi;
-                if (!back && !ahead) return std::nullopt;
-                for (const double dir : {-1.0, 1.0}) {
-                    const double c = z + dir * step;
-                    if (!(dir < 0 ? back : ahead) || !clear(c)) continue;
-                    double blocked = c - dir * 0.002, free = c;
-                    for (int it = 0; it < 20; ++it) {  // to 2 nm
-                        const double m = 0.5 * (blocked + free);
-                        (clear(m) ? free : blocked) = m;
-                    }
-                    return free;
-                }
-            }
+            std::optional<double> nearest;
+            for (const auto& [z0, z1] : clearOverRun)
+                if (const double c = std::clamp(z, z0, z1); !nearest || std::abs(c - z) < std::abs(*nearest - z)) nearest = c;
+            return nearest;
         };
         std::vector<ZR> bottoms;
         for (int k = 0; k < n; ++k) {
@@ -106,7 +97,11 @@ void Planner::planGrooves()
         // What the blade could not come down to, at either end of the run.
         double zMost = -1e300, zLeast = 1e300;
         for (const ZR p : bottoms) zMost = std::max(zMost, p.z), zLeast = std::min(zLeast, p.z);
-        const double frontLeft = zHi - zMost, backLeft = zLeast - w - zLo;
+        // Rounded up to the micrometre, so that the note never says less is
+        // left than is (the free stretch ends a fraction of a micrometre
+        // inside the flattened part's grown outline).
+        const auto upToMicron = [](double mm) { return std::ceil(mm * 1000.0 - 1e-6) / 1000.0; };
+        const double frontLeft = upToMicron(zHi - zMost), backLeft = upToMicron(zLeast - w - zLo);
         if (frontLeft > 0.001)
             note(fmt::format("{} is left {} wide behind Z{}: the part stands over it, and the blade {} comes down only beside it",
                              d_.edges[i].id, len(frontLeft), len(zHi), toolWords(*blade)));
