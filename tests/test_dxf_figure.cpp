@@ -357,6 +357,35 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::logic_error, figureFromContours({c}, {{}, "A-"}));
     }
 
+    // A circle of 20,000 lines, r 4 mm: to 1e-6 mm the two sides that meet
+    // at (4, 0) both round to vertical lines, which no longer cross, so the
+    // writer refuses that attempt before making a statement, and the
+    // contour is written to 1e-7 mm. The names it was given stay given: the
+    // next contour's start after its 20,000.
+    void aPolygonOfManyShortSidesGetsMoreDecimals()
+    {
+        constexpr int kSides = 20000;
+        Contour circle;
+        circle.closed = true;
+        for (int i = 0; i < kSides; ++i)
+            circle.segments.push_back(ContourSegment::line(polar({0, 0}, 4, 2 * kPi * i / kSides),
+                                                           polar({0, 0}, 4, 2 * kPi * (i + 1) / kSides)));
+        circle.segments.back().end = circle.segments.front().start;
+        Contour square;
+        square.closed = true;
+        square.segments = {ContourSegment::line({10, 0}, {12, 0}), ContourSegment::line({12, 0}, {12, 2}),
+                           ContourSegment::line({12, 2}, {10, 2}), ContourSegment::line({10, 2}, {10, 0})};
+        const FigureFromContours w = figureFromContours({circle, square});
+        QVERIFY(w.refusals.empty());
+        QCOMPARE(w.names, (std::vector<std::string>{"K1", "K2"}));
+        QCOMPARE(w.notes, std::vector<std::string>{"contour 1 (K1) is written to 0.0000001 mm: to 0.000001 mm two of its "
+                                                   "lines no longer meet at (4.000, 0.000) once written to 1e-06 mm"});
+        QVERIFY2(w.text.find("\nP2 = POINT/3.9999998, 0.0012566\n") != std::string::npos, w.text.substr(0, 200).c_str());
+        QVERIFY2(w.text.find("\nP20001 = POINT/10, 0\n") != std::string::npos, contourLine(w.text).c_str());
+        QVERIFY2(w.text.find("\nK2 = CONTOUR/L20001, L20002, L20003, L20004\n") != std::string::npos, contourLine(w.text).c_str());
+        QVERIFY2(roundTrip(w.text, w, {circle, square}).isEmpty(), qPrintable(roundTrip(w.text, w, {circle, square})));
+    }
+
     void contoursTheTextCannotHoldAreLeftOut()
     {
         Contour far;

@@ -11,8 +11,8 @@
 #include <cmath>
 #include <numeric>
 #include <optional>
+#include <limits>
 #include <set>
-#include <unordered_map>
 
 namespace taiwa::dxf::detail {
 
@@ -33,8 +33,10 @@ class EndGrid {
 public:
     EndGrid(const std::vector<Point2>& ends, const std::vector<bool>& in, double cell) : cell_(std::max(cell, 1e-9)), ends_(ends)
     {
+        cells_.reserve(ends.size());
         for (std::size_t e = 0; e < ends.size(); ++e)
-            if (in[e]) cells_[key(ends[e])].push_back(static_cast<int>(e));
+            if (in[e]) cells_.emplace_back(key(ends[e]), static_cast<int>(e));
+        std::sort(cells_.begin(), cells_.end());
     }
     Point2 end(int e) const { return ends_[static_cast<std::size_t>(e)]; }
     // Calls f(other end, distance) for the ends within `radius` of end e;
@@ -47,9 +49,10 @@ public:
         std::size_t seen = 0;
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy) {
-                const auto it = cells_.find(pack(cx + dx, cy + dy));
-                if (it == cells_.end()) continue;
-                for (int o : it->second) {
+                const unsigned long long k = pack(cx + dx, cy + dy);
+                for (auto it = std::lower_bound(cells_.begin(), cells_.end(), std::pair(k, std::numeric_limits<int>::min()));
+                     it != cells_.end() && it->first == k; ++it) {
+                    const int o = it->second;
                     if (++seen > kMaxScan) return false;
                     const double d = distance(p, end(o));
                     if (o != e && d <= radius) f(o, d);
@@ -75,7 +78,7 @@ private:
     }
     double cell_;
     const std::vector<Point2>& ends_;
-    std::unordered_map<unsigned long long, std::vector<int>> cells_;
+    std::vector<std::pair<unsigned long long, int>> cells_;  // (cell, end), sorted: a cell's ends in their order
 };
 
 // Closes the join of a (ending) and b (starting): a line end moves to an
@@ -159,17 +162,25 @@ private:
     // Three or more ends within the tolerance of each other: a branch.
     void reportBranches()
     {
-        std::unordered_map<int, std::vector<int>> clusters;
+        // The chained ends by their cluster (its root), each cluster's in
+        // their order; the branches in the order of their first ends.
+        std::vector<std::pair<int, int>> byRoot;
+        byRoot.reserve(2 * n_);
         for (std::size_t e = 0; e < 2 * n_; ++e)
-            if (chained_[pieceOf(static_cast<int>(e))]) clusters[findRoot(parent_, static_cast<int>(e))].push_back(static_cast<int>(e));
-        for (std::size_t e = 0; e < 2 * n_; ++e) {
-            auto it = clusters.find(findRoot(parent_, static_cast<int>(e)));
-            if (it == clusters.end()) continue;
-            const std::vector<int>& ends = it->second;
-            const bool crowd = std::any_of(ends.begin(), ends.end(), [&](int x) { return crowded_[static_cast<std::size_t>(x)]; });
-            if (ends.size() >= 3 || crowd) out_.branches.push_back(branch(ends, crowd));
-            clusters.erase(it);
+            if (chained_[pieceOf(static_cast<int>(e))]) byRoot.emplace_back(findRoot(parent_, static_cast<int>(e)), static_cast<int>(e));
+        std::sort(byRoot.begin(), byRoot.end());
+        std::vector<std::pair<std::vector<int>, bool>> found;  // a branch's ends, whether a crowd
+        for (std::size_t i = 0, j = 0; i < byRoot.size(); i = j) {
+            while (j < byRoot.size() && byRoot[j].first == byRoot[i].first) ++j;
+            const bool crowd = std::any_of(byRoot.begin() + static_cast<std::ptrdiff_t>(i), byRoot.begin() + static_cast<std::ptrdiff_t>(j),
+                                           [&](const auto& x) { return crowded_[static_cast<std::size_t>(x.second)]; });
+            if (j - i < 3 && !crowd) continue;
+            std::vector<int> ends;
+            for (std::size_t k = i; k < j; ++k) ends.push_back(byRoot[k].second);
+            found.emplace_back(std::move(ends), crowd);
         }
+        std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first.front() < b.first.front(); });
+        for (const auto& [ends, crowd] : found) out_.branches.push_back(branch(ends, crowd));
     }
 
     DxfBranch branch(const std::vector<int>& ends, bool crowd) const

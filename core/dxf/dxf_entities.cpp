@@ -116,7 +116,7 @@ std::vector<RawEntity> decodeEntities(const std::string& guardedText)
     DL_Dxf dxf;
     dxf.in(stream, &c);
     c.finish();
-    return c.entities;
+    return std::move(c.entities);
 }
 
 }  // namespace taiwa::dxf::detail

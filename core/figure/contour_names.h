@@ -58,6 +58,16 @@ public:
         std::map<char, int> count;
     };
     void mark() { added_.clear(), countAtMark_ = count_; }
+    // Room for `more` names at once (a contour of many segments): the set
+    // grows at least twofold, never by each contour's few (a rehash of all
+    // names so far per contour).
+    void reserve(std::size_t more)
+    {
+        const std::size_t need = taken_.size() + more;
+        if (static_cast<double>(need) > static_cast<double>(taken_.bucket_count()) * taken_.max_load_factor())
+            taken_.reserve(std::max(need, 2 * taken_.size()));
+        added_.reserve(more);
+    }
     Given takeBack()
     {
         Given g{std::move(added_), count_};

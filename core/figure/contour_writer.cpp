@@ -16,8 +16,9 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <map>
+#include <unordered_map>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 namespace taiwa::figure {
@@ -74,8 +75,15 @@ public:
         tangent_.assign(n, false);
         for (std::size_t k = 0; k < n; ++k)
             if (hasJunction(k)) tangent_[k] = tangentJunction(s[(k + n - 1) % n], s[k], 1.0 / scale_);
+        linesMeet();
 
-        // Points, in the order the contour runs; circles; lines.
+        // Points, in the order the contour runs; circles; lines: each made
+        // in its place in `defs_` (a circle's centre and a line's ends are
+        // points made before it).
+        defs_.reserve(2 * n + 3);  // a closed contour's n points, its n lines or circles and the CONTOUR
+        pointNames_.reserve(n + 2);
+        names_.reserve(2 * n + 3);
+        centres_.reserve(n);
         if (!c_.closed) start_ = point(s.front().start);
         for (std::size_t k = 0; k < n; ++k) {
             if (s[k].isArc()) {
@@ -83,20 +91,21 @@ public:
                 continue;
             }
             centres_.emplace_back();
-            if (!tangentAtStart(k)) point(s[k].start);
+            // (A line tangent at both ends to the one other segment is
+            // drawn from its start: line().)
+            if (!tangentAtStart(k) || (n == 2 && tangentAtEnd(k))) point(s[k].start);
             if (!tangentAtEnd(k)) point(s[k].end);
         }
         if (!c_.closed) end_ = point(s.back().end);
+        const std::size_t points = defs_.size();
         elements_.resize(n);
         for (std::size_t k = 0; k < n; ++k)
             if (s[k].isArc()) elements_[k] = circle(k);
         for (std::size_t k = 0; k < n; ++k)
             if (!s[k].isArc()) elements_[k] = line(k);
+        if (defs_.size() != points + n) throw std::logic_error("dxf figure: a point made after the points");
 
-        std::vector<Definition> out = std::move(points_);
-        out.reserve(out.size() + circles_.size() + lines_.size() + 1);
-        out.insert(out.end(), std::make_move_iterator(circles_.begin()), std::make_move_iterator(circles_.end()));
-        out.insert(out.end(), std::make_move_iterator(lines_.begin()), std::make_move_iterator(lines_.end()));
+        std::vector<Definition> out = std::move(defs_);
         Definition k = contour(out);
         out.push_back(std::move(k));
         return out;
@@ -124,7 +133,7 @@ private:
         d.numbers = {q.x, q.y};
         pointNames_.emplace(key, d.name);
         std::string name = d.name;
-        points_.push_back(std::move(d));
+        defs_.push_back(std::move(d));
         return name;
     }
     std::string pointAt(Point2 p) const
@@ -156,7 +165,7 @@ private:
         d.refs = {centres_[k]};
         d.numbers = {r};
         std::string name = d.name;
-        circles_.push_back(std::move(d));
+        defs_.push_back(std::move(d));
         return name;
     }
 
@@ -192,8 +201,27 @@ private:
             d.refs = {pointAt(s.start), pointAt(s.end)};
         }
         std::string name = d.name;
-        lines_.push_back(std::move(d));
+        defs_.push_back(std::move(d));
         return name;
+    }
+
+    // Two lines through their rounded points that no longer cross: the
+    // evaluation would refuse the CONTOUR (figure_contour.cpp), so a
+    // polygon of many short sides (a circle of 200,000 LINEs) is refused
+    // at once, before any statement is made.
+    void linesMeet() const
+    {
+        const auto& segs = c_.segments;
+        const std::size_t n = segs.size();
+        const auto through = [&](std::size_t k) { return lineThrough(rounded(segs[k].start, scale_), rounded(segs[k].end, scale_)); };
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t before = (k + n - 1) % n;
+            if (!hasJunction(k) || segs[before].isArc() || segs[k].isArc()) continue;
+            if (tangentAtStart(before) || tangentAtEnd(k)) continue;  // a line tangent to a circle: not through two points
+            if (!lineCrossing(through(before), through(k)))
+                throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "two of its lines no longer meet at {} once written to {:g} mm"),
+                                          at(segs[k].start), 1.0 / scale_));
+        }
     }
 
     Definition contour(const std::vector<Definition>& elements)
@@ -255,8 +283,14 @@ private:
     const Contour& c_;
     double scale_;  // numbers to the nearest 1/scale_ mm
     std::vector<bool> tangent_;
-    std::map<std::pair<long long, long long>, std::string> pointNames_;
-    std::vector<Definition> points_, circles_, lines_;
+    struct KeyHash {
+        std::size_t operator()(const std::pair<long long, long long>& k) const
+        {
+            return std::hash<long long>()(k.first) * 1000003u ^ std::hash<long long>()(k.second);
+        }
+    };
+    std::unordered_map<std::pair<long long, long long>, std::string, KeyHash> pointNames_;
+    std::vector<Definition> defs_;  // points, circles, lines, in this order
     std::vector<std::string> centres_;   // per segment: an arc's centre point
     std::vector<std::string> elements_;  // per segment: its line or circle
     std::string start_, end_;            // an open contour's points

@@ -6,6 +6,18 @@
 
 namespace taiwa::figure {
 
+Line lineThrough(Point2 a, Point2 b)
+{
+    return {a, (1.0 / length(b - a)) * (b - a)};
+}
+
+std::optional<Point2> lineCrossing(const Line& a, const Line& b)
+{
+    const double det = cross(a.dir, b.dir);
+    if (std::abs(det) <= 1e-12) return std::nullopt;
+    return a.point + (cross(b.point - a.point, b.dir) / det) * a.dir;
+}
+
 std::vector<Point2> circleCrossings(const Circle& a, const Circle& b)
 {
     const Point2 d = b.centre - a.centre;

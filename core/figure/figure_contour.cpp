@@ -61,9 +61,8 @@ struct Run {
 std::vector<Point2> crossings(const Run& a, const Run& b)
 {
     if (!a.circle && !b.circle) {
-        const double det = cross(a.line.dir, b.line.dir);
-        if (std::abs(det) <= 1e-12) return {};
-        return {a.line.point + (cross(b.line.point - a.line.point, b.line.dir) / det) * a.line.dir};
+        const auto p = lineCrossing(a.line, b.line);
+        return p ? std::vector<Point2>{*p} : std::vector<Point2>{};
     }
     if (a.circle && b.circle) return circleCrossings(a.c, b.c);
     return a.circle ? lineCircleCrossings(b.line, a.c) : lineCircleCrossings(a.line, b.c);

@@ -3,13 +3,13 @@
 // element or more than the modifiers can choose between.
 #include "figure/figure_eval.h"
 
+#include "figure/crossings.h"
 #include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <set>
 #include <stdexcept>
@@ -81,10 +81,9 @@ Point2 sideNormal(const Line& l, Modifier m, const std::string& lineName)
 
 Point2 intersectLines(const Line& a, const Line& b, const std::string& an, const std::string& bn)
 {
-    const double det = cross(a.dir, b.dir);
-    if (std::abs(det) <= 1e-12) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not intersect"), an, bn));
-    const double t = cross(b.point - a.point, b.dir) / det;
-    return a.point + t * a.dir;
+    const auto p = lineCrossing(a, b);
+    if (!p) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} are parallel: they do not intersect"), an, bn));
+    return *p;
 }
 
 // Both intersections of a line and a circle (equal when it touches).
@@ -141,7 +140,7 @@ public:
             const double len = length(b - a);
             if (len <= kTolerance)
                 throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} and {} coincide: no line through them"), d.refs[0], d.refs[1]));
-            e.line = {a, (1.0 / len) * (b - a)};
+            e.line = lineThrough(a, b);
             break;
         }
         case Method::LineAtAngle: e.line = {point(d.refs.at(0)), direction(d.numbers.at(0))}; break;
@@ -168,14 +167,16 @@ public:
         return e;
     }
 
-    void keep(Element e) { known_[e.name] = std::move(e); }
+    // The elements evaluated so far are looked up in the evaluation being
+    // made (its index), not in a copy of their own.
+    explicit Evaluator(const Evaluation& known) : known_(known) {}
 
 private:
     const Element& get(const std::string& n) const
     {
-        const auto it = known_.find(n);
-        if (it == known_.end()) throw std::logic_error("figure: element not evaluated: " + n);
-        return it->second;
+        const Element* e = known_.find(n);
+        if (!e) throw std::logic_error("figure: element not evaluated: " + n);
+        return *e;
     }
     Point2 point(const std::string& n) const { return get(n).point; }
     const Line& line(const std::string& n) const { return get(n).line; }
@@ -294,7 +295,7 @@ private:
         return {choose(two.first, two.second, d.modifiers.at(1), TAIWA_TRANSLATE_NOOP("taiwa::msg", "centres")), r};
     }
 
-    std::map<std::string, Element> known_;
+    const Evaluation& known_;
 };
 
 bool finite(const Element& e)
@@ -314,7 +315,9 @@ bool finite(const Element& e)
 Evaluation evaluate(const std::vector<Definition>& definitions)
 {
     Evaluation out;
-    Evaluator ev;
+    out.elements.reserve(definitions.size());
+    out.elementIndex.reserve(definitions.size());
+    Evaluator ev(out);
     std::set<std::string> missing;  // refused, or defined from a refused element
     for (const auto& d : definitions) {
         if (std::any_of(d.refs.begin(), d.refs.end(), [&](const std::string& r) { return missing.count(r) > 0; })) {
@@ -333,7 +336,6 @@ Evaluation evaluate(const std::vector<Definition>& definitions)
         try {
             Element e = ev.element(d);
             if (!finite(e)) throw Refusal(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its coordinates cannot be computed (a degenerate definition)"));
-            ev.keep(e);
             out.elementIndex.emplace(e.name, out.elements.size());
             out.elements.push_back(std::move(e));
         } catch (const Refusal& r) {  // of the element being evaluated (model/result.h)

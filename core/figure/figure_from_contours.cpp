@@ -1,8 +1,9 @@
 // Contours to figure elements (figure_from_contours.h): each contour made
-// ready (collinear lines and arcs on one circle merged), written
-// (contour_writer.h) to 1e-6 mm and, where a junction amplifies the
-// rounding, with more decimals, read back and evaluated as the job will,
-// and kept, noted or left out by how far it comes back.
+// ready (collinear lines and arcs on one circle merged), its definitions
+// made (contour_writer.h) to 1e-6 mm and, where a junction amplifies the
+// rounding, with more decimals, evaluated as the job will, and kept, noted
+// or left out by how far it comes back; the one kept is written and read
+// back.
 #include "figure/figure_from_contours.h"
 
 #include "figure/contour_names.h"
@@ -130,8 +131,11 @@ Contour figureReady(const Contour& c)
 
 namespace {
 
-// One contour written with its numbers to the nearest 1/scale mm and read
-// back: its definitions and how far their contour comes back from `c`.
+// One contour's definitions with their numbers to the nearest 1/scale mm,
+// and how far their contour comes back from `c`. The definitions are
+// evaluated as they are: written and read back they are the same
+// definitions (every number is a multiple of 1/scale, which the text
+// writes exactly), so only the attempt kept is written (writeOut).
 struct Attempt {
     std::vector<Definition> definitions;
     std::string text;
@@ -144,14 +148,23 @@ Attempt attempt(figure::Namer& names, const Contour& c, double scale)
     Attempt a;
     a.scale = scale;
     a.definitions = figure::contourDefinitions(names, c, scale);
-    a.text = figure::writeFigure(a.definitions);
-    // Read back what was written and evaluate it, as the job will.
-    const figure::ParseResult read = figure::parseFigure(a.text);
-    if (!read.ok()) throw std::logic_error("figure from contours: written text refused: " + read.error->text());
-    const figure::Evaluation ev = figure::evaluate(read.definitions);
+    const figure::Evaluation ev = figure::evaluate(a.definitions);
     if (!ev.ok()) throw Refusal(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text is refused: {}"), ev.errors.front().message));
     a.deviation = deviation(ev.contours.at(0).contour, c);
     return a;
+}
+
+// The kept attempt's text, read back as the job will read it. Should it
+// read back as other definitions than were written, its deviation is
+// measured again on what it does say.
+void writeOut(Attempt& a, const Contour& c)
+{
+    a.text = figure::writeFigure(a.definitions);
+    const figure::ParseResult read = figure::parseFigure(a.text);
+    if (!read.ok()) throw std::logic_error("figure from contours: written text refused: " + read.error->text());
+    if (read.definitions == a.definitions) return;
+    const figure::Evaluation ev = figure::evaluate(read.definitions);
+    a.deviation = ev.ok() ? deviation(ev.contours.at(0).contour, c) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -169,30 +182,36 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
         // kFigureRoundTrip, the contour's numbers get more decimals.
         std::optional<Attempt> best;
         figure::Namer::Given bestNames;
-        std::string why;  // why it is not written to 1e-6 mm
+        bool kept = false;  // an attempt within kFigureRoundTrip, its names still given
+        std::string why;    // why it is not written to 1e-6 mm
         for (const double scale : {1e6, 1e7, 1e8, 1e9}) {
             try {
                 Attempt a = attempt(names, c, scale);
                 if (why.empty() && a.deviation > kFigureRoundTrip)
                     why = std::isinf(a.deviation) ? std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text gives back other segments"))
                                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it comes back {:.7f} mm from the drawing"), a.deviation);
+                if (a.deviation <= kFigureRoundTrip) {  // kept, with the names it was given
+                    best = std::move(a), kept = true;
+                    break;
+                }
                 const bool better = !best || a.deviation < best->deviation;
                 figure::Namer::Given taken = names.takeBack();
                 if (better) best = std::move(a), bestNames = std::move(taken);
-                if (best->deviation <= kFigureRoundTrip) break;
             } catch (const Refusal& r) {  // a contour that cannot be written; caught per contour
                 names.takeBack();
                 if (why.empty()) why = r.message();
             }
         }
+        if (best) writeOut(*best, c);
         if (!best || !(best->deviation <= kFigureUsable)) {
+            if (kept) names.takeBack();
             out.refusals.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} is left out: {}"), number, why));
             out.text += fmt::format("$$ contour {} ({}) left out: {}\n", number, describe(c), why);
             out.names.emplace_back();
             out.deviations.push_back(0.0);
             continue;
         }
-        names.giveAgain(bestNames);
+        if (!kept) names.giveAgain(bestNames);
         const std::string name = best->definitions.back().name;
         if (best->deviation > kFigureRoundTrip)
             out.notes.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} ({}) comes back {:.7f} mm from the drawing"), number, name,
@@ -200,7 +219,8 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
         else if (best->scale > 1e6)
             out.notes.push_back(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "contour {} ({}) is written to {} mm: to 0.000001 mm {}"), number, name,
                                             figure::formatNumber(1.0 / best->scale), why));
-        out.text += fmt::format("$$ contour {}: {}\n", number, describe(c)) + best->text;
+        out.text += fmt::format("$$ contour {}: {}\n", number, describe(c));
+        out.text += best->text;
         out.names.push_back(name);
         out.deviations.push_back(best->deviation);
     }

@@ -3,6 +3,7 @@
 // and column for messages. Internal to core/figure.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -47,6 +48,10 @@ inline std::string printable(std::string_view s)
 class Lexer {
 public:
     explicit Lexer(std::string_view text) : s_(text) {}
+
+    // About how many statements the text holds (each has one '='): room
+    // made at once for a text of many thousands of them.
+    std::size_t statementEstimate() const { return static_cast<std::size_t>(std::count(s_.begin(), s_.end(), '=')); }
 
     Token next()
     {

@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace taiwa::figure::text {
@@ -57,6 +58,9 @@ public:
     std::vector<Definition> statements()
     {
         std::vector<Definition> out;
+        const std::size_t statements = lex_.statementEstimate();
+        out.reserve(statements);
+        defined_.reserve(statements);
         for (;;) {
             while (cur_.tok == Tok::EndOfLine) advance();
             if (cur_.tok == Tok::EndOfText) return out;
@@ -72,7 +76,7 @@ private:
 
     void advance()
     {
-        prev_ = cur_;
+        prev_ = std::move(cur_);
         cur_ = lex_.next();
     }
 
@@ -261,7 +265,7 @@ private:
     Token cur_;
     Token prev_;
     std::string name_;  // the element being defined, for messages
-    std::map<std::string, Defined, std::less<>> defined_;
+    std::unordered_map<std::string, Defined> defined_;
 };
 
 }  // namespace taiwa::figure::text

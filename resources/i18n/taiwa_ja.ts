@@ -2677,6 +2677,10 @@ Theirs: %6</source>
             <translation>円弧の半径が図形テキストで書ける 1000000 mm を超えています</translation>
         </message>
         <message>
+            <source>two of its lines no longer meet at {} once written to {:g} mm</source>
+            <translation>{1} mm 単位で書くと二本の線が {0} で交わらなくなります</translation>
+        </message>
+        <message>
             <source>its elements cannot be evaluated: {}</source>
             <translation>要素を計算できません: {}</translation>
         </message>

@@ -2677,6 +2677,10 @@ Theirs: %6</source>
             <translation>圆弧半径超出图形文本可写的 1000000 mm</translation>
         </message>
         <message>
+            <source>two of its lines no longer meet at {} once written to {:g} mm</source>
+            <translation>按 {1} mm 写出后，其中两条直线不再交于 {0}</translation>
+        </message>
+        <message>
             <source>its elements cannot be evaluated: {}</source>
             <translation>其元素无法计算：{}</translation>
         </message>
