@@ -88,103 +88,22 @@ void Planner::planFinishing(const Tool& tool)
     ts.tipFromCentre = tipFromCentre(rn, inner_);
     ts.cutting = *cutting;
     ts.region = fmt::format("the deformed profile from Z{} to Z{}", len(zFront_), len(zEnd_));
-    // The contour as cut: the profile, each groove the insert cannot
-    // enter bridged by a line across its mouth (the blade cuts it after).
-    std::vector<Segment> contour;
-    const auto runs = unreachedRuns();
-    for (std::size_t i = first_; i < last_;) {
-        const auto run = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == i; });
-        if (run == runs.end()) {
-            contour.push_back(chain_[i]);
-            ++i;
-            continue;
-        }
-        const ZR a = chain_[run->first].a, b = chain_[run->second - 1].b;
-        if (dist(a, b) > kTol) contour.push_back(lineSegment(a, b));
-        i = run->second;
-    }
-    crossGrindingStockRuns(contour, tool);
-    // A step back toward the front at the end (an allowance's side coming
-    // back to the part's last point): the nose on it would sit behind
-    // and below that point, in the part; the contour ends before it.
-    while (contour.size() > 1 && !contour.back().arc && contour.back().b.z > contour.back().a.z + 1e-6) contour.pop_back();
-    // Likewise a step up shorter than the nose at the start (an allowance's
-    // side at the front corner): entering along -Z onto its foot, the nose
-    // would sit over what follows it, in the part; the contour starts after it.
-    while (contour.size() > 1 && !contour.front().arc && length(contour.front()) < rn &&
-           s_ * (contour.front().b.r - contour.front().a.r) > std::abs(contour.front().b.z - contour.front().a.z))
-        contour.erase(contour.begin());
-    bridgeTightArcs(contour, rn, tool);
-    reachableCorners(contour, rn);
-    // The lines that makes at arcs, at line corners in their turn.
-    if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
-    mergeUnheldElements(contour, rn);
-    // The exit's end (the programmed point) for a contour: off the part
-    // with compensation cancelled, up and forward, unless the last element
-    // falls toward its end (the tool would go back into it): then straight
-    // out, away from it. Straight out: the control cancels compensation
-    // moving the nose centre in a line from where it touches the last
-    // element, so the programmed end is that centre moved out, plus the
-    // tip's offset.
-    const ZR upAndOut{t_.clearance, s_ * (t_.clearance + 2.0 * rn)};  // the exit up and forward
-    const auto exitOf = [&](const std::vector<Segment>& c, bool upAndForward) {
-        const ZR last = c.back().b;
-        if (upAndForward) return last + upAndOut;
-        return last + rn * airNormal(tangentAtEnd(c.back())) + ZR{0.0, upAndOut.r} + ts.tipFromCentre;
-    };
-    // The entry: along -Z onto the contour's start, from a point clear of
-    // it by the clearance and two nose radii; as the nose centre runs it
-    // (the programmed point less the tip's offset), for the measure.
-    const auto entryOf = [&](const std::vector<Segment>& c) {
-        const ZR first = c.front().a;
-        return ZR{first.z + t_.clearance + 2.0 * rn, first.r};
-    };
+    std::vector<Segment> contour = finishingContour(tool, rn);
     const auto entryLine = [&](const std::vector<Segment>& c) {
-        const ZR e = entryOf(c) - ts.tipFromCentre;
+        const ZR e = finishingEntry(c, rn) - ts.tipFromCentre;
         return lineSegment({e.z, c.front().a.r}, c.front().a);
     };
     // The nose measured along the entry, the contour and the exit before
     // the plan is returned (the verification refuses a plan that cuts the
     // part anywhere: issue 33, item 3). The contour first: where it cuts,
-    // the plan is refused naming the edge. Then the ways in and out: the
-    // entry along -Z onto the contour's start; failing that, onto the same
-    // contour without the short lines at its start the nose cannot sit
-    // against coming along -Z (a bore face's allowance: the side of the
-    // lip it stands on), or with a lead-in along the part's edge before it
-    // (the front face facing cut, up to a front rounding); the exit up and
-    // forward or straight out.
+    // the plan is refused naming the edge. Then the ways in (the entry
+    // along -Z onto each of finishingWays in turn) and out (up and forward
+    // or straight out).
     std::optional<NoseIntoPart> into = out_.problems.empty() ? noseIntoPart(contour, rn) : std::nullopt;
-    bool upAndForward = dot(unit(upAndOut), airNormal(tangentAtEnd(contour.back()))) > 0.25;
+    bool upAndForward = dot(unit(finishingUpAndOut(rn)), airNormal(tangentAtEnd(contour.back()))) > 0.25;
     std::optional<Segment> unheld;  // the first element of a way the control cannot hold the nose against
     if (!into && out_.problems.empty()) {
-        std::vector<std::vector<Segment>> ways{contour};
-        {
-            std::vector<Segment> c = contour;
-            const ZR in{-1.0, 0.0};
-            // Only an edge of the allowance's own (a side), never the part's.
-            const auto side = [&](const Segment& e) {
-                for (std::size_t i = first_; i < last_; ++i)
-                    if (dist(chain_[i].a, e.a) < 1e-9 && dist(chain_[i].b, e.b) < 1e-9) return !mustReach(i);
-                return false;
-            };
-            while (c.size() > 1 && !c.front().arc && side(c.front())) {
-                const ZR t = tangentAtStart(c.front());
-                if (s_ * cross(in, t) >= -1e-9 && dot(in, t) > -1e-9) break;  // not a concave turn from -Z
-                const double phi = std::acos(std::clamp(dot(in, t), -1.0, 1.0));
-                if (phi < std::numbers::pi - 1e-6 && length(c.front()) >= rn * std::tan(phi / 2.0) + 0.01) break;  // holds it
-                c.erase(c.begin());
-            }
-            if (c.size() < contour.size()) ways.push_back(c);
-        }
-        if (first_ > 0) {
-            const Segment& before = chain_[first_ - 1];
-            if (dist(before.b, contour.front().a) < 1e-9) {
-                const double l = length(before);
-                std::vector<Segment> c = contour;
-                c.insert(c.begin(), l > 2.0 * rn + 1e-6 ? piece(before, pointAt(before, l - 2.0 * rn), before.b) : before);
-                ways.push_back(c);
-            }
-        }
+        const std::vector<std::vector<Segment>> ways = finishingWays(contour, rn);
         std::optional<NoseIntoPart> firstInto;
         bool found = false;
         for (const auto& c : ways) {
@@ -200,8 +119,8 @@ void Planner::planFinishing(const Tool& tool)
             std::optional<NoseIntoPart> bad = noseIntoPart(measured, rn, std::nullopt, true);
             if (!bad) {
                 // The exit: the way chosen by the last element, else the other.
-                bad = noseIntoPart({c.back()}, rn, exitOf(c, upAndForward) - ts.tipFromCentre);
-                if (bad && !noseIntoPart({c.back()}, rn, exitOf(c, !upAndForward) - ts.tipFromCentre)) {
+                bad = noseIntoPart({c.back()}, rn, finishingExit(c, upAndForward, rn, ts.tipFromCentre) - ts.tipFromCentre);
+                if (bad && !noseIntoPart({c.back()}, rn, finishingExit(c, !upAndForward, rn, ts.tipFromCentre) - ts.tipFromCentre)) {
                     upAndForward = !upAndForward;
                     bad.reset();
                 }
@@ -233,26 +152,46 @@ void Planner::planFinishing(const Tool& tool)
                                     len(into->centre.z)));
         return;
     }
-    TurnPath& p = ts.path;
-    const ZR first = contour.front().a;
-    const ZR entry = entryOf(contour);
-    p.start = {entry.z, safeR()};
-    // To the entry point with the nose clear, then compensation on along -Z onto the contour.
-    p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
-    p.moves.push_back({TurnMove::Rapid, entry, {}, FeedKind::Cut});
-    p.comp = inner_ ? NoseCompensation::Left : NoseCompensation::Right;
-    p.compFrom = static_cast<int>(p.moves.size());
-    p.moves.push_back({TurnMove::Feed, first, {}, FeedKind::Cut});
-    for (const auto& s : contour) {
-        if (s.arc) p.moves.push_back({s.ccw ? TurnMove::ArcCCW : TurnMove::ArcCW, s.b, s.centre, FeedKind::Cut});
-        else p.moves.push_back({TurnMove::Feed, s.b, {}, FeedKind::Cut});
-    }
-    p.compTo = static_cast<int>(p.moves.size());
-    p.moves.push_back({TurnMove::Feed, exitOf(contour, upAndForward), {}, FeedKind::Cut});
-    p.moves.push_back({TurnMove::Rapid, {p.moves.back().end.z, safeR()}, {}, FeedKind::Cut});
-    // Out of a bore along the axis before the turret moves on.
-    if (inner_) p.moves.push_back({TurnMove::Rapid, {entry.z, safeR()}, {}, FeedKind::Cut});
+    ts.path = finishingPath(contour, upAndForward, rn, ts.tipFromCentre);
     addStep(StepKind::TurnFinishing, MachiningType::TurnFinishing, tool, finishReason_, std::move(ts));
+}
+
+// The contour as cut: the profile, each groove the insert cannot enter
+// bridged by a line across its mouth (the blade cuts it after), the
+// allowance's stock crossed, the corners and arcs the nose cannot follow
+// bridged.
+std::vector<Segment> Planner::finishingContour(const Tool& tool, double rn)
+{
+    std::vector<Segment> contour;
+    const auto runs = unreachedRuns();
+    for (std::size_t i = first_; i < last_;) {
+        const auto run = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == i; });
+        if (run == runs.end()) {
+            contour.push_back(chain_[i]);
+            ++i;
+            continue;
+        }
+        const ZR a = chain_[run->first].a, b = chain_[run->second - 1].b;
+        if (dist(a, b) > kTol) contour.push_back(lineSegment(a, b));
+        i = run->second;
+    }
+    crossGrindingStockRuns(contour, tool);
+    // A step back toward the front at the end (an allowance's side coming
+    // back to the part's last point): the nose on it would sit behind
+    // and below that point, in the part; the contour ends before it.
+    while (contour.size() > 1 && !contour.back().arc && contour.back().b.z > contour.back().a.z + 1e-6) contour.pop_back();
+    // Likewise a step up shorter than the nose at the start (an allowance's
+    // side at the front corner): entering along -Z onto its foot, the nose
+    // would sit over what follows it, in the part; the contour starts after it.
+    while (contour.size() > 1 && !contour.front().arc && length(contour.front()) < rn &&
+           s_ * (contour.front().b.r - contour.front().a.r) > std::abs(contour.front().b.z - contour.front().a.z))
+        contour.erase(contour.begin());
+    bridgeTightArcs(contour, rn, tool);
+    reachableCorners(contour, rn);
+    // The lines that makes at arcs, at line corners in their turn.
+    if (reachableArcCorners(contour, rn)) reachableCorners(contour, rn);
+    mergeUnheldElements(contour, rn);
+    return contour;
 }
 
 void Planner::crossGrindingStockRuns(std::vector<Segment>& contour, const Tool& tool)

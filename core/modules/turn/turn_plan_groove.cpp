@@ -30,19 +30,7 @@ void Planner::planGrooves()
                                         elements, whyNot(*finishingTool(), i)));
             continue;
         }
-        // The widest blade not wider than the groove (fewer plunges);
-        // for a narrower groove or a step, the narrowest (it may cut a
-        // step from the air beside it).
-        std::vector<const Tool*> blades;
-        if (const Tool* pin = pinned(kGroove)) blades.push_back(pin);
-        else
-            for (const auto& t : lib_)
-                if (t.type == ToolType::Grooving && t.turning.inside == inner_ && t.turning.maxDiameter <= 0) blades.push_back(&t);
-        std::sort(blades.begin(), blades.end(), [&](const Tool* x, const Tool* y) {
-            const bool fx = x->turning.width <= width + kTol, fy = y->turning.width <= width + kTol;
-            if (fx != fy) return fx;
-            return fx ? x->turning.width > y->turning.width : x->turning.width < y->turning.width;
-        });
+        const std::vector<const Tool*> blades = groovingBlades(width);
         if (blades.empty()) {
             problem("rows", fmt::format("{} cannot be turned: {}; and the tool library has no {} grooving blade", elements,
                                         whyNot(*finishingTool(), i), inner_ ? "inside" : "outside"));
@@ -57,34 +45,7 @@ void Planner::planGrooves()
         const double mouth = inner_ ? std::min(a.r, b.r) : std::max(a.r, b.r);
         const double rTop = mouth + s_ * t_.clearance;
         const ForbiddenRegion F = ForbiddenRegion::make(partLoop_, bladeShape(w, 50.0, inner_), 0.0, 0.0, 0.0, 0.0002);
-        // Plunges from the front wall back, less than a blade width apart.
-        const double eps = 1e-4, span = std::max(width - w, 0.0);  // off the walls, inside the blade's own narrowing
-        const int n = span <= kTol ? 1 : static_cast<int>(std::ceil(span / (0.8 * w) - 1e-9)) + 1;
-        // The blade comes down from rTop. Where the part stands over the run
-        // (the allowance over a relief groove's undercut, seed 3092 of the
-        // generator's plans), the blade cannot come down there at all: the
-        // plunge moves to the nearest place where the blade is clear at rTop
-        // and still over the run; what no plunge then reaches is left and
-        // said, and a run no plunge reaches is refused below.
-        const auto clear = [&](double z) { return !F.inside({z, rTop}); };
-        const double overLo = zLo + 0.01, overHi = zHi + w - 0.01;  // the blade [z - w, z] still over the run
-        const auto clearOverRun = F.freeAlongZ(rTop, overLo, overHi);  // where the blade may come down
-        const auto comeDown = [&](double z) -> std::optional<double> {
-            if (clear(z)) return z;
-            std::optional<double> nearest;
-            for (const auto& [z0, z1] : clearOverRun)
-                if (const double c = std::clamp(z, z0, z1); !nearest || std::abs(c - z) < std::abs(*nearest - z)) nearest = c;
-            return nearest;
-        };
-        std::vector<ZR> bottoms;
-        for (int k = 0; k < n; ++k) {
-            const auto z = comeDown(zHi - eps - (n > 1 ? span * k / (n - 1) : 0.0));
-            if (!z) continue;  // nowhere clear over the run: this plunge is not made
-            double bottom = rTop;
-            for (const auto& f : F.freeAlongR(*z, inner_ ? rTop - 1.0 : -1.0, inner_ ? R_ + 100.0 : rTop + 1.0))
-                if (f.first <= rTop + 1e-6 && f.second >= rTop - 1e-6) bottom = inner_ ? f.second : f.first;
-            bottoms.push_back({*z, bottom});
-        }
+        const std::vector<ZR> bottoms = groovePlunges(F, zLo, zHi, w, rTop);
         double reached = rTop;
         for (const ZR p : bottoms) reached = inner_ ? std::max(reached, p.r) : std::min(reached, p.r);
         if (s_ * (reached - deepest) > 0.01) {
@@ -116,26 +77,7 @@ void Planner::planGrooves()
         ts.withdrawal = t_.withdrawal;
         ts.cutting = *cutting;
         ts.region = fmt::format("{}, Z{} to Z{}", elements, len(zLo), len(zHi));
-        PathWriter wr{{}, {}};
-        // From the run's front at rTop, unless the part stands over it there.
-        wr.begin({clear(zHi) ? zHi : bottoms.front().z, rTop});
-        for (std::size_t k = 0; k < bottoms.size(); ++k) {
-            wr.rapid({bottoms[k].z, rTop});
-            wr.feed(bottoms[k], FeedKind::Plunge);
-            if (k + 1 < bottoms.size()) wr.rapid({bottoms[k].z, rTop});
-        }
-        // Seed 002: withdrawn along the surface's normal at the end point by da.
-        const ZR end = bottoms.back();
-        const ZR normal = surfaceNormal(end, first_, chain_.size(), w);
-        // Unless the blade's side stands against a wall the normal leans
-        // toward (the last plunge against the groove's back wall, its bottom
-        // a fillet rising to it): then straight out, along the wall.
-        ZR out = t_.withdrawal * normal;
-        if (F.inside(end + out) || F.inside(end + 0.5 * out)) out = ZR{0.0, s_ * t_.withdrawal};
-        wr.feed(end + out);
-        wr.rapid({wr.path.moves.back().end.z, rTop});
-        if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
-        ts.path = std::move(wr.path);
+        ts.path = groovePath(F, bottoms, zHi, w, rTop);
         addStep(StepKind::Grooving, MachiningType::Grooving, *blade,
                 blade == pinned(kGroove) ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "pinned")
                 : w <= width + kTol
@@ -143,6 +85,86 @@ void Planner::planGrooves()
                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "narrowest grooving blade; it reaches {} from the air beside it"), elements),
                 std::move(ts));
     }
+}
+
+// The blades to cut a run `width` wide, best first: the widest not wider
+// than the groove (fewer plunges); for a narrower groove or a step, the
+// narrowest (it may cut a step from the air beside it). A pinned blade alone.
+std::vector<const Tool*> Planner::groovingBlades(double width) const
+{
+    std::vector<const Tool*> blades;
+    if (const Tool* pin = pinned(kGroove)) blades.push_back(pin);
+    else
+        for (const auto& t : lib_)
+            if (t.type == ToolType::Grooving && t.turning.inside == inner_ && t.turning.maxDiameter <= 0) blades.push_back(&t);
+    std::sort(blades.begin(), blades.end(), [&](const Tool* x, const Tool* y) {
+        const bool fx = x->turning.width <= width + kTol, fy = y->turning.width <= width + kTol;
+        if (fx != fy) return fx;
+        return fx ? x->turning.width > y->turning.width : x->turning.width < y->turning.width;
+    });
+    return blades;
+}
+
+// The bottoms of the plunges of a blade `w` wide into the run from zHi to
+// zLo coming down from rTop: from the front wall back, less than a blade
+// width apart, each as deep as the blade goes clear of the part (F).
+std::vector<ZR> Planner::groovePlunges(const ForbiddenRegion& F, double zLo, double zHi, double w, double rTop) const
+{
+    const double width = zHi - zLo;
+    const double eps = 1e-4, span = std::max(width - w, 0.0);  // off the walls, inside the blade's own narrowing
+    const int n = span <= kTol ? 1 : static_cast<int>(std::ceil(span / (0.8 * w) - 1e-9)) + 1;
+    // The blade comes down from rTop. Where the part stands over the run
+    // (the allowance over a relief groove's undercut, seed 3092 of the
+    // generator's plans), the blade cannot come down there at all: the
+    // plunge moves to the nearest place where the blade is clear at rTop
+    // and still over the run; what no plunge then reaches is left and
+    // said, and a run no plunge reaches is refused below.
+    const auto clear = [&](double z) { return !F.inside({z, rTop}); };
+    const double overLo = zLo + 0.01, overHi = zHi + w - 0.01;  // the blade [z - w, z] still over the run
+    const auto clearOverRun = F.freeAlongZ(rTop, overLo, overHi);  // where the blade may come down
+    const auto comeDown = [&](double z) -> std::optional<double> {
+        if (clear(z)) return z;
+        std::optional<double> nearest;
+        for (const auto& [z0, z1] : clearOverRun)
+            if (const double c = std::clamp(z, z0, z1); !nearest || std::abs(c - z) < std::abs(*nearest - z)) nearest = c;
+        return nearest;
+    };
+    std::vector<ZR> bottoms;
+    for (int k = 0; k < n; ++k) {
+        const auto z = comeDown(zHi - eps - (n > 1 ? span * k / (n - 1) : 0.0));
+        if (!z) continue;  // nowhere clear over the run: this plunge is not made
+        double bottom = rTop;
+        for (const auto& f : F.freeAlongR(*z, inner_ ? rTop - 1.0 : -1.0, inner_ ? R_ + 100.0 : rTop + 1.0))
+            if (f.first <= rTop + 1e-6 && f.second >= rTop - 1e-6) bottom = inner_ ? f.second : f.first;
+        bottoms.push_back({*z, bottom});
+    }
+    return bottoms;
+}
+
+// The blade's path: its plunges from rTop, then withdrawn from the last
+// bottom and away.
+TurnPath Planner::groovePath(const ForbiddenRegion& F, const std::vector<ZR>& bottoms, double zHi, double w, double rTop) const
+{
+    PathWriter wr{{}, {}};
+    // From the run's front at rTop, unless the part stands over it there.
+    wr.begin({!F.inside({zHi, rTop}) ? zHi : bottoms.front().z, rTop});
+    for (std::size_t k = 0; k < bottoms.size(); ++k) {
+        wr.rapid({bottoms[k].z, rTop});
+        wr.feed(bottoms[k], FeedKind::Plunge);
+        if (k + 1 < bottoms.size()) wr.rapid({bottoms[k].z, rTop});
+    }
+    // Seed 002: withdrawn along the surface's normal at the end point by da.
+    const ZR end = bottoms.back();
+    const ZR normal = surfaceNormal(end, first_, chain_.size(), w);
+    // Unless the blade's side stands against a wall the normal leans
+    // toward (the last plunge against the groove's back wall, its bottom
+    // a fillet rising to it): then straight out, along the wall.
+    ZR out = t_.withdrawal * normal;
+    if (F.inside(end + out) || F.inside(end + 0.5 * out)) out = ZR{0.0, s_ * t_.withdrawal};
+    wr.feed(end + out);
+    wr.rapid({wr.path.moves.back().end.z, rTop});
+    if (inner_) wr.rapid({zFront_ + t_.clearance, rTop});
+    return std::move(wr.path);
 }
 
 ZR Planner::surfaceNormal(ZR corner, std::size_t i, std::size_t j, double w) const

@@ -46,6 +46,31 @@ void Planner::planRoughing()
     // Levels of the nose's cutting point (outer: its lowest, inner: its
     // highest point) from the stock's surface to the profile's extreme.
     const double surface = inner_ ? std::max(q_.boreBefore, drilled_) / 2.0 : R_;
+    const double extreme = profileExtreme() + s_ * t_.allowanceX;
+    const double depth = s_ * (surface - extreme);
+    if (depth <= kTol) {
+        note(fmt::format("no roughing: the stock is already within the finishing allowance", q_.unit + 1));
+        return;
+    }
+    const int levels = std::max(1, static_cast<int>(std::ceil(depth / t_.depthOfCut - 1e-9)));
+    bool left = false;  // pockets the insert cannot enter
+    ts.path = roughingPasses(F, surface, depth, levels, rn, ts.tipFromCentre, left);
+    if (left) note(fmt::format("roughing with {} leaves pockets its insert cannot enter for the finishing tool", toolWords(*tool)));
+    ts.region = fmt::format("{} to {}, Z{} to Z{}", dia(surface), dia(extreme), len(zFront_), len(zEnd_));
+
+    // The control's own cycle where the profile allows it: the contour
+    // monotone (one element after the other outward and toward the
+    // chuck), reached by the insert everywhere. Then the nose runs
+    // clear of every element with the tip on the contour plus the
+    // allowance (docs/turning.md).
+    if (const auto cycle = roughingCycle(*tool, surface)) ts.path.cycle = *cycle;
+    addStep(StepKind::TurnRoughing, MachiningType::TurnRoughing, *tool, reason, std::move(ts));
+}
+
+// The profile's extreme radius (outer: its least, inner: its greatest),
+// the arcs' own extremes included.
+double Planner::profileExtreme() const
+{
     double extreme = inner_ ? -1e300 : 1e300;
     for (std::size_t i = first_; i < last_; ++i)
         for (const ZR p : {chain_[i].a, chain_[i].b}) extreme = inner_ ? std::max(extreme, p.r) : std::min(extreme, p.r);
@@ -55,21 +80,22 @@ void Planner::planRoughing()
             const ZR ext{c.z, c.r - s_ * chain_[i].radius};
             if (contains(chain_[i], ext)) extreme = inner_ ? std::max(extreme, ext.r) : std::min(extreme, ext.r);
         }
-    extreme += s_ * t_.allowanceX;
-    const double depth = s_ * (surface - extreme);
-    if (depth <= kTol) {
-        note(fmt::format("no roughing: the stock is already within the finishing allowance", q_.unit + 1));
-        return;
-    }
-    const int levels = std::max(1, static_cast<int>(std::ceil(depth / t_.depthOfCut - 1e-9)));
+    return extreme;
+}
+
+// The roughing passes: levels of the nose's cutting point from the stock's
+// surface `depth` down in `levels` even steps, each along what is free at
+// that level and every level above (the part's shadow), pockets entered by
+// a plunge at their front end. `left`: pockets the insert cannot enter.
+TurnPath Planner::roughingPasses(const ForbiddenRegion& F, double surface, double depth, int levels, double rn, ZR tip, bool& left) const
+{
     const double zApproach = std::max(zFront_, q_.facing ? zFront_ : q_.bar.face) + t_.clearance + rn;
     const double zLo = std::min(zBarEnd_, zEnd_) - 1.0;
     const double rSafe = safeR() + s_ * rn;
-    PathWriter w{{}, ts.tipFromCentre};
+    PathWriter w{{}, tip};
     w.begin({zApproach, rSafe});
     std::vector<std::pair<double, double>> open{{zLo, zApproach}};
     double rPrev = surface + s_ * rn;  // nose centre on the stock surface
-    bool left = false;
     for (int k = 1; k <= levels; ++k) {
         const double cut = surface - s_ * depth * k / levels;  // the cutting point's radius
         const double rc = cut + s_ * rn;
@@ -118,17 +144,7 @@ void Planner::planRoughing()
         rPrev = rc;
     }
     w.rapid({zApproach, rSafe});
-    if (left) note(fmt::format("roughing with {} leaves pockets its insert cannot enter for the finishing tool", toolWords(*tool)));
-    ts.region = fmt::format("{} to {}, Z{} to Z{}", dia(surface), dia(extreme), len(zFront_), len(zEnd_));
-    ts.path = std::move(w.path);
-
-    // The control's own cycle where the profile allows it: the contour
-    // monotone (one element after the other outward and toward the
-    // chuck), reached by the insert everywhere. Then the nose runs
-    // clear of every element with the tip on the contour plus the
-    // allowance (docs/turning.md).
-    if (const auto cycle = roughingCycle(*tool, surface)) ts.path.cycle = *cycle;
-    addStep(StepKind::TurnRoughing, MachiningType::TurnRoughing, *tool, reason, std::move(ts));
+    return std::move(w.path);
 }
 
 std::vector<Segment> Planner::roughingLoop(double behind) const

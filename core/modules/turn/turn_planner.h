@@ -172,6 +172,9 @@ private:
     // ---- roughing ------------------------------------------------------------
 
     void planRoughing();
+    // Its parts: the profile's extreme radius, the passes.
+    double profileExtreme() const;
+    TurnPath roughingPasses(const ForbiddenRegion& F, double surface, double depth, int levels, double rn, ZR tip, bool& left) const;
 
     static double currentZ(const PathWriter& w) { return w.path.moves.empty() ? w.path.start.z : w.path.moves.back().end.z - w.tip.z; }
 
@@ -193,6 +196,14 @@ private:
     std::vector<std::pair<std::size_t, std::size_t>> unreachedRuns() const;
 
     void planFinishing(const Tool& tool);
+    // Its parts: the contour as the insert cuts it, the ways onto it to
+    // try, where it enters and leaves, the path along it.
+    std::vector<Segment> finishingContour(const Tool& tool, double rn);
+    std::vector<std::vector<Segment>> finishingWays(const std::vector<Segment>& contour, double rn) const;
+    ZR finishingUpAndOut(double rn) const;
+    ZR finishingExit(const std::vector<Segment>& c, bool upAndForward, double rn, ZR tipFromCentre) const;
+    ZR finishingEntry(const std::vector<Segment>& c, double rn) const;
+    TurnPath finishingPath(const std::vector<Segment>& contour, bool upAndForward, double rn, ZR tipFromCentre) const;
 
     // The air side's unit normal of a line's direction.
     ZR airNormal(ZR t) const { return inner_ ? leftNormal(t) : ZR{t.r, -t.z}; }
@@ -272,6 +283,10 @@ private:
     // ---- grooving --------------------------------------------------------
 
     void planGrooves();
+    // Its parts: the blades for a run, the plunges' bottoms, the blade's path.
+    std::vector<const Tool*> groovingBlades(double width) const;
+    std::vector<ZR> groovePlunges(const ForbiddenRegion& F, double zLo, double zHi, double w, double rTop) const;
+    TurnPath groovePath(const ForbiddenRegion& F, const std::vector<ZR>& bottoms, double zHi, double w, double rTop) const;
 
     const Tool* finishingTool() const { return finishTool_; }
 
