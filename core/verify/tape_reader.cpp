@@ -1,453 +1,170 @@
-// The reader of the ISO and SINUMERIK tapes (readTape, tape_reader.h): every
-// block understood word by word, the drilling cycles expanded as the manuals
-// describe, or the reading stopped at its line. The Klartext reader is in
-// tape_reader_klartext.cpp, SINUMERIK's drilling cycles in
+// The reader of the ISO and SINUMERIK tapes (readTape, tape_reader.h): the
+// tape split into lines, each line's comments taken out and its words read
+// strictly (tape_reader_iso.h's IsoReader), or the reading stopped at its
+// line. What each block's words do is in tape_reader_iso_block.cpp, the
+// Klartext reader in tape_reader_klartext.cpp, the drilling cycles in
 // tape_reader_cycles.cpp.
-#include "verify/tape_reader_cycles.h"
-#include "verify/tape_reader_machine.h"
+#include "verify/tape_reader_iso.h"
 
-#include <cmath>
-#include <map>
-#include <optional>
 #include <string_view>
 
 namespace taiwa::verify {
 
 TapeReading readKlartext(const std::string& text);  // tape_reader_klartext.cpp
 
-namespace {
+namespace tape {
 
-using namespace tape;
+IsoReader::IsoReader(const post::Dialect& d)
+    : sinumerik_(d.syntax == post::Syntax::Sinumerik),
+      framed_(!sinumerik_ && d.percentFraming),
+      numbered_(!sinumerik_ && !d.programNumberLine.empty()),
+      points_(!sinumerik_ && d.decimalPointAlways),
+      offsetNeeded_(!d.lengthOffset.empty()),
+      dwellWord_(sinumerik_ ? 'F' : d.dwellWord),
+      tapSynchronised_(d.tap == "G33.1")
+{
+}
 
-class IsoReader {
-public:
-    explicit IsoReader(const post::Dialect& d)
-        : sinumerik_(d.syntax == post::Syntax::Sinumerik),
-          framed_(!sinumerik_ && d.percentFraming),
-          numbered_(!sinumerik_ && !d.programNumberLine.empty()),
-          points_(!sinumerik_ && d.decimalPointAlways),
-          offsetNeeded_(!d.lengthOffset.empty()),
-          dwellWord_(sinumerik_ ? 'F' : d.dwellWord),
-          tapSynchronised_(d.tap == "G33.1")
-    {
+TapeReading IsoReader::read(const std::string& text)
+{
+    const auto lines = splitLines(text);
+    try {
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            m_.line = static_cast<int>(i) + 1;
+            line(lines[i]);
+        }
+        m_.line = static_cast<int>(lines.size());
+        if (!ended_) refuse("the program does not end with M30");
+        if (framed_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
+            refuse("the dialect's tape begins and ends with a '%' line");
+    } catch (const Unread& r) {
+        m_.out.error = lineError(m_.line, r, lines);
+        m_.out.errorLine = m_.line;
     }
+    return std::move(m_.out);
+}
 
-    TapeReading read(const std::string& text)
-    {
-        const auto lines = splitLines(text);
-        try {
-            for (std::size_t i = 0; i < lines.size(); ++i) {
-                m_.line = static_cast<int>(i) + 1;
-                line(lines[i]);
-            }
-            m_.line = static_cast<int>(lines.size());
-            if (!ended_) refuse("the program does not end with M30");
-            if (framed_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
-                refuse("the dialect's tape begins and ends with a '%' line");
-        } catch (const Unread& r) {
-            m_.out.error = lineError(m_.line, r, lines);
-            m_.out.errorLine = m_.line;
-        }
-        return std::move(m_.out);
+std::string IsoReader::withoutComments(const std::string& s)
+{
+    if (sinumerik_) {
+        const auto semicolon = s.find(';');
+        // Parentheses belong to CYCLE81(...) only: anywhere else the
+        // word is not understood ("(text)" is no SINUMERIK comment).
+        if (semicolon != std::string::npos) m_.comment(s.substr(semicolon + 1));
+        return s.substr(0, semicolon);
     }
-
-private:
-    // Drill..Bore: the canned cycles G81, G83, G84, G85, G86 (ISO);
-    // Synchronised: LinuxCNC's G33.1.
-    enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Synchronised, Drill, Peck, Tap, Ream, Bore };
-
-
-    struct Block {
-        std::vector<int> g, m;        // G in tenths (G59.1: 591), M whole
-        std::map<char, double> v;     // X Y Z I J K R F P Q S T H D
-        std::map<char, bool> point;   // whether the number had a decimal point
-        bool supa = false;
-        bool mcall = false;
-        std::string cycle;            // "CYCLE81(...)"
-        std::optional<double> adis;
-        bool has(char c) const { return v.count(c) != 0; }
-    };
-
-    // Takes the comments out of `s` (passing them on) and returns the rest.
-    std::string withoutComments(const std::string& s)
-    {
-        if (sinumerik_) {
-            const auto semicolon = s.find(';');
-            // Parentheses belong to CYCLE81(...) only: anywhere else the
-            // word is not understood ("(text)" is no SINUMERIK comment).
-            if (semicolon != std::string::npos) m_.comment(s.substr(semicolon + 1));
-            return s.substr(0, semicolon);
+    std::string rest;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (s[i] == ')') refuse("')' with no '(' before it");
+        if (s[i] == ';') refuse("';': this dialect's comments are in parentheses");
+        if (s[i] != '(') {
+            rest += s[i];
+            continue;
         }
-        std::string rest;
-        for (std::size_t i = 0; i < s.size(); ++i) {
-            if (s[i] == ')') refuse("')' with no '(' before it");
-            if (s[i] == ';') refuse("';': this dialect's comments are in parentheses");
-            if (s[i] != '(') {
-                rest += s[i];
-                continue;
-            }
-            const auto close = s.find(')', i);
-            if (close == std::string::npos) refuse("a comment with no ')'");
-            const std::string inside = s.substr(i + 1, close - i - 1);
-            if (inside.find('(') != std::string::npos) refuse("a nested comment");
-            m_.comment(inside);
-            rest += ' ';
-            i = close;
-        }
-        return rest;
+        const auto close = s.find(')', i);
+        if (close == std::string::npos) refuse("a comment with no ')'");
+        const std::string inside = s.substr(i + 1, close - i - 1);
+        if (inside.find('(') != std::string::npos) refuse("a nested comment");
+        m_.comment(inside);
+        rest += ' ';
+        i = close;
     }
+    return rest;
+}
 
-    Block words(const std::vector<std::string>& tokens)
-    {
-        Block b;
-        for (std::size_t k = 0; k < tokens.size(); ++k) {
-            const std::string& t = tokens[k];
-            if (sinumerik_ && t == "SUPA") {
-                b.supa = true;
-                continue;
-            }
-            if (sinumerik_ && t == "MCALL") {
-                b.mcall = true;
-                continue;
-            }
-            if (sinumerik_ && t.starts_with("CYCLE")) {
-                if (!b.cycle.empty()) refuse("two cycles in one block");
-                b.cycle = t;
-                continue;
-            }
-            if (sinumerik_ && t.starts_with("ADIS=")) {
-                b.adis = decimal(std::string_view(t).substr(5), false);
-                if (!b.adis) refuse("'" + t + "' is not understood");
-                continue;
-            }
-            const char letter = t[0];
-            const std::string_view number = std::string_view(t).substr(1);
-            if (letter == 'N') {
-                if (k != 0 || !whole(number)) refuse("'" + t + "': a sequence number only at the start of a block");
-                continue;
-            }
-            if (letter == 'M') {
-                const auto n = whole(number);
-                if (!n) refuse("'" + t + "' is not understood");
-                b.m.push_back(*n);
-                continue;
-            }
-            if (letter == 'G') {
-                // G59.1, G33.1, G54.1: in tenths.
-                const auto dot = number.find('.');
-                const auto n = whole(number.substr(0, dot));
-                const auto tenth = dot == std::string_view::npos ? std::optional<int>(0) : whole(number.substr(dot + 1));
-                if (!n || !tenth || *tenth > 9 || (dot != std::string_view::npos && number.size() != dot + 2))
-                    refuse("'" + t + "' is not understood");
-                b.g.push_back(*n * 10 + *tenth);
-                continue;
-            }
-            const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJKRFPQSTH";
-            if (letters.find(letter) == std::string::npos || number.empty()) refuse("'" + t + "' is not understood");
-            if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
-            if (letter == 'S' || letter == 'T' || letter == 'D' || letter == 'H') {
-                const auto n = whole(number);
-                if (!n) refuse("'" + t + "' is not understood (a whole number expected)");
-                b.v[letter] = *n;
-                continue;
-            }
-            const auto value = decimal(number, false);
-            if (!value) refuse("'" + t + "' is not understood");
-            b.v[letter] = *value;
-            b.point[letter] = number.find('.') != std::string_view::npos;
-            // A FANUC or a Haas reads a number without a point in least
-            // increments (X10 = 0.01 mm); their tapes always write the point.
-            if (points_ && letter != 'P' && !b.point[letter])
-                refuse("'" + t + "' without a decimal point (this control reads it in least increments)");
+IsoReader::Block IsoReader::words(const std::vector<std::string>& tokens)
+{
+    Block b;
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+        const std::string& t = tokens[k];
+        if (sinumerik_ && t == "SUPA") {
+            b.supa = true;
+            continue;
         }
-        return b;
+        if (sinumerik_ && t == "MCALL") {
+            b.mcall = true;
+            continue;
+        }
+        if (sinumerik_ && t.starts_with("CYCLE")) {
+            if (!b.cycle.empty()) refuse("two cycles in one block");
+            b.cycle = t;
+            continue;
+        }
+        if (sinumerik_ && t.starts_with("ADIS=")) {
+            b.adis = decimal(std::string_view(t).substr(5), false);
+            if (!b.adis) refuse("'" + t + "' is not understood");
+            continue;
+        }
+        const char letter = t[0];
+        const std::string_view number = std::string_view(t).substr(1);
+        if (letter == 'N') {
+            if (k != 0 || !whole(number)) refuse("'" + t + "': a sequence number only at the start of a block");
+            continue;
+        }
+        if (letter == 'M') {
+            const auto n = whole(number);
+            if (!n) refuse("'" + t + "' is not understood");
+            b.m.push_back(*n);
+            continue;
+        }
+        if (letter == 'G') {
+            // G59.1, G33.1, G54.1: in tenths.
+            const auto dot = number.find('.');
+            const auto n = whole(number.substr(0, dot));
+            const auto tenth = dot == std::string_view::npos ? std::optional<int>(0) : whole(number.substr(dot + 1));
+            if (!n || !tenth || *tenth > 9 || (dot != std::string_view::npos && number.size() != dot + 2))
+                refuse("'" + t + "' is not understood");
+            b.g.push_back(*n * 10 + *tenth);
+            continue;
+        }
+        const std::string letters = sinumerik_ ? "XYZIJFSTD" : "XYZIJKRFPQSTH";
+        if (letters.find(letter) == std::string::npos || number.empty()) refuse("'" + t + "' is not understood");
+        if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
+        if (letter == 'S' || letter == 'T' || letter == 'D' || letter == 'H') {
+            const auto n = whole(number);
+            if (!n) refuse("'" + t + "' is not understood (a whole number expected)");
+            b.v[letter] = *n;
+            continue;
+        }
+        const auto value = decimal(number, false);
+        if (!value) refuse("'" + t + "' is not understood");
+        b.v[letter] = *value;
+        b.point[letter] = number.find('.') != std::string_view::npos;
+        // A FANUC or a Haas reads a number without a point in least
+        // increments (X10 = 0.01 mm); their tapes always write the point.
+        if (points_ && letter != 'P' && !b.point[letter])
+            refuse("'" + t + "' without a decimal point (this control reads it in least increments)");
     }
+    return b;
+}
 
-    void line(const std::string& raw)
-    {
-        if (raw.find_first_of("\r\t") != std::string::npos) refuse("a carriage return or tab");
-        const std::string s = trim(withoutComments(raw));
-        if (s.empty()) return;
-        if (framed_ && s == "%") {
-            if (++percents_ > 2) refuse("a third '%' line");
-            return;
-        }
-        if (percents_ == 2) refuse("text after the closing '%'");
-        if (framed_ && percents_ == 0) refuse("a block before the leading '%'");
-        if (ended_) refuse("a block after M30");
-        const auto tokens = splitWords(s);
-        if (numbered_ && tokens.size() == 1 && tokens[0][0] == 'O') {
-            if (!whole(std::string_view(tokens[0]).substr(1)) || programNumber_) refuse("'" + tokens[0] + "' is not understood");
-            programNumber_ = true;
-            return;
-        }
-        block(words(tokens));
+void IsoReader::line(const std::string& raw)
+{
+    if (raw.find_first_of("\r\t") != std::string::npos) refuse("a carriage return or tab");
+    const std::string s = trim(withoutComments(raw));
+    if (s.empty()) return;
+    if (framed_ && s == "%") {
+        if (++percents_ > 2) refuse("a third '%' line");
+        return;
     }
-
-    void block(const Block& b)
-    {
-        // G codes: at most one of the motion group.
-        std::optional<Mode> motion;
-        bool g4 = false, g28 = false, g43 = false, g53 = false, g80 = false, indexed = false, g64 = false, g641 = false;
-        const auto setMotion = [&](Mode mode) {
-            if (motion || g80) refuse("two motion codes in one block");
-            motion = mode;
-        };
-        const auto named = [](int g) {
-            return "G" + std::to_string(g / 10) + (g % 10 != 0 ? "." + std::to_string(g % 10) : std::string());
-        };
-        for (const int g : b.g) {
-            if (g % 10 != 0) {
-                // G59.1..G59.3 (LinuxCNC), G54.1 P (FANUC), G33.1 (LinuxCNC's tapping).
-                if (!sinumerik_ && g >= 591 && g <= 593) continue;
-                if (!sinumerik_ && g == 541) indexed = true;
-                else if (!sinumerik_ && g == 331 && tapSynchronised_) setMotion(Mode::Synchronised);
-                else refuse(named(g) + " is not understood");
-                continue;
-            }
-            const int n = g / 10;
-            if (n == 0) setMotion(Mode::Rapid);
-            else if (n == 1) setMotion(Mode::Feed);
-            else if (n == 2) setMotion(Mode::Clockwise);
-            else if (n == 3) setMotion(Mode::CounterClockwise);
-            else if (n == 17 || n == 40 || n == 94) continue;
-            else if (n == 90) incremental_ = false;
-            else if (n == 4) g4 = true;
-            else if (!sinumerik_ && n == 81) setMotion(Mode::Drill);
-            else if (!sinumerik_ && n == 83) setMotion(Mode::Peck);
-            else if (!sinumerik_ && n == 84 && !tapSynchronised_) setMotion(Mode::Tap);
-            else if (!sinumerik_ && n == 85) setMotion(Mode::Ream);
-            else if (!sinumerik_ && n == 86) setMotion(Mode::Bore);
-            else if (!sinumerik_ && n == 80) {
-                if (motion) refuse("two motion codes in one block");
-                g80 = true;
-            } else if (!sinumerik_ && (n == 20 || n == 21)) m_.units(n == 20);
-            else if (sinumerik_ && (n == 700 || n == 710)) m_.units(n == 700);
-            else if (!sinumerik_ && n == 49) continue;
-            else if (!sinumerik_ && n == 91) incremental_ = true;
-            else if (!sinumerik_ && n == 43) g43 = true;
-            else if (!sinumerik_ && n == 28) g28 = true;
-            else if (!sinumerik_ && n == 53) g53 = true;
-            else if (!sinumerik_ && n == 64) g64 = true;
-            else if (!sinumerik_ && n == 98) g98_ = true;
-            else if (!sinumerik_ && n == 154) indexed = true;
-            else if (!sinumerik_ && n >= 54 && n <= 59) continue;
-            else if (sinumerik_ && ((n >= 54 && n <= 57) || (n >= 505 && n <= 599))) continue;
-            else if (sinumerik_ && n == 641) g641 = true;
-            else refuse(named(g) + " is not understood");
-        }
-        if (b.adis && !g641) refuse("ADIS without G641");
-        if (g641 && !b.adis) refuse("G641 without ADIS");
-
-        // F: the feed rate, or on SINUMERIK with G4 the dwell time.
-        if (b.has('F') && !(g4 && dwellWord_ == 'F')) {
-            if (!(b.v.at('F') > 0)) refuse("a feed rate of zero");
-            m_.feed = b.v.at('F');
-        }
-        const Mode modeNow = motion ? *motion : mode_;
-        // P: G4's time, G154's or G54.1's offset, G64's tolerance, G86's dwell (LinuxCNC).
-        if (b.has('P') && !g4 && !indexed && !g64 && modeNow != Mode::Bore) refuse("P without G4, G54.1, G64, G86 or G154");
-        if (indexed) {
-            if (!b.has('P') || b.point.at('P') || b.v.at('P') < 1 || b.v.at('P') > 99) refuse("G154 or G54.1 needs P1 to P99");
-        }
-        if (b.has('Q') && modeNow != Mode::Peck) refuse("Q without G83");
-        if (b.has('K') && (!motion || *motion != Mode::Synchronised)) refuse("K without G33.1");
-        if (b.has('T')) selected_ = static_cast<int>(b.v.at('T'));
-        if (b.has('S')) rpm_ = b.v.at('S');
-        for (const int mf : b.m) {
-            if (mf == 6) {
-                if (selected_ == 0) refuse("M6 with no tool selected");
-                m_.tool = selected_;
-                lengthOffset_ = !offsetNeeded_;
-            } else if (mf == 30) {
-                ended_ = true;
-            } else if (mf == 29 && !sinumerik_) {
-                if (!b.has('S')) refuse("M29 (rigid tapping) needs the speed in S");
-            } else if (mf == 97 || mf == 98 || mf == 99 || mf == 198) {
-                // A subprogram runs motion the tape does not hold: it cannot be judged.
-                refuse("M" + std::to_string(mf) + " calls or leaves a subprogram, whose motion is not on the tape");
-            }
-            // Any other M word (M7 mist, M0/M1 stops, a shop's M51 through-spindle
-            // coolant) is a switch of the machine's, no motion: taken as it is.
-        }
-        if (b.has('D')) {
-            // D0 takes the tool's offsets off (SINUMERIK); D1 puts them on.
-            if (b.v.at('D') == 0) {
-                dInForce_ = false;
-                if (m_.tool != 0) lengthOffset_ = false;  // a Z move needs D1 again
-            } else {
-                if (m_.tool == 0 || b.v.at('D') < 1) refuse("D with no tool in the spindle");
-                lengthOffset_ = true;
-                dInForce_ = true;
-            }
-        }
-        if (b.has('H') != g43) refuse("G43 and H go together");
-        if (g43) {
-            if (static_cast<int>(b.v.at('H')) != m_.tool)
-                refuse("G43 H" + show(b.v.at('H')) + " with T" + std::to_string(m_.tool) + " in the spindle");
-            lengthOffset_ = true;
-        }
-        if (g4) {
-            const char time = dwellWord_;
-            if (!b.has(time) || b.v.at(time) < 0) refuse(std::string("G4 needs the dwell time in ") + time);
-            if (points_ && !b.point.at(time)) refuse(std::string("G4 ") + time + " without a decimal point (milliseconds on this control)");
-            if ((time != 'X' && b.has('X')) || b.has('Y') || b.has('Z') || motion) refuse("a dwell with a move");
-            ++m_.out.dwells;
-            return;
-        }
-        if (g80) {
-            mode_ = Mode::None;
-            cycleZ_.reset();
-            cycleR_.reset();
-            cycleQ_.reset();
-        }
-        if (motion) mode_ = *motion;
-
-        const bool axes = b.has('X') || b.has('Y') || b.has('Z');
-        // The machine retracts: no move in the program's coordinates.
-        if (g28) {
-            if (!incremental_ || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0 || motion)
-                refuse("only 'G28 G91 Z0.' is understood");
-            return;
-        }
-        if (g53) {
-            if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
-                refuse("only 'G53 G0 Z0' is understood");
-            return;
-        }
-        if (b.supa) {
-            if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
-                refuse("only 'G0 SUPA Z0 [D0]' is understood");
-            // SUPA suppresses the frames, not the tool's length (MD
-            // G53_TOOLCORR = 0, the default): with D1 in force the tool tip
-            // would go to machine Z0, the spindle above the end of travel.
-            if (dInForce_) refuse("G0 SUPA Z0 with a D in force moves the tool tip to machine Z0: write D0 in the block");
-            return;
-        }
-        if (b.mcall) {
-            if (b.cycle.empty()) {
-                if (axes || !b.g.empty() || !b.m.empty() || !b.v.empty()) refuse("a bare MCALL has no other words");
-                if (!mcall_) refuse("MCALL with no modal call in force");
-                mcall_.reset();
-                return;
-            }
-            if (axes || !b.g.empty() || !b.m.empty() || !b.v.empty()) refuse("MCALL with other words");
-            mcall_ = sinumerikCycle(b.cycle);
-            return;
-        }
-        if (!b.cycle.empty()) refuse("a cycle called without MCALL");
-        if (!axes) {
-            if (b.has('I') || b.has('J') || b.has('R')) refuse("I, J or R with no move");
-            return;
-        }
-        if (incremental_) refuse("incremental moves (G91) are not supported by this reader");
-        if (b.has('Z') && !lengthOffset_)
-            refuse("a Z move before T" + std::to_string(m_.tool) + "'s length offset (" + (sinumerik_ ? "D1" : "G43 H") + ")");
-
-        Point3 to = m_.at;
-        if (b.has('X')) to.x = b.v.at('X');
-        if (b.has('Y')) to.y = b.v.at('Y');
-        const bool cycle = mode_ >= Mode::Drill;
-        if (!cycle && b.has('Z')) to.z = b.v.at('Z');
-        const bool centre = b.has('I') || b.has('J');
-        if (!cycle && b.has('R')) refuse("R without a canned cycle (radius arcs are not supported)");
-
-        if (mcall_) {
-            // SINUMERIK: the modal call runs after each positioning block.
-            if (mode_ != Mode::Rapid || b.has('Z') || centre)
-                refuse("under MCALL only G0 X Y positioning blocks are understood");
-            m_.traverse(to);
-            runCalledCycle(m_, *mcall_, to);
-            return;
-        }
-        if (centre && mode_ != Mode::Clockwise && mode_ != Mode::CounterClockwise) refuse("I or J without G2 or G3");
-        switch (mode_) {
-        case Mode::None:
-            refuse("coordinates with no motion mode in force");
-        case Mode::Rapid:
-            m_.traverse(to);
-            return;
-        case Mode::Feed:
-            m_.feedTo(to, m_.feed);
-            return;
-        case Mode::Synchronised:
-            synchronisedTap(b, to);
-            return;
-        case Mode::Clockwise:
-        case Mode::CounterClockwise:
-            if (!b.has('I') || !b.has('J')) refuse("an arc needs both I and J");
-            if (std::isnan(m_.at.x) || std::isnan(m_.at.y)) refuse("an arc from an unknown position");
-            m_.arc(to, {m_.at.x + b.v.at('I'), m_.at.y + b.v.at('J')}, mode_ == Mode::Clockwise ? -1 : 1, m_.feed);
-            return;
-        case Mode::Drill:
-        case Mode::Peck:
-        case Mode::Tap:
-        case Mode::Ream:
-        case Mode::Bore:
-            drill(b, to);
-            return;
-        }
+    if (percents_ == 2) refuse("text after the closing '%'");
+    if (framed_ && percents_ == 0) refuse("a block before the leading '%'");
+    if (ended_) refuse("a block after M30");
+    const auto tokens = splitWords(s);
+    if (numbered_ && tokens.size() == 1 && tokens[0][0] == 'O') {
+        if (!whole(std::string_view(tokens[0]).substr(1)) || programNumber_) refuse("'" + tokens[0] + "' is not understood");
+        programNumber_ = true;
+        return;
     }
+    block(words(tokens));
+}
 
-    // LinuxCNC's G33.1 Z K at the hole the tool is over: down to Z at K x S
-    // and back up to where it began at the same rate (the spindle reversed
-    // at the bottom).
-    void synchronisedTap(const Block& b, const Point3& to)
-    {
-        if (!b.has('Z') || !b.has('K')) refuse("G33.1 needs Z and K");
-        if (b.has('X') || b.has('Y')) refuse("G33.1 only along Z is understood");
-        if (!known(m_.at)) refuse("G33.1 from an unknown position");
-        if (!(rpm_ > 0)) refuse("G33.1 with no spindle speed");
-        if (!(b.v.at('K') > 0)) refuse("G33.1's K must be positive");
-        if (to.z > m_.at.z) refuse("G33.1 upwards");
-        const double rate = b.v.at('K') * rpm_;
-        const Point3 top = m_.at;
-        m_.feedTo(to, rate);
-        m_.feedTo(top, rate);
-    }
-
-    // G98 G81/G83/G84/G85/G86 at `hole`: the block's Z, R and Q kept for
-    // the next holes, the moves made by runCannedCycle (tape_reader_cycles.cpp).
-    void drill(const Block& b, const Point3& hole)
-    {
-        const int code = mode_ == Mode::Drill ? 81 : mode_ == Mode::Peck ? 83 : mode_ == Mode::Tap ? 84 : mode_ == Mode::Ream ? 85 : 86;
-        const std::string name = "G" + std::to_string(code);
-        if (!g98_) refuse(name + " without G98 (only the return to the initial level is understood)");
-        if (b.has('Z')) cycleZ_ = b.v.at('Z');
-        if (b.has('R')) cycleR_ = b.v.at('R');
-        if (b.has('Q')) cycleQ_ = b.v.at('Q');
-        if (!cycleZ_ || !cycleR_) refuse(name + " needs Z and R");
-        runCannedCycle(m_, code, hole, *cycleR_, *cycleZ_, cycleQ_);
-    }
-
-    bool sinumerik_;
-    bool framed_;          // '%' lines lead and end the tape
-    bool numbered_;        // an "O1000" program number line
-    bool points_;          // lengths and feeds must carry a decimal point
-    bool offsetNeeded_;    // a Z move after M6 waits for the length offset
-    char dwellWord_;       // G4's time: P, X (FANUC) or F (SINUMERIK)
-    bool tapSynchronised_; // tapping is G33.1 (LinuxCNC), not G84
-    double rpm_ = 0.0;     // the last S
-    Machine m_;
-    Mode mode_ = Mode::None;
-    bool incremental_ = false;
-    bool g98_ = false;
-    bool ended_ = false;
-    bool lengthOffset_ = true;  // false from a tool change to its G43 H / D
-    bool dInForce_ = false;     // SINUMERIK: a D (1 or more) in force, no D0 since
-    bool programNumber_ = false;
-    int percents_ = 0;
-    int selected_ = 0;
-    std::optional<double> cycleZ_, cycleR_, cycleQ_;
-    std::optional<SinumerikCycle> mcall_;
-};
-
-}  // namespace
+}  // namespace tape
 
 TapeReading readTape(const std::string& text, const post::Dialect& dialect)
 {
     if (dialect.syntax == post::Syntax::Klartext) return readKlartext(text);
-    return IsoReader(dialect).read(text);
+    return tape::IsoReader(dialect).read(text);
 }
 
 }  // namespace taiwa::verify

@@ -1,4 +1,4 @@
-// The drilling cycles of the tape reader (tape_reader.cpp): ISO's G81-G86
+// The drilling cycles of the tape reader (tape_reader_iso.h): ISO's G81-G86
 // canned cycles and SINUMERIK's CYCLE81/83/84/85/86 (a call read into its
 // parameters, what this reader does not support refused), their moves
 // made on the reader's machine as the controls expand them. Internal to

@@ -1,8 +1,8 @@
 // What the tape readers of tape_reader.h share: the strict reading of
 // lines, words and numbers, the refusal that names a line, and the machine
 // the readers drive (position, feed, tool, step) recording the motions as
-// rs274 reports them. Internal to core/verify (tape_reader.cpp,
-// tape_reader_klartext.cpp).
+// rs274 reports them. Internal to core/verify (the readers: tape_reader*.h
+// and tape_reader*.cpp).
 #pragma once
 
 #include "verify/tape_reader.h"
