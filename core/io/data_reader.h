@@ -59,6 +59,18 @@ private:
     const std::string& text_;
 };
 
+// What a reader built on DataReader makes of `text` (Reader(text, source).read()),
+// or its refusal as a Failure at the file's line and key: the door of each.
+template <class Reader>
+auto readData(const std::string& text, const std::string& source) -> Result<decltype(Reader(text, source).read())>
+{
+    try {
+        return Reader(text, source).read();
+    } catch (const Refusal& r) {
+        return r.failure();
+    }
+}
+
 // True when `s` holds no control character (below 0x20, DEL) and is valid
 // enough to print: the texts of data files reach terminals and tapes.
 bool printable(const std::string& s);

@@ -155,11 +155,7 @@ private:
 
 Result<Machine> readMachine(const std::string& text, const std::string& source)
 {
-    try {
-        return Reader(text, source).read();
-    } catch (const Refusal& r) {  // at the file's line and key
-        return r.failure();
-    }
+    return io::readData<Reader>(text, source);
 }
 
 std::string userMachineFolder() { return io::userDataFolder("machines"); }

@@ -318,11 +318,7 @@ const io::DataLibrary<Dialect>& library()
 
 Result<Dialect> readDialect(const std::string& text, const std::string& source)
 {
-    try {
-        return Reader(text, source).read();
-    } catch (const Refusal& r) {  // at the file's line and key
-        return r.failure();
-    }
+    return io::readData<Reader>(text, source);
 }
 
 const std::vector<Dialect>& dialectLibrary() { return library().items; }

@@ -44,8 +44,9 @@ std::vector<CuttingData> cuttingFor(ToolType type, double diameter)
     return data;
 }
 
-Tool make(int id, ToolType type, double d, tools::Named name, double flute, double stickout, std::string holder,
-          int flutes, double life)
+// What every tool of the library is given: its id, type, size, names,
+// holder, flutes and life [min].
+Tool identified(int id, ToolType type, double d, tools::Named name, std::string holder, int flutes, double life)
 {
     Tool t;
     t.id = id;
@@ -53,11 +54,18 @@ Tool make(int id, ToolType type, double d, tools::Named name, double flute, doub
     t.diameter = d;
     t.name = std::move(name.text);
     t.names = std::move(name.names);
-    t.fluteLength = flute;
-    t.stickout = stickout;
     t.holder = std::move(holder);
     t.flutes = flutes;
     t.lifeMinutes = life;
+    return t;
+}
+
+Tool make(int id, ToolType type, double d, tools::Named name, double flute, double stickout, std::string holder,
+          int flutes, double life)
+{
+    Tool t = identified(id, type, d, std::move(name), std::move(holder), flutes, life);
+    t.fluteLength = flute;
+    t.stickout = stickout;
     t.cutting = cuttingFor(type, d);
     return t;
 }
@@ -80,16 +88,8 @@ constexpr TurningData kTurningMaterials[] = {
 Tool lathe(int id, ToolType type, tools::Named name, std::string code, double noseRadius, double ic, TurningSpec spec,
            std::string holder, bool finishing, double feedShare = 1.0)
 {
-    Tool t;
-    t.id = id;
-    t.type = type;
-    t.name = std::move(name.text);
-    t.names = std::move(name.names);
-    t.diameter = ic;
+    Tool t = identified(id, type, ic, std::move(name), std::move(holder), 1, 30);
     t.cornerRadius = noseRadius;
-    t.holder = std::move(holder);
-    t.flutes = 1;
-    t.lifeMinutes = 30;
     t.centreCutting = false;
     spec.insertCode = std::move(code);
     t.turning = std::move(spec);

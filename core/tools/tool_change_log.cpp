@@ -4,6 +4,7 @@
 #include "tools/tool_change_log.h"
 
 #include "model/translate_noop.h"
+#include "tools/tool_library_sqlite.h"
 #include "tools/tool_store.h"
 
 #include <fmt/format.h>
@@ -72,12 +73,6 @@ std::string userName()
     return "?";
 }
 
-std::string column(sqlite3_stmt* s, int c)
-{
-    const auto* text = sqlite3_column_text(s, c);
-    return text ? reinterpret_cast<const char*>(text) : "";
-}
-
 }  // namespace
 
 std::string utcNow()
@@ -127,37 +122,34 @@ std::optional<std::string> nameSizeMismatch(const Tool& t)
 Result<void> logToolChange(sqlite3* db, const std::string& operation, int toolId, const std::string& oldValues,
                            const std::string& newValues)
 {
-    sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db,
-                           "INSERT INTO tool_changes (tool_id, operation, who, station, at, old_values, new_values) "
-                           "VALUES (?, ?, ?, ?, ?, ?, ?)",
-                           -1, &s, nullptr) != SQLITE_OK)
-        return Failure{sqlite3_errmsg(db)};
-    const std::string who = userName(), station = stationName(), at = utcNow();
-    sqlite3_bind_int(s, 1, toolId);
-    int i = 2;
-    for (const std::string* v : {&operation, &who, &station, &at, &oldValues, &newValues})
-        sqlite3_bind_text(s, i++, v->c_str(), static_cast<int>(v->size()), SQLITE_TRANSIENT);
-    const bool ok = sqlite3_step(s) == SQLITE_DONE;
-    sqlite3_finalize(s);
-    if (!ok) return Failure{sqlite3_errmsg(db)};
+    bool done = false;
+    {
+        tooldb::Statement s(db, "INSERT INTO tool_changes (tool_id, operation, who, station, at, old_values, new_values) "
+                                "VALUES (?, ?, ?, ?, ?, ?, ?)");
+        if (!s.ok()) return Failure{sqlite3_errmsg(db)};
+        const std::string who = userName(), station = stationName(), at = utcNow();
+        s.bind(1, toolId);
+        int i = 2;
+        for (const std::string* v : {&operation, &who, &station, &at, &oldValues, &newValues})
+            s.bind(i++, *v);
+        done = s.step() == SQLITE_DONE;
+    }  // finalized before SQLite's message is read
+    if (!done) return Failure{sqlite3_errmsg(db)};
     return {};
 }
 
 Result<std::vector<ToolChangeRecord>> readToolChanges(sqlite3* db, int toolId)
 {
-    sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db,
-                           "SELECT operation, who, station, at, old_values, new_values FROM tool_changes "
-                           "WHERE tool_id = ? ORDER BY rowid",
-                           -1, &s, nullptr) != SQLITE_OK)
-        return Failure{sqlite3_errmsg(db)};
-    sqlite3_bind_int(s, 1, toolId);
     std::vector<ToolChangeRecord> out;
     int rc = SQLITE_ROW;
-    while ((rc = sqlite3_step(s)) == SQLITE_ROW)
-        out.push_back({column(s, 0), column(s, 1), column(s, 2), column(s, 3), column(s, 4), column(s, 5)});
-    sqlite3_finalize(s);
+    {
+        tooldb::Statement s(db, "SELECT operation, who, station, at, old_values, new_values FROM tool_changes "
+                                "WHERE tool_id = ? ORDER BY rowid");
+        if (!s.ok()) return Failure{sqlite3_errmsg(db)};
+        s.bind(1, toolId);
+        while ((rc = s.step()) == SQLITE_ROW)
+            out.push_back({s.text(0), s.text(1), s.text(2), s.text(3), s.text(4), s.text(5)});
+    }  // finalized before SQLite's message is read
     if (rc != SQLITE_DONE) return Failure{sqlite3_errmsg(db)};
     return out;
 }

@@ -73,15 +73,19 @@ std::string describe(const Finding& f, const Plan& plan)
                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "step {} ({}, unit {} '{}')"), f.step + 1,
                                            s.label(), s.unit + 1, name);
     }
+    // A finding of a size at a place over an area: the lathe's template (an
+    // area of the half-section) or the mill's.
+    using AreaText = fmt::format_string<std::string, std::string, const double&>;
+    const auto overArea = [&](AreaText latheText, AreaText millText) {
+        return fmt::format(lathe ? latheText : millText, len(f.size), at(f.position), f.area);
+    };
     std::string what;
     switch (f.kind) {
     case FindingKind::Gouge:
-        what = lathe ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
-                                                                      "{:.3f} mm² of the half-section"),
-                                   len(f.size), at(f.position), f.area)
-                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
-                                                                      "{:.3f} mm²"),
-                                   len(f.size), at(f.position), f.area);
+        what = overArea(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                           "{:.3f} mm² of the half-section"),
+                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                           "{:.3f} mm²"));
         break;
     case FindingKind::Collision:
         what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool's {} runs {} into stock at {}"), f.part, len(f.size), at(f.position));
@@ -94,12 +98,10 @@ std::string describe(const Finding& f, const Plan& plan)
                            plan.job.machine);
         break;
     case FindingKind::RestMaterial:
-        what = lathe ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} thicker than it should leave, thickest "
-                                                                      "at {}, over {:.3f} mm² of the half-section"),
-                                   len(f.size), at(f.position), f.area)
-                     : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
-                                                                      "at {}, over {:.3f} mm²"),
-                                   len(f.size), at(f.position), f.area);
+        what = overArea(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} thicker than it should leave, thickest "
+                                                           "at {}, over {:.3f} mm² of the half-section"),
+                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
+                                                           "at {}, over {:.3f} mm²"));
         break;
     case FindingKind::UnplannedMove: {
         // The tape's own: X or Y may be unknown before the first move after the first tool change.

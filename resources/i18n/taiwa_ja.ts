@@ -3497,10 +3497,6 @@ Theirs: %6</source>
             <translation>{} 本のパスの帯が {} 組を超えて重なっています。削り残しの計算が検査できる量を超えます。パスを減らすか、交差の少ないパスを描いてください</translation>
         </message>
         <message>
-            <source>the depth</source>
-            <translation>深さ</translation>
-        </message>
-        <message>
             <source>the tool diameter</source>
             <translation>工具径</translation>
         </message>
@@ -3611,6 +3607,10 @@ Theirs: %6</source>
         <message>
             <source>pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in the same direction) or 2 (zigzag: back and forth)</source>
             <translation>パターン {} は正面フライス削りのパターンではありません。1 (一方向、ダウンカット: 全パス同じ向き) か 2 (ジグザグ: 往復) にしてください</translation>
+        </message>
+        <message>
+            <source>the depth</source>
+            <translation>深さ</translation>
         </message>
         <message>
             <source>the depth {} is not less than the stock's height {}: facing takes a layer off the top, it does not mill the whole block away</source>

@@ -3497,10 +3497,6 @@ Theirs: %6</source>
             <translation>{} 条路径的条带重叠超过 {} 对：计算未扫过区域超出检查所能处理的量；请减少路径，或画交叉较少的路径</translation>
         </message>
         <message>
-            <source>the depth</source>
-            <translation>深度</translation>
-        </message>
-        <message>
             <source>the tool diameter</source>
             <translation>刀具直径</translation>
         </message>
@@ -3611,6 +3607,10 @@ Theirs: %6</source>
         <message>
             <source>pattern {} is not a face-milling pattern; give 1 (one way, climb: every pass in the same direction) or 2 (zigzag: back and forth)</source>
             <translation>模式 {} 不是面铣模式；请给出 1（单向顺铣：每条刀路同一方向）或 2（之字形：往复）</translation>
+        </message>
+        <message>
+            <source>the depth</source>
+            <translation>深度</translation>
         </message>
         <message>
             <source>the depth {} is not less than the stock's height {}: facing takes a layer off the top, it does not mill the whole block away</source>

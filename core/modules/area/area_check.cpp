@@ -8,6 +8,7 @@
 #include "check/messages.h"
 #include "paths/drawn_passes.h"
 #include "modules/area/area_messages.h"
+#include "modules/pocket_checks.h"
 
 #include <fmt/format.h>
 
@@ -135,8 +136,7 @@ check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const che
 {
     check::UnitReport report;
     Reporter r{unitNo, AreaClearing::kName, ctx, report.diagnostics};
-    check::checkLength(a.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
-        check::checkDepth(a.depth, r);
+    checkDepthField(a.depth, r);
     bool diameter =
         check::checkLength(a.diameter, "diameter", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool diameter"), r);
     if (diameter && !(a.diameter > 0.0)) {

@@ -10,6 +10,7 @@
 
 #include "check/messages.h"
 #include "modules/named_region.h"
+#include "modules/pocket_checks.h"
 #include "modules/pocket_tools.h"
 #include "model/codes.h"
 #include "paths/narrowest.h"
@@ -33,20 +34,13 @@ bool checkContours(const ContourPocket& p, Reporter& r)
 
 bool checkCodes(const ContourPocket& p, Reporter& r)
 {
-    bool ok = true;
-    const auto use = toolUseFromCode(p.toolUse);
-    if (!use) {
-        r.unit("U", p.toolUse >= 2 && p.toolUse <= 5 ? msg::toolUseUndefined(p.toolUse) : msg::toolUseUnknown(p.toolUse));
-        ok = false;
-    } else if (*use == ToolUse::Cored) {
+    const auto use = checkToolUseCode(p.toolUse, r);
+    bool ok = use.has_value();
+    if (use == ToolUse::Cored) {
         r.unit("U", msg::toolUseNotForContours(p.toolUse));
         ok = false;
     }
-    if (!wallFinishFromCode(p.wallFinish)) {
-        r.unit("F", msg::wallFinishUnknown(p.wallFinish));
-        ok = false;
-    }
-    return ok;
+    return checkWallFinishCode(p.wallFinish, r) && ok;
 }
 
 // The smallest tool the room checks measure against (check::checkRoom's).
@@ -210,8 +204,7 @@ check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const c
     check::UnitReport report;
     Reporter r{unitNo, ContourPocket::kName, ctx, report.diagnostics};
     const bool codes = checkCodes(p, r);
-    const bool depth = check::checkLength(p.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
-                       check::checkDepth(p.depth, r);
+    const bool depth = checkDepthField(p.depth, r);
     check::checkStepOver(p.stepOver, r);
     const bool contours = checkContours(p, r);
     report.figureValid = contours;

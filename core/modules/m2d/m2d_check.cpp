@@ -6,6 +6,7 @@
 #include "model/translate_noop.h"
 #include "modules/m2d/m2d_kind.h"
 #include "modules/m2d/m2d_messages.h"
+#include "modules/pocket_checks.h"
 #include "modules/pocket_messages.h"
 #include "modules/region_messages.h"
 
@@ -43,19 +44,10 @@ bool allFinite(const M2DPocket& p, Reporter& r)
 
 bool codesDefined(const M2DPocket& p, Reporter& r)
 {
-    bool ok = true;
-    if (p.toolUse != 1 && p.toolUse != 9) {
-        const bool reserved = p.toolUse >= 2 && p.toolUse <= 5;
-        r.unit("U", reserved                    ? msg::toolUseUndefined(p.toolUse)
-                    : toolUseFromCode(p.toolUse) ? msg::toolUseNotForM2D(p.toolUse)
-                                                 : msg::toolUseUnknown(p.toolUse));
-        ok = false;
-    }
-    if (!pilotHoleFromCode(p.pilotHole)) {
-        r.unit("H", msg::pilotHoleUnknown(p.pilotHole));
-        ok = false;
-    }
-    return ok;
+    // U 1 or 9 only: another known tool use is refused as not M2D's.
+    const bool use = p.toolUse == 1 || p.toolUse == 9;
+    if (!use && checkToolUseCode(p.toolUse, r)) r.unit("U", msg::toolUseNotForM2D(p.toolUse));
+    return checkPilotHoleCode(p.pilotHole, r) && use;
 }
 
 bool anglesValid(const M2DPocket& p, Reporter& r)

@@ -5,6 +5,7 @@
 #include "model/translate_noop.h"
 #include "modules/m4/m4_kind.h"
 #include "modules/m4/m4_messages.h"
+#include "modules/pocket_checks.h"
 #include "modules/pocket_messages.h"
 #include "modules/region_messages.h"
 
@@ -42,20 +43,9 @@ bool allFinite(const M4Pocket& p, Reporter& r)
 
 bool codesDefined(const M4Pocket& p, Reporter& r)
 {
-    bool ok = true;
-    if (!toolUseFromCode(p.toolUse)) {
-        r.unit("U", p.toolUse >= 2 && p.toolUse <= 5 ? msg::toolUseUndefined(p.toolUse) : msg::toolUseUnknown(p.toolUse));
-        ok = false;
-    }
-    if (!wallFinishFromCode(p.wallFinish)) {
-        r.unit("F", msg::wallFinishUnknown(p.wallFinish));
-        ok = false;
-    }
-    if (!pilotHoleFromCode(p.pilotHole)) {
-        r.unit("H", msg::pilotHoleUnknown(p.pilotHole));
-        ok = false;
-    }
-    return ok;
+    const bool use = checkToolUseCode(p.toolUse, r).has_value();
+    const bool finish = checkWallFinishCode(p.wallFinish, r);
+    return checkPilotHoleCode(p.pilotHole, r) && use && finish;
 }
 
 // Four distinct corners forming a convex outline whose corner radius fits.

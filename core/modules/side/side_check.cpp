@@ -9,6 +9,7 @@
 
 #include "check/messages.h"
 #include "model/clipper_scale.h"
+#include "modules/pocket_checks.h"
 #include "modules/region_messages.h"
 #include "modules/side/side_messages.h"
 
@@ -89,8 +90,7 @@ check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Cont
     check::UnitReport report;
     Reporter r{unitNo, SideMill::kName, ctx, report.diagnostics};
     const bool codes = checkCodes(m, r);
-    const bool depth = check::checkLength(m.depth, "depth", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the depth"), r) &&
-                       check::checkDepth(m.depth, r);
+    const bool depth = checkDepthField(m.depth, r);
     bool width = check::checkLength(m.width, "width", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the width"), r);
     if (width && !(m.width > 0.0)) {
         r.unit("width", msg::lengthNotPositive(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the width W"), r.len(m.width)));

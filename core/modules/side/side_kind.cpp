@@ -19,10 +19,12 @@ namespace {
 const std::vector<std::string> kKeys{"module", "name", "contour", "side", "direction", "depth", "width",
                                      "U",      "F",    "stepOver", "tools", "cutting"};
 
-template <class Get, class Set>
-FormField codeField(const char* key, const char* label, std::vector<std::pair<int, std::string>> codes, Get get, Set set)
+// A code of the unit (member m) as a field offering `codes`, each with its meaning.
+FormField codeField(const char* key, const char* label, std::vector<std::pair<int, std::string>> codes, int SideMill::*m)
 {
-    FormField f = form::number<SideMill>(key, label, {key}, get, set);
+    FormField f = form::number<SideMill>(
+        key, label, {key}, [m](const SideMill& u) { return static_cast<double>(u.*m); },
+        [m](SideMill& u, double v) { u.*m = static_cast<int>(std::lround(v)); });
     f.kind = FormFieldKind::Code;
     f.codes = std::move(codes);
     return f;
@@ -163,23 +165,15 @@ protected:
         fs.push_back(form::contourName<SideMill>("contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contour"),
                                                  {"contour"}, &SideMill::contour));
         fs.push_back(codeField("side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tool side"),
-                               {{1, "left of the contour"}, {2, "right of the contour"}},
-                               [](const SideMill& m) { return static_cast<double>(m.side); },
-                               [](SideMill& m, double v) { m.side = static_cast<int>(std::lround(v)); }));
+                               {{1, "left of the contour"}, {2, "right of the contour"}}, &SideMill::side));
         fs.push_back(codeField("direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction"),
-                               {{1, "climb"}, {2, "conventional"}},
-                               [](const SideMill& m) { return static_cast<double>(m.direction); },
-                               [](SideMill& m, double v) { m.direction = static_cast<int>(std::lround(v)); }));
+                               {{1, "climb"}, {2, "conventional"}}, &SideMill::direction));
         fs.push_back(member<SideMill>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"}, &SideMill::depth));
         fs.push_back(member<SideMill>("width", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "W (width)"), {"width"}, &SideMill::width));
         fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                               {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}},
-                               [](const SideMill& m) { return static_cast<double>(m.toolUse); },
-                               [](SideMill& m, double v) { m.toolUse = static_cast<int>(std::lround(v)); }));
+                               {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}}, &SideMill::toolUse));
         fs.push_back(codeField("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-                               {{1, "full depth at once"}, {2, "several incisions"}},
-                               [](const SideMill& m) { return static_cast<double>(m.wallFinish); },
-                               [](SideMill& m, double v) { m.wallFinish = static_cast<int>(std::lround(v)); }));
+                               {{1, "full depth at once"}, {2, "several incisions"}}, &SideMill::wallFinish));
         fs.push_back(form::stepOver<SideMill>());
         form::describe(fs, {
             {"contour", "sym-contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure that is the finished wall, open or closed (e.g. K1)")},
