@@ -34,6 +34,22 @@ namespace {
 QString shown(double v) { return formatShown(v); }
 QString shown(const std::optional<double>& v) { return v ? formatShown(*v) : QString(); }
 
+// A table of the editor's: every cell edited in place, its columns as wide
+// as their contents, scrolling inside the unit column (which decides the
+// width).
+EditingTable* editingTable(int columns, const QString& name, int minHeight, QSizePolicy::Policy vertical, QWidget* parent)
+{
+    auto* t = new EditingTable(0, columns, parent);
+    t->setObjectName(name);
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    t->verticalHeader()->setVisible(false);
+    t->setEditTriggers(QAbstractItemView::AllEditTriggers);
+    t->setMinimumHeight(minHeight);
+    t->setSizePolicy(QSizePolicy::Ignored, vertical);
+    t->setMinimumWidth(200);
+    return t;
+}
+
 }  // namespace
 
 ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(parent), prefix_(prefix)
@@ -50,15 +66,7 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
     connect(exaggerate_, &QCheckBox::toggled, view_, [this](bool on) { view_->setExaggeration(on ? kExaggeration : 1.0); });
     outer->addWidget(exaggerate_);
 
-    rows_ = new EditingTable(0, RowColumns, this);
-    rows_->setObjectName(prefix + ".rows");
-    rows_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    rows_->verticalHeader()->setVisible(false);
-    rows_->setEditTriggers(QAbstractItemView::AllEditTriggers);
-    rows_->setMinimumHeight(150);
-    // The unit column decides the width: the tables scroll inside it.
-    rows_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Expanding);
-    rows_->setMinimumWidth(200);
+    rows_ = editingTable(RowColumns, prefix + ".rows", 150, QSizePolicy::Expanding, this);
     rowsTitle_ = new QLabel(this);
     rowsTitle_->setObjectName(prefix + ".rowsTitle");
     rowsTitle_->setWordWrap(true);
@@ -86,35 +94,9 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
             [this] { reviseCorners(CornerKind::Rounding); });
     outer->addLayout(reviseButtons);
 
-    // Corner revision: the picked corner's size.
-    revision_ = new QWidget(this);
-    revision_->setObjectName(prefix + ".revision");
-    auto* rev = new QHBoxLayout(revision_);
-    rev->setContentsMargins(0, 0, 0, 0);
-    revisionText_ = new QLabel(revision_);
-    revisionText_->setObjectName(prefix + ".revisionText");
-    cornerSize_ = new QLineEdit(revision_);
-    cornerSize_->setObjectName(prefix + ".cornerSize");
-    cornerSize_->setMaximumWidth(90);
-    auto* done = new QPushButton(revision_);
-    done->setObjectName(prefix + ".revisionDone");
-    done->setAutoDefault(false);
-    rev->addWidget(revisionText_, 1);
-    rev->addWidget(cornerSize_);
-    rev->addWidget(done);
-    revision_->hide();
-    outer->addWidget(revision_);
-    connect(cornerSize_, &QLineEdit::returnPressed, this, &ProfileEditor::editCornerSize);
-    connect(done, &QPushButton::clicked, this, [this] { reviseCorners(CornerKind::None); });
+    buildRevision(outer);
 
-    allowances_ = new EditingTable(0, AllowanceColumns, this);
-    allowances_->setObjectName(prefix + ".allowances");
-    allowances_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    allowances_->verticalHeader()->setVisible(false);
-    allowances_->setEditTriggers(QAbstractItemView::AllEditTriggers);
-    allowances_->setMinimumHeight(90);
-    allowances_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    allowances_->setMinimumWidth(200);
+    allowances_ = editingTable(AllowanceColumns, prefix + ".allowances", 90, QSizePolicy::Preferred, this);
     allowanceTitle_ = new QLabel(this);
     allowanceTitle_->setObjectName(prefix + ".allowancesTitle");
     allowanceTitle_->setWordWrap(true);
@@ -136,7 +118,36 @@ ProfileEditor::ProfileEditor(const QString& prefix, QWidget* parent) : QWidget(p
 
     connect(rows_, &QTableWidget::itemChanged, this, &ProfileEditor::onRowItem);
     connect(allowances_, &QTableWidget::itemChanged, this, &ProfileEditor::onAllowanceItem);
-    // The picked edge and the table rows follow each other.
+    followPicks();
+}
+
+// Corner revision: the picked corner's size, its line edit and Done.
+void ProfileEditor::buildRevision(QVBoxLayout* outer)
+{
+    revision_ = new QWidget(this);
+    revision_->setObjectName(prefix_ + ".revision");
+    auto* rev = new QHBoxLayout(revision_);
+    rev->setContentsMargins(0, 0, 0, 0);
+    revisionText_ = new QLabel(revision_);
+    revisionText_->setObjectName(prefix_ + ".revisionText");
+    cornerSize_ = new QLineEdit(revision_);
+    cornerSize_->setObjectName(prefix_ + ".cornerSize");
+    cornerSize_->setMaximumWidth(90);
+    auto* done = new QPushButton(revision_);
+    done->setObjectName(prefix_ + ".revisionDone");
+    done->setAutoDefault(false);
+    rev->addWidget(revisionText_, 1);
+    rev->addWidget(cornerSize_);
+    rev->addWidget(done);
+    revision_->hide();
+    outer->addWidget(revision_);
+    connect(cornerSize_, &QLineEdit::returnPressed, this, &ProfileEditor::editCornerSize);
+    connect(done, &QPushButton::clicked, this, [this] { reviseCorners(CornerKind::None); });
+}
+
+// The picked edge and the table rows follow each other.
+void ProfileEditor::followPicks()
+{
     connect(view_, &ProfileView::edgePicked, this, [this](const QString& id) {
         if (revising_ != CornerKind::None) {
             pickCorner(id);

@@ -26,6 +26,7 @@ class QLineEdit;
 class QPushButton;
 class QTableWidget;
 class QTableWidgetItem;
+class QVBoxLayout;
 
 namespace taiwa::ui {
 
@@ -84,6 +85,8 @@ private:
     static std::vector<std::pair<QString, int>> elementKinds();
     static std::vector<std::pair<QString, int>> cornerKinds();
     void nameParts();
+    void buildRevision(QVBoxLayout* outer);  // the constructor's parts
+    void followPicks();
     // What the corner revision's line says: how many corners to pick from, or the picked one's size.
     QString revisionLine() const;
     void fill(bool force);

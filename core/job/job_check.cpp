@@ -215,6 +215,50 @@ void checkTwoPath(const TwoPathSettings& t, const Machine* machine, Diagnostics&
                                            *t.firstWait, machine->id, codes.first, codes.last)));
 }
 
+// The job's work offset (one some controller has: whether the chosen one has
+// it is known only at export) and its own dialect, if it names one: one this
+// program posts, whose controller has the work offset and writes the tape
+// the job needs.
+void checkOffsetAndDialect(const Job& job, const Job& mm, const Machine* machine, Diagnostics& out)
+{
+    const bool lathe = machine && machine->kind == MachineKind::Lathe;
+    // (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC.)
+    const auto names = dialectNames();
+    if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
+        out.push_back(jobError("workOffset",
+                               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
+                                                                "'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, "
+                                                                "G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)"),
+                                           job.workOffset)));
+    // The job's own dialect: one this program posts, whose controller has the
+    // job's work offset.
+    else if (!job.dialect.empty()) {
+        if (!isDialect(job.dialect)) {
+            std::string known;
+            for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+            out.push_back(jobError(
+                "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; this program posts {}"),
+                                       job.dialect, known)));
+        } else if (auto why = workOffsetProblem(job.dialect, job.workOffset)) {
+            out.push_back(*why);
+        } else if (const post::Dialect* d = post::findDialect(job.dialect)) {
+            // Lathe tapes and probing cycles are written in the G-code dialects.
+            const bool probing = std::any_of(mm.units.begin(), mm.units.end(), [](const auto& u) {
+                const ModuleKind* k = findModuleKind(u.module.name());
+                return k && k->setsWorkOffset();
+            });
+            if (auto can = post::canPost(*d, post::taskOf(lathe, probing)); !can)
+                out.push_back(jobError("dialect", can.error()));
+            // A two-path lathe's programs: the ISO dialects' waits (docs/two-path-lathe.md).
+            else if (lathe && machine->layout.multiPath && d->syntax != post::Syntax::Iso)
+                out.push_back(jobError(
+                    "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no two-path programs; "
+                                                                              "machine {} needs one of the ISO dialects"),
+                                           d->name, machine->id)));
+        }
+    }
+}
+
 }  // namespace
 
 std::optional<TechnologyData> jobTechnology(const Job& mmJob, const TechnologyTable& table)
@@ -270,42 +314,7 @@ CheckedJob checkedJob(Job typed, const TechnologyTable& table, const std::vector
         else
             checkClamping(*mm.clamping, stockOk ? &mm.stock : nullptr, shown, out);
     }
-    // A work offset some controller has; whether the chosen one has it is
-    // known only at export (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC).
-    const auto names = dialectNames();
-    if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
-        out.push_back(jobError("workOffset",
-                               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                                                                "'{}' is not a work offset: give G54 to G59, G59.1 to G59.3, "
-                                                                "G54.1 P1 to P48 (G154 P on Haas) or G505 to G599 (SINUMERIK)"),
-                                           job.workOffset)));
-    // The job's own dialect: one this program posts, whose controller has the
-    // job's work offset.
-    else if (!job.dialect.empty()) {
-        if (!isDialect(job.dialect)) {
-            std::string known;
-            for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-            out.push_back(jobError(
-                "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "unknown dialect '{}'; this program posts {}"),
-                                       job.dialect, known)));
-        } else if (auto why = workOffsetProblem(job.dialect, job.workOffset)) {
-            out.push_back(*why);
-        } else if (const post::Dialect* d = post::findDialect(job.dialect)) {
-            // Lathe tapes and probing cycles are written in the G-code dialects.
-            const bool probing = std::any_of(mm.units.begin(), mm.units.end(), [](const auto& u) {
-                const ModuleKind* k = findModuleKind(u.module.name());
-                return k && k->setsWorkOffset();
-            });
-            if (auto can = post::canPost(*d, post::taskOf(lathe, probing)); !can)
-                out.push_back(jobError("dialect", can.error()));
-            // A two-path lathe's programs: the ISO dialects' waits (docs/two-path-lathe.md).
-            else if (lathe && machine->layout.multiPath && d->syntax != post::Syntax::Iso)
-                out.push_back(jobError(
-                    "dialect", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the {} dialect writes no two-path programs; "
-                                                                              "machine {} needs one of the ISO dialects"),
-                                           d->name, machine->id)));
-        }
-    }
+    checkOffsetAndDialect(job, mm, machine, out);
 
     const check::Context ctx{shown, tech, stockOk ? &mm.stock : nullptr, &library, barOk ? &*mm.bar : nullptr};
     std::vector<check::UnitFigure> figures;
