@@ -150,5 +150,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestTwoPathPlaces)
+QTEST_GUILESS_MAIN(TestTwoPathPlaces)
 #include "test_two_path_places.moc"

@@ -44,6 +44,14 @@ private:
 
     // One block's words acted on: the modal state, the machine retracts, the
     // move or the cycle.
+    // What a block's words do (tape_reader_iso_block.cpp): its G codes,
+    // its other words, then its move.
+    struct GCodes {
+        std::optional<Mode> motion;
+        bool g4 = false, g28 = false, g43 = false, g53 = false, g80 = false, indexed = false, g64 = false, g641 = false;
+    };
+    GCodes gCodes(const Block& b);
+    void words(const Block& b, const GCodes& c);
     void block(const Block& b);
     // LinuxCNC's G33.1 Z K at the hole the tool is over: down to Z at K x S
     // and back up to where it began at the same rate (the spindle reversed

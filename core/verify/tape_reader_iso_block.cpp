@@ -9,11 +9,12 @@
 
 namespace taiwa::verify::tape {
 
-void IsoReader::block(const Block& b)
+// The block's G codes: at most one of the motion group; the modal ones
+// (units, G90/G91, G98) taken at once.
+IsoReader::GCodes IsoReader::gCodes(const Block& b)
 {
-    // G codes: at most one of the motion group.
-    std::optional<Mode> motion;
-    bool g4 = false, g28 = false, g43 = false, g53 = false, g80 = false, indexed = false, g64 = false, g641 = false;
+    GCodes c;
+    auto& [motion, g4, g28, g43, g53, g80, indexed, g64, g641] = c;
     const auto setMotion = [&](Mode mode) {
         if (motion || g80) refuse("two motion codes in one block");
         motion = mode;
@@ -63,20 +64,27 @@ void IsoReader::block(const Block& b)
     }
     if (b.adis && !g641) refuse("ADIS without G641");
     if (g641 && !b.adis) refuse("G641 without ADIS");
+    return c;
+}
+
+// The block's other words: F, P, Q, K, T, S, the M functions, D and H, each
+// where its G code allows it.
+void IsoReader::words(const Block& b, const GCodes& c)
+{
 
     // F: the feed rate, or on SINUMERIK with G4 the dwell time.
-    if (b.has('F') && !(g4 && dwellWord_ == 'F')) {
+    if (b.has('F') && !(c.g4 && dwellWord_ == 'F')) {
         if (!(b.v.at('F') > 0)) refuse("a feed rate of zero");
         m_.feed = b.v.at('F');
     }
-    const Mode modeNow = motion ? *motion : mode_;
+    const Mode modeNow = c.motion ? *c.motion : mode_;
     // P: G4's time, G154's or G54.1's offset, G64's tolerance, G86's dwell (LinuxCNC).
-    if (b.has('P') && !g4 && !indexed && !g64 && modeNow != Mode::Bore) refuse("P without G4, G54.1, G64, G86 or G154");
-    if (indexed) {
+    if (b.has('P') && !c.g4 && !c.indexed && !c.g64 && modeNow != Mode::Bore) refuse("P without G4, G54.1, G64, G86 or G154");
+    if (c.indexed) {
         if (!b.has('P') || b.point.at('P') || b.v.at('P') < 1 || b.v.at('P') > 99) refuse("G154 or G54.1 needs P1 to P99");
     }
     if (b.has('Q') && modeNow != Mode::Peck) refuse("Q without G83");
-    if (b.has('K') && (!motion || *motion != Mode::Synchronised)) refuse("K without G33.1");
+    if (b.has('K') && (!c.motion || *c.motion != Mode::Synchronised)) refuse("K without G33.1");
     if (b.has('T')) selected_ = static_cast<int>(b.v.at('T'));
     if (b.has('S')) rpm_ = b.v.at('S');
     for (const int mf : b.m) {
@@ -106,42 +114,48 @@ void IsoReader::block(const Block& b)
             dInForce_ = true;
         }
     }
-    if (b.has('H') != g43) refuse("G43 and H go together");
-    if (g43) {
+    if (b.has('H') != c.g43) refuse("G43 and H go together");
+    if (c.g43) {
         if (static_cast<int>(b.v.at('H')) != m_.tool)
             refuse("G43 H" + show(b.v.at('H')) + " with T" + std::to_string(m_.tool) + " in the spindle");
         lengthOffset_ = true;
     }
-    if (g4) {
+}
+
+void IsoReader::block(const Block& b)
+{
+    const GCodes c = gCodes(b);
+    words(b, c);
+    if (c.g4) {
         const char time = dwellWord_;
         if (!b.has(time) || b.v.at(time) < 0) refuse(std::string("G4 needs the dwell time in ") + time);
         if (points_ && !b.point.at(time)) refuse(std::string("G4 ") + time + " without a decimal point (milliseconds on this control)");
-        if ((time != 'X' && b.has('X')) || b.has('Y') || b.has('Z') || motion) refuse("a dwell with a move");
+        if ((time != 'X' && b.has('X')) || b.has('Y') || b.has('Z') || c.motion) refuse("a dwell with a move");
         ++m_.out.dwells;
         return;
     }
-    if (g80) {
+    if (c.g80) {
         mode_ = Mode::None;
         cycleZ_.reset();
         cycleR_.reset();
         cycleQ_.reset();
     }
-    if (motion) mode_ = *motion;
+    if (c.motion) mode_ = *c.motion;
 
     const bool axes = b.has('X') || b.has('Y') || b.has('Z');
     // The machine retracts: no move in the program's coordinates.
-    if (g28) {
-        if (!incremental_ || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0 || motion)
+    if (c.g28) {
+        if (!incremental_ || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0 || c.motion)
             refuse("only 'G28 G91 Z0.' is understood");
         return;
     }
-    if (g53) {
-        if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
+    if (c.g53) {
+        if (!c.motion || *c.motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
             refuse("only 'G53 G0 Z0' is understood");
         return;
     }
     if (b.supa) {
-        if (!motion || *motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
+        if (!c.motion || *c.motion != Mode::Rapid || b.has('X') || b.has('Y') || !b.has('Z') || b.v.at('Z') != 0.0)
             refuse("only 'G0 SUPA Z0 [D0]' is understood");
         // SUPA suppresses the frames, not the tool's length (MD
         // G53_TOOLCORR = 0, the default): with D1 in force the tool tip
