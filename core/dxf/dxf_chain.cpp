@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <optional>
-#include <limits>
 #include <set>
 
 namespace taiwa::dxf::detail {
@@ -37,6 +37,20 @@ public:
         for (std::size_t e = 0; e < ends.size(); ++e)
             if (in[e]) cells_.emplace_back(key(ends[e]), static_cast<int>(e));
         std::sort(cells_.begin(), cells_.end());
+        // Each cell's first entry, found through an open-addressed table
+        // (index + 1; 0 is an empty slot).
+        std::size_t cells = 0;
+        for (std::size_t i = 0; i < cells_.size(); ++i) cells += i == 0 || cells_[i].first != cells_[i - 1].first;
+        std::size_t size = 2;
+        while (size < 2 * cells) size *= 2;
+        first_.assign(size, 0);
+        mask_ = size - 1;
+        for (std::size_t i = 0; i < cells_.size(); ++i) {
+            if (i > 0 && cells_[i].first == cells_[i - 1].first) continue;
+            std::size_t slot = mix(cells_[i].first) & mask_;
+            while (first_[slot] != 0) slot = (slot + 1) & mask_;
+            first_[slot] = static_cast<std::uint32_t>(i + 1);
+        }
     }
     Point2 end(int e) const { return ends_[static_cast<std::size_t>(e)]; }
     // Calls f(other end, distance) for the ends within `radius` of end e;
@@ -50,8 +64,7 @@ public:
         for (long long dx = -1; dx <= 1; ++dx)
             for (long long dy = -1; dy <= 1; ++dy) {
                 const unsigned long long k = pack(cx + dx, cy + dy);
-                for (auto it = std::lower_bound(cells_.begin(), cells_.end(), std::pair(k, std::numeric_limits<int>::min()));
-                     it != cells_.end() && it->first == k; ++it) {
+                for (auto it = firstOf(k); it != cells_.end() && it->first == k; ++it) {
                     const int o = it->second;
                     if (++seen > kMaxScan) return false;
                     const double d = distance(p, end(o));
@@ -71,6 +84,19 @@ private:
     {
         return static_cast<unsigned long long>(x) * 0x9E3779B97F4A7C15ULL ^ static_cast<unsigned long long>(y);
     }
+    static std::size_t mix(unsigned long long k)
+    {
+        k ^= k >> 33;
+        k *= 0xff51afd7ed558ccdULL;
+        return static_cast<std::size_t>(k ^ (k >> 33));
+    }
+    // The cell's first entry in cells_, or its end.
+    std::vector<std::pair<unsigned long long, int>>::const_iterator firstOf(unsigned long long k) const
+    {
+        for (std::size_t slot = mix(k) & mask_; first_[slot] != 0; slot = (slot + 1) & mask_)
+            if (cells_[first_[slot] - 1].first == k) return cells_.begin() + static_cast<std::ptrdiff_t>(first_[slot] - 1);
+        return cells_.end();
+    }
     unsigned long long key(Point2 p) const
     {
         const auto [x, y] = cellOf(p);
@@ -79,6 +105,8 @@ private:
     double cell_;
     const std::vector<Point2>& ends_;
     std::vector<std::pair<unsigned long long, int>> cells_;  // (cell, end), sorted: a cell's ends in their order
+    std::vector<std::uint32_t> first_;                      // the table of each cell's first entry
+    std::size_t mask_ = 0;
 };
 
 // Closes the join of a (ending) and b (starting): a line end moves to an

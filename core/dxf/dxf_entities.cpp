@@ -5,8 +5,9 @@
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
 
+#include <istream>
 #include <optional>
-#include <sstream>
+#include <streambuf>
 
 namespace taiwa::dxf::detail {
 
@@ -109,10 +110,30 @@ private:
 
 }  // namespace
 
+namespace {
+
+// The guarded text as dxflib's input stream, read where it lies (a copy of
+// a 16 MB drawing in a stringstream cost its pages again).
+class TextBuffer : public std::streambuf {
+public:
+    explicit TextBuffer(const std::string& text)
+    {
+        char* begin = const_cast<char*>(text.data());  // read only: the get area is never written
+        setg(begin, begin, begin + text.size());
+    }
+};
+
+}  // namespace
+
 std::vector<RawEntity> decodeEntities(const std::string& guardedText)
 {
     Collector c;
-    std::stringstream stream(guardedText);
+    // Room for every entity at once: each starts with group code 0.
+    std::size_t starts = 0;
+    for (std::size_t at = guardedText.find("\n0\n"); at != std::string::npos; at = guardedText.find("\n0\n", at + 3)) ++starts;
+    c.entities.reserve(starts);
+    TextBuffer buffer(guardedText);
+    std::istream stream(&buffer);
     DL_Dxf dxf;
     dxf.in(stream, &c);
     c.finish();

@@ -105,7 +105,9 @@ DxfReadResult readDxf(const std::filesystem::path& path, const DxfOptions& optio
     if (size > (std::size_t{256} << 20)) return failed(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} is larger than 256 MB"), path.string()));
     std::ifstream in(path, std::ios::binary);
     if (!in) return failed(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot open {}: {}"), path.string(), std::strerror(errno)));
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(in.gcount()));  // a file cut shorter since its size was read
     if (in.bad()) return failed(fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "cannot read {}"), path.string()));
     return readDxfBytes(bytes, options);
 }

@@ -332,6 +332,8 @@ ScanResult scanDxf(std::string_view bytes, const std::vector<std::string>& selec
     if (bytes.find('\0') != std::string_view::npos) return failed(TAIWA_TRANSLATE_NOOP("taiwa::msg", "not a DXF file: it holds binary data"));
 
     PairReader reader(bytes);
+    out.entities.reserve(bytes.size() + 64);  // what is kept, about as long as the file: written once
+    out.entities = "0\nSECTION\n2\nENTITIES\n";
     Filter filter(out, notes, selectedLayers);
     Pair p;
     std::string section, headerVariable, tableEntry;
@@ -389,7 +391,7 @@ ScanResult scanDxf(std::string_view bytes, const std::vector<std::string>& selec
     }
     if (!sawEof) notes.add(reader.truncated ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file ends in the middle of a group: it may be cut short")
                                             : TAIWA_TRANSLATE_NOOP("taiwa::msg", "the file ends without EOF: it may be cut short"));
-    out.entities = "0\nSECTION\n2\nENTITIES\n" + out.entities + "0\nENDSEC\n0\nEOF\n";
+    out.entities += "0\nENDSEC\n0\nEOF\n";
     return out;
 }
 

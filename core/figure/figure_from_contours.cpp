@@ -9,6 +9,7 @@
 #include "figure/contour_names.h"
 #include "figure/contour_writer.h"
 #include "figure/figure_eval.h"
+#include "figure/figure_parser.h"
 #include "model/result.h"
 #include "model/translate_noop.h"
 
@@ -160,9 +161,22 @@ Attempt attempt(figure::Namer& names, const Contour& c, double scale)
 void writeOut(Attempt& a, const Contour& c)
 {
     a.text = figure::writeFigure(a.definitions);
+    // Statement by statement against what was written, none of it kept (a
+    // contour of 200,000 lines is 400,000 statements).
+    std::size_t k = 0;
+    bool same = true;
+    try {
+        figure::text::Parser(a.text).eachStatement([&](Definition&& d) {
+            same = k < a.definitions.size() && d == a.definitions[k];
+            ++k;
+            return same;
+        });
+    } catch (const Refusal& r) {
+        throw std::logic_error("figure from contours: written text refused: " + r.message());
+    }
+    if (same && k == a.definitions.size()) return;
     const figure::ParseResult read = figure::parseFigure(a.text);
     if (!read.ok()) throw std::logic_error("figure from contours: written text refused: " + read.error->text());
-    if (read.definitions == a.definitions) return;
     const figure::Evaluation ev = figure::evaluate(read.definitions);
     a.deviation = ev.ok() ? deviation(ev.contours.at(0).contour, c) : std::numeric_limits<double>::infinity();
 }

@@ -58,13 +58,25 @@ public:
     std::vector<Definition> statements()
     {
         std::vector<Definition> out;
-        const std::size_t statements = lex_.statementEstimate();
-        out.reserve(statements);
-        defined_.reserve(statements);
+        out.reserve(lex_.statementEstimate());
+        eachStatement([&](Definition&& d) {
+            out.push_back(std::move(d));
+            return true;
+        });
+        return out;
+    }
+
+    // Each statement as it is read, handed to `each`, which stops the
+    // reading by returning false (a text read back and compared with what
+    // was written, none of it kept).
+    template <class F>
+    void eachStatement(F&& each)
+    {
+        defined_.reserve(lex_.statementEstimate());
         for (;;) {
             while (cur_.tok == Tok::EndOfLine) advance();
-            if (cur_.tok == Tok::EndOfText) return out;
-            out.push_back(statement());
+            if (cur_.tok == Tok::EndOfText) return;
+            if (!each(statement())) return;
         }
     }
 
