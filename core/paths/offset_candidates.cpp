@@ -219,7 +219,7 @@ Nearby::Nearby(const std::vector<const ContourSegment*>& segs, double reach) : s
 {
     Box all{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
             {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
-    std::vector<Box2> boxes;
+    std::vector<Box2>& boxes = boxes_;
     boxes.reserve(segs.size());
     for (const auto* s : segs) {
         const Box2 b = bounds(Contour{{*s}, false});
@@ -260,6 +260,12 @@ bool Nearby::anyNearer(Point2 p, double limit)
             for (std::uint32_t k : cells_[index(x, y)]) {
                 if (seen_[k] == stamp_) continue;
                 seen_[k] = stamp_;
+                // Its bounds no nearer than the limit (and a nanometre, for
+                // the bounds' own rounding): nor is the segment.
+                const Box2& b = boxes_[k];
+                const double bx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
+                const double by = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
+                if (bx * bx + by * by >= (limit + 1e-9) * (limit + 1e-9)) continue;
                 if (distance(p, segs_[k]->nearest(p)) < limit) return true;
             }
         }

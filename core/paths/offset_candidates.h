@@ -63,6 +63,7 @@ private:
     std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x); }
 
     const std::vector<const ContourSegment*>& segs_;
+    std::vector<Box2> boxes_;  // each segment's bounds: a cheap test before its exact distance
     Point2 origin_{};
     double cell_ = 1.0;
     int nx_ = 1, ny_ = 1;
