@@ -16,9 +16,9 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <unordered_map>
 #include <optional>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 namespace taiwa::figure {
