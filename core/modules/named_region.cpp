@@ -8,6 +8,7 @@
 #include "io/job_messages.h"
 #include "model/clipper_scale.h"
 #include "modules/region_messages.h"
+#include "modules/self_crossing.h"
 
 #include <fmt/format.h>
 
@@ -112,15 +113,6 @@ ClipperLib::Path polygon(const Contour& c)
     return p;
 }
 
-bool crossesItself(const Contour& c)
-{
-    const ClipperLib::Path p = polygon(c);
-    ClipperLib::Paths simple;
-    ClipperLib::SimplifyPolygon(p, simple, ClipperLib::pftNonZero);
-    if (simple.size() != 1) return true;
-    return std::abs(ClipperLib::Area(simple[0]) - ClipperLib::Area(p)) > 1e-6 * std::abs(ClipperLib::Area(p)) + 100.0;
-}
-
 double commonArea(const ClipperLib::Path& a, const ClipperLib::Path& b, ClipperLib::ClipType type)
 {
     ClipperLib::Clipper c;
@@ -198,7 +190,7 @@ bool checkNamedRegion(const NamedRegion& p, check::Reporter& r, const char* what
                                            k == 0 ? TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")
                                                   : TAIWA_TRANSLATE_NOOP("taiwa::msg", "island")));
             ok = false;
-        } else if (crossesItself(*all[k].second)) {
+        } else if (polygonCrossesItself(flatten(*all[k].second, kChord))) {
             r.unit(field, msg::contourCrossesItself(all[k].first));
             ok = false;
         }

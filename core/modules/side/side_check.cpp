@@ -8,9 +8,9 @@
 #include "modules/side/side.h"
 
 #include "check/messages.h"
-#include "model/clipper_scale.h"
 #include "modules/pocket_checks.h"
 #include "modules/region_messages.h"
+#include "modules/self_crossing.h"
 #include "modules/side/side_messages.h"
 
 #include <cmath>
@@ -20,33 +20,6 @@ namespace taiwa {
 namespace {
 
 using check::Reporter;
-
-constexpr double kChord = 1e-3;  // mm
-
-bool segmentsCross(Point2 a, Point2 b, Point2 c, Point2 d)
-{
-    const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-    const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-    return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
-}
-
-bool crossesItself(const Contour& c)
-{
-    const std::vector<Point2> p = flatten(c, kChord);
-    if (c.closed) {  // Clipper's union of the polygon is one piece of the same area
-        auto path = toClipper(p);
-        ClipperLib::Paths simple;
-        ClipperLib::SimplifyPolygon(path, simple, ClipperLib::pftNonZero);
-        if (simple.size() != 1) return true;
-        return std::abs(std::abs(ClipperLib::Area(simple[0])) - std::abs(ClipperLib::Area(path))) >
-               1e-6 * std::abs(ClipperLib::Area(path)) + 100.0;
-    }
-    // An open chain: no two pieces that are not neighbours cross.
-    for (std::size_t i = 0; i + 1 < p.size(); ++i)
-        for (std::size_t j = i + 2; j + 1 < p.size(); ++j)
-            if (segmentsCross(p[i], p[i + 1], p[j], p[j + 1])) return true;
-    return false;
-}
 
 bool checkCodes(const SideMill& m, Reporter& r)
 {
