@@ -125,13 +125,10 @@ public:
 
 }  // namespace
 
-std::vector<RawEntity> decodeEntities(const std::string& guardedText)
+std::vector<RawEntity> decodeEntities(const std::string& guardedText, std::size_t count)
 {
     Collector c;
-    // Room for every entity at once: each starts with group code 0.
-    std::size_t starts = 0;
-    for (std::size_t at = guardedText.find("\n0\n"); at != std::string::npos; at = guardedText.find("\n0\n", at + 3)) ++starts;
-    c.entities.reserve(starts);
+    c.entities.reserve(count);
     TextBuffer buffer(guardedText);
     std::istream stream(&buffer);
     DL_Dxf dxf;

@@ -32,6 +32,7 @@ struct RawEntity {
     int fitPoints = 0;                // SPLINE
 };
 
-std::vector<RawEntity> decodeEntities(const std::string& guardedText);
+// The scan's kept entities (`count` of them: room is made at once).
+std::vector<RawEntity> decodeEntities(const std::string& guardedText, std::size_t count);
 
 }  // namespace taiwa::dxf::detail

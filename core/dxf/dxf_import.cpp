@@ -153,7 +153,7 @@ DxfReadResult readDxfBytes(std::string_view bytes, const DxfOptions& options)
                                       layerList(r.layers))
                         : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "no lines, arcs, circles, polylines, splines or ellipses on the selected layers; the drawing's layers: {}"),
                                       layerList(r.layers)));
-    const std::vector<detail::RawEntity> entities = detail::decodeEntities(scan.entities);
+    const std::vector<detail::RawEntity> entities = detail::decodeEntities(scan.entities, static_cast<std::size_t>(scan.keptEntities));
     std::vector<detail::Piece> pieces;
     if (auto built = detail::buildPieces(entities, r.unitScale, options.splineTolerance, kSegmentBudget, pieces, notes); !built)
         return fail(built.error());

@@ -53,12 +53,12 @@ inline constexpr const char* kXY = TAIWA_TRANSLATE_NOOP("taiwa::msg", "XLARGE, X
 
 class Parser {
 public:
-    explicit Parser(std::string_view text) : lex_(text) { advance(); }
+    explicit Parser(std::string_view text) : lex_(text), expected_(lex_.statementEstimate()) { advance(); }
 
     std::vector<Definition> statements()
     {
         std::vector<Definition> out;
-        out.reserve(lex_.statementEstimate());
+        out.reserve(expected_);
         eachStatement([&](Definition&& d) {
             out.push_back(std::move(d));
             return true;
@@ -72,7 +72,7 @@ public:
     template <class F>
     void eachStatement(F&& each)
     {
-        defined_.reserve(lex_.statementEstimate());
+        defined_.reserve(expected_);
         for (;;) {
             while (cur_.tok == Tok::EndOfLine) advance();
             if (cur_.tok == Tok::EndOfText) return;
@@ -274,6 +274,7 @@ private:
     void contour(Definition& d);
 
     Lexer lex_;
+    std::size_t expected_;  // about how many statements the text holds: room made once
     Token cur_;
     Token prev_;
     std::string name_;  // the element being defined, for messages
