@@ -196,8 +196,7 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
         // kFigureRoundTrip, the contour's numbers get more decimals.
         std::optional<Attempt> best;
         figure::Namer::Given bestNames;
-        bool kept = false;  // an attempt within kFigureRoundTrip, its names still given
-        std::string why;    // why it is not written to 1e-6 mm
+        std::string why;  // why it is not written to 1e-6 mm
         for (const double scale : {1e6, 1e7, 1e8, 1e9}) {
             try {
                 Attempt a = attempt(names, c, scale);
@@ -205,7 +204,7 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
                     why = std::isinf(a.deviation) ? std::string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "its text gives back other segments"))
                                                   : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "it comes back {:.7f} mm from the drawing"), a.deviation);
                 if (a.deviation <= kFigureRoundTrip) {  // kept, with the names it was given
-                    best = std::move(a), kept = true;
+                    best = std::move(a);
                     break;
                 }
                 const bool better = !best || a.deviation < best->deviation;
@@ -216,6 +215,9 @@ FigureFromContours figureFromContours(const std::vector<Contour>& contours, cons
                 if (why.empty()) why = r.message();
             }
         }
+        // An attempt within kFigureRoundTrip still has its names given;
+        // the others' were taken back.
+        const bool kept = best && best->deviation <= kFigureRoundTrip;
         if (best) writeOut(*best, c);
         if (!best || !(best->deviation <= kFigureUsable)) {
             if (kept) names.takeBack();

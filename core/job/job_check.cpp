@@ -216,13 +216,12 @@ void checkTwoPath(const TwoPathSettings& t, const Machine* machine, Diagnostics&
 }
 
 // The job's work offset (one some controller has: whether the chosen one has
-// it is known only at export) and its own dialect, if it names one: one this
-// program posts, whose controller has the work offset and writes the tape
-// the job needs.
+// it, G54.1 P on FANUC or G59.1-G59.3 on LinuxCNC, is known only at export)
+// and its own dialect, if it names one: one this program posts, whose
+// controller has the work offset and writes the tape the job needs.
 void checkOffsetAndDialect(const Job& job, const Job& mm, const Machine* machine, Diagnostics& out)
 {
     const bool lathe = machine && machine->kind == MachineKind::Lathe;
-    // (G54.1 P on FANUC, G59.1-G59.3 on LinuxCNC.)
     const auto names = dialectNames();
     if (std::all_of(names.begin(), names.end(), [&](const std::string& d) { return workOffsetProblem(d, job.workOffset); }))
         out.push_back(jobError("workOffset",

@@ -30,8 +30,9 @@ __extension__ typedef __int128 Wide;
 template <class Meet>
 std::optional<bool> anyPairMeets(const std::vector<Point2>& p, bool closed, const Meet& meet)
 {
-    const std::size_t n = p.size(), edges = closed ? n : n - 1;
+    const std::size_t n = p.size();
     if (n < 2) return false;
+    const std::size_t edges = closed ? n : n - 1;
     Box2 all{p.front(), p.front()};
     double length = 0.0;
     for (std::size_t k = 0; k < n; ++k) {

@@ -219,11 +219,10 @@ Nearby::Nearby(const std::vector<const ContourSegment*>& segs, double reach) : s
 {
     Box all{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
             {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
-    std::vector<Box2>& boxes = boxes_;
-    boxes.reserve(segs.size());
+    boxes_.reserve(segs.size());
     for (const auto* s : segs) {
         const Box2 b = bounds(Contour{{*s}, false});
-        boxes.push_back(b);
+        boxes_.push_back(b);
         all.min = {std::min(all.min.x, b.min.x), std::min(all.min.y, b.min.y)};
         all.max = {std::max(all.max.x, b.max.x), std::max(all.max.y, b.max.y)};
     }
@@ -236,8 +235,8 @@ Nearby::Nearby(const std::vector<const ContourSegment*>& segs, double reach) : s
     ny_ = static_cast<int>((all.max.y - all.min.y) / cell_) + 1;
     cells_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), {});
     for (std::size_t k = 0; k < segs.size(); ++k) {
-        const auto [x0, y0] = cellOf(boxes[k].min);
-        const auto [x1, y1] = cellOf(boxes[k].max);
+        const auto [x0, y0] = cellOf(boxes_[k].min);
+        const auto [x1, y1] = cellOf(boxes_[k].max);
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) cells_[index(x, y)].push_back(static_cast<std::uint32_t>(k));
     }
