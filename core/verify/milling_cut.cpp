@@ -1,7 +1,9 @@
 // The milling verifier cutting one step into a band of the height field
 // (milling_verifier.h): every piece of the step's path swept level by level,
 // straight or along its arc, and each cell it lowers checked on the way for
-// a gouge, a rapid into stock, and the shank or the holder in stock.
+// a gouge, a rapid into stock, and the shank or the holder in stock. A run
+// of pieces that only goes down and can find nothing is cut last piece
+// first (see StepCut::backwards).
 #include "verify/milling_verifier.h"
 
 #include "model/translate_noop.h"
@@ -11,115 +13,273 @@
 
 namespace taiwa::verify::milling {
 
-// Cuts step k into the band's rows; the sum of the heights it took off.
-double Verifier::cutStep(int k, int row0, int row1, Collector& out)
+namespace {
+
+// One horizontal sweep of the tool tip at height z, as forward cutting
+// makes it of a piece: a straight part a -> b (a point where a == b), or
+// the part of an arc of `radius` about `centre` from angle a0 over `sweep`.
+struct Sweep {
+    Point2 a{}, b{};
+    double z = 0.0;
+    bool arc = false;
+    Point2 centre{};
+    double radius = 0.0, a0 = 0.0, sweep = 0.0;
+};
+
+// The sweeps of a piece: a straight piece split into levels no more than
+// zStep apart (sim::forEachLevel), an arc exactly and a helix in parts,
+// each at its higher end, then its end point at its own height.
+void sweepsOf(const sim::SweptPiece& piece, double zStep, std::vector<Sweep>& out)
 {
-    double removed = 0.0;
-    const StepData& d = steps_[static_cast<std::size_t>(k)];
-    const sim::CutterProfile& cutter = *d.cutter;
-    const double reach = cutter.reach(), reach2 = reach * reach;
-    float* h = field_.data();
-    const double bottom = field_.bottom();
-    std::uint64_t visits = 0;
-    sim::SweepChain chain;  // where the last straight sweep ended, and its height
-    std::uint64_t counted = 0;  // of `visits`, added to the job's count
-    for (const sim::SweptPiece& piece : d.pieces) {
-        if (maxVisits_ > 0.0 && visits > counted) {  // the bound of the work, over every band
-            const auto sum = allVisits_.fetch_add(visits - counted, std::memory_order_relaxed) + (visits - counted);
-            counted = visits;
-            if (static_cast<double>(sum) > maxVisits_) over_.store(true, std::memory_order_relaxed);
-        }
-        if (over()) break;
-        if (std::min(piece.from.z, piece.to.z) >= 0.0) continue;
-        // The cells near one horizontal sweep at tip height z: a
-        // straight piece from a to b, or the part [t0, t1] of the arc.
-        const auto level = [&](double z, const auto& cellsWithin) {
-            if (z >= 0.0) return;
-            const bool shankLow = z + d.flute < -kTouch;
-            const bool holderLow = z + d.holderZ < -kTouch;
-            const double radius = holderLow ? std::max(reach, d.holderR) : reach;
-            // No cell at or below the tip's height changes, nor touches
-            // the shank or holder (both above the tip): skip its tile.
-            const float floor = static_cast<float>(std::max(z, bottom));
-            const auto runs = [&](int j, int from, int to, const auto& cells) {
-                int start = -1;  // the first cell of the run still to visit
-                for (int lo = from; lo <= to;) {
-                    const int t = lo / kTile, hi = std::min(to, (t + 1) * kTile - 1);
-                    if (tileTop(j, t) > floor) {
-                        if (start < 0) start = lo;
-                    } else if (start >= 0) {
-                        cells(start, lo - 1);
-                        start = -1;
-                    }
-                    lo = hi + 1;
-                }
-                if (start >= 0) cells(start, to);
-            };
-            cellsWithin(radius, runs, [&](int i, int j, double r2) {
-                const std::size_t c = field_.indexOf(i, j);
-                ++visits;
-                const double before = h[c];
-                const auto where = [&](double zz) {
-                    const Point2 p = field_.centre(i, j);
-                    return Point3{p.x, p.y, zz};
-                };
-                if (holderLow && before > z + d.holderZ + kTouch)
-                    out.add(FindingKind::Collision, k, piece.move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "holder"), where(before), before - (z + d.holderZ));
-                if (r2 > reach2) return;
-                if (shankLow && before > z + d.flute + kTouch && before <= z + d.holderZ + kTouch)
-                    out.add(FindingKind::Collision, k, piece.move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "shank"), where(before), before - (z + d.flute));
-                const double after = std::max(z + cutter.heightSquared(r2), bottom);
-                const float lowered = static_cast<float>(after);  // the grid's heights are floats
-                if (lowered >= h[c]) return;
-                if (piece.rapid && before - after > kTouch)
-                    out.add(FindingKind::RapidIntoStock, k, piece.move, "", where(after), before - after);
-                h[c] = lowered;
-                tileStale_[tileOf(i, j)] = 1;
-                removed += before - h[c];
-                if (h[c] < limit_[c]) {
-                    const double area = before >= limit_[c] ? cellArea() : 0.0;  // each cell counted once
-                    out.add(FindingKind::Gouge, k, piece.move, "", where(after), limit_[c] + kGougeTolerance - after, area);
-                }
-            });
-        };
-        // A straight sweep; when the last one ended where it starts, at
-        // the same height and without the holder low, the cells within
-        // the cutter's flat bottom of its start are at that height
-        // already (or lower) and are not visited again: a contour's
-        // short chords would otherwise each visit a whole disc of cells.
-        const auto line = [&](Point2 a, Point2 b, double z) {
-            const bool holderLow = z + d.holderZ < -kTouch;
-            const double skip = holderLow ? 0.0 : chain.skip(a, z, cutter.flatRadius());
-            level(z, [&](double radius, const auto& runs, const auto& visit) {
-                sim::forEachCellNear(field_, a, b, radius, row0, row1, visit, skip, runs);
-            });
-            if (z < 0.0 && !holderLow) chain.ended(b, z);
-            else chain.broken();
-        };
-        if (!piece.arc) {
-            sim::forEachLevel(piece.from, piece.to, zStep_, line);
-            continue;
-        }
-        chain.broken();
-        // An arc exactly; a helix in parts at most zStep apart in Z, each
-        // at its higher end, then its end point at its own height.
-        const Point2 c = piece.centre;
-        const double radius = std::hypot(piece.from.x - c.x, piece.from.y - c.y);
-        const double a0 = std::atan2(piece.from.y - c.y, piece.from.x - c.x);
-        const double dz = piece.to.z - piece.from.z;
-        const int n = std::max(1, static_cast<int>(std::ceil(std::abs(dz) / zStep_)));
-        for (int part = 0; part < n; ++part) {
-            const double t0 = static_cast<double>(part) / n, t1 = static_cast<double>(part + 1) / n;
-            const double z = std::max(piece.from.z + t0 * dz, piece.from.z + t1 * dz);
-            level(z, [&](double reachOf, const auto& runs, const auto& visit) {
-                sim::forEachCellNearArc(field_, c, radius, a0 + t0 * piece.sweep, (t1 - t0) * piece.sweep, reachOf, row0,
-                                        row1, visit, runs);
-            });
-        }
-        if (dz != 0.0) line({piece.to.x, piece.to.y}, {piece.to.x, piece.to.y}, piece.to.z);
+    if (!piece.arc) {
+        sim::forEachLevel(piece.from, piece.to, zStep, [&](Point2 a, Point2 b, double z) { out.push_back({a, b, z}); });
+        return;
     }
-    visits_ += visits;
-    return removed;
+    const Point2 c = piece.centre;
+    const double radius = std::hypot(piece.from.x - c.x, piece.from.y - c.y);
+    const double a0 = std::atan2(piece.from.y - c.y, piece.from.x - c.x);
+    const double dz = piece.to.z - piece.from.z;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(dz) / zStep)));
+    for (int part = 0; part < n; ++part) {
+        const double t0 = static_cast<double>(part) / n, t1 = static_cast<double>(part + 1) / n;
+        Sweep s;
+        s.z = std::max(piece.from.z + t0 * dz, piece.from.z + t1 * dz);
+        s.arc = true;
+        s.centre = c;
+        s.radius = radius;
+        s.a0 = a0 + t0 * piece.sweep;
+        s.sweep = (t1 - t0) * piece.sweep;
+        out.push_back(s);
+    }
+    const Point2 end{piece.to.x, piece.to.y};
+    if (dz != 0.0) out.push_back({end, end, piece.to.z});
 }
+
+}  // namespace
+
+// Cuts one step into one band's rows.
+class StepCut {
+public:
+    StepCut(Verifier& v, int k, int row0, int row1, Collector& out)
+        : v_(v), k_(k), row0_(row0), row1_(row1), out_(out), d_(v.steps_[static_cast<std::size_t>(k)]),
+          cutter_(*d_.cutter), reach_(cutter_.reach()), h_(v.field_.data()), bottom_(v.field_.bottom())
+    {
+    }
+
+    // The sum of the heights the step took off.
+    double run()
+    {
+        const std::vector<sim::SweptPiece>& pieces = d_.pieces;
+        std::vector<Sweep> sweeps;
+        for (std::size_t p = 0; p < pieces.size();) {
+            if (overBudget()) break;
+            const sim::SweptPiece& piece = pieces[p];
+            if (std::min(piece.from.z, piece.to.z) >= 0.0) {
+                ++p;
+                continue;
+            }
+            // The run of pieces from p that may be cut backwards: when it
+            // goes down, it is (unless it gouges: then in order after all).
+            std::size_t q = p;
+            bool down = false;
+            for (; q < pieces.size() && mayGoBackwards(pieces[q]); ++q) down |= pieces[q].to.z < pieces[q].from.z;
+            if (down && !v_.inPathOrder_) {
+                sweeps.clear();
+                for (std::size_t r = p; r < q; ++r) sweepsOf(pieces[r], v_.zStep_, sweeps);
+                if (backwards(sweeps)) {
+                    p = q;
+                    continue;
+                }
+            }
+            for (const std::size_t end = std::max(q, p + 1); p < end && !overBudget(); ++p) {
+                const sim::SweptPiece& next = pieces[p];
+                sweeps.clear();
+                sweepsOf(next, v_.zStep_, sweeps);
+                if (next.arc) chain_.broken();
+                for (const Sweep& s : sweeps) forward(s, next);
+            }
+        }
+        Verifier::visits_ += visits_;
+        return removed_;
+    }
+
+private:
+    // Adds this band's visits to the job's count; past the bound, every band stops.
+    bool overBudget()
+    {
+        if (v_.maxVisits_ > 0.0 && visits_ > counted_) {
+            const auto sum = v_.allVisits_.fetch_add(visits_ - counted_, std::memory_order_relaxed) + (visits_ - counted_);
+            counted_ = visits_;
+            if (static_cast<double>(sum) > v_.maxVisits_) v_.over_.store(true, std::memory_order_relaxed);
+        }
+        return v_.over();
+    }
+
+    // The cells near one sweep, from `from` to `to` when straight, at the
+    // sweep's height; `skip`: the radius about `from` already cut at it.
+    void cut(const Sweep& s, Point2 from, Point2 to, double skip, int move, bool rapid)
+    {
+        const double z = s.z;
+        if (z >= 0.0) return;
+        const bool shankLow = z + d_.flute < -kTouch;
+        const bool holderLow = z + d_.holderZ < -kTouch;
+        const double radius = holderLow ? std::max(reach_, d_.holderR) : reach_;
+        const double reach2 = reach_ * reach_;
+        // No cell at or below the tip's height changes, nor touches the
+        // shank or holder (both above the tip): its tile is skipped, and
+        // within a tile above the tip, only the runs of cells above it
+        // are handed on (reading a height costs less than measuring the
+        // cell's distance from the path).
+        const float floor = static_cast<float>(std::max(z, bottom_));
+        const auto runs = [&](int j, int first, int last, const auto& cells) {
+            const float* row = h_ + v_.field_.indexOf(0, j);
+            int start = -1;  // the first cell of the run still to visit
+            for (int lo = first; lo <= last;) {
+                const int t = lo / kTile, hi = std::min(last, (t + 1) * kTile - 1);
+                if (v_.tileTop(j, t) > floor) {
+                    for (int i = lo; i <= hi; ++i) {
+                        if (row[i] > floor) {
+                            if (start < 0) start = i;
+                        } else if (start >= 0) {
+                            cells(start, i - 1);
+                            start = -1;
+                        }
+                    }
+                } else if (start >= 0) {
+                    cells(start, lo - 1);
+                    start = -1;
+                }
+                lo = hi + 1;
+            }
+            if (start >= 0) cells(start, last);
+        };
+        const sim::HeightField& field = v_.field_;
+        const auto visit = [&](int i, int j, double r2) {
+            if (gouged_) return;  // (a backwards run stopped)
+            const std::size_t c = field.indexOf(i, j);
+            ++visits_;
+            const double before = h_[c];
+            const auto where = [&](double zz) {
+                const Point2 p = field.centre(i, j);
+                return Point3{p.x, p.y, zz};
+            };
+            if (holderLow && before > z + d_.holderZ + kTouch)
+                out_.add(FindingKind::Collision, k_, move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "holder"), where(before), before - (z + d_.holderZ));
+            if (r2 > reach2) return;
+            if (shankLow && before > z + d_.flute + kTouch && before <= z + d_.holderZ + kTouch)
+                out_.add(FindingKind::Collision, k_, move, TAIWA_TRANSLATE_NOOP("taiwa::msg", "shank"), where(before), before - (z + d_.flute));
+            const double after = std::max(z + cutter_.heightSquared(r2), bottom_);
+            const float lowered = static_cast<float>(after);  // the grid's heights are floats
+            if (lowered >= h_[c]) return;
+            if (backwards_) {
+                if (lowered < v_.limit_[c]) {
+                    gouged_ = true;
+                    return;
+                }
+                undo_.emplace_back(c, h_[c]);
+            }
+            if (rapid && before - after > kTouch)
+                out_.add(FindingKind::RapidIntoStock, k_, move, "", where(after), before - after);
+            h_[c] = lowered;
+            v_.tileStale_[v_.tileOf(i, j)] = 1;
+            removed_ += before - h_[c];
+            if (h_[c] < v_.limit_[c]) {
+                const double area = before >= v_.limit_[c] ? v_.cellArea() : 0.0;  // each cell counted once
+                out_.add(FindingKind::Gouge, k_, move, "", where(after), v_.limit_[c] + kGougeTolerance - after, area);
+            }
+        };
+        if (s.arc)
+            sim::forEachCellNearArc(field, s.centre, s.radius, s.a0, s.sweep, radius, row0_, row1_, visit, runs);
+        else
+            sim::forEachCellNear(field, from, to, radius, row0_, row1_, visit, skip, runs);
+    }
+
+    // A sweep cut in the path's order. A straight one that starts where the
+    // last ended, at the same height and without the holder low, skips the
+    // cells within the cutter's flat bottom of its start: they are at that
+    // height already (or lower), and a contour's short chords would
+    // otherwise each visit a whole disc of cells.
+    void forward(const Sweep& s, const sim::SweptPiece& piece)
+    {
+        if (s.arc) {
+            cut(s, {}, {}, 0.0, piece.move, piece.rapid);
+            return;
+        }
+        const bool holderLow = s.z + d_.holderZ < -kTouch;
+        const double skip = holderLow ? 0.0 : chain_.skip(s.a, s.z, cutter_.flatRadius());
+        cut(s, s.a, s.b, skip, piece.move, piece.rapid);
+        if (s.z < 0.0 && !holderLow) chain_.ended(s.b, s.z);
+        else chain_.broken();
+    }
+
+    // Whether a piece may be cut out of the path's order: it cuts (no
+    // rapid), it does not go up, and neither the shank nor the holder
+    // reaches the stock. Cells are only ever lowered, to the least of what
+    // every sweep leaves, so the order of such pieces changes no height,
+    // only the work; what it would change is which move a gouge is laid to
+    // (backwards() gives up on one).
+    bool mayGoBackwards(const sim::SweptPiece& piece) const
+    {
+        return !piece.rapid && piece.to.z <= piece.from.z && piece.to.z < 0.0 && piece.to.z + d_.flute >= -kTouch;
+    }
+
+    // A run of pieces going down cut last sweep first, each straight sweep
+    // from its end: the lowest is cut first, and the higher sweeps before
+    // it then find most of their cells at or below their tip already (a
+    // ramp into a layer costs little more than the layer). Straight sweeps
+    // are chained backwards as forward. Afterwards the path's chain is
+    // where forward cutting would have left it. A cell that would go below
+    // its gouge limit stops it: every cell it lowered is put back, and
+    // false says the run is still to cut, in order.
+    bool backwards(const std::vector<Sweep>& sweeps)
+    {
+        sim::SweepChain back;
+        const double flat = cutter_.flatRadius(), removedBefore = removed_;
+        undo_.clear();
+        backwards_ = true;
+        gouged_ = false;
+        for (auto it = sweeps.rbegin(); it != sweeps.rend() && !gouged_ && !overBudget(); ++it) {
+            const Sweep& s = *it;
+            if (s.arc) {
+                back.broken();
+                cut(s, {}, {}, 0.0, -1, false);
+                continue;
+            }
+            cut(s, s.b, s.a, back.skip(s.b, s.z, flat), -1, false);
+            if (s.z < 0.0) back.ended(s.a, s.z);
+            else back.broken();
+        }
+        backwards_ = false;
+        if (gouged_) {
+            for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) h_[it->first] = it->second;
+            removed_ = removedBefore;
+            gouged_ = false;
+            return false;
+        }
+        const Sweep& last = sweeps.back();
+        if (!last.arc && last.z < 0.0) chain_.ended(last.b, last.z);
+        else chain_.broken();
+        return true;
+    }
+
+    Verifier& v_;
+    const int k_, row0_, row1_;
+    Collector& out_;
+    const StepData& d_;
+    const sim::CutterProfile& cutter_;
+    const double reach_;
+    float* h_;
+    const double bottom_;
+    std::uint64_t visits_ = 0;
+    std::uint64_t counted_ = 0;  // of visits_, added to the job's count
+    double removed_ = 0.0;
+    sim::SweepChain chain_;  // where the last straight sweep ended, and its height
+    bool backwards_ = false;  // cutting a run backwards: a gouge stops it
+    bool gouged_ = false;
+    std::vector<std::pair<std::size_t, float>> undo_;  // the cells a backwards run lowered, and their heights before
+};
+
+// Cuts step k into the band's rows; the sum of the heights it took off.
+double Verifier::cutStep(int k, int row0, int row1, Collector& out) { return StepCut(*this, k, row0, row1, out).run(); }
 
 }  // namespace taiwa::verify::milling

@@ -19,11 +19,11 @@ namespace taiwa::verify::milling {
 
 thread_local std::uint64_t Verifier::visits_ = 0;
 
-Verifier::Verifier(const Plan& plan, double resolution, double maxVisits)
+Verifier::Verifier(const Plan& plan, double resolution, double maxVisits, bool inPathOrder)
     : plan_(plan), res_(resolution), zStep_(std::min(0.02, resolution / 5.0)), field_(plan.mmJob.stock, resolution),
       limit_(field_.heights().size(), 0.0f), tilesPerRow_((field_.columns() + kTile - 1) / kTile),
       tileTop_(static_cast<std::size_t>(tilesPerRow_) * field_.rows(), 0.0f),
-      tileStale_(tileTop_.size(), 1), maxVisits_(maxVisits)
+      tileStale_(tileTop_.size(), 1), maxVisits_(maxVisits), inPathOrder_(inPathOrder)
 {
     units_.resize(plan.mmJob.units.size());
     for (std::size_t u = 0; u < units_.size(); ++u) {

@@ -26,10 +26,13 @@ constexpr int kBandsPerThread = 8;
 constexpr int kTile = 32;  // cells of a row under one tile top
 
 class Verifier {
+    friend class StepCut;  // the cutting of one step (milling_cut.cpp)
+
 public:
     // Each unit's cavity and each cutting step's cutter; maxVisits bounds
-    // the cells the bands may visit (0: no bound, see over()).
-    Verifier(const Plan& plan, double resolution, double maxVisits);
+    // the cells the bands may visit (0: no bound, see over()); inPathOrder:
+    // no run of pieces cut backwards (Options::inPathOrder).
+    Verifier(const Plan& plan, double resolution, double maxVisits, bool inPathOrder = false);
 
     // Cuts every step in `threads` threads: the findings, the material each
     // step removed and the stock as left.
@@ -104,6 +107,7 @@ private:
     std::vector<StepData> steps_;
     static thread_local std::uint64_t visits_;
     double maxVisits_;                            // 0: no bound
+    bool inPathOrder_;
     std::atomic<std::uint64_t> allVisits_{0};     // every band's visits so far (with a bound)
     std::atomic<bool> over_{false};               // past the bound: the bands stop
 

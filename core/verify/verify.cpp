@@ -60,7 +60,7 @@ Report verifyPlan(const Plan& plan, const Options& options)
     double resolution = options.resolution;
     for (;;) {
         const bool last = resolution * 2.0 > kCoarsestResolution;
-        milling::Verifier v(plan, resolution, last ? 0.0 : options.maxCellVisits);
+        milling::Verifier v(plan, resolution, last ? 0.0 : options.maxCellVisits, options.inPathOrder);
         Report r = v.run(threads);
         if (v.over()) {
             resolution = std::ceil(resolution * 2.0 * 100.0 - 1e-9) / 100.0;

@@ -77,6 +77,11 @@ struct Options {
     // work of a verification is then bounded whatever the paths' step-over
     // and layer depth; 0: no bound (a resolution the operator chose).
     double maxCellVisits = 0.0;
+    // Every piece of every path cut in the path's order: the reference
+    // the faster order is held against (tests, bench_verify). By default a
+    // run of pieces going down that gouges nothing is cut from its end
+    // (verify/milling_cut.cpp), which leaves the same heights and findings.
+    bool inPathOrder = false;
 };
 
 // The bound of the verification's work when the operator chose no cell
