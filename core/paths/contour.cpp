@@ -84,18 +84,32 @@ double QuadDistance::operator()(Point2 p) const
 {
     // The rounded quad is its sharp core (sides moved in by the radius)
     // grown by the radius.
+    // Inside the core the nearest side decides; outside, the nearest
+    // point of the core's outline (measured only then).
     bool inside = true;
-    double nearestSide = 1e300, outside = 1e300;
+    double nearestSide = 1e300;
     for (std::size_t i = 0; i < 4; ++i) {
-        const Point2 a = core_[i], ab = core_[(i + 1) % 4] - a;
-        const double out = dot(p - a, out_[i]);
+        const double out = dot(p - core_[i], out_[i]);
         if (out > 0) inside = false;
         nearestSide = std::min(nearestSide, -out);
+    }
+    if (inside) return -nearestSide - rho_;
+    // The roots only of the sides nearest by their squares (within
+    // rounding), so the least is the least of all four roots.
+    std::array<Point2, 4> foot{};
+    std::array<double, 4> d2{};
+    for (std::size_t i = 0; i < 4; ++i) {
+        const Point2 a = core_[i], ab = core_[(i + 1) % 4] - a;
         const double len2 = dot(ab, ab);
         const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-        outside = std::min(outside, distance(p, a + t * ab));
+        foot[i] = a + t * ab;
+        d2[i] = dot(p - foot[i], p - foot[i]);
     }
-    return (inside ? -nearestSide : outside) - rho_;
+    const double least = *std::min_element(d2.begin(), d2.end()) * (1.0 + 1e-9);
+    double outside = 1e300;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (d2[i] <= least) outside = std::min(outside, distance(p, foot[i]));
+    return outside - rho_;
 }
 
 bool offsetExists(const Quad& outline, double d)

@@ -1,5 +1,6 @@
 // The height-field grid of the stock simulation.
 #include "sim/height_field.h"
+#include "sim/large_array.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +11,9 @@ namespace taiwa::sim {
 HeightField::HeightField(const Stock& stock, double cellSize)
     : stock_(stock), cell_(cellSize),
       nx_(std::max(1, static_cast<int>(std::ceil(stock.width / cellSize - 1e-9)))),
-      ny_(std::max(1, static_cast<int>(std::ceil(stock.length / cellSize - 1e-9)))),
-      z_(static_cast<std::size_t>(nx_) * ny_, 0.0f)
+      ny_(std::max(1, static_cast<int>(std::ceil(stock.length / cellSize - 1e-9))))
 {
+    assignLarge(z_, static_cast<std::size_t>(nx_) * ny_, 0.0f);
 }
 
 double HeightField::cellSizeFor(const Stock& stock, std::size_t maxCells, double finest)

@@ -70,7 +70,7 @@ public:
     double run()
     {
         const std::vector<sim::SweptPiece>& pieces = d_.pieces;
-        std::vector<Sweep> sweeps;
+        std::vector<Sweep>& sweeps = sweeps_;
         for (std::size_t p = 0; p < pieces.size();) {
             if (overBudget()) break;
             const sim::SweptPiece& piece = pieces[p];
@@ -176,7 +176,7 @@ private:
                     gouged_ = true;
                     return;
                 }
-                undo_.emplace_back(c, h_[c]);
+                undo_.push_back({static_cast<std::uint32_t>(c), h_[c]});
             }
             if (rapid && before - after > kTouch)
                 out_.add(FindingKind::RapidIntoStock, k_, move, "", where(after), before - after);
@@ -251,7 +251,7 @@ private:
         }
         backwards_ = false;
         if (gouged_) {
-            for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) h_[it->first] = it->second;
+            for (auto it = undo_.rbegin(); it != undo_.rend(); ++it) h_[it->cell] = it->before;
             removed_ = removedBefore;
             gouged_ = false;
             return false;
@@ -276,8 +276,26 @@ private:
     sim::SweepChain chain_;  // where the last straight sweep ended, and its height
     bool backwards_ = false;  // cutting a run backwards: a gouge stops it
     bool gouged_ = false;
-    std::vector<std::pair<std::size_t, float>> undo_;  // the cells a backwards run lowered, and their heights before
+    // The cells a backwards run lowered and their heights before, in a
+    // buffer each thread keeps from step to step (its pages are faulted in
+    // once, not at every run).
+    struct Lowered {
+        std::uint32_t cell;
+        float before;
+    };
+    static thread_local std::vector<Lowered> undo_;
+    static thread_local std::vector<Sweep> sweeps_;  // a run's sweeps, kept the same way
+    friend void releaseCutBuffers();
 };
+
+thread_local std::vector<StepCut::Lowered> StepCut::undo_;
+thread_local std::vector<Sweep> StepCut::sweeps_;
+
+void releaseCutBuffers()
+{
+    std::vector<StepCut::Lowered>().swap(StepCut::undo_);
+    std::vector<Sweep>().swap(StepCut::sweeps_);
+}
 
 // Cuts step k into the band's rows; the sum of the heights it took off.
 double Verifier::cutStep(int k, int row0, int row1, Collector& out) { return StepCut(*this, k, row0, row1, out).run(); }

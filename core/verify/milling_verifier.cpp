@@ -7,6 +7,7 @@
 #include "verify/milling_verifier.h"
 
 #include "modules/registry.h"
+#include "sim/large_array.h"
 #include "tools/holder_shape.h"
 
 #include <future>
@@ -21,10 +22,11 @@ thread_local std::uint64_t Verifier::visits_ = 0;
 
 Verifier::Verifier(const Plan& plan, double resolution, double maxVisits, bool inPathOrder)
     : plan_(plan), res_(resolution), zStep_(std::min(0.02, resolution / 5.0)), field_(plan.mmJob.stock, resolution),
-      limit_(field_.heights().size(), 0.0f), tilesPerRow_((field_.columns() + kTile - 1) / kTile),
+      tilesPerRow_((field_.columns() + kTile - 1) / kTile),
       tileTop_(static_cast<std::size_t>(tilesPerRow_) * field_.rows(), 0.0f),
       tileStale_(tileTop_.size(), 1), maxVisits_(maxVisits), inPathOrder_(inPathOrder)
 {
+    sim::assignLarge(limit_, field_.heights().size(), 0.0f);
     units_.resize(plan.mmJob.units.size());
     for (std::size_t u = 0; u < units_.size(); ++u) {
         const ModuleInput& m = plan.mmJob.units[u].module;
@@ -82,6 +84,7 @@ Report Verifier::run(unsigned threads)
     for (unsigned t = 1; t < threads; ++t) running.push_back(std::async(std::launch::async, work));
     work();
     for (auto& f : running) f.get();
+    releaseCutBuffers();
     for (double n : visits) r.cellVisits += n;
     r.removed.assign(steps_.size(), 0.0);
     for (const auto& v : removed)

@@ -25,6 +25,10 @@ constexpr double kTouch = 0.001;           // a rapid, a shank or a holder neare
 constexpr int kBandsPerThread = 8;
 constexpr int kTile = 32;  // cells of a row under one tile top
 
+// Gives back what this thread's cutting keeps from step to step (the
+// station's thread runs a band too, and lives on).
+void releaseCutBuffers();
+
 class Verifier {
     friend class StepCut;  // the cutting of one step (milling_cut.cpp)
 
