@@ -1,6 +1,7 @@
 // The lathe tape read back against the plan (verify/tape_readback.h,
-// verify/tape_reader_lathe.h): every shipped lathe sample's tape, in every
-// dialect that writes lathe tapes, mm and inch, reads back with no finding
+// verify/tape_reader_lathe.h): every shipped lathe sample's tape (and a
+// gang-tool lathe's job), in every dialect that writes lathe tapes, mm and
+// inch, reads back with no finding
 // and its G71 and G76 read as the cycles the plan has; a dialect word that
 // moves (the loader refuses it, so the dialect is built in memory) is a
 // rapid into the bar at its tape line, fatal; a cycle on the tape unlike
@@ -36,9 +37,11 @@ using namespace taiwa::test;
 
 namespace {
 
+// A shipped sample, or a test's job ("gang/lathe-gang-shaft.taiwa": a gang-tool lathe's).
 Plan planOf(const QString& sample)
 {
-    const JobReadResult read = readJobFile(sourcePath("resources/samples/" + sample).toStdString());
+    const QString path = sample.contains('/') ? dataPath(sample) : sourcePath("resources/samples/" + sample);
+    const JobReadResult read = readJobFile(path.toStdString());
     if (!read.job) return {};
     return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
 }
@@ -103,7 +106,7 @@ private slots:
         QVERIFY(samples.size() >= 10);
         const QStringList dialects = shippedDialectsWriting(DialectWrites::LatheTapes);
         QVERIFY(dialects.size() >= 4);
-        for (const QString& s : samples)
+        for (const QString& s : samples + QStringList{"gang/lathe-gang-shaft.taiwa"})
             for (const QString& d : dialects) QTest::newRow(qPrintable(s + " " + d)) << s << d;
     }
     void everyLatheSampleReadsBackInEveryDialect()
