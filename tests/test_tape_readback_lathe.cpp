@@ -137,6 +137,32 @@ private slots:
         }
     }
 
+    // The work offsets each lathe dialect writes, the extended ones too.
+    void everyWorkOffsetReadsBack_data()
+    {
+        QTest::addColumn<QString>("dialect");
+        QTest::addColumn<QString>("offset");
+        QTest::addColumn<QString>("words");
+        QTest::newRow("fanuc G54.1") << "fanuc" << "G54.1 P7" << "G54.1 P7";
+        QTest::newRow("haas G154") << "haas" << "G54.1 P7" << "G154 P7";
+        QTest::newRow("linuxcnc G59.1") << "linuxcnc" << "G59.1" << "G59.1";
+        QTest::newRow("sinumerik G505") << "sinumerik" << "G505" << "G505";
+    }
+    void everyWorkOffsetReadsBack()
+    {
+        QFETCH(QString, dialect);
+        QFETCH(QString, offset);
+        QFETCH(QString, words);
+        const Plan plan = planOf("lathe-turned-shaft.taiwa");
+        PostOptions po = postOptions(plan, dialect.toStdString());
+        po.workOffset = offset.toStdString();
+        const PostedProgram posted = postProcess(plan.steps, plan.tools, po);
+        QVERIFY(lineHolding(posted.nc, " " + words + " ") > 0);
+        verify::Report r;
+        verify::readBack(r, plan, posted, post::dialectNamed(po.dialect), po);
+        QCOMPARE(tapeFindings(r, plan), QString());
+    }
+
     // A coolant word that rapids into the bar: the finding at its line, how
     // deep inside the bar's half-section, fatal.
     void aCoolantWordIntoTheBarIsFoundAtItsLine_data()

@@ -202,7 +202,7 @@ std::optional<LatheReader::Mode> LatheReader::gCodes(const Block& b, int& cycle,
         const int n = g / 10;
         if (g % 10 != 0) {
             if (linuxcnc && g >= 591 && g <= 593) continue;
-            if (fanuc && g == 541) indexed = true;
+            if (!siemens && g == 541) indexed = true;
             else refuse(named(g) + " is not understood");
             continue;
         }
@@ -221,7 +221,7 @@ std::optional<LatheReader::Mode> LatheReader::gCodes(const Block& b, int& cycle,
         else if (!siemens && (n == 71 || n == 76)) {
             if (motion || cycle) refuse("two motion codes in one block");
             cycle = n;
-        } else if (!siemens && linuxcnc && n == 154) indexed = true;
+        } else if (!siemens && n == 154) indexed = true;
         else if (!siemens && n >= 54 && n <= 59) continue;
         else if (siemens && ((n >= 54 && n <= 57) || (n >= 505 && n <= 599))) continue;
         else refuse(named(g) + " is not understood");
