@@ -27,9 +27,9 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
     if (!o.resolution) v.maxCellVisits = verify::kDefaultCellVisits;  // a cell size the operator chose is kept
     verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
     if (!o.cache && reused) *reused = false;
-    // A milling tape is posted to be read back (verify/tape_readback.h);
-    // a lathe's only to place the findings.
-    const bool readBack = !plan.mmJob.bar;
+    // The tape is posted to be read back (verify/tape_readback.h; a
+    // two-path lathe's only to place the findings).
+    const bool readBack = verify::readsBack(plan);
     if (!report.findings.empty() || readBack) {
         try {
             const PostedProgram& posted = tape.emplace(postProcess(plan.steps, plan.tools, post));

@@ -5,8 +5,8 @@
 // be) is a finding at its tape line, fatal when it goes into stock; a word
 // the loader still lets through (a retract) makes `taiwa verify` report it
 // and `taiwa export` refuse the tape (nothing written); a tape the reader cannot follow is a
-// fatal finding at its line. Lathe jobs are not read back (the reader has
-// no G18 subset): their samples are left out here and say so.
+// fatal finding at its line. Lathe tapes are read back by their own
+// reader: tests/test_tape_readback_lathe.cpp.
 #include "support/support.h"
 
 #include "job/job_file.h"
@@ -88,7 +88,7 @@ private slots:
         const QStringList samples = QDir(sourcePath("resources/samples")).entryList({"*.taiwa"}, QDir::Files, QDir::Name);
         QVERIFY(samples.size() > 20);
         for (const QString& s : samples) {
-            if (s.startsWith("lathe-")) continue;  // not read back (tape_reader.h)
+            if (s.startsWith("lathe-")) continue;  // test_tape_readback_lathe.cpp
             for (const QString& d : shippedDialectsWriting(DialectWrites::MillingTapes))
                 QTest::newRow(qPrintable(s + " " + d)) << s << d;
         }

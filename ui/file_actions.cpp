@@ -240,9 +240,9 @@ bool FileActions::exportTo(const ExportChoice& c)
         if (c.resolution == verify::defaultResolution(*plan)) v.maxCellVisits = verify::kDefaultCellVisits;
         // The station's Verify (or a `taiwa verify`) of this very plan stored its report: not run again.
         verify::Report report = verifyPlanCached(*plan, v);
-        // The milling tape posted once and read back (verify/tape_readback.h),
-        // as `taiwa export` does; the export writes that very tape.
-        if (!plan->mmJob.bar) {
+        // The tape posted once and read back (verify/tape_readback.h), as
+        // `taiwa export` does; the export writes that very tape.
+        if (verify::readsBack(*plan)) {
             try {
                 const PostedProgram& posted = tape.emplace(postProcess(plan->steps, plan->tools, post));
                 verify::placeOnTape(report, posted);

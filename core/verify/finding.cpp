@@ -104,12 +104,12 @@ std::string describe(const Finding& f, const Plan& plan)
                                                            "at {}, over {:.3f} mm²"));
         break;
     case FindingKind::UnplannedMove: {
-        // The tape's own: X or Y may be unknown before the first move after the first tool change.
+        // The tape's own: X or Y may be unknown before the first move after the first tool change (a lathe's: X and Z).
         const auto coordinate = [&](double mm) {
             return std::isnan(mm) ? std::string("?") : fmt::format("{:.{}f}", fromMm(mm, u), digits);
         };
         const Point3& p = f.position;
-        const std::string to = "X" + coordinate(p.x) + " Y" + coordinate(p.y) + " Z" + coordinate(p.z);
+        const std::string to = "X" + coordinate(p.x) + (lathe ? "" : " Y" + coordinate(p.y)) + " Z" + coordinate(p.z);
         what = f.size > 0.0 ? fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tape has a {} the plan does not, to {}, "
                                                                               "{} into stock"),
                                           f.part, to, len(f.size))

@@ -206,10 +206,15 @@ Point3 inMm(Point3 p, double k) { return {p.x * k, p.y * k, p.z * k}; }
 
 }  // namespace
 
+// A lathe job's (tape_readback_lathe.cpp).
+void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
+                   const PostOptions& post);
+
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post)
 {
-    if (plan.mmJob.bar) return;
+    if (!readsBack(plan)) return;
+    if (plan.mmJob.bar) return readBackLathe(report, plan, program, dialect, post);
     const TapeReading tape = readTape(program.nc, dialect);
     const double k = tape.inches ? kInch : 1.0;
     Judge judge(plan, dialect, post, tape.inches);

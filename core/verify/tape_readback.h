@@ -18,6 +18,11 @@
 
 namespace taiwa::verify {
 
+// Whether the tape postProcess makes of `plan` is read back: a milling
+// job's and a one-path lathe's (a two-path lathe's programs are posted
+// apart, post/two_path_post.h, and not read back).
+bool readsBack(const Plan& plan);
+
 // The most findings of the tape's own one read-back adds (a word that moves
 // repeats at every tool change; a post's bug could repeat at every move).
 constexpr int kMaxTapeFindings = 50;
@@ -27,7 +32,10 @@ constexpr int kMaxTapeFindings = 50;
 // post used, passed in so that one not in the library can be judged). The
 // material left in the report (Report::stock) tells how deep a motion goes
 // into stock; without it (a reused report) the stock block as it was before
-// the first cut does. A lathe job is not read back (tape_reader.h).
+// the first cut does. A lathe job's tape is read by readLatheTape and held
+// against its turning steps (tape_readback_lathe.cpp); the material there
+// is the bar's half-section (Report::section, else the bar as it was).
+// Nothing is done for a job readsBack refuses.
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 

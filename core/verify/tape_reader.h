@@ -47,7 +47,8 @@
 // take that distance from a machine setting, not from the tape. What a
 // cycle does beyond this (dwells, degression, chip breaking, relative
 // depths, left-hand tapping, a lift off the wall) is refused rather than
-// guessed. Lathe tapes (G18) and probing programs are not read.
+// guessed. Lathe tapes are read by readLatheTape (below); probing programs
+// are not read.
 #pragma once
 
 #include "model/geometry.h"
@@ -60,21 +61,55 @@
 namespace taiwa::verify {
 
 // One motion of the machine, as LinuxCNC's rs274 reports it for the same
-// motion (its canonical calls), in the tape's units.
+// motion (its canonical calls), in the tape's units. On a lathe tape X is
+// the diameter the tape writes, Y is 0, an arc's centre is (X, Z) and its
+// turn as drawn with Z right and X up (G2 clockwise), the feed is per
+// revolution, and a Cycle is a control's turning cycle (TapeCycle).
 struct TapeMotion {
-    enum Kind { Traverse, Feed, Arc } kind = Traverse;
+    enum Kind { Traverse, Feed, Arc, Cycle } kind = Traverse;
     Point3 start{};     // where it began (the previous motion's end)
     Point3 end{};
-    Point2 centre{};    // arcs (XY)
+    Point2 centre{};    // arcs (XY; a lathe's (X, Z))
     int rotation = 0;   // arcs: -1 clockwise, +1 counter-clockwise, ±(1 + n) with n extra full turns
-    double feed = 0.0;  // feeds and arcs: the feed rate in force (units per minute)
+    double feed = 0.0;  // feeds and arcs: the feed rate in force (units per minute; a lathe's per revolution, a thread's lead)
+    bool synchronised = false;  // a lathe's G33 threading pass: the feed is the lead, locked to the spindle
+    int cycle = -1;     // a Cycle: its index in TapeReading::cycles
     int step = 0;       // from the last "STEP k: ..." comment, 1-based; 0 before any
     int tool = 0;       // the tool in the spindle
     int line = 0;       // the tape line (1-based) that makes it
 };
 
+// A lathe control's cycle as the tape states it, not expanded into its
+// passes (tape_reader_lathe_cycles.cpp): its words and the box its motions
+// stay within, X diameters as on the tape, in the tape's units.
+struct TapeCycle {
+    enum Kind { Roughing, Threading } kind = Roughing;
+    // Roughing (G71): the contour it roughs to, from the cycle's start:
+    // each point reached by a line (turn 0) or an arc (turn -1 G2, +1 G3,
+    // its centre (cx, cz)).
+    struct Point {
+        double x = 0.0, z = 0.0;
+        int turn = 0;
+        double cx = 0.0, cz = 0.0;
+    };
+    std::vector<Point> contour;
+    Point3 start{};             // where the tool stood when it was called (X, 0, Z)
+    double depth = 0.0;         // roughing: the depth of a pass; threading: the thread's (radius)
+    double allowanceX = 0.0;    // roughing: left across the axis (radius, negative in a bore)
+    double allowanceZ = 0.0;    // along it (NaN: not on the tape, LinuxCNC's G71)
+    double retract = 0.0;       // roughing: the lift after a pass (radius; 0 where the control's setting gives it)
+    double feed = 0.0;          // roughing: per revolution; threading: the pitch
+    double rootX = 0.0;         // threading: the root's diameter
+    double zEnd = 0.0;          // threading: where the thread ends
+    double firstDepth = 0.0;    // threading: the first pass's depth (radius)
+    double crestX = -1.0;       // threading: the crest's diameter where the tape says it (LinuxCNC), else -1
+    int springPasses = -1;      // threading: where the tape says it, else -1
+    double xLow = 0.0, xHigh = 0.0, zLow = 0.0, zHigh = 0.0;  // the box its motions stay within
+};
+
 struct TapeReading {
     std::vector<TapeMotion> motions;
+    std::vector<TapeCycle> cycles;  // a lathe tape's cycles (TapeMotion::cycle)
     bool inches = false;  // the tape's units
     int dwells = 0;       // dwell blocks
     // When the reader stops at a line it does not understand: "line 12:
@@ -85,5 +120,9 @@ struct TapeReading {
 
 // A milling tape of `dialect` (its syntax, framing, numbering and words).
 TapeReading readTape(const std::string& text, const post::Dialect& dialect);
+
+// A lathe tape of `dialect` (ISO: FANUC, Haas, LinuxCNC; SINUMERIK),
+// strict as readTape (tape_reader_lathe.h says what it accepts).
+TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect);
 
 }  // namespace taiwa::verify

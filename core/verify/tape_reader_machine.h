@@ -1,8 +1,8 @@
 // What the tape readers of tape_reader.h share: the strict reading of
 // lines, words and numbers, the refusal that names a line, and the machine
 // the readers drive (position, feed, tool, step) recording the motions as
-// rs274 reports them. Internal to core/verify (the readers: tape_reader*.h
-// and tape_reader*.cpp).
+// rs274 reports them (a lathe's arcs, threading passes and cycles too).
+// Internal to core/verify (the readers: tape_reader*.h and tape_reader*.cpp).
 #pragma once
 
 #include "verify/tape_reader.h"
@@ -161,6 +161,37 @@ public:
             refuse("the arc's end is not on its circle: radius " + show(r0) + " at the start, " + show(r1) + " at the end");
         if (r0 < tolerance) refuse("an arc of no radius");
         record(TapeMotion::Arc, to, feedRate, centre, rotation);
+    }
+
+    // A lathe's (tape_reader_lathe.h): X a diameter, the arc's centre (X, Z)
+    // and its turn with Z right and X up; the end must lie on the circle
+    // through the start (in radius, Z).
+    void latheArc(const Point3& to, Point2 centre, int rotation, double feedPerRev)
+    {
+        if (!known(at)) refuse("an arc from an unknown position");
+        if (!(feedPerRev > 0)) refuse("an arc with no feed rate in force");
+        const double r0 = std::hypot((at.x - centre.x) / 2.0, at.z - centre.y);
+        const double r1 = std::hypot((to.x - centre.x) / 2.0, to.z - centre.y);
+        const double tolerance = out.inches ? 0.0005 : 0.005;
+        if (std::abs(r0 - r1) > tolerance)
+            refuse("the arc's end is not on its circle: radius " + show(r0) + " at the start, " + show(r1) + " at the end");
+        if (r0 < tolerance) refuse("an arc of no radius");
+        record(TapeMotion::Arc, to, feedPerRev, centre, rotation);
+    }
+    // A lathe's threading pass (G33): `lead` along Z a revolution.
+    void threadTo(const Point3& to, double lead)
+    {
+        if (!known(at)) refuse("a threading pass from an unknown position");
+        if (!(lead > 0)) refuse("a threading pass with no lead");
+        record(TapeMotion::Feed, to, lead, {}, 0);
+        out.motions.back().synchronised = true;
+    }
+    // A lathe's cycle `index` (out.cycles), ending at `end` (its start).
+    void cycle(int index, const Point3& end)
+    {
+        if (!known(at)) refuse("a cycle from an unknown position");
+        record(TapeMotion::Cycle, end, 0.0, {}, 0);
+        out.motions.back().cycle = index;
     }
 
 private:
