@@ -7,6 +7,7 @@
 #include "figure/figure_text.h"
 #include "io/job_messages.h"
 #include "model/clipper_scale.h"
+#include "modules/length_fields.h"
 #include "modules/region_messages.h"
 #include "modules/self_crossing.h"
 
@@ -87,18 +88,7 @@ std::string middleRectangleFigure(const Stock& s)
            "L4 = LINE/P1, ATANGL, 270\n";
 }
 
-void convertRegionLengths(Region& region, const LengthMap& f)
-{
-    const auto scale = [&](Contour& c) {
-        for (auto& s : c.segments) {
-            s.start = {f(s.start.x), f(s.start.y)};
-            s.end = {f(s.end.x), f(s.end.y)};
-            s.centre = {f(s.centre.x), f(s.centre.y)};
-        }
-    };
-    scale(region.outer);
-    for (auto& i : region.islands) scale(i);
-}
+void convertRegionLengths(Region& region, const LengthMap& f) { convertEach(f, region); }
 
 namespace {
 
