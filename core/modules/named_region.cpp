@@ -44,6 +44,10 @@ void NamedRegion::resolve(const ContourTable& table)
     if (all) region = std::move(r);
 }
 
+namespace {
+
+// The contour names of the job file's array at `key` ("islands"); empty
+// when the key is absent.
 std::vector<std::string> readContourNames(const io::ObjectFields& f, const char* key)
 {
     std::vector<std::string> names;
@@ -61,6 +65,22 @@ std::vector<std::string> readContourNames(const io::ObjectFields& f, const char*
                     msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
     }
     return names;
+}
+
+}  // namespace
+
+NamedRegion readNamedRegion(const io::ObjectFields& f)
+{
+    NamedRegion n;
+    n.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
+    n.islands = readContourNames(f, "islands");
+    return n;
+}
+
+void writeNamedRegion(const NamedRegion& n, nlohmann::ordered_json& u)
+{
+    u["outline"] = n.outline;
+    if (!n.islands.empty()) u["islands"] = n.islands;
 }
 
 std::optional<Quad> regionBox(const std::optional<Region>& region)
