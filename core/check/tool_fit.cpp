@@ -27,6 +27,13 @@ const Tool* largestFitting(const std::vector<Tool>& library, const RoomQuery& q)
     return best;
 }
 
+Diagnostic error(int unitNo, const std::string& module, std::string field, std::string message)
+{
+    return {Severity::Error, unitNo, module, std::move(field), std::move(message)};
+}
+
+}  // namespace
+
 const Tool* smallestSuitable(const std::vector<Tool>& library, const RoomQuery& q)
 {
     const Tool* best = nullptr;
@@ -34,13 +41,6 @@ const Tool* smallestSuitable(const std::vector<Tool>& library, const RoomQuery& 
         if (suits(t, q) && (!best || t.diameter < best->diameter)) best = &t;
     return best;
 }
-
-Diagnostic error(int unitNo, const std::string& module, std::string field, std::string message)
-{
-    return {Severity::Error, unitNo, module, std::move(field), std::move(message)};
-}
-
-}  // namespace
 
 void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx,
                Diagnostics& out)

@@ -91,6 +91,10 @@ struct RoomQuery {
 // unpinned steps need the smallest suitable library tool to fit.
 void checkRoom(const RoomQuery& q, const ToolPins& pins, int unitNo, const std::string& module, const Context& ctx,
                Diagnostics& out);
+// The smallest library tool of the query's type (a taper end mill: of its
+// angle), the one checkRoom measures an unpinned step's room against;
+// null when the library has none.
+const Tool* smallestSuitable(const std::vector<Tool>& library, const RoomQuery& q);
 // Pins of a step the module does not have (`keys`, its door's stepKeys())
 // or of a tool id not in the library. Every unit's door runs it
 // (ModuleKindOf::check) before the module's own checks, which add only

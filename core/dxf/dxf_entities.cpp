@@ -26,28 +26,21 @@ public:
     }
     void addArc(const DL_ArcData& d) override
     {
-        RawEntity e = start(RawEntity::Type::Arc);
-        e.a = {d.cx, d.cy, d.cz};
+        RawEntity e = swept(RawEntity::Type::Arc, d);
         e.radius = d.radius;
-        e.angle1 = d.angle1;
-        e.angle2 = d.angle2;
         push(std::move(e));
     }
     void addCircle(const DL_CircleData& d) override
     {
-        RawEntity e = start(RawEntity::Type::Circle);
-        e.a = {d.cx, d.cy, d.cz};
+        RawEntity e = centred(RawEntity::Type::Circle, d);
         e.radius = d.radius;
         push(std::move(e));
     }
     void addEllipse(const DL_EllipseData& d) override
     {
-        RawEntity e = start(RawEntity::Type::Ellipse);
-        e.a = {d.cx, d.cy, d.cz};
+        RawEntity e = swept(RawEntity::Type::Ellipse, d);
         e.b = {d.mx, d.my, d.mz};
         e.radius = d.ratio;
-        e.angle1 = d.angle1;
-        e.angle2 = d.angle2;
         push(std::move(e));
     }
     void addPolyline(const DL_PolylineData& d) override
@@ -96,6 +89,23 @@ private:
             const double* n = x->getDirection();
             e.extrusion = {n[0], n[1], n[2]};
         }
+        return e;
+    }
+    // An entity about a centre (arc, circle, ellipse), its centre set.
+    template <class Data>
+    RawEntity centred(RawEntity::Type type, const Data& d)
+    {
+        RawEntity e = start(type);
+        e.a = {d.cx, d.cy, d.cz};
+        return e;
+    }
+    // ... and swept from angle1 to angle2 (arc, ellipse).
+    template <class Data>
+    RawEntity swept(RawEntity::Type type, const Data& d)
+    {
+        RawEntity e = centred(type, d);
+        e.angle1 = d.angle1;
+        e.angle2 = d.angle2;
         return e;
     }
     void push(RawEntity e) { entities.push_back(std::move(e)); }

@@ -16,26 +16,30 @@
 
 namespace taiwa::figure {
 
-const Element* Evaluation::find(const std::string& name) const
+namespace {
+
+// The item of that name: through the index when it covers every item, else
+// by a look along them.
+template <class T>
+const T* findNamed(const std::vector<T>& items, const std::unordered_map<std::string, std::size_t>& index,
+                   const std::string& name)
 {
-    if (elementIndex.size() == elements.size()) {
-        const auto it = elementIndex.find(name);
-        return it == elementIndex.end() ? nullptr : &elements[it->second];
+    if (index.size() == items.size()) {
+        const auto it = index.find(name);
+        return it == index.end() ? nullptr : &items[it->second];
     }
-    for (const auto& e : elements)
-        if (e.name == name) return &e;
+    for (const auto& item : items)
+        if (item.name == name) return &item;
     return nullptr;
 }
 
+}  // namespace
+
+const Element* Evaluation::find(const std::string& name) const { return findNamed(elements, elementIndex, name); }
+
 const EvaluatedContour* Evaluation::findContour(const std::string& name) const
 {
-    if (contourIndex.size() == contours.size()) {
-        const auto it = contourIndex.find(name);
-        return it == contourIndex.end() ? nullptr : &contours[it->second];
-    }
-    for (const auto& c : contours)
-        if (c.name == name) return &c;
-    return nullptr;
+    return findNamed(contours, contourIndex, name);
 }
 
 namespace {

@@ -57,17 +57,9 @@ void Parser::line(Definition& d)
         d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the distance)"), TAIWA_TRANSLATE_NOOP("taiwa::msg", "the distance")));
     } else if (const auto m = atModifier(); m && (*m == Modifier::Left || *m == Modifier::Right)) {
         d.method = Method::LineTwoCircles;  // LINE/LEFT, TANTO, C1, RIGHT, TANTO, C2
-        d.modifiers.push_back(leftRight());
+        tangentCircle(d);
         comma();
-        word("TANTO");
-        comma();
-        d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
-        comma();
-        d.modifiers.push_back(leftRight());
-        comma();
-        word("TANTO");
-        comma();
-        d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
+        tangentCircle(d);
     } else if (atName()) {
         d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
         comma();
@@ -78,11 +70,7 @@ void Parser::line(Definition& d)
             d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the angle in degrees)")));
         } else if (atModifier()) {  // LINE/P1, LEFT, TANTO, C1
             d.method = Method::LinePointTangent;
-            d.modifiers.push_back(leftRight());
-            comma();
-            word("TANTO");
-            comma();
-            d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
+            tangentCircle(d);
         } else if (atName()) {  // LINE/P1, P2
             d.method = Method::LineTwoPoints;
             d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
@@ -92,6 +80,15 @@ void Parser::line(Definition& d)
     } else {
         expected(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name, PARLEL, LEFT or RIGHT"));
     }
+}
+
+void Parser::tangentCircle(Definition& d)
+{
+    d.modifiers.push_back(leftRight());
+    comma();
+    word("TANTO");
+    comma();
+    d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
 }
 
 void Parser::circle(Definition& d)

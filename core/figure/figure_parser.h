@@ -21,12 +21,15 @@
 
 namespace taiwa::figure::text {
 
+// Each modifier by its word (keyword(Modifier)'s, read back).
 inline const std::map<std::string, Modifier, std::less<>>& modifierWords()
 {
-    static const std::map<std::string, Modifier, std::less<>> m{
-        {"XLARGE", Modifier::XLarge}, {"XSMALL", Modifier::XSmall}, {"YLARGE", Modifier::YLarge},
-        {"YSMALL", Modifier::YSmall}, {"LEFT", Modifier::Left},     {"RIGHT", Modifier::Right},
-        {"OUT", Modifier::Out},       {"IN", Modifier::In}};
+    static const auto m = [] {
+        std::map<std::string, Modifier, std::less<>> words;
+        for (int i = 0; i <= static_cast<int>(Modifier::In); ++i)
+            words.emplace(keyword(static_cast<Modifier>(i)), static_cast<Modifier>(i));
+        return words;
+    }();
     return m;
 }
 
@@ -260,6 +263,8 @@ private:
     void point(Definition& d);
 
     void line(Definition& d);
+    // LEFT|RIGHT, TANTO, C1: the side of a tangent line and the circle it touches.
+    void tangentCircle(Definition& d);
 
     void circle(Definition& d);
 

@@ -42,42 +42,43 @@ Kind kindOf(Method m)
     throw std::logic_error("figure: unknown method");
 }
 
-const char* keyword(Kind k)
+namespace {
+
+// Each kind's keyword and noun, in the order of Kind.
+struct KindWords {
+    const char* keyword;
+    const char* noun;
+};
+constexpr std::array<KindWords, 4> kKindWords{{
+    {"POINT", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point")},
+    {"LINE", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line")},
+    {"CIRCLE", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle")},
+    {"CONTOUR", TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour")},
+}};
+static_assert(kKindWords.size() == static_cast<std::size_t>(Kind::Contour) + 1, "a word for every kind");
+
+// The modifiers' words, in the order of Modifier; the parser reads them
+// back through this table (text::modifierWords).
+constexpr std::array<const char*, 8> kModifierWords{"XLARGE", "XSMALL", "YLARGE", "YSMALL",
+                                                    "LEFT",   "RIGHT",  "OUT",    "IN"};
+static_assert(kModifierWords.size() == static_cast<std::size_t>(Modifier::In) + 1, "a word for every modifier");
+
+// The entry of `value` in a table in the enumeration's order.
+template <class Table, class Enum>
+const auto& entryOf(const Table& table, Enum value, const char* what)
 {
-    switch (k) {
-    case Kind::Point: return "POINT";
-    case Kind::Line: return "LINE";
-    case Kind::Circle: return "CIRCLE";
-    case Kind::Contour: return "CONTOUR";
-    }
-    throw std::logic_error("figure: unknown kind");
+    const auto i = static_cast<std::size_t>(value);
+    if (i >= table.size()) throw std::logic_error(std::string("figure: unknown ") + what);
+    return table[i];
 }
 
-const char* noun(Kind k)
-{
-    switch (k) {
-    case Kind::Point: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point");
-    case Kind::Line: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line");
-    case Kind::Circle: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle");
-    case Kind::Contour: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour");
-    }
-    throw std::logic_error("figure: unknown kind");
-}
+}  // namespace
 
-const char* keyword(Modifier m)
-{
-    switch (m) {
-    case Modifier::XLarge: return "XLARGE";
-    case Modifier::XSmall: return "XSMALL";
-    case Modifier::YLarge: return "YLARGE";
-    case Modifier::YSmall: return "YSMALL";
-    case Modifier::Left: return "LEFT";
-    case Modifier::Right: return "RIGHT";
-    case Modifier::Out: return "OUT";
-    case Modifier::In: return "IN";
-    }
-    throw std::logic_error("figure: unknown modifier");
-}
+const char* keyword(Kind k) { return entryOf(kKindWords, k, "kind").keyword; }
+
+const char* noun(Kind k) { return entryOf(kKindWords, k, "kind").noun; }
+
+const char* keyword(Modifier m) { return entryOf(kModifierWords, m, "modifier"); }
 
 std::string FigureError::text() const
 {

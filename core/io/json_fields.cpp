@@ -59,17 +59,41 @@ std::optional<int> ObjectFields::wholeValue(const json& v, const std::string& fi
     return std::nullopt;
 }
 
+namespace {
+
+// How one value is read and refused (ObjectFields::numberValue, wholeValue, point).
+template <class T>
+using ValueReader = std::optional<T> (ObjectFields::*)(const json&, const std::string&) const;
+
+// A required field's value, read by `read`; missing: refused as not `what`,
+// and nothing.
+template <class T>
+std::optional<T> required(const ObjectFields& o, const char* key, const char* what, ValueReader<T> read)
+{
+    if (const json* v = o.find(key)) return (o.*read)(*v, key);
+    o.error(key, msg::io::missing(what));
+    return std::nullopt;
+}
+
+// A field that may be missing, read by `read`: `fallback` when it is
+// missing or refused.
+template <class T>
+T orFallback(const ObjectFields& o, const char* key, T fallback, ValueReader<T> read)
+{
+    const json* v = o.find(key);
+    return v ? (o.*read)(*v, key).value_or(fallback) : fallback;
+}
+
+}  // namespace
+
 std::optional<double> ObjectFields::number(const char* key) const
 {
-    if (const json* v = find(key)) return numberValue(*v, key);
-    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number")));
-    return std::nullopt;
+    return required<double>(*this, key, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number"), &ObjectFields::numberValue);
 }
 
 double ObjectFields::number(const char* key, double fallback) const
 {
-    const json* v = find(key);
-    return v ? numberValue(*v, key).value_or(fallback) : fallback;
+    return orFallback<double>(*this, key, fallback, &ObjectFields::numberValue);
 }
 
 std::optional<double> ObjectFields::optionalNumber(const char* key) const
@@ -80,15 +104,12 @@ std::optional<double> ObjectFields::optionalNumber(const char* key) const
 
 std::optional<int> ObjectFields::whole(const char* key) const
 {
-    if (const json* v = find(key)) return wholeValue(*v, key);
-    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number")));
-    return std::nullopt;
+    return required<int>(*this, key, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a whole number"), &ObjectFields::wholeValue);
 }
 
 int ObjectFields::whole(const char* key, int fallback) const
 {
-    const json* v = find(key);
-    return v ? wholeValue(*v, key).value_or(fallback) : fallback;
+    return orFallback<int>(*this, key, fallback, &ObjectFields::wholeValue);
 }
 
 std::optional<std::string> ObjectFields::string(const char* key) const
@@ -136,9 +157,7 @@ std::optional<Point2> ObjectFields::point(const json& v, const std::string& fiel
 
 std::optional<Point2> ObjectFields::point(const char* key) const
 {
-    if (const json* v = find(key)) return point(*v, key);
-    error(key, msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]")));
-    return std::nullopt;
+    return required<Point2>(*this, key, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]"), &ObjectFields::point);
 }
 
 std::map<std::string, int> ObjectFields::wholeMap(const char* key) const

@@ -173,51 +173,64 @@ std::string readFigure(const ObjectFields& job)
     return text;
 }
 
+// A job-level object read by `read` into T's defaults, its unknown keys
+// refused as fields of `owner`; absent (or not an object): the defaults.
+template <class T, class Read>
+T readSection(const ObjectFields& job, const char* key, const char* owner, const std::vector<std::string>& known,
+              Read read)
+{
+    T t{};
+    if (const auto f = io::objectAt(job, key)) {
+        f->rejectUnknown(owner, known);
+        read(*f, t);
+    }
+    return t;
+}
+
 // "clamping": {"fixture": "vice", "grip": "y", "height": 10}; absent: not given.
 std::optional<Clamping> readClamping(const ObjectFields& job)
 {
-    const auto f = io::objectAt(job, "clamping");
-    if (!f) return std::nullopt;
-    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys);
-    f->choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
-    Clamping c;
-    c.grip = f->choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
-    c.height = f->number("height").value_or(0.0);
-    return c;
+    return readSection<std::optional<Clamping>>(
+        job, "clamping", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the clamping"), kClampingKeys,
+        [](const ObjectFields& f, std::optional<Clamping>& clamping) {
+            f.choice("fixture", {"vice"});  // the one fixture so far; the key leaves room for others
+            Clamping& c = clamping.emplace();
+            c.grip = f.choice("grip", {"x", "y"}).value_or(1) == 0 ? Clamping::Grip::X : Clamping::Grip::Y;
+            c.height = f.number("height").value_or(0.0);
+        });
 }
 
 // The two-path settings (version 6); absent: the defaults. Their ranges
 // (the dwell, the wait code against the machine's) are the job check's.
 TwoPathSettings readTwoPath(const ObjectFields& job)
 {
-    TwoPathSettings t;
-    const auto f = io::objectAt(job, "twoPath");
-    if (!f) return t;
-    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys);
-    t.dwellRevolutions = f->number("dwellRevolutions", t.dwellRevolutions);
-    if (const json* w = f->find("waitsEverywhere")) {
-        if (w->is_boolean())
-            t.waitsEverywhere = w->get<bool>();
-        else
-            f->error("waitsEverywhere", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "true or false"), *w));
-    }
-    if (f->find("firstWait")) t.firstWait = f->whole("firstWait");
-    return t;
+    return readSection<TwoPathSettings>(
+        job, "twoPath", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the two-path settings"), kTwoPathKeys,
+        [](const ObjectFields& f, TwoPathSettings& t) {
+            t.dwellRevolutions = f.number("dwellRevolutions", t.dwellRevolutions);
+            if (const json* w = f.find("waitsEverywhere")) {
+                if (w->is_boolean())
+                    t.waitsEverywhere = w->get<bool>();
+                else
+                    f.error("waitsEverywhere",
+                            msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "true or false"), *w));
+            }
+            if (f.find("firstWait")) t.firstWait = f.whole("firstWait");
+        });
 }
 
 TechnologyOverrides readTechnology(const ObjectFields& job)
 {
-    TechnologyOverrides t;
-    const auto f = io::objectAt(job, "technology");
-    if (!f) return t;
-    f->rejectUnknown(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys);
-    t.alpha1 = f->optionalNumber("alpha1");
-    t.alpha2 = f->optionalNumber("alpha2");
-    t.alpha3 = f->optionalNumber("alpha3");
-    t.beta2 = f->optionalNumber("beta2");
-    t.gamma = f->optionalNumber("gamma");
-    t.stepOver = f->optionalNumber("stepOver");
-    return t;
+    return readSection<TechnologyOverrides>(
+        job, "technology", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the technology overrides"), kTechnologyKeys,
+        [](const ObjectFields& f, TechnologyOverrides& t) {
+            t.alpha1 = f.optionalNumber("alpha1");
+            t.alpha2 = f.optionalNumber("alpha2");
+            t.alpha3 = f.optionalNumber("alpha3");
+            t.beta2 = f.optionalNumber("beta2");
+            t.gamma = f.optionalNumber("gamma");
+            t.stepOver = f.optionalNumber("stepOver");
+        });
 }
 
 // A problem at a path of the document, reported where it is: in a unit

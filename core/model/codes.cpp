@@ -1,66 +1,74 @@
-// Code tables U, F, H: conversion from the typed number and their meaning.
+// Code tables U, F, H: conversion from the typed number and their meaning,
+// each table's codes and texts in one list.
 #include "model/codes.h"
+
+#include <array>
 
 namespace taiwa {
 
-std::optional<ToolUse> toolUseFromCode(int code)
+namespace {
+
+// One code of a table and what it means.
+template <class Code>
+struct CodeRow {
+    Code code;
+    std::string_view meaning;
+};
+
+constexpr std::array<CodeRow<ToolUse>, 5> kToolUses{{
+    {ToolUse::Standard, "roughing, floor finishing and wall finishing"},
+    {ToolUse::NoWallFinish, "roughing and floor finishing, walls left as roughed"},
+    {ToolUse::Cored, "floor and wall finishing of a pocket already cored"},
+    {ToolUse::WallOnly, "wall finishing only"},
+    {ToolUse::RoughOnly, "roughing only"},
+}};
+
+constexpr std::array<CodeRow<WallFinish>, 3> kWallFinishes{{
+    {WallFinish::SingleIncision, "walls finished to full depth in one incision"},
+    {WallFinish::MultiIncision, "walls finished in several Z incisions down to the floor"},
+    {WallFinish::TwoStage, "walls semi-finished leaving alpha3, then finished"},
+}};
+
+constexpr std::array<CodeRow<PilotHole>, 2> kPilotHoles{{
+    {PilotHole::Drill, "drill a pilot hole first"},
+    {PilotHole::None, "no pilot hole, the roughing tool ramps in"},
+}};
+
+// The table's row of the typed number, or of the named code; null when it has none.
+template <class Code, std::size_t N>
+const CodeRow<Code>* rowOf(const std::array<CodeRow<Code>, N>& table, int code)
 {
-    switch (code) {
-    case 1: return ToolUse::Standard;
-    case 6: return ToolUse::NoWallFinish;
-    case 7: return ToolUse::Cored;
-    case 8: return ToolUse::WallOnly;
-    case 9: return ToolUse::RoughOnly;
-    default: return std::nullopt;
-    }
+    for (const auto& row : table)
+        if (static_cast<int>(row.code) == code) return &row;
+    return nullptr;
 }
 
-std::optional<WallFinish> wallFinishFromCode(int code)
+template <class Code, std::size_t N>
+std::optional<Code> fromCode(const std::array<CodeRow<Code>, N>& table, int code)
 {
-    if (code >= 1 && code <= 3) return static_cast<WallFinish>(code);
-    return std::nullopt;
+    const auto* row = rowOf(table, code);
+    return row ? std::optional<Code>(row->code) : std::nullopt;
 }
 
-std::optional<PilotHole> pilotHoleFromCode(int code)
+template <class Code, std::size_t N>
+std::string_view meaningOf(const std::array<CodeRow<Code>, N>& table, Code code)
 {
-    if (code == 0) return PilotHole::Drill;
-    if (code == 9) return PilotHole::None;
-    return std::nullopt;
+    const auto* row = rowOf(table, static_cast<int>(code));
+    return row ? row->meaning : "";
 }
+
+}  // namespace
+
+std::optional<ToolUse> toolUseFromCode(int code) { return fromCode(kToolUses, code); }
+std::optional<WallFinish> wallFinishFromCode(int code) { return fromCode(kWallFinishes, code); }
+std::optional<PilotHole> pilotHoleFromCode(int code) { return fromCode(kPilotHoles, code); }
 
 bool hasRoughing(ToolUse u) { return u != ToolUse::Cored && u != ToolUse::WallOnly; }
 bool hasFloorFinishing(ToolUse u) { return u != ToolUse::WallOnly && u != ToolUse::RoughOnly; }
 bool hasWallFinishing(ToolUse u) { return u != ToolUse::NoWallFinish && u != ToolUse::RoughOnly; }
 
-std::string_view meaning(ToolUse u)
-{
-    switch (u) {
-    case ToolUse::Standard: return "roughing, floor finishing and wall finishing";
-    case ToolUse::NoWallFinish: return "roughing and floor finishing, walls left as roughed";
-    case ToolUse::Cored: return "floor and wall finishing of a pocket already cored";
-    case ToolUse::WallOnly: return "wall finishing only";
-    case ToolUse::RoughOnly: return "roughing only";
-    }
-    return "";
-}
-
-std::string_view meaning(WallFinish f)
-{
-    switch (f) {
-    case WallFinish::SingleIncision: return "walls finished to full depth in one incision";
-    case WallFinish::MultiIncision: return "walls finished in several Z incisions down to the floor";
-    case WallFinish::TwoStage: return "walls semi-finished leaving alpha3, then finished";
-    }
-    return "";
-}
-
-std::string_view meaning(PilotHole h)
-{
-    switch (h) {
-    case PilotHole::Drill: return "drill a pilot hole first";
-    case PilotHole::None: return "no pilot hole, the roughing tool ramps in";
-    }
-    return "";
-}
+std::string_view meaning(ToolUse u) { return meaningOf(kToolUses, u); }
+std::string_view meaning(WallFinish f) { return meaningOf(kWallFinishes, f); }
+std::string_view meaning(PilotHole h) { return meaningOf(kPilotHoles, h); }
 
 }  // namespace taiwa

@@ -7,60 +7,58 @@
 
 namespace taiwa {
 
+namespace {
+
+// Each step kind's name (lists, the sheet) and key (steps.json, tool pins).
+struct StepKindWords {
+    StepKind kind;
+    const char* name;
+    const char* key;
+};
+constexpr std::array<StepKindWords, 21> kStepKinds{{
+    {StepKind::PilotHole, TAIWA_TRANSLATE_NOOP("taiwa::msg", "pilot hole"), "pilot"},
+    {StepKind::Roughing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing"), "roughing"},
+    {StepKind::FloorFinishing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "floor finishing"), "floor"},
+    {StepKind::WallFinishing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "wall finishing"), "wall"},
+    {StepKind::InclinedFaceFinishing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "inclined-face finishing"), "inclined"},
+    {StepKind::Facing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "facing"), "facing"},
+    {StepKind::CentreDrilling, TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drilling"), "centre-drill"},
+    {StepKind::Drilling, TAIWA_TRANSLATE_NOOP("taiwa::msg", "drilling"), "drill"},
+    {StepKind::TurnRoughing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing"), "turn-rough"},
+    {StepKind::Grooving, TAIWA_TRANSLATE_NOOP("taiwa::msg", "grooving"), "groove"},
+    {StepKind::TurnFinishing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "finishing"), "turn-finish"},
+    {StepKind::Threading, TAIWA_TRANSLATE_NOOP("taiwa::msg", "threading"), "thread"},
+    {StepKind::Parting, TAIWA_TRANSLATE_NOOP("taiwa::msg", "parting off"), "part"},
+    {StepKind::Tapping, TAIWA_TRANSLATE_NOOP("taiwa::msg", "tapping"), "tap"},
+    {StepKind::Reaming, TAIWA_TRANSLATE_NOOP("taiwa::msg", "reaming"), "ream"},
+    {StepKind::Boring, TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring"), "bore"},
+    {StepKind::FaceMilling, TAIWA_TRANSLATE_NOOP("taiwa::msg", "face milling"), "face"},
+    {StepKind::SideMilling, TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling"), "side"},
+    {StepKind::AreaClearing, TAIWA_TRANSLATE_NOOP("taiwa::msg", "area clearing"), "area"},
+    {StepKind::SurfaceRoughing, "surface roughing", "surface-rough"},
+    {StepKind::SurfaceFinishing, "surface finishing", "surface-finish"},
+}};
+static_assert(kStepKinds.size() == static_cast<std::size_t>(StepKind::SurfaceFinishing) + 1, "words for every step kind");
+
+const StepKindWords* wordsOf(StepKind k)
+{
+    for (const auto& w : kStepKinds)
+        if (w.kind == k) return &w;
+    return nullptr;
+}
+
+}  // namespace
+
 const char* toString(StepKind k)
 {
-    switch (k) {
-    case StepKind::PilotHole: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "pilot hole");
-    case StepKind::Roughing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing");
-    case StepKind::FloorFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "floor finishing");
-    case StepKind::WallFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "wall finishing");
-    case StepKind::InclinedFaceFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "inclined-face finishing");
-    case StepKind::Facing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "facing");
-    case StepKind::CentreDrilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "centre drilling");
-    case StepKind::Drilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "drilling");
-    case StepKind::TurnRoughing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "roughing");
-    case StepKind::Grooving: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "grooving");
-    case StepKind::TurnFinishing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "finishing");
-    case StepKind::Threading: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "threading");
-    case StepKind::Parting: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "parting off");
-    case StepKind::Tapping: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "tapping");
-    case StepKind::Reaming: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "reaming");
-    case StepKind::Boring: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "boring");
-    case StepKind::FaceMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "face milling");
-    case StepKind::SideMilling: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "side milling");
-    case StepKind::AreaClearing: return TAIWA_TRANSLATE_NOOP("taiwa::msg", "area clearing");
-    case StepKind::SurfaceRoughing: return "surface roughing";
-    case StepKind::SurfaceFinishing: return "surface finishing";
-    }
-    return "";
+    const auto* w = wordsOf(k);
+    return w ? w->name : "";
 }
 
 const char* toKey(StepKind k)
 {
-    switch (k) {
-    case StepKind::PilotHole: return "pilot";
-    case StepKind::Roughing: return "roughing";
-    case StepKind::FloorFinishing: return "floor";
-    case StepKind::WallFinishing: return "wall";
-    case StepKind::InclinedFaceFinishing: return "inclined";
-    case StepKind::Facing: return "facing";
-    case StepKind::CentreDrilling: return "centre-drill";
-    case StepKind::Drilling: return "drill";
-    case StepKind::TurnRoughing: return "turn-rough";
-    case StepKind::Grooving: return "groove";
-    case StepKind::TurnFinishing: return "turn-finish";
-    case StepKind::Threading: return "thread";
-    case StepKind::Parting: return "part";
-    case StepKind::Tapping: return "tap";
-    case StepKind::Reaming: return "ream";
-    case StepKind::Boring: return "bore";
-    case StepKind::FaceMilling: return "face";
-    case StepKind::SideMilling: return "side";
-    case StepKind::AreaClearing: return "area";
-    case StepKind::SurfaceRoughing: return "surface-rough";
-    case StepKind::SurfaceFinishing: return "surface-finish";
-    }
-    return "";
+    const auto* w = wordsOf(k);
+    return w ? w->key : "";
 }
 
 namespace {

@@ -35,6 +35,16 @@ constexpr std::array<std::pair<GrooveKind, const char*>, 5> kGrooveKinds{{{Groov
                                                                           {GrooveKind::Ring, "ring"}}};
 constexpr std::array<std::pair<ProfileSide, const char*>, 2> kSides{
     {{ProfileSide::Outer, "outer"}, {ProfileSide::Inner, "inner"}}};
+constexpr std::array<std::pair<Joint, const char*>, 6> kJoints{{{Joint::FreeEnd, "free end"},
+                                                                {Joint::UpTo90, "0-90"},
+                                                                {Joint::Obtuse, "90-180"},
+                                                                {Joint::Tangent, "180"},
+                                                                {Joint::Concave, "above 180"},
+                                                                {Joint::BothSet, "both ground"}}};
+constexpr std::array<std::pair<Origin, const char*>, 4> kOrigins{
+    {{Origin::Original, "original"}, {Origin::Moved, "moved"}, {Origin::Side, "side"}, {Origin::Groove, "groove"}}};
+static_assert(kJoints.size() == static_cast<std::size_t>(Joint::BothSet) + 1, "a key for every joint");
+static_assert(kOrigins.size() == static_cast<std::size_t>(Origin::Groove) + 1, "a key for every origin");
 
 }  // namespace
 
@@ -50,28 +60,7 @@ std::optional<CornerKind> cornerKindFromKey(const std::string& s) { return fromK
 std::optional<GrooveKind> grooveKindFromKey(const std::string& s) { return fromKey(kGrooveKinds, s); }
 std::optional<ProfileSide> profileSideFromKey(const std::string& s) { return fromKey(kSides, s); }
 
-const char* toKey(Joint j)
-{
-    switch (j) {
-    case Joint::FreeEnd: return "free end";
-    case Joint::UpTo90: return "0-90";
-    case Joint::Obtuse: return "90-180";
-    case Joint::Tangent: return "180";
-    case Joint::Concave: return "above 180";
-    case Joint::BothSet: return "both ground";
-    }
-    return "";
-}
-
-const char* toKey(Origin o)
-{
-    switch (o) {
-    case Origin::Original: return "original";
-    case Origin::Moved: return "moved";
-    case Origin::Side: return "side";
-    case Origin::Groove: return "groove";
-    }
-    return "";
-}
+const char* toKey(Joint j) { return toKeyIn(kJoints, j); }
+const char* toKey(Origin o) { return toKeyIn(kOrigins, o); }
 
 }  // namespace taiwa::turning

@@ -7,6 +7,7 @@
 #include "figure/figure_text.h"
 #include "io/job_messages.h"
 #include "model/clipper_scale.h"
+#include "modules/length_fields.h"
 #include "modules/region_messages.h"
 #include "modules/self_crossing.h"
 
@@ -43,6 +44,10 @@ void NamedRegion::resolve(const ContourTable& table)
     if (all) region = std::move(r);
 }
 
+namespace {
+
+// The contour names of the job file's array at `key` ("islands"); empty
+// when the key is absent.
 std::vector<std::string> readContourNames(const io::ObjectFields& f, const char* key)
 {
     std::vector<std::string> names;
@@ -60,6 +65,22 @@ std::vector<std::string> readContourNames(const io::ObjectFields& f, const char*
                     msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a contour name"), v));
     }
     return names;
+}
+
+}  // namespace
+
+NamedRegion readNamedRegion(const io::ObjectFields& f)
+{
+    NamedRegion n;
+    n.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
+    n.islands = readContourNames(f, "islands");
+    return n;
+}
+
+void writeNamedRegion(const NamedRegion& n, nlohmann::ordered_json& u)
+{
+    u["outline"] = n.outline;
+    if (!n.islands.empty()) u["islands"] = n.islands;
 }
 
 std::optional<Quad> regionBox(const std::optional<Region>& region)
@@ -87,18 +108,7 @@ std::string middleRectangleFigure(const Stock& s)
            "L4 = LINE/P1, ATANGL, 270\n";
 }
 
-void convertRegionLengths(Region& region, const LengthMap& f)
-{
-    const auto scale = [&](Contour& c) {
-        for (auto& s : c.segments) {
-            s.start = {f(s.start.x), f(s.start.y)};
-            s.end = {f(s.end.x), f(s.end.y)};
-            s.centre = {f(s.centre.x), f(s.centre.y)};
-        }
-    };
-    scale(region.outer);
-    for (auto& i : region.islands) scale(i);
-}
+void convertRegionLengths(Region& region, const LengthMap& f) { convertEach(f, region); }
 
 namespace {
 

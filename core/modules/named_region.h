@@ -1,6 +1,6 @@
 // An area of a contour unit given by names of the job's figure: a closed
 // outline and the closed islands in it (CP's pocket, AREA's area). Reading
-// the island names from the job file, resolving the names against the
+// the names from the job file and writing them, resolving them against the
 // evaluated figure, checking the contours (known, closed, not crossing
 // themselves, inside the stock, islands inside the outline and apart,
 // optionally no sharp inside corner), the resolved outline's box and
@@ -48,10 +48,13 @@ constexpr std::size_t kMaxRegionIslands = 100;
 // True when `region` is within both.
 bool regionWithinLimits(const Region& region);
 
-// The contour names of the job file's array at `key` ("islands"); a value
-// that is not an array, or an item that is not a name, is reported on its
-// field ("islands", "islands[2]"). Empty when the key is absent.
-std::vector<std::string> readContourNames(const io::ObjectFields& f, const char* key);
+// The names of a unit's "outline" and "islands" in the job file, not yet
+// resolved; an islands value that is not an array, or an item that is not
+// a name, is reported on its field ("islands", "islands[2]"), and no
+// islands key is none.
+NamedRegion readNamedRegion(const io::ObjectFields& f);
+// ... written: "outline", then "islands" when there are any.
+void writeNamedRegion(const NamedRegion& n, nlohmann::ordered_json& u);
 
 // A resolved region's outline as a unit's door gives it: the box around it
 // (topOutline) and the outline flattened to 1 µm (topPolygon); nothing

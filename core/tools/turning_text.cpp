@@ -3,16 +3,38 @@
 
 #include <nlohmann/json.hpp>
 
+#include <type_traits>
+
 namespace taiwa {
+
+namespace {
+
+// Each field of the column: its JSON key and the spec's member, for writing
+// and reading alike (Spec: TurningSpec, const or not).
+template <class Spec, class Visit>
+void eachField(Spec& t, Visit&& visit)
+{
+    visit("insertCode", t.insertCode);
+    visit("approachAngle", t.approachAngle);
+    visit("hand", t.hand);
+    visit("inside", t.inside);
+    visit("minBore", t.minBore);
+    visit("width", t.width);
+    visit("maxDepth", t.maxDepth);
+    visit("maxDiameter", t.maxDiameter);
+    visit("pitchMin", t.pitchMin);
+    visit("pitchMax", t.pitchMax);
+    visit("threadAngle", t.threadAngle);
+}
+
+}  // namespace
 
 std::string turningText(const TurningSpec& t)
 {
     if (t.empty()) return "";
-    return nlohmann::json{{"insertCode", t.insertCode}, {"approachAngle", t.approachAngle}, {"hand", t.hand},
-                          {"inside", t.inside},         {"minBore", t.minBore},             {"width", t.width},
-                          {"maxDepth", t.maxDepth},     {"maxDiameter", t.maxDiameter},     {"pitchMin", t.pitchMin},
-                          {"pitchMax", t.pitchMax},     {"threadAngle", t.threadAngle}}
-        .dump();
+    nlohmann::json j = nlohmann::json::object();  // its keys sorted, as the column has always held them
+    eachField(t, [&](const char* key, const auto& value) { j[key] = value; });
+    return j.dump();
 }
 
 std::optional<TurningSpec> turningFrom(const std::string& text)
@@ -22,17 +44,8 @@ std::optional<TurningSpec> turningFrom(const std::string& text)
     const auto j = nlohmann::json::parse(text, nullptr, false);
     if (!j.is_object()) return std::nullopt;
     try {
-        t.insertCode = j.value("insertCode", "");
-        t.approachAngle = j.value("approachAngle", 0.0);
-        t.hand = j.value("hand", "");
-        t.inside = j.value("inside", false);
-        t.minBore = j.value("minBore", 0.0);
-        t.width = j.value("width", 0.0);
-        t.maxDepth = j.value("maxDepth", 0.0);
-        t.maxDiameter = j.value("maxDiameter", 0.0);
-        t.pitchMin = j.value("pitchMin", 0.0);
-        t.pitchMax = j.value("pitchMax", 0.0);
-        t.threadAngle = j.value("threadAngle", 0.0);
+        // A missing key: the member's zero ("", 0, false).
+        eachField(t, [&](const char* key, auto& value) { value = j.value(key, std::decay_t<decltype(value)>{}); });
     } catch (const nlohmann::json::exception&) {
         return std::nullopt;
     }

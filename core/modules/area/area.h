@@ -13,6 +13,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "modules/length_fields.h"
 #include "modules/named_region.h"
 #include "paths/cl.h"
 
@@ -47,10 +48,7 @@ struct AreaClearing {
 
     void convertLengths(const LengthMap& f)
     {
-        for (Point2& p : points) p = {f(p.x), f(p.y)};
-        depth = f(depth);
-        diameter = f(diameter);
-        if (area.region) convertRegionLengths(*area.region, f);
+        convertEach(f, points, depth, diameter, area.region);
     }
     friend bool operator==(const AreaClearing&, const AreaClearing&) = default;
 };

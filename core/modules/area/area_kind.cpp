@@ -127,8 +127,7 @@ protected:
     {
         AreaClearing m;
         f.rejectUnknown("module AREA", kKeys);
-        m.area.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
-        m.area.islands = readContourNames(f, "islands");
+        m.area = readNamedRegion(f);
         if (const nlohmann::json* points = f.find("points")) {
             const auto isPoint = [](const nlohmann::json& v) {
                 return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
@@ -154,8 +153,7 @@ protected:
 
     void writeInput(const AreaClearing& m, nlohmann::ordered_json& u) const override
     {
-        u["outline"] = m.area.outline;
-        if (!m.area.islands.empty()) u["islands"] = m.area.islands;
+        writeNamedRegion(m.area, u);
         auto points = nlohmann::ordered_json::array();
         for (const Point2 p : m.points) points.push_back({io::number(p.x), io::number(p.y)});
         u["points"] = points;

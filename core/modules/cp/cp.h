@@ -11,6 +11,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "modules/length_fields.h"
 #include "modules/named_region.h"
 
 #include <optional>
@@ -40,10 +41,7 @@ struct ContourPocket {
 
     void convertLengths(const LengthMap& f)
     {
-        depth = f(depth);
-        reach = f(reach);
-        inscribed = f(inscribed);
-        if (contours.region) convertRegionLengths(*contours.region, f);
+        convertEach(f, depth, reach, inscribed, contours.region);
     }
     friend bool operator==(const ContourPocket&, const ContourPocket&) = default;
 };

@@ -43,15 +43,6 @@ bool checkCodes(const ContourPocket& p, Reporter& r)
     return checkWallFinishCode(p.wallFinish, r) && ok;
 }
 
-// The smallest tool the room checks measure against (check::checkRoom's).
-const Tool* smallestFlat(const std::vector<Tool>& library)
-{
-    const Tool* best = nullptr;
-    for (const Tool& t : library)
-        if (t.type == ToolType::FlatEndMill && (!best || t.diameter < best->diameter)) best = &t;
-    return best;
-}
-
 // The refusal of a room too small for the smallest end mill, at the place
 // that makes it so, on the field of its contour. `allowance`: what the
 // step leaves on the walls (α2, α3 or 0), the tool's radius plus it must
@@ -112,7 +103,7 @@ void checkRoomAt(const check::RoomQuery& q, const ContourPocket& p, Reporter& r)
                     return e.unit == r.unitNo && (e.field == "outline" || e.field == "islands");
                 }))
                 continue;
-            const Tool* tool = smallestFlat(*r.ctx.library);
+            const Tool* tool = check::smallestSuitable(*r.ctx.library, q);
             const auto place = p.contours.region ? paths::narrowestPlace(*p.contours.region) : std::nullopt;
             if (tool && place) d = narrowPlace(p, *place, *tool, q.cornerRadius - q.available, r);
             else d.field = "outline";

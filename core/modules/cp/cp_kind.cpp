@@ -97,8 +97,7 @@ protected:
     {
         ContourPocket m;
         f.rejectUnknown("module CP", kKeys);
-        m.contours.outline = f.string(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline")).value_or("");
-        m.contours.islands = readContourNames(f, "islands");
+        m.contours = readNamedRegion(f);
         m.depth = f.number("depth").value_or(0.0);
         m.toolUse = f.whole("U", 1);
         m.wallFinish = f.whole("F", 1);
@@ -109,8 +108,7 @@ protected:
 
     void writeInput(const ContourPocket& m, nlohmann::ordered_json& u) const override
     {
-        u["outline"] = m.contours.outline;
-        if (!m.contours.islands.empty()) u["islands"] = m.contours.islands;
+        writeNamedRegion(m.contours, u);
         u["depth"] = io::number(m.depth);
         u["U"] = m.toolUse;
         u["F"] = m.wallFinish;

@@ -13,6 +13,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "modules/length_fields.h"
 #include "paths/cl.h"
 
 #include <optional>
@@ -35,9 +36,7 @@ struct FaceUnit {
 
     void convertLengths(const LengthMap& f)
     {
-        depth = f(depth);
-        if (finish) finish = f(*finish);
-        margin = f(margin);
+        convertEach(f, depth, finish, margin);
     }
     friend bool operator==(const FaceUnit&, const FaceUnit&) = default;
 };

@@ -13,6 +13,7 @@
 #include "model/job.h"
 #include "model/step.h"
 #include "model/tool.h"
+#include "modules/length_fields.h"
 #include "paths/cl.h"
 
 #include <optional>
@@ -43,13 +44,7 @@ struct HolePattern {
 
     void convertLengths(const LengthMap& f)
     {
-        x = f(x);
-        y = f(y);
-        pitch = f(pitch);
-        pitchY = f(pitchY);
-        radius = f(radius);
-        diameter = f(diameter);
-        depth = f(depth);
+        convertEach(f, x, y, pitch, pitchY, radius, diameter, depth);
     }
     friend bool operator==(const HolePattern&, const HolePattern&) = default;
 };

@@ -9,6 +9,7 @@
 #include "model/module.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "modules/length_fields.h"
 #include "modules/pocket_tools.h"
 
 #include <optional>
@@ -36,12 +37,7 @@ struct M2DPocket {
 
     void convertLengths(const LengthMap& f)
     {
-        corner = {f(corner.x), f(corner.y)};
-        lengthX = f(lengthX);
-        lengthY = f(lengthY);
-        depth = f(depth);
-        cornerRadius = f(cornerRadius);
-        scallop = f(scallop);
+        convertEach(f, corner, lengthX, lengthY, depth, cornerRadius, scallop);
     }
     friend bool operator==(const M2DPocket&, const M2DPocket&) = default;
 };

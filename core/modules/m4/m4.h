@@ -9,6 +9,7 @@
 #include "model/module.h"
 #include "model/step.h"
 #include "model/technology.h"
+#include "modules/length_fields.h"
 
 #include <array>
 #include <vector>
@@ -30,9 +31,7 @@ struct M4Pocket {
 
     void convertLengths(const LengthMap& f)
     {
-        for (auto& c : corners) c = {f(c.x), f(c.y)};
-        cornerRadius = f(cornerRadius);
-        depth = f(depth);
+        convertEach(f, corners, cornerRadius, depth);
     }
     friend bool operator==(const M4Pocket&, const M4Pocket&) = default;
 };

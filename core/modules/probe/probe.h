@@ -9,6 +9,7 @@
 
 #include "model/geometry.h"
 #include "model/module.h"
+#include "modules/length_fields.h"
 
 #include <array>
 #include <optional>
@@ -41,19 +42,7 @@ struct ProbeUnit {
 
     void convertLengths(const LengthMap& f)
     {
-        for (auto& v : x)
-            if (v) v = f(*v);
-        for (auto& v : y)
-            if (v) v = f(*v);
-        origin = {f(origin.x), f(origin.y)};
-        if (top) top = f(*top);
-        tolerance = f(tolerance);
-        sizeX = f(sizeX);
-        sizeY = f(sizeY);
-        touchDepth = f(touchDepth);
-        clearance = f(clearance);
-        search = f(search);
-        feed = f(feed);
+        convertEach(f, x, y, origin, top, tolerance, sizeX, sizeY, touchDepth, clearance, search, feed);
     }
     friend bool operator==(const ProbeUnit&, const ProbeUnit&) = default;
 };

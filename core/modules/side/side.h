@@ -15,6 +15,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "modules/length_fields.h"
 #include "paths/cl.h"
 
 #include <cstdint>
@@ -52,15 +53,7 @@ struct SideMill {
 
     void convertLengths(const LengthMap& f)
     {
-        depth = f(depth);
-        width = f(width);
-        reach = f(reach);
-        if (!path) return;
-        for (auto& s : path->segments) {
-            s.start = {f(s.start.x), f(s.start.y)};
-            s.end = {f(s.end.x), f(s.end.y)};
-            s.centre = {f(s.centre.x), f(s.centre.y)};
-        }
+        convertEach(f, depth, width, reach, path);
     }
     friend bool operator==(const SideMill&, const SideMill&) = default;
 };

@@ -102,9 +102,7 @@ check::UnitReport checkSideMill(const SideMill& m, int unitNo, const check::Cont
         // No end mill fits: said of the arc (or neck) that limits it, on the
         // contour, SIDE having no corner radius of its own.
         if (d.field == "cornerRadius") {
-            const Tool* smallest = nullptr;
-            for (const Tool& tool : *ctx.library)
-                if (tool.type == ToolType::FlatEndMill && (!smallest || tool.diameter < smallest->diameter)) smallest = &tool;
+            const Tool* smallest = check::smallestSuitable(*ctx.library, q);
             d.field = "contour";
             if (smallest)
                 if (std::string at = side::noRoomAt(m, *smallest, q.cornerRadius - q.available, ctx.shownUnit); !at.empty())

@@ -18,6 +18,7 @@
 #include "model/step.h"
 #include "model/technology.h"
 #include "model/tool.h"
+#include "modules/length_fields.h"
 #include "model/toolpath.h"
 #include "paths/cl.h"
 
@@ -79,18 +80,11 @@ struct SurfaceUnit {
 
     void convertLengths(const LengthMap& f)
     {
-        const auto c3 = [&](Point3& p) { p = {f(p.x), f(p.y), f(p.z)}; };
         for (SurfaceCurve* c : {&curve1, &curve2}) {
-            for (Point3& p : c->points) c3(p);
-            for (SurfaceProjection& pr : c->projections)
-                for (Point2& p : pr.points) p = {f(p.x), f(p.y)};
+            convertEach(f, c->points);
+            for (SurfaceProjection& pr : c->projections) convertEach(f, pr.points);
         }
-        if (curveStep) curveStep = f(*curveStep);
-        scallop = f(scallop);
-        allowance = f(allowance);
-        for (auto* paths : {&boundary, &surface})
-            for (auto& path : *paths)
-                for (Point3& p : path) c3(p);
+        convertEach(f, curveStep, scallop, allowance, boundary, surface);
     }
     friend bool operator==(const SurfaceUnit&, const SurfaceUnit&) = default;
 };
