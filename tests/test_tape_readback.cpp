@@ -7,6 +7,7 @@
 // and `taiwa export` refuse the tape (nothing written); a tape the reader cannot follow is a
 // fatal finding at its line. Lathe tapes are read back by their own
 // reader: tests/test_tape_readback_lathe.cpp.
+#include "support/readback.h"
 #include "support/support.h"
 
 #include "job/job_file.h"
@@ -33,22 +34,6 @@ using namespace taiwa::test;
 
 namespace {
 
-Plan planOf(const QString& sample)
-{
-    const JobReadResult read = readJobFile(sourcePath("resources/samples/" + sample).toStdString());
-    if (!read.job) return {};
-    return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
-}
-
-// The findings of the tape's own, in words.
-QString tapeFindings(const verify::Report& r, const Plan& plan)
-{
-    QString s;
-    for (const auto& f : r.findings)
-        if (f.kind == verify::FindingKind::UnplannedMove || f.kind == verify::FindingKind::UnreadTape)
-            s += QString::fromStdString(verify::describe(f, plan)) + "\n";
-    return s;
-}
 
 // The tape `hostile` writes for the plan: the linuxcnc tape with its
 // coolantOn word in place of "M8" (the writer writes the word as a block
@@ -199,24 +184,10 @@ private slots:
     void exportRefusesATapeWhoseWordGoesIntoStock()
     {
         QTemporaryDir home;
-        const QString folder = home.filePath("taiwa/dialects");
-        QVERIFY(QDir().mkpath(folder));
-        std::string linuxcnc = readFile(sourcePath("resources/dialects/linuxcnc.json"));
-        const auto name = linuxcnc.find("\"name\": \"linuxcnc\"");
-        QVERIFY(name != std::string::npos);
-        linuxcnc.replace(name, 18, "\"name\": \"sinking\"");
-        const auto retract = linuxcnc.find("\"retract\": [\"G53 G0 Z0\"]");
-        QVERIFY(retract != std::string::npos);
-        linuxcnc.replace(retract, 24, "\"retract\": [\"G53 G0 Z0\", \"G0 Z-50\"]");
-        writeFile(folder + "/sinking.json", linuxcnc);
-        const QStringList env{"XDG_CONFIG_HOME=" + home.path(), "TAIWA_CACHE_DIR=" + home.filePath("cache")};
         // m4-standard.taiwa posted in that dialect (`taiwa verify` takes the job's).
-        std::string text = readFile(sourcePath("resources/samples/m4-standard.taiwa"));
-        const auto offset = text.find("\"workOffset\": \"G54\",");
-        QVERIFY(offset != std::string::npos);
-        text.insert(offset, "\"dialect\": \"sinking\",\n  ");
-        const QString job = home.filePath("sinking.taiwa");
-        writeFile(job, text);
+        const auto [job, env] = shopDialectJob(home, "sinking", "\"retract\": [\"G53 G0 Z0\"]",
+                                               "\"retract\": [\"G53 G0 Z0\", \"G0 Z-50\"]", "m4-standard.taiwa");
+        QVERIFY(!job.isEmpty());
 
         const RunResult v = runTaiwa({"verify", job, "--resolution", "1", "--json"}, env);
         QCOMPARE(v.exitCode, 3);

@@ -9,6 +9,7 @@
 // named; a shop dialect whose program end the reader cannot follow (M99)
 // makes `taiwa export` of a lathe job write nothing. Two-path lathes'
 // programs are posted apart and not read back: their samples say so.
+#include "support/readback.h"
 #include "support/support.h"
 
 #include "job/job_file.h"
@@ -36,24 +37,6 @@ using namespace taiwa;
 using namespace taiwa::test;
 
 namespace {
-
-// A shipped sample, or a test's job ("gang/lathe-gang-shaft.taiwa": a gang-tool lathe's).
-Plan planOf(const QString& sample)
-{
-    const QString path = sample.contains('/') ? dataPath(sample) : sourcePath("resources/samples/" + sample);
-    const JobReadResult read = readJobFile(path.toStdString());
-    if (!read.job) return {};
-    return planJob(*read.job, TechnologyTable::builtIn(), defaultToolLibrary());
-}
-
-QString tapeFindings(const verify::Report& r, const Plan& plan)
-{
-    QString s;
-    for (const auto& f : r.findings)
-        if (f.kind == verify::FindingKind::UnplannedMove || f.kind == verify::FindingKind::UnreadTape)
-            s += QString::fromStdString(verify::describe(f, plan)) + "\n";
-    return s;
-}
 
 // Each line whose words (after its N number) are `from` with `to` in their place.
 std::string replaced(const std::string& tape, const QString& from, const QString& to)
@@ -303,24 +286,10 @@ private slots:
     void exportRefusesALatheTapeItCannotReadBack()
     {
         QTemporaryDir home;
-        const QString folder = home.filePath("taiwa/dialects");
-        QVERIFY(QDir().mkpath(folder));
-        std::string linuxcnc = readFile(sourcePath("resources/dialects/linuxcnc.json"));
-        const auto name = linuxcnc.find("\"name\": \"linuxcnc\"");
-        QVERIFY(name != std::string::npos);
-        linuxcnc.replace(name, 18, "\"name\": \"looping\"");
-        const auto end = linuxcnc.find("\"programEnd\": \"M30\"");
-        QVERIFY(end != std::string::npos);
-        linuxcnc.replace(end, 19, "\"programEnd\": \"M99\"");
-        writeFile(folder + "/looping.json", linuxcnc);
-        const QStringList env{"XDG_CONFIG_HOME=" + home.path(), "TAIWA_CACHE_DIR=" + home.filePath("cache")};
         // lathe-turned-shaft.taiwa posted in that dialect (`taiwa verify` takes the job's).
-        std::string text = readFile(sourcePath("resources/samples/lathe-turned-shaft.taiwa"));
-        const auto offset = text.find("\"workOffset\": \"G54\",");
-        QVERIFY(offset != std::string::npos);
-        text.insert(offset, "\"dialect\": \"looping\",\n  ");
-        const QString job = home.filePath("looping.taiwa");
-        writeFile(job, text);
+        const auto [job, env] = shopDialectJob(home, "looping", "\"programEnd\": \"M30\"", "\"programEnd\": \"M99\"",
+                                               "lathe-turned-shaft.taiwa");
+        QVERIFY(!job.isEmpty());
 
         const RunResult v = runTaiwa({"verify", job, "--json"}, env);
         QCOMPARE(v.exitCode, 3);

@@ -246,13 +246,17 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
         report.findings.push_back(f);
         ++added;
     }
-    if (!tape.error.empty()) {
-        Finding f;
-        f.kind = FindingKind::UnreadTape;
-        f.line = tape.errorLine;
-        f.part = tape.error;
-        report.findings.push_back(f);
-    }
+    addUnreadTape(report, tape);
+}
+
+void addUnreadTape(Report& report, const TapeReading& tape)
+{
+    if (tape.error.empty()) return;
+    Finding f;
+    f.kind = FindingKind::UnreadTape;
+    f.line = tape.errorLine;
+    f.part = tape.error;
+    report.findings.push_back(f);
 }
 
 }  // namespace taiwa::verify

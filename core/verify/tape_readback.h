@@ -18,6 +18,8 @@
 
 namespace taiwa::verify {
 
+struct TapeReading;  // tape_reader.h
+
 // Whether the tape postProcess makes of `plan` is read back: a milling
 // job's and a one-path lathe's (a two-path lathe's programs are posted
 // apart, post/two_path_post.h, and not read back).
@@ -38,5 +40,9 @@ constexpr int kMaxTapeFindings = 50;
 // Nothing is done for a job readsBack refuses.
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
+
+// The reading's "unread tape" finding, where the reader stopped (none when
+// it read the tape through): the milling and the lathe read-back end so.
+void addUnreadTape(Report& report, const TapeReading& tape);
 
 }  // namespace taiwa::verify

@@ -288,13 +288,7 @@ void readBackLathe(Report& report, const Plan& plan, const PostedProgram& progra
         report.findings.push_back(f);
         ++added;
     }
-    if (!tape.error.empty()) {
-        Finding f;
-        f.kind = FindingKind::UnreadTape;
-        f.line = tape.errorLine;
-        f.part = tape.error;
-        report.findings.push_back(f);
-    }
+    addUnreadTape(report, tape);
 }
 
 }  // namespace taiwa::verify

@@ -37,8 +37,6 @@ private:
         bool has(char c) const { return v.count(c) != 0; }
     };
 
-    // Takes the comments out of `s` (passing them on) and returns the rest.
-    std::string withoutComments(const std::string& s);
     Block words(const std::vector<std::string>& tokens);
     void line(const std::string& raw);
 
@@ -62,7 +60,6 @@ private:
     void drill(const Block& b, const Point3& hole);
 
     bool sinumerik_;
-    bool framed_;          // '%' lines lead and end the tape
     bool numbered_;        // an "O1000" program number line
     bool points_;          // lengths and feeds must carry a decimal point
     bool offsetNeeded_;    // a Z move after M6 waits for the length offset
@@ -73,11 +70,9 @@ private:
     Mode mode_ = Mode::None;
     bool incremental_ = false;
     bool g98_ = false;
-    bool ended_ = false;
     bool lengthOffset_ = true;  // false from a tool change to its G43 H / D
     bool dInForce_ = false;     // SINUMERIK: a D (1 or more) in force, no D0 since
     bool programNumber_ = false;
-    int percents_ = 0;
     int selected_ = 0;
     std::optional<double> cycleZ_, cycleR_, cycleQ_;
     std::optional<SinumerikCycle> mcall_;

@@ -93,7 +93,7 @@ void IsoReader::words(const Block& b, const GCodes& c)
             m_.tool = selected_;
             lengthOffset_ = !offsetNeeded_;
         } else if (mf == 30) {
-            ended_ = true;
+            m_.ended = true;
         } else if (mf == 29 && !sinumerik_) {
             if (!b.has('S')) refuse("M29 (rigid tapping) needs the speed in S");
         } else if (mf == 97 || mf == 98 || mf == 99 || mf == 198) {

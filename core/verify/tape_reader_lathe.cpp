@@ -14,57 +14,20 @@ namespace tape {
 
 LatheReader::LatheReader(const post::Dialect& d)
     : family_(d.syntax == post::Syntax::Sinumerik ? Family::Siemens : d.macroSyntax == "fanuc" ? Family::Fanuc : Family::LinuxCnc),
-      oneBlock_(d.oneBlockRoughingCycle), framed_(family_ != Family::Siemens && d.percentFraming),
+      oneBlock_(d.oneBlockRoughingCycle),
       numbered_(family_ != Family::Siemens && !d.programNumberLine.empty()),
       points_(family_ != Family::Siemens && d.decimalPointAlways), diameter_(family_ == Family::Fanuc)
 {
+    m_.framed = family_ != Family::Siemens && d.percentFraming;
 }
 
 TapeReading LatheReader::read(const std::string& text)
 {
-    const auto lines = splitLines(text);
-    try {
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            m_.line = static_cast<int>(i) + 1;
-            line(lines[i]);
-        }
-        m_.line = static_cast<int>(lines.size());
+    return m_.readLines(text, [&](const std::string& raw) { line(raw); }, [&](const std::vector<std::string>& lines) {
         if (inSub_ >= 0) refuse("o" + std::to_string(inSub_) + " sub is never closed by its endsub");
         if (pending_) refuse("G71's contour blocks N" + std::to_string(pendingFrom_) + " to N" + std::to_string(pendingTo_) + " never end");
-        if (!ended_) refuse("the program does not end with M30");
-        if (framed_ && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
-            refuse("the dialect's tape begins and ends with a '%' line");
-    } catch (const Unread& r) {
-        m_.out.error = lineError(m_.line, r, lines);
-        m_.out.errorLine = m_.line;
-    }
-    return std::move(m_.out);
-}
-
-std::string LatheReader::withoutComments(const std::string& s)
-{
-    if (family_ == Family::Siemens) {
-        const auto semicolon = s.find(';');
-        if (semicolon != std::string::npos) m_.comment(s.substr(semicolon + 1));
-        return s.substr(0, semicolon);
-    }
-    std::string rest;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] == ')') refuse("')' with no '(' before it");
-        if (s[i] == ';') refuse("';': this dialect's comments are in parentheses");
-        if (s[i] != '(') {
-            rest += s[i];
-            continue;
-        }
-        const auto close = s.find(')', i);
-        if (close == std::string::npos) refuse("a comment with no ')'");
-        const std::string inside = s.substr(i + 1, close - i - 1);
-        if (inside.find('(') != std::string::npos) refuse("a nested comment");
-        m_.comment(inside);
-        rest += ' ';
-        i = close;
-    }
-    return rest;
+        m_.endOfTape(lines);
+    });
 }
 
 LatheReader::Block LatheReader::words(const std::string& s)
@@ -85,43 +48,9 @@ LatheReader::Block LatheReader::words(const std::string& s)
             (cr ? b.cr : b.lims) = *value;
             continue;
         }
+        if (codeWord(t, k, b.g, b.m, &b.n)) continue;
+        if (!letterWord(t, siemens ? "XZKFSTD" : "XZIKFSTDPQUWRHJA", "STH", b)) continue;
         const char letter = t[0];
-        const std::string_view number = std::string_view(t).substr(1);
-        if (letter == 'N') {
-            const auto n = whole(number);
-            if (k != 0 || !n) refuse("'" + t + "': a sequence number only at the start of a block");
-            b.n = *n;
-            continue;
-        }
-        if (letter == 'M') {
-            const auto n = whole(number);
-            if (!n) refuse("'" + t + "' is not understood");
-            b.m.push_back(*n);
-            continue;
-        }
-        if (letter == 'G') {
-            const auto dot = number.find('.');
-            const auto n = whole(number.substr(0, dot));
-            const auto tenth = dot == std::string_view::npos ? std::optional<int>(0) : whole(number.substr(dot + 1));
-            if (!n || !tenth || *tenth > 9 || (dot != std::string_view::npos && number.size() != dot + 2))
-                refuse("'" + t + "' is not understood");
-            b.g.push_back(*n * 10 + *tenth);
-            continue;
-        }
-        const std::string letters = siemens ? "XZKFSTD" : "XZIKFSTDPQUWRHJA";
-        if (letters.find(letter) == std::string::npos || number.empty()) refuse("'" + t + "' is not understood");
-        if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
-        if (letter == 'S' || letter == 'T' || letter == 'H') {
-            const auto n = whole(number);
-            if (!n) refuse("'" + t + "' is not understood (a whole number expected)");
-            b.v[letter] = *n;
-            continue;
-        }
-        // A negative number only where a length or an increment may be.
-        const auto value = decimal(number, false);
-        if (!value) refuse("'" + t + "' is not understood");
-        b.v[letter] = *value;
-        b.point[letter] = number.find('.') != std::string_view::npos;
         // A FANUC or a Haas reads a length without a point in least increments.
         if (points_ && std::string_view("XZIKUWRFD").find(letter) != std::string_view::npos && !b.point[letter])
             refuse("'" + t + "' without a decimal point (this control reads it in least increments)");
@@ -132,15 +61,8 @@ LatheReader::Block LatheReader::words(const std::string& s)
 void LatheReader::line(const std::string& raw)
 {
     if (raw.find_first_of("\r\t") != std::string::npos) refuse("a carriage return or tab");
-    const std::string s = trim(withoutComments(raw));
-    if (s.empty()) return;
-    if (framed_ && s == "%") {
-        if (++percents_ > 2) refuse("a third '%' line");
-        return;
-    }
-    if (percents_ == 2) refuse("text after the closing '%'");
-    if (framed_ && percents_ == 0) refuse("a block before the leading '%'");
-    if (ended_) refuse("a block after M30");
+    const std::string s = trim(m_.withoutComments(raw, family_ == Family::Siemens));
+    if (s.empty() || m_.framingLine(s)) return;
     const auto tokens = splitWords(s);
     // LinuxCNC's contour subroutines: defined, not run.
     if (family_ == Family::LinuxCnc && tokens[0][0] == 'o') {
@@ -267,7 +189,7 @@ void LatheReader::otherWords(const Block& b)
             if (selected_ == 0) refuse("M6 with no tool selected");
             m_.tool = selected_;
         } else if (mf == 30) {
-            ended_ = true;
+            m_.ended = true;
         } else if (mf == 97 || mf == 98 || mf == 99 || mf == 198) {
             refuse("M" + std::to_string(mf) + " calls or leaves a subprogram, whose motion is not on the tape");
         }

@@ -62,7 +62,6 @@ private:
     enum class Family { Fanuc, LinuxCnc, Siemens };
     enum class Mode { None, Rapid, Feed, Clockwise, CounterClockwise, Thread };
 
-    std::string withoutComments(const std::string& s);
     Block words(const std::string& s);
     void line(const std::string& raw);
     void block(const Block& b);
@@ -83,11 +82,10 @@ private:
 
     Family family_;
     bool oneBlock_;        // Haas: G71 and G76 in one block
-    bool framed_, numbered_, points_;
+    bool numbered_, points_;
     Machine m_;
     Mode mode_ = Mode::None;
-    bool ended_ = false, programNumber_ = false;
-    int percents_ = 0;
+    bool programNumber_ = false;
     bool plane_ = false;       // G18 stated
     bool diameter_ = false;    // G7 / DIAMON (FANUC, Haas: always)
     bool perRevolution_ = false;

@@ -120,6 +120,59 @@ inline bool known(const Point3& p) { return !std::isnan(p.x) && !std::isnan(p.y)
 
 // The machine the readers drive: the position, feed, tool and step, and the
 // moves as rs274 would report them.
+// The words both ISO readers take alike: a sequence number (N, first in its
+// block; its value in `n` when asked), an M word and a G word (in tenths:
+// G59.1 is 591). False when `t` is none of them.
+inline bool codeWord(const std::string& t, std::size_t k, std::vector<int>& g, std::vector<int>& m, int* n = nullptr)
+{
+    const char letter = t[0];
+    const std::string_view number = std::string_view(t).substr(1);
+    if (letter == 'N') {
+        const auto value = whole(number);
+        if (k != 0 || !value) refuse("'" + t + "': a sequence number only at the start of a block");
+        if (n) *n = *value;
+        return true;
+    }
+    if (letter == 'M') {
+        const auto value = whole(number);
+        if (!value) refuse("'" + t + "' is not understood");
+        m.push_back(*value);
+        return true;
+    }
+    if (letter != 'G') return false;
+    const auto dot = number.find('.');
+    const auto value = whole(number.substr(0, dot));
+    const auto tenth = dot == std::string_view::npos ? std::optional<int>(0) : whole(number.substr(dot + 1));
+    if (!value || !tenth || *tenth > 9 || (dot != std::string_view::npos && number.size() != dot + 2))
+        refuse("'" + t + "' is not understood");
+    g.push_back(*value * 10 + *tenth);
+    return true;
+}
+
+// A letter word of `letters`, once a block, into b.v: a whole number for
+// the letters of `wholes`, else a decimal, b.point saying whether it was
+// written with its point. True for a decimal (the caller then holds it to
+// its dialect's points), false for a whole number.
+template <class Block>
+bool letterWord(const std::string& t, std::string_view letters, std::string_view wholes, Block& b)
+{
+    const char letter = t[0];
+    const std::string_view number = std::string_view(t).substr(1);
+    if (letters.find(letter) == std::string_view::npos || number.empty()) refuse("'" + t + "' is not understood");
+    if (b.has(letter)) refuse(std::string("two ") + letter + " words in one block");
+    if (wholes.find(letter) != std::string_view::npos) {
+        const auto n = whole(number);
+        if (!n) refuse("'" + t + "' is not understood (a whole number expected)");
+        b.v[letter] = *n;
+        return false;
+    }
+    const auto value = decimal(number, false);
+    if (!value) refuse("'" + t + "' is not understood");
+    b.v[letter] = *value;
+    b.point[letter] = number.find('.') != std::string_view::npos;
+    return true;
+}
+
 class Machine {
 public:
     TapeReading out;
@@ -129,6 +182,33 @@ public:
     int step = 0;
     int line = 0;
     bool unitsStated = false;
+    // An ISO tape's framing: '%' lines lead and end it (`framed`), how many
+    // were read, and whether M30 was.
+    bool framed = false;
+    bool ended = false;
+    int percents = 0;
+
+    // Whether the line `s` (its comments out, trimmed, not empty) is a '%'
+    // line of the framing; one out of place, text after the closing one, a
+    // block before the leading one or after M30 is refused.
+    bool framingLine(const std::string& s)
+    {
+        if (framed && s == "%") {
+            if (++percents > 2) refuse("a third '%' line");
+            return true;
+        }
+        if (percents == 2) refuse("text after the closing '%'");
+        if (framed && percents == 0) refuse("a block before the leading '%'");
+        if (ended) refuse("a block after M30");
+        return false;
+    }
+    // At the tape's end: it ended with M30, and is framed as its dialect frames it.
+    void endOfTape(const std::vector<std::string>& lines) const
+    {
+        if (!ended) refuse("the program does not end with M30");
+        if (framed && (lines.empty() || lines.front() != "%" || lines.back() != "%"))
+            refuse("the dialect's tape begins and ends with a '%' line");
+    }
 
     void units(bool inches)
     {
@@ -141,6 +221,54 @@ public:
         static const std::regex stepComment(R"(^\s*STEP (\d+):)", std::regex::icase);
         std::smatch m;
         if (std::regex_search(text, m, stepComment)) step = std::stoi(m[1].str());
+    }
+    // A line without its comments, each handed to comment(): after ';' on
+    // SINUMERIK (`semicolon`; parentheses there belong to CYCLE81(...)
+    // only: "(text)" is no SINUMERIK comment), else in parentheses, closed,
+    // not nested, and no ';'.
+    std::string withoutComments(const std::string& s, bool semicolon)
+    {
+        if (semicolon) {
+            const auto semicolonAt = s.find(';');
+            if (semicolonAt != std::string::npos) comment(s.substr(semicolonAt + 1));
+            return s.substr(0, semicolonAt);
+        }
+        std::string rest;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            if (s[i] == ')') refuse("')' with no '(' before it");
+            if (s[i] == ';') refuse("';': this dialect's comments are in parentheses");
+            if (s[i] != '(') {
+                rest += s[i];
+                continue;
+            }
+            const auto close = s.find(')', i);
+            if (close == std::string::npos) refuse("a comment with no ')'");
+            const std::string inside = s.substr(i + 1, close - i - 1);
+            if (inside.find('(') != std::string::npos) refuse("a nested comment");
+            comment(inside);
+            rest += ' ';
+            i = close;
+        }
+        return rest;
+    }
+    // An ISO tape read line by line through eachLine(raw), then end(lines)
+    // at its end; the first refusal stops the reading, its line named.
+    template <class EachLine, class End>
+    TapeReading readLines(const std::string& text, EachLine&& eachLine, End&& end)
+    {
+        const auto lines = splitLines(text);
+        try {
+            for (std::size_t i = 0; i < lines.size(); ++i) {
+                line = static_cast<int>(i) + 1;
+                eachLine(lines[i]);
+            }
+            line = static_cast<int>(lines.size());
+            end(lines);
+        } catch (const Unread& r) {
+            out.error = lineError(line, r, lines);
+            out.errorLine = line;
+        }
+        return std::move(out);
     }
     void traverse(const Point3& to) { record(TapeMotion::Traverse, to, 0.0, {}, 0); }
     void feedTo(const Point3& to, double feedRate)
