@@ -72,6 +72,7 @@ private:
     void move(const Block& b);
 
     // The cycles (tape_reader_lathe_cycles.cpp).
+    TapeCycle cycleHere(TapeCycle::Kind kind, const char* word) const;
     void roughing(const Block& b);
     void threading(const Block& b);
     // The contour of a G71 from its start through `blocks`, into `c`.

@@ -26,6 +26,17 @@ void onlyWords(const LatheReader::Block& b, const std::string& need, const std::
 
 }  // namespace
 
+// A cycle of `kind` from where the tool stands (`word` names it when that
+// is not known yet).
+TapeCycle LatheReader::cycleHere(TapeCycle::Kind kind, const char* word) const
+{
+    if (!known(m_.at)) refuse(std::string(word) + " from an unknown position");
+    TapeCycle c;
+    c.kind = kind;
+    c.start = m_.at;
+    return c;
+}
+
 // G71: LinuxCNC's "G71 Q<n> X Z D I R F" (the contour in o<n>, D the
 // allowance, I the depth of a pass, R the lift), FANUC's "G71 U R" (the
 // depth, the lift) then "G71 P Q U W F", Haas's "G71 P Q U W D F" (D the
@@ -33,10 +44,7 @@ void onlyWords(const LatheReader::Block& b, const std::string& need, const std::
 void LatheReader::roughing(const Block& b)
 {
     if (!plane_ || !diameter_ || !perRevolution_) refuse("G71 before G18, diameter mode and feed per revolution");
-    if (!known(m_.at)) refuse("G71 from an unknown position");
-    TapeCycle c;
-    c.kind = TapeCycle::Roughing;
-    c.start = m_.at;
+    TapeCycle c = cycleHere(TapeCycle::Roughing, "G71");
     if (family_ == Family::LinuxCnc) {
         onlyWords(b, "QXZDIRF", "", "G71");
         const auto q = b.v.at('Q');
@@ -123,10 +131,7 @@ void LatheReader::contour(TapeCycle& c, const std::vector<Block>& blocks) const
 void LatheReader::threading(const Block& b)
 {
     if (!plane_ || !diameter_) refuse("G76 before G18 and diameter mode");
-    if (!known(m_.at)) refuse("G76 from an unknown position");
-    TapeCycle c;
-    c.kind = TapeCycle::Threading;
-    c.start = m_.at;
+    TapeCycle c = cycleHere(TapeCycle::Threading, "G76");
     if (family_ == Family::LinuxCnc) {
         onlyWords(b, "PZIJK", "RQH", "G76");
         c.feed = b.v.at('P');
