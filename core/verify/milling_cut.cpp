@@ -83,7 +83,7 @@ public:
             std::size_t q = p;
             bool down = false;
             for (; q < pieces.size() && mayGoBackwards(pieces[q]); ++q) down |= pieces[q].to.z < pieces[q].from.z;
-            if (down && !v_.inPathOrder_) {
+            if (down) {
                 sweeps.clear();
                 for (std::size_t r = p; r < q; ++r) sweepsOf(pieces[r], v_.zStep_, sweeps);
                 if (backwards(sweeps)) {
@@ -218,9 +218,10 @@ private:
     // every sweep leaves, so the order of such pieces changes no height,
     // only the work; what it would change is which move a gouge is laid to
     // (backwards() gives up on one).
+    // (Never with Options::inPathOrder.)
     bool mayGoBackwards(const sim::SweptPiece& piece) const
     {
-        return !piece.rapid && piece.to.z <= piece.from.z && piece.to.z < 0.0 && piece.to.z + d_.flute >= -kTouch;
+        return !v_.inPathOrder_ && !piece.rapid && piece.to.z <= piece.from.z && piece.to.z < 0.0 && piece.to.z + d_.flute >= -kTouch;
     }
 
     // A run of pieces going down cut last sweep first, each straight sweep

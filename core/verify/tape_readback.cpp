@@ -206,10 +206,6 @@ Point3 inMm(Point3 p, double k) { return {p.x * k, p.y * k, p.z * k}; }
 
 }  // namespace
 
-// A lathe job's (tape_readback_lathe.cpp).
-void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
-                   const PostOptions& post);
-
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post)
 {

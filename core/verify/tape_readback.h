@@ -41,6 +41,10 @@ constexpr int kMaxTapeFindings = 50;
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 
+// readBack of a lathe job (tape_readback_lathe.cpp), which readBack calls.
+void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
+                   const PostOptions& post);
+
 // The reading's "unread tape" finding, where the reader stopped (none when
 // it read the tape through): the milling and the lathe read-back end so.
 void addUnreadTape(Report& report, const TapeReading& tape);
