@@ -141,7 +141,7 @@ private slots:
         QVERIFY2(e.ok(), messages(e.diagnostics).c_str());
         QCOMPARE(e.steps.size(), std::size_t{3});
         QCOMPARE(e.steps[0].cutDepth, 6.75);
-        QCOMPARE(e.steps[0].tool->reason, std::string("pinned by the operator"));
+        QCOMPARE(e.steps[0].tool->reason.str(), std::string("pinned by the operator"));
         QCOMPARE(e.steps[0].stepOver.value(), 0.45);  // an end mill: the technology's step-over
         // Roughing only (U9): the layers stop at depth - finish and leave it.
         const Plan r = plan(R"({"module": "FACE", "depth": 3, "U": 9, "finish": 0.4, "stepOver": 0.6})");

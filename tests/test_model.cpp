@@ -1,5 +1,6 @@
 // Model value types: geometry of outlines (offsets, flattening), the sweep
-// of an arc move, code tables, unit conversion.
+// of an arc move, code tables, unit conversion, and how the values hold
+// their parts (shared module inputs, optionals on the heap, shared texts).
 #include "model/codes.h"
 #include "model/geometry.h"
 #include "model/job.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <random>
+#include <utility>
 
 #include <cmath>
 #include <numbers>
@@ -179,6 +181,76 @@ private slots:
         QCOMPARE(p.depth, 12.7);
         QCOMPARE(p.taper, 5.0);
         QCOMPARE(mm.stock.width, 101.6);
+        QCOMPARE(job.units[0].module.as<M4Pocket>().depth, 0.5);  // the job as typed keeps its inches
+    }
+
+    // Copies of a module input share it until one is changed (model/erased.h):
+    // the copy changed has its own, the others keep what they had.
+    void moduleInputCopiesShareUntilChanged()
+    {
+        M4Pocket m;
+        m.corners = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
+        m.depth = 5;
+        const ModuleInput a = m;
+        ModuleInput b = a;
+        QCOMPARE(&std::as_const(b).as<M4Pocket>(), &a.as<M4Pocket>());  // reading: one struct
+        b.as<M4Pocket>().depth = 7;                        // changing access: b's own
+        QCOMPARE(a.as<M4Pocket>().depth, 5.0);
+        QCOMPARE(std::as_const(b).as<M4Pocket>().depth, 7.0);
+        QVERIFY(!(a == b));
+        ModuleInput c = a;
+        c.convertLengths([](double v) { return 2 * v; });
+        QCOMPARE(a.as<M4Pocket>().depth, 5.0);
+        QCOMPARE(c.as<M4Pocket>().depth, 10.0);
+        ModuleInput d = a;
+        QVERIFY(d == a);
+        d.getIf<M4Pocket>()->depth = 5;  // changed to what it was: equal again, by value
+        QVERIFY(d == a && &std::as_const(d).as<M4Pocket>() != &a.as<M4Pocket>());
+    }
+
+    // A step's outline, region and path are optionals on the heap
+    // (model/boxed.h): copied and compared by value, value() refuses when
+    // there is none, and absent they cost a pointer.
+    void boxedIsAnOptionalOnTheHeap()
+    {
+        Boxed<Quad> a;
+        QVERIFY(!a && !a.has_value() && a == std::nullopt);
+        QVERIFY_THROWS_EXCEPTION(std::bad_optional_access, a.value());
+        a = Quad{{{{0, 0}, {4, 0}, {4, 2}, {0, 2}}}, 1};
+        Boxed<Quad> b = a;
+        QVERIFY(a == b && &*a != &*b);
+        b->cornerRadius = 0.5;
+        QCOMPARE(a->cornerRadius, 1.0);
+        QVERIFY(!(a == b));
+        b = std::optional<Quad>{};
+        QVERIFY(!b && !(a == b));
+        b = a.optional();
+        QVERIFY(a == b);
+        b.reset();
+        QCOMPARE(b.value_or(Quad{{}, 3}).cornerRadius, 3.0);
+        Step s;
+        QVERIFY(!s.outline && !s.region && !s.path);
+        QVERIFY(sizeof(s.outline) == sizeof(void*) && sizeof(s.path) == sizeof(void*));
+    }
+
+    // A tool's reason is one shared text: a pool makes equal texts made
+    // apart one; == compares the text either way.
+    void reasonsAreSharedTexts()
+    {
+        SharedText a(std::string("largest flat end mill (10 mm)"));
+        SharedText b(std::string("largest flat end mill (10 mm)"));
+        SharedText c("smallest drill (6 mm)");
+        QVERIFY(a == b && !(a == c) && &a.str() != &b.str());
+        TextPool pool;
+        pool.share(a);
+        pool.share(b);
+        pool.share(c);
+        QCOMPARE(&a.str(), &b.str());
+        QCOMPARE(b.str(), std::string("largest flat end mill (10 mm)"));
+        QVERIFY(&c.str() != &a.str());
+        SharedText none;
+        pool.share(none);
+        QVERIFY(none.empty() && none.str().empty() && none == SharedText(""));
     }
     void builtInTechnologyTableHasTheDefaultMaterial()
     {

@@ -94,7 +94,7 @@ private slots:
         QCOMPARE(steps[1].kind, StepKind::Roughing);
         QCOMPARE(rough.type, ToolType::FlatEndMill);
         QCOMPARE(rough.diameter, 10.0);  // 12 mm would need radius 6 > 5.7
-        QCOMPARE(steps[1].tool->reason, std::string("largest flat end mill (10 mm) whose radius 5 mm fits the corner "
+        QCOMPARE(steps[1].tool->reason.str(), std::string("largest flat end mill (10 mm) whose radius 5 mm fits the corner "
                                                     "radius 5.7 mm; enters the 10 mm pilot hole"));
         const Tool& drill = tool(steps[0].tool->toolId);
         QCOMPARE(drill.type, ToolType::Drill);
@@ -123,8 +123,8 @@ private slots:
         auto steps = decomposeM4(p, tech(), 0);
         chooseTools(steps, {}, lib(), "aluminium-6061");
         QCOMPARE(tool(steps[1].tool->toolId).diameter, 5.0);
-        QVERIFY2(QString::fromStdString(steps[1].tool->reason).contains("its flutes (12.5 mm) are shorter than the depth 24.8 mm"),
-                 steps[1].tool->reason.c_str());
+        QVERIFY2(QString::fromStdString(steps[1].tool->reason.str()).contains("its flutes (12.5 mm) are shorter than the depth 24.8 mm"),
+                 steps[1].tool->reason.str().c_str());
         p.depth = 31;  // deeper than every stick-out that fits
         auto deeper = decomposeM4(p, tech(), 0);
         const auto problems = chooseTools(deeper, {}, lib(), "aluminium-6061");
@@ -143,7 +143,7 @@ private slots:
         const ToolPick rough = chooseM2DRoughingTool(p, tech(), lib(), "steel-s45c");
         QVERIFY2(rough.choice, rough.problem.c_str());
         QCOMPARE(tool(rough.choice->toolId).diameter, 10.0);
-        QVERIFY(rough.choice->reason.find("corner radius 5.7 mm") != std::string::npos);
+        QVERIFY(rough.choice->reason.str().find("corner radius 5.7 mm") != std::string::npos);
         auto steps = decomposeM2D(p, tech(), 10.0, 0);
         QVERIFY(chooseTools(steps, {}, lib(), "steel-s45c").empty());
         int faces = 0;
@@ -179,8 +179,8 @@ private slots:
         const auto problems = chooseTools(narrow, {}, lib(), "steel-s45c");
         QVERIFY2(problems.empty(), problems.empty() ? "" : problems[0].c_str());
         QCOMPARE(tool(narrow.back().tool->toolId).diameter, 6.0);
-        QVERIFY2(narrow.back().tool->reason.find("half the inclined face's length 7 mm") != std::string::npos,
-                 narrow.back().tool->reason.c_str());
+        QVERIFY2(narrow.back().tool->reason.str().find("half the inclined face's length 7 mm") != std::string::npos,
+                 narrow.back().tool->reason.str().c_str());
         // Pins apply to every step of their kind.
         auto pinned = decomposeM2D(p, tech(), 3.0, 0);
         QVERIFY(chooseTools(pinned, {{"inclined", 43}}, lib(), "steel-s45c").empty());
@@ -192,7 +192,7 @@ private slots:
     {
         auto steps = decomposeM4(pocket(6, 0, 9), tech(), 0);
         QVERIFY(chooseTools(steps, {}, lib(), "steel-s45c").empty());
-        QVERIFY(QString::fromStdString(steps[0].tool->reason).contains("ramps in"));
+        QVERIFY(QString::fromStdString(steps[0].tool->reason.str()).contains("ramps in"));
     }
 
     void rampingWithoutPilotHoleNeedsACentreCuttingEndMill()
@@ -204,7 +204,7 @@ private slots:
         QVERIFY(chooseTools(ramped, {}, library, "steel-s45c").empty());
         QCOMPARE(ramped[0].kind, StepKind::Roughing);
         QCOMPARE(tool(ramped[0].tool->toolId).diameter, 8.0);
-        QCOMPARE(ramped[0].tool->reason, std::string("largest flat end mill (8 mm) whose radius 4 mm fits the corner radius "
+        QCOMPARE(ramped[0].tool->reason.str(), std::string("largest flat end mill (8 mm) whose radius 4 mm fits the corner radius "
                                                      "5.7 mm; it cuts at its centre and ramps in (no pilot hole)"));
         QCOMPARE(tool(ramped[1].tool->toolId).diameter, 8.0);  // floor finishing ramps into the beta2 left
         auto drilled = decomposeM4(pocket(6), tech(), 0);
@@ -258,7 +258,7 @@ private slots:
         auto steps = decomposeM4(pocket(6), tech(), 0);
         QVERIFY(chooseTools(steps, {{"roughing", 26}}, lib(), "aluminium-6061").empty());
         QCOMPARE(steps[1].tool->toolId, 26);
-        QCOMPARE(steps[1].tool->reason, std::string("pinned by the operator"));
+        QCOMPARE(steps[1].tool->reason.str(), std::string("pinned by the operator"));
         auto again = decomposeM4(pocket(6), tech(), 0);
         const auto problems = chooseTools(again, {{"roughing", 28}}, lib(), "aluminium-6061");  // 12 mm
         QCOMPARE(problems.size(), std::size_t(1));

@@ -102,7 +102,7 @@ private slots:
         QCOMPARE(turnOf(rough)->allowanceX, 0.2);
         const Step& finish = *find(p, StepKind::TurnFinishing);
         QCOMPARE(finish.tool->toolId, 102);  // reaches everything, smallest nose radius, lowest number
-        QVERIFY2(finish.tool->reason.find("reaches every element") != std::string::npos, finish.tool->reason.c_str());
+        QVERIFY2(finish.tool->reason.str().find("reaches every element") != std::string::npos, finish.tool->reason.str().c_str());
         QCOMPARE(turnOf(finish)->path.comp, NoseCompensation::Right);  // G42 outside
         QCOMPARE(turnOf(finish)->orientation, 2);
         QCOMPARE(find(p, StepKind::Parting)->tool->toolId, 106);
@@ -191,7 +191,7 @@ private slots:
         const Step& drill = *find(p, StepKind::Drilling);
         const Tool& d = *findTool(defaultToolLibrary(), drill.tool->toolId);
         QCOMPARE(d.type, ToolType::Drill);
-        QVERIFY2(d.diameter >= 16.0 && d.diameter <= 20.0 - 0.4 - 1.0, drill.tool->reason.c_str());  // the boring bar enters; the bore keeps stock
+        QVERIFY2(d.diameter >= 16.0 && d.diameter <= 20.0 - 0.4 - 1.0, drill.tool->reason.str().c_str());  // the boring bar enters; the bore keeps stock
         QVERIFY(!turnOf(drill)->cutting.constantSurfaceSpeed && turnOf(drill)->cutting.rpm > 0);
         const Step& bore = *find(p, StepKind::TurnFinishing, 1);
         QCOMPARE(bore.tool->toolId, 104);
@@ -214,7 +214,7 @@ private slots:
         QVERIFY2(p.ok(), firstError(p).c_str());
         QCOMPARE(kinds(p), (std::vector<StepKind>{StepKind::TurnRoughing, StepKind::TurnFinishing}));
         QCOMPARE(find(p, StepKind::TurnFinishing)->tool->toolId, 103);
-        QCOMPARE(find(p, StepKind::TurnFinishing)->tool->reason, std::string("pinned"));
+        QCOMPARE(find(p, StepKind::TurnFinishing)->tool->reason.str(), std::string("pinned"));
         QCOMPARE(*readJob(writeJob(*read.job)).job, *read.job);  // round trip
         // An unknown step and a tool not in the library are refused on their fields.
         doc["units"][0]["skip"] = {"polish"};

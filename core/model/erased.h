@@ -1,9 +1,15 @@
 // The holder behind the model's type-erased values (a unit's module input,
 // model/module.h; a step's payload, model/step_payload.h): a struct the
-// model does not know, held on the heap with value semantics — copies clone
-// it, == compares it by value. `Data` is the value's interface; it provides
-//   std::unique_ptr<Data> clone() const;  bool equals(const Data&) const;
-// and `Of<T>` (a class of Data holding a T as `value`) the typed access.
+// model does not know, held on the heap with value semantics — == compares
+// it by value, and a copy behaves as a copy of its own. Copies share the
+// held value until one of them is changed (`mut` clones a shared value
+// first), so the job held as typed and in mm, a plan's steps and the
+// station's cached ones keep one copy of what none of them changes. `Data`
+// is the value's interface; it provides
+//   const char* name() const;  std::unique_ptr<Data> clone() const;
+//   bool equals(const Data&) const;
+// and `Of<T>` (a class of Data holding a T as `value`, made over Holding
+// below) the typed access.
 #pragma once
 
 #include <memory>
@@ -16,31 +22,53 @@ class Erased {
 public:
     Erased() = default;
     explicit Erased(std::unique_ptr<Data> d) : d_(std::move(d)) {}
-    Erased(const Erased& o) : d_(o.d_ ? o.d_->clone() : nullptr) {}
-    Erased(Erased&&) noexcept = default;
-    Erased& operator=(const Erased& o)
-    {
-        if (this != &o) d_ = o.d_ ? o.d_->clone() : nullptr;
-        return *this;
-    }
-    Erased& operator=(Erased&&) noexcept = default;
 
-    Data* get() const { return d_.get(); }
+    const Data* get() const { return d_.get(); }
+    // The held value for changing it: a value shared with a copy is cloned
+    // first, so that the copy keeps what it had.
+    Data* mut()
+    {
+        if (d_ && d_.use_count() > 1) d_ = std::shared_ptr<Data>(d_->clone());
+        return d_.get();
+    }
     // The held value when it is of class Of (a Data holding a T), else nullptr.
     template <class Of>
-    Of* as() const
+    const Of* as() const
     {
-        return dynamic_cast<Of*>(d_.get());
+        return dynamic_cast<const Of*>(d_.get());
+    }
+    template <class Of>
+    Of* asMut()
+    {
+        return dynamic_cast<Of*>(d_.get()) ? dynamic_cast<Of*>(mut()) : nullptr;
     }
 
     friend bool operator==(const Erased& a, const Erased& b)
     {
         if (!a.d_ || !b.d_) return !a.d_ && !b.d_;
-        return a.d_->equals(*b.d_);
+        return a.d_ == b.d_ || a.d_->equals(*b.d_);
     }
 
 private:
-    std::unique_ptr<Data> d_;
+    std::shared_ptr<Data> d_;
+};
+
+// The part of every `Of<T>` that is the same: the T held as `value`, its
+// name (T::kName), its clone and its comparison. `Of` is the final class
+// (it may add what its Data asks more of, as a module input its length
+// conversion).
+template <class Data, class T, class Of>
+class Holding : public Data {
+public:
+    explicit Holding(T v) : value(std::move(v)) {}
+    const char* name() const override { return T::kName; }
+    std::unique_ptr<Data> clone() const override { return std::make_unique<Of>(static_cast<const Of&>(*this)); }
+    bool equals(const Data& other) const override
+    {
+        const auto* o = dynamic_cast<const Of*>(&other);
+        return o && o->value == value;
+    }
+    T value;
 };
 
 }  // namespace taiwa::detail

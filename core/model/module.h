@@ -1,5 +1,6 @@
 // A machining unit's module input as a value the job model can hold without
-// knowing the module kinds: copied deeply, compared by value, converted
+// knowing the module kinds: copied as a value (copies share the input until
+// one is changed, model/erased.h), compared by value, converted
 // between length units. Each kind's input struct lives in its own folder
 // (core/modules/<kind>/) and everything else about the kind sits behind its
 // door (core/modules/module_kind.h).
@@ -37,18 +38,10 @@ public:
 };
 
 template <class T>
-class ModuleDataOf final : public ModuleData {
+class ModuleDataOf final : public Holding<ModuleData, T, ModuleDataOf<T>> {
 public:
-    explicit ModuleDataOf(T v) : value(std::move(v)) {}
-    const char* name() const override { return T::kName; }
-    std::unique_ptr<ModuleData> clone() const override { return std::make_unique<ModuleDataOf>(value); }
-    bool equals(const ModuleData& other) const override
-    {
-        const auto* o = dynamic_cast<const ModuleDataOf*>(&other);
-        return o && o->value == value;
-    }
-    void convertLengths(const LengthMap& f) override { value.convertLengths(f); }
-    T value;
+    using Holding<ModuleData, T, ModuleDataOf<T>>::Holding;
+    void convertLengths(const LengthMap& f) override { this->value.convertLengths(f); }
 };
 
 }  // namespace detail
@@ -72,10 +65,11 @@ public:
         const auto* d = data_.as<detail::ModuleDataOf<T>>();
         return d ? &d->value : nullptr;
     }
+    // For changing the input (a copy sharing it keeps what it had).
     template <class T>
     T* getIf()
     {
-        auto* d = data_.as<detail::ModuleDataOf<T>>();
+        auto* d = data_.asMut<detail::ModuleDataOf<T>>();
         return d ? &d->value : nullptr;
     }
     template <class T>
@@ -99,7 +93,7 @@ public:
 
     void convertLengths(const LengthMap& f)
     {
-        if (data_.get()) data_.get()->convertLengths(f);
+        if (data_.get()) data_.mut()->convertLengths(f);
     }
 
     friend bool operator==(const ModuleInput& a, const ModuleInput& b) { return a.data_ == b.data_; }

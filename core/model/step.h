@@ -7,6 +7,7 @@
 // that module's.
 #pragma once
 
+#include "model/boxed.h"
 #include "model/contour.h"
 #include "model/geometry.h"
 #include "model/step_payload.h"
@@ -102,12 +103,12 @@ struct Step {
     // Boundary the tool edge reaches (with its corner radius): at cutDepth for
     // vertical walls; for tapered wall steps (wallTaper > 0) the outline at the
     // top surface, the wall leaning inward by depth x tan(wallTaper) below it.
-    std::optional<Quad> outline;
+    Boxed<Quad> outline;  // (model/boxed.h: an optional on the heap)
     // Steps of contour units (any outline, islands): the region whose
     // boundary the tool edge reaches, instead of `outline`; and the largest
     // tool radius that reaches every part of it (its narrowest channel and
     // smallest inside corner radius).
-    std::optional<Region> region;
+    Boxed<Region> region;
     double reach = 0.0;
     double inscribed = 0.0;  // the radius of the largest circle in the region
 
@@ -134,7 +135,7 @@ struct Step {
 
     // Filled by the later stages; absent until then, never faked.
     std::optional<ToolChoice> tool;
-    std::optional<ToolPath> path;
+    Boxed<ToolPath> path;
     std::optional<double> minutes;  // estimated machining time: length over feed, rapids at one rate
     // The time as the machine moves (acceleration, corners, look-ahead;
     // machine/motion_time.h), when the job's machine says how it moves.

@@ -2,9 +2,9 @@
 // — a side-milling step's contour and passes, a face's pass angle, an
 // area's drawn points, a hole pattern's centres, an inclined face, a
 // turning step's path and speeds — held by the step without the model
-// knowing the module. Copied deeply, compared by value, the way ModuleInput
-// holds a unit's input (model/module.h); read-only: a changed payload is
-// set whole. Each payload struct lives in its module's folder (M2D's
+// knowing the module. Copied as a value (copies share the one read-only
+// struct), compared by value, the way ModuleInput holds a unit's input
+// (model/module.h, model/erased.h); a changed payload is set whole. Each payload struct lives in its module's folder (M2D's
 // inclined face beside the pocket modules' shared code that reads it;
 // TURN's TurnStep in model/turn_path.h, for the stages that read it) and
 // provides
@@ -59,16 +59,8 @@ private:
         virtual bool equals(const Data& other) const = 0;
     };
     template <class T>
-    struct Of final : Data {
-        explicit Of(T v) : value(std::move(v)) {}
-        const char* name() const override { return T::kName; }
-        std::unique_ptr<Data> clone() const override { return std::make_unique<Of>(value); }
-        bool equals(const Data& other) const override
-        {
-            const auto* o = dynamic_cast<const Of*>(&other);
-            return o && o->value == value;
-        }
-        T value;
+    struct Of final : detail::Holding<Data, T, Of<T>> {
+        using detail::Holding<Data, T, Of<T>>::Holding;
     };
     detail::Erased<Data> data_;
 };

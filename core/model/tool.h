@@ -2,6 +2,7 @@
 #pragma once
 
 #include "model/local_name.h"
+#include "model/shared_text.h"
 
 #include <optional>
 #include <string>
@@ -91,7 +92,7 @@ struct Tool {
 // Why a step got its tool, in words for the sheet and the step list.
 struct ToolChoice {
     int toolId = 0;
-    std::string reason;
+    SharedText reason;  // why this tool (shared by the steps with the same reason)
     friend bool operator==(const ToolChoice&, const ToolChoice&) = default;
 };
 

@@ -86,6 +86,7 @@ void planSteps(Plan& plan, const std::vector<Tool>& library, const PathParameter
 {
     std::vector<Step> unordered;
     unordered.reserve(plan.mmJob.units.size() * 4);  // most units have a few steps
+    TextPool reasons;
     if (cache) cache->begin(plan, library, params);
     for (const int u : plan.unitOrder) {
         const auto at = static_cast<std::size_t>(u);
@@ -97,16 +98,20 @@ void planSteps(Plan& plan, const std::vector<Tool>& library, const PathParameter
         plan.diagnostics.insert(plan.diagnostics.end(), done.diagnostics.begin(), done.diagnostics.end());
         if (done.setup) plan.setups.push_back(*done.setup);
         if (done.turned) plan.turned.push_back(*done.turned);
+        const std::size_t first = unordered.size();
         if (cache) unordered.insert(unordered.end(), done.steps.begin(), done.steps.end());
         else unordered.insert(unordered.end(), std::make_move_iterator(fresh.steps.begin()), std::make_move_iterator(fresh.steps.end()));
+        // Alike units give their steps the same reasons: each sentence kept once.
+        for (std::size_t i = first; i < unordered.size(); ++i)
+            if (unordered[i].tool) reasons.share(unordered[i].tool->reason);
     }
     std::sort(plan.setups.begin(), plan.setups.end(), [](const WorkSetup& a, const WorkSetup& b) { return a.unit < b.unit; });
     std::sort(plan.turned.begin(), plan.turned.end(), [](const TurnedPart& a, const TurnedPart& b) { return a.unit < b.unit; });
     if (!plan.ok()) return;
 
     // The steps are put in order where they are: a second vector of them
-    // would double the peak of a large job (a step is about 1 kB; 100,000
-    // units make some 450,000 steps).
+    // would double the peak of a large job (100,000 pocket units make some
+    // 390,000 steps).
     plan.steps = std::move(unordered);
     if (plan.mmJob.bar) {
         // A bar is cut in the order of the steps' kinds (facing, drilling,

@@ -38,38 +38,41 @@ std::vector<int> orderStepsBy(const std::vector<Step>& steps, const StepOrderRul
     const auto unitMembers = [&](std::size_t u) {
         return std::pair{members.begin() + unitStart[u], members.begin() + unitStart[u + 1]};
     };
-    // The edges a -> b (b waits for a), then each step's followers in one array.
-    std::vector<std::pair<int, int>> edges;
-    for (std::size_t u = 0; u < static_cast<std::size_t>(units); ++u) {
-        const auto [first, last] = unitMembers(u);
-        for (auto a = first; a != last; ++a)
-            for (auto b = first; b != last; ++b)
-                if (*a != *b && rules.waitsFor(at(*b), at(*a))) edges.emplace_back(*a, *b);
-    }
-    // A unit cut before the others (the top faced first, module FACE; the
-    // others' depths are measured from Z0 either way): every other unit's
-    // steps wait for its last step, those of units cut first excepted.
-    for (std::size_t u = 0; u < static_cast<std::size_t>(units); ++u) {
-        const auto [first, end] = unitMembers(u);
-        int last = -1;
-        for (auto a = first; a != end; ++a)
-            if (rules.cutsFirst(at(*a)) && (last < 0 || at(*a).number > at(last).number)) last = *a;
-        if (last < 0) continue;
-        for (int b = 0; b < n; ++b)
-            if (at(b).unit != at(last).unit && !rules.cutsFirst(at(b))) edges.emplace_back(last, b);
-    }
-    std::vector<int> waiting(static_cast<std::size_t>(n), 0), nextStart(static_cast<std::size_t>(n) + 1, 0),
-        next(edges.size());
-    for (const auto& [a, b] : edges) {
+    // The edges a -> b (b waits for a), walked twice: to count each step's
+    // followers, then to put them in one array (no list of the edges: a
+    // large job has over a million).
+    const auto forEachEdge = [&](auto&& edge) {
+        for (std::size_t u = 0; u < static_cast<std::size_t>(units); ++u) {
+            const auto [first, last] = unitMembers(u);
+            for (auto a = first; a != last; ++a)
+                for (auto b = first; b != last; ++b)
+                    if (*a != *b && rules.waitsFor(at(*b), at(*a))) edge(*a, *b);
+        }
+        // A unit cut before the others (the top faced first, module FACE;
+        // the others' depths are measured from Z0 either way): every other
+        // unit's steps wait for its last step, those of units cut first
+        // excepted.
+        for (std::size_t u = 0; u < static_cast<std::size_t>(units); ++u) {
+            const auto [first, end] = unitMembers(u);
+            int last = -1;
+            for (auto a = first; a != end; ++a)
+                if (rules.cutsFirst(at(*a)) && (last < 0 || at(*a).number > at(last).number)) last = *a;
+            if (last < 0) continue;
+            for (int b = 0; b < n; ++b)
+                if (at(b).unit != at(last).unit && !rules.cutsFirst(at(b))) edge(last, b);
+        }
+    };
+    std::vector<int> waiting(static_cast<std::size_t>(n), 0), nextStart(static_cast<std::size_t>(n) + 1, 0);
+    forEachEdge([&](int a, int b) {
         ++nextStart[static_cast<std::size_t>(a) + 1];
         ++waiting[static_cast<std::size_t>(b)];
-    }
+    });
     for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) nextStart[i + 1] += nextStart[i];
+    std::vector<int> next(static_cast<std::size_t>(nextStart.back()));
     {
         std::vector<int> filled(nextStart.begin(), nextStart.end() - 1);
-        for (const auto& [a, b] : edges) next[static_cast<std::size_t>(filled[static_cast<std::size_t>(a)]++)] = b;
+        forEachEdge([&](int a, int b) { next[static_cast<std::size_t>(filled[static_cast<std::size_t>(a)]++)] = b; });
     }
-    std::vector<std::pair<int, int>>().swap(edges);
     // The ready steps, lowest index first: all of them, and those of each
     // tool. A step taken through one heap stays in the other until it comes
     // to the top there and is seen to be taken.
