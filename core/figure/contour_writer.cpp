@@ -82,7 +82,6 @@ public:
         // points made before it).
         defs_.reserve(2 * n + 3);  // a closed contour's n points, its n lines or circles and the CONTOUR
         pointNames_.reserve(n + 2);
-        names_.reserve(2 * n + 3);
         centres_.reserve(n);
         if (!c_.closed) start_ = point(s.front().start);
         for (std::size_t k = 0; k < n; ++k) {
