@@ -9,6 +9,7 @@
 #include "verify/tape_reader.h"
 #include "verify/two_path_check.h"
 
+#include <algorithm>
 #include <string>
 
 namespace taiwa::verify {
@@ -21,8 +22,10 @@ std::string waitName(int code, bool fanuc)
     return code > 0 ? "M66 (meeting " + std::to_string(code) + ")" : "M66 (no meeting: its output and input disagree)";
 }
 
-// Path `p`'s waits against path 1's: the first that differs (or is missing
-// on one of them) is a finding on the program that has it.
+// Program `program`'s waits (`other`) against path 1's (`one`): the first
+// that differs, is missing on one of them or meets nothing is a finding on
+// path 1's program, or on the other's where path 1's has run out or its is
+// the wait that meets nothing.
 void pairWaits(Report& report, const std::vector<TapeWait>& one, const std::vector<TapeWait>& other, int program, bool fanuc)
 {
     for (std::size_t i = 0; i < std::max(one.size(), other.size()); ++i) {
