@@ -28,17 +28,14 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
     verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
     if (!o.cache && reused) *reused = false;
     // The tape is posted to be read back (verify/tape_readback.h; a
-    // two-path lathe's only to place the findings).
-    const bool readBack = verify::readsBack(plan);
-    if (!report.findings.empty() || readBack) {
-        try {
-            const PostedProgram& posted = tape.emplace(postProcess(plan.steps, plan.tools, post));
-            verify::placeOnTape(report, posted);
-            if (readBack) verify::readBack(report, plan, posted, post::dialectNamed(post.dialect), post);
-        } catch (const Refusal&) {
-            tape.reset();
-            // A dialect that cannot post this job: the findings keep their moves.
-        }
+    // two-path lathe's only to place the findings: its programs are read).
+    try {
+        const PostedProgram& posted = tape.emplace(postProcess(plan.steps, plan.tools, post));
+        verify::placeOnTape(report, posted);
+        verify::readBack(report, plan, posted, post::dialectNamed(post.dialect), post);
+    } catch (const Refusal&) {
+        tape.reset();
+        // A dialect that cannot post this job: the findings keep their moves.
     }
     return report;
 }
@@ -52,7 +49,7 @@ std::string summary(const verify::Report& r)
     return std::to_string(r.count(K::Gouge)) + " gouges, " + std::to_string(r.count(K::Collision)) + " collisions, " +
            std::to_string(r.count(K::RapidIntoStock)) + " rapids into stock, " + std::to_string(r.count(K::TravelLimit)) +
            " travel limits, " + std::to_string(r.count(K::RestMaterial)) + " with material left, " +
-           std::to_string(r.count(K::UnplannedMove) + r.count(K::UnreadTape)) + " on the tape read back";
+           std::to_string(r.count(K::UnplannedMove) + r.count(K::UnreadTape) + r.count(K::UnpairedWait)) + " on the tape read back";
 }
 
 }  // namespace
@@ -82,6 +79,7 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
                                     : nlohmann::ordered_json();
             e["move"] = f.move >= 0 ? nlohmann::ordered_json(f.move + 1) : nlohmann::ordered_json();
             e["line"] = f.line > 0 ? nlohmann::ordered_json(f.line) : nlohmann::ordered_json();
+            if (f.program > 0) e["program"] = "p" + std::to_string(f.program);  // a two-path lathe's STEM.pN
             e["position"] = {f.position.x, f.position.y, f.position.z};
             e["size"] = f.size;
             e["area"] = f.area;

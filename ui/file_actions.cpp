@@ -242,14 +242,12 @@ bool FileActions::exportTo(const ExportChoice& c)
         verify::Report report = verifyPlanCached(*plan, v);
         // The tape posted once and read back (verify/tape_readback.h), as
         // `taiwa export` does; the export writes that very tape.
-        if (verify::readsBack(*plan)) {
-            try {
-                const PostedProgram& posted = tape.emplace(postProcess(plan->steps, plan->tools, post));
-                verify::placeOnTape(report, posted);
-                verify::readBack(report, *plan, posted, post::dialectNamed(post.dialect), post);
-            } catch (const Refusal&) {
-                tape.reset();  // a dialect that cannot post this job: the export says so
-            }
+        try {
+            const PostedProgram& posted = tape.emplace(postProcess(plan->steps, plan->tools, post));
+            verify::placeOnTape(report, posted);
+            verify::readBack(report, *plan, posted, post::dialectNamed(post.dialect), post);
+        } catch (const Refusal&) {
+            tape.reset();  // a dialect that cannot post this job: the export says so
         }
         for (const auto& f : report.findings)
             if (f.fatal()) faults.push_back(verify::describe(f, *plan));

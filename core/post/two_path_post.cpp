@@ -15,54 +15,65 @@
 
 namespace taiwa {
 
+BalancedPathJob balancedPathJob(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughing,
+                                const MultiPath& layout, const PostOptions& options, std::size_t p)
+{
+    const BalancedPath& bp = cut.paths[p];
+    BalancedPathJob job;
+    Step s = steps[roughing];
+    TurnStep ts = *turnOf(s);
+    ts.path = {};
+    ts.path.start = bp.start;
+    // Where each block's cut starts among the path's moves.
+    for (const auto& b : bp.blocks) {
+        job.cuts.emplace_back(ts.path.moves.size() + b.cutFrom, &b);
+        ts.path.moves.insert(ts.path.moves.end(), b.moves.begin(), b.moves.end());
+    }
+    job.tailFrom = ts.path.moves.size();
+    ts.path.moves.insert(ts.path.moves.end(), bp.tail.begin(), bp.tail.end());
+    s.payload = ts;
+    PostOptions& o = job.options;
+    o = options;
+    o.programNumber = options.programNumber + static_cast<int>(p);
+    o.programName = fmt::format("Path {} {}: {}", p + 1, layout.paths[p].name, options.programName);
+    o.fileStem = fmt::format("{}.p{}", options.fileStem, p + 1);
+    o.turningCycles = false;
+    // The tool change point on the path's own side.
+    const turning::ZR change = layout.fromPath1({options.latheChangeZ, options.latheChangeX / 2.0}, p);
+    o.latheChangeZ = change.z;
+    o.latheChangeX = 2.0 * change.r;
+    // Path 1 runs the whole job; the others their blocks.
+    if (p == 0) {
+        job.steps = steps;
+        job.steps[roughing] = std::move(s);
+        job.step = roughing;
+    } else {
+        job.steps = {std::move(s)};
+    }
+    return job;
+}
+
 std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughingIndex,
                                            const MultiPath& layout, const std::vector<Tool>& library,
                                            const PostOptions& options)
 {
     if (roughingIndex >= steps.size()) throw std::logic_error("post-processor: the balanced cut's step is not among the steps");
-    const Step& roughing = steps[roughingIndex];
     const post::Dialect* d = &post::dialectNamed(options.dialect);
     const bool fanuc = d->macroSyntax == "fanuc" && d->syntax == post::Syntax::Iso;
     const bool linuxcnc = d->macroSyntax == "linuxcnc" && d->syntax == post::Syntax::Iso;
     if (!fanuc && !linuxcnc)
         throw Refusal("post-processor: " + d->name + " writes no two-path programs (FANUC's family and LinuxCNC do)");
-    if (!turnOf(roughing)) throw std::logic_error("post-processor: the balanced cut's step is not a turning step");
+    if (!turnOf(steps[roughingIndex])) throw std::logic_error("post-processor: the balanced cut's step is not a turning step");
     const auto dwellNumber = [&](double s) { return post::formatNumber(s, 3, d->decimalPointAlways); };
     std::vector<PostedProgram> out;
     for (std::size_t p = 0; p < cut.paths.size(); ++p) {
         const BalancedPath& bp = cut.paths[p];
-        Step s = roughing;
-        TurnStep ts = *turnOf(roughing);
-        ts.path = {};
-        ts.path.start = bp.start;
-        // Where each block's cut starts among the path's moves.
-        std::vector<std::pair<std::size_t, const BalancedBlock*>> cuts;
-        for (const auto& b : bp.blocks) {
-            cuts.emplace_back(ts.path.moves.size() + b.cutFrom, &b);
-            ts.path.moves.insert(ts.path.moves.end(), b.moves.begin(), b.moves.end());
-        }
-        const std::size_t tailFrom = ts.path.moves.size();
-        ts.path.moves.insert(ts.path.moves.end(), bp.tail.begin(), bp.tail.end());
-        s.payload = ts;
-        PostOptions o = options;
-        o.programNumber = options.programNumber + static_cast<int>(p);
-        o.programName = fmt::format("Path {} {}: {}", p + 1, layout.paths[p].name, options.programName);
-        o.fileStem = fmt::format("{}.p{}", options.fileStem, p + 1);
-        o.turningCycles = false;
-        // The tool change point on the path's own side.
-        const turning::ZR change = layout.fromPath1({options.latheChangeZ, options.latheChangeX / 2.0}, p);
-        o.latheChangeZ = change.z;
-        o.latheChangeX = 2.0 * change.r;
-        // Path 1 runs the whole job; the others their blocks.
-        std::vector<Step> program{s};
-        std::size_t stepIndex = 0;
-        if (p == 0) {
-            program = steps;
-            program[roughingIndex] = s;
-            stepIndex = roughingIndex;
-        }
-        const PostedProgram posted = postLathe(program, library, o);
-        const int here = static_cast<int>(stepIndex);
+        const BalancedPathJob job = balancedPathJob(cut, steps, roughingIndex, layout, options, p);
+        const auto& cuts = job.cuts;
+        const std::size_t tailFrom = job.tailFrom;
+        const PostOptions& o = job.options;
+        const PostedProgram posted = postLathe(job.steps, library, o);
+        const int here = static_cast<int>(job.step);
 
         // The waits and dwells, each before the first line of its cut's move.
         int meeting = 0;

@@ -16,6 +16,9 @@
 #include "model/two_path.h"
 #include "post/post.h"
 
+#include <utility>
+#include <vector>
+
 namespace taiwa {
 
 // `steps`: the job's turning steps in machining order; `roughing`: the
@@ -30,6 +33,23 @@ namespace taiwa {
 std::vector<PostedProgram> postBalancedCut(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughing,
                                            const MultiPath& layout, const std::vector<Tool>& library,
                                            const PostOptions& options);
+
+// What one path's program of a balanced cut is posted from, before its
+// waits go in: the steps the lathe post writes (path 1: the job's, the
+// roughing's passes replaced by the path's blocks; another path: its blocks
+// alone as one step), which of them is the balanced one, the options (the
+// path's program number, name, stem and change point), and where each
+// block's cut and the tail start among that step's moves. The read-back
+// holds each path's program against the same steps (verify/tape_readback.h).
+struct BalancedPathJob {
+    std::vector<Step> steps;
+    std::size_t step = 0;
+    PostOptions options;
+    std::vector<std::pair<std::size_t, const BalancedBlock*>> cuts;
+    std::size_t tailFrom = 0;
+};
+BalancedPathJob balancedPathJob(const BalancedCut& cut, const std::vector<Step>& steps, std::size_t roughing,
+                                const MultiPath& layout, const PostOptions& options, std::size_t path);
 
 // How long a LinuxCNC program waits for its partner before it gives up [s].
 constexpr double kLinuxcncWaitTimeout = 60.0;

@@ -22,6 +22,7 @@ const char* toKey(FindingKind k)
     case FindingKind::RestMaterial: return "rest-material";
     case FindingKind::UnplannedMove: return "unplanned-move";
     case FindingKind::UnreadTape: return "unread-tape";
+    case FindingKind::UnpairedWait: return "unpaired-wait";
     }
     return "?";
 }
@@ -122,8 +123,15 @@ std::string describe(const Finding& f, const Plan& plan)
                                                               "from here on: {}"),
                            f.part);
         break;
+    case FindingKind::UnpairedWait:
+        what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the wait {} is not met by the other path's program at its turn: "
+                                                              "both paths would stop there (a deadlock)"),
+                           f.part);
+        break;
     }
     // Where on the tape, when known: one template for each case, so that the station translates the whole.
+    if (f.program > 0 && f.line > 0)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, program p{} line {}"), where, what, f.program, f.line);
     if (f.move >= 0 && f.line > 0)
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, move {}, tape line {}"), where, what, f.move + 1,
                            f.line);

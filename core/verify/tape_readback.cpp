@@ -209,7 +209,6 @@ Point3 inMm(Point3 p, double k) { return {p.x * k, p.y * k, p.z * k}; }
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post)
 {
-    if (!readsBack(plan)) return;
     if (plan.mmJob.bar) return readBackLathe(report, plan, program, dialect, post);
     const TapeReading tape = readTape(program.nc, dialect);
     const double k = tape.inches ? kInch : 1.0;
@@ -245,12 +244,13 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
     addUnreadTape(report, tape);
 }
 
-void addUnreadTape(Report& report, const TapeReading& tape)
+void addUnreadTape(Report& report, const TapeReading& tape, int program)
 {
     if (tape.error.empty()) return;
     Finding f;
     f.kind = FindingKind::UnreadTape;
     f.line = tape.errorLine;
+    f.program = program;
     f.part = tape.error;
     report.findings.push_back(f);
 }

@@ -7,7 +7,9 @@
 // the retract to the safe height) must go where the post sends them. Any
 // other motion (a shop's word that moves, a post's bug) is a finding at its
 // tape line saying what it does, fatal when it goes into stock; a tape the
-// reader cannot follow is a fatal finding at the line where it stops.
+// reader cannot follow is a fatal finding at the line where it stops. A
+// two-path lathe's programs are read back each on its own lines, and their
+// waits paired (tape_readback_two_path.h).
 // docs/verification.md "The tape read back".
 #pragma once
 
@@ -16,14 +18,14 @@
 #include "post/post.h"
 #include "verify/verify.h"
 
+namespace taiwa {
+struct MultiPath;      // machine/lathe_kinds.h
+struct WaitCodeRange;
+}  // namespace taiwa
+
 namespace taiwa::verify {
 
 struct TapeReading;  // tape_reader.h
-
-// Whether the tape postProcess makes of `plan` is read back: a milling
-// job's and a one-path lathe's (a two-path lathe's programs are posted
-// apart, post/two_path_post.h, and not read back).
-bool readsBack(const Plan& plan);
 
 // The most findings of the tape's own one read-back adds (a word that moves
 // repeats at every tool change; a post's bug could repeat at every move).
@@ -37,7 +39,9 @@ constexpr int kMaxTapeFindings = 50;
 // the first cut does. A lathe job's tape is read by readLatheTape and held
 // against its turning steps (tape_readback_lathe.cpp); the material there
 // is the bar's half-section (Report::section, else the bar as it was).
-// Nothing is done for a job readsBack refuses.
+// A two-path lathe's programs are posted apart (post/two_path_post.h):
+// for such a job `program` is not read, its programs are (readBackTwoPath,
+// tape_readback_two_path.h).
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 
@@ -45,8 +49,25 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
 void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
                    const PostOptions& post);
 
+// Which of a two-path lathe's programs a lathe tape is
+// (tape_readback_two_path.cpp); the default: a one-path lathe's one tape.
+struct PathProgram {
+    int program = 0;                       // Finding::program: 1, 2 … for STEM.p1, STEM.p2 …
+    const MultiPath* layout = nullptr;     // its coordinates into path 1's, where the bar is measured
+    std::size_t path = 0;
+    int stepOffset = 0;                    // its steps' indices into the plan's (another path's one step: the roughing)
+    const WaitCodeRange* waits = nullptr;  // the control's wait codes (readLatheTape)
+};
+
+// A lathe tape read back against `steps` (what `program` was posted from,
+// with `post`), the material the bar's (Report::section, else `bar`); the
+// reading returned (its waits).
+TapeReading readBackLathePath(Report& report, const std::vector<Step>& steps, const BarStock& bar, const PostedProgram& program,
+                              const post::Dialect& dialect, const PostOptions& post, const PathProgram& which);
+
 // The reading's "unread tape" finding, where the reader stopped (none when
-// it read the tape through): the milling and the lathe read-back end so.
-void addUnreadTape(Report& report, const TapeReading& tape);
+// it read the tape through), on `program` (Finding::program): the milling
+// and the lathe read-back end so.
+void addUnreadTape(Report& report, const TapeReading& tape, int program = 0);
 
 }  // namespace taiwa::verify

@@ -7,12 +7,15 @@
 // and X arrival), by where it ends; a rapid right after a motion the plan
 // does not have must also stay out of the material. How deep a motion
 // goes is how far its programmed point gets inside the bar's half-section
-// (Report::section after the last step, else the bar as it was).
+// (Report::section after the last step, else the bar as it was); another
+// path's motion (a two-path lathe's program, PathProgram) turned into path
+// 1's coordinates first.
 #include "verify/tape_readback.h"
 
 #include "machine/machine.h"
 #include "model/turn_path.h"
 #include "verify/tape_reader.h"
+#include "verify/tape_readback_two_path.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,9 +45,11 @@ public:
 
     static constexpr double kOnAxis = 1e-6;  // [mm]
 
-    // How far inside the material `p` is (0 outside): to its nearest surface.
+    // How far inside the material `p` is (0 outside): to its nearest
+    // surface; across the axis (another path's side) at its distance from it.
     double depth(ZR p) const
     {
+        p.r = std::abs(p.r);
         if (p.z < lo_.z || p.z > hi_.z || p.r < lo_.r || p.r > hi_.r) return 0.0;
         int winding = 0;
         double nearest = std::numeric_limits<double>::infinity();
@@ -90,8 +95,9 @@ bool near(double tape, double planned, double tol) { return std::abs(tape - plan
 
 class LatheJudge {
 public:
-    LatheJudge(const Plan& plan, const post::Dialect& dialect, const PostOptions& post, const TapeReading& tape, const Material& material)
-        : plan_(plan), tape_(tape), material_(material), signedU_(dialect.macroSyntax == "fanuc"),
+    LatheJudge(const std::vector<Step>& steps, const post::Dialect& dialect, const PostOptions& post, const TapeReading& tape,
+               const Material& material, const PathProgram& which)
+        : steps_(steps), tape_(tape), material_(material), which_(which), signedU_(dialect.macroSyntax == "fanuc"),
           change_{post.latheChangeZ, post.latheChangeX / 2.0}
     {
         const int decimals = tape.inches ? dialect.lengthDecimals.inch : dialect.lengthDecimals.mm;
@@ -108,13 +114,16 @@ public:
         return ok;
     }
 
-    // How deep [mm] the motion's programmed point goes into the material.
-    double depth(const TapeMotion& m) const
+    // How deep [mm] the motion's programmed point goes into the material
+    // (another path's motion turned into path 1's coordinates first).
+    double depth(const TapeMotion& motion) const
     {
+        const TapeMotion m = inPath1(motion);
         const ZR a{m.start.z, m.start.x / 2.0}, b{m.end.z, m.end.x / 2.0};
         if (m.kind == TapeMotion::Cycle) {
             const TapeCycle& c = tape_.cycles[static_cast<std::size_t>(m.cycle)];
-            const double zl = c.zLow, zh = c.zHigh, rl = c.xLow / 2.0, rh = c.xHigh / 2.0;
+            const ZR lo = toPath1({c.zLow, c.xLow / 2.0}), hi = toPath1({c.zHigh, c.xHigh / 2.0});
+            const double zl = std::min(lo.z, hi.z), zh = std::max(lo.z, hi.z), rl = std::min(lo.r, hi.r), rh = std::max(lo.r, hi.r);
             double d = 0.0;
             const int n = std::clamp(static_cast<int>(std::max(zh - zl, rh - rl) / 0.1), 1, 200);
             for (int i = 0; i <= n; ++i)
@@ -142,6 +151,23 @@ public:
     }
 
 private:
+    ZR toPath1(ZR p) const { return which_.layout ? which_.layout->toPath1(p, which_.path) : p; }
+    // `m` in path 1's coordinates: its points moved, an arc's turn reversed by one mirrored axis.
+    TapeMotion inPath1(TapeMotion m) const
+    {
+        if (!which_.layout || which_.path == 0) return m;
+        const auto point = [&](Point3 p) {
+            const ZR q = toPath1({p.z, p.x / 2.0});
+            return Point3{2.0 * q.r, 0.0, q.z};
+        };
+        m.start = point(m.start);
+        m.end = point(m.end);
+        const ZR c = toPath1({m.centre.y, m.centre.x / 2.0});
+        m.centre = {2.0 * c.r, c.z};
+        const LathePath &one = which_.layout->paths.at(0), &here = which_.layout->paths.at(which_.path);
+        if (one.zDirection * here.zDirection * one.xDirection * here.xDirection < 0) m.rotation = -m.rotation;
+        return m;
+    }
     static ZR lerp(ZR a, ZR b, double t) { return {a.z + (b.z - a.z) * t, a.r + (b.r - a.r) * t}; }
     bool at(const Point3& p, ZR planned) const { return near(p.x, 2.0 * planned.r, tol_) && near(p.z, planned.z, tol_); }
     bool clear(const TapeMotion& m) const { return depth(m) <= 0.01; }
@@ -149,9 +175,9 @@ private:
     bool judge(const TapeMotion& m, BlockSource src) const
     {
         const bool traverse = m.kind == TapeMotion::Traverse;
-        if (src.step < 0 || src.step >= static_cast<int>(plan_.steps.size()))  // the program's end: to the change point
+        if (src.step < 0 || src.step >= static_cast<int>(steps_.size()))  // the program's end: to the change point
             return traverse && (at(m.end, change_) || gangMove(m, change_)) && (!afterUnplanned_ || clear(m));
-        const Step& s = plan_.steps[static_cast<std::size_t>(src.step)];
+        const Step& s = steps_[static_cast<std::size_t>(src.step)];
         const TurnStep* ts = turnOf(s);
         if (!ts) return false;
         const TurnPath& p = ts->path;
@@ -229,9 +255,10 @@ private:
         return true;
     }
 
-    const Plan& plan_;
+    const std::vector<Step>& steps_;
     const TapeReading& tape_;
     const Material& material_;
+    const PathProgram& which_;
     bool signedU_;  // FANUC's and Haas's U: negative in a bore
     ZR change_;
     bool gang_ = false;
@@ -241,17 +268,19 @@ private:
 
 }  // namespace
 
-bool readsBack(const Plan& plan)
-{
-    if (!plan.mmJob.bar) return true;
-    const Machine* m = findMachine(plan.mmJob.machine);
-    return !(m && m->layout.multiPath);
-}
-
-// The lathe's readBack (tape_readback.cpp calls it for a job with a bar).
+// The lathe's readBack (tape_readback.cpp calls it for a job with a bar):
+// a two-path lathe's programs (tape_readback_two_path.h), else the one tape.
 void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect, const PostOptions& post)
 {
-    TapeReading tape = readLatheTape(program.nc, dialect);
+    const Machine* m = findMachine(plan.mmJob.machine);
+    if (m && m->layout.multiPath) return readBackTwoPath(report, plan, dialect, post);
+    readBackLathePath(report, plan.steps, *plan.mmJob.bar, program, dialect, post, {});
+}
+
+TapeReading readBackLathePath(Report& report, const std::vector<Step>& steps, const BarStock& bar, const PostedProgram& program,
+                              const post::Dialect& dialect, const PostOptions& post, const PathProgram& which)
+{
+    TapeReading tape = readLatheTape(program.nc, dialect, which.waits);
     const double k = tape.inches ? 25.4 : 1.0;
     for (TapeCycle& c : tape.cycles) {
         for (auto& q : c.contour) q.x *= k, q.z *= k, q.cx *= k, q.cz *= k;
@@ -261,8 +290,8 @@ void readBackLathe(Report& report, const Plan& plan, const PostedProgram& progra
             *v *= k;
         if (c.crestX >= 0) c.crestX *= k;
     }
-    const Material material(report, *plan.mmJob.bar);
-    LatheJudge judge(plan, dialect, post, tape, material);
+    const Material material(report, bar);
+    LatheJudge judge(steps, dialect, post, tape, material, which);
     int added = 0;
     for (TapeMotion m : tape.motions) {
         if (added >= kMaxTapeFindings) break;
@@ -278,8 +307,9 @@ void readBackLathe(Report& report, const Plan& plan, const PostedProgram& progra
         if (still || judge.planned(m, src)) continue;
         Finding f;
         f.kind = FindingKind::UnplannedMove;
-        f.step = src.step;
+        f.step = src.step >= 0 ? src.step + which.stepOffset : src.step;
         f.line = m.line;
+        f.program = which.program;
         f.position = m.end;
         // A hundredth of a mm is a touch, not a cut.
         const double depth = judge.depth(m);
@@ -288,7 +318,8 @@ void readBackLathe(Report& report, const Plan& plan, const PostedProgram& progra
         report.findings.push_back(f);
         ++added;
     }
-    addUnreadTape(report, tape);
+    addUnreadTape(report, tape, which.program);
+    return tape;
 }
 
 }  // namespace taiwa::verify

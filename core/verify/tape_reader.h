@@ -51,6 +51,7 @@
 // are not read.
 #pragma once
 
+#include "machine/lathe_kinds.h"
 #include "model/geometry.h"
 #include "model/toolpath.h"
 #include "post/dialect.h"
@@ -107,11 +108,21 @@ struct TapeCycle {
     double xLow = 0.0, xHigh = 0.0, zLow = 0.0, zHigh = 0.0;  // the box its motions stay within
 };
 
+// A wait of a two-path lathe's program (readLatheTape with its wait codes):
+// its line, and what it meets on the other path: FANUC's wait M code, or
+// LinuxCNC's meeting number k (output 0 set to k's parity and the other
+// path's awaited at the same; -1 when they disagree: it meets nothing).
+struct TapeWait {
+    int line = 0;
+    int code = 0;
+};
+
 struct TapeReading {
     std::vector<TapeMotion> motions;
     std::vector<TapeCycle> cycles;  // a lathe tape's cycles (TapeMotion::cycle)
     bool inches = false;  // the tape's units
     int dwells = 0;       // dwell blocks
+    std::vector<TapeWait> waits;  // a two-path lathe's program's, in order
     // When the reader stops at a line it does not understand: "line 12:
     // why [the line]" and that line (motions then stop there).
     std::string error;
@@ -122,7 +133,10 @@ struct TapeReading {
 TapeReading readTape(const std::string& text, const post::Dialect& dialect);
 
 // A lathe tape of `dialect` (ISO: FANUC, Haas, LinuxCNC; SINUMERIK),
-// strict as readTape (tape_reader_lathe.h says what it accepts).
-TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect);
+// strict as readTape (tape_reader_lathe.h says what it accepts). With
+// `twoPath` (the wait codes of a two-path lathe's control), one path's
+// program of a balanced cut (post/two_path_post.h): its waits and dwells
+// too, the waits listed in TapeReading::waits.
+TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect, const WaitCodeRange* twoPath = nullptr);
 
 }  // namespace taiwa::verify

@@ -12,19 +12,21 @@ namespace taiwa::verify {
 
 namespace tape {
 
-LatheReader::LatheReader(const post::Dialect& d)
+LatheReader::LatheReader(const post::Dialect& d, const WaitCodeRange* twoPath)
     : family_(d.syntax == post::Syntax::Sinumerik ? Family::Siemens : d.macroSyntax == "fanuc" ? Family::Fanuc : Family::LinuxCnc),
       oneBlock_(d.oneBlockRoughingCycle),
       numbered_(family_ != Family::Siemens && !d.programNumberLine.empty()),
       points_(family_ != Family::Siemens && d.decimalPointAlways), diameter_(family_ == Family::Fanuc)
 {
     m_.framed = family_ != Family::Siemens && d.percentFraming;
+    if (twoPath && family_ != Family::Siemens) waits_ = *twoPath;
 }
 
 TapeReading LatheReader::read(const std::string& text)
 {
     return m_.readLines(text, [&](const std::string& raw) { line(raw); }, [&](const std::vector<std::string>& lines) {
         if (inSub_ >= 0) refuse("o" + std::to_string(inSub_) + " sub is never closed by its endsub");
+        if (inTimeout_ >= 0) refuse("o" + std::to_string(inTimeout_) + " if is never closed by its endif");
         if (pending_) refuse("G71's contour blocks N" + std::to_string(pendingFrom_) + " to N" + std::to_string(pendingTo_) + " never end");
         m_.endOfTape(lines);
     });
@@ -49,7 +51,9 @@ LatheReader::Block LatheReader::words(const std::string& s)
             continue;
         }
         if (codeWord(t, k, b.g, b.m, &b.n)) continue;
-        if (!letterWord(t, siemens ? "XZKFSTD" : "XZIKFSTDPQUWRHJA", "STH", b)) continue;
+        // L: a two-path LinuxCNC program's M66 (its wait's kind).
+        const bool l = waits_ && family_ == Family::LinuxCnc;
+        if (!letterWord(t, siemens ? "XZKFSTD" : l ? "XZIKFSTDPQUWRHJAL" : "XZIKFSTDPQUWRHJA", l ? "STHL" : "STH", b)) continue;
         const char letter = t[0];
         // A FANUC or a Haas reads a length without a point in least increments.
         if (points_ && std::string_view("XZIKUWRFD").find(letter) != std::string_view::npos && !b.point[letter])
@@ -64,6 +68,7 @@ void LatheReader::line(const std::string& raw)
     const std::string s = trim(m_.withoutComments(raw, family_ == Family::Siemens));
     if (s.empty() || m_.framingLine(s)) return;
     const auto tokens = splitWords(s);
+    if (timeout(s, tokens)) return;
     // LinuxCNC's contour subroutines: defined, not run.
     if (family_ == Family::LinuxCnc && tokens[0][0] == 'o') {
         const auto n = whole(std::string_view(tokens[0]).substr(1));
@@ -105,6 +110,7 @@ void LatheReader::line(const std::string& raw)
         m_.line = here;
         return;
     }
+    afterWait_ = false;
     block(b);
 }
 
@@ -199,6 +205,7 @@ void LatheReader::otherWords(const Block& b)
 
 void LatheReader::block(const Block& b)
 {
+    if (sync(b)) return;
     int cycle = 0;
     bool limit = false;
     const auto motion = gCodes(b, cycle, limit);
@@ -255,7 +262,7 @@ void LatheReader::move(const Block& b)
 
 }  // namespace tape
 
-TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect)
+TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect, const WaitCodeRange* twoPath)
 {
     if (dialect.syntax == post::Syntax::Klartext) {
         TapeReading r;
@@ -263,7 +270,7 @@ TapeReading readLatheTape(const std::string& text, const post::Dialect& dialect)
         r.errorLine = 1;
         return r;
     }
-    return tape::LatheReader(dialect).read(text);
+    return tape::LatheReader(dialect, twoPath).read(text);
 }
 
 }  // namespace taiwa::verify

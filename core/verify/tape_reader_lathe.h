@@ -26,6 +26,12 @@
 //   word), G700/G710, G40 G41 G42, G90, G95, the work offsets, G0 G1 X Z
 //   F, G2 G3 X Z CR= (negative: more than a half turn), G33 X Z K, G96 S
 //   LIMS=, G97 S, T D1, M3 M4 M5 M8 M9 M30.
+// A two-path lathe's program (post/two_path_post.h, read with the control's
+// wait codes; tape_reader_lathe_sync.cpp) may also have its waits and
+// dwells: FANUC and Haas a wait M code of the range, "G04 X<seconds>";
+// LinuxCNC "M64 P0" or "M65 P0", "M66 P0 L3|L4 Q<seconds>", then the
+// time-out's "o<n> if [#5399 LT 0]" whose branch holds M2 alone (not run:
+// it stops the program) and "o<n> endif", and "G4 P<seconds>".
 // A cycle is not expanded into its passes: it is one Cycle motion whose
 // words are read (TapeCycle) with the box its motions stay within: G71
 // between its start and its contour, grown by the allowance and the lift
@@ -44,7 +50,8 @@ namespace taiwa::verify::tape {
 
 class LatheReader {
 public:
-    explicit LatheReader(const post::Dialect& d);
+    // `twoPath`: a two-path lathe's program, its control's wait codes.
+    explicit LatheReader(const post::Dialect& d, const WaitCodeRange* twoPath = nullptr);
 
     TapeReading read(const std::string& text);
 
@@ -70,6 +77,11 @@ private:
     std::optional<Mode> gCodes(const Block& b, int& cycle, bool& limit);
     void otherWords(const Block& b);
     void move(const Block& b);
+
+    // A two-path program's (tape_reader_lathe_sync.cpp): a wait or a dwell
+    // acted on (true when the block was no more), the time-out's lines.
+    bool sync(const Block& b);
+    bool timeout(const std::string& s, const std::vector<std::string>& tokens);
 
     // The cycles (tape_reader_lathe_cycles.cpp).
     TapeCycle cycleHere(TapeCycle::Kind kind, const char* word) const;
@@ -101,6 +113,11 @@ private:
     std::optional<TapeCycle> pending_;
     int pendingFrom_ = 0, pendingTo_ = 0, pendingLine_ = 0;
     std::vector<Block> pendingBlocks_;
+    // A two-path program's: the wait codes, LinuxCNC's output 0 (-1: not
+    // set yet), the time-out's if open (-1: none), an M66 just read.
+    std::optional<WaitCodeRange> waits_;
+    int output_ = -1, inTimeout_ = -1;
+    bool afterWait_ = false;
 };
 
 }  // namespace taiwa::verify::tape

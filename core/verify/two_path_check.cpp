@@ -10,27 +10,27 @@
 
 namespace taiwa::verify {
 
+Result<BalancedRoughing> balancedRoughing(const Plan& plan, const Machine& machine)
+{
+    std::size_t index = plan.steps.size();
+    for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
+        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) index = k;
+    if (index == plan.steps.size())
+        return Failure{fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance", plan.mmJob.machine)};
+    const TurnStep& rough = *turnOf(plan.steps[index]);
+    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);  // as the export
+    auto cut = turning::balanceRoughing(rough.path, rough.cutting, machine, set);
+    if (!cut) return Failure{"balanced cut: " + cut.error()};
+    return BalancedRoughing{std::move(*cut), index, set.dwellRevolutions};
+}
+
 std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
 {
     const Machine* machine = findMachine(plan.mmJob.machine);
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
-    TwoPathCheck out;
-    const Step* rough = nullptr;
-    for (const Step& s : plan.steps)
-        if (!rough && s.machiningType == MachiningType::TurnRoughing && turnOf(s)) rough = &s;
-    if (!rough) {
-        out.findings.push_back(fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
-                                           plan.mmJob.machine));
-        return out;
-    }
-    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);  // as the export
-    const auto cut = turning::balanceRoughing(turnOf(*rough)->path, turnOf(*rough)->cutting, *machine, set);
-    if (!cut) {
-        out.findings.push_back("balanced cut: " + cut.error());
-        return out;
-    }
-    out = checkTimeline(runTimeline(*cut, *machine), set.dwellRevolutions);
-    return out;
+    const auto balanced = balancedRoughing(plan, *machine);
+    if (!balanced) return TwoPathCheck{{balanced.error()}};
+    return checkTimeline(runTimeline(balanced->cut, *machine), balanced->dwellRevolutions);
 }
 
 TwoPathCheck checkTimeline(const Timeline& t, double revolutions)

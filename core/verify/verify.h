@@ -27,9 +27,10 @@ enum class FindingKind {
     // The posted tape read back (tape_readback.h):
     UnplannedMove,   // a motion on the tape that the plan does not have (`part`: "rapid", "feed" or "arc")
     UnreadTape,      // a tape line its dialect's reader does not understand (`part`: why); the rest is unchecked
+    UnpairedWait,    // a two-path lathe's wait the other path's program does not meet at its turn (`part`: the wait)
 };
 // "gouge", "collision", "rapid-into-stock", "travel-limit", "rest-material",
-// "unplanned-move", "unread-tape"
+// "unplanned-move", "unread-tape", "unpaired-wait"
 const char* toKey(FindingKind k);
 
 struct Finding {
@@ -37,6 +38,7 @@ struct Finding {
     int step = -1;      // index into plan.steps (machining order); -1: the whole job
     int move = -1;      // index into the step's path; -1: the step as a whole
     int line = 0;       // 1-based line of the tape where the move is written; 0: not placed (placeOnTape)
+    int program = 0;    // a two-path lathe's program the line is on: 1 STEM.p1, 2 STEM.p2 …; 0: the one tape
     // The worst point [mm]: milling, a cell's centre and its height after
     // the move; a lathe job, {x: the diameter (as the tape writes X), y: 0, z}.
     Point3 position{};

@@ -5485,6 +5485,14 @@ Theirs: %6</source>
             <translation>テープを読み戻せないため、ここから先は検証されていません: {0}</translation>
         </message>
         <message>
+            <source>the wait {} is not met by the other path's program at its turn: both paths would stop there (a deadlock)</source>
+            <translation>待ち {} に相手の系統のプログラムが同じ順番で応じません: 両系統がそこで止まります (デッドロック)</translation>
+        </message>
+        <message>
+            <source>{}: {}, program p{} line {}</source>
+            <translation>{}: {}、プログラム p{} の {} 行目</translation>
+        </message>
+        <message>
             <source>{}: {}, move {}, tape line {}</source>
             <translation>{}: {}、移動 {}、テープ {} 行目</translation>
         </message>

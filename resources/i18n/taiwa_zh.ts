@@ -5485,6 +5485,14 @@ Theirs: %6</source>
             <translation>程序带无法读回，此后的部分未经验证: {0}</translation>
         </message>
         <message>
+            <source>the wait {} is not met by the other path's program at its turn: both paths would stop there (a deadlock)</source>
+            <translation>等待 {} 在另一路径的程序中没有同序的对应等待：两个路径都会停在这里（死锁）</translation>
+        </message>
+        <message>
+            <source>{}: {}, program p{} line {}</source>
+            <translation>{}：{}，程序 p{} 第 {} 行</translation>
+        </message>
+        <message>
             <source>{}: {}, move {}, tape line {}</source>
             <translation>{}：{}，移动 {}，程序第 {} 行</translation>
         </message>
