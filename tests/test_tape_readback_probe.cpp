@@ -194,6 +194,11 @@ private slots:
         QVERIFY2(found.front().fatal(), qPrintable(described(found, plan)));
         QCOMPARE(found.front().programFile, std::string("x.u1.probe.nc"));
         QVERIFY(described(found, plan).startsWith(QString("x.u1.probe.nc: the tape has a rapid the plan does not")));
+        // The block 25 mm high on the table: the ball's centre 48 mm down, 40 mm inside the block's sides.
+        if (sample == "probe-vise-block.taiwa" && dialect == "linuxcnc")
+            QVERIFY2(described(found, plan).startsWith("x.u1.probe.nc: the tape has a rapid the plan does not, to X0.000 Y0.000 "
+                                                       "Z-50.000, 42.000 mm into stock, line 7\n"),
+                     qPrintable(described(found, plan)));
     }
 
     // A shop's program-number line that moves, from a dialect built in

@@ -43,6 +43,8 @@ constexpr int kMaxTapeFindings = 50;
 // A two-path lathe's programs are posted apart (post/two_path_post.h):
 // for such a job `program` is not read, its programs are (readBackTwoPath,
 // tape_readback_two_path.h).
+// A milling job's probing units' programs are read back by readBackProbing
+// (below).
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 

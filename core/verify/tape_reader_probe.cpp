@@ -28,7 +28,7 @@ std::string lower(std::string s)
 class ProbeControl {
 public:
     ProbeControl(const post::Dialect& d, const Point3& start, const ProbeTouch& touch)
-        : fanuc_(d.macroSyntax == "fanuc"), params_(fanuc_), touch_(touch)
+        : fanuc_(d.macroSyntax == "fanuc"), numbered_(!d.programNumberLine.empty()), params_(fanuc_), touch_(touch)
     {
         m_.framed = d.percentFraming;
         m_.at = start;
@@ -75,7 +75,7 @@ private:
             return;
         }
         if (m_.framingLine(s)) return;
-        if (!begun_ && fanuc_ && s.size() > 1 && (s[0] == 'O') && whole(s.substr(1))) return;  // the O-number
+        if (!begun_ && numbered_ && s.size() > 1 && (s[0] == 'O') && whole(s.substr(1))) return;  // the O-number
         begun_ = true;
         std::string rest = s;
         int label = -1;
@@ -169,7 +169,7 @@ private:
     }
 
     Machine m_;
-    bool fanuc_;
+    bool fanuc_, numbered_;
     Params params_;
     const ProbeTouch& touch_;
     bool begun_ = false, incremental_ = false;
