@@ -235,6 +235,9 @@ private slots:
         QTest::newRow("fanuc short") << "fanuc" << "#105 = [#100 + 52.]" << "#105 = [#100 + 63.]" << "G31 X#105 F150.\nN270"
                                      << "probing move that touches nothing";
         QTest::newRow("fanuc top") << "fanuc" << "#105 = [#102 - 14.]" << "#105 = [#102 - 20.]" << "G31 Z#105" << "probing move";
+        // Right from the centre, wrong from a start off it: the centre found as the sum, not the mean.
+        QTest::newRow("linuxcnc centre") << "linuxcnc" << "#<cx> = [[#<xm> + #<xp>] / 2]" << "#<cx> = [#<xm> + #<xp>]"
+                                         << "G55 G0 X0 Y0" << "rapid";
     }
     void changedSearchFound()
     {

@@ -144,6 +144,34 @@ void readingEnd(std::vector<Finding>& out, const ProbeReading& r, const std::str
     for (Finding& f : report.findings) out.push_back((f.programFile = program, f));
 }
 
+// The cycle again from a start off the centre (half the distance it may
+// be off, in X and Y) with the part away from the active work offset's
+// origin (every offset at Y12.25 Z-100): each touch made, nothing
+// into the part, and the program's last motion over the true centre,
+// which only its arithmetic finds from there.
+void offCentre(std::vector<Finding>& out, const WorkSetup& s, const Part& part, const std::string& text, const post::Dialect& dialect,
+               const std::string& program)
+{
+    const Point3 start{0.5 * s.maxOffCentre, -0.5 * s.maxOffCentre, s.clearance};
+    const ProbeReading r = readProbingProgram(
+        text, dialect, start, [&](const Point3& a, const Point3& b) { return part.touch(a, b); }, {-37.5, 12.25, -100.0});
+    const double k = r.tape.inches ? 25.4 : 1.0;
+    for (std::size_t i = 0; i < r.tape.motions.size(); ++i) {
+        TapeMotion m = r.tape.motions[i];
+        m.start = {m.start.x * k, m.start.y * k, m.start.z * k}, m.end = {m.end.x * k, m.end.y * k, m.end.z * k};
+        const double depth = part.depth(m.start, m.end);
+        const auto probe = std::find(r.probes.begin(), r.probes.end(), static_cast<int>(i));
+        const Point3 sent = probe == r.probes.end() ? Point3{} : r.targets[static_cast<std::size_t>(probe - r.probes.begin())];
+        const bool last = i + 1 == r.tape.motions.size() && r.stop.empty() && r.tape.error.empty();
+        const bool centred = std::abs(m.end.x) <= kTolerance && std::abs(m.end.y) <= kTolerance;
+        if (probe != r.probes.end() && near(m.end, {sent.x * k, sent.y * k, sent.z * k}) && !part.touch(m.start, m.end))
+            out.push_back(moveFinding(m, "probing move that touches nothing", depth, program));
+        else if (depth > kTouch || (last && !centred))
+            out.push_back(moveFinding(m, m.kind == TapeMotion::Traverse ? "rapid" : "feed", depth, program));
+    }
+    readingEnd(out, r, program);
+}
+
 }  // namespace
 
 std::vector<Finding> probingFindings(const WorkSetup& s, double stockHeight, const std::string& text, const post::Dialect& dialect,
@@ -178,6 +206,7 @@ std::vector<Finding> probingFindings(const WorkSetup& s, double stockHeight, con
             out.push_back(moveFinding(m, m.kind == TapeMotion::Traverse ? "rapid" : "feed", depth, program));
     }
     readingEnd(out, r, program);
+    if (out.empty()) offCentre(out, s, part, text, dialect, program);
     return out;
 }
 

@@ -27,14 +27,14 @@ std::string lower(std::string s)
 
 class ProbeControl {
 public:
-    ProbeControl(const post::Dialect& d, const Point3& start, const ProbeTouch& touch)
+    ProbeControl(const post::Dialect& d, const Point3& start, const Point3& offsets, const ProbeTouch& touch)
         : fanuc_(d.macroSyntax == "fanuc"), numbered_(!d.programNumberLine.empty()), params_(fanuc_), touch_(touch)
     {
         m_.framed = d.percentFraming;
         m_.at = start;
-        for (int p = 1; p <= 9; ++p) setOffset(p, false, {0, 0, 0});
+        for (int p = 1; p <= 9; ++p) setOffset(p, false, offsets);
         if (fanuc_)
-            for (int p = 1; p <= 48; ++p) setOffset(p, true, {0, 0, 0});
+            for (int p = 1; p <= 48; ++p) setOffset(p, true, offsets);
         current();
     }
 
@@ -290,9 +290,10 @@ void ProbeControl::motion(const std::map<char, double>& axes, bool probe)
 
 }  // namespace
 
-ProbeReading readProbingProgram(const std::string& text, const post::Dialect& dialect, const Point3& start, const ProbeTouch& touch)
+ProbeReading readProbingProgram(const std::string& text, const post::Dialect& dialect, const Point3& start, const ProbeTouch& touch,
+                                const Point3& offsets)
 {
-    return ProbeControl(dialect, start, touch).read(text);
+    return ProbeControl(dialect, start, offsets, touch).read(text);
 }
 
 }  // namespace taiwa::verify

@@ -33,8 +33,8 @@ struct ProbeReading {
 
 // The program `text` of `dialect` (ISO; FANUC's macros when its
 // macroSyntax is "fanuc"), started with the tool tip at `start` (machine
-// coordinates, mm) with every work offset zero.
+// coordinates, mm) with every work offset `offsets` (X Y Z, mm).
 ProbeReading readProbingProgram(const std::string& text, const post::Dialect& dialect, const Point3& start,
-                                const ProbeTouch& touch);
+                                const ProbeTouch& touch, const Point3& offsets = {});
 
 }  // namespace taiwa::verify
