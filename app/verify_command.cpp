@@ -73,6 +73,7 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
             nlohmann::ordered_json e;
             e["kind"] = verify::toKey(f.kind);
             if (!f.part.empty()) e["part"] = f.part;
+            if (!f.programFile.empty()) e["program"] = f.programFile;  // a probing unit's STEM.uN.probe.nc
             e["fatal"] = f.fatal();
             e["step"] = f.step >= 0 ? nlohmann::ordered_json(f.step + 1) : nlohmann::ordered_json();
             e["unit"] = f.step >= 0 ? nlohmann::ordered_json(plan.steps[static_cast<std::size_t>(f.step)].unit + 1)

@@ -43,11 +43,9 @@ Offset offsetOf(const post::Dialect& d, const std::string& requested)
     return o;
 }
 
-const post::Dialect& dialectOf(const PostOptions& o)
+void mayPost(const post::Dialect& d)
 {
-    const post::Dialect* d = &post::dialectNamed(o.dialect);
-    if (const auto can = post::canPost(*d, post::Task::ProbingPrograms); !can) throw Refusal(can.error());
-    return *d;
+    if (const auto can = post::canPost(d, post::Task::ProbingPrograms); !can) throw Refusal(can.error());
 }
 
 // A probing program on the block tape, which numbers its blocks where the
@@ -102,11 +100,13 @@ void footer(Program& p, const post::Dialect& d, bool fanuc)
 
 }  // namespace
 
-std::string settingProgram(const WorkSetup& s, const PostOptions& o)
+std::string settingProgram(const WorkSetup& s, const PostOptions& o) { return settingProgram(s, o, post::dialectNamed(o.dialect)); }
+
+std::string settingProgram(const WorkSetup& s, const PostOptions& o, const post::Dialect& d)
 {
     if (!s.measured) throw std::logic_error("no measured centre to set");  // the caller sets only a measured one
-    const post::Dialect& d = dialectOf(o);
-    const bool fanuc = post::findDialect(o.dialect) && post::findDialect(o.dialect)->macroSyntax == "fanuc";
+    mayPost(d);
+    const bool fanuc = d.macroSyntax == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
     const WorkSetup::Measured& m = *s.measured;
     Program p(d);
@@ -225,10 +225,12 @@ void endFanuc(Program& p, const post::Dialect& d, const CycleSyntax& v, const Of
 
 }  // namespace
 
-std::string probingProgram(const WorkSetup& s, const PostOptions& o)
+std::string probingProgram(const WorkSetup& s, const PostOptions& o) { return probingProgram(s, o, post::dialectNamed(o.dialect)); }
+
+std::string probingProgram(const WorkSetup& s, const PostOptions& o, const post::Dialect& d)
 {
-    const post::Dialect& d = dialectOf(o);
-    const bool fanuc = post::findDialect(o.dialect) && post::findDialect(o.dialect)->macroSyntax == "fanuc";
+    mayPost(d);
+    const bool fanuc = d.macroSyntax == "fanuc";
     const Offset off = offsetOf(d, o.workOffset);
     const CycleSyntax v = fanuc ? fanucSyntax(s) : linuxcncSyntax();
     Program p(d);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "model/setup.h"
+#include "post/dialect.h"
 #include "post/post.h"
 
 #include <string>
@@ -21,5 +22,10 @@ std::string settingProgram(const WorkSetup& setup, const PostOptions& options);
 
 // Throws as settingProgram does.
 std::string probingProgram(const WorkSetup& setup, const PostOptions& options);
+
+// The same in `dialect` (options.dialect not looked up): one not in the
+// library, as the tape read-back judges it (verify/tape_readback.h).
+std::string settingProgram(const WorkSetup& setup, const PostOptions& options, const post::Dialect& dialect);
+std::string probingProgram(const WorkSetup& setup, const PostOptions& options, const post::Dialect& dialect);
 
 }  // namespace taiwa

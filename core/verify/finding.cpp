@@ -129,6 +129,9 @@ std::string describe(const Finding& f, const Plan& plan)
                            f.part);
         break;
     }
+    // A probing program's: the program and its line.
+    if (!f.programFile.empty())
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, line {}"), f.programFile, what, f.line);
     // Where on the tape, when known: one template for each case, so that the station translates the whole.
     if (f.program > 0 && f.line > 0)
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, program p{} line {}"), where, what, f.program, f.line);

@@ -242,6 +242,7 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
         ++added;
     }
     addUnreadTape(report, tape);
+    if (!plan.setups.empty()) readBackProbing(report, plan, dialect, post);
 }
 
 void addUnreadTape(Report& report, const TapeReading& tape, int program)

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "model/plan.h"
+#include "model/setup.h"
 #include "post/dialect.h"
 #include "post/post.h"
 #include "verify/verify.h"
@@ -42,6 +43,8 @@ constexpr int kMaxTapeFindings = 50;
 // A two-path lathe's programs are posted apart (post/two_path_post.h):
 // for such a job `program` is not read, its programs are (readBackTwoPath,
 // tape_readback_two_path.h).
+// A milling job's probing units' programs are read back by readBackProbing
+// (below).
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 
@@ -64,6 +67,27 @@ struct PathProgram {
 // reading returned (its waits).
 TapeReading readBackLathePath(Report& report, const std::vector<Step>& steps, const BarStock& bar, const PostedProgram& program,
                               const post::Dialect& dialect, const PostOptions& post, const PathProgram& which);
+
+// readBack of a milling job's probing units (tape_readback_probe.cpp),
+// which readBack calls: each unit's setting program (when it has measured
+// touches) and probing cycle, posted in mm as export posts them, read back
+// against the unit's nominal part; the findings name the program
+// (Finding::programFile: "STEM.u1.probe.nc", "u1.probe.nc" without a stem) and
+// its line. A dialect that writes no probing programs adds nothing.
+void readBackProbing(Report& report, const Plan& plan, const post::Dialect& dialect, const PostOptions& post);
+
+// The findings of reading back one unit's probing cycle `text` (in
+// `dialect`), `program` its file, `stockHeight` [mm] where the table is
+// below the top face: the touches made on the unit's nominal part, its
+// rapids out of it (grown by the stylus ball) and at the cycle's places,
+// each touch's target and point of touch the planned ones.
+std::vector<Finding> probingFindings(const WorkSetup& setup, double stockHeight, const std::string& text,
+                                     const post::Dialect& dialect, const std::string& program);
+
+// The same of a unit's setting program: its motions at the machine's top,
+// the last one to the measured centre, and no probing move.
+std::vector<Finding> settingFindings(const WorkSetup& setup, double stockHeight, const std::string& text,
+                                     const post::Dialect& dialect, const std::string& program);
 
 // The reading's "unread tape" finding, where the reader stopped (none when
 // it read the tape through), on `program` (Finding::program): the milling

@@ -47,8 +47,9 @@
 // take that distance from a machine setting, not from the tape. What a
 // cycle does beyond this (dwells, degression, chip breaking, relative
 // depths, left-hand tapping, a lift off the wall) is refused rather than
-// guessed. Lathe tapes are read by readLatheTape (below); probing programs
-// are not read.
+// guessed. Lathe tapes are read by readLatheTape (below); probing programs,
+// which compute their moves on the control, by readProbingProgram
+// (tape_reader_probe.h).
 #pragma once
 
 #include "machine/lathe_kinds.h"

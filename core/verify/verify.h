@@ -49,6 +49,9 @@ struct Finding {
     // (lathe: the area of the half-section) [mm²].
     double area = 0.0;
     std::string part;   // collisions: "shank" or "holder"; travel limits: the axis "x", "y", "z"
+    // A probing unit's program read back (tape_readback_probe.cpp): its
+    // file as export names it ("STEM.u1.probe.nc"), `line` a line of it.
+    std::string programFile;
     // A gouge, a collision (a rapid into stock is one, at rapid speed), a
     // travel limit, a tape that cannot be read back or a move the plan does
     // not have that goes into stock: the tape must not run. Material left,

@@ -5489,6 +5489,10 @@ Theirs: %6</source>
             <translation>待ち {} に相手の系統のプログラムが同じ順番で応じません: 両系統がそこで止まります (デッドロック)</translation>
         </message>
         <message>
+            <source>{}: {}, line {}</source>
+            <translation>{}: {}、{} 行目</translation>
+        </message>
+        <message>
             <source>{}: {}, program p{} line {}</source>
             <translation>{}: {}、プログラム p{} の {} 行目</translation>
         </message>

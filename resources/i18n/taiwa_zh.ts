@@ -5489,6 +5489,10 @@ Theirs: %6</source>
             <translation>等待 {} 在另一路径的程序中没有同序的对应等待：两个路径都会停在这里（死锁）</translation>
         </message>
         <message>
+            <source>{}: {}, line {}</source>
+            <translation>{}：{}，第 {} 行</translation>
+        </message>
+        <message>
             <source>{}: {}, program p{} line {}</source>
             <translation>{}：{}，程序 p{} 第 {} 行</translation>
         </message>
