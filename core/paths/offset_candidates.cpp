@@ -1,9 +1,7 @@
-// The candidates of an exact offset, their splits, and the boundary's grid
-// (offset_candidates.h).
+// The candidates of an exact offset and their splits (offset_candidates.h).
 #include "paths/offset_candidates.h"
 
 #include <algorithm>
-#include <limits>
 #include <numbers>
 
 namespace taiwa::paths::offset {
@@ -213,69 +211,6 @@ std::vector<std::vector<Split>> splitAll(const std::vector<Element>& elems)
         sp = std::move(unique);
     }
     return splits;
-}
-
-Nearby::Nearby(const std::vector<const ContourSegment*>& segs, double reach) : segs_(segs)
-{
-    Box all{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
-            {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
-    boxes_.reserve(segs.size());
-    for (const auto* s : segs) {
-        const Box2 b = bounds(Contour{{*s}, false});
-        boxes_.push_back(b);
-        all.min = {std::min(all.min.x, b.min.x), std::min(all.min.y, b.min.y)};
-        all.max = {std::max(all.max.x, b.max.x), std::max(all.max.y, b.max.y)};
-    }
-    origin_ = all.min;
-    const double extent = std::max({all.max.x - all.min.x, all.max.y - all.min.y, 1e-6});
-    // Cells of a quarter of the reach (no more than 256 a side): a query
-    // looks at the cells its disc touches, not at a block three reaches wide.
-    cell_ = std::max({reach / 4.0, extent / 256.0, 1e-6});
-    nx_ = static_cast<int>((all.max.x - all.min.x) / cell_) + 1;
-    ny_ = static_cast<int>((all.max.y - all.min.y) / cell_) + 1;
-    cells_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), {});
-    for (std::size_t k = 0; k < segs.size(); ++k) {
-        const auto [x0, y0] = cellOf(boxes_[k].min);
-        const auto [x1, y1] = cellOf(boxes_[k].max);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) cells_[index(x, y)].push_back(static_cast<std::uint32_t>(k));
-    }
-    seen_.assign(segs.size(), 0);
-}
-
-
-bool Nearby::anyNearer(Point2 p, double limit)
-{
-    ++stamp_;
-    const auto [x0, y0] = cellOf({p.x - limit, p.y - limit});
-    const auto [x1, y1] = cellOf({p.x + limit, p.y + limit});
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-            // A cell wholly farther than the limit holds nothing nearer.
-            const double cx = origin_.x + x * cell_, cy = origin_.y + y * cell_;
-            const double dx = std::max({cx - p.x, 0.0, p.x - cx - cell_});
-            const double dy = std::max({cy - p.y, 0.0, p.y - cy - cell_});
-            if (dx * dx + dy * dy >= limit * limit) continue;
-            for (std::uint32_t k : cells_[index(x, y)]) {
-                if (seen_[k] == stamp_) continue;
-                seen_[k] = stamp_;
-                // Its bounds no nearer than the limit (and a nanometre, for
-                // the bounds' own rounding): nor is the segment.
-                const Box2& b = boxes_[k];
-                const double bx = std::max({b.min.x - p.x, 0.0, p.x - b.max.x});
-                const double by = std::max({b.min.y - p.y, 0.0, p.y - b.max.y});
-                if (bx * bx + by * by >= (limit + 1e-9) * (limit + 1e-9)) continue;
-                if (distance(p, segs_[k]->nearest(p)) < limit) return true;
-            }
-        }
-    return false;
-}
-
-
-std::pair<int, int> Nearby::cellOf(Point2 p) const
-{
-    const auto clampi = [](double v, int hi) { return std::clamp(static_cast<int>(std::floor(v)), 0, hi - 1); };
-    return {clampi((p.x - origin_.x) / cell_, nx_), clampi((p.y - origin_.y) / cell_, ny_)};
 }
 
 }  // namespace taiwa::paths::offset

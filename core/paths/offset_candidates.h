@@ -1,16 +1,14 @@
 // The candidate elements of an exact inward offset (region_offset.h) and
 // what is asked of them: each boundary segment's parallel and an arc round
 // each corner that points into the pocket (addCandidates), split where they
-// cross one another (splitAll, a sweep over their bounding boxes), and the
-// boundary's segments in a grid to tell whether a point of a piece lies
-// nearer than the offset to the boundary (Nearby). Internal to core/paths/:
-// offsetRegion and rollsAround build on it.
+// cross one another (splitAll, a sweep over their bounding boxes). Which
+// pieces lie nearer than the offset to the boundary is paths/nearby.h's.
+// Internal to core/paths/: offsetRegion and rollsAround build on it.
 #pragma once
 
 #include "model/contour.h"
 
 #include <cmath>
-#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -49,27 +47,5 @@ void addCandidates(const Contour& loop, double d, std::vector<Element>& out);
 
 // Each element's splits, its ends included, in order along it.
 std::vector<std::vector<Split>> splitAll(const std::vector<Element>& elems);
-
-// The boundary segments in a grid, to find those near a point.
-class Nearby {
-public:
-    Nearby(const std::vector<const ContourSegment*>& segs, double reach);
-    // True when some boundary segment lies nearer than `limit` to p
-    // (limit <= the reach given).
-    bool anyNearer(Point2 p, double limit);
-
-private:
-    std::pair<int, int> cellOf(Point2 p) const;
-    std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(x); }
-
-    const std::vector<const ContourSegment*>& segs_;
-    std::vector<Box2> boxes_;  // each segment's bounds: a cheap test before its exact distance
-    Point2 origin_{};
-    double cell_ = 1.0;
-    int nx_ = 1, ny_ = 1;
-    std::vector<std::vector<std::uint32_t>> cells_;
-    std::vector<std::uint32_t> seen_;
-    std::uint32_t stamp_ = 0;
-};
 
 }  // namespace taiwa::paths::offset

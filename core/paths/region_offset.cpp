@@ -8,6 +8,7 @@
 #include "paths/region_offset.h"
 
 #include "model/winding.h"
+#include "paths/nearby.h"
 #include "paths/offset_candidates.h"
 
 #include <algorithm>
@@ -185,7 +186,7 @@ Result<std::vector<Region>> offsetRegion(const Region& input, double d)
     std::vector<const ContourSegment*> boundary;
     for (const auto* l : loops)
         for (const auto& s : l->segments) boundary.push_back(&s);
-    Nearby nearby(boundary, d);
+    Nearby nearby(boundary);
 
     std::vector<Piece> pieces;
     for (std::size_t i = 0; i < elems.size(); ++i) {
@@ -229,7 +230,7 @@ bool rollsAround(const Region& input, double d, double tolerance)
     std::vector<const ContourSegment*> boundary;
     for (const auto* l : loops)
         for (const auto& s : l->segments) boundary.push_back(&s);
-    Nearby nearby(boundary, d);
+    Nearby nearby(boundary);
     for (std::size_t i = 0; i < elems.size(); ++i) {
         const auto& sp = splits[i];
         for (std::size_t k = 0; k + 1 < sp.size(); ++k) {
