@@ -12,8 +12,7 @@ void Parser::point(Definition& d)
         d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number")));
         comma();
         d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the y coordinate)")));
-    } else if (atWord("CENTER")) {  // POINT/CENTER, C1
-        advance();
+    } else if (accept("CENTER")) {  // POINT/CENTER, C1
         d.method = Method::PointCenter;
         comma();
         d.refs.push_back(ref(Kind::Circle, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a circle name")));
@@ -23,9 +22,8 @@ void Parser::point(Definition& d)
         if (!atWord("INTOF")) {
             d.modifiers.push_back(modifier(true, kXY));
             comma();
-            if (!atWord("INTOF")) expected("INTOF");
         }
-        advance();
+        word("INTOF");
         comma();
         Kind k1 = Kind::Line;
         Kind k2 = Kind::Line;
@@ -46,8 +44,7 @@ void Parser::point(Definition& d)
 
 void Parser::line(Definition& d)
 {
-    if (atWord("PARLEL")) {  // LINE/PARLEL, L1, XLARGE, 5
-        advance();
+    if (accept("PARLEL")) {  // LINE/PARLEL, L1, XLARGE, 5
         d.method = Method::LineParallel;
         comma();
         d.refs.push_back(ref(Kind::Line, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a line name")));
@@ -63,8 +60,7 @@ void Parser::line(Definition& d)
     } else if (atName()) {
         d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));
         comma();
-        if (atWord("ATANGL")) {  // LINE/P1, ATANGL, 30
-            advance();
+        if (accept("ATANGL")) {  // LINE/P1, ATANGL, 30
             d.method = Method::LineAtAngle;
             comma();
             d.numbers.push_back(number(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a number (the angle in degrees)")));
@@ -93,8 +89,7 @@ void Parser::tangentCircle(Definition& d)
 
 void Parser::circle(Definition& d)
 {
-    if (atWord("CENTER")) {  // CIRCLE/CENTER, P1, RADIUS, 5
-        advance();
+    if (accept("CENTER")) {  // CIRCLE/CENTER, P1, RADIUS, 5
         d.method = Method::CircleCenterRadius;
         comma();
         d.refs.push_back(ref(Kind::Point, TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point name")));

@@ -132,6 +132,14 @@ private:
 
     bool atWord(std::string_view w) const { return cur_.tok == Tok::Word && cur_.text == w; }
 
+    // Past the word w when it stands next; whether it did.
+    bool accept(std::string_view w)
+    {
+        if (!atWord(w)) return false;
+        advance();
+        return true;
+    }
+
     std::optional<Modifier> atModifier() const
     {
         if (cur_.tok != Tok::Word) return std::nullopt;
@@ -150,8 +158,7 @@ private:
 
     void word(const char* w)
     {
-        if (!atWord(w)) expected(w);
-        advance();
+        if (!accept(w)) expected(w);
     }
 
     Modifier modifier(bool xy, const char* what)
@@ -230,20 +237,16 @@ private:
         advance();
         if (cur_.tok != Tok::Equals) expected("'='");
         advance();
-        if (atWord("POINT")) {
-            advance();
+        if (accept("POINT")) {
             slash();
             point(d);
-        } else if (atWord("LINE")) {
-            advance();
+        } else if (accept("LINE")) {
             slash();
             line(d);
-        } else if (atWord("CIRCLE")) {
-            advance();
+        } else if (accept("CIRCLE")) {
             slash();
             circle(d);
-        } else if (atWord("CONTOUR")) {
-            advance();
+        } else if (accept("CONTOUR")) {
             slash();
             contour(d);
         } else {

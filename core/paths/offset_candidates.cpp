@@ -12,6 +12,9 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 Point2 leftNormal(Point2 t) { return {-t.y, t.x}; }
 
+// The point at angle `ang` on the circle round c of radius r.
+Point2 onCircle(Point2 c, double r, double ang) { return {c.x + r * std::cos(ang), c.y + r * std::sin(ang)}; }
+
 double normAngle(double a)
 {
     a = std::fmod(a, kTwoPi);
@@ -26,8 +29,7 @@ Point2 Element::at(double s) const
         const double l = len();
         return l > 0.0 ? a + (s / l) * (b - a) : a;
     }
-    const double ang = a0 + (sweep > 0.0 ? 1.0 : -1.0) * s / r;
-    return {c.x + r * std::cos(ang), c.y + r * std::sin(ang)};
+    return onCircle(c, r, a0 + (sweep > 0.0 ? 1.0 : -1.0) * s / r);
 }
 
 double Element::paramOf(Point2 p) const
@@ -64,7 +66,7 @@ Box boxOf(const Element& e)
         const double ang = q * std::numbers::pi / 2.0;
         const double turned = normAngle(e.sweep > 0.0 ? ang - e.a0 : e.a0 - ang);
         if (e.closed || turned <= std::abs(e.sweep)) {
-            const Point2 p{e.c.x + e.r * std::cos(ang), e.c.y + e.r * std::sin(ang)};
+            const Point2 p = onCircle(e.c, e.r, ang);
             b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y)};
             b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y)};
         }
@@ -72,26 +74,13 @@ Box boxOf(const Element& e)
     return b;
 }
 
-Element lineElement(Point2 a, Point2 b)
-{
-    Element e;
-    e.a = a;
-    e.b = b;
-    return e;
-}
+Element lineElement(Point2 a, Point2 b) { return {.a = a, .b = b}; }
 
 Element arcElement(Point2 c, double r, double a0, double sweep, bool closed)
 {
-    Element e;
-    e.arc = true;
-    e.closed = closed;
-    e.c = c;
-    e.r = r;
-    e.a0 = a0;
-    e.sweep = sweep;
-    e.a = {c.x + r * std::cos(a0), c.y + r * std::sin(a0)};
-    e.b = closed ? e.a : Point2{c.x + r * std::cos(a0 + sweep), c.y + r * std::sin(a0 + sweep)};
-    return e;
+    const Point2 a = onCircle(c, r, a0);
+    return {.arc = true, .closed = closed, .a = a, .b = closed ? a : onCircle(c, r, a0 + sweep), .c = c, .r = r, .a0 = a0,
+            .sweep = sweep};
 }
 
 }  // namespace

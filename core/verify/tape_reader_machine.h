@@ -326,17 +326,9 @@ private:
     void record(TapeMotion::Kind kind, const Point3& to, double feedRate, Point2 centre, int rotation)
     {
         if (!unitsStated) refuse("a move before the units are stated");
-        TapeMotion c;
-        c.kind = kind;
-        c.start = at;
-        c.end = to;
-        c.centre = centre;
-        c.rotation = rotation;
-        c.feed = kind == TapeMotion::Traverse ? 0.0 : feedRate;
-        c.step = step;
-        c.tool = tool;
-        c.line = line;
-        out.motions.push_back(c);
+        out.motions.push_back({.kind = kind, .start = at, .end = to, .centre = centre, .rotation = rotation,
+                               .feed = kind == TapeMotion::Traverse ? 0.0 : feedRate, .step = step, .tool = tool,
+                               .line = line});
         at = to;
     }
 };

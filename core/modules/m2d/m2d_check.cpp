@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace taiwa::check {
 
@@ -92,22 +95,19 @@ bool insideStock(const M2DPocket& p, const Stock& s)
            p.corner.x + p.lengthX <= s.x + s.width + kTolerance && p.corner.y + p.lengthY <= s.y + s.length + kTolerance;
 }
 
+// Tool room of the steps the codes ask for: roughing (with U 1 the floor
+// too) within r1 − α2, and with U 1 the wall within r1.
 void checkToolRoom(const M2DPocket& p, const TechnologyData& tech, Reporter& r)
 {
-    RoomQuery rough;
-    rough.stepKeys = {"roughing"};
-    if (p.toolUse == 1) rough.stepKeys.push_back("floor");
-    rough.label = "r1 − α2";
-    rough.available = p.cornerRadius - tech.alpha2;
-    rough.cornerRadius = p.cornerRadius;
-    checkRoom(rough, p.tools, r.unitNo, "M2D", r.ctx, r.out);
-    if (p.toolUse != 1) return;
-    RoomQuery wall;
-    wall.stepKeys = {"wall"};
-    wall.label = "r1";
-    wall.available = p.cornerRadius;
-    wall.cornerRadius = p.cornerRadius;
-    checkRoom(wall, p.tools, r.unitNo, "M2D", r.ctx, r.out);
+    const auto room = [&](std::vector<std::string> stepKeys, const char* label, double available) {
+        const RoomQuery q{.stepKeys = std::move(stepKeys), .label = label, .available = available,
+                          .cornerRadius = p.cornerRadius};
+        checkRoom(q, p.tools, r.unitNo, "M2D", r.ctx, r.out);
+    };
+    const bool finishes = p.toolUse == 1;
+    room(finishes ? std::vector<std::string>{"roughing", "floor"} : std::vector<std::string>{"roughing"}, "r1 − α2",
+         p.cornerRadius - tech.alpha2);
+    if (finishes) room({"wall"}, "r1", p.cornerRadius);
 }
 
 }  // namespace
