@@ -141,11 +141,11 @@ int exportJob(const Options& o, int& argc, char** argv)
     // are any, and then written as it is.
     const std::string stem = std::filesystem::path(o.job).stem().string();
     const int programNumber = ExportOptions{}.programNumber;
-    std::optional<PostedProgram> tape;
+    std::optional<PostedJob> posted;
     verify::Report checked;
     bool reused = false;
     try {
-        checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), tape, &reused);
+        checked = verified(l.plan, o, postOptions(l.plan, dialect, o.units, programNumber, stem), posted, &reused);
     } catch (const Refusal& e) {  // --resolution too fine for this stock
         std::cerr << "taiwa: export: " << e.what() << '\n';
         return kInputErrors;
@@ -171,7 +171,7 @@ int exportJob(const Options& o, int& argc, char** argv)
     e.jobFile = fileName(o.job);
     e.programNumber = programNumber;
     e.verificationFaults = faults;
-    e.posted = tape ? &*tape : nullptr;
+    e.posted = posted ? &*posted : nullptr;
     e.toolsOrigin = l.toolsOrigin;
     if (o.pictures) picturesFor(l.plan, e);
     const auto written = exportPlan(l.plan, o.out, stem, e);

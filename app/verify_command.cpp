@@ -19,7 +19,7 @@
 namespace taiwa::app {
 
 // The plan verified, its findings placed on the tape of `dialect`.
-verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape,
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedJob>& posted,
                         bool* reused)
 {
     verify::Options v;
@@ -27,14 +27,15 @@ verify::Report verified(const Plan& plan, const Options& o, const PostOptions& p
     if (!o.resolution) v.maxCellVisits = verify::kDefaultCellVisits;  // a cell size the operator chose is kept
     verify::Report report = o.cache ? verifyPlanCached(plan, v, reused) : verify::verifyPlan(plan, v);
     if (!o.cache && reused) *reused = false;
-    // The tape is posted to be read back (verify/tape_readback.h; a
-    // two-path lathe's only to place the findings: its programs are read).
+    // The programs are posted once, to be read back (verify/tape_readback.h;
+    // a two-path lathe's tape only to place the findings: its programs are
+    // read) and written by the export as they are.
     try {
-        const PostedProgram& posted = tape.emplace(postProcess(plan.steps, plan.tools, post));
-        verify::placeOnTape(report, posted);
-        verify::readBack(report, plan, posted, post::dialectNamed(post.dialect), post);
+        const PostedJob& programs = posted.emplace(postJob(plan, post));
+        verify::placeOnTape(report, programs.tape);
+        verify::readBack(report, plan, programs, post::dialectNamed(post.dialect), post);
     } catch (const Refusal&) {
-        tape.reset();
+        posted.reset();
         // A dialect that cannot post this job: the findings keep their moves.
     }
     return report;
@@ -56,8 +57,8 @@ std::string summary(const verify::Report& r)
 
 bool printVerification(const Plan& plan, const Options& o, const std::string& name, const std::string& dialect)
 {
-    std::optional<PostedProgram> tape;
-    const verify::Report r = verified(plan, o, postOptions(plan, dialect), tape);
+    std::optional<PostedJob> posted;
+    const verify::Report r = verified(plan, o, postOptions(plan, dialect), posted);
     // A two-path lathe: its balanced roughing on the timeline (deadlocks, lags below the set revolutions).
     const auto twoPath = verify::checkTwoPath(plan);
     const bool twoPathFault = twoPath && !twoPath->findings.empty();
@@ -73,14 +74,13 @@ bool printVerification(const Plan& plan, const Options& o, const std::string& na
             nlohmann::ordered_json e;
             e["kind"] = verify::toKey(f.kind);
             if (!f.part.empty()) e["part"] = f.part;
-            if (!f.programFile.empty()) e["program"] = f.programFile;  // a probing unit's STEM.uN.probe.nc
             e["fatal"] = f.fatal();
             e["step"] = f.step >= 0 ? nlohmann::ordered_json(f.step + 1) : nlohmann::ordered_json();
             e["unit"] = f.step >= 0 ? nlohmann::ordered_json(plan.steps[static_cast<std::size_t>(f.step)].unit + 1)
                                     : nlohmann::ordered_json();
             e["move"] = f.move >= 0 ? nlohmann::ordered_json(f.move + 1) : nlohmann::ordered_json();
             e["line"] = f.line > 0 ? nlohmann::ordered_json(f.line) : nlohmann::ordered_json();
-            if (f.program > 0) e["program"] = "p" + std::to_string(f.program);  // a two-path lathe's STEM.pN
+            if (!f.program.empty()) e["program"] = f.program;  // a program other than the tape: STEM.p2.nc, STEM.u1.probe.nc
             e["position"] = {f.position.x, f.position.y, f.position.z};
             e["size"] = f.size;
             e["area"] = f.area;

@@ -8,6 +8,7 @@
 #include "export/export.h"
 #include "model/plan.h"
 #include "post/post.h"
+#include "post/posted_job.h"
 #include "verify/verify.h"
 
 #include <optional>
@@ -16,11 +17,13 @@
 namespace taiwa::app {
 
 // The plan verified at the options' resolution, its findings placed on
-// the tape posted with `post`; that tape kept in `tape` (posted only when
-// there are findings to place, and when the dialect can post the job).
+// the tape posted with `post` and every program of the export read back
+// (verify/tape_readback.h); the programs kept in `posted` (post/posted_job.h:
+// each posted once, the export writes them as they are; none when the
+// dialect cannot post the job).
 // Through the verification cache (export/verification_cache.h) unless
 // --no-cache: `reused` says whether the report was the stored one.
-verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedProgram>& tape,
+verify::Report verified(const Plan& plan, const Options& o, const PostOptions& post, std::optional<PostedJob>& posted,
                         bool* reused = nullptr);
 
 // Prints the report of the plan of job file `name` on stdout, in words or

@@ -124,8 +124,17 @@ class TestGuiLanguages : public QObject {
                              "tape line 20"),
                  QString("工程 2 (荒加工 I、ユニット 1): X1.000 Y2.000 Z3.000 で早送り (G0) が素材に 1.000 mm 入ります、"
                          "移動 4、テープ 20 行目"));
+        // One on a program other than the tape (a probing unit's, a two-path lathe's), named by its file.
+        QCOMPARE(coreMessage("the job: the tape has a rapid the plan does not, to X0.000 Y0.000 Z-50.000, 42.000 mm into "
+                             "stock, in x.u1.probe.nc at line 7"),
+                 QString("ジョブ: テープに計画にない rapid があります: X0.000 Y0.000 Z-50.000 へ、素材に 42.000 mm 入ります、"
+                         "x.u1.probe.nc の 7 行目"));
         speak("zh");
         QCOMPARE(coreMessage(depth), QString("深度为 0 mm；必须大于零（自顶面向下测量）"));
+        QCOMPARE(coreMessage("the job: the wait M102 is not met by the other path's program at its turn: both paths would "
+                             "stop there (a deadlock), in part.p1.nc at line 30"),
+                 QString("作业：%1，part.p1.nc 第 30 行").arg(coreMessage("the wait M102 is not met by the other path's program at "
+                                                                       "its turn: both paths would stop there (a deadlock)")));
     }
 
     // Every message the bad jobs of tests/data/bad-jobs draw from the

@@ -6,13 +6,15 @@
 // finding; a moving word planted in the program found on its line, fatal
 // (and one from a dialect built in memory, through verify::readBack); a
 // search shortened so that it touches nothing, and a touch target moved,
-// found at the probing move's line.
+// found at the probing move's line; the programs handed to the read-back
+// (post/posted_job.h, as the export posts them) are the ones it judges.
 #include "support/readback.h"
 #include "support/support.h"
 
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
 #include "post/post.h"
+#include "post/posted_job.h"
 #include "post/probe_program.h"
 #include "verify/tape_params.h"
 #include "verify/tape_readback.h"
@@ -192,12 +194,12 @@ private slots:
         QVERIFY2(!found.empty(), qPrintable(described(found, plan)));
         QCOMPARE(found.front().line, line);
         QVERIFY2(found.front().fatal(), qPrintable(described(found, plan)));
-        QCOMPARE(found.front().programFile, std::string("x.u1.probe.nc"));
-        QVERIFY(described(found, plan).startsWith(QString("x.u1.probe.nc: the tape has a rapid the plan does not")));
+        QCOMPARE(found.front().program, std::string("x.u1.probe.nc"));
+        QVERIFY(described(found, plan).startsWith(QString("the job: the tape has a rapid the plan does not")));
         // The block 25 mm high on the table: the ball's centre 48 mm down, 40 mm inside the block's sides.
         if (sample == "probe-vise-block.taiwa" && dialect == "linuxcnc")
-            QVERIFY2(described(found, plan).startsWith("x.u1.probe.nc: the tape has a rapid the plan does not, to X0.000 Y0.000 "
-                                                       "Z-50.000, 42.000 mm into stock, line 7\n"),
+            QVERIFY2(described(found, plan).startsWith("the job: the tape has a rapid the plan does not, to X0.000 Y0.000 "
+                                                       "Z-50.000, 42.000 mm into stock, in x.u1.probe.nc at line 7\n"),
                      qPrintable(described(found, plan)));
     }
 
@@ -214,9 +216,46 @@ private slots:
         verify::Report r;
         verify::readBack(r, plan, posted, shop, o);
         const QString found = test::tapeFindings(r, plan);
-        QVERIFY2(found.contains("flange.u1.setting.nc: ") && found.contains("flange.u1.probe.nc: "), qPrintable(found));
-        QVERIFY2(found.contains("line 2") && found.contains("G0 Z-50"), qPrintable(found));
+        QVERIFY2(found.contains(", in flange.u1.setting.nc at line 2\n") && found.contains(", in flange.u1.probe.nc at line 2\n"), qPrintable(found));
+        QVERIFY2(found.contains("G0 Z-50"), qPrintable(found));
         QVERIFY(r.fatal());
+    }
+
+    // The programs handed over (postJob, as `taiwa export` and the station
+    // post them before the export writes them) are the ones read back, not
+    // programs posted again: the job's are clean, with the export's
+    // O-numbers (after the tape's), and a cycle altered after posting is
+    // found on its line of flange.u1.probe.nc.
+    void theHandedProgramsAreReadBack()
+    {
+        const Plan plan = test::planOf("probe-flange.taiwa");
+        const WorkSetup& w = plan.setups.front();
+        QVERIFY(w.measured);
+        const PostOptions o = postOptions(plan, "linuxcnc", LengthUnit::Millimetre, 1000, "flange");
+        const post::Dialect& d = post::dialectNamed(o.dialect);
+        PostedJob posted = postJob(plan, o);
+        QCOMPARE(posted.probing.size(), std::size_t{1});
+        PostOptions setting = o, cycle = o;
+        setting.programNumber = 1001, cycle.programNumber = 1002;
+        QCOMPARE(posted.probing.front().setting, settingProgram(w, setting));
+        QCOMPARE(posted.probing.front().probe, probingProgram(w, cycle));
+        verify::Report clean;
+        verify::readBack(clean, plan, posted, d, o);
+        QCOMPARE(test::tapeFindings(clean, plan), QString());
+
+        std::string& text = posted.probing.front().probe;
+        text = replaced(text, " M6\n", " M6 G0 Z-50.\n");
+        const int line = lineOf(text, "G0 Z-50.");
+        QVERIFY(line > 0);
+        verify::Report r;
+        verify::readBack(r, plan, posted, d, o);
+        QVERIFY2(!r.findings.empty() && r.fatal(), qPrintable(test::tapeFindings(r, plan)));
+        QCOMPARE(r.findings.front().program, std::string("flange.u1.probe.nc"));
+        QCOMPARE(r.findings.front().line, line);
+        // Posted again by the read-back itself (`taiwa verify`'s way): the unaltered ones.
+        verify::Report again;
+        verify::readBack(again, plan, posted.tape, d, o);
+        QCOMPARE(test::tapeFindings(again, plan), QString());
     }
 
     // A search shortened so that it stops short of the side, and a target

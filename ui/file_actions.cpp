@@ -231,7 +231,7 @@ bool FileActions::exportTo(const ExportChoice& c)
     }
     // Verified first, as `taiwa export` does: a fault is written only when the operator says so.
     std::vector<std::string> faults;
-    std::optional<PostedProgram> tape;
+    std::optional<PostedJob> posted;
     const PostOptions post = postOptions(*plan, c.dialect.toStdString(), c.units, ExportOptions{}.programNumber, stem().toStdString());
     try {
         verify::Options v;
@@ -240,14 +240,14 @@ bool FileActions::exportTo(const ExportChoice& c)
         if (c.resolution == verify::defaultResolution(*plan)) v.maxCellVisits = verify::kDefaultCellVisits;
         // The station's Verify (or a `taiwa verify`) of this very plan stored its report: not run again.
         verify::Report report = verifyPlanCached(*plan, v);
-        // The tape posted once and read back (verify/tape_readback.h), as
-        // `taiwa export` does; the export writes that very tape.
+        // The programs posted once and read back (verify/tape_readback.h), as
+        // `taiwa export` does; the export writes those very programs.
         try {
-            const PostedProgram& posted = tape.emplace(postProcess(plan->steps, plan->tools, post));
-            verify::placeOnTape(report, posted);
-            verify::readBack(report, *plan, posted, post::dialectNamed(post.dialect), post);
+            const PostedJob& programs = posted.emplace(postJob(*plan, post));
+            verify::placeOnTape(report, programs.tape);
+            verify::readBack(report, *plan, programs, post::dialectNamed(post.dialect), post);
         } catch (const Refusal&) {
-            tape.reset();  // a dialect that cannot post this job: the export says so
+            posted.reset();  // a dialect that cannot post this job: the export says so
         }
         for (const auto& f : report.findings)
             if (f.fatal()) faults.push_back(verify::describe(f, *plan));
@@ -274,7 +274,7 @@ bool FileActions::exportTo(const ExportChoice& c)
     eo.jobFile = doc_->path().isEmpty() && !store_->storedName().isEmpty() ? stem().toStdString() + ".taiwa"
                                                                            : QFileInfo(doc_->path()).fileName().toStdString();
     eo.verificationFaults = faults;
-    eo.posted = tape ? &*tape : nullptr;
+    eo.posted = posted ? &*posted : nullptr;
     eo.toolsOrigin = runner_->toolsOrigin();
     // The same drawing as `taiwa export`'s (export/sheet_pictures.h): the same pixels.
     const std::string problem = c.pictures ? addSheetPictures(*plan, eo) : std::string();

@@ -13,7 +13,6 @@
 #include "model/translate_noop.h"
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
-#include "post/probe_program.h"
 #include "post/post.h"
 #include "post/tool_table.h"
 #include "sheet/sheet.h"
@@ -239,11 +238,10 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     // compressing every page's text) is drawn on a thread of its own while
     // this one posts the tape and writes the HTML sheet and steps.json.
     auto drawing = std::async(std::launch::async, [&plan, &sheet] { return sheetPdf(plan, sheet); });
-    std::optional<PostedProgram> own;
-    const PostedProgram& program =
-        options.posted ? *options.posted
-                       : own.emplace(postProcess(plan.steps, plan.tools,
-                                                 postOptions(plan, options.dialect, units, options.programNumber, stem)));
+    std::optional<PostedJob> own;
+    const PostedJob& posted =
+        options.posted ? *options.posted : own.emplace(postJob(plan, postOptions(plan, options.dialect, units, options.programNumber, stem)));
+    const PostedProgram& program = posted.tape;
     const std::string html = sheetHtml(plan, sheet), steps = stepsJson(plan);
     auto pdf = drawing.get();
     if (!pdf) return Failure{nothingChanged(pdf.error(), outDir), pdf.place()};
@@ -261,24 +259,18 @@ Result<std::vector<std::string>> exportPlan(const Plan& plan, const std::string&
     else if (plan.mmJob.bar && dialect->syntax == post::Syntax::Iso && dialect->macroSyntax != "fanuc")
         files.emplace_back(".tbl", linuxcncLatheToolTable(plan.steps, plan.tools, stem));
     // A two-path lathe: STEM.p1.nc, STEM.p2.nc (and their tables) in place of the tape (two_path_export.h).
-    if (auto two = twoPathTapes(plan, options.dialect, units, options.programNumber, stem)) {
+    if (auto two = twoPathTapes(plan, posted.twoPath, options.dialect, stem)) {
         if (!*two) return Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}; nothing was written"), two->error())};
         std::erase_if(files, [&](const auto& f) { return f.first == tape || f.first == ".tape.txt" || f.first == ".tbl"; });
         files.insert(files.end(), (*two)->begin(), (*two)->end());
     }
     // Probing units: the setting program from the touches entered (when
     // there are) and the probing cycle, STEM.u<unit>.setting.nc and
-    // STEM.u<unit>.probe.nc, with O-numbers after the tape's.
-    int next = options.programNumber;
-    const auto oNumber = [&] { return (next++) % 9999 + 1; };
-    for (const WorkSetup& w : plan.setups) {
-        const std::string unit = ".u" + std::to_string(w.unit + 1);
-        if (w.measured) {
-            PostOptions o = postOptions(plan, options.dialect, LengthUnit::Millimetre, oNumber(), stem);
-            files.emplace_back(unit + ".setting.nc", settingProgram(w, o));
-        }
-        PostOptions o = postOptions(plan, options.dialect, LengthUnit::Millimetre, oNumber(), stem);
-        files.emplace_back(unit + ".probe.nc", probingProgram(w, o));
+    // STEM.u<unit>.probe.nc, with O-numbers after the tape's (postProbing).
+    for (const PostedProbing& p : posted.probing) {
+        const std::string unit = ".u" + std::to_string(p.unit + 1);
+        if (!p.setting.empty()) files.emplace_back(unit + ".setting.nc", p.setting);
+        files.emplace_back(unit + ".probe.nc", p.probe);
     }
     // A unit's finished 3-D surface (the module's machinedSurface, SURFACE's
     // finishing surface): STEM.u<unit>.surface.step, one face, flat

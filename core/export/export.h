@@ -7,6 +7,7 @@
 #include "model/plan.h"
 #include "model/result.h"
 #include "post/post.h"
+#include "post/posted_job.h"
 
 #include <optional>
 #include <string>
@@ -31,11 +32,13 @@ struct ExportOptions {
     std::string setupPicture;
     // Where the tools came from, for the sheet (ToolStore::origin); empty: the station's own file.
     std::string toolsOrigin;
-    // The tape already posted with these options (postOptions of the plan,
-    // the dialect, units, program number and stem; taiwa export posts it
-    // first to place the verification's findings on it): written as it is,
-    // not posted again. Null: the export posts it.
-    const PostedProgram* posted = nullptr;
+    // The programs already posted with these options (postJob with
+    // postOptions of the plan, the dialect, units, program number and stem;
+    // taiwa export and the station post them first to read them back and to
+    // place the verification's findings on the tape): the tape, a two-path
+    // lathe's programs and the probing units' programs written as they are,
+    // not posted again. Null: the export posts them.
+    const PostedJob* posted = nullptr;
 };
 
 // STEM.nc, STEM.tape.txt, STEM.sheet.html, STEM.sheet.pdf, STEM.steps.json

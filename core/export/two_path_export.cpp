@@ -1,19 +1,14 @@
-// The two-path lathe's tapes of an export (two_path_export.h): balance the
-// job's first roughing step with the job's settings, post both programs,
-// list both in the tape image, and the LinuxCNC tool table of each path.
+// The two-path lathe's tapes of an export (two_path_export.h): both
+// programs (the job's first roughing step balanced with the job's settings
+// and posted, post/posted_job.h), both listed in the tape image, and the
+// LinuxCNC tool table of each path.
 #include "export/two_path_export.h"
 
-#include "machine/machine.h"
-#include "model/translate_noop.h"
 #include "pipeline/pipeline.h"
 #include "post/dialect.h"
 #include "post/tool_table.h"
-#include "post/two_path_post.h"
-#include "turning/balanced_roughing.h"
 
 #include <fmt/format.h>
-
-#include <stdexcept>
 
 namespace taiwa {
 
@@ -21,28 +16,17 @@ std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, co
                                                             std::optional<LengthUnit> units, int programNumber,
                                                             const std::string& stem)
 {
+    return twoPathTapes(plan, postTwoPath(plan, postOptions(plan, dialect, units, programNumber, stem)), dialect, stem);
+}
+
+std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, const std::optional<Result<PostedTwoPath>>& posted,
+                                                            const std::string& dialect, const std::string& stem)
+{
     using Files = Result<std::vector<ExportFile>>;
-    const Machine* machine = findMachine(plan.mmJob.machine);
-    if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
-    std::size_t index = plan.steps.size();
-    for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) index = k;
-    if (index == plan.steps.size())
-        return Files{Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "machine: {} is a two-path lathe and the job has no "
-                                                                      "roughing step to balance between its paths"),
-                                   plan.mmJob.machine)}};
-    const Step& rough = plan.steps[index];
-    // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
-    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);
-    auto cut = turning::balanceRoughing(turnOf(rough)->path, turnOf(rough)->cutting, *machine, set);
-    if (!cut) return Files{Failure{cut.error()}};
-    std::vector<PostedProgram> programs;
-    try {
-        programs = postBalancedCut(*cut, plan.steps, index, *machine->layout.multiPath, plan.tools,
-                                   postOptions(plan, dialect, units, programNumber, stem));
-    } catch (const Refusal& e) {
-        return Files{Failure{e.what()}};
-    }
+    if (!posted) return std::nullopt;
+    if (!*posted) return Files{Failure{posted->error()}};
+    const std::vector<PostedProgram>& programs = (*posted)->programs;
+    const Step& rough = plan.steps[(*posted)->roughing];
     const post::Dialect* d = post::findDialect(dialect);
     const std::string ext = d ? "." + d->fileExtension : ".nc";
     const bool linuxcnc = d && d->syntax == post::Syntax::Iso && d->macroSyntax != "fanuc";

@@ -8,6 +8,7 @@
 
 #include "model/plan.h"
 #include "model/result.h"
+#include "post/posted_job.h"
 
 #include <optional>
 #include <string>
@@ -25,5 +26,10 @@ using ExportFile = std::pair<std::string, std::string>;
 std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, const std::string& dialect,
                                                             std::optional<LengthUnit> units, int programNumber,
                                                             const std::string& stem);
+
+// The same of the programs already posted (post/posted_job.h postTwoPath,
+// with the dialect and stem given here): written as they are.
+std::optional<Result<std::vector<ExportFile>>> twoPathTapes(const Plan& plan, const std::optional<Result<PostedTwoPath>>& posted,
+                                                            const std::string& dialect, const std::string& stem);
 
 }  // namespace taiwa

@@ -74,20 +74,28 @@ std::string describe(const Finding& f, const Plan& plan)
                              : fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "step {} ({}, unit {} '{}')"), f.step + 1,
                                            s.label(), s.unit + 1, name);
     }
-    // A finding of a size at a place over an area: the lathe's template (an
-    // area of the half-section) or the mill's.
+    // A finding of a size at a place over an area (a gouge, material left):
+    // the lathe's template (an area of the half-section) and the mill's.
     using AreaText = fmt::format_string<std::string, std::string, const double&>;
-    const auto overArea = [&](AreaText latheText, AreaText millText) {
-        return fmt::format(lathe ? latheText : millText, len(f.size), at(f.position), f.area);
+    struct AreaTexts {
+        AreaText lathe, mill;
     };
+    static constexpr AreaTexts gouge{TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                                        "{:.3f} mm² of the half-section"),
+                                     TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
+                                                                        "{:.3f} mm²")};
+    static constexpr AreaTexts rest{TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} thicker than it should leave, thickest "
+                                                                       "at {}, over {:.3f} mm² of the half-section"),
+                                    TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
+                                                                       "at {}, over {:.3f} mm²")};
     std::string what;
     switch (f.kind) {
     case FindingKind::Gouge:
-        what = overArea(TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
-                                                           "{:.3f} mm² of the half-section"),
-                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "gouge {} deep into the finished part at {}, over "
-                                                           "{:.3f} mm²"));
+    case FindingKind::RestMaterial: {
+        const AreaTexts& t = f.kind == FindingKind::Gouge ? gouge : rest;
+        what = fmt::format(lathe ? t.lathe : t.mill, len(f.size), at(f.position), f.area);
         break;
+    }
     case FindingKind::Collision:
         what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool's {} runs {} into stock at {}"), f.part, len(f.size), at(f.position));
         break;
@@ -97,12 +105,6 @@ std::string describe(const Finding& f, const Plan& plan)
     case FindingKind::TravelLimit:
         what = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "the paths span {} more along {} than the machine '{}' travels"), len(f.size), f.part,
                            plan.job.machine);
-        break;
-    case FindingKind::RestMaterial:
-        what = overArea(TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} thicker than it should leave, thickest "
-                                                           "at {}, over {:.3f} mm² of the half-section"),
-                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "material left up to {} above what it should leave, highest "
-                                                           "at {}, over {:.3f} mm²"));
         break;
     case FindingKind::UnplannedMove: {
         // The tape's own: X or Y may be unknown before the first move after the first tool change (a lathe's: X and Z).
@@ -129,12 +131,11 @@ std::string describe(const Finding& f, const Plan& plan)
                            f.part);
         break;
     }
-    // A probing program's: the program and its line.
-    if (!f.programFile.empty())
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, line {}"), f.programFile, what, f.line);
-    // Where on the tape, when known: one template for each case, so that the station translates the whole.
-    if (f.program > 0 && f.line > 0)
-        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, program p{} line {}"), where, what, f.program, f.line);
+    // Where on the tape, when known: one template for each case, so that the
+    // station translates the whole. A program other than the tape (a
+    // two-path lathe's, a probing unit's) by its file's name.
+    if (!f.program.empty() && f.line > 0)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, in {} at line {}"), where, what, f.program, f.line);
     if (f.move >= 0 && f.line > 0)
         return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{}: {}, move {}, tape line {}"), where, what, f.move + 1,
                            f.line);

@@ -204,12 +204,10 @@ private:
 
 Point3 inMm(Point3 p, double k) { return {p.x * k, p.y * k, p.z * k}; }
 
-}  // namespace
-
-void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
-              const PostOptions& post)
+// The milling tape's own read-back (readBack).
+void readBackMilling(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
+                     const PostOptions& post)
 {
-    if (plan.mmJob.bar) return readBackLathe(report, plan, program, dialect, post);
     const TapeReading tape = readTape(program.nc, dialect);
     const double k = tape.inches ? kInch : 1.0;
     Judge judge(plan, dialect, post, tape.inches);
@@ -242,10 +240,35 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
         ++added;
     }
     addUnreadTape(report, tape);
-    if (!plan.setups.empty()) readBackProbing(report, plan, dialect, post);
 }
 
-void addUnreadTape(Report& report, const TapeReading& tape, int program)
+}  // namespace
+
+void readBack(Report& report, const Plan& plan, const PostedJob& posted, const post::Dialect& dialect,
+              const PostOptions& post)
+{
+    if (plan.mmJob.bar) return readBackLathe(report, plan, posted, dialect, post);
+    readBackMilling(report, plan, posted.tape, dialect, post);
+    readBackProbing(report, plan, posted.probing, dialect, post);
+}
+
+void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
+              const PostOptions& post)
+{
+    // The other programs posted here, as the export posts them.
+    PostedJob posted;
+    posted.tape = program;
+    posted.twoPath = postTwoPath(plan, post);
+    if (!plan.setups.empty()) posted.probing = postProbing(plan, post, dialect);
+    readBack(report, plan, posted, dialect, post);
+}
+
+std::string programFile(const PostOptions& post, const std::string& suffix)
+{
+    return post.fileStem.empty() ? suffix.substr(suffix.starts_with('.') ? 1 : 0) : post.fileStem + suffix;
+}
+
+void addUnreadTape(Report& report, const TapeReading& tape, const std::string& program)
 {
     if (tape.error.empty()) return;
     Finding f;

@@ -17,6 +17,7 @@
 #include "model/setup.h"
 #include "post/dialect.h"
 #include "post/post.h"
+#include "post/posted_job.h"
 #include "verify/verify.h"
 
 namespace taiwa {
@@ -48,14 +49,25 @@ constexpr int kMaxTapeFindings = 50;
 void readBack(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
               const PostOptions& post);
 
+// The same of every program of an export, posted once (post/posted_job.h)
+// and written by the export as it is: the tape, a two-path lathe's
+// programs and the probing units' programs handed over are the ones read
+// back (the readBack above posts the other programs itself, in `dialect`).
+void readBack(Report& report, const Plan& plan, const PostedJob& posted, const post::Dialect& dialect,
+              const PostOptions& post);
+
+// A program's file as the export names it (Finding::program): the stem
+// and `suffix` ("part" and ".p2.nc": "part.p2.nc"; no stem: "p2.nc").
+std::string programFile(const PostOptions& post, const std::string& suffix);
+
 // readBack of a lathe job (tape_readback_lathe.cpp), which readBack calls.
-void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect,
+void readBackLathe(Report& report, const Plan& plan, const PostedJob& posted, const post::Dialect& dialect,
                    const PostOptions& post);
 
 // Which of a two-path lathe's programs a lathe tape is
 // (tape_readback_two_path.cpp); the default: a one-path lathe's one tape.
 struct PathProgram {
-    int program = 0;                       // Finding::program: 1, 2 … for STEM.p1, STEM.p2 …
+    std::string program;                   // Finding::program: "STEM.p1.nc", "STEM.p2.nc" …; empty: the tape
     const MultiPath* layout = nullptr;     // its coordinates into path 1's, where the bar is measured
     std::size_t path = 0;
     int stepOffset = 0;                    // its steps' indices into the plan's (another path's one step: the roughing)
@@ -70,11 +82,12 @@ TapeReading readBackLathePath(Report& report, const std::vector<Step>& steps, co
 
 // readBack of a milling job's probing units (tape_readback_probe.cpp),
 // which readBack calls: each unit's setting program (when it has measured
-// touches) and probing cycle, posted in mm as export posts them, read back
-// against the unit's nominal part; the findings name the program
-// (Finding::programFile: "STEM.u1.probe.nc", "u1.probe.nc" without a stem) and
-// its line. A dialect that writes no probing programs adds nothing.
-void readBackProbing(Report& report, const Plan& plan, const post::Dialect& dialect, const PostOptions& post);
+// touches) and probing cycle (`programs`, posted by postProbing as export
+// posts them) read back against the unit's nominal part; the findings name
+// the program (Finding::program: "STEM.u1.probe.nc", "u1.probe.nc" without
+// a stem) and its line. A dialect that writes no probing programs has none.
+void readBackProbing(Report& report, const Plan& plan, const std::vector<PostedProbing>& programs,
+                     const post::Dialect& dialect, const PostOptions& post);
 
 // The findings of reading back one unit's probing cycle `text` (in
 // `dialect`), `program` its file, `stockHeight` [mm] where the table is
@@ -92,6 +105,6 @@ std::vector<Finding> settingFindings(const WorkSetup& setup, double stockHeight,
 // The reading's "unread tape" finding, where the reader stopped (none when
 // it read the tape through), on `program` (Finding::program): the milling
 // and the lathe read-back end so.
-void addUnreadTape(Report& report, const TapeReading& tape, int program = 0);
+void addUnreadTape(Report& report, const TapeReading& tape, const std::string& program = {});
 
 }  // namespace taiwa::verify

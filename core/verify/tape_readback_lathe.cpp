@@ -270,11 +270,15 @@ private:
 
 // The lathe's readBack (tape_readback.cpp calls it for a job with a bar):
 // a two-path lathe's programs (tape_readback_two_path.h), else the one tape.
-void readBackLathe(Report& report, const Plan& plan, const PostedProgram& program, const post::Dialect& dialect, const PostOptions& post)
+void readBackLathe(Report& report, const Plan& plan, const PostedJob& posted, const post::Dialect& dialect, const PostOptions& post)
 {
     const Machine* m = findMachine(plan.mmJob.machine);
-    if (m && m->layout.multiPath) return readBackTwoPath(report, plan, dialect, post);
-    readBackLathePath(report, plan.steps, *plan.mmJob.bar, program, dialect, post, {});
+    if (m && m->layout.multiPath) {
+        // Programs that cannot be written (the export refuses the job) are not read.
+        if (posted.twoPath && *posted.twoPath) readBackTwoPath(report, plan, **posted.twoPath, dialect, post);
+        return;
+    }
+    readBackLathePath(report, plan.steps, *plan.mmJob.bar, posted.tape, dialect, post, {});
 }
 
 TapeReading readBackLathePath(Report& report, const std::vector<Step>& steps, const BarStock& bar, const PostedProgram& program,

@@ -8,7 +8,6 @@
 // measured centre where the part is. docs/verification.md "The tape read back".
 #include "verify/tape_readback.h"
 
-#include "post/probe_program.h"
 #include "verify/tape_reader_probe.h"
 
 #include <algorithm>
@@ -126,7 +125,7 @@ Finding moveFinding(const TapeMotion& m, const std::string& part, double depth, 
     f.position = m.end;
     f.size = depth > kTouch ? depth : 0.0;
     f.part = part;
-    f.programFile = program;
+    f.program = program;
     return f;
 }
 
@@ -141,7 +140,7 @@ void readingEnd(std::vector<Finding>& out, const ProbeReading& r, const std::str
         stopped.errorLine = r.stopLine;
         addUnreadTape(report, stopped);
     }
-    for (Finding& f : report.findings) out.push_back((f.programFile = program, f));
+    for (Finding& f : report.findings) out.push_back((f.program = program, f));
 }
 
 // The cycle again from a start off the centre (half the distance it may
@@ -238,21 +237,18 @@ std::vector<Finding> settingFindings(const WorkSetup& s, double stockHeight, con
     return out;
 }
 
-void readBackProbing(Report& report, const Plan& plan, const post::Dialect& dialect, const PostOptions& post)
+void readBackProbing(Report& report, const Plan& plan, const std::vector<PostedProbing>& programs, const post::Dialect& dialect,
+                     const PostOptions& post)
 {
-    PostOptions o = post;
-    o.units = LengthUnit::Millimetre;  // as export posts them
     const double height = plan.mmJob.stock.height;
-    for (const WorkSetup& w : plan.setups) {
-        const std::string unit = (post.fileStem.empty() ? "u" : post.fileStem + ".u") + std::to_string(w.unit + 1);
+    for (const PostedProbing& p : programs) {
+        const auto w = std::find_if(plan.setups.begin(), plan.setups.end(), [&](const WorkSetup& s) { return s.unit == p.unit; });
+        if (w == plan.setups.end()) continue;
+        const std::string unit = ".u" + std::to_string(p.unit + 1);
         std::vector<Finding> found;
-        try {
-            if (w.measured) found = settingFindings(w, height, settingProgram(w, o, dialect), dialect, unit + ".setting.nc");
-            const auto cycle = probingFindings(w, height, probingProgram(w, o, dialect), dialect, unit + ".probe.nc");
-            found.insert(found.end(), cycle.begin(), cycle.end());
-        } catch (const Refusal&) {
-            continue;  // a dialect that writes no probing programs: export refuses them
-        }
+        if (!p.setting.empty()) found = settingFindings(*w, height, p.setting, dialect, programFile(post, unit + ".setting.nc"));
+        const auto cycle = probingFindings(*w, height, p.probe, dialect, programFile(post, unit + ".probe.nc"));
+        found.insert(found.end(), cycle.begin(), cycle.end());
         report.findings.insert(report.findings.end(), found.begin(), found.end());
     }
 }

@@ -22,11 +22,12 @@ std::string waitName(int code, bool fanuc)
     return code > 0 ? "M66 (meeting " + std::to_string(code) + ")" : "M66 (no meeting: its output and input disagree)";
 }
 
-// Program `program`'s waits (`other`) against path 1's (`one`): the first
+// Program `program`'s waits (`other`) against path 1's (`one`, program `first`): the first
 // that differs, is missing on one of them or meets nothing is a finding on
 // path 1's program, or on the other's where path 1's has run out or its is
 // the wait that meets nothing.
-void pairWaits(Report& report, const std::vector<TapeWait>& one, const std::vector<TapeWait>& other, int program, bool fanuc)
+void pairWaits(Report& report, const std::vector<TapeWait>& one, const std::vector<TapeWait>& other, const std::string& first,
+               const std::string& program, bool fanuc)
 {
     for (std::size_t i = 0; i < std::max(one.size(), other.size()); ++i) {
         const bool inOne = i < one.size(), inOther = i < other.size();
@@ -36,7 +37,7 @@ void pairWaits(Report& report, const std::vector<TapeWait>& one, const std::vect
         // Path 1's wait unless path 1 has run out of them (or its is the one that meets nothing).
         const bool onOther = !inOne || (inOther && other[i].code <= 0);
         const TapeWait& w = onOther ? other[i] : one[i];
-        f.program = onOther ? program : 1;
+        f.program = onOther ? program : first;
         f.line = w.line;
         f.part = waitName(w.code, fanuc);
         report.findings.push_back(f);
@@ -48,13 +49,9 @@ void pairWaits(Report& report, const std::vector<TapeWait>& one, const std::vect
 
 std::optional<TwoPathPrograms> twoPathPrograms(const Plan& plan, const PostOptions& post)
 {
-    const Machine* machine = findMachine(plan.mmJob.machine);
-    if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
-    auto balanced = balancedRoughing(plan, *machine);
-    if (!balanced) return std::nullopt;
-    TwoPathPrograms out{std::move(balanced->cut), balanced->step, {}};
-    out.programs = postBalancedCut(out.cut, plan.steps, out.roughing, *machine->layout.multiPath, plan.tools, post);
-    return out;
+    auto posted = postTwoPath(plan, post);
+    if (!posted || !*posted) return std::nullopt;
+    return std::move(**posted);
 }
 
 void readBackTwoPath(Report& report, const Plan& plan, const TwoPathPrograms& programs, const post::Dialect& dialect,
@@ -63,11 +60,15 @@ void readBackTwoPath(Report& report, const Plan& plan, const TwoPathPrograms& pr
     const Machine* machine = findMachine(plan.mmJob.machine);
     if (!plan.mmJob.bar || !machine || !machine->layout.multiPath) return;
     const MultiPath& layout = *machine->layout.multiPath;
+    // Each program named by its file (Finding::program): STEM.p1.nc, STEM.p2.nc …
+    std::vector<std::string> names;
+    for (std::size_t p = 0; p < programs.programs.size(); ++p)
+        names.push_back(programFile(post, ".p" + std::to_string(p + 1) + "." + dialect.fileExtension));
     std::vector<TapeReading> tapes;
     for (std::size_t p = 0; p < programs.programs.size() && p < programs.cut.paths.size(); ++p) {
         const BalancedPathJob job = balancedPathJob(programs.cut, plan.steps, programs.roughing, layout, post, p);
         PathProgram which;
-        which.program = static_cast<int>(p) + 1;
+        which.program = names[p];
         which.layout = &layout;
         which.path = p;
         which.stepOffset = p == 0 ? 0 : static_cast<int>(programs.roughing);
@@ -78,18 +79,7 @@ void readBackTwoPath(Report& report, const Plan& plan, const TwoPathPrograms& pr
     const bool fanuc = dialect.macroSyntax == "fanuc";
     for (std::size_t p = 1; p < tapes.size(); ++p)
         if (tapes[0].error.empty() && tapes[p].error.empty())
-            pairWaits(report, tapes[0].waits, tapes[p].waits, static_cast<int>(p) + 1, fanuc);
-}
-
-void readBackTwoPath(Report& report, const Plan& plan, const post::Dialect& dialect, const PostOptions& post)
-{
-    std::optional<TwoPathPrograms> programs;
-    try {
-        programs = twoPathPrograms(plan, post);
-    } catch (const Refusal&) {
-        return;  // a dialect that writes no two-path programs: the export refuses the job
-    }
-    if (programs) readBackTwoPath(report, plan, *programs, dialect, post);
+            pairWaits(report, tapes[0].waits, tapes[p].waits, names[0], names[p], fanuc);
 }
 
 }  // namespace taiwa::verify

@@ -14,6 +14,7 @@
 #include "model/two_path.h"
 #include "post/dialect.h"
 #include "post/post.h"
+#include "post/posted_job.h"
 #include "verify/verify.h"
 
 #include <optional>
@@ -21,23 +22,17 @@
 
 namespace taiwa::verify {
 
-struct TwoPathPrograms {
-    BalancedCut cut;
-    std::size_t roughing = 0;  // the balanced step's index in the plan
-    std::vector<PostedProgram> programs;  // path 1's first
-};
+// The programs the export writes (post/posted_job.h postTwoPath).
+using TwoPathPrograms = PostedTwoPath;
 
-// The programs the export writes for `plan` with `post`. Nothing when the
-// job's machine has one path or its roughing is not balanced (checkTwoPath
-// says why); throws Refusal for a dialect that writes no two-path programs.
+// The programs the export writes for `plan` with `post` (postTwoPath).
+// Nothing when the job's machine has one path or its programs cannot be
+// written (its roughing not balanced: checkTwoPath says why; a dialect that
+// writes no two-path programs: the export refuses it).
 std::optional<TwoPathPrograms> twoPathPrograms(const Plan& plan, const PostOptions& post);
 
 // Adds what reading `programs` back finds (as readBack, tape_readback.h).
 void readBackTwoPath(Report& report, const Plan& plan, const TwoPathPrograms& programs, const post::Dialect& dialect,
                      const PostOptions& post);
-
-// The programs of `plan` posted and read back; nothing for a dialect that
-// writes none (the export refuses it) or a roughing not balanced.
-void readBackTwoPath(Report& report, const Plan& plan, const post::Dialect& dialect, const PostOptions& post);
 
 }  // namespace taiwa::verify

@@ -38,7 +38,10 @@ struct Finding {
     int step = -1;      // index into plan.steps (machining order); -1: the whole job
     int move = -1;      // index into the step's path; -1: the step as a whole
     int line = 0;       // 1-based line of the tape where the move is written; 0: not placed (placeOnTape)
-    int program = 0;    // a two-path lathe's program the line is on: 1 STEM.p1, 2 STEM.p2 …; 0: the one tape
+    // The program `line` is on when it is not the one tape: its file as the
+    // export names it, a two-path lathe's "STEM.p2.nc", a probing unit's
+    // "STEM.u1.probe.nc" ("p2.nc", "u1.probe.nc" without a stem); empty: the tape.
+    std::string program;
     // The worst point [mm]: milling, a cell's centre and its height after
     // the move; a lathe job, {x: the diameter (as the tape writes X), y: 0, z}.
     Point3 position{};
@@ -49,9 +52,6 @@ struct Finding {
     // (lathe: the area of the half-section) [mm²].
     double area = 0.0;
     std::string part;   // collisions: "shank" or "holder"; travel limits: the axis "x", "y", "z"
-    // A probing unit's program read back (tape_readback_probe.cpp): its
-    // file as export names it ("STEM.u1.probe.nc"), `line` a line of it.
-    std::string programFile;
     // A gouge, a collision (a rapid into stock is one, at rapid speed), a
     // travel limit, a tape that cannot be read back or a move the plan does
     // not have that goes into stock: the tape must not run. Material left,
@@ -138,7 +138,8 @@ void placeOnTape(Report& report, const PostedProgram& program);
 
 // One finding in words, lengths in the job's unit: "step 3 (Roughing II,
 // unit 2): gouge 0.520 mm deep at X12.300 Y4.100 Z-10.520, move 57, tape
-// line 312"; on a lathe "at X24.600 Z-10.520", X a diameter.
+// line 312"; on a lathe "at X24.600 Z-10.520", X a diameter; on a program
+// other than the tape "…, in part.p2.nc at line 14".
 std::string describe(const Finding& f, const Plan& plan);
 
 }  // namespace taiwa::verify

@@ -2653,10 +2653,6 @@ Theirs: %6</source>
             <translation>作業指示書の PDF を描画できません</translation>
         </message>
         <message>
-            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
-            <translation>machine: {} は2系統旋盤ですが、ジョブに系統間で振り分ける荒加工工程がありません</translation>
-        </message>
-        <message>
             <source>it has no segments</source>
             <translation>線分がありません</translation>
         </message>
@@ -4937,6 +4933,10 @@ Theirs: %6</source>
             <translation>NC 形式 {} は測定ユニットのプログラムを出力しません。出力できるのは {} です ({})</translation>
         </message>
         <message>
+            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
+            <translation>machine: {} は2系統旋盤ですが、ジョブに系統間で振り分ける荒加工工程がありません</translation>
+        </message>
+        <message>
             <source>ER32 collet chuck</source>
             <translation>ER32 コレットチャック</translation>
         </message>
@@ -5453,6 +5453,14 @@ Theirs: %6</source>
             <translation>{1} で仕上がり形状に深さ {0} の削り込み、面積 {2} mm²</translation>
         </message>
         <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残すべき量より最大 {} 厚く削り残しがあります。最も厚いのは {}、半断面で {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残すべき量より最大 {} 高く削り残しがあります。最も高いのは {}、面積 {} mm²</translation>
+        </message>
+        <message>
             <source>the tool's {} runs {} into stock at {}</source>
             <translation>{2} で工具の{0}が素材に {1} 入ります</translation>
         </message>
@@ -5463,14 +5471,6 @@ Theirs: %6</source>
         <message>
             <source>the paths span {} more along {} than the machine '{}' travels</source>
             <translation>工具経路が {1} 方向で機械 '{2}' のストロークより {0} 長くなっています</translation>
-        </message>
-        <message>
-            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
-            <translation>残すべき量より最大 {} 厚く削り残しがあります。最も厚いのは {}、半断面で {} mm²</translation>
-        </message>
-        <message>
-            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
-            <translation>残すべき量より最大 {} 高く削り残しがあります。最も高いのは {}、面積 {} mm²</translation>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}, {} into stock</source>
@@ -5489,12 +5489,8 @@ Theirs: %6</source>
             <translation>待ち {} に相手の系統のプログラムが同じ順番で応じません: 両系統がそこで止まります (デッドロック)</translation>
         </message>
         <message>
-            <source>{}: {}, line {}</source>
-            <translation>{}: {}、{} 行目</translation>
-        </message>
-        <message>
-            <source>{}: {}, program p{} line {}</source>
-            <translation>{}: {}、プログラム p{} の {} 行目</translation>
+            <source>{}: {}, in {} at line {}</source>
+            <translation>{}: {}、{} の {} 行目</translation>
         </message>
         <message>
             <source>{}: {}, move {}, tape line {}</source>

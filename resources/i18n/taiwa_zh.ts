@@ -2653,10 +2653,6 @@ Theirs: %6</source>
             <translation>无法绘制工艺单的 PDF</translation>
         </message>
         <message>
-            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
-            <translation>machine: {} 是双通道车床，但作业中没有可在两个通道之间平衡的粗加工工序</translation>
-        </message>
-        <message>
             <source>it has no segments</source>
             <translation>没有线段</translation>
         </message>
@@ -4937,6 +4933,10 @@ Theirs: %6</source>
             <translation>数控系统 {} 不输出测量单元的程序；可输出的有 {}（{}）</translation>
         </message>
         <message>
+            <source>machine: {} is a two-path lathe and the job has no roughing step to balance between its paths</source>
+            <translation>machine: {} 是双通道车床，但作业中没有可在两个通道之间平衡的粗加工工序</translation>
+        </message>
+        <message>
             <source>ER32 collet chuck</source>
             <translation>ER32 弹簧夹头</translation>
         </message>
@@ -5453,6 +5453,14 @@ Theirs: %6</source>
             <translation>在 {1} 处切入成品 {0}，面积 {2} mm²</translation>
         </message>
         <message>
+            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
+            <translation>残留材料比应留量最多厚 {}，最厚处在 {}，半剖面上面积 {} mm²</translation>
+        </message>
+        <message>
+            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
+            <translation>残留材料比应留量最多高 {}，最高处在 {}，面积 {} mm²</translation>
+        </message>
+        <message>
             <source>the tool's {} runs {} into stock at {}</source>
             <translation>刀具的{0}在 {2} 处切入毛坯 {1}</translation>
         </message>
@@ -5463,14 +5471,6 @@ Theirs: %6</source>
         <message>
             <source>the paths span {} more along {} than the machine '{}' travels</source>
             <translation>刀路沿 {1} 方向比机床 '{2}' 的行程多出 {0}</translation>
-        </message>
-        <message>
-            <source>material left up to {} thicker than it should leave, thickest at {}, over {:.3f} mm² of the half-section</source>
-            <translation>残留材料比应留量最多厚 {}，最厚处在 {}，半剖面上面积 {} mm²</translation>
-        </message>
-        <message>
-            <source>material left up to {} above what it should leave, highest at {}, over {:.3f} mm²</source>
-            <translation>残留材料比应留量最多高 {}，最高处在 {}，面积 {} mm²</translation>
         </message>
         <message>
             <source>the tape has a {} the plan does not, to {}, {} into stock</source>
@@ -5489,12 +5489,8 @@ Theirs: %6</source>
             <translation>等待 {} 在另一路径的程序中没有同序的对应等待：两个路径都会停在这里（死锁）</translation>
         </message>
         <message>
-            <source>{}: {}, line {}</source>
-            <translation>{}：{}，第 {} 行</translation>
-        </message>
-        <message>
-            <source>{}: {}, program p{} line {}</source>
-            <translation>{}：{}，程序 p{} 第 {} 行</translation>
+            <source>{}: {}, in {} at line {}</source>
+            <translation>{}：{}，{} 第 {} 行</translation>
         </message>
         <message>
             <source>{}: {}, move {}, tape line {}</source>
