@@ -124,8 +124,12 @@ private:
     // each edge in every band its y range meets: the crossing test of a
     // point looks at its band's edges only (a contour flattened to 0.1 µm
     // has thousands of edges; verification asks millions of points).
+    // The bands span the contour's own height (an open contour's closing
+    // chords, a kilometre long, fall into the end bands); a point below,
+    // above or right of the whole polygon crosses none of it.
     std::vector<std::vector<std::uint32_t>> bands_;
     double bandsY0_ = 0.0, bandHeight_ = 1.0;
+    Box2 extent_{};
 };
 
 // The step's tool path (side_paths.cpp): the contour's offsets, layer by layer and pass by pass.

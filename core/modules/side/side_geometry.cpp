@@ -134,9 +134,13 @@ Sides::Sides(const Contour& c, bool toolOnLeft) : contour_(c)
 
 void Sides::makeBands()
 {
-    double y0 = polygon_.front().y, y1 = y0;
-    for (const Point2& q : polygon_) y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
-    const std::size_t n = std::clamp<std::size_t>(polygon_.size() / 8, 1, 4096);
+    extent_ = {polygon_.front(), polygon_.front()};
+    for (const Point2& q : polygon_)
+        extent_.min = {std::min(extent_.min.x, q.x), std::min(extent_.min.y, q.y)},
+        extent_.max = {std::max(extent_.max.x, q.x), std::max(extent_.max.y, q.y)};
+    const Box2 own = bounds(contour_);
+    const double y0 = own.min.y, y1 = own.max.y;
+    const std::size_t n = std::clamp<std::size_t>(polygon_.size() / 2, 1, 4096);
     bandsY0_ = y0;
     bandHeight_ = std::max((y1 - y0) / static_cast<double>(n), 1e-9);
     bands_.assign(n, {});
@@ -156,6 +160,8 @@ bool Sides::onToolSide(Point2 p) const
 {
     // Crossing number of the polygon, over the edges whose y range meets
     // the point's band (an edge the test counts spans p.y, so it is there).
+    // Below, above or right of the polygon no edge is counted.
+    if (p.y < extent_.min.y || p.y >= extent_.max.y || p.x > extent_.max.x) return !inside_;
     bool in = false;
     for (const std::uint32_t e : bands_[band(p.y)]) {
         const Point2 u = polygon_[e], v = polygon_[e == 0 ? polygon_.size() - 1 : e - 1];
@@ -184,18 +190,22 @@ Cavity sideCavity(const SideMill& mm, const TechnologyData& tech)
     // Deepest within s > 0: T on the tool's side grown by s. Shallowest
     // within |s|: T where the whole disc of radius |s| lies on the tool's
     // side within W of the contour (what the unit must remove).
+    // The side first: it is a band's crossings, the distance a look at every
+    // segment, and most of the box (all round a boss) is on the tool's side.
     c.depthAt = [sides, T = mm.depth, W = mm.width](Point2 p, double slack) {
-        const double d = sides->distance(p);
         const bool tool = sides->onToolSide(p);
-        if (slack >= 0.0) return tool || d <= slack ? T : 0.0;
-        return tool && d >= -slack && d <= W + slack ? T : 0.0;
+        if (slack >= 0.0) return tool || sides->distance(p) <= slack ? T : 0.0;
+        if (!tool) return 0.0;
+        const double d = sides->distance(p);
+        return d >= -slack && d <= W + slack ? T : 0.0;
     };
     // Finishing only (U8): the wall was roughed elsewhere, the band from α2
     // to W is open before the unit's steps.
     if (mm.toolUse == 8)
         c.openAt = [sides, T = mm.depth, W = mm.width, a2 = tech.alpha2](Point2 p) {
+            if (!sides->onToolSide(p)) return 0.0;
             const double d = sides->distance(p);
-            return sides->onToolSide(p) && d >= a2 && d <= W ? T : 0.0;
+            return d >= a2 && d <= W ? T : 0.0;
         };
     return c;
 }
