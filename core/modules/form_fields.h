@@ -1,14 +1,16 @@
 // What a module's form shows, described without any widget: one FormField
-// per input (key, label, the checks' field names, how to read and write the
-// value on the module input). The station builds its forms and undo commands
-// from these; labels are source texts of the translation (context
-// "taiwa::ui::FieldSpec", marked with TAIWA_TRANSLATE_NOOP for lupdate).
+// per input (key, label, the checks' field names, its help line and drawing
+// symbol, how to read and write the value on the module input). The station
+// builds its forms and undo commands from these; labels and help lines are
+// source texts of the translation (context "taiwa::ui::FieldSpec", marked
+// with TAIWA_TRANSLATE_NOOP for lupdate).
 #pragma once
 
 #include "model/codes.h"
 #include "model/geometry.h"
 #include "model/module.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -51,30 +53,27 @@ struct FormField {
     // drawing ("sym-P1"; empty: none), highlighted while the field is typed in.
     std::string help;
     std::string symbol;
+    // Sets both where the field is made:
+    //   fs.push_back(member<M4Pocket>("depth", ...).described("sym-T", TAIWA_TRANSLATE_NOOP(..., "Depth ...")));
+    // described(help) for a field with no symbol.
+    FormField& described(std::string symbolId, std::string helpText) &
+    {
+        symbol = std::move(symbolId);
+        help = std::move(helpText);
+        return *this;
+    }
+    FormField described(std::string symbolId, std::string helpText) &&
+    {
+        return std::move(described(std::move(symbolId), std::move(helpText)));
+    }
+    FormField& described(std::string helpText) & { return described({}, std::move(helpText)); }
+    FormField described(std::string helpText) && { return std::move(described({}, std::move(helpText))); }
     // Number fields that hold a count: the form refuses a fraction instead
     // of rounding what was typed.
     bool whole = false;
 };
 
 namespace form {
-
-// The help line and drawing symbol of the fields whose key starts with
-// `keyPrefix` ("P1." for P1 X and P1 Y; "depth" for that field alone).
-struct Help {
-    const char* keyPrefix;
-    const char* symbol;  // "" for none
-    const char* help;
-};
-inline void describe(std::vector<FormField>& fields, std::initializer_list<Help> helps)
-{
-    for (FormField& f : fields)
-        for (const Help& h : helps)
-            if (f.key.rfind(h.keyPrefix, 0) == 0) {
-                f.help = h.help;
-                f.symbol = h.symbol;
-                break;
-            }
-}
 
 // A number of module T read and written by two functions.
 template <class T, class Get, class Set>
@@ -129,17 +128,41 @@ template <class T>
 FormField stepOver()
 {
     return optionalMember<T>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
-                             TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's"), {"stepOver"}, &T::stepOver);
+                             TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's"), {"stepOver"},
+                             &T::stepOver)
+        .described(TAIWA_TRANSLATE_NOOP(
+            "taiwa::ui::FieldSpec",
+            "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's"));
+}
+// An int member of module T: a count (`kind` Number, the form refuses a
+// fraction) or a code (`kind` Code, offering `codes`, each value with its
+// meaning; a module's own meanings, which the form puts after the code and
+// translates in the core texts' context, ui/core_texts.cpp).
+template <class T>
+FormField intMember(std::string key, std::string label, int T::*m, FormFieldKind kind = FormFieldKind::Number,
+                    std::vector<std::pair<int, std::string>> codes = {})
+{
+    FormField f = number<T>(
+        key, std::move(label), {key}, [m](const T& t) { return static_cast<double>(t.*m); },
+        [m](T& t, double v) { t.*m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+    f.kind = kind;
+    f.whole = kind == FormFieldKind::Number;
+    f.codes = std::move(codes);
+    return f;
+}
+template <class T>
+FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes, int T::*m)
+{
+    return intMember<T>(std::move(key), std::move(label), m, FormFieldKind::Code, std::move(codes));
 }
 // A code of one of the code tables, with the meaning of each allowed value.
 template <class T, class Code>
 FormField code(std::string key, std::string label, std::initializer_list<Code> allowed, int T::*m)
 {
-    FormField f = number<T>(key, std::move(label), {key}, [m](const T& t) { return static_cast<double>(t.*m); },
-                            [m](T& t, double v) { t.*m = static_cast<int>(std::lround(v)); });
-    f.kind = FormFieldKind::Code;
-    for (Code c : allowed) f.codes.emplace_back(static_cast<int>(c), std::string(meaning(c)));
-    return f;
+    std::vector<std::pair<int, std::string>> codes;
+    for (Code c : allowed)
+        codes.emplace_back(static_cast<int>(c), std::string(meaning(c)));
+    return intMember<T>(std::move(key), std::move(label), m, FormFieldKind::Code, std::move(codes));
 }
 
 // The names typed in a list field: separated by commas or blanks, empty

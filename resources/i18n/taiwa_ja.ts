@@ -5555,36 +5555,36 @@ Theirs: %6</source>
             <translation>領域</translation>
         </message>
         <message>
-            <source>Islands</source>
-            <translation>アイランド</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深さ)</translation>
-        </message>
-        <message>
-            <source>D (tool diameter)</source>
-            <translation>D(工具径)</translation>
-        </message>
-        <message>
-            <source>Passes (points)</source>
-            <translation>パス(点)</translation>
-        </message>
-        <message>
             <source>The contour of the figure around the area to clear (e.g. K1)</source>
             <translation>除去する領域を囲む図形の輪郭 (例: K1)</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>アイランド</translation>
         </message>
         <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>領域内に残す図形の輪郭、カンマ区切り。なければ空欄</translation>
         </message>
         <message>
+            <source>T (depth)</source>
+            <translation>T(深さ)</translation>
+        </message>
+        <message>
             <source>Depth the passes cut to, down from the top surface</source>
             <translation>パスが削る深さ (上面から下へ)</translation>
         </message>
         <message>
+            <source>D (tool diameter)</source>
+            <translation>D(工具径)</translation>
+        </message>
+        <message>
             <source>Diameter of the end mill: each pass is a strip this wide</source>
             <translation>エンドミルの直径: 各パスはこの幅の帯になります</translation>
+        </message>
+        <message>
+            <source>Passes (points)</source>
+            <translation>パス(点)</translation>
         </message>
         <message>
             <source>The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab</source>
@@ -5593,14 +5593,6 @@ Theirs: %6</source>
         <message>
             <source>Outline</source>
             <translation>輪郭</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(工具使用区分)</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(仕上げ区分)</translation>
         </message>
         <message>
             <source>The contour of the figure that is the pocket's edge at the top (e.g. K1)</source>
@@ -5615,48 +5607,24 @@ Theirs: %6</source>
             <translation>ポケットの深さ (上面から下へ)</translation>
         </message>
         <message>
+            <source>U (tool use)</source>
+            <translation>U(工具使用区分)</translation>
+        </message>
+        <message>
             <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
             <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(仕上げ区分)</translation>
         </message>
         <message>
             <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
             <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
         </message>
         <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
-        </message>
-        <message>
             <source>Depth</source>
             <translation>深さ</translation>
-        </message>
-        <message>
-            <source>Finishing pass</source>
-            <translation>仕上げパス</translation>
-        </message>
-        <message>
-            <source>technology data's β2</source>
-            <translation>加工技術データの β2</translation>
-        </message>
-        <message>
-            <source>Angle of the passes (°)</source>
-            <translation>パスの角度 (°)</translation>
-        </message>
-        <message>
-            <source>Pattern</source>
-            <translation>配置</translation>
-        </message>
-        <message>
-            <source>Step-over (× D)</source>
-            <translation>ステップオーバ(× D)</translation>
-        </message>
-        <message>
-            <source>0.75 (face mill), else technology data's</source>
-            <translation>0.75 (正面フライス)、それ以外は加工技術データの値</translation>
-        </message>
-        <message>
-            <source>Margin beyond the stock</source>
-            <translation>素材外側の余裕</translation>
         </message>
         <message>
             <source>Stock taken off the top, down from Z0; less than the stock's height</source>
@@ -5667,20 +5635,48 @@ Theirs: %6</source>
             <translation>荒加工層と仕上げパス (1)、または荒加工のみで仕上げ分を残す (9)</translation>
         </message>
         <message>
+            <source>Finishing pass</source>
+            <translation>仕上げパス</translation>
+        </message>
+        <message>
+            <source>technology data's β2</source>
+            <translation>加工技術データの β2</translation>
+        </message>
+        <message>
             <source>Depth of the finishing pass, less than the depth; empty for the technology data's β2</source>
             <translation>仕上げパスの深さ (深さ未満)。空欄は加工技術データの β2</translation>
+        </message>
+        <message>
+            <source>Angle of the passes (°)</source>
+            <translation>パスの角度 (°)</translation>
         </message>
         <message>
             <source>Direction of the passes in degrees, counter-clockwise from +X</source>
             <translation>パスの方向 (+X から反時計回りの角度)</translation>
         </message>
         <message>
+            <source>Pattern</source>
+            <translation>配置</translation>
+        </message>
+        <message>
             <source>One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)</source>
             <translation>一方向 (全パスをダウンカット、部品の上を戻る) またはジグザグ (往復、部品の外でつなぐ)</translation>
         </message>
         <message>
+            <source>Step-over (× D)</source>
+            <translation>ステップオーバ(× D)</translation>
+        </message>
+        <message>
+            <source>0.75 (face mill), else technology data's</source>
+            <translation>0.75 (正面フライス)、それ以外は加工技術データの値</translation>
+        </message>
+        <message>
             <source>Distance between passes as a share of the tool's diameter, above 0 and at most 0.9</source>
             <translation>パス間隔 (工具径に対する割合、0 より大きく 0.9 以下)</translation>
+        </message>
+        <message>
+            <source>Margin beyond the stock</source>
+            <translation>素材外側の余裕</translation>
         </message>
         <message>
             <source>How far the face reaches beyond the stock's sides; 0 for exactly the top</source>
@@ -5691,124 +5687,144 @@ Theirs: %6</source>
             <translation>技術データの値</translation>
         </message>
         <message>
-            <source>X (hole, first hole or centre)</source>
-            <translation>X (穴、最初の穴または中心)</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
-        </message>
-        <message>
-            <source>Angle (°)</source>
-            <translation>角度 (°)</translation>
-        </message>
-        <message>
-            <source>Pitch</source>
-            <translation>ピッチ</translation>
-        </message>
-        <message>
-            <source>Pitch between rows</source>
-            <translation>行間ピッチ</translation>
-        </message>
-        <message>
-            <source>Radius</source>
-            <translation>半径</translation>
-        </message>
-        <message>
-            <source>Angular pitch (°)</source>
-            <translation>角度ピッチ (°)</translation>
-        </message>
-        <message>
-            <source>Count (grid: columns)</source>
-            <translation>個数 (格子: 列数)</translation>
-        </message>
-        <message>
-            <source>Rows</source>
-            <translation>行数</translation>
-        </message>
-        <message>
-            <source>Hole</source>
-            <translation>穴</translation>
-        </message>
-        <message>
-            <source>Thread (tapped)</source>
-            <translation>ねじ (タップ)</translation>
-        </message>
-        <message>
-            <source>Diameter</source>
-            <translation>直径</translation>
-        </message>
-        <message>
-            <source>Depth (full diameter)</source>
-            <translation>深さ (全径部)</translation>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
         </message>
         <message>
             <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
             <translation>穴の配置: 単独、直線、格子、ボルト円、円弧</translation>
         </message>
         <message>
+            <source>X (hole, first hole or centre)</source>
+            <translation>X (穴、最初の穴または中心)</translation>
+        </message>
+        <message>
             <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>単独の穴、直線の最初の穴、格子の角、円の中心</translation>
+        </message>
+        <message>
+            <source>Y</source>
+            <translation>Y</translation>
         </message>
         <message>
             <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>穴、列の最初の穴、格子の角、円の中心の Y</translation>
         </message>
         <message>
-            <source>Bolt circle or arc: the radius the hole centres lie on</source>
-            <translation>ボルト円・円弧:穴の中心が並ぶ半径</translation>
-        </message>
-        <message>
-            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
-            <translation>穴の数:直線上、円周上、円弧上。格子では列数</translation>
-        </message>
-        <message>
-            <source>Grid: how many rows of holes</source>
-            <translation>格子:穴の行数</translation>
-        </message>
-        <message>
-            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
-            <translation>タップ穴:ISO メートル並目ねじ M3〜M20</translation>
-        </message>
-        <message>
-            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
-            <translation>ドリル・リーマ・ボーリング穴の直径(タップ穴はねじの径)</translation>
+            <source>Angle (°)</source>
+            <translation>角度 (°)</translation>
         </message>
         <message>
             <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
             <translation>直線・格子の行の方向。円では最初の穴の角度</translation>
         </message>
         <message>
-            <source>Grid: distance between rows</source>
-            <translation>格子: 行と行の間隔</translation>
+            <source>Pitch</source>
+            <translation>ピッチ</translation>
         </message>
         <message>
             <source>Distance between neighbouring holes along the row</source>
             <translation>行に沿って隣り合う穴の間隔</translation>
         </message>
         <message>
+            <source>Pitch between rows</source>
+            <translation>行間ピッチ</translation>
+        </message>
+        <message>
+            <source>Grid: distance between rows</source>
+            <translation>格子: 行と行の間隔</translation>
+        </message>
+        <message>
+            <source>Radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>Bolt circle or arc: the radius the hole centres lie on</source>
+            <translation>ボルト円・円弧:穴の中心が並ぶ半径</translation>
+        </message>
+        <message>
+            <source>Angular pitch (°)</source>
+            <translation>角度ピッチ (°)</translation>
+        </message>
+        <message>
             <source>Arc: angle between neighbouring holes</source>
             <translation>円弧: 隣り合う穴の間の角度</translation>
+        </message>
+        <message>
+            <source>Count (grid: columns)</source>
+            <translation>個数 (格子: 列数)</translation>
+        </message>
+        <message>
+            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
+            <translation>穴の数:直線上、円周上、円弧上。格子では列数</translation>
+        </message>
+        <message>
+            <source>Rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>Grid: how many rows of holes</source>
+            <translation>格子:穴の行数</translation>
+        </message>
+        <message>
+            <source>Hole</source>
+            <translation>穴</translation>
         </message>
         <message>
             <source>Drilled, tapped, reamed or bored: which steps each hole gets</source>
             <translation>ドリル、タップ、リーマ、中ぐり: 各穴の加工工程</translation>
         </message>
         <message>
+            <source>Thread (tapped)</source>
+            <translation>ねじ (タップ)</translation>
+        </message>
+        <message>
+            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
+            <translation>タップ穴:ISO メートル並目ねじ M3〜M20</translation>
+        </message>
+        <message>
+            <source>Diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
+            <translation>ドリル・リーマ・ボーリング穴の直径(タップ穴はねじの径)</translation>
+        </message>
+        <message>
+            <source>Depth (full diameter)</source>
+            <translation>深さ (全径部)</translation>
+        </message>
+        <message>
             <source>Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper</source>
             <translation>全径部 (完全ねじ部) の深さ、上面から下へ。ドリル先端はさらに深くなります</translation>
+        </message>
+        <message>
+            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
+            <translation>開口が始まる角、上面でのワーク座標</translation>
         </message>
         <message>
             <source>L1 (length X)</source>
             <translation>L1(X 方向長さ)</translation>
         </message>
         <message>
+            <source>Length of the opening along X, at the top surface</source>
+            <translation>開口の X 方向の長さ (上面)</translation>
+        </message>
+        <message>
             <source>L2 (length Y)</source>
             <translation>L2(Y 方向長さ)</translation>
         </message>
         <message>
+            <source>Width of the opening along Y, at the top surface</source>
+            <translation>開口の Y 方向の幅 (上面)</translation>
+        </message>
+        <message>
             <source>θ1 (left wall, °)</source>
             <translation>θ1(左壁、°)</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
+            <translation>L1 の始まり側の壁の傾き (垂直からの角度)</translation>
         </message>
         <message>
             <source>θ2 (right wall, °)</source>
@@ -5819,56 +5835,40 @@ Theirs: %6</source>
             <translation>空欄 = θ1 と同じ</translation>
         </message>
         <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(コーナ半径)</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(下穴)</translation>
-        </message>
-        <message>
-            <source>Scallop height</source>
-            <translation>カスプ高さ</translation>
-        </message>
-        <message>
-            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
-            <translation>開口が始まる角、上面でのワーク座標</translation>
-        </message>
-        <message>
-            <source>Length of the opening along X, at the top surface</source>
-            <translation>開口の X 方向の長さ (上面)</translation>
-        </message>
-        <message>
-            <source>Width of the opening along Y, at the top surface</source>
-            <translation>開口の Y 方向の幅 (上面)</translation>
-        </message>
-        <message>
-            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
-            <translation>L1 の始まり側の壁の傾き (垂直からの角度)</translation>
-        </message>
-        <message>
             <source>Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1</source>
             <translation>L1 の終わり側の壁の傾き (垂直からの角度)；空欄は θ1 と同じ</translation>
+        </message>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(コーナ半径)</translation>
         </message>
         <message>
             <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
             <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
         </message>
         <message>
+            <source>H (pilot hole)</source>
+            <translation>H(下穴)</translation>
+        </message>
+        <message>
             <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
             <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
+        </message>
+        <message>
+            <source>Scallop height</source>
+            <translation>カスプ高さ</translation>
         </message>
         <message>
             <source>Largest ridge the ball end mill may leave between its passes on the inclined walls</source>
             <translation>傾斜壁でボールエンドミルのパス間に残ってよい最大のカスプ高さ</translation>
         </message>
         <message>
-            <source>S (taper, °/side)</source>
-            <translation>S(テーパ、片側 °)</translation>
-        </message>
-        <message>
             <source>A corner of the pocket at the top surface, in work coordinates</source>
             <translation>上面でのポケットの角 (ワーク座標)</translation>
+        </message>
+        <message>
+            <source>S (taper, °/side)</source>
+            <translation>S(テーパ、片側 °)</translation>
         </message>
         <message>
             <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
@@ -5911,56 +5911,12 @@ Theirs: %6</source>
             <translation>形状</translation>
         </message>
         <message>
-            <source>Touched from</source>
-            <translation>接触する側</translation>
-        </message>
-        <message>
-            <source>P1 machine X</source>
-            <translation>P1 機械座標 X</translation>
-        </message>
-        <message>
-            <source>P1 machine Y</source>
-            <translation>P1 機械座標 Y</translation>
-        </message>
-        <message>
-            <source>not touched</source>
-            <translation>未測定</translation>
-        </message>
-        <message>
-            <source>Top face machine Z</source>
-            <translation>上面 機械座標 Z</translation>
-        </message>
-        <message>
-            <source>Tolerance</source>
-            <translation>許容差</translation>
-        </message>
-        <message>
-            <source>Nominal diameter / width X</source>
-            <translation>呼び径 / 幅 X</translation>
-        </message>
-        <message>
-            <source>Nominal length Y</source>
-            <translation>呼び長さ Y</translation>
-        </message>
-        <message>
-            <source>Touch depth</source>
-            <translation>接触深さ</translation>
-        </message>
-        <message>
-            <source>Clearance</source>
-            <translation>逃げ量</translation>
-        </message>
-        <message>
-            <source>Search distance</source>
-            <translation>探索距離</translation>
-        </message>
-        <message>
-            <source>Probing feed (mm/min)</source>
-            <translation>測定送り (mm/min)</translation>
-        </message>
-        <message>
             <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
             <translation>丸形 (ボスまたは穴) か角形 (ブロックまたはポケット)</translation>
+        </message>
+        <message>
+            <source>Touched from</source>
+            <translation>接触する側</translation>
         </message>
         <message>
             <source>Whether the probe touches the part from outside or from inside</source>
@@ -5971,36 +5927,80 @@ Theirs: %6</source>
             <translation>最初の測定点の位置 (機械座標)</translation>
         </message>
         <message>
+            <source>P1 machine X</source>
+            <translation>P1 機械座標 X</translation>
+        </message>
+        <message>
+            <source>P1 machine Y</source>
+            <translation>P1 機械座標 Y</translation>
+        </message>
+        <message>
             <source>A touch, relative to the first one; empty until it is measured</source>
             <translation>最初の点からの相対位置の測定点；測定するまで空欄</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未測定</translation>
+        </message>
+        <message>
+            <source>Top face machine Z</source>
+            <translation>上面 機械座標 Z</translation>
         </message>
         <message>
             <source>Height of a touch on the top face, in machine coordinates; empty if not touched</source>
             <translation>上面の測定点の高さ (機械座標)；測定しない場合は空欄</translation>
         </message>
         <message>
+            <source>Tolerance</source>
+            <translation>許容差</translation>
+        </message>
+        <message>
             <source>Largest distance a touch may lie from the fitted shape</source>
             <translation>測定点が当てはめた形状から離れてよい最大距離</translation>
+        </message>
+        <message>
+            <source>Nominal diameter / width X</source>
+            <translation>呼び径 / 幅 X</translation>
         </message>
         <message>
             <source>Diameter of the round part, or its width along X</source>
             <translation>丸形の直径、または X 方向の幅</translation>
         </message>
         <message>
+            <source>Nominal length Y</source>
+            <translation>呼び長さ Y</translation>
+        </message>
+        <message>
             <source>Length of the rectangular part along Y</source>
             <translation>角形の Y 方向の長さ</translation>
+        </message>
+        <message>
+            <source>Touch depth</source>
+            <translation>接触深さ</translation>
         </message>
         <message>
             <source>How far below the top face the probe touches the sides</source>
             <translation>側面を測定する上面からの深さ</translation>
         </message>
         <message>
+            <source>Clearance</source>
+            <translation>逃げ量</translation>
+        </message>
+        <message>
             <source>Distance kept from the part while the probe moves between touches</source>
             <translation>測定点間を移動するときに部品から離す距離</translation>
         </message>
         <message>
+            <source>Search distance</source>
+            <translation>探索距離</translation>
+        </message>
+        <message>
             <source>How far past the expected surface the probe looks for it before giving up</source>
             <translation>予想面を越えてどこまで探すか (見つからなければ停止)</translation>
+        </message>
+        <message>
+            <source>Probing feed (mm/min)</source>
+            <translation>測定送り (mm/min)</translation>
         </message>
         <message>
             <source>Feed of the probing moves, in mm per minute</source>
@@ -6011,24 +6011,20 @@ Theirs: %6</source>
             <translation>輪郭</translation>
         </message>
         <message>
-            <source>Tool side</source>
-            <translation>工具側</translation>
-        </message>
-        <message>
-            <source>Direction</source>
-            <translation>方向</translation>
-        </message>
-        <message>
-            <source>W (width)</source>
-            <translation>W(幅)</translation>
-        </message>
-        <message>
             <source>The contour of the figure that is the finished wall, open or closed (e.g. K1)</source>
             <translation>仕上がり壁となる図形の輪郭、開いていても閉じていてもよい (例: K1)</translation>
         </message>
         <message>
+            <source>Tool side</source>
+            <translation>工具側</translation>
+        </message>
+        <message>
             <source>Which side of the contour, looking along its direction, the tool and the material to remove are on</source>
             <translation>輪郭の方向に見て、工具と除去する材料がどちら側にあるか</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>方向</translation>
         </message>
         <message>
             <source>Climb or conventional milling (with M3, climb runs the tool on the left of its travel)</source>
@@ -6037,6 +6033,10 @@ Theirs: %6</source>
         <message>
             <source>Depth of the wall, down from the top surface</source>
             <translation>壁の深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>W (width)</source>
+            <translation>W(幅)</translation>
         </message>
         <message>
             <source>Width of the material to remove, measured from the contour on the tool's side</source>
@@ -6055,16 +6055,32 @@ Theirs: %6</source>
             <translation>曲線 1</translation>
         </message>
         <message>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
+            <translation>1 本目の曲線: ';' で区切った点 X, Y, Z、または 2 つの投影 'XY: X, Y; ... / ZX: Z, X; ...' (各投影は点列か図形の開いた輪郭 'XY: K1')。直線で結ぶときは末尾に '/ lines'</translation>
+        </message>
+        <message>
             <source>Curve 2</source>
             <translation>曲線 2</translation>
+        </message>
+        <message>
+            <source>The second curve, as the first; the surface is ruled between the two</source>
+            <translation>2 本目の曲線 (1 本目と同じ書き方)。曲面は 2 本の間の線織面</translation>
         </message>
         <message>
             <source>N (roughing pieces)</source>
             <translation>N (荒加工の分割数)</translation>
         </message>
         <message>
+            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
+            <translation>荒加工の曲面のために各曲線を分ける数。M より少なく</translation>
+        </message>
+        <message>
             <source>M (finishing pieces)</source>
             <translation>M (仕上げの分割数)</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
+            <translation>仕上げの曲面のために各曲線を分ける数。N より多く。空欄: 曲線に沿ったピッチから</translation>
         </message>
         <message>
             <source>Step along the curves (gives M)</source>
@@ -6075,8 +6091,20 @@ Theirs: %6</source>
             <translation>M を指定</translation>
         </message>
         <message>
+            <source>The step along the curves that gives M; empty when M is given</source>
+            <translation>M を決める曲線に沿ったピッチ。M を指定したときは空欄</translation>
+        </message>
+        <message>
+            <source>Height of the ridges the ball leaves between finishing paths</source>
+            <translation>仕上げパスの間にボールが残す山の高さ</translation>
+        </message>
+        <message>
             <source>Roughing allowance</source>
             <translation>荒加工の仕上げ代</translation>
+        </message>
+        <message>
+            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
+            <translation>等高線荒加工が曲面に法線方向に残す肉厚</translation>
         </message>
         <message>
             <source>Boundary (paths)</source>
@@ -6087,44 +6115,16 @@ Theirs: %6</source>
             <translation>なし: 曲面全体</translation>
         </message>
         <message>
+            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
+            <translation>各パスが止まる曲面: 点 X, Y, Z のパス。点の間は ';'、パスの間は '/'。なければ空欄</translation>
+        </message>
+        <message>
             <source>Ball end mill (T)</source>
             <translation>ボールエンドミル (T)</translation>
         </message>
         <message>
             <source>under the smallest concave radius</source>
             <translation>最小凹半径より小さいもの</translation>
-        </message>
-        <message>
-            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
-            <translation>1 本目の曲線: ';' で区切った点 X, Y, Z、または 2 つの投影 'XY: X, Y; ... / ZX: Z, X; ...' (各投影は点列か図形の開いた輪郭 'XY: K1')。直線で結ぶときは末尾に '/ lines'</translation>
-        </message>
-        <message>
-            <source>The second curve, as the first; the surface is ruled between the two</source>
-            <translation>2 本目の曲線 (1 本目と同じ書き方)。曲面は 2 本の間の線織面</translation>
-        </message>
-        <message>
-            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
-            <translation>荒加工の曲面のために各曲線を分ける数。M より少なく</translation>
-        </message>
-        <message>
-            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
-            <translation>仕上げの曲面のために各曲線を分ける数。N より多く。空欄: 曲線に沿ったピッチから</translation>
-        </message>
-        <message>
-            <source>The step along the curves that gives M; empty when M is given</source>
-            <translation>M を決める曲線に沿ったピッチ。M を指定したときは空欄</translation>
-        </message>
-        <message>
-            <source>Height of the ridges the ball leaves between finishing paths</source>
-            <translation>仕上げパスの間にボールが残す山の高さ</translation>
-        </message>
-        <message>
-            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
-            <translation>等高線荒加工が曲面に法線方向に残す肉厚</translation>
-        </message>
-        <message>
-            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
-            <translation>各パスが止まる曲面: 点 X, Y, Z のパス。点の間は ';'、パスの間は '/'。なければ空欄</translation>
         </message>
         <message>
             <source>The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius</source>
@@ -6139,20 +6139,20 @@ Theirs: %6</source>
             <translation>形状</translation>
         </message>
         <message>
-            <source>Start X (diameter)</source>
-            <translation>始点 X (直径)</translation>
-        </message>
-        <message>
-            <source>Start Z</source>
-            <translation>始点 Z</translation>
-        </message>
-        <message>
             <source>Outer profile (the outside diameter) or inner profile (a bore)</source>
             <translation>外径の輪郭か内径 (穴) の輪郭か</translation>
         </message>
         <message>
+            <source>Start X (diameter)</source>
+            <translation>始点 X (直径)</translation>
+        </message>
+        <message>
             <source>Diameter where the profile starts, at its front end</source>
             <translation>輪郭の始点の直径 (前端)</translation>
+        </message>
+        <message>
+            <source>Start Z</source>
+            <translation>始点 Z</translation>
         </message>
         <message>
             <source>Z where the profile starts; 0 is the finished front face</source>

@@ -5555,36 +5555,36 @@ Theirs: %6</source>
             <translation>区域</translation>
         </message>
         <message>
-            <source>Islands</source>
-            <translation>岛</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深度)</translation>
-        </message>
-        <message>
-            <source>D (tool diameter)</source>
-            <translation>D（刀具直径）</translation>
-        </message>
-        <message>
-            <source>Passes (points)</source>
-            <translation>路径（点）</translation>
-        </message>
-        <message>
             <source>The contour of the figure around the area to clear (e.g. K1)</source>
             <translation>围绕待清除区域的图形轮廓（例如 K1）</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>岛</translation>
         </message>
         <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>区域内保留的图形轮廓，用逗号分隔；无则留空</translation>
         </message>
         <message>
+            <source>T (depth)</source>
+            <translation>T(深度)</translation>
+        </message>
+        <message>
             <source>Depth the passes cut to, down from the top surface</source>
             <translation>路径切削的深度（自上表面向下）</translation>
         </message>
         <message>
+            <source>D (tool diameter)</source>
+            <translation>D（刀具直径）</translation>
+        </message>
+        <message>
             <source>Diameter of the end mill: each pass is a strip this wide</source>
             <translation>立铣刀直径：每条路径为此宽度的条带</translation>
+        </message>
+        <message>
+            <source>Passes (points)</source>
+            <translation>路径（点）</translation>
         </message>
         <message>
             <source>The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab</source>
@@ -5593,14 +5593,6 @@ Theirs: %6</source>
         <message>
             <source>Outline</source>
             <translation>轮廓</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(刀具使用)</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(侧壁精加工)</translation>
         </message>
         <message>
             <source>The contour of the figure that is the pocket's edge at the top (e.g. K1)</source>
@@ -5615,48 +5607,24 @@ Theirs: %6</source>
             <translation>型腔深度，从上表面向下</translation>
         </message>
         <message>
+            <source>U (tool use)</source>
+            <translation>U(刀具使用)</translation>
+        </message>
+        <message>
             <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
             <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(侧壁精加工)</translation>
         </message>
         <message>
             <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
             <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
         </message>
         <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
-        </message>
-        <message>
             <source>Depth</source>
             <translation>深度</translation>
-        </message>
-        <message>
-            <source>Finishing pass</source>
-            <translation>精加工刀路</translation>
-        </message>
-        <message>
-            <source>technology data's β2</source>
-            <translation>工艺数据的 β2</translation>
-        </message>
-        <message>
-            <source>Angle of the passes (°)</source>
-            <translation>刀路角度（°）</translation>
-        </message>
-        <message>
-            <source>Pattern</source>
-            <translation>排列方式</translation>
-        </message>
-        <message>
-            <source>Step-over (× D)</source>
-            <translation>行距 (× D)</translation>
-        </message>
-        <message>
-            <source>0.75 (face mill), else technology data's</source>
-            <translation>0.75（面铣刀），否则为工艺数据值</translation>
-        </message>
-        <message>
-            <source>Margin beyond the stock</source>
-            <translation>超出毛坯的余量</translation>
         </message>
         <message>
             <source>Stock taken off the top, down from Z0; less than the stock's height</source>
@@ -5667,20 +5635,48 @@ Theirs: %6</source>
             <translation>粗加工层加精加工刀路（1），或仅粗加工并留出精加工余量（9）</translation>
         </message>
         <message>
+            <source>Finishing pass</source>
+            <translation>精加工刀路</translation>
+        </message>
+        <message>
+            <source>technology data's β2</source>
+            <translation>工艺数据的 β2</translation>
+        </message>
+        <message>
             <source>Depth of the finishing pass, less than the depth; empty for the technology data's β2</source>
             <translation>精加工刀路的深度，小于总深度；留空则为工艺数据的 β2</translation>
+        </message>
+        <message>
+            <source>Angle of the passes (°)</source>
+            <translation>刀路角度（°）</translation>
         </message>
         <message>
             <source>Direction of the passes in degrees, counter-clockwise from +X</source>
             <translation>刀路方向，自 +X 逆时针的角度</translation>
         </message>
         <message>
+            <source>Pattern</source>
+            <translation>排列方式</translation>
+        </message>
+        <message>
             <source>One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)</source>
             <translation>单向（每条刀路顺铣，在工件上方返回）或之字形（往复，在工件外侧连接）</translation>
         </message>
         <message>
+            <source>Step-over (× D)</source>
+            <translation>行距 (× D)</translation>
+        </message>
+        <message>
+            <source>0.75 (face mill), else technology data's</source>
+            <translation>0.75（面铣刀），否则为工艺数据值</translation>
+        </message>
+        <message>
             <source>Distance between passes as a share of the tool's diameter, above 0 and at most 0.9</source>
             <translation>刀路间距占刀具直径的比例，大于 0 且不超过 0.9</translation>
+        </message>
+        <message>
+            <source>Margin beyond the stock</source>
+            <translation>超出毛坯的余量</translation>
         </message>
         <message>
             <source>How far the face reaches beyond the stock's sides; 0 for exactly the top</source>
@@ -5691,124 +5687,144 @@ Theirs: %6</source>
             <translation>工艺数据的值</translation>
         </message>
         <message>
-            <source>X (hole, first hole or centre)</source>
-            <translation>X（孔、第一个孔或中心）</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
-        </message>
-        <message>
-            <source>Angle (°)</source>
-            <translation>角度 (°)</translation>
-        </message>
-        <message>
-            <source>Pitch</source>
-            <translation>间距</translation>
-        </message>
-        <message>
-            <source>Pitch between rows</source>
-            <translation>行间距</translation>
-        </message>
-        <message>
-            <source>Radius</source>
-            <translation>半径</translation>
-        </message>
-        <message>
-            <source>Angular pitch (°)</source>
-            <translation>角度间距 (°)</translation>
-        </message>
-        <message>
-            <source>Count (grid: columns)</source>
-            <translation>数量（网格：列数）</translation>
-        </message>
-        <message>
-            <source>Rows</source>
-            <translation>行数</translation>
-        </message>
-        <message>
-            <source>Hole</source>
-            <translation>孔</translation>
-        </message>
-        <message>
-            <source>Thread (tapped)</source>
-            <translation>螺纹（攻丝）</translation>
-        </message>
-        <message>
-            <source>Diameter</source>
-            <translation>直径</translation>
-        </message>
-        <message>
-            <source>Depth (full diameter)</source>
-            <translation>深度（全直径部分）</translation>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
         </message>
         <message>
             <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
             <translation>孔的排列方式：单孔、直线、网格、螺栓圆或圆弧</translation>
         </message>
         <message>
+            <source>X (hole, first hole or centre)</source>
+            <translation>X（孔、第一个孔或中心）</translation>
+        </message>
+        <message>
             <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>单孔、直线的第一个孔、网格的角点、圆的中心</translation>
+        </message>
+        <message>
+            <source>Y</source>
+            <translation>Y</translation>
         </message>
         <message>
             <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>孔、直线第一个孔、网格角点或圆心的 Y</translation>
         </message>
         <message>
-            <source>Bolt circle or arc: the radius the hole centres lie on</source>
-            <translation>螺栓圆或圆弧:孔中心所在的半径</translation>
-        </message>
-        <message>
-            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
-            <translation>孔数:沿直线、圆周或圆弧;网格为列数</translation>
-        </message>
-        <message>
-            <source>Grid: how many rows of holes</source>
-            <translation>网格:孔的行数</translation>
-        </message>
-        <message>
-            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
-            <translation>螺纹孔:ISO 公制粗牙螺纹 M3 至 M20</translation>
-        </message>
-        <message>
-            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
-            <translation>钻孔、铰孔或镗孔的直径(螺纹孔取螺纹的直径)</translation>
+            <source>Angle (°)</source>
+            <translation>角度 (°)</translation>
         </message>
         <message>
             <source>Direction of a line's or grid's rows; angle of a circle's first hole</source>
             <translation>直线或网格各行的方向；圆上第一个孔的角度</translation>
         </message>
         <message>
-            <source>Grid: distance between rows</source>
-            <translation>网格：行与行的间距</translation>
+            <source>Pitch</source>
+            <translation>间距</translation>
         </message>
         <message>
             <source>Distance between neighbouring holes along the row</source>
             <translation>沿行相邻孔之间的距离</translation>
         </message>
         <message>
+            <source>Pitch between rows</source>
+            <translation>行间距</translation>
+        </message>
+        <message>
+            <source>Grid: distance between rows</source>
+            <translation>网格：行与行的间距</translation>
+        </message>
+        <message>
+            <source>Radius</source>
+            <translation>半径</translation>
+        </message>
+        <message>
+            <source>Bolt circle or arc: the radius the hole centres lie on</source>
+            <translation>螺栓圆或圆弧:孔中心所在的半径</translation>
+        </message>
+        <message>
+            <source>Angular pitch (°)</source>
+            <translation>角度间距 (°)</translation>
+        </message>
+        <message>
             <source>Arc: angle between neighbouring holes</source>
             <translation>圆弧：相邻孔之间的角度</translation>
+        </message>
+        <message>
+            <source>Count (grid: columns)</source>
+            <translation>数量（网格：列数）</translation>
+        </message>
+        <message>
+            <source>How many holes: along a line, around a circle or an arc; a grid's columns</source>
+            <translation>孔数:沿直线、圆周或圆弧;网格为列数</translation>
+        </message>
+        <message>
+            <source>Rows</source>
+            <translation>行数</translation>
+        </message>
+        <message>
+            <source>Grid: how many rows of holes</source>
+            <translation>网格:孔的行数</translation>
+        </message>
+        <message>
+            <source>Hole</source>
+            <translation>孔</translation>
         </message>
         <message>
             <source>Drilled, tapped, reamed or bored: which steps each hole gets</source>
             <translation>钻孔、攻丝、铰孔或镗孔：每个孔的加工工步</translation>
         </message>
         <message>
+            <source>Thread (tapped)</source>
+            <translation>螺纹（攻丝）</translation>
+        </message>
+        <message>
+            <source>Tapped holes: the ISO metric coarse thread, M3 to M20</source>
+            <translation>螺纹孔:ISO 公制粗牙螺纹 M3 至 M20</translation>
+        </message>
+        <message>
+            <source>Diameter</source>
+            <translation>直径</translation>
+        </message>
+        <message>
+            <source>Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)</source>
+            <translation>钻孔、铰孔或镗孔的直径(螺纹孔取螺纹的直径)</translation>
+        </message>
+        <message>
+            <source>Depth (full diameter)</source>
+            <translation>深度（全直径部分）</translation>
+        </message>
+        <message>
             <source>Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper</source>
             <translation>全直径（完整螺纹）部分的深度，从顶面向下；钻尖会更深</translation>
+        </message>
+        <message>
+            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
+            <translation>开口起始的角点，位于上表面，工件坐标</translation>
         </message>
         <message>
             <source>L1 (length X)</source>
             <translation>L1(X 向长度)</translation>
         </message>
         <message>
+            <source>Length of the opening along X, at the top surface</source>
+            <translation>开口沿 X 的长度（上表面）</translation>
+        </message>
+        <message>
             <source>L2 (length Y)</source>
             <translation>L2(Y 向长度)</translation>
         </message>
         <message>
+            <source>Width of the opening along Y, at the top surface</source>
+            <translation>开口沿 Y 的宽度（上表面）</translation>
+        </message>
+        <message>
             <source>θ1 (left wall, °)</source>
             <translation>θ1(左壁,°)</translation>
+        </message>
+        <message>
+            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
+            <translation>L1 起始端侧壁的倾角（相对竖直方向，度）</translation>
         </message>
         <message>
             <source>θ2 (right wall, °)</source>
@@ -5819,56 +5835,40 @@ Theirs: %6</source>
             <translation>空 = 与 θ1 相同</translation>
         </message>
         <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(拐角半径)</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(预钻孔)</translation>
-        </message>
-        <message>
-            <source>Scallop height</source>
-            <translation>残留高度</translation>
-        </message>
-        <message>
-            <source>The corner where the opening starts, at the top surface, in work coordinates</source>
-            <translation>开口起始的角点，位于上表面，工件坐标</translation>
-        </message>
-        <message>
-            <source>Length of the opening along X, at the top surface</source>
-            <translation>开口沿 X 的长度（上表面）</translation>
-        </message>
-        <message>
-            <source>Width of the opening along Y, at the top surface</source>
-            <translation>开口沿 Y 的宽度（上表面）</translation>
-        </message>
-        <message>
-            <source>Slope of the wall at the start of L1, in degrees from the vertical</source>
-            <translation>L1 起始端侧壁的倾角（相对竖直方向，度）</translation>
-        </message>
-        <message>
             <source>Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1</source>
             <translation>L1 末端侧壁的倾角（相对竖直方向，度）；空表示与 θ1 相同</translation>
+        </message>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(拐角半径)</translation>
         </message>
         <message>
             <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
             <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
         </message>
         <message>
+            <source>H (pilot hole)</source>
+            <translation>H(预钻孔)</translation>
+        </message>
+        <message>
             <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
             <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
+        </message>
+        <message>
+            <source>Scallop height</source>
+            <translation>残留高度</translation>
         </message>
         <message>
             <source>Largest ridge the ball end mill may leave between its passes on the inclined walls</source>
             <translation>球头铣刀在斜壁上两道刀路之间允许留下的最大残留高度</translation>
         </message>
         <message>
-            <source>S (taper, °/side)</source>
-            <translation>S(斜度,单边 °)</translation>
-        </message>
-        <message>
             <source>A corner of the pocket at the top surface, in work coordinates</source>
             <translation>型腔在上表面的角点（工件坐标）</translation>
+        </message>
+        <message>
+            <source>S (taper, °/side)</source>
+            <translation>S(斜度,单边 °)</translation>
         </message>
         <message>
             <source>Slope of the walls in degrees per side; 0 for vertical walls</source>
@@ -5911,56 +5911,12 @@ Theirs: %6</source>
             <translation>形状</translation>
         </message>
         <message>
-            <source>Touched from</source>
-            <translation>接触方向</translation>
-        </message>
-        <message>
-            <source>P1 machine X</source>
-            <translation>P1 机床坐标 X</translation>
-        </message>
-        <message>
-            <source>P1 machine Y</source>
-            <translation>P1 机床坐标 Y</translation>
-        </message>
-        <message>
-            <source>not touched</source>
-            <translation>未测量</translation>
-        </message>
-        <message>
-            <source>Top face machine Z</source>
-            <translation>顶面 机床坐标 Z</translation>
-        </message>
-        <message>
-            <source>Tolerance</source>
-            <translation>公差</translation>
-        </message>
-        <message>
-            <source>Nominal diameter / width X</source>
-            <translation>公称直径 / X 向宽度</translation>
-        </message>
-        <message>
-            <source>Nominal length Y</source>
-            <translation>公称长度 Y</translation>
-        </message>
-        <message>
-            <source>Touch depth</source>
-            <translation>接触深度</translation>
-        </message>
-        <message>
-            <source>Clearance</source>
-            <translation>安全距离</translation>
-        </message>
-        <message>
-            <source>Search distance</source>
-            <translation>搜索距离</translation>
-        </message>
-        <message>
-            <source>Probing feed (mm/min)</source>
-            <translation>测量进给 (mm/min)</translation>
-        </message>
-        <message>
             <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
             <translation>圆形（凸台或孔）或矩形（块或型腔）</translation>
+        </message>
+        <message>
+            <source>Touched from</source>
+            <translation>接触方向</translation>
         </message>
         <message>
             <source>Whether the probe touches the part from outside or from inside</source>
@@ -5971,36 +5927,80 @@ Theirs: %6</source>
             <translation>第一个测量点的位置（机床坐标）</translation>
         </message>
         <message>
+            <source>P1 machine X</source>
+            <translation>P1 机床坐标 X</translation>
+        </message>
+        <message>
+            <source>P1 machine Y</source>
+            <translation>P1 机床坐标 Y</translation>
+        </message>
+        <message>
             <source>A touch, relative to the first one; empty until it is measured</source>
             <translation>相对第一个点的测量点；测量前为空</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未测量</translation>
+        </message>
+        <message>
+            <source>Top face machine Z</source>
+            <translation>顶面 机床坐标 Z</translation>
         </message>
         <message>
             <source>Height of a touch on the top face, in machine coordinates; empty if not touched</source>
             <translation>顶面测量点的高度（机床坐标）；不测量则为空</translation>
         </message>
         <message>
+            <source>Tolerance</source>
+            <translation>公差</translation>
+        </message>
+        <message>
             <source>Largest distance a touch may lie from the fitted shape</source>
             <translation>测量点离拟合形状允许的最大距离</translation>
+        </message>
+        <message>
+            <source>Nominal diameter / width X</source>
+            <translation>公称直径 / X 向宽度</translation>
         </message>
         <message>
             <source>Diameter of the round part, or its width along X</source>
             <translation>圆形工件的直径，或沿 X 的宽度</translation>
         </message>
         <message>
+            <source>Nominal length Y</source>
+            <translation>公称长度 Y</translation>
+        </message>
+        <message>
             <source>Length of the rectangular part along Y</source>
             <translation>矩形工件沿 Y 的长度</translation>
+        </message>
+        <message>
+            <source>Touch depth</source>
+            <translation>接触深度</translation>
         </message>
         <message>
             <source>How far below the top face the probe touches the sides</source>
             <translation>测量侧面时距顶面的深度</translation>
         </message>
         <message>
+            <source>Clearance</source>
+            <translation>安全距离</translation>
+        </message>
+        <message>
             <source>Distance kept from the part while the probe moves between touches</source>
             <translation>测量点之间移动时与工件保持的距离</translation>
         </message>
         <message>
+            <source>Search distance</source>
+            <translation>搜索距离</translation>
+        </message>
+        <message>
             <source>How far past the expected surface the probe looks for it before giving up</source>
             <translation>越过预期表面继续寻找的距离，找不到则停止</translation>
+        </message>
+        <message>
+            <source>Probing feed (mm/min)</source>
+            <translation>测量进给 (mm/min)</translation>
         </message>
         <message>
             <source>Feed of the probing moves, in mm per minute</source>
@@ -6011,24 +6011,20 @@ Theirs: %6</source>
             <translation>轮廓</translation>
         </message>
         <message>
-            <source>Tool side</source>
-            <translation>刀具侧</translation>
-        </message>
-        <message>
-            <source>Direction</source>
-            <translation>方向</translation>
-        </message>
-        <message>
-            <source>W (width)</source>
-            <translation>W（宽度）</translation>
-        </message>
-        <message>
             <source>The contour of the figure that is the finished wall, open or closed (e.g. K1)</source>
             <translation>作为完成壁面的图形轮廓，可开放或闭合（例如 K1）</translation>
         </message>
         <message>
+            <source>Tool side</source>
+            <translation>刀具侧</translation>
+        </message>
+        <message>
             <source>Which side of the contour, looking along its direction, the tool and the material to remove are on</source>
             <translation>沿轮廓方向看，刀具和待去除材料位于哪一侧</translation>
+        </message>
+        <message>
+            <source>Direction</source>
+            <translation>方向</translation>
         </message>
         <message>
             <source>Climb or conventional milling (with M3, climb runs the tool on the left of its travel)</source>
@@ -6037,6 +6033,10 @@ Theirs: %6</source>
         <message>
             <source>Depth of the wall, down from the top surface</source>
             <translation>壁深度（自上表面向下）</translation>
+        </message>
+        <message>
+            <source>W (width)</source>
+            <translation>W（宽度）</translation>
         </message>
         <message>
             <source>Width of the material to remove, measured from the contour on the tool's side</source>
@@ -6055,16 +6055,32 @@ Theirs: %6</source>
             <translation>曲线 1</translation>
         </message>
         <message>
+            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
+            <translation>第一条曲线: 以 ';' 分隔的点 X, Y, Z，或两个投影 'XY: X, Y; ... / ZX: Z, X; ...'（每个投影为点列或图形的开放轮廓 'XY: K1'）；末尾加 '/ lines' 表示以直线连接</translation>
+        </message>
+        <message>
             <source>Curve 2</source>
             <translation>曲线 2</translation>
+        </message>
+        <message>
+            <source>The second curve, as the first; the surface is ruled between the two</source>
+            <translation>第二条曲线, 写法同第一条; 曲面是两条曲线之间的直纹面</translation>
         </message>
         <message>
             <source>N (roughing pieces)</source>
             <translation>N (粗加工分段数)</translation>
         </message>
         <message>
+            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
+            <translation>为粗加工曲面将每条曲线分成的段数; 少于 M</translation>
+        </message>
+        <message>
             <source>M (finishing pieces)</source>
             <translation>M (精加工分段数)</translation>
+        </message>
+        <message>
+            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
+            <translation>为精加工曲面将每条曲线分成的段数; 多于 N; 空: 由沿曲线的步距决定</translation>
         </message>
         <message>
             <source>Step along the curves (gives M)</source>
@@ -6075,8 +6091,20 @@ Theirs: %6</source>
             <translation>已给出 M</translation>
         </message>
         <message>
+            <source>The step along the curves that gives M; empty when M is given</source>
+            <translation>决定 M 的沿曲线步距; 给出 M 时为空</translation>
+        </message>
+        <message>
+            <source>Height of the ridges the ball leaves between finishing paths</source>
+            <translation>精加工路径之间球头留下的残留高度</translation>
+        </message>
+        <message>
             <source>Roughing allowance</source>
             <translation>粗加工余量</translation>
+        </message>
+        <message>
+            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
+            <translation>等高粗加工沿法向在曲面上留下的材料</translation>
         </message>
         <message>
             <source>Boundary (paths)</source>
@@ -6087,44 +6115,16 @@ Theirs: %6</source>
             <translation>无: 整个曲面</translation>
         </message>
         <message>
+            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
+            <translation>每条路径停止处的曲面: 由点 X, Y, Z 组成的路径, 点之间用 ';', 路径之间用 '/'; 无则为空</translation>
+        </message>
+        <message>
             <source>Ball end mill (T)</source>
             <translation>球头立铣刀 (T)</translation>
         </message>
         <message>
             <source>under the smallest concave radius</source>
             <translation>小于最小凹半径</translation>
-        </message>
-        <message>
-            <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
-            <translation>第一条曲线: 以 ';' 分隔的点 X, Y, Z，或两个投影 'XY: X, Y; ... / ZX: Z, X; ...'（每个投影为点列或图形的开放轮廓 'XY: K1'）；末尾加 '/ lines' 表示以直线连接</translation>
-        </message>
-        <message>
-            <source>The second curve, as the first; the surface is ruled between the two</source>
-            <translation>第二条曲线, 写法同第一条; 曲面是两条曲线之间的直纹面</translation>
-        </message>
-        <message>
-            <source>Pieces each curve is divided into for the roughing surface; fewer than M</source>
-            <translation>为粗加工曲面将每条曲线分成的段数; 少于 M</translation>
-        </message>
-        <message>
-            <source>Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves</source>
-            <translation>为精加工曲面将每条曲线分成的段数; 多于 N; 空: 由沿曲线的步距决定</translation>
-        </message>
-        <message>
-            <source>The step along the curves that gives M; empty when M is given</source>
-            <translation>决定 M 的沿曲线步距; 给出 M 时为空</translation>
-        </message>
-        <message>
-            <source>Height of the ridges the ball leaves between finishing paths</source>
-            <translation>精加工路径之间球头留下的残留高度</translation>
-        </message>
-        <message>
-            <source>Material the Z-level roughing leaves on the surface, along its normal</source>
-            <translation>等高粗加工沿法向在曲面上留下的材料</translation>
-        </message>
-        <message>
-            <source>A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none</source>
-            <translation>每条路径停止处的曲面: 由点 X, Y, Z 组成的路径, 点之间用 ';', 路径之间用 '/'; 无则为空</translation>
         </message>
         <message>
             <source>The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius</source>
@@ -6139,20 +6139,20 @@ Theirs: %6</source>
             <translation>轮廓</translation>
         </message>
         <message>
-            <source>Start X (diameter)</source>
-            <translation>起点 X (直径)</translation>
-        </message>
-        <message>
-            <source>Start Z</source>
-            <translation>起点 Z</translation>
-        </message>
-        <message>
             <source>Outer profile (the outside diameter) or inner profile (a bore)</source>
             <translation>外轮廓（外径）或内轮廓（孔）</translation>
         </message>
         <message>
+            <source>Start X (diameter)</source>
+            <translation>起点 X (直径)</translation>
+        </message>
+        <message>
             <source>Diameter where the profile starts, at its front end</source>
             <translation>轮廓起点的直径（前端）</translation>
+        </message>
+        <message>
+            <source>Start Z</source>
+            <translation>起点 Z</translation>
         </message>
         <message>
             <source>Z where the profile starts; 0 is the finished front face</source>

@@ -181,26 +181,41 @@ protected:
     {
         using form::member;
         std::vector<FormField> fs;
-        fs.push_back(form::contourName<AreaClearing>(
-            TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
-            {"outline"}, [](auto& a) -> auto& { return a.area.outline; }));
-        fs.push_back(form::contourNames<AreaClearing>(
-            "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
-            [](auto& a) -> auto& { return a.area.islands; }));
-        fs.push_back(member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                          &AreaClearing::depth));
-        fs.push_back(member<AreaClearing>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "D (tool diameter)"),
-                                          {"diameter", "tools"}, &AreaClearing::diameter));
-        fs.push_back(form::points<AreaClearing>("points", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Passes (points)"),
-                                                {"points"}, &AreaClearing::points, &AreaClearing::badPoints,
-                                                formatPoints, parsePoints));
-        form::describe(fs, {
-            {"outline", "sym-outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure around the area to clear (e.g. K1)")},
-            {"islands", "sym-islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contours of the figure left standing in the area, separated by commas; empty for none")},
-            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth the passes cut to, down from the top surface")},
-            {"diameter", "sym-D", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of the end mill: each pass is a strip this wide")},
-            {"points", "sym-passes", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab")},
-        });
+        fs.push_back(
+            form::contourName<AreaClearing>(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
+                {"outline"}, [](auto& a) -> auto& { return a.area.outline; })
+                .described("sym-outline",
+                           TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "The contour of the figure around the area to clear (e.g. K1)")));
+        fs.push_back(
+            form::contourNames<AreaClearing>(
+                "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
+                [](auto& a) -> auto& { return a.area.islands; })
+                .described(
+                    "sym-islands",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Contours of the figure left standing in the area, separated by commas; empty for none")));
+        fs.push_back(
+            member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                 &AreaClearing::depth)
+                .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Depth the passes cut to, down from the top surface")));
+        fs.push_back(
+            member<AreaClearing>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "D (tool diameter)"),
+                                 {"diameter", "tools"}, &AreaClearing::diameter)
+                .described("sym-D", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Diameter of the end mill: each pass is a strip this wide")));
+        fs.push_back(
+            form::points<AreaClearing>("points", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Passes (points)"),
+                                       {"points"}, &AreaClearing::points, &AreaClearing::badPoints, formatPoints,
+                                       parsePoints)
+                .described(
+                    "sym-passes",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab")));
         return fs;
     }
 };

@@ -142,28 +142,42 @@ protected:
         using form::member;
         std::vector<FormField> fs;
         // The contours by name, first: the figure's CONTOUR statements.
-        fs.push_back(form::contourName<ContourPocket>(TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
-                                                      TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
-                                                      {"outline"}, [](auto& p) -> auto& { return p.contours.outline; }));
-        fs.push_back(form::contourNames<ContourPocket>("islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"),
-                                                       {"islands"}, [](auto& p) -> auto& { return p.contours.islands; }));
-        fs.push_back(member<ContourPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                           &ContourPocket::depth));
-        fs.push_back(form::code<ContourPocket>(
-            "U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly}, &ContourPocket::toolUse));
-        fs.push_back(form::code<ContourPocket>(
-            "F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-            {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage}, &ContourPocket::wallFinish));
+        fs.push_back(
+            form::contourName<ContourPocket>(
+                TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
+                {"outline"}, [](auto& p) -> auto& { return p.contours.outline; })
+                .described(
+                    "sym-outline",
+                    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                         "The contour of the figure that is the pocket's edge at the top (e.g. K1)")));
+        fs.push_back(
+            form::contourNames<ContourPocket>(
+                "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
+                [](auto& p) -> auto& { return p.contours.islands; })
+                .described(
+                    "sym-islands",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")));
+        fs.push_back(member<ContourPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"),
+                                           {"depth"}, &ContourPocket::depth)
+                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                                  "Depth of the pocket, down from the top surface")));
+        fs.push_back(
+            form::code<ContourPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                                      {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly},
+                                      &ContourPocket::toolUse)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
+        fs.push_back(
+            form::code<ContourPocket>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+                                      {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage},
+                                      &ContourPocket::wallFinish)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "How the walls are finished: at full depth, in several depths, or in two stages")));
         fs.push_back(form::stepOver<ContourPocket>());
-        form::describe(fs, {
-            {"outline", "sym-outline", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure that is the pocket's edge at the top (e.g. K1)")},
-            {"islands", "sym-islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")},
-            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
-            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
-            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the walls are finished: at full depth, in several depths, or in two stages")},
-            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
-        });
         return fs;
     }
 };

@@ -18,21 +18,6 @@ namespace {
 const std::vector<std::string> kKeys{"module", "name",     "depth",  "U",     "finish", "angle",
                                      "pattern", "stepOver", "margin", "tools", "cutting"};
 
-// A code field of FaceUnit with the module's own meanings (U and the
-// pattern mean other things here than in a pocket's tables); the form puts
-// the code before them and translates them in the core texts' context
-// (ui/core_texts.cpp: they go into its sources with their translations).
-FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes,
-                    int FaceUnit::*m)
-{
-    FormField f = form::number<FaceUnit>(
-        key, std::move(label), {key}, [m](const FaceUnit& u) { return static_cast<double>(u.*m); },
-        [m](FaceUnit& u, double v) { u.*m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
-    f.kind = FormFieldKind::Code;
-    f.codes = std::move(codes);
-    return f;
-}
-
 class FaceKind final : public ModuleKindOf<FaceUnit> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add face milling"); }
@@ -161,34 +146,58 @@ protected:
         using form::member;
         using form::optionalMember;
         std::vector<FormField> fs;
-        fs.push_back(member<FaceUnit>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth"), {"depth"}, &FaceUnit::depth));
-        fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                               {{face::kStandard, "roughing layers and a finishing pass"},
-                                {face::kRoughOnly, "roughing only, the finishing pass left"}},
-                               &FaceUnit::toolUse));
-        fs.push_back(optionalMember<FaceUnit>("finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Finishing pass"),
-                                              TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's β2"), {"finish"},
-                                              &FaceUnit::finish));
-        fs.push_back(member<FaceUnit>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle of the passes (°)"), {"angle"},
-                                      &FaceUnit::angle));
-        fs.push_back(codeField("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"),
-                               {{face::kOneWay, "one way, every pass climb"},
-                                {face::kZigzag, "zigzag, back and forth"}},
-                               &FaceUnit::pattern));
-        fs.push_back(optionalMember<FaceUnit>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
-                                              TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "0.75 (face mill), else technology data's"),
-                                              {"stepOver"}, &FaceUnit::stepOver));
-        fs.push_back(member<FaceUnit>("margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Margin beyond the stock"), {"margin"},
-                                      &FaceUnit::margin));
-        form::describe(fs, {
-            {"depth", "sym-depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Stock taken off the top, down from Z0; less than the stock's height")},
-            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)")},
-            {"finish", "sym-finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the finishing pass, less than the depth; empty for the technology data's β2")},
-            {"angle", "sym-angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction of the passes in degrees, counter-clockwise from +X")},
-            {"pattern", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)")},
-            {"stepOver", "sym-stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance between passes as a share of the tool's diameter, above 0 and at most 0.9")},
-            {"margin", "sym-margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far the face reaches beyond the stock's sides; 0 for exactly the top")},
-        });
+        fs.push_back(
+            member<FaceUnit>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth"), {"depth"},
+                             &FaceUnit::depth)
+                .described("sym-depth", TAIWA_TRANSLATE_NOOP(
+                                            "taiwa::ui::FieldSpec",
+                                            "Stock taken off the top, down from Z0; less than the stock's height")));
+        // U and the pattern mean other things here than in a pocket's code tables.
+        fs.push_back(
+            form::codeField<FaceUnit>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                                      {{face::kStandard, "roughing layers and a finishing pass"},
+                                       {face::kRoughOnly, "roughing only, the finishing pass left"}},
+                                      &FaceUnit::toolUse)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)")));
+        fs.push_back(
+            optionalMember<FaceUnit>("finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Finishing pass"),
+                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's β2"), {"finish"},
+                                     &FaceUnit::finish)
+                .described(
+                    "sym-finish",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Depth of the finishing pass, less than the depth; empty for the technology data's β2")));
+        fs.push_back(member<FaceUnit>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle of the passes (°)"),
+                                      {"angle"}, &FaceUnit::angle)
+                         .described("sym-angle", TAIWA_TRANSLATE_NOOP(
+                                                     "taiwa::ui::FieldSpec",
+                                                     "Direction of the passes in degrees, counter-clockwise from +X")));
+        fs.push_back(
+            form::codeField<FaceUnit>(
+                "pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"),
+                {{face::kOneWay, "one way, every pass climb"}, {face::kZigzag, "zigzag, back and forth"}},
+                &FaceUnit::pattern)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)")));
+        fs.push_back(
+            optionalMember<FaceUnit>(
+                "stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
+                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "0.75 (face mill), else technology data's"), {"stepOver"},
+                &FaceUnit::stepOver)
+                .described("sym-stepOver",
+                           TAIWA_TRANSLATE_NOOP(
+                               "taiwa::ui::FieldSpec",
+                               "Distance between passes as a share of the tool's diameter, above 0 and at most 0.9")));
+        fs.push_back(member<FaceUnit>("margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Margin beyond the stock"),
+                                      {"margin"}, &FaceUnit::margin)
+                         .described("sym-margin",
+                                    TAIWA_TRANSLATE_NOOP(
+                                        "taiwa::ui::FieldSpec",
+                                        "How far the face reaches beyond the stock's sides; 0 for exactly the top")));
         return fs;
     }
 };

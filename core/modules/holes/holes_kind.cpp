@@ -199,45 +199,70 @@ protected:
             for (std::size_t i = 0; i < names.size(); ++i) f.codes.emplace_back(static_cast<int>(i), names[i]);
             return f;
         };
-        const auto whole = [](std::string key, std::string label, int HolePattern::*m) {
-            FormField f = form::number<HolePattern>(
-                key, std::move(label), {key}, [m](const HolePattern& h) { return static_cast<double>(h.*m); },
-                [m](HolePattern& h, double v) { h.*m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
-            f.whole = true;
-            return f;
-        };
-        fs.push_back(named("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"), kPatternNames, &HolePattern::pattern));
-        fs.push_back(member<HolePattern>("x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "X (hole, first hole or centre)"), {"x"}, &HolePattern::x));
-        fs.push_back(member<HolePattern>("y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y"), {"y"}, &HolePattern::y));
-        fs.push_back(member<HolePattern>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle (°)"), {"angle"}, &HolePattern::angle));
-        fs.push_back(member<HolePattern>("pitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch"), {"pitch"}, &HolePattern::pitch));
-        fs.push_back(member<HolePattern>("pitchY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch between rows"), {"pitchY"}, &HolePattern::pitchY));
-        fs.push_back(member<HolePattern>("radius", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius"), {"radius"}, &HolePattern::radius));
-        fs.push_back(member<HolePattern>("angularPitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angular pitch (°)"), {"angularPitch"}, &HolePattern::angularPitch));
-        fs.push_back(whole("count", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Count (grid: columns)"), &HolePattern::count));
-        fs.push_back(whole("rows", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Rows"), &HolePattern::rows));
-        fs.push_back(named("hole", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Hole"), kHoleNames, &HolePattern::hole));
+        fs.push_back(named("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"), kPatternNames,
+                           &HolePattern::pattern)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc")));
+        fs.push_back(member<HolePattern>("x",
+                                         TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "X (hole, first hole or centre)"),
+                                         {"x"}, &HolePattern::x)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "The hole, the first hole of a line, the corner of a grid, the centre of a circle")));
+        fs.push_back(member<HolePattern>("y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y"), {"y"}, &HolePattern::y)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle")));
+        fs.push_back(
+            member<HolePattern>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle (°)"), {"angle"},
+                                &HolePattern::angle)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec", "Direction of a line's or grid's rows; angle of a circle's first hole")));
+        fs.push_back(member<HolePattern>("pitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch"), {"pitch"},
+                                         &HolePattern::pitch)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Distance between neighbouring holes along the row")));
+        fs.push_back(member<HolePattern>("pitchY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch between rows"),
+                                         {"pitchY"}, &HolePattern::pitchY)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: distance between rows")));
+        fs.push_back(member<HolePattern>("radius", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius"), {"radius"},
+                                         &HolePattern::radius)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Bolt circle or arc: the radius the hole centres lie on")));
+        fs.push_back(
+            member<HolePattern>("angularPitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angular pitch (°)"),
+                                {"angularPitch"}, &HolePattern::angularPitch)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Arc: angle between neighbouring holes")));
+        fs.push_back(
+            form::intMember<HolePattern>("count", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Count (grid: columns)"),
+                                         &HolePattern::count)
+                .described(
+                    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                         "How many holes: along a line, around a circle or an arc; a grid's columns")));
+        fs.push_back(form::intMember<HolePattern>("rows", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Rows"),
+                                                  &HolePattern::rows)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: how many rows of holes")));
+        fs.push_back(named("hole", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Hole"), kHoleNames, &HolePattern::hole)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec", "Drilled, tapped, reamed or bored: which steps each hole gets")));
         std::vector<std::string> threads{""};
         for (const auto& t : holes::threadTable()) threads.emplace_back(t.name);
-        fs.push_back(named("thread", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Thread (tapped)"), threads, &HolePattern::thread));
-        fs.push_back(member<HolePattern>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter"), {"diameter"}, &HolePattern::diameter));
-        fs.push_back(member<HolePattern>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth (full diameter)"), {"depth"}, &HolePattern::depth));
-        form::describe(fs, {
-            {"pattern", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc")},
-            {"x", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The hole, the first hole of a line, the corner of a grid, the centre of a circle")},
-            {"y", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle")},
-            {"radius", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Bolt circle or arc: the radius the hole centres lie on")},
-            {"count", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How many holes: along a line, around a circle or an arc; a grid's columns")},
-            {"rows", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: how many rows of holes")},
-            {"thread", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tapped holes: the ISO metric coarse thread, M3 to M20")},
-            {"diameter", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)")},
-            {"angle", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction of a line's or grid's rows; angle of a circle's first hole")},
-            {"pitchY", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: distance between rows")},
-            {"pitch", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance between neighbouring holes along the row")},
-            {"angularPitch", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Arc: angle between neighbouring holes")},
-            {"hole", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Drilled, tapped, reamed or bored: which steps each hole gets")},
-            {"depth", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper")},
-        });
+        fs.push_back(named("thread", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Thread (tapped)"), threads,
+                           &HolePattern::thread)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Tapped holes: the ISO metric coarse thread, M3 to M20")));
+        fs.push_back(member<HolePattern>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter"),
+                                         {"diameter"}, &HolePattern::diameter)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)")));
+        fs.push_back(
+            member<HolePattern>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth (full diameter)"),
+                                {"depth"}, &HolePattern::depth)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper")));
         return fs;
     }
 };

@@ -178,44 +178,67 @@ protected:
         using form::member;
         using form::number;
         std::vector<FormField> fs;
-        fs.push_back(number<M2DPocket>("X1", "X1", {"corner"}, [](const M2DPocket& m) { return m.corner.x; },
-                                       [](M2DPocket& m, double v) { m.corner.x = v; }));
-        fs.push_back(number<M2DPocket>("Y1", "Y1", {"corner"}, [](const M2DPocket& m) { return m.corner.y; },
-                                       [](M2DPocket& m, double v) { m.corner.y = v; }));
-        fs.push_back(member<M2DPocket>("L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L1 (length X)"), {"L1"},
-                                       &M2DPocket::lengthX));
-        fs.push_back(member<M2DPocket>("L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L2 (length Y)"), {"L2"},
-                                       &M2DPocket::lengthY));
+        const char* corner = TAIWA_TRANSLATE_NOOP(
+            "taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates");
+        fs.push_back(number<M2DPocket>(
+                         "X1", "X1", {"corner"}, [](const M2DPocket& m) { return m.corner.x; },
+                         [](M2DPocket& m, double v) { m.corner.x = v; })
+                         .described("sym-X1Y1", corner));
+        fs.push_back(number<M2DPocket>(
+                         "Y1", "Y1", {"corner"}, [](const M2DPocket& m) { return m.corner.y; },
+                         [](M2DPocket& m, double v) { m.corner.y = v; })
+                         .described("sym-X1Y1", corner));
+        fs.push_back(
+            member<M2DPocket>("L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L1 (length X)"), {"L1"},
+                              &M2DPocket::lengthX)
+                .described("sym-L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                          "Length of the opening along X, at the top surface")));
+        fs.push_back(
+            member<M2DPocket>("L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L2 (length Y)"), {"L2"},
+                              &M2DPocket::lengthY)
+                .described("sym-L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                          "Width of the opening along Y, at the top surface")));
         fs.push_back(member<M2DPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                       &M2DPocket::depth));
-        fs.push_back(member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"),
-                                       {"theta1"}, &M2DPocket::theta1));
-        fs.push_back(form::optionalMember<M2DPocket>("theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)"),
-                                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1"),
-                                                     {"theta2"}, &M2DPocket::theta2));
-        fs.push_back(member<M2DPocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
-                                       {"cornerRadius"}, &M2DPocket::cornerRadius));
+                                       &M2DPocket::depth)
+                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                                  "Depth of the pocket, down from the top surface")));
+        fs.push_back(
+            member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"), {"theta1"},
+                              &M2DPocket::theta1)
+                .described("sym-theta1",
+                           TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "Slope of the wall at the start of L1, in degrees from the vertical")));
+        fs.push_back(
+            form::optionalMember<M2DPocket>(
+                "theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)"),
+                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1"), {"theta2"}, &M2DPocket::theta2)
+                .described(
+                    "sym-theta2",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1")));
+        fs.push_back(
+            member<M2DPocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
+                              {"cornerRadius"}, &M2DPocket::cornerRadius)
+                .described("sym-r1", TAIWA_TRANSLATE_NOOP(
+                                         "taiwa::ui::FieldSpec",
+                                         "Radius of the pocket's corners; the finishing end mill must fit in it")));
         fs.push_back(form::code<M2DPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                           {ToolUse::Standard, ToolUse::RoughOnly}, &M2DPocket::toolUse));
+                                           {ToolUse::Standard, ToolUse::RoughOnly}, &M2DPocket::toolUse)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
         fs.push_back(form::code<M2DPocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
-                                           {PilotHole::Drill, PilotHole::None}, &M2DPocket::pilotHole));
+                                           {PilotHole::Drill, PilotHole::None}, &M2DPocket::pilotHole)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Whether a hole is drilled first for the roughing end mill to go down into")));
         fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
-                                       {"scallop"}, &M2DPocket::scallop));
+                                       {"scallop"}, &M2DPocket::scallop)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Largest ridge the ball end mill may leave between its passes on the inclined walls")));
         fs.push_back(form::stepOver<M2DPocket>());
-        form::describe(fs, {
-            {"X1", "sym-X1Y1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates")},
-            {"Y1", "sym-X1Y1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates")},
-            {"L1", "sym-L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the opening along X, at the top surface")},
-            {"L2", "sym-L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Width of the opening along Y, at the top surface")},
-            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
-            {"theta1", "sym-theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the wall at the start of L1, in degrees from the vertical")},
-            {"theta2", "sym-theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1")},
-            {"r1", "sym-r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius of the pocket's corners; the finishing end mill must fit in it")},
-            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
-            {"H", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether a hole is drilled first for the roughing end mill to go down into")},
-            {"scallop", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Largest ridge the ball end mill may leave between its passes on the inclined walls")},
-            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
-        });
         return fs;
     }
 };

@@ -143,40 +143,52 @@ protected:
         for (std::size_t i = 0; i < 4; ++i) {
             const std::string p = "P" + std::to_string(i + 1);
             const std::vector<std::string> diag{"corners[" + std::to_string(i) + "]", "corners"};
-            fs.push_back(number<M4Pocket>(p + ".x", p + " X", diag, [i](const M4Pocket& m) { return m.corners[i].x; },
-                                          [i](M4Pocket& m, double v) { m.corners[i].x = v; }));
-            fs.push_back(number<M4Pocket>(p + ".y", p + " Y", diag, [i](const M4Pocket& m) { return m.corners[i].y; },
-                                          [i](M4Pocket& m, double v) { m.corners[i].y = v; }));
+            const std::string symbol = "sym-" + p;
+            const char* help = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                    "A corner of the pocket at the top surface, in work coordinates");
+            fs.push_back(number<M4Pocket>(
+                             p + ".x", p + " X", diag, [i](const M4Pocket& m) { return m.corners[i].x; },
+                             [i](M4Pocket& m, double v) { m.corners[i].x = v; })
+                             .described(symbol, help));
+            fs.push_back(number<M4Pocket>(
+                             p + ".y", p + " Y", diag, [i](const M4Pocket& m) { return m.corners[i].y; },
+                             [i](M4Pocket& m, double v) { m.corners[i].y = v; })
+                             .described(symbol, help));
         }
-        fs.push_back(member<M4Pocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
-                                      {"cornerRadius"}, &M4Pocket::cornerRadius));
+        fs.push_back(
+            member<M4Pocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"), {"cornerRadius"},
+                             &M4Pocket::cornerRadius)
+                .described("sym-r1", TAIWA_TRANSLATE_NOOP(
+                                         "taiwa::ui::FieldSpec",
+                                         "Radius of the pocket's corners; the finishing end mill must fit in it")));
         fs.push_back(member<M4Pocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                      &M4Pocket::depth));
+                                      &M4Pocket::depth)
+                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                                  "Depth of the pocket, down from the top surface")));
         fs.push_back(member<M4Pocket>("taper", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "S (taper, °/side)"),
-                                      {"taper"}, &M4Pocket::taper));
-        fs.push_back(form::code<M4Pocket>(
-            "U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly, ToolUse::RoughOnly},
-            &M4Pocket::toolUse));
-        fs.push_back(form::code<M4Pocket>(
-            "F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-            {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage}, &M4Pocket::wallFinish));
+                                      {"taper"}, &M4Pocket::taper)
+                         .described("sym-S", TAIWA_TRANSLATE_NOOP(
+                                                 "taiwa::ui::FieldSpec",
+                                                 "Slope of the walls in degrees per side; 0 for vertical walls")));
+        fs.push_back(form::code<M4Pocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                                          {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly,
+                                           ToolUse::RoughOnly},
+                                          &M4Pocket::toolUse)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
+        fs.push_back(form::code<M4Pocket>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+                                          {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage},
+                                          &M4Pocket::wallFinish)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "How the walls are finished: at full depth, in several depths, or in two stages")));
         fs.push_back(form::code<M4Pocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
-                                          {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole));
+                                          {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Whether a hole is drilled first for the roughing end mill to go down into")));
         fs.push_back(form::stepOver<M4Pocket>());
-        form::describe(fs, {
-            {"P1.", "sym-P1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
-            {"P2.", "sym-P2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
-            {"P3.", "sym-P3", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
-            {"P4.", "sym-P4", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A corner of the pocket at the top surface, in work coordinates")},
-            {"r1", "sym-r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius of the pocket's corners; the finishing end mill must fit in it")},
-            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the pocket, down from the top surface")},
-            {"taper", "sym-S", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Slope of the walls in degrees per side; 0 for vertical walls")},
-            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")},
-            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the walls are finished: at full depth, in several depths, or in two stages")},
-            {"H", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether a hole is drilled first for the roughing end mill to go down into")},
-            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
-        });
         return fs;
     }
 };

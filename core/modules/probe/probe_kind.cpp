@@ -197,25 +197,33 @@ protected:
         using form::member;
         using form::number;
         std::vector<FormField> fs;
-        const auto codeField = [](std::string key, std::string label, std::vector<std::pair<int, std::string>> codes,
-                                  int ProbeUnit::*m) {
-            FormField f = number<ProbeUnit>(key, std::move(label), {key}, [m](const ProbeUnit& p) { return double(p.*m); },
-                                            [m](ProbeUnit& p, double v) { p.*m = static_cast<int>(std::lround(v)); });
-            f.kind = FormFieldKind::Code;
-            f.codes = std::move(codes);
-            return f;
-        };
-        fs.push_back(codeField("shape", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Shape"),
-                               {{1, "round (boss or bore)"}, {2, "rectangular (block or pocket)"}}, &ProbeUnit::shape));
-        fs.push_back(codeField("where", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Touched from"),
-                               {{1, "outside (boss, block)"}, {2, "inside (bore, pocket)"}}, &ProbeUnit::where));
-        fs.push_back(number<ProbeUnit>("origin.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine X"), {"origin"},
-                                       [](const ProbeUnit& p) { return p.origin.x; }, [](ProbeUnit& p, double v) { p.origin.x = v; }));
-        fs.push_back(number<ProbeUnit>("origin.y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine Y"), {"origin"},
-                                       [](const ProbeUnit& p) { return p.origin.y; }, [](ProbeUnit& p, double v) { p.origin.y = v; }));
+        fs.push_back(form::codeField<ProbeUnit>("shape", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Shape"),
+                                                {{1, "round (boss or bore)"}, {2, "rectangular (block or pocket)"}},
+                                                &ProbeUnit::shape)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec", "Round (a boss or a bore) or rectangular (a block or a pocket)")));
+        fs.push_back(
+            form::codeField<ProbeUnit>("where", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Touched from"),
+                                       {{1, "outside (boss, block)"}, {2, "inside (bore, pocket)"}}, &ProbeUnit::where)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "Whether the probe touches the part from outside or from inside")));
+        const char* origin =
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Where the first touch is, in machine coordinates");
+        fs.push_back(number<ProbeUnit>(
+                         "origin.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine X"), {"origin"},
+                         [](const ProbeUnit& p) { return p.origin.x; }, [](ProbeUnit& p, double v) { p.origin.x = v; })
+                         .described("sym-P1", origin));
+        fs.push_back(number<ProbeUnit>(
+                         "origin.y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine Y"), {"origin"},
+                         [](const ProbeUnit& p) { return p.origin.y; }, [](ProbeUnit& p, double v) { p.origin.y = v; })
+                         .described("sym-P1", origin));
         for (std::size_t i = 1; i < ProbeUnit::kMaxTouches; ++i) {
             const std::string key = "P" + std::to_string(i + 1);
             const std::vector<std::string> diag{"touches[" + std::to_string(i) + "]"};
+            // Its X, its Y and the side it touches; the drawing shows P1 to P4.
+            const std::string symbol = i < 4 ? "sym-" + key : "";
+            const char* help = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                    "A touch, relative to the first one; empty until it is measured");
             for (const bool isX : {true, false}) {
                 FormField f;
                 f.key = key + (isX ? ".x" : ".y");
@@ -230,7 +238,7 @@ protected:
                 f.set = [i, isX](ModuleInput& m, std::optional<double> v) {
                     if (ProbeUnit* p = m.getIf<ProbeUnit>()) (isX ? p->x[i] : p->y[i]) = v;
                 };
-                fs.push_back(std::move(f));
+                fs.push_back(std::move(f).described(symbol, help));
             }
             FormField side = number<ProbeUnit>(
                 key + ".side", kSideLabels[i], {"sides[" + std::to_string(i) + "]"},
@@ -238,41 +246,45 @@ protected:
                 [i](ProbeUnit& p, double v) { p.side[i] = static_cast<int>(std::lround(v)); });
             side.kind = FormFieldKind::Code;
             side.codes = {{0, "(round: none)"}, {1, "-X"}, {2, "+X"}, {3, "-Y"}, {4, "+Y"}};
-            fs.push_back(std::move(side));
+            fs.push_back(std::move(side).described(symbol, help));
         }
-        fs.push_back(form::optionalMember<ProbeUnit>("top", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Top face machine Z"),
-                                                     "not touched", {"top"}, &ProbeUnit::top));
-        fs.push_back(member<ProbeUnit>("tolerance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tolerance"), {"tolerance"},
-                                       &ProbeUnit::tolerance));
-        fs.push_back(member<ProbeUnit>("sizeX", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal diameter / width X"),
-                                       {"sizeX"}, &ProbeUnit::sizeX));
-        fs.push_back(member<ProbeUnit>("sizeY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal length Y"), {"sizeY"},
-                                       &ProbeUnit::sizeY));
+        fs.push_back(form::optionalMember<ProbeUnit>("top",
+                                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Top face machine Z"),
+                                                     "not touched", {"top"}, &ProbeUnit::top)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Height of a touch on the top face, in machine coordinates; empty if not touched")));
+        fs.push_back(member<ProbeUnit>("tolerance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tolerance"),
+                                       {"tolerance"}, &ProbeUnit::tolerance)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Largest distance a touch may lie from the fitted shape")));
+        fs.push_back(member<ProbeUnit>("sizeX",
+                                       TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal diameter / width X"),
+                                       {"sizeX"}, &ProbeUnit::sizeX)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Diameter of the round part, or its width along X")));
+        fs.push_back(
+            member<ProbeUnit>("sizeY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal length Y"), {"sizeY"},
+                              &ProbeUnit::sizeY)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the rectangular part along Y")));
         fs.push_back(member<ProbeUnit>("touchDepth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Touch depth"),
-                                       {"touchDepth"}, &ProbeUnit::touchDepth));
-        fs.push_back(member<ProbeUnit>("clearance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Clearance"), {"clearance"},
-                                       &ProbeUnit::clearance));
-        fs.push_back(member<ProbeUnit>("search", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Search distance"), {"search"},
-                                       &ProbeUnit::search));
+                                       {"touchDepth"}, &ProbeUnit::touchDepth)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "How far below the top face the probe touches the sides")));
+        fs.push_back(
+            member<ProbeUnit>("clearance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Clearance"), {"clearance"},
+                              &ProbeUnit::clearance)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "Distance kept from the part while the probe moves between touches")));
+        fs.push_back(member<ProbeUnit>("search", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Search distance"),
+                                       {"search"}, &ProbeUnit::search)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "How far past the expected surface the probe looks for it before giving up")));
         fs.push_back(member<ProbeUnit>("feed", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Probing feed (mm/min)"),
-                                       {"feed"}, &ProbeUnit::feed));
-        form::describe(fs, {
-            {"shape", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Round (a boss or a bore) or rectangular (a block or a pocket)")},
-            {"where", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Whether the probe touches the part from outside or from inside")},
-            {"origin.", "sym-P1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Where the first touch is, in machine coordinates")},
-            {"P2.", "sym-P2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
-            {"P3.", "sym-P3", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
-            {"P4.", "sym-P4", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
-            {"P", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A touch, relative to the first one; empty until it is measured")},
-            {"top", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Height of a touch on the top face, in machine coordinates; empty if not touched")},
-            {"tolerance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Largest distance a touch may lie from the fitted shape")},
-            {"sizeX", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter of the round part, or its width along X")},
-            {"sizeY", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the rectangular part along Y")},
-            {"touchDepth", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far below the top face the probe touches the sides")},
-            {"clearance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Distance kept from the part while the probe moves between touches")},
-            {"search", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How far past the expected surface the probe looks for it before giving up")},
-            {"feed", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Feed of the probing moves, in mm per minute")},
-        });
+                                       {"feed"}, &ProbeUnit::feed)
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Feed of the probing moves, in mm per minute")));
         return fs;
     }
 };

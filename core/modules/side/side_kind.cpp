@@ -19,17 +19,6 @@ namespace {
 const std::vector<std::string> kKeys{"module", "name", "contour", "side", "direction", "depth", "width",
                                      "U",      "F",    "stepOver", "tools", "cutting"};
 
-// A code of the unit (member m) as a field offering `codes`, each with its meaning.
-FormField codeField(const char* key, const char* label, std::vector<std::pair<int, std::string>> codes, int SideMill::*m)
-{
-    FormField f = form::number<SideMill>(
-        key, label, {key}, [m](const SideMill& u) { return static_cast<double>(u.*m); },
-        [m](SideMill& u, double v) { u.*m = static_cast<int>(std::lround(v)); });
-    f.kind = FormFieldKind::Code;
-    f.codes = std::move(codes);
-    return f;
-}
-
 class SideKind final : public ModuleKindOf<SideMill> {
 public:
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add side milling"); }
@@ -162,29 +151,52 @@ protected:
     {
         using form::member;
         std::vector<FormField> fs;
-        fs.push_back(form::contourName<SideMill>("contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contour"),
-                                                 {"contour"}, &SideMill::contour));
-        fs.push_back(codeField("side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tool side"),
-                               {{1, "left of the contour"}, {2, "right of the contour"}}, &SideMill::side));
-        fs.push_back(codeField("direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction"),
-                               {{1, "climb"}, {2, "conventional"}}, &SideMill::direction));
-        fs.push_back(member<SideMill>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"}, &SideMill::depth));
-        fs.push_back(member<SideMill>("width", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "W (width)"), {"width"}, &SideMill::width));
-        fs.push_back(codeField("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                               {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}}, &SideMill::toolUse));
-        fs.push_back(codeField("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-                               {{1, "full depth at once"}, {2, "several incisions"}}, &SideMill::wallFinish));
+        fs.push_back(
+            form::contourName<SideMill>("contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contour"), {"contour"},
+                                        &SideMill::contour)
+                .described("sym-contour",
+                           TAIWA_TRANSLATE_NOOP(
+                               "taiwa::ui::FieldSpec",
+                               "The contour of the figure that is the finished wall, open or closed (e.g. K1)")));
+        fs.push_back(
+            form::codeField<SideMill>("side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tool side"),
+                                      {{1, "left of the contour"}, {2, "right of the contour"}}, &SideMill::side)
+                .described(
+                    "sym-side",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Which side of the contour, looking along its direction, the tool and the material to remove are on")));
+        fs.push_back(
+            form::codeField<SideMill>("direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction"),
+                                      {{1, "climb"}, {2, "conventional"}}, &SideMill::direction)
+                .described(
+                    "sym-direction",
+                    TAIWA_TRANSLATE_NOOP(
+                        "taiwa::ui::FieldSpec",
+                        "Climb or conventional milling (with M3, climb runs the tool on the left of its travel)")));
+        fs.push_back(member<SideMill>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
+                                      &SideMill::depth)
+                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                                  "Depth of the wall, down from the top surface")));
+        fs.push_back(
+            member<SideMill>("width", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "W (width)"), {"width"},
+                             &SideMill::width)
+                .described("sym-W",
+                           TAIWA_TRANSLATE_NOOP(
+                               "taiwa::ui::FieldSpec",
+                               "Width of the material to remove, measured from the contour on the tool's side")));
+        fs.push_back(
+            form::codeField<SideMill>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
+                                      {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}},
+                                      &SideMill::toolUse)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "Which steps the wall gets: roughing and finishing, or one of them")));
+        fs.push_back(
+            form::codeField<SideMill>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
+                                      {{1, "full depth at once"}, {2, "several incisions"}}, &SideMill::wallFinish)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "How the wall is finished: at full depth, or in several depths")));
         fs.push_back(form::stepOver<SideMill>());
-        form::describe(fs, {
-            {"contour", "sym-contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure that is the finished wall, open or closed (e.g. K1)")},
-            {"side", "sym-side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which side of the contour, looking along its direction, the tool and the material to remove are on")},
-            {"direction", "sym-direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Climb or conventional milling (with M3, climb runs the tool on the left of its travel)")},
-            {"depth", "sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth of the wall, down from the top surface")},
-            {"width", "sym-W", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Width of the material to remove, measured from the contour on the tool's side")},
-            {"U", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Which steps the wall gets: roughing and finishing, or one of them")},
-            {"F", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "How the wall is finished: at full depth, or in several depths")},
-            {"stepOver", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's")},
-        });
         return fs;
     }
 };

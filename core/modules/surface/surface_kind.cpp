@@ -147,16 +147,22 @@ protected:
         using form::member;
         using form::optionalMember;
         std::vector<FormField> fs;
-        fs.push_back(curveField("curve1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 1"), &SurfaceUnit::curve1,
-                                &SurfaceUnit::curve1Bad));
-        fs.push_back(curveField("curve2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 2"), &SurfaceUnit::curve2,
-                                &SurfaceUnit::curve2Bad));
-        FormField n = form::number<SurfaceUnit>(
-            "n", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "N (roughing pieces)"), {"n"},
-            [](const SurfaceUnit& u) { return static_cast<double>(u.n); },
-            [](SurfaceUnit& u, double v) { u.n = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
-        n.whole = true;
-        fs.push_back(n);
+        fs.push_back(
+            curveField("curve1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 1"), &SurfaceUnit::curve1,
+                       &SurfaceUnit::curve1Bad)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec",
+                    "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines")));
+        fs.push_back(
+            curveField("curve2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 2"), &SurfaceUnit::curve2,
+                       &SurfaceUnit::curve2Bad)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec", "The second curve, as the first; the surface is ruled between the two")));
+        fs.push_back(form::intMember<SurfaceUnit>(
+                         "n", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "N (roughing pieces)"), &SurfaceUnit::n)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec",
+                             "Pieces each curve is divided into for the roughing surface; fewer than M")));
         FormField m = form::number<SurfaceUnit>(
             "m", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M (finishing pieces)"), {"m"},
             [](const SurfaceUnit& u) { return u.m ? std::optional<double>(*u.m) : std::nullopt; },
@@ -167,17 +173,31 @@ protected:
         };
         m.kind = FormFieldKind::OptionalNumber;
         m.whole = true;
+        m.described(TAIWA_TRANSLATE_NOOP(
+            "taiwa::ui::FieldSpec",
+            "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves"));
         fs.push_back(m);
-        fs.push_back(optionalMember<SurfaceUnit>(
-            "curveStep", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step along the curves (gives M)"),
-            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M given"), {"curveStep"}, &SurfaceUnit::curveStep));
+        fs.push_back(
+            optionalMember<SurfaceUnit>(
+                "curveStep", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step along the curves (gives M)"),
+                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M given"), {"curveStep"}, &SurfaceUnit::curveStep)
+                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                "The step along the curves that gives M; empty when M is given")));
         fs.push_back(member<SurfaceUnit>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
-                                         {"scallop"}, &SurfaceUnit::scallop));
-        fs.push_back(member<SurfaceUnit>("allowance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing allowance"),
-                                         {"allowance"}, &SurfaceUnit::allowance));
+                                         {"scallop"}, &SurfaceUnit::scallop)
+                         .described(TAIWA_TRANSLATE_NOOP(
+                             "taiwa::ui::FieldSpec", "Height of the ridges the ball leaves between finishing paths")));
+        fs.push_back(
+            member<SurfaceUnit>("allowance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing allowance"),
+                                {"allowance"}, &SurfaceUnit::allowance)
+                .described(TAIWA_TRANSLATE_NOOP(
+                    "taiwa::ui::FieldSpec", "Material the Z-level roughing leaves on the surface, along its normal")));
         FormField b = form::detail::textField("boundary", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Boundary (paths)"),
                                               {"boundary"}, FormFieldKind::Points);
         b.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "none: the whole surface");
+        b.described(TAIWA_TRANSLATE_NOOP(
+            "taiwa::ui::FieldSpec",
+            "A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none"));
         b.getText = [](const ModuleInput& in) -> std::string {
             const SurfaceUnit* u = in.getIf<SurfaceUnit>();
             if (!u) return {};
@@ -210,18 +230,10 @@ protected:
         tool.kind = FormFieldKind::OptionalNumber;
         tool.whole = true;
         tool.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "under the smallest concave radius");
+        tool.described(TAIWA_TRANSLATE_NOOP(
+            "taiwa::ui::FieldSpec",
+            "The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius"));
         fs.push_back(tool);
-        form::describe(fs, {
-            {"curve1", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines")},
-            {"curve2", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The second curve, as the first; the surface is ruled between the two")},
-            {"n", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the roughing surface; fewer than M")},
-            {"m", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves")},
-            {"curveStep", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The step along the curves that gives M; empty when M is given")},
-            {"scallop", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Height of the ridges the ball leaves between finishing paths")},
-            {"allowance", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Material the Z-level roughing leaves on the surface, along its normal")},
-            {"boundary", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none")},
-            {"tool", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius")},
-        });
         return fs;
     }
 

@@ -201,18 +201,21 @@ protected:
             [](TurnUnit& t, double v) { t.profile.side = std::lround(v) == 2 ? ProfileSide::Inner : ProfileSide::Outer; });
         side.kind = FormFieldKind::Code;
         side.codes = {{1, "outer (OD)"}, {2, "inner (ID, a bore)"}};
+        side.described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                            "Outer profile (the outside diameter) or inner profile (a bore)"));
         fs.push_back(side);
-        fs.push_back(number<TurnUnit>("start.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start X (diameter)"),
-                                      {"start", "start.x"}, [](const TurnUnit& t) { return t.profile.startX; },
-                                      [](TurnUnit& t, double v) { t.profile.startX = v; }));
-        fs.push_back(number<TurnUnit>("start.z", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start Z"), {"start.z"},
-                                      [](const TurnUnit& t) { return t.profile.startZ; },
-                                      [](TurnUnit& t, double v) { t.profile.startZ = v; }));
-        form::describe(fs, {
-            {"side", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outer profile (the outside diameter) or inner profile (a bore)")},
-            {"start.x", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter where the profile starts, at its front end")},
-            {"start.z", "", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Z where the profile starts; 0 is the finished front face")},
-        });
+        fs.push_back(number<TurnUnit>(
+                         "start.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start X (diameter)"),
+                         {"start", "start.x"}, [](const TurnUnit& t) { return t.profile.startX; },
+                         [](TurnUnit& t, double v) { t.profile.startX = v; })
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Diameter where the profile starts, at its front end")));
+        fs.push_back(number<TurnUnit>(
+                         "start.z", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start Z"), {"start.z"},
+                         [](const TurnUnit& t) { return t.profile.startZ; },
+                         [](TurnUnit& t, double v) { t.profile.startZ = v; })
+                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                                         "Z where the profile starts; 0 is the finished front face")));
         return fs;
     }
 
