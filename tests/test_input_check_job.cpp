@@ -8,6 +8,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -87,6 +88,40 @@ private slots:
         const auto ds = check(job(units));
         QCOMPARE(ds.size(), std::size_t(100));
         QVERIFY(ds.back().message.find("more errors not listed") != std::string::npos);
+    }
+
+    // More than 100 warnings (a tiled job's unswept areas) once filled the
+    // list, and its "N more errors not listed" line, an error, refused a job
+    // with none; an error coming after them was not shown.
+    void warningsNeverHideOrMakeAnError()
+    {
+        const auto warning = [](int k) { return Diagnostic{Severity::Warning, k, "AREA", "points", "unswept " + std::to_string(k)}; };
+        DiagnosticSink notes;
+        for (int k = 0; k < 150; ++k) notes.add(warning(k));
+        const Diagnostics onlyNotes = std::move(notes).finish();
+        QCOMPARE(onlyNotes.size(), kMaxDiagnostics);
+        QVERIFY(!hasErrors(onlyNotes));
+        QCOMPARE(onlyNotes.back().severity, Severity::Warning);
+        QCOMPARE(onlyNotes.back().message, std::string("51 more warnings not listed"));
+
+        DiagnosticSink mixed;
+        for (int k = 0; k < 150; ++k) mixed.add(warning(k));
+        mixed.add({Severity::Error, 151, "M4", "depth", "the depth is -1 mm"});
+        const Diagnostics ds = std::move(mixed).finish();
+        QCOMPARE(ds.size(), kMaxDiagnostics);
+        QCOMPARE(std::count_if(ds.begin(), ds.end(), [](const Diagnostic& d) { return d.message == "the depth is -1 mm"; }), 1);
+        QCOMPARE(ds.back().message, std::string("52 more warnings not listed"));
+        QCOMPARE(ds.front().message, std::string("unswept 0"));
+
+        // Errors past the list: counted in an error line after the warnings' line.
+        DiagnosticSink both;
+        for (int k = 0; k < 50; ++k) both.add(warning(k));
+        for (int k = 0; k < 120; ++k) both.add({Severity::Error, k, "M4", "depth", "error " + std::to_string(k)});
+        const Diagnostics all = std::move(both).finish();
+        QCOMPARE(all.size(), kMaxDiagnostics);
+        QCOMPARE(all[all.size() - 2].message, std::string("50 more warnings not listed"));
+        QCOMPARE(all.back().message, std::string("22 more errors not listed; correct the ones above first"));
+        QCOMPARE(std::count_if(all.begin(), all.end(), [](const Diagnostic& d) { return d.severity == Severity::Warning; }), 1);
     }
 
     void inchJobQuotesInches()

@@ -1,12 +1,13 @@
-// Formatting diagnostics the way `taiwa check` prints them.
+// Formatting diagnostics the way `taiwa check` prints them, and the capped
+// list of them (DiagnosticSink: errors kept before warnings).
 #include "model/diagnostic.h"
 #include "model/translate_noop.h"
 
 #include <fmt/format.h>
 
-#include <string>
-
 #include <algorithm>
+#include <iterator>
+#include <string>
 
 namespace taiwa {
 
@@ -49,19 +50,46 @@ bool hasErrors(const Diagnostics& ds)
 
 void DiagnosticSink::add(Diagnostic d)
 {
-    if (kept_.size() < kMaxDiagnostics) kept_.push_back(std::move(d));
-    else ++dropped_;
+    const bool error = d.severity == Severity::Error;
+    if (kept_.size() < kMaxDiagnostics) {
+        kept_.push_back(std::move(d));
+        return;
+    }
+    // Full: an error takes the place of the last warning kept.
+    if (error) {
+        const auto warning = std::find_if(kept_.rbegin(), kept_.rend(), [](const Diagnostic& k) { return k.severity != Severity::Error; });
+        if (warning != kept_.rend()) {
+            kept_.erase(std::next(warning).base());
+            ++droppedWarnings_;
+            kept_.push_back(std::move(d));
+            return;
+        }
+    }
+    ++(error ? droppedErrors_ : droppedWarnings_);
 }
 
 Diagnostics DiagnosticSink::finish() &&
 {
-    if (dropped_ > 0) {
-        // The last kept one makes room for the line that counts the rest.
-        kept_.pop_back();
+    // Each count's line takes the place of the last kept one, a warning
+    // before an error (counted with its kind), so that the list stays
+    // within kMaxDiagnostics.
+    const auto lines = [&] { return std::size_t{droppedErrors_ > 0} + std::size_t{droppedWarnings_ > 0}; };
+    const auto dropLast = [&](bool error) {
+        const auto it = std::find_if(kept_.rbegin(), kept_.rend(), [&](const Diagnostic& k) { return (k.severity == Severity::Error) == error; });
+        if (it == kept_.rend()) return false;
+        kept_.erase(std::next(it).base());
+        ++(error ? droppedErrors_ : droppedWarnings_);
+        return true;
+    };
+    while (lines() > 0 && kept_.size() + lines() > kMaxDiagnostics)
+        if (!dropLast(false)) dropLast(true);
+    if (droppedWarnings_ > 0)
+        kept_.push_back({Severity::Warning, std::nullopt, "", "",
+                         fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} more warnings not listed"), droppedWarnings_)});
+    if (droppedErrors_ > 0)
         kept_.push_back({Severity::Error, std::nullopt, "", "",
                          fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "{} more errors not listed; correct the ones above first"),
-                                     dropped_ + 1)});
-    }
+                                     droppedErrors_)});
     return std::move(kept_);
 }
 

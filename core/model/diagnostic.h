@@ -44,16 +44,21 @@ constexpr std::size_t kMaxDiagnostics = 100;
 
 // Collects diagnostics up to the cap; the rest are counted and summarised by
 // one last line.
+// Errors are kept before warnings: once the list is full, an error takes the
+// place of the last warning kept, so that no refusal is hidden behind notes.
 class DiagnosticSink {
 public:
     void add(Diagnostic d);
     bool empty() const { return kept_.empty(); }
-    // The kept diagnostics, with a final "N more errors" line when some were dropped.
+    // The kept diagnostics, with a final "N more errors not listed" line (an
+    // error) when errors were dropped, and a "N more warnings not listed"
+    // line (a warning) when warnings were: a list of warnings alone stays a
+    // list without an error.
     Diagnostics finish() &&;
 
 private:
     Diagnostics kept_;
-    std::size_t dropped_ = 0;
+    std::size_t droppedErrors_ = 0, droppedWarnings_ = 0;
 };
 
 // The same list, capped as DiagnosticSink caps it.

@@ -40,7 +40,8 @@ public:
     template <class Of>
     Of* asMut()
     {
-        return dynamic_cast<Of*>(d_.get()) ? dynamic_cast<Of*>(mut()) : nullptr;
+        // The kind tested once; the copy mut() may make is of the same kind.
+        return dynamic_cast<Of*>(d_.get()) ? static_cast<Of*>(mut()) : nullptr;
     }
 
     friend bool operator==(const Erased& a, const Erased& b)

@@ -3337,6 +3337,10 @@ Theirs: %6</source>
             <translation>加工ユニットの配列</translation>
         </message>
         <message>
+            <source>{} more warnings not listed</source>
+            <translation>ほかに {} 件の警告があります（一覧にありません）</translation>
+        </message>
+        <message>
             <source>{} more errors not listed; correct the ones above first</source>
             <translation>ほかに {} 件のエラーがあります。まず上のものを直してください</translation>
         </message>

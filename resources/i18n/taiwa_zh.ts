@@ -3337,6 +3337,10 @@ Theirs: %6</source>
             <translation>加工单元数组</translation>
         </message>
         <message>
+            <source>{} more warnings not listed</source>
+            <translation>另有 {} 个警告未列出</translation>
+        </message>
+        <message>
             <source>{} more errors not listed; correct the ones above first</source>
             <translation>另有 {} 个错误未列出；请先更正上面的错误</translation>
         </message>
