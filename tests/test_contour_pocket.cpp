@@ -15,6 +15,7 @@
 #include "job/job_file.h"
 #include "model/contour.h"
 #include "modules/cp/cp.h"
+#include "modules/named_region.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,6 +66,30 @@ double segmentDistance(Point2 p, Point2 a, Point2 b)
 class TestContourPocket : public QObject {
     Q_OBJECT
 private slots:
+    // A unit keeps the figure's contour names only to say its own is not
+    // among them: thousands of units each holding every name made a tiled
+    // job's check quadratic in time and memory (issue 39).
+    void onlyAnUnknownNameKeepsTheFiguresNames()
+    {
+        ContourTable table;
+        const Contour square{{ContourSegment::line({0, 0}, {10, 0}), ContourSegment::line({10, 0}, {10, 10}),
+                              ContourSegment::line({10, 10}, {0, 10}), ContourSegment::line({0, 10}, {0, 0})},
+                             true};
+        for (int k = 1; k <= 500; ++k) table.emplace("K" + std::to_string(k), square);
+        NamedRegion found;
+        found.outline = "K7";
+        found.resolve(table);
+        QVERIFY(found.region.has_value());
+        QVERIFY(found.figureContours.empty());
+        NamedRegion lost;
+        lost.outline = "K7";
+        lost.islands = {"K9000"};
+        lost.resolve(table);
+        QVERIFY(!lost.region.has_value());
+        QCOMPARE(lost.unknown, std::vector<std::string>{"K9000"});
+        QCOMPARE(lost.figureContours.size(), std::size_t{500});
+    }
+
     void samplePlansInThreeSteps()
     {
         const Plan plan = test::samplePlan(kSample);

@@ -25,7 +25,6 @@ void NamedRegion::resolve(const ContourTable& table)
     figureContours.clear();
     closedContours.clear();
     region.reset();
-    for (const auto& [name, contour] : table) figureContours.push_back(name);
     Region r;
     bool all = true;
     const auto take = [&](const std::string& name, Contour& into) {
@@ -42,6 +41,11 @@ void NamedRegion::resolve(const ContourTable& table)
     r.islands.resize(islands.size());
     for (std::size_t i = 0; i < islands.size(); ++i) take(islands[i], r.islands[i]);
     if (all) region = std::move(r);
+    // The figure's contours, for the message that a name is none of them;
+    // a unit that finds its own keeps no list (thousands of units each held
+    // every name: quadratic in time and memory).
+    if (!unknown.empty())
+        for (const auto& [name, contour] : table) figureContours.push_back(name);
 }
 
 namespace {

@@ -30,7 +30,7 @@ struct NamedRegion {
     // (listed in `unknown`).
     std::optional<Region> region;
     std::vector<std::string> unknown;
-    std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages
+    std::vector<std::string> figureContours;  // every contour the figure defines, to name in messages (only when a name is unknown)
     std::vector<bool> closedContours;         // outline, then islands
     bool resolved = false;
 

@@ -44,7 +44,7 @@ struct SideMill {
     // it (mm), set by the job layer; absent until then, or when the name is
     // not a contour of the figure.
     std::optional<Contour> path;
-    std::vector<std::string> figureContours;  // every contour of the figure, for messages
+    std::vector<std::string> figureContours;  // every contour of the figure, for the message (only when it has not `contour`)
     bool resolved = false;
     // Worked out when the contour is resolved: a closed contour with the
     // tool inside, the largest radius that reaches all of it

@@ -48,12 +48,18 @@ public:
         m.figureContours.clear();
         m.path.reset();
         m.reach = 0.0;
-        for (const auto& [name, contour] : table) m.figureContours.push_back(name);
         const auto it = table.find(m.contour);
-        if (it == table.end() || it->second.segments.empty()) return;
+        if (it == table.end() || it->second.segments.empty()) {
+            // The message that the contour is not the figure's names the
+            // figure's contours; a unit that finds its own keeps no list
+            // (thousands of units each held every name: quadratic).
+            for (const auto& [name, contour] : table) m.figureContours.push_back(name);
+            return;
+        }
         m.path = withoutDegenerateSegments(it->second);
         if (m.path->segments.empty()) {
             m.path.reset();
+            for (const auto& [name, contour] : table) m.figureContours.push_back(name);
             return;
         }
         // With the tool inside a closed contour, its reach limits the end mill as CP's does.
