@@ -19,8 +19,8 @@
 // The jobs run on a copy of the sample's milling machine with 10 m of travel
 // (a shop machine file in a temporary ~/.config), so that the machine's
 // travel is not what refuses them. Every check and export is the `taiwa`
-// command itself (build/app/taiwa, next to this program's folder) in a child
-// process: wall time and peak memory (ru_maxrss) are its alone. The export
+// command itself (build/app/taiwa, next to this program's folder), spawned:
+// wall time and peak memory (ru_maxrss) are its alone. The export
 // is the operator's: verification, tape, sheet with pictures, steps.
 //
 // It runs for several minutes. `bench_largest_jobs MODULE...` runs those
@@ -36,9 +36,13 @@
 #include "tools/tool_library.h"
 
 #include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -75,19 +79,30 @@ void writeText(const fs::path& p, const std::string& text)
     out << text;
 }
 
-// `taiwa ARGS...` in a child, its output into `log`.
+// `taiwa ARGS...` in a child, its output into `log`: spawned, not forked,
+// so that its peak memory is its own and not this process's pages.
 bench::Measured runTaiwa(const std::vector<std::string>& args, const fs::path& log)
 {
-    return bench::inChild([&] {
-        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) ::dup2(fd, 1), ::dup2(fd, 2);
-        std::vector<char*> argv{const_cast<char*>(g_taiwa.c_str())};
-        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        ::execv(g_taiwa.c_str(), argv.data());
-        ::_exit(127);
-        return false;
-    });
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, 1, 2);
+    std::vector<char*> argv{const_cast<char*>(g_taiwa.c_str())};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    bench::Measured m;
+    const auto start = std::chrono::steady_clock::now();
+    pid_t pid = 0;
+    if (posix_spawn(&pid, g_taiwa.c_str(), &files, nullptr, argv.data(), environ) != 0) return m;
+    posix_spawn_file_actions_destroy(&files);
+    int status = 0;
+    rusage usage{};
+    ::wait4(pid, &status, 0, &usage);
+    m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m.peakKb = usage.ru_maxrss;
+    if (WIFEXITED(status)) m.exitCode = WEXITSTATUS(status);
+    m.ok = m.exitCode == 0;
+    return m;
 }
 
 // The moves the job's paths would hold, as the budget estimates them; -1
@@ -303,7 +318,7 @@ void runRow(const Row& row)
     int largest = lastIn;
     if (firstOut > 0) {
         int lo = lastIn, hi = firstOut;
-        while (hi - lo > std::max(1, lo / 64)) {
+        while (hi - lo > std::max(1, lo / 16)) {
             const int mid = lo + (hi - lo) / 2;
             const Rung r = measure(row, mid, false);
             (r.accepted() ? lo : hi) = mid;
