@@ -219,14 +219,14 @@ std::string faced(const json& sample, int side)
     return job.dump();
 }
 
-// A staircase of n rows (n/2 steps) from the axis to 90 % of the bar's
-// diameter along 300 mm of a 100 mm bar, on `machine`.
+// A staircase of n rows (n/2 steps) from Ø20 to Ø54 along 300 mm of a 60 mm
+// bar (the shipped lathes' spindles pass 65 mm), on `machine`.
 std::string staircase(int n, const std::string& machine)
 {
     json rows = json::array();
     const int steps = std::max(1, n / 2);
-    const double dx = 80.0 / steps, dz = 300.0 / steps;
-    double x = 8.0, z = 0.0;
+    const double dx = 34.0 / steps, dz = 300.0 / steps;
+    double x = 20.0, z = 0.0;
     for (int i = 0; i < steps; ++i) {
         rows.push_back({{"id", 2 * i + 1}, {"kind", "line"}, {"x", x}, {"z", z}});
         z -= dz;
@@ -235,7 +235,7 @@ std::string staircase(int n, const std::string& machine)
     }
     json job{{"format", "taiwa-job"}, {"version", 5}, {"name", "staircase"}, {"lengthUnit", "mm"}, {"material", "steel-s45c"},
              {"machine", machine}, {"workOffset", "G54"},
-             {"stock", {{"shape", "bar"}, {"diameter", 100}, {"length", 320}, {"face", 1}, {"bore", 0}}},
+             {"stock", {{"shape", "bar"}, {"diameter", 60}, {"length", 320}, {"face", 1}, {"bore", 0}}},
              {"units", json::array({{{"module", "TURN"}, {"name", "Outside"}, {"side", "outer"}, {"start", {{"x", 0}, {"z", 0}}}, {"rows", rows}}})}};
     return job.dump();
 }
