@@ -268,7 +268,8 @@ Rung measure(const Row& row, int n, bool exportToo)
     r.moves = estimatedMoves(text);
     if (exportToo) {
         const fs::path out = g_home / ("out-" + row.name + "-" + std::to_string(n));
-        r.exported = runTaiwa({"export", file.string(), "--out", out.string()}, g_home / "export.log");
+        // --no-cache: each export verifies (the largest job may be a rung already exported).
+        r.exported = runTaiwa({"export", file.string(), "--out", out.string(), "--no-cache"}, g_home / "export.log");
         fs::remove_all(out);
     }
     fs::remove(file);
@@ -302,22 +303,24 @@ void print(const Row& row, const Rung& r, const char* note)
 void runRow(const Row& row)
 {
     // The ladder: doubling while check accepts.
-    int lastIn = 0, firstOut = 0;
+    Rung lastIn;
+    int firstOut = 0;
     for (int n = row.first;; n = std::min(2 * n, row.most)) {
-        const Rung r = measure(row, n, true);
+        Rung r = measure(row, n, true);
         print(row, r, "");
         if (!r.accepted()) {
             firstOut = n;
             break;
         }
-        lastIn = n;
+        lastIn = std::move(r);
         if (n == row.most) break;
     }
-    if (lastIn == 0) return;
-    // The largest it accepts, between the last rung in and the first out.
-    int largest = lastIn;
+    if (lastIn.n == 0) return;
+    // The largest it accepts, between the last rung in and the first out
+    // (the last rung itself when the ladder reached its top).
+    int largest = lastIn.n;
     if (firstOut > 0) {
-        int lo = lastIn, hi = firstOut;
+        int lo = lastIn.n, hi = firstOut;
         while (hi - lo > std::max(1, lo / 16)) {
             const int mid = lo + (hi - lo) / 2;
             const Rung r = measure(row, mid, false);
@@ -325,7 +328,7 @@ void runRow(const Row& row)
         }
         largest = lo;
     }
-    const Rung r = measure(row, largest, true);
+    const Rung r = largest == lastIn.n ? lastIn : measure(row, largest, true);
     const bool within = r.exported.ok && r.exported.seconds < 60 && r.check.seconds < 60 && r.exported.peakKb < 2 * 1024 * 1024;
     print(row, r, within ? "<- largest accepted: within 60 s and 2 GB" : "<- largest accepted: OVER 60 s or 2 GB");
 }
