@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include <utility>
+
 namespace taiwa {
 
 std::optional<Result<PostedTwoPath>> postTwoPath(const Plan& plan, const PostOptions& post)
@@ -65,10 +67,15 @@ std::vector<PostedProbing> postProbing(const Plan& plan, const PostOptions& post
 
 PostedJob postJob(const Plan& plan, const PostOptions& post)
 {
+    return postJob(plan, post, postProcess(plan.steps, plan.tools, post), post::dialectNamed(post.dialect));
+}
+
+PostedJob postJob(const Plan& plan, const PostOptions& post, PostedProgram tape, const post::Dialect& dialect)
+{
     PostedJob job;
-    job.tape = postProcess(plan.steps, plan.tools, post);
+    job.tape = std::move(tape);
     job.twoPath = postTwoPath(plan, post);
-    if (!plan.setups.empty()) job.probing = postProbing(plan, post, post::dialectNamed(post.dialect));
+    if (!plan.setups.empty()) job.probing = postProbing(plan, post, dialect);
     return job;
 }
 

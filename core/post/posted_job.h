@@ -48,6 +48,9 @@ struct PostedJob {
 // dialect, units, program number and stem). Throws as postProcess does for
 // the tape.
 PostedJob postJob(const Plan& plan, const PostOptions& post);
+// The same around a tape already posted with `post`, the probing programs
+// in `dialect` (the read-back of a tape alone: verify/tape_readback.h).
+PostedJob postJob(const Plan& plan, const PostOptions& post, PostedProgram tape, const post::Dialect& dialect);
 
 // A two-path lathe's programs posted with `post` (as postJob); nothing for a
 // machine of one path.

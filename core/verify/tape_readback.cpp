@@ -256,11 +256,7 @@ void readBack(Report& report, const Plan& plan, const PostedProgram& program, co
               const PostOptions& post)
 {
     // The other programs posted here, as the export posts them.
-    PostedJob posted;
-    posted.tape = program;
-    posted.twoPath = postTwoPath(plan, post);
-    if (!plan.setups.empty()) posted.probing = postProbing(plan, post, dialect);
-    readBack(report, plan, posted, dialect, post);
+    readBack(report, plan, postJob(plan, post, program, dialect), dialect, post);
 }
 
 std::string programFile(const PostOptions& post, const std::string& suffix)
