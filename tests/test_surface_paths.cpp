@@ -9,7 +9,8 @@
 // the spacing allows for its concave radius (the plane's does not); Z-level roughing
 // leaves the allowance along the normal and rides on it at the last level;
 // two surfaces combine into the higher or lower of them; a ruled surface
-// tessellated once drops the cutter onto its plane. The unit's checks: an
+// tessellated once drops the cutter onto its plane; the drop's pruning
+// gives the maximum over every triangle taken alone, bit for bit. The unit's checks: an
 // overhang is an undercut (a vertical wall and a sphere are not), a trough's
 // concave radius is found (a cylinder's top has none), a boundary meets
 // the surface or does not. STEP: the sphere's paths written as one B-spline
@@ -27,6 +28,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 
 using namespace taiwa;
 using namespace taiwa::surface;
@@ -152,6 +154,53 @@ private slots:
         DropCutter none(empty, Cutter{10, 5});
         QVERIFY(!none.noseZ(0, 0));
         QVERIFY(!none.surfaceZ(0, 0));
+    }
+
+    // The drop skips the cells and triangles whose bound the contact found
+    // so far reaches (surface_mesh.cpp). On bumpy and stepped random meshes
+    // its answer must be the maximum over every triangle taken alone (each
+    // in a mesh of its own: nothing pruned), bit for bit, for a ball, a
+    // bull-nose and a flat end mill.
+    void dropIsTheMaximumOverEveryTriangle()
+    {
+        std::mt19937 rng(1130);
+        std::uniform_real_distribution<double> noise(-0.4, 0.4), at(-2.0, 42.0);
+        for (const bool stepped : {false, true}) {
+            std::vector<std::vector<Point3>> paths;
+            for (int i = 0; i <= 20; ++i) {
+                std::vector<Point3> row;
+                for (int j = 0; j <= 20; ++j) {
+                    const double x = 2.0 * j + noise(rng), y = 2.0 * i + noise(rng);
+                    double z = 3 * std::sin(x / 5) * std::cos(y / 7) + noise(rng);
+                    if (stepped && x > 20) z += 6;  // a wall across the middle
+                    row.push_back({x, y, z});
+                }
+                paths.push_back(std::move(row));
+            }
+            const TriangleMesh mesh = meshFromPaths(paths);
+            const MeshIndex index(mesh);
+            std::vector<std::unique_ptr<MeshIndex>> alone;
+            for (const auto& t : mesh.triangles) {
+                TriangleMesh one;
+                for (const int v : t) one.vertices.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+                one.triangles = {{0, 1, 2}};
+                alone.push_back(std::make_unique<MeshIndex>(std::move(one)));
+            }
+            for (const Cutter cutter : {Cutter{10, 5}, Cutter{12, 2}, Cutter{8, 0}}) {
+                DropCutter drop(index, cutter);
+                std::vector<DropCutter> each;
+                for (const auto& a : alone) each.emplace_back(*a, cutter);
+                for (int k = 0; k < 150; ++k) {
+                    const double x = at(rng), y = at(rng);
+                    std::optional<double> all;
+                    for (DropCutter& d : each)
+                        if (const auto z = d.noseZ(x, y)) all = std::max(all.value_or(*z), *z);
+                    const std::optional<double> pruned = drop.noseZ(x, y);
+                    QCOMPARE(pruned.has_value(), all.has_value());
+                    if (all) QVERIFY2(*pruned == *all, qPrintable(QString("(%1, %2): %3 against %4").arg(x).arg(y).arg(*pruned, 0, 'g', 17).arg(*all, 0, 'g', 17)));
+                }
+            }
+        }
     }
 
     void pathStopsOnVerticalBoundary()

@@ -192,9 +192,13 @@ MeshIndex::MeshIndex(TriangleMesh mesh) : mesh_(std::move(mesh))
     start_ = count;
     items_.resize(static_cast<std::size_t>(count.back()));
     std::vector<int> fill(count.begin(), count.end() - 1);
+    cellTop_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), kNone);
     for (int k = 0; k < static_cast<int>(mesh_.triangles.size()); ++k)
-        cellsOf(mesh_.triangles[static_cast<std::size_t>(k)],
-                [&](int c) { items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] = k; });
+        cellsOf(mesh_.triangles[static_cast<std::size_t>(k)], [&](int c) {
+            items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] = k;
+            double& top = cellTop_[static_cast<std::size_t>(c)];
+            top = std::max(top, facets_[static_cast<std::size_t>(k)].zmax);
+        });
 }
 
 DropCutter::DropCutter(const MeshIndex& index, Cutter cutter) : index_(&index), cutter_(cutter) {}
@@ -217,18 +221,8 @@ std::optional<double> DropCutter::noseZ(double x, double y)
         best = std::max(best, v.z - cutter_.heightAt(std::sqrt(d2)));
     };
 
-    // First the faces and vertices (closed form) of every triangle under the
-    // disc, then the edges, most of them skipped by their bound.
-    candidates_.clear();
-    index_->near(x, y, rmax, seen_, stamp_, [&](int t) {
-        // Only triangles whose box meets the disc.
+    const auto evaluate = [&](int t) {
         const MeshIndex::Facet& f = index_->facet(t);
-        const double dx = std::max({f.x0 - x, 0.0, x - f.x1}), dy = std::max({f.y0 - y, 0.0, y - f.y1});
-        if (dx * dx + dy * dy <= rmax * rmax) candidates_.push_back(t);
-    });
-    for (const int t : candidates_) {
-        const MeshIndex::Facet& f = index_->facet(t);
-        if (f.zmax <= best) continue;
         const auto& tri = m.triangles[static_cast<std::size_t>(t)];
         const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
         const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
@@ -244,13 +238,6 @@ std::optional<double> DropCutter::noseZ(double x, double y)
         vertex(a);
         vertex(b);
         vertex(c);
-    }
-    for (const int t : candidates_) {
-        if (index_->facet(t).zmax <= best) continue;
-        const auto& tri = m.triangles[static_cast<std::size_t>(t)];
-        const Point3& a = m.vertices[static_cast<std::size_t>(tri[0])];
-        const Point3& b = m.vertices[static_cast<std::size_t>(tri[1])];
-        const Point3& c = m.vertices[static_cast<std::size_t>(tri[2])];
         if (ball) {
             ballEdge(a, b);
             ballEdge(b, c);
@@ -260,7 +247,42 @@ std::optional<double> DropCutter::noseZ(double x, double y)
             edge(b, c);
             edge(c, a);
         }
+    };
+
+    // The most a triangle's contact could put the nose at: no point of it
+    // is higher than its top, nor nearer the axis than its box, where the
+    // cutter is already heightAt(that distance) above its nose; a cell's
+    // the same of its triangles' highest top and its own box. A cell or
+    // triangle whose bound the best contact so far reaches cannot raise it.
+    // The cell with the highest bound first (most often the answer is in
+    // it or near it), then the rest in any order (a sort costs more than it
+    // saves): on a smooth surface a few triangles near the axis decide among
+    // the hundreds under the disc. The answer is the same maximum as taking
+    // every triangle.
+    const auto bound = [&](double top, double d2) { return top - cutter_.heightAt(std::sqrt(d2)); };
+    cells_.clear();
+    index_->nearCells(x, y, rmax, [&](int cell, double d2, double top) {
+        if (d2 <= rmax * rmax) cells_.push_back({bound(top, d2), cell});
+    });
+    const auto first = std::max_element(cells_.begin(), cells_.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
+    if (first != cells_.end()) std::iter_swap(cells_.begin(), first);
+    if (seen_.size() != m.triangles.size()) seen_.assign(m.triangles.size(), 0);
+    if (++stamp_ == 0) {
+        std::fill(seen_.begin(), seen_.end(), 0);
+        stamp_ = 1;
     }
+    for (const auto& [cellBound, cell] : cells_)
+        for (const int t : index_->cellTriangles(cell)) {
+            if (cellBound <= best) break;
+            if (seen_[static_cast<std::size_t>(t)] == stamp_) continue;
+            seen_[static_cast<std::size_t>(t)] = stamp_;
+            const MeshIndex::Facet& f = index_->facet(t);
+            if (f.zmax <= best) continue;
+            const double dx = std::max({f.x0 - x, 0.0, x - f.x1}), dy = std::max({f.y0 - y, 0.0, y - f.y1});
+            const double d2 = dx * dx + dy * dy;
+            if (d2 > rmax * rmax || bound(f.zmax, d2) <= best) continue;
+            evaluate(t);
+        }
     if (best == kNone) return std::nullopt;
     return best;
 }

@@ -2,7 +2,8 @@
 // that finds the tool-nose points on it (docs/surfaces.md): a ball or
 // bull-nose end mill lowered along the tool axis (−Z) until it touches the
 // first triangle. A uniform grid over XY indexes the triangles, so a drop
-// looks only at those under the tool's disc. No OpenCASCADE in the hot loop:
+// looks only at those under the tool's disc, and of those only at the cells
+// and triangles high enough to raise the contact found so far. No OpenCASCADE in the hot loop:
 // surfaces from OpenCASCADE (surface_curves.h) are tessellated here once.
 #pragma once
 
@@ -12,6 +13,8 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace taiwa::surface {
@@ -60,6 +63,17 @@ public:
     // box [x − r, x + r] × [y − r, y + r]. `seen` is the caller's scratch.
     template <class F>
     void near(double x, double y, double r, std::vector<std::uint32_t>& seen, std::uint32_t& stamp, F&& f) const;
+    // Calls f(cell, squared XY distance from (x, y) to the cell's box, the
+    // highest top of the cell's triangles) for each non-empty cell meeting
+    // the box [x − r, x + r] × [y − r, y + r]; cellTriangles(cell) lists the
+    // triangles whose XY box meets the cell (a triangle may be in several).
+    template <class F>
+    void nearCells(double x, double y, double r, F&& f) const;
+    std::span<const int> cellTriangles(int cell) const
+    {
+        const auto c = static_cast<std::size_t>(cell);
+        return {items_.data() + start_[c], static_cast<std::size_t>(start_[c + 1] - start_[c])};
+    }
 
     // What the drop-cutter reads of a triangle, computed once: its unit
     // normal (nz ≥ 0; 0 for a degenerate one), its plane's n·p, its highest
@@ -76,6 +90,7 @@ private:
     int nx_ = 1, ny_ = 1;
     std::vector<int> start_;  // cell c holds items_[start_[c] .. start_[c + 1])
     std::vector<int> items_;
+    std::vector<double> cellTop_;  // the highest triangle top of each cell (−∞: empty)
 };
 
 // A drop-cutter over one indexed surface: the tool-nose height at (x, y)
@@ -103,7 +118,7 @@ private:
     bool axisOver_ = false;
     std::vector<std::uint32_t> seen_;
     std::uint32_t stamp_ = 0;
-    std::vector<int> candidates_;
+    std::vector<std::pair<double, int>> cells_;  // (the most a cell's triangles could raise the nose to, cell)
 };
 
 template <class F>
@@ -131,6 +146,26 @@ void MeshIndex::near(double x, double y, double r, std::vector<std::uint32_t>& s
                 f(t);
             }
         }
+}
+
+template <class F>
+void MeshIndex::nearCells(double x, double y, double r, F&& f) const
+{
+    if (start_.empty() || x + r < x0_ || x - r > x1_ || y + r < y0_ || y - r > y1_) return;
+    const auto clampi = [](int v, int hi) { return v < 0 ? 0 : v > hi ? hi : v; };
+    const int i0 = clampi(static_cast<int>((x - r - x0_) / cell_), nx_ - 1);
+    const int i1 = clampi(static_cast<int>((x + r - x0_) / cell_), nx_ - 1);
+    const int j0 = clampi(static_cast<int>((y - r - y0_) / cell_), ny_ - 1);
+    const int j1 = clampi(static_cast<int>((y + r - y0_) / cell_), ny_ - 1);
+    for (int j = j0; j <= j1; ++j) {
+        const double cy0 = y0_ + j * cell_, dy = std::max({cy0 - y, 0.0, y - (cy0 + cell_)});
+        for (int i = i0; i <= i1; ++i) {
+            const int c = j * nx_ + i;
+            if (start_[static_cast<std::size_t>(c)] == start_[static_cast<std::size_t>(c) + 1]) continue;
+            const double cx0 = x0_ + i * cell_, dx = std::max({cx0 - x, 0.0, x - (cx0 + cell_)});
+            f(c, dx * dx + dy * dy, cellTop_[static_cast<std::size_t>(c)]);
+        }
+    }
 }
 
 }  // namespace taiwa::surface

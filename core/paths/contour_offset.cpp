@@ -4,6 +4,7 @@
 #include "paths/contour_offset.h"
 
 #include "paths/region_offset.h"
+#include "paths/segment_gap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -230,17 +231,20 @@ Result<std::vector<Contour>> offsetSide(const Contour& c, bool left, double d)
     return loops;
 }
 
-Clearance chainClearance(const Contour& c, const std::vector<Contour>& chains, double spacing)
+Clearance chainClearance(const Contour& c, const std::vector<Contour>& chains)
 {
+    std::vector<Box2> boxes;
+    boxes.reserve(c.segments.size());
+    for (const ContourSegment& s : c.segments) boxes.push_back(segmentBox(s));
     Clearance best{1e300, {}};
-    const auto probe = [&](Point2 p) {
-        const double d = distanceTo(c, p);
-        if (d < best.nearest) best = {d, p};
-    };
     for (const Contour& chain : chains)
         for (const ContourSegment& s : chain.segments) {
-            const int n = std::max(1, static_cast<int>(std::ceil(s.length() / spacing)));
-            for (int i = 0; i <= n; ++i) probe(s.at(static_cast<double>(i) / n));
+            const Box2 box = segmentBox(s);
+            for (std::size_t i = 0; i < c.segments.size(); ++i) {
+                if (boxGap(box, boxes[i]) >= best.nearest) continue;  // no point of the two comes nearer
+                const SegmentGap g = segmentGap(s, c.segments[i]);
+                if (g.gap < best.nearest) best = {g.gap, g.onA};
+            }
         }
     return best;
 }

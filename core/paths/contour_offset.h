@@ -43,14 +43,16 @@ Result<std::vector<Contour>> offsetSide(const Contour& c, bool left, double d);
 // The open offset alone (offsetSide's first step for an open contour).
 Result<Contour> offsetOpen(const Contour& c, bool left, double d);
 
-// The nearest any point of the chains comes to the contour, sampled every
-// `spacing` mm along each segment and at every segment's ends: at least d
-// (less rounding) when the chains keep off the contour, less where a part of
-// the contour the trimming did not see comes nearer (a narrow channel).
+// The nearest any point of the chains comes to the contour, exactly (the
+// least gap of every pair of a chain's and the contour's segments that can
+// come nearer than the best so far: segment_gap.h), and where on a chain:
+// at least d (less rounding) when the chains keep off the contour, less
+// where a part of the contour the trimming did not see comes nearer (a
+// narrow channel), 0 where a chain crosses it.
 struct Clearance {
     double nearest = 0.0;
     Point2 where{};
 };
-Clearance chainClearance(const Contour& c, const std::vector<Contour>& chains, double spacing);
+Clearance chainClearance(const Contour& c, const std::vector<Contour>& chains);
 
 }  // namespace taiwa::paths

@@ -25,7 +25,6 @@ namespace taiwa {
 
 namespace {
 
-constexpr double kProofSpacing = 0.05;  // mm between the points of a chain proved against the contour
 constexpr double kProofTolerance = 1e-6;
 
 std::string mm(double v) { return fmt::format("{:g} mm", std::round(v * 1000.0) / 1000.0); }
@@ -58,7 +57,7 @@ std::optional<Narrow> tooNarrow(const side::Travel& t, const Passes& p, double R
     for (const double o : offsets) {
         const auto chains = paths::offsetSide(t.contour, t.toolOnLeft, R + o);
         if (!chains || chains->empty()) return Narrow{t.contour.start(), R + o};
-        const paths::Clearance c = paths::chainClearance(t.contour, *chains, kProofSpacing);
+        const paths::Clearance c = paths::chainClearance(t.contour, *chains);
         if (c.nearest < R + o - kProofTolerance) return Narrow{c.where, R + o - c.nearest};
     }
     return std::nullopt;
