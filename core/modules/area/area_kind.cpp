@@ -4,6 +4,7 @@
 #include "model/translate_noop.h"
 #include "modules/area/area.h"
 #include "modules/module_kind.h"
+#include "modules/shared_fields.h"
 #include "paths/drawn_passes.h"
 
 #include "io/job_messages.h"
@@ -181,22 +182,13 @@ protected:
     {
         using form::member;
         std::vector<FormField> fs;
-        fs.push_back(
-            form::contourName<AreaClearing>(
-                TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
-                {"outline"}, [](auto& a) -> auto& { return a.area.outline; })
-                .described("sym-outline",
-                           TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "The contour of the figure around the area to clear (e.g. K1)")));
-        fs.push_back(
-            form::contourNames<AreaClearing>(
-                "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
-                [](auto& a) -> auto& { return a.area.islands; })
-                .described(
-                    "sym-islands",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Contours of the figure left standing in the area, separated by commas; empty for none")));
+        fs.push_back(form::regionOutline<AreaClearing>(
+            &AreaClearing::area, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure around the area to clear (e.g. K1)")));
+        fs.push_back(form::regionIslands<AreaClearing>(
+            &AreaClearing::area,
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                 "Contours of the figure left standing in the area, separated by commas; empty for none")));
         fs.push_back(
             member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
                                  &AreaClearing::depth)
