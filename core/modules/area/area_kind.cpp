@@ -74,17 +74,12 @@ public:
     {
         const AreaClearing& a = mm.as<AreaClearing>();
         if (!a.area.region || a.points.empty()) return std::nullopt;
-        const Region region = normalised(*a.area.region);
-        Cavity c;
-        const Box2 box = bounds(region.outer);
-        c.min = box.min;
-        c.max = box.max;
-        c.depth = a.depth;
-        const auto inside = std::make_shared<RegionDistance>(region);
-        c.depthAt = [inside, points = a.points, r = a.diameter / 2, depth = a.depth](Point2 q, double slack) {
+        RegionCavity cut = regionCavity(*a.area.region, a.depth);
+        cut.cavity.depthAt = [inside = cut.distance, points = a.points, r = a.diameter / 2,
+                              depth = a.depth](Point2 q, double slack) {
             return (*inside)(q) <= slack && paths::distanceToPasses(points, q) <= r + slack ? depth : 0.0;
         };
-        return c;
+        return std::move(cut.cavity);
     }
 
     // A rectangle over the middle of the stock.

@@ -62,18 +62,16 @@ public:
     {
         const ContourPocket& p = mm.as<ContourPocket>();
         if (!p.contours.region) return std::nullopt;
-        const Region region = normalised(*p.contours.region);
-        Cavity c;
-        const Box2 box = bounds(region.outer);
-        c.min = box.min;
-        c.max = box.max;
-        c.depth = p.depth;
-        const auto distance = std::make_shared<RegionDistance>(region);
-        c.depthAt = [distance, depth = p.depth](Point2 q, double slack) { return distance->within(q, slack) ? depth : 0.0; };
+        RegionCavity r = regionCavity(*p.contours.region, p.depth);
+        r.cavity.depthAt = [distance = r.distance, depth = p.depth](Point2 q, double slack) {
+            return distance->within(q, slack) ? depth : 0.0;
+        };
         // Walls only (U8): the pocket is open to the floor within α2 of its walls.
         if (toolUseFromCode(p.toolUse).value_or(ToolUse::Standard) == ToolUse::WallOnly)
-            c.openAt = [distance, depth = p.depth, a2 = tech.alpha2](Point2 q) { return distance->within(q, -a2) ? depth : 0.0; };
-        return c;
+            r.cavity.openAt = [distance = r.distance, depth = p.depth, a2 = tech.alpha2](Point2 q) {
+                return distance->within(q, -a2) ? depth : 0.0;
+            };
+        return std::move(r.cavity);
     }
 
     // A rectangle rounded at its corners over the middle of the stock.
