@@ -94,6 +94,18 @@ std::optional<Quad> regionBox(const std::optional<Region>& region)
     return Quad{{b.min, Point2{b.max.x, b.min.y}, b.max, Point2{b.min.x, b.max.y}}, 0.0};
 }
 
+RegionCavity regionCavity(const Region& region, double depth)
+{
+    const Region normal = normalised(region);
+    RegionCavity out;
+    const Box2 box = bounds(normal.outer);
+    out.cavity.min = box.min;
+    out.cavity.max = box.max;
+    out.cavity.depth = depth;
+    out.distance = std::make_shared<const RegionDistance>(normal);
+    return out;
+}
+
 std::vector<Point2> regionPolygon(const std::optional<Region>& region)
 {
     constexpr double kPolygonChord = 1e-3;  // mm: the outline flattened for the interference check

@@ -4,17 +4,20 @@
 // evaluated figure, checking the contours (known, closed, not crossing
 // themselves, inside the stock, islands inside the outline and apart,
 // optionally no sharp inside corner), the resolved outline's box and
-// polygon and the default figure's rectangle are shared here.
+// polygon, the cavity's box and the default figure's rectangle are shared
+// here.
 #pragma once
 
 #include "check/unit_checks.h"
 #include "io/json_fields.h"
+#include "model/cavity.h"
 #include "model/contour.h"
 #include "model/geometry.h"
 #include "model/job.h"
 #include "model/module.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +64,16 @@ void writeNamedRegion(const NamedRegion& n, nlohmann::ordered_json& u);
 // while the region is unresolved.
 std::optional<Quad> regionBox(const std::optional<Region>& region);
 std::vector<Point2> regionPolygon(const std::optional<Region>& region);
+
+// The cavity a contour unit cuts down to `depth` within a resolved region
+// (ModuleKind::cavity): the box around its outline and the depth, with the
+// signed distance from the region (normalised) for the unit's own depthAt
+// and openAt, which it sets.
+struct RegionCavity {
+    Cavity cavity;
+    std::shared_ptr<const RegionDistance> distance;
+};
+RegionCavity regionCavity(const Region& region, double depth);
 
 // The figure text of a default contour unit's rectangle over the middle of
 // `stock` (0.2 to 0.6 of its width and length, to 1 µm): the corners P1

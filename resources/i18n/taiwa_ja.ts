@@ -5563,10 +5563,6 @@ Theirs: %6</source>
             <translation>除去する領域を囲む図形の輪郭 (例: K1)</translation>
         </message>
         <message>
-            <source>Islands</source>
-            <translation>アイランド</translation>
-        </message>
-        <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>領域内に残す図形の輪郭、カンマ区切り。なければ空欄</translation>
         </message>
@@ -5607,32 +5603,16 @@ Theirs: %6</source>
             <translation>ポケット内に残すアイランドとなる図形の輪郭、カンマ区切り (例: K2, K3)。なければ空欄</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>ポケットの深さ (上面から下へ)</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(工具使用区分)</translation>
-        </message>
-        <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(仕上げ区分)</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
-        </message>
-        <message>
             <source>Depth</source>
             <translation>深さ</translation>
         </message>
         <message>
             <source>Stock taken off the top, down from Z0; less than the stock's height</source>
             <translation>上面から削り取る量 (Z0 から下へ)。素材高さ未満</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(工具使用区分)</translation>
         </message>
         <message>
             <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
@@ -5843,22 +5823,6 @@ Theirs: %6</source>
             <translation>L1 の終わり側の壁の傾き (垂直からの角度)；空欄は θ1 と同じ</translation>
         </message>
         <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(コーナ半径)</translation>
-        </message>
-        <message>
-            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
-            <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(下穴)</translation>
-        </message>
-        <message>
-            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
-            <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
-        </message>
-        <message>
             <source>Scallop height</source>
             <translation>カスプ高さ</translation>
         </message>
@@ -6009,6 +5973,42 @@ Theirs: %6</source>
         <message>
             <source>Feed of the probing moves, in mm per minute</source>
             <translation>測定移動の送り (mm/min)</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>ポケットの深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(コーナ半径)</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(仕上げ区分)</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
+        </message>
+        <message>
+            <source>H (pilot hole)</source>
+            <translation>H(下穴)</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>アイランド</translation>
         </message>
         <message>
             <source>Contour</source>

@@ -5563,10 +5563,6 @@ Theirs: %6</source>
             <translation>围绕待清除区域的图形轮廓（例如 K1）</translation>
         </message>
         <message>
-            <source>Islands</source>
-            <translation>岛</translation>
-        </message>
-        <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>区域内保留的图形轮廓，用逗号分隔；无则留空</translation>
         </message>
@@ -5607,32 +5603,16 @@ Theirs: %6</source>
             <translation>型腔中保留的岛的图形轮廓，用逗号分隔（例如 K2, K3）；无则留空</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>型腔深度，从上表面向下</translation>
-        </message>
-        <message>
-            <source>U (tool use)</source>
-            <translation>U(刀具使用)</translation>
-        </message>
-        <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(侧壁精加工)</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
-        </message>
-        <message>
             <source>Depth</source>
             <translation>深度</translation>
         </message>
         <message>
             <source>Stock taken off the top, down from Z0; less than the stock's height</source>
             <translation>从顶面去除的量（自 Z0 向下）；小于毛坯高度</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(刀具使用)</translation>
         </message>
         <message>
             <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
@@ -5843,22 +5823,6 @@ Theirs: %6</source>
             <translation>L1 末端侧壁的倾角（相对竖直方向，度）；空表示与 θ1 相同</translation>
         </message>
         <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(拐角半径)</translation>
-        </message>
-        <message>
-            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
-            <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(预钻孔)</translation>
-        </message>
-        <message>
-            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
-            <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
-        </message>
-        <message>
             <source>Scallop height</source>
             <translation>残留高度</translation>
         </message>
@@ -6009,6 +5973,42 @@ Theirs: %6</source>
         <message>
             <source>Feed of the probing moves, in mm per minute</source>
             <translation>测量移动的进给（mm/min）</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>型腔深度，从上表面向下</translation>
+        </message>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(拐角半径)</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(侧壁精加工)</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
+        </message>
+        <message>
+            <source>H (pilot hole)</source>
+            <translation>H(预钻孔)</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>岛</translation>
         </message>
         <message>
             <source>Contour</source>

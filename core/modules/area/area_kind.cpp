@@ -4,6 +4,7 @@
 #include "model/translate_noop.h"
 #include "modules/area/area.h"
 #include "modules/module_kind.h"
+#include "modules/shared_fields.h"
 #include "paths/drawn_passes.h"
 
 #include "io/job_messages.h"
@@ -73,17 +74,12 @@ public:
     {
         const AreaClearing& a = mm.as<AreaClearing>();
         if (!a.area.region || a.points.empty()) return std::nullopt;
-        const Region region = normalised(*a.area.region);
-        Cavity c;
-        const Box2 box = bounds(region.outer);
-        c.min = box.min;
-        c.max = box.max;
-        c.depth = a.depth;
-        const auto inside = std::make_shared<RegionDistance>(region);
-        c.depthAt = [inside, points = a.points, r = a.diameter / 2, depth = a.depth](Point2 q, double slack) {
+        RegionCavity cut = regionCavity(*a.area.region, a.depth);
+        cut.cavity.depthAt = [inside = cut.distance, points = a.points, r = a.diameter / 2,
+                              depth = a.depth](Point2 q, double slack) {
             return (*inside)(q) <= slack && paths::distanceToPasses(points, q) <= r + slack ? depth : 0.0;
         };
-        return c;
+        return std::move(cut.cavity);
     }
 
     // A rectangle over the middle of the stock.
@@ -181,22 +177,13 @@ protected:
     {
         using form::member;
         std::vector<FormField> fs;
-        fs.push_back(
-            form::contourName<AreaClearing>(
-                TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
-                {"outline"}, [](auto& a) -> auto& { return a.area.outline; })
-                .described("sym-outline",
-                           TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "The contour of the figure around the area to clear (e.g. K1)")));
-        fs.push_back(
-            form::contourNames<AreaClearing>(
-                "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
-                [](auto& a) -> auto& { return a.area.islands; })
-                .described(
-                    "sym-islands",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Contours of the figure left standing in the area, separated by commas; empty for none")));
+        fs.push_back(form::regionOutline<AreaClearing>(
+            &AreaClearing::area, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure around the area to clear (e.g. K1)")));
+        fs.push_back(form::regionIslands<AreaClearing>(
+            &AreaClearing::area,
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                 "Contours of the figure left standing in the area, separated by commas; empty for none")));
         fs.push_back(
             member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
                                  &AreaClearing::depth)

@@ -6,6 +6,7 @@
 #include "modules/module_kind.h"
 #include "modules/named_region.h"
 #include "modules/pocket_plan.h"
+#include "modules/shared_fields.h"
 #include "paths/narrowest.h"
 #include "paths/region.h"
 
@@ -61,18 +62,16 @@ public:
     {
         const ContourPocket& p = mm.as<ContourPocket>();
         if (!p.contours.region) return std::nullopt;
-        const Region region = normalised(*p.contours.region);
-        Cavity c;
-        const Box2 box = bounds(region.outer);
-        c.min = box.min;
-        c.max = box.max;
-        c.depth = p.depth;
-        const auto distance = std::make_shared<RegionDistance>(region);
-        c.depthAt = [distance, depth = p.depth](Point2 q, double slack) { return distance->within(q, slack) ? depth : 0.0; };
+        RegionCavity r = regionCavity(*p.contours.region, p.depth);
+        r.cavity.depthAt = [distance = r.distance, depth = p.depth](Point2 q, double slack) {
+            return distance->within(q, slack) ? depth : 0.0;
+        };
         // Walls only (U8): the pocket is open to the floor within α2 of its walls.
         if (toolUseFromCode(p.toolUse).value_or(ToolUse::Standard) == ToolUse::WallOnly)
-            c.openAt = [distance, depth = p.depth, a2 = tech.alpha2](Point2 q) { return distance->within(q, -a2) ? depth : 0.0; };
-        return c;
+            r.cavity.openAt = [distance = r.distance, depth = p.depth, a2 = tech.alpha2](Point2 q) {
+                return distance->within(q, -a2) ? depth : 0.0;
+            };
+        return std::move(r.cavity);
     }
 
     // A rectangle rounded at its corners over the middle of the stock.
@@ -139,44 +138,21 @@ protected:
 
     std::vector<FormField> formFields() const override
     {
-        using form::member;
         std::vector<FormField> fs;
         // The contours by name, first: the figure's CONTOUR statements.
-        fs.push_back(
-            form::contourName<ContourPocket>(
-                TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
-                {"outline"}, [](auto& p) -> auto& { return p.contours.outline; })
-                .described(
-                    "sym-outline",
-                    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                         "The contour of the figure that is the pocket's edge at the top (e.g. K1)")));
-        fs.push_back(
-            form::contourNames<ContourPocket>(
-                "islands", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Islands"), {"islands"},
-                [](auto& p) -> auto& { return p.contours.islands; })
-                .described(
-                    "sym-islands",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")));
-        fs.push_back(member<ContourPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"),
-                                           {"depth"}, &ContourPocket::depth)
-                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                                  "Depth of the pocket, down from the top surface")));
-        fs.push_back(
-            form::code<ContourPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                      {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly},
-                                      &ContourPocket::toolUse)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
-        fs.push_back(
-            form::code<ContourPocket>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-                                      {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage},
-                                      &ContourPocket::wallFinish)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "How the walls are finished: at full depth, in several depths, or in two stages")));
+        fs.push_back(form::regionOutline<ContourPocket>(
+            &ContourPocket::contours, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
+            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
+                                 "The contour of the figure that is the pocket's edge at the top (e.g. K1)")));
+        fs.push_back(form::regionIslands<ContourPocket>(
+            &ContourPocket::contours,
+            TAIWA_TRANSLATE_NOOP(
+                "taiwa::ui::FieldSpec",
+                "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")));
+        fs.push_back(form::pocketDepth<ContourPocket>());
+        fs.push_back(form::pocketToolUse<ContourPocket>(
+            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly}));
+        fs.push_back(form::pocketWallFinish<ContourPocket>());
         fs.push_back(form::stepOver<ContourPocket>());
         return fs;
     }

@@ -4,6 +4,7 @@
 #include "modules/m2d/m2d_kind.h"
 #include "modules/inclined_face.h"
 #include "modules/pocket_plan.h"
+#include "modules/shared_fields.h"
 
 #include "io/json_write.h"
 #include "model/translate_noop.h"
@@ -198,10 +199,7 @@ protected:
                               &M2DPocket::lengthY)
                 .described("sym-L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
                                                           "Width of the opening along Y, at the top surface")));
-        fs.push_back(member<M2DPocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                       &M2DPocket::depth)
-                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                                  "Depth of the pocket, down from the top surface")));
+        fs.push_back(form::pocketDepth<M2DPocket>());
         fs.push_back(
             member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"), {"theta1"},
                               &M2DPocket::theta1)
@@ -217,22 +215,9 @@ protected:
                     TAIWA_TRANSLATE_NOOP(
                         "taiwa::ui::FieldSpec",
                         "Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1")));
-        fs.push_back(
-            member<M2DPocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"),
-                              {"cornerRadius"}, &M2DPocket::cornerRadius)
-                .described("sym-r1", TAIWA_TRANSLATE_NOOP(
-                                         "taiwa::ui::FieldSpec",
-                                         "Radius of the pocket's corners; the finishing end mill must fit in it")));
-        fs.push_back(form::code<M2DPocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                           {ToolUse::Standard, ToolUse::RoughOnly}, &M2DPocket::toolUse)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
-        fs.push_back(form::code<M2DPocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
-                                           {PilotHole::Drill, PilotHole::None}, &M2DPocket::pilotHole)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Whether a hole is drilled first for the roughing end mill to go down into")));
+        fs.push_back(form::pocketCornerRadius<M2DPocket>());
+        fs.push_back(form::pocketToolUse<M2DPocket>({ToolUse::Standard, ToolUse::RoughOnly}));
+        fs.push_back(form::pocketPilotHole<M2DPocket>());
         fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
                                        {"scallop"}, &M2DPocket::scallop)
                          .described(TAIWA_TRANSLATE_NOOP(

@@ -4,6 +4,7 @@
 #include "model/translate_noop.h"
 #include "modules/m4/m4.h"
 #include "modules/pocket_plan.h"
+#include "modules/shared_fields.h"
 #include "paths/contour.h"
 
 #include "io/job_messages.h"
@@ -155,39 +156,17 @@ protected:
                              [i](M4Pocket& m, double v) { m.corners[i].y = v; })
                              .described(symbol, help));
         }
-        fs.push_back(
-            member<M4Pocket>("r1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "r1 (corner radius)"), {"cornerRadius"},
-                             &M4Pocket::cornerRadius)
-                .described("sym-r1", TAIWA_TRANSLATE_NOOP(
-                                         "taiwa::ui::FieldSpec",
-                                         "Radius of the pocket's corners; the finishing end mill must fit in it")));
-        fs.push_back(member<M4Pocket>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                      &M4Pocket::depth)
-                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                                  "Depth of the pocket, down from the top surface")));
+        fs.push_back(form::pocketCornerRadius<M4Pocket>());
+        fs.push_back(form::pocketDepth<M4Pocket>());
         fs.push_back(member<M4Pocket>("taper", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "S (taper, °/side)"),
                                       {"taper"}, &M4Pocket::taper)
                          .described("sym-S", TAIWA_TRANSLATE_NOOP(
                                                  "taiwa::ui::FieldSpec",
                                                  "Slope of the walls in degrees per side; 0 for vertical walls")));
-        fs.push_back(form::code<M4Pocket>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                          {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly,
-                                           ToolUse::RoughOnly},
-                                          &M4Pocket::toolUse)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Which steps the pocket gets: roughing, floor and wall finishing, or some of them")));
-        fs.push_back(form::code<M4Pocket>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-                                          {WallFinish::SingleIncision, WallFinish::MultiIncision, WallFinish::TwoStage},
-                                          &M4Pocket::wallFinish)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "How the walls are finished: at full depth, in several depths, or in two stages")));
-        fs.push_back(form::code<M4Pocket>("H", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "H (pilot hole)"),
-                                          {PilotHole::Drill, PilotHole::None}, &M4Pocket::pilotHole)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Whether a hole is drilled first for the roughing end mill to go down into")));
+        fs.push_back(form::pocketToolUse<M4Pocket>(
+            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly, ToolUse::RoughOnly}));
+        fs.push_back(form::pocketWallFinish<M4Pocket>());
+        fs.push_back(form::pocketPilotHole<M4Pocket>());
         fs.push_back(form::stepOver<M4Pocket>());
         return fs;
     }
