@@ -1,7 +1,8 @@
 // For every module, the largest job it accepts and what that job costs
 // (issue 39: "the largest job each module accepts finishes within 60 s and
 // 2 GB"), with a ladder of sizes below it: the job's move estimate (what the
-// budget of pipeline.h, 10⁷ moves, counts) beside the time `taiwa check`
+// budget of pipeline.h, 10⁷ moves, counts, each module's moves weighed by
+// its door's workPerMove: SURFACE's by 6) beside the time `taiwa check`
 // and `taiwa export` take, so that time growing faster than the estimate
 // shows.
 //

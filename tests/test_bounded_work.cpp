@@ -7,7 +7,8 @@
 // naming the strips' overlapping pairs, while a zigzag of the same points
 // is taken; a FACE whose moves are beyond the job's budget is refused by
 // the checks alone (a plan without paths, what `taiwa check` makes),
-// naming the field that drives it; a 20,000-line DXF circle comes back as
+// naming the field that drives it, and so is a job of 3-D surfaces whose
+// moves fit as moves but not as the work they cost; a 20,000-line DXF circle comes back as
 // one closed contour of 20,000 segments through the figure text. How long
 // they take is bench/bench_work_ladder.cpp's.
 #include "support/support.h"
@@ -21,6 +22,7 @@
 #include "modules/area/area.h"
 #include "modules/cp/cp.h"
 #include "modules/named_region.h"
+#include "modules/registry.h"
 #include "paths/region.h"
 #include "pipeline/pipeline.h"
 #include "tools/tool_library.h"
@@ -227,6 +229,58 @@ private slots:
         const Diagnostic* d = on(plan.diagnostics, field.toStdString());
         QVERIFY2(d, messages(plan.diagnostics).c_str());
         QVERIFY2(d->message.find("more than the 1e+07 a job may have") != std::string::npos, d->message.c_str());
+    }
+
+    // A 3-D surface's nose points count six pocket moves each in the budget
+    // (its door's workPerMove: a drop-cutter each, a ball's disc swept in the
+    // verification): 200 copies of the sample's surface, about 2.2 million
+    // moves, within the 10⁷ as moves but not as work, are refused by the
+    // checks alone on the surface's curve 1 (its roughing has the most
+    // moves, and only a smaller surface makes fewer), the message saying
+    // how the unit's moves count; 20 copies are taken.
+    void surfaceMovesCountAsTheirWork_data()
+    {
+        QTest::addColumn<int>("copies");
+        QTest::addColumn<bool>("refused");
+        QTest::newRow("200 copies") << 200 << true;
+        QTest::newRow("20 copies") << 20 << false;
+    }
+    void surfaceMovesCountAsTheirWork()
+    {
+        QFETCH(int, copies);
+        QFETCH(bool, refused);
+        nlohmann::json units = nlohmann::json::array();
+        for (int k = 0; k < copies; ++k) {
+            const double x = 70.0 * (k % 20), y = 50.0 * (k / 20);
+            units.push_back({{"module", "SURFACE"},
+                             {"name", "s" + std::to_string(k)},
+                             {"curve1", {{"points", {{x + 5, y + 5, -7}, {x + 35, y + 5, -9}, {x + 65, y + 5, -7}}}}},
+                             {"curve2", {{"points", {{x + 5, y + 45, -3}, {x + 65, y + 45, -3}}}}},
+                             {"n", 3},
+                             {"m", 12},
+                             {"scallop", 0.3},
+                             {"allowance", 0.3}});
+        }
+        PlanOptions o;
+        o.withToolPaths = false;
+        const Plan plan = planJob(job({}, units, 1400, 500, 25), TechnologyTable::builtIn(), defaultToolLibrary(), o);
+        double moves = 0.0, work = 0.0;
+        for (const Step& st : plan.steps)
+            if (st.tool)
+                if (const Tool* t = plan.tool(st.tool->toolId)) {
+                    moves += estimateMoves(st, *t, plan.technology, o.path);
+                    work += estimateWork(st, *t, plan.technology, o.path);
+                }
+        QVERIFY2(moves > 0.0 && std::abs(work - 6.0 * moves) < 1e-6 * work, qPrintable(QString("%1 %2").arg(moves).arg(work)));
+        QVERIFY(moves < kMaxPlanMoves);
+        if (!refused) {
+            QVERIFY2(plan.ok(), messages(plan.diagnostics).c_str());
+            return;
+        }
+        const Diagnostic* d = on(plan.diagnostics, "curve1");
+        QVERIFY2(d, messages(plan.diagnostics).c_str());
+        QVERIFY2(d->message.find("each of this unit's counts as 6), more than the 1e+07 a job may have") != std::string::npos,
+                 d->message.c_str());
     }
 
     // Item 5: a circle of 20,000 LINEs through the DXF reader and the figure

@@ -5,12 +5,14 @@
 // many short chords and in helices, each into layers cut after them, with
 // flat, bull-nose and ball end mills, some gouging the floor (the run is
 // then cut in order after all), some with the shank in the stock, on two
-// grids; and the order must pay (fewer cells visited on the ramps).
+// grids; and the order must pay (fewer cells visited on the ramps). The
+// rows a sweep looks at are held to an exact oracle of the heights.
 #include "modules/m4/m4.h"
 #include "verify/verify.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -132,6 +134,7 @@ private slots:
     void aRunCutFromItsEndLeavesWhatThePathsOrderLeaves_data();
     void aRunCutFromItsEndLeavesWhatThePathsOrderLeaves();
     void theOrderPaysOnRamps();
+    void aRowIsSkippedOnlyWhereNoSweepCanLowerIt();
 };
 
 void TestVerifyOrder::aRunCutFromItsEndLeavesWhatThePathsOrderLeaves_data()
@@ -231,6 +234,69 @@ void TestVerifyOrder::theOrderPaysOnRamps()
     }
     qInfo("cells visited: %.3g in the path's order, %.3g with runs cut from their ends", inOrder, fast);
     QVERIFY(fast < 0.6 * inOrder);
+}
+
+// A row of cells is handed on only above the cutting surface's lowest over
+// it (milling_cut.cpp). Against an oracle that knows nothing of rows, tiles
+// or order: random walks of short level lines and arcs with a ball and a
+// bull-nose, each cell's height the least of its stock top and, for every
+// move within reach, the move's Z plus the cutter's height at the cell's
+// exact distance (model/contour.h). Every cell must agree to the grid's
+// float rounding; skipping a row a sweep lowers leaves cells higher by up
+// to the cutter's height there.
+void TestVerifyOrder::aRowIsSkippedOnlyWhereNoSweepCanLowerIt()
+{
+    for (const int tool : {1, 2}) {
+        const Tool t = toolOf(tool);
+        const double R = t.diameter / 2, corner = t.cornerRadius, flat = R - corner;
+        const auto height = [&](double d) { return d <= flat ? 0.0 : corner - std::sqrt(std::max(0.0, corner * corner - (d - flat) * (d - flat))); };
+        std::mt19937 rng(static_cast<unsigned>(7 + tool));
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        ToolPath path{{50, 40, 5}, {}};
+        std::vector<std::pair<ContourSegment, double>> level;  // every feed move as a plane segment at its Z
+        Point2 at{50, 40};
+        for (const double z : {-1.0, -2.5, -4.0}) {
+            path.moves.push_back({MoveKind::Rapid, {at.x, at.y, 5}});
+            path.moves.push_back({MoveKind::Feed, {at.x, at.y, z}});
+            for (int k = 0; k < 120; ++k) {
+                const double a = 2 * std::numbers::pi * u(rng), len = 0.1 + 1.9 * u(rng);
+                Point2 to{std::clamp(at.x + len * std::cos(a), 25.0, 75.0), std::clamp(at.y + len * std::sin(a), 22.0, 58.0)};
+                if (k % 10 == 9) {  // now and then a half circle about a point beside the walk
+                    const Point2 c{at.x + 1.5 * std::cos(a), at.y + 1.5 * std::sin(a)};
+                    to = c + (c - at);
+                    if (to.x < 25 || to.x > 75 || to.y < 22 || to.y > 58) continue;
+                    path.moves.push_back({MoveKind::ArcCCW, {to.x, to.y, z}, c});
+                    level.push_back({ContourSegment::arc(at, to, c, true), z});
+                } else {
+                    path.moves.push_back({MoveKind::Feed, {to.x, to.y, z}});
+                    level.push_back({ContourSegment::line(at, to), z});
+                }
+                at = to;
+            }
+        }
+        path.moves.push_back({MoveKind::Rapid, {at.x, at.y, 5}});
+        const Plan plan = pocketPlan(10, {{t, path}});
+        verify::Options o;
+        o.resolution = 0.1;
+        o.threads = 2;
+        const verify::Report r = verify::verifyPlan(plan, o);
+        for (const verify::Finding& f : r.findings)  // (material is left: the walk clears no pocket)
+            QVERIFY(f.kind != verify::FindingKind::Gouge && f.kind != verify::FindingKind::Collision);
+        std::size_t differ = 0, lowered = 0;
+        for (int j = 0; j < r.rows; ++j)
+            for (int i = 0; i < r.columns; ++i) {
+                const Point2 p = r.stock.centre(i, j);
+                double h = 0.0;
+                for (const auto& [seg, z] : level) {
+                    const double d = distance(p, seg.nearest(p));
+                    if (d <= R) h = std::min(h, z + height(d));
+                }
+                lowered += h < 0.0;
+                differ += std::abs(r.stock.heights()[r.stock.indexOf(i, j)] - h) > 1e-4;
+            }
+        QVERIFY(lowered > 10000);
+        QCOMPARE(differ, std::size_t{0});
+    }
 }
 
 QTEST_GUILESS_MAIN(TestVerifyOrder)

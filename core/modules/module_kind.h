@@ -118,6 +118,13 @@ public:
     {
         return 10;
     }
+    // What one of the step's moves costs the export (its path, verification,
+    // tape and read-back), counted in moves of a pocket: the budget weighs
+    // each step's estimate by it, so that one budget bounds every module's
+    // time and memory alike. 1 by default; more for a module whose moves
+    // cost more (SURFACE's nose points: a drop-cutter each, and a ball's
+    // whole disc swept in the verification for each short move).
+    virtual double workPerMove() const { return 1.0; }
     // The unit's field that drives its moves most, named when a plan would
     // not fit the move budget (the unit `mm`, in mm; `step` its step with the
     // most moves): by default "stepOver" when the step has the unit's own

@@ -60,6 +60,12 @@ double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& t
     return moduleKind(step).estimateMoves(step, tool, tech, params);
 }
 
+double estimateWork(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
+{
+    const ModuleKind& kind = moduleKind(step);
+    return kind.estimateMoves(step, tool, tech, params) * kind.workPerMove();
+}
+
 std::vector<int> orderSteps(const std::vector<Step>& steps)
 {
     // Each step's door looked up once: the rules are asked of every pair of

@@ -26,6 +26,9 @@ const ModuleKind& moduleKind(const Step& step);
 // module's door (ModuleKind::toolPath, estimateMoves).
 ToolPath makeToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
+// What the step's moves cost, in moves of a pocket: estimateMoves weighed by
+// its door's workPerMove (what the job's budget sums).
+double estimateWork(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 // The job-wide step order (tools/step_order.h) with what each step's module
 // says of the order of its unit's steps.
 std::vector<int> orderSteps(const std::vector<Step>& steps);

@@ -160,7 +160,8 @@ std::vector<const Tool*> bindTools(Plan& plan, const std::vector<Tool>& library,
     return toolOf;
 }
 
-// The budget: estimated before any path is computed, so that no job can
+// The budget: estimated before any path is computed (each step's moves
+// weighed by what its module's moves cost: estimateWork), so that no job can
 // exhaust the memory (the checks' ranges bound every step; this bounds the
 // job). It is part of input processing: `taiwa check` (a plan without paths)
 // refuses what export would. False, with the diagnostic on the unit with the
@@ -174,7 +175,7 @@ bool withinMoveBudget(Plan& plan, const std::vector<const Tool*>& toolOf, const 
     std::vector<std::size_t> biggestStepOf(plan.mmJob.units.size(), 0);
     for (std::size_t i = 0; i < plan.steps.size(); ++i) {
         const Step& step = plan.steps[i];
-        const double moves = estimateMoves(step, *toolOf[i], plan.technology, params);
+        const double moves = estimateWork(step, *toolOf[i], plan.technology, params);
         estimated += moves;
         const auto u = static_cast<std::size_t>(step.unit);
         perUnit[u] += moves;
@@ -183,12 +184,15 @@ bool withinMoveBudget(Plan& plan, const std::vector<const Tool*>& toolOf, const 
     if (estimated <= kMaxPlanMoves) return true;
     const auto biggest = static_cast<std::size_t>(std::max_element(perUnit.begin(), perUnit.end()) - perUnit.begin());
     const ModuleInput& unit = plan.mmJob.units[biggest].module;
-    const std::string field = moduleKind(unit).movesField(unit, plan.steps[biggestStepOf[biggest]]);
+    const ModuleKind& kind = moduleKind(unit);
+    const std::string field = kind.movesField(unit, plan.steps[biggestStepOf[biggest]]);
+    const std::string weighed =
+        kind.workPerMove() == 1.0 ? "" : fmt::format("; each of this unit's counts as {:g}", kind.workPerMove());
     plan.diagnostics.push_back(unitError(
         plan.mmJob, static_cast<int>(biggest), field,
-        fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's), more than the "
+        fmt::format("the tool paths would hold about {:.3g} moves ({:.3g} of them this unit's{}), more than the "
                     "{:.3g} a job may have; make the job smaller, the allowances or the depth of cut (γ) larger",
-                    estimated, perUnit[biggest], kMaxPlanMoves)));
+                    estimated, perUnit[biggest], weighed, kMaxPlanMoves)));
     return false;
 }
 

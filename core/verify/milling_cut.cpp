@@ -130,9 +130,28 @@ private:
         // within a tile above the tip, only the runs of cells above it
         // are handed on (reading a height costs less than measuring the
         // cell's distance from the path).
-        const float floor = static_cast<float>(std::max(z, bottom_));
+        //
+        // Nor does a cell at or below the cutting surface's lowest over its
+        // row: a row dy from the sweep (from its Y extent; an arc's whole
+        // circle's) meets the cutter no lower than heightSquared(dy²) above
+        // the tip. On a ball or a corner radius that keeps most of a short
+        // move's disc from being visited again; never above the shank's or
+        // the holder's bottom while either is low, whose touch is looked for
+        // in every cell above it.
+        const float tipFloor = static_cast<float>(std::max(z, bottom_));
+        const double yLo = s.arc ? s.centre.y - s.radius : std::min(from.y, to.y);
+        const double yHi = s.arc ? s.centre.y + s.radius : std::max(from.y, to.y);
+        double ceiling = 1e300;  // the most a row's floor may be
+        if (shankLow) ceiling = z + d_.flute;
+        if (holderLow) ceiling = std::min(ceiling, z + d_.holderZ);
+        const auto rowFloor = [&](int j) {
+            const double y = v_.field_.centre(0, j).y, dy = std::max({0.0, yLo - y, y - yHi});
+            if (dy >= reach_) return tipFloor;
+            return std::max(tipFloor, static_cast<float>(std::min(z + cutter_.heightSquared(dy * dy), ceiling)));
+        };
         const auto runs = [&](int j, int first, int last, const auto& cells) {
             const float* row = h_ + v_.field_.indexOf(0, j);
+            const float floor = rowFloor(j);
             int start = -1;  // the first cell of the run still to visit
             for (int lo = first; lo <= last;) {
                 const int t = lo / kTile, hi = std::min(last, (t + 1) * kTile - 1);
