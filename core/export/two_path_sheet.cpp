@@ -106,12 +106,12 @@ std::optional<BalancedRoughing> balancedRoughing(const Plan& plan)
     if (!plan.mmJob.bar || !machine || !machine->layout.multiPath) return std::nullopt;
     BalancedRoughing out;
     out.step = plan.steps.size();
-    for (std::size_t k = 0; k < plan.steps.size() && out.step == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) out.step = k;
-    if (out.step == plan.steps.size()) return out;
-    const TurnStep& rough = *turnOf(plan.steps[out.step]);
-    out.cut = turning::balanceRoughing(rough.path, rough.cutting, *machine, turning::balanceSettings(plan.mmJob.twoPath, true));
+    auto balance = turning::balancePlanRoughing(plan, *machine);
+    if (!balance) return out;
+    out.step = balance->step;
+    out.cut = std::move(balance->cut);
     if (!*out.cut) return out;
+    const TurnStep& rough = *turnOf(plan.steps[out.step]);
     out.timeline = runTimeline(**out.cut, *machine);
     out.onePathSeconds = singlePathSeconds(rough.path, rough.cutting, *machine);
     return out;

@@ -19,19 +19,15 @@ std::optional<Result<PostedTwoPath>> postTwoPath(const Plan& plan, const PostOpt
     using Posted = Result<PostedTwoPath>;
     const Machine* machine = findMachine(plan.mmJob.machine);
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
-    std::size_t index = plan.steps.size();
-    for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) index = k;
-    if (index == plan.steps.size())
+    // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
+    auto balance = turning::balancePlanRoughing(plan, *machine);
+    if (!balance)
         return Posted{Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "machine: {} is a two-path lathe and the job has no "
                                                                              "roughing step to balance between its paths"),
                                           plan.mmJob.machine)}};
-    const TurnStep& rough = *turnOf(plan.steps[index]);
-    // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
-    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);
-    auto cut = turning::balanceRoughing(rough.path, rough.cutting, *machine, set);
-    if (!cut) return Posted{Failure{cut.error()}};
-    PostedTwoPath out{std::move(*cut), index, {}};
+    if (!balance->cut) return Posted{Failure{balance->cut.error()}};
+    const std::size_t index = balance->step;
+    PostedTwoPath out{std::move(*balance->cut), index, {}};
     try {
         out.programs = postBalancedCut(out.cut, plan.steps, index, *machine->layout.multiPath, plan.tools, post);
     } catch (const Refusal& e) {

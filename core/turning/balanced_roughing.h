@@ -11,6 +11,7 @@
 
 #include "machine/machine.h"
 #include "model/job.h"
+#include "model/plan.h"
 #include "model/result.h"
 #include "model/two_path.h"
 
@@ -49,5 +50,17 @@ bool flipsArcs(const MultiPath& mp, std::size_t p);
 // path with no cut.
 Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cutting, const Machine& machine,
                                     const BalanceSettings& settings = {});
+
+// The plan's roughing step a two-path lathe balances (its first turning
+// roughing step) and that step balanced as the export's programs have it
+// (the job's settings, the paths meeting at the ends): what the post, the
+// two-path verification and the sheet each read. Nothing when the plan has
+// no turning roughing step (each says so in its own words).
+struct PlanBalance {
+    std::size_t step = 0;  // the roughing step's index in plan.steps
+    BalanceSettings settings;
+    Result<BalancedCut> cut;
+};
+std::optional<PlanBalance> balancePlanRoughing(const Plan& plan, const Machine& machine);
 
 }  // namespace taiwa::turning

@@ -12,16 +12,11 @@ namespace taiwa::verify {
 
 Result<BalancedRoughing> balancedRoughing(const Plan& plan, const Machine& machine)
 {
-    std::size_t index = plan.steps.size();
-    for (std::size_t k = 0; k < plan.steps.size() && index == plan.steps.size(); ++k)
-        if (plan.steps[k].machiningType == MachiningType::TurnRoughing && turnOf(plan.steps[k])) index = k;
-    if (index == plan.steps.size())
+    auto balance = turning::balancePlanRoughing(plan, machine);
+    if (!balance)
         return Failure{fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance", plan.mmJob.machine)};
-    const TurnStep& rough = *turnOf(plan.steps[index]);
-    const turning::BalanceSettings set = turning::balanceSettings(plan.mmJob.twoPath, true);  // as the export
-    auto cut = turning::balanceRoughing(rough.path, rough.cutting, machine, set);
-    if (!cut) return Failure{"balanced cut: " + cut.error()};
-    return BalancedRoughing{std::move(*cut), index, set.dwellRevolutions};
+    if (!balance->cut) return Failure{"balanced cut: " + balance->cut.error()};
+    return BalancedRoughing{std::move(*balance->cut), balance->step, balance->settings.dwellRevolutions};
 }
 
 std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
