@@ -3,8 +3,9 @@
 // bull-nose end mill lowered along the tool axis (−Z) until it touches the
 // first triangle. A uniform grid over XY indexes the triangles, so a drop
 // looks only at those under the tool's disc, and of those only at the cells
-// and triangles high enough to raise the contact found so far. No OpenCASCADE in the hot loop:
-// surfaces from OpenCASCADE (surface_curves.h) are tessellated here once.
+// and triangles high enough to raise the contact found so far. No
+// OpenCASCADE in the hot loop: surfaces from OpenCASCADE (surface_curves.h)
+// are tessellated here once.
 #pragma once
 
 #include "model/toolpath.h"
