@@ -1,8 +1,8 @@
 // For every module, the largest job it accepts and what that job costs
 // (issue 39: "the largest job each module accepts finishes within 60 s and
-// 2 GB"), with a ladder of sizes below it: the job's move estimate (what the
-// budget of pipeline.h, 10⁷ moves, counts, each module's moves weighed by
-// its door's workPerMove: SURFACE's by 6) beside the time `taiwa check`
+// 2 GB"), with a ladder of sizes below it: the job's move estimate (the
+// budget of pipeline.h, 10⁷ moves, counts them weighed by each module's
+// workPerMove: SURFACE's 6, the others' 1) beside the time `taiwa check`
 // and `taiwa export` take, so that time growing faster than the estimate
 // shows.
 //
@@ -94,8 +94,9 @@ bench::Measured runTaiwa(const std::vector<std::string>& args, const fs::path& l
     bench::Measured m;
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    if (posix_spawn(&pid, g_taiwa.c_str(), &files, nullptr, argv.data(), environ) != 0) return m;
+    const int spawned = posix_spawn(&pid, g_taiwa.c_str(), &files, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&files);
+    if (spawned != 0) return m;
     int status = 0;
     rusage usage{};
     ::wait4(pid, &status, 0, &usage);

@@ -266,11 +266,7 @@ std::optional<double> DropCutter::noseZ(double x, double y)
     });
     const auto first = std::max_element(cells_.begin(), cells_.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
     if (first != cells_.end()) std::iter_swap(cells_.begin(), first);
-    if (seen_.size() != m.triangles.size()) seen_.assign(m.triangles.size(), 0);
-    if (++stamp_ == 0) {
-        std::fill(seen_.begin(), seen_.end(), 0);
-        stamp_ = 1;
-    }
+    index_->newQuery(seen_, stamp_);
     for (const auto& [cellBound, cell] : cells_)
         for (const int t : index_->cellTriangles(cell)) {
             if (cellBound <= best) break;

@@ -70,6 +70,17 @@ public:
     // triangles whose XY box meets the cell (a triangle may be in several).
     template <class F>
     void nearCells(double x, double y, double r, F&& f) const;
+    // A caller's scratch made ready for a query that visits each triangle
+    // once: sized to the triangles, and `stamp` one no triangle has yet
+    // (a triangle is seen when seen[t] == stamp).
+    void newQuery(std::vector<std::uint32_t>& seen, std::uint32_t& stamp) const
+    {
+        if (seen.size() != mesh_.triangles.size()) seen.assign(mesh_.triangles.size(), 0);
+        if (++stamp == 0) {
+            std::fill(seen.begin(), seen.end(), 0);
+            stamp = 1;
+        }
+    }
     std::span<const int> cellTriangles(int cell) const
     {
         const auto c = static_cast<std::size_t>(cell);
@@ -127,11 +138,7 @@ void MeshIndex::near(double x, double y, double r, std::vector<std::uint32_t>& s
                      F&& f) const
 {
     if (start_.empty() || x + r < x0_ || x - r > x1_ || y + r < y0_ || y - r > y1_) return;
-    if (seen.size() != mesh_.triangles.size()) seen.assign(mesh_.triangles.size(), 0);
-    if (++stamp == 0) {
-        std::fill(seen.begin(), seen.end(), 0);
-        stamp = 1;
-    }
+    newQuery(seen, stamp);
     const auto clampi = [](int v, int hi) { return v < 0 ? 0 : v > hi ? hi : v; };
     const int i0 = clampi(static_cast<int>((x - r - x0_) / cell_), nx_ - 1);
     const int i1 = clampi(static_cast<int>((x + r - x0_) / cell_), nx_ - 1);

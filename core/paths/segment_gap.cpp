@@ -16,7 +16,7 @@ namespace {
 // whole circle) of two segments cross or touch, and the points of the
 // first carrier square to the second's.
 struct Seeds {
-    Point2 p[8];
+    Point2 p[8];  // the most one pair adds: 4 ends, 2 square, 2 crossings
     int n = 0;
     void add(Point2 q) { p[n++] = q; }
 };

@@ -48,16 +48,11 @@ public:
         m.figureContours.clear();
         m.path.reset();
         m.reach = 0.0;
-        const auto it = table.find(m.contour);
-        if (it == table.end() || it->second.segments.empty()) {
+        if (const auto it = table.find(m.contour); it != table.end()) m.path = withoutDegenerateSegments(it->second);
+        if (!m.path || m.path->segments.empty()) {
             // The message that the contour is not the figure's names the
             // figure's contours; a unit that finds its own keeps no list
             // (thousands of units each held every name: quadratic).
-            for (const auto& [name, contour] : table) m.figureContours.push_back(name);
-            return;
-        }
-        m.path = withoutDegenerateSegments(it->second);
-        if (m.path->segments.empty()) {
             m.path.reset();
             for (const auto& [name, contour] : table) m.figureContours.push_back(name);
             return;
