@@ -13,6 +13,7 @@
 #include "model/cavity.h"
 #include "model/contour.h"
 #include "io/json_fields.h"
+#include "io/unit_keys.h"
 #include "model/diagnostic.h"
 #include "model/geometry.h"
 #include "model/job.h"
@@ -29,6 +30,7 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -219,6 +221,11 @@ public:
 template <class T>
 class ModuleKindOf : public ModuleKind {
 public:
+    // keys: the unit's job-file table (io/unit_keys.h), which reads and
+    // writes the unit. A module whose unit is a grammar of its own (TURN,
+    // SURFACE) passes none and overrides readInput and writeInput.
+    explicit ModuleKindOf(const io::UnitKeys<T>* keys = nullptr) : keys_(keys) {}
+
     const char* name() const final { return T::kName; }
     int formatVersion() const final { return T::kSinceFormatVersion; }
     ModuleInput read(const io::ObjectFields& unit) const final { return readInput(unit); }
@@ -249,13 +256,21 @@ public:
     }
 
 protected:
-    virtual T readInput(const io::ObjectFields& unit) const = 0;
-    virtual void writeInput(const T& m, nlohmann::ordered_json& unit) const = 0;
+    virtual T readInput(const io::ObjectFields& unit) const { return keys().read(unit); }
+    virtual void writeInput(const T& m, nlohmann::ordered_json& unit) const { keys().write(m, unit); }
     virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const = 0;
     virtual std::optional<Quad> outline(const T& mm) const = 0;
     virtual void move(T& m, Point2 delta) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
     virtual std::vector<FormField> formFields() const = 0;
+
+private:
+    const io::UnitKeys<T>& keys() const
+    {
+        if (!keys_) throw std::logic_error(std::string("module ") + T::kName + " has neither a job-file table nor a reader");
+        return *keys_;
+    }
+    const io::UnitKeys<T>* keys_;
 };
 
 // The one instance of a module kind, for its `<kind>Module()` function.

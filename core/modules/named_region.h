@@ -10,6 +10,7 @@
 
 #include "check/unit_checks.h"
 #include "io/json_fields.h"
+#include "io/unit_keys.h"
 #include "model/cavity.h"
 #include "model/contour.h"
 #include "model/geometry.h"
@@ -58,6 +59,15 @@ bool regionWithinLimits(const Region& region);
 NamedRegion readNamedRegion(const io::ObjectFields& f);
 // ... written: "outline", then "islands" when there are any.
 void writeNamedRegion(const NamedRegion& n, nlohmann::ordered_json& u);
+// The named region at member `m` of unit U as an entry of U's job-file table
+// (io/unit_keys.h): the keys "outline" and "islands".
+template <class U>
+io::UnitKey<U> namedRegionKeys(NamedRegion U::*m)
+{
+    return io::keys::custom<U>(
+        {"outline", "islands"}, [m](const io::ObjectFields& f, U& u) { u.*m = readNamedRegion(f); },
+        [m](const U& u, nlohmann::ordered_json& j) { writeNamedRegion(u.*m, j); });
+}
 
 // A resolved region's outline as a unit's door gives it: the box around it
 // (topOutline) and the outline flattened to 1 µm (topPolygon); nothing

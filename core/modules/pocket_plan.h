@@ -35,6 +35,7 @@ bool pocketStepWaitsFor(const Step& later, const Step& earlier);
 template <class T>
 class PocketKindOf : public ModuleKindOf<T> {
 public:
+    using ModuleKindOf<T>::ModuleKindOf;
     ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
                       const PathParameters& params) const final
     {

@@ -8,7 +8,7 @@
 #include "paths/drawn_passes.h"
 
 #include "io/job_messages.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,12 +19,41 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module",   "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"),
-                                     "islands",  "points", "depth",
-                                     "diameter", "tools",  "cutting"};
+// "points": the drawn passes' points [x, y]; a point that is not one is
+// reported at its place ("points[3]") and left out. Absent: none yet.
+io::UnitKey<AreaClearing> pointsKey()
+{
+    const auto read = [](const io::ObjectFields& f, AreaClearing& m) {
+        const nlohmann::json* points = f.find("points");
+        if (!points) return;
+        if (!points->is_array()) {
+            f.error("points", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of points [x, y]"), *points));
+            return;
+        }
+        for (std::size_t i = 0; i < points->size(); ++i) {
+            const auto& v = (*points)[i];
+            if (v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number())
+                m.points.push_back({v[0].get<double>(), v[1].get<double>()});
+            else
+                f.error("points[" + std::to_string(i) + "]",
+                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]"), v));
+        }
+    };
+    const auto write = [](const AreaClearing& m, nlohmann::ordered_json& u) {
+        auto points = nlohmann::ordered_json::array();
+        for (const Point2 p : m.points) points.push_back(io::point(p));
+        u["points"] = points;
+    };
+    return io::keys::custom<AreaClearing>({"points"}, read, write);
+}
+
+const io::UnitKeys<AreaClearing> kKeys{
+    {namedRegionKeys(&AreaClearing::area), pointsKey(), io::keys::required("depth", &AreaClearing::depth),
+     io::keys::required("diameter", &AreaClearing::diameter), io::keys::pins(&AreaClearing::tools)}};
 
 class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
+    AreaKind() : ModuleKindOf(&kKeys) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add drawn-pass area");
@@ -119,45 +148,6 @@ public:
     }
 
 protected:
-    AreaClearing readInput(const io::ObjectFields& f) const override
-    {
-        AreaClearing m;
-        f.rejectUnknown("module AREA", kKeys);
-        m.area = readNamedRegion(f);
-        if (const nlohmann::json* points = f.find("points")) {
-            const auto isPoint = [](const nlohmann::json& v) {
-                return v.is_array() && v.size() == 2 && v[0].is_number() && v[1].is_number();
-            };
-            if (!points->is_array()) {
-                f.error("points",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of points [x, y]"), *points));
-            } else {
-                for (std::size_t i = 0; i < points->size(); ++i) {
-                    const auto& v = (*points)[i];
-                    if (isPoint(v)) m.points.push_back({v[0].get<double>(), v[1].get<double>()});
-                    else
-                        f.error("points[" + std::to_string(i) + "]",
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y]"), v));
-                }
-            }
-        }
-        m.depth = f.number("depth").value_or(0.0);
-        m.diameter = f.number("diameter").value_or(0.0);
-        m.tools = f.wholeMap("tools");
-        return m;
-    }
-
-    void writeInput(const AreaClearing& m, nlohmann::ordered_json& u) const override
-    {
-        writeNamedRegion(m.area, u);
-        auto points = nlohmann::ordered_json::array();
-        for (const Point2 p : m.points) points.push_back({io::number(p.x), io::number(p.y)});
-        u["points"] = points;
-        u["depth"] = io::number(m.depth);
-        u["diameter"] = io::number(m.diameter);
-        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
-    }
-
     check::UnitReport checkInput(const AreaClearing& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkAreaClearing(mm, unitNo, ctx);

@@ -11,8 +11,7 @@
 #include "paths/region.h"
 
 #include "figure/figure_text.h"
-#include "io/job_messages.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 #include "model/codes.h"
 
 #include <algorithm>
@@ -23,12 +22,15 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{
-    "module", "name",   TAIWA_TRANSLATE_NOOP("taiwa::msg", "outline"), "islands", "depth", "U", "F", "stepOver",
-    "tools",  "cutting"};
+namespace keys = io::keys;
+const io::UnitKeys<ContourPocket> kKeys{
+    {namedRegionKeys(&ContourPocket::contours), keys::required("depth", &ContourPocket::depth),
+     keys::whole("U", &ContourPocket::toolUse, 1), keys::whole("F", &ContourPocket::wallFinish, 1),
+     keys::optional("stepOver", &ContourPocket::stepOver), keys::pins(&ContourPocket::tools)}};
 
 class CpKind final : public PocketKindOf<ContourPocket> {
 public:
+    CpKind() : PocketKindOf(&kKeys) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add contour pocket");
@@ -92,29 +94,6 @@ public:
     }
 
 protected:
-    ContourPocket readInput(const io::ObjectFields& f) const override
-    {
-        ContourPocket m;
-        f.rejectUnknown("module CP", kKeys);
-        m.contours = readNamedRegion(f);
-        m.depth = f.number("depth").value_or(0.0);
-        m.toolUse = f.whole("U", 1);
-        m.wallFinish = f.whole("F", 1);
-        m.stepOver = f.optionalNumber("stepOver");
-        m.tools = f.wholeMap("tools");
-        return m;
-    }
-
-    void writeInput(const ContourPocket& m, nlohmann::ordered_json& u) const override
-    {
-        writeNamedRegion(m.contours, u);
-        u["depth"] = io::number(m.depth);
-        u["U"] = m.toolUse;
-        u["F"] = m.wallFinish;
-        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
-        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
-    }
-
     check::UnitReport checkInput(const ContourPocket& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkContourPocket(mm, unitNo, ctx);

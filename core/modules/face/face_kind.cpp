@@ -5,7 +5,7 @@
 #include "modules/module_kind.h"
 
 #include "check/unit_checks.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +15,17 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name",     "depth",  "U",     "finish", "angle",
-                                     "pattern", "stepOver", "margin", "tools", "cutting"};
+namespace keys = io::keys;
+const io::UnitKeys<FaceUnit> kKeys{
+    {keys::required("depth", &FaceUnit::depth), keys::whole("U", &FaceUnit::toolUse, face::kStandard),
+     keys::optional("finish", &FaceUnit::finish), keys::number("angle", &FaceUnit::angle, 0.0),
+     keys::whole("pattern", &FaceUnit::pattern, face::kOneWay), keys::optional("stepOver", &FaceUnit::stepOver),
+     keys::number("margin", &FaceUnit::margin, 0.0).when([](const FaceUnit& u) { return u.margin != 0.0; }),
+     keys::pins(&FaceUnit::tools)}};
 
 class FaceKind final : public ModuleKindOf<FaceUnit> {
 public:
+    FaceKind() : ModuleKindOf(&kKeys) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add face milling"); }
     const char* drawing() const override { return ":/modules/face.svg"; }
     const char* outlineField() const override { return "depth"; }
@@ -85,33 +91,6 @@ public:
     }
 
 protected:
-    FaceUnit readInput(const io::ObjectFields& f) const override
-    {
-        FaceUnit u;
-        f.rejectUnknown("module FACE", kKeys);
-        u.depth = f.number("depth").value_or(0.0);
-        u.toolUse = f.whole("U", face::kStandard);
-        u.finish = f.optionalNumber("finish");
-        u.angle = f.number("angle", 0.0);
-        u.pattern = f.whole("pattern", face::kOneWay);
-        u.stepOver = f.optionalNumber("stepOver");
-        u.margin = f.number("margin", 0.0);
-        u.tools = f.wholeMap("tools");
-        return u;
-    }
-
-    void writeInput(const FaceUnit& u, nlohmann::ordered_json& j) const override
-    {
-        j["depth"] = io::number(u.depth);
-        j["U"] = u.toolUse;
-        if (u.finish) j["finish"] = io::number(*u.finish);
-        j["angle"] = io::number(u.angle);
-        j["pattern"] = u.pattern;
-        if (u.stepOver) j["stepOver"] = io::number(*u.stepOver);
-        if (u.margin != 0.0) j["margin"] = io::number(u.margin);
-        if (!u.tools.empty()) j["tools"] = io::pins(u.tools);
-    }
-
     check::UnitReport checkInput(const FaceUnit& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkFace(mm, unitNo, ctx);

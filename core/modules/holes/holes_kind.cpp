@@ -4,7 +4,7 @@
 #include "modules/holes/holes.h"
 #include "modules/module_kind.h"
 
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +14,49 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name",  "pattern", "x",        "y",      "angle", "pitch",
-                                     "pitchY", "radius", "angularPitch", "count", "rows", "hole",  "diameter",
-                                     "thread", "depth", "tools",   "cutting"};
 const std::vector<std::string> kPatternNames{"single", "line", "grid", "bolt circle", "arc"};
 const std::vector<std::string> kHoleNames{"drilled", "tapped", "reamed", "bored"};
+
+// Whether a unit's pattern has a key the patterns named use: written for
+// them, and for a pattern this program does not know (a file's values are
+// kept, not dropped).
+auto usedBy(std::initializer_list<const char*> patterns)
+{
+    return [names = std::vector<std::string>(patterns.begin(), patterns.end())](const HolePattern& h) {
+        const bool known = std::find(kPatternNames.begin(), kPatternNames.end(), h.pattern) != kPatternNames.end();
+        return !known || std::find(names.begin(), names.end(), h.pattern) != names.end();
+    };
+}
+
+// "thread": a tapped hole's thread, written for a tapped hole even when
+// not yet chosen; absent, none.
+io::UnitKey<HolePattern> threadKey()
+{
+    return io::keys::custom<HolePattern>(
+        {"thread"},
+        [](const io::ObjectFields& f, HolePattern& h) {
+            if (f.find("thread")) h.thread = f.string("thread").value_or("");
+        },
+        [](const HolePattern& h, nlohmann::ordered_json& u) {
+            if (!h.thread.empty() || h.hole == "tapped") u["thread"] = h.thread;
+        });
+}
+
+namespace keys = io::keys;
+using H = HolePattern;
+const io::UnitKeys<HolePattern> kKeys{
+    {keys::text("pattern", &H::pattern), keys::required("x", &H::x), keys::required("y", &H::y),
+     keys::number("radius", &H::radius, 0.0).when(usedBy({"bolt circle", "arc"})),
+     keys::number("angle", &H::angle, 0.0).when(usedBy({"line", "grid", "bolt circle", "arc"})),
+     keys::number("pitch", &H::pitch, 0.0).when(usedBy({"line", "grid"})),
+     keys::number("pitchY", &H::pitchY, 0.0).when(usedBy({"grid"})),
+     keys::number("angularPitch", &H::angularPitch, 0.0).when(usedBy({"arc"})),
+     keys::whole("count", &H::count, 1).when(usedBy({"line", "grid", "bolt circle", "arc"})),
+     keys::whole("rows", &H::rows, 1).when(usedBy({"grid"})), keys::text("hole", &H::hole),
+     keys::number("diameter", &H::diameter, 0.0).when([](const H& h) {
+         return h.hole != "tapped" || h.diameter != 0.0;
+     }),
+     threadKey(), keys::required("depth", &H::depth), keys::pins(&H::tools)}};
 
 // The depth of the finished hole at distance r from its centre: the
 // finishing tool's flat tip within its radius, the drill's full depth and
@@ -35,6 +73,7 @@ double profile(const holes::Depths& d, double r)
 
 class HolesKind final : public ModuleKindOf<HolePattern> {
 public:
+    HolesKind() : ModuleKindOf(&kKeys) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add hole pattern"); }
     const char* drawing() const override { return ":/modules/holes.svg"; }
     const char* outlineField() const override { return "pattern"; }
@@ -108,51 +147,6 @@ public:
     }
 
 protected:
-    HolePattern readInput(const io::ObjectFields& f) const override
-    {
-        HolePattern h;
-        f.rejectUnknown("module HOLES", kKeys);
-        h.pattern = f.string("pattern").value_or("");
-        h.x = f.number("x").value_or(0.0);
-        h.y = f.number("y").value_or(0.0);
-        h.angle = f.number("angle", 0.0);
-        h.pitch = f.number("pitch", 0.0);
-        h.pitchY = f.number("pitchY", 0.0);
-        h.radius = f.number("radius", 0.0);
-        h.angularPitch = f.number("angularPitch", 0.0);
-        h.count = f.whole("count", 1);
-        h.rows = f.whole("rows", 1);
-        h.hole = f.string("hole").value_or("");
-        h.diameter = f.number("diameter", 0.0);
-        if (f.find("thread")) h.thread = f.string("thread").value_or("");
-        h.depth = f.number("depth").value_or(0.0);
-        h.tools = f.wholeMap("tools");
-        return h;
-    }
-
-    void writeInput(const HolePattern& h, nlohmann::ordered_json& u) const override
-    {
-        const bool known = std::find(kPatternNames.begin(), kPatternNames.end(), h.pattern) != kPatternNames.end();
-        const auto uses = [&](std::initializer_list<const char*> patterns) {
-            return !known || std::any_of(patterns.begin(), patterns.end(), [&](const char* p) { return h.pattern == p; });
-        };
-        u["pattern"] = h.pattern;
-        u["x"] = io::number(h.x);
-        u["y"] = io::number(h.y);
-        if (uses({"bolt circle", "arc"})) u["radius"] = io::number(h.radius);
-        if (uses({"line", "grid", "bolt circle", "arc"})) u["angle"] = io::number(h.angle);
-        if (uses({"line", "grid"})) u["pitch"] = io::number(h.pitch);
-        if (uses({"grid"})) u["pitchY"] = io::number(h.pitchY);
-        if (uses({"arc"})) u["angularPitch"] = io::number(h.angularPitch);
-        if (uses({"line", "grid", "bolt circle", "arc"})) u["count"] = h.count;
-        if (uses({"grid"})) u["rows"] = h.rows;
-        u["hole"] = h.hole;
-        if (h.hole != "tapped" || h.diameter != 0.0) u["diameter"] = io::number(h.diameter);
-        if (!h.thread.empty() || h.hole == "tapped") u["thread"] = h.thread;
-        u["depth"] = io::number(h.depth);
-        if (!h.tools.empty()) u["tools"] = io::pins(h.tools);
-    }
-
     check::UnitReport checkInput(const HolePattern& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkHolePattern(mm, unitNo, ctx);

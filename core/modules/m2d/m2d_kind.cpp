@@ -6,7 +6,7 @@
 #include "modules/pocket_plan.h"
 #include "modules/shared_fields.h"
 
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 #include "model/translate_noop.h"
 
 #include <algorithm>
@@ -16,8 +16,14 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name",         "corner", "L1", "L2",      "depth", "theta1",
-                                     "theta2", "cornerRadius", "U",      "H",  "scallop", "stepOver", "tools", "cutting"};
+namespace keys = io::keys;
+const io::UnitKeys<M2DPocket> kKeys{
+    {keys::point("corner", &M2DPocket::corner), keys::required("L1", &M2DPocket::lengthX),
+     keys::required("L2", &M2DPocket::lengthY), keys::required("depth", &M2DPocket::depth),
+     keys::required("theta1", &M2DPocket::theta1), keys::optional("theta2", &M2DPocket::theta2),
+     keys::required("cornerRadius", &M2DPocket::cornerRadius), keys::requiredWhole("U", &M2DPocket::toolUse),
+     keys::whole("H", &M2DPocket::pilotHole, 0), keys::number("scallop", &M2DPocket::scallop, 0.01),
+     keys::optional("stepOver", &M2DPocket::stepOver), keys::pins(&M2DPocket::tools)}};
 
 }  // namespace
 
@@ -38,6 +44,7 @@ namespace {
 
 class M2DKind final : public PocketKindOf<M2DPocket> {
 public:
+    M2DKind() : PocketKindOf(&kKeys) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M2D 3-D pocket");
@@ -60,52 +67,11 @@ public:
 
     ModuleInput makeDefault(const Stock& s) const override
     {
-        M2DPocket p;
-        p.corner = Point2{s.x + 10, s.y + 10};
-        p.lengthX = 50;
-        p.lengthY = 30;
-        p.depth = 8;
-        p.theta1 = 10;
-        p.cornerRadius = 8;
-        return p;
+        return M2DPocket{.corner = {s.x + 10, s.y + 10}, .lengthX = 50, .lengthY = 30, .depth = 8, .theta1 = 10,
+                         .cornerRadius = 8};
     }
 
 protected:
-    M2DPocket readInput(const io::ObjectFields& f) const override
-    {
-        M2DPocket m;
-        f.rejectUnknown("module M2D", kKeys);
-        m.corner = f.point("corner").value_or(Point2{});
-        m.lengthX = f.number("L1").value_or(0.0);
-        m.lengthY = f.number("L2").value_or(0.0);
-        m.depth = f.number("depth").value_or(0.0);
-        m.theta1 = f.number("theta1").value_or(0.0);
-        m.theta2 = f.optionalNumber("theta2");
-        m.cornerRadius = f.number("cornerRadius").value_or(0.0);
-        m.toolUse = f.whole("U").value_or(0);
-        m.pilotHole = f.whole("H", 0);
-        m.scallop = f.number("scallop", 0.01);
-        m.stepOver = f.optionalNumber("stepOver");
-        m.tools = f.wholeMap("tools");
-        return m;
-    }
-
-    void writeInput(const M2DPocket& d, nlohmann::ordered_json& u) const override
-    {
-        u["corner"] = io::point(d.corner);
-        u["L1"] = io::number(d.lengthX);
-        u["L2"] = io::number(d.lengthY);
-        u["depth"] = io::number(d.depth);
-        u["theta1"] = io::number(d.theta1);
-        if (d.theta2) u["theta2"] = io::number(*d.theta2);
-        u["cornerRadius"] = io::number(d.cornerRadius);
-        u["U"] = d.toolUse;
-        u["H"] = d.pilotHole;
-        u["scallop"] = io::number(d.scallop);
-        if (d.stepOver) u["stepOver"] = io::number(*d.stepOver);
-        if (!d.tools.empty()) u["tools"] = io::pins(d.tools);
-    }
-
     check::UnitReport checkInput(const M2DPocket& mm, int unitNo, const check::Context& ctx) const override
     {
         return check::checkM2D(mm, unitNo, ctx);

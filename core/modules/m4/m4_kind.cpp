@@ -8,7 +8,7 @@
 #include "paths/contour.h"
 
 #include "io/job_messages.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 #include "model/codes.h"
 
 #include <algorithm>
@@ -17,11 +17,37 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name", "corners", "cornerRadius", "depth",
-                                     "taper",  "U",    "F",       "H",            "stepOver", "tools", "cutting"};
+// "corners": four points [x, y]; each one that is not a point is reported
+// at its place ("corners[2]") and read as (0, 0).
+io::UnitKey<M4Pocket> cornersKey()
+{
+    const char* const expected = TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 4 points [x, y]");
+    const auto read = [expected](const io::ObjectFields& f, M4Pocket& m) {
+        const nlohmann::json* corners = f.find("corners");
+        if (!corners) f.error("corners", msg::io::missing(expected));
+        else if (!corners->is_array()) f.error("corners", msg::io::wrongType(expected, *corners));
+        else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
+        else
+            for (std::size_t i = 0; i < 4; ++i)
+                m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
+    };
+    const auto write = [](const M4Pocket& m, nlohmann::ordered_json& u) {
+        u["corners"] = nlohmann::ordered_json::array();
+        for (const auto& c : m.corners) u["corners"].push_back(io::point(c));
+    };
+    return io::keys::custom<M4Pocket>({"corners"}, read, write);
+}
+
+namespace keys = io::keys;
+const io::UnitKeys<M4Pocket> kKeys{
+    {cornersKey(), keys::required("cornerRadius", &M4Pocket::cornerRadius), keys::required("depth", &M4Pocket::depth),
+     keys::number("taper", &M4Pocket::taper, 0.0), keys::requiredWhole("U", &M4Pocket::toolUse),
+     keys::whole("F", &M4Pocket::wallFinish, 1), keys::whole("H", &M4Pocket::pilotHole, 0),
+     keys::optional("stepOver", &M4Pocket::stepOver), keys::pins(&M4Pocket::tools)}};
 
 class M4Kind final : public PocketKindOf<M4Pocket> {
 public:
+    M4Kind() : PocketKindOf(&kKeys) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
     const char* drawing() const override { return ":/modules/m4.svg"; }
     const char* outlineField() const override { return "corners"; }
@@ -72,47 +98,6 @@ public:
     }
 
 protected:
-    M4Pocket readInput(const io::ObjectFields& f) const override
-    {
-        using nlohmann::json;
-        M4Pocket m;
-        f.rejectUnknown("module M4", kKeys);
-        if (const json* corners = f.find("corners")) {
-            if (!corners->is_array())
-                f.error("corners", msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 4 points [x, y]"),
-                                                      *corners));
-            else if (corners->size() != 4) f.error("corners", msg::io::cornerCount(corners->size()));
-            else
-                for (std::size_t i = 0; i < 4; ++i)
-                    m.corners[i] = f.point((*corners)[i], "corners[" + std::to_string(i) + "]").value_or(Point2{});
-        } else {
-            f.error("corners", msg::io::missing(TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 4 points [x, y]")));
-        }
-        m.cornerRadius = f.number("cornerRadius").value_or(0.0);
-        m.depth = f.number("depth").value_or(0.0);
-        m.taper = f.number("taper", 0.0);
-        m.toolUse = f.whole("U").value_or(0);
-        m.wallFinish = f.whole("F", 1);
-        m.pilotHole = f.whole("H", 0);
-        m.stepOver = f.optionalNumber("stepOver");
-        m.tools = f.wholeMap("tools");
-        return m;
-    }
-
-    void writeInput(const M4Pocket& m, nlohmann::ordered_json& u) const override
-    {
-        u["corners"] = nlohmann::ordered_json::array();
-        for (const auto& c : m.corners) u["corners"].push_back(io::point(c));
-        u["cornerRadius"] = io::number(m.cornerRadius);
-        u["depth"] = io::number(m.depth);
-        u["taper"] = io::number(m.taper);
-        u["U"] = m.toolUse;
-        u["F"] = m.wallFinish;
-        u["H"] = m.pilotHole;
-        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
-        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
-    }
-
     check::UnitReport checkInput(const M4Pocket& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkM4(mm, unitNo, ctx);

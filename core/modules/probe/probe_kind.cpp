@@ -7,7 +7,7 @@
 #include "model/translate_noop.h"
 
 #include "io/job_messages.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 
 
 #include <algorithm>
@@ -24,15 +24,88 @@ constexpr const char* kSideLabels[ProbeUnit::kMaxTouches] = {
     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P5 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P6 side"),
     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P7 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P8 side")};
 
-}  // namespace
+// "touches" and "sides": the points touched, [x, y] each, and each one's
+// side code. A touch not (wholly) entered is null, or has null for the
+// coordinate not yet typed: saved as the operator left it. Absent: one
+// touch at (0, 0).
+void readTouches(const io::ObjectFields& f, ProbeUnit& p)
+{
+    using nlohmann::json;
+    if (const json* touches = f.find("touches")) {
+        if (!touches->is_array() || touches->empty() || touches->size() > ProbeUnit::kMaxTouches) {
+            f.error("touches",
+                    msg::io::wrongType(
+                        TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 1 to 8 points [x, y], the first [0, 0]"),
+                        *touches));
+        } else {
+            for (std::size_t i = 0; i < touches->size(); ++i) {
+                const json& t = (*touches)[i];
+                const std::string field = "touches[" + std::to_string(i) + "]";
+                if (t.is_null()) continue;
+                if (!t.is_array() || t.size() != 2) {
+                    f.error(field,
+                            msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y] or null"), t));
+                    continue;
+                }
+                if (!t[0].is_null()) p.x[i] = f.numberValue(t[0], field);
+                if (!t[1].is_null()) p.y[i] = f.numberValue(t[1], field);
+            }
+        }
+    } else {
+        p.x[0] = p.y[0] = 0.0;
+    }
+    if (const json* sides = f.find("sides")) {
+        if (!sides->is_array() || sides->size() > ProbeUnit::kMaxTouches) {
+            f.error("sides",
+                    msg::io::wrongType(TAIWA_TRANSLATE_NOOP(
+                                           "taiwa::msg", "an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)"),
+                                       *sides));
+        } else {
+            for (std::size_t i = 0; i < sides->size(); ++i)
+                p.side[i] = f.wholeValue((*sides)[i], "sides[" + std::to_string(i) + "]").value_or(0);
+        }
+    }
+}
 
-namespace {
+void writeTouches(const ProbeUnit& p, nlohmann::ordered_json& u)
+{
+    u["touches"] = nlohmann::ordered_json::array();
+    u["sides"] = nlohmann::ordered_json::array();
+    std::size_t last = 0;  // up to the last touch entered; one not (wholly) entered is null (or has a null)
+    for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i)
+        if (p.x[i] || p.y[i] || p.side[i]) last = i;
+    const auto coordinate = [](const std::optional<double>& v) {
+        return v ? nlohmann::ordered_json(io::number(*v)) : nlohmann::ordered_json(nullptr);
+    };
+    for (std::size_t i = 0; i <= last; ++i) {
+        if (p.x[i] || p.y[i]) u["touches"].push_back(nlohmann::ordered_json::array({coordinate(p.x[i]), coordinate(p.y[i])}));
+        else u["touches"].push_back(nullptr);
+        u["sides"].push_back(p.side[i]);
+    }
+    // Side codes are kept whatever the shape: an operator who turns a
+    // rectangle round and back loses nothing.
+    if (std::all_of(p.side.begin(), p.side.end(), [](int v) { return v == 0; })) u.erase("sides");
+}
 
-const std::vector<std::string> kKeys{"module", "name", "shape", "where", "touches", "sides", "origin", "top",
-                                     "T", "tolerance", "sizeX", "sizeY", "touchDepth", "clearance", "search", "feed"};
+namespace keys = io::keys;
+const io::UnitKeys<ProbeUnit> kKeys{
+    {keys::requiredWhole("shape", &ProbeUnit::shape), keys::whole("where", &ProbeUnit::where, 1),
+     keys::custom<ProbeUnit>({"touches", "sides"}, readTouches, writeTouches),
+     keys::point("origin", &ProbeUnit::origin), keys::optional("top", &ProbeUnit::top),
+     keys::whole("T", &ProbeUnit::tool, 0).when([](const ProbeUnit& p) { return p.tool != 0; }),
+     keys::number("tolerance", &ProbeUnit::tolerance, 0.01), keys::required("sizeX", &ProbeUnit::sizeX),
+     // Kept whatever the shape: an operator who turns a rectangle round
+     // and back loses nothing.
+     keys::number("sizeY", &ProbeUnit::sizeY, 0.0).when([](const ProbeUnit& p) {
+         return p.shape != 1 || p.sizeY != 0;
+     }),
+     keys::number("touchDepth", &ProbeUnit::touchDepth, 5.0), keys::number("clearance", &ProbeUnit::clearance, 5.0),
+     keys::number("search", &ProbeUnit::search, 10.0), keys::number("feed", &ProbeUnit::feed, 100.0)},
+    io::UnitKeys<ProbeUnit>::Cutting::None};
 
 class ProbeKind final : public ModuleKindOf<ProbeUnit> {
 public:
+    ProbeKind() : ModuleKindOf(&kKeys) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add work-centre probing");
@@ -95,94 +168,6 @@ public:
     }
 
 protected:
-    ProbeUnit readInput(const io::ObjectFields& f) const override
-    {
-        using nlohmann::json;
-        ProbeUnit p;
-        f.rejectUnknown("module PROBE", kKeys);
-        p.shape = f.whole("shape").value_or(0);
-        p.where = f.whole("where", 1);
-        if (const json* touches = f.find("touches")) {
-            if (!touches->is_array() || touches->empty() || touches->size() > ProbeUnit::kMaxTouches) {
-                f.error("touches",
-                        msg::io::wrongType(
-                            TAIWA_TRANSLATE_NOOP("taiwa::msg", "an array of 1 to 8 points [x, y], the first [0, 0]"),
-                            *touches));
-            } else {
-                // A touch not (wholly) entered is null, or has null for the
-                // coordinate not yet typed: saved as the operator left it.
-                for (std::size_t i = 0; i < touches->size(); ++i) {
-                    const json& t = (*touches)[i];
-                    const std::string field = "touches[" + std::to_string(i) + "]";
-                    if (t.is_null()) continue;
-                    if (!t.is_array() || t.size() != 2) {
-                        f.error(field,
-                                msg::io::wrongType(TAIWA_TRANSLATE_NOOP("taiwa::msg", "a point [x, y] or null"), t));
-                        continue;
-                    }
-                    if (!t[0].is_null()) p.x[i] = f.numberValue(t[0], field);
-                    if (!t[1].is_null()) p.y[i] = f.numberValue(t[1], field);
-                }
-            }
-        } else {
-            p.x[0] = p.y[0] = 0.0;
-        }
-        if (const json* sides = f.find("sides")) {
-            if (!sides->is_array() || sides->size() > ProbeUnit::kMaxTouches) {
-                f.error("sides",
-                        msg::io::wrongType(TAIWA_TRANSLATE_NOOP(
-                                               "taiwa::msg", "an array of up to 8 side codes (1 -X, 2 +X, 3 -Y, 4 +Y)"),
-                                           *sides));
-            } else {
-                for (std::size_t i = 0; i < sides->size(); ++i)
-                    p.side[i] = f.wholeValue((*sides)[i], "sides[" + std::to_string(i) + "]").value_or(0);
-            }
-        }
-        p.origin = f.point("origin").value_or(Point2{});
-        p.top = f.optionalNumber("top");
-        p.tool = f.whole("T", 0);
-        p.tolerance = f.number("tolerance", 0.01);
-        p.sizeX = f.number("sizeX").value_or(0.0);
-        p.sizeY = f.number("sizeY", 0.0);
-        p.touchDepth = f.number("touchDepth", 5.0);
-        p.clearance = f.number("clearance", 5.0);
-        p.search = f.number("search", 10.0);
-        p.feed = f.number("feed", 100.0);
-        return p;
-    }
-
-    void writeInput(const ProbeUnit& p, nlohmann::ordered_json& u) const override
-    {
-        u["shape"] = p.shape;
-        u["where"] = p.where;
-        u["touches"] = nlohmann::ordered_json::array();
-        u["sides"] = nlohmann::ordered_json::array();
-        std::size_t last = 0;  // up to the last touch entered; one not (wholly) entered is null (or has a null)
-        for (std::size_t i = 0; i < ProbeUnit::kMaxTouches; ++i)
-            if (p.x[i] || p.y[i] || p.side[i]) last = i;
-        const auto coordinate = [](const std::optional<double>& v) {
-            return v ? nlohmann::ordered_json(io::number(*v)) : nlohmann::ordered_json(nullptr);
-        };
-        for (std::size_t i = 0; i <= last; ++i) {
-            if (p.x[i] || p.y[i]) u["touches"].push_back(nlohmann::ordered_json::array({coordinate(p.x[i]), coordinate(p.y[i])}));
-            else u["touches"].push_back(nullptr);
-            u["sides"].push_back(p.side[i]);
-        }
-        // Side codes and the length along Y are kept whatever the shape: an
-        // operator who turns a rectangle round and back loses nothing.
-        if (std::all_of(p.side.begin(), p.side.end(), [](int v) { return v == 0; })) u.erase("sides");
-        u["origin"] = io::point(p.origin);
-        if (p.top) u["top"] = io::number(*p.top);
-        if (p.tool) u["T"] = p.tool;
-        u["tolerance"] = io::number(p.tolerance);
-        u["sizeX"] = io::number(p.sizeX);
-        if (p.shape != 1 || p.sizeY != 0) u["sizeY"] = io::number(p.sizeY);
-        u["touchDepth"] = io::number(p.touchDepth);
-        u["clearance"] = io::number(p.clearance);
-        u["search"] = io::number(p.search);
-        u["feed"] = io::number(p.feed);
-    }
-
     check::UnitReport checkInput(const ProbeUnit& p, int unitNo, const check::Context& ctx) const override
     {
         return check::checkProbe(p, unitNo, ctx);

@@ -5,7 +5,7 @@
 #include "modules/module_kind.h"
 
 #include "figure/figure_text.h"
-#include "io/json_write.h"
+#include "io/unit_keys.h"
 #include "paths/contour_offset.h"
 #include "paths/region.h"
 
@@ -16,11 +16,17 @@ namespace taiwa {
 
 namespace {
 
-const std::vector<std::string> kKeys{"module", "name", "contour", "side", "direction", "depth", "width",
-                                     "U",      "F",    "stepOver", "tools", "cutting"};
+namespace keys = io::keys;
+const io::UnitKeys<SideMill> kKeys{{keys::text("contour", &SideMill::contour), keys::whole("side", &SideMill::side, 1),
+                                    keys::whole("direction", &SideMill::direction, 1),
+                                    keys::required("depth", &SideMill::depth),
+                                    keys::required("width", &SideMill::width), keys::whole("U", &SideMill::toolUse, 1),
+                                    keys::whole("F", &SideMill::wallFinish, 1),
+                                    keys::optional("stepOver", &SideMill::stepOver), keys::pins(&SideMill::tools)}};
 
 class SideKind final : public ModuleKindOf<SideMill> {
 public:
+    SideKind() : ModuleKindOf(&kKeys) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add side milling"); }
     const char* drawing() const override { return ":/modules/side.svg"; }
     const char* outlineField() const override { return "contour"; }
@@ -96,35 +102,6 @@ public:
     }
 
 protected:
-    SideMill readInput(const io::ObjectFields& f) const override
-    {
-        SideMill m;
-        f.rejectUnknown("module SIDE", kKeys);
-        m.contour = f.string("contour").value_or("");
-        m.side = f.whole("side", 1);
-        m.direction = f.whole("direction", 1);
-        m.depth = f.number("depth").value_or(0.0);
-        m.width = f.number("width").value_or(0.0);
-        m.toolUse = f.whole("U", 1);
-        m.wallFinish = f.whole("F", 1);
-        m.stepOver = f.optionalNumber("stepOver");
-        m.tools = f.wholeMap("tools");
-        return m;
-    }
-
-    void writeInput(const SideMill& m, nlohmann::ordered_json& u) const override
-    {
-        u["contour"] = m.contour;
-        u["side"] = m.side;
-        u["direction"] = m.direction;
-        u["depth"] = io::number(m.depth);
-        u["width"] = io::number(m.width);
-        u["U"] = m.toolUse;
-        u["F"] = m.wallFinish;
-        if (m.stepOver) u["stepOver"] = io::number(*m.stepOver);
-        if (!m.tools.empty()) u["tools"] = io::pins(m.tools);
-    }
-
     check::UnitReport checkInput(const SideMill& mm, int unitNo, const check::Context& ctx) const override
     {
         return checkSideMill(mm, unitNo, ctx);
