@@ -8,6 +8,7 @@
 #include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 
+#include "check/check_unit.h"
 #include "check/messages.h"
 #include "modules/named_region.h"
 #include "modules/pocket_checks.h"
@@ -204,19 +205,18 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
 
 check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    Reporter r{unitNo, ContourPocket::kName, ctx, report.diagnostics};
-    const bool codes = checkCodes(p, r);
-    const bool depth = checkDepthField(p.depth, r);
-    check::checkStepOver(p.stepOver, r);
-    const bool contours = checkContours(p, r);
-    report.figureValid = contours;
-    if (!codes || !depth || !contours || !ctx.tech) return report;
-    const ToolUse use = *toolUseFromCode(p.toolUse);
-    if (!check::checkDepthAllowances(p.depth, *ctx.tech, false, hasRoughing(use) || hasFloorFinishing(use), r))
-        return report;
-    checkRooms(p, p.reach, r);
-    return report;
+    return check::checkUnit(unitNo, ContourPocket::kName, ctx, [&](Reporter& r, check::UnitReport& report) {
+        const bool codes = checkCodes(p, r);
+        const bool depth = checkDepthField(p.depth, r);
+        check::checkStepOver(p.stepOver, r);
+        const bool contours = checkContours(p, r);
+        report.figureValid = contours;
+        if (!codes || !depth || !contours || !ctx.tech) return;
+        const ToolUse use = *toolUseFromCode(p.toolUse);
+        if (!check::checkDepthAllowances(p.depth, *ctx.tech, false, hasRoughing(use) || hasFloorFinishing(use), r))
+            return;
+        checkRooms(p, p.reach, r);
+    });
 }
 
 }  // namespace taiwa
