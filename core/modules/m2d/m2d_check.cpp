@@ -116,11 +116,8 @@ void checkToolRoom(const M2DPocket& p, const TechnologyData& tech, Reporter& r)
 UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 {
     return checkUnit(unitNo, "M2D", ctx, [&](Reporter& r, UnitReport& report) {
-        const bool codes = codesDefined(p, r);
-        if (!allFinite(p, r)) return;
-
-        const bool depthOk = checkDepth(p.depth, r);
-        checkStepOver(p.stepOver, r);
+        const auto opening = openPocketCheck(p, r, codesDefined, allFinite);
+        if (!opening) return;
         // The smallest scallop height keeps the inclined faces' passes bounded (R / 1 µm at most).
         constexpr double kSmallestScallop = 0.001;  // mm
         if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
@@ -128,12 +125,12 @@ UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 
         const bool anglesOk = anglesValid(p, r);
         const std::size_t before = report.diagnostics.size();
-        report.figureValid = figureValid(p, depthOk, anglesOk, r);
+        report.figureValid = figureValid(p, opening->depth, anglesOk, r);
         const bool floorOk = report.diagnostics.size() == before;
         if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock))
             r.unit("corner", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket opening")));
 
-        if (!ctx.tech || !codes || !depthOk) return;
+        if (!ctx.tech || !opening->codes || !opening->depth) return;
         const TechnologyData& tech = *ctx.tech;
         const bool depthsOk =
             checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill, true, r);

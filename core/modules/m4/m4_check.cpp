@@ -133,11 +133,8 @@ void checkToolRoom(const M4Pocket& p, const TechnologyData& tech, Reporter& r)
 UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
 {
     return checkUnit(unitNo, "M4", ctx, [&](Reporter& r, UnitReport& report) {
-        const bool codes = codesDefined(p, r);
-        if (!allFinite(p, r)) return;
-
-        const bool depthOk = checkDepth(p.depth, r);
-        checkStepOver(p.stepOver, r);
+        const auto opening = openPocketCheck(p, r, codesDefined, allFinite);
+        if (!opening) return;
 
         const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
         if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));
@@ -148,13 +145,13 @@ UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
             r.unit("corners", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket")));
 
         bool taperFits = true;
-        if (outlineOk && depthOk && taperOk && p.taper > 0.0) {
+        if (outlineOk && opening->depth && taperOk && p.taper > 0.0) {
             const double meet = inscribedRadius(p.corners) / tanDeg(p.taper);
             taperFits = meet > p.depth;
             if (!taperFits) r.unit("taper", msg::taperClosesPocket(p.taper, r.len(meet)));
         }
 
-        if (!ctx.tech || !codes || !depthOk) return;
+        if (!ctx.tech || !opening->codes || !opening->depth) return;
         const TechnologyData& tech = *ctx.tech;
         const ToolUse use = *toolUseFromCode(p.toolUse);
         const bool depthsOk = checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill,
