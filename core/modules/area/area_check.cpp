@@ -5,6 +5,7 @@
 #include "model/translate_noop.h"
 #include "modules/area/area.h"
 
+#include "check/check_unit.h"
 #include "check/messages.h"
 #include "paths/drawn_passes.h"
 #include "modules/area/area_messages.h"
@@ -134,31 +135,30 @@ bool cutsDrawnPasses(const Tool& t, double diameter)
 
 check::UnitReport checkAreaClearing(const AreaClearing& a, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    Reporter r{unitNo, AreaClearing::kName, ctx, report.diagnostics};
-    checkDepthField(a.depth, r);
-    bool diameter =
-        check::checkLength(a.diameter, "diameter", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool diameter"), r);
-    if (diameter && !(a.diameter > 0.0)) {
-        r.unit("diameter", msg::diameterNotPositive(r.len(a.diameter)));
-        diameter = false;
-    }
-    const bool region = checkNamedRegion(a.area, r, "area", false);
-    report.figureValid = region;
-    const bool points = checkPoints(a, r);
-    if (diameter) checkTool(a, r);
-    if (!region || !points || !diameter || !checkWork(a, r)) return report;
-    const double radius = a.diameter / 2;
-    if (const auto out = paths::firstExcursion(*a.area.region, a.points, radius)) {
-        r.unit("points", msg::passLeavesArea(out->pass, r.len(out->at.x), r.len(out->at.y), r.len(out->by), a.area.outline));
-        return report;
-    }
-    const paths::Unswept left = paths::unsweptArea(*a.area.region, a.points, radius);
-    if (left.pieces > 0)
-        report.diagnostics.push_back({Severity::Warning, unitNo, AreaClearing::kName, "points",
-                                      msg::unswept(left.area, left.pieces, left.largest, r.len(left.largestAt.x),
-                                                   r.len(left.largestAt.y), ctx.shownUnit)});
-    return report;
+    return check::checkUnit(unitNo, AreaClearing::kName, ctx, [&](Reporter& r, check::UnitReport& report) {
+        checkDepthField(a.depth, r);
+        bool diameter =
+            check::checkLength(a.diameter, "diameter", TAIWA_TRANSLATE_NOOP("taiwa::msg", "the tool diameter"), r);
+        if (diameter && !(a.diameter > 0.0)) {
+            r.unit("diameter", msg::diameterNotPositive(r.len(a.diameter)));
+            diameter = false;
+        }
+        const bool region = checkNamedRegion(a.area, r, "area", false);
+        report.figureValid = region;
+        const bool points = checkPoints(a, r);
+        if (diameter) checkTool(a, r);
+        if (!region || !points || !diameter || !checkWork(a, r)) return;
+        const double radius = a.diameter / 2;
+        if (const auto out = paths::firstExcursion(*a.area.region, a.points, radius)) {
+            r.unit("points", msg::passLeavesArea(out->pass, r.len(out->at.x), r.len(out->at.y), r.len(out->by), a.area.outline));
+            return;
+        }
+        const paths::Unswept left = paths::unsweptArea(*a.area.region, a.points, radius);
+        if (left.pieces > 0)
+            report.diagnostics.push_back({Severity::Warning, unitNo, AreaClearing::kName, "points",
+                                          msg::unswept(left.area, left.pieces, left.largest, r.len(left.largestAt.x),
+                                                       r.len(left.largestAt.y), ctx.shownUnit)});
+    });
 }
 
 }  // namespace taiwa

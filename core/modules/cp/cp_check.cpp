@@ -8,6 +8,7 @@
 #include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 
+#include "check/check_unit.h"
 #include "check/messages.h"
 #include "modules/named_region.h"
 #include "modules/pocket_checks.h"
@@ -43,6 +44,24 @@ bool checkCodes(const ContourPocket& p, Reporter& r)
     return checkWallFinishCode(p.wallFinish, r) && ok;
 }
 
+// The words the messages about a narrow place quote, each written once:
+// its contours' names, its width and its two points, lengths in the job's
+// unit; and the field of the contour concerned.
+struct PlaceWords {
+    std::string first, second;   // the contours' names (the same one for a neck or an arc)
+    std::string width;
+    std::string ax, ay, bx, by;  // the points a and b
+    std::string field;           // "outline" or "islands"
+};
+
+PlaceWords placeWords(const ContourPocket& p, const paths::NarrowestPlace& n, LengthUnit shown)
+{
+    const auto name = [&](int k) { return k == 0 ? p.contours.outline : p.contours.islands.at(static_cast<std::size_t>(k - 1)); };
+    const auto q = [&](double mm) { return msg::quote({mm, shown}); };
+    return {name(n.first), name(n.second), q(n.width), q(n.a.x), q(n.a.y), q(n.b.x), q(n.b.y),
+            n.first == 0 && n.second == 0 ? "outline" : "islands"};
+}
+
 // The refusal of a room too small for the smallest end mill, at the place
 // that makes it so, on the field of its contour. `allowance`: what the
 // step leaves on the walls (α2, α3 or 0), the tool's radius plus it must
@@ -51,9 +70,8 @@ Diagnostic narrowPlace(const ContourPocket& p, const paths::NarrowestPlace& n, c
                        Reporter& r)
 {
     using Kind = paths::NarrowestPlace::Kind;
-    const auto name = [&](int k) { return k == 0 ? p.contours.outline : p.contours.islands.at(static_cast<std::size_t>(k - 1)); };
-    const std::string field = n.first == 0 && n.second == 0 ? "outline" : "islands";
-    const msg::Len needed = r.len(2.0 * (tool.radius() + allowance));
+    const PlaceWords w = placeWords(p, n, r.ctx.shownUnit);
+    const std::string needed = msg::quote(r.len(2.0 * (tool.radius() + allowance))), mill = msg::toolName(tool);
     std::string text;
     switch (n.kind) {
     case Kind::Touch:
@@ -61,33 +79,28 @@ Diagnostic narrowPlace(const ContourPocket& p, const paths::NarrowestPlace& n, c
                                                 "the island {} touches {} at ({}, {}): no end mill passes between them; "
                                                 "keep it {} off (the smallest end mill, {}, with what the step leaves "
                                                 "on the walls) or make the two one contour"),
-                           name(n.first), name(n.second), msg::quote(r.len(n.a.x)), msg::quote(r.len(n.a.y)),
-                           msg::quote(needed), msg::toolName(tool));
+                           w.first, w.second, w.ax, w.ay, needed, mill);
         break;
     case Kind::Gap:
         text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                 "the gap between the island {} and {} is {} wide at ({}, {}); the "
                                                 "smallest end mill, {}, needs {} there"),
-                           name(n.first), name(n.second), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
-                           msg::quote(r.len(n.a.y)), msg::toolName(tool), msg::quote(needed));
+                           w.first, w.second, w.width, w.ax, w.ay, mill, needed);
         break;
     case Kind::Neck:
         text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                 "{} narrows to {} between ({}, {}) and ({}, {}); the smallest end "
                                                 "mill, {}, needs {} there"),
-                           name(n.first), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
-                           msg::quote(r.len(n.a.y)), msg::quote(r.len(n.b.x)), msg::quote(r.len(n.b.y)),
-                           msg::toolName(tool), msg::quote(needed));
+                           w.first, w.width, w.ax, w.ay, w.bx, w.by, mill, needed);
         break;
     case Kind::InsideArc:
         text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                 "{} has an inside arc of radius {} at ({}, {}); the smallest end mill, "
                                                 "{}, needs a radius of at least {} there"),
-                           name(n.first), msg::quote(r.len(n.width)), msg::quote(r.len(n.a.x)),
-                           msg::quote(r.len(n.a.y)), msg::toolName(tool), msg::quote(r.len(tool.radius() + allowance)));
+                           w.first, w.width, w.ax, w.ay, mill, msg::quote(r.len(tool.radius() + allowance)));
         break;
     }
-    return {Severity::Error, r.unitNo, ContourPocket::kName, field, text};
+    return {Severity::Error, r.unitNo, ContourPocket::kName, w.field, text};
 }
 
 // check::checkRoom, its refusal for want of room (on a field CP does not
@@ -155,7 +168,7 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
         if (it == out.end()) continue;
         using Kind = paths::NarrowestPlace::Kind;
         const paths::NarrowestPlace& n = *place;
-        const auto name = [&](int k) { return k == 0 ? p.contours.outline : p.contours.islands.at(static_cast<std::size_t>(k - 1)); };
+        const PlaceWords w = placeWords(p, n, shown);
         const auto q = [&](double mm) { return msg::quote({mm, shown}); };
         // What the step leaves on the walls: the place's reach less the corner the tool must fit.
         const double allowance = std::max(0.0, p.reach - why->cornerRadius);
@@ -167,14 +180,14 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
                                                     "{} has an inside arc of radius {} at ({}, {}): the end mills that fit it have flutes "
                                                     "shorter than the depth {} (the longest-fluted, {}); {} reaches that depth but "
                                                     "needs a radius of {} there, {} more (make the arc larger, or the pocket shallower)"),
-                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching, q(neededRadius),
+                               w.first, w.width, w.ax, w.ay, q(why->depth), passing, reaching, q(neededRadius),
                                q(neededRadius - n.width));
         } else if (n.kind == Kind::Neck) {
             text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
                                                     "{} narrows to {} between ({}, {}) and ({}, {}): the end mills that pass there "
                                                     "have flutes shorter than the depth {} (the longest-fluted, {}); {} reaches that "
                                                     "depth but needs it {} wider there (widen it, or make the pocket shallower)"),
-                               name(n.first), q(n.width), q(n.a.x), q(n.a.y), q(n.b.x), q(n.b.y), q(why->depth), passing, reaching,
+                               w.first, w.width, w.ax, w.ay, w.bx, w.by, q(why->depth), passing, reaching,
                                q(2.0 * neededRadius - n.width));
         } else {
             text = fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg",
@@ -182,29 +195,28 @@ void nameNarrowPlaceOfShortFlutes(const ContourPocket& p, const std::vector<Step
                                                     "pass there have flutes shorter than the depth {} (the longest-fluted, {}); {} "
                                                     "reaches that depth but needs {} there, {} more (widen the gap, or make the "
                                                     "pocket shallower)"),
-                               name(n.first), name(n.second), q(n.width), q(n.a.x), q(n.a.y), q(why->depth), passing, reaching,
+                               w.first, w.second, w.width, w.ax, w.ay, q(why->depth), passing, reaching,
                                q(2.0 * neededRadius), q(2.0 * neededRadius - n.width));
         }
-        it->field = n.first == 0 && n.second == 0 ? "outline" : "islands";
+        it->field = w.field;
         it->message = std::move(text);
     }
 }
 
 check::UnitReport checkContourPocket(const ContourPocket& p, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    Reporter r{unitNo, ContourPocket::kName, ctx, report.diagnostics};
-    const bool codes = checkCodes(p, r);
-    const bool depth = checkDepthField(p.depth, r);
-    check::checkStepOver(p.stepOver, r);
-    const bool contours = checkContours(p, r);
-    report.figureValid = contours;
-    if (!codes || !depth || !contours || !ctx.tech) return report;
-    const ToolUse use = *toolUseFromCode(p.toolUse);
-    if (!check::checkDepthAllowances(p.depth, *ctx.tech, false, hasRoughing(use) || hasFloorFinishing(use), r))
-        return report;
-    checkRooms(p, p.reach, r);
-    return report;
+    return check::checkUnit(unitNo, ContourPocket::kName, ctx, [&](Reporter& r, check::UnitReport& report) {
+        const bool codes = checkCodes(p, r);
+        const bool depth = checkDepthField(p.depth, r);
+        check::checkStepOver(p.stepOver, r);
+        const bool contours = checkContours(p, r);
+        report.figureValid = contours;
+        if (!codes || !depth || !contours || !ctx.tech) return;
+        const ToolUse use = *toolUseFromCode(p.toolUse);
+        if (!check::checkDepthAllowances(p.depth, *ctx.tech, false, hasRoughing(use) || hasFloorFinishing(use), r))
+            return;
+        checkRooms(p, p.reach, r);
+    });
 }
 
 }  // namespace taiwa

@@ -5,6 +5,7 @@
 #include "model/translate_noop.h"
 #include "modules/face/face.h"
 
+#include "check/check_unit.h"
 #include "check/messages.h"
 
 #include <fmt/format.h>
@@ -165,19 +166,18 @@ bool checkPins(const FaceUnit& f, Reporter& r)
 
 check::UnitReport checkFace(const FaceUnit& f, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    Reporter r{unitNo, FaceUnit::kName, ctx, report.diagnostics};
-    const bool codes = checkCodes(f, r);
-    const bool depths = checkDepths(f, r);
-    checkPasses(f, r);
-    const bool pins = checkPins(f, r);
-    // A face has no figure of its own in the plan: it takes no part in the
-    // interference check (see face_kind.cpp's outline).
-    report.figureValid = false;
-    if (!codes || !depths || !pins || !ctx.tech || !ctx.library) return report;
-    const face::ToolPick pick = face::chooseTool(f, *ctx.tech, *ctx.library, "", ctx.shownUnit);
-    if (!pick.tool) r.unit("tools.face", pick.problem);
-    return report;
+    return check::checkUnit(unitNo, FaceUnit::kName, ctx, [&](Reporter& r, check::UnitReport& report) {
+        const bool codes = checkCodes(f, r);
+        const bool depths = checkDepths(f, r);
+        checkPasses(f, r);
+        const bool pins = checkPins(f, r);
+        // A face has no figure of its own in the plan: it takes no part in the
+        // interference check (see face_kind.cpp's outline).
+        report.figureValid = false;
+        if (!codes || !depths || !pins || !ctx.tech || !ctx.library) return;
+        const face::ToolPick pick = face::chooseTool(f, *ctx.tech, *ctx.library, "", ctx.shownUnit);
+        if (!pick.tool) r.unit("tools.face", pick.problem);
+    });
 }
 
 }  // namespace taiwa

@@ -6,6 +6,7 @@
 #include "model/translate_noop.h"
 #include "modules/holes/holes.h"
 
+#include "check/check_unit.h"
 #include "check/messages.h"
 
 #include <fmt/format.h>
@@ -228,30 +229,29 @@ void checkPins(const HolePattern& h, int unitNo, Diagnostics& out)
 
 check::UnitReport checkHolePattern(const HolePattern& h, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    Reporter r{unitNo, HolePattern::kName, ctx, report.diagnostics};
-    bool ok = true;
-    if (!known(h.pattern, kPatterns)) {
-        r.unit("pattern", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pattern \"{}\" is not one of {}"), h.pattern,
-                                      listed(kPatterns)));
-        ok = false;
-    }
-    if (!known(h.hole, kHoles)) {
-        r.unit("hole",
-               fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "hole \"{}\" is not one of {}"), h.hole, listed(kHoles)));
-        ok = false;
-    }
-    if (!ok) return report;
-    checkPins(h, unitNo, report.diagnostics);
-    ok = checkCount(h, r);
-    ok = checkValues(h, r) && ok;
-    if (!ok) return report;
-    const std::vector<Point2> at = holes::positions(h);
-    const double diameter = holes::depths(h).finishDiameter;
-    if (!checkApart(h, at, diameter, r)) return report;
-    report.figureValid = true;
-    checkStock(h, at, diameter, r);
-    return report;
+    return check::checkUnit(unitNo, HolePattern::kName, ctx, [&](Reporter& r, check::UnitReport& report) {
+        bool ok = true;
+        if (!known(h.pattern, kPatterns)) {
+            r.unit("pattern", fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pattern \"{}\" is not one of {}"), h.pattern,
+                                          listed(kPatterns)));
+            ok = false;
+        }
+        if (!known(h.hole, kHoles)) {
+            r.unit("hole",
+                   fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "hole \"{}\" is not one of {}"), h.hole, listed(kHoles)));
+            ok = false;
+        }
+        if (!ok) return;
+        checkPins(h, unitNo, report.diagnostics);
+        ok = checkCount(h, r);
+        ok = checkValues(h, r) && ok;
+        if (!ok) return;
+        const std::vector<Point2> at = holes::positions(h);
+        const double diameter = holes::depths(h).finishDiameter;
+        if (!checkApart(h, at, diameter, r)) return;
+        report.figureValid = true;
+        checkStock(h, at, diameter, r);
+    });
 }
 
 }  // namespace taiwa

@@ -1,6 +1,7 @@
 // Input checks of one M2D unit (geometric 3-D pocket): numbers, codes, the
 // opening and its inclined walls, the floor they leave, depth against stock
 // and technology data, and tool room.
+#include "check/check_unit.h"
 #include "check/messages.h"
 #include "model/codes.h"
 #include "model/translate_noop.h"
@@ -114,31 +115,27 @@ void checkToolRoom(const M2DPocket& p, const TechnologyData& tech, Reporter& r)
 
 UnitReport checkM2D(const M2DPocket& p, int unitNo, const Context& ctx)
 {
-    UnitReport report;
-    Reporter r{unitNo, "M2D", ctx, report.diagnostics};
-    const bool codes = codesDefined(p, r);
-    if (!allFinite(p, r)) return report;
+    return checkUnit(unitNo, "M2D", ctx, [&](Reporter& r, UnitReport& report) {
+        const auto opening = openPocketCheck(p, r, codesDefined, allFinite);
+        if (!opening) return;
+        // The smallest scallop height keeps the inclined faces' passes bounded (R / 1 µm at most).
+        constexpr double kSmallestScallop = 0.001;  // mm
+        if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
+        else if (p.scallop < kSmallestScallop) r.unit("scallop", msg::scallopTooSmall(r.len(p.scallop), r.len(kSmallestScallop)));
 
-    const bool depthOk = checkDepth(p.depth, r);
-    checkStepOver(p.stepOver, r);
-    // The smallest scallop height keeps the inclined faces' passes bounded (R / 1 µm at most).
-    constexpr double kSmallestScallop = 0.001;  // mm
-    if (p.scallop <= 0.0) r.unit("scallop", msg::scallopNotPositive(r.len(p.scallop)));
-    else if (p.scallop < kSmallestScallop) r.unit("scallop", msg::scallopTooSmall(r.len(p.scallop), r.len(kSmallestScallop)));
+        const bool anglesOk = anglesValid(p, r);
+        const std::size_t before = report.diagnostics.size();
+        report.figureValid = figureValid(p, opening->depth, anglesOk, r);
+        const bool floorOk = report.diagnostics.size() == before;
+        if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock))
+            r.unit("corner", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket opening")));
 
-    const bool anglesOk = anglesValid(p, r);
-    const std::size_t before = report.diagnostics.size();
-    report.figureValid = figureValid(p, depthOk, anglesOk, r);
-    const bool floorOk = report.diagnostics.size() == before;
-    if (report.figureValid && ctx.stock && !insideStock(p, *ctx.stock))
-        r.unit("corner", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket opening")));
-
-    if (!ctx.tech || !codes || !depthOk) return report;
-    const TechnologyData& tech = *ctx.tech;
-    const bool depthsOk =
-        checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill, true, r);
-    if (report.figureValid && floorOk && anglesOk && depthsOk) checkToolRoom(p, tech, r);
-    return report;
+        if (!ctx.tech || !opening->codes || !opening->depth) return;
+        const TechnologyData& tech = *ctx.tech;
+        const bool depthsOk =
+            checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill, true, r);
+        if (report.figureValid && floorOk && anglesOk && depthsOk) checkToolRoom(p, tech, r);
+    });
 }
 
 }  // namespace taiwa::check

@@ -1,5 +1,6 @@
 // Input checks of one M4 unit (2.5-D pocket): numbers, codes, the outline's
 // geometry, depth against stock and technology data, and tool room.
+#include "check/check_unit.h"
 #include "check/messages.h"
 #include "model/codes.h"
 #include "model/translate_noop.h"
@@ -131,40 +132,36 @@ void checkToolRoom(const M4Pocket& p, const TechnologyData& tech, Reporter& r)
 
 UnitReport checkM4(const M4Pocket& p, int unitNo, const Context& ctx)
 {
-    UnitReport report;
-    Reporter r{unitNo, "M4", ctx, report.diagnostics};
-    const bool codes = codesDefined(p, r);
-    if (!allFinite(p, r)) return report;
+    return checkUnit(unitNo, "M4", ctx, [&](Reporter& r, UnitReport& report) {
+        const auto opening = openPocketCheck(p, r, codesDefined, allFinite);
+        if (!opening) return;
 
-    const bool depthOk = checkDepth(p.depth, r);
-    checkStepOver(p.stepOver, r);
+        const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
+        if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));
 
-    const bool taperOk = p.taper >= 0.0 && p.taper <= 30.0;
-    if (!taperOk) r.unit("taper", msg::taperOutOfRange(p.taper));
+        const bool outlineOk = outlineValid(p, r);
+        report.figureValid = outlineOk;
+        if (outlineOk && ctx.stock && !insideStock(p.corners, *ctx.stock))
+            r.unit("corners", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket")));
 
-    const bool outlineOk = outlineValid(p, r);
-    report.figureValid = outlineOk;
-    if (outlineOk && ctx.stock && !insideStock(p.corners, *ctx.stock))
-        r.unit("corners", msg::outsideStock(TAIWA_TRANSLATE_NOOP("taiwa::msg", "pocket")));
+        bool taperFits = true;
+        if (outlineOk && opening->depth && taperOk && p.taper > 0.0) {
+            const double meet = inscribedRadius(p.corners) / tanDeg(p.taper);
+            taperFits = meet > p.depth;
+            if (!taperFits) r.unit("taper", msg::taperClosesPocket(p.taper, r.len(meet)));
+        }
 
-    bool taperFits = true;
-    if (outlineOk && depthOk && taperOk && p.taper > 0.0) {
-        const double meet = inscribedRadius(p.corners) / tanDeg(p.taper);
-        taperFits = meet > p.depth;
-        if (!taperFits) r.unit("taper", msg::taperClosesPocket(p.taper, r.len(meet)));
-    }
-
-    if (!ctx.tech || !codes || !depthOk) return report;
-    const TechnologyData& tech = *ctx.tech;
-    const ToolUse use = *toolUseFromCode(p.toolUse);
-    const bool depthsOk = checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill,
-                                               hasRoughing(use) || hasFloorFinishing(use), r);
-    // α3 is used only by a two-stage wall finish (F = 3): checked where it is used.
-    const bool twoStage = hasWallFinishing(use) && *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
-    if (twoStage && tech.alpha3 >= tech.alpha2)
-        r.job("technology.alpha3", msg::alpha3NotBelowAlpha2(r.len(tech.alpha3), r.len(tech.alpha2)));
-    if (outlineOk && taperOk && taperFits && depthsOk && !(twoStage && tech.alpha3 >= tech.alpha2)) checkToolRoom(p, tech, r);
-    return report;
+        if (!ctx.tech || !opening->codes || !opening->depth) return;
+        const TechnologyData& tech = *ctx.tech;
+        const ToolUse use = *toolUseFromCode(p.toolUse);
+        const bool depthsOk = checkDepthAllowances(p.depth, tech, *pilotHoleFromCode(p.pilotHole) == PilotHole::Drill,
+                                                   hasRoughing(use) || hasFloorFinishing(use), r);
+        // α3 is used only by a two-stage wall finish (F = 3): checked where it is used.
+        const bool twoStage = hasWallFinishing(use) && *wallFinishFromCode(p.wallFinish) == WallFinish::TwoStage;
+        if (twoStage && tech.alpha3 >= tech.alpha2)
+            r.job("technology.alpha3", msg::alpha3NotBelowAlpha2(r.len(tech.alpha3), r.len(tech.alpha2)));
+        if (outlineOk && taperOk && taperFits && depthsOk && !(twoStage && tech.alpha3 >= tech.alpha2)) checkToolRoom(p, tech, r);
+    });
 }
 
 }  // namespace taiwa::check

@@ -6,6 +6,7 @@
 // roughing and finishing steps with their one ball end mill.
 #include "modules/surface/surface.h"
 
+#include "check/check_unit.h"
 #include "decompose/make_step.h"
 #include "modules/surface/surface_messages.h"
 #include "occt/surface_checks.h"
@@ -187,47 +188,46 @@ ToolPick chooseTool(const SurfaceUnit& u, double rho, const std::string& where, 
 
 check::UnitReport checkSurface(const SurfaceUnit& u, int unitNo, const check::Context& ctx)
 {
-    check::UnitReport report;
-    check::Reporter r{unitNo, SurfaceUnit::kName, ctx, report.diagnostics};
-    report.figureValid = false;
-    bool ok = true;
-    if (!(std::isfinite(u.scallop) && u.scallop > 0.0)) {
-        r.unit("scallop", msg::surfaceScallopNotPositive(r.len(u.scallop)));
-        ok = false;
-    }
-    if (!(std::isfinite(u.allowance) && u.allowance >= 0.0)) {
-        r.unit("allowance", msg::surfaceAllowanceNegative(r.len(u.allowance)));
-        ok = false;
-    }
-    // A pin of another step: said by check::checkPins (the door runs it).
-    for (const auto& [key, id] : u.tools) ok = ok && key == surfacemod::kStepKey;
-    const surfacemod::Built b = surfacemod::buildSurfaces(u, ctx.shownUnit);
-    if (!b.problem.empty()) {
-        r.unit(b.field, b.problem);
-        return report;
-    }
-    if (const Stock* st = ctx.stock) {
-        double low = std::numeric_limits<double>::infinity();
-        for (const auto& p : b.finishing)
-            for (const Point3& q : p) low = std::min(low, q.z);
-        if (low <= -st->height)
-            r.unit(u.surface.empty() ? "curve1" : "surface", msg::surfaceThroughBottom(r.len(low), r.len(st->height)));
-    }
-    if (!u.boundaryBad.empty())
-        r.unit("boundary", msg::surfaceBoundaryUnread(u.boundaryBad));
-    else if (!u.boundary.empty()) {
-        surface::TriangleMesh mesh = surface::meshFromPaths(u.boundary);
-        if (mesh.triangles.empty())
-            r.unit("boundary", msg::surfaceBoundaryNoSurface());
-        else if (!surface::boundaryMeetsSurface(b.finishing, surface::MeshIndex(std::move(mesh))))
-            r.unit("boundary", msg::surfaceBoundaryMissesSurface());
-    }
-    report.figureValid = true;
-    if (!ok || !ctx.library) return report;
-    const surface::ConcaveRadius rho = surface::smallestConcaveRadius(b.finishing);
-    const surfacemod::ToolPick pick = surfacemod::chooseTool(u, rho.radius, rho.where, *ctx.library, ctx.shownUnit);
-    if (!pick.tool) r.unit("tools.surface", pick.problem);
-    return report;
+    return check::checkUnit(unitNo, SurfaceUnit::kName, ctx, [&](check::Reporter& r, check::UnitReport& report) {
+        report.figureValid = false;
+        bool ok = true;
+        if (!(std::isfinite(u.scallop) && u.scallop > 0.0)) {
+            r.unit("scallop", msg::surfaceScallopNotPositive(r.len(u.scallop)));
+            ok = false;
+        }
+        if (!(std::isfinite(u.allowance) && u.allowance >= 0.0)) {
+            r.unit("allowance", msg::surfaceAllowanceNegative(r.len(u.allowance)));
+            ok = false;
+        }
+        // A pin of another step: said by check::checkPins (the door runs it).
+        for (const auto& [key, id] : u.tools) ok = ok && key == surfacemod::kStepKey;
+        const surfacemod::Built b = surfacemod::buildSurfaces(u, ctx.shownUnit);
+        if (!b.problem.empty()) {
+            r.unit(b.field, b.problem);
+            return;
+        }
+        if (const Stock* st = ctx.stock) {
+            double low = std::numeric_limits<double>::infinity();
+            for (const auto& p : b.finishing)
+                for (const Point3& q : p) low = std::min(low, q.z);
+            if (low <= -st->height)
+                r.unit(u.surface.empty() ? "curve1" : "surface", msg::surfaceThroughBottom(r.len(low), r.len(st->height)));
+        }
+        if (!u.boundaryBad.empty())
+            r.unit("boundary", msg::surfaceBoundaryUnread(u.boundaryBad));
+        else if (!u.boundary.empty()) {
+            surface::TriangleMesh mesh = surface::meshFromPaths(u.boundary);
+            if (mesh.triangles.empty())
+                r.unit("boundary", msg::surfaceBoundaryNoSurface());
+            else if (!surface::boundaryMeetsSurface(b.finishing, surface::MeshIndex(std::move(mesh))))
+                r.unit("boundary", msg::surfaceBoundaryMissesSurface());
+        }
+        report.figureValid = true;
+        if (!ok || !ctx.library) return;
+        const surface::ConcaveRadius rho = surface::smallestConcaveRadius(b.finishing);
+        const surfacemod::ToolPick pick = surfacemod::chooseTool(u, rho.radius, rho.where, *ctx.library, ctx.shownUnit);
+        if (!pick.tool) r.unit("tools.surface", pick.problem);
+    });
 }
 
 std::vector<Step> planSurface(const SurfaceUnit& u, const TechnologyData& tech, const std::vector<Tool>& library,
