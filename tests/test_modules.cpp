@@ -11,6 +11,7 @@
 #include "model/turn_path.h"
 
 #include <QtTest>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +80,48 @@ private slots:
             QVERIFY2(back.job, k->name());
             QVERIFY(*back.job == j);
             QCOMPARE(writeJob(*back.job), writeJob(j));
+        }
+    }
+
+    // Each value the operator can type survives the job file: a field set
+    // away from its default is written under its key (the first of its
+    // check fields, "corners" of "corners[2]", "start" of "start.z") and read
+    // back the same, with nothing refused. A module's job-file table
+    // (io/unit_keys.h) names each key once for its reader and its writer;
+    // this holds the table to the form. A key the unit's variant does not use
+    // (a hole pattern's pitch on a single hole) may be left out, but some
+    // variant (another code of another field: a grid) must write it.
+    void everyFieldSurvivesTheJobFile()
+    {
+        for (const ModuleKind* k : moduleKinds()) {
+            for (const FormField& f : k->fields()) {
+                const QString what = QString("%1 %2").arg(k->name(), f.key.c_str());
+                const std::string key = f.diagFields.front().substr(0, f.diagFields.front().find_first_of("[."));
+                // The variants: the default unit, then each code of each other code field.
+                std::vector<std::pair<const FormField*, double>> variants{{nullptr, 0.0}};
+                for (const FormField& g : k->fields())
+                    if (&g != &f && g.kind == FormFieldKind::Code)
+                        for (const auto& [code, label] : g.codes) variants.push_back({&g, double(code)});
+                bool written = false;
+                for (const auto& [g, code] : variants) {
+                    Job j = jobWith(*k);
+                    ModuleInput& m = j.units[0].module;
+                    if (g) g->set(m, code);
+                    if (f.isText())  // AREA's drawn points, SURFACE's curves and boundary (3-D points), or a name
+                        f.setText(m, key == "points" ? "1, 2; 30, 4" : key.starts_with("curve") || key == "boundary" ? "1, 2, -3; 40, 5, -6" : "K9");
+                    else f.set(m, f.kind == FormFieldKind::Code ? f.codes.back().first : f.whole ? 3.0 : 3.25);
+                    const std::string text = writeJob(j);
+                    const JobReadResult back = readJob(text);
+                    QVERIFY2(back.job && back.diagnostics.empty(), qPrintable(what));
+                    if (!nlohmann::json::parse(text)["units"][0].contains(key)) continue;
+                    written = true;
+                    const ModuleInput& r = back.job->units[0].module;
+                    if (f.isText()) QVERIFY2(f.getText(r) == f.getText(m), qPrintable(what + ": " + f.getText(r).c_str()));
+                    else QVERIFY2(f.get(r) == f.get(m), qPrintable(what));
+                    break;
+                }
+                QVERIFY2(written, qPrintable(what + " is written by no variant of the unit"));
+            }
         }
     }
 

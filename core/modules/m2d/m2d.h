@@ -26,13 +26,13 @@ struct M2DPocket {
     double lengthY = 0.0;          // L2, top opening along Y
     double depth = 0.0;            // T
     double theta1 = 0.0;           // left wall angle from the vertical [deg]
-    std::optional<double> theta2;  // right wall angle; equals theta1 when absent
+    std::optional<double> theta2{};  // right wall angle; equals theta1 when absent
     double cornerRadius = 0.0;     // r1 of the vertical corners
     int toolUse = 1;               // U: 1 or 9 only
     int pilotHole = 0;             // H
     double scallop = 0.01;         // scallop height of the inclined-face finish
-    std::optional<double> stepOver;  // roughing's step-over (fraction of D) for this unit; the technology's when absent
-    ToolPins tools;
+    std::optional<double> stepOver{};  // roughing's step-over (fraction of D) for this unit; the technology's when absent
+    ToolPins tools{};
     double rightAngle() const { return theta2.value_or(theta1); }
 
     void convertLengths(const LengthMap& f)
