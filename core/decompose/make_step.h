@@ -9,13 +9,7 @@ namespace taiwa::decompose {
 
 inline Step makeStep(int unit, const char* module, StepKind kind, int number, MachiningType type)
 {
-    Step s;
-    s.unit = unit;
-    s.module = module;
-    s.kind = kind;
-    s.number = number;
-    s.machiningType = type;
-    return s;
+    return {.unit = unit, .module = module, .kind = kind, .number = number, .machiningType = type};
 }
 
 }  // namespace taiwa::decompose

@@ -103,12 +103,12 @@ struct Step {
     // Boundary the tool edge reaches (with its corner radius): at cutDepth for
     // vertical walls; for tapered wall steps (wallTaper > 0) the outline at the
     // top surface, the wall leaning inward by depth x tan(wallTaper) below it.
-    Boxed<Quad> outline;  // (model/boxed.h: an optional on the heap)
+    Boxed<Quad> outline{};  // (model/boxed.h: an optional on the heap)
     // Steps of contour units (any outline, islands): the region whose
     // boundary the tool edge reaches, instead of `outline`; and the largest
     // tool radius that reaches every part of it (its narrowest channel and
     // smallest inside corner radius).
-    Boxed<Region> region;
+    Boxed<Region> region{};
     double reach = 0.0;
     double inscribed = 0.0;  // the radius of the largest circle in the region
 
@@ -122,7 +122,7 @@ struct Step {
     bool multiIncision = false;   // wall cut in several Z incisions (F = 2)
     // Roughing: the unit's radial step-over as a fraction of the tool
     // diameter, when the unit overrides the technology data's.
-    std::optional<double> stepOver;
+    std::optional<double> stepOver{};
     // What only the step's module makes (model/step_payload.h): SIDE's
     // contour and passes, FACE's pass angle, AREA's drawn points, HOLES'
     // centres, M2D's inclined face, SURFACE's paths; the struct lives in
@@ -131,15 +131,15 @@ struct Step {
     // (model/turn_path.h: side, speeds, the path in XZ; turnOf(step) reads
     // it) is its payload too, and then `path` stays empty: milling's stages
     // pass it by.
-    StepPayload payload;
+    StepPayload payload{};
 
     // Filled by the later stages; absent until then, never faked.
-    std::optional<ToolChoice> tool;
-    Boxed<ToolPath> path;
-    std::optional<double> minutes;  // estimated machining time: length over feed, rapids at one rate
+    std::optional<ToolChoice> tool{};
+    Boxed<ToolPath> path{};
+    std::optional<double> minutes{};  // estimated machining time: length over feed, rapids at one rate
     // The time as the machine moves (acceleration, corners, look-ahead;
     // machine/motion_time.h), when the job's machine says how it moves.
-    std::optional<double> machineMinutes;
+    std::optional<double> machineMinutes{};
     // The operator's S and F for this step (its unit's `cutting` for its
     // kind; F in mm per minute, or per revolution on a lathe), in place of
     // the tool's cutting data.
@@ -149,7 +149,7 @@ struct Step {
     // stepSpeedsFeeds); the paths' times, the post, the sheet and the step
     // table read them. Absent for a tool with no cutting data for the
     // material, and for turning steps (theirs are in their TurnStep).
-    std::optional<SpeedsFeeds> speeds;
+    std::optional<SpeedsFeeds> speeds{};
 
     std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)
     friend bool operator==(const Step&, const Step&) = default;
