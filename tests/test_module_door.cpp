@@ -75,6 +75,30 @@ QStringList toolLookUps(const QString& text)
     return found;
 }
 
+// A door that gives its adapter neither a job-file table nor a check, and
+// overrides neither reader, writer nor check: using them is a bug of the
+// program, not an operator's error.
+struct BareUnit {
+    static constexpr const char* kName = "BARE";
+    static constexpr int kSinceFormatVersion = 1;
+    void convertLengths(const LengthMap&) {}
+    friend bool operator==(const BareUnit&, const BareUnit&) = default;
+};
+
+class BareKind final : public ModuleKindOf<BareUnit> {
+public:
+    const char* paletteText() const override { return "Add bare"; }
+    const char* drawing() const override { return ":/modules/bare.svg"; }
+    const char* outlineField() const override { return "none"; }
+    ModuleInput makeDefault(const Stock&) const override { return BareUnit{}; }
+
+protected:
+    std::optional<Quad> outline(const BareUnit&) const override { return std::nullopt; }
+    void move(BareUnit&, Point2) const override {}
+    std::vector<Step> planInput(const BareUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }
+    std::vector<FormField> formFields() const override { return {}; }
+};
+
 }  // namespace
 
 class TestModuleDoor : public QObject {
@@ -126,7 +150,7 @@ private slots:
     {
         QString code = QString::fromStdString(test::readFile(test::sourcePath("core/model/step.h")));
         code.remove(QRegularExpression("//[^\n]*"));  // its comments may say where the payloads are
-        QVERIFY(code.contains("StepPayload payload;"));
+        QVERIFY(code.contains(QRegularExpression("StepPayload payload(\\{\\})?;")));
         for (const char* name : {"TurnStep", "InclinedFace", "scallop", "turn_path"})  // InclinedFaceFinishing is a kind
             QVERIFY2(!code.contains(QRegularExpression(QString("\\b%1\\b").arg(name))),
                      qPrintable(QString("core/model/step.h names %1, a module's own data").arg(name)));
@@ -196,6 +220,27 @@ private slots:
     // module does not have is refused naming its steps, a pin of a tool not
     // in the library naming the tool, each once, on the pin's field; a pin
     // of a step it has, of a tool the library has, is not refused as a pin.
+    // A door with no job-file table and no check of its own is a bug: its
+    // unit's reading, writing and check throw logic_error, saying so, and
+    // never pass for an operator's refusal.
+    void aDoorWithoutTableOrCheckIsABug()
+    {
+        const BareKind bare;
+        const nlohmann::json object = nlohmann::json::object();
+        DiagnosticSink sink;
+        const io::ObjectFields fields(object, io::Place{1, "BARE", ""}, sink);
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, bare.read(fields));
+        nlohmann::ordered_json unit;
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, bare.write(bare.makeDefault({}), unit));
+        try {
+            bare.check(bare.makeDefault({}), 1, check::Context{});
+            QFAIL("a check without a check function passed");
+        } catch (const std::logic_error& e) {
+            QCOMPARE(std::string(e.what()), std::string("module BARE has no input check"));
+        }
+        QVERIFY(sink.empty());
+    }
+
     void theDoorChecksEveryModulesPins()
     {
         const std::vector<Tool> library = defaultToolLibrary();

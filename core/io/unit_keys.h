@@ -6,7 +6,8 @@
 // ("unknown field; module SIDE has module, name, contour, …") is made from
 // it. So no key can be written that is not read back, nor read and refused.
 // Used by the modules' doors (modules/*/*_kind.cpp); a unit whose format is
-// a grammar of its own (TURN's profile, SURFACE's paths) keeps its reader.
+// a grammar of its own (TURN's profile table and its versions) keeps its
+// reader.
 #pragma once
 
 #include "io/json_fields.h"

@@ -221,10 +221,17 @@ public:
 template <class T>
 class ModuleKindOf : public ModuleKind {
 public:
+    using CheckFunction = check::UnitReport (*)(const T& unit, int unitNo, const check::Context& ctx);
+
     // keys: the unit's job-file table (io/unit_keys.h), which reads and
-    // writes the unit. A module whose unit is a grammar of its own (TURN,
-    // SURFACE) passes none and overrides readInput and writeInput.
-    explicit ModuleKindOf(const io::UnitKeys<T>* keys = nullptr) : keys_(keys) {}
+    // writes the unit; checks: the unit's own input checks. A module whose
+    // unit is a grammar of its own (TURN's profile table) passes no table
+    // and overrides readInput and writeInput; one whose checks need more
+    // than the unit passes no check and overrides checkInput.
+    explicit ModuleKindOf(const io::UnitKeys<T>* keys = nullptr, CheckFunction checks = nullptr)
+        : keys_(keys), check_(checks)
+    {
+    }
 
     const char* name() const final { return T::kName; }
     int formatVersion() const final { return T::kSinceFormatVersion; }
@@ -258,7 +265,11 @@ public:
 protected:
     virtual T readInput(const io::ObjectFields& unit) const { return keys().read(unit); }
     virtual void writeInput(const T& m, nlohmann::ordered_json& unit) const { keys().write(m, unit); }
-    virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const = 0;
+    virtual check::UnitReport checkInput(const T& mm, int unitNo, const check::Context& ctx) const
+    {
+        if (!check_) throw std::logic_error(std::string("module ") + T::kName + " has no input check");
+        return check_(mm, unitNo, ctx);
+    }
     virtual std::optional<Quad> outline(const T& mm) const = 0;
     virtual void move(T& m, Point2 delta) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
@@ -271,6 +282,7 @@ private:
         return *keys_;
     }
     const io::UnitKeys<T>* keys_;
+    CheckFunction check_;
 };
 
 // The one instance of a module kind, for its `<kind>Module()` function.

@@ -3501,10 +3501,6 @@ Theirs: %6</source>
             <translation>工具径</translation>
         </message>
         <message>
-            <source>outline</source>
-            <translation>外形</translation>
-        </message>
-        <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] の配列</translation>
         </message>
@@ -3935,6 +3931,10 @@ Theirs: %6</source>
         <message>
             <source>a contour name</source>
             <translation>輪郭名</translation>
+        </message>
+        <message>
+            <source>outline</source>
+            <translation>外形</translation>
         </message>
         <message>
             <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>

@@ -3501,10 +3501,6 @@ Theirs: %6</source>
             <translation>刀具直径</translation>
         </message>
         <message>
-            <source>outline</source>
-            <translation>外轮廓</translation>
-        </message>
-        <message>
             <source>an array of points [x, y]</source>
             <translation>点 [x, y] 的数组</translation>
         </message>
@@ -3935,6 +3931,10 @@ Theirs: %6</source>
         <message>
             <source>a contour name</source>
             <translation>轮廓名</translation>
+        </message>
+        <message>
+            <source>outline</source>
+            <translation>外轮廓</translation>
         </message>
         <message>
             <source>{} islands; a {} may have at most {} (the checks compare every two of them)</source>

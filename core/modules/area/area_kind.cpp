@@ -53,7 +53,7 @@ const io::UnitKeys<AreaClearing> kKeys{
 
 class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
-    AreaKind() : ModuleKindOf(&kKeys) {}
+    AreaKind() : ModuleKindOf(&kKeys, checkAreaClearing) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add drawn-pass area");
@@ -148,11 +148,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const AreaClearing& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkAreaClearing(mm, unitNo, ctx);
-    }
-
     std::optional<Quad> outline(const AreaClearing& mm) const override { return regionBox(mm.area.region); }
 
     // The area belongs to the job's figure; the drawn points to the area.

@@ -30,7 +30,7 @@ const io::UnitKeys<ContourPocket> kKeys{
 
 class CpKind final : public PocketKindOf<ContourPocket> {
 public:
-    CpKind() : PocketKindOf(&kKeys) {}
+    CpKind() : PocketKindOf(&kKeys, checkContourPocket) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add contour pocket");
@@ -94,11 +94,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const ContourPocket& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkContourPocket(mm, unitNo, ctx);
-    }
-
     // The box around the outline (its polygon is topPolygon).
     std::optional<Quad> outline(const ContourPocket& mm) const override { return regionBox(mm.contours.region); }
 

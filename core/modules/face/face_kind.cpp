@@ -25,7 +25,7 @@ const io::UnitKeys<FaceUnit> kKeys{
 
 class FaceKind final : public ModuleKindOf<FaceUnit> {
 public:
-    FaceKind() : ModuleKindOf(&kKeys) {}
+    FaceKind() : ModuleKindOf(&kKeys, checkFace) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add face milling"); }
     const char* drawing() const override { return ":/modules/face.svg"; }
     const char* outlineField() const override { return "depth"; }
@@ -91,11 +91,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const FaceUnit& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkFace(mm, unitNo, ctx);
-    }
-
     // No figure for the interference check: a face covers the whole top,
     // and every other unit lies under it (their depths are measured from
     // Z0 either way). Overlapping them all is what a face does, not a

@@ -73,7 +73,7 @@ double profile(const holes::Depths& d, double r)
 
 class HolesKind final : public ModuleKindOf<HolePattern> {
 public:
-    HolesKind() : ModuleKindOf(&kKeys) {}
+    HolesKind() : ModuleKindOf(&kKeys, checkHolePattern) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add hole pattern"); }
     const char* drawing() const override { return ":/modules/holes.svg"; }
     const char* outlineField() const override { return "pattern"; }
@@ -147,11 +147,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const HolePattern& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkHolePattern(mm, unitNo, ctx);
-    }
-
     // The box around the figure (its polygon is topPolygon).
     std::optional<Quad> outline(const HolePattern& mm) const override
     {

@@ -44,7 +44,7 @@ namespace {
 
 class M2DKind final : public PocketKindOf<M2DPocket> {
 public:
-    M2DKind() : PocketKindOf(&kKeys) {}
+    M2DKind() : PocketKindOf(&kKeys, check::checkM2D) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M2D 3-D pocket");
@@ -72,11 +72,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const M2DPocket& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return check::checkM2D(mm, unitNo, ctx);
-    }
-
     std::optional<Quad> outline(const M2DPocket& mm) const override { return m2dCrossSection(mm, 0.0); }
 
 public:
@@ -113,7 +108,6 @@ public:
     }
 
 protected:
-
     void move(M2DPocket& m, Point2 delta) const override { m.corner = m.corner + delta; }
 
     std::vector<Step> planInput(const M2DPocket& m2d, const UnitPlanContext& ctx, Diagnostics& out) const override

@@ -47,7 +47,7 @@ const io::UnitKeys<M4Pocket> kKeys{
 
 class M4Kind final : public PocketKindOf<M4Pocket> {
 public:
-    M4Kind() : PocketKindOf(&kKeys) {}
+    M4Kind() : PocketKindOf(&kKeys, check::checkM4) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
     const char* drawing() const override { return ":/modules/m4.svg"; }
     const char* outlineField() const override { return "corners"; }
@@ -98,11 +98,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const M4Pocket& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkM4(mm, unitNo, ctx);
-    }
-
     std::optional<Quad> outline(const M4Pocket& mm) const override
     {
         return Quad{counterClockwise(mm.corners), mm.cornerRadius};

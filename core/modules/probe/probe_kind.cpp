@@ -9,7 +9,6 @@
 #include "io/job_messages.h"
 #include "io/unit_keys.h"
 
-
 #include <algorithm>
 #include <variant>
 
@@ -105,7 +104,7 @@ const io::UnitKeys<ProbeUnit> kKeys{
 
 class ProbeKind final : public ModuleKindOf<ProbeUnit> {
 public:
-    ProbeKind() : ModuleKindOf(&kKeys) {}
+    ProbeKind() : ModuleKindOf(&kKeys, check::checkProbe) {}
     const char* paletteText() const override
     {
         return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add work-centre probing");
@@ -168,11 +167,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const ProbeUnit& p, int unitNo, const check::Context& ctx) const override
-    {
-        return check::checkProbe(p, unitNo, ctx);
-    }
-
     std::optional<Quad> outline(const ProbeUnit&) const override { return std::nullopt; }
     void move(ProbeUnit&, Point2) const override {}
     std::vector<Step> planInput(const ProbeUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }

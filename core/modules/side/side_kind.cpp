@@ -26,7 +26,7 @@ const io::UnitKeys<SideMill> kKeys{{keys::text("contour", &SideMill::contour), k
 
 class SideKind final : public ModuleKindOf<SideMill> {
 public:
-    SideKind() : ModuleKindOf(&kKeys) {}
+    SideKind() : ModuleKindOf(&kKeys, checkSideMill) {}
     const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add side milling"); }
     const char* drawing() const override { return ":/modules/side.svg"; }
     const char* outlineField() const override { return "contour"; }
@@ -102,11 +102,6 @@ public:
     }
 
 protected:
-    check::UnitReport checkInput(const SideMill& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkSideMill(mm, unitNo, ctx);
-    }
-
     // The box round the contour grown by W (the unit order, the preview).
     std::optional<Quad> outline(const SideMill& mm) const override
     {

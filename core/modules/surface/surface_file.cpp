@@ -1,10 +1,12 @@
 // Module SURFACE's keys in the job file (surface_file.h, docs/surfaces.md):
 // a curve as points [x, y, z] or as two plane projections (points [a, b] or
-// a figure contour), the surface or the boundary as paths of points, read
-// with unknown keys refused and written in canonical order.
+// a figure contour), the surface or the boundary as paths of points: the
+// unit's job-file table (io/unit_keys.h), which its door reads and writes
+// it by.
 #include "modules/surface/surface_file.h"
 
 #include "io/json_write.h"
+#include "io/unit_keys.h"
 
 #include <algorithm>
 #include <string>
@@ -13,9 +15,6 @@
 namespace taiwa::surfacemod {
 
 namespace {
-
-const std::vector<std::string> kKeys{"module", "name",      "curve1",   "curve2",   "n",     "m",
-                                     "curveStep", "scallop", "allowance", "boundary", "surface", "tools", "cutting"};
 
 bool isNumbers(const nlohmann::json& v, std::size_t n)
 {
@@ -120,60 +119,76 @@ nlohmann::ordered_json writeCurve(const SurfaceCurve& c)
     return j;
 }
 
-}  // namespace
-
-SurfaceUnit readSurfaceUnit(const io::ObjectFields& f)
+// Paths of points [x, y, z] under `key` (the surface as a STEP face set,
+// the boundary); absent: none.
+void readPaths(const io::ObjectFields& f, const char* key, std::vector<std::vector<Point3>>& into)
 {
-    SurfaceUnit u;
-    f.rejectUnknown("module SURFACE", kKeys);
-    const auto paths = [&](const char* key, std::vector<std::vector<Point3>>& into) {
-        const nlohmann::json* b = f.find(key);
-        if (!b) return;
-        if (!b->is_array()) f.error(key, "expected an array of paths, each an array of points [x, y, z]");
-        else
-            for (std::size_t i = 0; i < b->size(); ++i)
-                into.push_back(readPoints3(f, (*b)[i], std::string(key) + "[" + std::to_string(i) + "]"));
-    };
-    // The surface as paths (a STEP face set), or the curves it is ruled between.
-    paths("surface", u.surface);
+    const nlohmann::json* b = f.find(key);
+    if (!b) return;
+    if (!b->is_array()) f.error(key, "expected an array of paths, each an array of points [x, y, z]");
+    else
+        for (std::size_t i = 0; i < b->size(); ++i)
+            into.push_back(readPoints3(f, (*b)[i], std::string(key) + "[" + std::to_string(i) + "]"));
+}
+
+nlohmann::ordered_json writePaths(const std::vector<std::vector<Point3>>& ps)
+{
+    auto out = nlohmann::ordered_json::array();
+    for (const auto& path : ps) {
+        auto pts = nlohmann::ordered_json::array();
+        for (const Point3 p : path) pts.push_back(point3(p));
+        out.push_back(pts);
+    }
+    return out;
+}
+
+// The surface: paths (a STEP face set), or the two curves it is ruled
+// between. A file with both keeps both; one is written.
+void readShape(const io::ObjectFields& f, SurfaceUnit& u)
+{
+    readPaths(f, "surface", u.surface);
     if (!f.find("surface") || f.find("curve1") || f.find("curve2")) {
         u.curve1 = readCurve(f, "curve1");
         u.curve2 = readCurve(f, "curve2");
     }
-    if (u.surface.empty() || f.find("n")) u.n = f.whole("n").value_or(0);  // a face set's surface has no N
-    if (f.find("m")) u.m = f.whole("m");
-    u.curveStep = f.optionalNumber("curveStep");
-    u.scallop = f.number("scallop").value_or(0.0);
-    u.allowance = f.number("allowance", 0.0);
-    paths("boundary", u.boundary);
-    u.tools = f.wholeMap("tools");
-    return u;
 }
 
-void writeSurfaceUnit(const SurfaceUnit& u, nlohmann::ordered_json& j)
+void writeShape(const SurfaceUnit& u, nlohmann::ordered_json& j)
 {
-    const auto paths = [](const std::vector<std::vector<Point3>>& ps) {
-        auto out = nlohmann::ordered_json::array();
-        for (const auto& path : ps) {
-            auto pts = nlohmann::ordered_json::array();
-            for (const Point3 p : path) pts.push_back(point3(p));
-            out.push_back(pts);
-        }
-        return out;
-    };
     if (u.surface.empty()) {
         j["curve1"] = writeCurve(u.curve1);
         j["curve2"] = writeCurve(u.curve2);
     } else {
-        j["surface"] = paths(u.surface);
+        j["surface"] = writePaths(u.surface);
     }
-    if (u.surface.empty() || u.n) j["n"] = u.n;  // a face set's surface has no N
-    if (u.m) j["m"] = *u.m;
-    if (u.curveStep) j["curveStep"] = io::number(*u.curveStep);
-    j["scallop"] = io::number(u.scallop);
-    j["allowance"] = io::number(u.allowance);
-    if (!u.boundary.empty()) j["boundary"] = paths(u.boundary);
-    if (!u.tools.empty()) j["tools"] = io::pins(u.tools);
 }
+
+namespace keys = io::keys;
+const io::UnitKeys<SurfaceUnit> kKeys{
+    {keys::custom<SurfaceUnit>({"curve1", "curve2", "surface"}, readShape, writeShape),
+     // A face set's surface has no N.
+     keys::custom<SurfaceUnit>(
+         {"n"},
+         [](const io::ObjectFields& f, SurfaceUnit& u) {
+             if (u.surface.empty() || f.find("n")) u.n = f.whole("n").value_or(0);
+         },
+         [](const SurfaceUnit& u, nlohmann::ordered_json& j) {
+             if (u.surface.empty() || u.n) j["n"] = u.n;
+         }),
+     keys::custom<SurfaceUnit>(
+         {"m"}, [](const io::ObjectFields& f, SurfaceUnit& u) { if (f.find("m")) u.m = f.whole("m"); },
+         [](const SurfaceUnit& u, nlohmann::ordered_json& j) { if (u.m) j["m"] = *u.m; }),
+     keys::optional("curveStep", &SurfaceUnit::curveStep), keys::required("scallop", &SurfaceUnit::scallop),
+     keys::number("allowance", &SurfaceUnit::allowance, 0.0),
+     keys::custom<SurfaceUnit>(
+         {"boundary"}, [](const io::ObjectFields& f, SurfaceUnit& u) { readPaths(f, "boundary", u.boundary); },
+         [](const SurfaceUnit& u, nlohmann::ordered_json& j) {
+             if (!u.boundary.empty()) j["boundary"] = writePaths(u.boundary);
+         }),
+     keys::pins(&SurfaceUnit::tools)}};
+
+}  // namespace
+
+const io::UnitKeys<SurfaceUnit>& surfaceKeys() { return kKeys; }
 
 }  // namespace taiwa::surfacemod

@@ -21,6 +21,7 @@ namespace {
 
 class SurfaceKind final : public ModuleKindOf<SurfaceUnit> {
 public:
+    SurfaceKind() : ModuleKindOf(&surfacemod::surfaceKeys(), checkSurface) {}
     // A projection given as a figure contour gets its points (mm), its
     // arcs flattened to surfacemod::kContourTolerance.
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
@@ -119,14 +120,6 @@ public:
     }
 
 protected:
-    SurfaceUnit readInput(const io::ObjectFields& f) const override { return surfacemod::readSurfaceUnit(f); }
-    void writeInput(const SurfaceUnit& u, nlohmann::ordered_json& j) const override { surfacemod::writeSurfaceUnit(u, j); }
-
-    check::UnitReport checkInput(const SurfaceUnit& mm, int unitNo, const check::Context& ctx) const override
-    {
-        return checkSurface(mm, unitNo, ctx);
-    }
-
     // The box around the curves in XY (the surface lies within it).
     std::optional<Quad> outline(const SurfaceUnit& u) const override
     {
