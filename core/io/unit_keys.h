@@ -162,8 +162,6 @@ public:
         for (const UnitKey<U>& e : entries_) e.write(u, j);
     }
 
-    const std::vector<std::string>& known() const { return known_; }
-
 private:
     std::vector<UnitKey<U>> entries_;
     std::vector<std::string> known_;

@@ -143,7 +143,8 @@ nlohmann::ordered_json writePaths(const std::vector<std::vector<Point3>>& ps)
 }
 
 // The surface: paths (a STEP face set), or the two curves it is ruled
-// between. A file with both keeps both; one is written.
+// between. Read as the file has them; written, the surface when there is
+// one, otherwise the curves.
 void readShape(const io::ObjectFields& f, SurfaceUnit& u)
 {
     readPaths(f, "surface", u.surface);
