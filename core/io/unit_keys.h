@@ -150,8 +150,9 @@ public:
 
     // The unit read from its object: a key the table does not have is
     // reported, then every entry is read in turn.
-    U read(const ObjectFields& f, U u = {}) const
+    U read(const ObjectFields& f) const
     {
+        U u{};
         f.rejectUnknown(std::string("module ") + U::kName, known_);
         for (const UnitKey<U>& e : entries_) e.read(f, u);
         return u;
