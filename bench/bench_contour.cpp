@@ -90,10 +90,10 @@ Step contourStep(StepKind kind, double start, double cut, double wall)
     Step s;
     s.kind = kind;
     s.module = "CP";
-    s.region = gearPocket();
-    s.startDepth = start;
-    s.cutDepth = cut;
-    s.wallAllowance = wall;
+    editMilling(s).region = gearPocket();
+    editMilling(s).startDepth = start;
+    editMilling(s).cutDepth = cut;
+    editMilling(s).wallAllowance = wall;
     s.tool = ToolChoice{1, ""};
     return s;
 }
@@ -103,11 +103,11 @@ Step m4Step(StepKind kind, double start, double cut, double wall)
     Step s;
     s.kind = kind;
     s.module = "M4";
-    s.outline = Quad{{{{0, 0}, {100, 0}, {100, 80}, {0, 80}}}, 4.0};
-    s.position = {50, 40};
-    s.startDepth = start;
-    s.cutDepth = cut;
-    s.wallAllowance = wall;
+    editMilling(s).outline = Quad{{{{0, 0}, {100, 0}, {100, 80}, {0, 80}}}, 4.0};
+    editMilling(s).position = {50, 40};
+    editMilling(s).startDepth = start;
+    editMilling(s).cutDepth = cut;
+    editMilling(s).wallAllowance = wall;
     s.tool = ToolChoice{1, ""};
     return s;
 }

@@ -27,10 +27,10 @@ Step step(StepKind kind, double start, double cut)
     Step s;
     s.module = "M4";
     s.kind = kind;
-    s.outline = kOutline;
-    s.position = centroid(kOutline.corners);
-    s.startDepth = start;
-    s.cutDepth = cut;
+    editMilling(s).outline = kOutline;
+    editMilling(s).position = centroid(kOutline.corners);
+    editMilling(s).startDepth = start;
+    editMilling(s).cutDepth = cut;
     return s;
 }
 
@@ -57,7 +57,7 @@ void roughingHelix(benchmark::State& state) { run(state, step(StepKind::Roughing
 void roughingPilotHole(benchmark::State& state)
 {
     Step s = step(StepKind::Roughing, 0, 11.8);
-    s.holeDiameter = 6;
+    editMilling(s).holeDiameter = 6;
     run(state, s);
 }
 
@@ -66,7 +66,7 @@ void floorFinishing(benchmark::State& state) { run(state, step(StepKind::FloorFi
 void wallFinishingF2(benchmark::State& state)
 {
     Step s = step(StepKind::WallFinishing, 0, 12);
-    s.multiIncision = true;
+    editMilling(s).multiIncision = true;
     run(state, s);
 }
 

@@ -110,7 +110,7 @@ private slots:
         QCOMPARE(s.tool->toolId, 27);  // the library's 10 mm flat end mill
         QCOMPARE(plan.tool(27)->diameter, 10.0);
         QCOMPARE(s.payload.as<DrawnPoints>().points.size(), std::size_t{14});
-        QCOMPARE(s.cutDepth, 6.0);
+        QCOMPARE(millingOf(s).cutDepth, 6.0);
     }
 
     // The feed moves at each layer's depth go through the drawn points in
@@ -155,7 +155,7 @@ private slots:
         const Plan plan = test::samplePlan(kSample);
         const Step& s = plan.steps[0];
         const double R = plan.tool(s.tool->toolId)->radius();
-        const Region region = normalised(*s.region);
+        const Region region = normalised(*millingOf(s).region);
         const RegionDistance inside(region);
         std::vector<Point2> floor;
         // Rapids below the top: straight down over the start point, no
@@ -175,7 +175,7 @@ private slots:
             if (p.p.z >= 0.0) continue;
             QVERIFY2(inside({p.p.x, p.p.y}) + R <= kTol,
                      qPrintable(QString("the tool leaves the area at (%1, %2)").arg(p.p.x).arg(p.p.y)));
-            if (std::abs(p.p.z + s.cutDepth) < 1e-9) floor.push_back({p.p.x, p.p.y});
+            if (std::abs(p.p.z + millingOf(s).cutDepth) < 1e-9) floor.push_back({p.p.x, p.p.y});
         }
         // The strips, sampled across: all reached at the depth.
         int checked = 0;
@@ -205,7 +205,7 @@ private slots:
         QVERIFY(!hasErrors(ds));
         const Plan plan = test::samplePlan(kSample);
         const Step& s = plan.steps[0];
-        const Region region = normalised(*s.region);
+        const Region region = normalised(*millingOf(s).region);
         const RegionDistance inside(region);
         const paths::Unswept u = paths::unsweptArea(region, s.payload.as<DrawnPoints>().points, 5.0);
         double cells = 0.0, largestSide = 0.0;

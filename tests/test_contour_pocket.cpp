@@ -99,16 +99,16 @@ private slots:
         QCOMPARE(plan.steps[1].kind, StepKind::FloorFinishing);
         QCOMPARE(plan.steps[2].kind, StepKind::WallFinishing);
         for (const Step& s : plan.steps) {
-            QVERIFY(s.region);
-            QCOMPARE(s.region->islands.size(), std::size_t{2});
+            QVERIFY(millingOf(s).region);
+            QCOMPARE(millingOf(s).region->islands.size(), std::size_t{2});
             QVERIFY(s.tool && s.path && !s.path->moves.empty());
         }
         // The smallest inside radius is the ROUND 6 where the side meets the
         // arch: no wall tool much wider than 12 mm. That corner turns by
         // only 34°, so a cutter 0.1 mm larger than its rounding leaves less
         // than the 4 µm the reach allows (docs/modules.md, CP).
-        QVERIFY2(plan.steps[2].reach >= 6.0 && plan.steps[2].reach < 6.15, qPrintable(QString::number(plan.steps[2].reach)));
-        for (const Step& s : plan.steps) QVERIFY(plan.tool(s.tool->toolId)->radius() <= s.reach + 1e-9);
+        QVERIFY2(millingOf(plan.steps[2]).reach >= 6.0 && millingOf(plan.steps[2]).reach < 6.15, qPrintable(QString::number(millingOf(plan.steps[2]).reach)));
+        for (const Step& s : plan.steps) QVERIFY(plan.tool(s.tool->toolId)->radius() <= millingOf(s).reach + 1e-9);
     }
 
     // Every step judged against the exact region.
@@ -119,7 +119,7 @@ private slots:
         const TechnologyData& tech = plan.technology;
         const double T = 12.0;
         for (const Step& s : plan.steps) {
-            const RegionDistance distanceTo(normalised(*s.region));
+            const RegionDistance distanceTo(normalised(*millingOf(s).region));
             const double R = plan.tool(s.tool->toolId)->radius();
             // Clipper's rings are within its 1 µm chords of the exact region,
             // twice (the region flattened, the offset's round joins).
@@ -131,9 +131,9 @@ private slots:
                     if (p.z < 0.0) nearest = std::min(nearest, -distanceTo({p.x, p.y}));
                 }
             const double kept = nearest - R;  // what the tool's edge left on the nearest wall
-            QVERIFY2(kept >= s.wallAllowance - slack,
-                     qPrintable(QString("%1 left %2 on a wall, allowance %3").arg(s.label().c_str()).arg(kept).arg(s.wallAllowance)));
-            QVERIFY2(kept <= s.wallAllowance + 0.05, qPrintable(QString("%1 stays %2 off the walls").arg(s.label().c_str()).arg(kept)));
+            QVERIFY2(kept >= millingOf(s).wallAllowance - slack,
+                     qPrintable(QString("%1 left %2 on a wall, allowance %3").arg(s.label().c_str()).arg(kept).arg(millingOf(s).wallAllowance)));
+            QVERIFY2(kept <= millingOf(s).wallAllowance + 0.05, qPrintable(QString("%1 stays %2 off the walls").arg(s.label().c_str()).arg(kept)));
             const double floor = s.kind == StepKind::Roughing ? T - tech.beta2 : T;
             QVERIFY2(std::abs(deepest + floor) < 1e-9, qPrintable(QString("%1 reaches %2").arg(s.label().c_str()).arg(deepest)));
             // No rapid sideways below the top of the stock.
@@ -163,7 +163,7 @@ private slots:
                                   ? ContourSegment::line(a, b)
                                   : ContourSegment::arc(a, b, piece.move.centre, piece.move.kind == MoveKind::ArcCCW));
         }
-        const Region region = normalised(*wall.region);
+        const Region region = normalised(*millingOf(wall).region);
         std::vector<const Contour*> walls{&region.outer};
         for (const auto& i : region.islands) walls.push_back(&i);
         for (const Contour* c : walls)
@@ -198,11 +198,11 @@ private slots:
         for (const auto& piece : test::cuttingPieces(*floor.path))
             if (piece.move.kind == MoveKind::Feed && std::abs(piece.move.end.z + 12.0) < 1e-9 && std::abs(piece.from.z + 12.0) < 1e-9)
                 lines.push_back({{piece.from.x, piece.from.y}, {piece.move.end.x, piece.move.end.y}});
-        const RegionDistance distanceTo(normalised(*floor.region));
+        const RegionDistance distanceTo(normalised(*millingOf(floor).region));
         int points = 0;
         for (double y = 10.5; y < 70; y += 1.0)
             for (double x = 10.5; x < 110; x += 1.0) {
-                if (distanceTo({x, y}) > -(floor.wallAllowance + R)) continue;  // the wall pass's, or material
+                if (distanceTo({x, y}) > -(millingOf(floor).wallAllowance + R)) continue;  // the wall pass's, or material
                 ++points;
                 double d = std::numeric_limits<double>::infinity();
                 for (const auto& [a, b] : lines) d = std::min(d, segmentDistance({x, y}, a, b));
@@ -240,7 +240,7 @@ private slots:
         const Plan a = planJob(mm, TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
         const Plan b = planJob(inch, TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
         QVERIFY2(b.ok(), messages(b.diagnostics).c_str());
-        const Region ra = normalised(*a.steps[0].region), rb = normalised(*b.steps[0].region);
+        const Region ra = normalised(*millingOf(a.steps[0]).region), rb = normalised(*millingOf(b.steps[0]).region);
         QCOMPARE(rb.outer.segments.size(), ra.outer.segments.size());
         for (std::size_t i = 0; i < ra.outer.segments.size(); ++i)
             QVERIFY(distance(ra.outer.segments[i].end, rb.outer.segments[i].end) < 1e-9);

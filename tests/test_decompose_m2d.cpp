@@ -83,10 +83,10 @@ private slots:
         for (int k = 1; k <= layers; ++k) {
             const Step& s = steps[std::size_t(k - 1)];
             QVERIFY(s.kind == StepKind::Roughing && s.number == k);
-            QVERIFY2(std::abs(s.startDepth - (k - 1) * layer) < kTol, qPrintable(QString::number(k)));
-            QVERIFY2(std::abs(s.cutDepth - k * layer) < kTol, qPrintable(QString::number(k)));
+            QVERIFY2(std::abs(millingOf(s).startDepth - (k - 1) * layer) < kTol, qPrintable(QString::number(k)));
+            QVERIFY2(std::abs(millingOf(s).cutDepth - k * layer) < kTol, qPrintable(QString::number(k)));
         }
-        QCOMPARE(steps.back().cutDepth, depth - beta2);  // the last layer ends exactly at T - beta2
+        QCOMPARE(millingOf(steps.back()).cutDepth, depth - beta2);  // the last layer ends exactly at T - beta2
     }
 
     void layersFollowTheWallSlopeLeavingAlpha2()
@@ -96,18 +96,18 @@ private slots:
         const auto rough = ofKind(decomposeM2D(p, t, 6.0, 2), StepKind::Roughing);
         QCOMPARE(rough.size(), std::size_t(4));  // 11.8 / 3 = 3.93 -> 4 layers of 2.95
         for (const auto& s : rough) {
-            const double z = s.cutDepth;
+            const double z = millingOf(s).cutDepth;
             const double left = 30 + z * tanDeg(20) + 0.3, right = 110 - z * tanDeg(35) - 0.3;
             const std::array<Point2, 4> want{{{left, 40.3}, {right, 40.3}, {right, 89.7}, {left, 89.7}}};
-            for (std::size_t c = 0; c < 4; ++c) QVERIFY(distance(s.outline->corners[c], want[c]) < kTol);
-            QVERIFY(std::abs(s.outline->cornerRadius - 4.7) < kTol);
-            QVERIFY(std::abs(s.wallAllowance - 0.3) < kTol);
-            QVERIFY(std::abs(s.floorAllowance - (12 - z)) < kTol);
+            for (std::size_t c = 0; c < 4; ++c) QVERIFY(distance(millingOf(s).outline->corners[c], want[c]) < kTol);
+            QVERIFY(std::abs(millingOf(s).outline->cornerRadius - 4.7) < kTol);
+            QVERIFY(std::abs(millingOf(s).wallAllowance - 0.3) < kTol);
+            QVERIFY(std::abs(millingOf(s).floorAllowance - (12 - z)) < kTol);
             QCOMPARE(s.module, std::string("M2D"));
             QCOMPARE(s.unit, 2);
         }
         // Deeper layers are narrower: the stairs step inward with the walls.
-        QVERIFY(rough[3].outline->corners[0].x > rough[0].outline->corners[0].x + 2.9 * 3 * tanDeg(20) - kTol);
+        QVERIFY(millingOf(rough[3]).outline->corners[0].x > millingOf(rough[0]).outline->corners[0].x + 2.9 * 3 * tanDeg(20) - kTol);
     }
 
     void theta2DefaultsToTheta1()
@@ -130,19 +130,19 @@ private slots:
 
         const Step& pilot = steps[0];
         QVERIFY(pilot.kind == StepKind::PilotHole && pilot.machiningType == MachiningType::PilotHole);
-        QVERIFY(distance(pilot.position, {(floorLeft + floorRight) / 2, 65}) < kTol);
-        QVERIFY(std::abs(pilot.cutDepth - 11) < kTol && pilot.startDepth == 0);
+        QVERIFY(distance(millingOf(pilot).position, {(floorLeft + floorRight) / 2, 65}) < kTol);
+        QVERIFY(std::abs(millingOf(pilot).cutDepth - 11) < kTol && millingOf(pilot).startDepth == 0);
 
         const Step& floor = steps[5];
         QVERIFY(floor.kind == StepKind::FloorFinishing);
-        QVERIFY(distance(floor.outline->corners[0], {floorLeft + 0.3, 40.3}) < kTol);
-        QVERIFY(distance(floor.outline->corners[2], {floorRight - 0.3, 89.7}) < kTol);
-        QVERIFY(std::abs(floor.startDepth - 11.8) < kTol && std::abs(floor.cutDepth - 12) < kTol);
+        QVERIFY(distance(millingOf(floor).outline->corners[0], {floorLeft + 0.3, 40.3}) < kTol);
+        QVERIFY(distance(millingOf(floor).outline->corners[2], {floorRight - 0.3, 89.7}) < kTol);
+        QVERIFY(std::abs(millingOf(floor).startDepth - 11.8) < kTol && std::abs(millingOf(floor).cutDepth - 12) < kTol);
 
         const Step& wall = steps[6];
         QVERIFY(wall.kind == StepKind::WallFinishing && wall.machiningType == MachiningType::WallFinishing);
-        QVERIFY(distance(wall.outline->corners[1], {floorRight, 40}) < kTol && wall.outline->cornerRadius == 5);
-        QVERIFY(wall.startDepth == 0 && std::abs(wall.cutDepth - 12) < kTol && wall.wallAllowance == 0);
+        QVERIFY(distance(millingOf(wall).outline->corners[1], {floorRight, 40}) < kTol && millingOf(wall).outline->cornerRadius == 5);
+        QVERIFY(millingOf(wall).startDepth == 0 && std::abs(millingOf(wall).cutDepth - 12) < kTol && millingOf(wall).wallAllowance == 0);
 
         const Step& one = steps[7];
         const Step& two = steps[8];
@@ -159,7 +159,7 @@ private slots:
         QCOMPARE(oneFace.scallop, 0.02);
         QCOMPARE(twoFace.scallop, 0.02);
         for (const Step* s : {&one, &two}) {
-            QVERIFY(s->startDepth == 0 && std::abs(s->cutDepth - 12) < kTol);
+            QVERIFY(millingOf(*s).startDepth == 0 && std::abs(millingOf(*s).cutDepth - 12) < kTol);
             QVERIFY(s->machiningType == MachiningType::InclinedFaceFinishing);
         }
     }
@@ -184,7 +184,7 @@ private slots:
         QCOMPARE(inclined[0].payload.as<InclinedFace>().angle, 25.0);
         QCOMPARE(inclined[0].number, 1);
         const auto wall = ofKind(steps, StepKind::WallFinishing);
-        QVERIFY(std::abs(wall[0].outline->corners[0].x - 30) < kTol);
+        QVERIFY(std::abs(millingOf(wall[0]).outline->corners[0].x - 30) < kTol);
     }
 };
 

@@ -137,27 +137,28 @@ private slots:
             QVERIFY2(a.machiningType == e.type, where);
             QCOMPARE(a.unit, 4);
             QCOMPARE(a.module, std::string("M4"));
-            QVERIFY2(std::abs(a.startDepth - e.start) < kTol, where);
-            QVERIFY2(std::abs(a.cutDepth - e.cut) < kTol, where);
-            QVERIFY2(std::abs(a.wallTaper - e.taper) < kTol, where);
-            QVERIFY2(std::abs(a.wallAllowance - e.wallLeft) < kTol, where);
-            QVERIFY2(std::abs(a.floorAllowance - e.floorLeft) < kTol, where);
-            QCOMPARE(a.multiIncision, e.multi);
-            QVERIFY(!a.tool && !a.path && !a.minutes && a.payload.empty());
-            QCOMPARE(a.outline.has_value(), e.hasOutline);
+            QVERIFY2(std::abs(millingOf(a).startDepth - e.start) < kTol, where);
+            QVERIFY2(std::abs(millingOf(a).cutDepth - e.cut) < kTol, where);
+            QVERIFY2(std::abs(millingOf(a).wallTaper - e.taper) < kTol, where);
+            QVERIFY2(std::abs(millingOf(a).wallAllowance - e.wallLeft) < kTol, where);
+            QVERIFY2(std::abs(millingOf(a).floorAllowance - e.floorLeft) < kTol, where);
+            QCOMPARE(millingOf(a).multiIncision, e.multi);
+            QVERIFY(!a.tool && !a.path && !a.minutes);
+            QVERIFY(a.payload.getIf<MillingGeometry>());  // an M4 step holds its geometry alone
+            QCOMPARE(millingOf(a).outline.has_value(), e.hasOutline);
             if (!e.hasOutline) {
                 // Pilot hole at the mean of the four typed corners.
                 const double cx = (s.typed[0].x + s.typed[1].x + s.typed[2].x + s.typed[3].x) / 4;
                 const double cy = (s.typed[0].y + s.typed[1].y + s.typed[2].y + s.typed[3].y) / 4;
-                QVERIFY2(std::abs(a.position.x - cx) < kTol && std::abs(a.position.y - cy) < kTol, where);
+                QVERIFY2(std::abs(millingOf(a).position.x - cx) < kTol && std::abs(millingOf(a).position.y - cy) < kTol, where);
                 continue;
             }
             const auto corners = movedSides(s.ccw, e.inward);
             for (std::size_t c = 0; c < 4; ++c)
-                QVERIFY2(distance(a.outline->corners[c], corners[c]) < kTol, where + " corner " + QByteArray::number(int(c)));
-            QVERIFY2(std::abs(a.outline->cornerRadius - e.radius) < kTol, where);
+                QVERIFY2(distance(millingOf(a).outline->corners[c], corners[c]) < kTol, where + " corner " + QByteArray::number(int(c)));
+            QVERIFY2(std::abs(millingOf(a).outline->cornerRadius - e.radius) < kTol, where);
             const Point2 mean = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
-            QVERIFY2(distance(a.position, mean) < kTol, where);
+            QVERIFY2(distance(millingOf(a).position, mean) < kTol, where);
         }
     }
 
@@ -172,16 +173,16 @@ private slots:
         p.wallFinish = 3;
         const auto steps = decomposeM4(p, kTech, 0);
         QCOMPARE(steps.size(), std::size_t(5));  // pilot, roughing, floor, semi-finish, final
-        QCOMPARE(steps[0].position, (Point2{60, 50}));
-        QVERIFY(std::abs(steps[0].cutDepth - 11.0) < kTol);
-        const Quad& rough = *steps[1].outline;
+        QCOMPARE(millingOf(steps[0]).position, (Point2{60, 50}));
+        QVERIFY(std::abs(millingOf(steps[0]).cutDepth - 11.0) < kTol);
+        const Quad& rough = *millingOf(steps[1]).outline;
         QVERIFY(distance(rough.corners[0], {10.3, 20.3}) < kTol && distance(rough.corners[2], {109.7, 79.7}) < kTol);
-        QVERIFY(std::abs(rough.cornerRadius - 7.7) < kTol && std::abs(steps[1].cutDepth - 11.8) < kTol);
-        QVERIFY(std::abs(steps[2].startDepth - 11.8) < kTol && std::abs(steps[2].cutDepth - 12.0) < kTol);
-        QVERIFY(distance(steps[3].outline->corners[1], {109.9, 20.1}) < kTol);
-        QVERIFY(std::abs(steps[3].outline->cornerRadius - 7.9) < kTol);
-        QCOMPARE(steps[4].outline->corners, kShapes[0].ccw);  // the final pass runs exactly on the typed corners
-        QCOMPARE(steps[4].outline->cornerRadius, 8.0);
+        QVERIFY(std::abs(rough.cornerRadius - 7.7) < kTol && std::abs(millingOf(steps[1]).cutDepth - 11.8) < kTol);
+        QVERIFY(std::abs(millingOf(steps[2]).startDepth - 11.8) < kTol && std::abs(millingOf(steps[2]).cutDepth - 12.0) < kTol);
+        QVERIFY(distance(millingOf(steps[3]).outline->corners[1], {109.9, 20.1}) < kTol);
+        QVERIFY(std::abs(millingOf(steps[3]).outline->cornerRadius - 7.9) < kTol);
+        QCOMPARE(millingOf(steps[4]).outline->corners, kShapes[0].ccw);  // the final pass runs exactly on the typed corners
+        QCOMPARE(millingOf(steps[4]).outline->cornerRadius, 8.0);
         QCOMPARE(steps[4].label(), std::string("Wall finishing II"));
     }
 
@@ -196,12 +197,12 @@ private slots:
         p.taper = 5;
         const auto steps = decomposeM4(p, kTech, 0);
         const double inward = 11.8 * 0.087488663525924 + 0.3;
-        QVERIFY(distance(steps[1].outline->corners[0], {10 + inward, 20 + inward}) < kTol);
+        QVERIFY(distance(millingOf(steps[1]).outline->corners[0], {10 + inward, 20 + inward}) < kTol);
         // Its wall at the roughing depth is alpha2 away from the finished wall there.
         const double wallAtRoughDepth = 10 + 11.8 * std::tan(5 * std::numbers::pi / 180);
-        QVERIFY(std::abs(steps[1].outline->corners[0].x - wallAtRoughDepth - 0.3) < kTol);
-        QCOMPARE(steps.back().wallTaper, 5.0);
-        QCOMPARE(steps.back().outline->corners, kShapes[0].ccw);  // tapered steps carry the top outline
+        QVERIFY(std::abs(millingOf(steps[1]).outline->corners[0].x - wallAtRoughDepth - 0.3) < kTol);
+        QCOMPARE(millingOf(steps.back()).wallTaper, 5.0);
+        QCOMPARE(millingOf(steps.back()).outline->corners, kShapes[0].ccw);  // tapered steps carry the top outline
     }
 };
 

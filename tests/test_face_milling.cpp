@@ -98,18 +98,18 @@ private slots:
         QCOMPARE(finish.machiningType, MachiningType::FaceFinishing);
         QCOMPARE(rough.label(), std::string("Face milling I"));
         QCOMPARE(finish.label(), std::string("Face milling II"));
-        QCOMPARE(rough.startDepth, 0.0);
-        QVERIFY(std::abs(rough.cutDepth - 1.3) < 1e-12 && std::abs(rough.floorAllowance - 0.2) < 1e-12);
-        QVERIFY(std::abs(finish.startDepth - 1.3) < 1e-12);
-        QCOMPARE(finish.cutDepth, 1.5);
-        QCOMPARE(finish.floorAllowance, 0.0);
+        QCOMPARE(millingOf(rough).startDepth, 0.0);
+        QVERIFY(std::abs(millingOf(rough).cutDepth - 1.3) < 1e-12 && std::abs(millingOf(rough).floorAllowance - 0.2) < 1e-12);
+        QVERIFY(std::abs(millingOf(finish).startDepth - 1.3) < 1e-12);
+        QCOMPARE(millingOf(finish).cutDepth, 1.5);
+        QCOMPARE(millingOf(finish).floorAllowance, 0.0);
         for (const Step& s : p.steps) {
             QCOMPARE(s.tool->toolId, 60);  // the library's one face mill
             QVERIFY(s.payload.as<FacePasses>().zigzag);
             QCOMPARE(s.payload.as<FacePasses>().angle, 0.0);
-            QCOMPARE(s.stepOver.value(), 0.75);
-            QVERIFY(s.outline);
-            const auto& c = s.outline->corners;
+            QCOMPARE(millingOf(s).stepOver.value(), 0.75);
+            QVERIFY(millingOf(s).outline);
+            const auto& c = millingOf(s).outline->corners;
             QVERIFY(c[0] == (Point2{0, 0}) && c[1] == (Point2{160, 0}) && c[2] == (Point2{160, 100}) && c[3] == (Point2{0, 100}));
             // Its time is estimated; the move budget's guess is not short of the path.
             QVERIFY(s.minutes && *s.minutes > 0.0);
@@ -129,27 +129,27 @@ private slots:
         for (int k = 0; k < 4; ++k) {
             const Step& s = p.steps[static_cast<std::size_t>(k)];
             QCOMPARE(s.number, k + 1);
-            QVERIFY2(std::abs(s.cutDepth - cuts[k]) < 1e-12 && std::abs(s.startDepth - from) < 1e-12,
-                     qPrintable(QString("layer %1: %2 to %3").arg(k + 1).arg(s.startDepth).arg(s.cutDepth)));
-            QVERIFY(std::abs(s.floorAllowance - (14.0 - cuts[k])) < 1e-12);
+            QVERIFY2(std::abs(millingOf(s).cutDepth - cuts[k]) < 1e-12 && std::abs(millingOf(s).startDepth - from) < 1e-12,
+                     qPrintable(QString("layer %1: %2 to %3").arg(k + 1).arg(millingOf(s).startDepth).arg(millingOf(s).cutDepth)));
+            QVERIFY(std::abs(millingOf(s).floorAllowance - (14.0 - cuts[k])) < 1e-12);
             QCOMPARE(s.machiningType, k == 3 ? MachiningType::FaceFinishing : MachiningType::FaceMilling);
             QVERIFY(!s.payload.as<FacePasses>().zigzag);  // one way unless asked
-            from = s.cutDepth;
+            from = millingOf(s).cutDepth;
         }
         // A pinned 20 mm end mill cuts γ·D = 10 a layer (its flutes 50): 13.5 in two of 6.75.
         const Plan e = plan(R"({"module": "FACE", "depth": 14, "finish": 0.5, "tools": {"face": 30}})");
         QVERIFY2(e.ok(), messages(e.diagnostics).c_str());
         QCOMPARE(e.steps.size(), std::size_t{3});
-        QCOMPARE(e.steps[0].cutDepth, 6.75);
+        QCOMPARE(millingOf(e.steps[0]).cutDepth, 6.75);
         QCOMPARE(e.steps[0].tool->reason.str(), std::string("pinned by the operator"));
-        QCOMPARE(e.steps[0].stepOver.value(), 0.45);  // an end mill: the technology's step-over
+        QCOMPARE(millingOf(e.steps[0]).stepOver.value(), 0.45);  // an end mill: the technology's step-over
         // Roughing only (U9): the layers stop at depth - finish and leave it.
         const Plan r = plan(R"({"module": "FACE", "depth": 3, "U": 9, "finish": 0.4, "stepOver": 0.6})");
         QVERIFY2(r.ok(), messages(r.diagnostics).c_str());
         QCOMPARE(r.steps.size(), std::size_t{1});
-        QVERIFY(std::abs(r.steps[0].cutDepth - 2.6) < 1e-12 && std::abs(r.steps[0].floorAllowance - 0.4) < 1e-12);
+        QVERIFY(std::abs(millingOf(r.steps[0]).cutDepth - 2.6) < 1e-12 && std::abs(millingOf(r.steps[0]).floorAllowance - 0.4) < 1e-12);
         QCOMPARE(r.steps[0].machiningType, MachiningType::FaceMilling);
-        QCOMPARE(r.steps[0].stepOver.value(), 0.6);
+        QCOMPARE(millingOf(r.steps[0]).stepOver.value(), 0.6);
     }
 
     void largestFaceMillElseLargestEndMill()
@@ -356,7 +356,7 @@ private slots:
             ++faceSteps;
         QVERIFY(faceSteps >= 2);
         for (std::size_t i = static_cast<std::size_t>(faceSteps); i < p.steps.size(); ++i) QVERIFY(p.steps[i].unit != faceUnit);
-        QCOMPARE(p.steps[static_cast<std::size_t>(faceSteps - 1)].cutDepth, face.depth);
+        QCOMPARE(millingOf(p.steps[static_cast<std::size_t>(faceSteps - 1)]).cutDepth, face.depth);
         const Tool& tool = *p.tool(p.steps[0].tool->toolId);
         const double R = tool.radius();
 
@@ -365,7 +365,7 @@ private slots:
         for (const CanonMove& m : r.moves) {
             if (m.step < 1 || m.step > faceSteps) continue;
             const Step& s = p.steps[static_cast<std::size_t>(m.step - 1)];
-            const double layer = -s.cutDepth;
+            const double layer = -millingOf(s).cutDepth;
             const bool atLayer = std::abs(m.start.z - layer) < kTol && std::abs(m.end.z - layer) < kTol;
             QVERIFY2(m.kind != CanonMove::Arc, qPrintable("an arc in a face: " + where(m)));
             deepest[m.step] = std::min(deepest.count(m.step) ? deepest[m.step] : 0.0, std::min(m.start.z, m.end.z));
@@ -391,7 +391,7 @@ private slots:
         // Each layer at its depth, the last at -depth, to 1 µm.
         for (int k = 1; k <= faceSteps; ++k) {
             const Step& s = p.steps[static_cast<std::size_t>(k - 1)];
-            QVERIFY2(std::abs(deepest[k] + s.cutDepth) < kTol, qPrintable(QString("layer %1 reaches %2").arg(k).arg(deepest[k])));
+            QVERIFY2(std::abs(deepest[k] + millingOf(s).cutDepth) < kTol, qPrintable(QString("layer %1 reaches %2").arg(k).arg(deepest[k])));
         }
         QVERIFY(std::abs(deepest[faceSteps] + face.depth) < kTol);
         // Every point of the face (1 mm grid, edges and corners) within R of a

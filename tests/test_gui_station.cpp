@@ -270,8 +270,8 @@ private slots:
             QCOMPARE(b.steps[i].kind, a.steps[i].kind);
             QCOMPARE(b.steps[i].unit, a.steps[i].unit);
             QCOMPARE(b.steps[i].tool->toolId, a.steps[i].tool->toolId);
-            QVERIFY(std::abs(b.steps[i].cutDepth - a.steps[i].cutDepth) < 1e-9);
-            QVERIFY(std::abs(b.steps[i].startDepth - a.steps[i].startDepth) < 1e-9);
+            QVERIFY(std::abs(millingOf(b.steps[i]).cutDepth - millingOf(a.steps[i]).cutDepth) < 1e-9);
+            QVERIFY(std::abs(millingOf(b.steps[i]).startDepth - millingOf(a.steps[i]).startDepth) < 1e-9);
         }
         QCOMPARE(convertLengthUnit(in, LengthUnit::Millimetre), mm);
     }

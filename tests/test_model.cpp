@@ -208,7 +208,7 @@ private slots:
         QVERIFY(d == a && &std::as_const(d).as<M4Pocket>() != &a.as<M4Pocket>());
     }
 
-    // A step's outline, region and path are optionals on the heap
+    // A step's path and its geometry's outline and region are optionals on the heap
     // (model/boxed.h): copied and compared by value, value() refuses when
     // there is none, and absent they cost a pointer.
     void boxedIsAnOptionalOnTheHeap()
@@ -229,8 +229,8 @@ private slots:
         b.reset();
         QCOMPARE(b.value_or(Quad{{}, 3}).cornerRadius, 3.0);
         Step s;
-        QVERIFY(!s.outline && !s.region && !s.path);
-        QVERIFY(sizeof(s.outline) == sizeof(void*) && sizeof(s.path) == sizeof(void*));
+        QVERIFY(!millingOf(s).outline && !millingOf(s).region && !s.path);
+        QVERIFY(sizeof(millingOf(s).outline) == sizeof(void*) && sizeof(s.path) == sizeof(void*));
     }
 
     // A tool's reason is one shared text: a pool makes equal texts made

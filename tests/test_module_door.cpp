@@ -11,6 +11,7 @@
 #include "model/turn_path.h"
 #include "modules/face/face.h"
 #include "modules/inclined_face.h"
+#include "modules/side/side.h"
 #include "modules/registry.h"
 #include "post/post.h"
 #include "support/hand_plan.h"
@@ -176,6 +177,61 @@ private slots:
         QCOMPARE(QString::fromStdString(turnOf(turned)->region), QString("E1"));
         qInfo("sizeof(Step) %zu bytes (its payload %zu, a TurnStep on the heap %zu, an InclinedFace %zu)", sizeof(Step),
               sizeof(StepPayload), sizeof(TurnStep), sizeof(InclinedFace));
+    }
+
+    // A step holds what every stage reads of every step; a milling step's
+    // geometry (outline or region, depths, allowances, ...) is its payload:
+    // alone (a pocket's) or as the member `milling` of its module's own data
+    // (SIDE's passes). A turning step has none: millingOf gives it an empty
+    // one, and filling one in is a bug. A changed copy leaves the original.
+    void millingGeometryIsThePayload()
+    {
+        QString code = QString::fromStdString(test::readFile(test::sourcePath("core/model/step.h")));
+        code.remove(QRegularExpression("//[^\n]*"));
+        const qsizetype from = code.indexOf("struct Step {"), to = code.indexOf("\n};", from);
+        QVERIFY(from >= 0 && to > from);
+        const QString members = code.mid(from, to - from);
+        for (const char* name : {"outline", "region", "reach", "inscribed", "position", "holeDiameter", "startDepth",
+                                 "cutDepth", "wallTaper", "wallAllowance", "floorAllowance", "multiIncision", "stepOver"})
+            QVERIFY2(!members.contains(QRegularExpression(QString("\\b%1\\b").arg(name))),
+                     qPrintable(QString("Step names %1, a milling step's geometry").arg(name)));
+
+        int milled = 0, turned = 0;
+        for (const char* sample : {"plate.taiwa", "m2d-standard.taiwa", "cp-islands.taiwa", "side-boss.taiwa", "face-top.taiwa",
+                                   "holes-grid.taiwa", "area-drawn-passes.taiwa", "surface-cover.taiwa", "lathe-turned-shaft.taiwa"}) {
+            const Plan plan = test::samplePlan(sample);
+            QVERIFY2(plan.ok(), sample);
+            for (const Step& s : plan.steps) {
+                const QByteArray where = QByteArray(sample) + ": " + QByteArray::fromStdString(s.label());
+                if (turnOf(s)) {
+                    ++turned;
+                    QVERIFY2(!s.payload.milling() && millingOf(s) == MillingGeometry{}, where);
+                    continue;
+                }
+                ++milled;
+                QVERIFY2(s.payload.milling() == &millingOf(s), where);
+                QVERIFY2(millingOf(s).cutDepth > millingOf(s).startDepth, where);
+            }
+        }
+        QVERIFY(milled >= 20 && turned >= 3);
+
+        const Plan side = test::samplePlan("side-boss.taiwa");
+        QVERIFY(side.ok());
+        const Step& s = side.steps.front();
+        const auto* passes = s.payload.getIf<SidePasses>();
+        QVERIFY(passes && &passes->milling == &millingOf(s));
+        Step copy = s;
+        editMilling(copy).cutDepth += 1.0;
+        QCOMPARE(millingOf(copy).cutDepth, millingOf(s).cutDepth + 1.0);
+        QVERIFY(copy.payload.getIf<SidePasses>() && copy.payload.getIf<SidePasses>()->offsets == passes->offsets);
+        QVERIFY(!(copy == s));
+
+        Step fresh;
+        editMilling(fresh).cutDepth = 2.0;
+        QVERIFY(fresh.payload.getIf<MillingGeometry>() && millingOf(fresh).cutDepth == 2.0);
+        Step lathe = test::samplePlan("lathe-turned-shaft.taiwa").steps.front();
+        QVERIFY(turnOf(lathe));
+        QVERIFY_THROWS_EXCEPTION(std::logic_error, editMilling(lathe));
     }
 
     // Each module makes its own steps' paths; one that has none to make

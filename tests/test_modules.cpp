@@ -155,7 +155,7 @@ private slots:
             const Plan b = planJob(fine, TechnologyTable::builtIn(), defaultToolLibrary());
             QVERIFY2(a.ok() && b.ok(), k->name());
             for (const Step& s : b.steps)
-                if (roughing(s)) QCOMPARE(s.stepOver, std::optional<double>(0.1));
+                if (roughing(s)) QCOMPARE(millingOf(s).stepOver, std::optional<double>(0.1));
             QVERIFY2(roughingMoves(b) > roughingMoves(a), k->name());
             const JobReadResult back = readJob(writeJob(fine));
             QVERIFY(back.job && *back.job == fine);

@@ -59,7 +59,7 @@ std::optional<Point3> feedPointOf(const Plan& plan, const Step& step)
     for (const Move& m : step.path->moves) {
         const Point3 to = m.end;
         const Point3 mid{(from.x + to.x) / 2, (from.y + to.y) / 2, to.z};
-        if (m.kind == MoveKind::Feed && std::abs(from.z - to.z) < 1e-6 && std::abs(to.z + step.cutDepth) < 1e-6 &&
+        if (m.kind == MoveKind::Feed && std::abs(from.z - to.z) < 1e-6 && std::abs(to.z + millingOf(step).cutDepth) < 1e-6 &&
             std::hypot(to.x - from.x, to.y - from.y) > 5 &&
             std::hypot(mid.x - step.path->start.x, mid.y - step.path->start.y) > tool->diameter)
             return mid;
@@ -565,10 +565,10 @@ private slots:
         const auto feed = feedPointOf(plan, *rough);
         QVERIFY(feed);
         QVERIFY(colourNear(top, s.toPixel(*feed, w, h), palette::kFeed));
-        const auto pc = s.toPixel({rough->position.x, rough->position.y, 0}, w, h);
+        const auto pc = s.toPixel({millingOf(*rough).position.x, millingOf(*rough).position.y, 0}, w, h);
         QVERIFY(!near(top.pixel(int(pc[0]), int(pc[1])), palette::kBackground, 8));
         // The finished pocket's outline (middle of its first side): the outline colour.
-        const auto& q = rough->outline->corners;
+        const auto& q = millingOf(*rough).outline->corners;
         QVERIFY(colourNear(top, s.toPixel({(q[0].x + q[1].x) / 2, (q[0].y + q[1].y) / 2, 0}, w, h), palette::kPartEdges));
 
         o.view = ViewPreset::Iso;

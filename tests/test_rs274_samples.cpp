@@ -170,7 +170,7 @@ private slots:
                 // Rapids below the stock top only straight down into air: above
                 // the step's start depth, or into a hole this step already fed.
                 if (m.end.z < -kTol) {
-                    const bool aboveStart = m.end.z >= -s.startDepth - kTol && gouge(module, tool, m.end) <= kTol;
+                    const bool aboveStart = m.end.z >= -millingOf(s).startDepth - kTol && gouge(module, tool, m.end) <= kTol;
                     const auto& pts = fed[static_cast<std::size_t>(m.step)];
                     const bool intoCut = std::any_of(pts.begin(), pts.end(), [&](const Point3& p) {
                         return std::abs(p.x - m.end.x) < kTol && std::abs(p.y - m.end.y) < kTol && p.z <= m.end.z + kTol;
@@ -202,8 +202,8 @@ private slots:
             const double T = pocketDepth(module);
             const QString name = QString("step %1 %2").arg(k).arg(QString::fromStdString(s.label()));
             QVERIFY2(deepest.count(k), qPrintable(name + " cuts nothing"));
-            QVERIFY2(std::abs(deepest[k] + s.cutDepth) < kTol,
-                     qPrintable(name + QString(" reaches %1, not %2").arg(deepest[k]).arg(-s.cutDepth)));
+            QVERIFY2(std::abs(deepest[k] + millingOf(s).cutDepth) < kTol,
+                     qPrintable(name + QString(" reaches %1, not %2").arg(deepest[k]).arg(-millingOf(s).cutDepth)));
             if (s.kind == StepKind::FloorFinishing || s.kind == StepKind::WallFinishing ||
                 s.kind == StepKind::InclinedFaceFinishing)
                 QVERIFY2(std::abs(deepest[k] + T) < kTol, qPrintable(name + " does not reach the floor at -T"));

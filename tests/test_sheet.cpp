@@ -102,7 +102,7 @@ private slots:
                 "<tr><td class=n>{}</td><td>{} {}</td><td>{}</td><td>{}</td><td class=n>{}</td><td class=n>{}</td><td>{}</td>"
                 "<td class=n>{:.0f}</td><td class=n>{:.0f}</td><td class=n>{:.3f}</td><td class=n>{:.3f}</td>",
                 i + 1, s.unit + 1, plan.job.units[static_cast<std::size_t>(s.unit)].name, s.module, s.label(), t.id, t.id,
-                t.name, sf->rpm, sf->feed, s.startDepth, s.cutDepth));
+                t.name, sf->rpm, sf->feed, millingOf(s).startDepth, millingOf(s).cutDepth));
             QVERIFY2(html.contains(row), qPrintable(row));
         }
         for (const auto& t : plan.tools) QVERIFY(html.contains(QString::fromStdString(t.holder)));
@@ -140,10 +140,10 @@ private slots:
         s.module = "M4";
         s.kind = StepKind::Roughing;
         s.number = 2;
-        s.startDepth = 4;
-        s.cutDepth = 7.5;
-        s.wallAllowance = 0.3;
-        s.floorAllowance = 0.2;
+        editMilling(s).startDepth = 4;
+        editMilling(s).cutDepth = 7.5;
+        editMilling(s).wallAllowance = 0.3;
+        editMilling(s).floorAllowance = 0.2;
         s.tool = ToolChoice{27, "why"};
         ToolPath path;
         path.start = {0, 0, 5};

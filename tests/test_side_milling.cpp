@@ -263,8 +263,8 @@ private slots:
         QCOMPARE(finish.payload.as<SidePasses>().offsets, std::vector<double>{0.0});
         QVERIFY(rough.payload.as<SidePasses>().toolOnLeft);  // climb
         QVERIFY(near(rough.payload.as<SidePasses>().contour.start(), {-15, 72}));  // run as drawn: tool left of K1, climb
-        QVERIFY(!finish.multiIncision);
-        QCOMPARE(rough.cutDepth, 12.0);
+        QVERIFY(!millingOf(finish).multiIncision);
+        QCOMPARE(millingOf(rough).cutDepth, 12.0);
 
         const Plan boss = planJob(sampleJob("side-boss.taiwa"), TechnologyTable::builtIn(), defaultToolLibrary(), stepsOnly);
         QVERIFY2(boss.ok(), messages(boss.diagnostics).c_str());
@@ -272,7 +272,7 @@ private slots:
         QVERIFY(!boss.steps[0].payload.as<SidePasses>().toolOnLeft);  // conventional: the tool on the right of its travel
         QVERIFY(signedArea(boss.steps[0].payload.as<SidePasses>().contour) > 0);  // round the boss counter-clockwise
         QCOMPARE(boss.steps[0].tool->toolId, 31);                // Ø25: nothing limits it outside the boss
-        QVERIFY(boss.steps[1].multiIncision);                    // F2
+        QVERIFY(millingOf(boss.steps[1]).multiIncision);                    // F2
     }
 
     void refusals_data()
@@ -504,7 +504,7 @@ private slots:
             const Tool& tool = *plan.tool(s.tool->toolId);
             const double R = tool.radius();
             // Layers and incisions of at most γ·D, equal, the last at T.
-            const int count = s.multiIncision ? static_cast<int>(std::ceil(T / (plan.technology.gamma * tool.diameter) - 1e-9)) : 1;
+            const int count = millingOf(s).multiIncision ? static_cast<int>(std::ceil(T / (plan.technology.gamma * tool.diameter) - 1e-9)) : 1;
             std::set<long> want;
             for (int i = 1; i <= count; ++i) want.insert(std::lround(T * i / count * 1000));
             QCOMPARE(levels[n], want);

@@ -108,12 +108,12 @@ private slots:
     void aPilotHoleAskedWiderGetsAWiderDrill()
     {
         auto steps = decomposeM4(pocket(6), tech(), 0);
-        steps[0].holeDiameter = 11;
+        editMilling(steps[0]).holeDiameter = 11;
         QVERIFY(chooseTools(steps, {}, lib(), "aluminium-6061").empty());
         // The smallest library drill not smaller than asked: the 11.8 mm
         // pre-drill of the reamers (the hole tools of schema 6).
         QCOMPARE(tool(steps[0].tool->toolId).diameter, 11.8);
-        QCOMPARE(steps[0].holeDiameter, 11.8);
+        QCOMPARE(millingOf(steps[0]).holeDiameter, 11.8);
     }
 
     void deepRoughingFallsBackToShortFlutesThatReach()

@@ -56,7 +56,7 @@ ToolPath atHeight(const ToolPath& p, double z)
 bool rapidsStayInAir(const ToolPath& p, const Step& s)
 {
     return std::all_of(p.moves.begin(), p.moves.end(), [&](const Move& m) {
-        return m.kind != MoveKind::Rapid || m.end.z >= -s.startDepth + kParams.clearance - 1e-12;
+        return m.kind != MoveKind::Rapid || m.end.z >= -millingOf(s).startDepth + kParams.clearance - 1e-12;
     });
 }
 
@@ -238,7 +238,7 @@ private slots:
         const Quad outline = rectangle(80, 50, 4);
         const Tool tool = makeTool(ToolType::FlatEndMill, 8);
         Step s = makePocketStep(StepKind::Roughing, outline, 0, 9);
-        s.holeDiameter = 8;
+        editMilling(s).holeDiameter = 8;
         const auto count = [](const ToolPath& p, FeedKind k) {
             return std::count_if(p.moves.begin(), p.moves.end(), [&](const Move& m) { return isCut(m) && m.feed == k; });
         };
@@ -246,14 +246,14 @@ private slots:
         QCOMPARE(count(p, FeedKind::Ramp), 0);
         for (const auto& q : cuttingPieces(p))
             if (q.move.feed == FeedKind::Plunge) {
-                QCOMPARE(q.move.end.x, s.position.x);
-                QCOMPARE(q.move.end.y, s.position.y);
+                QCOMPARE(q.move.end.x, millingOf(s).position.x);
+                QCOMPARE(q.move.end.y, millingOf(s).position.y);
             }
         QCOMPARE(count(p, FeedKind::Plunge), 3);  // one per layer (9 mm, 4 mm layers)
 
         // A hole narrower than the tool, or none: a helix at the ramp angle.
         for (const double hole : {6.0, 0.0}) {
-            s.holeDiameter = hole;
+            editMilling(s).holeDiameter = hole;
             p = makeToolPath(s, tool, TechnologyData{}, kParams);
             QCOMPARE(count(p, FeedKind::Plunge), 0);
             QVERIFY(count(p, FeedKind::Ramp) > 3);
@@ -265,7 +265,7 @@ private slots:
         }
         // Floor finishing never uses the hole (roughing removed it).
         s.kind = StepKind::FloorFinishing;
-        s.holeDiameter = 8;
+        editMilling(s).holeDiameter = 8;
         QVERIFY(count(makeToolPath(s, tool, TechnologyData{}, kParams), FeedKind::Ramp) > 0);
     }
 
@@ -340,12 +340,12 @@ private slots:
         std::vector<std::pair<QString, Step>> steps;
         Step rough = makePocketStep(StepKind::Roughing, outline, 0, 9.8);
         steps.push_back({"roughing, helix or ramp", rough});
-        rough.holeDiameter = diameter;
+        editMilling(rough).holeDiameter = diameter;
         steps.push_back({"roughing, pilot hole", rough});
         steps.push_back({"floor finishing", makePocketStep(StepKind::FloorFinishing, outline, 9.8, 10)});
         Step wall = makePocketStep(StepKind::WallFinishing, outline, 0, 10);
         steps.push_back({"wall finishing", wall});
-        wall.multiIncision = true;
+        editMilling(wall).multiIncision = true;
         steps.push_back({"wall finishing, F = 2", wall});
         for (const auto& [name, step] : steps) {
             const ToolPath p = makeToolPath(step, tool, tech, kParams);

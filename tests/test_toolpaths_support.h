@@ -28,10 +28,10 @@ inline Step makePocketStep(StepKind kind, Quad outline, double start, double cut
     Step s;
     s.module = "M4";  // its door makes the path
     s.kind = kind;
-    s.outline = outline;
-    s.startDepth = start;
-    s.cutDepth = cut;
-    s.position = centroid(outline.corners);
+    editMilling(s).outline = outline;
+    editMilling(s).startDepth = start;
+    editMilling(s).cutDepth = cut;
+    editMilling(s).position = centroid(outline.corners);
     return s;
 }
 

@@ -110,7 +110,7 @@ private slots:
         TechnologyData tech;
         tech.gamma = gamma;
         Step s = makePocketStep(StepKind::WallFinishing, outline, 0, depth);
-        s.multiIncision = true;
+        editMilling(s).multiIncision = true;
         const ToolPath p = makeToolPath(s, tool, tech, kParams);
         const auto z = incisionDepths(p);
         QCOMPARE(static_cast<int>(z.size()), static_cast<int>(std::ceil(depth / (gamma * 12) - 1e-9)));
@@ -140,14 +140,14 @@ private slots:
         Tool t = makeTool(ToolType::TaperEndMill, 4);
         t.taperAngle = 5;
         Step s = makePocketStep(StepKind::WallFinishing, Quad{pocket.corners, 6}, 0, 10);
-        s.wallTaper = 5;
+        editMilling(s).wallTaper = 5;
         for (const bool multi : {false, true}) {
-            s.multiIncision = multi;
+            editMilling(s).multiIncision = multi;
             const ToolPath p = makeToolPath(s, t, TechnologyData{}, kParams);
             double worst = -1e9;
             for (const auto& q : feedPoints(p)) {
                 const double offset = 2 + (-q.z) * tanDeg(5);
-                QVERIFY(signedDistance(s.outline.value(), {q.x, q.y}) + offset <= 1e-6);
+                QVERIFY(signedDistance(millingOf(s).outline.value(), {q.x, q.y}) + offset <= 1e-6);
                 if (q.z < -1e-9) worst = std::max(worst, gouge(ModuleInput{pocket}, t, q));
             }
             QVERIFY2(worst <= 1e-3 && worst > -1e-3, qPrintable(QString::number(worst)));  // touches, no gouge
@@ -162,8 +162,8 @@ private slots:
         Step s;
         s.module = "M4";
         s.kind = StepKind::PilotHole;
-        s.position = {30, 20};
-        s.cutDepth = 11;
+        editMilling(s).position = {30, 20};
+        editMilling(s).cutDepth = 11;
         const Tool drill = makeTool(ToolType::Drill, 10);
         ToolPath p = makeToolPath(s, drill, TechnologyData{}, kParams);
         QCOMPARE(p.moves.size(), std::size_t(1));
@@ -173,9 +173,9 @@ private slots:
         QCOMPARE(p.moves[0].retractZ, kParams.clearance);
         QCOMPARE(p.moves[0].peck, 0.0);
         QCOMPARE(endOf(p).z, kParams.safeZ);  // G98: back to the start level
-        s.cutDepth = 30;                      // exactly 3 x D: still straight
+        editMilling(s).cutDepth = 30;                      // exactly 3 x D: still straight
         QCOMPARE(makeToolPath(s, drill, TechnologyData{}, kParams).moves[0].peck, 0.0);
-        s.cutDepth = 40;
+        editMilling(s).cutDepth = 40;
         QCOMPARE(makeToolPath(s, drill, TechnologyData{}, kParams).moves[0].peck, 10.0);
     }
 
@@ -192,9 +192,9 @@ private slots:
         Step s;
         s.module = "M2D";
         s.kind = StepKind::InclinedFaceFinishing;
-        s.cutDepth = 10;
         s.payload = InclinedFace{{{{0, 0}, {0, 40}}}, {{{run, 0}, {run, 40}}}, 20, 0.01};
-        s.outline = m2dCrossSection(pocket, 10);
+        editMilling(s).cutDepth = 10;
+        editMilling(s).outline = m2dCrossSection(pocket, 10);
         const Tool ball = makeTool(ToolType::BallEndMill, 6);
         const ToolPath p = makeToolPath(s, ball, TechnologyData{}, kParams);
         QCOMPARE(p.start.z, kParams.safeZ);

@@ -57,7 +57,7 @@ Plan planOf(double x0, double y0, double x1, double y1, double r, double T, cons
     Step s;
     s.module = "M4";
     s.kind = kind;
-    s.cutDepth = T;
+    editMilling(s).cutDepth = T;
     s.tool = ToolChoice{tool.id, "test"};
     s.path = std::move(path);
     plan.steps = {s};
@@ -416,7 +416,7 @@ private slots:
         }
         {  // the wall pass moved out by 0.1 mm: a gouge in the wall
             Plan p = clean;
-            const Point2 c = p.steps[wall].position;
+            const Point2 c = millingOf(p.steps[wall]).position;
             for (Move& m : p.steps[wall].path->moves) {
                 if (m.end.z >= 0) continue;
                 const Point2 d{m.end.x - c.x, m.end.y - c.y};

@@ -52,7 +52,7 @@ Plan pocketPlan(double depth, const std::vector<std::pair<Tool, ToolPath>>& step
         Step s;
         s.module = "M4";
         s.kind = StepKind::Roughing;
-        s.cutDepth = depth;
+        editMilling(s).cutDepth = depth;
         s.tool = ToolChoice{tool.id, "test"};
         s.path = path;
         plan.steps.push_back(s);

@@ -347,6 +347,7 @@ void StepPanel::showDetails(int index)
         return;
     }
     const Step& s = plan_->steps[static_cast<std::size_t>(index)];
+    const MillingGeometry& g = millingOf(s);
     const LengthUnit u = plan_->job.lengthUnit;
     QStringList lines;
     lines << tr("<b>%1</b> of unit %2 (%3), machining type %4")
@@ -355,23 +356,23 @@ void StepPanel::showDetails(int index)
                  .arg(QString::fromStdString(s.module))
                  .arg(static_cast<int>(s.machiningType));
     lines << tr("Air to %1, cuts to %2; leaves wall %3, floor %4")
-                 .arg(length(s.startDepth, u), length(s.cutDepth, u), length(s.wallAllowance, u),
-                      length(s.floorAllowance, u));
-    if (s.outline) {
+                 .arg(length(g.startDepth, u), length(g.cutDepth, u), length(g.wallAllowance, u),
+                      length(g.floorAllowance, u));
+    if (g.outline) {
         QStringList pts;
-        for (const Point2& p : s.outline->corners)
+        for (const Point2& p : g.outline->corners)
             pts << QStringLiteral("(%1, %2)").arg(formatNumber(std::round(fromMm(p.x, u) * 1e4) / 1e4),
                                                   formatNumber(std::round(fromMm(p.y, u) * 1e4) / 1e4));
-        lines << tr("Outline %1, r %2").arg(pts.join(' '), length(s.outline->cornerRadius, u));
+        lines << tr("Outline %1, r %2").arg(pts.join(' '), length(g.outline->cornerRadius, u));
     } else if (const InclinedFace* face = s.payload.getIf<InclinedFace>()) {
         lines << tr("Inclined face at %1° from the vertical, scallop %2")
                      .arg(formatNumber(face->angle), length(face->scallop, u));
     } else {
         lines << tr("At (%1, %2), Ø %3")
-                     .arg(formatNumber(std::round(fromMm(s.position.x, u) * 1e4) / 1e4),
-                          formatNumber(std::round(fromMm(s.position.y, u) * 1e4) / 1e4), length(s.holeDiameter, u));
+                     .arg(formatNumber(std::round(fromMm(g.position.x, u) * 1e4) / 1e4),
+                          formatNumber(std::round(fromMm(g.position.y, u) * 1e4) / 1e4), length(g.holeDiameter, u));
     }
-    if (s.wallTaper > 0) lines << tr("Wall taper %1° per side").arg(formatNumber(s.wallTaper));
+    if (g.wallTaper > 0) lines << tr("Wall taper %1° per side").arg(formatNumber(g.wallTaper));
     if (s.tool) {
         const Tool* t = plan_->tool(s.tool->toolId);
         knowToolNames(plan_->tools);  // a name the reason quotes, in the station's language

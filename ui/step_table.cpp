@@ -168,8 +168,8 @@ void StepTable::setPlan(const std::shared_ptr<const Plan>& plan)
             cell(r, Start, QStringLiteral("–"));
             cell(r, Depth, cut > 0 ? round(cut) : QStringLiteral("–"), cut > 0 ? tr("Depth of cut on the radius: of a pass; of a thread, the whole thread") : QString());
         } else {
-            cell(r, Start, round(s.startDepth));
-            cell(r, Depth, round(s.cutDepth));
+            cell(r, Start, round(millingOf(s).startDepth));
+            cell(r, Depth, round(millingOf(s).cutDepth));
         }
         cell(r, Time, s.minutes ? clockTime(*s.minutes) : QString());
     }

@@ -188,33 +188,35 @@ vtkSmartPointer<vtkPolyData> pocketOutlines(const std::vector<Step>& steps, Outl
 {
     std::map<int, const Step*> last;  // unit -> its last wall step
     for (const Step& s : steps) {
-        if (!s.outline || s.kind == StepKind::PilotHole || s.kind == StepKind::InclinedFaceFinishing) continue;
+        const MillingGeometry& g = millingOf(s);
+        if (!g.outline || s.kind == StepKind::PilotHole || s.kind == StepKind::InclinedFaceFinishing) continue;
         const Step*& best = last[s.unit];
-        if (!best || s.wallAllowance < best->wallAllowance - 1e-9 ||
-            (s.wallAllowance <= best->wallAllowance + 1e-9 && s.cutDepth > best->cutDepth))
+        if (!best || g.wallAllowance < millingOf(*best).wallAllowance - 1e-9 ||
+            (g.wallAllowance <= millingOf(*best).wallAllowance + 1e-9 && g.cutDepth > millingOf(*best).cutDepth))
             best = &s;
     }
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto lines = vtkSmartPointer<vtkCellArray>::New();
     OutlineCache made;
     for (const auto& [unit, s] : last) {
-        const Quad& top = *s->outline;
+        const MillingGeometry& g = millingOf(*s);
+        const Quad& top = *g.outline;
         OutlineCache::Entry* e = nullptr;
         if (cache)
             if (auto it = cache->units.find(unit);
-                it != cache->units.end() && it->second.top == top && it->second.depth == s->cutDepth && it->second.taper == s->wallTaper)
+                it != cache->units.end() && it->second.top == top && it->second.depth == g.cutDepth && it->second.taper == g.wallTaper)
                 e = &(made.units[unit] = std::move(it->second));
         if (!e) {
             e = &made.units[unit];
             e->top = top;
-            e->depth = s->cutDepth;
-            e->taper = s->wallTaper;
+            e->depth = g.cutDepth;
+            e->taper = g.wallTaper;
             e->topPoints = flatten(top, 0.01);
-            const double inset = s->wallTaper > 0 ? s->cutDepth * tanDeg(s->wallTaper) : 0.0;
+            const double inset = g.wallTaper > 0 ? g.cutDepth * tanDeg(g.wallTaper) : 0.0;
             e->floorPoints = inset > 0 ? flatten(offsetInward(top, inset), 0.01) : e->topPoints;
         }
         addRoundedQuad(points, lines, e->topPoints, 0.0);
-        addRoundedQuad(points, lines, e->floorPoints, -s->cutDepth);
+        addRoundedQuad(points, lines, e->floorPoints, -g.cutDepth);
     }
     if (cache) *cache = std::move(made);
     auto pd = vtkSmartPointer<vtkPolyData>::New();

@@ -37,6 +37,7 @@ nlohmann::ordered_json point(Point2 p, LengthUnit u) { return io::stepPoint(p, u
 
 nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
 {
+    const MillingGeometry& g = millingOf(s);
     nlohmann::ordered_json j;
     j["unit"] = s.unit + 1;
     j["module"] = s.module;
@@ -55,23 +56,23 @@ nlohmann::ordered_json stepJson(const Plan& plan, const Step& s, LengthUnit u)
         t["reason"] = s.tool->reason;
         j["tool"] = t;
     }
-    j["startDepth"] = out(s.startDepth, u);
-    j["cutDepth"] = out(s.cutDepth, u);
+    j["startDepth"] = out(g.startDepth, u);
+    j["cutDepth"] = out(g.cutDepth, u);
     if (s.machiningType == MachiningType::PilotHole) {
-        j["position"] = point(s.position, u);
+        j["position"] = point(g.position, u);
     }
-    if (s.outline) {
+    if (g.outline) {
         nlohmann::ordered_json o;
         o["corners"] = nlohmann::ordered_json::array();
-        for (const auto& c : s.outline->corners) o["corners"].push_back(point(c, u));
-        o["cornerRadius"] = out(s.outline->cornerRadius, u);
+        for (const auto& c : g.outline->corners) o["corners"].push_back(point(c, u));
+        o["cornerRadius"] = out(g.outline->cornerRadius, u);
         j["outline"] = o;
     }
     moduleKind(s).describeStep(s, u, j);  // the module's own data of the step
-    j["wallTaper"] = s.wallTaper;
-    j["wallAllowance"] = out(s.wallAllowance, u);
-    j["floorAllowance"] = out(s.floorAllowance, u);
-    if (s.multiIncision) j["multiIncision"] = true;
+    j["wallTaper"] = g.wallTaper;
+    j["wallAllowance"] = out(g.wallAllowance, u);
+    j["floorAllowance"] = out(g.floorAllowance, u);
+    if (g.multiIncision) j["multiIncision"] = true;
     if (s.path) {
         const PathLength len = pathLength(*s.path);
         j["pathLength"] = {{"feed", out(len.feed, u)}, {"rapid", out(len.rapid, u)}};

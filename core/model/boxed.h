@@ -1,7 +1,7 @@
 // An optional value kept on the heap: what std::optional<T> is to a step
 // (model/step.h), at the size of one pointer while it is absent. A step
-// carries its outline, its region and its tool path this way: a plan of
-// 100,000 units holds some 400,000 steps, most with only one of the
+// carries its tool path, its geometry its outline and region this way: a
+// plan of 100,000 units holds some 400,000 steps, most with one of the
 // three, and none with a path in `taiwa check`. The same value semantics
 // as std::optional — a copy is a copy, == compares the values, * and ->
 // reach the value, value() throws std::bad_optional_access when there is

@@ -1,9 +1,12 @@
-// Step kinds by name, and the label a step shows in lists and on the sheet.
+// Step kinds by name, the label a step shows in lists and on the sheet, and
+// a step's milling geometry (its payload's).
 #include "model/step.h"
 
 #include "model/translate_noop.h"
 
 #include <array>
+#include <stdexcept>
+#include <string>
 
 namespace taiwa {
 
@@ -82,6 +85,20 @@ std::string Step::label() const
         kind == StepKind::Reaming || kind == StepKind::Boring)
         return s;
     return s + " " + roman(number);
+}
+
+const MillingGeometry& millingOf(const Step& s)
+{
+    static const MillingGeometry kNone{};
+    const MillingGeometry* g = s.payload.milling();
+    return g ? *g : kNone;
+}
+
+MillingGeometry& editMilling(Step& s)
+{
+    if (s.payload.empty()) s.payload = MillingGeometry{};
+    if (MillingGeometry* g = s.payload.editMilling()) return *g;
+    throw std::logic_error(std::string("a step holding ") + s.payload.name() + " has no milling geometry");
 }
 
 }  // namespace taiwa

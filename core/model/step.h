@@ -1,15 +1,14 @@
 // A process step: one machining operation of one unit, as the decomposition
-// makes it (kind, number, outline, depths, allowances), later given its tool,
-// its tool path and its time by the tool-choice and CL stages. Step holds
-// what several modules or stages read; what one module alone makes and
-// reads (an inclined face of M2D, a turning step's path and speeds, SIDE's
-// passes, ...) is the step's payload (model/step_payload.h), a struct of
-// that module's.
+// makes it (kind, number, machining type, and what its module makes), later
+// given its tool, its cutting data, its tool path and its time by the
+// tool-choice and CL stages. Step holds what every stage reads of every
+// step; what the module makes (a milling step's outline, depths and
+// allowances, an inclined face of M2D, a turning step's path and speeds,
+// SIDE's passes, ...) is the step's payload (model/step_payload.h).
 #pragma once
 
 #include "model/boxed.h"
-#include "model/contour.h"
-#include "model/geometry.h"
+#include "model/milling_geometry.h"
 #include "model/step_payload.h"
 #include "model/technology.h"
 #include "model/tool.h"
@@ -99,38 +98,16 @@ struct Step {
     int number = 1;               // 1-based within the unit and kind: roughing I, II, ...
     MachiningType machiningType = MachiningType::Roughing;
 
-    // Geometry. Depths are positive, measured down from the top surface.
-    // Boundary the tool edge reaches (with its corner radius): at cutDepth for
-    // vertical walls; for tapered wall steps (wallTaper > 0) the outline at the
-    // top surface, the wall leaning inward by depth x tan(wallTaper) below it.
-    Boxed<Quad> outline{};  // (model/boxed.h: an optional on the heap)
-    // Steps of contour units (any outline, islands): the region whose
-    // boundary the tool edge reaches, instead of `outline`; and the largest
-    // tool radius that reaches every part of it (its narrowest channel and
-    // smallest inside corner radius).
-    Boxed<Region> region{};
-    double reach = 0.0;
-    double inscribed = 0.0;  // the radius of the largest circle in the region
-
-    Point2 position{};            // pilot hole centre; otherwise the outline's centroid
-    double holeDiameter = 0.0;    // pilot hole: the smallest diameter it must have (0 = not yet known); hole patterns: the diameter the step's tool makes
-    double startDepth = 0.0;      // above this depth everything is air (rapid)
-    double cutDepth = 0.0;        // deepest point the step cuts
-    double wallTaper = 0.0;       // degrees per side of the wall this step cuts
-    double wallAllowance = 0.0;   // left on the walls after this step
-    double floorAllowance = 0.0;  // left on the floor after this step
-    bool multiIncision = false;   // wall cut in several Z incisions (F = 2)
-    // Roughing: the unit's radial step-over as a fraction of the tool
-    // diameter, when the unit overrides the technology data's.
-    std::optional<double> stepOver{};
-    // What only the step's module makes (model/step_payload.h): SIDE's
-    // contour and passes, FACE's pass angle, AREA's drawn points, HOLES'
-    // centres, M2D's inclined face, SURFACE's paths; the struct lives in
-    // the module's folder (M2D's in modules/inclined_face.h, beside the
-    // pocket modules' shared code). A turning step's TurnStep
-    // (model/turn_path.h: side, speeds, the path in XZ; turnOf(step) reads
-    // it) is its payload too, and then `path` stays empty: milling's stages
-    // pass it by.
+    // What the step's module makes (model/step_payload.h): a milling step's
+    // geometry (model/milling_geometry.h: outline or region, position,
+    // depths, allowances, taper, step-over; millingOf(step) reads it), alone
+    // or with the module's own data — SIDE's contour and passes, FACE's pass
+    // angle, AREA's drawn points, HOLES' centres, M2D's inclined face,
+    // SURFACE's paths, each struct in its module's folder (M2D's in
+    // modules/inclined_face.h, beside the pocket modules' shared code). A
+    // turning step's TurnStep (model/turn_path.h: side, speeds, the path in
+    // XZ; turnOf(step) reads it) is its payload too, and then `path` stays
+    // empty: milling's stages pass it by.
     StepPayload payload{};
 
     // Filled by the later stages; absent until then, never faked.
@@ -154,5 +131,15 @@ struct Step {
     std::string label() const;  // "Roughing II" ("Pilot hole", "Wall finishing I", ...)
     friend bool operator==(const Step&, const Step&) = default;
 };
+
+// A step's milling geometry (its payload's, model/milling_geometry.h); an
+// empty one (no outline or region, depths and allowances 0) for a step
+// without: a turning or probing step.
+const MillingGeometry& millingOf(const Step& s);
+// The step's milling geometry for the decomposition to fill: a step with no
+// payload yet is given an empty one. Throws std::logic_error for a step whose
+// payload has none (a turning step's). Take it anew for each change: the
+// payload a copy of the step shares is cloned first.
+MillingGeometry& editMilling(Step& s);
 
 }  // namespace taiwa

@@ -18,12 +18,13 @@ using paths::PathBuilder;
 
 ToolPath inclinedFacePath(const Step& step, const Tool& tool, const PathParameters& p)
 {
+    const MillingGeometry& g = millingOf(step);
     const InclinedFace* face = step.payload.getIf<InclinedFace>();
     if (!face)
         throw std::logic_error("inclined-face step without its face (it holds " + std::string(step.payload.name()) + ")");
     if (tool.type != ToolType::BallEndMill) throw std::logic_error("inclined faces are finished with a ball end mill");
     const InclinedFace& f = *face;
-    const double R = tool.radius(), T = step.cutDepth;
+    const double R = tool.radius(), T = g.cutDepth;
     const double theta = f.angle * std::numbers::pi / 180.0;
     const double len = distance(f.topEdge[0], f.topEdge[1]);
     const Point2 along = (1.0 / len) * (f.topEdge[1] - f.topEdge[0]);
@@ -40,7 +41,7 @@ ToolPath inclinedFacePath(const Step& step, const Tool& tool, const PathParamete
     // Passes stop short of the vertical end walls by the larger of the ball
     // radius and their corner radius (the outline carries r1), so the ball
     // touches the face only where it is plane.
-    const double corner = step.outline ? step.outline->cornerRadius : 0.0;
+    const double corner = g.outline ? g.outline->cornerRadius : 0.0;
     const double margin = std::max(R, corner);
     if (len <= 2 * margin) throw std::logic_error("inclined face shorter than the ball end mill");
     // Contact points from the top edge (u = 0) down to where the tip reaches
@@ -57,7 +58,7 @@ ToolPath inclinedFacePath(const Step& step, const Tool& tool, const PathParamete
     };
     const Point3 first = tip(0, margin);
     PathBuilder b({first.x, first.y, p.safeZ});
-    b.rapid({first.x, first.y, -step.startDepth + p.clearance});
+    b.rapid({first.x, first.y, -g.startDepth + p.clearance});
     // Links between passes run down the slope at the pass end, the ball
     // centre staying R off the face.
     for (int k = 0; k <= n; ++k) {
@@ -76,7 +77,7 @@ double inclinedFaceMoves(const Step& step, const Tool& tool)
     if (!f) return 10;
     const double R = std::max(tool.diameter, 1e-3) / 2, h = std::clamp(f->scallop, 1e-6, R);
     const double stepOver = 2 * std::sqrt(2 * R * h - h * h);
-    const double span = distance(f->topEdge[0], f->floorEdge[0]) + step.cutDepth;
+    const double span = distance(f->topEdge[0], f->floorEdge[0]) + millingOf(step).cutDepth;
     return (std::ceil(span / std::max(stepOver, 1e-6)) + 1) * 4;
 }
 

@@ -24,6 +24,7 @@ struct InclinedFace {
     std::array<Point2, 2> floorEdge{};  // at depth T
     double angle = 0.0;                 // from the vertical [deg]
     double scallop = 0.0;               // the unit's scallop height [mm]
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const InclinedFace&, const InclinedFace&) = default;
 };
 

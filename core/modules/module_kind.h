@@ -133,7 +133,7 @@ public:
     // step-over, else "depth" (the layers).
     virtual std::string movesField(const ModuleInput& /*mm*/, const Step& step) const
     {
-        return step.stepOver ? "stepOver" : "depth";
+        return millingOf(step).stepOver ? "stepOver" : "depth";
     }
     // The order of the unit's own steps: true when `later` must wait for
     // `earlier` (both steps of one unit of this kind). The job-wide order

@@ -28,8 +28,8 @@ void choosePocketTools(std::vector<Step>& steps, const ToolPins& pins, const Uni
     if (!drill) return;
     for (auto& s : steps) {
         if (s.kind != StepKind::Roughing) continue;
-        s.holeDiameter = drill->diameter;
-        s.position = pilot->position;
+        editMilling(s).holeDiameter = drill->diameter;
+        editMilling(s).position = millingOf(*pilot).position;
     }
 }
 
@@ -37,7 +37,7 @@ void setStepOver(std::vector<Step>& steps, std::optional<double> stepOver)
 {
     if (!stepOver) return;
     for (Step& s : steps)
-        if (s.kind == StepKind::Roughing) s.stepOver = stepOver;
+        if (s.kind == StepKind::Roughing) editMilling(s).stepOver = stepOver;
 }
 
 namespace {
@@ -62,7 +62,7 @@ int rank(const Step& s)
 
 ToolPath pocketToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
-    if (step.region) {
+    if (millingOf(step).region) {
         switch (step.kind) {
         case StepKind::Roughing: requirePositiveGamma(tech); return paths::regionRoughing(step, tool, tech, params);
         case StepKind::FloorFinishing: return paths::regionFloorFinishing(step, tool, tech, params);
@@ -83,17 +83,18 @@ ToolPath pocketToolPath(const Step& step, const Tool& tool, const TechnologyData
 
 double pocketEstimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
+    const MillingGeometry& g = millingOf(step);
     const double layers = estimatedLayers(step, tool, tech);
     const double rings = estimatedRings(step, tool, tech, params);
-    if (step.region) {  // a ring of a contour has about as many moves as the flattened region has points
-        double points = static_cast<double>(flatten(step.region->outer, 1e-4).size());
-        for (const auto& i : step.region->islands) points += static_cast<double>(flatten(i, 1e-4).size());
+    if (g.region) {  // a ring of a contour has about as many moves as the flattened region has points
+        double points = static_cast<double>(flatten(g.region->outer, 1e-4).size());
+        for (const auto& i : g.region->islands) points += static_cast<double>(flatten(i, 1e-4).size());
         if (step.kind == StepKind::Roughing) return layers * rings * points;
         if (step.kind == StepKind::FloorFinishing) return rings * points;
         if (step.kind == StepKind::WallFinishing) {  // exact lines and arcs: about two moves a segment, a lead each loop
-            double segments = static_cast<double>(step.region->outer.segments.size());
-            for (const auto& i : step.region->islands) segments += static_cast<double>(i.segments.size()) + 6;
-            return (step.multiIncision ? layers : 1) * (2 * segments + 10);
+            double segments = static_cast<double>(g.region->outer.segments.size());
+            for (const auto& i : g.region->islands) segments += static_cast<double>(i.segments.size()) + 6;
+            return (g.multiIncision ? layers : 1) * (2 * segments + 10);
         }
     }
     constexpr double kMovesPerRing = 12;  // four sides, four corners, links
@@ -101,7 +102,7 @@ double pocketEstimateMoves(const Step& step, const Tool& tool, const TechnologyD
     case StepKind::PilotHole: return 10;
     case StepKind::Roughing: return layers * rings * kMovesPerRing;
     case StepKind::FloorFinishing: return rings * kMovesPerRing * 2;
-    case StepKind::WallFinishing: return (step.multiIncision ? layers : 1) * kMovesPerRing + 10;
+    case StepKind::WallFinishing: return (g.multiIncision ? layers : 1) * kMovesPerRing + 10;
     case StepKind::InclinedFaceFinishing: return inclinedFaceMoves(step, tool);
     default: return 10;
     }

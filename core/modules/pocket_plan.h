@@ -20,7 +20,7 @@ void choosePocketTools(std::vector<Step>& steps, const ToolPins& pins, const Uni
 void setStepOver(std::vector<Step>& steps, std::optional<double> stepOver);
 
 // A pocket step's tool path by its kind, from the shared generators
-// (paths/generators.h): a contour unit's steps (Step::region) by the region
+// (paths/generators.h): a contour unit's steps (with a region) by the region
 // ones. Throws std::logic_error for a kind pockets do not have.
 ToolPath pocketToolPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params);
 // About how many moves pocketToolPath makes: layers x rings, or as many as

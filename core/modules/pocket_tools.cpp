@@ -28,16 +28,17 @@ std::string mm(double v) { return fmt::format("{:g} mm", std::round(v * 1000) / 
 // What a milling step needs of its end mill.
 Fit fitFor(const Step& s)
 {
+    const MillingGeometry& g = millingOf(s);
     Fit f;
-    f.depth = s.cutDepth - s.startDepth;
+    f.depth = g.cutDepth - g.startDepth;
     f.centreCutting = s.kind == StepKind::FloorFinishing;  // it ramps into the beta2 left below the roughing
-    if (s.outline) {
-        f.cornerRadius = s.outline->cornerRadius;
-        f.maxDiameter = inscribedRadius(s.outline->corners);  // at most half the pocket's width
+    if (g.outline) {
+        f.cornerRadius = g.outline->cornerRadius;
+        f.maxDiameter = inscribedRadius(g.outline->corners);  // at most half the pocket's width
     }
-    if (s.region) {  // a contour: its narrowest channel and smallest inside corner; at most half its widest place
-        f.cornerRadius = s.reach;
-        f.maxDiameter = s.inscribed;
+    if (g.region) {  // a contour: its narrowest channel and smallest inside corner; at most half its widest place
+        f.cornerRadius = g.reach;
+        f.maxDiameter = g.inscribed;
     }
     const InclinedFace* face = s.kind == StepKind::InclinedFaceFinishing ? s.payload.getIf<InclinedFace>() : nullptr;
     if (face) {
@@ -46,12 +47,12 @@ Fit fitFor(const Step& s)
         f.type = ToolType::BallEndMill;
         f.maxDiameter = std::min(12.0, distance(face->topEdge[0], face->topEdge[1]));
         f.cornerRadius = 0;
-    } else if (s.kind == StepKind::WallFinishing && s.wallTaper > 0) {
+    } else if (s.kind == StepKind::WallFinishing && g.wallTaper > 0) {
         // The outline is at the top surface; the wall leans in by depth x
         // tan(taper), so the corner radius the tip must fit is the floor's.
         f.type = ToolType::TaperEndMill;
-        f.taperAngle = s.wallTaper;
-        if (s.outline) f.cornerRadius = std::max(1e-3, s.outline->cornerRadius - s.cutDepth * tanDeg(s.wallTaper));
+        f.taperAngle = g.wallTaper;
+        if (g.outline) f.cornerRadius = std::max(1e-3, g.outline->cornerRadius - g.cutDepth * tanDeg(g.wallTaper));
     }
     return f;
 }
@@ -145,7 +146,7 @@ Fit roughingFit(const std::vector<Step>& steps)
             all->maxDiameter = std::min(all->maxDiameter, layer.maxDiameter);
             all->depth = std::max(all->depth, layer.depth);
         }
-        all->reach = std::max(all->reach, s.cutDepth);
+        all->reach = std::max(all->reach, millingOf(s).cutDepth);
     }
     return all.value_or(Fit{});
 }
@@ -169,7 +170,7 @@ const Tool* roughingTool(const std::vector<Tool>& library, const Fit& f, const s
 std::optional<NarrowForcesShortFlutes> narrowForcesShortFlutes(const Step& s, const std::vector<Tool>& library,
                                                                const std::string& material)
 {
-    if (!s.region || s.kind == StepKind::Roughing || s.kind == StepKind::PilotHole) return std::nullopt;
+    if (!millingOf(s).region || s.kind == StepKind::Roughing || s.kind == StepKind::PilotHole) return std::nullopt;
     const Fit f = fitFor(s);
     if (f.type != ToolType::FlatEndMill || f.cornerRadius <= 0 || tools::largestFitting(library, f, material)) return std::nullopt;
     Fit shallow = f, wide = f;
@@ -243,9 +244,9 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
         if (s.kind != StepKind::PilotHole) continue;
         Fit f;
         f.type = ToolType::Drill;
-        f.minDiameter = std::max(plungeDiameter, s.holeDiameter);
+        f.minDiameter = std::max(plungeDiameter, millingOf(s).holeDiameter);
         f.maxDiameter = pocketLimit;
-        f.depth = s.cutDepth;
+        f.depth = millingOf(s).cutDepth;
         const auto pin = pins.find(toKey(s.kind));
         if (pin != pins.end()) {
             pick(s, f);
@@ -256,12 +257,12 @@ std::vector<std::string> chooseTools(std::vector<Step>& steps, const ToolPins& p
             problems.push_back(s.label() + ": " + tools::noFitMessage(library, f, material, "pilot hole"));
         }
         if (!s.tool) continue;
-        s.holeDiameter = findTool(library, s.tool->toolId)->diameter;
+        editMilling(s).holeDiameter = findTool(library, s.tool->toolId)->diameter;
         for (auto& r : steps)
             if (r.kind == StepKind::Roughing && r.number == 1 && r.tool && pins.find(toKey(r.kind)) == pins.end())
                 r.tool->reason = describeEndMill(*findTool(library, r.tool->toolId), roughing,
                                                  shortOfs[static_cast<std::size_t>(&r - steps.data())], Entry::PilotHole,
-                                                 s.holeDiameter);
+                                                 millingOf(s).holeDiameter);
     }
     return problems;
 }

@@ -62,14 +62,15 @@ double estimateMinutes(const ToolPath& path, const SpeedsFeeds& sf, double rapid
 double estimatedLayers(const Step& step, const Tool& tool, const TechnologyData& tech)
 {
     const double D = std::max(tool.diameter, 1e-3);
-    return std::ceil(std::max(step.cutDepth - step.startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
+    return std::ceil(std::max(millingOf(step).cutDepth - millingOf(step).startDepth, 0.0) / std::max(tech.gamma * D, 1e-3)) + 1;
 }
 
 double estimatedRings(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& params)
 {
+    const MillingGeometry& g = millingOf(step);
     const double D = std::max(tool.diameter, 1e-3);
-    return std::ceil((step.region ? step.inscribed : step.outline ? inscribedRadius(step.outline->corners) : 0.0) /
-                     std::max(std::min(step.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1;
+    return std::ceil((g.region ? g.inscribed : g.outline ? inscribedRadius(g.outline->corners) : 0.0) /
+                     std::max(std::min(g.stepOver.value_or(tech.stepOver), params.finishStepOver) * D, 1e-3)) + 1;
 }
 
 }  // namespace taiwa

@@ -1,7 +1,7 @@
 // The tool-path generators the pocket modules share (M4, M2D, CP; their
 // doors choose among them by step kind, modules/pocket_plan.cpp), one source
 // file each: pocket.cpp (roughing, floor finishing), wall_finishing.cpp,
-// pilot_hole.cpp; steps of contour units (Step::region) region_pocket.cpp
+// pilot_hole.cpp; steps of contour units (a region) region_pocket.cpp
 // and region_walls.cpp. A module with paths of its own keeps them in its
 // folder (FACE, SIDE, AREA, HOLES); M2D's inclined faces are in
 // modules/inclined_face.cpp, beside the pocket modules' shared code.

@@ -8,12 +8,13 @@ namespace taiwa::paths {
 
 ToolPath pilotHole(const Step& step, const Tool& tool, const PathParameters& p)
 {
+    const MillingGeometry& g = millingOf(step);
     // The cycle returns to the level it started from (safe Z, G98), so the
     // path both starts and ends at safe height.
-    PathBuilder b({step.position.x, step.position.y, p.safeZ});
-    Move m{MoveKind::DrillCycle, {step.position.x, step.position.y, -step.cutDepth}};
-    m.retractZ = -step.startDepth + p.clearance;
-    m.peck = step.cutDepth > p.peckWhenDeeperThan * tool.diameter ? p.peckDepth * tool.diameter : 0.0;
+    PathBuilder b({g.position.x, g.position.y, p.safeZ});
+    Move m{MoveKind::DrillCycle, {g.position.x, g.position.y, -g.cutDepth}};
+    m.retractZ = -g.startDepth + p.clearance;
+    m.peck = g.cutDepth > p.peckWhenDeeperThan * tool.diameter ? p.peckDepth * tool.diameter : 0.0;
     b.add(m);
     return b.take();
 }

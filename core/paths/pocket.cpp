@@ -149,25 +149,26 @@ std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Po
 ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& depths, double stepOver, double hole,
                const PathParameters& p)
 {
-    if (!step.outline) throw std::logic_error("pocket step without an outline");
+    const MillingGeometry& g = millingOf(step);
+    if (!g.outline) throw std::logic_error("pocket step without an outline");
     const double R = tool.radius();
-    if (!fitsInto(R, step.outline->cornerRadius)) throw std::logic_error("pocket corner radius smaller than the tool radius");
+    if (!fitsInto(R, g.outline->cornerRadius)) throw std::logic_error("pocket corner radius smaller than the tool radius");
     // A tool within the fit tolerance of the corner radius runs it as its own.
-    const Quad outline{counterClockwise(step.outline->corners), std::max(step.outline->cornerRadius, R)};
+    const Quad outline{counterClockwise(g.outline->corners), std::max(g.outline->cornerRadius, R)};
     if (maxOffset(outline) < R - 1e-9) throw std::logic_error("pocket narrower than the tool");
     if (!(stepOver > 0.0 && stepOver < 2 * R)) throw std::logic_error("step-over must lie between 0 and D");
 
-    const Entry entry = chooseEntry(outline, R, hole, step.position);
+    const Entry entry = chooseEntry(outline, R, hole, g.position);
     const auto offsets = ringOffsets(outline, R, stepOver);
 
     // Prove that one layer clears the outline with what it cuts at its own
     // depth (the entry's last turn or line, the rings, the cleanup; the ramp
     // above the layer does not count), and add cleanup visits for what it
     // leaves until it leaves nothing.
-    const std::vector<Point2> cleanup = cleanupVisits(outline, R, hole, step.position, stepOver, p);
+    const std::vector<Point2> cleanup = cleanupVisits(outline, R, hole, g.position, stepOver, p);
 
     PathBuilder b(at(entry.point, p.safeZ));
-    b.rapid(at(entry.point, -step.startDepth + p.clearance));
+    b.rapid(at(entry.point, -g.startDepth + p.clearance));
     for (const double d : depths) {
         // Back to the entry point across the layer just cleared.
         appendEntry(b, entry, -d, p.rampAngle, p.climb);
@@ -181,13 +182,14 @@ ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& de
 
 ToolPath pocketRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    const auto depths = layerDepths(step.startDepth, step.cutDepth, tech.gamma * tool.diameter);
-    return clear(step, tool, depths, step.stepOver.value_or(tech.stepOver) * tool.diameter, step.holeDiameter, p);
+    const MillingGeometry& g = millingOf(step);
+    const auto depths = layerDepths(g.startDepth, g.cutDepth, tech.gamma * tool.diameter);
+    return clear(step, tool, depths, g.stepOver.value_or(tech.stepOver) * tool.diameter, g.holeDiameter, p);
 }
 
 ToolPath floorFinishing(const Step& step, const Tool& tool, const PathParameters& p)
 {
-    return clear(step, tool, {step.cutDepth}, p.finishStepOver * tool.diameter, 0.0, p);
+    return clear(step, tool, {millingOf(step).cutDepth}, p.finishStepOver * tool.diameter, 0.0, p);
 }
 
 }  // namespace taiwa::paths

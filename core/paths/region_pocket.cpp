@@ -139,11 +139,12 @@ struct Clearing {
 ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p,
                      const Clearing& how)
 {
-    if (!step.region) throw std::logic_error("contour step without a region");
+    const MillingGeometry& g = millingOf(step);
+    if (!g.region) throw std::logic_error("contour step without a region");
     const double R = tool.radius();
     const double s = std::clamp(how.stepOver, 1e-3, 0.9 * R);  // below R: every point within R of a ring
-    const Paths region = regionPaths(*step.region);
-    const double first = R + step.wallAllowance;
+    const Paths region = regionPaths(*g.region);
+    const double first = R + g.wallAllowance;
     const Paths domain = inset(region, first);
     if (domain.empty()) throw std::logic_error("the tool does not fit into the contour region");
 
@@ -170,7 +171,7 @@ ToolPath clearRegion(const Step& step, const Tool& tool, const TechnologyData& t
     std::stable_sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.level > b.level; });
 
     // Layers: equal, at most gamma x D deep (floor finishing: one).
-    const double top = step.startDepth, bottom = step.cutDepth;
+    const double top = g.startDepth, bottom = g.cutDepth;
     int layers = 1;
     if (!how.singleLayer) {
         const double maxDepth = std::max(tech.gamma * tool.diameter, 1e-3);
@@ -309,7 +310,7 @@ double inscribedRadius(const Region& input)
 
 ToolPath regionRoughing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    return clearRegion(step, tool, tech, p, {step.stepOver.value_or(tech.stepOver) * tool.diameter, false});
+    return clearRegion(step, tool, tech, p, {millingOf(step).stepOver.value_or(tech.stepOver) * tool.diameter, false});
 }
 
 ToolPath regionFloorFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)

@@ -24,10 +24,11 @@ Point2 leftOf(Point2 d) { return {-d.y, d.x}; }
 
 ToolPath regionWallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    if (!step.region) throw std::logic_error("contour wall step without a region");
+    const MillingGeometry& g = millingOf(step);
+    if (!g.region) throw std::logic_error("contour wall step without a region");
     const double R = tool.radius();
-    const double d = R + step.wallAllowance;
-    const Region region = normalised(*step.region);
+    const double d = R + g.wallAllowance;
+    const Region region = normalised(*g.region);
     auto pieces = offsetRegion(region, d);
     if (!pieces) throw std::logic_error("contour wall offset failed: " + pieces.error());
     if (pieces->empty()) throw std::logic_error("the tool does not fit into the contour region");
@@ -38,7 +39,7 @@ ToolPath regionWallFinishing(const Step& step, const Tool& tool, const Technolog
     // or reversed; the cleared side is then on the left, or on the right.
     const RegionDistance distanceTo(region);
     const double wanted = p.leadRadius > 0 ? p.leadRadius : R;
-    const double approachZ = -step.startDepth + p.clearance;
+    const double approachZ = -g.startDepth + p.clearance;
     std::optional<PathBuilder> b;
     for (Contour loop : loopsOf(*pieces)) {
         if (loop.segments.empty()) continue;

@@ -54,33 +54,35 @@ void incision(PathBuilder& b, const Quad& centre, double z, bool ccw, double wan
 
 std::vector<double> incisionDepths(const Step& step, const Tool& tool, const TechnologyData& tech)
 {
+    const MillingGeometry& g = millingOf(step);
     // One at full depth, or equal steps of at most gamma x D.
-    std::vector<double> depths{step.cutDepth};
-    if (!step.multiIncision) return depths;
+    std::vector<double> depths{g.cutDepth};
+    if (!g.multiIncision) return depths;
     if (!(tech.gamma > 0.0)) throw std::logic_error("gamma must be positive");
-    const double range = step.cutDepth - step.startDepth;
+    const double range = g.cutDepth - g.startDepth;
     const int n = std::max(1, static_cast<int>(std::ceil(range / (tech.gamma * tool.diameter) - 1e-9)));
     depths.clear();
-    for (int k = 1; k < n; ++k) depths.push_back(step.startDepth + range * k / n);
-    depths.push_back(step.cutDepth);
+    for (int k = 1; k < n; ++k) depths.push_back(g.startDepth + range * k / n);
+    depths.push_back(g.cutDepth);
     return depths;
 }
 
 ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p)
 {
-    if (!step.outline) throw std::logic_error("wall step without an outline");
+    const MillingGeometry& g = millingOf(step);
+    if (!g.outline) throw std::logic_error("wall step without an outline");
     const double R = tool.radius();
     // A tool within the fit tolerance of a vertical wall's corner radius runs
     // it as its own.
-    const Quad outline{counterClockwise(step.outline->corners),
-                       step.wallTaper == 0.0 ? std::max(step.outline->cornerRadius, R) : step.outline->cornerRadius};
-    const double t = step.wallTaper > 0 ? tanDeg(step.wallTaper) : 0.0;
+    const Quad outline{counterClockwise(g.outline->corners),
+                       g.wallTaper == 0.0 ? std::max(g.outline->cornerRadius, R) : g.outline->cornerRadius};
+    const double t = g.wallTaper > 0 ? tanDeg(g.wallTaper) : 0.0;
     // A flank steeper than the wall would cut into it above the tip.
     const double flank = tool.type == ToolType::TaperEndMill ? tool.taperAngle : 0.0;
-    if (flank > step.wallTaper + 1e-9) throw std::logic_error("tool flank steeper than the wall");
-    if (step.wallTaper == 0.0 && !fitsInto(R, step.outline->cornerRadius))
+    if (flank > g.wallTaper + 1e-9) throw std::logic_error("tool flank steeper than the wall");
+    if (g.wallTaper == 0.0 && !fitsInto(R, g.outline->cornerRadius))
         throw std::logic_error("wall corner radius smaller than the tool radius");
-    if (!offsetExists(outline, R + step.cutDepth * t)) throw std::logic_error("pocket narrower than the tool");
+    if (!offsetExists(outline, R + g.cutDepth * t)) throw std::logic_error("pocket narrower than the tool");
 
     const std::vector<double> depths = incisionDepths(step, tool, tech);
     // The tip runs on the wall's cross-section at its own depth d moved in
@@ -91,7 +93,7 @@ ToolPath wallFinishing(const Step& step, const Tool& tool, const TechnologyData&
     const ContourStart s0 = contourStart(centreQuad(outline, R + depths.front() * t), p.climb);
     PathBuilder b({s0.point.x, s0.point.y, p.safeZ});
     for (const double d : depths)
-        incision(b, centreQuad(outline, R + d * t), -d, p.climb, wantedLead, -step.startDepth + p.clearance);
+        incision(b, centreQuad(outline, R + d * t), -d, p.climb, wantedLead, -g.startDepth + p.clearance);
     b.rapid(at({b.at().x, b.at().y}, p.safeZ));
     return b.take();
 }

@@ -73,14 +73,15 @@ Step PlanCache::pathKey(const Step& step)
 
 std::size_t PlanCache::hashStep(const Step& key)
 {
+    const MillingGeometry& g = millingOf(key);
     std::size_t h = std::hash<std::string>{}(key.module);
     combine(h, static_cast<std::size_t>(key.kind));
     combine(h, static_cast<std::size_t>(key.number));
-    combine(h, std::hash<double>{}(key.cutDepth));
-    combine(h, std::hash<double>{}(key.startDepth));
-    combine(h, std::hash<double>{}(key.position.x));
-    combine(h, std::hash<double>{}(key.position.y));
-    if (key.outline) combine(h, std::hash<double>{}(key.outline->corners[0].x + 3.0 * key.outline->corners[2].y));
+    combine(h, std::hash<double>{}(g.cutDepth));
+    combine(h, std::hash<double>{}(g.startDepth));
+    combine(h, std::hash<double>{}(g.position.x));
+    combine(h, std::hash<double>{}(g.position.y));
+    if (g.outline) combine(h, std::hash<double>{}(g.outline->corners[0].x + 3.0 * g.outline->corners[2].y));
     if (key.tool) combine(h, static_cast<std::size_t>(key.tool->toolId));
     return h;
 }

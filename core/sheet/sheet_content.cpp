@@ -254,11 +254,12 @@ void stepRows(const Plan& plan, const SheetOptions& o, const Len& len, const Len
             unit += " " + job.units[static_cast<std::size_t>(s.unit)].name;
         if (i < o.stepPictures.size() && !o.stepPictures[i].empty())
             c.pictures.push_back({fmt::format("{}. {}, unit {}", i + 1, s.label(), unit), o.stepPictures[i]});
+        const MillingGeometry& g = millingOf(s);  // none on a lathe: its allowances are the turning step's
         c.steps.rows.push_back({std::to_string(i + 1), unit, s.module, s.label(),
                                 t ? std::to_string(t->id) : "-", t ? std::to_string(t->id) : "-", t ? t->name : "-",
-                                speedText(s, sf), feedText(s, sf), turnOf(s) ? "-" : len(s.startDepth),
-                                turnOf(s) ? "-" : len(s.cutDepth), turnOf(s) ? len(turnOf(s)->allowanceX) : len(s.wallAllowance),
-                                turnOf(s) ? len(turnOf(s)->allowanceZ) : len(s.floorAllowance),
+                                speedText(s, sf), feedText(s, sf), turnOf(s) ? "-" : len(g.startDepth),
+                                turnOf(s) ? "-" : len(g.cutDepth), turnOf(s) ? len(turnOf(s)->allowanceX) : len(g.wallAllowance),
+                                turnOf(s) ? len(turnOf(s)->allowanceZ) : len(g.floorAllowance),
                                 s.path || turnOf(s) ? len(pl.feed) : "-", s.minutes ? fmt::format("{:.2f}", *s.minutes) : "-",
                                 s.machineMinutes ? fmt::format("{:.2f}", *s.machineMinutes) : "-"});
     }

@@ -14,17 +14,18 @@ namespace taiwa::verify::milling {
 void Verifier::restAfterStep(int k, int row0, int row1, Collector& out)
 {
     const Step& s = plan_.steps[static_cast<std::size_t>(k)];
+    const MillingGeometry& g = millingOf(s);
     const StepData& d = steps_[static_cast<std::size_t>(k)];
     const float* h = field_.data();
     const double tolerance = kGougeTolerance + zStep_;
     if (s.machiningType == MachiningType::PilotHole) {
         const Stock& st = field_.stock();
-        const int i = static_cast<int>(std::floor((s.position.x - st.x) / res_));
-        const int j = static_cast<int>(std::floor((s.position.y - st.y) / res_));
+        const int i = static_cast<int>(std::floor((g.position.x - st.x) / res_));
+        const int j = static_cast<int>(std::floor((g.position.y - st.y) / res_));
         if (i < 0 || j < row0 || i >= field_.columns() || j > row1) return;
-        const double allowed = -s.cutDepth + tolerance + d.cutter->height(distance(field_.centre(i, j), s.position));
+        const double allowed = -g.cutDepth + tolerance + d.cutter->height(distance(field_.centre(i, j), g.position));
         if (h[field_.indexOf(i, j)] > allowed)
-            out.add(FindingKind::RestMaterial, k, -1, "", {s.position.x, s.position.y, h[field_.indexOf(i, j)]},
+            out.add(FindingKind::RestMaterial, k, -1, "", {g.position.x, g.position.y, h[field_.indexOf(i, j)]},
                     h[field_.indexOf(i, j)] - allowed + tolerance, cellArea());
         return;
     }
@@ -34,12 +35,12 @@ void Verifier::restAfterStep(int k, int row0, int row1, Collector& out)
         return;
     if (s.unit < 0 || s.unit >= static_cast<int>(units_.size()) || !units_[s.unit].cavity) return;
     const Cavity& cav = *units_[s.unit].cavity;
-    const double slack = -(s.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + d.cornerRadius);
+    const double slack = -(g.wallAllowance / std::cos(cav.wallAngle * std::numbers::pi / 180.0) + res_ + d.cornerRadius);
     forCells(cav, 0.0, row0, row1, [&](int i, int j, Point2 p) {
         const double z = h[field_.indexOf(i, j)];
-        if (z <= -s.cutDepth + tolerance) return;
-        if (cav.depthAt(p, slack) < s.cutDepth - 1e-9) return;
-        out.add(FindingKind::RestMaterial, k, -1, "", {p.x, p.y, z}, z + s.cutDepth, cellArea());
+        if (z <= -g.cutDepth + tolerance) return;
+        if (cav.depthAt(p, slack) < g.cutDepth - 1e-9) return;
+        out.add(FindingKind::RestMaterial, k, -1, "", {p.x, p.y, z}, z + g.cutDepth, cellArea());
     });
 }
 

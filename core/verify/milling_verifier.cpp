@@ -53,8 +53,8 @@ Verifier::Verifier(const Plan& plan, double resolution, double maxVisits, bool i
         if (s.unit >= 0 && s.unit < static_cast<int>(units_.size()) && finishing) {
             UnitData& u = units_[s.unit];
             u.lastFinish = static_cast<int>(k);
-            u.wallAllowance = std::min(u.wallAllowance, s.wallAllowance);
-            u.floorAllowance = std::min(u.floorAllowance, s.floorAllowance);
+            u.wallAllowance = std::min(u.wallAllowance, millingOf(s).wallAllowance);
+            u.floorAllowance = std::min(u.floorAllowance, millingOf(s).floorAllowance);
             u.cornerRadius = std::max(u.cornerRadius, d.cornerRadius);
         }
     }

@@ -59,6 +59,7 @@ struct AreaClearing {
 struct DrawnPoints {
     static constexpr const char* kName = "AREA passes";
     std::vector<Point2> points;
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const DrawnPoints&, const DrawnPoints&) = default;
 };
 

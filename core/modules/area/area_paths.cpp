@@ -20,7 +20,7 @@ ToolPath areaClearingPath(const Step& step, const Tool& tool, const TechnologyDa
     const auto& points = step.payload.as<DrawnPoints>().points;
     if (points.size() < 2) throw std::logic_error("an area clearing step without a pass");
     if (!(tech.gamma > 0.0) || !(tool.diameter > 0.0)) throw std::logic_error("gamma and the diameter must be positive");
-    const double T = step.cutDepth;
+    const double T = millingOf(step).cutDepth;
     const int layers = std::max(1, static_cast<int>(std::ceil(T / (tech.gamma * tool.diameter) - 1e-9)));
     PathBuilder b({points.front().x, points.front().y, p.safeZ});
     double floor = 0.0;  // the depth cut so far at the start point

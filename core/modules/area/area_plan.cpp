@@ -55,11 +55,11 @@ std::vector<Step> planAreaClearing(const AreaClearing& a, const TechnologyData&,
                                    const std::string& material, int unit, Diagnostics& out)
 {
     Step s = decompose::makeStep(unit, AreaClearing::kName, StepKind::AreaClearing, 1, MachiningType::AreaClearing);
-    s.region = normalised(a.area.region.value());
-    s.payload = DrawnPoints{a.points};
-    s.position = a.points.front();
-    s.startDepth = 0.0;
-    s.cutDepth = a.depth;
+    s.payload = DrawnPoints{a.points,
+                            {.region = normalised(a.area.region.value()),
+                             .position = a.points.front(),
+                             .startDepth = 0.0,
+                             .cutDepth = a.depth}};
     const auto fits = [&](const Tool& t) { return cutsDrawnPasses(t, a.diameter); };
     const auto problem = [&](std::string message) {
         out.push_back({Severity::Error, unit + 1, AreaClearing::kName, "tools", std::move(message)});

@@ -22,14 +22,14 @@ std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const Tech
     const auto step = [&](StepKind kind, int number, MachiningType type, double from, double to, double wall,
                           double floor) {
         Step s = makeStep(unit, ContourPocket::kName, kind, number, type);
-        s.region = region;
-        s.reach = std::max(reach - wall, 0.0);
-        s.inscribed = std::max(inscribed - wall, 0.0);
-        s.position = middle;
-        s.startDepth = from;
-        s.cutDepth = to;
-        s.wallAllowance = wall;
-        s.floorAllowance = floor;
+        s.payload = MillingGeometry{.region = region,
+                                    .reach = std::max(reach - wall, 0.0),
+                                    .inscribed = std::max(inscribed - wall, 0.0),
+                                    .position = middle,
+                                    .startDepth = from,
+                                    .cutDepth = to,
+                                    .wallAllowance = wall,
+                                    .floorAllowance = floor};
         return s;
     };
     if (hasRoughing(use))
@@ -41,7 +41,7 @@ std::vector<Step> decomposeContourPocket(const ContourPocket& pocket, const Tech
         if (finish == WallFinish::TwoStage)
             steps.push_back(step(StepKind::WallFinishing, ++number, MachiningType::WallSemiFinishing, 0.0, T, tech.alpha3, 0.0));
         Step last = step(StepKind::WallFinishing, ++number, MachiningType::WallFinishing, 0.0, T, 0.0, 0.0);
-        last.multiIncision = finish == WallFinish::MultiIncision;
+        editMilling(last).multiIncision = finish == WallFinish::MultiIncision;
         steps.push_back(last);
     }
     return steps;

@@ -41,13 +41,14 @@ struct FaceUnit {
     friend bool operator==(const FaceUnit&, const FaceUnit&) = default;
 };
 
-// A face-milling step's own data (Step::payload; its Step::outline is the
+// A face-milling step's own data (Step::payload; its geometry's outline is the
 // face to mill): the passes run at `angle` degrees from +X, one way or back
 // and forth (zigzag).
 struct FacePasses {
     static constexpr const char* kName = "FACE passes";
     double angle = 0.0;
     bool zigzag = false;
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const FacePasses&, const FacePasses&) = default;
 };
 

@@ -122,13 +122,13 @@ std::vector<Step> decomposeFace(const FaceUnit& f, const Stock& stock, const Tec
     std::vector<Step> steps;
     const auto step = [&](int number, MachiningType type, double from, double to) {
         Step s = makeStep(unit, FaceUnit::kName, StepKind::FaceMilling, number, type);
-        s.outline = outline;
-        s.position = centroid(outline.corners);
-        s.payload = FacePasses{f.angle, f.pattern == face::kZigzag};
-        s.stepOver = face::stepOverFor(f, tool, tech);
-        s.startDepth = from;
-        s.cutDepth = to;
-        s.floorAllowance = std::max(f.depth - to, 0.0);
+        s.payload = FacePasses{f.angle, f.pattern == face::kZigzag,
+                               {.outline = outline,
+                                .position = centroid(outline.corners),
+                                .startDepth = from,
+                                .cutDepth = to,
+                                .floorAllowance = std::max(f.depth - to, 0.0),
+                                .stepOver = face::stepOverFor(f, tool, tech)}};
         return s;
     };
     double from = 0.0;

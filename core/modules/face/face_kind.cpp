@@ -41,15 +41,15 @@ public:
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters&) const override
     {
         const auto* passes = step.payload.getIf<FacePasses>();
-        if (!step.outline || !passes) return 10;
+        if (!passes || !passes->milling.outline) return 10;
         const double a = passes->angle * std::numbers::pi / 180.0;
         double lo = 1e300, hi = -1e300;
-        for (const Point2 c : step.outline->corners) {
+        for (const Point2 c : passes->milling.outline->corners) {
             const double v = -std::sin(a) * c.x + std::cos(a) * c.y;
             lo = std::min(lo, v), hi = std::max(hi, v);
         }
         const double D = std::max(tool.diameter, 1e-3);
-        return (std::ceil((hi - lo) / std::max(step.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
+        return (std::ceil((hi - lo) / std::max(passes->milling.stepOver.value_or(0.75) * D, 1e-3)) + 2) * 4 + 4;
     }
 
     // The margin when it widens the face more than the stock does, else the
@@ -57,9 +57,9 @@ public:
     std::string movesField(const ModuleInput& mm, const Step& step) const override
     {
         const FaceUnit& f = mm.as<FaceUnit>();
-        if (step.outline) {
+        if (const Boxed<Quad>& rect = millingOf(step).outline) {
             double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-            for (const Point2 c : step.outline->corners)
+            for (const Point2 c : rect->corners)
                 x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
             const double narrow = std::min(x1 - x0, y1 - y0);
             if (2.0 * f.margin > narrow - 2.0 * f.margin) return "margin";

@@ -68,16 +68,17 @@ std::vector<double> passPositions(double vMin, double vMax, double flatRadius, d
 
 ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& p)
 {
-    if (!step.outline) throw std::logic_error("face-milling step without a face");
+    const MillingGeometry& g = millingOf(step);
+    if (!g.outline) throw std::logic_error("face-milling step without a face");
     const double D = tool.diameter, R = tool.radius();
     const double flat = R - std::max(tool.cornerRadius, 0.0);
     const double overhang = kOverhang * D;
     if (!(flat > overhang)) throw std::logic_error("face-milling tool without a flat bottom");
     // A corner radius narrows the flat bottom: the passes closer, so that the
     // flat bottoms of neighbours overlap (no change for a sharp-cornered tool).
-    const double pitch = std::min(step.stepOver.value_or(0.75) * D, 1.8 * flat);
+    const double pitch = std::min(g.stepOver.value_or(0.75) * D, 1.8 * flat);
     if (!(pitch > 0.0)) throw std::logic_error("face-milling step-over must be positive");
-    if (!(step.cutDepth > step.startDepth)) throw std::logic_error("face-milling layer without depth");
+    if (!(g.cutDepth > g.startDepth)) throw std::logic_error("face-milling layer without depth");
 
     const FacePasses& passes = step.payload.as<FacePasses>();
     const double a = passes.angle * std::numbers::pi / 180.0;
@@ -85,7 +86,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
     std::array<Point2, 4> q{};
     double vMin = 1e300, vMax = -1e300;
     for (std::size_t i = 0; i < 4; ++i) {
-        q[i] = f.to(step.outline->corners[i]);
+        q[i] = f.to(g.outline->corners[i]);
         vMin = std::min(vMin, q[i].y), vMax = std::max(vMax, q[i].y);
     }
     const std::vector<double> vs = passPositions(vMin, vMax, flat, overhang, pitch, p.climb);
@@ -106,8 +107,8 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData&, 
             else a0 = b0 = std::min(a0, b0);
         }
 
-    const double z = -step.cutDepth;
-    const double down = -step.startDepth + p.clearance;  // rapid to here beside the face, then feed down
+    const double z = -g.cutDepth;
+    const double down = -g.startDepth + p.clearance;  // rapid to here beside the face, then feed down
     const double above = std::max(down, p.clearance);    // one way: back above the stock's top
     const auto at = [&](double u, double v, double h) {
         const Point2 xy = f.from(u, v);

@@ -56,6 +56,7 @@ struct HoleCentres {
     static constexpr const char* kName = "HOLES centres";
     std::vector<Point2> centres;
     double threadPitch = 0.0;
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const HoleCentres&, const HoleCentres&) = default;
 };
 

@@ -217,11 +217,7 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     const auto step = [&](StepKind kind, MachiningType type, const Tool& tool, double depth, double diameter,
                           std::string reason) {
         Step s = makeStep(unit, HolePattern::kName, kind, 1, type);
-        s.payload = HoleCentres{at, 0.0};
-        s.position = middle;
-        s.startDepth = 0.0;
-        s.cutDepth = depth;
-        s.holeDiameter = diameter;
+        s.payload = HoleCentres{at, 0.0, {.position = middle, .holeDiameter = diameter, .startDepth = 0.0, .cutDepth = depth}};
         s.tool = ToolChoice{tool.id, h.tools.count(toKey(kind)) ? "pinned by the operator" : std::move(reason)};
         return s;
     };
@@ -234,7 +230,7 @@ std::vector<Step> planHolePattern(const HolePattern& h, int unit, const std::vec
     steps.push_back(step(StepKind::Drilling, MachiningType::Drilling, *drill, tipOf(d, *drill), drill->diameter, drilling.reason));
     if (finish) {
         Step s = step(finishing.kind, finishing.type, *finish, d.finish, d.finishDiameter, finishing.reason);
-        if (finishing.kind == StepKind::Tapping) s.payload = HoleCentres{at, thread->pitch};
+        if (finishing.kind == StepKind::Tapping) s.payload = HoleCentres{at, thread->pitch, millingOf(s)};
         steps.push_back(s);
     }
     return steps;

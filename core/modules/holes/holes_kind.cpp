@@ -94,7 +94,7 @@ public:
     {
         const auto* holes = s.payload.getIf<HoleCentres>();
         if (!holes || holes->centres.empty()) return;
-        j["holeDiameter"] = io::stepLength(s.holeDiameter, u);
+        j["holeDiameter"] = io::stepLength(millingOf(s).holeDiameter, u);
         if (holes->threadPitch > 0) j["threadPitch"] = holes->threadPitch;
         j["holes"] = nlohmann::ordered_json::array();
         for (const Point2& h : holes->centres) j["holes"].push_back(io::stepPoint(h, u));

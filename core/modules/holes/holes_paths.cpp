@@ -14,6 +14,7 @@ using namespace paths;  // the shared path builders
 
 ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p)
 {
+    const MillingGeometry& g = millingOf(step);
     const HoleCentres& holes = step.payload.as<HoleCentres>();
     if (holes.centres.empty()) throw std::logic_error("hole step " + step.label() + " has no holes");
     // Each cycle returns to the level it started from (safe Z, G98): the
@@ -23,10 +24,10 @@ ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p)
     if (step.kind == StepKind::Tapping) cycle = CycleKind::Tap;
     if (step.kind == StepKind::Reaming) cycle = CycleKind::Ream;
     if (step.kind == StepKind::Boring) cycle = CycleKind::Bore;
-    const bool peck = step.kind == StepKind::Drilling && step.cutDepth > p.peckWhenDeeperThan * tool.diameter;
+    const bool peck = step.kind == StepKind::Drilling && g.cutDepth > p.peckWhenDeeperThan * tool.diameter;
     for (const Point2& h : holes.centres) {
-        Move m{MoveKind::DrillCycle, {h.x, h.y, -step.cutDepth}};
-        m.retractZ = -step.startDepth + p.clearance;
+        Move m{MoveKind::DrillCycle, {h.x, h.y, -g.cutDepth}};
+        m.retractZ = -g.startDepth + p.clearance;
         m.cycle = cycle;
         m.peck = peck ? p.peckDepth * tool.diameter : 0.0;
         m.pitch = cycle == CycleKind::Tap ? holes.threadPitch : 0.0;

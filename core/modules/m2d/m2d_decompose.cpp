@@ -51,9 +51,7 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
 
     if (pilot == PilotHole::Drill) {
         Step s = makeStep(unit, "M2D", StepKind::PilotHole, 1, MachiningType::PilotHole);
-        s.position = centroid(floor.corners);
-        s.cutDepth = T - tech.alpha1;
-        s.floorAllowance = tech.alpha1;
+        s.payload = MillingGeometry{.position = centroid(floor.corners), .cutDepth = T - tech.alpha1, .floorAllowance = tech.alpha1};
         steps.push_back(s);
     }
 
@@ -64,30 +62,31 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     const double layer = roughDepth / n;
     for (int k = 1; k <= n; ++k) {
         Step s = makeStep(unit, "M2D", StepKind::Roughing, k, MachiningType::Roughing);
-        s.startDepth = (k - 1) * layer;
-        s.cutDepth = k == n ? roughDepth : k * layer;
-        s.outline = offsetInward(m2dCrossSection(p, s.cutDepth), tech.alpha2);
-        s.position = centroid(s.outline->corners);
-        s.wallAllowance = tech.alpha2;
-        s.floorAllowance = T - s.cutDepth;
+        const double depth = k == n ? roughDepth : k * layer;
+        const Quad outline = offsetInward(m2dCrossSection(p, depth), tech.alpha2);
+        s.payload = MillingGeometry{.outline = outline,
+                                    .position = centroid(outline.corners),
+                                    .startDepth = (k - 1) * layer,
+                                    .cutDepth = depth,
+                                    .wallAllowance = tech.alpha2,
+                                    .floorAllowance = T - depth};
         steps.push_back(s);
     }
     if (use != ToolUse::Standard) return steps;
 
     Step floorStep = makeStep(unit, "M2D", StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
-    floorStep.outline = offsetInward(floor, tech.alpha2);
-    floorStep.position = centroid(floorStep.outline->corners);
-    floorStep.startDepth = roughDepth;
-    floorStep.cutDepth = T;
-    floorStep.wallAllowance = tech.alpha2;
+    const Quad floorOutline = offsetInward(floor, tech.alpha2);
+    floorStep.payload = MillingGeometry{.outline = floorOutline,
+                                        .position = centroid(floorOutline.corners),
+                                        .startDepth = roughDepth,
+                                        .cutDepth = T,
+                                        .wallAllowance = tech.alpha2};
     steps.push_back(floorStep);
 
     // The vertical walls are finished full depth on the floor's outline: at
     // every depth that outline lies inside the pocket, so the pass is safe.
     Step wall = makeStep(unit, "M2D", StepKind::WallFinishing, 1, MachiningType::WallFinishing);
-    wall.outline = floor;
-    wall.position = centroid(floor.corners);
-    wall.cutDepth = T;
+    wall.payload = MillingGeometry{.outline = floor, .position = centroid(floor.corners), .cutDepth = T};
     steps.push_back(wall);
 
     // A face at 0 degrees is vertical: the wall step above already runs on it.
@@ -98,10 +97,11 @@ std::vector<Step> decomposeM2D(const M2DPocket& p, const TechnologyData& tech, d
     for (const InclinedFace& f : faces) {
         if (f.angle <= 0.0) continue;
         Step s = makeStep(unit, "M2D", StepKind::InclinedFaceFinishing, ++number, MachiningType::InclinedFaceFinishing);
-        s.payload = f;
-        s.position = 0.25 * (f.topEdge[0] + f.topEdge[1] + f.floorEdge[0] + f.floorEdge[1]);
-        s.cutDepth = T;
-        s.wallTaper = f.angle;
+        InclinedFace own = f;
+        own.milling = {.position = 0.25 * (f.topEdge[0] + f.topEdge[1] + f.floorEdge[0] + f.floorEdge[1]),
+                       .cutDepth = T,
+                       .wallTaper = f.angle};
+        s.payload = own;
         steps.push_back(s);
     }
     return steps;

@@ -130,7 +130,7 @@ protected:
         // The inclined-face passes must stop short of the vertical end walls'
         // corner rounding: give those steps the floor section (radius r1).
         for (auto& s : steps)
-            if (s.kind == StepKind::InclinedFaceFinishing) s.outline = m2dCrossSection(m2d, m2d.depth);
+            if (s.kind == StepKind::InclinedFaceFinishing) editMilling(s).outline = m2dCrossSection(m2d, m2d.depth);
         return steps;
     }
 

@@ -68,10 +68,8 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
 
     if (pilot == PilotHole::Drill) {
         Step s = makeStep(unit, "M4", StepKind::PilotHole, 1, MachiningType::PilotHole);
-        s.position = centroid(pocket.corners);
-        s.startDepth = 0.0;
-        s.cutDepth = T - tech.alpha1;
-        s.floorAllowance = tech.alpha1;
+        s.payload = MillingGeometry{
+            .position = centroid(pocket.corners), .startDepth = 0.0, .cutDepth = T - tech.alpha1, .floorAllowance = tech.alpha1};
         steps.push_back(s);
     }
 
@@ -79,22 +77,22 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
     const Quad roughOutline = m4RoughOutline(pocket, tech);
     if (hasRoughing(use)) {
         Step s = makeStep(unit, "M4", StepKind::Roughing, 1, MachiningType::Roughing);
-        s.outline = roughOutline;
-        s.position = centroid(roughOutline.corners);
-        s.startDepth = 0.0;
-        s.cutDepth = roughDepth;
-        s.wallAllowance = tech.alpha2;
-        s.floorAllowance = tech.beta2;
+        s.payload = MillingGeometry{.outline = roughOutline,
+                                    .position = centroid(roughOutline.corners),
+                                    .startDepth = 0.0,
+                                    .cutDepth = roughDepth,
+                                    .wallAllowance = tech.alpha2,
+                                    .floorAllowance = tech.beta2};
         steps.push_back(s);
     }
     if (hasFloorFinishing(use)) {
         Step s = makeStep(unit, "M4", StepKind::FloorFinishing, 1, MachiningType::FloorFinishing);
-        s.outline = roughOutline;
-        s.position = centroid(roughOutline.corners);
-        s.startDepth = roughDepth;
-        s.cutDepth = T;
-        s.wallAllowance = tech.alpha2;
-        s.floorAllowance = 0.0;
+        s.payload = MillingGeometry{.outline = roughOutline,
+                                    .position = centroid(roughOutline.corners),
+                                    .startDepth = roughDepth,
+                                    .cutDepth = T,
+                                    .wallAllowance = tech.alpha2,
+                                    .floorAllowance = 0.0};
         steps.push_back(s);
     }
 
@@ -104,14 +102,15 @@ std::vector<Step> decomposeM4(const M4Pocket& pocket, const TechnologyData& tech
         int number = 0;
         for (const WallPass& pass : wallPasses(finish, tapered, tech)) {
             Step s = makeStep(unit, "M4", StepKind::WallFinishing, ++number, pass.type);
-            s.outline = inset(top, pass.leaves);
-            s.position = centroid(s.outline->corners);
-            s.startDepth = 0.0;
-            s.cutDepth = T;
-            s.wallTaper = pocket.taper;
-            s.wallAllowance = pass.leaves;
-            s.floorAllowance = 0.0;
-            s.multiIncision = finish == WallFinish::MultiIncision;
+            const Quad outline = inset(top, pass.leaves);
+            s.payload = MillingGeometry{.outline = outline,
+                                        .position = centroid(outline.corners),
+                                        .startDepth = 0.0,
+                                        .cutDepth = T,
+                                        .wallTaper = pocket.taper,
+                                        .wallAllowance = pass.leaves,
+                                        .floorAllowance = 0.0,
+                                        .multiIncision = finish == WallFinish::MultiIncision};
             steps.push_back(s);
         }
     }

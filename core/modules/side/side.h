@@ -68,6 +68,7 @@ struct SidePasses {
     Contour contour;
     bool toolOnLeft = true;
     std::vector<double> offsets;
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const SidePasses&, const SidePasses&) = default;
 };
 

@@ -261,29 +261,23 @@ std::vector<Step> planSideMill(const SideMill& m, const TechnologyData& tech, co
     const Passes passes = passesFor(m, tech, tool->diameter);
     const Point2 middle = t.contour.segments[t.contour.segments.size() / 2].at(0.5);
     std::vector<Step> steps;
-    const auto step = [&](int number, MachiningType type) {
+    // wall: the allowance the step leaves; layered: cut in Z layers.
+    const auto step = [&](int number, MachiningType type, std::vector<double> offsets, double wall, bool layered) {
         Step s = makeStep(unit, SideMill::kName, StepKind::SideMilling, number, type);
-        s.position = middle;
-        s.startDepth = 0.0;
-        s.cutDepth = m.depth;
-        s.stepOver = m.stepOver;
+        s.payload = SidePasses{t.contour, t.toolOnLeft, std::move(offsets),
+                               {.position = middle,
+                                .startDepth = 0.0,
+                                .cutDepth = m.depth,
+                                .wallAllowance = wall,
+                                .multiIncision = layered,
+                                .stepOver = m.stepOver}};
         s.tool = ToolChoice{tool->id, reason};
         return s;
     };
-    if (!passes.roughing.empty()) {
-        Step s = step(1, MachiningType::SideMilling);
-        s.payload = SidePasses{t.contour, t.toolOnLeft, passes.roughing};
-        s.wallAllowance = tech.alpha2;
-        s.multiIncision = true;  // Z layers of at most γ·D
-        steps.push_back(std::move(s));
-    }
-    if (passes.finishing) {
-        Step s = step(static_cast<int>(steps.size()) + 1, MachiningType::SideFinishing);
-        s.payload = SidePasses{t.contour, t.toolOnLeft, {0.0}};
-        s.wallAllowance = 0.0;
-        s.multiIncision = m.wallFinish == 2;
-        steps.push_back(std::move(s));
-    }
+    if (!passes.roughing.empty())  // in Z layers of at most γ·D
+        steps.push_back(step(1, MachiningType::SideMilling, passes.roughing, tech.alpha2, true));
+    if (passes.finishing)
+        steps.push_back(step(static_cast<int>(steps.size()) + 1, MachiningType::SideFinishing, {0.0}, 0.0, m.wallFinish == 2));
     return steps;
 }
 

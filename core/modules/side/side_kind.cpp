@@ -43,7 +43,7 @@ public:
         const auto* side = step.payload.getIf<SidePasses>();
         if (!side) return 10;
         const double passes = static_cast<double>(std::max<std::size_t>(side->offsets.size(), 1));
-        return (step.multiIncision ? estimatedLayers(step, tool, tech) : 1) * passes *
+        return (millingOf(step).multiIncision ? estimatedLayers(step, tool, tech) : 1) * passes *
                (2 * static_cast<double>(side->contour.segments.size()) + 8);
     }
 

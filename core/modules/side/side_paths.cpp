@@ -67,7 +67,7 @@ ToolPath millingPath(const Step& step, const Tool& tool, const TechnologyData& t
         passes.push_back(std::move(*chains));
     }
 
-    const double approachZ = -step.startDepth + p.clearance;
+    const double approachZ = -millingOf(step).startDepth + p.clearance;
     std::optional<PathBuilder> b;
     const auto enter = [&](Point2 from, double z) {
         if (!b) b.emplace(at(from, p.safeZ));

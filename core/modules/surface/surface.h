@@ -103,6 +103,7 @@ struct SurfacePaths {
     double allowance = 0.0;      // roughing
     double concaveRadius = 0.0;  // the smallest concave radius (infinity: none)
     double step = 0.5;           // along a path [mm]
+    MillingGeometry milling{};  // the step's geometry (model/milling_geometry.h)
     friend bool operator==(const SurfacePaths&, const SurfacePaths&) = default;
 };
 

@@ -61,8 +61,8 @@ public:
                          const PathParameters&) const override
     {
         const auto* sp = step.payload.getIf<SurfacePaths>();
-        if (!sp || !step.outline) return 10;
-        const Quad& q = *step.outline;
+        if (!sp || !sp->milling.outline) return 10;
+        const Quad& q = *sp->milling.outline;
         const double w = std::abs(q.corners[2].x - q.corners[0].x), l = std::abs(q.corners[2].y - q.corners[0].y);
         const double D = std::max(tool.diameter, 1e-3);
         const double along = w / std::max(sp->step, 1e-3) + 4;
@@ -70,7 +70,7 @@ public:
             const double r = D / 2, h = std::max(sp->scallop, 1e-6);
             return (l / std::max(2 * std::sqrt(h * std::max(2 * r - h, h)), 1e-3) + 2) * along;
         }
-        const double levels = step.cutDepth / std::max(tech.gamma * D, 1e-3) + 2;
+        const double levels = sp->milling.cutDepth / std::max(tech.gamma * D, 1e-3) + 2;
         return levels * (l / std::max(tech.stepOver * D, 1e-3) + 2) * along;
     }
     // A nose point costs the export about six pocket moves (bench_largest_jobs,

@@ -67,7 +67,7 @@ ToolPath surfacePath(const Step& step, const Tool& tool, const TechnologyData& t
     }
     // The Z-level passes start in what the level above left, the finishing
     // paths in roughing's stairs: down to the clearance over the stock top.
-    return surface::linkPaths(paths, params.safeZ, params.clearance, -step.startDepth);
+    return surface::linkPaths(paths, params.safeZ, params.clearance, -millingOf(step).startDepth);
 }
 
 std::optional<Cavity> surfaceCavity(const SurfaceUnit& u)

@@ -256,17 +256,17 @@ std::vector<Step> planSurface(const SurfaceUnit& u, const TechnologyData& tech, 
                 x0 = std::min(x0, q.x), y0 = std::min(y0, q.y), x1 = std::max(x1, q.x), y1 = std::max(y1, q.y);
             }
         Step s = decompose::makeStep(unit, SurfaceUnit::kName, kind, 1, type);
-        s.outline = Quad{{Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}}, 0.0};
-        s.position = {(x0 + x1) / 2, (y0 + y1) / 2};
-        s.startDepth = 0.0;
-        s.cutDepth = -low;
         s.tool = ToolChoice{pick.tool->id, pick.reason};
-        s.payload = SurfacePaths{paths, finished, u.boundary, u.scallop, u.allowance, rho.radius, step};
+        s.payload = SurfacePaths{paths, finished, u.boundary, u.scallop, u.allowance, rho.radius, step,
+                                 {.outline = Quad{{Point2{x0, y0}, Point2{x1, y0}, Point2{x1, y1}, Point2{x0, y1}}, 0.0},
+                                  .position = {(x0 + x1) / 2, (y0 + y1) / 2},
+                                  .startDepth = 0.0,
+                                  .cutDepth = -low}};
         return s;
     };
     std::vector<Step> steps;
     steps.push_back(make(StepKind::SurfaceRoughing, MachiningType::SurfaceRoughing, b.roughing, b.finishing));
-    steps.back().floorAllowance = u.allowance;
+    editMilling(steps.back()).floorAllowance = u.allowance;
     steps.push_back(make(StepKind::SurfaceFinishing, MachiningType::SurfaceFinishing, b.finishing, {}));
     return steps;
 }

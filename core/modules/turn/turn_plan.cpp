@@ -72,7 +72,6 @@ Step& Planner::addStep(StepKind kind, MachiningType type, const Tool& tool, std:
     s.number = 1 + static_cast<int>(std::count_if(out_.steps.begin(), out_.steps.end(), [&](const Step& o) { return o.kind == kind; }));
     s.tool = ToolChoice{tool.id, std::move(reason)};
     s.minutes = turnMinutes(turn.path, turn.cutting, q_.rapid);
-    s.cutDepth = 0.0;
     s.payload = std::move(turn);
     out_.steps.push_back(std::move(s));
     return out_.steps.back();
