@@ -131,7 +131,7 @@ private slots:
         Step a;
         QVERIFY(a.payload.empty());
         a.payload = Tagged{7};
-        Step b = a;  // a copy (sharing the payload, which is set whole)
+        Step b = a;  // a copy (sharing the payload until one of them is changed)
         QCOMPARE(b.payload.as<Tagged>().tag, 7);
         QVERIFY(a == b);
         b.payload = Tagged{8};
@@ -169,7 +169,7 @@ private slots:
         turned.payload = t;
         QVERIFY(turnOf(turned) && turnOf(turned)->region == "E1");
         Step copy = turned;
-        QVERIFY(turnOf(copy) == turnOf(turned));  // copies share the payload: it is read-only
+        QVERIFY(turnOf(copy) == turnOf(turned));  // copies share the payload until one is changed
         QVERIFY(copy == turned);
         t.region = "E2";
         copy.payload = t;

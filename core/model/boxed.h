@@ -1,6 +1,6 @@
 // An optional value kept on the heap: what std::optional<T> is to a step
 // (model/step.h), at the size of one pointer while it is absent. A step
-// carries its tool path, its geometry its outline and region this way: a
+// carries its tool path this way, and its geometry its outline and region: a
 // plan of 100,000 units holds some 400,000 steps, most with one of the
 // three, and none with a path in `taiwa check`. The same value semantics
 // as std::optional — a copy is a copy, == compares the values, * and ->

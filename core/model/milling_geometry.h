@@ -3,13 +3,13 @@
 // allowances) and how (taper, incisions, step-over). It is the step's
 // payload (model/step_payload.h), not a member of Step: the steps of the
 // milling modules carry it (the pockets M4, M2D and CP, FACE, SIDE, AREA,
-// HOLES and SURFACE), a turning or probing step does not. A module with data
-// of its own besides it (SIDE's passes, FACE's pass angle, ...) holds it as
+// HOLES and SURFACE), a turning step does not. A module with data of its
+// own besides it (SIDE's passes, FACE's pass angle, ...) holds it as
 // that struct's member `milling`; the pocket steps hold it alone.
 //
 // The stages read it through millingOf(step) (model/step.h), which gives an
-// empty geometry (no outline, depths 0) for a step with none; the
-// decomposition fills it through editMilling(step).
+// empty geometry (no outline, depths 0); a decomposition sets it whole, and
+// a later change (tool choice) goes through editMilling(step).
 #pragma once
 
 #include "model/boxed.h"

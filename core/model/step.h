@@ -134,12 +134,12 @@ struct Step {
 
 // A step's milling geometry (its payload's, model/milling_geometry.h); an
 // empty one (no outline or region, depths and allowances 0) for a step
-// without: a turning or probing step.
+// without: a turning step.
 const MillingGeometry& millingOf(const Step& s);
-// The step's milling geometry for the decomposition to fill: a step with no
-// payload yet is given an empty one. Throws std::logic_error for a step whose
-// payload has none (a turning step's). Take it anew for each change: the
-// payload a copy of the step shares is cloned first.
+// The step's milling geometry to change (tool choice): a step with no payload
+// is given an empty one, which a payload set later replaces. Throws
+// std::logic_error for a step whose payload has none (a turning step's). Take
+// it anew for each change: a payload a copy shares is cloned first.
 MillingGeometry& editMilling(Step& s);
 
 }  // namespace taiwa

@@ -15,8 +15,8 @@
 
 namespace taiwa::paths {
 
-// Roughing in Z layers of at most γ·D. A step whose holeDiameter > 0 tells
-// that a pilot hole of that diameter was drilled at step.position: the tool
+// Roughing in Z layers of at most γ·D. A step whose geometry's holeDiameter
+// > 0 tells that a pilot hole that wide was drilled at its position: the tool
 // plunges into it when the hole is at least as wide as the tool and lies
 // where the tool centre may go; otherwise (and always without a hole) it
 // ramps in.

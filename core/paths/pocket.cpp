@@ -144,7 +144,7 @@ std::vector<Point2> cleanupVisits(const Quad& outline, double R, double hole, Po
     return local;
 }
 
-// `hole`: the diameter of the pilot hole drilled at step.position to enter
+// `hole`: the diameter of the pilot hole drilled at the step's position to enter
 // through (roughing), 0 for none.
 ToolPath clear(const Step& step, const Tool& tool, const std::vector<double>& depths, double stepOver, double hole,
                const PathParameters& p)
