@@ -22,6 +22,9 @@ class Erased {
 public:
     Erased() = default;
     explicit Erased(std::unique_ptr<Data> d) : d_(std::move(d)) {}
+    // The value and its share count in one allocation (std::make_shared): a
+    // plan holds one payload for each of its hundreds of thousands of steps.
+    explicit Erased(std::shared_ptr<Data> d) : d_(std::move(d)) {}
 
     const Data* get() const { return d_.get(); }
     // The held value for changing it: a value shared with a copy is cloned

@@ -32,7 +32,7 @@ public:
     StepPayload() = default;  // a step with no data of its module's own
     template <class T, class = std::enable_if_t<!std::is_same_v<std::decay_t<T>, StepPayload>>>
     StepPayload(T value)  // NOLINT(google-explicit-constructor): a payload struct is a payload
-        : data_(std::make_unique<Of<std::decay_t<T>>>(std::move(value)))
+        : data_(std::shared_ptr<Data>(std::make_shared<Of<std::decay_t<T>>>(std::move(value))))
     {
     }
 
