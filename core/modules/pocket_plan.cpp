@@ -26,10 +26,12 @@ void choosePocketTools(std::vector<Step>& steps, const ToolPins& pins, const Uni
     if (pilot == steps.end() || !pilot->tool) return;
     const Tool* drill = findTool(ctx.library, pilot->tool->toolId);
     if (!drill) return;
+    const Point2 at = millingOf(*pilot).position;
     for (auto& s : steps) {
         if (s.kind != StepKind::Roughing) continue;
-        editMilling(s).holeDiameter = drill->diameter;
-        editMilling(s).position = millingOf(*pilot).position;
+        MillingGeometry& g = editMilling(s);
+        g.holeDiameter = drill->diameter;
+        g.position = at;
     }
 }
 
