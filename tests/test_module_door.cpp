@@ -25,6 +25,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <functional>
 #include <set>
 
 using namespace taiwa;
@@ -77,8 +78,8 @@ QStringList toolLookUps(const QString& text)
 }
 
 // A door that gives its adapter neither a job-file table nor a check, and
-// overrides neither reader, writer nor check: using them is a bug of the
-// program, not an operator's error.
+// overrides neither reader, writer nor check, and has no description file:
+// using them is a bug of the program, not an operator's error.
 struct BareUnit {
     static constexpr const char* kName = "BARE";
     static constexpr int kSinceFormatVersion = 1;
@@ -88,16 +89,12 @@ struct BareUnit {
 
 class BareKind final : public ModuleKindOf<BareUnit> {
 public:
-    const char* paletteText() const override { return "Add bare"; }
-    const char* drawing() const override { return ":/modules/bare.svg"; }
-    const char* outlineField() const override { return "none"; }
     ModuleInput makeDefault(const Stock&) const override { return BareUnit{}; }
 
 protected:
     std::optional<Quad> outline(const BareUnit&) const override { return std::nullopt; }
     void move(BareUnit&, Point2) const override {}
     std::vector<Step> planInput(const BareUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }
-    std::vector<FormField> formFields() const override { return {}; }
 };
 
 }  // namespace
@@ -295,6 +292,17 @@ private slots:
             QCOMPARE(std::string(e.what()), std::string("module BARE has no input check"));
         }
         QVERIFY(sink.empty());
+        // Its palette words and form are its description file's, which it lacks.
+        for (const auto& use : std::vector<std::function<void()>>{[&] { (void)bare.paletteText(); },
+                                                                  [&] { (void)bare.fields(); }}) {
+            try {
+                use();
+                QFAIL("a door without a description file has words");
+            } catch (const std::logic_error& e) {
+                QCOMPARE(std::string(e.what()), std::string("no module description core/modules/bare/bare.module.json"));
+            }
+        }
+        QCOMPARE(std::string(bare.drawing()), std::string(":/modules/bare.svg"));
     }
 
     void theDoorChecksEveryModulesPins()

@@ -7,7 +7,8 @@
 // it. So no key can be written that is not read back, nor read and refused.
 // Used by the modules' doors (modules/*/*_kind.cpp); a unit whose format is
 // a grammar of its own (TURN's profile table and its versions) keeps its
-// reader.
+// reader. An entry of one plain member also names that member, so that the
+// module's form binds its field by the same key (modules/form_binding.h).
 #pragma once
 
 #include "io/json_fields.h"
@@ -17,7 +18,9 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace taiwa::io {
@@ -27,9 +30,15 @@ namespace taiwa::io {
 // writer writes it for a given unit (by default always).
 template <class U>
 struct UnitKey {
+    // The member an entry of one plain value reads and writes (none for
+    // the tool pins and a module's own grammar).
+    using Member = std::variant<std::monostate, double U::*, std::optional<double> U::*, int U::*, std::string U::*,
+                                Point2 U::*>;
+
     std::vector<std::string> keys;
     std::function<void(const ObjectFields&, U&)> read;
     std::function<void(const U&, ordered&)> write;
+    Member member{};
 
     // Written only when `pred(unit)` holds (an optional value that is set, a
     // value that is not its default, a key the unit's variant uses).
@@ -52,7 +61,8 @@ UnitKey<U> required(const char* key, double U::*m)
 {
     return {{key},
             [key, m](const ObjectFields& f, U& u) { u.*m = f.number(key).value_or(0.0); },
-            [key, m](const U& u, ordered& j) { j[key] = io::number(u.*m); }};
+            [key, m](const U& u, ordered& j) { j[key] = io::number(u.*m); },
+            m};
 }
 
 // A number that is `fallback` when absent.
@@ -61,7 +71,8 @@ UnitKey<U> number(const char* key, double U::*m, double fallback)
 {
     return {{key},
             [key, m, fallback](const ObjectFields& f, U& u) { u.*m = f.number(key, fallback); },
-            [key, m](const U& u, ordered& j) { j[key] = io::number(u.*m); }};
+            [key, m](const U& u, ordered& j) { j[key] = io::number(u.*m); },
+            m};
 }
 
 // A number the operator may leave empty; written only when given.
@@ -72,7 +83,8 @@ UnitKey<U> optional(const char* key, std::optional<double> U::*m)
             [key, m](const ObjectFields& f, U& u) { u.*m = f.optionalNumber(key); },
             [key, m](const U& u, ordered& j) {
                 if (u.*m) j[key] = io::number(*(u.*m));
-            }};
+            },
+            m};
 }
 
 // A whole number (a code) the unit must have: absent, it is reported and
@@ -82,7 +94,8 @@ UnitKey<U> requiredWhole(const char* key, int U::*m)
 {
     return {{key},
             [key, m](const ObjectFields& f, U& u) { u.*m = f.whole(key).value_or(0); },
-            [key, m](const U& u, ordered& j) { j[key] = u.*m; }};
+            [key, m](const U& u, ordered& j) { j[key] = u.*m; },
+            m};
 }
 
 // A whole number that is `fallback` when absent.
@@ -91,7 +104,8 @@ UnitKey<U> whole(const char* key, int U::*m, int fallback)
 {
     return {{key},
             [key, m, fallback](const ObjectFields& f, U& u) { u.*m = f.whole(key, fallback); },
-            [key, m](const U& u, ordered& j) { j[key] = u.*m; }};
+            [key, m](const U& u, ordered& j) { j[key] = u.*m; },
+            m};
 }
 
 // A text the unit must have: absent, it is reported and read as "".
@@ -100,7 +114,8 @@ UnitKey<U> text(const char* key, std::string U::*m)
 {
     return {{key},
             [key, m](const ObjectFields& f, U& u) { u.*m = f.string(key).value_or(""); },
-            [key, m](const U& u, ordered& j) { j[key] = u.*m; }};
+            [key, m](const U& u, ordered& j) { j[key] = u.*m; },
+            m};
 }
 
 // A point [x, y] the unit must have: absent, it is reported and read as
@@ -110,7 +125,8 @@ UnitKey<U> point(const char* key, Point2 U::*m)
 {
     return {{key},
             [key, m](const ObjectFields& f, U& u) { u.*m = f.point(key).value_or(Point2{}); },
-            [key, m](const U& u, ordered& j) { j[key] = io::point(u.*m); }};
+            [key, m](const U& u, ordered& j) { j[key] = io::point(u.*m); },
+            m};
 }
 
 // The operator's tool pins, "tools": {"roughing": 3}; written when any.
@@ -150,6 +166,15 @@ public:
 
     // The unit read from its object: a key the table does not have is
     // reported, then every entry is read in turn.
+    // The entry that reads `key`, or null.
+    const UnitKey<U>* find(std::string_view key) const
+    {
+        for (const UnitKey<U>& e : entries_)
+            for (const std::string& k : e.keys)
+                if (k == key) return &e;
+        return nullptr;
+    }
+
     U read(const ObjectFields& f) const
     {
         U u{};

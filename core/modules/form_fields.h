@@ -1,27 +1,23 @@
 // What a module's form shows, described without any widget: one FormField
 // per input (key, label, the checks' field names, its help line and drawing
 // symbol, how to read and write the value on the module input). The station
-// builds its forms and undo commands from these; labels and help lines are
-// source texts of the translation (context "taiwa::ui::FieldSpec", marked
-// with TAIWA_TRANSLATE_NOOP for lupdate).
+// builds its forms and undo commands from these. A module's texts are its
+// form description file's (modules/form_text.h), its reading and writing
+// bound by the makers below (modules/form_binding.h); labels and help lines
+// are source texts of the translation (context "taiwa::ui::FieldSpec").
 #pragma once
 
-#include "model/codes.h"
 #include "model/geometry.h"
 #include "model/module.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-// TAIWA_TRANSLATE_NOOP marks a source text for lupdate without Qt.
-#include "model/translate_noop.h"
 
 namespace taiwa {
 
@@ -53,21 +49,6 @@ struct FormField {
     // drawing ("sym-P1"; empty: none), highlighted while the field is typed in.
     std::string help;
     std::string symbol;
-    // Sets both where the field is made:
-    //   fs.push_back(member<M4Pocket>("depth", ...).described("sym-T", TAIWA_TRANSLATE_NOOP(..., "Depth ...")));
-    // described(help) for a field with no symbol.
-    FormField& described(std::string symbolId, std::string helpText) &
-    {
-        symbol = std::move(symbolId);
-        help = std::move(helpText);
-        return *this;
-    }
-    FormField described(std::string symbolId, std::string helpText) &&
-    {
-        return std::move(described(std::move(symbolId), std::move(helpText)));
-    }
-    FormField& described(std::string helpText) & { return described({}, std::move(helpText)); }
-    FormField described(std::string helpText) && { return std::move(described({}, std::move(helpText))); }
     // Number fields that hold a count: the form refuses a fraction instead
     // of rounding what was typed.
     bool whole = false;
@@ -122,22 +103,10 @@ FormField optionalMember(std::string key, std::string label, std::string placeho
     };
     return f;
 }
-// The unit's own roughing step-over (a fraction of D), empty: the job's
-// technology data.
-template <class T>
-FormField stepOver()
-{
-    return optionalMember<T>("stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
-                             TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's"), {"stepOver"},
-                             &T::stepOver)
-        .described(TAIWA_TRANSLATE_NOOP(
-            "taiwa::ui::FieldSpec",
-            "Roughing's sideways step as a share of the tool's diameter; empty for the technology data's"));
-}
 // An int member of module T: a count (`kind` Number, the form refuses a
 // fraction) or a code (`kind` Code, offering `codes`, each value with its
-// meaning; a module's own meanings, which the form puts after the code and
-// translates in the core texts' context, ui/core_texts.cpp).
+// meaning, which the form puts after the code and translates in the core
+// texts' context, ui/core_texts.cpp).
 template <class T>
 FormField intMember(std::string key, std::string label, int T::*m, FormFieldKind kind = FormFieldKind::Number,
                     std::vector<std::pair<int, std::string>> codes = {})
@@ -150,21 +119,6 @@ FormField intMember(std::string key, std::string label, int T::*m, FormFieldKind
     f.codes = std::move(codes);
     return f;
 }
-template <class T>
-FormField codeField(std::string key, std::string label, std::vector<std::pair<int, std::string>> codes, int T::*m)
-{
-    return intMember<T>(std::move(key), std::move(label), m, FormFieldKind::Code, std::move(codes));
-}
-// A code of one of the code tables, with the meaning of each allowed value.
-template <class T, class Code>
-FormField code(std::string key, std::string label, std::initializer_list<Code> allowed, int T::*m)
-{
-    std::vector<std::pair<int, std::string>> codes;
-    for (Code c : allowed)
-        codes.emplace_back(static_cast<int>(c), std::string(meaning(c)));
-    return intMember<T>(std::move(key), std::move(label), m, FormFieldKind::Code, std::move(codes));
-}
-
 // The names typed in a list field: separated by commas or blanks, empty
 // pieces dropped ("K2, K3" and "K2 K3" alike).
 inline std::vector<std::string> splitNames(std::string_view text)

@@ -5,7 +5,10 @@
 // struct. docs/modules.md says how a module is added.
 //
 // Implementations derive from ModuleKindOf<T> and receive their own input
-// struct T (see model/module.h) instead of the type-erased ModuleInput.
+// struct T (see model/module.h) instead of the type-erased ModuleInput. What
+// the module says to the operator (palette words, form fields, the field an
+// overlap is reported on) is its description file's,
+// core/modules/<kind>/<kind>.module.json (modules/module_text.h).
 #pragma once
 
 #include "check/unit_checks.h"
@@ -24,11 +27,13 @@
 #include "model/technology.h"
 #include "model/tool.h"
 #include "model/turned.h"
-#include "modules/form_fields.h"
+#include "modules/form_binding.h"
+#include "modules/module_text.h"
 #include "paths/cl.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -222,19 +227,33 @@ template <class T>
 class ModuleKindOf : public ModuleKind {
 public:
     using CheckFunction = check::UnitReport (*)(const T& unit, int unitNo, const check::Context& ctx);
+    using PathFunction = ToolPath (*)(const Step& step, const Tool& tool, const TechnologyData& tech,
+                                      const PathParameters& params);
 
     // keys: the unit's job-file table (io/unit_keys.h), which reads and
-    // writes the unit; checks: the unit's own input checks. A module whose
-    // unit is a grammar of its own (TURN's profile table) passes no table
-    // and overrides readInput and writeInput; one whose checks need more
-    // than the unit passes no check and overrides checkInput.
-    explicit ModuleKindOf(const io::UnitKeys<T>* keys = nullptr, CheckFunction checks = nullptr)
-        : keys_(keys), check_(checks)
+    // writes the unit; checks: the unit's own input checks; paths: the tool
+    // path of one of its milling steps (toolPath). A module whose unit is a
+    // grammar of its own (TURN's profile table) passes no table and
+    // overrides readInput and writeInput; one whose checks need more than
+    // the unit passes no check and overrides checkInput; one whose steps
+    // come with their paths (TURN) passes no path function.
+    explicit ModuleKindOf(const io::UnitKeys<T>* keys = nullptr, CheckFunction checks = nullptr,
+                          PathFunction paths = nullptr)
+        : keys_(keys), check_(checks), paths_(paths)
     {
     }
 
     const char* name() const final { return T::kName; }
     int formatVersion() const final { return T::kSinceFormatVersion; }
+    // The module's description file's (core/modules/<kind>/<kind>.module.json).
+    const char* paletteText() const final { return description().palette.c_str(); }
+    const char* outlineField() const final { return description().outlineField.c_str(); }
+    // core/modules/<kind>/<kind>.svg, a resource of the station.
+    const char* drawing() const final
+    {
+        static const std::string path = ":/modules/" + folder() + ".svg";
+        return path.c_str();
+    }
     ModuleInput read(const io::ObjectFields& unit) const final { return readInput(unit); }
     void write(const ModuleInput& m, nlohmann::ordered_json& unit) const final { writeInput(m.as<T>(), unit); }
     // The pins of steps the module has, of tools the library has, for
@@ -256,9 +275,17 @@ public:
     {
         return planInput(mm.as<T>(), ctx, out);
     }
+    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
+                      const PathParameters& params) const override
+    {
+        return paths_ ? paths_(step, tool, tech, params) : ModuleKind::toolPath(step, tool, tech, params);
+    }
+    // The description file's fields, each bound by the door (ownField) or
+    // by the job-file table (form::boundForm); made once per module kind.
     const std::vector<FormField>& fields() const final
     {
-        static const std::vector<FormField> fs = formFields();  // one per module kind
+        static const std::vector<FormField> fs =
+            form::boundForm(description().fields, keys_, [this](const form::FieldText& t) { return ownField(t); });
         return fs;
     }
 
@@ -273,9 +300,24 @@ protected:
     virtual std::optional<Quad> outline(const T& mm) const = 0;
     virtual void move(T& m, Point2 delta) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
-    virtual std::vector<FormField> formFields() const = 0;
+    // A field of the form that the door binds itself, where the job file
+    // holds it in a grammar of its own (M4's corners, PROBE's touches);
+    // nullopt: the job-file table binds it by its key.
+    virtual std::optional<FormField> ownField(const form::FieldText& /*t*/) const { return std::nullopt; }
 
 private:
+    // The module's folder under core/modules/: its name in lower case.
+    static std::string folder()
+    {
+        std::string f = T::kName;
+        for (char& c : f) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return f;
+    }
+    static const form::ModuleText& description()
+    {
+        static const form::ModuleText text = form::shippedModuleText(folder());
+        return text;
+    }
     const io::UnitKeys<T>& keys() const
     {
         if (!keys_) throw std::logic_error(std::string("module ") + T::kName + " has neither a job-file table nor a reader");
@@ -283,6 +325,7 @@ private:
     }
     const io::UnitKeys<T>* keys_;
     CheckFunction check_;
+    PathFunction paths_;
 };
 
 // The one instance of a module kind, for its `<kind>Module()` function.

@@ -5553,7 +5553,133 @@ Theirs: %6</source>
         </message>
     </context>
     <context>
+        <name>taiwa::ui::TechnologyDialog</name>
+        <message>
+            <source>pilot hole stops this far above the floor</source>
+            <translation>下穴は底からこの高さで止める</translation>
+        </message>
+        <message>
+            <source>wall allowance left by roughing</source>
+            <translation>荒加工の壁仕上げ代</translation>
+        </message>
+        <message>
+            <source>wall allowance of the semi-finish pass (F = 3)</source>
+            <translation>中仕上げの壁仕上げ代 (F = 3)</translation>
+        </message>
+        <message>
+            <source>floor allowance left by roughing</source>
+            <translation>荒加工の底仕上げ代</translation>
+        </message>
+        <message>
+            <source>roughing layer depth / tool diameter</source>
+            <translation>荒加工の1層の深さ / 工具径</translation>
+        </message>
+        <message>
+            <source>roughing step-over / tool diameter</source>
+            <translation>荒加工のステップオーバ / 工具径</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ModulePalette</name>
+        <message>
+            <source>Add drawn-pass area</source>
+            <translation>描いたパスで領域加工を追加</translation>
+        </message>
+        <message>
+            <source>Add contour pocket</source>
+            <translation>輪郭ポケットを追加</translation>
+        </message>
+        <message>
+            <source>Add face milling</source>
+            <translation>正面フライス削りを追加</translation>
+        </message>
+        <message>
+            <source>Add hole pattern</source>
+            <translation>穴パターンを追加</translation>
+        </message>
+        <message>
+            <source>Add M2D 3-D pocket</source>
+            <translation>M2D 立体ポケットを追加</translation>
+        </message>
+        <message>
+            <source>Add M4 pocket</source>
+            <translation>M4 ポケットを追加</translation>
+        </message>
+        <message>
+            <source>Add work-centre probing</source>
+            <translation>ワーク中心の測定を追加</translation>
+        </message>
+        <message>
+            <source>Add side milling</source>
+            <translation>側面削りを追加</translation>
+        </message>
+        <message>
+            <source>Add 3-D surface</source>
+            <translation>3次元曲面を追加</translation>
+        </message>
+        <message>
+            <source>Add turned profile</source>
+            <translation>旋削形状を追加</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(コーナ半径)</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
+        </message>
+        <message>
+            <source>T (depth)</source>
+            <translation>T(深さ)</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>ポケットの深さ (上面から下へ)</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(工具使用区分)</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(仕上げ区分)</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
+        </message>
+        <message>
+            <source>H (pilot hole)</source>
+            <translation>H(下穴)</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
+        </message>
+        <message>
+            <source>Step-over (× D)</source>
+            <translation>ステップオーバ(× D)</translation>
+        </message>
+        <message>
+            <source>technology data's</source>
+            <translation>技術データの値</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>アイランド</translation>
+        </message>
         <message>
             <source>Area</source>
             <translation>領域</translation>
@@ -5565,10 +5691,6 @@ Theirs: %6</source>
         <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>領域内に残す図形の輪郭、カンマ区切り。なければ空欄</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深さ)</translation>
         </message>
         <message>
             <source>Depth the passes cut to, down from the top surface</source>
@@ -5611,10 +5733,6 @@ Theirs: %6</source>
             <translation>上面から削り取る量 (Z0 から下へ)。素材高さ未満</translation>
         </message>
         <message>
-            <source>U (tool use)</source>
-            <translation>U(工具使用区分)</translation>
-        </message>
-        <message>
             <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
             <translation>荒加工層と仕上げパス (1)、または荒加工のみで仕上げ分を残す (9)</translation>
         </message>
@@ -5647,10 +5765,6 @@ Theirs: %6</source>
             <translation>一方向 (全パスをダウンカット、部品の上を戻る) またはジグザグ (往復、部品の外でつなぐ)</translation>
         </message>
         <message>
-            <source>Step-over (× D)</source>
-            <translation>ステップオーバ(× D)</translation>
-        </message>
-        <message>
             <source>0.75 (face mill), else technology data's</source>
             <translation>0.75 (正面フライス)、それ以外は加工技術データの値</translation>
         </message>
@@ -5667,14 +5781,6 @@ Theirs: %6</source>
             <translation>面削り範囲が素材側面を越える量。0 は上面ちょうど</translation>
         </message>
         <message>
-            <source>technology data's</source>
-            <translation>技術データの値</translation>
-        </message>
-        <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>荒加工の横送り量 (工具径に対する割合)；空欄は加工技術データの値</translation>
-        </message>
-        <message>
             <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
             <translation>穴の配置: 単独、直線、格子、ボルト円、円弧</translation>
         </message>
@@ -5685,10 +5791,6 @@ Theirs: %6</source>
         <message>
             <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>単独の穴、直線の最初の穴、格子の角、円の中心</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
         </message>
         <message>
             <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
@@ -5843,8 +5945,40 @@ Theirs: %6</source>
             <translation>壁のテーパ (片側、度)；垂直な壁は 0</translation>
         </message>
         <message>
-            <source>P1 side</source>
-            <translation>P1 の面</translation>
+            <source>Shape</source>
+            <translation>形状</translation>
+        </message>
+        <message>
+            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
+            <translation>丸形 (ボスまたは穴) か角形 (ブロックまたはポケット)</translation>
+        </message>
+        <message>
+            <source>Touched from</source>
+            <translation>接触する側</translation>
+        </message>
+        <message>
+            <source>Whether the probe touches the part from outside or from inside</source>
+            <translation>プローブが外側から触れるか内側から触れるか</translation>
+        </message>
+        <message>
+            <source>P1 machine X</source>
+            <translation>P1 機械座標 X</translation>
+        </message>
+        <message>
+            <source>Where the first touch is, in machine coordinates</source>
+            <translation>最初の測定点の位置 (機械座標)</translation>
+        </message>
+        <message>
+            <source>P1 machine Y</source>
+            <translation>P1 機械座標 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未測定</translation>
+        </message>
+        <message>
+            <source>A touch, relative to the first one; empty until it is measured</source>
+            <translation>最初の点からの相対位置の測定点；測定するまで空欄</translation>
         </message>
         <message>
             <source>P2 side</source>
@@ -5873,42 +6007,6 @@ Theirs: %6</source>
         <message>
             <source>P8 side</source>
             <translation>P8 の面</translation>
-        </message>
-        <message>
-            <source>Shape</source>
-            <translation>形状</translation>
-        </message>
-        <message>
-            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
-            <translation>丸形 (ボスまたは穴) か角形 (ブロックまたはポケット)</translation>
-        </message>
-        <message>
-            <source>Touched from</source>
-            <translation>接触する側</translation>
-        </message>
-        <message>
-            <source>Whether the probe touches the part from outside or from inside</source>
-            <translation>プローブが外側から触れるか内側から触れるか</translation>
-        </message>
-        <message>
-            <source>Where the first touch is, in machine coordinates</source>
-            <translation>最初の測定点の位置 (機械座標)</translation>
-        </message>
-        <message>
-            <source>P1 machine X</source>
-            <translation>P1 機械座標 X</translation>
-        </message>
-        <message>
-            <source>P1 machine Y</source>
-            <translation>P1 機械座標 Y</translation>
-        </message>
-        <message>
-            <source>A touch, relative to the first one; empty until it is measured</source>
-            <translation>最初の点からの相対位置の測定点；測定するまで空欄</translation>
-        </message>
-        <message>
-            <source>not touched</source>
-            <translation>未測定</translation>
         </message>
         <message>
             <source>Top face machine Z</source>
@@ -5975,42 +6073,6 @@ Theirs: %6</source>
             <translation>測定移動の送り (mm/min)</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>ポケットの深さ (上面から下へ)</translation>
-        </message>
-        <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(コーナ半径)</translation>
-        </message>
-        <message>
-            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
-            <translation>ポケットのコーナー半径；仕上げのエンドミルが入る大きさが必要</translation>
-        </message>
-        <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>ポケットの工程：荒加工、底面・側壁仕上げ、またはその一部</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(仕上げ区分)</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>側壁の仕上げ方：全深さで一度に、深さを分けて、または二段階で</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(下穴)</translation>
-        </message>
-        <message>
-            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
-            <translation>荒加工のエンドミルが下りる下穴を先にあけるかどうか</translation>
-        </message>
-        <message>
-            <source>Islands</source>
-            <translation>アイランド</translation>
-        </message>
-        <message>
             <source>Contour</source>
             <translation>輪郭</translation>
         </message>
@@ -6057,6 +6119,10 @@ Theirs: %6</source>
         <message>
             <source>Curve 1</source>
             <translation>曲線 1</translation>
+        </message>
+        <message>
+            <source>the surface is a STEP face set</source>
+            <translation>曲面は STEP の面の集合です</translation>
         </message>
         <message>
             <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
@@ -6135,10 +6201,6 @@ Theirs: %6</source>
             <translation>工具ライブラリのボールエンドミルの番号。空欄: 半径が最小凹半径より小さい最大のもの</translation>
         </message>
         <message>
-            <source>the surface is a STEP face set</source>
-            <translation>曲面は STEP の面の集合です</translation>
-        </message>
-        <message>
             <source>Profile</source>
             <translation>形状</translation>
         </message>
@@ -6161,76 +6223,6 @@ Theirs: %6</source>
         <message>
             <source>Z where the profile starts; 0 is the finished front face</source>
             <translation>輪郭の始点の Z；0 は仕上げ後の前端面</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::ModulePalette</name>
-        <message>
-            <source>Add drawn-pass area</source>
-            <translation>描いたパスで領域加工を追加</translation>
-        </message>
-        <message>
-            <source>Add contour pocket</source>
-            <translation>輪郭ポケットを追加</translation>
-        </message>
-        <message>
-            <source>Add face milling</source>
-            <translation>正面フライス削りを追加</translation>
-        </message>
-        <message>
-            <source>Add hole pattern</source>
-            <translation>穴パターンを追加</translation>
-        </message>
-        <message>
-            <source>Add M2D 3-D pocket</source>
-            <translation>M2D 立体ポケットを追加</translation>
-        </message>
-        <message>
-            <source>Add M4 pocket</source>
-            <translation>M4 ポケットを追加</translation>
-        </message>
-        <message>
-            <source>Add work-centre probing</source>
-            <translation>ワーク中心の測定を追加</translation>
-        </message>
-        <message>
-            <source>Add side milling</source>
-            <translation>側面削りを追加</translation>
-        </message>
-        <message>
-            <source>Add 3-D surface</source>
-            <translation>3次元曲面を追加</translation>
-        </message>
-        <message>
-            <source>Add turned profile</source>
-            <translation>旋削形状を追加</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::TechnologyDialog</name>
-        <message>
-            <source>pilot hole stops this far above the floor</source>
-            <translation>下穴は底からこの高さで止める</translation>
-        </message>
-        <message>
-            <source>wall allowance left by roughing</source>
-            <translation>荒加工の壁仕上げ代</translation>
-        </message>
-        <message>
-            <source>wall allowance of the semi-finish pass (F = 3)</source>
-            <translation>中仕上げの壁仕上げ代 (F = 3)</translation>
-        </message>
-        <message>
-            <source>floor allowance left by roughing</source>
-            <translation>荒加工の底仕上げ代</translation>
-        </message>
-        <message>
-            <source>roughing layer depth / tool diameter</source>
-            <translation>荒加工の1層の深さ / 工具径</translation>
-        </message>
-        <message>
-            <source>roughing step-over / tool diameter</source>
-            <translation>荒加工のステップオーバ / 工具径</translation>
         </message>
     </context>
     <context>

@@ -5553,7 +5553,133 @@ Theirs: %6</source>
         </message>
     </context>
     <context>
+        <name>taiwa::ui::TechnologyDialog</name>
+        <message>
+            <source>pilot hole stops this far above the floor</source>
+            <translation>预钻孔在底面以上此距离处停止</translation>
+        </message>
+        <message>
+            <source>wall allowance left by roughing</source>
+            <translation>粗加工留下的侧壁余量</translation>
+        </message>
+        <message>
+            <source>wall allowance of the semi-finish pass (F = 3)</source>
+            <translation>半精加工的侧壁余量 (F = 3)</translation>
+        </message>
+        <message>
+            <source>floor allowance left by roughing</source>
+            <translation>粗加工留下的底面余量</translation>
+        </message>
+        <message>
+            <source>roughing layer depth / tool diameter</source>
+            <translation>粗加工层深 / 刀具直径</translation>
+        </message>
+        <message>
+            <source>roughing step-over / tool diameter</source>
+            <translation>粗加工行距 / 刀具直径</translation>
+        </message>
+    </context>
+    <context>
+        <name>taiwa::ui::ModulePalette</name>
+        <message>
+            <source>Add drawn-pass area</source>
+            <translation>添加绘制路径区域加工</translation>
+        </message>
+        <message>
+            <source>Add contour pocket</source>
+            <translation>添加轮廓型腔</translation>
+        </message>
+        <message>
+            <source>Add face milling</source>
+            <translation>添加面铣</translation>
+        </message>
+        <message>
+            <source>Add hole pattern</source>
+            <translation>添加孔组</translation>
+        </message>
+        <message>
+            <source>Add M2D 3-D pocket</source>
+            <translation>添加 M2D 三维型腔</translation>
+        </message>
+        <message>
+            <source>Add M4 pocket</source>
+            <translation>添加 M4 型腔</translation>
+        </message>
+        <message>
+            <source>Add work-centre probing</source>
+            <translation>添加工件中心测量</translation>
+        </message>
+        <message>
+            <source>Add side milling</source>
+            <translation>添加侧铣</translation>
+        </message>
+        <message>
+            <source>Add 3-D surface</source>
+            <translation>添加三维曲面</translation>
+        </message>
+        <message>
+            <source>Add turned profile</source>
+            <translation>添加车削轮廓</translation>
+        </message>
+    </context>
+    <context>
         <name>taiwa::ui::FieldSpec</name>
+        <message>
+            <source>r1 (corner radius)</source>
+            <translation>r1(拐角半径)</translation>
+        </message>
+        <message>
+            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
+            <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
+        </message>
+        <message>
+            <source>T (depth)</source>
+            <translation>T(深度)</translation>
+        </message>
+        <message>
+            <source>Depth of the pocket, down from the top surface</source>
+            <translation>型腔深度，从上表面向下</translation>
+        </message>
+        <message>
+            <source>U (tool use)</source>
+            <translation>U(刀具使用)</translation>
+        </message>
+        <message>
+            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
+            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
+        </message>
+        <message>
+            <source>F (wall finish)</source>
+            <translation>F(侧壁精加工)</translation>
+        </message>
+        <message>
+            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
+            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
+        </message>
+        <message>
+            <source>H (pilot hole)</source>
+            <translation>H(预钻孔)</translation>
+        </message>
+        <message>
+            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
+            <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
+        </message>
+        <message>
+            <source>Step-over (× D)</source>
+            <translation>行距 (× D)</translation>
+        </message>
+        <message>
+            <source>technology data's</source>
+            <translation>工艺数据的值</translation>
+        </message>
+        <message>
+            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
+            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
+        </message>
+        <message>
+            <source>Islands</source>
+            <translation>岛</translation>
+        </message>
         <message>
             <source>Area</source>
             <translation>区域</translation>
@@ -5565,10 +5691,6 @@ Theirs: %6</source>
         <message>
             <source>Contours of the figure left standing in the area, separated by commas; empty for none</source>
             <translation>区域内保留的图形轮廓，用逗号分隔；无则留空</translation>
-        </message>
-        <message>
-            <source>T (depth)</source>
-            <translation>T(深度)</translation>
         </message>
         <message>
             <source>Depth the passes cut to, down from the top surface</source>
@@ -5611,10 +5733,6 @@ Theirs: %6</source>
             <translation>从顶面去除的量（自 Z0 向下）；小于毛坯高度</translation>
         </message>
         <message>
-            <source>U (tool use)</source>
-            <translation>U(刀具使用)</translation>
-        </message>
-        <message>
             <source>Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)</source>
             <translation>粗加工层加精加工刀路（1），或仅粗加工并留出精加工余量（9）</translation>
         </message>
@@ -5647,10 +5765,6 @@ Theirs: %6</source>
             <translation>单向（每条刀路顺铣，在工件上方返回）或之字形（往复，在工件外侧连接）</translation>
         </message>
         <message>
-            <source>Step-over (× D)</source>
-            <translation>行距 (× D)</translation>
-        </message>
-        <message>
             <source>0.75 (face mill), else technology data's</source>
             <translation>0.75（面铣刀），否则为工艺数据值</translation>
         </message>
@@ -5667,14 +5781,6 @@ Theirs: %6</source>
             <translation>面铣范围超出毛坯侧面的距离；0 表示恰好为顶面</translation>
         </message>
         <message>
-            <source>technology data's</source>
-            <translation>工艺数据的值</translation>
-        </message>
-        <message>
-            <source>Roughing's sideways step as a share of the tool's diameter; empty for the technology data's</source>
-            <translation>粗加工的横向步距，占刀具直径的比例；空表示使用工艺数据的值</translation>
-        </message>
-        <message>
             <source>How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc</source>
             <translation>孔的排列方式：单孔、直线、网格、螺栓圆或圆弧</translation>
         </message>
@@ -5685,10 +5791,6 @@ Theirs: %6</source>
         <message>
             <source>The hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
             <translation>单孔、直线的第一个孔、网格的角点、圆的中心</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
         </message>
         <message>
             <source>Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle</source>
@@ -5843,8 +5945,40 @@ Theirs: %6</source>
             <translation>侧壁斜度（单边，度）；竖直侧壁为 0</translation>
         </message>
         <message>
-            <source>P1 side</source>
-            <translation>P1 面</translation>
+            <source>Shape</source>
+            <translation>形状</translation>
+        </message>
+        <message>
+            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
+            <translation>圆形（凸台或孔）或矩形（块或型腔）</translation>
+        </message>
+        <message>
+            <source>Touched from</source>
+            <translation>接触方向</translation>
+        </message>
+        <message>
+            <source>Whether the probe touches the part from outside or from inside</source>
+            <translation>测头从外侧还是内侧接触工件</translation>
+        </message>
+        <message>
+            <source>P1 machine X</source>
+            <translation>P1 机床坐标 X</translation>
+        </message>
+        <message>
+            <source>Where the first touch is, in machine coordinates</source>
+            <translation>第一个测量点的位置（机床坐标）</translation>
+        </message>
+        <message>
+            <source>P1 machine Y</source>
+            <translation>P1 机床坐标 Y</translation>
+        </message>
+        <message>
+            <source>not touched</source>
+            <translation>未测量</translation>
+        </message>
+        <message>
+            <source>A touch, relative to the first one; empty until it is measured</source>
+            <translation>相对第一个点的测量点；测量前为空</translation>
         </message>
         <message>
             <source>P2 side</source>
@@ -5873,42 +6007,6 @@ Theirs: %6</source>
         <message>
             <source>P8 side</source>
             <translation>P8 面</translation>
-        </message>
-        <message>
-            <source>Shape</source>
-            <translation>形状</translation>
-        </message>
-        <message>
-            <source>Round (a boss or a bore) or rectangular (a block or a pocket)</source>
-            <translation>圆形（凸台或孔）或矩形（块或型腔）</translation>
-        </message>
-        <message>
-            <source>Touched from</source>
-            <translation>接触方向</translation>
-        </message>
-        <message>
-            <source>Whether the probe touches the part from outside or from inside</source>
-            <translation>测头从外侧还是内侧接触工件</translation>
-        </message>
-        <message>
-            <source>Where the first touch is, in machine coordinates</source>
-            <translation>第一个测量点的位置（机床坐标）</translation>
-        </message>
-        <message>
-            <source>P1 machine X</source>
-            <translation>P1 机床坐标 X</translation>
-        </message>
-        <message>
-            <source>P1 machine Y</source>
-            <translation>P1 机床坐标 Y</translation>
-        </message>
-        <message>
-            <source>A touch, relative to the first one; empty until it is measured</source>
-            <translation>相对第一个点的测量点；测量前为空</translation>
-        </message>
-        <message>
-            <source>not touched</source>
-            <translation>未测量</translation>
         </message>
         <message>
             <source>Top face machine Z</source>
@@ -5975,42 +6073,6 @@ Theirs: %6</source>
             <translation>测量移动的进给（mm/min）</translation>
         </message>
         <message>
-            <source>Depth of the pocket, down from the top surface</source>
-            <translation>型腔深度，从上表面向下</translation>
-        </message>
-        <message>
-            <source>r1 (corner radius)</source>
-            <translation>r1(拐角半径)</translation>
-        </message>
-        <message>
-            <source>Radius of the pocket's corners; the finishing end mill must fit in it</source>
-            <translation>型腔拐角半径；精加工立铣刀必须能放入</translation>
-        </message>
-        <message>
-            <source>Which steps the pocket gets: roughing, floor and wall finishing, or some of them</source>
-            <translation>型腔的工步：粗加工、底面和侧壁精加工，或其中一部分</translation>
-        </message>
-        <message>
-            <source>F (wall finish)</source>
-            <translation>F(侧壁精加工)</translation>
-        </message>
-        <message>
-            <source>How the walls are finished: at full depth, in several depths, or in two stages</source>
-            <translation>侧壁的精加工方式：一次到全深、分层或分两阶段</translation>
-        </message>
-        <message>
-            <source>H (pilot hole)</source>
-            <translation>H(预钻孔)</translation>
-        </message>
-        <message>
-            <source>Whether a hole is drilled first for the roughing end mill to go down into</source>
-            <translation>是否先钻孔，供粗加工立铣刀下刀</translation>
-        </message>
-        <message>
-            <source>Islands</source>
-            <translation>岛</translation>
-        </message>
-        <message>
             <source>Contour</source>
             <translation>轮廓</translation>
         </message>
@@ -6057,6 +6119,10 @@ Theirs: %6</source>
         <message>
             <source>Curve 1</source>
             <translation>曲线 1</translation>
+        </message>
+        <message>
+            <source>the surface is a STEP face set</source>
+            <translation>曲面为 STEP 面集</translation>
         </message>
         <message>
             <source>The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines</source>
@@ -6135,10 +6201,6 @@ Theirs: %6</source>
             <translation>刀具库中球头立铣刀的编号; 空: 半径小于最小凹半径的最大刀具</translation>
         </message>
         <message>
-            <source>the surface is a STEP face set</source>
-            <translation>曲面为 STEP 面集</translation>
-        </message>
-        <message>
             <source>Profile</source>
             <translation>轮廓</translation>
         </message>
@@ -6161,76 +6223,6 @@ Theirs: %6</source>
         <message>
             <source>Z where the profile starts; 0 is the finished front face</source>
             <translation>轮廓起点的 Z；0 为精加工后的前端面</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::ModulePalette</name>
-        <message>
-            <source>Add drawn-pass area</source>
-            <translation>添加绘制路径区域加工</translation>
-        </message>
-        <message>
-            <source>Add contour pocket</source>
-            <translation>添加轮廓型腔</translation>
-        </message>
-        <message>
-            <source>Add face milling</source>
-            <translation>添加面铣</translation>
-        </message>
-        <message>
-            <source>Add hole pattern</source>
-            <translation>添加孔组</translation>
-        </message>
-        <message>
-            <source>Add M2D 3-D pocket</source>
-            <translation>添加 M2D 三维型腔</translation>
-        </message>
-        <message>
-            <source>Add M4 pocket</source>
-            <translation>添加 M4 型腔</translation>
-        </message>
-        <message>
-            <source>Add work-centre probing</source>
-            <translation>添加工件中心测量</translation>
-        </message>
-        <message>
-            <source>Add side milling</source>
-            <translation>添加侧铣</translation>
-        </message>
-        <message>
-            <source>Add 3-D surface</source>
-            <translation>添加三维曲面</translation>
-        </message>
-        <message>
-            <source>Add turned profile</source>
-            <translation>添加车削轮廓</translation>
-        </message>
-    </context>
-    <context>
-        <name>taiwa::ui::TechnologyDialog</name>
-        <message>
-            <source>pilot hole stops this far above the floor</source>
-            <translation>预钻孔在底面以上此距离处停止</translation>
-        </message>
-        <message>
-            <source>wall allowance left by roughing</source>
-            <translation>粗加工留下的侧壁余量</translation>
-        </message>
-        <message>
-            <source>wall allowance of the semi-finish pass (F = 3)</source>
-            <translation>半精加工的侧壁余量 (F = 3)</translation>
-        </message>
-        <message>
-            <source>floor allowance left by roughing</source>
-            <translation>粗加工留下的底面余量</translation>
-        </message>
-        <message>
-            <source>roughing layer depth / tool diameter</source>
-            <translation>粗加工层深 / 刀具直径</translation>
-        </message>
-        <message>
-            <source>roughing step-over / tool diameter</source>
-            <translation>粗加工行距 / 刀具直径</translation>
         </message>
     </context>
     <context>

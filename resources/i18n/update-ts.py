@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """Brings a translation file up to date with the sources: every tr() of ui/,
-every TAIWA_TRANSLATE_NOOP of core/ (module palette texts, field labels, the
-core's message templates and words in context "taiwa::msg") and every label
-of the module drawings (core/modules/*/*.svg, context "taiwa::Drawing"),
+every TAIWA_TRANSLATE_NOOP of core/ (the core's message templates and words
+in context "taiwa::msg"), the modules' description files
+(core/modules/*/*.module.json and core/modules/shared_fields.json: the
+palette words, context "taiwa::ui::ModulePalette"; the form's labels, help
+lines and placeholders, context "taiwa::ui::FieldSpec") and every label of
+the module drawings (core/modules/*/*.svg, context "taiwa::Drawing"),
 translations kept, texts no longer in the sources dropped.
 
     python3 resources/i18n/update-ts.py resources/i18n/taiwa_ja.ts
@@ -13,6 +16,7 @@ its class contexts are qualified, and the translations of the old file are
 carried over by context and source text. New texts come out as
 type="unfinished"; tests/test_translations.cpp fails while any is left.
 """
+import json
 import re
 import subprocess
 import sys
@@ -39,6 +43,41 @@ def drawing_labels(root: Path):
             if re.search(r"[A-Za-z]{2}", text) and text not in seen:
                 seen.append(text)
     return seen
+
+
+def module_texts(root: Path):
+    """The palette words, and the form's labels that have a word (P1 X, X1 have none), placeholders and help
+    lines, of the module descriptions, in file order: {context: [texts]}."""
+    found = {"taiwa::ui::ModulePalette": [], "taiwa::ui::FieldSpec": []}
+    modules = root / "core" / "modules"
+    for path in [modules / "shared_fields.json"] + sorted(modules.glob("*/*.module.json")):
+        data = json.loads(path.read_text(encoding="utf-8"))
+        texts = [("taiwa::ui::ModulePalette", data.get("palette", ""))]
+        for entry in data["fields"] if "fields" in data else data.values():
+            for key in ("label", "placeholder", "help"):
+                text = entry.get(key, "")
+                if key != "label" or re.search(r"[A-Za-z]{2}", text):
+                    texts.append(("taiwa::ui::FieldSpec", text))
+        for context, text in texts:
+            if text and text not in found[context]:
+                found[context].append(text)
+    return found
+
+
+def add_module_texts(tree, root: Path):
+    """The module descriptions' texts into their contexts, beside what lupdate found there."""
+    for name, texts in module_texts(root).items():
+        ctx = next((c for c in tree.getroot().findall("context") if c.find("name").text == name), None)
+        if ctx is None:
+            ctx = ET.SubElement(tree.getroot(), "context")
+            ET.SubElement(ctx, "name").text = name
+        have = {m.find("source").text for m in ctx.findall("message")}
+        for text in texts:
+            if text in have:
+                continue
+            m = ET.SubElement(ctx, "message")
+            ET.SubElement(m, "source").text = text
+            ET.SubElement(m, "translation")
 
 
 def add_drawing_labels(tree, root: Path):
@@ -69,6 +108,7 @@ def main(ts: str) -> int:
                       lambda m: m.group(0) if m.group(1) == "QObject" else f"<name>taiwa::ui::{m.group(1)}</name>",
                       fresh.read_text(encoding="utf-8"))
         new = ET.ElementTree(ET.fromstring(text))
+    add_module_texts(new, root)
     add_drawing_labels(new, root)
     known = {(name, m.find("source").text): m.find("translation") for name, m in messages(old)}
     unfinished = 0

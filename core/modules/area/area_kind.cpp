@@ -4,7 +4,7 @@
 #include "model/translate_noop.h"
 #include "modules/area/area.h"
 #include "modules/module_kind.h"
-#include "modules/shared_fields.h"
+#include "modules/named_region_form.h"
 #include "paths/drawn_passes.h"
 
 #include "io/job_messages.h"
@@ -53,19 +53,8 @@ const io::UnitKeys<AreaClearing> kKeys{
 
 class AreaKind final : public ModuleKindOf<AreaClearing> {
 public:
-    AreaKind() : ModuleKindOf(&kKeys, checkAreaClearing) {}
-    const char* paletteText() const override
-    {
-        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add drawn-pass area");
-    }
-    const char* drawing() const override { return ":/modules/area.svg"; }
-    const char* outlineField() const override { return "outline"; }
+    AreaKind() : ModuleKindOf(&kKeys, checkAreaClearing, areaClearingPath) {}
     std::vector<std::string> stepKeys() const override { return {"area"}; }
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const override
-    {
-        return areaClearingPath(step, tool, tech, params);
-    }
     // A ramp and the drawn passes a layer.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
     {
@@ -158,37 +147,14 @@ protected:
         return planAreaClearing(mm, ctx.tech, ctx.library, ctx.material, ctx.unit, out);
     }
 
-    std::vector<FormField> formFields() const override
+    // The area's contours by name (modules/named_region_form.h) and the
+    // drawn points as text: the job file holds them in a grammar of their own.
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        using form::member;
-        std::vector<FormField> fs;
-        fs.push_back(form::regionOutline<AreaClearing>(
-            &AreaClearing::area, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Area"),
-            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "The contour of the figure around the area to clear (e.g. K1)")));
-        fs.push_back(form::regionIslands<AreaClearing>(
-            &AreaClearing::area,
-            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                 "Contours of the figure left standing in the area, separated by commas; empty for none")));
-        fs.push_back(
-            member<AreaClearing>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                 &AreaClearing::depth)
-                .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Depth the passes cut to, down from the top surface")));
-        fs.push_back(
-            member<AreaClearing>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "D (tool diameter)"),
-                                 {"diameter", "tools"}, &AreaClearing::diameter)
-                .described("sym-D", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Diameter of the end mill: each pass is a strip this wide")));
-        fs.push_back(
-            form::points<AreaClearing>("points", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Passes (points)"),
-                                       {"points"}, &AreaClearing::points, &AreaClearing::badPoints, formatPoints,
-                                       parsePoints)
-                .described(
-                    "sym-passes",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "The passes as points X, Y separated by ';' (the tool goes from each to the next); draw them in the Figure tab")));
-        return fs;
+        if (t.bind == "points")
+            return form::points<AreaClearing>(t.key, t.label, t.checks, &AreaClearing::points, &AreaClearing::badPoints,
+                                              formatPoints, parsePoints);
+        return form::namedRegionField(&AreaClearing::area, t);
     }
 };
 

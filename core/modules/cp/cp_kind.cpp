@@ -6,7 +6,7 @@
 #include "modules/module_kind.h"
 #include "modules/named_region.h"
 #include "modules/pocket_plan.h"
-#include "modules/shared_fields.h"
+#include "modules/named_region_form.h"
 #include "paths/narrowest.h"
 #include "paths/region.h"
 
@@ -31,12 +31,6 @@ const io::UnitKeys<ContourPocket> kKeys{
 class CpKind final : public PocketKindOf<ContourPocket> {
 public:
     CpKind() : PocketKindOf(&kKeys, checkContourPocket) {}
-    const char* paletteText() const override
-    {
-        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add contour pocket");
-    }
-    const char* drawing() const override { return ":/modules/cp.svg"; }
-    const char* outlineField() const override { return "outline"; }
     std::vector<std::string> stepKeys() const override { return {"roughing", "floor", "wall"}; }
 
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
@@ -110,25 +104,10 @@ protected:
         return steps;
     }
 
-    std::vector<FormField> formFields() const override
+    // The pocket's contours by name (modules/named_region_form.h).
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        std::vector<FormField> fs;
-        // The contours by name, first: the figure's CONTOUR statements.
-        fs.push_back(form::regionOutline<ContourPocket>(
-            &ContourPocket::contours, TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Outline"),
-            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                 "The contour of the figure that is the pocket's edge at the top (e.g. K1)")));
-        fs.push_back(form::regionIslands<ContourPocket>(
-            &ContourPocket::contours,
-            TAIWA_TRANSLATE_NOOP(
-                "taiwa::ui::FieldSpec",
-                "Contours of the figure left standing in the pocket, separated by commas (e.g. K2, K3); empty for none")));
-        fs.push_back(form::pocketDepth<ContourPocket>());
-        fs.push_back(form::pocketToolUse<ContourPocket>(
-            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::WallOnly, ToolUse::RoughOnly}));
-        fs.push_back(form::pocketWallFinish<ContourPocket>());
-        fs.push_back(form::stepOver<ContourPocket>());
-        return fs;
+        return form::namedRegionField(&ContourPocket::contours, t);
     }
 };
 

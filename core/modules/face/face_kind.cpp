@@ -2,6 +2,7 @@
 // keys, checks, planning, cavity and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
 #include "modules/face/face.h"
+#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "check/unit_checks.h"
@@ -25,18 +26,10 @@ const io::UnitKeys<FaceUnit> kKeys{
 
 class FaceKind final : public ModuleKindOf<FaceUnit> {
 public:
-    FaceKind() : ModuleKindOf(&kKeys, checkFace) {}
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add face milling"); }
-    const char* drawing() const override { return ":/modules/face.svg"; }
-    const char* outlineField() const override { return "depth"; }
+    FaceKind() : ModuleKindOf(&kKeys, checkFace, face::millingPath) {}
     std::vector<std::string> stepKeys() const override { return {face::kStepKey}; }
     // The top is faced before anything else is cut.
     bool cutsBeforeOtherUnits() const override { return true; }
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const override
-    {
-        return face::millingPath(step, tool, tech, params);
-    }
     // Passes across the face, four moves each.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters&) const override
     {
@@ -115,65 +108,6 @@ protected:
         return steps;
     }
 
-    std::vector<FormField> formFields() const override
-    {
-        using form::member;
-        using form::optionalMember;
-        std::vector<FormField> fs;
-        fs.push_back(
-            member<FaceUnit>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth"), {"depth"},
-                             &FaceUnit::depth)
-                .described("sym-depth", TAIWA_TRANSLATE_NOOP(
-                                            "taiwa::ui::FieldSpec",
-                                            "Stock taken off the top, down from Z0; less than the stock's height")));
-        // U and the pattern mean other things here than in a pocket's code tables.
-        fs.push_back(
-            form::codeField<FaceUnit>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                      {{face::kStandard, "roughing layers and a finishing pass"},
-                                       {face::kRoughOnly, "roughing only, the finishing pass left"}},
-                                      &FaceUnit::toolUse)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "Roughing layers and a finishing pass (1), or roughing only leaving the finishing pass (9)")));
-        fs.push_back(
-            optionalMember<FaceUnit>("finish", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Finishing pass"),
-                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "technology data's β2"), {"finish"},
-                                     &FaceUnit::finish)
-                .described(
-                    "sym-finish",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Depth of the finishing pass, less than the depth; empty for the technology data's β2")));
-        fs.push_back(member<FaceUnit>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle of the passes (°)"),
-                                      {"angle"}, &FaceUnit::angle)
-                         .described("sym-angle", TAIWA_TRANSLATE_NOOP(
-                                                     "taiwa::ui::FieldSpec",
-                                                     "Direction of the passes in degrees, counter-clockwise from +X")));
-        fs.push_back(
-            form::codeField<FaceUnit>(
-                "pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"),
-                {{face::kOneWay, "one way, every pass climb"}, {face::kZigzag, "zigzag, back and forth"}},
-                &FaceUnit::pattern)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "One way (every pass climb, back above the part) or zigzag (back and forth, linked beside the part)")));
-        fs.push_back(
-            optionalMember<FaceUnit>(
-                "stepOver", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step-over (× D)"),
-                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "0.75 (face mill), else technology data's"), {"stepOver"},
-                &FaceUnit::stepOver)
-                .described("sym-stepOver",
-                           TAIWA_TRANSLATE_NOOP(
-                               "taiwa::ui::FieldSpec",
-                               "Distance between passes as a share of the tool's diameter, above 0 and at most 0.9")));
-        fs.push_back(member<FaceUnit>("margin", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Margin beyond the stock"),
-                                      {"margin"}, &FaceUnit::margin)
-                         .described("sym-margin",
-                                    TAIWA_TRANSLATE_NOOP(
-                                        "taiwa::ui::FieldSpec",
-                                        "How far the face reaches beyond the stock's sides; 0 for exactly the top")));
-        return fs;
-    }
 };
 
 }  // namespace

@@ -116,8 +116,9 @@ std::vector<Point2> topPolygon(const HolePattern& mm);
 std::vector<std::string> stepKeys(const std::string& hole);
 std::vector<std::string> allStepKeys();
 
-// The step's tool path (holes_paths.cpp): a canned cycle at every hole.
-ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p);
+// The step's tool path (holes_paths.cpp): a canned cycle at every hole
+// (the technology data does not enter it).
+ToolPath cyclesPath(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters& p);
 
 }  // namespace holes
 

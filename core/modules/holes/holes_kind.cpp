@@ -2,6 +2,7 @@
 // keys, checks, figure, cavity, planning and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
 #include "modules/holes/holes.h"
+#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "io/unit_keys.h"
@@ -73,15 +74,8 @@ double profile(const holes::Depths& d, double r)
 
 class HolesKind final : public ModuleKindOf<HolePattern> {
 public:
-    HolesKind() : ModuleKindOf(&kKeys, checkHolePattern) {}
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add hole pattern"); }
-    const char* drawing() const override { return ":/modules/holes.svg"; }
-    const char* outlineField() const override { return "pattern"; }
+    HolesKind() : ModuleKindOf(&kKeys, checkHolePattern, holes::cyclesPath) {}
     std::vector<std::string> stepKeys() const override { return holes::allStepKeys(); }
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& params) const override
-    {
-        return holes::cyclesPath(step, tool, params);
-    }
     // A cycle a hole.
     double estimateMoves(const Step& step, const Tool&, const TechnologyData&, const PathParameters&) const override
     {
@@ -168,14 +162,13 @@ protected:
         return planHolePattern(mm, ctx.unit, ctx.library, ctx.material, ctx.shownUnit, out);
     }
 
-    std::vector<FormField> formFields() const override
+    // The pattern, the hole and the thread: each a name of a list, offered
+    // as codes 0, 1, … (the threads from the thread table, the first none).
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        using form::member;
-        std::vector<FormField> fs;
-        const auto named = [](std::string key, std::string label, const std::vector<std::string>& names,
-                              std::string HolePattern::*m) {
+        const auto named = [&t](const std::vector<std::string>& names, std::string HolePattern::*m) {
             FormField f = form::number<HolePattern>(
-                key, std::move(label), {key},
+                t.key, t.label, t.checks,
                 [names, m](const HolePattern& h) {
                     const auto it = std::find(names.begin(), names.end(), h.*m);
                     return it == names.end() ? -1.0 : static_cast<double>(it - names.begin());
@@ -188,71 +181,12 @@ protected:
             for (std::size_t i = 0; i < names.size(); ++i) f.codes.emplace_back(static_cast<int>(i), names[i]);
             return f;
         };
-        fs.push_back(named("pattern", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pattern"), kPatternNames,
-                           &HolePattern::pattern)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "How the holes are laid out: one hole, a line, a grid, a bolt circle or an arc")));
-        fs.push_back(member<HolePattern>("x",
-                                         TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "X (hole, first hole or centre)"),
-                                         {"x"}, &HolePattern::x)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "The hole, the first hole of a line, the corner of a grid, the centre of a circle")));
-        fs.push_back(member<HolePattern>("y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Y"), {"y"}, &HolePattern::y)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Y of the hole, the first hole of a line, the corner of a grid, the centre of a circle")));
-        fs.push_back(
-            member<HolePattern>("angle", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angle (°)"), {"angle"},
-                                &HolePattern::angle)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec", "Direction of a line's or grid's rows; angle of a circle's first hole")));
-        fs.push_back(member<HolePattern>("pitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch"), {"pitch"},
-                                         &HolePattern::pitch)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Distance between neighbouring holes along the row")));
-        fs.push_back(member<HolePattern>("pitchY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Pitch between rows"),
-                                         {"pitchY"}, &HolePattern::pitchY)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: distance between rows")));
-        fs.push_back(member<HolePattern>("radius", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Radius"), {"radius"},
-                                         &HolePattern::radius)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Bolt circle or arc: the radius the hole centres lie on")));
-        fs.push_back(
-            member<HolePattern>("angularPitch", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Angular pitch (°)"),
-                                {"angularPitch"}, &HolePattern::angularPitch)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Arc: angle between neighbouring holes")));
-        fs.push_back(
-            form::intMember<HolePattern>("count", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Count (grid: columns)"),
-                                         &HolePattern::count)
-                .described(
-                    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                         "How many holes: along a line, around a circle or an arc; a grid's columns")));
-        fs.push_back(form::intMember<HolePattern>("rows", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Rows"),
-                                                  &HolePattern::rows)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Grid: how many rows of holes")));
-        fs.push_back(named("hole", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Hole"), kHoleNames, &HolePattern::hole)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec", "Drilled, tapped, reamed or bored: which steps each hole gets")));
+        if (t.bind == "pattern") return named(kPatternNames, &HolePattern::pattern);
+        if (t.bind == "hole") return named(kHoleNames, &HolePattern::hole);
+        if (t.bind != "thread") return std::nullopt;
         std::vector<std::string> threads{""};
-        for (const auto& t : holes::threadTable()) threads.emplace_back(t.name);
-        fs.push_back(named("thread", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Thread (tapped)"), threads,
-                           &HolePattern::thread)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Tapped holes: the ISO metric coarse thread, M3 to M20")));
-        fs.push_back(member<HolePattern>("diameter", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Diameter"),
-                                         {"diameter"}, &HolePattern::diameter)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Diameter of a drilled, reamed or bored hole (a tapped hole takes its thread's)")));
-        fs.push_back(
-            member<HolePattern>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Depth (full diameter)"),
-                                {"depth"}, &HolePattern::depth)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "Depth of the full diameter (of the full thread), down from the top; the drill point goes deeper")));
-        return fs;
+        for (const auto& thread : holes::threadTable()) threads.emplace_back(thread.name);
+        return named(threads, &HolePattern::thread);
     }
 };
 

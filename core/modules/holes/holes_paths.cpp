@@ -12,7 +12,7 @@ namespace taiwa::holes {
 
 using namespace paths;  // the shared path builders
 
-ToolPath cyclesPath(const Step& step, const Tool& tool, const PathParameters& p)
+ToolPath cyclesPath(const Step& step, const Tool& tool, const TechnologyData&, const PathParameters& p)
 {
     const MillingGeometry& g = millingOf(step);
     const HoleCentres& holes = step.payload.as<HoleCentres>();

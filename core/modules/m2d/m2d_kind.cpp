@@ -4,7 +4,7 @@
 #include "modules/m2d/m2d_kind.h"
 #include "modules/inclined_face.h"
 #include "modules/pocket_plan.h"
-#include "modules/shared_fields.h"
+#include "model/codes.h"
 
 #include "io/unit_keys.h"
 #include "model/translate_noop.h"
@@ -45,12 +45,6 @@ namespace {
 class M2DKind final : public PocketKindOf<M2DPocket> {
 public:
     M2DKind() : PocketKindOf(&kKeys, check::checkM2D) {}
-    const char* paletteText() const override
-    {
-        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M2D 3-D pocket");
-    }
-    const char* drawing() const override { return ":/modules/m2d.svg"; }
-    const char* outlineField() const override { return "corner"; }
     std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
     // An inclined-face step's face: its edges, its angle and the scallop height.
     void describeStep(const Step& s, LengthUnit u, nlohmann::ordered_json& j) const override
@@ -134,58 +128,6 @@ protected:
         return steps;
     }
 
-    std::vector<FormField> formFields() const override
-    {
-        using form::member;
-        using form::number;
-        std::vector<FormField> fs;
-        const char* corner = TAIWA_TRANSLATE_NOOP(
-            "taiwa::ui::FieldSpec", "The corner where the opening starts, at the top surface, in work coordinates");
-        fs.push_back(number<M2DPocket>(
-                         "X1", "X1", {"corner"}, [](const M2DPocket& m) { return m.corner.x; },
-                         [](M2DPocket& m, double v) { m.corner.x = v; })
-                         .described("sym-X1Y1", corner));
-        fs.push_back(number<M2DPocket>(
-                         "Y1", "Y1", {"corner"}, [](const M2DPocket& m) { return m.corner.y; },
-                         [](M2DPocket& m, double v) { m.corner.y = v; })
-                         .described("sym-X1Y1", corner));
-        fs.push_back(
-            member<M2DPocket>("L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L1 (length X)"), {"L1"},
-                              &M2DPocket::lengthX)
-                .described("sym-L1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                          "Length of the opening along X, at the top surface")));
-        fs.push_back(
-            member<M2DPocket>("L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "L2 (length Y)"), {"L2"},
-                              &M2DPocket::lengthY)
-                .described("sym-L2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                          "Width of the opening along Y, at the top surface")));
-        fs.push_back(form::pocketDepth<M2DPocket>());
-        fs.push_back(
-            member<M2DPocket>("theta1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ1 (left wall, °)"), {"theta1"},
-                              &M2DPocket::theta1)
-                .described("sym-theta1",
-                           TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "Slope of the wall at the start of L1, in degrees from the vertical")));
-        fs.push_back(
-            form::optionalMember<M2DPocket>(
-                "theta2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "θ2 (right wall, °)"),
-                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "empty = same as θ1"), {"theta2"}, &M2DPocket::theta2)
-                .described(
-                    "sym-theta2",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Slope of the wall at the end of L1, in degrees from the vertical; empty for the same as θ1")));
-        fs.push_back(form::pocketCornerRadius<M2DPocket>());
-        fs.push_back(form::pocketToolUse<M2DPocket>({ToolUse::Standard, ToolUse::RoughOnly}));
-        fs.push_back(form::pocketPilotHole<M2DPocket>());
-        fs.push_back(member<M2DPocket>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
-                                       {"scallop"}, &M2DPocket::scallop)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Largest ridge the ball end mill may leave between its passes on the inclined walls")));
-        fs.push_back(form::stepOver<M2DPocket>());
-        return fs;
-    }
 };
 
 }  // namespace

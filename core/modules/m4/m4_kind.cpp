@@ -4,7 +4,6 @@
 #include "model/translate_noop.h"
 #include "modules/m4/m4.h"
 #include "modules/pocket_plan.h"
-#include "modules/shared_fields.h"
 #include "paths/contour.h"
 
 #include "io/job_messages.h"
@@ -48,9 +47,6 @@ const io::UnitKeys<M4Pocket> kKeys{
 class M4Kind final : public PocketKindOf<M4Pocket> {
 public:
     M4Kind() : PocketKindOf(&kKeys, check::checkM4) {}
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add M4 pocket"); }
-    const char* drawing() const override { return ":/modules/m4.svg"; }
-    const char* outlineField() const override { return "corners"; }
     std::vector<std::string> stepKeys() const override { return check::millingStepKeys(); }
 
     // The rounded outline at the top, its walls leaning inward by S: the
@@ -116,39 +112,16 @@ protected:
         return steps;
     }
 
-    std::vector<FormField> formFields() const override
+    // The corners P1.x … P4.y: the job file holds them as one array.
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        using form::member;
-        using form::number;
-        std::vector<FormField> fs;
-        for (std::size_t i = 0; i < 4; ++i) {
-            const std::string p = "P" + std::to_string(i + 1);
-            const std::vector<std::string> diag{"corners[" + std::to_string(i) + "]", "corners"};
-            const std::string symbol = "sym-" + p;
-            const char* help = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                    "A corner of the pocket at the top surface, in work coordinates");
-            fs.push_back(number<M4Pocket>(
-                             p + ".x", p + " X", diag, [i](const M4Pocket& m) { return m.corners[i].x; },
-                             [i](M4Pocket& m, double v) { m.corners[i].x = v; })
-                             .described(symbol, help));
-            fs.push_back(number<M4Pocket>(
-                             p + ".y", p + " Y", diag, [i](const M4Pocket& m) { return m.corners[i].y; },
-                             [i](M4Pocket& m, double v) { m.corners[i].y = v; })
-                             .described(symbol, help));
-        }
-        fs.push_back(form::pocketCornerRadius<M4Pocket>());
-        fs.push_back(form::pocketDepth<M4Pocket>());
-        fs.push_back(member<M4Pocket>("taper", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "S (taper, °/side)"),
-                                      {"taper"}, &M4Pocket::taper)
-                         .described("sym-S", TAIWA_TRANSLATE_NOOP(
-                                                 "taiwa::ui::FieldSpec",
-                                                 "Slope of the walls in degrees per side; 0 for vertical walls")));
-        fs.push_back(form::pocketToolUse<M4Pocket>(
-            {ToolUse::Standard, ToolUse::NoWallFinish, ToolUse::Cored, ToolUse::WallOnly, ToolUse::RoughOnly}));
-        fs.push_back(form::pocketWallFinish<M4Pocket>());
-        fs.push_back(form::pocketPilotHole<M4Pocket>());
-        fs.push_back(form::stepOver<M4Pocket>());
-        return fs;
+        if (t.key.size() != 4 || t.key[0] != 'P' || t.key[2] != '.' || t.key[1] < '1' || t.key[1] > '4')
+            return std::nullopt;
+        const auto i = static_cast<std::size_t>(t.key[1] - '1');
+        const bool x = t.key[3] == 'x';
+        return form::number<M4Pocket>(
+            t.key, t.label, t.checks, [i, x](const M4Pocket& m) { return x ? m.corners[i].x : m.corners[i].y; },
+            [i, x](M4Pocket& m, double v) { (x ? m.corners[i].x : m.corners[i].y) = v; });
     }
 };
 

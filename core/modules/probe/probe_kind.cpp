@@ -16,13 +16,6 @@ namespace taiwa {
 
 namespace {
 
-// The label of each touch's side code, one text per point for the form's translation.
-constexpr const char* kSideLabels[ProbeUnit::kMaxTouches] = {
-    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P2 side"),
-    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P3 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P4 side"),
-    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P5 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P6 side"),
-    TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P7 side"), TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P8 side")};
-
 // "touches" and "sides": the points touched, [x, y] each, and each one's
 // side code. A touch not (wholly) entered is null, or has null for the
 // coordinate not yet typed: saved as the operator left it. Absent: one
@@ -105,12 +98,6 @@ const io::UnitKeys<ProbeUnit> kKeys{
 class ProbeKind final : public ModuleKindOf<ProbeUnit> {
 public:
     ProbeKind() : ModuleKindOf(&kKeys, check::checkProbe) {}
-    const char* paletteText() const override
-    {
-        return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add work-centre probing");
-    }
-    const char* drawing() const override { return ":/modules/probe.svg"; }
-    const char* outlineField() const override { return "touches"; }
 
     ModuleInput makeDefault(const Stock& s) const override
     {
@@ -171,100 +158,35 @@ protected:
     void move(ProbeUnit&, Point2) const override {}
     std::vector<Step> planInput(const ProbeUnit&, const UnitPlanContext&, Diagnostics&) const override { return {}; }
 
-    std::vector<FormField> formFields() const override
+    // The touches after the first, P2.x … P8.side: the job file holds them as
+    // two arrays ("touches", "sides").
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        using form::member;
-        using form::number;
-        std::vector<FormField> fs;
-        fs.push_back(form::codeField<ProbeUnit>("shape", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Shape"),
-                                                {{1, "round (boss or bore)"}, {2, "rectangular (block or pocket)"}},
-                                                &ProbeUnit::shape)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec", "Round (a boss or a bore) or rectangular (a block or a pocket)")));
-        fs.push_back(
-            form::codeField<ProbeUnit>("where", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Touched from"),
-                                       {{1, "outside (boss, block)"}, {2, "inside (bore, pocket)"}}, &ProbeUnit::where)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "Whether the probe touches the part from outside or from inside")));
-        const char* origin =
-            TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Where the first touch is, in machine coordinates");
-        fs.push_back(number<ProbeUnit>(
-                         "origin.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine X"), {"origin"},
-                         [](const ProbeUnit& p) { return p.origin.x; }, [](ProbeUnit& p, double v) { p.origin.x = v; })
-                         .described("sym-P1", origin));
-        fs.push_back(number<ProbeUnit>(
-                         "origin.y", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "P1 machine Y"), {"origin"},
-                         [](const ProbeUnit& p) { return p.origin.y; }, [](ProbeUnit& p, double v) { p.origin.y = v; })
-                         .described("sym-P1", origin));
-        for (std::size_t i = 1; i < ProbeUnit::kMaxTouches; ++i) {
-            const std::string key = "P" + std::to_string(i + 1);
-            const std::vector<std::string> diag{"touches[" + std::to_string(i) + "]"};
-            // Its X, its Y and the side it touches; the drawing shows P1 to P4.
-            const std::string symbol = i < 4 ? "sym-" + key : "";
-            const char* help = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                    "A touch, relative to the first one; empty until it is measured");
-            for (const bool isX : {true, false}) {
-                FormField f;
-                f.key = key + (isX ? ".x" : ".y");
-                f.label = key + (isX ? " X" : " Y");
-                f.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "not touched");
-                f.diagFields = diag;
-                f.kind = FormFieldKind::OptionalNumber;
-                f.get = [i, isX](const ModuleInput& m) -> std::optional<double> {
-                    const ProbeUnit* p = m.getIf<ProbeUnit>();
-                    return p ? (isX ? p->x[i] : p->y[i]) : std::nullopt;
-                };
-                f.set = [i, isX](ModuleInput& m, std::optional<double> v) {
-                    if (ProbeUnit* p = m.getIf<ProbeUnit>()) (isX ? p->x[i] : p->y[i]) = v;
-                };
-                fs.push_back(std::move(f).described(symbol, help));
-            }
-            FormField side = number<ProbeUnit>(
-                key + ".side", kSideLabels[i], {"sides[" + std::to_string(i) + "]"},
-                [i](const ProbeUnit& p) { return double(p.side[i]); },
+        const auto dot = t.key.find('.');
+        if (t.key.size() < 4 || t.key[0] != 'P' || dot != 2 || t.key[1] < '2' ||
+            t.key[1] >= '1' + static_cast<char>(ProbeUnit::kMaxTouches))
+            return std::nullopt;
+        const auto i = static_cast<std::size_t>(t.key[1] - '1');
+        const std::string what = t.key.substr(dot + 1);
+        if (what == "side") {
+            FormField side = form::number<ProbeUnit>(
+                t.key, t.label, t.checks, [i](const ProbeUnit& p) { return double(p.side[i]); },
                 [i](ProbeUnit& p, double v) { p.side[i] = static_cast<int>(std::lround(v)); });
             side.kind = FormFieldKind::Code;
-            side.codes = {{0, "(round: none)"}, {1, "-X"}, {2, "+X"}, {3, "-Y"}, {4, "+Y"}};
-            fs.push_back(std::move(side).described(symbol, help));
+            return side;
         }
-        fs.push_back(form::optionalMember<ProbeUnit>("top",
-                                                     TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Top face machine Z"),
-                                                     "not touched", {"top"}, &ProbeUnit::top)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Height of a touch on the top face, in machine coordinates; empty if not touched")));
-        fs.push_back(member<ProbeUnit>("tolerance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tolerance"),
-                                       {"tolerance"}, &ProbeUnit::tolerance)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Largest distance a touch may lie from the fitted shape")));
-        fs.push_back(member<ProbeUnit>("sizeX",
-                                       TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal diameter / width X"),
-                                       {"sizeX"}, &ProbeUnit::sizeX)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Diameter of the round part, or its width along X")));
-        fs.push_back(
-            member<ProbeUnit>("sizeY", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Nominal length Y"), {"sizeY"},
-                              &ProbeUnit::sizeY)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Length of the rectangular part along Y")));
-        fs.push_back(member<ProbeUnit>("touchDepth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Touch depth"),
-                                       {"touchDepth"}, &ProbeUnit::touchDepth)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "How far below the top face the probe touches the sides")));
-        fs.push_back(
-            member<ProbeUnit>("clearance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Clearance"), {"clearance"},
-                              &ProbeUnit::clearance)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "Distance kept from the part while the probe moves between touches")));
-        fs.push_back(member<ProbeUnit>("search", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Search distance"),
-                                       {"search"}, &ProbeUnit::search)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "How far past the expected surface the probe looks for it before giving up")));
-        fs.push_back(member<ProbeUnit>("feed", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Probing feed (mm/min)"),
-                                       {"feed"}, &ProbeUnit::feed)
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Feed of the probing moves, in mm per minute")));
-        return fs;
+        if (what != "x" && what != "y") return std::nullopt;
+        const bool isX = what == "x";
+        FormField f;
+        f.kind = FormFieldKind::OptionalNumber;
+        f.get = [i, isX](const ModuleInput& m) -> std::optional<double> {
+            const ProbeUnit* p = m.getIf<ProbeUnit>();
+            return p ? (isX ? p->x[i] : p->y[i]) : std::nullopt;
+        };
+        f.set = [i, isX](ModuleInput& m, std::optional<double> v) {
+            if (ProbeUnit* p = m.getIf<ProbeUnit>()) (isX ? p->x[i] : p->y[i]) = v;
+        };
+        return f;
     }
 };
 

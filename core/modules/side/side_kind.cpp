@@ -2,6 +2,7 @@
 // its job-file keys, checks, figure, cavity, planning and form, as
 // module_kind.h asks. Registered in modules/registry.cpp.
 #include "modules/side/side.h"
+#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "figure/figure_text.h"
@@ -26,17 +27,9 @@ const io::UnitKeys<SideMill> kKeys{{keys::text("contour", &SideMill::contour), k
 
 class SideKind final : public ModuleKindOf<SideMill> {
 public:
-    SideKind() : ModuleKindOf(&kKeys, checkSideMill) {}
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add side milling"); }
-    const char* drawing() const override { return ":/modules/side.svg"; }
-    const char* outlineField() const override { return "contour"; }
+    SideKind() : ModuleKindOf(&kKeys, checkSideMill, side::millingPath) {}
     // One end mill for roughing and finishing: pins and speeds under "side".
     std::vector<std::string> stepKeys() const override { return {"side"}; }
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const override
-    {
-        return side::millingPath(step, tool, tech, params);
-    }
     // Each pass: about a move a segment, two a joint, and the leads.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech, const PathParameters&) const override
     {
@@ -120,58 +113,6 @@ protected:
         return planSideMill(mm, ctx.tech, ctx.library, ctx.material, ctx.unit, ctx.shownUnit, out);
     }
 
-    std::vector<FormField> formFields() const override
-    {
-        using form::member;
-        std::vector<FormField> fs;
-        fs.push_back(
-            form::contourName<SideMill>("contour", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Contour"), {"contour"},
-                                        &SideMill::contour)
-                .described("sym-contour",
-                           TAIWA_TRANSLATE_NOOP(
-                               "taiwa::ui::FieldSpec",
-                               "The contour of the figure that is the finished wall, open or closed (e.g. K1)")));
-        fs.push_back(
-            form::codeField<SideMill>("side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Tool side"),
-                                      {{1, "left of the contour"}, {2, "right of the contour"}}, &SideMill::side)
-                .described(
-                    "sym-side",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Which side of the contour, looking along its direction, the tool and the material to remove are on")));
-        fs.push_back(
-            form::codeField<SideMill>("direction", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Direction"),
-                                      {{1, "climb"}, {2, "conventional"}}, &SideMill::direction)
-                .described(
-                    "sym-direction",
-                    TAIWA_TRANSLATE_NOOP(
-                        "taiwa::ui::FieldSpec",
-                        "Climb or conventional milling (with M3, climb runs the tool on the left of its travel)")));
-        fs.push_back(member<SideMill>("depth", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "T (depth)"), {"depth"},
-                                      &SideMill::depth)
-                         .described("sym-T", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                                  "Depth of the wall, down from the top surface")));
-        fs.push_back(
-            member<SideMill>("width", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "W (width)"), {"width"},
-                             &SideMill::width)
-                .described("sym-W",
-                           TAIWA_TRANSLATE_NOOP(
-                               "taiwa::ui::FieldSpec",
-                               "Width of the material to remove, measured from the contour on the tool's side")));
-        fs.push_back(
-            form::codeField<SideMill>("U", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "U (tool use)"),
-                                      {{1, "roughing and finishing"}, {8, "finishing only"}, {9, "roughing only"}},
-                                      &SideMill::toolUse)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "Which steps the wall gets: roughing and finishing, or one of them")));
-        fs.push_back(
-            form::codeField<SideMill>("F", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "F (wall finish)"),
-                                      {{1, "full depth at once"}, {2, "several incisions"}}, &SideMill::wallFinish)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "How the wall is finished: at full depth, or in several depths")));
-        fs.push_back(form::stepOver<SideMill>());
-        return fs;
-    }
 };
 
 }  // namespace

@@ -21,7 +21,7 @@ namespace {
 
 class SurfaceKind final : public ModuleKindOf<SurfaceUnit> {
 public:
-    SurfaceKind() : ModuleKindOf(&surfacemod::surfaceKeys(), checkSurface) {}
+    SurfaceKind() : ModuleKindOf(&surfacemod::surfaceKeys(), checkSurface, surfacemod::surfacePath) {}
     // A projection given as a figure contour gets its points (mm), its
     // arcs flattened to surfacemod::kContourTolerance.
     void resolveContours(ModuleInput& mm, const ContourTable& table) const override
@@ -46,15 +46,7 @@ public:
             }
     }
 
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add 3-D surface"); }
-    const char* drawing() const override { return ":/modules/surface.svg"; }
-    const char* outlineField() const override { return "curve1"; }
     std::vector<std::string> stepKeys() const override { return {surfacemod::kStepKey}; }
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const override
-    {
-        return surfacemod::surfacePath(step, tool, tech, params);
-    }
     // Finishing: the paths a scallop spacing apart, a point a step; roughing:
     // its levels' passes a step-over apart.
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech,
@@ -145,65 +137,42 @@ protected:
         return planSurface(mm, ctx.tech, ctx.library, ctx.unit, ctx.shownUnit, out);
     }
 
-    // The form: the two curves and the boundary as text (surface_text.cpp),
-    // N, M or the step along the curves, scallop, allowance, and the ball
-    // end mill pinned (empty: chosen by the smallest concave radius).
-    std::vector<FormField> formFields() const override
+    // The two curves and the boundary as text (surface_text.cpp), N, M and
+    // the ball end mill pinned; curveStep, scallop and allowance are the
+    // job-file table's.
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        using form::member;
-        using form::optionalMember;
-        std::vector<FormField> fs;
-        fs.push_back(
-            curveField("curve1", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 1"), &SurfaceUnit::curve1,
-                       &SurfaceUnit::curve1Bad)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec",
-                    "The first curve: points X, Y, Z separated by ';', or two projections 'XY: X, Y; ... / ZX: Z, X; ...', each its points or an open contour of the figure ('XY: K1'); '/ lines' at the end for straight lines")));
-        fs.push_back(
-            curveField("curve2", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Curve 2"), &SurfaceUnit::curve2,
-                       &SurfaceUnit::curve2Bad)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec", "The second curve, as the first; the surface is ruled between the two")));
-        fs.push_back(form::intMember<SurfaceUnit>(
-                         "n", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "N (roughing pieces)"), &SurfaceUnit::n)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec",
-                             "Pieces each curve is divided into for the roughing surface; fewer than M")));
+        if (t.bind == "curve1") return curveField(t, &SurfaceUnit::curve1, &SurfaceUnit::curve1Bad);
+        if (t.bind == "curve2") return curveField(t, &SurfaceUnit::curve2, &SurfaceUnit::curve2Bad);
+        if (t.bind == "n") return form::intMember<SurfaceUnit>(t.key, t.label, &SurfaceUnit::n);
+        if (t.bind == "m") return piecesField(t);
+        if (t.bind == "boundary") return boundaryField(t);
+        if (t.bind == "tool") return toolField(t);
+        return std::nullopt;
+    }
+
+private:
+    // M: whole, empty when the step along the curves gives it.
+    static FormField piecesField(const form::FieldText& t)
+    {
         FormField m = form::number<SurfaceUnit>(
-            "m", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M (finishing pieces)"), {"m"},
+            t.key, t.label, t.checks,
             [](const SurfaceUnit& u) { return u.m ? std::optional<double>(*u.m) : std::nullopt; },
-            [](SurfaceUnit& u, double v) { u.m = static_cast<int>(std::lround(std::clamp(v, -1e6, 1e6))); });
+            [](SurfaceUnit&, double) {});
         m.set = [](ModuleInput& mi, std::optional<double> v) {
             if (SurfaceUnit* u = mi.getIf<SurfaceUnit>())
                 u->m = v ? std::optional<int>(static_cast<int>(std::lround(std::clamp(*v, -1e6, 1e6)))) : std::nullopt;
         };
         m.kind = FormFieldKind::OptionalNumber;
         m.whole = true;
-        m.described(TAIWA_TRANSLATE_NOOP(
-            "taiwa::ui::FieldSpec",
-            "Pieces each curve is divided into for the finishing surface; more than N; empty: from the step along the curves"));
-        fs.push_back(m);
-        fs.push_back(
-            optionalMember<SurfaceUnit>(
-                "curveStep", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Step along the curves (gives M)"),
-                TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "M given"), {"curveStep"}, &SurfaceUnit::curveStep)
-                .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                "The step along the curves that gives M; empty when M is given")));
-        fs.push_back(member<SurfaceUnit>("scallop", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Scallop height"),
-                                         {"scallop"}, &SurfaceUnit::scallop)
-                         .described(TAIWA_TRANSLATE_NOOP(
-                             "taiwa::ui::FieldSpec", "Height of the ridges the ball leaves between finishing paths")));
-        fs.push_back(
-            member<SurfaceUnit>("allowance", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Roughing allowance"),
-                                {"allowance"}, &SurfaceUnit::allowance)
-                .described(TAIWA_TRANSLATE_NOOP(
-                    "taiwa::ui::FieldSpec", "Material the Z-level roughing leaves on the surface, along its normal")));
-        FormField b = form::detail::textField("boundary", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Boundary (paths)"),
-                                              {"boundary"}, FormFieldKind::Points);
-        b.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "none: the whole surface");
-        b.described(TAIWA_TRANSLATE_NOOP(
-            "taiwa::ui::FieldSpec",
-            "A surface where every path stops: paths of points X, Y, Z, ';' between points, '/' between paths; empty for none"));
+        return m;
+    }
+
+    // The boundary's paths as text; what does not parse is kept for the
+    // check to refuse.
+    static FormField boundaryField(const form::FieldText& t)
+    {
+        FormField b = form::detail::textField(t.key, t.label, t.checks, FormFieldKind::Points);
         b.getText = [](const ModuleInput& in) -> std::string {
             const SurfaceUnit* u = in.getIf<SurfaceUnit>();
             if (!u) return {};
@@ -219,9 +188,14 @@ protected:
                 u->boundaryBad = text;
             }
         };
-        fs.push_back(b);
+        return b;
+    }
+
+    // The ball end mill pinned for the surface's steps, empty: chosen.
+    static FormField toolField(const form::FieldText& t)
+    {
         FormField tool = form::number<SurfaceUnit>(
-            "tool", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Ball end mill (T)"), {"tools.surface"},
+            t.key, t.label, t.checks,
             [](const SurfaceUnit& u) {
                 const auto pin = u.tools.find(surfacemod::kStepKey);
                 return pin == u.tools.end() ? std::nullopt : std::optional<double>(pin->second);
@@ -235,25 +209,16 @@ protected:
         };
         tool.kind = FormFieldKind::OptionalNumber;
         tool.whole = true;
-        tool.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "under the smallest concave radius");
-        tool.described(TAIWA_TRANSLATE_NOOP(
-            "taiwa::ui::FieldSpec",
-            "The ball end mill's number in the tool library; empty: the largest whose radius is under the smallest concave radius"));
-        fs.push_back(tool);
-        return fs;
+        return tool;
     }
 
-private:
-    static FormField curveField(const char* key, const char* label, SurfaceCurve SurfaceUnit::*curve,
+    static FormField curveField(const form::FieldText& t, SurfaceCurve SurfaceUnit::*curve,
                                 std::string SurfaceUnit::*bad)
     {
         // A unit whose surface is a STEP face set shows empty curves (the
         // placeholder says why; its refusals show under curve 1); a curve
         // typed there makes the curves the surface again.
-        std::vector<std::string> shown{key};
-        if (std::string(key) == "curve1") shown.push_back("surface");
-        FormField f = form::detail::textField(key, label, shown, FormFieldKind::Points);
-        f.placeholder = TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "the surface is a STEP face set");
+        FormField f = form::detail::textField(t.key, t.label, t.checks, FormFieldKind::Points);
         f.getText = [curve, bad](const ModuleInput& in) -> std::string {
             const SurfaceUnit* u = in.getIf<SurfaceUnit>();
             if (!u || (!u->surface.empty() && (u->*bad).empty())) return {};

@@ -46,8 +46,6 @@ TurnedPart partOf(int unit, const Resolution& resolved, TurnDeformation d)
 
 class TurnKind final : public ModuleKindOf<TurnUnit> {
 public:
-    const char* paletteText() const override { return TAIWA_TRANSLATE_NOOP("taiwa::ui::ModulePalette", "Add turned profile"); }
-    const char* drawing() const override { return ":/modules/turn.svg"; }
     MachineKind machineKind() const override { return MachineKind::Lathe; }
     std::vector<std::string> stepKeys() const override { return turning::turnStepKeys(); }
     // Turning steps come with their paths (their TurnStep, turnOf).
@@ -189,38 +187,30 @@ protected:
         for (auto& n : r.notes) out.push_back({Severity::Warning, ctx.unit + 1, TurnUnit::kName, "", std::move(n)});
         return std::move(r.steps);
     }
-    // The fields above the profile table; the tables themselves are the
-    // station's profile editor (ui/profile_editor.h).
-    std::vector<FormField> formFields() const override
+    // The fields above the profile table, all the door's: the job file holds
+    // them in the profile's grammar. The tables themselves are the station's
+    // profile editor (ui/profile_editor.h).
+    std::optional<FormField> ownField(const form::FieldText& t) const override
     {
         using form::number;
-        std::vector<FormField> fs;
-        FormField side = number<TurnUnit>(
-            "side", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Profile"), {"side"},
-            [](const TurnUnit& t) { return t.profile.side == ProfileSide::Inner ? 2.0 : 1.0; },
-            [](TurnUnit& t, double v) { t.profile.side = std::lround(v) == 2 ? ProfileSide::Inner : ProfileSide::Outer; });
-        side.kind = FormFieldKind::Code;
-        side.codes = {{1, "outer (OD)"}, {2, "inner (ID, a bore)"}};
-        side.described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                            "Outer profile (the outside diameter) or inner profile (a bore)"));
-        fs.push_back(side);
-        fs.push_back(number<TurnUnit>(
-                         "start.x", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start X (diameter)"),
-                         {"start", "start.x"}, [](const TurnUnit& t) { return t.profile.startX; },
-                         [](TurnUnit& t, double v) { t.profile.startX = v; })
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Diameter where the profile starts, at its front end")));
-        fs.push_back(number<TurnUnit>(
-                         "start.z", TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec", "Start Z"), {"start.z"},
-                         [](const TurnUnit& t) { return t.profile.startZ; },
-                         [](TurnUnit& t, double v) { t.profile.startZ = v; })
-                         .described(TAIWA_TRANSLATE_NOOP("taiwa::ui::FieldSpec",
-                                                         "Z where the profile starts; 0 is the finished front face")));
-        return fs;
+        if (t.bind == "side") {
+            FormField side = number<TurnUnit>(
+                t.key, t.label, t.checks,
+                [](const TurnUnit& u) { return u.profile.side == ProfileSide::Inner ? 2.0 : 1.0; },
+                [](TurnUnit& u, double v) { u.profile.side = std::lround(v) == 2 ? ProfileSide::Inner : ProfileSide::Outer; });
+            side.kind = FormFieldKind::Code;
+            return side;
+        }
+        if (t.bind == "start.x")
+            return number<TurnUnit>(
+                t.key, t.label, t.checks, [](const TurnUnit& u) { return u.profile.startX; },
+                [](TurnUnit& u, double v) { u.profile.startX = v; });
+        if (t.bind == "start.z")
+            return number<TurnUnit>(
+                t.key, t.label, t.checks, [](const TurnUnit& u) { return u.profile.startZ; },
+                [](TurnUnit& u, double v) { u.profile.startZ = v; });
+        return std::nullopt;
     }
-
-public:
-    const char* outlineField() const override { return "rows"; }
 
 private:
     // The profile, allowances included, lies within the bar: an outer
