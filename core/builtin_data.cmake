@@ -59,7 +59,11 @@ function(taiwa_module_texts header files_var)
   foreach(file ${found})
     get_filename_component(dir ${file} DIRECTORY)
     get_filename_component(folder ${dir} NAME)
+    get_filename_component(name ${file} NAME)
     file(RELATIVE_PATH source ${PROJECT_SOURCE_DIR} ${file})
+    if(NOT folder STREQUAL "modules" AND NOT name STREQUAL "${folder}.module.json")
+      message(FATAL_ERROR "${source}: a module's description is core/modules/${folder}/${folder}.module.json")
+    endif()
     file(READ ${file} text)
     string(APPEND entries "    {\"${folder}\", R\"taiwa_json(${text})taiwa_json\", \"${source}\"},\n")
   endforeach()
@@ -77,7 +81,10 @@ inline constexpr ModuleTextFile kModuleTexts[] = {
 ${entries}};
 }
 ")
-  # Written only when it changes (CONFIGURE), so a reconfigure rebuilds nothing.
+  # Written only when it changes (CONFIGURE), so a reconfigure rebuilds
+  # nothing. The JSON is not expanded again: under CMP0053 (new since the
+  # project's minimum CMake, 3.25) @var@, ${var} and #cmakedefine in a
+  # description pass through as written.
   file(CONFIGURE OUTPUT ${header} CONTENT "@content@" @ONLY)
   set(${files_var} ${found} PARENT_SCOPE)
 endfunction()

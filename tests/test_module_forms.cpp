@@ -12,6 +12,8 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 
@@ -121,6 +123,16 @@ private slots:
         };
         const auto fs = form::boundForm(form::readModuleText(kOne, "toy.module.json").fields, &kToyKeys, own);
         QCOMPARE(*fs[0].get(ModuleInput(Toy{})), 2.0);
+        // Codes on a number, a placeholder on a field that cannot be empty.
+        for (const char* field : {R"({"key": "depth", "label": "D", "codes": [[1, "one"]]})",
+                                  R"({"key": "count", "label": "N", "placeholder": "none"})"}) {
+            const std::string text = std::string(R"({"palette": "P", "outline": "o", "fields": [)") + field + "]}";
+            const QString why =
+                logicError([&] { form::boundForm(form::readModuleText(text, "toy.module.json").fields, &kToyKeys); });
+            QVERIFY2(why.startsWith("the form of module TOY gives field \"") &&
+                         (why.endsWith("codes, but it is not a code") || why.endsWith("a placeholder, but it cannot be empty")),
+                     qPrintable(why));
+        }
         // A code field with no codes.
         const QString why = logicError([] {
             form::boundForm(form::readModuleText(kOne, "toy").fields, &kToyKeys,
@@ -163,12 +175,21 @@ private slots:
                                          << "x.module.json: field 1: no shared field \"nosuch\"";
         QTest::newRow("a shared code it lacks") << with(R"({"shared": "u", "codes": [1, 7]})")
                                                 << "x.module.json: field 1 (U): code 7 has no meaning";
+        QTest::newRow("no codes") << with(R"({"shared": "u", "codes": []})")
+                                  << "x.module.json: field 1: \"codes\" is not a list of codes";
+        QTest::newRow("no checks") << with(R"({"key": "a", "label": "A", "checks": []})")
+                                   << "x.module.json: field 1: \"checks\" is not a list of names";
+        QTest::newRow("a code twice") << with(R"({"key": "a", "label": "A", "codes": [[1, "one"], [1, "uno"]]})")
+                                      << "x.module.json: field 1: code 1 twice";
+        QTest::newRow("shared twice") << with(R"({"shared": "v"})")
+                                      << "shared_fields.json: v has \"shared\", which a field does not have";
     }
     void aBadDescriptionIsRefusedWhere()
     {
         QFETCH(QString, text);
         QFETCH(QString, expected);
-        const char* shared = R"j({"u": {"key": "U", "label": "U (tool use)", "codes": [[1, "all"], [9, "roughing"]]}})j";
+        const char* shared = R"j({"u": {"key": "U", "label": "U (tool use)", "codes": [[1, "all"], [9, "roughing"]]},
+                                  "v": {"shared": "u"}})j";
         const QString why = logicError([&] { form::readModuleText(text.toStdString(), "x.module.json", shared); });
         QVERIFY2(why.startsWith("module description " + expected), qPrintable(why));
     }
@@ -186,6 +207,23 @@ private slots:
         QCOMPARE(fs[0].codes, (std::vector<std::pair<int, std::string>>{{9, "roughing"}}));
         QCOMPARE(fs[0].help, std::string("Which"));
         QCOMPARE(fs[0].checks, std::vector<std::string>{"U"});
+    }
+
+    // Every registered module has its description file, and every file a module.
+    void theDescriptionsAreTheModules()
+    {
+        std::vector<std::string> modules;
+        for (const ModuleKind* kind : moduleKinds()) {
+            std::string folder = kind->name();
+            for (char& c : folder) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            modules.push_back(folder);
+            QVERIFY(!std::string(kind->paletteText()).empty());
+            QCOMPARE(std::string(kind->drawing()), ":/modules/" + folder + ".svg");
+        }
+        std::vector<std::string> folders = form::shippedModuleFolders();
+        std::sort(modules.begin(), modules.end());
+        std::sort(folders.begin(), folders.end());
+        QCOMPARE(folders, modules);
     }
 
     // The pockets' codes U, F and H mean in their forms what the code tables

@@ -1,5 +1,6 @@
 // The Japanese and Simplified Chinese texts are complete: resources/i18n/update-ts.py run on a copy
-// of each catalogue (lupdate over ui/ and core/, the module drawings' labels)
+// of each catalogue (lupdate over ui/ and core/, the module descriptions'
+// texts, the module drawings' labels)
 // finds no text of the sources without its translation and changes nothing,
 // so a new tr(), module label, core message template, tool kind or drawing
 // label left untranslated, or a catalogue not brought up to date, fails

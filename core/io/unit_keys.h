@@ -31,7 +31,9 @@ namespace taiwa::io {
 template <class U>
 struct UnitKey {
     // The member an entry of one plain value reads and writes (none for
-    // the tool pins and a module's own grammar).
+    // the tool pins and a module's own grammar). A module's form binds its
+    // field by it (modules/form_binding.h), by its type: a text is the name
+    // of a contour of the job's figure, the only text a unit holds so far.
     using Member = std::variant<std::monostate, double U::*, std::optional<double> U::*, int U::*, std::string U::*,
                                 Point2 U::*>;
 
@@ -164,8 +166,6 @@ public:
         if (cutting == Cutting::Taken) known_.push_back("cutting");
     }
 
-    // The unit read from its object: a key the table does not have is
-    // reported, then every entry is read in turn.
     // The entry that reads `key`, or null.
     const UnitKey<U>* find(std::string_view key) const
     {
@@ -174,6 +174,9 @@ public:
                 if (k == key) return &e;
         return nullptr;
     }
+
+    // The unit read from its object: a key the table does not have is
+    // reported, then every entry is read in turn.
 
     U read(const ObjectFields& f) const
     {

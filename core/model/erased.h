@@ -13,7 +13,7 @@
 #pragma once
 
 #include <memory>
-#include <utility>
+#include <utility>  // std::in_place_type
 
 namespace taiwa::detail {
 
@@ -21,10 +21,13 @@ template <class Data>
 class Erased {
 public:
     Erased() = default;
-    explicit Erased(std::unique_ptr<Data> d) : d_(std::move(d)) {}
-    // The value and its share count in one allocation (std::make_shared): a
+    // A new value of class Of (a Data holding a T) made from `args`, the
+    // value and its share count in one allocation (std::make_shared): a
     // plan holds one payload for each of its hundreds of thousands of steps.
-    explicit Erased(std::shared_ptr<Data> d) : d_(std::move(d)) {}
+    template <class Of, class... Args>
+    explicit Erased(std::in_place_type_t<Of>, Args&&... args) : d_(std::make_shared<Of>(std::forward<Args>(args)...))
+    {
+    }
 
     const Data* get() const { return d_.get(); }
     // The held value for changing it: a value shared with a copy is cloned

@@ -51,7 +51,7 @@ public:
     ModuleInput() = default;  // no module (a unit being built); name() is ""
     template <class T, class = std::enable_if_t<!std::is_same_v<std::decay_t<T>, ModuleInput>>>
     ModuleInput(T value)  // NOLINT(google-explicit-constructor): a module struct is a module input
-        : data_(std::shared_ptr<detail::ModuleData>(std::make_shared<detail::ModuleDataOf<std::decay_t<T>>>(std::move(value))))
+        : data_(std::in_place_type<detail::ModuleDataOf<std::decay_t<T>>>, std::move(value))
     {
     }
 

@@ -32,8 +32,14 @@ public:
     StepPayload() = default;  // a step with no data of its module's own
     template <class T, class = std::enable_if_t<!std::is_same_v<std::decay_t<T>, StepPayload>>>
     StepPayload(T value)  // NOLINT(google-explicit-constructor): a payload struct is a payload
-        : data_(std::shared_ptr<Data>(std::make_shared<Of<std::decay_t<T>>>(std::move(value))))
+        : data_(std::in_place_type<Of<std::decay_t<T>>>, std::move(value))
     {
+        // The stages find a milling step's geometry as the payload itself or
+        // as its member `milling` (millingIn): a payload deriving from it
+        // would hold a geometry none of them sees.
+        static_assert(std::is_same_v<std::decay_t<T>, MillingGeometry> ||
+                          !std::is_base_of_v<MillingGeometry, std::decay_t<T>>,
+                      "a step payload holds its milling geometry as its member `milling`, not as a base");
     }
 
     bool empty() const { return !data_.get(); }

@@ -4,6 +4,7 @@
 // an arc into a polygon; OpenCASCADE is not needed for any of it.
 #pragma once
 
+#include "model/geometry.h"
 #include "model/turned.h"
 
 #include <cmath>
@@ -12,13 +13,17 @@
 
 namespace taiwa::turning {
 
-inline ZR operator+(ZR a, ZR b) { return {a.z + b.z, a.r + b.r}; }
-inline ZR operator-(ZR a, ZR b) { return {a.z - b.z, a.r - b.r}; }
-inline ZR operator*(double s, ZR a) { return {s * a.z, s * a.r}; }
-inline double dot(ZR a, ZR b) { return a.z * b.z + a.r * b.r; }
-inline double cross(ZR a, ZR b) { return a.z * b.r - a.r * b.z; }
-inline double norm(ZR a) { return std::hypot(a.z, a.r); }
-inline double dist(ZR a, ZR b) { return norm(a - b); }
+// The half-section's vector algebra is the plane's (model/geometry.h), Z as
+// its x and the radius as its y: one formula each, the same bits.
+inline Point2 planar(ZR a) { return {a.z, a.r}; }
+inline ZR fromPlanar(Point2 p) { return {p.x, p.y}; }
+inline ZR operator+(ZR a, ZR b) { return fromPlanar(planar(a) + planar(b)); }
+inline ZR operator-(ZR a, ZR b) { return fromPlanar(planar(a) - planar(b)); }
+inline ZR operator*(double s, ZR a) { return fromPlanar(s * planar(a)); }
+inline double dot(ZR a, ZR b) { return taiwa::dot(planar(a), planar(b)); }
+inline double cross(ZR a, ZR b) { return taiwa::cross(planar(a), planar(b)); }
+inline double norm(ZR a) { return taiwa::length(planar(a)); }
+inline double dist(ZR a, ZR b) { return taiwa::distance(planar(a), planar(b)); }
 inline ZR unit(ZR a) { const double n = norm(a); return n > 0.0 ? (1.0 / n) * a : ZR{}; }
 inline ZR leftNormal(ZR t) { return {-t.r, t.z}; }  // t turned +90° in the profile view
 

@@ -42,22 +42,26 @@ std::optional<FormField> boundByKey(const io::UnitKeys<U>& keys, const FieldText
     return std::visit(
         [&](auto m) -> std::optional<FormField> {
             using M = decltype(m);
-            if constexpr (std::is_same_v<M, Point2 U::*>) {
+            if constexpr (std::is_same_v<M, std::monostate>) {
+                return std::nullopt;
+            } else if constexpr (std::is_same_v<M, Point2 U::*>) {
                 if (axis != "x" && axis != "y") return std::nullopt;
                 const bool x = axis == "x";
                 return number<U>(
                     t.key, t.label, t.checks, [m, x](const U& u) { return x ? (u.*m).x : (u.*m).y; },
                     [m, x](U& u, double v) { (x ? (u.*m).x : (u.*m).y) = v; });
-            } else if constexpr (std::is_same_v<M, std::monostate>) {
-                return std::nullopt;
+            } else if (!axis.empty()) {
+                return std::nullopt;  // a coordinate of what is not a point
+            } else if constexpr (std::is_same_v<M, double U::*>) {
+                return member<U>(t.key, t.label, t.checks, m);
+            } else if constexpr (std::is_same_v<M, std::optional<double> U::*>) {
+                return optionalMember<U>(t.key, t.label, t.placeholder, t.checks, m);
+            } else if constexpr (std::is_same_v<M, int U::*>) {
+                return intMember<U>(t.key, t.label, m, t.codes.empty() ? FormFieldKind::Number : FormFieldKind::Code);
+            } else if constexpr (std::is_same_v<M, std::string U::*>) {
+                return contourName<U>(t.key, t.label, t.checks, m);
             } else {
-                if (!axis.empty()) return std::nullopt;
-                if constexpr (std::is_same_v<M, double U::*>) return member<U>(t.key, t.label, t.checks, m);
-                if constexpr (std::is_same_v<M, std::optional<double> U::*>)
-                    return optionalMember<U>(t.key, t.label, t.placeholder, t.checks, m);
-                if constexpr (std::is_same_v<M, int U::*>)
-                    return intMember<U>(t.key, t.label, m, t.codes.empty() ? FormFieldKind::Number : FormFieldKind::Code);
-                if constexpr (std::is_same_v<M, std::string U::*>) return contourName<U>(t.key, t.label, t.checks, m);
+                static_assert(std::is_same_v<M, std::string U::*>, "a kind of io::UnitKey::Member no form field binds");
             }
         },
         entry->member);

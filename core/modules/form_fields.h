@@ -2,7 +2,7 @@
 // per input (key, label, the checks' field names, its help line and drawing
 // symbol, how to read and write the value on the module input). The station
 // builds its forms and undo commands from these. A module's texts are its
-// form description file's (modules/form_text.h), its reading and writing
+// description file's (modules/module_text.h), its reading and writing
 // bound by the makers below (modules/form_binding.h); labels and help lines
 // are source texts of the translation (context "taiwa::ui::FieldSpec").
 #pragma once

@@ -281,7 +281,8 @@ public:
         return paths_ ? paths_(step, tool, tech, params) : ModuleKind::toolPath(step, tool, tech, params);
     }
     // The description file's fields, each bound by the door (ownField) or
-    // by the job-file table (form::boundForm); made once per module kind.
+    // by the job-file table (form::boundForm); made once per module kind,
+    // so a field the door binds must not keep the door (its `this`).
     const std::vector<FormField>& fields() const final
     {
         static const std::vector<FormField> fs =

@@ -30,12 +30,12 @@ std::string textAt(const json& entry, const char* key, std::string_view source, 
     return it->get<std::string>();
 }
 
-FieldText field(const json& entry, std::string_view source, const std::string& where)
+FieldText field(const json& entry, std::string_view source, const std::string& where, bool mayShare = true)
 {
     static constexpr std::array kKnown{"key", "label", "bind", "checks", "placeholder", "codes", "symbol", "help", "shared"};
     if (!entry.is_object()) bad(source, where + " is not an object");
     for (const auto& [name, value] : entry.items())
-        if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end())
+        if (std::find(kKnown.begin(), kKnown.end(), name) == kKnown.end() || (name == "shared" && !mayShare))
             bad(source, fmt::format("{} has \"{}\", which a field does not have", where, name));
     FieldText f;
     f.key = textAt(entry, "key", source, where);
@@ -45,14 +45,14 @@ FieldText field(const json& entry, std::string_view source, const std::string& w
     f.symbol = textAt(entry, "symbol", source, where);
     f.help = textAt(entry, "help", source, where);
     if (const auto it = entry.find("checks"); it != entry.end()) {
-        if (!it->is_array()) bad(source, where + ": \"checks\" is not a list");
+        if (!it->is_array() || it->empty()) bad(source, where + ": \"checks\" is not a list of names");
         for (const json& c : *it) {
             if (!c.is_string()) bad(source, where + ": a check field is not a text");
             f.checks.push_back(c.get<std::string>());
         }
     }
     if (const auto it = entry.find("codes"); it != entry.end()) {
-        if (!it->is_array()) bad(source, where + ": \"codes\" is not a list");
+        if (!it->is_array() || it->empty()) bad(source, where + ": \"codes\" is not a list of codes");
         // [value, "meaning"], or a value alone: a shared field's code, its meaning the shared entry's.
         for (const json& c : *it) {
             if (c.is_number_integer())
@@ -61,6 +61,9 @@ FieldText field(const json& entry, std::string_view source, const std::string& w
                 f.codes.emplace_back(c[0].get<int>(), c[1].get<std::string>());
             else
                 bad(source, where + ": a code is not [value, \"meaning\"] nor a value");
+            for (std::size_t k = 0; k + 1 < f.codes.size(); ++k)
+                if (f.codes[k].first == f.codes.back().first)
+                    bad(source, fmt::format("{}: code {} twice", where, f.codes.back().first));
         }
     }
     return f;
@@ -116,7 +119,7 @@ ModuleText readModuleText(std::string_view text, std::string_view source, std::s
         if (const std::string name = textAt(entry, "shared", source, where); !name.empty()) {
             const auto it = shared.find(name);
             if (it == shared.end()) bad(source, fmt::format("{}: no shared field \"{}\"", where, name));
-            f = overlaid(field(*it, "shared_fields.json", name), entry, f);
+            f = overlaid(field(*it, "shared_fields.json", name, false), entry, f);
         }
         if (f.key.empty() || f.label.empty()) bad(source, where + " has no key or no label");
         for (const auto& [value, meaning] : f.codes)
@@ -128,6 +131,14 @@ ModuleText readModuleText(std::string_view text, std::string_view source, std::s
         out.fields.push_back(std::move(f));
     }
     return out;
+}
+
+std::vector<std::string> shippedModuleFolders()
+{
+    std::vector<std::string> folders;
+    for (const builtin::ModuleTextFile& f : builtin::kModuleTexts)
+        if (std::string_view(f.folder) != "modules") folders.emplace_back(f.folder);
+    return folders;
 }
 
 ModuleText shippedModuleText(std::string_view folder)

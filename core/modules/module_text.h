@@ -45,5 +45,7 @@ ModuleText readModuleText(std::string_view text, std::string_view source, std::s
 // The shipped description of the module in core/modules/<folder>/ (folder
 // "side"), its shared fields from core/modules/shared_fields.json.
 ModuleText shippedModuleText(std::string_view folder);
+// The folders of every shipped description (each module's: "area", "cp", …).
+std::vector<std::string> shippedModuleFolders();
 
 }  // namespace taiwa::form

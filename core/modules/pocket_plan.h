@@ -31,15 +31,14 @@ double pocketEstimateMoves(const Step& step, const Tool& tool, const TechnologyD
 // passes that follow their number); roughing layers in their order.
 bool pocketStepWaitsFor(const Step& later, const Step& earlier);
 
-// The door of a pocket module: the step hooks above.
+// The door of a pocket module: the step hooks above, the pocket paths its
+// path function.
 template <class T>
 class PocketKindOf : public ModuleKindOf<T> {
 public:
-    using ModuleKindOf<T>::ModuleKindOf;
-    ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const final
+    PocketKindOf(const io::UnitKeys<T>* keys, typename ModuleKindOf<T>::CheckFunction checks)
+        : ModuleKindOf<T>(keys, checks, pocketToolPath)
     {
-        return pocketToolPath(step, tool, tech, params);
     }
     double estimateMoves(const Step& step, const Tool& tool, const TechnologyData& tech,
                          const PathParameters& params) const final

@@ -1,5 +1,5 @@
 <?xml version="1.0" encoding="utf-8"?>
-<!-- Texts of the station window (lupdate from ui/ and core/, and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
+<!-- Texts of the station window (lupdate from ui/ and core/, the module descriptions and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->
 <!DOCTYPE TS>
 <TS version="2.1" language="ja_JP">
     <context>

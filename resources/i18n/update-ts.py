@@ -4,8 +4,9 @@ every TAIWA_TRANSLATE_NOOP of core/ (the core's message templates and words
 in context "taiwa::msg"), the modules' description files
 (core/modules/*/*.module.json and core/modules/shared_fields.json: the
 palette words, context "taiwa::ui::ModulePalette"; the form's labels, help
-lines and placeholders, context "taiwa::ui::FieldSpec") and every label of
-the module drawings (core/modules/*/*.svg, context "taiwa::Drawing"),
+lines and placeholders, context "taiwa::ui::FieldSpec"; its codes' meanings,
+context "taiwa::CoreTexts" as ui/core_texts.cpp's) and every label of the
+module drawings (core/modules/*/*.svg, context "taiwa::Drawing"),
 translations kept, texts no longer in the sources dropped.
 
     python3 resources/i18n/update-ts.py resources/i18n/taiwa_ja.ts
@@ -46,9 +47,10 @@ def drawing_labels(root: Path):
 
 
 def module_texts(root: Path):
-    """The palette words, and the form's labels that have a word (P1 X, X1 have none), placeholders and help
-    lines, of the module descriptions, in file order: {context: [texts]}."""
-    found = {"taiwa::ui::ModulePalette": [], "taiwa::ui::FieldSpec": []}
+    """The palette words, and the form's labels that have a word (P1 X, X1 have none), placeholders, help
+    lines and code meanings that have a word (+X has none), of the module descriptions, in file order:
+    {context: [texts]}."""
+    found = {"taiwa::ui::ModulePalette": [], "taiwa::ui::FieldSpec": [], "taiwa::CoreTexts": []}
     modules = root / "core" / "modules"
     for path in [modules / "shared_fields.json"] + sorted(modules.glob("*/*.module.json")):
         data = json.loads(path.read_text(encoding="utf-8"))
@@ -58,6 +60,9 @@ def module_texts(root: Path):
                 text = entry.get(key, "")
                 if key != "label" or re.search(r"[A-Za-z]{2}", text):
                     texts.append(("taiwa::ui::FieldSpec", text))
+            for code in entry.get("codes", []):
+                if isinstance(code, list) and re.search(r"[A-Za-z]{2}", code[1]):
+                    texts.append(("taiwa::CoreTexts", code[1]))
         for context, text in texts:
             if text and text not in found[context]:
                 found[context].append(text)
@@ -123,8 +128,8 @@ def main(ts: str) -> int:
             unfinished += 1
     ET.indent(new, "    ")
     body = ET.tostring(new.getroot(), encoding="unicode")
-    header = ('<?xml version="1.0" encoding="utf-8"?>\n<!-- Texts of the station window (lupdate from ui/ and core/, and the '
-              'labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->\n'
+    header = ('<?xml version="1.0" encoding="utf-8"?>\n<!-- Texts of the station window (lupdate from ui/ and core/, the '
+              'module descriptions and the labels of the module drawings, by resources/i18n/update-ts.py, translated by hand); compiled to .qm by lrelease at build time. -->\n'
               '<!DOCTYPE TS>\n')
     target.write_text(header + body + "\n", encoding="utf-8")
     print(f"{target.name}: {sum(1 for _ in messages(new))} texts, {unfinished} untranslated")

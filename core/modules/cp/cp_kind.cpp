@@ -1,7 +1,6 @@
 // The door of module CP (contour pocket of any outline, with islands): its
 // job-file keys, checks, outline, planning and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
-#include "model/translate_noop.h"
 #include "modules/cp/cp.h"
 #include "modules/module_kind.h"
 #include "modules/named_region.h"

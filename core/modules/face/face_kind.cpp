@@ -2,7 +2,6 @@
 // keys, checks, planning, cavity and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
 #include "modules/face/face.h"
-#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "check/unit_checks.h"

@@ -2,7 +2,6 @@
 // keys, checks, figure, cavity, planning and form, as module_kind.h asks.
 // Registered in modules/registry.cpp.
 #include "modules/holes/holes.h"
-#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "io/unit_keys.h"

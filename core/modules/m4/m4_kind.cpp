@@ -115,10 +115,11 @@ protected:
     // The corners P1.x … P4.y: the job file holds them as one array.
     std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        if (t.key.size() != 4 || t.key[0] != 'P' || t.key[2] != '.' || t.key[1] < '1' || t.key[1] > '4')
+        const std::string& b = t.bind;
+        if (b.size() != 4 || b[0] != 'P' || b[1] < '1' || b[1] > '4' || b[2] != '.' || (b[3] != 'x' && b[3] != 'y'))
             return std::nullopt;
-        const auto i = static_cast<std::size_t>(t.key[1] - '1');
-        const bool x = t.key[3] == 'x';
+        const auto i = static_cast<std::size_t>(b[1] - '1');
+        const bool x = b[3] == 'x';
         return form::number<M4Pocket>(
             t.key, t.label, t.checks, [i, x](const M4Pocket& m) { return x ? m.corners[i].x : m.corners[i].y; },
             [i, x](M4Pocket& m, double v) { (x ? m.corners[i].x : m.corners[i].y) = v; });

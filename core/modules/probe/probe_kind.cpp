@@ -162,12 +162,11 @@ protected:
     // two arrays ("touches", "sides").
     std::optional<FormField> ownField(const form::FieldText& t) const override
     {
-        const auto dot = t.key.find('.');
-        if (t.key.size() < 4 || t.key[0] != 'P' || dot != 2 || t.key[1] < '2' ||
-            t.key[1] >= '1' + static_cast<char>(ProbeUnit::kMaxTouches))
+        const std::string& b = t.bind;
+        if (b.size() < 4 || b[0] != 'P' || b[2] != '.' || b[1] < '2' || b[1] >= '1' + static_cast<char>(ProbeUnit::kMaxTouches))
             return std::nullopt;
-        const auto i = static_cast<std::size_t>(t.key[1] - '1');
-        const std::string what = t.key.substr(dot + 1);
+        const auto i = static_cast<std::size_t>(b[1] - '1');
+        const std::string what = b.substr(3);
         if (what == "side") {
             FormField side = form::number<ProbeUnit>(
                 t.key, t.label, t.checks, [i](const ProbeUnit& p) { return double(p.side[i]); },

@@ -2,7 +2,6 @@
 // its job-file keys, checks, figure, cavity, planning and form, as
 // module_kind.h asks. Registered in modules/registry.cpp.
 #include "modules/side/side.h"
-#include "model/translate_noop.h"
 #include "modules/module_kind.h"
 
 #include "figure/figure_text.h"

@@ -9,7 +9,6 @@
 #include "modules/surface/surface_messages.h"
 
 #include "model/contour.h"
-#include "model/translate_noop.h"
 
 #include <algorithm>
 #include <cmath>
