@@ -1,5 +1,6 @@
-# The shipped data files found by glob, a CMake function of the core's build
-# (core/CMakeLists.txt) filling core/builtin_data.h.in.
+# The shipped data files found by glob, CMake functions of the core's build
+# (core/CMakeLists.txt): the machines and dialects filling
+# core/builtin_data.h.in, the modules' descriptions writing module_texts.h.
 
 # taiwa_builtin_files(<folder> <entries var> <files var>): every *.json of
 # resources/<folder>/, as the entries of a generated C++ array of

@@ -1,15 +1,19 @@
 // The modules' descriptions as data (modules/module_text.h,
 // modules/form_binding.h): a description file's refusals name the file and
 // the entry; a field binds by its job-file key to the member the table
-// names, by its kind; a field nothing binds is a bug naming the module; the
-// pockets' codes mean what the code tables say; and every field of every
-// shipped module's form reads back what it was given on a default unit.
+// names, by its kind; a field nothing binds, a code field without codes,
+// codes or a placeholder a field does not take are bugs naming the module;
+// the descriptions are the registered modules'; the pockets' codes mean
+// what the code tables say; and every field of every shipped module's form
+// reads back what it was given on a default unit.
 #include "io/unit_keys.h"
 #include "modules/form_binding.h"
 #include "modules/module_kind.h"
 #include "model/codes.h"
 #include "modules/registry.h"
+#include "support/support.h"
 
+#include <QFile>
 #include <QtTest>
 
 #include <algorithm>
@@ -124,14 +128,16 @@ private slots:
         const auto fs = form::boundForm(form::readModuleText(kOne, "toy.module.json").fields, &kToyKeys, own);
         QCOMPARE(*fs[0].get(ModuleInput(Toy{})), 2.0);
         // Codes on a number, a placeholder on a field that cannot be empty.
-        for (const char* field : {R"({"key": "depth", "label": "D", "codes": [[1, "one"]]})",
-                                  R"({"key": "count", "label": "N", "placeholder": "none"})"}) {
+        const std::pair<const char*, const char*> kWrong[] = {
+            {R"({"key": "depth", "label": "D", "codes": [[1, "one"]]})",
+             "the form of module TOY gives field \"depth\" codes, but it is not a code"},
+            {R"({"key": "count", "label": "N", "placeholder": "none"})",
+             "the form of module TOY gives field \"count\" a placeholder, but it cannot be empty"}};
+        for (const auto& [field, expected] : kWrong) {
             const std::string text = std::string(R"({"palette": "P", "outline": "o", "fields": [)") + field + "]}";
             const QString why =
                 logicError([&] { form::boundForm(form::readModuleText(text, "toy.module.json").fields, &kToyKeys); });
-            QVERIFY2(why.startsWith("the form of module TOY gives field \"") &&
-                         (why.endsWith("codes, but it is not a code") || why.endsWith("a placeholder, but it cannot be empty")),
-                     qPrintable(why));
+            QCOMPARE(why, QString(expected));
         }
         // A code field with no codes.
         const QString why = logicError([] {
@@ -149,7 +155,7 @@ private slots:
     {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("expected");
-        // Every row but the first three: a description with these fields.
+        // Every row but the first four: a description with these fields.
         const auto with = [](const char* fields) {
             return QString(R"({"palette": "Add toy", "outline": "o", "fields": [%1]})").arg(fields);
         };
@@ -217,8 +223,10 @@ private slots:
             std::string folder = kind->name();
             for (char& c : folder) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
             modules.push_back(folder);
-            QVERIFY(!std::string(kind->paletteText()).empty());
-            QCOMPARE(std::string(kind->drawing()), ":/modules/" + folder + ".svg");
+            // Its drawing is a file of its folder (a resource of the station).
+            const QString drawing = QString::fromUtf8(kind->drawing());
+            QVERIFY2(QFile::exists(test::sourcePath("core/modules/" + QString::fromStdString(folder) + "/" + drawing.mid(10))),
+                     qPrintable(drawing));
         }
         std::vector<std::string> folders = form::shippedModuleFolders();
         std::sort(modules.begin(), modules.end());

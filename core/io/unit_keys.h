@@ -32,8 +32,9 @@ template <class U>
 struct UnitKey {
     // The member an entry of one plain value reads and writes (none for
     // the tool pins and a module's own grammar). A module's form binds its
-    // field by it (modules/form_binding.h), by its type: a text is the name
-    // of a contour of the job's figure, the only text a unit holds so far.
+    // field by it (modules/form_binding.h), by its type: a text as the name
+    // of a contour of the job's figure; a door binds any other text itself
+    // (HOLES' pattern and hole, ModuleKindOf::ownField).
     using Member = std::variant<std::monostate, double U::*, std::optional<double> U::*, int U::*, std::string U::*,
                                 Point2 U::*>;
 
@@ -177,7 +178,6 @@ public:
 
     // The unit read from its object: a key the table does not have is
     // reported, then every entry is read in turn.
-
     U read(const ObjectFields& f) const
     {
         U u{};

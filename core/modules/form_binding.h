@@ -2,9 +2,10 @@
 // each field described there is bound to what it reads and writes, by the
 // job-file key it names through the module's job-file table
 // (io/unit_keys.h: a number, an optional number, a whole number or code, a
-// contour name, one coordinate of a point), or by the door itself for a
-// field the table holds in a grammar of its own (M4's corners, HOLES' named
-// lists, PROBE's touches: ModuleKindOf::ownField, modules/module_kind.h).
+// contour name, one coordinate of a point), or by the door itself, asked
+// first, for a field the table holds in a grammar of its own (M4's corners,
+// PROBE's touches) or that it shows otherwise (HOLES' pattern and hole as
+// codes): ModuleKindOf::ownField, modules/module_kind.h.
 #pragma once
 
 #include "io/unit_keys.h"

@@ -30,7 +30,7 @@ enum class FormFieldKind { Number, OptionalNumber, Code, ContourName, ContourNam
 struct FormField {
     std::string key;                      // widget objectName suffix: "P1.x", "depth", "U"
     std::string label;                    // "T (depth)"
-    std::string placeholder;              // OptionalNumber: what an empty field means
+    std::string placeholder;              // OptionalNumber, a text: what an empty field means
     std::vector<std::string> diagFields;  // check field names shown on this widget
     FormFieldKind kind = FormFieldKind::Number;
     std::vector<std::pair<int, std::string>> codes;  // Code: value and its meaning

@@ -276,7 +276,7 @@ public:
         return planInput(mm.as<T>(), ctx, out);
     }
     ToolPath toolPath(const Step& step, const Tool& tool, const TechnologyData& tech,
-                      const PathParameters& params) const override
+                      const PathParameters& params) const final
     {
         return paths_ ? paths_(step, tool, tech, params) : ModuleKind::toolPath(step, tool, tech, params);
     }
@@ -301,9 +301,11 @@ protected:
     virtual std::optional<Quad> outline(const T& mm) const = 0;
     virtual void move(T& m, Point2 delta) const = 0;
     virtual std::vector<Step> planInput(const T& mm, const UnitPlanContext& ctx, Diagnostics& out) const = 0;
-    // A field of the form that the door binds itself, where the job file
-    // holds it in a grammar of its own (M4's corners, PROBE's touches);
-    // nullopt: the job-file table binds it by its key.
+    // A field of the form that the door binds itself, asked first for every
+    // field: one the job file holds in a grammar of its own (M4's corners,
+    // PROBE's touches), or one the door shows otherwise than the table
+    // would (HOLES' pattern and hole, texts offered as codes); nullopt: the
+    // job-file table binds it by its key.
     virtual std::optional<FormField> ownField(const form::FieldText& /*t*/) const { return std::nullopt; }
 
 private:

@@ -1,5 +1,6 @@
 // Reading the modules' description files (module_text.h): the JSON of
-// core/modules/*/*.module.json, compiled in by core/builtin_data.cmake.
+// core/modules/*/*.module.json and core/modules/shared_fields.json,
+// compiled in by core/builtin_data.cmake.
 #include "modules/module_text.h"
 
 #include "module_texts.h"  // generated: builtin::kModuleTexts

@@ -6,8 +6,9 @@
 // (ModuleKindOf, modules/module_kind.h) binds each field to the member it
 // reads and writes (modules/form_binding.h). The palette words are source
 // texts of the translation in context "taiwa::ui::ModulePalette"; labels,
-// placeholders and help lines in "taiwa::ui::FieldSpec"
-// (resources/i18n/update-ts.py reads them from the files).
+// placeholders and help lines in "taiwa::ui::FieldSpec"; the codes'
+// meanings in "taiwa::CoreTexts" (resources/i18n/update-ts.py reads them
+// from the files).
 #pragma once
 
 #include <string>
@@ -22,7 +23,7 @@ struct FieldText {
     std::string label;              // "T (depth)"
     std::string bind;               // the job-file key it reads and writes ("corner.x": a point's X); default key
     std::vector<std::string> checks;  // the checks' field names shown on it; default {key}
-    std::string placeholder;        // an optional number: what empty means
+    std::string placeholder;        // an optional number or a text: what empty means
     std::vector<std::pair<int, std::string>> codes;  // a code: each value and its meaning
     std::string symbol;             // the id of its symbol in the module's drawing, or empty
     std::string help;               // what the value is, in one line

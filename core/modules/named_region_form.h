@@ -1,5 +1,6 @@
 // The form fields of a named region (modules/named_region.h): "outline",
-// the contour's name, and "islands", the names typed separated by commas,
+// the contour's name, and "islands", the names typed separated by commas
+// or blanks,
 // bound by the door of a contour unit (CP, AREA; ModuleKindOf::ownField).
 #pragma once
 
