@@ -70,26 +70,6 @@ FieldText field(const json& entry, std::string_view source, const std::string& w
     return f;
 }
 
-// `over` on `base`: what `over` names replaces the base's.
-FieldText overlaid(FieldText base, const json& entry, const FieldText& over)
-{
-    if (entry.contains("key")) base.key = over.key;
-    if (entry.contains("label")) base.label = over.label;
-    if (entry.contains("bind")) base.bind = over.bind;
-    if (entry.contains("checks")) base.checks = over.checks;
-    if (entry.contains("placeholder")) base.placeholder = over.placeholder;
-    if (entry.contains("codes")) {
-        std::vector<std::pair<int, std::string>> codes = over.codes;
-        for (auto& [value, meaning] : codes)
-            for (const auto& [baseValue, baseMeaning] : base.codes)
-                if (meaning.empty() && value == baseValue) meaning = baseMeaning;
-        base.codes = std::move(codes);
-    }
-    if (entry.contains("symbol")) base.symbol = over.symbol;
-    if (entry.contains("help")) base.help = over.help;
-    return base;
-}
-
 json parsed(std::string_view text, std::string_view source)
 {
     try {
@@ -118,9 +98,18 @@ ModuleText readModuleText(std::string_view text, std::string_view source, std::s
         const std::string where = fmt::format("field {}", out.fields.size() + 1);
         FieldText f = field(entry, source, where);
         if (const std::string name = textAt(entry, "shared", source, where); !name.empty()) {
+            // The shared field with what the entry names put over it; a code
+            // given by its value alone takes the shared field's meaning.
             const auto it = shared.find(name);
             if (it == shared.end()) bad(source, fmt::format("{}: no shared field \"{}\"", where, name));
-            f = overlaid(field(*it, "shared_fields.json", name, false), entry, f);
+            const FieldText base = field(*it, "shared_fields.json", name, false);
+            json merged = *it;
+            merged.update(entry);
+            merged.erase("shared");
+            f = field(merged, source, where);
+            for (auto& [value, meaning] : f.codes)
+                for (const auto& [baseValue, baseMeaning] : base.codes)
+                    if (meaning.empty() && value == baseValue) meaning = baseMeaning;
         }
         if (f.key.empty() || f.label.empty()) bad(source, where + " has no key or no label");
         for (const auto& [value, meaning] : f.codes)
