@@ -692,6 +692,60 @@ private slots:
         QVERIFY(sheetHtml(plan, {}).find("<h2>Paths</h2>") == std::string::npos);
     }
 
+    // planJob balances the roughing once (Plan::balance): the post, the
+    // sheet and the station (balancedRoughing) and the verification read
+    // that balance and balance nothing of their own. A plan whose balance
+    // is replaced by a refusal, or taken away, shows it in each of them.
+    void theBalanceIsMadeOnceWithThePlan()
+    {
+        QVERIFY(!test::samplePlan("lathe-bushing.taiwa").balance);  // one path: none
+        Plan plan = planOf(kTaper);
+        QVERIFY(plan.balance && plan.balance->cut);
+        QCOMPARE(plan.steps[plan.balance->step].kind, StepKind::TurnRoughing);
+        // The job's dwell is the balance's: the follower's blocks keep it.
+        Job slow = plan.job;
+        slow.twoPath.dwellRevolutions = 2.5;
+        const Plan slowPlan = planJob(slow, TechnologyTable::builtIn(), defaultToolLibrary());
+        QVERIFY(slowPlan.balance && slowPlan.balance->cut);
+        QCOMPARE(slowPlan.balance->dwellRevolutions, 2.5);
+        int dwells = 0;
+        for (const BalancedPath& p : slowPlan.balance->cut->paths)
+            for (const BalancedBlock& b : p.blocks)
+                if (b.dwellSeconds > 0) {
+                    QVERIFY2(b.dwellRevolutions >= 2.5 - 1e-9, qPrintable(QString::number(b.dwellRevolutions)));
+                    ++dwells;
+                }
+        QVERIFY(dwells > 0);
+        const auto again = turning::balancePlanRoughing(plan, twoPath());
+        QVERIFY(again && again->cut && again->step == plan.balance->step);
+        QVERIFY(*again->cut == *plan.balance->cut);
+        const PostOptions o = postOptions(plan, "fanuc", std::nullopt, 1000, "t");
+        const auto posted = postTwoPath(plan, o);
+        QVERIFY(posted && *posted && (**posted).cut == *plan.balance->cut && (**posted).roughing == plan.balance->step);
+
+        const std::string why = "waitCodes: a refusal the test put in the plan";
+        plan.balance->cut = Failure{why};
+        const auto refused = postTwoPath(plan, o);
+        QVERIFY(refused && !*refused);
+        QCOMPARE(refused->error(), why);
+        const auto check = verify::checkTwoPath(plan);
+        QVERIFY(check);
+        QCOMPARE(check->findings, std::vector<std::string>{"balanced cut: " + why});
+        const auto sheet = balancedRoughing(plan);
+        QVERIFY(sheet && sheet->cut && !*sheet->cut);
+        QCOMPARE(sheet->cut->error(), why);
+
+        plan.balance.reset();
+        const auto none = postTwoPath(plan, o);
+        QVERIFY(none && !*none);
+        QVERIFY2(none->error().find("has no roughing step to balance") != std::string::npos, none->error().c_str());
+        const auto unchecked = verify::checkTwoPath(plan);
+        QVERIFY(unchecked && unchecked->findings.size() == 1);
+        QVERIFY2(unchecked->findings[0].find("no roughing step to balance") != std::string::npos, unchecked->findings[0].c_str());
+        const auto unbalanced = balancedRoughing(plan);
+        QVERIFY(unbalanced && !unbalanced->cut);
+    }
+
     void timelineProvesTheBalancedCut_data()
     {
         QTest::addColumn<bool>("taper");

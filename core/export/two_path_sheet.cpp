@@ -3,7 +3,7 @@
 #include "export/two_path_sheet.h"
 
 #include "machine/machine.h"
-#include "turning/balanced_roughing.h"
+#include "model/turn_path.h"
 
 #include <fmt/format.h>
 
@@ -106,10 +106,10 @@ std::optional<BalancedRoughing> balancedRoughing(const Plan& plan)
     if (!plan.mmJob.bar || !machine || !machine->layout.multiPath) return std::nullopt;
     BalancedRoughing out;
     out.step = plan.steps.size();
-    auto balance = turning::balancePlanRoughing(plan, *machine);
+    const std::optional<PlannedBalance>& balance = plan.balance;
     if (!balance) return out;
     out.step = balance->step;
-    out.cut = std::move(balance->cut);
+    out.cut = balance->cut;
     if (!*out.cut) return out;
     const TurnStep& rough = *turnOf(plan.steps[out.step]);
     out.timeline = runTimeline(**out.cut, *machine);

@@ -22,8 +22,8 @@
 namespace taiwa {
 
 // The balanced roughing of a two-path job as the export writes it (the
-// job's first roughing step, the job's two-path settings, the paths meeting
-// at the ends) and its timeline.
+// plan's, Plan::balance: the job's first roughing step, the job's two-path
+// settings, the paths meeting at the ends) and its timeline.
 struct BalancedRoughing {
     std::size_t step = 0;                    // the roughing step's index; plan.steps.size(): the job has none
     std::optional<Result<BalancedCut>> cut;  // none without a roughing step; a Failure: the balancing's refusal

@@ -10,6 +10,7 @@
 #include "model/technology.h"
 #include "model/tool.h"
 #include "model/turned.h"
+#include "model/two_path.h"
 
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@ struct Plan {
     std::vector<TurnedPart> turned;  // turning units: profile and deformed profile, in unit order
     std::vector<Step> steps;         // job-wide machining order, tool/path/minutes filled
     std::vector<Tool> tools;         // the library tools the steps use, by first use
+    // A two-path lathe job with a roughing step and tool paths: that step
+    // balanced between the paths (model/two_path.h), once for every reader.
+    std::optional<PlannedBalance> balance;
     double totalMinutes = 0.0;       // cutting + rapid + tool changes
     std::optional<double> totalMachineMinutes;  // the same as the machine moves (Step::machineMinutes), when known
     int toolChanges = 0;

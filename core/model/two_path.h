@@ -3,10 +3,12 @@
 // command block per cut (approach, cut, retract, return), the blocks handed
 // round-robin to the paths, each path's in its own program coordinates,
 // with the wait M-code both paths meet at before a cut and the dwell the
-// follower keeps behind the leader. Made by core/turning/balanced_roughing.h,
-// run on a timeline by core/verify/two_path_timeline.h, written by the posts.
+// follower keeps behind the leader. Made by core/turning/balanced_roughing.h
+// (kept in Plan::balance by planJob), run on a timeline by
+// core/verify/two_path_timeline.h, written by the posts.
 #pragma once
 
+#include "model/result.h"
 #include "model/turn_path.h"
 
 #include <cstddef>
@@ -44,6 +46,16 @@ struct BalancedCut {
     double spindleLimit = 0.0;        // the rpm cap the speeds were computed with
     int blockCount = 0;
     friend bool operator==(const BalancedCut&, const BalancedCut&) = default;
+};
+
+// A two-path lathe job's roughing step balanced as the export's programs
+// have it (the job's settings, the paths meeting at the ends): made once,
+// by planJob (turning::balancePlanRoughing), and read by the post, the
+// sheet, the two-path verification and the station.
+struct PlannedBalance {
+    std::size_t step = 0;           // the roughing step's index in Plan::steps
+    double dwellRevolutions = 1.0;  // the follower's delay the job sets: the least lag the verification allows
+    Result<BalancedCut> cut;        // refused: the Failure naming the field
 };
 
 }  // namespace taiwa

@@ -12,6 +12,7 @@
 #include "modules/registry.h"
 #include "tools/cutting.h"
 #include "tools/step_order.h"
+#include "turning/balanced_roughing.h"
 #include "model/turn_path.h"
 
 #include <fmt/format.h>
@@ -286,6 +287,7 @@ Plan planJob(CheckedJob checked, const std::vector<Tool>& library, const PlanOpt
     if (!plan.ok() || !withinMoveBudget(plan, toolOf, options.path) || !options.withToolPaths) return plan;
     makePaths(plan, toolOf, options.path, machine, cache);
     addTimes(plan, library, options, machine);
+    if (plan.mmJob.bar && machine && machine->layout.multiPath) plan.balance = turning::balancePlanRoughing(plan, *machine);
     return plan;
 }
 

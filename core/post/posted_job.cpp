@@ -6,7 +6,6 @@
 #include "model/turn_path.h"
 #include "post/probe_program.h"
 #include "post/two_path_post.h"
-#include "turning/balanced_roughing.h"
 
 #include <fmt/format.h>
 
@@ -20,14 +19,14 @@ std::optional<Result<PostedTwoPath>> postTwoPath(const Plan& plan, const PostOpt
     const Machine* machine = findMachine(plan.mmJob.machine);
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
     // Path 1 faces before and finishes after the balanced roughing: the paths meet at the ends.
-    auto balance = turning::balancePlanRoughing(plan, *machine);
+    const std::optional<PlannedBalance>& balance = plan.balance;
     if (!balance)
         return Posted{Failure{fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "machine: {} is a two-path lathe and the job has no "
                                                                              "roughing step to balance between its paths"),
                                           plan.mmJob.machine)}};
     if (!balance->cut) return Posted{Failure{balance->cut.error()}};
     const std::size_t index = balance->step;
-    PostedTwoPath out{std::move(*balance->cut), index, {}};
+    PostedTwoPath out{*balance->cut, index, {}};
     try {
         out.programs = postBalancedCut(out.cut, plan.steps, index, *machine->layout.multiPath, plan.tools, post);
     } catch (const Refusal& e) {

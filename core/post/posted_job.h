@@ -52,8 +52,9 @@ PostedJob postJob(const Plan& plan, const PostOptions& post);
 // in `dialect` (the read-back of a tape alone: verify/tape_readback.h).
 PostedJob postJob(const Plan& plan, const PostOptions& post, PostedProgram tape, const post::Dialect& dialect);
 
-// A two-path lathe's programs posted with `post` (as postJob); nothing for a
-// machine of one path.
+// A two-path lathe's programs posted with `post` (as postJob) from the
+// plan's balanced roughing (Plan::balance: a plan from planJob with its
+// tool paths); nothing for a machine of one path.
 std::optional<Result<PostedTwoPath>> postTwoPath(const Plan& plan, const PostOptions& post);
 
 // The probing units' programs in `dialect` (as the export names them, the

@@ -171,14 +171,14 @@ Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cut
     return bc;
 }
 
-std::optional<PlanBalance> balancePlanRoughing(const Plan& plan, const Machine& machine)
+std::optional<PlannedBalance> balancePlanRoughing(const Plan& plan, const Machine& machine)
 {
     for (std::size_t k = 0; k < plan.steps.size(); ++k) {
         const Step& step = plan.steps[k];
         const TurnStep* rough = step.machiningType == MachiningType::TurnRoughing ? turnOf(step) : nullptr;
         if (!rough) continue;
         const BalanceSettings set = balanceSettings(plan.mmJob.twoPath, true);
-        return PlanBalance{k, set, balanceRoughing(rough->path, rough->cutting, machine, set)};
+        return PlannedBalance{k, set.dwellRevolutions, balanceRoughing(rough->path, rough->cutting, machine, set)};
     }
     return std::nullopt;
 }

@@ -53,14 +53,10 @@ Result<BalancedCut> balanceRoughing(const TurnPath& path, const TurnCutting& cut
 
 // The plan's roughing step a two-path lathe balances (its first turning
 // roughing step) and that step balanced as the export's programs have it
-// (the job's settings, the paths meeting at the ends): what the post, the
-// two-path verification and the sheet each read. Nothing when the plan has
-// no turning roughing step (each says so in its own words).
-struct PlanBalance {
-    std::size_t step = 0;  // the roughing step's index in plan.steps
-    BalanceSettings settings;
-    Result<BalancedCut> cut;
-};
-std::optional<PlanBalance> balancePlanRoughing(const Plan& plan, const Machine& machine);
+// (the job's settings, the paths meeting at the ends). planJob keeps it in
+// Plan::balance, which the post, the two-path verification, the sheet and
+// the station read. Nothing when the plan has no turning roughing step
+// (each says so in its own words).
+std::optional<PlannedBalance> balancePlanRoughing(const Plan& plan, const Machine& machine);
 
 }  // namespace taiwa::turning

@@ -1,6 +1,6 @@
 // The read-back of a two-path lathe's programs (docs/verification.md "Lathe
-// tapes", docs/two-path-lathe.md "The programs"): the job's roughing
-// balanced and posted as the export does (STEM.p1, STEM.p2 …), each program
+// tapes", docs/two-path-lathe.md "The programs"): the plan's balanced
+// roughing posted as the export does (STEM.p1, STEM.p2 …), each program
 // read by the lathe reader with its waits and dwells and each motion held
 // against the steps that path's program was posted from (path 1: the job's
 // steps, the roughing's passes its balanced-cut blocks; another path: its

@@ -1,31 +1,24 @@
-// The two-path verification (two_path_check.h): balance, run the timeline,
-// report deadlocks and short lags.
+// The two-path verification (two_path_check.h): the plan's balanced roughing
+// run on the timeline, its deadlocks and short lags reported.
 #include "verify/two_path_check.h"
 
 #include "machine/machine.h"
-#include "turning/balanced_roughing.h"
 #include "verify/two_path_timeline.h"
 
 #include <fmt/format.h>
 
 namespace taiwa::verify {
 
-Result<BalancedRoughing> balancedRoughing(const Plan& plan, const Machine& machine)
-{
-    auto balance = turning::balancePlanRoughing(plan, machine);
-    if (!balance)
-        return Failure{fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance", plan.mmJob.machine)};
-    if (!balance->cut) return Failure{"balanced cut: " + balance->cut.error()};
-    return BalancedRoughing{std::move(*balance->cut), balance->step, balance->settings.dwellRevolutions};
-}
-
 std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
 {
     const Machine* machine = findMachine(plan.mmJob.machine);
     if (!plan.mmJob.bar || plan.steps.empty() || !machine || !machine->layout.multiPath) return std::nullopt;
-    const auto balanced = balancedRoughing(plan, *machine);
-    if (!balanced) return TwoPathCheck{{balanced.error()}};
-    return checkTimeline(runTimeline(balanced->cut, *machine), balanced->dwellRevolutions);
+    const std::optional<PlannedBalance>& balance = plan.balance;
+    if (!balance)
+        return TwoPathCheck{{fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
+                                         plan.mmJob.machine)}};
+    if (!balance->cut) return TwoPathCheck{{"balanced cut: " + balance->cut.error()}};
+    return checkTimeline(runTimeline(*balance->cut, *machine), balance->dwellRevolutions);
 }
 
 TwoPathCheck checkTimeline(const Timeline& t, double revolutions)

@@ -1,22 +1,16 @@
 // taiwa verify of a job whose machine is a two-path lathe
-// (docs/two-path-lathe.md "Verify"): the job's first roughing step balanced
-// as the export writes it (the job's dwell and waits settings, meeting at
-// the ends) and run on the timeline; a deadlock, or a follower closer than
-// the set revolutions behind its leader, is a finding.
+// (docs/two-path-lathe.md "Verify"): the plan's balanced roughing
+// (Plan::balance, as the export writes it: the job's dwell and waits
+// settings, meeting at the ends) run on the timeline; a deadlock, or a
+// follower closer than the set revolutions behind its leader, is a finding.
 #pragma once
 
 #include "model/plan.h"
-#include "model/result.h"
-#include "model/two_path.h"
 #include "verify/two_path_timeline.h"
 
 #include <optional>
 #include <string>
 #include <vector>
-
-namespace taiwa {
-struct Machine;  // machine/machine.h
-}  // namespace taiwa
 
 namespace taiwa::verify {
 
@@ -26,18 +20,9 @@ struct TwoPathCheck {
     double leastLag = 0.0;              // revolutions
 };
 
-// The job's first roughing step balanced as the export balances it (the
-// job's dwell and waits settings, meeting at the ends): the cut, the step's
-// index, the revolutions the follower keeps; or why not (no roughing step, a
-// balancing refusal).
-struct BalancedRoughing {
-    BalancedCut cut;
-    std::size_t step = 0;
-    double dwellRevolutions = 0.0;
-};
-Result<BalancedRoughing> balancedRoughing(const Plan& plan, const Machine& machine);
-
-// Nothing when the job's machine has one path or the job has no steps.
+// Nothing when the job's machine has one path or the job has no steps; a
+// plan from planJob with its tool paths (the balance is made with them).
+// No roughing step or a balancing refusal is the one finding.
 std::optional<TwoPathCheck> checkTwoPath(const Plan& plan);
 
 // The findings of a timeline: its deadlocks, and every lag below `revolutions`.
