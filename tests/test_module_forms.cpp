@@ -160,6 +160,10 @@ private slots:
             return QString(R"({"palette": "Add toy", "outline": "o", "fields": [%1]})").arg(fields);
         };
         QTest::newRow("not JSON") << "{\"fields\": [" << "x.module.json: [json.exception.parse_error";
+        QTest::newRow("a part twice") << R"({"palette": "P", "palette": "Q", "outline": "o", "fields": []})"
+                                      << "x.module.json: palette is given twice";
+        QTest::newRow("a property twice") << R"({"palette": "P", "outline": "o", "fields": [{"key": "a", "label": "A", "label": "B"}]})"
+                                          << "x.module.json: fields[0].label is given twice";
         QTest::newRow("no fields") << "{\"field\": []}" << "x.module.json: not an object with a list \"fields\"";
         QTest::newRow("no palette") << R"({"outline": "o", "fields": []})"
                                     << "x.module.json: no \"palette\" or no \"outline\"";

@@ -3,6 +3,7 @@
 // compiled in by core/builtin_data.cmake.
 #include "modules/module_text.h"
 
+#include "io/json_document.h"
 #include "module_texts.h"  // generated: builtin::kModuleTexts
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <utility>
 
 namespace taiwa::form {
 
@@ -70,13 +72,26 @@ FieldText field(const json& entry, std::string_view source, const std::string& w
     return f;
 }
 
+// The job file's parser (io/json_document.h): it also finds a key given
+// twice in one object, which nlohmann alone would keep the last of. Its
+// sentence for broken JSON is a job file's ("not a job file: …"): a broken
+// description is said in nlohmann's words.
 json parsed(std::string_view text, std::string_view source)
 {
-    try {
-        return json::parse(text);
-    } catch (const json::exception& e) {
-        bad(source, e.what());
+    io::ParsedDocument doc = io::parseDocument(text);
+    if (!doc.root) {
+        try {
+            [[maybe_unused]] const json again = json::parse(text);
+        } catch (const json::exception& e) {
+            bad(source, e.what());
+        }
+        bad(source, doc.error);  // nested deeper than the job file's limit
     }
+    if (!doc.repeatedKeys.empty()) {
+        const io::JsonPath& twice = doc.repeatedKeys.front();
+        bad(source, fmt::format("{} is given twice", io::joinPath(twice.begin(), twice.end())));
+    }
+    return std::move(*doc.root);
 }
 
 }  // namespace
