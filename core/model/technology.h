@@ -17,8 +17,7 @@ namespace taiwa {
 // approaches, and grooving's withdrawal along the surface normal (seed 002).
 struct TurningTechnology {
     double depthOfCut = 2.0;
-    double allowanceX = 0.2;
-    double allowanceZ = 0.1;
+    double allowanceX = 0.2, allowanceZ = 0.1;  // across the axis (radius), along it
     double retract = 0.5;
     double clearance = 2.0;
     double withdrawal = 0.3;

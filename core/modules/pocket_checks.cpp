@@ -9,7 +9,7 @@ namespace taiwa {
 std::optional<ToolUse> checkToolUseCode(int code, check::Reporter& r)
 {
     const auto use = toolUseFromCode(code);
-    if (!use) r.unit("U", code >= 2 && code <= 5 ? msg::toolUseUndefined(code) : msg::toolUseUnknown(code));
+    if (!use) r.unit("U", msg::toolUseUnknown(code));
     return use;
 }
 

@@ -9,18 +9,13 @@
 
 namespace taiwa::msg {
 
-std::string toolUseUndefined(int code)
-{
-    return fmt::format(
-        TAIWA_TRANSLATE_NOOP("taiwa::msg",
-                             "tool-use code U = {} is not defined (codes 2 to 5 are reserved); use 1, 6, 7, 8 or 9"),
-        code);
-}
-
 std::string toolUseUnknown(int code)
 {
-    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9"),
-                       code);
+    if (code >= 2 && code <= 5)
+        return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool-use code U = {} is not defined (codes 2 to 5 are "
+                                                              "reserved); use 1, 6, 7, 8 or 9"),
+                           code);
+    return fmt::format(TAIWA_TRANSLATE_NOOP("taiwa::msg", "tool-use code U = {} does not exist; use 1, 6, 7, 8 or 9"), code);
 }
 
 std::string wallFinishUnknown(int code)

@@ -10,7 +10,8 @@
 
 namespace taiwa::msg {
 
-std::string toolUseUndefined(int code);
+// A tool-use code U that is not one (2 to 5 are reserved by the spec's
+// table, the others do not exist).
 std::string toolUseUnknown(int code);
 std::string wallFinishUnknown(int code);
 std::string pilotHoleUnknown(int code);

@@ -154,8 +154,6 @@ void KlartextWriter::spindle(SpindleDirection direction, double rpm)
     mFunctions_.push_back(direction == SpindleDirection::Clockwise ? dialect_.spindleClockwise : dialect_.spindleCounterClockwise);
 }
 
-void KlartextWriter::coolant(bool on) { mFunctions_.push_back(on ? dialect_.coolantOn : dialect_.coolantOff); }
-
 std::string KlartextWriter::feedWords(double feedRate)
 {
     const std::string f = formatNumber(feedRate, feedDecimals_, false);

@@ -35,7 +35,8 @@ public:
     void comment(const std::string& text) override;
     void toolChange(int tool) override;
     void spindle(SpindleDirection direction, double rpm) override;
-    void coolant(bool on) override;
+    // M8 / M9 wait for the next block (Klartext writes M functions after its words).
+    void coolant(bool on) override { mFunctions_.push_back(on ? dialect_.coolantOn : dialect_.coolantOff); }
     void rapid(const Point3& to) override;
     void feed(const Point3& to, double feedRate) override;
     void arc(const Point3& to, Point2 centre, bool clockwise, double feedRate) override;
