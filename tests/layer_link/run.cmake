@@ -13,25 +13,15 @@ foreach(check ${LINK_CHECKS})
     message(FATAL_ERROR "the layer's link check ${check} was not built")
   endif()
 endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/../planted.cmake)
 file(REMOVE_RECURSE ${WORK})
-execute_process(COMMAND ${CMAKE_COMMAND} -S ${TAIWA_SOURCE_DIR}/tests/layer_link -B ${WORK} -G ${GENERATOR}
+planted_must_pass("configuring tests/layer_link failed"
+  COMMAND ${CMAKE_COMMAND} -S ${TAIWA_SOURCE_DIR}/tests/layer_link -B ${WORK} -G ${GENERATOR}
   -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
-  -DTAIWA_SOURCE_DIR=${TAIWA_SOURCE_DIR} -DTAIWA_MODEL_ARCHIVE=${MODEL_ARCHIVE}
-  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "configuring tests/layer_link failed:\n${out}")
-endif()
-execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK} --target planted_right_links
-  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "the model calling the model did not link:\n${out}")
-endif()
-execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK} --target planted_wrong_links
-  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
-if(status EQUAL 0)
-  message(FATAL_ERROR "the model calling the post linked: the layer link check lets a wrong-way call through")
-endif()
-if(NOT out MATCHES "undefined reference to [`']taiwa::dialectNames")
-  message(FATAL_ERROR "the model calling the post failed, but not on the wrong-way call:\n${out}")
-endif()
-message(STATUS "the model calling the post fails to link, as it must:\n${out}")
+  -DTAIWA_SOURCE_DIR=${TAIWA_SOURCE_DIR} -DTAIWA_MODEL_ARCHIVE=${MODEL_ARCHIVE})
+planted_must_pass("the model calling the model did not link"
+  COMMAND ${CMAKE_COMMAND} --build ${WORK} --target planted_right_links)
+planted_must_fail("the model calling the post fails to link"
+  MATCHES "undefined reference to [`']taiwa::dialectNames"
+  PASSED "the model calling the post linked: the layer link check lets a wrong-way call through"
+  COMMAND ${CMAKE_COMMAND} --build ${WORK} --target planted_wrong_links)
