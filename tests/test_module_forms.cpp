@@ -155,7 +155,7 @@ private slots:
     {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("expected");
-        // Every row but the first four: a description with these fields.
+        // Every row but the first six: a description with these fields.
         const auto with = [](const char* fields) {
             return QString(R"({"palette": "Add toy", "outline": "o", "fields": [%1]})").arg(fields);
         };
