@@ -53,9 +53,8 @@ struct BalancedCut {
 // by planJob (turning::balancePlanRoughing), and read by the post, the
 // sheet, the two-path verification and the station.
 struct PlannedBalance {
-    std::size_t step = 0;           // the roughing step's index in Plan::steps
-    double dwellRevolutions = 1.0;  // the follower's delay the job sets: the least lag the verification allows
-    Result<BalancedCut> cut;        // refused: the Failure naming the field
+    std::size_t step = 0;     // the roughing step's index in Plan::steps
+    Result<BalancedCut> cut;  // refused: the Failure naming the field
 };
 
 }  // namespace taiwa

@@ -178,7 +178,7 @@ std::optional<PlannedBalance> balancePlanRoughing(const Plan& plan, const Machin
         const TurnStep* rough = step.machiningType == MachiningType::TurnRoughing ? turnOf(step) : nullptr;
         if (!rough) continue;
         const BalanceSettings set = balanceSettings(plan.mmJob.twoPath, true);
-        return PlannedBalance{k, set.dwellRevolutions, balanceRoughing(rough->path, rough->cutting, machine, set)};
+        return PlannedBalance{k, balanceRoughing(rough->path, rough->cutting, machine, set)};
     }
     return std::nullopt;
 }

@@ -18,7 +18,7 @@ std::optional<TwoPathCheck> checkTwoPath(const Plan& plan)
         return TwoPathCheck{{fmt::format("machine {} is a two-path lathe and the job has no roughing step to balance",
                                          plan.mmJob.machine)}};
     if (!balance->cut) return TwoPathCheck{{"balanced cut: " + balance->cut.error()}};
-    return checkTimeline(runTimeline(*balance->cut, *machine), balance->dwellRevolutions);
+    return checkTimeline(runTimeline(*balance->cut, *machine), plan.mmJob.twoPath.dwellRevolutions);
 }
 
 TwoPathCheck checkTimeline(const Timeline& t, double revolutions)
